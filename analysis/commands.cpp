@@ -1,0 +1,46 @@
+#include "analysis/commands.h"
+
+#include <ostream>
+
+namespace oflab {
+
+const std::vector<Command>& all_commands() {
+  static const std::vector<Command> commands = {
+      {"flow", "instantaneous optic flow of a moving plane: coefficients, bases, homographies",
+       "oflab-cli flow --focal F --image W H --plane-point X Y Z --plane-normal NX NY NZ\n"
+       "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
+       "               --plane-size SW SH] [--dt T] [--motion screw|rt|centre] [--json]",
+       run_flow_command},
+  };
+  return commands;
+}
+
+namespace {
+
+void print_help(std::ostream& out) {
+  out << "oflab-cli: headless tools of Optic Flow Lab\n\nCommands:\n";
+  for (const Command& c : all_commands()) out << "  " << c.name << "  " << c.summary << "\n";
+  out << "\nRun 'oflab-cli COMMAND --help' for a command's options.\n";
+}
+
+}  // namespace
+
+int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_help(args.empty() ? err : out);
+    return args.empty() ? 2 : 0;
+  }
+  for (const Command& c : all_commands()) {
+    if (args[0] != c.name) continue;
+    const CommandArgs rest(args.begin() + 1, args.end());
+    if (!rest.empty() && (rest[0] == "--help" || rest[0] == "-h")) {
+      out << "usage: " << c.usage << "\n";
+      return 0;
+    }
+    return c.run(rest, out, err);
+  }
+  err << "oflab-cli: unknown command '" << args[0] << "' (try oflab-cli --help)\n";
+  return 2;
+}
+
+}  // namespace oflab
