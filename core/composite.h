@@ -1,0 +1,23 @@
+// Porter-Duff "over" compositing of premultiplied layers into a frame.
+#pragma once
+
+#include <cstdint>
+
+#include "core/image.h"
+#include "core/layer.h"
+
+namespace oflab {
+
+// "Over" for one premultiplied pixel, per channel:
+//     out = src + round(dst * (255 - src.a) / 255)
+// (exact integer rounding, halves up). The result is well formed when both inputs are.
+Pixel over(Pixel src, Pixel dst);
+
+// Composites `layer` over `frame`, with layer pixel (0, 0) placed on frame pixel
+// (offset_x, offset_y). Only layer pixels whose centre lies inside layer.polygon (the
+// half-open rule of core/scan_conversion.h) take part, clipped to the frame; no other
+// frame pixel changes. Offsets may be negative or put the layer wholly outside the frame.
+// Returns the number of frame pixels composited.
+std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y);
+
+}  // namespace oflab
