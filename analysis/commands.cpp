@@ -11,6 +11,18 @@ const std::vector<Command>& all_commands() {
        "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
        "               --plane-size SW SH] [--dt T] [--motion screw|rt|centre] [--json]",
        run_flow_command},
+      {"animate", "play a motion script through the engine: levels, errors, savings",
+       "oflab-cli animate --script NAME|FILE [--texture FILE]\n"
+       "               [--mode perspective|affine|rerender|exact]\n"
+       "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
+       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n"
+       "               [--sampling nearest|bilinear] [--frames N]\n"
+       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]",
+       run_animate_command},
+      {"make-butterfly", "write the bundled butterfly texture as a PNG",
+       "oflab-cli make-butterfly --out FILE [--force]", run_make_butterfly_command},
+      {"slices", "scene-shifting slices of a sideways-moving viewer and their asymptote",
+       "oflab-cli slices --speed V --focal K --epsilon E [--near Z0] [--json]", run_slices_command},
   };
   return commands;
 }

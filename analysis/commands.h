@@ -23,6 +23,13 @@ const std::vector<Command>& all_commands();
 
 // `oflab-cli flow`: the instantaneous flow of one moving plane (analysis/flow_command.cpp).
 int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+int run_slices_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli animate`: plays a motion script through the engine (analysis/animate_command.cpp).
+int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli make-butterfly`: writes the bundled demo texture.
+int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
 // Dispatches argv[1..] to a subcommand; prints help for no arguments or --help.
 int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);

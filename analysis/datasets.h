@@ -1,0 +1,24 @@
+// Where the bundled data lives (datasets/ of the source tree, or $OFLAB_DATASETS), and
+// lookup of shipped scripts and textures by name.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace oflab {
+
+// The datasets directory: $OFLAB_DATASETS when set, else the source tree's datasets/.
+std::string datasets_dir();
+
+// Resolves a script argument: an existing file path is used as is; otherwise a shipped
+// script name (datasets/scripts/NAME.json). Throws std::runtime_error listing the shipped
+// names when neither exists.
+std::string resolve_script_path(const std::string& name_or_file);
+
+// Names of the shipped motion scripts, sorted.
+std::vector<std::string> shipped_script_names();
+
+// The bundled butterfly texture (datasets/textures/butterfly.png).
+std::string default_texture_path();
+
+}  // namespace oflab
