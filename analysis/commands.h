@@ -23,6 +23,7 @@ const std::vector<Command>& all_commands();
 
 // `oflab-cli flow`: the instantaneous flow of one moving plane (analysis/flow_command.cpp).
 int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+// `oflab-cli slices`: Hofmann's scene-shifting slices (analysis/slices_command.cpp).
 int run_slices_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
 // `oflab-cli animate`: plays a motion script through the engine (analysis/animate_command.cpp).
