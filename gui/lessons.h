@@ -1,0 +1,36 @@
+// Lesson presets for the classroom: each sets up a view, a scene and motion, the view's
+// options and a narrative caption shown above the views. manual/lessons.md has one
+// section per preset (what to show, what to ask, what to point at). Plain C++.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gui/basis_catalog.h"
+#include "gui/flow_display.h"
+#include "gui/plane_scene.h"
+
+namespace oflab {
+
+struct Lesson {
+  std::string name;     // command-line name, e.g. "flow-of-a-plane"
+  std::string title;    // menu entry
+  std::string caption;  // the narrative, a few sentences
+  std::string view;     // the view it shows: "flow" or "basis"
+  PlaneScene scene;
+  FlowDisplay flow;
+  BasisKind basis = BasisKind::Planar;
+  bool play_basis = false;   // animate the gallery's deformation amount
+  bool play_motion = false;  // play the scene's motion
+};
+
+// Every preset, in teaching order.
+const std::vector<Lesson>& lessons();
+
+// The preset with this name, or nullptr.
+const Lesson* find_lesson(const std::string& name);
+
+// The names, comma separated, for error messages and --help.
+std::string lesson_names();
+
+}  // namespace oflab

@@ -1,0 +1,283 @@
+#include "gui/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include "analysis/datasets.h"
+#include "analysis/script_file.h"
+#include "gui/app_theme.h"
+#include "gui/basis_view.h"
+#include "gui/flow_view.h"
+#include "gui/scene_controls.h"
+#include "gui/scene_model.h"
+#include "gui/screenshot.h"
+#include "gui/texture.h"
+
+namespace oflab {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setWindowTitle(tr("oflab - Optic Flow Lab"));
+  model_ = new SceneModel(this);
+  motion_timer_ = new QTimer(this);
+  motion_timer_->setInterval(static_cast<int>(1000.0 * SceneModel::kSecondsPerFrame));
+  connect(motion_timer_, &QTimer::timeout, this, [this] { model_->advance(1); });
+
+  auto* central = new QWidget(this);
+  auto* layout = new QVBoxLayout(central);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(create_banners());
+  tabs_ = new QTabWidget(central);
+  tabs_->setObjectName(QStringLiteral("view_tabs"));
+  layout->addWidget(tabs_, 1);
+  setCentralWidget(central);
+
+  flow_view_ = new FlowView(model_);
+  basis_view_ = new BasisView(model_);
+  add_view(flow_view_);
+  add_view(basis_view_);
+
+  controls_ = new SceneControls(model_);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(controls_);
+  scroll->setWidgetResizable(true);
+  auto* dock = new QDockWidget(tr("Scene"), this);
+  dock->setObjectName(QStringLiteral("scene_dock"));
+  dock->setWidget(scroll);
+  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(Qt::LeftDockWidgetArea, dock);
+
+  create_actions();
+  create_menus();
+  create_play_bar();
+  connect(model_, &SceneModel::scene_rejected, this, &MainWindow::show_message);
+  connect(model_, &SceneModel::scene_changed, this, [this] {
+    clear_message();
+    update_frame_label();
+  });
+  apply_app_theme(false);
+  statusBar()->showMessage(tr("Default demo: a textured plane in a screw motion"));
+  resize(1280, 800);
+}
+
+QWidget* MainWindow::create_banners() {
+  auto* box = new QWidget(this);
+  auto* layout = new QVBoxLayout(box);
+  layout->setContentsMargins(0, 0, 0, 0);
+  caption_banner_ = new QLabel(box);
+  caption_banner_->setObjectName(QStringLiteral("caption_banner"));
+  caption_banner_->setWordWrap(true);
+  caption_banner_->setStyleSheet(QStringLiteral(
+      "QLabel { background: #0072B2; color: white; padding: 6px; border-radius: 3px; }"));
+  caption_banner_->hide();
+  message_banner_ = new QLabel(box);
+  message_banner_->setObjectName(QStringLiteral("message_banner"));
+  message_banner_->setWordWrap(true);
+  message_banner_->setStyleSheet(QStringLiteral(
+      "QLabel { background: #D55E00; color: white; padding: 6px; border-radius: 3px; }"));
+  message_banner_->hide();
+  layout->addWidget(caption_banner_);
+  layout->addWidget(message_banner_);
+  return box;
+}
+
+void MainWindow::create_actions() {
+  play_action_ = new QAction(tr("Play motion"), this);
+  play_action_->setCheckable(true);
+  play_action_->setShortcut(Qt::Key_Space);
+  connect(play_action_, &QAction::toggled, this, &MainWindow::set_motion_playing);
+  step_action_ = new QAction(tr("Step"), this);
+  step_action_->setShortcut(Qt::Key_Right);
+  connect(step_action_, &QAction::triggered, this, [this] { model_->advance(1); });
+  back_action_ = new QAction(tr("Back"), this);
+  back_action_->setShortcut(Qt::Key_Left);
+  connect(back_action_, &QAction::triggered, this,
+          [this] { model_->set_frame(std::max(0, model_->frame() - 1)); });
+  reset_action_ = new QAction(tr("First frame"), this);
+  reset_action_->setShortcut(Qt::Key_Home);
+  connect(reset_action_, &QAction::triggered, this, [this] { model_->set_frame(0); });
+  presentation_action_ = new QAction(tr("Presentation mode"), this);
+  presentation_action_->setCheckable(true);
+  presentation_action_->setShortcut(Qt::Key_F11);
+  connect(presentation_action_, &QAction::toggled, this, &MainWindow::set_presentation);
+}
+
+void MainWindow::create_menus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  connect(file->addAction(tr("Load texture...")), &QAction::triggered, this,
+          &MainWindow::load_texture);
+  connect(file->addAction(tr("Open script...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open motion script"), QString(),
+                                                      tr("Motion scripts (*.json)"));
+    if (!path.isEmpty()) load_script(path);
+  });
+  QMenu* shipped = file->addMenu(tr("Shipped scripts"));
+  for (const std::string& name : shipped_script_names()) {
+    const QString q = QString::fromStdString(name);
+    connect(shipped->addAction(q), &QAction::triggered, this, [this, q] { load_script(q); });
+  }
+  connect(file->addAction(tr("Save window screenshot...")), &QAction::triggered, this,
+          &MainWindow::save_screenshot);
+  file->addSeparator();
+  QAction* quit = file->addAction(tr("Quit"));
+  quit->setShortcut(QKeySequence::Quit);
+  connect(quit, &QAction::triggered, this, &QWidget::close);
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(presentation_action_);
+  for (QAction* a : {play_action_, step_action_, back_action_, reset_action_}) view->addAction(a);
+  QMenu* lesson_menu = menuBar()->addMenu(tr("&Lessons"));
+  for (const Lesson& lesson : lessons()) {
+    const std::string name = lesson.name;
+    connect(lesson_menu->addAction(QString::fromStdString(lesson.title)), &QAction::triggered, this,
+            [this, name] { apply_lesson(*find_lesson(name)); });
+  }
+}
+
+void MainWindow::create_play_bar() {
+  QToolBar* bar = addToolBar(tr("Play"));
+  bar->setObjectName(QStringLiteral("play_bar"));
+  for (QAction* a : {play_action_, back_action_, step_action_, reset_action_}) bar->addAction(a);
+  frame_label_ = new QLabel(bar);
+  bar->addWidget(frame_label_);
+  bar->addSeparator();
+  bar->addAction(presentation_action_);
+  update_frame_label();
+}
+
+void MainWindow::update_frame_label() {
+  frame_label_->setText(
+      tr("  frame %1 (t = %2 s)").arg(model_->frame()).arg(model_->time(), 0, 'f', 2));
+}
+
+void MainWindow::add_view(ViewPage* view) {
+  views_.push_back(view);
+  tabs_->addTab(view, view->view_title());
+  view->set_theme(view_theme(presentation_));
+}
+
+ViewPage* MainWindow::view(const QString& name) const {
+  for (ViewPage* v : views_) {
+    if (v->view_name() == name) return v;
+  }
+  return nullptr;
+}
+
+QStringList MainWindow::view_names() const {
+  QStringList names;
+  for (ViewPage* v : views_) names << v->view_name();
+  return names;
+}
+
+bool MainWindow::show_view(const QString& name) {
+  ViewPage* v = view(name);
+  if (!v) return false;
+  tabs_->setCurrentWidget(v);
+  return true;
+}
+
+ViewPage* MainWindow::current_view() const {
+  return static_cast<ViewPage*>(tabs_->currentWidget());
+}
+
+void MainWindow::apply_lesson(const Lesson& lesson) {
+  set_motion_playing(lesson.play_motion);
+  model_->set_frame(0);
+  model_->set_scene(lesson.scene);
+  flow_view_->set_display(lesson.flow);
+  basis_view_->set_basis(lesson.basis);
+  basis_view_->set_playing(lesson.play_basis);
+  show_view(QString::fromStdString(lesson.view));
+  set_caption(QString::fromStdString(lesson.caption));
+}
+
+QString MainWindow::caption() const { return caption_banner_->text(); }
+
+void MainWindow::set_caption(const QString& text) {
+  caption_banner_->setText(text);
+  caption_banner_->setVisible(!text.isEmpty());
+}
+
+QString MainWindow::message() const {
+  return message_banner_->isVisible() ? message_banner_->text() : QString();
+}
+
+void MainWindow::show_message(const QString& text) {
+  message_banner_->setText(tr("Not applied: %1. The scene is unchanged.").arg(text));
+  message_banner_->show();
+  statusBar()->showMessage(message_banner_->text(), 10000);
+}
+
+void MainWindow::clear_message() { message_banner_->hide(); }
+
+void MainWindow::set_presentation(bool on) {
+  presentation_ = on;
+  const QSignalBlocker block(presentation_action_);
+  presentation_action_->setChecked(on);
+  apply_app_theme(on);
+  for (ViewPage* v : views_) v->set_theme(view_theme(on));
+}
+
+bool MainWindow::motion_playing() const { return motion_timer_->isActive(); }
+
+void MainWindow::set_motion_playing(bool playing) {
+  const QSignalBlocker block(play_action_);
+  play_action_->setChecked(playing);
+  if (playing) {
+    motion_timer_->start();
+  } else {
+    motion_timer_->stop();
+  }
+}
+
+void MainWindow::play_frames(int frames) {
+  for (int i = 0; i < frames; ++i) {
+    model_->advance(1);
+    for (ViewPage* v : views_) v->step_animation();
+    QApplication::processEvents();
+  }
+}
+
+QImage MainWindow::grab_window_image() { return grab_with_vtk(this); }
+
+void MainWindow::load_texture() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load texture"), QString(),
+                                                    tr("Images (*.png *.jpg *.jpeg)"));
+  if (path.isEmpty()) return;
+  QString error;
+  const QImage image = load_texture_image(path, &error);
+  if (image.isNull()) {
+    show_message(error);
+    return;
+  }
+  model_->set_texture(image, path);
+}
+
+bool MainWindow::load_script(const QString& name_or_path) {
+  try {
+    const MotionScript script = read_script_file(resolve_script_path(name_or_path.toStdString()));
+    return model_->set_script(script, QFileInfo(name_or_path).completeBaseName());
+  } catch (const std::runtime_error& e) {  // unreadable or invalid: keep the session
+    show_message(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void MainWindow::save_screenshot() {
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save screenshot"), QStringLiteral("oflab.png"), tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!save_png(grab_window_image(), path, &error)) show_message(error);
+}
+
+}  // namespace oflab

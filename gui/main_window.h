@@ -1,0 +1,100 @@
+// The main window: one SceneModel shared by every view; the views as tabs (flow field,
+// basis deformations; the animation and analysis views are added the same way with
+// add_view); the scene panel as a dock; a caption banner for lessons and a message
+// banner for rejected input; play controls for the scene's motion; presentation mode.
+#pragma once
+
+#include <QMainWindow>
+#include <vector>
+
+#include "gui/lessons.h"
+
+class QAction;
+class QLabel;
+class QTabWidget;
+class QTimer;
+
+namespace oflab {
+
+class BasisView;
+class FlowView;
+class SceneControls;
+class SceneModel;
+class ViewPage;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  // Opens on the default demo with the flow view in front.
+  explicit MainWindow(QWidget* parent = nullptr);
+
+  SceneModel* model() const { return model_; }
+  SceneControls* scene_controls() const { return controls_; }
+  FlowView* flow_view() const { return flow_view_; }
+  BasisView* basis_view() const { return basis_view_; }
+
+  // Adds a view as a tab (the window takes ownership) and themes it.
+  void add_view(ViewPage* view);
+  // The view with this command-line name, or nullptr; all names in tab order.
+  ViewPage* view(const QString& name) const;
+  QStringList view_names() const;
+  // Brings the named view to the front; false when there is no such view.
+  bool show_view(const QString& name);
+  ViewPage* current_view() const;
+
+  // Sets up a lesson: its scene, view, options and caption.
+  void apply_lesson(const Lesson& lesson);
+  QString caption() const;
+  void set_caption(const QString& text);  // empty hides the banner
+
+  // The message shown for rejected input; empty when none is visible.
+  QString message() const;
+
+  bool presentation() const { return presentation_; }
+  void set_presentation(bool on);
+
+  bool motion_playing() const;
+  void set_motion_playing(bool playing);
+
+  // Advances the scene's motion and each view's own animation by `frames` steps, rendering
+  // the visible view after each (used by --screenshot --frames N).
+  void play_frames(int frames);
+
+  // Plays a motion script (a shipped name or a file). A script that cannot be read or
+  // used shows a message and leaves the session as it was; returns false then.
+  bool load_script(const QString& name_or_path);
+
+  // The whole window as drawn, VTK content included.
+  QImage grab_window_image();
+
+ private:
+  void create_actions();
+  void create_menus();
+  void create_play_bar();
+  QWidget* create_banners();
+  void show_message(const QString& text);
+  void clear_message();
+  void update_frame_label();
+  void load_texture();
+  void save_screenshot();
+
+  SceneModel* model_;
+  SceneControls* controls_;
+  QTabWidget* tabs_;
+  FlowView* flow_view_;
+  BasisView* basis_view_;
+  std::vector<ViewPage*> views_;
+  QLabel* caption_banner_ = nullptr;
+  QLabel* message_banner_ = nullptr;
+  QLabel* frame_label_ = nullptr;
+  QTimer* motion_timer_;
+  QAction* play_action_ = nullptr;
+  QAction* step_action_ = nullptr;
+  QAction* back_action_ = nullptr;
+  QAction* reset_action_ = nullptr;
+  QAction* presentation_action_ = nullptr;
+  bool presentation_ = false;
+};
+
+}  // namespace oflab

@@ -1,0 +1,38 @@
+// A labelled slider with a numeric spin box showing the same value: drag for a quick
+// change, type for an exact one. Only user edits emit `edited`; set_value is silent, so
+// the scene can push values back (for instance after rejecting an impossible one).
+#pragma once
+
+#include <QWidget>
+
+class QDoubleSpinBox;
+class QSlider;
+
+namespace oflab {
+
+class SliderSpin : public QWidget {
+  Q_OBJECT
+
+ public:
+  // Values from `minimum` to `maximum` in steps of `step`, shown with `decimals` decimals
+  // and the unit `suffix` (e.g. " rad/s").
+  SliderSpin(const QString& label, double minimum, double maximum, double step, int decimals,
+             const QString& suffix, QWidget* parent = nullptr);
+
+  double value() const;
+  void set_value(double value);  // emits nothing
+  QDoubleSpinBox* spin_box() const { return spin_; }
+  QSlider* slider() const { return slider_; }
+
+ signals:
+  void edited(double value);
+
+ private:
+  int slider_position(double value) const;
+
+  QSlider* slider_;
+  QDoubleSpinBox* spin_;
+  double minimum_, step_;
+};
+
+}  // namespace oflab
