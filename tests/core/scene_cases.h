@@ -1,0 +1,46 @@
+// Scenes for the scene tests, built in code, and the per-pixel reference they are checked
+// against: a ray caster that shares nothing with the engine but the data model.
+#pragma once
+
+#include <random>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/scene.h"
+#include "core/viewer_script.h"
+
+namespace oflab::testing {
+
+// An opaque checkerboard texture (8-texel cells, two colours, a distinct colour per
+// quadrant so that mirroring or rotation shows).
+Image checker_image(int width, int height);
+
+// A square polygon of side `size` centred at `centre` facing `front`, with up `up`.
+ScenePolygon square(const std::string& name, const Vec3& centre, const Vec3& front, const Vec3& up,
+                    double size, int texture = 0);
+
+// The five faces of an open cube (bottom missing), outward normals, world Y up.
+std::vector<ScenePolygon> open_cube(const std::string& name, const Vec3& centre, double size);
+
+// A scene with one checker texture (64 x 64) and the given polygons.
+Scene scene_with(std::vector<ScenePolygon> polygons);
+
+// `count` random convex polygons (3 to 6 vertices) in random planes, each inside its own
+// ball, the balls disjoint, so no two polygons intersect; all within [-6, 6]^3.
+std::vector<ScenePolygon> random_polygons(std::mt19937& rng, int count);
+
+// The per-pixel reference: for each pixel centre, the ray from the eye meets every polygon
+// facing the eye; hits beyond the near plane inside the polygon's outline are composited
+// far to near, each sampling its texture at the texel that contains the hit (nearest).
+Image ray_cast_scene(const Scene& scene, const Camera& camera, const ViewerPose& view, double near);
+
+// Share of pixels whose colour differs by more than `tolerance` in any channel (0..1),
+// counting only pixels that are not transparent in at least one of the images.
+double mismatch_fraction(const Image& a, const Image& b, int tolerance = 8);
+
+// Writes a binary PPM next to the test binary for inspection after a failure
+// (premultiplied colour over black).
+void save_ppm(const std::string& path, const Image& image);
+
+}  // namespace oflab::testing
