@@ -15,25 +15,12 @@ namespace {
 
 using testing::FlowCase;
 
-FlowCase tilted_case() {
-  FlowCase c;
-  c.camera = make_camera(600.0, 800, 600);
-  c.pose.point = Vec3(0.15, -0.1, 3.0);
-  c.pose.normal = Vec3(0.25, -0.15, 1.0);
-  c.pose.up = Vec3(0.0, -1.0, 0.0);
-  c.pose.size = Vec2(1.0, 0.8);
-  c.pose.texture_size = glm::ivec2(243, 198);
-  c.motion.velocity = Vec3(0.3, -0.2, 0.5);
-  c.motion.omega = Vec3(0.4, -0.3, 0.6);
-  return c;
-}
-
 PlanarFlowCoefficients coefficients(const FlowCase& c) {
   return planar_flow_coefficients(c.camera, c.pose, c.motion);
 }
 
 TEST(Errata, Erratum03TaylorSecondOrderTermNeedsOneHalf) {
-  const FlowCase c = tilted_case();
+  const FlowCase c = testing::default_case();
   const TaylorTerms t = taylor_terms(coefficients(c));
   const Vec2 p(120.0, -70.0);
   const Vec2 exact = exact_flow_at(c.camera, c.pose, c.motion, p);
@@ -46,8 +33,9 @@ TEST(Errata, Erratum03TaylorSecondOrderTermNeedsOneHalf) {
 }
 
 TEST(Errata, Erratum06And09StrainAndSpinUseTheRightDerivatives) {
-  const WaxmanUllmanTerms w = to_waxman_ullman(taylor_terms(coefficients(tilted_case())));
-  const PlanarFlowCoefficients k = coefficients(tilted_case());
+  const WaxmanUllmanTerms w =
+      to_waxman_ullman(taylor_terms(coefficients(testing::default_case())));
+  const PlanarFlowCoefficients k = coefficients(testing::default_case());
   EXPECT_DOUBLE_EQ(w.e_yy, k.j22);                  // dv2/dy, not v2 itself
   EXPECT_NE(w.e_yy, k.ty);
   EXPECT_DOUBLE_EQ(w.omega, 0.5 * (k.j21 - k.j12));  // curl / 2
@@ -56,7 +44,7 @@ TEST(Errata, Erratum06And09StrainAndSpinUseTheRightDerivatives) {
 }
 
 TEST(Errata, Erratum07DepthUsesFocalLengthTimesN3) {
-  const FlowCase c = tilted_case();
+  const FlowCase c = testing::default_case();
   const Vec2 p(150.0, 80.0);
   const double f = c.camera.focal_px;
   const Vec3 r = plane_point_at_pixel(c.pose, f, p);
@@ -66,7 +54,7 @@ TEST(Errata, Erratum07DepthUsesFocalLengthTimesN3) {
 }
 
 TEST(Errata, Erratum08PerspectiveTermsAreQuarterAndHalfCombinations) {
-  const PlanarFlowCoefficients k = coefficients(tilted_case());
+  const PlanarFlowCoefficients k = coefficients(testing::default_case());
   const TaylorTerms t = taylor_terms(k);
   EXPECT_DOUBLE_EQ(0.25 * t.v1_xx + 0.5 * t.v2_xy, k.px);
   const double printed_px = 0.5 * t.v2_yy + t.v1_xy;  // = 2 py: labels swapped, factor 2
@@ -75,7 +63,7 @@ TEST(Errata, Erratum08PerspectiveTermsAreQuarterAndHalfCombinations) {
 }
 
 TEST(Errata, Erratum10PerspectiveTermPxComesFromOmega2AndPyFromOmega1) {
-  FlowCase c = tilted_case();
+  FlowCase c = testing::default_case();
   c.motion.velocity = Vec3(0.0);
   c.motion.omega = Vec3(0.0, 0.5, 0.0);
   PlanarFlowCoefficients k = coefficients(c);
@@ -88,7 +76,7 @@ TEST(Errata, Erratum10PerspectiveTermPxComesFromOmega2AndPyFromOmega1) {
 }
 
 TEST(Errata, Erratum12RotationAboutTheAxisEntersV2WithPlusSign) {
-  FlowCase c = tilted_case();
+  FlowCase c = testing::default_case();
   c.motion.velocity = Vec3(0.0);
   c.motion.omega = Vec3(0.0, 0.0, 0.7);
   const double h = 1.0;
@@ -98,7 +86,7 @@ TEST(Errata, Erratum12RotationAboutTheAxisEntersV2WithPlusSign) {
 }
 
 TEST(Errata, Erratum15AccelerationIsNotOrderOmegaSquared) {
-  FlowCase c = tilted_case();
+  FlowCase c = testing::default_case();
   c.pose.point = Vec3(0.0, 0.0, 2.0);
   c.pose.normal = Vec3(0.0, 0.0, 1.0);
   c.motion.velocity = Vec3(0.0, 0.0, -0.4);  // approaching, no rotation
@@ -119,7 +107,7 @@ Mat3 printed_sign_homography(const PlanarFlowCoefficients& c, double dt) {
 }
 
 TEST(Errata, Erratum16And17PrintedPerspectiveSignMakesTheErrorFirstOrder) {
-  const FlowCase c = tilted_case();
+  const FlowCase c = testing::default_case();
   const PlanarFlowCoefficients k = coefficients(c);
   auto error = [&](const Mat3& h, double dt) {
     return max_corner_distance(
@@ -137,7 +125,7 @@ TEST(Errata, Erratum16And17PrintedPerspectiveSignMakesTheErrorFirstOrder) {
 }
 
 TEST(Errata, Erratum18OffsetAddedToTheHomogeneousVectorIsNotProjective) {
-  const FlowCase c = tilted_case();
+  const FlowCase c = testing::default_case();
   const Mat3 w = texture_to_image(c.camera, c.pose);
   const AffinePerspectiveSplit s = split_affine_perspective(w, DeltaPolicy::SqrtAbsDet);
   const Vec2 texel(200.0, 30.0);
@@ -153,7 +141,7 @@ TEST(Errata, Erratum18OffsetAddedToTheHomogeneousVectorIsNotProjective) {
 }
 
 TEST(Errata, Erratum19SqrtDeltaPutsAllScalingInTheCache) {
-  const FlowCase c = tilted_case();
+  const FlowCase c = testing::default_case();
   const Mat3 w = texture_to_image(c.camera, c.pose);
   const double det_a = glm::determinant(origin_jacobian(w));
   const AffinePerspectiveSplit s = split_affine_perspective(w, DeltaPolicy::SqrtAbsDet);
@@ -164,7 +152,7 @@ TEST(Errata, Erratum19SqrtDeltaPutsAllScalingInTheCache) {
 }
 
 TEST(Errata, Erratum20And21InitialHomographyUsesRightUpAndPosition) {
-  const FlowCase c = tilted_case();
+  const FlowCase c = testing::default_case();
   const PlaneAxes a = plane_axes(c.pose);
   // [R U N] is left-handed with R = N x U: never a rotation.
   EXPECT_NEAR(glm::determinant(Mat3(a.right, a.up, a.normal)), -1.0, 1e-12);

@@ -130,15 +130,8 @@ TEST(PlanarFlow, ImageAccelerationMatchesSecondDifferenceForEveryMotionModel) {
 
 // The worked example of the reference (planar-flow-math.md section 4.2, "Default case").
 TEST(PlanarFlow, DefaultCaseMatchesPublishedWorkedExample) {
-  const Camera cam = make_camera(600.0, 800, 600);
-  PlanePose pose;
-  pose.point = Vec3(0.15, -0.1, 3.0);
-  pose.normal = Vec3(0.25, -0.15, 1.0);
-  pose.up = Vec3(0.0, -1.0, 0.0);
-  RigidMotion m;
-  m.velocity = Vec3(0.3, -0.2, 0.5);
-  m.omega = Vec3(0.4, -0.3, 0.6);
-  const PlanarFlowCoefficients k = planar_flow_coefficients(cam, pose, m);
+  const FlowCase c = testing::default_case();
+  const PlanarFlowCoefficients k = planar_flow_coefficients(c.camera, c.pose, c.motion);
   EXPECT_NEAR(k.tx, -121.03, 0.01);
   EXPECT_NEAR(k.ty, -279.31, 0.01);
   EXPECT_NEAR(k.j11, -0.13923, 1e-5);

@@ -20,19 +20,6 @@ double taylor_corner_error(const FlowCase& c, double dt) {
   return max_corner_distance(h, projected_corners(c.camera, c.pose), corners_after(c, dt));
 }
 
-FlowCase default_case() {
-  FlowCase c;
-  c.camera = make_camera(600.0, 800, 600);
-  c.pose.point = Vec3(0.15, -0.1, 3.0);
-  c.pose.normal = Vec3(0.25, -0.15, 1.0);
-  c.pose.up = Vec3(0.0, -1.0, 0.0);
-  c.pose.size = Vec2(1.0, 0.8);
-  c.pose.texture_size = glm::ivec2(243, 198);
-  c.motion.velocity = Vec3(0.3, -0.2, 0.5);
-  c.motion.omega = Vec3(0.4, -0.3, 0.6);
-  return c;
-}
-
 TEST(Homography, TaylorHomographyErrorShrinksQuadratically) {
   std::mt19937 rng(21);
   for (int i = 0; i < 100; ++i) {
@@ -98,7 +85,7 @@ TEST(Homography, TextureToImageSendsTexelCornersToProjectedCorners) {
 }
 
 TEST(Homography, DefaultCaseCornerErrorsMatchTheWorkedExample) {
-  const FlowCase c = default_case();
+  const FlowCase c = testing::default_case();
   const ApproximationErrors e =
       approximation_corner_errors(c.camera, c.pose, c.motion, 1.0 / 30.0);
   EXPECT_NEAR(e.none, 11.80, 0.01);
@@ -111,7 +98,7 @@ TEST(Homography, DefaultCaseCornerErrorsMatchTheWorkedExample) {
 }
 
 TEST(Homography, PixelHomographyIsTheCentredOneShifted) {
-  const FlowCase c = default_case();
+  const FlowCase c = testing::default_case();
   const Mat3 h = exact_homography(c.camera, c.pose, c.motion, 0.1);
   const Mat3 hp = centred_to_pixel_homography(c.camera, h);
   const Vec2 p(13.0, -40.0);

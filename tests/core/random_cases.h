@@ -35,6 +35,21 @@ inline FlowCase random_flow_case(std::mt19937& rng, int index) {
   return c;
 }
 
+// The worked example of planar-flow-math.md section 4.2 ("Default case"): a tilted
+// 1.0 x 0.8 plane at depth 3 with a general screw motion, f = 600 px, 800 x 600 image.
+inline FlowCase default_case() {
+  FlowCase c;
+  c.camera = make_camera(600.0, 800, 600);
+  c.pose.point = Vec3(0.15, -0.1, 3.0);
+  c.pose.normal = Vec3(0.25, -0.15, 1.0);
+  c.pose.up = Vec3(0.0, -1.0, 0.0);
+  c.pose.size = Vec2(1.0, 0.8);
+  c.pose.texture_size = glm::ivec2(243, 198);
+  c.motion.velocity = Vec3(0.3, -0.2, 0.5);
+  c.motion.omega = Vec3(0.4, -0.3, 0.6);
+  return c;
+}
+
 // Centred pixel positions where the plane of `c` is seen in front of the eye: the images of
 // interior points of the plane rectangle.
 inline std::vector<Vec2> sample_plane_pixels(const FlowCase& c) {
