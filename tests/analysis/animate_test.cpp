@@ -15,6 +15,7 @@
 #include "analysis/datasets.h"
 #include "analysis/image_io.h"
 #include "analysis/script_file.h"
+#include "cli_capture.h"
 
 namespace oflab {
 namespace {
@@ -107,16 +108,9 @@ TEST(Experiment1, ExactModeKeepsNoModelErrorAndNeverNeedsTheHigherOrderBudget) {
   }
 }
 
-struct Cli {
-  int code;
-  std::string out, err;
-};
+using Cli = testing::CliResult;
 
-Cli cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+Cli cli(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
 
 TEST(AnimateCommand, JsonSummaryHasTheContractedFields) {
   const Cli c = cli({"animate", "--script", "translation-1", "--frames", "20", "--json"});

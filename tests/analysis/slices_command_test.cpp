@@ -8,20 +8,14 @@
 #include <sstream>
 
 #include "analysis/commands.h"
+#include "cli_capture.h"
 
 namespace oflab {
 namespace {
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
+using testing::CliResult;
 
-CliResult run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+CliResult run(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
 
 TEST(SlicesCommand, JsonListsSlicesWithNullFarForTheBackground) {
   const CliResult r = run(

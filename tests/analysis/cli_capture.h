@@ -1,0 +1,23 @@
+// Runs oflab-cli in-process and captures what it prints, for command tests.
+#pragma once
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analysis/commands.h"
+
+namespace oflab::testing {
+
+struct CliResult {
+  int code;
+  std::string out, err;
+};
+
+inline CliResult run_cli_captured(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = run_cli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+}  // namespace oflab::testing
