@@ -1,0 +1,32 @@
+// Image comparisons for the GUI tests.
+//
+// Tolerance: screenshots are compared by PSNR on 8-bit RGB after both images are scaled
+// (smoothly) to the baseline's size, which is a quarter of the view's width or less.
+// PSNR = 10 log10(255^2 / MSE) over all channels; 30 dB is an RMS error of 8 grey levels,
+// which absorbs anti-aliasing and font-hinting differences between Mesa builds but not a
+// lost arrow field (a flow view without its arrows scores below 25 dB; a test checks it).
+#pragma once
+
+#include <QImage>
+#include <QString>
+
+namespace oflab::test {
+
+constexpr double kBaselinePsnrDb = 30.0;
+
+// PSNR in dB of b against a (same size, RGB); infinity when they are equal.
+double psnr_db(const QImage& a, const QImage& b);
+
+// The image scaled smoothly to `size`, as RGB32.
+QImage scaled_rgb(const QImage& image, const QSize& size);
+
+// Number of distinct RGB colours (a rendered view has many; a blank one has one or two).
+int distinct_colours(const QImage& image);
+
+// Fraction of pixels that differ by more than `threshold` in any channel (same size).
+double changed_fraction(const QImage& a, const QImage& b, int threshold = 8);
+
+// Directory for images written by failing tests (created on demand).
+QString output_dir();
+
+}  // namespace oflab::test
