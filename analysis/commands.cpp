@@ -23,6 +23,10 @@ const std::vector<Command>& all_commands() {
        "oflab-cli make-butterfly --out FILE [--force]", run_make_butterfly_command},
       {"slices", "scene-shifting slices of a sideways-moving viewer and their asymptote",
        "oflab-cli slices --speed V --focal K --epsilon E [--near Z0] [--json]", run_slices_command},
+      {"experiments", "re-run the dissertation's experiments; report beside the published figures",
+       "oflab-cli experiments [--out DIR] [--only exp1|delta|warp|exp2|sweep ...] [--quick]\n"
+       "               [--force]   (draws charts: needs an X display, e.g. xvfb-run -a)",
+       run_experiments_command},
   };
   return commands;
 }

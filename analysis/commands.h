@@ -32,6 +32,10 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
 // `oflab-cli make-butterfly`: writes the bundled demo texture.
 int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
+// `oflab-cli experiments`: re-runs the dissertation's experiments and writes a report
+// (analysis/experiments_command.cpp, manual/experiments.md).
+int run_experiments_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
 // Dispatches argv[1..] to a subcommand; prints help for no arguments or --help.
 int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);
 

@@ -1,0 +1,151 @@
+#include "analysis/experiments_runs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace oflab {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const char* level_word(int level) {
+  static const char* words[] = {"none", "translate", "affine", "perspective", "re-render"};
+  return words[level];
+}
+
+std::string signed_points(double d) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(0);
+  s << (d >= 0 ? "+" : "") << d;
+  return s.str();
+}
+
+}  // namespace
+
+double median_of(std::vector<double> values) {
+  values.erase(
+      std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+      values.end());
+  if (values.empty()) return kNaN;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<MeasuredRun> measure_interleaved(
+    const MotionScript& script, const Layer& texture, const std::vector<EngineSettings>& settings,
+    const RunSpec& spec, const std::function<void(const std::string&)>& progress) {
+  const int reps = std::max(1, spec.repetitions);
+  std::vector<MeasuredRun> runs(settings.size());
+  // times[setting][frame][repetition]
+  std::vector<std::vector<std::vector<double>>> times(settings.size());
+  for (int rep = 0; rep < reps; ++rep) {
+    if (progress) {
+      progress(std::to_string(settings.size()) + " runs of " +
+               (spec.max_frames > 0 ? "at most " + std::to_string(spec.max_frames)
+                                    : std::to_string(script.frames.size())) +
+               " frames, repetition " + std::to_string(rep + 1) + "/" + std::to_string(reps));
+    }
+    for (size_t k = 0; k < settings.size(); ++k) {
+      AnimationOptions options;
+      options.settings = settings[k];
+      options.max_frames = spec.max_frames;
+      options.run_baseline = false;
+      options.measure_psnr = spec.measure_psnr && rep == 0;
+      AnimationRun run = run_animation(script, texture, options);
+      if (rep == 0) {
+        runs[k].settings = settings[k];
+        runs[k].reports = run.reports;
+        runs[k].psnr_db = run.psnr_db;
+        runs[k].summary = run.summary;
+        times[k].assign(run.reports.size(), {});
+      }
+      for (size_t f = 0; f < run.reports.size() && f < times[k].size(); ++f) {
+        times[k][f].push_back(run.reports[f].time_ms);
+      }
+    }
+  }
+  for (size_t k = 0; k < runs.size(); ++k) {
+    MeasuredRun& r = runs[k];
+    r.frame_ms.clear();
+    for (const auto& per_rep : times[k]) r.frame_ms.push_back(median_of(per_rep));
+    r.summary.time_ms = 0.0;
+    for (double t : r.frame_ms) r.summary.time_ms += t;
+    r.summary.median_frame_ms = median_of(r.frame_ms);
+  }
+  return runs;
+}
+
+double time_saved(const MeasuredRun& run, const MeasuredRun& baseline) {
+  return baseline.summary.time_ms > 0 ? 1.0 - run.summary.time_ms / baseline.summary.time_ms : kNaN;
+}
+
+double work_saved(const MeasuredRun& run, const MeasuredRun& baseline) {
+  return baseline.summary.pixels > 0 ? 1.0 - static_cast<double>(run.summary.pixels) /
+                                                 static_cast<double>(baseline.summary.pixels)
+                                     : kNaN;
+}
+
+std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run) {
+  std::array<double, kLevelCount> percent{};
+  const size_t n = run.reports.size();
+  if (n < 2) return percent;
+  for (size_t i = 1; i < n; ++i) percent[static_cast<int>(run.reports[i].level)] += 1.0;
+  for (double& p : percent) p *= 100.0 / static_cast<double>(n - 1);
+  return percent;
+}
+
+double median_level_ms(const MeasuredRun& run, Level level) {
+  std::vector<double> times;
+  for (size_t i = 1; i < run.reports.size() && i < run.frame_ms.size(); ++i) {
+    if (run.reports[i].level == level) times.push_back(run.frame_ms[i]);
+  }
+  return median_of(times);
+}
+
+int sampling_limit_rerenders(const MeasuredRun& run) {
+  int count = 0;
+  for (size_t i = 1; i < run.reports.size(); ++i) {
+    const FrameReport& r = run.reports[i];
+    if (r.level == Level::kRerender && r.note.find("sampling limit") != std::string::npos) ++count;
+  }
+  return count;
+}
+
+std::string level_mix_reading(const std::array<double, kLevelCount>& published,
+                              const std::array<double, kLevelCount>& measured) {
+  std::array<int, kLevelCount> order{};
+  for (int l = 0; l < kLevelCount; ++l) order[l] = l;
+  std::array<double, kLevelCount> diff{};
+  for (int l = 0; l < kLevelCount; ++l) diff[l] = measured[l] - published[l];
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return std::abs(diff[a]) > std::abs(diff[b]); });
+  std::string text;
+  for (int k = 0; k < 2; ++k) {
+    const int l = order[k];
+    if (std::abs(diff[l]) < 5.0) break;
+    if (!text.empty()) text += ", ";
+    text += std::string(diff[l] > 0 ? "more " : "fewer ") + level_word(l) + " (" +
+            signed_points(diff[l]) + ")";
+  }
+  return text.empty() ? "level mix within 5 points" : text;
+}
+
+std::string fixed(double value, int decimals) {
+  if (!std::isfinite(value)) return "n/a";
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(decimals);
+  s << value;
+  return s.str();
+}
+
+std::string percent(double fraction, int decimals) {
+  if (!std::isfinite(fraction)) return "n/a";
+  return fixed(100.0 * fraction, decimals) + "%";
+}
+
+}  // namespace oflab

@@ -1,0 +1,67 @@
+// Measured engine runs for the experiments: a script played under several engine
+// settings, interleaved and repeated in one process, so that every setting (and the
+// re-render baseline) sees the same machine load; timings are per-frame medians over the
+// repetitions. Level choices, pixel counts and errors are deterministic and taken from the
+// first repetition.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/animation_run.h"
+
+namespace oflab {
+
+struct RunSpec {
+  int max_frames = -1;        // play at most this many frames (-1: the whole script)
+  int repetitions = 1;        // >= 1; timings are medians over these
+  bool measure_psnr = false;  // PSNR against an exact render, in the first repetition
+};
+
+struct MeasuredRun {
+  EngineSettings settings;
+  std::vector<FrameReport> reports;  // first repetition
+  std::vector<double> psnr_db;       // per frame; NaN when not measured or not visible
+  std::vector<double> frame_ms;      // per frame: median over the repetitions
+  AnimationSummary summary;          // levels, pixels, errors; time_ms = sum of frame_ms;
+                                     // no baseline fields (see time_saved below)
+};
+
+// Plays `script` under each of `settings` in turn, spec.repetitions times over (setting
+// order kept within each repetition). `progress` (may be empty) receives a short line
+// before each repetition. Returns one MeasuredRun per setting, in order.
+std::vector<MeasuredRun> measure_interleaved(
+    const MotionScript& script, const Layer& texture, const std::vector<EngineSettings>& settings,
+    const RunSpec& spec, const std::function<void(const std::string&)>& progress);
+
+// 1 - time / baseline time, over the same frames (sums of the per-frame medians).
+double time_saved(const MeasuredRun& run, const MeasuredRun& baseline);
+// 1 - pixels written / baseline pixels written.
+double work_saved(const MeasuredRun& run, const MeasuredRun& baseline);
+
+// Percent of frames at each level over frames 1..N-1: frame 0 is the initial render in
+// every mode and the dissertation's percentages describe the updates after it.
+std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run);
+
+// Median frame time (ms) of the frames after the first at `level`; NaN if there is none.
+double median_level_ms(const MeasuredRun& run, Level level);
+
+// Re-renders after frame 0 whose note names the sampling limit.
+int sampling_limit_rerenders(const MeasuredRun& run);
+
+// Median of the finite values; NaN when there is none.
+double median_of(std::vector<double> values);
+
+// One clause describing how a level mix differs from a reference mix, in percentage
+// points: "level mix within 5 points" or e.g. "more translate (+24), fewer none (-26)"
+// (the two largest differences of 5 points or more).
+std::string level_mix_reading(const std::array<double, kLevelCount>& published,
+                              const std::array<double, kLevelCount>& measured);
+
+// Number formatting for report tables: fixed decimals; "n/a" for non-finite values.
+std::string fixed(double value, int decimals);
+std::string percent(double fraction, int decimals = 1);  // 0.123 -> "12.3%"
+
+}  // namespace oflab
