@@ -30,6 +30,7 @@ BasisView::BasisView(SceneModel* model, QWidget* parent) : ViewPage(parent), mod
   vtk_widget_ = new QVTKOpenGLNativeWidget(this);
   vtk_widget_->setObjectName(QStringLiteral("basis_vtk"));
   auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window->SetMultiSamples(0);  // MSAA costs most of the frame on software OpenGL
   vtk_widget_->setRenderWindow(window);
   window->GetInteractor()->SetInteractorStyle(nullptr);
   tiles_ = std::make_unique<BasisTiles>(window);

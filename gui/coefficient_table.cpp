@@ -24,7 +24,6 @@ CoefficientTable::CoefficientTable(QWidget* parent) : QWidget(parent) {
   table_->setHorizontalHeaderLabels({tr("Term"), tr("Value"), tr("Unit")});
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
   layout->addWidget(table_, 1);
   connect(basis_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
@@ -52,23 +51,41 @@ QString CoefficientTable::value_text(int row) const {
 
 void CoefficientTable::refill() {
   const std::vector<BasisTerm> terms = basis_terms(basis());
-  table_->setRowCount(static_cast<int>(terms.size()));
+  // Rebuild the rows only when the basis changes; while the motion plays only the value
+  // cells change (re-laying out the whole table every frame costs more than rendering).
+  const bool rebuild = table_->rowCount() != static_cast<int>(terms.size()) ||
+                       shown_basis_ != static_cast<int>(basis());
+  if (rebuild) {
+    table_->setRowCount(static_cast<int>(terms.size()));
+    for (int row = 0; row < table_->rowCount(); ++row) {
+      const BasisTerm& term = terms[static_cast<size_t>(row)];
+      const QStringList cells = {QString::fromStdString(term.symbol), QString(),
+                                 QString::fromUtf8(order_unit(term.order))};
+      for (int col = 0; col < 3; ++col) {
+        auto* item = new QTableWidgetItem(cells[col]);
+        item->setToolTip(QString::fromStdString(term.description));
+        if (col == 1) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table_->setItem(row, col, item);
+      }
+    }
+    shown_basis_ = static_cast<int>(basis());
+  }
+  const QColor normal = palette().color(QPalette::Active, QPalette::Text);
   const QColor muted = palette().color(QPalette::Disabled, QPalette::Text);
-  for (int row = 0; row < static_cast<int>(terms.size()); ++row) {
+  for (int row = 0; row < table_->rowCount(); ++row) {
     const BasisTerm& term = terms[static_cast<size_t>(row)];
     const double value = term.coefficient(flow_);
     const bool zero = is_negligible(term.order, value, radius_px_);
     const QString shown = zero ? QStringLiteral("0") : QString::number(value, 'g', 5);
-    const QStringList cells = {QString::fromStdString(term.symbol), shown,
-                               QString::fromUtf8(order_unit(term.order))};
+    if (table_->item(row, 1)->text() != shown) table_->item(row, 1)->setText(shown);
     for (int col = 0; col < 3; ++col) {
-      auto* item = new QTableWidgetItem(cells[col]);
-      item->setToolTip(QString::fromStdString(term.description));
-      if (zero) item->setForeground(muted);
-      if (col == 1) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-      table_->setItem(row, col, item);
+      QTableWidgetItem* item = table_->item(row, col);
+      if (item->foreground().color() != (zero ? muted : normal)) {
+        item->setForeground(zero ? muted : normal);
+      }
     }
   }
+  if (rebuild) table_->resizeColumnsToContents();
 }
 
 }  // namespace oflab

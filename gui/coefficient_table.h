@@ -36,6 +36,7 @@ class CoefficientTable : public QWidget {
   QTableWidget* table_;
   TaylorTerms flow_;
   double radius_px_ = 1.0;
+  int shown_basis_ = -1;  // basis of the current rows
 };
 
 }  // namespace oflab

@@ -22,6 +22,7 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   vtk_widget_ = new QVTKOpenGLNativeWidget(this);
   vtk_widget_->setObjectName(QStringLiteral("flow_vtk"));
   auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window->SetMultiSamples(0);  // MSAA costs most of the frame on software OpenGL
   vtk_widget_->setRenderWindow(window);
   // The flow view is a fixed camera: no mouse rotation of the image plane.
   window->GetInteractor()->SetInteractorStyle(nullptr);
