@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/animate_options.h"
+#include "analysis/animate_scene.h"
 #include "analysis/animation_run.h"
 #include "analysis/cli_args.h"
 #include "analysis/commands.h"
@@ -20,52 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-EngineSettings read_settings(const CliArgs& a) {
-  EngineSettings s;
-  const std::string mode = a.text_or("--mode", "perspective");
-  if (!parse_engine_mode(mode, &s.mode)) {
-    throw UsageError("--mode: '" + mode + "' is not one of perspective, affine, rerender, exact");
-  }
-  if (a.has("--threshold") && a.has("--thresholds")) {
-    throw UsageError("--thresholds: give either --threshold or --thresholds, not both");
-  }
-  if (a.has("--threshold")) s.thresholds.fill(a.number("--threshold"));
-  if (a.has("--thresholds")) {
-    const auto& v = a.values("--thresholds");
-    for (int i = 0; i < kTermCount; ++i) {
-      s.thresholds[i] = CliArgs({"--t", v[i]}, {{"--t", 1}}).number("--t");
-    }
-  }
-  for (double t : s.thresholds) {
-    if (!(t >= 0.0)) throw UsageError("--threshold: thresholds must be zero or positive pixels");
-  }
-  const std::string delta = a.text_or("--delta", "dissertation");
-  if (!parse_delta_policy(delta, &s.delta)) {
-    throw UsageError("--delta: '" + delta + "' is not one of 1, det, sqrt, fourth-root, dissertation");
-  }
-  const std::string sampling = a.text_or("--sampling", "nearest");
-  if (sampling == "nearest") {
-    s.sampling = Sampling::kNearest;
-  } else if (sampling == "bilinear") {
-    s.sampling = Sampling::kBilinear;
-  } else {
-    throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
-  }
-  return s;
-}
-
-// Creates DIR, or accepts an existing empty one; a non-empty DIR needs --force.
-void prepare_out_dir(const std::string& dir, bool force) {
-  std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' is not a directory");
-    if (!fs::is_empty(dir, ec) && !force) {
-      throw UsageError("--out: '" + dir + "' is not empty (add --force to overwrite its files)");
-    }
-  } else if (!fs::create_directories(dir, ec)) {
-    throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
-  }
-}
+constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
+                                             "--no-skip-hidden"};
 
 void print_summary(const AnimationSummary& s, const std::string& script, EngineMode mode,
                    std::ostream& out) {
@@ -86,6 +44,10 @@ void print_summary(const AnimationSummary& s, const std::string& script, EngineM
 }
 
 int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  if (a.has("--scene")) return animate_scene(a, out, err);
+  for (const char* option : kSceneOnlyOptions) {
+    if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
+  }
   const std::string script_arg = a.values("--script").at(0);
   std::string script_path;
   try {
@@ -97,7 +59,7 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const std::string texture_path = a.text_or("--texture", default_texture_path());
   const Layer texture = make_layer(read_image(texture_path));
   AnimationOptions options;
-  options.settings = read_settings(a);
+  options.settings = read_engine_settings(a);
   if (a.has("--frames")) {
     options.max_frames = a.integer("--frames");
     if (options.max_frames < 1) throw UsageError("--frames: must be at least 1");
@@ -149,7 +111,9 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
     const CliArgs a(args, {{"--script", 1}, {"--texture", 1}, {"--mode", 1}, {"--threshold", 1},
                            {"--thresholds", 4}, {"--delta", 1}, {"--sampling", 1},
                            {"--frames", 1}, {"--out", 1}, {"--force", 0}, {"--frames-png", 0},
-                           {"--json", 0}, {"--quiet", 0}});
+                           {"--json", 0}, {"--quiet", 0}, {"--scene", 1},
+                           {"--compare-conventional", 0}, {"--near", 1}, {"--guard-band", 1},
+                           {"--no-skip-hidden", 0}});
     return animate(a, out, err);
   } catch (const UsageError& e) {
     err << "oflab-cli animate: " << e.what() << "\n";

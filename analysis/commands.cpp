@@ -17,10 +17,17 @@ const std::vector<Command>& all_commands() {
        "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
        "               [--delta 1|det|sqrt|fourth-root|dissertation]\n"
        "               [--sampling nearest|bilinear] [--frames N]\n"
-       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]",
+       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
+       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
+       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
+       "               [--no-skip-hidden]   (--compare-conventional needs an X display)",
        run_animate_command},
       {"make-butterfly", "write the bundled butterfly texture as a PNG",
        "oflab-cli make-butterfly --out FILE [--force]", run_make_butterfly_command},
+      {"make-scene", "write a grid-of-cubes scene, an OBJ file as a scene, or the tile texture",
+       "oflab-cli make-scene (--cubes N | --from-obj FILE | --tile-texture) --out FILE\n"
+       "               [--texture PATH] [--force]",
+       run_make_scene_command},
       {"slices", "scene-shifting slices of a sideways-moving viewer and their asymptote",
        "oflab-cli slices --speed V --focal K --epsilon E [--near Z0] [--json]", run_slices_command},
       {"experiments", "re-run the dissertation's experiments; report beside the published figures",

@@ -36,6 +36,10 @@ int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::
 // (analysis/experiments_command.cpp, manual/experiments.md).
 int run_experiments_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
+// `oflab-cli make-scene`: writes a grid-of-cubes scene, an OBJ file as a scene, or the
+// scenes' tile texture (analysis/make_scene_command.cpp, manual/scenes.md).
+int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
 // Dispatches argv[1..] to a subcommand; prints help for no arguments or --help.
 int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);
 

@@ -1,0 +1,194 @@
+// The scene form of `oflab-cli animate` (see analysis/animate_scene.h).
+#include "analysis/animate_scene.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <sstream>
+
+#include "analysis/animate_options.h"
+#include "analysis/image_io.h"
+#include "analysis/obj_scene.h"
+#include "analysis/scene_file.h"
+#include "analysis/scene_run.h"
+#include "analysis/viewer_script_file.h"
+
+namespace oflab {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool is_obj_file(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
+}
+
+// The scene of --scene; --texture, when given, replaces every texture of the scene.
+Scene load_scene(const CliArgs& a) {
+  const std::string arg = a.values("--scene").at(0);
+  Image replacement;
+  if (a.has("--texture")) {
+    try {
+      replacement = read_image(a.values("--texture").at(0));
+    } catch (const ImageFileError& e) {
+      throw UsageError(std::string("--texture: ") + e.what());
+    }
+  }
+  Scene scene;
+  if (is_obj_file(arg)) {
+    Image texture = replacement;
+    if (texture.empty()) texture = read_image(tile_texture_path());
+    return read_obj_scene(arg, texture, a.has("--texture") ? "texture" : "tile");
+  }
+  std::string path;
+  try {
+    path = resolve_scene_path(arg);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+  scene = read_scene_file(path);
+  if (!replacement.empty()) {
+    for (Image& t : scene.textures) t = replacement;
+  }
+  return scene;
+}
+
+SceneSettings read_scene_settings(const CliArgs& a) {
+  SceneSettings s;
+  s.engine = read_engine_settings(a);
+  s.near = a.number_or("--near", s.near);
+  if (!(s.near > 0.0)) throw UsageError("--near: must be a positive distance");
+  s.guard_band = a.number_or("--guard-band", s.guard_band);
+  if (!(s.guard_band >= 0.0 && s.guard_band <= 16.0)) {
+    throw UsageError("--guard-band: must be from 0 to 16 image sizes");
+  }
+  s.skip_hidden = !a.has("--no-skip-hidden");
+  return s;
+}
+
+double percent(long part, long whole) { return whole ? 100.0 * part / whole : 0.0; }
+
+void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
+                         const std::string& script, EngineMode mode, std::ostream& out) {
+  const long drawn = s.drawn();
+  const long total = static_cast<long>(s.polygons) * s.frames;
+  out << "scene " << scene << " (" << s.polygons << " polygons; BSP " << s.bsp.nodes << " nodes, "
+      << s.bsp.splits << " splits), viewer script " << script << ", mode " << engine_mode_name(mode)
+      << ", " << s.frames << " frames\n"
+      << std::fixed << std::setprecision(1) << "  polygons per level (" << drawn
+      << " drawn polygon-frames):\n";
+  for (int l = 0; l < kLevelCount; ++l) {
+    out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
+        << std::setw(8) << s.polygon_levels[l] << " (" << percent(s.polygon_levels[l], drawn)
+        << "%)\n";
+  }
+  out << "  culled " << s.culled() << " (" << percent(s.culled(), total) << "% of " << total
+      << " polygon-frames: back-facing " << s.back_facing << ", outside the frustum "
+      << s.outside_frustum << ")\n"
+      << "  hidden " << s.hidden << " (" << percent(s.hidden, total)
+      << "%, not updated: " << std::setprecision(0) << s.hidden_area_px
+      << " px of polygon image left unwarped)\n"
+      << "  clipped at the near plane or guard band " << s.clipped << "\n"
+      << std::setprecision(3) << "  median frame time: engine " << s.median_frame_ms
+      << " ms, exact re-render " << s.baseline_median_frame_ms << " ms";
+  if (std::isfinite(s.conventional_median_frame_ms)) {
+    out << ", conventional (VTK) " << s.conventional_median_frame_ms << " ms";
+  }
+  out << "\n  time saved " << 100.0 * s.time_saved << "% against the exact re-render, work saved "
+      << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs " << s.baseline_pixels
+      << ")\n"
+      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR against the exact "
+      << "frame " << s.mean_psnr_db << " dB\n";
+  if (std::isfinite(s.conventional_iou)) {
+    out << "  conventional frames cover the exact frames' pixels with mean IoU "
+        << s.conventional_iou << "\n";
+  }
+}
+
+int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  if (!a.has("--script")) throw UsageError("--script: a viewer script is needed with --scene");
+  std::string script_path;
+  try {
+    script_path = resolve_viewer_script_path(a.values("--script").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--script: ") + e.what());
+  }
+  const ViewerScript script = read_viewer_script_file(script_path);
+  const Scene scene = load_scene(a);
+  SceneRunOptions options;
+  options.settings = read_scene_settings(a);
+  options.conventional = a.has("--compare-conventional");
+  if (a.has("--frames")) {
+    options.max_frames = a.integer("--frames");
+    if (options.max_frames < 1) throw UsageError("--frames: must be at least 1");
+  }
+  const bool write_out = a.has("--out");
+  const std::string dir = a.text_or("--out", "");
+  if (a.has("--frames-png") && !write_out) throw UsageError("--frames-png: needs --out DIR");
+  if (write_out) prepare_out_dir(dir, a.has("--force"));
+  if (a.has("--frames-png")) {
+    options.on_frame = [&](int i, const Image& frame) {
+      std::ostringstream name;
+      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
+      write_png((fs::path(dir) / name.str()).string(), frame);
+    };
+  }
+  const bool quiet = a.has("--quiet");
+  options.progress = [&](int done, int total) {
+    if (quiet || total < 200) return;
+    if (done % std::max(1, total / 10) == 0 || done == total) {
+      err << "animate: frame " << done << "/" << total << "\n" << std::flush;
+    }
+  };
+  const SceneRun result = run_scene_animation(scene, script, options);
+  nlohmann::json j = scene_summary_json(result.summary);
+  j["scene"] = scene.name;
+  j["script"] = script.name;
+  j["mode"] = engine_mode_name(options.settings.engine.mode);
+  j["thresholds"] = options.settings.engine.thresholds;
+  j["skip_hidden"] = options.settings.skip_hidden;
+  if (write_out) {
+    std::ofstream csv(fs::path(dir) / "frames.csv");
+    write_scene_frame_csv(csv, result);
+    std::ofstream summary(fs::path(dir) / "summary.json");
+    summary << j.dump(2) << "\n";
+    if (!csv || !summary) throw UsageError("--out: cannot write into '" + dir + "'");
+  }
+  if (a.has("--json")) {
+    out << j.dump(2) << "\n";
+  } else {
+    print_scene_summary(result.summary, scene.name, script.name, options.settings.engine.mode, out);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int animate_scene(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  try {
+    return run(a, out, err);
+  } catch (const SceneError& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+    return 2;
+  } catch (const ViewerScriptError& e) {
+    err << "oflab-cli animate: --script: " << e.what() << "\n";
+    return 2;
+  } catch (const ImageFileError& e) {
+    err << "oflab-cli animate: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+    return 2;
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    err << "oflab-cli animate: --compare-conventional: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace oflab
