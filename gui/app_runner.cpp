@@ -32,6 +32,7 @@ bool wait_until_exposed(QWidget* window, int timeout_ms) {
 
 bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error) {
   window->resize(options.width, options.height);
+  if (!options.screenshot.empty() || options.benchmark > 0) window->set_external_clock(true);
   if (!options.lesson.empty()) window->apply_lesson(*find_lesson(options.lesson));
   if (options.script) {
     window->model()->set_script(*options.script, QString::fromStdString(options.script_name));

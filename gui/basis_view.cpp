@@ -86,19 +86,27 @@ double BasisView::amount() const { return amount_slider_->value() / 100.0; }
 void BasisView::set_amount(double amount) {
   amount_slider_->setValue(static_cast<int>(std::lround(amount * 100.0)));
 }
-bool BasisView::playing() const { return timer_->isActive(); }
+bool BasisView::playing() const { return playing_; }
 int BasisView::active_tile_count() const { return tiles_->active_tile_count(); }
 
 void BasisView::set_playing(bool playing) {
+  playing_ = playing;
   const QSignalBlocker block(play_box_);
   play_box_->setChecked(playing);
-  if (playing) {
+  if (playing && !external_clock_) {
     timer_->start();
   } else {
     timer_->stop();
-    phase_ = 3.14159265358979323846;
+  }
+  if (!playing) {
+    phase_ = 3.14159265358979323846;  // paused: show the full amount
     refresh();
   }
+}
+
+void BasisView::set_external_clock(bool on) {
+  external_clock_ = on;
+  set_playing(playing_);
 }
 
 double BasisView::animated_amount() const { return amount() * 0.5 * (1.0 - std::cos(phase_)); }

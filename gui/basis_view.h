@@ -32,6 +32,7 @@ class BasisView : public ViewPage {
   QString view_title() const override { return tr("Basis deformations"); }
   QImage render_image() override;
   void step_animation() override;
+  void set_external_clock(bool on) override;
   void set_theme(const ViewTheme& theme) override;
 
   BasisKind basis() const;
@@ -65,6 +66,8 @@ class BasisView : public ViewPage {
   QTimer* timer_;
   double phase_ = 3.14159265358979323846;  // 0.5 (1 - cos(phase)) = 1: full amount when paused
   bool dirty_ = true;
+  bool playing_ = false;
+  bool external_clock_ = false;
 };
 
 }  // namespace oflab

@@ -168,11 +168,12 @@ void FlowRenderer::create_actors() {
   scalar_bar_->UnconstrainedFontSizeOn();
   caption_ = vtkSmartPointer<vtkTextActor>::New();
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  caption_->SetPosition(0.01, 0.955);
+  caption_->SetPosition(0.01, 0.99);
+  caption_->GetTextProperty()->SetVerticalJustificationToTop();
   scalar_title_ = vtkSmartPointer<vtkTextActor>::New();
   scalar_title_->SetInput("|v| px/s");
   scalar_title_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  scalar_title_->SetPosition(0.08, 0.90);
+  scalar_title_->SetPosition(0.04, 0.90);
   wheel_caption_ = vtkSmartPointer<vtkTextActor>::New();
   wheel_caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   wheel_caption_->SetPosition(0.01, 0.015);
@@ -204,7 +205,7 @@ void FlowRenderer::set_theme(const ViewTheme& theme) {
   arrows_->GetProperty()->SetLineWidth(static_cast<float>(theme.line_width));
   set_text_style(caption_->GetTextProperty(), theme.text, theme.font_size);
   set_text_style(wheel_caption_->GetTextProperty(), theme.text, theme.font_size - 2);
-  set_text_style(scalar_title_->GetTextProperty(), theme.text, theme.font_size - 2);
+  set_text_style(scalar_title_->GetTextProperty(), theme.text, theme.font_size * 3 / 4);
   for (vtkTextProperty* p :
        {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
     set_text_style(p, theme.text, theme.font_size - 2);
@@ -282,7 +283,7 @@ void FlowRenderer::update_arrows(const std::vector<FlowSample>& samples, double 
   arrow_input_->GetPointData()->SetVectors(vectors);
   arrow_input_->GetPointData()->SetScalars(magnitudes);
   arrow_input_->Modified();
-  auto table = magnitude_lookup_table(shown_max_);
+  auto table = magnitude_lookup_table(shown_max_, theme_.presentation ? 0.8 : 1.0);
   auto* mapper = arrows_->GetMapper();
   mapper->SetLookupTable(table);
   mapper->SetScalarRange(table->GetRange());
@@ -363,7 +364,7 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
                      .arg(QString::fromUtf8(flow_part_title(display.part)))
                      .arg(shown_max_, 0, 'g', 3);
   if (residual && shown_max_ < 1e-6) text += QStringLiteral(" (zero up to rounding)");
-  if (!frame_caption.isEmpty()) text += QStringLiteral("   ") + frame_caption;
+  if (!frame_caption.isEmpty()) text += QStringLiteral("\n") + frame_caption;
   caption_->SetInput(text.toUtf8().constData());
 }
 

@@ -6,7 +6,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -30,14 +30,20 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   renderer_->set_texture(model_->texture());
   table_ = new CoefficientTable(this);
 
+  // Side panel: what to draw above the coefficient table, so the options never widen the
+  // window (presentation mode doubles their size).
+  auto* side = new QWidget(this);
+  auto* side_layout = new QVBoxLayout(side);
+  side_layout->setContentsMargins(4, 0, 0, 0);
+  side_layout->addWidget(make_option_bar());
+  side_layout->addWidget(table_, 1);
   auto* splitter = new QSplitter(Qt::Horizontal, this);
   splitter->addWidget(vtk_widget_);
-  splitter->addWidget(table_);
+  splitter->addWidget(side);
   splitter->setStretchFactor(0, 1);
   splitter->setStretchFactor(1, 0);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
-  layout->addWidget(make_option_bar());
   layout->addWidget(splitter, 1);
 
   connect(model_, &SceneModel::scene_changed, this, &FlowView::refresh);
@@ -49,9 +55,9 @@ FlowView::~FlowView() = default;
 
 QWidget* FlowView::make_option_bar() {
   auto* bar = new QWidget(this);
-  auto* row = new QHBoxLayout(bar);
-  row->setContentsMargins(0, 0, 0, 0);
-  row->addWidget(new QLabel(tr("Show:"), bar));
+  auto* grid = new QGridLayout(bar);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->addWidget(new QLabel(tr("Show:"), bar), 0, 0, 1, 2);
   part_box_ = new QComboBox(bar);
   part_box_->setObjectName(QStringLiteral("flow_part"));
   for (int k = 0; k < kFlowPartCount; ++k) {
@@ -60,7 +66,7 @@ QWidget* FlowView::make_option_bar() {
   part_box_->setToolTip(
       tr("Which part of the flow to draw: the exact flow, one order of its "
          "Taylor expansion, or a residual against an approximation"));
-  row->addWidget(part_box_);
+  grid->addWidget(part_box_, 1, 0, 1, 2);
   arrows_box_ = new QCheckBox(tr("Arrows"), bar);
   streamlines_box_ = new QCheckBox(tr("Streamlines"), bar);
   wheel_box_ = new QCheckBox(tr("Colour wheel"), bar);
@@ -75,12 +81,13 @@ QWidget* FlowView::make_option_bar() {
   texture_box_->setChecked(defaults.texture);
   zoom_box_->setChecked(defaults.zoom_to_plane);
   common_scale_box_->setChecked(defaults.common_scale);
+  int cell = 0;
   for (QCheckBox* box :
        {arrows_box_, streamlines_box_, wheel_box_, texture_box_, zoom_box_, common_scale_box_}) {
-    row->addWidget(box);
+    grid->addWidget(box, 2 + cell / 2, cell % 2);
+    ++cell;
     connect(box, &QCheckBox::toggled, this, &FlowView::refresh);
   }
-  row->addStretch(1);
   connect(part_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
           [this](int) { refresh(); });
   return bar;

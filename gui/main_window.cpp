@@ -13,6 +13,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "analysis/datasets.h"
 #include "analysis/script_file.h"
@@ -51,11 +52,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* scroll = new QScrollArea;
   scroll->setWidget(controls_);
   scroll->setWidgetResizable(true);
-  auto* dock = new QDockWidget(tr("Scene"), this);
-  dock->setObjectName(QStringLiteral("scene_dock"));
-  dock->setWidget(scroll);
-  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-  addDockWidget(Qt::LeftDockWidgetArea, dock);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scene_dock_ = new QDockWidget(tr("Scene"), this);
+  scene_dock_->setObjectName(QStringLiteral("scene_dock"));
+  scene_dock_->setWidget(scroll);
+  scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(Qt::LeftDockWidgetArea, scene_dock_);
+  fit_scene_panel();
 
   create_actions();
   create_menus();
@@ -77,18 +80,34 @@ QWidget* MainWindow::create_banners() {
   caption_banner_ = new QLabel(box);
   caption_banner_->setObjectName(QStringLiteral("caption_banner"));
   caption_banner_->setWordWrap(true);
-  caption_banner_->setStyleSheet(QStringLiteral(
-      "QLabel { background: #0072B2; color: white; padding: 6px; border-radius: 3px; }"));
   caption_banner_->hide();
   message_banner_ = new QLabel(box);
   message_banner_->setObjectName(QStringLiteral("message_banner"));
   message_banner_->setWordWrap(true);
-  message_banner_->setStyleSheet(QStringLiteral(
-      "QLabel { background: #D55E00; color: white; padding: 6px; border-radius: 3px; }"));
   message_banner_->hide();
+  style_banners();
   layout->addWidget(caption_banner_);
   layout->addWidget(message_banner_);
   return box;
+}
+
+void MainWindow::style_banners() {
+  // Okabe-Ito blue for the lesson caption, vermillion for refused input. Style sheets fix
+  // the font, so its size follows the presentation mode here.
+  const QString style = QStringLiteral(
+      "QLabel { background: %1; color: white; padding: 6px; border-radius: 3px; "
+      "font-size: %2pt; }");
+  const int points = presentation_ ? 17 : 10;
+  caption_banner_->setStyleSheet(style.arg(QStringLiteral("#0072B2")).arg(points));
+  message_banner_->setStyleSheet(style.arg(QStringLiteral("#D55E00")).arg(points));
+}
+
+void MainWindow::fit_scene_panel() {
+  // The panel is as wide as its controls want (fonts change with presentation mode), up
+  // to a third of a 1280-pixel window, so the views keep most of the screen.
+  controls_->ensurePolished();
+  const int wanted = controls_->sizeHint().width() + 20;
+  scene_dock_->widget()->setMinimumWidth(std::min(wanted, 430));
 }
 
 void MainWindow::create_actions() {
@@ -198,6 +217,7 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   basis_view_->set_playing(lesson.play_basis);
   show_view(QString::fromStdString(lesson.view));
   set_caption(QString::fromStdString(lesson.caption));
+  statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
 }
 
 QString MainWindow::caption() const { return caption_banner_->text(); }
@@ -224,19 +244,28 @@ void MainWindow::set_presentation(bool on) {
   const QSignalBlocker block(presentation_action_);
   presentation_action_->setChecked(on);
   apply_app_theme(on);
+  style_banners();
   for (ViewPage* v : views_) v->set_theme(view_theme(on));
+  // Let the scene panel grow with the fonts instead of clipping its controls.
+  fit_scene_panel();
 }
 
-bool MainWindow::motion_playing() const { return motion_timer_->isActive(); }
+bool MainWindow::motion_playing() const { return play_action_->isChecked(); }
 
 void MainWindow::set_motion_playing(bool playing) {
   const QSignalBlocker block(play_action_);
   play_action_->setChecked(playing);
-  if (playing) {
+  if (playing && !external_clock_) {
     motion_timer_->start();
   } else {
     motion_timer_->stop();
   }
+}
+
+void MainWindow::set_external_clock(bool on) {
+  external_clock_ = on;
+  set_motion_playing(motion_playing());
+  for (ViewPage* v : views_) v->set_external_clock(on);
 }
 
 void MainWindow::play_frames(int frames) {

@@ -10,6 +10,7 @@
 #include "gui/lessons.h"
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QTabWidget;
 class QTimer;
@@ -61,6 +62,10 @@ class MainWindow : public QMainWindow {
   // the visible view after each (used by --screenshot --frames N).
   void play_frames(int frames);
 
+  // With an external clock no timer advances anything: only play_frames does, so
+  // screenshots and benchmarks are reproducible. Playing states are kept.
+  void set_external_clock(bool on);
+
   // Plays a motion script (a shipped name or a file). A script that cannot be read or
   // used shows a message and leaves the session as it was; returns false then.
   bool load_script(const QString& name_or_path);
@@ -73,6 +78,8 @@ class MainWindow : public QMainWindow {
   void create_menus();
   void create_play_bar();
   QWidget* create_banners();
+  void style_banners();
+  void fit_scene_panel();
   void show_message(const QString& text);
   void clear_message();
   void update_frame_label();
@@ -82,6 +89,7 @@ class MainWindow : public QMainWindow {
   SceneModel* model_;
   SceneControls* controls_;
   QTabWidget* tabs_;
+  QDockWidget* scene_dock_ = nullptr;
   FlowView* flow_view_;
   BasisView* basis_view_;
   std::vector<ViewPage*> views_;
@@ -95,6 +103,7 @@ class MainWindow : public QMainWindow {
   QAction* reset_action_ = nullptr;
   QAction* presentation_action_ = nullptr;
   bool presentation_ = false;
+  bool external_clock_ = false;
 };
 
 }  // namespace oflab

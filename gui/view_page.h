@@ -26,6 +26,9 @@ class ViewPage : public QWidget {
   // Advances the view's own animation by one step (the basis gallery's amount); the
   // scene's frame is advanced by the window, not here.
   virtual void step_animation() {}
+  // When on, the view's own timers stay stopped and only step_animation advances it
+  // (reproducible screenshots and benchmarks); its playing state is kept.
+  virtual void set_external_clock(bool on) { (void)on; }
   virtual void set_theme(const ViewTheme& theme) = 0;
 };
 

@@ -13,7 +13,7 @@ ViewTheme view_theme(bool presentation) {
     t.tile_background = {1.0, 1.0, 1.0};
     t.muted_background = {0.86, 0.86, 0.86};
     t.muted = {0.62, 0.62, 0.62};
-    t.font_size = 22;
+    t.font_size = 20;
     t.line_width = 2.5;
   } else {
     t.background = {0.09, 0.10, 0.12};

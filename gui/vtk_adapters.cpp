@@ -91,12 +91,12 @@ vtkSmartPointer<vtkPolyData> coloured_disc(double radius,
   return data;
 }
 
-vtkSmartPointer<vtkLookupTable> magnitude_lookup_table(double max_value) {
+vtkSmartPointer<vtkLookupTable> magnitude_lookup_table(double max_value, double top) {
   auto table = vtkSmartPointer<vtkLookupTable>::New();
   table->SetNumberOfTableValues(256);
   table->SetRange(0.0, max_value > 0.0 ? max_value : 1.0);
   for (int i = 0; i < 256; ++i) {
-    const RgbF c = rgb(magnitude_colour(i / 255.0));
+    const RgbF c = rgb(magnitude_colour(top * i / 255.0));
     table->SetTableValue(i, c[0], c[1], c[2], 1.0);
   }
   return table;

@@ -42,8 +42,9 @@ vtkSmartPointer<vtkPolyData> closed_outline(const std::vector<Vec3>& points);
 vtkSmartPointer<vtkPolyData> coloured_disc(double radius,
                                            const std::function<Rgb8(const Vec2&)>& colour_at);
 
-// A 256-entry lookup table of magnitude_colour over [0, max_value] (max_value > 0).
-vtkSmartPointer<vtkLookupTable> magnitude_lookup_table(double max_value);
+// A 256-entry lookup table over [0, max_value] (max_value > 0) using magnitude_colour from
+// 0 to `top` (<= 1; below 1 drops the palest yellows, for light backgrounds).
+vtkSmartPointer<vtkLookupTable> magnitude_lookup_table(double max_value, double top = 1.0);
 
 RgbF rgb(const Rgb8& colour);
 void set_line_style(vtkProperty* property, const RgbF& colour, double width);
