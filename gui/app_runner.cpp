@@ -1,5 +1,7 @@
 #include "gui/app_runner.h"
 
+#include <QVTKOpenGLNativeWidget.h>
+
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QWindow>
@@ -80,7 +82,7 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
     QApplication::processEvents();
   }
   const double seconds = timer.nsecsElapsed() * 1e-9;
-  const QSize size = window->flow_view()->size();
+  const QSize size = window->flow_view()->vtk_widget()->size();  // the rendered area
   out << "oflab: flow view, " << options.benchmark << " frames in " << seconds
       << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
       << " frames per second (window " << options.width << " x " << options.height << ", view "

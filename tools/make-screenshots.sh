@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Regenerates the screenshots of manual/gui.md and manual/lessons.md with
+# `oflab --screenshot`, on a virtual screen. Usage: tools/make-screenshots.sh [path/to/oflab]
+# (default build/gui/oflab; build it first, e.g. with tools/build.sh oflab).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+oflab=${1:-build/gui/oflab}
+out=manual/images
+if [[ ! -x "$oflab" ]]; then
+  echo "make-screenshots: $oflab not found; build it first (tools/build.sh oflab)" >&2
+  exit 1
+fi
+mkdir -p "$out"
+
+shot() {  # shot NAME ARGS...: one screenshot into manual/images/NAME.png
+  local name=$1
+  shift
+  xvfb-run -a -s "-screen 0 1600x1000x24" "$oflab" --screenshot "$out/$name.png" "$@" \
+    2> >(grep -v 'XDG_RUNTIME_DIR' >&2)
+}
+
+shot window-demo --frames 0
+shot flow-demo --view flow --frames 0
+shot flow-whole-image --view flow --frames 0 --flow-draw arrows,texture
+shot flow-first-order --view flow --frames 0 --flow-show first-order \
+  --flow-draw arrows,streamlines,zoom
+shot flow-second-order-wheel --view flow --frames 0 --flow-show second-order \
+  --flow-draw arrows,wheel,zoom,texture
+shot flow-residual --view flow --frames 0 --flow-show exact-minus-homography
+shot flow-affine-residual --view flow --frames 0 --flow-show exact-minus-affine \
+  --flow-draw arrows,zoom,texture
+shot flow-script --view flow --script zoom-rotation --frames 20
+shot basis-taylor --view basis --basis taylor --frames 0
+shot basis-waxman-ullman --view basis --basis waxman-ullman --frames 0
+shot basis-planar --view basis --basis planar --frames 0
+shot lesson-flow-of-a-plane --lesson flow-of-a-plane --frames 0
+shot lesson-basis-deformations --lesson basis-deformations --presentation --frames 12
+echo "make-screenshots: wrote $(ls "$out"/*.png | wc -l) images to $out"
