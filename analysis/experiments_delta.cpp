@@ -161,7 +161,7 @@ const std::vector<DeltaPolicy>& delta_policies() {
 RunSpec delta_spec(bool quick) {
   RunSpec spec;
   spec.max_frames = quick ? 150 : -1;
-  spec.repetitions = quick ? 1 : 3;
+  spec.repetitions = quick ? 1 : 9;
   spec.measure_psnr = true;
   return spec;
 }

@@ -24,7 +24,7 @@ struct DeltaResult {
   std::vector<MeasuredRun> runs;  // one per delta_policies(), same order
 };
 
-// Full: the whole loop (629 frames), 3 repetitions; quick: 150 frames, 1 repetition. PSNR
+// Full: the whole loop (629 frames), 9 repetitions; quick: 150 frames, 1 repetition. PSNR
 // in both.
 RunSpec delta_spec(bool quick);
 

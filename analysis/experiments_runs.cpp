@@ -15,14 +15,6 @@ const char* level_word(int level) {
   return words[level];
 }
 
-std::string signed_points(double d) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(0);
-  s << (d >= 0 ? "+" : "") << d;
-  return s.str();
-}
-
 }  // namespace
 
 double median_of(std::vector<double> values) {
@@ -98,12 +90,34 @@ std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run
   return percent;
 }
 
-double median_level_ms(const MeasuredRun& run, Level level) {
-  std::vector<double> times;
-  for (size_t i = 1; i < run.reports.size() && i < run.frame_ms.size(); ++i) {
-    if (run.reports[i].level == level) times.push_back(run.frame_ms[i]);
+double relative_level_cost(const MeasuredRun& run, const MeasuredRun& baseline, Level level) {
+  double engine = 0.0, rerender = 0.0;
+  int frames = 0;
+  const size_t n = std::min({run.reports.size(), run.frame_ms.size(), baseline.frame_ms.size()});
+  for (size_t i = 1; i < n; ++i) {
+    if (run.reports[i].level != level) continue;
+    engine += run.frame_ms[i];
+    rerender += baseline.frame_ms[i];
+    ++frames;
   }
-  return median_of(times);
+  return frames > 0 && rerender > 0 ? engine / rerender : kNaN;
+}
+
+std::array<double, kTermCount + 1> median_flow_px(const MeasuredRun& run) {
+  std::array<std::vector<double>, kTermCount + 1> values;
+  for (size_t i = 1; i < run.reports.size(); ++i) {
+    const FrameReport& r = run.reports[i];
+    if (!r.visible) continue;
+    double sum = 0.0;
+    for (int t = 0; t < kTermCount; ++t) {
+      values[t].push_back(r.flow[t]);
+      sum += r.flow[t];
+    }
+    values[kTermCount].push_back(sum);
+  }
+  std::array<double, kTermCount + 1> medians{};
+  for (int t = 0; t <= kTermCount; ++t) medians[t] = median_of(values[t]);
+  return medians;
 }
 
 int sampling_limit_rerenders(const MeasuredRun& run) {
@@ -129,7 +143,7 @@ std::string level_mix_reading(const std::array<double, kLevelCount>& published,
     if (std::abs(diff[l]) < 5.0) break;
     if (!text.empty()) text += ", ";
     text += std::string(diff[l] > 0 ? "more " : "fewer ") + level_word(l) + " (" +
-            signed_points(diff[l]) + ")";
+            signed_fixed(diff[l], 0) + ")";
   }
   return text.empty() ? "level mix within 5 points" : text;
 }
@@ -141,6 +155,13 @@ std::string fixed(double value, int decimals) {
   s.precision(decimals);
   s << value;
   return s.str();
+}
+
+std::string signed_fixed(double value, int decimals) {
+  if (!std::isfinite(value)) return "n/a";
+  std::string text = fixed(value, decimals);
+  if (text.find_first_not_of("-0.") == std::string::npos) text = fixed(0.0, decimals);
+  return text[0] == '-' ? text : "+" + text;
 }
 
 std::string percent(double fraction, int decimals) {

@@ -45,8 +45,14 @@ double work_saved(const MeasuredRun& run, const MeasuredRun& baseline);
 // every mode and the dissertation's percentages describe the updates after it.
 std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run);
 
-// Median frame time (ms) of the frames after the first at `level`; NaN if there is none.
-double median_level_ms(const MeasuredRun& run, Level level);
+// What the frames after the first at `level` cost relative to re-rendering the same frames:
+// sum of run.frame_ms over them / sum of baseline.frame_ms over them. NaN if there is none.
+// Precondition: baseline played the same frames.
+double relative_level_cost(const MeasuredRun& run, const MeasuredRun& baseline, Level level);
+
+// Median over the frames after the first of each term's per-frame flow measure (pixels),
+// and of their sum (index kTermCount).
+std::array<double, kTermCount + 1> median_flow_px(const MeasuredRun& run);
 
 // Re-renders after frame 0 whose note names the sampling limit.
 int sampling_limit_rerenders(const MeasuredRun& run);
@@ -63,5 +69,7 @@ std::string level_mix_reading(const std::array<double, kLevelCount>& published,
 // Number formatting for report tables: fixed decimals; "n/a" for non-finite values.
 std::string fixed(double value, int decimals);
 std::string percent(double fraction, int decimals = 1);  // 0.123 -> "12.3%"
+// With an explicit sign; a value that rounds to zero is "+0.0" (never "-0.0").
+std::string signed_fixed(double value, int decimals);
 
 }  // namespace oflab

@@ -30,7 +30,7 @@ struct Experiment1Result {
   std::vector<Experiment1Script> scripts;
 };
 
-// The full run: whole scripts, 5 repetitions, PSNR; quick: at most 60 frames per script,
+// The full run: whole scripts, 15 repetitions, PSNR; quick: at most 60 frames per script,
 // 2 repetitions, PSNR.
 RunSpec experiment1_spec(bool quick);
 

@@ -29,9 +29,8 @@ std::string sweep_reading(const SweepScript& s, size_t k, const SweepSpec& spec)
   const double dt = 100.0 * (time_saved(run, s.baseline) - time_saved(ref, s.baseline));
   const double dw = 100.0 * (work_saved(run, s.baseline) - work_saved(ref, s.baseline));
   const double de = run.summary.max_measured_error_px - ref.summary.max_measured_error_px;
-  return "vs 1 px: time saved " + std::string(dt >= 0 ? "+" : "") + fixed(dt, 1) +
-         " points, work saved " + (dw >= 0 ? "+" : "") + fixed(dw, 1) + " points, max error " +
-         (de >= 0 ? "+" : "") + fixed(de, 2) + " px";
+  return "vs 1 px: time saved " + signed_fixed(dt, 1) + " points, work saved " +
+         signed_fixed(dw, 1) + " points, max error " + signed_fixed(de, 2) + " px";
 }
 
 ReportTable sweep_table(const SweepResult& r) {
@@ -64,6 +63,8 @@ ChartPanel per_script_panel(const SweepResult& r, const std::string& title,
   panel.x_label = "threshold px";
   panel.y_label = y_label;
   for (double t : r.spec.thresholds_px) panel.x_ticks.push_back({t, fixed(t, 2)});
+  // Room on the right for the legend, clear of the lines.
+  panel.x_range = std::make_pair(0.0, 1.4 * r.spec.thresholds_px.back());
   int colour = 0;
   for (const SweepScript& s : r.scripts) {
     ChartSeries series{
@@ -81,7 +82,7 @@ SweepSpec sweep_spec(bool quick) {
   spec.thresholds_px =
       quick ? std::vector<double>{0.25, 1.0, 4.0} : std::vector<double>{0.25, 0.5, 1.0, 2.0, 4.0};
   spec.run.max_frames = quick ? 40 : -1;
-  spec.run.repetitions = quick ? 1 : 3;
+  spec.run.repetitions = quick ? 1 : 5;
   spec.run.measure_psnr = true;
   return spec;
 }

@@ -18,7 +18,7 @@ struct SweepSpec {
   std::vector<double> thresholds_px;
   RunSpec run;
 };
-// Full: 0.25, 0.5, 1, 2, 4 px, whole scripts, 3 repetitions; quick: 0.25, 1, 4 px,
+// Full: 0.25, 0.5, 1, 2, 4 px, whole scripts, 5 repetitions; quick: 0.25, 1, 4 px,
 // 40 frames, 1 repetition. PSNR in both.
 SweepSpec sweep_spec(bool quick);
 

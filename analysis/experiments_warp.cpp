@@ -74,9 +74,7 @@ const PublishedWarpTiming* published(const std::string& size, const std::string&
   return nullptr;
 }
 
-std::string signed_percent(double fraction) {
-  return (fraction >= 0 ? "+" : "") + fixed(100.0 * fraction, 0) + "%";
-}
+std::string signed_percent(double fraction) { return signed_fixed(100.0 * fraction, 0) + "%"; }
 
 std::string ratio_text(double a, double b) { return b > 0 ? fixed(a / b, 2) + "x" : "n/a"; }
 
@@ -166,7 +164,7 @@ Chart timing_chart(const WarpTimingResult& r) {
 
 }  // namespace
 
-WarpTimingSpec warp_timing_spec(bool quick) { return WarpTimingSpec{quick ? 200 : 2000}; }
+WarpTimingSpec warp_timing_spec(bool quick) { return WarpTimingSpec{quick ? 200 : 5000}; }
 
 const WarpTiming* WarpTimingResult::find(const std::string& size, const std::string& matrix,
                                          const std::string& kernel) const {
