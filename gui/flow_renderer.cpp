@@ -138,6 +138,23 @@ void FlowRenderer::create_actors() {
   wheel_image_->GetProperty()->SetInterpolationTypeToLinear();
   wheel_image_->GetMapper()->SetInputData(vtkSmartPointer<vtkImageData>::New());
   wheel_image_->VisibilityOff();
+  create_arrow_pipeline();
+  create_legend_and_text();
+  for (vtkProp* prop :
+       std::initializer_list<vtkProp*>{wheel_image_, frame_, outline_, centre_mark_, streamlines_,
+                                       arrows_, caption_, wheel_caption_}) {
+    overlay_->AddViewProp(prop);
+  }
+  wheel_legend_->GetMapper()->SetInputDataObject(
+      coloured_disc(1.0, [](const Vec2& offset) { return flow_wheel_colour(offset, 1.0); }));
+  legend_->AddActor(wheel_legend_);
+  side_->AddViewProp(scalar_bar_);
+  side_->AddViewProp(scalar_title_);
+}
+
+// Arrow glyphs: each input point carries its flow vector (world units, already scaled)
+// and its magnitude (px/s, coloured through the lookup table).
+void FlowRenderer::create_arrow_pipeline() {
   auto glyph = vtkSmartPointer<vtkGlyphSource2D>::New();
   glyph->SetGlyphTypeToArrow();
   glyph->FilledOn();
@@ -155,6 +172,9 @@ void FlowRenderer::create_actors() {
   arrows_ = vtkSmartPointer<vtkActor>::New();
   arrows_->SetMapper(arrow_mapper);
   arrows_->GetProperty()->LightingOff();
+}
+
+void FlowRenderer::create_legend_and_text() {
   scalar_bar_ = vtkSmartPointer<vtkScalarBarActor>::New();
   scalar_bar_->SetTitle("");  // the title sits in scalar_title_, clear of the labels
   scalar_bar_->SetLookupTable(magnitude_lookup_table(1.0));
@@ -177,16 +197,6 @@ void FlowRenderer::create_actors() {
   wheel_caption_ = vtkSmartPointer<vtkTextActor>::New();
   wheel_caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   wheel_caption_->SetPosition(0.01, 0.015);
-  for (vtkProp* prop :
-       std::initializer_list<vtkProp*>{wheel_image_, frame_, outline_, centre_mark_, streamlines_,
-                                       arrows_, caption_, wheel_caption_}) {
-    overlay_->AddViewProp(prop);
-  }
-  wheel_legend_->GetMapper()->SetInputDataObject(
-      coloured_disc(1.0, [](const Vec2& offset) { return flow_wheel_colour(offset, 1.0); }));
-  legend_->AddActor(wheel_legend_);
-  side_->AddViewProp(scalar_bar_);
-  side_->AddViewProp(scalar_title_);
 }
 
 void FlowRenderer::set_texture(const QImage& texture) {

@@ -49,6 +49,8 @@ class FlowRenderer {
 
  private:
   void create_actors();
+  void create_arrow_pipeline();
+  void create_legend_and_text();
   void update_plane(const FlowContext& context, const FlowDisplay& display);
   void update_arrows(const std::vector<FlowSample>& samples, double arrow_seconds,
                      const FlowDisplay& display);
