@@ -10,6 +10,7 @@
 
 #include "analysis/animate_options.h"
 #include "analysis/animate_scene.h"
+#include "analysis/animate_scene_shifting.h"
 #include "analysis/animation_run.h"
 #include "analysis/cli_args.h"
 #include "analysis/commands.h"
@@ -44,6 +45,11 @@ void print_summary(const AnimationSummary& s, const std::string& script, EngineM
 }
 
 int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  if (a.text_or("--mode", "") == "scene-shifting") {
+    if (!a.has("--scene")) throw UsageError("--mode scene-shifting: needs --scene NAME|FILE");
+    return animate_scene_shifting(a, out, err);
+  }
+  if (a.has("--epsilon")) throw UsageError("--epsilon: needs --mode scene-shifting");
   if (a.has("--scene")) return animate_scene(a, out, err);
   for (const char* option : kSceneOnlyOptions) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
@@ -113,7 +119,7 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--frames", 1}, {"--out", 1}, {"--force", 0}, {"--frames-png", 0},
                            {"--json", 0}, {"--quiet", 0}, {"--scene", 1},
                            {"--compare-conventional", 0}, {"--near", 1}, {"--guard-band", 1},
-                           {"--no-skip-hidden", 0}});
+                           {"--no-skip-hidden", 0}, {"--epsilon", 1}});
     return animate(a, out, err);
   } catch (const UsageError& e) {
     err << "oflab-cli animate: " << e.what() << "\n";

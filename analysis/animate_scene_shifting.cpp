@@ -1,0 +1,179 @@
+// The scene-shifting form of `oflab-cli animate` (see analysis/animate_scene_shifting.h).
+#include "analysis/animate_scene_shifting.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <sstream>
+
+#include "analysis/animate_options.h"
+#include "analysis/image_io.h"
+#include "analysis/scene_file.h"
+#include "analysis/scene_shifting_run.h"
+#include "analysis/viewer_script_file.h"
+
+namespace oflab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Options of the engine's scene modes that scene shifting has no use for.
+constexpr const char* kEngineOnlyOptions[] = {
+    "--threshold", "--thresholds", "--delta",         "--compare-conventional",
+    "--near",      "--guard-band", "--no-skip-hidden"};
+
+double percent(long part, long whole) { return whole ? 100.0 * part / whole : 0.0; }
+
+void print_summary(const SceneShiftingRun& run, const std::string& scene, const std::string& script,
+                   double epsilon, std::ostream& out) {
+  const SceneRunSummary& s = run.scene_run.summary;
+  const long drawn = s.drawn();
+  out << "scene " << scene << " (" << s.polygons << " polygons), viewer script " << script
+      << ", mode scene-shifting, " << s.frames << " frames\n"
+      << "  " << run.slices.size() << " slices (" << run.frames.front().occupied
+      << " holding planes) for |V| = " << run.design_speed << " units/frame, epsilon = " << epsilon
+      << " px\n"
+      << std::fixed << std::setprecision(1) << "  polygons per level (" << drawn
+      << " drawn polygon-frames):\n";
+  for (int l = 0; l < kLevelCount; ++l) {
+    out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
+        << std::setw(8) << s.polygon_levels[l] << " (" << percent(s.polygon_levels[l], drawn)
+        << "%)\n";
+  }
+  out << "  layers after the first frame: " << run.rebuilt_layers << " rebuilt, "
+      << run.shifted_layers << " shifted or scaled\n";
+  if (run.turning_frames > 0) {
+    out << "  the view turned in " << run.turning_frames
+        << " frames; every occupied slice was rebuilt in " << run.turning_frames_all_rebuilt
+        << " of them\n";
+  }
+  out << std::setprecision(3) << "  median frame time: scene shifting " << s.median_frame_ms
+      << " ms, exact re-render " << s.baseline_median_frame_ms << " ms\n"
+      << "  time saved " << 100.0 * s.time_saved << "% against the exact re-render, work saved "
+      << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs " << s.baseline_pixels
+      << ")\n"
+      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR against the exact "
+      << "frame " << s.mean_psnr_db << " dB\n";
+}
+
+Scene load_scene(const CliArgs& a) {
+  std::string path;
+  try {
+    path = resolve_scene_path(a.values("--scene").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+  Scene scene = read_scene_file(path);
+  if (a.has("--texture")) {
+    const Image replacement = read_image(a.values("--texture").at(0));
+    for (Image& t : scene.textures) t = replacement;
+  }
+  return scene;
+}
+
+int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  for (const char* option : kEngineOnlyOptions) {
+    if (a.has(option))
+      throw UsageError(std::string(option) + ": not used by --mode scene-shifting");
+  }
+  if (!a.has("--script")) throw UsageError("--script: a viewer script is needed with --scene");
+  std::string script_path;
+  try {
+    script_path = resolve_viewer_script_path(a.values("--script").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--script: ") + e.what());
+  }
+  const ViewerScript script = read_viewer_script_file(script_path);
+  const Scene scene = load_scene(a);
+  SceneShiftingRunOptions options;
+  options.settings.epsilon_px = a.number_or("--epsilon", options.settings.epsilon_px);
+  if (!(options.settings.epsilon_px > 0.0) || !std::isfinite(options.settings.epsilon_px)) {
+    throw UsageError("--epsilon: must be a positive number of pixels");
+  }
+  const std::string sampling = a.text_or("--sampling", "nearest");
+  if (sampling == "bilinear") {
+    options.settings.sampling = Sampling::kBilinear;
+  } else if (sampling != "nearest") {
+    throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
+  }
+  if (a.has("--frames")) {
+    options.max_frames = a.integer("--frames");
+    if (options.max_frames < 1) throw UsageError("--frames: must be at least 1");
+  }
+  const bool write_out = a.has("--out");
+  const std::string dir = a.text_or("--out", "");
+  if (a.has("--frames-png") && !write_out) throw UsageError("--frames-png: needs --out DIR");
+  if (write_out) prepare_out_dir(dir, a.has("--force"));
+  if (a.has("--frames-png")) {
+    options.on_frame = [&](int i, const Image& frame) {
+      std::ostringstream name;
+      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
+      write_png((fs::path(dir) / name.str()).string(), frame);
+    };
+  }
+  const bool quiet = a.has("--quiet");
+  options.progress = [&](int done, int total) {
+    if (quiet || total < 200) return;
+    if (done % std::max(1, total / 10) == 0 || done == total) {
+      err << "animate: frame " << done << "/" << total << "\n" << std::flush;
+    }
+  };
+  const SceneShiftingRun result = run_scene_shifting(scene, script, options);
+  const double eps = options.settings.epsilon_px;
+  nlohmann::json j = scene_summary_json(result.scene_run.summary);
+  j["scene"] = scene.name;
+  j["script"] = script.name;
+  j["mode"] = "scene-shifting";
+  j["thresholds"] = {eps, eps, eps, eps};  // the one budget, epsilon, stands for every term
+  j["skip_hidden"] = false;
+  nlohmann::json slices = nlohmann::json::array();
+  for (const Slice& s : result.slices) {
+    slices.push_back(
+        {{"near", s.near}, {"far", is_background(s) ? nlohmann::json() : nlohmann::json(s.far)}});
+  }
+  j["scene_shifting"] = {{"epsilon_px", eps},
+                         {"design_speed", result.design_speed},
+                         {"slices", slices},
+                         {"rebuilt_layers", result.rebuilt_layers},
+                         {"shifted_layers", result.shifted_layers},
+                         {"turning_frames", result.turning_frames},
+                         {"turning_frames_all_rebuilt", result.turning_frames_all_rebuilt}};
+  if (write_out) {
+    std::ofstream csv(fs::path(dir) / "frames.csv");
+    write_scene_frame_csv(csv, result.scene_run);
+    std::ofstream summary(fs::path(dir) / "summary.json");
+    summary << j.dump(2) << "\n";
+    if (!csv || !summary) throw UsageError("--out: cannot write into '" + dir + "'");
+  }
+  if (a.has("--json")) {
+    out << j.dump(2) << "\n";
+  } else {
+    print_summary(result, scene.name, script.name, eps, out);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int animate_scene_shifting(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  try {
+    return run(a, out, err);
+  } catch (const SceneError& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+    return 2;
+  } catch (const ViewerScriptError& e) {
+    err << "oflab-cli animate: --script: " << e.what() << "\n";
+    return 2;
+  } catch (const ImageFileError& e) {
+    err << "oflab-cli animate: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace oflab
