@@ -298,6 +298,7 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
                                       {flow.j21, 1.0 + flow.j22, 0.0}, {0.0, 0.0, 1.0});
   TermArray carried = accumulated_;
   for (double& e : carried) e *= std::max(1.0, largest_singular_value(stretch));
+  report.carried = carried;
   report.level = choose_level(carried, report.flow, settings_.thresholds,
                               settings_.mode != EngineMode::kAffine);
   for (int k = 0; k < kTermCount; ++k) {

@@ -58,6 +58,7 @@ struct FrameReport {
   bool visible = true;
   std::string note;           // why a frame is special: "not visible: ...", "sampling limit"
   TermArray flow{};           // this frame's flow measures, pixels
+  TermArray carried{};        // accumulated estimates carried into the decision, pixels
   TermArray accumulated{};    // accumulated estimates after this frame, pixels
   double estimated_error_px = 0.0;  // pending error the level left, by the estimates
   double measured_error_px = 0.0;

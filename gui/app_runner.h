@@ -20,9 +20,10 @@ bool prepare_window(MainWindow* window, const LaunchOptions& options, std::strin
 int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostream& out,
                     std::ostream& err);
 
-// --benchmark: renders options.benchmark frames of the flow view as fast as possible
-// (each frame advances the motion, rebuilds the flow scene and renders it) and prints
-// the frames per second to `out`. Returns 0.
+// --benchmark: plays options.benchmark frames of the animation view (or of the view named
+// by --view) as fast as possible, each frame advancing the motion, running the engine,
+// rendering the exact frame and painting the panels, and prints the frames per second to
+// `out`. Returns 0.
 int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out);
 
 // The whole program after parsing: needs a QApplication. Returns the exit code.

@@ -4,7 +4,9 @@
 #include <sstream>
 
 #include "analysis/datasets.h"
+#include "analysis/scene_file.h"
 #include "analysis/script_file.h"
+#include "analysis/viewer_script_file.h"
 #include "core/engine.h"
 #include "gui/lessons.h"
 
@@ -17,39 +19,43 @@ std::string joined(const std::vector<std::string>& names) {
   return text;
 }
 
-// Scenes, scripts and modes arrive with the animation engine; until a name is known the
-// option rejects it, saying what is known (nothing yet).
-void reject_unknown_name(const CliArgs& cli, const std::string& option, const char* what) {
-  if (!cli.has(option)) return;
-  throw UsageError(option + ": unknown " + what + " '" + cli.values(option).at(0) + "' (known " +
-                   what + "s: none in this build)");
-}
-
 void read_script(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--script")) return;
   const std::string name = cli.values("--script").at(0);
   try {
+    if (cli.has("--scene")) {  // a viewer script walks through the scene
+      read_viewer_script_file(resolve_viewer_script_path(name));
+      options->viewer_script = name;
+      return;
+    }
     options->script = read_script_file(resolve_script_path(name));
     options->script_name = name;
-  } catch (const std::runtime_error& e) {  // ScriptError and lookup failures
+  } catch (const std::runtime_error& e) {  // reader errors and lookup failures
     throw UsageError("--script: " + std::string(e.what()));
   }
 }
 
-// The engine's modes choose how the animation view plays; no view of this window has one,
-// so a mode would have no effect: reject every value, naming the known ones.
-void reject_mode(const CliArgs& cli) {
+void read_scene(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--scene")) return;
+  const std::string name = cli.values("--scene").at(0);
+  try {
+    read_scene_file(resolve_scene_path(name));
+  } catch (const std::runtime_error& e) {  // SceneError and lookup failures
+    throw UsageError("--scene: " + std::string(e.what()));
+  }
+  options->scene = name;
+  if (options->viewer_script.empty()) options->viewer_script = "circle";
+}
+
+void read_mode(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--mode")) return;
   const std::string text = cli.values("--mode").at(0);
   EngineMode mode = EngineMode::kPerspective;
   if (!parse_engine_mode(text, &mode)) {
     throw UsageError("--mode: unknown mode '" + text +
-                     "' (engine modes: perspective, affine, exact, rerender)");
+                     "' (known: perspective, affine, exact, rerender)");
   }
-  throw UsageError("--mode: '" + text +
-                   "' is an animation mode; the flow and basis views do not animate layers, so "
-                   "there is nothing for it to change (try oflab-cli animate --mode " +
-                   text + ")");
+  options->mode = mode;
 }
 
 void read_size(const CliArgs& cli, LaunchOptions* options) {
@@ -138,7 +144,8 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
 }  // namespace
 
 const std::vector<std::string>& screenshot_view_names() {
-  static const std::vector<std::string> names = {"flow", "basis", "window"};
+  static const std::vector<std::string> names = {"flow", "basis", "animation", "analysis",
+                                                  "window"};
   return names;
 }
 
@@ -164,9 +171,9 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
     throw UsageError("--lesson: unknown lesson '" + options.lesson + "' (known: " + lesson_names() +
                      ")");
   }
-  reject_unknown_name(cli, "--scene", "scene");
   read_script(cli, &options);
-  reject_mode(cli);
+  read_scene(cli, &options);
+  read_mode(cli, &options);
   options.view = cli.text_or("--view", "");
   const auto& views = screenshot_view_names();
   if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
@@ -192,13 +199,17 @@ FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
 }
 
 std::string launch_usage() {
-  return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--view flow|basis|window]\n"
+  return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
+         "             [--mode perspective|affine|exact|rerender]\n"
+         "             [--view flow|basis|animation|analysis|window]\n"
          "             [--screenshot FILE.png --frames N] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "
          "arrows,streamlines,wheel,texture,zoom,common-scale]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"
          "  lessons: " +
-         lesson_names() + "\n  shipped scripts: " + joined(shipped_script_names()) + "\n";
+         lesson_names() + "\n  shipped scripts: " + joined(shipped_script_names()) +
+         "\n  shipped scenes (--script then names a viewer script: " +
+         joined(shipped_viewer_script_names()) + "): " + joined(shipped_scene_names()) + "\n";
 }
 
 }  // namespace oflab

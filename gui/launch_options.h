@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/cli_args.h"
+#include "core/engine.h"
 #include "core/script.h"
 #include "gui/basis_catalog.h"
 #include "gui/flow_display.h"
@@ -30,23 +31,30 @@ struct LaunchOptions {
   std::optional<FlowPart> flow_part;
   std::optional<FlowDisplay> flow_draw;
   std::optional<BasisKind> basis;
-  // --script NAME|FILE: a shipped script name or a script file, read and checked.
+  // --script NAME|FILE: a shipped script name or a script file, read and checked. With
+  // --scene it names a viewer script instead (default "circle"), kept in viewer_script.
   std::optional<MotionScript> script;
   std::string script_name;
+  // --scene NAME|FILE: a multi-plane scene for the animation and analysis views, checked.
+  std::string scene;
+  std::string viewer_script;
+  // --mode perspective|affine|exact|rerender: the animation engine's mode.
+  std::optional<EngineMode> mode;
   bool presentation = false;  // start in presentation mode
   bool help = false;          // --help: print the usage and exit 0
 };
 
-// The view names a screenshot can capture, in order ("flow", "basis", "window").
+// The view names a screenshot can capture, in order ("flow", "basis", "animation",
+// "analysis", "window").
 const std::vector<std::string>& screenshot_view_names();
 
 // Parses the arguments after the program name. Throws UsageError with one line naming
 // the option for: unknown options or values, a missing value, --frames without
 // --screenshot, --screenshot with --benchmark, a size outside 320..8192, a negative frame
 // count, a non-positive benchmark count, a script that is neither a file nor a shipped name
-// or that analysis/script_file.h rejects (the message names the file and field), --scene
-// with any value (no scene files exist yet), and --mode with any value (animation modes
-// belong to the animation view; the flow and basis views have none).
+// or that analysis/script_file.h rejects (the message names the file and field), a scene
+// or viewer script that is neither a file nor a shipped name or that its reader rejects,
+// and an unknown --mode.
 LaunchOptions parse_launch_options(const std::vector<std::string>& args);
 
 // The flow view's display with the options' overrides applied.

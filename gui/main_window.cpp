@@ -1,6 +1,8 @@
 #include "gui/main_window.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QSlider>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -17,6 +19,8 @@
 
 #include "analysis/datasets.h"
 #include "analysis/script_file.h"
+#include "gui/analysis_view.h"
+#include "gui/animation_view.h"
 #include "gui/app_theme.h"
 #include "gui/basis_view.h"
 #include "gui/flow_view.h"
@@ -47,6 +51,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   basis_view_ = new BasisView(model_);
   add_view(flow_view_);
   add_view(basis_view_);
+  animation_view_ = new AnimationView(model_);
+  analysis_view_ = new AnalysisView(model_, animation_view_);
+  add_view(animation_view_);
+  add_view(analysis_view_);
+  connect(animation_view_, &AnimationView::input_rejected, this, &MainWindow::show_message);
 
   controls_ = new SceneControls(model_);
   auto* scroll = new QScrollArea;
@@ -122,6 +131,10 @@ void MainWindow::create_actions() {
   back_action_->setShortcut(Qt::Key_Left);
   connect(back_action_, &QAction::triggered, this,
           [this] { model_->set_frame(std::max(0, model_->frame() - 1)); });
+  end_action_ = new QAction(tr("Last frame"), this);
+  end_action_->setShortcut(Qt::Key_End);
+  connect(end_action_, &QAction::triggered, this,
+          [this] { model_->set_frame(model_->loop_frames() - 1); });
   reset_action_ = new QAction(tr("First frame"), this);
   reset_action_->setShortcut(Qt::Key_Home);
   connect(reset_action_, &QAction::triggered, this, [this] { model_->set_frame(0); });
@@ -153,7 +166,9 @@ void MainWindow::create_menus() {
   connect(quit, &QAction::triggered, this, &QWidget::close);
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(presentation_action_);
-  for (QAction* a : {play_action_, step_action_, back_action_, reset_action_}) view->addAction(a);
+  for (QAction* a : {play_action_, step_action_, back_action_, reset_action_, end_action_}) {
+    view->addAction(a);
+  }
   QMenu* lesson_menu = menuBar()->addMenu(tr("&Lessons"));
   for (const Lesson& lesson : lessons()) {
     const std::string name = lesson.name;
@@ -165,17 +180,42 @@ void MainWindow::create_menus() {
 void MainWindow::create_play_bar() {
   QToolBar* bar = addToolBar(tr("Play"));
   bar->setObjectName(QStringLiteral("play_bar"));
-  for (QAction* a : {play_action_, back_action_, step_action_, reset_action_}) bar->addAction(a);
+  for (QAction* a : {reset_action_, back_action_, play_action_, step_action_, end_action_}) {
+    bar->addAction(a);
+  }
   frame_label_ = new QLabel(bar);
   bar->addWidget(frame_label_);
+  add_scrub_controls(bar);
   bar->addSeparator();
   bar->addAction(presentation_action_);
   update_frame_label();
 }
 
+void MainWindow::add_scrub_controls(QToolBar* bar) {
+  scrub_ = new QSlider(Qt::Horizontal, bar);
+  scrub_->setObjectName(QStringLiteral("scrub_slider"));
+  scrub_->setMinimumWidth(120);
+  scrub_->setToolTip(tr("Scrub through the frames of the motion"));
+  bar->addWidget(scrub_);
+  connect(scrub_, &QSlider::valueChanged, this, [this](int frame) { model_->set_frame(frame); });
+  speed_box_ = new QComboBox(bar);
+  speed_box_->setObjectName(QStringLiteral("speed_box"));
+  speed_box_->setToolTip(tr("Playback rate, frames per second"));
+  for (int fps : {5, 10, 15, 30, 60}) speed_box_->addItem(tr("%1 fps").arg(fps), fps);
+  speed_box_->setCurrentIndex(3);
+  bar->addWidget(speed_box_);
+  connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this, [this] {
+    motion_timer_->setInterval(1000 / speed_box_->currentData().toInt());
+  });
+}
+
 void MainWindow::update_frame_label() {
   frame_label_->setText(
       tr("  frame %1 (t = %2 s)").arg(model_->frame()).arg(model_->time(), 0, 'f', 2));
+  if (!scrub_) return;
+  const QSignalBlocker block(scrub_);
+  scrub_->setRange(0, model_->loop_frames() - 1);
+  scrub_->setValue(model_->frame());
 }
 
 void MainWindow::add_view(ViewPage* view) {

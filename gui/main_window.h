@@ -10,6 +10,9 @@
 #include "gui/lessons.h"
 
 class QAction;
+class QComboBox;
+class QSlider;
+class QToolBar;
 class QDockWidget;
 class QLabel;
 class QTabWidget;
@@ -17,6 +20,8 @@ class QTimer;
 
 namespace oflab {
 
+class AnalysisView;
+class AnimationView;
 class BasisView;
 class FlowView;
 class SceneControls;
@@ -34,6 +39,8 @@ class MainWindow : public QMainWindow {
   SceneControls* scene_controls() const { return controls_; }
   FlowView* flow_view() const { return flow_view_; }
   BasisView* basis_view() const { return basis_view_; }
+  AnimationView* animation_view() const { return animation_view_; }
+  AnalysisView* analysis_view() const { return analysis_view_; }
 
   // Adds a view as a tab (the window takes ownership) and themes it.
   void add_view(ViewPage* view);
@@ -83,6 +90,7 @@ class MainWindow : public QMainWindow {
   void show_message(const QString& text);
   void clear_message();
   void update_frame_label();
+  void add_scrub_controls(QToolBar* bar);
   void load_texture();
   void save_screenshot();
 
@@ -92,6 +100,11 @@ class MainWindow : public QMainWindow {
   QDockWidget* scene_dock_ = nullptr;
   FlowView* flow_view_;
   BasisView* basis_view_;
+  AnimationView* animation_view_;
+  AnalysisView* analysis_view_;
+  QSlider* scrub_ = nullptr;
+  QComboBox* speed_box_ = nullptr;
+  QAction* end_action_ = nullptr;
   std::vector<ViewPage*> views_;
   QLabel* caption_banner_ = nullptr;
   QLabel* message_banner_ = nullptr;

@@ -20,10 +20,13 @@ SceneModel::SceneModel(QObject* parent)
 }
 
 int SceneModel::loop_frames() const {
+  if (loop_override_ > 0) return loop_override_;
   return script_ ? static_cast<int>(script_->frames.size()) : kLoopFrames;
 }
 
 PlaneScene SceneModel::scene_at(int frame) const {
+  // Beyond the plane's own loop (a loop override) the plane repeats its loop.
+  frame %= script_ ? static_cast<int>(script_->frames.size()) : kLoopFrames;
   PlaneScene scene = scene_;
   if (script_) {
     const ScriptFrame& f = script_->frames[static_cast<size_t>(frame)];
@@ -43,6 +46,28 @@ bool SceneModel::drawable_at(int frame) const {
   return plane_scene_problem(scene_at(frame)).empty();
 }
 
+MotionScript SceneModel::as_script() const {
+  if (script_) return *script_;
+  MotionScript script;
+  script.name = "scene motion";
+  script.camera = scene_.camera;
+  RigidMotion per_frame = scene_.motion;
+  per_frame.velocity *= kSecondsPerFrame;
+  per_frame.omega *= kSecondsPerFrame;
+  for (int k = 0; k < kLoopFrames; ++k) {
+    const PlaneScene at = scene_at(k);
+    if (!plane_scene_problem(at).empty()) break;
+    script.frames.push_back({at.pose, per_frame});
+  }
+  return script;
+}
+
+void SceneModel::set_loop_override(int frames) {
+  loop_override_ = frames > 0 ? frames : 0;
+  if (frame_ >= loop_frames()) frame_ = 0;
+  emit scene_changed();
+}
+
 bool SceneModel::set_scene(const PlaneScene& scene) {
   const std::string problem = plane_scene_problem(scene);
   if (!problem.empty()) {
@@ -53,6 +78,7 @@ bool SceneModel::set_scene(const PlaneScene& scene) {
   script_.reset();
   script_name_.clear();
   if (frame_ >= loop_frames() || !drawable_at(frame_)) frame_ = 0;
+  emit source_changed();
   emit scene_changed();
   return true;
 }
@@ -75,6 +101,7 @@ bool SceneModel::set_script(const MotionScript& script, const QString& name) {
   script_ = script;
   script_name_ = name;
   frame_ = 0;
+  emit source_changed();
   emit scene_changed();
   return true;
 }
@@ -88,6 +115,7 @@ bool SceneModel::set_texture(const QImage& texture, const QString& source_name) 
   texture_ = texture;
   scene_.pose.texture_size = glm::ivec2(texture.width(), texture.height());
   emit texture_changed();
+  emit source_changed();
   emit scene_changed();
   return true;
 }

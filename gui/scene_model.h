@@ -38,6 +38,17 @@ class SceneModel : public QObject {
 
   // Name of the script being played, empty when the scene's own motion plays.
   QString script_name() const { return script_name_; }
+  // The script being played, or nullptr when the scene's own motion plays.
+  const MotionScript* script() const { return script_ ? &*script_ : nullptr; }
+
+  // The motion of one loop as a script (per-frame velocities): the script itself, or the
+  // scene's motion sampled every frame up to loop_frames() or the first frame the plane
+  // cannot be drawn in. What the animation view plays for the single plane.
+  MotionScript as_script() const;
+
+  // Frames in one loop when another source plays (the animation view's multi-plane
+  // scenes): 0 restores the scene's own loop length. Emits scene_changed.
+  void set_loop_override(int frames);
 
   // Replaces the scene (and drops any script) when plane_scene_problem() accepts it, and
   // emits scene_changed; otherwise emits scene_rejected(message) and keeps everything.
@@ -63,6 +74,8 @@ class SceneModel : public QObject {
  signals:
   void scene_changed();
   void texture_changed();
+  // The scene, its motion, its script or its texture changed (not only the frame).
+  void source_changed();
   void scene_rejected(const QString& message);
 
  private:
@@ -74,6 +87,7 @@ class SceneModel : public QObject {
   QString script_name_;
   QImage texture_;
   int frame_ = 0;
+  int loop_override_ = 0;
 };
 
 }  // namespace oflab

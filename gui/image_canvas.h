@@ -1,0 +1,37 @@
+// A widget that shows one image scaled to fit (aspect kept, centred) and reports the image
+// pixel under the mouse. The animation view paints its panels into one image and shows it
+// here, so what the window shows is exactly what render_image returns.
+#pragma once
+
+#include <QImage>
+#include <QPointF>
+#include <QWidget>
+
+namespace oflab {
+
+class ImageCanvas : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ImageCanvas(QWidget* parent = nullptr);
+
+  void set_image(const QImage& image);
+  const QImage& image() const { return image_; }
+  void set_background(const QColor& colour);
+
+ signals:
+  // The mouse is over image pixel `pixel` (continuous, top-left origin of the image).
+  void hovered(QPointF pixel);
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+
+ private:
+  QRectF target_rect() const;
+
+  QImage image_;
+  QColor background_{Qt::white};
+};
+
+}  // namespace oflab
