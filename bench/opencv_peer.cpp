@@ -1,0 +1,97 @@
+// OpenCV peer cases for oflab-bench (see opencv_peer.h).
+#include "opencv_peer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace oflab::bench {
+namespace {
+
+cv::Mat wrap(const Image& image) {
+  return cv::Mat(image.height(), image.width(), CV_8UC4, const_cast<Pixel*>(image.pixels().data()));
+}
+
+// oflab's destination frame -> OpenCV's output pixel indices (centres at integers).
+cv::Mat opencv_matrix(const WarpCase& c) {
+  const Mat3 m = translation_matrix(-0.5 - c.origin_x, -0.5 - c.origin_y) * c.warp *
+                 translation_matrix(0.5, 0.5);
+  cv::Mat out(3, 3, CV_64F);
+  for (int r = 0; r < 3; ++r) {
+    for (int k = 0; k < 3; ++k) out.at<double>(r, k) = entry(m, r, k);
+  }
+  return out;
+}
+
+// Fraction of the polygon pixels where OpenCV's result equals oflab's (nearest) or is
+// within 2 levels per channel (bilinear): a check that both warp the same case. OpenCV
+// rounds positions to 1/1024 pixel (nearest) and bilinear weights to 1/32, so pixels on
+// sampling boundaries may differ.
+double agreement(const WarpCase& c, const cv::Mat& opencv_output, bool bilinear) {
+  WarpOptions options;
+  options.sampling = bilinear ? Sampling::kBilinear : Sampling::kNearest;
+  const Pixel unwritten{1, 2, 3, 0};  // not premultiplied: no warp writes it
+  Image reference(c.output_width, c.output_height, unwritten);
+  warp_layer_into(c.source, c.warp, reference, c.origin_x, c.origin_y, options);
+  std::int64_t inside = 0;
+  std::int64_t agree = 0;
+  const int tolerance = bilinear ? 2 : 0;
+  for (int y = 0; y < c.output_height; ++y) {
+    const auto* opencv_row = opencv_output.ptr<Pixel>(y);
+    for (int x = 0; x < c.output_width; ++x) {
+      const Pixel a = reference.at(x, y);
+      if (a == unwritten) continue;  // outside the polygon
+      const Pixel b = opencv_row[x];
+      ++inside;
+      agree += std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance &&
+               std::abs(a.b - b.b) <= tolerance && std::abs(a.a - b.a) <= tolerance;
+    }
+  }
+  return inside > 0 ? static_cast<double>(agree) / static_cast<double>(inside) : 1.0;
+}
+
+}  // namespace
+
+void register_opencv_cases(const std::vector<WarpCase>& cases, bool bilinear_too, int repetitions) {
+  cv::setNumThreads(1);
+  for (const WarpCase& c : cases) {
+    for (bool bilinear : {false, true}) {
+      if (bilinear && !bilinear_too) continue;
+      for (bool perspective : {false, true}) {
+        if (!perspective && !c.affine) continue;
+        const std::string name = std::string("opencv/") +
+                                 (perspective ? "perspective/" : "affine/") +
+                                 (bilinear ? "bilinear/" : "nearest/") + c.size + "/" + c.matrix;
+        benchmark::RegisterBenchmark(
+            name.c_str(),
+            [c, bilinear, perspective](benchmark::State& state) {
+              const cv::Mat source = wrap(c.source.image);
+              cv::Mat output(c.output_height, c.output_width, CV_8UC4);
+              const cv::Mat m = opencv_matrix(c);
+              const int flags = bilinear ? cv::INTER_LINEAR : cv::INTER_NEAREST;
+              for (auto _ : state) {
+                if (perspective) {
+                  cv::warpPerspective(source, output, m, output.size(), flags, cv::BORDER_CONSTANT);
+                } else {
+                  cv::warpAffine(source, output, m.rowRange(0, 2), output.size(), flags,
+                                 cv::BORDER_CONSTANT);
+                }
+                benchmark::DoNotOptimize(output.data);
+                benchmark::ClobberMemory();
+              }
+              state.counters["agree"] = agreement(c, output, bilinear);
+              state.counters["Mpx/s"] =
+                  benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
+                                     benchmark::Counter::kIsIterationInvariantRate);
+            })
+            ->Repetitions(repetitions)
+            ->ReportAggregatesOnly(true)
+            ->Unit(benchmark::kMillisecond);
+      }
+    }
+  }
+}
+
+}  // namespace oflab::bench
