@@ -36,10 +36,63 @@ Lesson basis_deformations() {
   return lesson;
 }
 
+Lesson affine_vs_perspective() {
+  Lesson lesson;
+  lesson.name = "affine-vs-perspective";
+  lesson.title = "Affine vs perspective";
+  lesson.caption =
+      "Affine vs perspective. Left: the optic-flow animation, here with affine warps only; "
+      "right: the exact projection. The plane swings towards us, so its far edge should "
+      "shrink: an affine warp keeps parallel edges parallel and cannot. Press "
+      "'Affine/persp.' to switch to perspective updates, and choose 'Difference heat map' "
+      "to see where the two disagree.";
+  lesson.view = "animation";
+  lesson.scene = default_demo_scene();
+  lesson.animation_kind = "script";
+  lesson.animation_name = "rotation";
+  lesson.mode = EngineMode::kAffine;
+  return lesson;
+}
+
+Lesson why_errors_accumulate() {
+  Lesson lesson;
+  lesson.name = "why-errors-accumulate";
+  lesson.title = "Why errors accumulate";
+  lesson.caption =
+      "Why errors accumulate. Each cheap update neglects part of the motion, and the neglected "
+      "parts add up frame after frame: in the bottom charts each level's error climbs until "
+      "it would cross its dashed threshold, and then the engine pays for a better update and "
+      "the error drops. Play the motion and click a frame to ask why that level was chosen.";
+  lesson.view = "analysis";
+  lesson.scene = default_demo_scene();
+  lesson.play_motion = true;
+  return lesson;
+}
+
+Lesson occlusion() {
+  Lesson lesson;
+  lesson.name = "occlusion";
+  lesson.title = "Occlusion";
+  lesson.caption =
+      "Occlusion. Five textured squares, partly behind one another, seen by a viewer moving "
+      "sideways. Every square is its own layer with its own engine and level (outline "
+      "colour); the layers are composited back to front, so the warps never have to handle "
+      "hidden parts. Squares wholly covered are not updated at all.";
+  lesson.view = "animation";
+  lesson.scene = default_demo_scene();
+  lesson.animation_kind = "scene";
+  lesson.animation_name = "five-semi-occluded";
+  lesson.animation_viewer = "translate";
+  lesson.play_motion = true;
+  return lesson;
+}
+
 }  // namespace
 
 const std::vector<Lesson>& lessons() {
-  static const std::vector<Lesson> all = {flow_of_a_plane(), basis_deformations()};
+  static const std::vector<Lesson> all = {flow_of_a_plane(), basis_deformations(),
+                                          affine_vs_perspective(), why_errors_accumulate(),
+                                          occlusion()};
   return all;
 }
 

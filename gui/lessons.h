@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/engine.h"
 #include "gui/basis_catalog.h"
 #include "gui/flow_display.h"
 #include "gui/plane_scene.h"
@@ -16,12 +17,18 @@ struct Lesson {
   std::string name;     // command-line name, e.g. "flow-of-a-plane"
   std::string title;    // menu entry
   std::string caption;  // the narrative, a few sentences
-  std::string view;     // the view it shows: "flow" or "basis"
+  std::string view;     // the view it shows: "flow", "basis", "animation" or "analysis"
   PlaneScene scene;
   FlowDisplay flow;
   BasisKind basis = BasisKind::Planar;
   bool play_basis = false;   // animate the gallery's deformation amount
   bool play_motion = false;  // play the scene's motion
+  // What the animation and analysis views play (gui/animation_controls.h SourceChoice:
+  // kind "plane", "script" or "scene") and in which engine mode.
+  std::string animation_kind = "plane";
+  std::string animation_name;
+  std::string animation_viewer;
+  EngineMode mode = EngineMode::kPerspective;
 };
 
 // Every preset, in teaching order.

@@ -7,6 +7,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QScrollArea>
@@ -27,6 +28,7 @@
 #include "gui/scene_controls.h"
 #include "gui/scene_model.h"
 #include "gui/screenshot.h"
+#include "gui/session_io.h"
 #include "gui/texture.h"
 
 namespace oflab {
@@ -160,6 +162,7 @@ void MainWindow::create_menus() {
   }
   connect(file->addAction(tr("Save window screenshot...")), &QAction::triggered, this,
           &MainWindow::save_screenshot);
+  create_export_menu(file);
   file->addSeparator();
   QAction* quit = file->addAction(tr("Quit"));
   quit->setShortcut(QKeySequence::Quit);
@@ -255,6 +258,11 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   flow_view_->set_display(lesson.flow);
   basis_view_->set_basis(lesson.basis);
   basis_view_->set_playing(lesson.play_basis);
+  EngineSettings settings = animation_view_->settings();
+  settings.mode = lesson.mode;
+  animation_view_->set_settings(settings);
+  animation_view_->set_source(
+      {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
   show_view(QString::fromStdString(lesson.view));
   set_caption(QString::fromStdString(lesson.caption));
   statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
@@ -347,6 +355,80 @@ void MainWindow::save_screenshot() {
   if (path.isEmpty()) return;
   QString error;
   if (!save_png(grab_window_image(), path, &error)) show_message(error);
+}
+
+}  // namespace oflab
+
+namespace oflab {
+
+void MainWindow::create_export_menu(QMenu* file) {
+  // QFileDialog asks before replacing a file, so the writes below may overwrite.
+  file->addSeparator();
+  connect(file->addAction(tr("Open session...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), QString(),
+                                                      tr("oflab sessions (*.json)"));
+    if (!path.isEmpty()) load_session(path);
+  });
+  connect(file->addAction(tr("Save session...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save session"),
+                                                      QStringLiteral("session.json"),
+                                                      tr("oflab sessions (*.json)"));
+    if (!path.isEmpty()) save_session(path, true);
+  });
+  QMenu* exports = file->addMenu(tr("Export"));
+  connect(exports->addAction(tr("View screenshot at a resolution...")), &QAction::triggered, this,
+          &MainWindow::save_view_screenshot);
+  connect(exports->addAction(tr("Animation as numbered PNGs...")), &QAction::triggered, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Directory for the frames"));
+    QString error;
+    if (!dir.isEmpty() && !export_frames_png(this, dir, false, &error)) show_message(error);
+  });
+  connect(exports->addAction(tr("Animation as Ogg Theora video...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save video"), QStringLiteral("oflab.ogv"),
+                                                      tr("Ogg Theora video (*.ogv)"));
+    QString error;
+    if (!path.isEmpty() && !export_video(this, path, true, &error)) show_message(error);
+  });
+  connect(exports->addAction(tr("Per-frame CSV...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save per-frame CSV"),
+                                                      QStringLiteral("frames.csv"), tr("CSV (*.csv)"));
+    QString error;
+    if (!path.isEmpty() && !export_frame_csv(this, path, true, &error)) show_message(error);
+  });
+}
+
+void MainWindow::save_view_screenshot() {
+  bool ok = false;
+  const int width = QInputDialog::getInt(this, tr("View screenshot"), tr("Width in pixels"), 1920,
+                                         320, 8192, 1, &ok);
+  if (!ok) return;
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save view screenshot"), QStringLiteral("view.png"), tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  const QImage image = current_view()->render_image().scaledToWidth(width, Qt::SmoothTransformation);
+  QString error;
+  if (!save_png(image, path, &error)) show_message(error);
+}
+
+bool MainWindow::save_session(const QString& path, bool overwrite) {
+  try {
+    write_session_file(path.toStdString(), capture_session(this), overwrite);
+    return true;
+  } catch (const SessionError& e) {
+    show_message(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::load_session(const QString& path) {
+  QString error;
+  try {
+    if (apply_session(this, read_session_file(path.toStdString()), &error)) return true;
+  } catch (const SessionError& e) {
+    error = QString::fromStdString(e.what());
+  }
+  show_message(error);
+  return false;
 }
 
 }  // namespace oflab

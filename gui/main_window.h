@@ -15,6 +15,7 @@ class QSlider;
 class QToolBar;
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QTabWidget;
 class QTimer;
 
@@ -77,6 +78,12 @@ class MainWindow : public QMainWindow {
   // used shows a message and leaves the session as it was; returns false then.
   bool load_script(const QString& name_or_path);
 
+  // Saves the session as JSON; refuses an existing file unless `overwrite`. Loads one,
+  // changing nothing when it cannot be used. Both show a message and return false on
+  // failure.
+  bool save_session(const QString& path, bool overwrite);
+  bool load_session(const QString& path);
+
   // The whole window as drawn, VTK content included.
   QImage grab_window_image();
 
@@ -93,6 +100,8 @@ class MainWindow : public QMainWindow {
   void add_scrub_controls(QToolBar* bar);
   void load_texture();
   void save_screenshot();
+  void save_view_screenshot();
+  void create_export_menu(QMenu* file);
 
   SceneModel* model_;
   SceneControls* controls_;

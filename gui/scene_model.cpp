@@ -113,6 +113,7 @@ bool SceneModel::set_texture(const QImage& texture, const QString& source_name) 
     return false;
   }
   texture_ = texture;
+  texture_source_ = source_name;
   scene_.pose.texture_size = glm::ivec2(texture.width(), texture.height());
   emit texture_changed();
   emit source_changed();

@@ -27,6 +27,8 @@ class SceneModel : public QObject {
   // The scene at frame 0 (with a script: the script's camera, first pose and motion).
   const PlaneScene& scene() const { return scene_; }
   const QImage& texture() const { return texture_; }
+  // The file the texture came from, empty for the default texture.
+  QString texture_source() const { return texture_source_; }
   int frame() const { return frame_; }
   double time() const { return frame_ * kSecondsPerFrame; }
   // Frames in one loop of the motion (the script's length, else kLoopFrames).
@@ -86,6 +88,7 @@ class SceneModel : public QObject {
   std::optional<MotionScript> script_;
   QString script_name_;
   QImage texture_;
+  QString texture_source_;
   int frame_ = 0;
   int loop_override_ = 0;
 };
