@@ -9,6 +9,7 @@
 
 #include "analysis/datasets.h"
 #include "analysis/experiments_delta.h"
+#include "analysis/experiments_scene_shifting.h"
 #include "analysis/experiments_scenes.h"
 #include "analysis/experiments_single_plane.h"
 #include "analysis/experiments_sweep.h"
@@ -64,6 +65,7 @@ const std::vector<Experiment>& experiments() {
       {"exp1", "Experiment 1 (6.4, 6.5)", run_exp1}, {"delta", "Delta comparison (6.3)", run_delta},
       {"warp", "warp timing (A.2)", run_warp},       {"exp2", "Experiment 2 (6.6, 6.7)", run_exp2},
       {"sweep", "threshold sweep", run_sweep},
+      {"scene-shifting", "scene shifting (chapter 3)", scene_shifting_section},
   };
   return list;
 }
