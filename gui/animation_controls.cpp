@@ -132,8 +132,9 @@ QWidget* AnimationControls::make_engine_row() {
   static_cast<QVBoxLayout*>(this->layout())->addWidget(row);
   auto* thresholds = new QHBoxLayout(threshold_row);
   thresholds->setContentsMargins(0, 0, 0, 0);
-  thresholds->addWidget(new QLabel(tr("Thresholds (px): none, translate, affine, perspective"),
-                                   threshold_row));
+  auto* label = new QLabel(tr("Thresholds (px)"), threshold_row);
+  label->setToolTip(tr("Error budgets of the levels none, translate, affine and perspective"));
+  thresholds->addWidget(label);
   for (int k = 0; k < kTermCount; ++k) {
     thresholds_[k] = new QDoubleSpinBox(threshold_row);
     thresholds_[k]->setRange(0.0, 100.0);

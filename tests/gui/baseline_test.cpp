@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include "gui/animation_view.h"
 #include "gui/basis_view.h"
 #include "gui/flow_view.h"
 #include "image_checks.h"
@@ -71,6 +72,21 @@ TEST_F(BaselineTest, PlanarBasisGalleryMatchesItsBaseline) {
   QApplication::processEvents();
   window().basis_view()->set_basis(BasisKind::Planar);
   expect_matches_baseline(window().basis_view()->render_image(), "basis-planar");
+}
+
+TEST_F(BaselineTest, AnimationViewOfTheDemoMatchesItsBaseline) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  window().play_frames(10);
+  expect_matches_baseline(window().animation_view()->render_image(), "animation-demo");
+}
+
+TEST_F(BaselineTest, AnimationViewDifferenceMatchesItsBaseline) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  window().animation_view()->set_display(PanelDisplay::kDifference);
+  window().play_frames(10);
+  expect_matches_baseline(window().animation_view()->render_image(), "animation-difference");
 }
 
 }  // namespace

@@ -69,6 +69,32 @@ TEST(CommandLine, BadValuesExitWithTwo) {
   EXPECT_EQ(run_oflab({"--screenshot", "x.png", "--frames", "many"}).exit_code, 2);
   EXPECT_EQ(run_oflab({"--lesson", "nope"}).exit_code, 2);
   EXPECT_EQ(run_oflab({"--scene", "office"}).exit_code, 2);
+  const ProcessResult mode = run_oflab({"--mode", "sideways"});
+  EXPECT_EQ(mode.exit_code, 2);
+  EXPECT_TRUE(mode.err.startsWith("oflab: --mode:")) << mode.err.toStdString();
+  EXPECT_EQ(mode.err.trimmed().count('\n'), 0);
+}
+
+TEST(CommandLine, ScreenshotsOfTheAnimationAndAnalysisViewsAfterFrames) {
+  QTemporaryDir dir;
+  for (const QString view : {"animation", "analysis"}) {
+    const QString path = dir.filePath(view + ".png");
+    const ProcessResult run = run_oflab({"--screenshot", path, "--frames", "5", "--view", view,
+                                         "--mode", "affine"});
+    ASSERT_EQ(run.exit_code, 0) << run.err.toStdString();
+    const QImage image(path);
+    ASSERT_FALSE(image.isNull()) << view.toStdString();
+    EXPECT_GT(distinct_colours(image), 20) << view.toStdString();
+  }
+}
+
+TEST(CommandLine, SceneScreenshotOfTheAnimationView) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("scene.png");
+  const ProcessResult run = run_oflab({"--scene", "two", "--script", "translate", "--screenshot",
+                                       path, "--frames", "4", "--view", "animation"});
+  ASSERT_EQ(run.exit_code, 0) << run.err.toStdString();
+  EXPECT_GT(distinct_colours(QImage(path)), 20);
 }
 
 TEST(CommandLine, UnwritableScreenshotExitsWithOne) {
@@ -81,6 +107,7 @@ TEST(CommandLine, BenchmarkPrintsFramesPerSecond) {
   const ProcessResult run = run_oflab({"--benchmark", "10", "--size", "640", "480"});
   ASSERT_EQ(run.exit_code, 0) << run.err.toStdString();
   EXPECT_TRUE(run.out.contains("frames per second")) << run.out.toStdString();
+  EXPECT_TRUE(run.out.contains("animation view")) << run.out.toStdString();
 }
 
 }  // namespace

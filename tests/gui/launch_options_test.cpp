@@ -52,10 +52,28 @@ TEST(LaunchOptions, BadValuesNameTheirOption) {
   EXPECT_NE(usage_error({"stray"}).find("stray"), std::string::npos);
 }
 
-TEST(LaunchOptions, ScenesAndModesAreRejectedSayingWhatIsKnown) {
-  EXPECT_NE(usage_error({"--scene", "office"}).find("known scenes: none"), std::string::npos);
-  EXPECT_NE(usage_error({"--mode", "bogus"}).find("perspective"), std::string::npos);
-  EXPECT_NE(usage_error({"--mode", "affine"}).find("animation mode"), std::string::npos);
+TEST(LaunchOptions, UnknownScenesAndModesAreRejectedSayingWhatIsKnown) {
+  const std::string scene = usage_error({"--scene", "office"});
+  EXPECT_EQ(scene.rfind("--scene", 0), 0u) << scene;
+  EXPECT_NE(scene.find("four-cubes"), std::string::npos) << scene;
+  const std::string mode = usage_error({"--mode", "bogus"});
+  EXPECT_EQ(mode.rfind("--mode", 0), 0u) << mode;
+  EXPECT_NE(mode.find("perspective"), std::string::npos);
+  EXPECT_NE(usage_error({"--scene", "cube", "--script", "nowhere"}).find("--script"),
+            std::string::npos);
+}
+
+TEST(LaunchOptions, ShippedSceneModeAndViewerScriptAreAccepted) {
+  const LaunchOptions o =
+      parse_launch_options({"--scene", "cube", "--script", "rotate", "--mode", "affine",
+                            "--view", "animation"});
+  EXPECT_EQ(o.scene, "cube");
+  EXPECT_EQ(o.viewer_script, "rotate");
+  EXPECT_FALSE(o.script.has_value());
+  ASSERT_TRUE(o.mode.has_value());
+  EXPECT_EQ(*o.mode, EngineMode::kAffine);
+  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).viewer_script, "circle");
+  EXPECT_EQ(parse_launch_options({"--view", "analysis"}).view, "analysis");
 }
 
 TEST(LaunchOptions, ShippedScriptIsReadAndUnknownOneListsTheShippedNames) {
