@@ -44,6 +44,7 @@ void summarise(SceneRun& run) {
     s.hidden_area_px += r.hidden_area_px;
     s.pixels += r.pixels_written;
     s.time_ms += r.time_ms;
+    s.visibility_time_ms += r.visibility_ms;
     s.max_measured_error_px = std::max(s.max_measured_error_px, r.max_measured_error_px);
     times.push_back(r.time_ms);
     if (std::isfinite(run.baseline_ms[i])) s.baseline_time_ms += run.baseline_ms[i];
@@ -130,7 +131,8 @@ SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
 
 void write_scene_frame_csv(std::ostream& out, const SceneRun& run) {
   out << "frame,polygons,drawn,none,translate,affine,perspective,rerender,back_facing,"
-         "outside_frustum,hidden,clipped,time_ms,update_ms,composite_ms,pixels_written,"
+         "outside_frustum,hidden,clipped,time_ms,update_ms,composite_ms,visibility_ms,"
+         "pixels_written,"
          "pixels_composited,hidden_area_px,max_measured_error_px,psnr_db,rerender_time_ms,"
          "conventional_time_ms\n";
   for (std::size_t i = 0; i < run.reports.size(); ++i) {
@@ -138,8 +140,8 @@ void write_scene_frame_csv(std::ostream& out, const SceneRun& run) {
     out << r.frame << ',' << r.polygons << ',' << r.drawn();
     for (int c : r.levels) out << ',' << c;
     out << ',' << r.back_facing << ',' << r.outside_frustum << ',' << r.hidden << ',' << r.clipped
-        << ',' << r.time_ms << ',' << r.update_ms << ',' << r.composite_ms << ','
-        << r.pixels_written << ',' << r.pixels_composited << ',' << r.hidden_area_px << ','
+        << ',' << r.time_ms << ',' << r.update_ms << ',' << r.composite_ms << ',' << r.visibility_ms
+        << ',' << r.pixels_written << ',' << r.pixels_composited << ',' << r.hidden_area_px << ','
         << r.max_measured_error_px << ',' << run.psnr_db[i] << ',' << run.baseline_ms[i] << ','
         << run.conventional_ms[i] << '\n';
   }
@@ -172,6 +174,7 @@ nlohmann::json scene_summary_json(const SceneRunSummary& s) {
           {"hidden", s.hidden},
           {"clipped", s.clipped},
           {"hidden_area_px", s.hidden_area_px},
+          {"visibility_ms", s.visibility_time_ms},
           {"median_frame_ms",
            {{"engine", finite_or_null(s.median_frame_ms)},
             {"rerender", finite_or_null(s.baseline_median_frame_ms)},

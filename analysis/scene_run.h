@@ -39,6 +39,7 @@ struct SceneRunSummary {
   std::int64_t pixels = 0;      // warp kernel pixels of the engine
   std::int64_t baseline_pixels = 0;
   double time_ms = 0.0;
+  double visibility_time_ms = 0.0;  // of time_ms, the hidden test
   double baseline_time_ms = 0.0;
   double conventional_time_ms = 0.0;
   double median_frame_ms = 0.0;               // engine

@@ -11,6 +11,7 @@
 // All coordinates are top-left pixels (core/image.h).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/polygon.h"
@@ -27,26 +28,51 @@ ConvexPolygon dilated(const ConvexPolygon& polygon, double margin);
 
 class OcclusionTest {
  public:
-  // Forgets every occluder (call once per frame).
-  void clear() { occluders_.clear(); }
+  // Forgets every occluder; call once per frame. The occluders are binned on a grid over
+  // the frame (width x height pixels) grown by its size on every side.
+  void clear(int width = 1024, int height = 1024);
 
-  // Adds the region (already made conservative by the caller: only pixels certainly drawn
-  // opaque) of a polygon drawn after every candidate tested from now on.
-  void add_occluder(const ConvexPolygon& region);
+  // Adds the region of a polygon drawn (opaque) after every candidate tested from now on,
+  // placed at `offset` and shrunk by `inset` pixels (eroded): only pixels the caller is
+  // sure are painted opaque may hide anything. Precondition: inset >= 0.
+  void add_occluder(const ConvexPolygon& region, double inset = 0.0, Vec2 offset = Vec2(0.0));
 
-  // True when `region` lies within the union of the occluders, up to pieces of area below
-  // 1e-6 square pixels. Gives up (returns false) when the pieces multiply beyond a few
-  // hundred, which only very fragmented occluder sets cause.
-  bool covers(const ConvexPolygon& region) const;
+  // True when `region`, grown by `margin` pixels (see dilated), lies within the union of
+  // the occluders, up to pieces of area below 1e-6 square pixels. Gives up (returns false)
+  // when the pieces multiply beyond a few hundred, which only very fragmented occluder sets
+  // cause.
+  bool covers(const ConvexPolygon& region, double margin = 0.0) const;
 
   std::size_t occluder_count() const { return occluders_.size(); }
 
  private:
+  // An occluder is kept as the lines of its edges, moved inwards by the inset: their
+  // half-planes intersect in the eroded polygon, which is never built.
   struct Occluder {
-    ConvexPolygon polygon;
+    std::vector<Vec3> lines;  // l.x x + l.y y + l.z >= 0 inside, (l.x, l.y) unit
     BoundingBox box;
   };
+  bool inside(const Occluder& o, const Vec2& p) const;
+  // Occluders are binned on a grid of kGridCells x kGridCells cells over the grown frame,
+  // so a candidate is cut only by the occluders near it: a frame of a thousand polygons
+  // stays cheap to test. Occluders reaching beyond the grid, or spanning many cells, are
+  // kept in wide_ and checked for every candidate.
+  static constexpr int kGridCells = 96;
+  static constexpr int kMaxCellsPerOccluder = 256;
+  struct Grid {
+    Vec2 origin{-1024.0, -1024.0};
+    Vec2 cell{32.0, 32.0};
+  };
+  void nearby(const BoundingBox& box, std::vector<int>& out) const;
+
+  Grid grid_;
+
   std::vector<Occluder> occluders_;
+  std::vector<std::vector<int>> cells_;  // kGridCells^2, allocated on first use
+  std::vector<int> touched_;             // cells holding occluders, to clear
+  std::vector<int> wide_;
+  mutable std::vector<int> stamp_;  // per occluder: last query that collected it
+  mutable int query_ = 0;
 };
 
 }  // namespace oflab

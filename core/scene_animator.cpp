@@ -86,8 +86,9 @@ struct SceneAnimator::PolygonState {
   std::unique_ptr<PlaneAnimator> animator;
   bool live = false;  // the animator shows the previous frame
   // This frame:
-  ViewPolygon clipped;          // the outline clipped to the view frustum
-  ConvexPolygon exact_region;   // its exact image, top-left pixels
+  ViewPolygon clipped;         // the outline clipped to the view frustum
+  ConvexPolygon exact_region;  // its exact image, top-left pixels (once region_known)
+  bool region_known = false;
   bool needs_clipping = false;  // near plane or guard band: render clipped, exactly
   bool updated = false;
   PlacedLayer clipped_layer;  // the clipped exact render (status kClipped)
@@ -123,13 +124,22 @@ SceneAnimator::SceneAnimator(const Scene& scene, const Camera& camera,
   frustum_ = view_frustum(camera_, settings_.near, 1.0);
   bsp_ = BspTree(scene.polygons);
   for (const Image& t : scene.textures) scratch_textures_.push_back(make_layer(t));
+  std::vector<int> opaque_texture(scene.textures.size(), -1);  // -1: not looked at yet
   for (const ScenePolygon& polygon : scene.polygons) {
     auto state = std::make_unique<PolygonState>();
     state->world_vertices = polygon_vertices(polygon);
     state->uv = polygon_outline(polygon);
     const Image& texture = scene.textures[polygon.texture];
     state->texture_size = texture_size(texture);
-    state->opaque = polygon_is_opaque(polygon, texture);
+    // Rectangles of one texture share the answer; only outlines need a look of their own.
+    if (polygon.outline.empty()) {
+      if (opaque_texture[polygon.texture] < 0) {
+        opaque_texture[polygon.texture] = polygon_is_opaque(polygon, texture);
+      }
+      state->opaque = opaque_texture[polygon.texture] == 1;
+    } else {
+      state->opaque = polygon_is_opaque(polygon, texture);
+    }
     states_.push_back(std::move(state));
   }
   for (const BspFragment& f : bsp_.fragments()) {
@@ -161,24 +171,23 @@ void SceneAnimator::classify(const ViewerPose& view, SceneFrameReport& report) {
     PolygonState& s = *states_[i];
     const ScenePolygon& polygon = scene_.polygons[i];
     s.updated = false;
-    s.clipped = ViewPolygon{};
     s.exact_region = ConvexPolygon();
+    s.region_known = false;
     if (is_back_facing(direction_to_view(view, polygon.front), to_view(view, polygon.centre))) {
       statuses_[i] = PolygonStatus::kBackFacing;
       ++report.back_facing;
       continue;
     }
-    ViewPolygon outline;
-    for (const Vec3& v : s.world_vertices) outline.points.push_back(to_view(view, v));
-    outline.uv = s.uv;
-    s.clipped = clip_to_frustum(outline, frustum_);
+    s.clipped.points.clear();
+    for (const Vec3& v : s.world_vertices) s.clipped.points.push_back(to_view(view, v));
+    s.clipped.uv = s.uv;
+    clip_to_frustum_in_place(s.clipped, frustum_);
     if (s.clipped.empty()) {
       statuses_[i] = PolygonStatus::kOutsideFrustum;
       ++report.outside_frustum;
       continue;
     }
     statuses_[i] = PolygonStatus::kHidden;  // until it is updated
-    s.exact_region = exact_region(s.clipped);
     // The engine animates the whole texture rectangle: it must lie beyond the near plane
     // and project within the guard band.
     s.needs_clipping = false;
@@ -219,19 +228,24 @@ ConvexPolygon SceneAnimator::fragment_region(int fragment, const ViewerPose& vie
   return exact_region(clip_to_frustum(piece, frustum_));
 }
 
-bool SceneAnimator::fragment_hidden(int fragment, const ViewerPose& view) const {
+const ConvexPolygon& SceneAnimator::polygon_region(int polygon) {
+  PolygonState& s = *states_[polygon];
+  if (!s.region_known) {
+    s.exact_region = exact_region(s.clipped);
+    s.region_known = true;
+  }
+  return s.exact_region;
+}
+
+bool SceneAnimator::fragment_hidden(int fragment, const ViewerPose& view) {
   const BspFragment& f = bsp_.fragments()[fragment];
   const PolygonState& s = *states_[f.polygon];
-  ConvexPolygon region;
-  if (s.whole) {
-    region = s.exact_region;
-  } else {
-    ViewPolygon piece;
-    for (const Vec3& v : f.vertices) piece.points.push_back(to_view(view, v));
-    piece.uv = f.uv;
-    region = exact_region(clip_to_frustum(piece, frustum_));
-  }
-  return occlusion_.covers(dilated(region, settings_.candidate_margin_px));
+  if (s.whole) return occlusion_.covers(polygon_region(f.polygon), settings_.candidate_margin_px);
+  ViewPolygon piece;
+  for (const Vec3& v : f.vertices) piece.points.push_back(to_view(view, v));
+  piece.uv = f.uv;
+  return occlusion_.covers(exact_region(clip_to_frustum(piece, frustum_)),
+                           settings_.candidate_margin_px);
 }
 
 void SceneAnimator::render_clipped(int index, const ViewerPose& view, SceneFrameReport& report) {
@@ -306,7 +320,7 @@ SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const Rigi
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   fragment_drawn_.assign(fragments.size(), 0);
   fragment_regions_.resize(fragments.size());
-  occlusion_.clear();
+  occlusion_.clear(camera_.width, camera_.height);
   // Front to back: decide visibility against what is already in front, update, and let
   // the drawn fragment hide what lies behind it.
   for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
@@ -318,7 +332,12 @@ SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const Rigi
       continue;
     }
     if (!s.updated) {
-      if (settings_.skip_hidden && fragment_hidden(f, current)) continue;
+      if (settings_.skip_hidden) {
+        const auto tv = Clock::now();
+        const bool hidden = fragment_hidden(f, current);
+        report.visibility_ms += ms_since(tv);
+        if (hidden) continue;
+      }
       update_polygon(p, previous, motion, current, report);
     }
     const PlacedLayer* shown = s.shown(statuses_[p]);
@@ -327,9 +346,17 @@ SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const Rigi
     if (!s.whole) fragment_regions_[f] = fragment_region(f, current);
     if (settings_.skip_hidden && s.opaque) {
       // What this fragment certainly paints opaque hides whatever is tested after it.
-      ConvexPolygon drawn = translated(shown->layer.polygon, shown->offset_x, shown->offset_y);
-      if (!s.whole) drawn = intersection(drawn, fragment_regions_[f]);
-      occlusion_.add_occluder(eroded(drawn, settings_.occluder_inset_px));
+      const auto tv = Clock::now();
+      if (s.whole) {
+        occlusion_.add_occluder(shown->layer.polygon, settings_.occluder_inset_px,
+                                Vec2(shown->offset_x, shown->offset_y));
+      } else {
+        const ConvexPolygon drawn =
+            intersection(translated(shown->layer.polygon, shown->offset_x, shown->offset_y),
+                         fragment_regions_[f]);
+        occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
+      }
+      report.visibility_ms += ms_since(tv);
     }
   }
   const BoundingBox frame_box{0.0, 0.0, static_cast<double>(camera_.width),
@@ -338,7 +365,7 @@ SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const Rigi
     PolygonState& s = *states_[i];
     if (statuses_[i] == PolygonStatus::kHidden) {
       ++report.hidden;
-      report.hidden_area_px += clip_to_box(s.exact_region, frame_box).area();
+      report.hidden_area_px += clip_to_box(polygon_region(static_cast<int>(i)), frame_box).area();
     }
     if (!s.updated) s.live = false;  // its layer is stale: the next update starts afresh
   }

@@ -66,6 +66,7 @@ struct SceneFrameReport {
   double time_ms = 0.0;             // the whole frame: cull, order, visibility, updates, composite
   double update_ms = 0.0;           // of which the polygon updates (warps and bookkeeping)
   double composite_ms = 0.0;        // of which clearing the frame and compositing
+  double visibility_ms = 0.0;       // of which the hidden test: what skipping hidden costs
   std::int64_t pixels_written = 0;  // by the warp kernels
   std::int64_t pixels_composited = 0;
   // Image area (pixels, within the frame) of the hidden polygons: what a re-render of them
@@ -110,7 +111,8 @@ class SceneAnimator {
   SceneFrameReport run_frame(const ViewerPose* previous, const RigidMotion* motion,
                              const ViewerPose& current);
   void classify(const ViewerPose& view, SceneFrameReport& report);
-  bool fragment_hidden(int fragment, const ViewerPose& view) const;
+  bool fragment_hidden(int fragment, const ViewerPose& view);
+  const ConvexPolygon& polygon_region(int polygon);
   void update_polygon(int polygon, const ViewerPose* previous, const RigidMotion* motion,
                       const ViewerPose& current, SceneFrameReport& report);
   void render_clipped(int polygon, const ViewerPose& view, SceneFrameReport& report);

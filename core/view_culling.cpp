@@ -46,12 +46,31 @@ ViewPolygon clip_to_half_space(const ViewPolygon& polygon, const glm::dvec4& pla
   return out;
 }
 
+void clip_to_frustum_in_place(ViewPolygon& polygon, const ViewFrustum& frustum) {
+  // Most polygons lie wholly inside or wholly outside: decide those without clipping.
+  bool inside_all = true;
+  for (const glm::dvec4& plane : frustum.planes) {
+    const Vec3 normal(plane);
+    int inside = 0;
+    for (const Vec3& p : polygon.points) inside += glm::dot(normal, p) + plane.w >= 0.0;
+    if (inside == 0) {
+      polygon.points.clear();
+      polygon.uv.clear();
+      return;
+    }
+    inside_all = inside_all && inside == static_cast<int>(polygon.points.size());
+  }
+  if (inside_all) return;
+  for (const glm::dvec4& plane : frustum.planes) {
+    polygon = clip_to_half_space(polygon, plane);
+    if (polygon.empty()) return;
+  }
+}
+
 ViewPolygon clip_to_frustum(const ViewPolygon& polygon, const ViewFrustum& frustum) {
   ViewPolygon clipped = polygon;
-  for (const glm::dvec4& plane : frustum.planes) {
-    clipped = clip_to_half_space(clipped, plane);
-    if (clipped.empty()) break;
-  }
+  clip_to_frustum_in_place(clipped, frustum);
+  if (clipped.empty()) return ViewPolygon{};
   return clipped;
 }
 

@@ -40,6 +40,8 @@ bool is_back_facing(const Vec3& front, const Vec3& point, double edge_on_cosine 
 // part of the polygon is inside.
 ViewPolygon clip_to_half_space(const ViewPolygon& polygon, const glm::dvec4& plane);
 ViewPolygon clip_to_frustum(const ViewPolygon& polygon, const ViewFrustum& frustum);
+// The same in place, without allocating when the polygon lies wholly inside or outside.
+void clip_to_frustum_in_place(ViewPolygon& polygon, const ViewFrustum& frustum);
 
 // The projection of a polygon lying at Z > 0 in top-left pixel coordinates.
 // Precondition: every point has Z > 0 (true after clip_to_frustum).

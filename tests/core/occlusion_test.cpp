@@ -35,6 +35,18 @@ TEST(Occlusion, OneOccluderCoversWhatLiesInsideIt) {
   EXPECT_FALSE(test.covers(rect(20, 20, 30, 30)));
 }
 
+TEST(Occlusion, OccludersAreMovedByTheOffsetAndShrunkByTheInset) {
+  OcclusionTest test;
+  test.add_occluder(rect(0, 0, 10, 10), 1.0, Vec2(100, 50));
+  EXPECT_TRUE(test.covers(rect(101, 51, 109, 59)));
+  EXPECT_FALSE(test.covers(rect(100.5, 51, 109, 59)));
+  EXPECT_FALSE(test.covers(rect(101, 51, 109, 59), 0.5));  // the candidate grown by 0.5 px
+  EXPECT_TRUE(test.covers(rect(102, 52, 108, 58), 0.5));
+  OcclusionTest thin;
+  thin.add_occluder(rect(0, 0, 10, 1.5), 1.0);  // shrinks to nothing
+  EXPECT_FALSE(thin.covers(rect(4, 0.7, 5, 0.8)));
+}
+
 TEST(Occlusion, NeighbouringOccludersCoverTogetherWhatNeitherCoversAlone) {
   OcclusionTest test;
   test.add_occluder(rect(0, 0, 5, 10));
@@ -89,6 +101,26 @@ TEST(Occlusion, ErosionAndDilationMoveEveryEdgeByTheMargin) {
     EXPECT_TRUE(contains(out, p)) << p.x << " " << p.y;
   }
   EXPECT_FALSE(contains(out, Vec2(5, 9.5)));
+}
+
+TEST(Occlusion, ErosionAgreesWithClippingByEveryMovedEdge) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 30.0), m(0.0, 6.0);
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<Vec2> points;
+    for (int k = 0; k < 7; ++k) points.emplace_back(u(rng), u(rng));
+    const ConvexPolygon polygon = dilated(make_polygon_unchecked(points), 0.0);  // the hull
+    const double margin = m(rng);
+    ConvexPolygon expected = polygon;
+    const std::vector<Vec2>& v = polygon.vertices();
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const Vec2 e = v[(k + 1) % v.size()] - v[k];
+      const double len = glm::length(e);
+      expected = clip_to_half_plane(
+          expected, Vec3(-e.y / len, e.x / len, (e.y * v[k].x - e.x * v[k].y) / len - margin));
+    }
+    EXPECT_NEAR(eroded(polygon, margin).area(), expected.area(), 1e-7) << trial;
+  }
 }
 
 }  // namespace
