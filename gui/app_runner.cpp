@@ -50,6 +50,8 @@ bool prepare_window(MainWindow* window, const LaunchOptions& options, std::strin
     settings.mode = *options.mode;
     animation->set_settings(settings);
   }
+  PanelDisplay display = PanelDisplay::kSideBySide;
+  if (parse_panel_display(options.animation_show, &display)) animation->set_display(display);
   if (!options.view.empty() && options.view != "window") {
     window->show_view(QString::fromStdString(options.view));
   }

@@ -58,6 +58,16 @@ void read_mode(const CliArgs& cli, LaunchOptions* options) {
   options->mode = mode;
 }
 
+void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--animation-show")) return;
+  const std::string text = cli.values("--animation-show").at(0);
+  if (text != "side-by-side" && text != "difference" && text != "blink") {
+    throw UsageError("--animation-show: unknown display '" + text +
+                     "' (known: side-by-side, difference, blink)");
+  }
+  options->animation_show = text;
+}
+
 void read_size(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--size")) return;
   const Vec2 size = cli.vec2("--size");
@@ -154,6 +164,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                            {"--scene", 1},
                            {"--script", 1},
                            {"--mode", 1},
+                           {"--animation-show", 1},
                            {"--view", 1},
                            {"--screenshot", 1},
                            {"--frames", 1},
@@ -174,6 +185,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
   read_script(cli, &options);
   read_scene(cli, &options);
   read_mode(cli, &options);
+  read_animation_show(cli, &options);
   options.view = cli.text_or("--view", "");
   const auto& views = screenshot_view_names();
   if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
@@ -201,6 +213,7 @@ FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
 std::string launch_usage() {
   return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
          "             [--mode perspective|affine|exact|rerender]\n"
+         "             [--animation-show side-by-side|difference|blink]\n"
          "             [--view flow|basis|animation|analysis|window]\n"
          "             [--screenshot FILE.png --frames N] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "

@@ -40,6 +40,8 @@ struct LaunchOptions {
   std::string viewer_script;
   // --mode perspective|affine|exact|rerender: the animation engine's mode.
   std::optional<EngineMode> mode;
+  // --animation-show side-by-side|difference|blink: how the animation view shows its panels.
+  std::string animation_show;
   bool presentation = false;  // start in presentation mode
   bool help = false;          // --help: print the usage and exit 0
 };

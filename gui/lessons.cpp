@@ -42,14 +42,12 @@ Lesson affine_vs_perspective() {
   lesson.title = "Affine vs perspective";
   lesson.caption =
       "Affine vs perspective. Left: the optic-flow animation, here with affine warps only; "
-      "right: the exact projection. The plane swings towards us, so its far edge should "
-      "shrink: an affine warp keeps parallel edges parallel and cannot. Press "
+      "right: the exact projection. The plane turns as it moves, so its edges should "
+      "converge in perspective: an affine warp keeps parallel edges parallel and cannot. Press "
       "'Affine/persp.' to switch to perspective updates, and choose 'Difference heat map' "
       "to see where the two disagree.";
   lesson.view = "animation";
   lesson.scene = default_demo_scene();
-  lesson.animation_kind = "script";
-  lesson.animation_name = "rotation";
   lesson.mode = EngineMode::kAffine;
   return lesson;
 }
