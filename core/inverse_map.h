@@ -14,7 +14,10 @@
 // integers; the position error this causes is below 1e-6 pixel for every supported
 // matrix (checked in warp_test).
 //  - nearest: source pixel (floor(Nu / D), floor(Nv / D)), each clamped to the image;
-//  - bilinear: taps floor(.) and floor(.) + 1 (clamped), weights from the fractions.
+//    the kernels reproduce this exactly;
+//  - bilinear: taps floor(.) and floor(.) + 1 (clamped), weights from the fractions; the
+//    kernels' bilinear loops step a 16.16 fixed-point copy of the position, within
+//    2^-12 pixel of it (core/warp_kernels.cpp).
 #pragma once
 
 #include <cstdint>

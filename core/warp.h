@@ -11,8 +11,10 @@
 // polygon M(clipped source polygon) under the half-open rule of core/scan_conversion.h;
 // no other output pixel is touched. Its value is sampled at M^-1(centre of p), as defined
 // exactly in core/inverse_map.h: nearest takes the source pixel containing that point
-// (floor), bilinear interpolates the four source pixels around it; positions beyond the
-// source image are clamped to its border pixels.
+// (floor), exactly as defined there; bilinear interpolates the four source pixels whose
+// centres surround it, within one level per channel of the exact interpolation (16-bit
+// weights, positions within 2^-12 pixel of the exact ones). Taps beyond the source
+// image are clamped to its border pixels.
 //
 // Horizon. For a perspective M only the part of the source polygon where M's denominator
 // is >= horizon_epsilon times its largest value over the polygon is warped

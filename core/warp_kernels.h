@@ -1,13 +1,20 @@
-// The warp kernels (dissertation appendix A.1): scan conversion of the warped polygon with
-// two active edges, then per span an incremental walk through the exact inverse map.
-//  - affine: 64-bit fixed point, two integer additions per pixel;
-//  - perspective: numerators and denominator stepped exactly in double (they are integers
-//    below 2^53), one pair of divisions per pixel; floor of the correctly rounded
-//    quotient equals the exact floor (inverse_map.h), so no tie-breaking is needed.
-// Each span is first split so that its middle part samples strictly inside the source
-// image: the floor of a linear or linear-fractional function is monotone along a span,
-// so checking the two ends suffices and the inner loops have no bounds checks. The few
-// pixels at either end whose sample would leave the image take a clamped path.
+// The warp kernels (dissertation appendix A.1, errata 28-30 fixed), in two passes:
+//  1. scan conversion of the warped polygon with two active edges (scan_conversion.h);
+//     the pixels at either end of a span whose samples would leave the source image
+//     (rounding at the source border, bilinear taps beyond it) are sampled exactly with
+//     clamping. The floor of a linear or linear-fractional function is monotone along a
+//     row, so checking the two ends suffices and the rest of the span is one "fast run"
+//     whose inner loop needs no bounds checks;
+//  2. the fast runs, in vertical strips of output columns sized so that consecutive rows
+//     reuse the same source cache lines and pages, stepping incrementally:
+//     - affine: 64-bit fixed point (inverse_map.h), two integer additions per pixel;
+//     - perspective: numerators and denominator stepped exactly in double (they are
+//       integers below 2^53), one packed division per pixel for both coordinates; the
+//       floor of the correctly rounded quotient is the exact floor (inverse_map.h), so
+//       nearest sampling needs no tie-breaking and equals the per-pixel reference;
+//     - bilinear: two pixels per step with 16.16 fixed-point positions and one SIMD blend
+//       (bilinear_blend.h); within one level of the exact interpolation.
+// No virtual calls or std::function: the four kernels are template instantiations.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +24,7 @@
 
 namespace oflab {
 
-// Run the plan's kernel (plan.affine_kernel) with its sampling. Preconditions:
+// Runs the plan's kernel (plan.affine_kernel) with its sampling. Preconditions:
 // output.width() == plan.output_width, output.height() == plan.output_height, and
 // `source` is the image of the layer the plan was prepared for. Returns the number of
 // output pixels written. Never reads or writes outside either image.
