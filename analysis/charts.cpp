@@ -178,6 +178,10 @@ void write_chart_png(const Chart& chart, const std::string& path) {
     throw ChartError(problem);
   const int panels = static_cast<int>(chart.panels.size());
   vtkNew<vtkContextView> view;
+  // No interactor: offscreen charts take no input, and VTK 9.1's X interactor keeps its own
+  // display connection open after the view is gone (one per chart until the X server's
+  // client limit is reached).
+  view->SetInteractor(nullptr);
   vtkRenderWindow* window = view->GetRenderWindow();
   window->SetOffScreenRendering(1);
   window->SetSize(chart.width, chart.panel_height * panels);

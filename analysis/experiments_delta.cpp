@@ -193,8 +193,8 @@ ReportSection delta_section(const DeltaResult& result, ExperimentContext& contex
   s.paragraph(
       "The loop script (" + std::to_string(result.baseline.reports.size()) +
       " frames) in perspective mode under each Delta policy, thresholds 1 px, " +
-      std::to_string(result.spec.repetitions) +
-      " interleaved repetitions (per-frame medians), with the re-render baseline. The "
+      count_of(result.spec.repetitions, "interleaved repetition") +
+      " (per-frame medians), with the re-render baseline. The "
       "dissertation published this comparison as graphs and statements only, so the table "
       "sets its statement beside oflab's measurements. Delta = 1 keeps the perspective cache at "
       "texture size; sqrt|det A| puts it at output size (the affine step preserves area); "

@@ -157,6 +157,10 @@ std::string fixed(double value, int decimals) {
   return s.str();
 }
 
+std::string count_of(int count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
 std::string signed_fixed(double value, int decimals) {
   if (!std::isfinite(value)) return "n/a";
   std::string text = fixed(value, decimals);

@@ -69,6 +69,8 @@ std::string level_mix_reading(const std::array<double, kLevelCount>& published,
 // Number formatting for report tables: fixed decimals; "n/a" for non-finite values.
 std::string fixed(double value, int decimals);
 std::string percent(double fraction, int decimals = 1);  // 0.123 -> "12.3%"
+// "1 repetition", "3 repetitions": the count and the noun, plural with an "s" unless one.
+std::string count_of(int count, const std::string& noun);
 // With an explicit sign; a value that rounds to zero is "+0.0" (never "-0.0").
 std::string signed_fixed(double value, int decimals);
 

@@ -358,7 +358,7 @@ ReportSection experiment1_section(const Experiment1Result& result, ExperimentCon
       "the 243 x 198 butterfly texture, all thresholds 1 px, nearest sampling, Delta as the "
       "dissertation's rule. Each script ran in perspective, affine and exact mode and in "
       "re-render mode (the baseline), interleaved, " +
-      std::to_string(spec.repetitions) + " times" +
+      (spec.repetitions == 1 ? std::string("once") : std::to_string(spec.repetitions) + " times") +
       (spec.max_frames > 0 ? ", at most " + std::to_string(spec.max_frames) + " frames each"
                            : ", whole scripts") +
       ". Frame times are per-frame medians over the repetitions; time saved compares their sums "

@@ -21,6 +21,7 @@
 #include "analysis/datasets.h"
 #include "analysis/experiments_delta.h"
 #include "analysis/experiments_runs.h"
+#include "analysis/experiments_scenes.h"
 #include "analysis/experiments_single_plane.h"
 #include "analysis/experiments_warp.h"
 #include "analysis/image_io.h"
@@ -173,6 +174,57 @@ TEST(DeltaComparison, CachePixelsOrderThePoliciesAsThePublishedFrameTimes) {
   EXPECT_EQ(r.runs.size(), delta_policies().size());
 }
 
+// The whole compound script on four cubes (as section 6.7.3), deterministic parts only: one
+// repetition, no VTK renderer.
+const Experiment2Result& experiment2() {
+  static const Experiment2Result result = [] {
+    Experiment2Spec spec;
+    spec.repetitions = 1;
+    spec.conventional_repetitions = 0;
+    spec.grid_cubes = {1, 4};
+    spec.grid_max_frames = 40;
+    spec.grid_repetitions = 1;
+    return run_experiment2(spec, {});
+  }();
+  return result;
+}
+
+TEST(Experiment2Published, FourCubesUseEveryUpdateLevel) {
+  const auto& levels = experiment2().four_cubes.run.summary.polygon_levels;
+  for (int l = 0; l < kLevelCount; ++l) {
+    EXPECT_GT(levels[l], 0) << level_name(static_cast<Level>(l));
+  }
+}
+
+TEST(Experiment2Published, MostFourCubesPolygonsNeedLessThanAPerspectiveWarp) {
+  // Published: 62.2% of the polygons needed at most an affine warp.
+  const auto& levels = experiment2().four_cubes.run.summary.polygon_levels;
+  long total = 0;
+  for (long c : levels) total += c;
+  ASSERT_GT(total, 0);
+  EXPECT_GT(2 * (levels[0] + levels[1] + levels[2]), total);
+  EXPECT_EQ(experiment2().four_cubes.run.reports.size(), 401u) << "the whole compound script";
+}
+
+TEST(Experiment2Published, DrawnPolygonsGrowWithThePolygonCount) {
+  // Published: frame time grew in proportion to the polygons (sections 6.7.1, 6.7.3);
+  // the work behind it, polygons drawn per run, is compared here.
+  const auto& small = experiment2().small;
+  ASSERT_EQ(small.size(), 3u);
+  EXPECT_EQ(small[0].polygons, 1);
+  EXPECT_EQ(small[1].polygons, 2);
+  EXPECT_EQ(small[2].polygons, 5);
+  for (size_t i = 1; i < small.size(); ++i) {
+    EXPECT_GT(small[i].run.summary.drawn(), small[i - 1].run.summary.drawn()) << small[i].scene;
+  }
+  EXPECT_GT(experiment2().grid[1].run.summary.drawn(), experiment2().grid[0].run.summary.drawn());
+}
+
+TEST(Experiment2Published, SkippingHiddenPolygonsNeverDrawsMore) {
+  EXPECT_LE(experiment2().four_cubes_skipping.run.summary.drawn(),
+            experiment2().four_cubes.run.summary.drawn());
+}
+
 TEST(WarpTiming, BothKernelsWriteTheSamePixelsForAffineMatrices) {
   const WarpTimingResult r = run_warp_timing(WarpTimingSpec{3}, {});
   EXPECT_EQ(r.timings.size(), 12u);
@@ -287,7 +339,7 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
-size_t count_of(const std::string& text, const std::string& needle) {
+size_t occurrences(const std::string& text, const std::string& needle) {
   size_t n = 0;
   for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
   return n;
@@ -304,13 +356,13 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
   ASSERT_FALSE(md.empty());
   ASSERT_FALSE(html.empty());
   for (const char* tag : {"<!DOCTYPE html>", "<html", "<head>", "<body>", "</body>", "</html>"}) {
-    EXPECT_EQ(count_of(html, tag), 1u) << tag;
+    EXPECT_EQ(occurrences(html, tag), 1u) << tag;
   }
-  EXPECT_EQ(count_of(html, "<table>"), count_of(html, "</table>"));
-  EXPECT_EQ(count_of(html, "<tr>"), count_of(html, "</tr>"));
-  EXPECT_EQ(count_of(html, "<section"), count_of(html, "</section>"));
+  EXPECT_EQ(occurrences(html, "<table>"), occurrences(html, "</table>"));
+  EXPECT_EQ(occurrences(html, "<tr>"), occurrences(html, "</tr>"));
+  EXPECT_EQ(occurrences(html, "<section"), occurrences(html, "</section>"));
   // One HTML table per Markdown table (a Markdown table has one "|---|" separator row).
-  EXPECT_EQ(count_of(html, "<table>"), count_of(md, "\n|---|"));
+  EXPECT_EQ(occurrences(html, "<table>"), occurrences(md, "\n|---|"));
   for (const char* id :
        {"about", "experiment-1", "delta", "warp-timing", "experiment-2", "threshold-sweep"}) {
     EXPECT_NE(html.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
@@ -331,8 +383,8 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
     ++images;
   }
   EXPECT_GE(images, 21u + 2u + 1u + 2u);  // exp1 per script and mode, delta, warp, sweep
-  EXPECT_EQ(count_of(html, "<img "), images);
-  EXPECT_EQ(count_of(html, "src=\"data:image/png;base64,iVBORw0KGgo"), images);
+  EXPECT_EQ(occurrences(html, "<img "), images);
+  EXPECT_EQ(occurrences(html, "src=\"data:image/png;base64,iVBORw0KGgo"), images);
   for (const fs::directory_entry& e : fs::directory_iterator(dir / "charts")) {
     EXPECT_GT(e.file_size(), 0u) << e.path();
   }
