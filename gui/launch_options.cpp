@@ -154,7 +154,7 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
 }  // namespace
 
 const std::vector<std::string>& screenshot_view_names() {
-  static const std::vector<std::string> names = {"flow", "basis", "animation", "analysis",
+  static const std::vector<std::string> names = {"flow", "basis", "animation", "analysis", "slices",
                                                   "window"};
   return names;
 }

@@ -21,6 +21,7 @@
 #include "analysis/datasets.h"
 #include "analysis/script_file.h"
 #include "gui/analysis_view.h"
+#include "gui/slices_view.h"
 #include "gui/animation_view.h"
 #include "gui/app_theme.h"
 #include "gui/basis_view.h"
@@ -57,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   analysis_view_ = new AnalysisView(model_, animation_view_);
   add_view(animation_view_);
   add_view(analysis_view_);
+  add_view(new SlicesView(this));
   connect(animation_view_, &AnimationView::input_rejected, this, &MainWindow::show_message);
 
   controls_ = new SceneControls(model_);

@@ -14,6 +14,7 @@ shot analysis-demo --view analysis --frames 40
 shot lesson-affine-vs-perspective --lesson affine-vs-perspective --frames 8
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
+shot slices --view slices --frames 10
 echo "make-screenshots: $oflab not found; build it first (tools/build.sh oflab)" >&2
   exit 1
 fi
@@ -49,4 +50,5 @@ shot analysis-demo --view analysis --frames 40
 shot lesson-affine-vs-perspective --lesson affine-vs-perspective --frames 8
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
+shot slices --view slices --frames 10
 echo "make-screenshots: wrote $(ls "$out"/*.png | wc -l) images to $out"

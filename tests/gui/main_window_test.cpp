@@ -35,7 +35,8 @@ TEST_F(MainWindowTest, StartsOnTheDefaultDemoWithTheFlowViewInFront) {
   EXPECT_TRUE(same_pose(window().model()->scene().pose, demo.pose));
   EXPECT_EQ(window().model()->scene().motion.velocity, demo.motion.velocity);
   EXPECT_EQ(window().current_view()->view_name(), "flow");
-  EXPECT_EQ(window().view_names(), QStringList({"flow", "basis", "animation", "analysis"}));
+  EXPECT_EQ(window().view_names(),
+            QStringList({"flow", "basis", "animation", "analysis", "slices"}));
   EXPECT_TRUE(window().message().isEmpty());
   // The planar basis row "tx" shows core's coefficient (reference case: -121.03 px/s).
   EXPECT_EQ(window().flow_view()->coefficient_table()->value_text(0).left(7), "-121.03");
