@@ -21,7 +21,6 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <ostream>
 #include <sstream>
 
@@ -166,23 +165,17 @@ std::vector<AxisTick> level_ticks() {
   return {{0, "none"}, {1, "translate"}, {2, "affine"}, {3, "perspective"}, {4, "re-render"}};
 }
 
-std::string chart_display_problem() {
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display) return "drawing charts needs an X display; run under 'xvfb-run -a'";
-  return "";
-}
-
 void write_chart_png(const Chart& chart, const std::string& path) {
   check_chart(chart);
   if (const std::string problem = chart_display_problem(); !problem.empty())
     throw ChartError(problem);
   const int panels = static_cast<int>(chart.panels.size());
   vtkNew<vtkContextView> view;
-  // No interactor: offscreen charts take no input, and VTK 9.1's X interactor keeps its own
-  // display connection open after the view is gone (one per chart until the X server's
-  // client limit is reached).
+  // No interactor: offscreen charts take no input, and VTK 9.1's X interactor opens a
+  // display connection of its own and keeps it after the view is gone.
   view->SetInteractor(nullptr);
   vtkRenderWindow* window = view->GetRenderWindow();
+  window->SetDisplayId(shared_x_display());
   window->SetOffScreenRendering(1);
   window->SetSize(chart.width, chart.panel_height * panels);
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);

@@ -65,6 +65,14 @@ struct Chart {
 // Empty when charts can be drawn here; otherwise why not (no X display).
 std::string chart_display_problem();
 
+// The process's one X display connection (an X11 Display*) for offscreen VTK windows, to
+// pass to vtkRenderWindow::SetDisplayId before the window first renders. It is opened once,
+// retrying for up to two seconds: a busy X server (Xvfb on a loaded machine) now and then
+// refuses a new connection (EAGAIN, or reset by peer), and a VTK window that opens its own
+// connection aborts the process when that happens. Throws ChartError when no connection
+// can be made. Closed at exit.
+void* shared_x_display();
+
 // Draws `chart` offscreen and writes it as an RGB PNG to `path` (overwriting it). Throws
 // ChartError when there is no X display, the chart has no panel, a series' x and y differ
 // in length, or the file cannot be written.

@@ -21,10 +21,11 @@ struct Experiment2Spec {
   int grid_max_frames = -1;
   int grid_repetitions = 3;
   int conventional_repetitions = 2;  // of those, how many also time the VTK renderer
+  int grid_conventional_repetitions = 2;
 };
 // Full: the whole compound script, 5 repetitions (2 with the VTK renderer); grids of 1, 2,
 // 4, 9, 16 and 25 cubes (5 to 125 polygons), 3 repetitions (2 with VTK). Quick: 80 frames,
-// 1 repetition; grids of 1, 4 and 9 cubes over 40 frames.
+// 1 repetition; grids of 1, 4 and 9 cubes over 40 frames without VTK.
 Experiment2Spec experiment2_spec(bool quick);
 
 // One scene played with one setting: the first repetition's reports, and per frame the

@@ -181,6 +181,7 @@ const Experiment2Result& experiment2() {
     Experiment2Spec spec;
     spec.repetitions = 1;
     spec.conventional_repetitions = 0;
+    spec.grid_conventional_repetitions = 0;
     spec.grid_cubes = {1, 4};
     spec.grid_max_frames = 40;
     spec.grid_repetitions = 1;
