@@ -1,7 +1,13 @@
 // Option readers shared by the two forms of `oflab-cli animate`.
 #include "analysis/animate_options.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "analysis/image_io.h"
 
 namespace oflab {
 
@@ -52,6 +58,33 @@ void prepare_out_dir(const std::string& dir, bool force) {
   } else if (!fs::create_directories(dir, ec)) {
     throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
   }
+}
+
+RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
+  RunOutput out;
+  if (a.has("--frames")) {
+    out.max_frames = a.integer("--frames");
+    if (out.max_frames < 1) throw UsageError("--frames: must be at least 1");
+  }
+  out.dir = a.text_or("--out", "");
+  if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
+  if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
+  if (!out.dir.empty()) prepare_out_dir(out.dir, a.has("--force"));
+  if (a.has("--frames-png")) {
+    out.on_frame = [dir = out.dir](int i, const Image& frame) {
+      std::ostringstream name;
+      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
+      write_png((fs::path(dir) / name.str()).string(), frame);
+    };
+  }
+  const bool quiet = a.has("--quiet");
+  out.progress = [quiet, &err](int done, int total) {
+    if (quiet || total < 200) return;
+    if (done % std::max(1, total / 10) == 0 || done == total) {
+      err << "animate: frame " << done << "/" << total << "\n" << std::flush;
+    }
+  };
+  return out;
 }
 
 }  // namespace oflab

@@ -2,10 +2,13 @@
 // a scene, analysis/animate_scene.cpp).
 #pragma once
 
+#include <functional>
+#include <iosfwd>
 #include <string>
 
 #include "analysis/cli_args.h"
 #include "core/engine.h"
+#include "core/image.h"
 
 namespace oflab {
 
@@ -16,5 +19,18 @@ EngineSettings read_engine_settings(const CliArgs& args);
 // Creates DIR, or accepts an existing empty one; a non-empty DIR needs `force`. Throws
 // UsageError naming --out.
 void prepare_out_dir(const std::string& dir, bool force);
+
+// What every form of `oflab-cli animate` does with its output options: --frames N (at most N
+// frames; -1 for all), --out DIR (created, or an existing empty one; --force for a non-empty
+// one), --frames-png (each frame as DIR/frame_NNNNN.png; needs --out) and --quiet (no
+// progress lines; otherwise runs of 200 frames or more report every tenth on `err`).
+// Throws UsageError naming the option. `err` must outlive the returned callbacks.
+struct RunOutput {
+  int max_frames = -1;
+  std::string dir;  // empty without --out
+  std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
+  std::function<void(int, int)> progress;
+};
+RunOutput read_run_output(const CliArgs& args, std::ostream& err);
 
 }  // namespace oflab

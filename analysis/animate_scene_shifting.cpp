@@ -99,28 +99,12 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   } else if (sampling != "nearest") {
     throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
   }
-  if (a.has("--frames")) {
-    options.max_frames = a.integer("--frames");
-    if (options.max_frames < 1) throw UsageError("--frames: must be at least 1");
-  }
-  const bool write_out = a.has("--out");
-  const std::string dir = a.text_or("--out", "");
-  if (a.has("--frames-png") && !write_out) throw UsageError("--frames-png: needs --out DIR");
-  if (write_out) prepare_out_dir(dir, a.has("--force"));
-  if (a.has("--frames-png")) {
-    options.on_frame = [&](int i, const Image& frame) {
-      std::ostringstream name;
-      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
-      write_png((fs::path(dir) / name.str()).string(), frame);
-    };
-  }
-  const bool quiet = a.has("--quiet");
-  options.progress = [&](int done, int total) {
-    if (quiet || total < 200) return;
-    if (done % std::max(1, total / 10) == 0 || done == total) {
-      err << "animate: frame " << done << "/" << total << "\n" << std::flush;
-    }
-  };
+  const RunOutput output = read_run_output(a, err);
+  options.max_frames = output.max_frames;
+  options.on_frame = output.on_frame;
+  options.progress = output.progress;
+  const bool write_out = !output.dir.empty();
+  const std::string& dir = output.dir;
   const SceneShiftingRun result = run_scene_shifting(scene, script, options);
   const double eps = options.settings.epsilon_px;
   nlohmann::json j = scene_summary_json(result.scene_run.summary);
