@@ -19,8 +19,9 @@
 
 #include "core/image.h"
 
-// The SIMD kernels need SSE2 and 64-bit registers (x86-64).
-#if defined(__SSE2__) && defined(__x86_64__)
+// The SIMD kernels need SSE2 and 64-bit registers (x86-64). Define OFLAB_WARP_PORTABLE to
+// build the portable loops instead (to test them on x86-64).
+#if defined(__SSE2__) && defined(__x86_64__) && !defined(OFLAB_WARP_PORTABLE)
 #define OFLAB_WARP_SSE2 1
 #include <emmintrin.h>
 #endif

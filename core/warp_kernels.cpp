@@ -53,34 +53,53 @@ Pixel sample_clamped(const SourceView& src, MapSample s) {
   }
 }
 
-// True if the sample may take the fast path (no tap needs clamping).
+// Largest denominator for which in_fast_range compares by multiplication: (max + 1) * D
+// then stays below 2^63 for images up to kMaxImageDimension (2^14) pixels across. The maps
+// have D <= 2^41 (affine form) or about 2^37 (division form); larger D takes the slow path.
+constexpr std::int64_t kMaxCompareDenominator = std::int64_t{1} << 48;
+
+// True if the sample may take the fast path (no tap needs clamping). For D > 0,
+// floor(N / D) >= low  <=>  N >= low * D  and  floor(N / D) <= top  <=>  N < (top + 1) * D,
+// so no division is needed (this runs twice per row).
 template <bool kBilinear>
 bool in_fast_range(const SourceView& src, const MapSample& s) {
-  if (s.d <= 0) return false;
-  const std::int64_t ku = floor_div(s.nu, s.d);
-  const std::int64_t kv = floor_div(s.nv, s.d);
-  const std::int64_t low = kBilinear ? kBilinearLowMargin : 0;
+  if (s.d <= 0 || s.d >= kMaxCompareDenominator) return false;
+  const std::int64_t low = (kBilinear ? kBilinearLowMargin : 0) * s.d;
   const std::int64_t high = kBilinear ? kBilinearHighMargin : 0;
-  return ku >= low && kv >= low && ku + high <= src.max_x && kv + high <= src.max_y;
+  return s.nu >= low && s.nv >= low && s.nu < (src.max_x - high + 1) * s.d &&
+         s.nv < (src.max_y - high + 1) * s.d;
 }
 
 #if defined(OFLAB_WARP_SSE2)
+// Pixel offsets v * stride + u of two source pixels [u_a v_a u_b v_b] (int32 lanes, all
+// below 2^15 since images are at most kMaxImageDimension across), through one
+// multiply-add of (u, v) as 16-bit pairs with (1, stride): a's offset in the low 32 bits.
+class PairOffsets {
+ public:
+  explicit PairOffsets(const SourceView& src)
+      : weights_(_mm_set1_epi32(
+            static_cast<int>((static_cast<std::uint32_t>(src.stride) << 16) | 1u))) {}
+
+  std::uint64_t operator()(__m128i positions) const {
+    return static_cast<std::uint64_t>(
+        _mm_cvtsi128_si64(_mm_madd_epi16(_mm_packs_epi32(positions, positions), weights_)));
+  }
+
+ private:
+  __m128i weights_;
+};
+
 // Bilinear step shared by both kernels: two pixels' positions [u_a v_a u_b v_b] in 16.16
-// fixed point (int32 lanes) -> offsets through one multiply-add of (u, v) as 16-bit pairs
-// with (1, stride), weights from the low 16 bits, one blend for both pixels.
+// fixed point (int32 lanes) -> offsets of the top-left taps, weights from the low 16
+// bits, one blend for both pixels.
 struct BilinearPairs {
   const SourceView& src;
-  __m128i offset_weights;
+  PairOffsets offsets;
 
-  explicit BilinearPairs(const SourceView& s)
-      : src(s),
-        offset_weights(
-            _mm_set1_epi32(static_cast<int>((static_cast<std::uint32_t>(s.stride) << 16) | 1u))) {}
+  explicit BilinearPairs(const SourceView& s) : src(s), offsets(s) {}
 
   void blend(__m128i positions, Pixel* out) const {
-    const __m128i whole = _mm_srai_epi32(positions, kBlendWeightBits);
-    const __m128i offsets = _mm_madd_epi16(_mm_packs_epi32(whole, whole), offset_weights);
-    const auto pair = static_cast<std::uint64_t>(_mm_cvtsi128_si64(offsets));
+    const std::uint64_t pair = offsets(_mm_srai_epi32(positions, kBlendWeightBits));
     // 16-bit lanes 0, 4 hold u_a, u_b's weights; lanes 2, 6 those of v_a, v_b.
     const __m128i fx = _mm_shufflehi_epi16(_mm_shufflelo_epi16(positions, 0), 0);
     const __m128i fy = _mm_shufflehi_epi16(_mm_shufflelo_epi16(positions, 0xaa), 0xaa);
@@ -147,67 +166,114 @@ void affine_span(const SourceView& src, Pixel* out, int count, std::int64_t nu, 
   }
 }
 
-// Perspective inner loop: numerators and denominator are integers held exactly in
-// double, so stepping them equals evaluating them, and the correctly rounded quotients
-// have the exact floors (inverse_map.h). They are non-negative here, so truncation is the
-// floor. Both quotients of a pixel come from one packed division where SSE2 is available.
+// Perspective inner loops. Numerators and denominator are integers held exactly in
+// double (inverse_map.h), so stepping them equals evaluating them; they are
+// non-negative in a fast run, so truncation is the floor.
+//
+// The divider is the bottleneck of a per-pixel quotient, so the loops divide once per
+// two pixels: one packed division gives the reciprocals (1/D_k, 1/D_k+1) of a pixel
+// pair, and the four coordinates are products with them. For nearest sampling the
+// floors must stay exact. The product y = (N + 1/2) * fl(1/D) differs from
+// x = (N + 1/2) / D by at most x * 2^-52 (two roundings), while x lies at least 1/(2D)
+// from every integer (N is an integer). So trunc(y) = floor(N / D) whenever
+// (N + 1/2) * 2^-52 < 1/2, i.e. N + 1/2 < 2^51; runs whose numerators reach
+// kMaxReciprocalNumerator (far from the origin of a large source with D near 2^37) use
+// one correctly rounded division per pixel instead (inverse_map.h).
 #if defined(OFLAB_WARP_SSE2)
-struct PerspectiveStep {
-  __m128d numerators;   // (Nu, Nv), possibly times a power of two (exact)
-  __m128d denominator;  // (D, D)
-  __m128d numerator_step;
-  __m128d denominator_step;
+constexpr double kMaxReciprocalNumerator = 1125899906842624.0;  // 2^50
 
-  // Truncated quotients in int32 lanes 0 and 1, then one step to the right.
+// A pixel pair's numerators and denominators: lanes (pixel k, pixel k + 1).
+struct PairStep {
+  __m128d nu, nv, d;
+  __m128d step_u, step_v, step_d;
+
+  // Numerators `scale * (N + bias)` (exact: bias is 0 or 1/2, scale a power of two).
+  PairStep(double n_u, double n_v, double den, double du, double dv, double dd, double bias,
+           double scale)
+      : nu(_mm_set_pd((n_u + du + bias) * scale, (n_u + bias) * scale)),
+        nv(_mm_set_pd((n_v + dv + bias) * scale, (n_v + bias) * scale)),
+        d(_mm_set_pd(den + dd, den)),
+        step_u(_mm_set1_pd(2.0 * du * scale)),
+        step_v(_mm_set1_pd(2.0 * dv * scale)),
+        step_d(_mm_set1_pd(2.0 * dd)) {}
+
+  // Truncated quotients of the pair as int32 lanes [u_k v_k u_k+1 v_k+1], then two
+  // pixels to the right.
   __m128i next() {
-    const __m128d q = _mm_div_pd(numerators, denominator);
-    numerators = _mm_add_pd(numerators, numerator_step);
-    denominator = _mm_add_pd(denominator, denominator_step);
-    return _mm_cvttpd_epi32(q);
+    const __m128d r = _mm_div_pd(_mm_set1_pd(1.0), d);
+    const __m128i u = _mm_cvttpd_epi32(_mm_mul_pd(nu, r));
+    const __m128i v = _mm_cvttpd_epi32(_mm_mul_pd(nv, r));
+    nu = _mm_add_pd(nu, step_u);
+    nv = _mm_add_pd(nv, step_v);
+    d = _mm_add_pd(d, step_d);
+    return _mm_unpacklo_epi32(u, v);
   }
 };
 
+// Nearest sampling with one correctly rounded division per pixel (both coordinates in
+// one packed division): exact for numerators up to 2^53 (inverse_map.h).
+void perspective_nearest_divided(const SourceView& src, Pixel* out, int count, double nu,
+                                 double nv, double d, double du, double dv, double dd) {
+  __m128d numerators = _mm_set_pd(nv, nu);
+  __m128d denominator = _mm_set1_pd(d);
+  const __m128d numerator_step = _mm_set_pd(dv, du);
+  const __m128d denominator_step = _mm_set1_pd(dd);
+  for (int k = 0; k < count; ++k) {
+    const __m128i floors = _mm_cvttpd_epi32(_mm_div_pd(numerators, denominator));
+    numerators = _mm_add_pd(numerators, numerator_step);
+    denominator = _mm_add_pd(denominator, denominator_step);
+    out[k] = *src.at(_mm_cvtsi128_si32(floors), _mm_cvtsi128_si32(_mm_shuffle_epi32(floors, 1)));
+  }
+}
+
 template <bool kBilinear>
 void perspective_span(const SourceView& src, Pixel* out, int count, double nu, double nv, double d,
-                      double du, double dv, double dd) {
+                      double du, double dv, double dd, double numerator_max) {
   if constexpr (!kBilinear) {
-    PerspectiveStep step{_mm_set_pd(nv, nu), _mm_set1_pd(d), _mm_set_pd(dv, du), _mm_set1_pd(dd)};
-    for (int k = 0; k < count; ++k) {
-      const __m128i floors = step.next();
-      out[k] = *src.at(_mm_cvtsi128_si32(floors), _mm_cvtsi128_si32(_mm_shuffle_epi32(floors, 1)));
+    if (!(numerator_max + 0.5 < kMaxReciprocalNumerator)) {
+      perspective_nearest_divided(src, out, count, nu, nv, d, du, dv, dd);
+      return;
     }
-  } else {
-    // Positions in 16.16 fixed point straight from the division: scaling the numerators
-    // by 2^16 is exact, but the quotient, now up to 2^30, may round up onto the next
-    // multiple of 2^16, i.e. take the floor one too high with a weight near 0 instead of
-    // near 1 for the pixel below: the same value to 2^-16 (kBilinearHighMargin covers it).
-    const double scale = 1 << kBlendWeightBits;
-    PerspectiveStep step{_mm_set_pd(nv * scale, nu * scale), _mm_set1_pd(d),
-                         _mm_set_pd(dv * scale, du * scale), _mm_set1_pd(dd)};
-    const BilinearPairs pairs(src);
-    // Software pipelining: the divisions for the next two pixels are issued before the
-    // blend of the current two, so the blend never waits for the divider (measured: the
-    // bilinear perspective kernel went from 2.6x to 2.0x the nearest one).
-    __m128i next_a = step.next();
-    __m128i next_b = step.next();
+    PairStep step(nu, nv, d, du, dv, dd, 0.5, 1.0);
+    const PairOffsets pair_offsets(src);
     int k = 0;
     for (; k + 1 < count; k += 2) {
-      const __m128i positions = _mm_unpacklo_epi64(next_a, next_b);
-      next_a = step.next();
-      next_b = step.next();
+      const std::uint64_t offsets = pair_offsets(step.next());
+      out[k] = src.pixels[static_cast<std::uint32_t>(offsets)];
+      out[k + 1] = src.pixels[offsets >> 32];
+    }
+    if (k < count) {
+      perspective_nearest_divided(src, out + k, 1, nu + k * du, nv + k * dv, d + k * dd, du, dv,
+                                  dd);
+    }
+  } else {
+    // Positions in 16.16 fixed point straight from the products: scaling the numerators
+    // by 2^16 is exact, but the product, now up to 2^30, may land one unit of 2^-16 on
+    // either side of the floor of the exact quotient: the same interpolated value to
+    // 2^-16 (kBilinearLowMargin and kBilinearHighMargin cover the taps).
+    PairStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
+    const BilinearPairs pairs(src);
+    // Software pipelining: the next pair's positions are computed before the current
+    // pair's blend, so the blend never waits for the divider.
+    __m128i next = step.next();
+    int k = 0;
+    for (; k + 1 < count; k += 2) {
+      const __m128i positions = next;
+      next = step.next();
       pairs.blend(positions, out + k);
     }
     if (k < count) {
       out[k] =
-          pairs.single(static_cast<std::uint32_t>(_mm_cvtsi128_si32(next_a)),
-                       static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_shuffle_epi32(next_a, 1))));
+          pairs.single(static_cast<std::uint32_t>(_mm_cvtsi128_si32(next)),
+                       static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_shuffle_epi32(next, 1))));
     }
   }
 }
 #else
+// Portable version: one correctly rounded division per coordinate (exact floors).
 template <bool kBilinear>
 void perspective_span(const SourceView& src, Pixel* out, int count, double nu, double nv, double d,
-                      double du, double dv, double dd) {
+                      double du, double dv, double dd, double /*numerator_max*/) {
   const double scale = 1 << kBlendWeightBits;
   for (int k = 0; k < count; ++k) {
     const double u = nu / d;
@@ -240,19 +306,13 @@ bool steps_exact_in_double(const InverseMap& m) {
 }
 
 // Output columns per strip. Fast runs are processed in vertical strips so that
-// consecutive rows reuse the source cache lines and pages of the rows above: a rotation
-// walks the source diagonally, and row by row over a whole frame every output pixel
-// would touch a new source row. A strip is sized to touch about 24 source rows per output
-// row (from the map's rows-per-pixel slope), between 32 and 512 columns; measured in
-// manual/warping.md.
-int strip_width(const InverseMap& map, const MapSample& sample) {
-  const double rows_per_pixel =
-      std::abs(2.0 * static_cast<double>(map.d) * static_cast<double>(sample.d) -
-               2.0 * static_cast<double>(map.g) * static_cast<double>(sample.nv)) /
-      (static_cast<double>(sample.d) * static_cast<double>(sample.d));
-  const double width = 24.0 / std::max(rows_per_pixel, 1e-9);
-  return static_cast<int>(std::clamp(width, 32.0, 512.0));
-}
+// consecutive rows reuse the source cache lines, pages and TLB entries of the rows above:
+// a rotation walks the source diagonally, and row by row across a whole 1920-pixel frame
+// every output row touches about a thousand source rows. Narrow strips cost a run set-up
+// per strip and row. Measured on the rotation cases of oflab-bench for 64, 128, 256, 512
+// and unlimited columns (manual/warping.md): 512 is best or within noise of it on every
+// case, and 2 to 3 times faster than unlimited for nearest 1920 x 1080.
+constexpr int kStripWidth = 512;
 
 // Pixels [begin, end) of row y whose samples take the fast path.
 struct FastRun {
@@ -304,13 +364,11 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
   if (runs.empty()) return written;
 
   // Pass 2: the runs, strip by strip. One output pixel to the right adds 2 to X.
-  const FastRun& middle = runs[runs.size() / 2];
-  const int strip = strip_width(map, evaluate(map, (middle.begin + middle.end) / 2, middle.y));
   const std::int64_t step_u = 2 * map.a;
   const std::int64_t step_v = 2 * map.d;
   const std::int64_t step_d = 2 * map.g;
-  for (int x0 = strip_begin; x0 < strip_end; x0 += strip) {
-    const int x1 = std::min(x0 + strip, strip_end);
+  for (int x0 = strip_begin; x0 < strip_end; x0 += kStripWidth) {
+    const int x1 = std::min(x0 + kStripWidth, strip_end);
     for (const FastRun& r : runs) {
       const int begin = std::max(r.begin, x0);
       const int end = std::min(r.end, x1);
@@ -320,10 +378,13 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
       if constexpr (kAffine) {
         affine_span<kBilinear>(src, out, end - begin, s.nu, s.nv, step_u, step_v, map.affine_shift);
       } else {
+        // The numerators are linear along the row: their largest value is at an end.
+        const MapSample last = evaluate(map, end - 1, r.y);
+        const auto numerator_max = static_cast<double>(std::max({s.nu, s.nv, last.nu, last.nv}));
         perspective_span<kBilinear>(src, out, end - begin, static_cast<double>(s.nu),
                                     static_cast<double>(s.nv), static_cast<double>(s.d),
                                     static_cast<double>(step_u), static_cast<double>(step_v),
-                                    static_cast<double>(step_d));
+                                    static_cast<double>(step_d), numerator_max);
       }
     }
   }

@@ -5,13 +5,15 @@
 //     clamping. The floor of a linear or linear-fractional function is monotone along a
 //     row, so checking the two ends suffices and the rest of the span is one "fast run"
 //     whose inner loop needs no bounds checks;
-//  2. the fast runs, in vertical strips of output columns sized so that consecutive rows
+//  2. the fast runs, in vertical strips of 512 output columns so that consecutive rows
 //     reuse the same source cache lines and pages, stepping incrementally:
 //     - affine: 64-bit fixed point (inverse_map.h), two integer additions per pixel;
 //     - perspective: numerators and denominator stepped exactly in double (they are
-//       integers below 2^53), one packed division per pixel for both coordinates; the
-//       floor of the correctly rounded quotient is the exact floor (inverse_map.h), so
-//       nearest sampling needs no tie-breaking and equals the per-pixel reference;
+//       integers below 2^53), one packed division per two pixels giving both pixels'
+//       reciprocals of D, and products with them. For nearest sampling the numerators
+//       are offset by 1/2, which keeps every quotient at least 1/(2D) from an integer,
+//       so the truncated products are the exact floors (warp_kernels.cpp), nearest
+//       sampling needs no tie-breaking and equals the per-pixel reference;
 //     - bilinear: two pixels per step with 16.16 fixed-point positions and one SIMD blend
 //       (bilinear_blend.h); within one level of the exact interpolation.
 // No virtual calls or std::function: the four kernels are template instantiations.

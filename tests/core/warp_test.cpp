@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/inverse_map.h"
+#include "core/warp_kernels.h"
 #include "core/warp_plan.h"
 #include "warp_reference.h"
 
@@ -148,6 +149,63 @@ TEST(WarpKernels, KernelsMatchReferenceOnLargeImagesWithLongSpans) {
           << report;
     }
   }
+}
+
+// Sampling positions that are exact integers are the ties where a quotient computed
+// through a reciprocal, (N / D) * (1 - 2^-53), could fall just below the integer. The
+// maps that make_inverse_map builds for affine matrices have a power-of-two D (exact
+// reciprocals), so this test builds maps by hand: a 2x minification, u = X = 2x + 1 and
+// v = Y, with D = 2K for many odd K that are not powers of two. Every pixel is a tie,
+// and the perspective kernel must still take the exact floor.
+TEST(WarpKernels, NearestPerspectiveKernelIsExactOnIntegerSamplingPositions) {
+  std::mt19937 rng(21);
+  const int width = 40;
+  const int height = 30;
+  const Image source = testing::random_image(rng, 2 * width + 2, 2 * height + 2);
+  for (std::int64_t k = 3; k < 1200; k += 2) {
+    for (int power : {0, 13, 26}) {
+      const std::int64_t K = k << power;
+      WarpPlan plan;
+      plan.empty = false;
+      plan.affine_kernel = false;
+      plan.sampling = Sampling::kNearest;
+      plan.output_width = width;
+      plan.output_height = height;
+      plan.polygon = ConvexPolygon::rectangle(0.0, 0.0, width, height);
+      plan.map.a = 2 * K;  // Nu = 2K X, D = 2K: u = X
+      plan.map.e = 2 * K;
+      plan.map.i = 2 * K;
+      Image output(width, height, kSentinel);
+      ASSERT_EQ(run_warp_kernel(plan, source, output), std::int64_t{width} * height);
+      std::string report;
+      ASSERT_EQ(testing::count_mismatches(testing::reference_warp(plan, source), output,
+                                          kSentinel, 0, &report),
+                0)
+          << "D = " << 2 * K << "\n"
+          << report;
+    }
+  }
+}
+
+// Far from the source origin (a source wider than 2^13 pixels, with the map's
+// denominator near its 2^37 ceiling) the numerators pass 2^50, where the perspective
+// kernel switches from reciprocals to one division per pixel to keep the floors exact.
+TEST(WarpKernels, NearestPerspectiveKernelIsExactWithNumeratorsBeyondTwoToTheFifty) {
+  std::mt19937 rng(22);
+  const int width = 12000;
+  const Layer source = make_layer(testing::random_image(rng, width, 6));
+  const Mat3 m = mat3_from_rows({1.0, 0.01, 0.0}, {0.0, 1.0, 0.0}, {1e-7, 0.0, 1.0});
+  RandomCase c{source, m, width, 6, 0, 0};
+  const WarpOptions options{Sampling::kNearest, WarpKernel::kPerspective};
+  const PreparedWarp prepared = prepare_warp(c.source, c.matrix, options);
+  const WarpPlan plan = plan_warp(prepared, options.sampling, width, 6, 0, 0);
+  ASSERT_FALSE(plan.empty);
+  const MapSample far = evaluate(plan.map, width - 100, 3);
+  const MapSample near = evaluate(plan.map, 100, 3);
+  ASSERT_GT(static_cast<double>(far.nu), 1125899906842624.0);  // 2^50: the division path
+  ASSERT_LT(static_cast<double>(near.nu), 1125899906842624.0);  // the reciprocal path
+  std::string report;
+  EXPECT_EQ(compare_with_reference(c, options, 0, &report), 0) << report;
 }
 
 // The integer map of inverse_map.h is only a definition if it is close to the true
