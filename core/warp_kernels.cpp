@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <vector>
 
 #include "core/bilinear_blend.h"  // also provides OFLAB_WARP_SSE2 and <emmintrin.h>
@@ -33,23 +34,42 @@ constexpr std::int64_t kBilinearHighMargin = 2;
 // 32 * 2^-17 = 2^-12 pixel, at most a quarter level of difference in the result.
 constexpr int kMaxApproximateRun = 64;
 
-// Exact sample with clamping, for the pixels at the ends of a span.
+// Floor of the sampling position of `s` and its fraction in units of 2^-16, from the
+// map's form: a shift for the affine form (D = 2^shift); for the division form the
+// correctly rounded double quotient, whose floor is exact (inverse_map.h), with the
+// fraction truncated from it (within 2^-16 of the exact fraction's truncation).
+struct SplitPosition {
+  std::int64_t whole;
+  std::uint32_t fraction;
+};
+
+SplitPosition split_position(std::int64_t n, std::int64_t d, int affine_shift) {
+  if (affine_shift >= 0) {
+    return {n >> affine_shift,
+            static_cast<std::uint32_t>(n >> (affine_shift - kBlendWeightBits)) & kBlendWeightMask};
+  }
+  const double q = static_cast<double>(n) / static_cast<double>(d);
+  const double whole = std::floor(q);
+  const auto fraction = static_cast<std::uint32_t>((q - whole) * (1 << kBlendWeightBits));
+  return {static_cast<std::int64_t>(whole), std::min(fraction, kBlendWeightMask)};
+}
+
+// Sample with clamping, for the pixels at the ends of a span: exact for nearest, the
+// same weights as the fast loops (to 2^-16) for bilinear.
 template <bool kBilinear>
-Pixel sample_clamped(const SourceView& src, MapSample s) {
-  if (s.d <= 0) s.d = 1;  // unreachable: make_inverse_map guarantees D > 0
-  const std::int64_t ku = floor_div(s.nu, s.d);
-  const std::int64_t kv = floor_div(s.nv, s.d);
+Pixel sample_clamped(const SourceView& src, const MapSample& s, int affine_shift) {
+  const SplitPosition u = split_position(s.nu, s.d, affine_shift);
+  const SplitPosition v = split_position(s.nv, s.d, affine_shift);
   if constexpr (!kBilinear) {
-    return *src.at(std::clamp<std::int64_t>(ku, 0, src.max_x),
-                   std::clamp<std::int64_t>(kv, 0, src.max_y));
+    return *src.at(std::clamp<std::int64_t>(u.whole, 0, src.max_x),
+                   std::clamp<std::int64_t>(v.whole, 0, src.max_y));
   } else {
-    const auto fx = static_cast<std::uint32_t>(((s.nu - ku * s.d) << kBlendWeightBits) / s.d);
-    const auto fy = static_cast<std::uint32_t>(((s.nv - kv * s.d) << kBlendWeightBits) / s.d);
-    const std::int64_t x0 = std::clamp<std::int64_t>(ku, 0, src.max_x);
-    const std::int64_t x1 = std::clamp<std::int64_t>(ku + 1, 0, src.max_x);
-    const std::int64_t y0 = std::clamp<std::int64_t>(kv, 0, src.max_y);
-    const std::int64_t y1 = std::clamp<std::int64_t>(kv + 1, 0, src.max_y);
-    return blend_taps(src.at(x0, y0), src.at(x1, y0), src.at(x0, y1), src.at(x1, y1), fx, fy);
+    const std::int64_t x0 = std::clamp<std::int64_t>(u.whole, 0, src.max_x);
+    const std::int64_t x1 = std::clamp<std::int64_t>(u.whole + 1, 0, src.max_x);
+    const std::int64_t y0 = std::clamp<std::int64_t>(v.whole, 0, src.max_y);
+    const std::int64_t y1 = std::clamp<std::int64_t>(v.whole + 1, 0, src.max_y);
+    return blend_taps(src.at(x0, y0), src.at(x1, y0), src.at(x0, y1), src.at(x1, y1), u.fraction,
+                      v.fraction);
   }
 }
 
@@ -115,6 +135,158 @@ struct BilinearPairs {
 };
 #endif
 
+#if defined(OFLAB_WARP_SSE2) && defined(__GNUC__)
+// AVX2 versions of the bilinear loops, four pixels per step: the same arithmetic as the
+// SSE2 loops (bilinear_blend.h) in both 128-bit halves of a 256-bit register, so the
+// results are identical. Compiled for AVX2 with a function attribute and chosen at run
+// time (use_avx2), so the build still runs on any x86-64.
+#define OFLAB_WARP_AVX2 1
+#define OFLAB_AVX2 __attribute__((target("avx2")))
+}  // namespace
+}  // namespace oflab
+#include <immintrin.h>
+namespace oflab {
+namespace {
+
+// True on CPUs with AVX2, unless the environment variable OFLAB_WARP_NO_AVX2 is set (the
+// tests run the SSE2 loops that way too).
+bool use_avx2() {
+  static const bool enabled =
+      __builtin_cpu_supports("avx2") && std::getenv("OFLAB_WARP_NO_AVX2") == nullptr;
+  return enabled;
+}
+
+// Positions of four pixels [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16 fixed point (int32 lanes)
+// -> the four blended pixels, stored to out[0..3].
+OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
+                                  const __m256i& offset_weights, const __m256i& positions,
+                                  Pixel* out) {
+  const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
+  const __m256i offsets = _mm256_madd_epi16(_mm256_packs_epi32(whole, whole), offset_weights);
+  const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_castsi256_si128(offsets)));
+  const auto high =
+      static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_extracti128_si256(offsets, 1)));
+  const Pixel* pa = pixels + static_cast<std::uint32_t>(low);
+  const Pixel* pb = pixels + (low >> 32);
+  const Pixel* pc = pixels + static_cast<std::uint32_t>(high);
+  const Pixel* pd = pixels + (high >> 32);
+  using blend_detail::load_pair;
+  const std::int64_t down = stride;
+  const __m256i top = _mm256_inserti128_si256(
+      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa), load_pair(pb))),
+      _mm_unpacklo_epi32(load_pair(pc), load_pair(pd)), 1);
+  const __m256i bottom = _mm256_inserti128_si256(
+      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa + down), load_pair(pb + down))),
+      _mm_unpacklo_epi32(load_pair(pc + down), load_pair(pd + down)), 1);
+  // Weights: the low 16 bits of u (bytes 0-1 and 8-9 of each half) and of v (4-5, 12-13),
+  // each repeated over a pixel's four channels.
+  const __m256i fx = _mm256_shuffle_epi8(
+      positions, _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 8, 9, 8, 9, 8, 9, 8, 9, 0, 1, 0, 1, 0, 1,
+                                  0, 1, 8, 9, 8, 9, 8, 9, 8, 9));
+  const __m256i fy = _mm256_shuffle_epi8(
+      positions, _mm256_setr_epi8(4, 5, 4, 5, 4, 5, 4, 5, 12, 13, 12, 13, 12, 13, 12, 13, 4, 5, 4,
+                                  5, 4, 5, 4, 5, 12, 13, 12, 13, 12, 13, 12, 13));
+  // blend_detail::blend_rows, lane by lane.
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i ones = _mm256_set1_epi16(-1);
+  const __m256i gx = _mm256_xor_si256(fx, ones);
+  const __m256i gy = _mm256_xor_si256(fy, ones);
+  const __m256i t = _mm256_add_epi16(_mm256_mulhi_epu16(_mm256_unpacklo_epi8(zero, top), gx),
+                                     _mm256_mulhi_epu16(_mm256_unpackhi_epi8(zero, top), fx));
+  const __m256i b = _mm256_add_epi16(_mm256_mulhi_epu16(_mm256_unpacklo_epi8(zero, bottom), gx),
+                                     _mm256_mulhi_epu16(_mm256_unpackhi_epi8(zero, bottom), fx));
+  const __m256i v = _mm256_add_epi16(_mm256_mulhi_epu16(t, gy), _mm256_mulhi_epu16(b, fy));
+  const __m256i r = _mm256_srli_epi16(_mm256_add_epi16(v, _mm256_set1_epi16(128)), 8);
+  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(r, r), 0x08);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
+}
+
+OFLAB_AVX2 inline __m256i quad_offset_weights(const SourceView& src) {
+  return _mm256_set1_epi32(static_cast<int>((static_cast<std::uint32_t>(src.stride) << 16) | 1u));
+}
+
+// Affine bilinear, four pixels per step, in runs of up to kMaxApproximateRun pixels that
+// restart from the exact position. Handles the largest multiple of 4 pixels of the span
+// and returns how many it wrote.
+OFLAB_AVX2 int affine_bilinear_quads(const SourceView& src, Pixel* out, int count,
+                                     std::int64_t nu, std::int64_t nv, std::int64_t du,
+                                     std::int64_t dv, int to_16) {
+  const __m256i offset_weights = quad_offset_weights(src);
+  // Locals, so that the stores to `out` cannot make the compiler reload them.
+  const Pixel* const pixels = src.pixels;
+  const std::int64_t stride = src.stride;
+  const std::int64_t half = std::int64_t{1} << (to_16 - 1);
+  const auto su = static_cast<std::int32_t>((4 * du + half) >> to_16);  // rounded
+  const auto sv = static_cast<std::int32_t>((4 * dv + half) >> to_16);
+  const __m256i step = _mm256_setr_epi32(su, sv, su, sv, su, sv, su, sv);
+  const int total = count & ~3;
+  for (int k = 0; k < total;) {
+    const int run = std::min(total - k, kMaxApproximateRun);
+    // Exact positions of the run's first four pixels, truncated to 16.16.
+    std::int32_t first[8];
+    for (int j = 0; j < 4; ++j) {
+      first[2 * j] = static_cast<std::int32_t>((nu + j * du) >> to_16);
+      first[2 * j + 1] = static_cast<std::int32_t>((nv + j * dv) >> to_16);
+    }
+    __m256i positions = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(first));
+    for (int j = 0; j < run; j += 4) {
+      blend_quad(pixels, stride, offset_weights, positions, out + k + j);
+      positions = _mm256_add_epi32(positions, step);
+    }
+    k += run;
+    nu += run * du;
+    nv += run * dv;
+  }
+  return total;
+}
+
+// The 16.16 positions [u0 v0 u1 v1 | u2 v2 u3 v3] of four pixels from their scaled
+// numerators and denominators, which then step four pixels to the right.
+OFLAB_AVX2 inline __m256i quad_positions(__m256d& num_u, __m256d& num_v, __m256d& den,
+                                         const __m256d& step_u, const __m256d& step_v,
+                                         const __m256d& step_d) {
+  const __m256d r = _mm256_div_pd(_mm256_set1_pd(1.0), den);
+  const __m128i u = _mm256_cvttpd_epi32(_mm256_mul_pd(num_u, r));
+  const __m128i v = _mm256_cvttpd_epi32(_mm256_mul_pd(num_v, r));
+  num_u = _mm256_add_pd(num_u, step_u);
+  num_v = _mm256_add_pd(num_v, step_v);
+  den = _mm256_add_pd(den, step_d);
+  return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi32(u, v)),
+                                 _mm_unpackhi_epi32(u, v), 1);
+}
+
+// Perspective bilinear, four pixels per step: one packed division gives the four
+// reciprocals of D, the 16.16 positions are products with them (as in the SSE2 loop).
+// Handles the largest multiple of 4 pixels of the span and returns how many it wrote.
+OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int count,
+                                          double nu, double nv, double d, double du, double dv,
+                                          double dd) {
+  const __m256i offset_weights = quad_offset_weights(src);
+  // Locals, so that the stores to `out` cannot make the compiler reload them.
+  const Pixel* const pixels = src.pixels;
+  const std::int64_t stride = src.stride;
+  const double scale = 1 << kBlendWeightBits;
+  __m256d num_u = _mm256_setr_pd(nu * scale, (nu + du) * scale, (nu + 2 * du) * scale,
+                                 (nu + 3 * du) * scale);
+  __m256d num_v = _mm256_setr_pd(nv * scale, (nv + dv) * scale, (nv + 2 * dv) * scale,
+                                 (nv + 3 * dv) * scale);
+  __m256d den = _mm256_setr_pd(d, d + dd, d + 2 * dd, d + 3 * dd);
+  const __m256d step_u = _mm256_set1_pd(4 * du * scale);
+  const __m256d step_v = _mm256_set1_pd(4 * dv * scale);
+  const __m256d step_d = _mm256_set1_pd(4 * dd);
+  const int total = count & ~3;
+  if (total == 0) return 0;
+  // The next quad's positions are computed before the current quad's blend.
+  __m256i positions = quad_positions(num_u, num_v, den, step_u, step_v, step_d);
+  for (int k = 0; k < total; k += 4) {
+    const __m256i current = positions;
+    positions = quad_positions(num_u, num_v, den, step_u, step_v, step_d);
+    blend_quad(pixels, stride, offset_weights, current, out + k);
+  }
+  return total;
+}
+#endif
+
 // Affine inner loop: fixed point with `shift` fractional bits, only additions.
 template <bool kBilinear>
 void affine_span(const SourceView& src, Pixel* out, int count, std::int64_t nu, std::int64_t nv,
@@ -130,6 +302,15 @@ void affine_span(const SourceView& src, Pixel* out, int count, std::int64_t nu, 
 #if defined(OFLAB_WARP_SSE2)
     // Runs of up to kMaxApproximateRun pixels in 16.16 fixed point, two pixels per step,
     // each run starting from the exact position (truncated). Positions are below 2^30.
+#if defined(OFLAB_WARP_AVX2)
+    if (use_avx2()) {
+      const int done = affine_bilinear_quads(src, out, count, nu, nv, du, dv, to_16);
+      out += done;
+      count -= done;
+      nu += done * du;
+      nv += done * dv;
+    }
+#endif
     const BilinearPairs pairs(src);
     const std::int64_t half = std::int64_t{1} << (to_16 - 1);
     const auto su = static_cast<std::int32_t>((2 * du + half) >> to_16);  // rounded
@@ -251,6 +432,16 @@ void perspective_span(const SourceView& src, Pixel* out, int count, double nu, d
     // by 2^16 is exact, but the product, now up to 2^30, may land one unit of 2^-16 on
     // either side of the floor of the exact quotient: the same interpolated value to
     // 2^-16 (kBilinearLowMargin and kBilinearHighMargin cover the taps).
+#if defined(OFLAB_WARP_AVX2)
+    if (use_avx2()) {
+      const int done = perspective_bilinear_quads(src, out, count, nu, nv, d, du, dv, dd);
+      out += done;
+      count -= done;
+      nu += done * du;
+      nv += done * dv;
+      d += done * dd;
+    }
+#endif
     PairStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
     const BilinearPairs pairs(src);
     // Software pipelining: the next pair's positions are computed before the current
@@ -347,13 +538,13 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
     Pixel* out = output.row(span.y);
     MapSample s = evaluate(map, begin, span.y);
     while (begin < end && !(fast_allowed && in_fast_range<kBilinear>(src, s))) {
-      out[begin] = sample_clamped<kBilinear>(src, s);
+      out[begin] = sample_clamped<kBilinear>(src, s, map.affine_shift);
       if (++begin < end) s = evaluate(map, begin, span.y);
     }
     while (end > begin) {
       const MapSample last = evaluate(map, end - 1, span.y);
       if (in_fast_range<kBilinear>(src, last)) break;
-      out[end - 1] = sample_clamped<kBilinear>(src, last);
+      out[end - 1] = sample_clamped<kBilinear>(src, last, map.affine_shift);
       --end;
     }
     if (begin >= end) continue;
