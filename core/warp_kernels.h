@@ -16,8 +16,8 @@
 //       sampling needs no tie-breaking and equals the per-pixel reference;
 //     - bilinear: 16.16 fixed-point positions and a SIMD blend (bilinear_blend.h), two
 //       pixels per step with SSE2, four with AVX2 where the CPU has it (chosen at run
-//       time; setting the environment variable OFLAB_WARP_NO_AVX2 keeps SSE2); both give
-//       identical results, within one level of the exact interpolation.
+//       time; setting the environment variable OFLAB_WARP_NO_AVX2 keeps SSE2); both are
+//       within one level of the exact interpolation.
 // No virtual calls or std::function: the four kernels are template instantiations.
 #pragma once
 
