@@ -13,7 +13,8 @@
 //       reciprocals of D, and products with them. For nearest sampling the numerators
 //       are offset by 1/2, which keeps every quotient at least 1/(2D) from an integer,
 //       so the truncated products are the exact floors (warp_kernels.cpp), nearest
-//       sampling needs no tie-breaking and equals the per-pixel reference;
+//       sampling needs no tie-breaking and equals the per-pixel reference. With AVX2
+//       (below) one division gives four pixels' reciprocals;
 //     - bilinear: 16.16 fixed-point positions and a SIMD blend (bilinear_blend.h), two
 //       pixels per step with SSE2, four with AVX2 where the CPU has it (chosen at run
 //       time; setting the environment variable OFLAB_WARP_NO_AVX2 keeps SSE2); both are
