@@ -23,6 +23,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "analysis/charts.h"
+
 namespace oflab {
 namespace {
 
@@ -156,6 +158,9 @@ VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, dou
     m.renderer->SetMaximumNumberOfPeels(8);
     m.renderer->SetOcclusionRatio(0.0);
   }
+  // The process's shared X connection (analysis/charts.h): a window that opened its own
+  // would abort the process if a busy X server refused the connection.
+  m.window->SetDisplayId(shared_x_display());
   m.window->SetOffScreenRendering(1);
   m.window->SetMultiSamples(0);
   m.window->SetAlphaBitPlanes(1);

@@ -11,7 +11,8 @@
 //
 // Display. Debian's VTK renders through X11 only: construct the renderer where an X
 // display is available (run under `xvfb-run -a` on headless machines); the constructor
-// throws std::runtime_error when $DISPLAY is not set.
+// throws std::runtime_error when $DISPLAY is not set or no connection can be made. All
+// renderers share the process's one X connection (shared_x_display in analysis/charts.h).
 #pragma once
 
 #include <memory>
