@@ -97,8 +97,9 @@ bool in_fast_range(const SourceView& src, const MapSample& s) {
 class PairOffsets {
  public:
   explicit PairOffsets(const SourceView& src)
-      : weights_(_mm_set1_epi32(
-            static_cast<int>((static_cast<std::uint32_t>(src.stride) << 16) | 1u))) {}
+      : weights_(
+            _mm_set1_epi32(static_cast<int>((static_cast<std::uint32_t>(src.stride) << 16) | 1u))) {
+  }
 
   std::uint64_t operator()(__m128i positions) const {
     return static_cast<std::uint64_t>(
@@ -210,9 +211,8 @@ OFLAB_AVX2 inline __m256i quad_offset_weights(const SourceView& src) {
 // Affine bilinear, four pixels per step, in runs of up to kMaxApproximateRun pixels that
 // restart from the exact position. Handles the largest multiple of 4 pixels of the span
 // and returns how many it wrote.
-OFLAB_AVX2 int affine_bilinear_quads(const SourceView& src, Pixel* out, int count,
-                                     std::int64_t nu, std::int64_t nv, std::int64_t du,
-                                     std::int64_t dv, int to_16) {
+OFLAB_AVX2 int affine_bilinear_quads(const SourceView& src, Pixel* out, int count, std::int64_t nu,
+                                     std::int64_t nv, std::int64_t du, std::int64_t dv, int to_16) {
   const __m256i offset_weights = quad_offset_weights(src);
   // Locals, so that the stores to `out` cannot make the compiler reload them.
   const Pixel* const pixels = src.pixels;
@@ -242,6 +242,36 @@ OFLAB_AVX2 int affine_bilinear_quads(const SourceView& src, Pixel* out, int coun
   return total;
 }
 
+// Four pixels' numerators and denominators (lanes k .. k + 3), as PairStep below: one
+// packed division gives the four reciprocals of D, and the quotients are products with
+// them.
+struct QuadStep {
+  __m256d nu, nv, d;
+  __m256d step_u, step_v, step_d;
+
+  // Numerators `scale * (N + bias)` (exact: bias is 0 or 1/2, scale a power of two).
+  OFLAB_AVX2 QuadStep(double n_u, double n_v, double den, double du, double dv, double dd,
+                      double bias, double scale)
+      : nu(_mm256_setr_pd((n_u + bias) * scale, (n_u + du + bias) * scale,
+                          (n_u + 2 * du + bias) * scale, (n_u + 3 * du + bias) * scale)),
+        nv(_mm256_setr_pd((n_v + bias) * scale, (n_v + dv + bias) * scale,
+                          (n_v + 2 * dv + bias) * scale, (n_v + 3 * dv + bias) * scale)),
+        d(_mm256_setr_pd(den, den + dd, den + 2 * dd, den + 3 * dd)),
+        step_u(_mm256_set1_pd(4 * du * scale)),
+        step_v(_mm256_set1_pd(4 * dv * scale)),
+        step_d(_mm256_set1_pd(4 * dd)) {}
+
+  // Truncated quotients of the four pixels as int32 lanes, then four pixels to the right.
+  OFLAB_AVX2 void next(__m128i& u, __m128i& v) {
+    const __m256d r = _mm256_div_pd(_mm256_set1_pd(1.0), d);
+    u = _mm256_cvttpd_epi32(_mm256_mul_pd(nu, r));
+    v = _mm256_cvttpd_epi32(_mm256_mul_pd(nv, r));
+    nu = _mm256_add_pd(nu, step_u);
+    nv = _mm256_add_pd(nv, step_v);
+    d = _mm256_add_pd(d, step_d);
+  }
+};
+
 // Perspective nearest, four pixels per step: one packed division gives the four
 // reciprocals of D, and the floors are the truncated products (N + 1/2) * (1/D), exact
 // under the same condition as in the SSE2 loop (numerators below
@@ -251,20 +281,11 @@ OFLAB_AVX2 int perspective_nearest_quads(const SourceView& src, Pixel* out, int 
                                          double nv, double d, double du, double dv, double dd) {
   const Pixel* const pixels = src.pixels;
   const __m128i stride = _mm_set1_epi32(static_cast<int>(src.stride));
-  __m256d num_u = _mm256_setr_pd(nu + 0.5, nu + du + 0.5, nu + 2 * du + 0.5, nu + 3 * du + 0.5);
-  __m256d num_v = _mm256_setr_pd(nv + 0.5, nv + dv + 0.5, nv + 2 * dv + 0.5, nv + 3 * dv + 0.5);
-  __m256d den = _mm256_setr_pd(d, d + dd, d + 2 * dd, d + 3 * dd);
-  const __m256d step_u = _mm256_set1_pd(4 * du);
-  const __m256d step_v = _mm256_set1_pd(4 * dv);
-  const __m256d step_d = _mm256_set1_pd(4 * dd);
+  QuadStep step(nu, nv, d, du, dv, dd, 0.5, 1.0);
   const int total = count & ~3;
   for (int k = 0; k < total; k += 4) {
-    const __m256d r = _mm256_div_pd(_mm256_set1_pd(1.0), den);
-    const __m128i u = _mm256_cvttpd_epi32(_mm256_mul_pd(num_u, r));
-    const __m128i v = _mm256_cvttpd_epi32(_mm256_mul_pd(num_v, r));
-    num_u = _mm256_add_pd(num_u, step_u);
-    num_v = _mm256_add_pd(num_v, step_v);
-    den = _mm256_add_pd(den, step_d);
+    __m128i u, v;
+    step.next(u, v);
     // Offsets v * stride + u, below 2^28.
     const __m128i offsets = _mm_add_epi32(_mm_mullo_epi32(v, stride), u);
     const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(offsets));
@@ -277,17 +298,10 @@ OFLAB_AVX2 int perspective_nearest_quads(const SourceView& src, Pixel* out, int 
   return total;
 }
 
-// The 16.16 positions [u0 v0 u1 v1 | u2 v2 u3 v3] of four pixels from their scaled
-// numerators and denominators, which then step four pixels to the right.
-OFLAB_AVX2 inline __m256i quad_positions(__m256d& num_u, __m256d& num_v, __m256d& den,
-                                         const __m256d& step_u, const __m256d& step_v,
-                                         const __m256d& step_d) {
-  const __m256d r = _mm256_div_pd(_mm256_set1_pd(1.0), den);
-  const __m128i u = _mm256_cvttpd_epi32(_mm256_mul_pd(num_u, r));
-  const __m128i v = _mm256_cvttpd_epi32(_mm256_mul_pd(num_v, r));
-  num_u = _mm256_add_pd(num_u, step_u);
-  num_v = _mm256_add_pd(num_v, step_v);
-  den = _mm256_add_pd(den, step_d);
+// The 16.16 positions [u0 v0 u1 v1 | u2 v2 u3 v3] of the next four pixels.
+OFLAB_AVX2 inline __m256i quad_positions(QuadStep& step) {
+  __m128i u, v;
+  step.next(u, v);
   return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi32(u, v)),
                                  _mm_unpackhi_epi32(u, v), 1);
 }
@@ -295,29 +309,20 @@ OFLAB_AVX2 inline __m256i quad_positions(__m256d& num_u, __m256d& num_v, __m256d
 // Perspective bilinear, four pixels per step: one packed division gives the four
 // reciprocals of D, the 16.16 positions are products with them (as in the SSE2 loop).
 // Handles the largest multiple of 4 pixels of the span and returns how many it wrote.
-OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int count,
-                                          double nu, double nv, double d, double du, double dv,
-                                          double dd) {
+OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int count, double nu,
+                                          double nv, double d, double du, double dv, double dd) {
   const __m256i offset_weights = quad_offset_weights(src);
   // Locals, so that the stores to `out` cannot make the compiler reload them.
   const Pixel* const pixels = src.pixels;
   const std::int64_t stride = src.stride;
-  const double scale = 1 << kBlendWeightBits;
-  __m256d num_u = _mm256_setr_pd(nu * scale, (nu + du) * scale, (nu + 2 * du) * scale,
-                                 (nu + 3 * du) * scale);
-  __m256d num_v = _mm256_setr_pd(nv * scale, (nv + dv) * scale, (nv + 2 * dv) * scale,
-                                 (nv + 3 * dv) * scale);
-  __m256d den = _mm256_setr_pd(d, d + dd, d + 2 * dd, d + 3 * dd);
-  const __m256d step_u = _mm256_set1_pd(4 * du * scale);
-  const __m256d step_v = _mm256_set1_pd(4 * dv * scale);
-  const __m256d step_d = _mm256_set1_pd(4 * dd);
+  QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
   const int total = count & ~3;
   if (total == 0) return 0;
   // The next quad's positions are computed before the current quad's blend.
-  __m256i positions = quad_positions(num_u, num_v, den, step_u, step_v, step_d);
+  __m256i positions = quad_positions(step);
   for (int k = 0; k < total; k += 4) {
     const __m256i current = positions;
-    positions = quad_positions(num_u, num_v, den, step_u, step_v, step_d);
+    positions = quad_positions(step);
     blend_quad(pixels, stride, offset_weights, current, out + k);
   }
   return total;
@@ -430,8 +435,8 @@ struct PairStep {
 
 // Nearest sampling with one correctly rounded division per pixel (both coordinates in
 // one packed division): exact for numerators up to 2^53 (inverse_map.h).
-void perspective_nearest_divided(const SourceView& src, Pixel* out, int count, double nu,
-                                 double nv, double d, double du, double dv, double dd) {
+void perspective_nearest_divided(const SourceView& src, Pixel* out, int count, double nu, double nv,
+                                 double d, double du, double dv, double dd) {
   __m128d numerators = _mm_set_pd(nv, nu);
   __m128d denominator = _mm_set1_pd(d);
   const __m128d numerator_step = _mm_set_pd(dv, du);
@@ -444,6 +449,19 @@ void perspective_nearest_divided(const SourceView& src, Pixel* out, int count, d
   }
 }
 
+#if defined(OFLAB_WARP_AVX2)
+// Moves the start of a perspective run `done` pixels to the right, past the pixels a
+// wider loop has written.
+void skip_pixels(int done, Pixel*& out, int& count, double& nu, double& nv, double& d, double du,
+                 double dv, double dd) {
+  out += done;
+  count -= done;
+  nu += done * du;
+  nv += done * dv;
+  d += done * dd;
+}
+#endif
+
 template <bool kBilinear>
 void perspective_span(const SourceView& src, Pixel* out, int count, double nu, double nv, double d,
                       double du, double dv, double dd, double numerator_max) {
@@ -455,11 +473,7 @@ void perspective_span(const SourceView& src, Pixel* out, int count, double nu, d
 #if defined(OFLAB_WARP_AVX2)
     if (use_avx2()) {
       const int done = perspective_nearest_quads(src, out, count, nu, nv, d, du, dv, dd);
-      out += done;
-      count -= done;
-      nu += done * du;
-      nv += done * dv;
-      d += done * dd;
+      skip_pixels(done, out, count, nu, nv, d, du, dv, dd);
     }
 #endif
     PairStep step(nu, nv, d, du, dv, dd, 0.5, 1.0);
@@ -482,11 +496,7 @@ void perspective_span(const SourceView& src, Pixel* out, int count, double nu, d
 #if defined(OFLAB_WARP_AVX2)
     if (use_avx2()) {
       const int done = perspective_bilinear_quads(src, out, count, nu, nv, d, du, dv, dd);
-      out += done;
-      count -= done;
-      nu += done * du;
-      nv += done * dv;
-      d += done * dd;
+      skip_pixels(done, out, count, nu, nv, d, du, dv, dd);
     }
 #endif
     PairStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);

@@ -178,8 +178,8 @@ TEST(WarpKernels, NearestPerspectiveKernelIsExactOnIntegerSamplingPositions) {
       Image output(width, height, kSentinel);
       ASSERT_EQ(run_warp_kernel(plan, source, output), std::int64_t{width} * height);
       std::string report;
-      ASSERT_EQ(testing::count_mismatches(testing::reference_warp(plan, source), output,
-                                          kSentinel, 0, &report),
+      ASSERT_EQ(testing::count_mismatches(testing::reference_warp(plan, source), output, kSentinel,
+                                          0, &report),
                 0)
           << "D = " << 2 * K << "\n"
           << report;
@@ -202,7 +202,7 @@ TEST(WarpKernels, NearestPerspectiveKernelIsExactWithNumeratorsBeyondTwoToTheFif
   ASSERT_FALSE(plan.empty);
   const MapSample far = evaluate(plan.map, width - 100, 3);
   const MapSample near = evaluate(plan.map, 100, 3);
-  ASSERT_GT(static_cast<double>(far.nu), 1125899906842624.0);  // 2^50: the division path
+  ASSERT_GT(static_cast<double>(far.nu), 1125899906842624.0);   // 2^50: the division path
   ASSERT_LT(static_cast<double>(near.nu), 1125899906842624.0);  // the reciprocal path
   std::string report;
   EXPECT_EQ(compare_with_reference(c, options, 0, &report), 0) << report;
