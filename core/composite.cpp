@@ -1,4 +1,5 @@
-// "Over" compositing of premultiplied layers, restricted to the layer's polygon.
+// "Over" compositing of premultiplied layers, restricted to the layer's polygon (and
+// optionally a region of the frame).
 #include "core/composite.h"
 
 #include <algorithm>
@@ -19,13 +20,15 @@ Pixel over(Pixel src, Pixel dst) {
                channel(src.a, dst.a)};
 }
 
-std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y) {
-  if (layer.empty() || frame.empty()) return 0;
-  // Scan-convert the polygon in frame coordinates: the layer pixel under frame pixel
-  // (x, y) is (x - offset_x, y - offset_y), whose centre is inside the layer polygon iff
-  // the frame pixel's centre is inside the translated polygon. The layer invariant keeps
-  // that pixel inside the layer image.
-  const ConvexPolygon polygon = translated(layer.polygon, offset_x, offset_y);
+namespace {
+
+// Composites the layer pixels under the frame pixels whose centre lies in `polygon`
+// (frame pixel coordinates, inside the layer's polygon placed at the offset).
+std::int64_t composite_inside(Image& frame, const Layer& layer, int offset_x, int offset_y,
+                              const ConvexPolygon& polygon) {
+  // The layer pixel under frame pixel (x, y) is (x - offset_x, y - offset_y), whose centre
+  // is inside the layer polygon iff the frame pixel's centre is inside the translated
+  // polygon. The layer invariant keeps that pixel inside the layer image.
   ScanConverter scan(polygon, frame.width(), frame.height());
   std::int64_t count = 0;
   PixelSpan span;
@@ -50,6 +53,29 @@ std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int 
     count += end - begin;
   }
   return count;
+}
+
+}  // namespace
+
+std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y) {
+  if (layer.empty() || frame.empty()) return 0;
+  return composite_inside(frame, layer, offset_x, offset_y,
+                          translated(layer.polygon, offset_x, offset_y));
+}
+
+std::int64_t composite_over_region(Image& frame, const Layer& layer, int offset_x, int offset_y,
+                                   const ConvexPolygon& region) {
+  if (layer.empty() || frame.empty() || region.empty()) return 0;
+  // The intersection of two convex polygons: the layer's polygon (in frame coordinates)
+  // clipped by each edge of the region.
+  ConvexPolygon polygon = translated(layer.polygon, offset_x, offset_y);
+  const std::vector<Vec2>& v = region.vertices();
+  for (std::size_t k = 0; k < v.size() && !polygon.empty(); ++k) {
+    const Vec2 e = v[(k + 1) % v.size()] - v[k];
+    polygon = clip_to_half_plane(polygon, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
+  }
+  if (polygon.empty()) return 0;
+  return composite_inside(frame, layer, offset_x, offset_y, polygon);
 }
 
 }  // namespace oflab

@@ -5,6 +5,7 @@
 
 #include "core/image.h"
 #include "core/layer.h"
+#include "core/polygon.h"
 
 namespace oflab {
 
@@ -19,5 +20,14 @@ Pixel over(Pixel src, Pixel dst);
 // frame pixel changes. Offsets may be negative or put the layer wholly outside the frame.
 // Returns the number of frame pixels composited.
 std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y);
+
+// Like composite_over, but only the frame pixels whose centre lies in both the layer's
+// polygon (placed at the offset) and `region` (frame pixel coordinates, half-open rule of
+// core/scan_conversion.h) take part. Regions that partition a layer's polygon therefore
+// composite every layer pixel exactly once: the pieces of a polygon split by the BSP tree
+// (core/bsp_tree.h) are drawn from the polygon's one layer this way, each restricted to
+// its own region, in back-to-front order. Returns the pixel count.
+std::int64_t composite_over_region(Image& frame, const Layer& layer, int offset_x, int offset_y,
+                                   const ConvexPolygon& region);
 
 }  // namespace oflab

@@ -9,7 +9,6 @@
 
 #include "core/composite.h"
 #include "core/homography.h"
-#include "core/region_composite.h"
 
 namespace oflab {
 namespace {

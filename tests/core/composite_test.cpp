@@ -77,6 +77,44 @@ TEST(Composite, LayerOverFrameMatchesPerPixelFormulaInsideThePolygonOnly) {
   }
 }
 
+// Two regions that split the frame along a random line composite every layer pixel
+// exactly once: with opaque layer pixels, region by region equals the whole layer, and
+// each region's count adds up to the whole count. Regions outside the layer change
+// nothing.
+TEST(Composite, RegionsThatSplitTheFrameCompositeEachPixelOnce) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 100; ++k) {
+    const int w = 2 + k % 31;
+    const int h = 2 + (k * 5) % 23;
+    Image opaque = testing::random_image(rng, w, h);
+    for (Pixel& p : opaque.pixels()) p.a = 255;
+    const Layer layer = make_layer(opaque, testing::random_polygon(rng, w, h));
+    const Image before = testing::random_image(rng, 40, 36);
+    const int ox = static_cast<int>(unit(rng) * 20.0) - 5;
+    const int oy = static_cast<int>(unit(rng) * 20.0) - 5;
+    Image whole = before;
+    const std::int64_t whole_count = composite_over(whole, layer, ox, oy);
+    // A random line through the frame splits its rectangle into two convex regions.
+    const Vec2 a(unit(rng) * 40.0, 0.0);
+    const Vec2 b(unit(rng) * 40.0, 36.0);
+    const ConvexPolygon frame_box = ConvexPolygon::rectangle(0.0, 0.0, 40.0, 36.0);
+    const Vec3 line(b.y - a.y, a.x - b.x, b.x * a.y - a.x * b.y);
+    const ConvexPolygon left = clip_to_half_plane(frame_box, line);
+    const ConvexPolygon right = clip_to_half_plane(frame_box, -line);
+    Image pieces = before;
+    const std::int64_t count = composite_over_region(pieces, layer, ox, oy, left) +
+                               composite_over_region(pieces, layer, ox, oy, right);
+    EXPECT_EQ(count, whole_count) << "case " << k;
+    EXPECT_TRUE(pieces.pixels() == whole.pixels()) << "case " << k;
+    Image untouched = before;
+    EXPECT_EQ(composite_over_region(untouched, layer, ox, oy,
+                                    ConvexPolygon::rectangle(100.0, 100.0, 120.0, 120.0)),
+              0);
+    EXPECT_TRUE(untouched.pixels() == before.pixels());
+  }
+}
+
 TEST(Composite, EmptyLayersAndFramesAndFarOffsetsChangeNothing) {
   const Layer layer = make_layer(Image(4, 4, Pixel{9, 9, 9, 9}));
   Image frame(5, 5, Pixel{1, 1, 1, 1});
