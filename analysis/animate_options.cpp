@@ -3,11 +3,14 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
 
 #include "analysis/image_io.h"
+#include "analysis/scene_file.h"
+#include "analysis/viewer_script_file.h"
 
 namespace oflab {
 
@@ -85,6 +88,30 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
     }
   };
   return out;
+}
+
+void write_scene_outputs(const std::string& dir, const SceneRun& run,
+                         const nlohmann::json& summary) {
+  std::ofstream csv(fs::path(dir) / "frames.csv");
+  write_scene_frame_csv(csv, run);
+  std::ofstream json(fs::path(dir) / "summary.json");
+  json << summary.dump(2) << "\n";
+  if (!csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");
+}
+
+int report_scene_input_errors(const std::function<int()>& body, std::ostream& err) {
+  try {
+    return body();
+  } catch (const SceneError& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+  } catch (const ViewerScriptError& e) {
+    err << "oflab-cli animate: --script: " << e.what() << "\n";
+  } catch (const ImageFileError& e) {
+    err << "oflab-cli animate: " << e.what() << "\n";
+  } catch (const std::invalid_argument& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+  }
+  return 2;
 }
 
 }  // namespace oflab

@@ -4,9 +4,11 @@
 
 #include <functional>
 #include <iosfwd>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "analysis/cli_args.h"
+#include "analysis/scene_run.h"
 #include "core/engine.h"
 #include "core/image.h"
 
@@ -27,10 +29,23 @@ void prepare_out_dir(const std::string& dir, bool force);
 // Throws UsageError naming the option. `err` must outlive the returned callbacks.
 struct RunOutput {
   int max_frames = -1;
-  std::string dir;  // empty without --out
+  std::string dir;                                  // empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
   std::function<void(int, int)> progress;
 };
 RunOutput read_run_output(const CliArgs& args, std::ostream& err);
+
+// The scene forms of `oflab-cli animate` (analysis/animate_scene.cpp,
+// analysis/animate_scene_shifting.cpp).
+//
+// Writes DIR/frames.csv (one row per frame of `run`) and DIR/summary.json (`summary`).
+// Throws UsageError naming --out when either cannot be written.
+void write_scene_outputs(const std::string& dir, const SceneRun& run,
+                         const nlohmann::json& summary);
+
+// Runs `body`, the whole of a scene form, and turns the errors of reading its inputs (the
+// scene, the viewer script, image files, a scene the core rejects) into a message on `err`
+// naming the option, returning exit status 2. Other exceptions pass through.
+int report_scene_input_errors(const std::function<int()>& body, std::ostream& err);
 
 }  // namespace oflab

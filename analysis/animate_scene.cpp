@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -135,13 +134,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["mode"] = engine_mode_name(options.settings.engine.mode);
   j["thresholds"] = options.settings.engine.thresholds;
   j["skip_hidden"] = options.settings.skip_hidden;
-  if (write_out) {
-    std::ofstream csv(fs::path(dir) / "frames.csv");
-    write_scene_frame_csv(csv, result);
-    std::ofstream summary(fs::path(dir) / "summary.json");
-    summary << j.dump(2) << "\n";
-    if (!csv || !summary) throw UsageError("--out: cannot write into '" + dir + "'");
-  }
+  if (write_out) write_scene_outputs(dir, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
@@ -154,19 +147,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 int animate_scene(const CliArgs& a, std::ostream& out, std::ostream& err) {
   try {
-    return run(a, out, err);
-  } catch (const SceneError& e) {
-    err << "oflab-cli animate: --scene: " << e.what() << "\n";
-    return 2;
-  } catch (const ViewerScriptError& e) {
-    err << "oflab-cli animate: --script: " << e.what() << "\n";
-    return 2;
-  } catch (const ImageFileError& e) {
-    err << "oflab-cli animate: " << e.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    err << "oflab-cli animate: --scene: " << e.what() << "\n";
-    return 2;
+    return report_scene_input_errors([&] { return run(a, out, err); }, err);
   } catch (const UsageError&) {
     throw;
   } catch (const std::runtime_error& e) {

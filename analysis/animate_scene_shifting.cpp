@@ -2,8 +2,6 @@
 #include "analysis/animate_scene_shifting.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -17,8 +15,6 @@
 
 namespace oflab {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Options of the engine's scene modes that scene shifting has no use for.
 constexpr const char* kEngineOnlyOptions[] = {
@@ -125,13 +121,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
                          {"shifted_layers", result.shifted_layers},
                          {"turning_frames", result.turning_frames},
                          {"turning_frames_all_rebuilt", result.turning_frames_all_rebuilt}};
-  if (write_out) {
-    std::ofstream csv(fs::path(dir) / "frames.csv");
-    write_scene_frame_csv(csv, result.scene_run);
-    std::ofstream summary(fs::path(dir) / "summary.json");
-    summary << j.dump(2) << "\n";
-    if (!csv || !summary) throw UsageError("--out: cannot write into '" + dir + "'");
-  }
+  if (write_out) write_scene_outputs(dir, result.scene_run, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
@@ -143,21 +133,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 int animate_scene_shifting(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  try {
-    return run(a, out, err);
-  } catch (const SceneError& e) {
-    err << "oflab-cli animate: --scene: " << e.what() << "\n";
-    return 2;
-  } catch (const ViewerScriptError& e) {
-    err << "oflab-cli animate: --script: " << e.what() << "\n";
-    return 2;
-  } catch (const ImageFileError& e) {
-    err << "oflab-cli animate: " << e.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    err << "oflab-cli animate: --scene: " << e.what() << "\n";
-    return 2;
-  }
+  return report_scene_input_errors([&] { return run(a, out, err); }, err);
 }
 
 }  // namespace oflab
