@@ -131,6 +131,7 @@ void draw_current(QPainter& p, const ChartFrame& f, int frame, const QColor& tex
 class AnalysisView::Charts : public QWidget {
  public:
   explicit Charts(AnalysisView* view) : QWidget(view), view_(view) {
+    setObjectName(QStringLiteral("analysis_charts"));
     setAttribute(Qt::WA_OpaquePaintEvent);
     setMinimumSize(400, 300);
   }

@@ -44,12 +44,18 @@ bool check_files(const Session& s, QImage* texture, std::optional<MotionScript>*
   return true;
 }
 
-// Runs `write(frame, image)` over every frame of the animation source, then goes back.
-bool for_each_frame(MainWindow* window, const std::function<bool(int, const QImage&)>& write) {
+// Runs `write(frame, image)` over every frame of the animation source, then goes back to
+// the frame shown before. False when there is no source (with *error set) or when `write`
+// returns false (which sets *error itself).
+bool for_each_frame(MainWindow* window, QString* error,
+                    const std::function<bool(int, const QImage&)>& write) {
   AnimationView* view = window->animation_view();
   const int saved = window->model()->frame();
   AnimationSession* session = view->session();
-  if (!session) return false;
+  if (!session) {
+    *error = QStringLiteral("the animation view has nothing to play");
+    return false;
+  }
   const int frames = session->frame_count();
   bool ok = true;
   for (int k = 0; k < frames && ok; ++k) {
@@ -119,8 +125,9 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
     *error = QStringLiteral("%1: cannot create the directory").arg(directory);
     return false;
   }
-  return for_each_frame(window, [&](int k, const QImage& image) {
-    const QString path = QDir(directory).filePath(QStringLiteral("frame-%1.png").arg(k, 4, 10, QChar('0')));
+  return for_each_frame(window, error, [&](int k, const QImage& image) {
+    const QString path =
+        QDir(directory).filePath(QStringLiteral("frame-%1.png").arg(k, 4, 10, QChar('0')));
     if (!overwrite && QFileInfo::exists(path)) {
       *error = QStringLiteral("%1 exists; not overwritten").arg(path);
       return false;
@@ -144,7 +151,7 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
   writer->SetRate(30);
   writer->SetInputData(data);
   bool started = false;
-  const bool ok = for_each_frame(window, [&](int, const QImage& frame) {
+  const bool ok = for_each_frame(window, error, [&](int, const QImage& frame) {
     // Theora needs even sizes; VTK's rows run bottom to top.
     const QImage rgb = frame.convertToFormat(QImage::Format_RGB888)
                            .copy(0, 0, frame.width() & ~1, frame.height() & ~1);
@@ -159,21 +166,25 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
     if (!started) writer->Start();
     started = true;
     writer->Write();
-    return writer->GetError() == 0;
+    if (writer->GetError() == 0) return true;
+    *error = QStringLiteral("%1: the video could not be written").arg(path);
+    return false;
   });
   if (started) writer->End();
-  if (!ok || !QFileInfo::exists(path)) {
+  if (ok && !QFileInfo::exists(path)) {
     *error = QStringLiteral("%1: the video could not be written").arg(path);
     return false;
   }
+  if (!ok) return false;
   return true;
 }
 
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error) {
   AnimationSession* session = window->animation_view()->session();
   if (!session || session->source().is_scene()) {
-    *error = QStringLiteral("the per-frame CSV is for a single plane (use oflab-cli animate "
-                            "--scene for scenes)");
+    *error = QStringLiteral(
+        "the per-frame CSV is for a single plane (use oflab-cli animate "
+        "--scene for scenes)");
     return false;
   }
   if (!overwrite && QFileInfo::exists(path)) {

@@ -8,12 +8,13 @@
 // choices at pixel-centre ties differ between the two rasterisers, which on the
 // high-contrast butterfly costs a few dB, while a wrong camera, mirrored texture or shifted
 // plane scores far below (a one-pixel shift of the whole frame scores under 14 dB).
+#include "gui/animation_view.h"
+
 #include <QTemporaryDir>
 #include <fstream>
 
 #include "gui/analysis_view.h"
 #include "gui/animation_session.h"
-#include "gui/animation_view.h"
 #include "gui/frame_images.h"
 #include "gui/scene_model.h"
 #include "image_checks.h"
@@ -75,6 +76,26 @@ TEST_F(AnimationViewTest, AnalysisViewRendersCharts) {
   window().play_frames(12);
   EXPECT_GT(distinct_colours(window().analysis_view()->render_image()), 10);
   EXPECT_EQ(window().analysis_view()->last_frame(), 12);
+}
+
+// Clicking a chart jumps to the frame under the pointer; a click in the margin does not.
+TEST_F(AnimationViewTest, ClickingAChartJumpsToThatFrame) {
+  window().show_view("analysis");
+  window().play_frames(12);
+  AnalysisView* analysis = window().analysis_view();
+  auto* charts = analysis->findChild<QWidget*>(QStringLiteral("analysis_charts"));
+  ASSERT_NE(charts, nullptr);
+  ASSERT_EQ(analysis->first_frame(), 0);
+  ASSERT_EQ(analysis->last_frame(), 12);
+  const QPoint margin(2, charts->height() / 2);
+  QTest::mouseClick(charts, Qt::LeftButton, Qt::NoModifier, margin);
+  EXPECT_EQ(window().model()->frame(), 12);
+  const QPoint middle(charts->width() / 2, charts->height() / 2);
+  const int expected = analysis->frame_at(middle.x());
+  ASSERT_GT(expected, 2);
+  ASSERT_LT(expected, 10);
+  QTest::mouseClick(charts, Qt::LeftButton, Qt::NoModifier, middle);
+  EXPECT_EQ(window().model()->frame(), expected);
 }
 
 TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
