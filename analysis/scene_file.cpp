@@ -219,25 +219,10 @@ json scene_to_json(const Scene& scene, const std::vector<std::string>& texture_f
   return root;
 }
 
-std::vector<std::string> shipped_scene_names() {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(fs::path(datasets_dir()) / "scenes", ec)) {
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+std::vector<std::string> shipped_scene_names() { return shipped_names("scenes"); }
 
 std::string resolve_scene_path(const std::string& name_or_file) {
-  std::error_code ec;
-  if (fs::is_regular_file(name_or_file, ec)) return name_or_file;
-  const fs::path shipped = fs::path(datasets_dir()) / "scenes" / (name_or_file + ".json");
-  if (fs::is_regular_file(shipped, ec)) return shipped.string();
-  std::string names;
-  for (const std::string& n : shipped_scene_names()) names += (names.empty() ? "" : ", ") + n;
-  throw std::runtime_error("'" + name_or_file + "' is neither a file nor a shipped scene (" +
-                           (names.empty() ? "none found in " + datasets_dir() : names) + ")");
+  return resolve_shipped_path(name_or_file, "scenes", "scene");
 }
 
 std::string tile_texture_path() {

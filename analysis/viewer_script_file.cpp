@@ -123,28 +123,10 @@ ViewerScript read_viewer_script_file(const std::string& path) {
   return parse_viewer_script(text.str(), path);
 }
 
-std::vector<std::string> shipped_viewer_script_names() {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(fs::path(datasets_dir()) / "viewer-scripts", ec)) {
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+std::vector<std::string> shipped_viewer_script_names() { return shipped_names("viewer-scripts"); }
 
 std::string resolve_viewer_script_path(const std::string& name_or_file) {
-  std::error_code ec;
-  if (fs::is_regular_file(name_or_file, ec)) return name_or_file;
-  const fs::path shipped = fs::path(datasets_dir()) / "viewer-scripts" / (name_or_file + ".json");
-  if (fs::is_regular_file(shipped, ec)) return shipped.string();
-  std::string names;
-  for (const std::string& n : shipped_viewer_script_names()) {
-    names += (names.empty() ? "" : ", ") + n;
-  }
-  throw std::runtime_error("'" + name_or_file +
-                           "' is neither a file nor a shipped viewer script (" +
-                           (names.empty() ? "none found in " + datasets_dir() : names) + ")");
+  return resolve_shipped_path(name_or_file, "viewer-scripts", "viewer script");
 }
 
 }  // namespace oflab
