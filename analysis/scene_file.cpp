@@ -3,58 +3,21 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "analysis/datasets.h"
 #include "analysis/image_io.h"
+#include "analysis/json_fields.h"
 
 namespace oflab {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 constexpr std::size_t kMaxPolygons = 100000;
-constexpr double kMaxCoordinate = 1e6;
 
-// Error context: "file: polygon 3 ('a-top'): field 'normal'".
-struct Where {
-  std::string origin;
-  std::string part;
-
-  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
-    std::string text = origin + ": ";
-    if (!part.empty()) text += part + ": ";
-    if (!field.empty()) text += "field '" + field + "': ";
-    throw SceneError(text + message);
-  }
-};
-
-double number(const json& j, const Where& w, const std::string& field) {
-  if (!j.is_number()) w.fail(field, "must be a number");
-  const double v = j.get<double>();
-  if (!std::isfinite(v) || std::abs(v) > kMaxCoordinate) {
-    w.fail(field, "must be a finite number of magnitude at most 1e6");
-  }
-  return v;
-}
-
-Vec3 vec3(const json& j, const Where& w, const std::string& field) {
-  if (!j.is_array() || j.size() != 3) w.fail(field, "must be a list of 3 numbers");
-  return Vec3(number(j[0], w, field), number(j[1], w, field), number(j[2], w, field));
-}
-
-Vec2 vec2(const json& j, const Where& w, const std::string& field) {
-  if (!j.is_array() || j.size() != 2) w.fail(field, "must be a list of 2 numbers");
-  return Vec2(number(j[0], w, field), number(j[1], w, field));
-}
-
-const json& member(const json& obj, const Where& w, const std::string& field) {
-  if (!obj.contains(field)) w.fail(field, "is missing");
-  return obj.at(field);
-}
+using namespace json_fields;
+using Where = json_fields::Place<SceneError>;
 
 std::string text(const json& obj, const Where& w, const std::string& field) {
   const json& j = member(obj, w, field);
@@ -100,10 +63,10 @@ int texture_index(const json& obj, const Where& w, const Scene& scene,
 
 ScenePolygon read_rectangle(const json& obj, const Where& w) {
   ScenePolygon p;
-  p.centre = vec3(member(obj, w, "centre"), w, "centre");
-  const Vec3 normal = vec3(member(obj, w, "normal"), w, "normal");
-  const Vec3 up = vec3(member(obj, w, "up"), w, "up");
-  p.size = vec2(member(obj, w, "size"), w, "size");
+  p.centre = vec3(obj, w, "centre");
+  const Vec3 normal = vec3(obj, w, "normal");
+  const Vec3 up = vec3(obj, w, "up");
+  p.size = vec2(obj, w, "size");
   if (glm::length(normal) < 1e-12) w.fail("normal", "must not be zero");
   p.front = glm::normalize(normal);
   const Vec3 in_plane = up - glm::dot(up, p.front) * p.front;
@@ -117,7 +80,7 @@ ScenePolygon read_rectangle(const json& obj, const Where& w) {
     if (!outline.is_array() || outline.size() < 3) {
       w.fail("outline", "must be a list of at least 3 [u, v] points");
     }
-    for (const json& uv : outline) p.outline.push_back(vec2(uv, w, "outline"));
+    for (const json& uv : outline) p.outline.push_back(vec2_value(uv, w, "outline"));
   }
   return p;
 }
@@ -127,8 +90,8 @@ ScenePolygon read_vertices(const json& obj, const Where& w) {
   if (!list.is_array() || list.size() < 3)
     w.fail("vertices", "must be a list of at least 3 points");
   std::vector<Vec3> vertices;
-  for (const json& v : list) vertices.push_back(vec3(v, w, "vertices"));
-  const Vec3 up = obj.contains("up") ? vec3(obj.at("up"), w, "up") : Vec3(0.0);
+  for (const json& v : list) vertices.push_back(vec3_value(v, w, "vertices"));
+  const Vec3 up = obj.contains("up") ? vec3(obj, w, "up") : Vec3(0.0);
   try {
     return polygon_from_vertices("", vertices, up, 0);
   } catch (const std::invalid_argument& e) {
@@ -141,13 +104,7 @@ ScenePolygon read_vertices(const json& obj, const Where& w) {
 Scene parse_scene(const std::string& text_in, const std::string& origin,
                   const std::string& base_dir) {
   const Where top{origin, ""};
-  json root;
-  try {
-    root = json::parse(text_in);
-  } catch (const json::parse_error& e) {
-    top.fail("", std::string("not valid JSON (") + e.what() + ")");
-  }
-  if (!root.is_object()) top.fail("", "must be a JSON object");
+  const json root = parse_object(text_in, top);
   if (root.contains("format") && root.at("format") != "oflab-scene") {
     top.fail("format", "must be \"oflab-scene\"");
   }
@@ -182,11 +139,7 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
 }
 
 Scene read_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), path, fs::path(path).parent_path().string());
+  return parse_scene(read_file_text<SceneError>(path), path, fs::path(path).parent_path().string());
 }
 
 json scene_to_json(const Scene& scene, const std::vector<std::string>& texture_files) {

@@ -1,58 +1,15 @@
 #include "analysis/script_file.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+
+#include "analysis/json_fields.h"
 
 namespace oflab {
 namespace {
 
-using nlohmann::json;
-
-// Error context: "file: frame 3: field 'normal'".
-struct Where {
-  std::string origin;
-  std::string part;  // "", "frame 3", "segment 1"
-
-  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
-    std::string text = origin + ": ";
-    if (!part.empty()) text += part + ": ";
-    if (!field.empty()) text += "field '" + field + "': ";
-    throw ScriptError(text + message);
-  }
-};
-
-double number(const json& j, const Where& w, const std::string& field) {
-  if (!j.is_number()) w.fail(field, "must be a number");
-  const double v = j.get<double>();
-  if (!std::isfinite(v)) w.fail(field, "must be finite");
-  return v;
-}
-
-const json& member(const json& obj, const Where& w, const std::string& field) {
-  if (!obj.contains(field)) w.fail(field, "is missing");
-  return obj.at(field);
-}
-
-Vec3 vec3(const json& obj, const Where& w, const std::string& field) {
-  const json& j = member(obj, w, field);
-  if (!j.is_array() || j.size() != 3) w.fail(field, "must be a list of 3 numbers");
-  return Vec3(number(j[0], w, field), number(j[1], w, field), number(j[2], w, field));
-}
-
-Vec2 vec2(const json& obj, const Where& w, const std::string& field) {
-  const json& j = member(obj, w, field);
-  if (!j.is_array() || j.size() != 2) w.fail(field, "must be a list of 2 numbers");
-  return Vec2(number(j[0], w, field), number(j[1], w, field));
-}
-
-int positive_integer(const json& obj, const Where& w, const std::string& field) {
-  const double v = number(member(obj, w, field), w, field);
-  if (v != std::floor(v) || v < 1 || v > 1e6) w.fail(field, "must be a whole number from 1 to 1000000");
-  return static_cast<int>(v);
-}
+using namespace json_fields;
+using Where = json_fields::Place<ScriptError>;
 
 void check_pose(const PlanePose& p, const Where& w) {
   if (glm::length(p.normal) < 1e-12) w.fail("normal", "must not be zero");
@@ -60,19 +17,6 @@ void check_pose(const PlanePose& p, const Where& w) {
     w.fail("up", "must be non-zero and not parallel to the normal");
   }
   if (!(p.point.z > 0.0)) w.fail("point", "plane centre is behind the camera (Z must be positive)");
-}
-
-Camera read_camera(const json& root, const Where& w) {
-  const json& c = member(root, w, "camera");
-  if (!c.is_object()) w.fail("camera", "must be an object");
-  const double f = number(member(c, w, "focal_px"), w, "camera.focal_px");
-  const Vec2 size = vec2(c, w, "image");
-  if (f <= 0) w.fail("camera.focal_px", "must be positive");
-  if (size.x < 1 || size.y < 1 || size.x > 8192 || size.y > 8192 || size.x != std::floor(size.x) ||
-      size.y != std::floor(size.y)) {
-    w.fail("camera.image", "must be two whole numbers from 1 to 8192");
-  }
-  return make_camera(f, static_cast<int>(size.x), static_cast<int>(size.y));
 }
 
 PlanePose read_pose(const json& obj, const Where& w, const PlanePose& base) {
@@ -96,13 +40,7 @@ RigidMotion read_motion(const json& obj, const Where& w, MotionModel model) {
 
 MotionScript parse_script(const std::string& text, const std::string& origin) {
   const Where top{origin, ""};
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    top.fail("", std::string("not valid JSON (") + e.what() + ")");
-  }
-  if (!root.is_object()) top.fail("", "must be a JSON object");
+  const json root = parse_object(text, top);
   MotionScript s;
   s.name = root.value("name", std::string());
   s.description = root.value("description", std::string());
@@ -152,11 +90,7 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
 }
 
 MotionScript read_script_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_script(text.str(), path);
+  return parse_script(read_file_text<ScriptError>(path), path);
 }
 
 }  // namespace oflab
