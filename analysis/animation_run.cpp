@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
-#include <nlohmann/json.hpp>
-
+#include "analysis/statistics.h"
 #include "core/composite.h"
 #include "core/image_compare.h"
 
@@ -14,13 +14,6 @@ namespace oflab {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 int frame_count(const MotionScript& script, const AnimationOptions& options) {
   const int all = static_cast<int>(script.frames.size());
@@ -33,10 +26,10 @@ void play(const MotionScript& script, const Layer& texture, const EngineSettings
           int frames, Each each) {
   PlaneAnimator animator(script.camera, texture, settings);
   for (int i = 0; i < frames; ++i) {
-    const FrameReport r = i == 0 ? animator.start(script.frames[0].pose)
-                                 : animator.advance(script.frames[i - 1].pose,
-                                                    script.frames[i - 1].motion,
-                                                    script.frames[i].pose);
+    const FrameReport r =
+        i == 0 ? animator.start(script.frames[0].pose)
+               : animator.advance(script.frames[i - 1].pose, script.frames[i - 1].motion,
+                                  script.frames[i].pose);
     each(i, r, animator);
   }
 }
@@ -90,7 +83,7 @@ AnimationRun run_animation(const MotionScript& script, const Layer& texture,
     }
   }
   s.mean_psnr_db = psnr_count ? psnr_sum / psnr_count : kNaN;
-  s.median_frame_ms = median(times);
+  s.median_frame_ms = median_of(times);
   if (options.run_baseline) {
     EngineSettings baseline = options.settings;
     baseline.mode = EngineMode::kRerender;
@@ -100,11 +93,11 @@ AnimationRun run_animation(const MotionScript& script, const Layer& texture,
       s.baseline_time_ms += r.time_ms;
       s.baseline_pixels += r.pixels_written;
     });
-    s.baseline_median_frame_ms = median(baseline_times);
+    s.baseline_median_frame_ms = median_of(baseline_times);
     s.time_saved = s.baseline_time_ms > 0 ? 1.0 - s.time_ms / s.baseline_time_ms : 0.0;
-    s.work_saved = s.baseline_pixels > 0
-                       ? 1.0 - static_cast<double>(s.pixels) / static_cast<double>(s.baseline_pixels)
-                       : 0.0;
+    s.work_saved = s.baseline_pixels > 0 ? 1.0 - static_cast<double>(s.pixels) /
+                                                     static_cast<double>(s.baseline_pixels)
+                                         : 0.0;
   }
   return run;
 }
@@ -118,16 +111,18 @@ void write_frame_csv(std::ostream& out, const AnimationRun& run) {
     out << r.frame << ',' << level_name(r.level) << ',' << (r.visible ? 1 : 0);
     for (double f : r.flow) out << ',' << f;
     for (double e : r.accumulated) out << ',' << e;
-    out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ',' << r.affine_view_error_px
-        << ',' << run.psnr_db[i] << ','
-        << r.time_ms << ',' << r.pixels_written << ",\"";
+    out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ','
+        << r.affine_view_error_px << ',' << run.psnr_db[i] << ',' << r.time_ms << ','
+        << r.pixels_written << ",\"";
     for (char c : r.note) out << (c == '"' ? '\'' : c);
     out << "\"\n";
   }
 }
 
 nlohmann::json summary_json(const AnimationSummary& s) {
-  auto finite_or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  auto finite_or_null = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+  };
   nlohmann::json levels;
   for (int l = 0; l < kLevelCount; ++l) levels[level_name(static_cast<Level>(l))] = s.levels[l];
   return {{"frames", s.frames},

@@ -17,16 +17,6 @@ const char* level_word(int level) {
 
 }  // namespace
 
-double median_of(std::vector<double> values) {
-  values.erase(
-      std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
-      values.end());
-  if (values.empty()) return kNaN;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 std::vector<MeasuredRun> measure_interleaved(
     const MotionScript& script, const Layer& texture, const std::vector<EngineSettings>& settings,
     const RunSpec& spec, const std::function<void(const std::string&)>& progress) {

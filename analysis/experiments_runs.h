@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/animation_run.h"
+#include "analysis/statistics.h"
 
 namespace oflab {
 
@@ -56,9 +57,6 @@ std::array<double, kTermCount + 1> median_flow_px(const MeasuredRun& run);
 
 // Re-renders after frame 0 whose note names the sampling limit.
 int sampling_limit_rerenders(const MeasuredRun& run);
-
-// Median of the finite values; NaN when there is none.
-double median_of(std::vector<double> values);
 
 // One clause describing how a level mix differs from a reference mix, in percentage
 // points: "level mix within 5 points" or e.g. "more translate (+24), fewer none (-26)"

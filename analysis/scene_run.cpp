@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "analysis/statistics.h"
 #include "analysis/vtk_scene_renderer.h"
 #include "core/image_compare.h"
 
@@ -14,20 +15,6 @@ namespace oflab {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return kNaN;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-SceneFrameReport step(SceneAnimator& animator, const ViewerScript& script, int i) {
-  return i == 0 ? animator.start(script.frames[0].pose)
-                : animator.advance(script.frames[i - 1].pose, script.frames[i - 1].motion,
-                                   script.frames[i].pose);
-}
 
 void summarise(SceneRun& run) {
   SceneRunSummary& s = run.summary;
@@ -54,9 +41,9 @@ void summarise(SceneRun& run) {
       ++psnr_count;
     }
   }
-  s.median_frame_ms = median(times);
-  s.baseline_median_frame_ms = median(run.baseline_ms);
-  s.conventional_median_frame_ms = median(run.conventional_ms);
+  s.median_frame_ms = median_of(times);
+  s.baseline_median_frame_ms = median_of(run.baseline_ms);
+  s.conventional_median_frame_ms = median_of(run.conventional_ms);
   s.mean_psnr_db = psnr_count ? psnr_sum / psnr_count : kNaN;
   s.time_saved = s.baseline_time_ms > 0.0 ? 1.0 - s.time_ms / s.baseline_time_ms : 0.0;
   s.work_saved = s.baseline_pixels > 0
@@ -102,10 +89,10 @@ SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
   double iou_sum = 0.0;
   // The three renderers take turns frame by frame, so a busy machine slows them alike.
   for (int i = 0; i < frames; ++i) {
-    run.reports.push_back(step(engine, script, i));
+    run.reports.push_back(play_frame(engine, script, i));
     double baseline_ms = kNaN, conventional_ms = kNaN, psnr = kNaN;
     if (exact) {
-      const SceneFrameReport r = step(*exact, script, i);
+      const SceneFrameReport r = play_frame(*exact, script, i);
       baseline_ms = r.time_ms;
       run.summary.baseline_pixels += r.pixels_written;
       psnr = psnr_db(engine.frame(), exact->frame());

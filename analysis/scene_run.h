@@ -70,6 +70,16 @@ SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
 // One CSV row per frame (header first); columns documented in manual/scenes.md.
 void write_scene_frame_csv(std::ostream& out, const SceneRun& run);
 
+// Frame `i` of `script` on a scene renderer (SceneAnimator, SceneShiftingRenderer): the
+// start at frame 0, otherwise the step from frame i - 1 with that frame's motion.
+// Precondition: 0 <= i < script.frames.size(), frames played in order.
+template <class Renderer>
+auto play_frame(Renderer& renderer, const ViewerScript& script, int i) {
+  return i == 0 ? renderer.start(script.frames[0].pose)
+                : renderer.advance(script.frames[i - 1].pose, script.frames[i - 1].motion,
+                                   script.frames[i].pose);
+}
+
 // The summary as JSON: polygon_levels {none, translate, affine, perspective, rerender},
 // culled, hidden, median_frame_ms {engine, rerender, conventional} and the rest.
 nlohmann::json scene_summary_json(const SceneRunSummary& summary);

@@ -5,26 +5,13 @@
 #include <limits>
 #include <memory>
 
+#include "analysis/statistics.h"
 #include "core/image_compare.h"
 
 namespace oflab {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return kNaN;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-SceneShiftingFrameReport step(SceneShiftingRenderer& renderer, const ViewerScript& script, int i) {
-  return i == 0 ? renderer.start(script.frames[0].pose)
-                : renderer.advance(script.frames[i - 1].pose, script.frames[i - 1].motion,
-                                   script.frames[i].pose);
-}
 
 Level layer_level(LayerUpdate update) {
   switch (update) {
@@ -82,8 +69,8 @@ void summarise(SceneRun& run) {
       ++psnr_count;
     }
   }
-  s.median_frame_ms = median(times);
-  s.baseline_median_frame_ms = median(run.baseline_ms);
+  s.median_frame_ms = median_of(times);
+  s.baseline_median_frame_ms = median_of(run.baseline_ms);
   s.conventional_median_frame_ms = kNaN;
   s.conventional_iou = kNaN;
   s.mean_psnr_db = psnr_count ? psnr_sum / psnr_count : kNaN;
@@ -123,7 +110,7 @@ SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& scri
   SceneRun& sr = run.scene_run;
   // The two renderers take turns frame by frame, so a busy machine slows them alike.
   for (int i = 0; i < frames; ++i) {
-    const SceneShiftingFrameReport r = step(renderer, script, i);
+    const SceneShiftingFrameReport r = play_frame(renderer, script, i);
     if (i == 0) run.slices = renderer.slices();
     if (i > 0) {
       run.rebuilt_layers += r.rebuilt;
@@ -137,7 +124,7 @@ SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& scri
     sr.reports.push_back(as_scene_frame(r, renderer, polygons));
     double baseline_ms = kNaN, psnr = kNaN;
     if (exact) {
-      const SceneShiftingFrameReport b = step(*exact, script, i);
+      const SceneShiftingFrameReport b = play_frame(*exact, script, i);
       baseline_ms = b.time_ms;
       sr.summary.baseline_pixels += b.pixels_written;
       psnr = psnr_db(renderer.frame(), exact->frame());
