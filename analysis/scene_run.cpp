@@ -16,7 +16,15 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-void summarise(SceneRun& run) {
+}  // namespace
+
+long SceneRunSummary::drawn() const {
+  long n = 0;
+  for (long c : polygon_levels) n += c;
+  return n;
+}
+
+void summarise_scene_run(SceneRun& run) {
   SceneRunSummary& s = run.summary;
   std::vector<double> times;
   double psnr_sum = 0.0;
@@ -49,14 +57,6 @@ void summarise(SceneRun& run) {
   s.work_saved = s.baseline_pixels > 0
                      ? 1.0 - static_cast<double>(s.pixels) / static_cast<double>(s.baseline_pixels)
                      : 0.0;
-}
-
-}  // namespace
-
-long SceneRunSummary::drawn() const {
-  long n = 0;
-  for (long c : polygon_levels) n += c;
-  return n;
 }
 
 double alpha_iou(const Image& a, const Image& b) {
@@ -112,7 +112,7 @@ SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
   s.polygons = static_cast<int>(scene.polygons.size());
   s.bsp = engine.bsp().stats();
   s.conventional_iou = conventional && exact && frames > 0 ? iou_sum / frames : kNaN;
-  summarise(run);
+  summarise_scene_run(run);
   return run;
 }
 

@@ -67,6 +67,11 @@ struct SceneRun {
 SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
                              const SceneRunOptions& options);
 
+// Fills run.summary (except conventional_iou) from the per-frame reports and timings.
+// Precondition: baseline_ms, conventional_ms and psnr_db hold one value per report (NaN
+// where not measured); the summary starts zeroed.
+void summarise_scene_run(SceneRun& run);
+
 // One CSV row per frame (header first); columns documented in manual/scenes.md.
 void write_scene_frame_csv(std::ostream& out, const SceneRun& run);
 

@@ -50,36 +50,6 @@ SceneFrameReport as_scene_frame(const SceneShiftingFrameReport& r,
   return s;
 }
 
-void summarise(SceneRun& run) {
-  SceneRunSummary& s = run.summary;
-  std::vector<double> times;
-  double psnr_sum = 0.0;
-  int psnr_count = 0;
-  for (std::size_t i = 0; i < run.reports.size(); ++i) {
-    const SceneFrameReport& r = run.reports[i];
-    for (int l = 0; l < kLevelCount; ++l) s.polygon_levels[l] += r.levels[l];
-    s.outside_frustum += r.outside_frustum;
-    s.pixels += r.pixels_written;
-    s.time_ms += r.time_ms;
-    s.max_measured_error_px = std::max(s.max_measured_error_px, r.max_measured_error_px);
-    times.push_back(r.time_ms);
-    if (std::isfinite(run.baseline_ms[i])) s.baseline_time_ms += run.baseline_ms[i];
-    if (std::isfinite(run.psnr_db[i])) {
-      psnr_sum += run.psnr_db[i];
-      ++psnr_count;
-    }
-  }
-  s.median_frame_ms = median_of(times);
-  s.baseline_median_frame_ms = median_of(run.baseline_ms);
-  s.conventional_median_frame_ms = kNaN;
-  s.conventional_iou = kNaN;
-  s.mean_psnr_db = psnr_count ? psnr_sum / psnr_count : kNaN;
-  s.time_saved = s.baseline_time_ms > 0.0 ? 1.0 - s.time_ms / s.baseline_time_ms : 0.0;
-  s.work_saved = s.baseline_pixels > 0
-                     ? 1.0 - static_cast<double>(s.pixels) / static_cast<double>(s.baseline_pixels)
-                     : 0.0;
-}
-
 }  // namespace
 
 double script_design_speed(const ViewerScript& script) {
@@ -137,7 +107,8 @@ SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& scri
   }
   sr.summary.frames = frames;
   sr.summary.polygons = polygons;
-  summarise(sr);
+  summarise_scene_run(sr);
+  sr.summary.conventional_iou = kNaN;
   return run;
 }
 
