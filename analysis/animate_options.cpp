@@ -9,12 +9,23 @@
 #include <sstream>
 
 #include "analysis/image_io.h"
+#include "analysis/obj_scene.h"
 #include "analysis/scene_file.h"
 #include "analysis/viewer_script_file.h"
 
 namespace oflab {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+bool is_obj_file(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
+}
+
+}  // namespace
 
 EngineSettings read_engine_settings(const CliArgs& a) {
   EngineSettings s;
@@ -112,6 +123,46 @@ int report_scene_input_errors(const std::function<int()>& body, std::ostream& er
     err << "oflab-cli animate: --scene: " << e.what() << "\n";
   }
   return 2;
+}
+
+Scene read_scene_option(const CliArgs& a) {
+  const std::string arg = a.values("--scene").at(0);
+  Image replacement;
+  if (a.has("--texture")) {
+    try {
+      replacement = read_image(a.values("--texture").at(0));
+    } catch (const ImageFileError& e) {
+      throw UsageError(std::string("--texture: ") + e.what());
+    }
+  }
+  Scene scene;
+  if (is_obj_file(arg)) {
+    Image texture = replacement;
+    if (texture.empty()) texture = read_image(tile_texture_path());
+    return read_obj_scene(arg, texture, a.has("--texture") ? "texture" : "tile");
+  }
+  std::string path;
+  try {
+    path = resolve_scene_path(arg);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+  scene = read_scene_file(path);
+  if (!replacement.empty()) {
+    for (Image& t : scene.textures) t = replacement;
+  }
+  return scene;
+}
+
+ViewerScript read_viewer_script_option(const CliArgs& a) {
+  if (!a.has("--script")) throw UsageError("--script: a viewer script is needed with --scene");
+  std::string path;
+  try {
+    path = resolve_viewer_script_path(a.values("--script").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--script: ") + e.what());
+  }
+  return read_viewer_script_file(path);
 }
 
 }  // namespace oflab

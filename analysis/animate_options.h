@@ -11,6 +11,8 @@
 #include "analysis/scene_run.h"
 #include "core/engine.h"
 #include "core/image.h"
+#include "core/scene.h"
+#include "core/viewer_script.h"
 
 namespace oflab {
 
@@ -47,5 +49,15 @@ void write_scene_outputs(const std::string& dir, const SceneRun& run,
 // scene, the viewer script, image files, a scene the core rejects) into a message on `err`
 // naming the option, returning exit status 2. Other exceptions pass through.
 int report_scene_input_errors(const std::function<int()>& body, std::ostream& err);
+
+// The scene of --scene: a shipped scene name, a scene file or a Wavefront OBJ file (with
+// the tile texture, analysis/obj_scene.h); --texture, when given, replaces every texture.
+// Throws UsageError for an unknown name or unreadable --texture, and the readers' errors
+// (SceneError, ImageFileError) for a broken file.
+Scene read_scene_option(const CliArgs& a);
+
+// The viewer script of --script (required): a shipped name or a file. Throws UsageError
+// when missing or unknown, ViewerScriptError for a broken file.
+ViewerScript read_viewer_script_option(const CliArgs& a);
 
 }  // namespace oflab

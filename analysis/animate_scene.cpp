@@ -2,7 +2,6 @@
 #include "analysis/animate_scene.h"
 
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -10,51 +9,12 @@
 
 #include "analysis/animate_options.h"
 #include "analysis/image_io.h"
-#include "analysis/obj_scene.h"
 #include "analysis/scene_file.h"
 #include "analysis/scene_run.h"
 #include "analysis/viewer_script_file.h"
 
 namespace oflab {
 namespace {
-
-namespace fs = std::filesystem;
-
-bool is_obj_file(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".obj";
-}
-
-// The scene of --scene; --texture, when given, replaces every texture of the scene.
-Scene load_scene(const CliArgs& a) {
-  const std::string arg = a.values("--scene").at(0);
-  Image replacement;
-  if (a.has("--texture")) {
-    try {
-      replacement = read_image(a.values("--texture").at(0));
-    } catch (const ImageFileError& e) {
-      throw UsageError(std::string("--texture: ") + e.what());
-    }
-  }
-  Scene scene;
-  if (is_obj_file(arg)) {
-    Image texture = replacement;
-    if (texture.empty()) texture = read_image(tile_texture_path());
-    return read_obj_scene(arg, texture, a.has("--texture") ? "texture" : "tile");
-  }
-  std::string path;
-  try {
-    path = resolve_scene_path(arg);
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--scene: ") + e.what());
-  }
-  scene = read_scene_file(path);
-  if (!replacement.empty()) {
-    for (Image& t : scene.textures) t = replacement;
-  }
-  return scene;
-}
 
 SceneSettings read_scene_settings(const CliArgs& a) {
   SceneSettings s;
@@ -109,15 +69,8 @@ void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
 }
 
 int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  if (!a.has("--script")) throw UsageError("--script: a viewer script is needed with --scene");
-  std::string script_path;
-  try {
-    script_path = resolve_viewer_script_path(a.values("--script").at(0));
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--script: ") + e.what());
-  }
-  const ViewerScript script = read_viewer_script_file(script_path);
-  const Scene scene = load_scene(a);
+  const ViewerScript script = read_viewer_script_option(a);
+  const Scene scene = read_scene_option(a);
   SceneRunOptions options;
   options.settings = read_scene_settings(a);
   options.conventional = a.has("--compare-conventional");

@@ -55,35 +55,13 @@ void print_summary(const SceneShiftingRun& run, const std::string& scene, const 
       << "frame " << s.mean_psnr_db << " dB\n";
 }
 
-Scene load_scene(const CliArgs& a) {
-  std::string path;
-  try {
-    path = resolve_scene_path(a.values("--scene").at(0));
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--scene: ") + e.what());
-  }
-  Scene scene = read_scene_file(path);
-  if (a.has("--texture")) {
-    const Image replacement = read_image(a.values("--texture").at(0));
-    for (Image& t : scene.textures) t = replacement;
-  }
-  return scene;
-}
-
 int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   for (const char* option : kEngineOnlyOptions) {
     if (a.has(option))
       throw UsageError(std::string(option) + ": not used by --mode scene-shifting");
   }
-  if (!a.has("--script")) throw UsageError("--script: a viewer script is needed with --scene");
-  std::string script_path;
-  try {
-    script_path = resolve_viewer_script_path(a.values("--script").at(0));
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--script: ") + e.what());
-  }
-  const ViewerScript script = read_viewer_script_file(script_path);
-  const Scene scene = load_scene(a);
+  const ViewerScript script = read_viewer_script_option(a);
+  const Scene scene = read_scene_option(a);
   SceneShiftingRunOptions options;
   options.settings.epsilon_px = a.number_or("--epsilon", options.settings.epsilon_px);
   if (!(options.settings.epsilon_px > 0.0) || !std::isfinite(options.settings.epsilon_px)) {
