@@ -62,18 +62,6 @@ EngineSettings read_engine_settings(const CliArgs& a) {
   return s;
 }
 
-void prepare_out_dir(const std::string& dir, bool force) {
-  std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' is not a directory");
-    if (!fs::is_empty(dir, ec) && !force) {
-      throw UsageError("--out: '" + dir + "' is not empty (add --force to overwrite its files)");
-    }
-  } else if (!fs::create_directories(dir, ec)) {
-    throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
-  }
-}
-
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   RunOutput out;
   if (a.has("--frames")) {

@@ -20,10 +20,6 @@ namespace oflab {
 // option for a bad value.
 EngineSettings read_engine_settings(const CliArgs& args);
 
-// Creates DIR, or accepts an existing empty one; a non-empty DIR needs `force`. Throws
-// UsageError naming --out.
-void prepare_out_dir(const std::string& dir, bool force);
-
 // What every form of `oflab-cli animate` does with its output options: --frames N (at most N
 // frames; -1 for all), --out DIR (created, or an existing empty one; --force for a non-empty
 // one), --frames-png (each frame as DIR/frame_NNNNN.png; needs --out) and --quiet (no

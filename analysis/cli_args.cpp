@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 
 namespace oflab {
 
@@ -77,11 +78,25 @@ Vec2 CliArgs::vec2(const std::string& name) const {
 
 Vec3 CliArgs::vec3(const std::string& name) const {
   const auto& v = values(name);
-  return Vec3(parse_number(name, v.at(0)), parse_number(name, v.at(1)), parse_number(name, v.at(2)));
+  return Vec3(parse_number(name, v.at(0)), parse_number(name, v.at(1)),
+              parse_number(name, v.at(2)));
 }
 
 std::string CliArgs::text_or(const std::string& name, const std::string& fallback) const {
   return has(name) ? values(name).at(0) : fallback;
+}
+
+void prepare_out_dir(const std::string& dir, bool force) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' is not a directory");
+    if (!fs::is_empty(dir, ec) && !force) {
+      throw UsageError("--out: '" + dir + "' is not empty (add --force to overwrite its files)");
+    }
+  } else if (!fs::create_directories(dir, ec)) {
+    throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
+  }
 }
 
 }  // namespace oflab

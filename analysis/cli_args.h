@@ -44,4 +44,8 @@ class CliArgs {
   std::map<std::string, std::vector<std::string>> values_;
 };
 
+// Creates DIR, or accepts an existing empty one; a non-empty DIR needs `force`. Throws
+// UsageError naming --out.
+void prepare_out_dir(const std::string& dir, bool force);
+
 }  // namespace oflab

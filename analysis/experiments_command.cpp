@@ -48,19 +48,6 @@ std::vector<std::string> take_only(CommandArgs& args) {
   return names;
 }
 
-// Creates DIR, or accepts an existing empty one; a non-empty DIR needs --force.
-void prepare_out_dir(const std::string& dir, bool force) {
-  std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' is not a directory");
-    if (!fs::is_empty(dir, ec) && !force) {
-      throw UsageError("--out: '" + dir + "' is not empty (add --force to overwrite its files)");
-    }
-  } else if (!fs::create_directories(dir, ec)) {
-    throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
-  }
-}
-
 std::string command_line(const CommandArgs& original) {
   std::string line = "oflab-cli experiments";
   for (const std::string& a : original) line += " " + a;

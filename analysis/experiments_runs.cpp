@@ -5,6 +5,9 @@
 #include <limits>
 #include <sstream>
 
+#include "analysis/datasets.h"
+#include "analysis/script_file.h"
+
 namespace oflab {
 namespace {
 
@@ -59,6 +62,28 @@ std::vector<MeasuredRun> measure_interleaved(
     r.summary.median_frame_ms = median_of(r.frame_ms);
   }
   return runs;
+}
+
+std::vector<ScriptRuns> measure_scripts(const std::vector<std::string>& scripts,
+                                        const Layer& texture, std::vector<EngineSettings> settings,
+                                        const RunSpec& spec,
+                                        const std::function<void(const std::string&)>& progress) {
+  EngineSettings baseline;
+  baseline.mode = EngineMode::kRerender;
+  settings.push_back(baseline);
+  std::vector<ScriptRuns> result;
+  for (const std::string& name : scripts) {
+    const MotionScript script = read_script_file(resolve_script_path(name));
+    ScriptRuns r;
+    r.script = name;
+    r.runs = measure_interleaved(script, texture, settings, spec, [&](const std::string& line) {
+      if (progress) progress(name + ": " + line);
+    });
+    r.baseline = std::move(r.runs.back());
+    r.runs.pop_back();
+    result.push_back(std::move(r));
+  }
+  return result;
 }
 
 double time_saved(const MeasuredRun& run, const MeasuredRun& baseline) {

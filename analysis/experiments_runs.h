@@ -37,6 +37,21 @@ std::vector<MeasuredRun> measure_interleaved(
     const MotionScript& script, const Layer& texture, const std::vector<EngineSettings>& settings,
     const RunSpec& spec, const std::function<void(const std::string&)>& progress);
 
+// One shipped script measured under several settings and the re-render baseline.
+struct ScriptRuns {
+  std::string script;
+  std::vector<MeasuredRun> runs;  // one per setting, in order
+  MeasuredRun baseline;           // re-render mode, default settings
+};
+
+// Measures each shipped script named in `scripts` (datasets/scripts) under `settings` and
+// the re-render baseline through measure_interleaved; `progress` lines are prefixed with
+// the script's name. Throws ScriptError or std::runtime_error for a missing script.
+std::vector<ScriptRuns> measure_scripts(const std::vector<std::string>& scripts,
+                                        const Layer& texture, std::vector<EngineSettings> settings,
+                                        const RunSpec& spec,
+                                        const std::function<void(const std::string&)>& progress);
+
 // 1 - time / baseline time, over the same frames (sums of the per-frame medians).
 double time_saved(const MeasuredRun& run, const MeasuredRun& baseline);
 // 1 - pixels written / baseline pixels written.

@@ -8,9 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "analysis/datasets.h"
 #include "analysis/published_results.h"
-#include "analysis/script_file.h"
 
 namespace oflab {
 namespace {
@@ -334,21 +332,11 @@ Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
     s.mode = m;
     settings.push_back(s);
   }
-  EngineSettings baseline;
-  baseline.mode = EngineMode::kRerender;
-  settings.push_back(baseline);
-  for (const std::string& name : experiment1_scripts()) {
-    const MotionScript script = read_script_file(resolve_script_path(name));
-    const auto script_progress = [&](const std::string& line) {
-      if (progress) progress(name + ": " + line);
-    };
-    std::vector<MeasuredRun> runs =
-        measure_interleaved(script, texture, settings, spec, script_progress);
+  for (ScriptRuns& r : measure_scripts(experiment1_scripts(), texture, settings, spec, progress)) {
     Experiment1Script s;
-    s.script = name;
-    s.baseline = std::move(runs.back());
-    runs.pop_back();
-    s.modes = std::move(runs);
+    s.script = r.script;
+    s.baseline = std::move(r.baseline);
+    s.modes = std::move(r.runs);
     result.scripts.push_back(std::move(s));
   }
   return result;

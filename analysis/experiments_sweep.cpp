@@ -2,10 +2,8 @@
 
 #include <cmath>
 
-#include "analysis/datasets.h"
 #include "analysis/experiments_single_plane.h"
 #include "analysis/published_results.h"
-#include "analysis/script_file.h"
 
 namespace oflab {
 namespace {
@@ -97,20 +95,12 @@ SweepResult run_threshold_sweep(const Layer& texture, const SweepSpec& spec,
     s.thresholds.fill(t);
     settings.push_back(s);
   }
-  EngineSettings baseline;
-  baseline.mode = EngineMode::kRerender;
-  settings.push_back(baseline);
-  for (const std::string& name : experiment1_scripts()) {
-    const MotionScript script = read_script_file(resolve_script_path(name));
-    std::vector<MeasuredRun> runs =
-        measure_interleaved(script, texture, settings, spec.run, [&](const std::string& line) {
-          if (progress) progress(name + ": " + line);
-        });
+  for (ScriptRuns& r :
+       measure_scripts(experiment1_scripts(), texture, settings, spec.run, progress)) {
     SweepScript s;
-    s.script = name;
-    s.baseline = std::move(runs.back());
-    runs.pop_back();
-    s.runs = std::move(runs);
+    s.script = r.script;
+    s.baseline = std::move(r.baseline);
+    s.runs = std::move(r.runs);
     result.scripts.push_back(std::move(s));
   }
   return result;
