@@ -4,9 +4,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "analysis/animate_options.h"
 #include "analysis/animate_scene.h"
@@ -39,8 +38,8 @@ void print_summary(const AnimationSummary& s, const std::string& script, EngineM
       << s.time_ms << " ms, re-render " << s.baseline_time_ms << " ms, same run)\n"
       << "  work saved " << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs "
       << s.baseline_pixels << ")\n"
-      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR "
-      << s.mean_psnr_db << " dB\n";
+      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR " << s.mean_psnr_db
+      << " dB\n";
   if (s.invisible_frames) out << "  " << s.invisible_frames << " frames not visible\n";
 }
 
@@ -67,13 +66,10 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   AnimationOptions options;
   options.settings = read_engine_settings(a);
   const RunOutput output = read_run_output(a, err);
-  options.max_frames = output.max_frames;
-  options.on_frame = output.on_frame;
-  options.progress = output.progress;
-  const bool write_out = !output.dir.empty();
-  const std::string& dir = output.dir;
+  output.apply_to(options);
+  const std::string& dir = output.dir;  // empty without --out
   const AnimationRun run = run_animation(script, texture, options);
-  if (write_out) {
+  if (!dir.empty()) {
     std::ofstream csv(fs::path(dir) / "frames.csv");
     write_frame_csv(csv, run);
     std::ofstream summary(fs::path(dir) / "summary.json");
@@ -98,12 +94,25 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(args, {{"--script", 1}, {"--texture", 1}, {"--mode", 1}, {"--threshold", 1},
-                           {"--thresholds", 4}, {"--delta", 1}, {"--sampling", 1},
-                           {"--frames", 1}, {"--out", 1}, {"--force", 0}, {"--frames-png", 0},
-                           {"--json", 0}, {"--quiet", 0}, {"--scene", 1},
-                           {"--compare-conventional", 0}, {"--near", 1}, {"--guard-band", 1},
-                           {"--no-skip-hidden", 0}, {"--epsilon", 1}});
+    const CliArgs a(args, {{"--script", 1},
+                           {"--texture", 1},
+                           {"--mode", 1},
+                           {"--threshold", 1},
+                           {"--thresholds", 4},
+                           {"--delta", 1},
+                           {"--sampling", 1},
+                           {"--frames", 1},
+                           {"--out", 1},
+                           {"--force", 0},
+                           {"--frames-png", 0},
+                           {"--json", 0},
+                           {"--quiet", 0},
+                           {"--scene", 1},
+                           {"--compare-conventional", 0},
+                           {"--near", 1},
+                           {"--guard-band", 1},
+                           {"--no-skip-hidden", 0},
+                           {"--epsilon", 1}});
     return animate(a, out, err);
   } catch (const UsageError& e) {
     err << "oflab-cli animate: " << e.what() << "\n";
@@ -116,6 +125,5 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
     return 2;
   }
 }
-
 
 }  // namespace oflab

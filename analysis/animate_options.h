@@ -30,6 +30,15 @@ struct RunOutput {
   std::string dir;                                  // empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
   std::function<void(int, int)> progress;
+
+  // Sets max_frames, on_frame and progress of a run's options (AnimationOptions,
+  // SceneRunOptions, SceneShiftingRunOptions).
+  template <class Options>
+  void apply_to(Options& options) const {
+    options.max_frames = max_frames;
+    options.on_frame = on_frame;
+    options.progress = progress;
+  }
 };
 RunOutput read_run_output(const CliArgs& args, std::ostream& err);
 

@@ -75,11 +75,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   options.settings = read_scene_settings(a);
   options.conventional = a.has("--compare-conventional");
   const RunOutput output = read_run_output(a, err);
-  options.max_frames = output.max_frames;
-  options.on_frame = output.on_frame;
-  options.progress = output.progress;
-  const bool write_out = !output.dir.empty();
-  const std::string& dir = output.dir;
+  output.apply_to(options);
+  const std::string& dir = output.dir;  // empty without --out
   const SceneRun result = run_scene_animation(scene, script, options);
   nlohmann::json j = scene_summary_json(result.summary);
   j["scene"] = scene.name;
@@ -87,7 +84,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["mode"] = engine_mode_name(options.settings.engine.mode);
   j["thresholds"] = options.settings.engine.thresholds;
   j["skip_hidden"] = options.settings.skip_hidden;
-  if (write_out) write_scene_outputs(dir, result, j);
+  if (!dir.empty()) write_scene_outputs(dir, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {

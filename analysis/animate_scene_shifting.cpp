@@ -74,11 +74,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
     throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
   }
   const RunOutput output = read_run_output(a, err);
-  options.max_frames = output.max_frames;
-  options.on_frame = output.on_frame;
-  options.progress = output.progress;
-  const bool write_out = !output.dir.empty();
-  const std::string& dir = output.dir;
+  output.apply_to(options);
+  const std::string& dir = output.dir;  // empty without --out
   const SceneShiftingRun result = run_scene_shifting(scene, script, options);
   const double eps = options.settings.epsilon_px;
   nlohmann::json j = scene_summary_json(result.scene_run.summary);
@@ -99,7 +96,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
                          {"shifted_layers", result.shifted_layers},
                          {"turning_frames", result.turning_frames},
                          {"turning_frames_all_rebuilt", result.turning_frames_all_rebuilt}};
-  if (write_out) write_scene_outputs(dir, result.scene_run, j);
+  if (!dir.empty()) write_scene_outputs(dir, result.scene_run, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {

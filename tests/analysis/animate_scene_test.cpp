@@ -8,22 +8,16 @@
 #include <sstream>
 
 #include "analysis/commands.h"
+#include "cli_capture.h"
 
 namespace oflab {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Cli {
-  int code;
-  std::string out, err;
-};
+using Cli = testing::CliResult;
 
-Cli cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+Cli cli(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
 
 nlohmann::json run_json(const std::vector<std::string>& args) {
   std::vector<std::string> all = {"animate"};

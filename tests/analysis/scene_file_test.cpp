@@ -18,6 +18,7 @@
 #include "analysis/obj_scene.h"
 #include "analysis/tile_texture.h"
 #include "analysis/viewer_script_file.h"
+#include "cli_capture.h"
 #include "core/scene_animator.h"
 
 namespace oflab {
@@ -25,16 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Cli {
-  int code;
-  std::string out, err;
-};
+using Cli = testing::CliResult;
 
-Cli cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+Cli cli(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
 
 fs::path temp_file(const std::string& name, const std::string& text) {
   const fs::path file = fs::temp_directory_path() / name;
