@@ -464,8 +464,12 @@ void skip_pixels(int done, Pixel*& out, int& count, double& nu, double& nv, doub
 
 template <bool kBilinear>
 void perspective_span(const SourceView& src, Pixel* out, int count, double nu, double nv, double d,
-                      double du, double dv, double dd, double numerator_max) {
+                      double du, double dv, double dd) {
   if constexpr (!kBilinear) {
+    // The numerators are linear along the row (and non-negative in a fast run): their
+    // largest value is at an end.
+    const double last = count - 1;
+    const double numerator_max = std::max({nu, nu + last * du, nv, nv + last * dv});
     if (!(numerator_max + 0.5 < kMaxReciprocalNumerator)) {
       perspective_nearest_divided(src, out, count, nu, nv, d, du, dv, dd);
       return;
@@ -521,7 +525,7 @@ void perspective_span(const SourceView& src, Pixel* out, int count, double nu, d
 // Portable version: one correctly rounded division per coordinate (exact floors).
 template <bool kBilinear>
 void perspective_span(const SourceView& src, Pixel* out, int count, double nu, double nv, double d,
-                      double du, double dv, double dd, double /*numerator_max*/) {
+                      double du, double dv, double dd) {
   const double scale = 1 << kBlendWeightBits;
   for (int k = 0; k < count; ++k) {
     const double u = nu / d;
@@ -626,13 +630,10 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
       if constexpr (kAffine) {
         affine_span<kBilinear>(src, out, end - begin, s.nu, s.nv, step_u, step_v, map.affine_shift);
       } else {
-        // The numerators are linear along the row: their largest value is at an end.
-        const MapSample last = evaluate(map, end - 1, r.y);
-        const auto numerator_max = static_cast<double>(std::max({s.nu, s.nv, last.nu, last.nv}));
         perspective_span<kBilinear>(src, out, end - begin, static_cast<double>(s.nu),
                                     static_cast<double>(s.nv), static_cast<double>(s.d),
                                     static_cast<double>(step_u), static_cast<double>(step_v),
-                                    static_cast<double>(step_d), numerator_max);
+                                    static_cast<double>(step_d));
       }
     }
   }
