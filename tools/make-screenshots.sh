@@ -7,15 +7,7 @@ cd "$(dirname "$0")/.."
 oflab=${1:-build/gui/oflab}
 out=manual/images
 if [[ ! -x "$oflab" ]]; then
-  shot animation-demo --view animation --frames 10
-shot animation-difference --view animation --mode affine --animation-show difference --frames 10
-shot animation-scene --view animation --scene four-cubes --script circle --frames 40
-shot analysis-demo --view analysis --frames 40
-shot lesson-affine-vs-perspective --lesson affine-vs-perspective --frames 8
-shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
-shot lesson-occlusion --lesson occlusion --frames 20
-shot slices --view slices --frames 10
-echo "make-screenshots: $oflab not found; build it first (tools/build.sh oflab)" >&2
+  echo "make-screenshots: $oflab not found; build it first (tools/build.sh oflab)" >&2
   exit 1
 fi
 mkdir -p "$out"
