@@ -49,22 +49,30 @@ std::int64_t count_polygon_pixels(const WarpCase& c) {
   return warp_layer_into(c.source, c.warp, probe, c.origin_x, c.origin_y, options).pixels_written;
 }
 
-// Output sized to the warped polygon's bounding box.
-WarpCase boxed_case(const std::string& size, const std::string& name, const Layer& source,
-                    const Mat3& warp) {
+// A case whose output pixel (0, 0) has its corner at destination (origin_x, origin_y).
+WarpCase make_case(const std::string& size, const std::string& name, const Layer& source,
+                   const Mat3& warp, int output_width, int output_height, int origin_x,
+                   int origin_y) {
   WarpCase c;
   c.size = size;
   c.matrix = name;
   c.source = source;
   c.warp = warp;
   c.affine = is_affine(warp);
-  const WarpedLayer probe = warp_layer(source, warp);
-  c.output_width = probe.layer.image.width();
-  c.output_height = probe.layer.image.height();
-  c.origin_x = probe.offset_x;
-  c.origin_y = probe.offset_y;
+  c.output_width = output_width;
+  c.output_height = output_height;
+  c.origin_x = origin_x;
+  c.origin_y = origin_y;
   c.polygon_pixels = count_polygon_pixels(c);
   return c;
+}
+
+// Output sized to the warped polygon's bounding box.
+WarpCase boxed_case(const std::string& size, const std::string& name, const Layer& source,
+                    const Mat3& warp) {
+  const WarpedLayer probe = warp_layer(source, warp);
+  return make_case(size, name, source, warp, probe.layer.image.width(), probe.layer.image.height(),
+                   probe.offset_x, probe.offset_y);
 }
 
 }  // namespace
@@ -106,16 +114,7 @@ std::vector<WarpCase> frame_cases() {
     for (const auto& [name, warp] :
          {std::pair{std::string("rotation"), rotation_about(45.0, cx, cy)},
           std::pair{std::string("tilt"), zoom * k * pitch * glm::inverse(k)}}) {
-      WarpCase c;
-      c.size = size;
-      c.matrix = name;
-      c.source = source;
-      c.warp = warp;
-      c.affine = is_affine(warp);
-      c.output_width = w;
-      c.output_height = h;
-      c.polygon_pixels = count_polygon_pixels(c);
-      cases.push_back(c);
+      cases.push_back(make_case(size, name, source, warp, w, h, 0, 0));
     }
   }
   return cases;
