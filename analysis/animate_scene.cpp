@@ -11,6 +11,7 @@
 #include "analysis/image_io.h"
 #include "analysis/scene_file.h"
 #include "analysis/scene_run.h"
+#include "analysis/statistics.h"
 #include "analysis/viewer_script_file.h"
 
 namespace oflab {
@@ -29,22 +30,13 @@ SceneSettings read_scene_settings(const CliArgs& a) {
   return s;
 }
 
-double percent(long part, long whole) { return whole ? 100.0 * part / whole : 0.0; }
-
 void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
                          const std::string& script, EngineMode mode, std::ostream& out) {
-  const long drawn = s.drawn();
   const long total = static_cast<long>(s.polygons) * s.frames;
   out << "scene " << scene << " (" << s.polygons << " polygons; BSP " << s.bsp.nodes << " nodes, "
       << s.bsp.splits << " splits), viewer script " << script << ", mode " << engine_mode_name(mode)
-      << ", " << s.frames << " frames\n"
-      << std::fixed << std::setprecision(1) << "  polygons per level (" << drawn
-      << " drawn polygon-frames):\n";
-  for (int l = 0; l < kLevelCount; ++l) {
-    out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
-        << std::setw(8) << s.polygon_levels[l] << " (" << percent(s.polygon_levels[l], drawn)
-        << "%)\n";
-  }
+      << ", " << s.frames << " frames\n";
+  print_polygon_levels(s, out);
   out << "  culled " << s.culled() << " (" << percent(s.culled(), total) << "% of " << total
       << " polygon-frames: back-facing " << s.back_facing << ", outside the frustum "
       << s.outside_frustum << ")\n"
@@ -57,11 +49,8 @@ void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
   if (std::isfinite(s.conventional_median_frame_ms)) {
     out << ", conventional (VTK) " << s.conventional_median_frame_ms << " ms";
   }
-  out << "\n  time saved " << 100.0 * s.time_saved << "% against the exact re-render, work saved "
-      << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs " << s.baseline_pixels
-      << ")\n"
-      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR against the exact "
-      << "frame " << s.mean_psnr_db << " dB\n";
+  out << "\n";
+  print_savings_and_error(s, out);
   if (std::isfinite(s.conventional_iou)) {
     out << "  conventional frames cover the exact frames' pixels with mean IoU "
         << s.conventional_iou << "\n";

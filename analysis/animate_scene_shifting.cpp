@@ -21,24 +21,15 @@ constexpr const char* kEngineOnlyOptions[] = {
     "--threshold", "--thresholds", "--delta",         "--compare-conventional",
     "--near",      "--guard-band", "--no-skip-hidden"};
 
-double percent(long part, long whole) { return whole ? 100.0 * part / whole : 0.0; }
-
 void print_summary(const SceneShiftingRun& run, const std::string& scene, const std::string& script,
                    double epsilon, std::ostream& out) {
   const SceneRunSummary& s = run.scene_run.summary;
-  const long drawn = s.drawn();
   out << "scene " << scene << " (" << s.polygons << " polygons), viewer script " << script
       << ", mode scene-shifting, " << s.frames << " frames\n"
       << "  " << run.slices.size() << " slices (" << run.frames.front().occupied
       << " holding planes) for |V| = " << run.design_speed << " units/frame, epsilon = " << epsilon
-      << " px\n"
-      << std::fixed << std::setprecision(1) << "  polygons per level (" << drawn
-      << " drawn polygon-frames):\n";
-  for (int l = 0; l < kLevelCount; ++l) {
-    out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
-        << std::setw(8) << s.polygon_levels[l] << " (" << percent(s.polygon_levels[l], drawn)
-        << "%)\n";
-  }
+      << " px\n";
+  print_polygon_levels(s, out);
   out << "  layers after the first frame: " << run.rebuilt_layers << " rebuilt, "
       << run.shifted_layers << " shifted or scaled\n";
   if (run.turning_frames > 0) {
@@ -47,12 +38,8 @@ void print_summary(const SceneShiftingRun& run, const std::string& scene, const 
         << " of them\n";
   }
   out << std::setprecision(3) << "  median frame time: scene shifting " << s.median_frame_ms
-      << " ms, exact re-render " << s.baseline_median_frame_ms << " ms\n"
-      << "  time saved " << 100.0 * s.time_saved << "% against the exact re-render, work saved "
-      << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs " << s.baseline_pixels
-      << ")\n"
-      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR against the exact "
-      << "frame " << s.mean_psnr_db << " dB\n";
+      << " ms, exact re-render " << s.baseline_median_frame_ms << " ms\n";
+  print_savings_and_error(s, out);
 }
 
 int run(const CliArgs& a, std::ostream& out, std::ostream& err) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -132,6 +133,25 @@ void write_scene_frame_csv(std::ostream& out, const SceneRun& run) {
         << r.max_measured_error_px << ',' << run.psnr_db[i] << ',' << run.baseline_ms[i] << ','
         << run.conventional_ms[i] << '\n';
   }
+}
+
+void print_polygon_levels(const SceneRunSummary& s, std::ostream& out) {
+  const long drawn = s.drawn();
+  out << std::fixed << std::setprecision(1) << "  polygons per level (" << drawn
+      << " drawn polygon-frames):\n";
+  for (int l = 0; l < kLevelCount; ++l) {
+    out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
+        << std::setw(8) << s.polygon_levels[l] << " (" << percent(s.polygon_levels[l], drawn)
+        << "%)\n";
+  }
+}
+
+void print_savings_and_error(const SceneRunSummary& s, std::ostream& out) {
+  out << "  time saved " << 100.0 * s.time_saved << "% against the exact re-render, work saved "
+      << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs " << s.baseline_pixels
+      << ")\n"
+      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR against the exact "
+      << "frame " << s.mean_psnr_db << " dB\n";
 }
 
 nlohmann::json scene_summary_json(const SceneRunSummary& s) {

@@ -85,6 +85,15 @@ auto play_frame(Renderer& renderer, const ViewerScript& script, int i) {
                                    script.frames[i].pose);
 }
 
+// Lines of the text summary shared by the scene forms of `oflab-cli animate`:
+// "  polygons per level (N drawn polygon-frames):" and a line per level with its count and
+// percent; leaves `out` in fixed notation with one decimal.
+void print_polygon_levels(const SceneRunSummary& summary, std::ostream& out);
+// "  time saved ...% against the exact re-render, work saved ...% (pixels written ...)" and
+// "  max measured error ... px, mean PSNR against the exact frame ... dB", in the stream's
+// current notation.
+void print_savings_and_error(const SceneRunSummary& summary, std::ostream& out);
+
 // The summary as JSON: polygon_levels {none, translate, affine, perspective, rerender},
 // culled, hidden, median_frame_ms {engine, rerender, conventional} and the rest.
 nlohmann::json scene_summary_json(const SceneRunSummary& summary);

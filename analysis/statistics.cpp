@@ -16,4 +16,6 @@ double median_of(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+double percent(long part, long whole) { return whole ? 100.0 * part / whole : 0.0; }
+
 }  // namespace oflab

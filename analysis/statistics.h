@@ -9,4 +9,7 @@ namespace oflab {
 // the two middle values for an even count); NaN when there is none.
 double median_of(std::vector<double> values);
 
+// 100 * part / whole; 0 when whole is 0.
+double percent(long part, long whole);
+
 }  // namespace oflab
