@@ -158,12 +158,12 @@ nlohmann::json scene_summary_json(const SceneRunSummary& s) {
   auto finite_or_null = [](double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
   };
-  nlohmann::json levels, percent;
+  nlohmann::json levels, level_percent;
   const long drawn = s.drawn();
   for (int l = 0; l < kLevelCount; ++l) {
     const char* name = level_name(static_cast<Level>(l));
     levels[name] = s.polygon_levels[l];
-    percent[name] = drawn ? 100.0 * s.polygon_levels[l] / drawn : 0.0;
+    level_percent[name] = percent(s.polygon_levels[l], drawn);
   }
   return {{"frames", s.frames},
           {"polygons", s.polygons},
@@ -173,7 +173,7 @@ nlohmann::json scene_summary_json(const SceneRunSummary& s) {
             {"splits", s.bsp.splits},
             {"depth", s.bsp.depth}}},
           {"polygon_levels", levels},
-          {"polygon_level_percent", percent},
+          {"polygon_level_percent", level_percent},
           {"drawn", drawn},
           {"culled", s.culled()},
           {"back_facing", s.back_facing},
