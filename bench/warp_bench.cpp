@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/warp.h"
+#include "image/warp.h"
 #include "warp_cases.h"
 #ifdef OFLAB_BENCH_WITH_OPENCV
 #include "opencv_peer.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/image.h"
+#include "image/image.h"
 
 namespace oflab::bench {
 namespace {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "core/geometry.h"
-#include "core/layer.h"
-#include "core/warp.h"
+#include "flow/geometry.h"
+#include "image/layer.h"
+#include "image/warp.h"
 
 namespace oflab::bench {
 

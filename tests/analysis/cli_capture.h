@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/commands.h"
+#include "cli/commands.h"
 
 namespace oflab::testing {
 

@@ -4,9 +4,9 @@
 #include <random>
 #include <vector>
 
-#include "core/camera.h"
-#include "core/motion.h"
-#include "core/plane.h"
+#include "flow/camera.h"
+#include "flow/motion.h"
+#include "flow/plane.h"
 
 namespace oflab::testing {
 

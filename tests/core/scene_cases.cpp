@@ -4,8 +4,8 @@
 #include <cmath>
 #include <fstream>
 
-#include "core/composite.h"
-#include "core/polygon.h"
+#include "image/composite.h"
+#include "image/polygon.h"
 
 namespace oflab::testing {
 

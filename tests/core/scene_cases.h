@@ -5,10 +5,10 @@
 #include <random>
 #include <vector>
 
-#include "core/camera.h"
-#include "core/image.h"
-#include "core/scene.h"
-#include "core/viewer_script.h"
+#include "flow/camera.h"
+#include "image/image.h"
+#include "scene/scene.h"
+#include "scene/viewer_script.h"
 
 namespace oflab::testing {
 

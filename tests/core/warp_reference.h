@@ -1,6 +1,6 @@
 // A straightforward per-pixel reference for the warp kernels, and random test inputs.
 // The reference shares only the definition of the sampling position (the integer map of
-// core/inverse_map.h) with the kernels: it classifies every output pixel centre against
+// core/image/inverse_map.h) with the kernels: it classifies every output pixel centre against
 // the warped polygon with half-plane tests (no scan conversion), evaluates the map
 // directly with 128-bit integers (no incremental steps), takes exact floors and clamps
 // per pixel, and interpolates in double.
@@ -9,10 +9,10 @@
 #include <random>
 #include <vector>
 
-#include "core/image.h"
-#include "core/layer.h"
-#include "core/polygon.h"
-#include "core/warp_plan.h"
+#include "image/image.h"
+#include "image/layer.h"
+#include "image/polygon.h"
+#include "image/warp_plan.h"
 
 namespace oflab::testing {
 

@@ -6,7 +6,7 @@
 #include <QtTest/QTest>
 #include <memory>
 
-#include "gui/main_window.h"
+#include "app/main_window.h"
 
 namespace oflab::test {
 

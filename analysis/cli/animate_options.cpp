@@ -1,0 +1,156 @@
+// Option readers shared by the two forms of `oflab-cli animate`.
+#include "cli/animate_options.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "formats/image_io.h"
+#include "formats/obj_scene.h"
+#include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
+
+namespace oflab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool is_obj_file(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
+}
+
+}  // namespace
+
+EngineSettings read_engine_settings(const CliArgs& a) {
+  EngineSettings s;
+  const std::string mode = a.text_or("--mode", "perspective");
+  if (!parse_engine_mode(mode, &s.mode)) {
+    throw UsageError("--mode: '" + mode + "' is not one of perspective, affine, rerender, exact");
+  }
+  if (a.has("--threshold") && a.has("--thresholds")) {
+    throw UsageError("--thresholds: give either --threshold or --thresholds, not both");
+  }
+  if (a.has("--threshold")) s.thresholds.fill(a.number("--threshold"));
+  if (a.has("--thresholds")) {
+    const auto& v = a.values("--thresholds");
+    for (int i = 0; i < kTermCount; ++i) {
+      s.thresholds[i] = CliArgs({"--t", v[i]}, {{"--t", 1}}).number("--t");
+    }
+  }
+  for (double t : s.thresholds) {
+    if (!(t >= 0.0)) throw UsageError("--threshold: thresholds must be zero or positive pixels");
+  }
+  const std::string delta = a.text_or("--delta", "dissertation");
+  if (!parse_delta_policy(delta, &s.delta)) {
+    throw UsageError("--delta: '" + delta +
+                     "' is not one of 1, det, sqrt, fourth-root, dissertation");
+  }
+  const std::string sampling = a.text_or("--sampling", "nearest");
+  if (sampling == "nearest") {
+    s.sampling = Sampling::kNearest;
+  } else if (sampling == "bilinear") {
+    s.sampling = Sampling::kBilinear;
+  } else {
+    throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
+  }
+  return s;
+}
+
+RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
+  RunOutput out;
+  if (a.has("--frames")) {
+    out.max_frames = a.integer("--frames");
+    if (out.max_frames < 1) throw UsageError("--frames: must be at least 1");
+  }
+  out.dir = a.text_or("--out", "");
+  if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
+  if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
+  if (!out.dir.empty()) prepare_out_dir(out.dir, a.has("--force"));
+  if (a.has("--frames-png")) {
+    out.on_frame = [dir = out.dir](int i, const Image& frame) {
+      std::ostringstream name;
+      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
+      write_png((fs::path(dir) / name.str()).string(), frame);
+    };
+  }
+  const bool quiet = a.has("--quiet");
+  out.progress = [quiet, &err](int done, int total) {
+    if (quiet || total < 200) return;
+    if (done % std::max(1, total / 10) == 0 || done == total) {
+      err << "animate: frame " << done << "/" << total << "\n" << std::flush;
+    }
+  };
+  return out;
+}
+
+void write_scene_outputs(const std::string& dir, const SceneRun& run,
+                         const nlohmann::json& summary) {
+  std::ofstream csv(fs::path(dir) / "frames.csv");
+  write_scene_frame_csv(csv, run);
+  std::ofstream json(fs::path(dir) / "summary.json");
+  json << summary.dump(2) << "\n";
+  if (!csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");
+}
+
+int report_scene_input_errors(const std::function<int()>& body, std::ostream& err) {
+  try {
+    return body();
+  } catch (const SceneError& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+  } catch (const ViewerScriptError& e) {
+    err << "oflab-cli animate: --script: " << e.what() << "\n";
+  } catch (const ImageFileError& e) {
+    err << "oflab-cli animate: " << e.what() << "\n";
+  } catch (const std::invalid_argument& e) {
+    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+  }
+  return 2;
+}
+
+Scene read_scene_option(const CliArgs& a) {
+  const std::string arg = a.values("--scene").at(0);
+  Image replacement;
+  if (a.has("--texture")) {
+    try {
+      replacement = read_image(a.values("--texture").at(0));
+    } catch (const ImageFileError& e) {
+      throw UsageError(std::string("--texture: ") + e.what());
+    }
+  }
+  Scene scene;
+  if (is_obj_file(arg)) {
+    Image texture = replacement;
+    if (texture.empty()) texture = read_image(tile_texture_path());
+    return read_obj_scene(arg, texture, a.has("--texture") ? "texture" : "tile");
+  }
+  std::string path;
+  try {
+    path = resolve_scene_path(arg);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+  scene = read_scene_file(path);
+  if (!replacement.empty()) {
+    for (Image& t : scene.textures) t = replacement;
+  }
+  return scene;
+}
+
+ViewerScript read_viewer_script_option(const CliArgs& a) {
+  if (!a.has("--script")) throw UsageError("--script: a viewer script is needed with --scene");
+  std::string path;
+  try {
+    path = resolve_viewer_script_path(a.values("--script").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--script: ") + e.what());
+  }
+  return read_viewer_script_file(path);
+}
+
+}  // namespace oflab

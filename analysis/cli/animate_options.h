@@ -1,0 +1,68 @@
+// Options shared by both forms of `oflab-cli animate` (one plane, analysis/cli/animate_command.cpp;
+// a scene, analysis/cli/animate_scene.cpp).
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/cli_args.h"
+#include "runs/scene_run.h"
+#include "engine/engine.h"
+#include "image/image.h"
+#include "scene/scene.h"
+#include "scene/viewer_script.h"
+
+namespace oflab {
+
+// --mode, --threshold / --thresholds, --delta, --sampling. Throws UsageError naming the
+// option for a bad value.
+EngineSettings read_engine_settings(const CliArgs& args);
+
+// What every form of `oflab-cli animate` does with its output options: --frames N (at most N
+// frames; -1 for all), --out DIR (created, or an existing empty one; --force for a non-empty
+// one), --frames-png (each frame as DIR/frame_NNNNN.png; needs --out) and --quiet (no
+// progress lines; otherwise runs of 200 frames or more report every tenth on `err`).
+// Throws UsageError naming the option. `err` must outlive the returned callbacks.
+struct RunOutput {
+  int max_frames = -1;
+  std::string dir;                                  // empty without --out
+  std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
+  std::function<void(int, int)> progress;
+
+  // Sets max_frames, on_frame and progress of a run's options (AnimationOptions,
+  // SceneRunOptions, SceneShiftingRunOptions).
+  template <class Options>
+  void apply_to(Options& options) const {
+    options.max_frames = max_frames;
+    options.on_frame = on_frame;
+    options.progress = progress;
+  }
+};
+RunOutput read_run_output(const CliArgs& args, std::ostream& err);
+
+// The scene forms of `oflab-cli animate` (analysis/cli/animate_scene.cpp,
+// analysis/cli/animate_scene_shifting.cpp).
+//
+// Writes DIR/frames.csv (one row per frame of `run`) and DIR/summary.json (`summary`).
+// Throws UsageError naming --out when either cannot be written.
+void write_scene_outputs(const std::string& dir, const SceneRun& run,
+                         const nlohmann::json& summary);
+
+// Runs `body`, the whole of a scene form, and turns the errors of reading its inputs (the
+// scene, the viewer script, image files, a scene the core rejects) into a message on `err`
+// naming the option, returning exit status 2. Other exceptions pass through.
+int report_scene_input_errors(const std::function<int()>& body, std::ostream& err);
+
+// The scene of --scene: a shipped scene name, a scene file or a Wavefront OBJ file (with
+// the tile texture, analysis/formats/obj_scene.h); --texture, when given, replaces every texture.
+// Throws UsageError for an unknown name or unreadable --texture, and the readers' errors
+// (SceneError, ImageFileError) for a broken file.
+Scene read_scene_option(const CliArgs& a);
+
+// The viewer script of --script (required): a shipped name or a file. Throws UsageError
+// when missing or unknown, ViewerScriptError for a broken file.
+ViewerScript read_viewer_script_option(const CliArgs& a);
+
+}  // namespace oflab

@@ -1,0 +1,17 @@
+// `oflab-cli animate --scene NAME|FILE --script NAME|FILE`: a viewer script through a scene
+// of many polygons (Experiment 2), with the exact re-render and, on request, the VTK
+// renderer timed in the same run (manual/scenes.md).
+#pragma once
+
+#include <iosfwd>
+
+#include "cli/cli_args.h"
+
+namespace oflab {
+
+// Runs the scene form of animate. Returns the exit code: 0, 2 for bad input (one line on
+// `err` naming the option or the file, polygon and field), 1 when the VTK renderer cannot
+// start. Throws UsageError for bad options (the caller prints it).
+int animate_scene(const CliArgs& args, std::ostream& out, std::ostream& err);
+
+}  // namespace oflab

@@ -1,0 +1,102 @@
+#include "cli/cli_args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+namespace oflab {
+
+CliArgs::CliArgs(const std::vector<std::string>& args, const std::map<std::string, int>& arity) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& name = args[i];
+    const auto it = arity.find(name);
+    if (it == arity.end()) {
+      throw UsageError(name.rfind("--", 0) == 0 ? "unknown option " + name
+                                                : "unexpected argument '" + name + "'");
+    }
+    if (values_.count(name)) throw UsageError(name + ": given more than once");
+    std::vector<std::string> vals;
+    for (int k = 0; k < it->second; ++k) {
+      if (i + 1 >= args.size() || (args[i + 1].rfind("--", 0) == 0 && arity.count(args[i + 1]))) {
+        throw UsageError(name + ": expects " + std::to_string(it->second) + " value" +
+                         (it->second > 1 ? "s" : "") + ", got " + std::to_string(k));
+      }
+      vals.push_back(args[++i]);
+    }
+    values_[name] = vals;
+  }
+}
+
+bool CliArgs::has(const std::string& name) const { return values_.count(name) > 0; }
+
+const std::vector<std::string>& CliArgs::values(const std::string& name) const {
+  const auto it = values_.find(name);
+  if (it == values_.end()) throw UsageError(name + ": required");
+  return it->second;
+}
+
+double CliArgs::parse_number(const std::string& name, const std::string& text) const {
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v)) {
+    throw UsageError(name + ": '" + text + "' is not a finite number");
+  }
+  return v;
+}
+
+double CliArgs::number(const std::string& name) const {
+  return parse_number(name, values(name).at(0));
+}
+
+double CliArgs::number_or(const std::string& name, double fallback) const {
+  return has(name) ? number(name) : fallback;
+}
+
+std::optional<double> CliArgs::optional_number(const std::string& name) const {
+  if (!has(name)) return std::nullopt;
+  return number(name);
+}
+
+int CliArgs::integer(const std::string& name) const {
+  const double v = number(name);
+  if (v != std::floor(v) || std::abs(v) > 1e9) {
+    throw UsageError(name + ": '" + values(name).at(0) + "' is not a whole number");
+  }
+  return static_cast<int>(v);
+}
+
+int CliArgs::integer_or(const std::string& name, int fallback) const {
+  return has(name) ? integer(name) : fallback;
+}
+
+Vec2 CliArgs::vec2(const std::string& name) const {
+  const auto& v = values(name);
+  return Vec2(parse_number(name, v.at(0)), parse_number(name, v.at(1)));
+}
+
+Vec3 CliArgs::vec3(const std::string& name) const {
+  const auto& v = values(name);
+  return Vec3(parse_number(name, v.at(0)), parse_number(name, v.at(1)),
+              parse_number(name, v.at(2)));
+}
+
+std::string CliArgs::text_or(const std::string& name, const std::string& fallback) const {
+  return has(name) ? values(name).at(0) : fallback;
+}
+
+void prepare_out_dir(const std::string& dir, bool force) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' is not a directory");
+    if (!fs::is_empty(dir, ec) && !force) {
+      throw UsageError("--out: '" + dir + "' is not empty (add --force to overwrite its files)");
+    }
+  } else if (!fs::create_directories(dir, ec)) {
+    throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
+  }
+}
+
+}  // namespace oflab

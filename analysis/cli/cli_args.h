@@ -1,0 +1,51 @@
+// A small command-line reader for oflab-cli subcommands: named options with a fixed
+// number of values, errors that name the argument, and nothing positional.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "flow/geometry.h"
+
+namespace oflab {
+
+// Thrown for bad command-line input; what() is one line that names the argument.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class CliArgs {
+ public:
+  // Declares the options a command accepts: name (with the leading "--") -> number of
+  // values (0 for a flag). Parsing fails on an unknown option, a missing value, or a repeat.
+  CliArgs(const std::vector<std::string>& args, const std::map<std::string, int>& arity);
+
+  bool has(const std::string& name) const;
+  // The values of an option as strings; throws UsageError when absent.
+  const std::vector<std::string>& values(const std::string& name) const;
+
+  // Numeric readers: throw UsageError naming the option when absent (required forms) or
+  // when a value is not a finite number / not an integer.
+  double number(const std::string& name) const;
+  double number_or(const std::string& name, double fallback) const;
+  std::optional<double> optional_number(const std::string& name) const;
+  int integer(const std::string& name) const;
+  int integer_or(const std::string& name, int fallback) const;
+  Vec2 vec2(const std::string& name) const;
+  Vec3 vec3(const std::string& name) const;
+  std::string text_or(const std::string& name, const std::string& fallback) const;
+
+ private:
+  double parse_number(const std::string& name, const std::string& text) const;
+  std::map<std::string, std::vector<std::string>> values_;
+};
+
+// Creates DIR, or accepts an existing empty one; a non-empty DIR needs `force`. Throws
+// UsageError naming --out.
+void prepare_out_dir(const std::string& dir, bool force);
+
+}  // namespace oflab

@@ -1,0 +1,8 @@
+// oflab-cli: the headless command-line tool. All work happens in analysis/ and core/.
+#include <iostream>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  return oflab::run_cli(oflab::CommandArgs(argv + 1, argv + argc), std::cout, std::cerr);
+}

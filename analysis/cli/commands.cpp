@@ -1,0 +1,69 @@
+#include "cli/commands.h"
+
+#include <ostream>
+
+namespace oflab {
+
+const std::vector<Command>& all_commands() {
+  static const std::vector<Command> commands = {
+      {"flow", "instantaneous optic flow of a moving plane: coefficients, bases, homographies",
+       "oflab-cli flow --focal F --image W H --plane-point X Y Z --plane-normal NX NY NZ\n"
+       "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
+       "               --plane-size SW SH] [--dt T] [--motion screw|rt|centre] [--json]",
+       run_flow_command},
+      {"animate", "play a motion script through the engine: levels, errors, savings",
+       "oflab-cli animate --script NAME|FILE [--texture FILE]\n"
+       "               [--mode perspective|affine|rerender|exact]\n"
+       "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
+       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n"
+       "               [--sampling nearest|bilinear] [--frames N]\n"
+       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
+       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
+       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
+       "               [--no-skip-hidden]   (--compare-conventional needs an X display)",
+       run_animate_command},
+      {"make-butterfly", "write the bundled butterfly texture as a PNG",
+       "oflab-cli make-butterfly --out FILE [--force]", run_make_butterfly_command},
+      {"make-scene", "write a grid-of-cubes scene, an OBJ file as a scene, or the tile texture",
+       "oflab-cli make-scene (--cubes N | --from-obj FILE | --tile-texture) --out FILE\n"
+       "               [--texture PATH] [--force]",
+       run_make_scene_command},
+      {"slices", "scene-shifting slices of a sideways-moving viewer and their asymptote",
+       "oflab-cli slices --speed V --focal K --epsilon E [--near Z0] [--json]", run_slices_command},
+      {"experiments", "re-run the dissertation's experiments; report beside the published figures",
+       "oflab-cli experiments [--out DIR] [--only exp1|delta|warp|exp2|sweep ...] [--quick]\n"
+       "               [--force]   (draws charts: needs an X display, e.g. xvfb-run -a)",
+       run_experiments_command},
+  };
+  return commands;
+}
+
+namespace {
+
+void print_help(std::ostream& out) {
+  out << "oflab-cli: headless tools of Optic Flow Lab\n\nCommands:\n";
+  for (const Command& c : all_commands()) out << "  " << c.name << "  " << c.summary << "\n";
+  out << "\nRun 'oflab-cli COMMAND --help' for a command's options.\n";
+}
+
+}  // namespace
+
+int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    print_help(args.empty() ? err : out);
+    return args.empty() ? 2 : 0;
+  }
+  for (const Command& c : all_commands()) {
+    if (args[0] != c.name) continue;
+    const CommandArgs rest(args.begin() + 1, args.end());
+    if (!rest.empty() && (rest[0] == "--help" || rest[0] == "-h")) {
+      out << "usage: " << c.usage << "\n";
+      return 0;
+    }
+    return c.run(rest, out, err);
+  }
+  err << "oflab-cli: unknown command '" << args[0] << "' (try oflab-cli --help)\n";
+  return 2;
+}
+
+}  // namespace oflab

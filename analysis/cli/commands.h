@@ -1,0 +1,46 @@
+// The subcommands of oflab-cli. Each takes its arguments (after the subcommand name) and
+// the output streams, and returns the process exit code: 0 on success, 2 on bad input
+// (one line on `err` naming the argument), 1 on a failure while running.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace oflab {
+
+using CommandArgs = std::vector<std::string>;
+
+struct Command {
+  const char* name;
+  const char* summary;
+  const char* usage;
+  int (*run)(const CommandArgs& args, std::ostream& out, std::ostream& err);
+};
+
+// All subcommands, in the order `oflab-cli --help` lists them.
+const std::vector<Command>& all_commands();
+
+// `oflab-cli flow`: the instantaneous flow of one moving plane (analysis/cli/flow_command.cpp).
+int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+// `oflab-cli slices`: Hofmann's scene-shifting slices (analysis/cli/slices_command.cpp).
+int run_slices_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli animate`: plays a motion script through the engine (analysis/cli/animate_command.cpp).
+int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli make-butterfly`: writes the bundled demo texture.
+int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli experiments`: re-runs the dissertation's experiments and writes a report
+// (analysis/cli/experiments_command.cpp, manual/experiments.md).
+int run_experiments_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli make-scene`: writes a grid-of-cubes scene, an OBJ file as a scene, or the
+// scenes' tile texture (analysis/cli/make_scene_command.cpp, manual/scenes.md).
+int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// Dispatches argv[1..] to a subcommand; prints help for no arguments or --help.
+int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+}  // namespace oflab

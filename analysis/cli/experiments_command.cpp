@@ -1,0 +1,89 @@
+// `oflab-cli experiments`: runs the dissertation's experiments and writes the report
+// (analysis/experiments/experiments.h, manual/experiments.md).
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+
+#include "report/charts.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "experiments/experiments.h"
+
+namespace oflab {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kDefaultOutDir = "oflab-experiments";
+
+// Takes "--only NAME..." out of `args` (every following argument not starting with "--",
+// commas also separate names) and checks the names.
+std::vector<std::string> take_only(CommandArgs& args) {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != "--only") continue;
+    if (!names.empty()) throw UsageError("--only: given more than once");
+    size_t end = i + 1;
+    for (; end < args.size() && args[end].rfind("--", 0) != 0; ++end) {
+      std::string list = args[end];
+      for (size_t start = 0; start <= list.size();) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        if (comma > start) names.push_back(list.substr(start, comma - start));
+        start = comma + 1;
+      }
+    }
+    if (names.empty()) throw UsageError("--only: expects at least one experiment name");
+    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i),
+               args.begin() + static_cast<std::ptrdiff_t>(end));
+    --i;
+  }
+  const std::vector<std::string>& known = experiment_names();
+  for (const std::string& n : names) {
+    if (std::find(known.begin(), known.end(), n) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw UsageError("--only: '" + n + "' is not one of " + list);
+    }
+  }
+  return names;
+}
+
+std::string command_line(const CommandArgs& original) {
+  std::string line = "oflab-cli experiments";
+  for (const std::string& a : original) line += " " + a;
+  return line;
+}
+
+}  // namespace
+
+int run_experiments_command(const CommandArgs& original_args, std::ostream& out,
+                            std::ostream& err) {
+  try {
+    CommandArgs args = original_args;
+    ExperimentsOptions options;
+    options.only = take_only(args);
+    const CliArgs a(args, {{"--out", 1}, {"--quick", 0}, {"--force", 0}});
+    options.out_dir = a.text_or("--out", kDefaultOutDir);
+    options.quick = a.has("--quick");
+    options.command_line = command_line(original_args);
+    if (const std::string problem = chart_display_problem(); !problem.empty()) {
+      throw ChartError(problem);
+    }
+    prepare_out_dir(options.out_dir, a.has("--force"));
+    const ExperimentsOutcome outcome = run_experiments(options, err);
+    out << "wrote " << (fs::path(options.out_dir) / "report.html").string() << " and report.md ("
+        << outcome.charts << " charts) in " << static_cast<int>(outcome.seconds + 0.5) << " s\n";
+    return 0;
+  } catch (const UsageError& e) {
+    err << "oflab-cli experiments: " << e.what() << "\n";
+    return 2;
+  } catch (const ChartError& e) {
+    err << "oflab-cli experiments: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    err << "oflab-cli experiments: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace oflab

@@ -1,0 +1,32 @@
+// `oflab-cli make-butterfly`: writes the bundled demo texture (analysis/generators/butterfly.h).
+#include <filesystem>
+#include <ostream>
+
+#include "generators/butterfly.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "formats/image_io.h"
+
+namespace oflab {
+
+int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
+  try {
+    const CliArgs a(args, {{"--out", 1}, {"--force", 0}});
+    const std::string path = a.values("--out").at(0);
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !a.has("--force")) {
+      throw UsageError("--out: '" + path + "' exists (add --force to overwrite it)");
+    }
+    write_png(path, make_butterfly());
+    out << "wrote " << path << " (243 x 198 RGBA)\n";
+    return 0;
+  } catch (const UsageError& e) {
+    err << "oflab-cli make-butterfly: " << e.what() << "\n";
+    return 2;
+  } catch (const ImageFileError& e) {
+    err << "oflab-cli make-butterfly: --out: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace oflab

@@ -1,8 +1,0 @@
-// oflab-cli: the headless command-line tool. All work happens in analysis/ and core/.
-#include <iostream>
-
-#include "analysis/commands.h"
-
-int main(int argc, char** argv) {
-  return oflab::run_cli(oflab::CommandArgs(argv + 1, argv + argc), std::cout, std::cerr);
-}

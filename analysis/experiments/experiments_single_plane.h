@@ -1,0 +1,46 @@
+// Experiment 1 (dissertation sections 6.4 and 6.5): one textured plane, fixed viewer, the
+// seven shipped scripts, in perspective, affine and exact mode, each against the
+// re-render baseline measured in the same run.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "experiments/experiments.h"
+#include "experiments/experiments_runs.h"
+
+namespace oflab {
+
+// The seven scripts in the dissertation's order (section 6.4.8's table).
+const std::vector<std::string>& experiment1_scripts();
+
+// The engine modes Experiment 1 compares, in report order.
+const std::vector<EngineMode>& experiment1_modes();  // perspective, affine, exact
+
+struct Experiment1Script {
+  std::string script;
+  MeasuredRun baseline;            // mode re-render, same frames, same repetitions
+  std::vector<MeasuredRun> modes;  // one per experiment1_modes(), same order
+  const MeasuredRun& mode(EngineMode m) const;
+};
+
+struct Experiment1Result {
+  RunSpec spec;
+  std::vector<Experiment1Script> scripts;
+};
+
+// The full run: whole scripts, 15 repetitions, PSNR; quick: at most 60 frames per script,
+// 2 repetitions, PSNR.
+RunSpec experiment1_spec(bool quick);
+
+// Plays every script in every mode (thresholds 1 px, Delta as the dissertation, nearest
+// sampling) and the re-render baseline, interleaved. `progress` may be empty.
+Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
+                                  const std::function<void(const std::string&)>& progress);
+
+// The report section: the comparison table with one reading per oflab row, the cost of
+// each level, and per script and mode a chart of frame time and level per frame.
+ReportSection experiment1_section(const Experiment1Result& result, ExperimentContext& context);
+
+}  // namespace oflab

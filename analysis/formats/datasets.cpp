@@ -1,0 +1,49 @@
+#include "formats/datasets.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+namespace oflab {
+
+namespace fs = std::filesystem;
+
+std::string datasets_dir() {
+  if (const char* env = std::getenv("OFLAB_DATASETS"); env && *env) return env;
+  return OFLAB_SOURCE_DATASETS_DIR;
+}
+
+std::vector<std::string> shipped_names(const std::string& folder) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fs::path(datasets_dir()) / folder, ec)) {
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string resolve_shipped_path(const std::string& name_or_file, const std::string& folder,
+                                 const std::string& what) {
+  std::error_code ec;
+  if (fs::is_regular_file(name_or_file, ec)) return name_or_file;
+  const fs::path shipped = fs::path(datasets_dir()) / folder / (name_or_file + ".json");
+  if (fs::is_regular_file(shipped, ec)) return shipped.string();
+  std::string names;
+  for (const std::string& n : shipped_names(folder)) names += (names.empty() ? "" : ", ") + n;
+  throw std::runtime_error("'" + name_or_file + "' is neither a file nor a shipped " + what + " (" +
+                           (names.empty() ? "none found in " + datasets_dir() : names) + ")");
+}
+
+std::vector<std::string> shipped_script_names() { return shipped_names("scripts"); }
+
+std::string resolve_script_path(const std::string& name_or_file) {
+  return resolve_shipped_path(name_or_file, "scripts", "script");
+}
+
+std::string default_texture_path() {
+  return (fs::path(datasets_dir()) / "textures" / "butterfly.png").string();
+}
+
+}  // namespace oflab

@@ -1,0 +1,130 @@
+// Checked reading of the fields of oflab's JSON data files (motion scripts, scenes, viewer
+// scripts), shared by their readers. Every problem is thrown as the file kind's error type
+// (the template argument) with a message naming the file, the part and the field:
+//     "datasets/scripts/zoom.json: segment 1: field 'omega': must be a list of 3 numbers".
+#pragma once
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "flow/camera.h"
+#include "flow/geometry.h"
+
+namespace oflab::json_fields {
+
+using nlohmann::json;
+
+// Largest magnitude of any number in a data file, and most frames or items of a list.
+constexpr double kMaxMagnitude = 1e6;
+constexpr int kMaxCount = 1000000;
+
+// Where a value sits: the file (or a description of the text) and the part of it ("",
+// "segment 1", "polygon 3 ('a-top')").
+template <class Error>
+struct Place {
+  std::string origin;
+  std::string part;
+
+  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
+    std::string text = origin + ": ";
+    if (!part.empty()) text += part + ": ";
+    if (!field.empty()) text += "field '" + field + "': ";
+    throw Error(text + message);
+  }
+};
+
+// The contents of the file at `path`; Error "PATH: cannot open the file" if it cannot be read.
+template <class Error>
+std::string read_file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// `text` parsed; it must be a JSON object.
+template <class Error>
+json parse_object(const std::string& text, const Place<Error>& top) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    top.fail("", std::string("not valid JSON (") + e.what() + ")");
+  }
+  if (!root.is_object()) top.fail("", "must be a JSON object");
+  return root;
+}
+
+// obj[field], which must be present.
+template <class Error>
+const json& member(const json& obj, const Place<Error>& w, const std::string& field) {
+  if (!obj.contains(field)) w.fail(field, "is missing");
+  return obj.at(field);
+}
+
+// The value `j` of `field` as a finite number of magnitude at most kMaxMagnitude.
+template <class Error>
+double number(const json& j, const Place<Error>& w, const std::string& field) {
+  if (!j.is_number()) w.fail(field, "must be a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v) || std::abs(v) > kMaxMagnitude) {
+    w.fail(field, "must be a finite number of magnitude at most 1e6");
+  }
+  return v;
+}
+
+// The value `j` of `field` as a list of 3 (2) numbers.
+template <class Error>
+Vec3 vec3_value(const json& j, const Place<Error>& w, const std::string& field) {
+  if (!j.is_array() || j.size() != 3) w.fail(field, "must be a list of 3 numbers");
+  return Vec3(number(j[0], w, field), number(j[1], w, field), number(j[2], w, field));
+}
+
+template <class Error>
+Vec2 vec2_value(const json& j, const Place<Error>& w, const std::string& field) {
+  if (!j.is_array() || j.size() != 2) w.fail(field, "must be a list of 2 numbers");
+  return Vec2(number(j[0], w, field), number(j[1], w, field));
+}
+
+// obj[field] as a list of 3 (2) numbers.
+template <class Error>
+Vec3 vec3(const json& obj, const Place<Error>& w, const std::string& field) {
+  return vec3_value(member(obj, w, field), w, field);
+}
+
+template <class Error>
+Vec2 vec2(const json& obj, const Place<Error>& w, const std::string& field) {
+  return vec2_value(member(obj, w, field), w, field);
+}
+
+// obj[field] as a whole number from 1 to kMaxCount (a frame count).
+template <class Error>
+int positive_integer(const json& obj, const Place<Error>& w, const std::string& field) {
+  const double v = number(member(obj, w, field), w, field);
+  if (v != std::floor(v) || v < 1 || v > kMaxCount) {
+    w.fail(field, "must be a whole number from 1 to 1000000");
+  }
+  return static_cast<int>(v);
+}
+
+// The "camera" object of `root`: {"focal_px": f > 0, "image": [width, height]} with whole
+// sizes from 1 to 8192 pixels.
+template <class Error>
+Camera read_camera(const json& root, const Place<Error>& w) {
+  const json& c = member(root, w, "camera");
+  if (!c.is_object()) w.fail("camera", "must be an object");
+  const double f = number(member(c, w, "focal_px"), w, "camera.focal_px");
+  const Vec2 size = vec2_value(member(c, w, "image"), w, "camera.image");
+  if (!(f > 0.0)) w.fail("camera.focal_px", "must be positive");
+  if (size.x < 1 || size.y < 1 || size.x > 8192 || size.y > 8192 || size.x != std::floor(size.x) ||
+      size.y != std::floor(size.y)) {
+    w.fail("camera.image", "must be two whole numbers from 1 to 8192");
+  }
+  return make_camera(f, static_cast<int>(size.x), static_cast<int>(size.y));
+}
+
+}  // namespace oflab::json_fields

@@ -1,0 +1,101 @@
+// One interface for everything oflab animates frame by frame: a single textured plane driven
+// by a motion script (core/engine/engine.h), a scene of polygons walked through by a viewer
+// script (core/scene/scene_animator.h), and Hofmann's scene shifting of such a scene
+// (core/scene_shifting/scene_shifting_renderer.h). Each owns its script, so a run driver,
+// the GUI and the experiments play any of them through start() and advance() alone.
+//
+// Layers. Every animator shows its frame as layers composited back to front: one for a
+// plane, one per polygon for a scene, one per depth slice for scene shifting. Each frame a
+// drawn layer is updated at one level (core/engine/decision.h); scene shifting maps its
+// slice updates onto levels (still = none, shifted = translate, scaled = affine, rebuilt =
+// rerender) and counts each polygon of a slice as one layer, so level histograms of all
+// three are comparable polygon for polygon.
+//
+// Units: pixels of the output image, milliseconds of wall time, world units for poses.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/decision.h"
+#include "engine/engine.h"
+#include "flow/camera.h"
+#include "image/image.h"
+#include "scene/scene.h"
+#include "scene/viewer_script.h"
+
+namespace oflab {
+
+// What an animator did in one frame, in terms every animator shares. Fields that do not
+// apply to an animator stay zero (e.g. culling counts for a single plane).
+struct AnimationFrame {
+  int frame = 0;
+  int layers = 0;                         // layers (polygons) of the source
+  std::array<int, kLevelCount> levels{};  // drawn layers per update level
+  int back_facing = 0;                    // culled: seen from behind or edge-on
+  int outside_frustum = 0;                // culled: nothing inside the view frustum
+  int hidden = 0;                         // wholly covered by layers in front: not updated
+  int clipped = 0;                        // rendered exactly after clipping (also rerender)
+  double time_ms = 0.0;                   // the whole frame
+  double update_ms = 0.0;                 // of which updating layers (warps, bookkeeping)
+  double composite_ms = 0.0;              // of which clearing the frame and compositing
+  double visibility_ms = 0.0;             // of which the hidden test
+  std::int64_t pixels_written = 0;        // by the warp kernels
+  std::int64_t pixels_composited = 0;     // into the frame
+  double hidden_area_px = 0.0;            // image area of the hidden layers
+  // Largest measured error over the drawn layers, pixels (0 when none was drawn; see
+  // each animator for what is measured).
+  double max_measured_error_px = 0.0;
+  // The engine report of each layer updated this frame, in layer order: exactly one for a
+  // single plane (also when it is not visible), one per animated polygon for a scene, none
+  // for scene shifting (its slices keep no per-term books).
+  std::vector<FrameReport> layer_reports;
+  std::string note;  // why the frame is special, empty when it is not
+
+  int culled() const { return back_facing + outside_frustum; }
+  int drawn() const;  // sum of levels
+};
+
+// A layer's outline in top-left image pixels and the level it was updated at.
+struct LayerOutline {
+  std::vector<Vec2> points;
+  Level level = Level::kNone;
+};
+
+class Animator {
+ public:
+  virtual ~Animator() = default;
+
+  // Frames of the script (>= 1).
+  virtual int frame_count() const = 0;
+  // The frame shown now: -1 before start(), then 0 .. frame_count() - 1.
+  virtual int frame() const = 0;
+
+  // Frame 0: every visible layer is rendered exactly. May be called again to restart.
+  virtual AnimationFrame start() = 0;
+  // The next frame. Precondition: 0 <= frame() < frame_count() - 1.
+  virtual AnimationFrame advance() = 0;
+
+  // The displayed frame: camera-sized, premultiplied RGBA, transparent where nothing is.
+  virtual const Image& image() const = 0;
+  virtual const Camera& camera() const = 0;
+  // Outlines of the drawn layers with their levels, back to front.
+  virtual std::vector<LayerOutline> outlines() const = 0;
+
+  // What is animated, as a scene seen by a viewer: the exact projection of the current
+  // frame is `scene()` seen from `view()` with camera(). A single plane is the polygon of
+  // its frame-0 pose with the viewer frame of frame 0 as the world (plane_as_scene).
+  virtual const Scene& scene() const = 0;
+  virtual ViewerPose view() const = 0;
+};
+
+// Plays a motion script: frame k shows script.frames[k].pose. Precondition: the script has
+// frames; `texture` premultiplied RGBA.
+std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
+                                              const EngineSettings& settings);
+
+}  // namespace oflab

@@ -1,0 +1,60 @@
+// Flow measures and level choice (dissertation section 5.4.5, corrected: absolute values,
+// per-corner bounds in pixels, a fourth "higher order" term with the right units, and
+// budgets on the total neglected error; see manual/animation.md).
+#include "engine/decision.h"
+
+#include <algorithm>
+
+#include "flow/homography.h"
+
+namespace oflab {
+
+const char* level_name(Level level) {
+  switch (level) {
+    case Level::kNone: return "none";
+    case Level::kTranslate: return "translate";
+    case Level::kAffine: return "affine";
+    case Level::kPerspective: return "perspective";
+    case Level::kRerender: return "rerender";
+  }
+  return "none";
+}
+
+FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const RigidMotion& motion,
+                          const std::vector<Vec2>& corners_centred) {
+  FlowMeasures m;
+  for (const Vec2& c : corners_centred) m.expansion_point += c;
+  m.expansion_point /= static_cast<double>(corners_centred.size());
+  const PlanarFlowCoefficients k =
+      reexpand(planar_flow_coefficients(camera, pose, motion), m.expansion_point);
+  m.flow[0] = glm::length(Vec2(k.tx, k.ty));
+  for (const Vec2& c : corners_centred) {
+    const Vec2 d = c - m.expansion_point;
+    m.size = std::max(m.size, glm::length(d));
+    const Vec2 first(k.j11 * d.x + k.j12 * d.y, k.j21 * d.x + k.j22 * d.y);
+    const double q = k.px * d.x + k.py * d.y;
+    m.flow[1] = std::max(m.flow[1], glm::length(first));
+    m.flow[2] = std::max(m.flow[2], glm::length(q * d));
+    const Vec2 residual = 0.5 * image_acceleration(camera, pose, motion, c) - q * flow_at(k, c);
+    m.flow[3] = std::max(m.flow[3], glm::length(residual));
+  }
+  return m;
+}
+
+double neglected_error(const TermArray& accumulated, const TermArray& flow, Level level) {
+  double sum = 0.0;
+  for (int k = static_cast<int>(level); k < kTermCount; ++k) sum += accumulated[k] + flow[k];
+  return sum;
+}
+
+Level choose_level(const TermArray& accumulated, const TermArray& flow,
+                   const TermArray& thresholds, bool allow_perspective) {
+  for (int l = 0; l < kTermCount; ++l) {
+    const Level level = static_cast<Level>(l);
+    if (level == Level::kPerspective && !allow_perspective) break;
+    if (neglected_error(accumulated, flow, level) <= thresholds[l]) return level;
+  }
+  return Level::kRerender;
+}
+
+}  // namespace oflab

@@ -1,0 +1,59 @@
+// The decision procedure of Algorithm 1 (dissertation sections 5.4.5 and 5.6.1), corrected
+// as documented in manual/animation.md ("The decision rule") and manual/theory.md#errata,
+// items 22-25.
+//
+// Terms. The frame-to-frame image motion of a plane splits into four terms:
+//   0 translation, 1 first order (affine), 2 second order (perspective px, py), and
+//   3 higher order (what the first-order Taylor homography H1 misses over one frame).
+// Levels. Each update level handles the terms below it and neglects the rest:
+//   none neglects 0-3; translate neglects 1-3; affine neglects 2-3; perspective
+//   neglects 3; re-render neglects nothing.
+// Every measure is in pixels of the output image: the largest displacement, over the
+// corners of the displayed polygon, that a term causes in one frame.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "flow/camera.h"
+#include "flow/flow_field.h"
+#include "flow/motion.h"
+#include "flow/plane.h"
+
+namespace oflab {
+
+enum class Level { kNone = 0, kTranslate = 1, kAffine = 2, kPerspective = 3, kRerender = 4 };
+constexpr int kLevelCount = 5;
+constexpr int kTermCount = 4;
+const char* level_name(Level level);  // "none", "translate", "affine", "perspective", "rerender"
+
+using TermArray = std::array<double, kTermCount>;
+
+// Per-frame flow measures (pixels per frame) of the four terms, from the planar flow
+// coefficients re-expanded about `expansion_point` (centred pixels), evaluated at the
+// displayed polygon's corners (centred pixels):
+//   flow_0 = |(tx, ty)|,  flow_1 = max |J d|,  flow_2 = max |(px dx + py dy) d|,
+//   flow_3 = max |acc/2 - (px dx + py dy) v|   (the H1 residual over one frame),
+// with d = corner - expansion_point, v the flow and acc the image acceleration at the corner.
+// Precondition: valid camera and pose; corners not empty.
+struct FlowMeasures {
+  TermArray flow{};
+  Vec2 expansion_point{0.0};
+  double size = 0.0;  // largest |d| over the corners, pixels
+};
+FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const RigidMotion& motion,
+                          const std::vector<Vec2>& corners_centred);
+
+// Chooses the update level from the accumulated errors and this frame's flow. A level is
+// acceptable when the sum, over the terms it neglects, of (accumulated + flow) stays within
+// that level's threshold; the lowest acceptable level wins and re-render is always
+// acceptable. thresholds[L] belongs to level L+1's lower neighbour: thresholds[0] is the
+// budget of "none", [1] of "translate", [2] of "affine", [3] of "perspective".
+// `allow_perspective` false (affine mode) makes perspective unacceptable.
+Level choose_level(const TermArray& accumulated, const TermArray& flow,
+                   const TermArray& thresholds, bool allow_perspective);
+
+// The error a level leaves pending: the sum of (accumulated + flow) over its neglected terms.
+double neglected_error(const TermArray& accumulated, const TermArray& flow, Level level);
+
+}  // namespace oflab

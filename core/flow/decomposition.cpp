@@ -1,0 +1,106 @@
+// Eq. 20 and corrected eq. 55 (planar-flow-math.md section 5).
+#include "flow/decomposition.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace oflab {
+namespace {
+
+struct Normalised {
+  double a, b, c, d, e, f, g, h;
+};
+
+Normalised normalised_entries(const Mat3& w) {
+  for (int r = 0; r < 3; ++r) {
+    for (int col = 0; col < 3; ++col) {
+      if (!std::isfinite(entry(w, r, col))) {
+        throw std::invalid_argument("homography has a non-finite entry");
+      }
+    }
+  }
+  const double w33 = entry(w, 2, 2);
+  double scale = 0.0;
+  for (int i = 0; i < 3; ++i) scale = std::max(scale, std::abs(entry(w, 2, i)));
+  if (std::abs(w33) <= 1e-12 * scale || w33 == 0.0) {
+    throw std::invalid_argument(
+        "homography sends the source origin to infinity (W33 = 0): it cannot be decomposed");
+  }
+  const Mat3 n = w * (1.0 / w33);
+  return {entry(n, 0, 0), entry(n, 0, 1), entry(n, 0, 2), entry(n, 1, 0),
+          entry(n, 1, 1), entry(n, 1, 2), entry(n, 2, 0), entry(n, 2, 1)};
+}
+
+glm::dmat2 jacobian_of(const Normalised& n) {
+  // glm::dmat2 is column-major: columns (A11, A21) and (A12, A22).
+  return glm::dmat2(n.a - n.c * n.g, n.d - n.f * n.g, n.b - n.c * n.h, n.e - n.f * n.h);
+}
+
+}  // namespace
+
+TranslateLinearPerspective decompose_translate_linear_perspective(const Mat3& w) {
+  const Normalised n = normalised_entries(w);
+  const glm::dmat2 a = jacobian_of(n);
+  TranslateLinearPerspective out;
+  out.translation = translation_matrix(n.c, n.f);
+  out.linear = mat3_from_rows({a[0][0], a[1][0], 0.0}, {a[0][1], a[1][1], 0.0}, {0.0, 0.0, 1.0});
+  out.perspective = mat3_from_rows({1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {n.g, n.h, 1.0});
+  return out;
+}
+
+glm::dmat2 origin_jacobian(const Mat3& w) { return jacobian_of(normalised_entries(w)); }
+
+bool parse_delta_policy(const std::string& text, DeltaPolicy* policy) {
+  if (text == "1" || text == "one") {
+    *policy = DeltaPolicy::kOne;
+  } else if (text == "det") {
+    *policy = DeltaPolicy::kAbsDet;
+  } else if (text == "sqrt") {
+    *policy = DeltaPolicy::kSqrtAbsDet;
+  } else if (text == "fourth-root") {
+    *policy = DeltaPolicy::kFourthRootAbsDet;
+  } else if (text == "dissertation") {
+    *policy = DeltaPolicy::kDissertation;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* delta_policy_name(DeltaPolicy policy) {
+  switch (policy) {
+    case DeltaPolicy::kOne: return "1";
+    case DeltaPolicy::kAbsDet: return "det";
+    case DeltaPolicy::kSqrtAbsDet: return "sqrt";
+    case DeltaPolicy::kFourthRootAbsDet: return "fourth-root";
+    case DeltaPolicy::kDissertation: return "dissertation";
+  }
+  return "1";
+}
+
+double delta_for(DeltaPolicy policy, double det_a) {
+  const double m = std::abs(det_a);
+  if (!std::isfinite(m) || m == 0.0) return 1.0;
+  switch (policy) {
+    case DeltaPolicy::kOne: return 1.0;
+    case DeltaPolicy::kAbsDet: return m;
+    case DeltaPolicy::kSqrtAbsDet: return std::sqrt(m);
+    case DeltaPolicy::kFourthRootAbsDet: return std::sqrt(std::sqrt(m));
+    case DeltaPolicy::kDissertation: return m < 1.0 ? std::sqrt(m) : 1.0;
+  }
+  return 1.0;
+}
+
+AffinePerspectiveSplit split_affine_perspective(const Mat3& w, DeltaPolicy policy) {
+  const Normalised n = normalised_entries(w);
+  const glm::dmat2 a = jacobian_of(n);
+  const double delta = delta_for(policy, glm::determinant(a));
+  AffinePerspectiveSplit out;
+  out.delta = delta;
+  out.perspective = mat3_from_rows({delta, 0.0, 0.0}, {0.0, delta, 0.0}, {n.g, n.h, 1.0});
+  out.affine = mat3_from_rows({a[0][0] / delta, a[1][0] / delta, n.c},
+                              {a[0][1] / delta, a[1][1] / delta, n.f}, {0.0, 0.0, 1.0});
+  return out;
+}
+
+}  // namespace oflab

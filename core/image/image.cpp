@@ -1,0 +1,84 @@
+// RGBA8 premultiplied images: storage and alpha conversions.
+#include "image/image.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "image/pixel_math.h"
+
+namespace oflab {
+namespace {
+
+void check_dimensions(int width, int height) {
+  if (width < 0 || height < 0 || width > kMaxImageDimension || height > kMaxImageDimension) {
+    throw std::invalid_argument("Image: size " + std::to_string(width) + " x " +
+                                std::to_string(height) + " is outside 0.." +
+                                std::to_string(kMaxImageDimension));
+  }
+}
+
+std::uint8_t unpremultiply_channel(std::uint8_t c, std::uint8_t a) {
+  const unsigned value = (static_cast<unsigned>(c) * 255u + a / 2u) / a;
+  return static_cast<std::uint8_t>(std::min(value, 255u));
+}
+
+}  // namespace
+
+Pixel premultiply(Pixel straight) {
+  const unsigned a = straight.a;
+  return Pixel{div255_round(straight.r * a), div255_round(straight.g * a),
+               div255_round(straight.b * a), straight.a};
+}
+
+Pixel unpremultiply(Pixel premultiplied) {
+  if (premultiplied.a == 0) return Pixel{};
+  const std::uint8_t a = premultiplied.a;
+  return Pixel{unpremultiply_channel(premultiplied.r, a), unpremultiply_channel(premultiplied.g, a),
+               unpremultiply_channel(premultiplied.b, a), a};
+}
+
+Image::Image(int width, int height, Pixel fill) {
+  check_dimensions(width, height);
+  if (width == 0 || height == 0) return;
+  width_ = width;
+  height_ = height;
+  pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+}
+
+void Image::fill(Pixel value) { std::fill(pixels_.begin(), pixels_.end(), value); }
+
+Image image_from_straight_rgba(int width, int height,
+                               const std::vector<std::uint8_t>& straight_rgba) {
+  check_dimensions(width, height);
+  const std::size_t needed = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
+  if (straight_rgba.size() < needed) {
+    throw std::invalid_argument("image_from_straight_rgba: buffer holds " +
+                                std::to_string(straight_rgba.size()) + " bytes, " +
+                                std::to_string(needed) + " needed");
+  }
+  Image image(width, height);
+  for (std::size_t i = 0; i < image.pixel_count(); ++i) {
+    const std::uint8_t* p = &straight_rgba[i * 4];
+    image.pixels()[i] = premultiply(Pixel{p[0], p[1], p[2], p[3]});
+  }
+  return image;
+}
+
+std::vector<std::uint8_t> straight_rgba_from_image(const Image& image) {
+  std::vector<std::uint8_t> bytes(image.pixel_count() * 4);
+  for (std::size_t i = 0; i < image.pixel_count(); ++i) {
+    const Pixel p = unpremultiply(image.pixels()[i]);
+    bytes[i * 4 + 0] = p.r;
+    bytes[i * 4 + 1] = p.g;
+    bytes[i * 4 + 2] = p.b;
+    bytes[i * 4 + 3] = p.a;
+  }
+  return bytes;
+}
+
+void premultiply_in_place(Image& image) {
+  for (Pixel& p : image.pixels()) p = premultiply(p);
+}
+
+}  // namespace oflab

@@ -1,0 +1,38 @@
+// The warp kernels (dissertation appendix A.1, errata 28-30 fixed), in two passes:
+//  1. scan conversion of the warped polygon with two active edges (scan_conversion.h);
+//     the pixels at either end of a span whose samples would leave the source image
+//     (rounding at the source border, bilinear taps beyond it) are sampled exactly with
+//     clamping. The floor of a linear or linear-fractional function is monotone along a
+//     row, so checking the two ends suffices and the rest of the span is one "fast run"
+//     whose inner loop needs no bounds checks;
+//  2. the fast runs, in vertical strips of 512 output columns so that consecutive rows
+//     reuse the same source cache lines and pages, stepping incrementally:
+//     - affine: 64-bit fixed point (inverse_map.h), two integer additions per pixel;
+//     - perspective: numerators and denominator stepped exactly in double (they are
+//       integers below 2^53), one packed division per two pixels giving both pixels'
+//       reciprocals of D, and products with them. For nearest sampling the numerators
+//       are offset by 1/2, which keeps every quotient at least 1/(2D) from an integer,
+//       so the truncated products are the exact floors (warp_kernels.cpp), nearest
+//       sampling needs no tie-breaking and equals the per-pixel reference. With AVX2
+//       (below) one division gives four pixels' reciprocals;
+//     - bilinear: 16.16 fixed-point positions and a SIMD blend (bilinear_blend.h), two
+//       pixels per step with SSE2, four with AVX2 where the CPU has it (chosen at run
+//       time; setting the environment variable OFLAB_WARP_NO_AVX2 keeps SSE2); both are
+//       within one level of the exact interpolation.
+// No virtual calls or std::function: the four kernels are template instantiations.
+#pragma once
+
+#include <cstdint>
+
+#include "image/image.h"
+#include "image/warp_plan.h"
+
+namespace oflab {
+
+// Runs the plan's kernel (plan.affine_kernel) with its sampling. Preconditions:
+// output.width() == plan.output_width, output.height() == plan.output_height, and
+// `source` is the image of the layer the plan was prepared for. Returns the number of
+// output pixels written. Never reads or writes outside either image.
+std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output);
+
+}  // namespace oflab

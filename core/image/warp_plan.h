@@ -1,0 +1,44 @@
+// Preparation of a warp, shared by the kernels (core/image/warp_kernels.h) and the per-pixel
+// reference used in the tests: validation of the matrix, the horizon clip of the source
+// polygon, the warped polygon in output pixel coordinates and the exact inverse map.
+// Conventions and errors as in core/image/warp.h.
+#pragma once
+
+#include "image/inverse_map.h"
+#include "image/layer.h"
+#include "image/polygon.h"
+#include "image/warp.h"
+
+namespace oflab {
+
+// A validated warp before the output is known.
+struct PreparedWarp {
+  Mat3 matrix;                   // source -> destination, scaled (M33 = 1 when affine)
+  bool affine_kernel = true;     // the kernel that will run
+  ConvexPolygon warped_polygon;  // image of the horizon-clipped source polygon, in
+                                 // destination coordinates; empty if nothing is visible
+};
+
+// Validates `source_to_dest` and `options` and warps the source polygon.
+// Throws std::invalid_argument as documented in core/image/warp.h.
+PreparedWarp prepare_warp(const Layer& source, const Mat3& source_to_dest,
+                          const WarpOptions& options);
+
+// Everything a kernel needs for one output image.
+struct WarpPlan {
+  bool empty = true;  // nothing to draw: the kernels return at once
+  bool affine_kernel = true;
+  Sampling sampling = Sampling::kNearest;
+  ConvexPolygon polygon;  // warped polygon in output pixel coordinates
+  InverseMap map;         // output pixel -> sampling position (inverse_map.h)
+  int output_width = 0;
+  int output_height = 0;
+};
+
+// Plans the warp of a prepared warp into an output of the given size whose pixel (0, 0)
+// has its corner at destination coordinates (origin_x, origin_y).
+// Throws std::invalid_argument (see make_inverse_map) when the map is out of range.
+WarpPlan plan_warp(const PreparedWarp& prepared, Sampling sampling, int output_width,
+                   int output_height, int origin_x, int origin_y);
+
+}  // namespace oflab

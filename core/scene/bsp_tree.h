@@ -1,0 +1,80 @@
+// Binary space partitioning of a static scene for back-to-front ordering (dissertation
+// section 5.5.1; Fuchs, Kedem and Naylor 1980). Built once per scene; each frame a traversal
+// from the eye position gives the painter's order of the polygons' fragments, so layers can
+// be composited without a depth buffer.
+//
+// Each node holds a splitting plane (the plane of one polygon) and the fragments lying in
+// it; fragments wholly in front of the plane go to the front subtree, wholly behind to the
+// back subtree, and a polygon that straddles the plane is split into two fragments, one for
+// each side. Fragments keep their polygon's texture mapping (normalised texture
+// coordinates of every vertex), so a split polygon is still drawn from one layer.
+//
+// Precondition: polygons do not intersect each other (they may touch along edges and may be
+// coplanar without overlapping). Intersecting polygons still give an order, but no order
+// is then correct for every pixel.
+#pragma once
+
+#include <vector>
+
+#include "flow/geometry.h"
+#include "scene/scene.h"
+
+namespace oflab {
+
+struct BspFragment {
+  int polygon = 0;             // index of the scene polygon it belongs to
+  std::vector<Vec3> vertices;  // world coordinates, convex, in outline order
+  std::vector<Vec2> uv;        // normalised texture coordinates of the same vertices
+  bool whole = true;           // the entire polygon (false for the pieces of a split)
+};
+
+struct BspStats {
+  int nodes = 0;
+  int fragments = 0;  // >= the number of polygons
+  int splits = 0;     // polygons or fragments cut in two while building
+  int depth = 0;      // longest root-to-leaf path, in nodes
+};
+
+class BspTree {
+ public:
+  BspTree() = default;
+
+  // Builds the tree. The splitting plane of each node is chosen among up to 24 candidate
+  // fragments to keep splits few and the two sides balanced. Deterministic.
+  // Precondition: every polygon is valid (scene_polygon_problem is empty).
+  explicit BspTree(const std::vector<ScenePolygon>& polygons);
+
+  // Replaces `order` with the indices of every fragment, back to front as seen from `eye`
+  // (world coordinates): a fragment never comes after one it can hide. Fragments in a
+  // plane through the eye are seen edge-on and keep their node's position.
+  void back_to_front(const Vec3& eye, std::vector<int>& order) const;
+
+  const std::vector<BspFragment>& fragments() const { return fragments_; }
+  const BspStats& stats() const { return stats_; }
+
+ private:
+  struct Plane {
+    Vec3 normal{0.0};     // unit normal
+    double offset = 0.0;  // plane: dot(normal, x) == offset
+  };
+  struct Node {
+    Vec3 normal{0.0};     // unit normal of the splitting plane
+    double offset = 0.0;  // plane: dot(normal, x) == offset
+    std::vector<int> coplanar;
+    int front = -1;
+    int back = -1;
+  };
+
+  int build(std::vector<int> fragment_ids, int depth);
+  int choose_splitter(const std::vector<int>& fragment_ids) const;
+  void traverse(int node, const Vec3& eye, std::vector<int>& order) const;
+
+  std::vector<Node> nodes_;
+  std::vector<BspFragment> fragments_;
+  std::vector<Plane> planes_;  // per scene polygon
+  double epsilon_ = 1e-9;      // plane-side tolerance, world units
+  int root_ = -1;
+  BspStats stats_;
+};
+
+}  // namespace oflab

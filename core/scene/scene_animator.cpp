@@ -1,0 +1,387 @@
+// Algorithm 1 for many polygons with a moving viewer (dissertation sections 5.5 and 5.6.2),
+// with visibility culling beyond the dissertation; see core/scene/scene_animator.h.
+#include "scene/scene_animator.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "image/composite.h"
+#include "flow/homography.h"
+
+namespace oflab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+glm::ivec2 texture_size(const Image& texture) { return {texture.width(), texture.height()}; }
+
+ConvexPolygon texel_polygon(const std::vector<Vec2>& uv, glm::ivec2 size) {
+  std::vector<Vec2> texels;
+  for (const Vec2& p : uv) texels.emplace_back(p.x * size.x, p.y * size.y);
+  return make_polygon_unchecked(std::move(texels));
+}
+
+// The intersection of two convex polygons: `a` clipped by every edge of `b`.
+ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
+  const std::vector<Vec2>& v = b.vertices();
+  for (std::size_t k = 0; k < v.size() && !a.empty(); ++k) {
+    const Vec2 e = v[(k + 1) % v.size()] - v[k];
+    a = clip_to_half_plane(a, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
+  }
+  return b.empty() ? ConvexPolygon() : a;
+}
+
+// Texel -> top-left pixel homography of the polygon's texture rectangle seen from `view`,
+// scaled so that its denominator is the depth Z of the texel's point (positive in front of
+// the eye, negative behind it), whichever corner lies behind the eye.
+Mat3 depth_signed_texture_warp(const Camera& camera, const PlanePose& pose) {
+  const PlaneAxes a = plane_axes(pose);
+  const Mat3 plane_to_camera(a.right, a.up, pose.point);
+  const Mat3 h = translation_matrix(camera.cx, camera.cy) * centred_intrinsics(camera) *
+                 plane_to_camera * texel_to_plane(pose);
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(entry(h, r, c)));
+  }
+  return h * (1.0 / largest);
+}
+
+}  // namespace
+
+const char* polygon_status_name(PolygonStatus status) {
+  switch (status) {
+    case PolygonStatus::kBackFacing:
+      return "back-facing";
+    case PolygonStatus::kOutsideFrustum:
+      return "outside-frustum";
+    case PolygonStatus::kHidden:
+      return "hidden";
+    case PolygonStatus::kAnimated:
+      return "animated";
+    case PolygonStatus::kClipped:
+      return "clipped";
+  }
+  return "animated";
+}
+
+int SceneFrameReport::drawn() const {
+  int n = 0;
+  for (int c : levels) n += c;
+  return n;
+}
+
+struct SceneAnimator::PolygonState {
+  std::vector<Vec3> world_vertices;  // the outline in world coordinates
+  std::vector<Vec2> uv;              // the outline, normalised texture coordinates
+  glm::ivec2 texture_size{0, 0};
+  bool opaque = false;
+  bool whole = true;  // one unsplit fragment in the BSP tree
+  std::unique_ptr<PlaneAnimator> animator;
+  bool live = false;  // the animator shows the previous frame
+  // This frame:
+  ViewPolygon clipped;         // the outline clipped to the view frustum
+  ConvexPolygon exact_region;  // its exact image, top-left pixels (once region_known)
+  bool region_known = false;
+  bool needs_clipping = false;  // near plane or guard band: render clipped, exactly
+  bool updated = false;
+  PlacedLayer clipped_layer;  // the clipped exact render (status kClipped)
+
+  const PlacedLayer* shown(PolygonStatus status) const {
+    if (status == PolygonStatus::kClipped) return &clipped_layer;
+    return animator ? &animator->displayed() : nullptr;
+  }
+};
+
+SceneAnimator::SceneAnimator(const Scene& scene, const Camera& camera,
+                             const SceneSettings& settings)
+    : scene_(scene), camera_(camera), settings_(settings) {
+  if (const char* problem = camera_problem(camera); problem && *problem) {
+    throw std::invalid_argument(std::string("camera: ") + problem);
+  }
+  if (!(settings.near > 0.0 && std::isfinite(settings.near))) {
+    throw std::invalid_argument("near plane distance must be positive");
+  }
+  if (!(settings.guard_band >= 0.0 && settings.guard_band <= 16.0)) {
+    throw std::invalid_argument("guard band must be from 0 to 16 image sizes");
+  }
+  if (!(settings.occluder_inset_px >= 0.0) || !(settings.candidate_margin_px >= 0.0)) {
+    throw std::invalid_argument("hidden-test margins must not be negative");
+  }
+  for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+    const PolygonProblem p = scene_polygon_problem(scene, scene.polygons[i]);
+    if (!p.field.empty()) {
+      throw std::invalid_argument("polygon " + std::to_string(i) + " ('" + scene.polygons[i].name +
+                                  "'): " + p.field + ": " + p.message);
+    }
+  }
+  frustum_ = view_frustum(camera_, settings_.near, 1.0);
+  bsp_ = BspTree(scene.polygons);
+  for (const Image& t : scene.textures) scratch_textures_.push_back(make_layer(t));
+  std::vector<int> opaque_texture(scene.textures.size(), -1);  // -1: not looked at yet
+  for (const ScenePolygon& polygon : scene.polygons) {
+    auto state = std::make_unique<PolygonState>();
+    state->world_vertices = polygon_vertices(polygon);
+    state->uv = polygon_outline(polygon);
+    const Image& texture = scene.textures[polygon.texture];
+    state->texture_size = texture_size(texture);
+    // Rectangles of one texture share the answer; only outlines need a look of their own.
+    if (polygon.outline.empty()) {
+      if (opaque_texture[polygon.texture] < 0) {
+        opaque_texture[polygon.texture] = polygon_is_opaque(polygon, texture);
+      }
+      state->opaque = opaque_texture[polygon.texture] == 1;
+    } else {
+      state->opaque = polygon_is_opaque(polygon, texture);
+    }
+    states_.push_back(std::move(state));
+  }
+  for (const BspFragment& f : bsp_.fragments()) {
+    if (!f.whole) states_[f.polygon]->whole = false;
+  }
+  statuses_.assign(scene.polygons.size(), PolygonStatus::kOutsideFrustum);
+  levels_.assign(scene.polygons.size(), Level::kNone);
+  frame_ = Image(camera_.width, camera_.height);
+}
+
+SceneAnimator::~SceneAnimator() = default;
+
+SceneFrameReport SceneAnimator::start(const ViewerPose& view) {
+  frame_index_ = 0;
+  for (auto& s : states_) s->live = false;
+  return run_frame(nullptr, nullptr, view);
+}
+
+SceneFrameReport SceneAnimator::advance(const ViewerPose& previous, const RigidMotion& motion,
+                                        const ViewerPose& current) {
+  ++frame_index_;
+  return run_frame(&previous, &motion, current);
+}
+
+void SceneAnimator::classify(const ViewerPose& view, SceneFrameReport& report) {
+  const double gw = settings_.guard_band * camera_.width;
+  const double gh = settings_.guard_band * camera_.height;
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    PolygonState& s = *states_[i];
+    const ScenePolygon& polygon = scene_.polygons[i];
+    s.updated = false;
+    s.exact_region = ConvexPolygon();
+    s.region_known = false;
+    if (is_back_facing(direction_to_view(view, polygon.front), to_view(view, polygon.centre))) {
+      statuses_[i] = PolygonStatus::kBackFacing;
+      ++report.back_facing;
+      continue;
+    }
+    s.clipped.points.clear();
+    for (const Vec3& v : s.world_vertices) s.clipped.points.push_back(to_view(view, v));
+    s.clipped.uv = s.uv;
+    clip_to_frustum_in_place(s.clipped, frustum_);
+    if (s.clipped.empty()) {
+      statuses_[i] = PolygonStatus::kOutsideFrustum;
+      ++report.outside_frustum;
+      continue;
+    }
+    statuses_[i] = PolygonStatus::kHidden;  // until it is updated
+    // The engine animates the whole texture rectangle: it must lie beyond the near plane
+    // and project within the guard band.
+    s.needs_clipping = false;
+    for (const Vec2& corner : {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)}) {
+      const Vec3 p = to_view(view, polygon_point(polygon, corner));
+      if (p.z < settings_.near) {
+        s.needs_clipping = true;
+        break;
+      }
+      const Vec2 q = centred_to_pixel(camera_, project_centred(camera_, p));
+      if (q.x < -gw || q.x > camera_.width + gw || q.y < -gh || q.y > camera_.height + gh) {
+        s.needs_clipping = true;
+        break;
+      }
+    }
+  }
+}
+
+ConvexPolygon SceneAnimator::exact_region(const ViewPolygon& clipped) const {
+  if (clipped.empty()) return ConvexPolygon();
+  return project_to_pixels(camera_, clipped);
+}
+
+ConvexPolygon SceneAnimator::fragment_region(int fragment, const ViewerPose& view) const {
+  const BspFragment& f = bsp_.fragments()[fragment];
+  const PolygonState& s = *states_[f.polygon];
+  if (statuses_[f.polygon] == PolygonStatus::kAnimated && s.animator) {
+    // Through the displayed warp, so the pieces of one layer fit together exactly.
+    try {
+      return transform(texel_polygon(f.uv, s.texture_size), s.animator->displayed_warp());
+    } catch (const std::invalid_argument&) {
+      // Falls through to the exact image of the piece.
+    }
+  }
+  ViewPolygon piece;
+  for (const Vec3& v : f.vertices) piece.points.push_back(to_view(view, v));
+  piece.uv = f.uv;
+  return exact_region(clip_to_frustum(piece, frustum_));
+}
+
+const ConvexPolygon& SceneAnimator::polygon_region(int polygon) {
+  PolygonState& s = *states_[polygon];
+  if (!s.region_known) {
+    s.exact_region = exact_region(s.clipped);
+    s.region_known = true;
+  }
+  return s.exact_region;
+}
+
+bool SceneAnimator::fragment_hidden(int fragment, const ViewerPose& view) {
+  const BspFragment& f = bsp_.fragments()[fragment];
+  const PolygonState& s = *states_[f.polygon];
+  if (s.whole) return occlusion_.covers(polygon_region(f.polygon), settings_.candidate_margin_px);
+  ViewPolygon piece;
+  for (const Vec3& v : f.vertices) piece.points.push_back(to_view(view, v));
+  piece.uv = f.uv;
+  return occlusion_.covers(exact_region(clip_to_frustum(piece, frustum_)),
+                           settings_.candidate_margin_px);
+}
+
+void SceneAnimator::render_clipped(int index, const ViewerPose& view, SceneFrameReport& report) {
+  PolygonState& s = *states_[index];
+  const ScenePolygon& polygon = scene_.polygons[index];
+  s.clipped_layer = PlacedLayer{};
+  Layer& texture = scratch_textures_[polygon.texture];
+  texture.polygon = texel_polygon(s.clipped.uv, s.texture_size);
+  const Mat3 warp = depth_signed_texture_warp(camera_, polygon_pose(polygon, view, s.texture_size));
+  double z_min = s.clipped.points[0].z, z_max = z_min;
+  for (const Vec3& p : s.clipped.points) {
+    z_min = std::min(z_min, p.z);
+    z_max = std::max(z_max, p.z);
+  }
+  WarpOptions options;
+  options.sampling = settings_.engine.sampling;
+  // The warp's horizon margin must not cut into the clipped polygon itself.
+  options.horizon_epsilon = std::clamp(0.5 * z_min / z_max, 1e-4, kDefaultHorizonEpsilon);
+  try {
+    WarpedLayer w = warp_layer(texture, warp, options);
+    report.pixels_written += w.stats.pixels_written;
+    s.clipped_layer = PlacedLayer{std::move(w.layer), w.offset_x, w.offset_y};
+  } catch (const std::invalid_argument&) {
+    // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.
+  }
+}
+
+void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const RigidMotion* motion,
+                                   const ViewerPose& current, SceneFrameReport& report) {
+  PolygonState& s = *states_[index];
+  const ScenePolygon& polygon = scene_.polygons[index];
+  const auto t0 = Clock::now();
+  s.updated = true;
+  if (s.needs_clipping) {
+    render_clipped(index, current, report);
+    statuses_[index] = PolygonStatus::kClipped;
+    levels_[index] = Level::kRerender;
+    ++report.levels[static_cast<int>(Level::kRerender)];
+    ++report.clipped;
+    s.live = false;
+    report.update_ms += ms_since(t0);
+    return;
+  }
+  if (!s.animator) {
+    const Image& texture = scene_.textures[polygon.texture];
+    s.animator = std::make_unique<PlaneAnimator>(
+        camera_, make_layer(texture, texel_polygon(s.uv, s.texture_size)), settings_.engine);
+  }
+  const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
+  const FrameReport r =
+      s.live && previous && motion
+          ? s.animator->advance(polygon_pose(polygon, *previous, s.texture_size), *motion, pose)
+          : s.animator->start(pose);
+  s.live = true;
+  statuses_[index] = PolygonStatus::kAnimated;
+  levels_[index] = r.level;
+  ++report.levels[static_cast<int>(r.level)];
+  report.pixels_written += r.pixels_written;
+  if (r.visible)
+    report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
+  report.update_ms += ms_since(t0);
+}
+
+SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const RigidMotion* motion,
+                                          const ViewerPose& current) {
+  const auto t0 = Clock::now();
+  SceneFrameReport report;
+  report.frame = frame_index_;
+  report.polygons = static_cast<int>(scene_.polygons.size());
+  classify(current, report);
+  bsp_.back_to_front(eye_position(current), order_);
+  const std::vector<BspFragment>& fragments = bsp_.fragments();
+  fragment_drawn_.assign(fragments.size(), 0);
+  fragment_regions_.resize(fragments.size());
+  occlusion_.clear(camera_.width, camera_.height);
+  // Front to back: decide visibility against what is already in front, update, and let
+  // the drawn fragment hide what lies behind it.
+  for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
+    const int f = *it;
+    const int p = fragments[f].polygon;
+    PolygonState& s = *states_[p];
+    if (statuses_[p] == PolygonStatus::kBackFacing ||
+        statuses_[p] == PolygonStatus::kOutsideFrustum) {
+      continue;
+    }
+    if (!s.updated) {
+      if (settings_.skip_hidden) {
+        const auto tv = Clock::now();
+        const bool hidden = fragment_hidden(f, current);
+        report.visibility_ms += ms_since(tv);
+        if (hidden) continue;
+      }
+      update_polygon(p, previous, motion, current, report);
+    }
+    const PlacedLayer* shown = s.shown(statuses_[p]);
+    if (!shown || shown->layer.empty()) continue;
+    fragment_drawn_[f] = 1;
+    if (!s.whole) fragment_regions_[f] = fragment_region(f, current);
+    if (settings_.skip_hidden && s.opaque) {
+      // What this fragment certainly paints opaque hides whatever is tested after it.
+      const auto tv = Clock::now();
+      if (s.whole) {
+        occlusion_.add_occluder(shown->layer.polygon, settings_.occluder_inset_px,
+                                Vec2(shown->offset_x, shown->offset_y));
+      } else {
+        const ConvexPolygon drawn =
+            intersection(translated(shown->layer.polygon, shown->offset_x, shown->offset_y),
+                         fragment_regions_[f]);
+        occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
+      }
+      report.visibility_ms += ms_since(tv);
+    }
+  }
+  const BoundingBox frame_box{0.0, 0.0, static_cast<double>(camera_.width),
+                              static_cast<double>(camera_.height)};
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    PolygonState& s = *states_[i];
+    if (statuses_[i] == PolygonStatus::kHidden) {
+      ++report.hidden;
+      report.hidden_area_px += clip_to_box(polygon_region(static_cast<int>(i)), frame_box).area();
+    }
+    if (!s.updated) s.live = false;  // its layer is stale: the next update starts afresh
+  }
+  const auto t1 = Clock::now();
+  frame_.fill(Pixel{});
+  for (int f : order_) {
+    if (!fragment_drawn_[f]) continue;
+    const int p = fragments[f].polygon;
+    const PlacedLayer* shown = states_[p]->shown(statuses_[p]);
+    report.pixels_composited +=
+        states_[p]->whole ? composite_over(frame_, shown->layer, shown->offset_x, shown->offset_y)
+                          : composite_over_region(frame_, shown->layer, shown->offset_x,
+                                                  shown->offset_y, fragment_regions_[f]);
+  }
+  report.composite_ms = ms_since(t1);
+  report.time_ms = ms_since(t0);
+  return report;
+}
+
+}  // namespace oflab

@@ -1,0 +1,139 @@
+// Animation of a static scene of textured polygons seen by a moving viewer: Algorithm 1
+// extended to many planes (dissertation sections 5.5 and 5.6.2).
+//
+// Every polygon is one layer driven by its own PlaneAnimator (core/engine/engine.h, any mode); the
+// camera's motion is the same rigid motion for all of them (core/scene/viewer_script.h). Each
+// frame:
+//  1. cull: polygons seen from behind or edge-on (backface culling) and polygons with no
+//     part inside the view frustum are skipped;
+//  2. order: the BSP tree built once for the scene gives the fragments back to front;
+//  3. visibility (beyond the dissertation, its section 7.5.3): walking front to back, a
+//     polygon whose every fragment's image is covered by opaque polygons already drawn in
+//     front of it is "hidden" and not updated at all (core/scene/occlusion.h);
+//  4. update: every other polygon gets its engine update for this frame (or a fresh start
+//     when it was culled or hidden the frame before, since its layer is then stale);
+//  5. composite the layers back to front into the frame (premultiplied, transparent where
+//     nothing is drawn).
+//
+// Near plane. A polygon whose texture rectangle reaches in front of the near plane
+// (Z < near) or projects beyond the guard band (see SceneSettings) is not animated: its
+// part inside the frustum is clipped in 3D and rendered exactly that frame, so a polygon
+// crossing the near plane is never smeared, never warped through the eye and never
+// crashes a warp. Such polygons are counted as re-rendered and as "clipped".
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "scene/bsp_tree.h"
+#include "engine/engine.h"
+#include "scene/occlusion.h"
+#include "scene/scene.h"
+#include "scene/view_culling.h"
+#include "scene/viewer_script.h"
+
+namespace oflab {
+
+struct SceneSettings {
+  EngineSettings engine;
+  double near = 0.05;  // near clipping plane Z = near, world units (> 0)
+  // A polygon is animated only while its texture rectangle projects within the image grown
+  // by this fraction of the image size on every side (>= 0); beyond it the polygon is
+  // clipped and rendered exactly, which bounds every layer's size.
+  double guard_band = 0.5;
+  bool skip_hidden = true;  // step 3 above
+  // Conservative margins of the hidden test, in pixels: occluders are shrunk by
+  // occluder_inset_px (the border pixels of a warped layer may be partly transparent) and
+  // the candidate's exact image is grown by candidate_margin_px (pixel rounding).
+  double occluder_inset_px = 1.5;
+  double candidate_margin_px = 1.0;
+};
+
+// What happened to one polygon in a frame.
+enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped };
+const char* polygon_status_name(PolygonStatus status);
+
+struct SceneFrameReport {
+  int frame = 0;
+  int polygons = 0;         // in the scene
+  int back_facing = 0;      // culled: seen from behind or edge-on
+  int outside_frustum = 0;  // culled: nothing inside the view frustum
+  int hidden = 0;           // facing, in the frustum, wholly covered: not updated
+  int clipped = 0;          // rendered exactly after clipping (also counted as re-render)
+  std::array<int, kLevelCount> levels{};  // drawn polygons per update level
+  double time_ms = 0.0;             // the whole frame: cull, order, visibility, updates, composite
+  double update_ms = 0.0;           // of which the polygon updates (warps and bookkeeping)
+  double composite_ms = 0.0;        // of which clearing the frame and compositing
+  double visibility_ms = 0.0;       // of which the hidden test: what skipping hidden costs
+  std::int64_t pixels_written = 0;  // by the warp kernels
+  std::int64_t pixels_composited = 0;
+  // Image area (pixels, within the frame) of the hidden polygons: what a re-render of them
+  // would have written, i.e. the warping work the visibility test saved this frame.
+  double hidden_area_px = 0.0;
+  // Largest measured corner error of an animated polygon (core/engine/engine.h), pixels.
+  double max_measured_error_px = 0.0;
+  int culled() const { return back_facing + outside_frustum; }
+  int drawn() const;  // sum of levels
+};
+
+class SceneAnimator {
+ public:
+  // `scene` must outlive the animator. Builds the BSP tree. Throws std::invalid_argument
+  // when a polygon has a problem (scene_polygon_problem), the camera is invalid, or a
+  // setting is out of range.
+  SceneAnimator(const Scene& scene, const Camera& camera, const SceneSettings& settings);
+  ~SceneAnimator();
+  SceneAnimator(const SceneAnimator&) = delete;
+  SceneAnimator& operator=(const SceneAnimator&) = delete;
+
+  // Frame 0 seen from `view`: every visible polygon is rendered.
+  SceneFrameReport start(const ViewerPose& view);
+
+  // The next frame: `previous` is the viewer of the frame shown so far, `motion` the scene
+  // motion towards this frame (core/scene/viewer_script.h), `current` the viewer now.
+  SceneFrameReport advance(const ViewerPose& previous, const RigidMotion& motion,
+                           const ViewerPose& current);
+
+  // The composited frame (camera-sized, premultiplied).
+  const Image& frame() const { return frame_; }
+  const BspTree& bsp() const { return bsp_; }
+  const Camera& camera() const { return camera_; }
+  // Per polygon, what happened in the last frame.
+  const std::vector<PolygonStatus>& statuses() const { return statuses_; }
+  // Per polygon, the update level of the last frame (meaningful for drawn polygons).
+  const std::vector<Level>& levels() const { return levels_; }
+
+ private:
+  struct PolygonState;
+
+  SceneFrameReport run_frame(const ViewerPose* previous, const RigidMotion* motion,
+                             const ViewerPose& current);
+  void classify(const ViewerPose& view, SceneFrameReport& report);
+  bool fragment_hidden(int fragment, const ViewerPose& view);
+  const ConvexPolygon& polygon_region(int polygon);
+  void update_polygon(int polygon, const ViewerPose* previous, const RigidMotion* motion,
+                      const ViewerPose& current, SceneFrameReport& report);
+  void render_clipped(int polygon, const ViewerPose& view, SceneFrameReport& report);
+  ConvexPolygon fragment_region(int fragment, const ViewerPose& view) const;
+  ConvexPolygon exact_region(const ViewPolygon& clipped) const;
+
+  const Scene& scene_;
+  Camera camera_;
+  SceneSettings settings_;
+  ViewFrustum frustum_;
+  BspTree bsp_;
+  std::vector<std::unique_ptr<PolygonState>> states_;
+  std::vector<Layer> scratch_textures_;  // one per scene texture, for the clipped renders
+  std::vector<PolygonStatus> statuses_;
+  std::vector<Level> levels_;
+  std::vector<int> order_;
+  std::vector<char> fragment_drawn_;
+  std::vector<ConvexPolygon> fragment_regions_;
+  OcclusionTest occlusion_;
+  Image frame_;
+  int frame_index_ = 0;
+};
+
+}  // namespace oflab

@@ -1,0 +1,121 @@
+#include "app/app_runner.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QWindow>
+#include <ostream>
+
+#include "views/animation_view.h"
+#include "views/basis_view.h"
+#include "views/flow_view.h"
+#include "app/main_window.h"
+#include "models/scene_model.h"
+#include "app/screenshot.h"
+
+namespace oflab {
+namespace {
+
+// Processes events until the window is exposed or the timeout passes.
+bool wait_until_exposed(QWidget* window, int timeout_ms) {
+  QElapsedTimer timer;
+  timer.start();
+  while (timer.elapsed() < timeout_ms) {
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    if (window->windowHandle() && window->windowHandle()->isExposed()) {
+      QApplication::processEvents();
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error) {
+  window->resize(options.width, options.height);
+  if (!options.screenshot.empty() || options.benchmark > 0) window->set_external_clock(true);
+  if (!options.lesson.empty()) window->apply_lesson(*find_lesson(options.lesson));
+  if (options.script) {
+    window->model()->set_script(*options.script, QString::fromStdString(options.script_name));
+  }
+  window->flow_view()->set_display(with_overrides(window->flow_view()->display(), options));
+  if (options.basis) window->basis_view()->set_basis(*options.basis);
+  if (options.presentation) window->set_presentation(true);
+  AnimationView* animation = window->animation_view();
+  if (!options.scene.empty()) animation->set_source({"scene", options.scene, options.viewer_script});
+  if (options.mode) {
+    EngineSettings settings = animation->settings();
+    settings.mode = *options.mode;
+    animation->set_settings(settings);
+  }
+  PanelDisplay display = PanelDisplay::kSideBySide;
+  if (parse_panel_display(options.animation_show, &display)) animation->set_display(display);
+  if (!options.view.empty() && options.view != "window") {
+    window->show_view(QString::fromStdString(options.view));
+  }
+  window->show();
+  if (!wait_until_exposed(window, 10000)) {
+    *error = "the window did not appear on the display within 10 s";
+    return false;
+  }
+  return true;
+}
+
+int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostream& out,
+                    std::ostream& err) {
+  window->play_frames(options.frames);
+  const QString view = QString::fromStdString(options.view);
+  ViewPage* page = view.isEmpty() || view == "window" ? nullptr : window->view(view);
+  const QImage image = page ? page->render_image() : window->grab_window_image();
+  QString error;
+  const QString path = QString::fromStdString(options.screenshot);
+  if (!save_png(image, path, &error)) {
+    err << "oflab: " << error.toStdString() << "\n";
+    return 1;
+  }
+  out << "oflab: wrote " << options.screenshot << " (" << image.width() << " x " << image.height()
+      << ", " << (page ? options.view : std::string("window")) << " after " << options.frames
+      << " frames)\n";
+  return 0;
+}
+
+int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out) {
+  // The animation view unless another view is asked for: it runs the engine, renders the
+  // exact frame with VTK and paints both panels every frame.
+  const QString name = options.view.empty() || options.view == "window"
+                           ? QStringLiteral("animation")
+                           : QString::fromStdString(options.view);
+  window->show_view(name);
+  SceneModel* model = window->model();
+  for (int i = 0; i < 3; ++i) window->play_frames(1);  // warm up caches and shaders
+  QElapsedTimer timer;
+  timer.start();
+  for (int i = 0; i < options.benchmark; ++i) {
+    model->advance(1);  // the visible view refreshes on scene_changed
+    QApplication::processEvents();
+  }
+  const double seconds = timer.nsecsElapsed() * 1e-9;
+  const QSize size = window->current_view()->size();  // the view's area
+  out << "oflab: " << name.toStdString() << " view, " << options.benchmark << " frames in "
+      << seconds
+      << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
+      << " frames per second (window " << options.width << " x " << options.height << ", view "
+      << size.width() << " x " << size.height() << ")\n";
+  return 0;
+}
+
+int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
+  MainWindow window;
+  std::string error;
+  if (!prepare_window(&window, options, &error)) {
+    err << "oflab: " << error << "\n";
+    return 1;
+  }
+  if (!options.screenshot.empty()) return take_screenshot(&window, options, out, err);
+  if (options.benchmark > 0) return run_benchmark(&window, options, out);
+  return QApplication::exec();
+}
+
+}  // namespace oflab

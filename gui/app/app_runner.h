@@ -1,0 +1,32 @@
+// What oflab does with its parsed command line: open the window (interactive), or play
+// some frames, save a screenshot and exit, or time the flow view.
+#pragma once
+
+#include <iosfwd>
+
+#include "app/launch_options.h"
+
+namespace oflab {
+
+class MainWindow;
+
+// Sets up the window for the options (size, lesson, view in front) and shows it, waiting
+// until it is on screen. Returns false with *error set if the window never appeared.
+bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error);
+
+// --screenshot: plays options.frames frames, captures the chosen view (or the whole
+// window) and writes the PNG. Returns the exit code: 0, or 1 when the file cannot be
+// written (the message goes to `err`).
+int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostream& out,
+                    std::ostream& err);
+
+// --benchmark: plays options.benchmark frames of the animation view (or of the view named
+// by --view) as fast as possible, each frame advancing the motion, running the engine,
+// rendering the exact frame and painting the panels, and prints the frames per second to
+// `out`. Returns 0.
+int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out);
+
+// The whole program after parsing: needs a QApplication. Returns the exit code.
+int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace oflab

@@ -1,0 +1,52 @@
+#include "app/app_theme.h"
+
+#include <QApplication>
+#include <QFont>
+#include <QPalette>
+#include <QStyle>
+
+namespace oflab {
+namespace {
+
+QPalette dark_palette() {
+  QPalette p;
+  const QColor window(45, 47, 52), base(30, 32, 36), text(225, 225, 225);
+  p.setColor(QPalette::Window, window);
+  p.setColor(QPalette::WindowText, text);
+  p.setColor(QPalette::Base, base);
+  p.setColor(QPalette::AlternateBase, window);
+  p.setColor(QPalette::ToolTipBase, base);
+  p.setColor(QPalette::ToolTipText, text);
+  p.setColor(QPalette::Text, text);
+  p.setColor(QPalette::Button, window);
+  p.setColor(QPalette::ButtonText, text);
+  p.setColor(QPalette::Highlight, QColor(0, 114, 178));  // Okabe-Ito blue
+  p.setColor(QPalette::HighlightedText, Qt::white);
+  p.setColor(QPalette::Disabled, QPalette::Text, QColor(110, 110, 110));
+  p.setColor(QPalette::Disabled, QPalette::WindowText, QColor(110, 110, 110));
+  p.setColor(QPalette::Disabled, QPalette::ButtonText, QColor(110, 110, 110));
+  return p;
+}
+
+QPalette light_palette() {
+  QPalette p = QApplication::style()->standardPalette();
+  p.setColor(QPalette::Window, QColor(250, 250, 247));
+  p.setColor(QPalette::Base, Qt::white);
+  p.setColor(QPalette::Disabled, QPalette::Text, QColor(160, 160, 160));
+  return p;
+}
+
+}  // namespace
+
+void apply_app_theme(bool presentation) {
+  static const QFont base_font = QApplication::font();
+  if (QApplication::style()->objectName().compare(QLatin1String("fusion"), Qt::CaseInsensitive)) {
+    QApplication::setStyle(QStringLiteral("Fusion"));  // the application owns the style
+  }
+  QApplication::setPalette(presentation ? light_palette() : dark_palette());
+  QFont font = base_font;
+  if (presentation) font.setPointSizeF(base_font.pointSizeF() * 1.6);
+  QApplication::setFont(font);
+}
+
+}  // namespace oflab

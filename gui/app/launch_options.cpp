@@ -1,0 +1,228 @@
+#include "app/launch_options.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "formats/datasets.h"
+#include "formats/scene_file.h"
+#include "formats/script_file.h"
+#include "formats/viewer_script_file.h"
+#include "engine/engine.h"
+#include "app/lessons.h"
+
+namespace oflab {
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
+void read_script(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--script")) return;
+  const std::string name = cli.values("--script").at(0);
+  try {
+    if (cli.has("--scene")) {  // a viewer script walks through the scene
+      read_viewer_script_file(resolve_viewer_script_path(name));
+      options->viewer_script = name;
+      return;
+    }
+    options->script = read_script_file(resolve_script_path(name));
+    options->script_name = name;
+  } catch (const std::runtime_error& e) {  // reader errors and lookup failures
+    throw UsageError("--script: " + std::string(e.what()));
+  }
+}
+
+void read_scene(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--scene")) return;
+  const std::string name = cli.values("--scene").at(0);
+  try {
+    read_scene_file(resolve_scene_path(name));
+  } catch (const std::runtime_error& e) {  // SceneError and lookup failures
+    throw UsageError("--scene: " + std::string(e.what()));
+  }
+  options->scene = name;
+  if (options->viewer_script.empty()) options->viewer_script = "circle";
+}
+
+void read_mode(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--mode")) return;
+  const std::string text = cli.values("--mode").at(0);
+  EngineMode mode = EngineMode::kPerspective;
+  if (!parse_engine_mode(text, &mode)) {
+    throw UsageError("--mode: unknown mode '" + text +
+                     "' (known: perspective, affine, exact, rerender)");
+  }
+  options->mode = mode;
+}
+
+void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--animation-show")) return;
+  const std::string text = cli.values("--animation-show").at(0);
+  if (text != "side-by-side" && text != "difference" && text != "blink") {
+    throw UsageError("--animation-show: unknown display '" + text +
+                     "' (known: side-by-side, difference, blink)");
+  }
+  options->animation_show = text;
+}
+
+void read_size(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--size")) return;
+  const Vec2 size = cli.vec2("--size");
+  for (double v : {size.x, size.y}) {
+    if (v != static_cast<int>(v) || v < 320 || v > 8192) {
+      throw UsageError("--size: width and height must be whole numbers from 320 to 8192");
+    }
+  }
+  options->width = static_cast<int>(size.x);
+  options->height = static_cast<int>(size.y);
+}
+
+// "--flow-draw arrows,wheel": the listed drawings on, the others off.
+FlowDisplay parse_flow_draw(const std::string& list) {
+  FlowDisplay d;
+  d.arrows = d.streamlines = d.colour_wheel = d.texture = d.zoom_to_plane = false;
+  d.common_scale = false;
+  std::stringstream items(list);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    if (item == "arrows")
+      d.arrows = true;
+    else if (item == "streamlines")
+      d.streamlines = true;
+    else if (item == "wheel")
+      d.colour_wheel = true;
+    else if (item == "texture")
+      d.texture = true;
+    else if (item == "zoom")
+      d.zoom_to_plane = true;
+    else if (item == "common-scale")
+      d.common_scale = true;
+    else if (item != "none") {
+      throw UsageError("--flow-draw: unknown item '" + item +
+                       "' (known: arrows, streamlines, wheel, texture, zoom, common-scale, none)");
+    }
+  }
+  return d;
+}
+
+void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
+  if (cli.has("--flow-show")) {
+    FlowPart part = FlowPart::kFull;
+    const std::string key = cli.values("--flow-show").at(0);
+    if (!parse_flow_part(key, &part)) {
+      std::vector<std::string> keys;
+      for (int k = 0; k < kFlowPartCount; ++k) keys.push_back(flow_part_key(FlowPart(k)));
+      throw UsageError("--flow-show: unknown part '" + key + "' (known: " + joined(keys) + ")");
+    }
+    options->flow_part = part;
+  }
+  if (cli.has("--flow-draw")) options->flow_draw = parse_flow_draw(cli.values("--flow-draw").at(0));
+  if (cli.has("--basis")) {
+    BasisKind kind = BasisKind::kPlanar;
+    const std::string key = cli.values("--basis").at(0);
+    if (!parse_basis_kind(key, &kind)) {
+      throw UsageError("--basis: unknown basis '" + key +
+                       "' (known: taylor, waxman-ullman, planar)");
+    }
+    options->basis = kind;
+  }
+  options->presentation = cli.has("--presentation");
+}
+
+void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
+  options->screenshot = cli.text_or("--screenshot", "");
+  if (cli.has("--screenshot") && options->screenshot.empty()) {
+    throw UsageError("--screenshot: the file name is empty");
+  }
+  if (cli.has("--frames") && options->screenshot.empty()) {
+    throw UsageError("--frames: only used with --screenshot");
+  }
+  options->frames = cli.integer_or("--frames", 0);
+  if (options->frames < 0) throw UsageError("--frames: must be 0 or more");
+  options->benchmark = cli.integer_or("--benchmark", 0);
+  if (cli.has("--benchmark") && options->benchmark < 1) {
+    throw UsageError("--benchmark: must be a positive number of frames");
+  }
+  if (options->benchmark > 0 && !options->screenshot.empty()) {
+    throw UsageError("--benchmark: cannot be combined with --screenshot");
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& screenshot_view_names() {
+  static const std::vector<std::string> names = {"flow", "basis", "animation", "analysis", "slices",
+                                                  "window"};
+  return names;
+}
+
+LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
+  const CliArgs cli(args, {{"--lesson", 1},
+                           {"--scene", 1},
+                           {"--script", 1},
+                           {"--mode", 1},
+                           {"--animation-show", 1},
+                           {"--view", 1},
+                           {"--screenshot", 1},
+                           {"--frames", 1},
+                           {"--benchmark", 1},
+                           {"--size", 2},
+                           {"--flow-show", 1},
+                           {"--flow-draw", 1},
+                           {"--basis", 1},
+                           {"--presentation", 0},
+                           {"--help", 0}});
+  LaunchOptions options;
+  options.help = cli.has("--help");
+  options.lesson = cli.text_or("--lesson", "");
+  if (!options.lesson.empty() && !find_lesson(options.lesson)) {
+    throw UsageError("--lesson: unknown lesson '" + options.lesson + "' (known: " + lesson_names() +
+                     ")");
+  }
+  read_script(cli, &options);
+  read_scene(cli, &options);
+  read_mode(cli, &options);
+  read_animation_show(cli, &options);
+  options.view = cli.text_or("--view", "");
+  const auto& views = screenshot_view_names();
+  if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
+    throw UsageError("--view: unknown view '" + options.view + "' (known: " + joined(views) + ")");
+  }
+  read_run_mode(cli, &options);
+  read_size(cli, &options);
+  read_view_overrides(cli, &options);
+  return options;
+}
+
+FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
+  if (options.flow_part) display.part = *options.flow_part;
+  if (options.flow_draw) {
+    display.arrows = options.flow_draw->arrows;
+    display.streamlines = options.flow_draw->streamlines;
+    display.colour_wheel = options.flow_draw->colour_wheel;
+    display.texture = options.flow_draw->texture;
+    display.zoom_to_plane = options.flow_draw->zoom_to_plane;
+    display.common_scale = options.flow_draw->common_scale;
+  }
+  return display;
+}
+
+std::string launch_usage() {
+  return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
+         "             [--mode perspective|affine|exact|rerender]\n"
+         "             [--animation-show side-by-side|difference|blink]\n"
+         "             [--view flow|basis|animation|analysis|window]\n"
+         "             [--screenshot FILE.png --frames N] [--benchmark N] [--size W H]\n"
+         "             [--flow-show PART] [--flow-draw "
+         "arrows,streamlines,wheel,texture,zoom,common-scale]\n"
+         "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"
+         "  lessons: " +
+         lesson_names() + "\n  shipped scripts: " + joined(shipped_script_names()) +
+         "\n  shipped scenes (--script then names a viewer script: " +
+         joined(shipped_viewer_script_names()) + "): " + joined(shipped_scene_names()) + "\n";
+}
+
+}  // namespace oflab

@@ -1,0 +1,68 @@
+// The command line of oflab:
+//   oflab [--lesson NAME] [--scene S] [--script T] [--mode M] [--view NAME]
+//         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
+//         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation] [--help]
+// Plain C++ over analysis/cli/cli_args.h, so it is checked before any window opens and bad
+// input never needs a display.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/cli_args.h"
+#include "engine/engine.h"
+#include "engine/script.h"
+#include "views/basis_catalog.h"
+#include "adapters/flow_display.h"
+
+namespace oflab {
+
+struct LaunchOptions {
+  std::string lesson;      // a lesson preset name (gui/app/lessons.h), empty for the demo
+  std::string view;        // view in front and the one captured; "window" = whole window
+  std::string screenshot;  // PNG path; when set, play `frames` frames, save, exit
+  int frames = 0;          // frames to play before the screenshot (>= 0)
+  int benchmark = 0;       // frames of the flow view to render as fast as possible (> 0)
+  int width = 1280;        // window size in pixels
+  int height = 800;
+  // Overrides applied after the lesson: the flow part shown, what the flow view draws
+  // (only the booleans of `flow_draw` are used), the gallery's basis.
+  std::optional<FlowPart> flow_part;
+  std::optional<FlowDisplay> flow_draw;
+  std::optional<BasisKind> basis;
+  // --script NAME|FILE: a shipped script name or a script file, read and checked. With
+  // --scene it names a viewer script instead (default "circle"), kept in viewer_script.
+  std::optional<MotionScript> script;
+  std::string script_name;
+  // --scene NAME|FILE: a multi-plane scene for the animation and analysis views, checked.
+  std::string scene;
+  std::string viewer_script;
+  // --mode perspective|affine|exact|rerender: the animation engine's mode.
+  std::optional<EngineMode> mode;
+  // --animation-show side-by-side|difference|blink: how the animation view shows its panels.
+  std::string animation_show;
+  bool presentation = false;  // start in presentation mode
+  bool help = false;          // --help: print the usage and exit 0
+};
+
+// The view names a screenshot can capture, in order ("flow", "basis", "animation",
+// "analysis", "window").
+const std::vector<std::string>& screenshot_view_names();
+
+// Parses the arguments after the program name. Throws UsageError with one line naming
+// the option for: unknown options or values, a missing value, --frames without
+// --screenshot, --screenshot with --benchmark, a size outside 320..8192, a negative frame
+// count, a non-positive benchmark count, a script that is neither a file nor a shipped name
+// or that analysis/formats/script_file.h rejects (the message names the file and field), a scene
+// or viewer script that is neither a file nor a shipped name or that its reader rejects,
+// and an unknown --mode.
+LaunchOptions parse_launch_options(const std::vector<std::string>& args);
+
+// The flow view's display with the options' overrides applied.
+FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options);
+
+// Usage text, a few lines.
+std::string launch_usage();
+
+}  // namespace oflab

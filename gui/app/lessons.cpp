@@ -1,0 +1,110 @@
+#include "app/lessons.h"
+
+namespace oflab {
+namespace {
+
+Lesson flow_of_a_plane() {
+  Lesson lesson;
+  lesson.name = "flow-of-a-plane";
+  lesson.title = "The flow of a plane";
+  lesson.caption =
+      "The flow of a plane. The butterfly turns and moves away from us; each arrow shows how "
+      "fast that point of the image moves (pixels per second). For a plane this flow is "
+      "exactly quadratic: choose 'Exact - homography flow' under Show and it vanishes. "
+      "Choose 'Exact - affine flow' to see what an affine warp misses.";
+  lesson.view = "flow";
+  lesson.scene = default_demo_scene();
+  lesson.flow.part = FlowPart::kFull;
+  lesson.flow.arrows = true;
+  lesson.flow.streamlines = true;
+  return lesson;
+}
+
+Lesson basis_deformations() {
+  Lesson lesson;
+  lesson.name = "basis-deformations";
+  lesson.title = "The basis deformations";
+  lesson.caption =
+      "Basis deformations. Each tile deforms a square by one term of the flow alone. In the "
+      "planar basis a moving plane excites only two of the six second-order terms, px and "
+      "py: the grey tiles stay zero whatever the motion. Switch to the raw Taylor terms (four "
+      "second-order terms move) and to Waxman-Ullman (all six do).";
+  lesson.view = "basis";
+  lesson.scene = default_demo_scene();
+  lesson.basis = BasisKind::kPlanar;
+  lesson.play_basis = true;
+  return lesson;
+}
+
+Lesson affine_vs_perspective() {
+  Lesson lesson;
+  lesson.name = "affine-vs-perspective";
+  lesson.title = "Affine vs perspective";
+  lesson.caption =
+      "Affine vs perspective. Left: the optic-flow animation, here with affine warps only; "
+      "right: the exact projection. The plane turns as it moves, so its edges should "
+      "converge in perspective: an affine warp keeps parallel edges parallel and cannot. Press "
+      "'Affine/persp.' to switch to perspective updates, and choose 'Difference heat map' "
+      "to see where the two disagree.";
+  lesson.view = "animation";
+  lesson.scene = default_demo_scene();
+  lesson.mode = EngineMode::kAffine;
+  return lesson;
+}
+
+Lesson why_errors_accumulate() {
+  Lesson lesson;
+  lesson.name = "why-errors-accumulate";
+  lesson.title = "Why errors accumulate";
+  lesson.caption =
+      "Why errors accumulate. Each cheap update neglects part of the motion, and the neglected "
+      "parts add up frame after frame: in the bottom charts each level's error climbs until "
+      "it would cross its dashed threshold, and then the engine pays for a better update and "
+      "the error drops. Play the motion and click a frame to ask why that level was chosen.";
+  lesson.view = "analysis";
+  lesson.scene = default_demo_scene();
+  lesson.play_motion = true;
+  return lesson;
+}
+
+Lesson occlusion() {
+  Lesson lesson;
+  lesson.name = "occlusion";
+  lesson.title = "Occlusion";
+  lesson.caption =
+      "Occlusion. Five textured squares, partly behind one another, seen by a viewer moving "
+      "sideways. Every square is its own layer with its own engine and level (outline "
+      "colour); the layers are composited back to front, so the warps never have to handle "
+      "hidden parts. Squares wholly covered are not updated at all.";
+  lesson.view = "animation";
+  lesson.scene = default_demo_scene();
+  lesson.animation_kind = "scene";
+  lesson.animation_name = "five-semi-occluded";
+  lesson.animation_viewer = "translate";
+  lesson.play_motion = true;
+  return lesson;
+}
+
+}  // namespace
+
+const std::vector<Lesson>& lessons() {
+  static const std::vector<Lesson> all = {flow_of_a_plane(), basis_deformations(),
+                                          affine_vs_perspective(), why_errors_accumulate(),
+                                          occlusion()};
+  return all;
+}
+
+const Lesson* find_lesson(const std::string& name) {
+  for (const Lesson& lesson : lessons()) {
+    if (lesson.name == name) return &lesson;
+  }
+  return nullptr;
+}
+
+std::string lesson_names() {
+  std::string names;
+  for (const Lesson& lesson : lessons()) names += (names.empty() ? "" : ", ") + lesson.name;
+  return names;
+}
+
+}  // namespace oflab

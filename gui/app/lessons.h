@@ -1,0 +1,43 @@
+// Lesson presets for the classroom: each sets up a view, a scene and motion, the view's
+// options and a narrative caption shown above the views. manual/lessons.md has one
+// section per preset (what to show, what to ask, what to point at). Plain C++.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/engine.h"
+#include "views/basis_catalog.h"
+#include "adapters/flow_display.h"
+#include "models/plane_scene.h"
+
+namespace oflab {
+
+struct Lesson {
+  std::string name;     // command-line name, e.g. "flow-of-a-plane"
+  std::string title;    // menu entry
+  std::string caption;  // the narrative, a few sentences
+  std::string view;     // the view it shows: "flow", "basis", "animation" or "analysis"
+  PlaneScene scene;
+  FlowDisplay flow;
+  BasisKind basis = BasisKind::kPlanar;
+  bool play_basis = false;   // animate the gallery's deformation amount
+  bool play_motion = false;  // play the scene's motion
+  // What the animation and analysis views play (gui/views/animation_controls.h SourceChoice:
+  // kind "plane", "script" or "scene") and in which engine mode.
+  std::string animation_kind = "plane";
+  std::string animation_name;
+  std::string animation_viewer;
+  EngineMode mode = EngineMode::kPerspective;
+};
+
+// Every preset, in teaching order.
+const std::vector<Lesson>& lessons();
+
+// The preset with this name, or nullptr.
+const Lesson* find_lesson(const std::string& name);
+
+// The names, comma separated, for error messages and --help.
+std::string lesson_names();
+
+}  // namespace oflab

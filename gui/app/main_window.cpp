@@ -1,0 +1,436 @@
+#include "app/main_window.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QSlider>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <algorithm>
+
+#include "formats/datasets.h"
+#include "formats/script_file.h"
+#include "views/analysis_view.h"
+#include "views/slices_view.h"
+#include "views/animation_view.h"
+#include "app/app_theme.h"
+#include "views/basis_view.h"
+#include "views/flow_view.h"
+#include "views/scene_controls.h"
+#include "models/scene_model.h"
+#include "app/screenshot.h"
+#include "app/session_io.h"
+#include "adapters/texture.h"
+
+namespace oflab {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setWindowTitle(tr("oflab - Optic Flow Lab"));
+  model_ = new SceneModel(this);
+  motion_timer_ = new QTimer(this);
+  motion_timer_->setInterval(static_cast<int>(1000.0 * SceneModel::kSecondsPerFrame));
+  connect(motion_timer_, &QTimer::timeout, this, [this] { model_->advance(1); });
+
+  auto* central = new QWidget(this);
+  auto* layout = new QVBoxLayout(central);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(create_banners());
+  tabs_ = new QTabWidget(central);
+  tabs_->setObjectName(QStringLiteral("view_tabs"));
+  layout->addWidget(tabs_, 1);
+  setCentralWidget(central);
+
+  flow_view_ = new FlowView(model_);
+  basis_view_ = new BasisView(model_);
+  add_view(flow_view_);
+  add_view(basis_view_);
+  animation_view_ = new AnimationView(model_);
+  analysis_view_ = new AnalysisView(model_, animation_view_);
+  add_view(animation_view_);
+  add_view(analysis_view_);
+  add_view(new SlicesView(this));
+  connect(animation_view_, &AnimationView::input_rejected, this, &MainWindow::show_message);
+
+  controls_ = new SceneControls(model_);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(controls_);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scene_dock_ = new QDockWidget(tr("Scene"), this);
+  scene_dock_->setObjectName(QStringLiteral("scene_dock"));
+  scene_dock_->setWidget(scroll);
+  scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(Qt::LeftDockWidgetArea, scene_dock_);
+  fit_scene_panel();
+
+  create_actions();
+  create_menus();
+  create_play_bar();
+  connect(model_, &SceneModel::scene_rejected, this, &MainWindow::show_message);
+  connect(model_, &SceneModel::scene_changed, this, [this] {
+    clear_message();
+    update_frame_label();
+  });
+  apply_app_theme(false);
+  statusBar()->showMessage(tr("Default demo: a textured plane in a screw motion"));
+  resize(1280, 800);
+}
+
+QWidget* MainWindow::create_banners() {
+  auto* box = new QWidget(this);
+  auto* layout = new QVBoxLayout(box);
+  layout->setContentsMargins(0, 0, 0, 0);
+  caption_banner_ = new QLabel(box);
+  caption_banner_->setObjectName(QStringLiteral("caption_banner"));
+  caption_banner_->setWordWrap(true);
+  caption_banner_->hide();
+  message_banner_ = new QLabel(box);
+  message_banner_->setObjectName(QStringLiteral("message_banner"));
+  message_banner_->setWordWrap(true);
+  message_banner_->hide();
+  style_banners();
+  layout->addWidget(caption_banner_);
+  layout->addWidget(message_banner_);
+  return box;
+}
+
+void MainWindow::style_banners() {
+  // Okabe-Ito blue for the lesson caption, vermillion for refused input. Style sheets fix
+  // the font, so its size follows the presentation mode here.
+  const QString style = QStringLiteral(
+      "QLabel { background: %1; color: white; padding: 6px; border-radius: 3px; "
+      "font-size: %2pt; }");
+  const int points = presentation_ ? 17 : 10;
+  caption_banner_->setStyleSheet(style.arg(QStringLiteral("#0072B2")).arg(points));
+  message_banner_->setStyleSheet(style.arg(QStringLiteral("#D55E00")).arg(points));
+}
+
+void MainWindow::fit_scene_panel() {
+  // The panel is as wide as its controls want (fonts change with presentation mode), up
+  // to a third of a 1280-pixel window, so the views keep most of the screen.
+  controls_->ensurePolished();
+  const int wanted = controls_->sizeHint().width() + 20;
+  scene_dock_->widget()->setMinimumWidth(std::min(wanted, 430));
+}
+
+void MainWindow::create_actions() {
+  play_action_ = new QAction(tr("Play motion"), this);
+  play_action_->setCheckable(true);
+  play_action_->setShortcut(Qt::Key_Space);
+  connect(play_action_, &QAction::toggled, this, &MainWindow::set_motion_playing);
+  step_action_ = new QAction(tr("Step"), this);
+  step_action_->setShortcut(Qt::Key_Right);
+  connect(step_action_, &QAction::triggered, this, [this] { model_->advance(1); });
+  back_action_ = new QAction(tr("Back"), this);
+  back_action_->setShortcut(Qt::Key_Left);
+  connect(back_action_, &QAction::triggered, this,
+          [this] { model_->set_frame(std::max(0, model_->frame() - 1)); });
+  end_action_ = new QAction(tr("Last frame"), this);
+  end_action_->setShortcut(Qt::Key_End);
+  connect(end_action_, &QAction::triggered, this,
+          [this] { model_->set_frame(model_->loop_frames() - 1); });
+  reset_action_ = new QAction(tr("First frame"), this);
+  reset_action_->setShortcut(Qt::Key_Home);
+  connect(reset_action_, &QAction::triggered, this, [this] { model_->set_frame(0); });
+  presentation_action_ = new QAction(tr("Presentation mode"), this);
+  presentation_action_->setCheckable(true);
+  presentation_action_->setShortcut(Qt::Key_F11);
+  connect(presentation_action_, &QAction::toggled, this, &MainWindow::set_presentation);
+}
+
+void MainWindow::create_menus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  connect(file->addAction(tr("Load texture...")), &QAction::triggered, this,
+          &MainWindow::load_texture);
+  connect(file->addAction(tr("Open script...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open motion script"), QString(),
+                                                      tr("Motion scripts (*.json)"));
+    if (!path.isEmpty()) load_script(path);
+  });
+  QMenu* shipped = file->addMenu(tr("Shipped scripts"));
+  for (const std::string& name : shipped_script_names()) {
+    const QString q = QString::fromStdString(name);
+    connect(shipped->addAction(q), &QAction::triggered, this, [this, q] { load_script(q); });
+  }
+  connect(file->addAction(tr("Save window screenshot...")), &QAction::triggered, this,
+          &MainWindow::save_screenshot);
+  create_export_menu(file);
+  file->addSeparator();
+  QAction* quit = file->addAction(tr("Quit"));
+  quit->setShortcut(QKeySequence::Quit);
+  connect(quit, &QAction::triggered, this, &QWidget::close);
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(presentation_action_);
+  for (QAction* a : {play_action_, step_action_, back_action_, reset_action_, end_action_}) {
+    view->addAction(a);
+  }
+  QMenu* lesson_menu = menuBar()->addMenu(tr("&Lessons"));
+  for (const Lesson& lesson : lessons()) {
+    const std::string name = lesson.name;
+    connect(lesson_menu->addAction(QString::fromStdString(lesson.title)), &QAction::triggered, this,
+            [this, name] { apply_lesson(*find_lesson(name)); });
+  }
+}
+
+void MainWindow::create_play_bar() {
+  QToolBar* bar = addToolBar(tr("Play"));
+  bar->setObjectName(QStringLiteral("play_bar"));
+  for (QAction* a : {reset_action_, back_action_, play_action_, step_action_, end_action_}) {
+    bar->addAction(a);
+  }
+  frame_label_ = new QLabel(bar);
+  bar->addWidget(frame_label_);
+  add_scrub_controls(bar);
+  bar->addSeparator();
+  bar->addAction(presentation_action_);
+  update_frame_label();
+}
+
+void MainWindow::add_scrub_controls(QToolBar* bar) {
+  scrub_ = new QSlider(Qt::Horizontal, bar);
+  scrub_->setObjectName(QStringLiteral("scrub_slider"));
+  scrub_->setMinimumWidth(120);
+  scrub_->setToolTip(tr("Scrub through the frames of the motion"));
+  bar->addWidget(scrub_);
+  connect(scrub_, &QSlider::valueChanged, this, [this](int frame) { model_->set_frame(frame); });
+  speed_box_ = new QComboBox(bar);
+  speed_box_->setObjectName(QStringLiteral("speed_box"));
+  speed_box_->setToolTip(tr("Playback rate, frames per second"));
+  for (int fps : {5, 10, 15, 30, 60}) speed_box_->addItem(tr("%1 fps").arg(fps), fps);
+  speed_box_->setCurrentIndex(3);
+  bar->addWidget(speed_box_);
+  connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this, [this] {
+    motion_timer_->setInterval(1000 / speed_box_->currentData().toInt());
+  });
+}
+
+void MainWindow::update_frame_label() {
+  frame_label_->setText(
+      tr("  frame %1 (t = %2 s)").arg(model_->frame()).arg(model_->time(), 0, 'f', 2));
+  if (!scrub_) return;
+  const QSignalBlocker block(scrub_);
+  scrub_->setRange(0, model_->loop_frames() - 1);
+  scrub_->setValue(model_->frame());
+}
+
+void MainWindow::add_view(ViewPage* view) {
+  views_.push_back(view);
+  tabs_->addTab(view, view->view_title());
+  view->set_theme(view_theme(presentation_));
+}
+
+ViewPage* MainWindow::view(const QString& name) const {
+  for (ViewPage* v : views_) {
+    if (v->view_name() == name) return v;
+  }
+  return nullptr;
+}
+
+QStringList MainWindow::view_names() const {
+  QStringList names;
+  for (ViewPage* v : views_) names << v->view_name();
+  return names;
+}
+
+bool MainWindow::show_view(const QString& name) {
+  ViewPage* v = view(name);
+  if (!v) return false;
+  tabs_->setCurrentWidget(v);
+  return true;
+}
+
+ViewPage* MainWindow::current_view() const {
+  return static_cast<ViewPage*>(tabs_->currentWidget());
+}
+
+void MainWindow::apply_lesson(const Lesson& lesson) {
+  set_motion_playing(lesson.play_motion);
+  model_->set_frame(0);
+  model_->set_scene(lesson.scene);
+  flow_view_->set_display(lesson.flow);
+  basis_view_->set_basis(lesson.basis);
+  basis_view_->set_playing(lesson.play_basis);
+  EngineSettings settings = animation_view_->settings();
+  settings.mode = lesson.mode;
+  animation_view_->set_settings(settings);
+  animation_view_->set_source(
+      {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
+  show_view(QString::fromStdString(lesson.view));
+  set_caption(QString::fromStdString(lesson.caption));
+  statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
+}
+
+QString MainWindow::caption() const { return caption_banner_->text(); }
+
+void MainWindow::set_caption(const QString& text) {
+  caption_banner_->setText(text);
+  caption_banner_->setVisible(!text.isEmpty());
+}
+
+QString MainWindow::message() const {
+  return message_banner_->isVisible() ? message_banner_->text() : QString();
+}
+
+void MainWindow::show_message(const QString& text) {
+  message_banner_->setText(tr("Not applied: %1. The scene is unchanged.").arg(text));
+  message_banner_->show();
+  statusBar()->showMessage(message_banner_->text(), 10000);
+}
+
+void MainWindow::clear_message() { message_banner_->hide(); }
+
+void MainWindow::set_presentation(bool on) {
+  presentation_ = on;
+  const QSignalBlocker block(presentation_action_);
+  presentation_action_->setChecked(on);
+  apply_app_theme(on);
+  style_banners();
+  for (ViewPage* v : views_) v->set_theme(view_theme(on));
+  // Let the scene panel grow with the fonts instead of clipping its controls.
+  fit_scene_panel();
+}
+
+bool MainWindow::motion_playing() const { return play_action_->isChecked(); }
+
+void MainWindow::set_motion_playing(bool playing) {
+  const QSignalBlocker block(play_action_);
+  play_action_->setChecked(playing);
+  if (playing && !external_clock_) {
+    motion_timer_->start();
+  } else {
+    motion_timer_->stop();
+  }
+}
+
+void MainWindow::set_external_clock(bool on) {
+  external_clock_ = on;
+  set_motion_playing(motion_playing());
+  for (ViewPage* v : views_) v->set_external_clock(on);
+}
+
+void MainWindow::play_frames(int frames) {
+  for (int i = 0; i < frames; ++i) {
+    model_->advance(1);
+    for (ViewPage* v : views_) v->step_animation();
+    QApplication::processEvents();
+  }
+}
+
+QImage MainWindow::grab_window_image() { return grab_with_vtk(this); }
+
+void MainWindow::load_texture() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load texture"), QString(),
+                                                    tr("Images (*.png *.jpg *.jpeg)"));
+  if (path.isEmpty()) return;
+  QString error;
+  const QImage image = load_texture_image(path, &error);
+  if (image.isNull()) {
+    show_message(error);
+    return;
+  }
+  model_->set_texture(image, path);
+}
+
+bool MainWindow::load_script(const QString& name_or_path) {
+  try {
+    const MotionScript script = read_script_file(resolve_script_path(name_or_path.toStdString()));
+    return model_->set_script(script, QFileInfo(name_or_path).completeBaseName());
+  } catch (const std::runtime_error& e) {  // unreadable or invalid: keep the session
+    show_message(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void MainWindow::save_screenshot() {
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save screenshot"), QStringLiteral("oflab.png"), tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!save_png(grab_window_image(), path, &error)) show_message(error);
+}
+
+}  // namespace oflab
+
+namespace oflab {
+
+void MainWindow::create_export_menu(QMenu* file) {
+  // QFileDialog asks before replacing a file, so the writes below may overwrite.
+  file->addSeparator();
+  connect(file->addAction(tr("Open session...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), QString(),
+                                                      tr("oflab sessions (*.json)"));
+    if (!path.isEmpty()) load_session(path);
+  });
+  connect(file->addAction(tr("Save session...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save session"),
+                                                      QStringLiteral("session.json"),
+                                                      tr("oflab sessions (*.json)"));
+    if (!path.isEmpty()) save_session(path, true);
+  });
+  QMenu* exports = file->addMenu(tr("Export"));
+  connect(exports->addAction(tr("View screenshot at a resolution...")), &QAction::triggered, this,
+          &MainWindow::save_view_screenshot);
+  connect(exports->addAction(tr("Animation as numbered PNGs...")), &QAction::triggered, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Directory for the frames"));
+    QString error;
+    if (!dir.isEmpty() && !export_frames_png(this, dir, false, &error)) show_message(error);
+  });
+  connect(exports->addAction(tr("Animation as Ogg Theora video...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save video"), QStringLiteral("oflab.ogv"),
+                                                      tr("Ogg Theora video (*.ogv)"));
+    QString error;
+    if (!path.isEmpty() && !export_video(this, path, true, &error)) show_message(error);
+  });
+  connect(exports->addAction(tr("Per-frame CSV...")), &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save per-frame CSV"),
+                                                      QStringLiteral("frames.csv"), tr("CSV (*.csv)"));
+    QString error;
+    if (!path.isEmpty() && !export_frame_csv(this, path, true, &error)) show_message(error);
+  });
+}
+
+void MainWindow::save_view_screenshot() {
+  bool ok = false;
+  const int width = QInputDialog::getInt(this, tr("View screenshot"), tr("Width in pixels"), 1920,
+                                         320, 8192, 1, &ok);
+  if (!ok) return;
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save view screenshot"), QStringLiteral("view.png"), tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  const QImage image = current_view()->render_image().scaledToWidth(width, Qt::SmoothTransformation);
+  QString error;
+  if (!save_png(image, path, &error)) show_message(error);
+}
+
+bool MainWindow::save_session(const QString& path, bool overwrite) {
+  try {
+    write_session_file(path.toStdString(), capture_session(this), overwrite);
+    return true;
+  } catch (const SessionError& e) {
+    show_message(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::load_session(const QString& path) {
+  QString error;
+  try {
+    if (apply_session(this, read_session_file(path.toStdString()), &error)) return true;
+  } catch (const SessionError& e) {
+    error = QString::fromStdString(e.what());
+  }
+  show_message(error);
+  return false;
+}
+
+}  // namespace oflab

@@ -1,0 +1,131 @@
+// The main window: one SceneModel shared by every view; the views as tabs (flow field,
+// basis deformations; the animation and analysis views are added the same way with
+// add_view); the scene panel as a dock; a caption banner for lessons and a message
+// banner for rejected input; play controls for the scene's motion; presentation mode.
+#pragma once
+
+#include <QMainWindow>
+#include <vector>
+
+#include "app/lessons.h"
+
+class QAction;
+class QComboBox;
+class QSlider;
+class QToolBar;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QTabWidget;
+class QTimer;
+
+namespace oflab {
+
+class AnalysisView;
+class AnimationView;
+class BasisView;
+class FlowView;
+class SceneControls;
+class SceneModel;
+class ViewPage;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  // Opens on the default demo with the flow view in front.
+  explicit MainWindow(QWidget* parent = nullptr);
+
+  SceneModel* model() const { return model_; }
+  SceneControls* scene_controls() const { return controls_; }
+  FlowView* flow_view() const { return flow_view_; }
+  BasisView* basis_view() const { return basis_view_; }
+  AnimationView* animation_view() const { return animation_view_; }
+  AnalysisView* analysis_view() const { return analysis_view_; }
+
+  // Adds a view as a tab (the window takes ownership) and themes it.
+  void add_view(ViewPage* view);
+  // The view with this command-line name, or nullptr; all names in tab order.
+  ViewPage* view(const QString& name) const;
+  QStringList view_names() const;
+  // Brings the named view to the front; false when there is no such view.
+  bool show_view(const QString& name);
+  ViewPage* current_view() const;
+
+  // Sets up a lesson: its scene, view, options and caption.
+  void apply_lesson(const Lesson& lesson);
+  QString caption() const;
+  void set_caption(const QString& text);  // empty hides the banner
+
+  // The message shown for rejected input; empty when none is visible.
+  QString message() const;
+
+  bool presentation() const { return presentation_; }
+  void set_presentation(bool on);
+
+  bool motion_playing() const;
+  void set_motion_playing(bool playing);
+
+  // Advances the scene's motion and each view's own animation by `frames` steps, rendering
+  // the visible view after each (used by --screenshot --frames N).
+  void play_frames(int frames);
+
+  // With an external clock no timer advances anything: only play_frames does, so
+  // screenshots and benchmarks are reproducible. Playing states are kept.
+  void set_external_clock(bool on);
+
+  // Plays a motion script (a shipped name or a file). A script that cannot be read or
+  // used shows a message and leaves the session as it was; returns false then.
+  bool load_script(const QString& name_or_path);
+
+  // Saves the session as JSON; refuses an existing file unless `overwrite`. Loads one,
+  // changing nothing when it cannot be used. Both show a message and return false on
+  // failure.
+  bool save_session(const QString& path, bool overwrite);
+  bool load_session(const QString& path);
+
+  // The whole window as drawn, VTK content included.
+  QImage grab_window_image();
+
+ private:
+  void create_actions();
+  void create_menus();
+  void create_play_bar();
+  QWidget* create_banners();
+  void style_banners();
+  void fit_scene_panel();
+  void show_message(const QString& text);
+  void clear_message();
+  void update_frame_label();
+  void add_scrub_controls(QToolBar* bar);
+  void load_texture();
+  void save_screenshot();
+  void save_view_screenshot();
+  void create_export_menu(QMenu* file);
+
+  SceneModel* model_;
+  SceneControls* controls_;
+  QTabWidget* tabs_;
+  QDockWidget* scene_dock_ = nullptr;
+  FlowView* flow_view_;
+  BasisView* basis_view_;
+  AnimationView* animation_view_;
+  AnalysisView* analysis_view_;
+  QSlider* scrub_ = nullptr;
+  QComboBox* speed_box_ = nullptr;
+  QAction* end_action_ = nullptr;
+  std::vector<ViewPage*> views_;
+  QLabel* caption_banner_ = nullptr;
+  QLabel* message_banner_ = nullptr;
+  QLabel* frame_label_ = nullptr;
+  QTimer* motion_timer_;
+  QAction* play_action_ = nullptr;
+  QAction* step_action_ = nullptr;
+  QAction* back_action_ = nullptr;
+  QAction* reset_action_ = nullptr;
+  QAction* presentation_action_ = nullptr;
+  bool presentation_ = false;
+  bool external_clock_ = false;
+};
+
+}  // namespace oflab

@@ -1,0 +1,47 @@
+#include "app/screenshot.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkRenderWindow.h>
+
+#include <QImageWriter>
+#include <QPainter>
+
+namespace oflab {
+
+QImage grab_with_vtk(QWidget* root) {
+  QImage image = root->grab().toImage().convertToFormat(QImage::Format_RGB32);
+  QPainter painter(&image);
+  for (QVTKOpenGLNativeWidget* view : root->findChildren<QVTKOpenGLNativeWidget*>()) {
+    if (!view->isVisible()) continue;
+    view->renderWindow()->Render();
+    const QImage frame = view->grabFramebuffer();
+    const QPoint at = view->mapTo(root, QPoint(0, 0));
+    painter.drawImage(QRect(at, view->size()), frame);
+  }
+  painter.end();
+  return image;
+}
+
+bool save_png(const QImage& image, const QString& path, QString* error) {
+  QImageWriter writer(path, "png");
+  if (image.isNull() || !writer.write(image)) {
+    if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, writer.errorString());
+    return false;
+  }
+  return true;
+}
+
+bool has_content(const QImage& image) {
+  if (image.isNull()) return false;
+  const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+  const QRgb first = rgb.pixel(0, 0);
+  for (int y = 0; y < rgb.height(); ++y) {
+    const auto* line = reinterpret_cast<const QRgb*>(rgb.constScanLine(y));
+    for (int x = 0; x < rgb.width(); ++x) {
+      if (line[x] != first) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace oflab

@@ -1,0 +1,49 @@
+// Saving and loading the whole session of the window as JSON ("oflab-session", version 1):
+// the plane scene (camera, pose, motion), the motion script, the texture file, the
+// animation view's source, engine settings and display, the frame and the view in front.
+// Plain C++ over core; the window applies a loaded Session (MainWindow::apply_session).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "engine/engine.h"
+#include "models/plane_scene.h"
+
+namespace oflab {
+
+// Thrown for a session file that cannot be used; what() names the file and the field.
+class SessionError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Session {
+  PlaneScene plane;           // the scene panel's plane at frame 0
+  std::string script;         // shipped script name or file, empty when none plays
+  std::string texture;        // texture file, empty for the default texture
+  std::string source_kind = "plane";  // animation source: plane, script or scene
+  std::string source_name;    // script or scene name or file
+  std::string viewer_script;  // scenes only
+  EngineSettings settings;
+  std::string display = "side-by-side";  // gui/views/animation_controls.h panel_display_name
+  int frame = 0;
+  std::string view = "flow";
+};
+
+// The session as JSON text (pretty-printed).
+std::string session_to_json(const Session& session);
+
+// Parses session text; `origin` names the source in errors. Checks the format tag, the
+// version, types, finiteness, non-negative thresholds and known names; the files it names
+// are checked when the session is applied.
+Session parse_session(const std::string& text, const std::string& origin);
+
+// Reads a session file (parse_session); throws SessionError when it cannot be read.
+Session read_session_file(const std::string& path);
+
+// Writes a session file. Throws SessionError when the file exists and `overwrite` is
+// false, or when it cannot be written.
+void write_session_file(const std::string& path, const Session& session, bool overwrite);
+
+}  // namespace oflab

@@ -1,0 +1,208 @@
+#include "app/session_io.h"
+
+#include <vtkImageData.h>
+#include <vtkOggTheoraWriter.h>
+#include <vtkSmartPointer.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <cstring>
+#include <fstream>
+
+#include "runs/animation_run.h"
+#include "formats/datasets.h"
+#include "formats/scene_file.h"
+#include "formats/script_file.h"
+#include "formats/viewer_script_file.h"
+#include "models/animation_session.h"
+#include "views/animation_view.h"
+#include "app/main_window.h"
+#include "models/scene_model.h"
+#include "adapters/texture.h"
+
+namespace oflab {
+namespace {
+
+// Checks every file the session names; the message names the file and what is wrong.
+bool check_files(const Session& s, QImage* texture, std::optional<MotionScript>* script,
+                 QString* error) {
+  try {
+    if (!s.texture.empty()) {
+      *texture = load_texture_image(QString::fromStdString(s.texture), error);
+      if (texture->isNull()) return false;
+    }
+    if (!s.script.empty()) *script = read_script_file(resolve_script_path(s.script));
+    if (s.source_kind == "script") read_script_file(resolve_script_path(s.source_name));
+    if (s.source_kind == "scene") {
+      read_scene_file(resolve_scene_path(s.source_name));
+      read_viewer_script_file(resolve_viewer_script_path(s.viewer_script));
+    }
+  } catch (const std::runtime_error& e) {
+    *error = QString::fromStdString(e.what());
+    return false;
+  }
+  return true;
+}
+
+// Runs `write(frame, image)` over every frame of the animation source, then goes back to
+// the frame shown before. False when there is no source (with *error set) or when `write`
+// returns false (which sets *error itself).
+bool for_each_frame(MainWindow* window, QString* error,
+                    const std::function<bool(int, const QImage&)>& write) {
+  AnimationView* view = window->animation_view();
+  const int saved = window->model()->frame();
+  AnimationSession* session = view->session();
+  if (!session) {
+    *error = QStringLiteral("the animation view has nothing to play");
+    return false;
+  }
+  const int frames = session->frame_count();
+  bool ok = true;
+  for (int k = 0; k < frames && ok; ++k) {
+    window->model()->set_frame(k);
+    ok = write(k, view->render_image());
+  }
+  window->model()->set_frame(saved);
+  return ok;
+}
+
+}  // namespace
+
+Session capture_session(MainWindow* window) {
+  SceneModel* model = window->model();
+  AnimationView* animation = window->animation_view();
+  Session s;
+  s.plane = model->scene();
+  if (model->script()) {
+    // The scene at frame 0 of a script is the script's; the panel's own plane is kept.
+    s.script = model->script_name().toStdString();
+  }
+  s.texture = model->texture_source().toStdString();
+  s.source_kind = animation->source().kind;
+  s.source_name = animation->source().name;
+  s.viewer_script = animation->source().viewer;
+  s.settings = animation->settings();
+  s.display = panel_display_name(animation->display());
+  s.frame = model->frame();
+  s.view = window->current_view()->view_name().toStdString();
+  return s;
+}
+
+bool apply_session(MainWindow* window, const Session& s, QString* error) {
+  QImage texture;
+  std::optional<MotionScript> script;
+  PanelDisplay display = PanelDisplay::kSideBySide;
+  if (!parse_panel_display(s.display, &display)) {
+    *error = QStringLiteral("unknown display '%1'").arg(QString::fromStdString(s.display));
+    return false;
+  }
+  if (!window->view(QString::fromStdString(s.view))) {
+    *error = QStringLiteral("unknown view '%1'").arg(QString::fromStdString(s.view));
+    return false;
+  }
+  if (!check_files(s, &texture, &script, error)) return false;
+  SceneModel* model = window->model();
+  AnimationView* animation = window->animation_view();
+  if (!texture.isNull()) model->set_texture(texture, QString::fromStdString(s.texture));
+  if (s.texture.empty() && !model->texture_source().isEmpty()) {
+    model->set_texture(default_texture(), QString());
+  }
+  model->set_scene(s.plane);
+  if (script) model->set_script(*script, QString::fromStdString(s.script));
+  animation->set_settings(s.settings);
+  if (s.source_kind != "plane" || animation->source().kind != "plane") {
+    animation->set_source({s.source_kind, s.source_name, s.viewer_script});
+  }
+  animation->set_display(display);
+  model->set_frame(s.frame);
+  window->show_view(QString::fromStdString(s.view));
+  return true;
+}
+
+bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite,
+                       QString* error) {
+  if (!QDir().mkpath(directory)) {
+    *error = QStringLiteral("%1: cannot create the directory").arg(directory);
+    return false;
+  }
+  return for_each_frame(window, error, [&](int k, const QImage& image) {
+    const QString path =
+        QDir(directory).filePath(QStringLiteral("frame-%1.png").arg(k, 4, 10, QChar('0')));
+    if (!overwrite && QFileInfo::exists(path)) {
+      *error = QStringLiteral("%1 exists; not overwritten").arg(path);
+      return false;
+    }
+    if (!image.save(path, "PNG")) {
+      *error = QStringLiteral("%1: cannot be written").arg(path);
+      return false;
+    }
+    return true;
+  });
+}
+
+bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error) {
+  if (!overwrite && QFileInfo::exists(path)) {
+    *error = QStringLiteral("%1 exists; not overwritten").arg(path);
+    return false;
+  }
+  auto writer = vtkSmartPointer<vtkOggTheoraWriter>::New();
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  writer->SetFileName(path.toLocal8Bit().constData());
+  writer->SetRate(30);
+  writer->SetInputData(data);
+  bool started = false;
+  const bool ok = for_each_frame(window, error, [&](int, const QImage& frame) {
+    // Theora needs even sizes; VTK's rows run bottom to top.
+    const QImage rgb = frame.convertToFormat(QImage::Format_RGB888)
+                           .copy(0, 0, frame.width() & ~1, frame.height() & ~1);
+    data->SetDimensions(rgb.width(), rgb.height(), 1);
+    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* out = static_cast<unsigned char*>(data->GetScalarPointer());
+    for (int y = 0; y < rgb.height(); ++y) {
+      std::memcpy(out + size_t(rgb.height() - 1 - y) * rgb.width() * 3, rgb.constScanLine(y),
+                  size_t(rgb.width()) * 3);
+    }
+    data->Modified();
+    if (!started) writer->Start();
+    started = true;
+    writer->Write();
+    if (writer->GetError() == 0) return true;
+    *error = QStringLiteral("%1: the video could not be written").arg(path);
+    return false;
+  });
+  if (started) writer->End();
+  if (ok && !QFileInfo::exists(path)) {
+    *error = QStringLiteral("%1: the video could not be written").arg(path);
+    return false;
+  }
+  if (!ok) return false;
+  return true;
+}
+
+bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error) {
+  AnimationSession* session = window->animation_view()->session();
+  if (!session || session->source().is_scene()) {
+    *error = QStringLiteral(
+        "the per-frame CSV is for a single plane (use oflab-cli animate "
+        "--scene for scenes)");
+    return false;
+  }
+  if (!overwrite && QFileInfo::exists(path)) {
+    *error = QStringLiteral("%1 exists; not overwritten").arg(path);
+    return false;
+  }
+  AnimationOptions options;
+  options.settings = session->settings();
+  options.run_baseline = false;
+  const AnimationRun run = run_animation(session->source().plane_script,
+                                         make_layer(session->source().plane_texture), options);
+  std::ofstream out(path.toStdString());
+  write_frame_csv(out, run);
+  if (!out) {
+    *error = QStringLiteral("%1: cannot be written").arg(path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace oflab

@@ -1,0 +1,33 @@
+// The window's session and exports: capture the session of a window, apply a loaded one
+// (checking every file it names before anything changes), and write the animation as
+// numbered PNGs, an Ogg Theora video or the per-frame CSV. File dialogs live in the
+// window; these functions never overwrite an existing file unless told to.
+#pragma once
+
+#include <QString>
+
+#include "app/session_file.h"
+
+namespace oflab {
+
+class MainWindow;
+
+// The window's current session.
+Session capture_session(MainWindow* window);
+
+// Applies a session. Returns false with *error set, changing nothing, when a file it names
+// (texture, script, scene, viewer script) cannot be read or a value is unknown.
+bool apply_session(MainWindow* window, const Session& session, QString* error);
+
+// Plays the animation view's source from frame 0 to its last frame and writes what the
+// view shows for each frame: `directory`/frame-0000.png ... (PNG) or one .ogv file
+// (video, vtkOggTheoraWriter at 30 fps). Refuses existing files unless `overwrite`.
+// Returns false with *error set on failure. The window's frame is restored afterwards.
+bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite, QString* error);
+bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error);
+
+// The engine's per-frame CSV (analysis/runs/animation_run.h write_frame_csv) of the single-plane
+// source over its whole script. False with *error for a scene source or an existing file.
+bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error);
+
+}  // namespace oflab

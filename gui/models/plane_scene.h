@@ -1,0 +1,37 @@
+// The "current scene" every view draws: one camera, one textured plane and its rigid
+// motion (core types only; no Qt, no VTK). The default demo is the reference default
+// case of planar-flow-math.md section 4.2.
+#pragma once
+
+#include <string>
+
+#include "flow/camera.h"
+#include "flow/motion.h"
+#include "flow/plane.h"
+
+namespace oflab {
+
+struct PlaneScene {
+  Camera camera;
+  PlanePose pose;
+  RigidMotion motion;
+};
+
+// The default demo: 800 x 600 image, f = 600 px, a 1 x 0.8 plane at P = (0.15, -0.1, 3)
+// tilted towards the viewer (N = (0.25, -0.15, 1), U = (0, -1, 0)) in a screw motion with
+// V = (0.3, -0.2, 0.5) world units per second and Omega = (0.4, -0.3, 0.6) rad per second.
+// The texture size is the bundled butterfly's (243 x 198 texels); SceneModel sets it to
+// whatever texture is loaded.
+PlaneScene default_demo_scene();
+
+// Empty when every view can draw the scene, otherwise one line saying what is wrong:
+// core's camera_problem and plane_pose_problem, plus a check that all four plane corners
+// are in front of the eye (a plane that reaches behind the camera has no finite image)
+// and that the velocities are finite.
+std::string plane_scene_problem(const PlaneScene& scene);
+
+// The plane pose after t seconds of the scene's motion (core's rigid_step and
+// advance_pose; exact for every motion model).
+PlanePose pose_at_time(const PlaneScene& scene, double t);
+
+}  // namespace oflab

@@ -1,0 +1,219 @@
+#include "views/animation_controls.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include "formats/datasets.h"
+#include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
+
+namespace oflab {
+namespace {
+
+constexpr EngineMode kModes[] = {EngineMode::kPerspective, EngineMode::kAffine,
+                                 EngineMode::kExact, EngineMode::kRerender};
+constexpr DeltaPolicy kDeltas[] = {DeltaPolicy::kDissertation, DeltaPolicy::kOne,
+                                   DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
+                                   DeltaPolicy::kFourthRootAbsDet};
+constexpr const char* kThresholdLabels[kTermCount] = {"none", "translate", "affine",
+                                                     "perspective"};
+
+QString source_key(const std::string& kind, const std::string& name) {
+  return QString::fromStdString(kind + "|" + name);
+}
+
+void select_data(QComboBox* box, const QVariant& data) {
+  const int index = box->findData(data);
+  if (index >= 0) box->setCurrentIndex(index);
+}
+
+}  // namespace
+
+const char* panel_display_name(PanelDisplay display) {
+  switch (display) {
+    case PanelDisplay::kDifference: return "difference";
+    case PanelDisplay::kBlink: return "blink";
+    default: return "side-by-side";
+  }
+}
+
+bool parse_panel_display(const std::string& text, PanelDisplay* display) {
+  for (PanelDisplay d : {PanelDisplay::kSideBySide, PanelDisplay::kDifference, PanelDisplay::kBlink}) {
+    if (text == panel_display_name(d)) {
+      *display = d;
+      return true;
+    }
+  }
+  return false;
+}
+
+AnimationControls::AnimationControls(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(2);
+  layout->addWidget(make_source_row());
+  layout->addWidget(make_engine_row());
+}
+
+QWidget* AnimationControls::make_source_row() {
+  auto* row = new QWidget(this);
+  auto* layout = new QHBoxLayout(row);
+  layout->setContentsMargins(0, 0, 0, 0);
+  source_box_ = new QComboBox(row);
+  source_box_->setObjectName(QStringLiteral("animation_source"));
+  source_box_->addItem(tr("Plane of the scene panel"), source_key("plane", ""));
+  for (const std::string& n : shipped_script_names()) {
+    source_box_->addItem(tr("Plane script: %1").arg(QString::fromStdString(n)), source_key("script", n));
+  }
+  for (const std::string& n : shipped_scene_names()) {
+    source_box_->addItem(tr("Scene: %1").arg(QString::fromStdString(n)), source_key("scene", n));
+  }
+  viewer_box_ = new QComboBox(row);
+  viewer_box_->setObjectName(QStringLiteral("animation_viewer"));
+  for (const std::string& n : shipped_viewer_script_names()) {
+    viewer_box_->addItem(QString::fromStdString(n), QString::fromStdString(n));
+  }
+  select_data(viewer_box_, QStringLiteral("circle"));
+  viewer_box_->setEnabled(false);
+  display_box_ = new QComboBox(row);
+  display_box_->setObjectName(QStringLiteral("animation_display"));
+  display_box_->addItem(tr("Side by side"), int(PanelDisplay::kSideBySide));
+  display_box_->addItem(tr("Difference heat map"), int(PanelDisplay::kDifference));
+  display_box_->addItem(tr("Blink"), int(PanelDisplay::kBlink));
+  layout->addWidget(new QLabel(tr("Play"), row));
+  layout->addWidget(source_box_, 2);
+  layout->addWidget(new QLabel(tr("viewer"), row));
+  layout->addWidget(viewer_box_, 1);
+  layout->addWidget(new QLabel(tr("Show"), row));
+  layout->addWidget(display_box_, 1);
+  for (QComboBox* box : {source_box_, viewer_box_, display_box_}) {
+    // Long file names must not widen the window.
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(8);
+  }
+  connect(source_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this] { emit source_edited(); });
+  connect(viewer_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this] { emit source_edited(); });
+  connect(display_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this] { emit display_edited(); });
+  return row;
+}
+
+// Adds the mode row to the layout and returns the thresholds row.
+QWidget* AnimationControls::make_engine_row() {
+  auto* row = new QWidget(this);
+  auto* layout = new QHBoxLayout(row);
+  layout->setContentsMargins(0, 0, 0, 0);
+  mode_box_ = new QComboBox(row);
+  mode_box_->setObjectName(QStringLiteral("animation_mode"));
+  for (EngineMode m : kModes) mode_box_->addItem(engine_mode_name(m), int(m));
+  affine_switch_ = new QPushButton(tr("Affine/persp."), row);
+  affine_switch_->setToolTip(tr("Switches between the affine and the perspective mode"));
+  layout->addWidget(new QLabel(tr("Mode"), row));
+  layout->addWidget(mode_box_);
+  layout->addWidget(affine_switch_);
+  delta_box_ = new QComboBox(row);
+  for (DeltaPolicy d : kDeltas) delta_box_->addItem(delta_policy_name(d), int(d));
+  sampling_box_ = new QComboBox(row);
+  sampling_box_->addItem(tr("nearest"), int(Sampling::kNearest));
+  sampling_box_->addItem(tr("bilinear"), int(Sampling::kBilinear));
+  layout->addWidget(new QLabel(tr("Delta"), row));
+  layout->addWidget(delta_box_);
+  layout->addWidget(sampling_box_);
+  layout->addStretch(1);
+  // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
+  auto* threshold_row = new QWidget(this);
+  static_cast<QVBoxLayout*>(this->layout())->addWidget(row);
+  auto* thresholds = new QHBoxLayout(threshold_row);
+  thresholds->setContentsMargins(0, 0, 0, 0);
+  auto* label = new QLabel(tr("Thresholds (px)"), threshold_row);
+  label->setToolTip(tr("Error budgets of the levels none, translate, affine and perspective"));
+  thresholds->addWidget(label);
+  for (int k = 0; k < kTermCount; ++k) {
+    thresholds_[k] = new QDoubleSpinBox(threshold_row);
+    thresholds_[k]->setRange(0.0, 100.0);
+    thresholds_[k]->setDecimals(2);
+    thresholds_[k]->setSingleStep(0.25);
+    thresholds_[k]->setToolTip(tr("Threshold of level %1, pixels").arg(kThresholdLabels[k]));
+    thresholds_[k]->setKeyboardTracking(false);
+    thresholds->addWidget(thresholds_[k]);
+    connect(thresholds_[k], QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+            [this] { emit settings_edited(); });
+  }
+  for (QComboBox* box : {mode_box_, delta_box_, sampling_box_}) {
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { emit settings_edited(); });
+  }
+  connect(affine_switch_, &QPushButton::clicked, this, [this] {
+    const bool affine = mode_box_->currentData().toInt() == int(EngineMode::kAffine);
+    select_data(mode_box_, int(affine ? EngineMode::kPerspective : EngineMode::kAffine));
+    emit settings_edited();
+  });
+  thresholds->addStretch(1);
+  set_settings(EngineSettings{});
+  return threshold_row;
+}
+
+EngineSettings AnimationControls::settings() const {
+  EngineSettings s;
+  s.mode = static_cast<EngineMode>(mode_box_->currentData().toInt());
+  for (int k = 0; k < kTermCount; ++k) s.thresholds[size_t(k)] = thresholds_[k]->value();
+  s.delta = static_cast<DeltaPolicy>(delta_box_->currentData().toInt());
+  s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
+  return s;
+}
+
+void AnimationControls::set_settings(const EngineSettings& s) {
+  const QSignalBlocker b0(mode_box_), b1(delta_box_), b2(sampling_box_);
+  select_data(mode_box_, int(s.mode));
+  select_data(delta_box_, int(s.delta));
+  select_data(sampling_box_, int(s.sampling));
+  for (int k = 0; k < kTermCount; ++k) {
+    const QSignalBlocker block(thresholds_[k]);
+    thresholds_[k]->setValue(s.thresholds[size_t(k)]);
+  }
+}
+
+PanelDisplay AnimationControls::display() const {
+  return static_cast<PanelDisplay>(display_box_->currentData().toInt());
+}
+
+void AnimationControls::set_display(PanelDisplay display) {
+  const QSignalBlocker block(display_box_);
+  select_data(display_box_, int(display));
+}
+
+SourceChoice AnimationControls::source() const {
+  const QString key = source_box_->currentData().toString();
+  SourceChoice choice;
+  choice.kind = key.section('|', 0, 0).toStdString();
+  choice.name = key.section('|', 1).toStdString();
+  if (choice.kind == "scene") choice.viewer = viewer_box_->currentData().toString().toStdString();
+  return choice;
+}
+
+void AnimationControls::add_file_entry(QComboBox* box, const std::string& kind,
+                                       const std::string& path) {
+  const QVariant data = kind.empty() ? QVariant(QString::fromStdString(path))
+                                     : QVariant(source_key(kind, path));
+  if (box->findData(data) >= 0) return;
+  box->addItem(tr("File: %1").arg(QString::fromStdString(path)), data);
+}
+
+void AnimationControls::set_source(const SourceChoice& choice) {
+  const QSignalBlocker b0(source_box_), b1(viewer_box_);
+  add_file_entry(source_box_, choice.kind, choice.name);
+  select_data(source_box_, source_key(choice.kind, choice.name));
+  if (choice.kind == "scene") {
+    add_file_entry(viewer_box_, "", choice.viewer);
+    select_data(viewer_box_, QString::fromStdString(choice.viewer));
+  }
+  viewer_box_->setEnabled(choice.kind == "scene");
+}
+
+}  // namespace oflab

@@ -1,0 +1,163 @@
+#include "views/basis_view.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSlider>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "views/basis_tiles.h"
+#include "views/flow_parts.h"
+#include "models/scene_model.h"
+
+namespace oflab {
+namespace {
+
+constexpr double kPhaseStep = 2.0 * 3.14159265358979323846 / 48.0;  // 48 steps per cycle
+constexpr int kTimerMs = 40;
+
+}  // namespace
+
+BasisView::BasisView(SceneModel* model, QWidget* parent) : ViewPage(parent), model_(model) {
+  setObjectName(QStringLiteral("basis_view"));
+  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
+  vtk_widget_->setObjectName(QStringLiteral("basis_vtk"));
+  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window->SetMultiSamples(0);  // MSAA costs most of the frame on software OpenGL
+  vtk_widget_->setRenderWindow(window);
+  window->GetInteractor()->SetInteractorStyle(nullptr);
+  tiles_ = std::make_unique<BasisTiles>(window);
+  timer_ = new QTimer(this);
+  timer_->setInterval(kTimerMs);
+  connect(timer_, &QTimer::timeout, this, &BasisView::step_animation);
+
+  summary_ = new QLabel(this);
+  summary_->setWordWrap(true);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(make_option_bar());
+  layout->addWidget(vtk_widget_, 1);
+  layout->addWidget(summary_);
+  connect(model_, &SceneModel::scene_changed, this, &BasisView::refresh);
+}
+
+BasisView::~BasisView() = default;
+
+QWidget* BasisView::make_option_bar() {
+  auto* bar = new QWidget(this);
+  auto* row = new QHBoxLayout(bar);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->addWidget(new QLabel(tr("Basis:"), bar));
+  basis_box_ = new QComboBox(bar);
+  basis_box_->setObjectName(QStringLiteral("gallery_basis"));
+  for (int k = 0; k < kBasisKindCount; ++k) {
+    basis_box_->addItem(QString::fromUtf8(basis_title(static_cast<BasisKind>(k))));
+  }
+  basis_box_->setCurrentIndex(static_cast<int>(BasisKind::kPlanar));
+  row->addWidget(basis_box_);
+  row->addWidget(new QLabel(tr("Amount:"), bar));
+  amount_slider_ = new QSlider(Qt::Horizontal, bar);
+  amount_slider_->setObjectName(QStringLiteral("gallery_amount"));
+  amount_slider_->setRange(0, 100);
+  amount_slider_->setValue(60);
+  amount_slider_->setMinimumWidth(160);
+  row->addWidget(amount_slider_);
+  play_box_ = new QCheckBox(tr("Play"), bar);
+  play_box_->setObjectName(QStringLiteral("gallery_play"));
+  row->addWidget(play_box_);
+  row->addStretch(1);
+  connect(basis_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          [this](int) { refresh(); });
+  connect(amount_slider_, &QSlider::valueChanged, this, [this](int) { refresh(); });
+  connect(play_box_, &QCheckBox::toggled, this, &BasisView::set_playing);
+  return bar;
+}
+
+BasisKind BasisView::basis() const { return static_cast<BasisKind>(basis_box_->currentIndex()); }
+void BasisView::set_basis(BasisKind kind) { basis_box_->setCurrentIndex(static_cast<int>(kind)); }
+double BasisView::amount() const { return amount_slider_->value() / 100.0; }
+void BasisView::set_amount(double amount) {
+  amount_slider_->setValue(static_cast<int>(std::lround(amount * 100.0)));
+}
+bool BasisView::playing() const { return playing_; }
+int BasisView::active_tile_count() const { return tiles_->active_tile_count(); }
+
+void BasisView::set_playing(bool playing) {
+  playing_ = playing;
+  const QSignalBlocker block(play_box_);
+  play_box_->setChecked(playing);
+  if (playing && !external_clock_) {
+    timer_->start();
+  } else {
+    timer_->stop();
+  }
+  if (!playing) {
+    phase_ = 3.14159265358979323846;  // paused: show the full amount
+    refresh();
+  }
+}
+
+void BasisView::set_external_clock(bool on) {
+  external_clock_ = on;
+  set_playing(playing_);
+}
+
+double BasisView::animated_amount() const { return amount() * 0.5 * (1.0 - std::cos(phase_)); }
+
+void BasisView::step_animation() {
+  phase_ += kPhaseStep;
+  refresh();
+}
+
+void BasisView::update_tiles() {
+  const PlaneScene& scene = model_->scene();
+  const FlowContext context =
+      make_flow_context(scene.camera, model_->current_pose(), model_->current_motion());
+  const double radius = 0.5 * std::hypot(scene.camera.width, scene.camera.height);
+  tiles_->update(basis(), context.terms, radius, animated_amount());
+  int second_order_active = 0;
+  const std::vector<BasisTerm> terms = basis_terms(basis());
+  for (const BasisTerm& term : terms) {
+    if (term.order == 2 && !is_negligible(2, term.coefficient(context.terms), radius)) {
+      ++second_order_active;
+    }
+  }
+  summary_->setText(tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
+                       "second-order ones. Grey tiles are terms this flow does not excite.")
+                        .arg(QString::fromUtf8(basis_title(basis())))
+                        .arg(tiles_->active_tile_count())
+                        .arg(second_order_active));
+  dirty_ = false;
+}
+
+void BasisView::refresh() {
+  dirty_ = true;
+  if (!isVisible()) return;
+  update_tiles();
+  vtk_widget_->renderWindow()->Render();
+}
+
+void BasisView::showEvent(QShowEvent* event) {
+  ViewPage::showEvent(event);
+  if (dirty_) refresh();
+}
+
+QImage BasisView::render_image() {
+  if (dirty_) update_tiles();
+  vtk_widget_->renderWindow()->Render();
+  return vtk_widget_->grabFramebuffer();
+}
+
+void BasisView::set_theme(const ViewTheme& theme) {
+  tiles_->set_theme(theme);
+  refresh();
+}
+
+}  // namespace oflab

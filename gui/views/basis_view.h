@@ -1,0 +1,73 @@
+// View 2, "Basis deformations": the gallery of basis terms (BasisTiles) for the chosen
+// basis, with the amount of deformation on a slider and a play toggle that animates it
+// (a QTimer). Each tile shows the current flow's coefficient of its term.
+#pragma once
+
+#include <memory>
+
+#include "views/basis_catalog.h"
+#include "views/view_page.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QSlider;
+class QTimer;
+class QVTKOpenGLNativeWidget;
+
+namespace oflab {
+
+class BasisTiles;
+class SceneModel;
+
+class BasisView : public ViewPage {
+  Q_OBJECT
+
+ public:
+  // The model must outlive the view.
+  BasisView(SceneModel* model, QWidget* parent = nullptr);
+  ~BasisView() override;
+
+  QString view_name() const override { return QStringLiteral("basis"); }
+  QString view_title() const override { return tr("Basis deformations"); }
+  QImage render_image() override;
+  void step_animation() override;
+  void set_external_clock(bool on) override;
+  void set_theme(const ViewTheme& theme) override;
+
+  BasisKind basis() const;
+  void set_basis(BasisKind kind);
+  // Maximum amount of deformation, 0..1 (the slider).
+  double amount() const;
+  void set_amount(double amount);
+  bool playing() const;
+  void set_playing(bool playing);
+  // Tiles with a non-zero coefficient after the last update.
+  int active_tile_count() const;
+  QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
+
+  void refresh();
+
+ protected:
+  void showEvent(QShowEvent* event) override;
+
+ private:
+  QWidget* make_option_bar();
+  void update_tiles();
+  double animated_amount() const;
+
+  SceneModel* model_;
+  QVTKOpenGLNativeWidget* vtk_widget_;
+  std::unique_ptr<BasisTiles> tiles_;
+  QComboBox* basis_box_ = nullptr;
+  QSlider* amount_slider_ = nullptr;
+  QCheckBox* play_box_ = nullptr;
+  QLabel* summary_ = nullptr;
+  QTimer* timer_;
+  double phase_ = 3.14159265358979323846;  // 0.5 (1 - cos(phase)) = 1: full amount when paused
+  bool dirty_ = true;
+  bool playing_ = false;
+  bool external_clock_ = false;
+};
+
+}  // namespace oflab

@@ -1,0 +1,155 @@
+#include "views/flow_view.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QSplitter>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "views/coefficient_table.h"
+#include "models/scene_model.h"
+
+namespace oflab {
+
+FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model_(model) {
+  setObjectName(QStringLiteral("flow_view"));
+  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
+  vtk_widget_->setObjectName(QStringLiteral("flow_vtk"));
+  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window->SetMultiSamples(0);  // MSAA costs most of the frame on software OpenGL
+  vtk_widget_->setRenderWindow(window);
+  // The flow view is a fixed camera: no mouse rotation of the image plane.
+  window->GetInteractor()->SetInteractorStyle(nullptr);
+  renderer_ = std::make_unique<FlowRenderer>(window);
+  renderer_->set_texture(model_->texture());
+  table_ = new CoefficientTable(this);
+
+  // Side panel: what to draw above the coefficient table, so the options never widen the
+  // window (presentation mode doubles their size).
+  auto* side = new QWidget(this);
+  auto* side_layout = new QVBoxLayout(side);
+  side_layout->setContentsMargins(4, 0, 0, 0);
+  side_layout->addWidget(make_option_bar());
+  side_layout->addWidget(table_, 1);
+  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->addWidget(vtk_widget_);
+  splitter->addWidget(side);
+  splitter->setStretchFactor(0, 1);
+  splitter->setStretchFactor(1, 0);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(splitter, 1);
+
+  connect(model_, &SceneModel::scene_changed, this, &FlowView::refresh);
+  connect(model_, &SceneModel::texture_changed, this,
+          [this] { renderer_->set_texture(model_->texture()); });
+}
+
+FlowView::~FlowView() = default;
+
+QWidget* FlowView::make_option_bar() {
+  auto* bar = new QWidget(this);
+  auto* grid = new QGridLayout(bar);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->addWidget(new QLabel(tr("Show:"), bar), 0, 0, 1, 2);
+  part_box_ = new QComboBox(bar);
+  part_box_->setObjectName(QStringLiteral("flow_part"));
+  for (int k = 0; k < kFlowPartCount; ++k) {
+    part_box_->addItem(QString::fromUtf8(flow_part_title(static_cast<FlowPart>(k))));
+  }
+  part_box_->setToolTip(
+      tr("Which part of the flow to draw: the exact flow, one order of its "
+         "Taylor expansion, or a residual against an approximation"));
+  grid->addWidget(part_box_, 1, 0, 1, 2);
+  arrows_box_ = new QCheckBox(tr("Arrows"), bar);
+  streamlines_box_ = new QCheckBox(tr("Streamlines"), bar);
+  wheel_box_ = new QCheckBox(tr("Colour wheel"), bar);
+  texture_box_ = new QCheckBox(tr("Texture"), bar);
+  zoom_box_ = new QCheckBox(tr("Zoom to plane"), bar);
+  common_scale_box_ = new QCheckBox(tr("Common scale"), bar);
+  common_scale_box_->setToolTip(
+      tr("Draw every part at the full flow's arrow scale, so parts compare by length"));
+  zoom_box_->setToolTip(tr("Fit the view to the plane's image instead of the whole image"));
+  const FlowDisplay defaults;
+  arrows_box_->setChecked(defaults.arrows);
+  texture_box_->setChecked(defaults.texture);
+  zoom_box_->setChecked(defaults.zoom_to_plane);
+  common_scale_box_->setChecked(defaults.common_scale);
+  int cell = 0;
+  for (QCheckBox* box :
+       {arrows_box_, streamlines_box_, wheel_box_, texture_box_, zoom_box_, common_scale_box_}) {
+    grid->addWidget(box, 2 + cell / 2, cell % 2);
+    ++cell;
+    connect(box, &QCheckBox::toggled, this, &FlowView::refresh);
+  }
+  connect(part_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          [this](int) { refresh(); });
+  return bar;
+}
+
+FlowDisplay FlowView::display() const {
+  FlowDisplay d;
+  d.part = static_cast<FlowPart>(part_box_->currentIndex());
+  d.arrows = arrows_box_->isChecked();
+  d.streamlines = streamlines_box_->isChecked();
+  d.colour_wheel = wheel_box_->isChecked();
+  d.texture = texture_box_->isChecked();
+  d.zoom_to_plane = zoom_box_->isChecked();
+  d.common_scale = common_scale_box_->isChecked();
+  return d;
+}
+
+void FlowView::set_display(const FlowDisplay& d) {
+  const QSignalBlocker b1(part_box_), b2(arrows_box_), b3(streamlines_box_), b4(wheel_box_),
+      b5(texture_box_), b6(zoom_box_), b7(common_scale_box_);
+  part_box_->setCurrentIndex(static_cast<int>(d.part));
+  arrows_box_->setChecked(d.arrows);
+  streamlines_box_->setChecked(d.streamlines);
+  wheel_box_->setChecked(d.colour_wheel);
+  texture_box_->setChecked(d.texture);
+  zoom_box_->setChecked(d.zoom_to_plane);
+  common_scale_box_->setChecked(d.common_scale);
+  refresh();
+}
+
+void FlowView::update_scene() {
+  const PlaneScene& scene = model_->scene();
+  const FlowContext context =
+      make_flow_context(scene.camera, model_->current_pose(), model_->current_motion());
+  QString frame = tr("frame %1, t = %2 s").arg(model_->frame()).arg(model_->time(), 0, 'f', 2);
+  if (!model_->script_name().isEmpty()) frame.prepend(tr("script %1, ").arg(model_->script_name()));
+  renderer_->update(context, display(), frame);
+  table_->show_terms(context.terms, 0.5 * std::hypot(scene.camera.width, scene.camera.height));
+  dirty_ = false;
+}
+
+void FlowView::refresh() {
+  dirty_ = true;
+  if (!isVisible()) return;
+  update_scene();
+  vtk_widget_->renderWindow()->Render();
+}
+
+void FlowView::showEvent(QShowEvent* event) {
+  ViewPage::showEvent(event);
+  if (dirty_) refresh();
+}
+
+QImage FlowView::render_image() {
+  if (dirty_) update_scene();
+  vtk_widget_->renderWindow()->Render();
+  return vtk_widget_->grabFramebuffer();
+}
+
+void FlowView::set_theme(const ViewTheme& theme) {
+  renderer_->set_theme(theme);
+  refresh();
+}
+
+}  // namespace oflab

@@ -1,0 +1,65 @@
+// View 1, "Flow field": the instantaneous flow of the current scene at the current frame,
+// drawn by FlowRenderer, with the controls that choose the part of the flow and how it is
+// drawn, and the coefficient table beside it.
+#pragma once
+
+#include <memory>
+
+#include "adapters/flow_renderer.h"
+#include "views/view_page.h"
+
+class QCheckBox;
+class QComboBox;
+class QVTKOpenGLNativeWidget;
+
+namespace oflab {
+
+class CoefficientTable;
+class SceneModel;
+
+class FlowView : public ViewPage {
+  Q_OBJECT
+
+ public:
+  // The model must outlive the view.
+  FlowView(SceneModel* model, QWidget* parent = nullptr);
+  ~FlowView() override;
+
+  QString view_name() const override { return QStringLiteral("flow"); }
+  QString view_title() const override { return tr("Flow field"); }
+  QImage render_image() override;
+  void set_theme(const ViewTheme& theme) override;
+
+  FlowDisplay display() const;
+  void set_display(const FlowDisplay& display);
+  CoefficientTable* coefficient_table() const { return table_; }
+  QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
+  // Largest magnitude of the shown part after the last update, px/s.
+  double shown_max_magnitude() const { return renderer_->shown_max_magnitude(); }
+
+  // Updates the VTK scene from the model and renders when the view is visible (otherwise
+  // it renders when shown).
+  void refresh();
+
+ protected:
+  void showEvent(QShowEvent* event) override;
+
+ private:
+  QWidget* make_option_bar();
+  void update_scene();
+
+  SceneModel* model_;
+  QVTKOpenGLNativeWidget* vtk_widget_;
+  std::unique_ptr<FlowRenderer> renderer_;
+  CoefficientTable* table_;
+  QComboBox* part_box_ = nullptr;
+  QCheckBox* arrows_box_ = nullptr;
+  QCheckBox* streamlines_box_ = nullptr;
+  QCheckBox* wheel_box_ = nullptr;
+  QCheckBox* texture_box_ = nullptr;
+  QCheckBox* zoom_box_ = nullptr;
+  QCheckBox* common_scale_box_ = nullptr;
+  bool dirty_ = true;
+};
+
+}  // namespace oflab

@@ -1,0 +1,55 @@
+// The scene panel: sliders and numeric fields for the motion (V, Omega, motion model), the
+// plane (two tilt angles and distance, see gui/models/scene_parameters.h) and the camera's focal
+// length. Every edit proposes a whole new PlaneScene to the SceneModel; when the model rejects
+// it the panel snaps back to the model's scene, so the panel never shows a state the views
+// do not draw.
+#pragma once
+
+#include <QWidget>
+#include <functional>
+#include <vector>
+
+#include "models/plane_scene.h"
+
+class QComboBox;
+
+namespace oflab {
+
+class SceneModel;
+class SliderSpin;
+
+class SceneControls : public QWidget {
+  Q_OBJECT
+
+ public:
+  // The model must outlive the panel.
+  explicit SceneControls(SceneModel* model, QWidget* parent = nullptr);
+
+  // The control for a parameter by its object name ("velocity_x", "omega_z", "turn",
+  // "tilt", "distance", "focal", ...), or nullptr.
+  SliderSpin* control(const QString& name) const;
+
+  // Shows the model's scene in every control (without emitting edits).
+  void sync_from_model();
+
+ private:
+  struct Binding {
+    SliderSpin* widget;
+    std::function<double(const PlaneScene&)> get;
+    std::function<void(PlaneScene&, double)> set;
+  };
+  QWidget* make_motion_group();
+  QWidget* make_plane_group();
+  QWidget* make_camera_group();
+  SliderSpin* add_control(QWidget* group, const QString& name, const QString& label, double minimum,
+                          double maximum, double step, int decimals, const QString& suffix,
+                          std::function<double(const PlaneScene&)> get,
+                          std::function<void(PlaneScene&, double)> set);
+  void propose(const std::function<void(PlaneScene&)>& change);
+
+  SceneModel* model_;
+  std::vector<Binding> bindings_;
+  QComboBox* model_box_ = nullptr;
+};
+
+}  // namespace oflab

@@ -1,0 +1,75 @@
+// The "Scene shifting" view (dissertation chapter 3, manual/scene-shifting.md): a top-down
+// diagram of Hofmann's slices for the train-window scene (depth against lateral position:
+// the eye, the slice boundaries, the asymptote k|V|/epsilon, the scene's planes) beside the
+// scene-shifting renderer's layered animation, with epsilon and the viewer's speed on
+// sliders. Everything shown comes from core/scene_shifting/scene_shifting.h and
+// core/scene_shifting/scene_shifting_renderer.h; this file only draws it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <QImage>
+#include <QLabel>
+
+#include "scene/scene.h"
+#include "scene_shifting/scene_shifting_renderer.h"
+#include "scene/viewer_script.h"
+#include "views/view_page.h"
+
+namespace oflab {
+
+class SliderSpin;
+
+// Paints the top-down slice diagram into a width x height image: depth runs left to right
+// on a square-root scale from the eye to `max_depth` (world units), lateral position
+// bottom to top. `planes` are (depth, left x, right x) of the scene's planes in the start
+// view. Preconditions: width, height > 0, max_depth > 0.
+struct DiagramPlane {
+  double depth, left, right;
+};
+QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, double asymptote,
+                     const std::vector<DiagramPlane>& planes, double max_depth,
+                     const ViewTheme& theme);
+
+class SlicesView : public ViewPage {
+ public:
+  // Loads the shipped train-window scene and train-sideways viewer script; if they cannot
+  // be read the view shows the reason instead of a diagram.
+  explicit SlicesView(QWidget* parent = nullptr);
+  ~SlicesView() override;
+
+  QString view_name() const override { return "slices"; }
+  QString view_title() const override { return "Scene shifting"; }
+  QImage render_image() override;
+  void step_animation() override;
+  void set_theme(const ViewTheme& theme) override;
+
+  // The slicing in force (for tests): epsilon in pixels per frame, speed in world units
+  // per frame.
+  double epsilon_px() const;
+  double speed() const;
+  int slice_count() const { return static_cast<int>(slices_.size()); }
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
+ private:
+  void restart();
+  void refresh();
+
+  Scene scene_;
+  ViewerScript script_;
+  std::unique_ptr<SceneShiftingRenderer> renderer_;
+  std::vector<Slice> slices_;
+  int frame_ = 0;
+  QString problem_;
+  ViewTheme theme_;
+  SliderSpin* epsilon_ = nullptr;
+  SliderSpin* speed_ = nullptr;
+  QLabel* diagram_ = nullptr;
+  QLabel* frame_label_ = nullptr;
+  QLabel* caption_ = nullptr;
+};
+
+}  // namespace oflab

@@ -1,0 +1,56 @@
+#include "views/slider_spin.h"
+
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSlider>
+#include <cmath>
+
+namespace oflab {
+
+SliderSpin::SliderSpin(const QString& label, double minimum, double maximum, double step,
+                       int decimals, const QString& suffix, QWidget* parent)
+    : QWidget(parent), minimum_(minimum), step_(step) {
+  auto* row = new QHBoxLayout(this);
+  row->setContentsMargins(0, 0, 0, 0);
+  auto* name = new QLabel(label, this);
+  name->setMinimumWidth(70);
+  slider_ = new QSlider(Qt::Horizontal, this);
+  slider_->setRange(0, slider_position(maximum));
+  slider_->setMinimumWidth(110);
+  spin_ = new QDoubleSpinBox(this);
+  spin_->setRange(minimum, maximum);
+  spin_->setSingleStep(step);
+  spin_->setDecimals(decimals);
+  spin_->setSuffix(suffix);
+  spin_->setKeyboardTracking(false);  // act on Enter or focus change, not every keystroke
+  spin_->setMinimumWidth(105);
+  row->addWidget(name);
+  row->addWidget(slider_, 1);
+  row->addWidget(spin_);
+  connect(slider_, &QSlider::valueChanged, this, [this](int position) {
+    const double v = minimum_ + position * step_;
+    const QSignalBlocker block(spin_);
+    spin_->setValue(v);
+    emit edited(v);
+  });
+  connect(spin_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+    const QSignalBlocker block(slider_);
+    slider_->setValue(slider_position(v));
+    emit edited(v);
+  });
+}
+
+int SliderSpin::slider_position(double value) const {
+  return static_cast<int>(std::lround((value - minimum_) / step_));
+}
+
+double SliderSpin::value() const { return spin_->value(); }
+
+void SliderSpin::set_value(double value) {
+  const QSignalBlocker b1(slider_), b2(spin_);
+  spin_->setValue(value);
+  slider_->setValue(slider_position(value));
+}
+
+}  // namespace oflab

@@ -1,0 +1,32 @@
+#include "views/view_theme.h"
+
+namespace oflab {
+
+ViewTheme view_theme(bool presentation) {
+  ViewTheme t;
+  t.presentation = presentation;
+  if (presentation) {
+    t.background = {0.97, 0.97, 0.95};
+    t.text = {0.05, 0.05, 0.05};
+    t.outline = {0.0, 0.0, 0.0};
+    t.streamline = {0.25, 0.25, 0.25};
+    t.tile_background = {1.0, 1.0, 1.0};
+    t.muted_background = {0.86, 0.86, 0.86};
+    t.muted = {0.62, 0.62, 0.62};
+    t.font_size = 20;
+    t.line_width = 2.5;
+  } else {
+    t.background = {0.09, 0.10, 0.12};
+    t.text = {0.92, 0.92, 0.92};
+    t.outline = {1.0, 1.0, 1.0};
+    t.streamline = {0.80, 0.80, 0.80};
+    t.tile_background = {0.13, 0.15, 0.18};
+    t.muted_background = {0.20, 0.20, 0.20};
+    t.muted = {0.42, 0.42, 0.42};
+    t.font_size = 14;
+    t.line_width = 1.5;
+  }
+  return t;
+}
+
+}  // namespace oflab

@@ -1,0 +1,62 @@
+// `oflab-cli animate --mode scene-shifting` on the train-window scene, and the runs behind it.
+#include "runs/scene_shifting_run.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
+#include "cli_capture.h"
+
+namespace oflab {
+namespace {
+
+using testing::run_cli_captured;
+
+nlohmann::json animate_json(const std::string& mode) {
+  const auto r = run_cli_captured({"animate", "--scene", "train-window", "--script",
+                                   "train-sideways", "--mode", mode, "--frames", "6", "--json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+TEST(AnimateSceneShifting, JsonSummaryHasEveryFieldOfTheOtherModes) {
+  const nlohmann::json shifting = animate_json("scene-shifting");
+  const nlohmann::json engine = animate_json("perspective");
+  for (const auto& [key, value] : engine.items()) {
+    EXPECT_TRUE(shifting.contains(key)) << "missing field " << key;
+  }
+  EXPECT_EQ(shifting["mode"], "scene-shifting");
+  EXPECT_EQ(shifting["frames"], 6);
+  EXPECT_LE(shifting["max_measured_error_px"].get<double>(), 1.0 + 1e-9);
+  EXPECT_GE(shifting["scene_shifting"]["slices"].size(), 2u);
+}
+
+TEST(AnimateSceneShifting, NeedsASceneAndRejectsEngineOptions) {
+  auto r = run_cli_captured({"animate", "--script", "translate", "--mode", "scene-shifting"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--mode scene-shifting"), std::string::npos) << r.err;
+  r = run_cli_captured({"animate", "--scene", "train-window", "--script", "train-sideways",
+                        "--mode", "scene-shifting", "--epsilon", "0"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--epsilon"), std::string::npos) << r.err;
+  r = run_cli_captured({"animate", "--scene", "two", "--script", "translate", "--mode",
+                        "scene-shifting", "--frames", "2"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("not parallel to the image plane"), std::string::npos) << r.err;
+}
+
+TEST(SceneShiftingRun, TurningScriptRebuildsEveryOccupiedSliceEveryTurningFrame) {
+  const Scene scene = read_scene_file(resolve_scene_path("train-window"));
+  const ViewerScript script = read_viewer_script_file(resolve_viewer_script_path("train-turning"));
+  SceneShiftingRunOptions options;
+  options.max_frames = 8;
+  const SceneShiftingRun run = run_scene_shifting(scene, script, options);
+  EXPECT_EQ(run.turning_frames, 7);
+  EXPECT_EQ(run.turning_frames_all_rebuilt, run.turning_frames);
+  EXPECT_EQ(run.shifted_layers, 0);
+}
+
+}  // namespace
+}  // namespace oflab

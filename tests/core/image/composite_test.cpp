@@ -1,0 +1,130 @@
+// "Over" compositing against the per-pixel formula, restricted to the layer polygon and
+// clipped to the frame.
+#include "image/composite.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "warp_reference.h"
+
+namespace oflab {
+namespace {
+
+// The Porter-Duff formula for premultiplied colour, in double precision. d * k / 255 is
+// never a half-integer (255 is odd), so rounding has no ties.
+int expected_over(int s, int d, int source_alpha) {
+  return s + static_cast<int>(std::floor(d * (255 - source_alpha) / 255.0 + 0.5));
+}
+
+TEST(Composite, OverMatchesTheFormulaForEveryAlphaAndDestination) {
+  for (int a = 0; a < 256; ++a) {
+    for (int d = 0; d < 256; ++d) {
+      const auto alpha = static_cast<std::uint8_t>(a);
+      const auto source = static_cast<std::uint8_t>(a / 2);
+      const auto dest = static_cast<std::uint8_t>(d);
+      const Pixel out = over(Pixel{source, 0, alpha, alpha}, Pixel{dest, dest, dest, dest});
+      ASSERT_EQ(out.r, expected_over(source, d, a)) << a << " " << d;
+      ASSERT_EQ(out.g, expected_over(0, d, a));
+      ASSERT_EQ(out.a, expected_over(a, d, a));
+    }
+  }
+}
+
+TEST(Composite, LayerOverFrameMatchesPerPixelFormulaInsideThePolygonOnly) {
+  std::mt19937 rng(8);
+  std::uniform_int_distribution<int> offset(-30, 50);
+  for (int k = 0; k < 100; ++k) {
+    const int w = 1 + k % 37;
+    const int h = 1 + (k * 7) % 29;
+    const Layer layer =
+        make_layer(testing::random_image(rng, w, h), testing::random_polygon(rng, w, h));
+    const Image before = testing::random_image(rng, 48, 40);
+    Image frame = before;
+    const int ox = offset(rng);
+    const int oy = offset(rng);
+    const std::int64_t count = composite_over(frame, layer, ox, oy);
+    std::int64_t inside = 0;
+    for (int y = 0; y < frame.height(); ++y) {
+      for (int x = 0; x < frame.width(); ++x) {
+        const int lx = x - ox;
+        const int ly = y - oy;
+        const Pixel d = before.at(x, y);
+        const Pixel got = frame.at(x, y);
+        const bool in_image = lx >= 0 && ly >= 0 && lx < w && ly < h;
+        const testing::Coverage c =
+            in_image ? testing::classify(layer.polygon, Vec2(lx + 0.5, ly + 0.5), 1e-9)
+                     : testing::Coverage::kOutside;
+        if (c == testing::Coverage::kOutside) {
+          ASSERT_EQ(got, d) << x << "," << y;
+          continue;
+        }
+        const Pixel s = layer.image.at(lx, ly);
+        const Pixel expected{static_cast<std::uint8_t>(expected_over(s.r, d.r, s.a)),
+                             static_cast<std::uint8_t>(expected_over(s.g, d.g, s.a)),
+                             static_cast<std::uint8_t>(expected_over(s.b, d.b, s.a)),
+                             static_cast<std::uint8_t>(expected_over(s.a, d.a, s.a))};
+        if (c == testing::Coverage::kInside) {
+          ASSERT_EQ(got, expected) << x << "," << y;
+          ++inside;
+        } else {
+          ASSERT_TRUE(got == expected || got == d);
+        }
+      }
+    }
+    EXPECT_GE(count, inside);
+  }
+}
+
+// Two regions that split the frame along a random line composite every layer pixel
+// exactly once: with opaque layer pixels, region by region equals the whole layer, and
+// each region's count adds up to the whole count. Regions outside the layer change
+// nothing.
+TEST(Composite, RegionsThatSplitTheFrameCompositeEachPixelOnce) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 100; ++k) {
+    const int w = 2 + k % 31;
+    const int h = 2 + (k * 5) % 23;
+    Image opaque = testing::random_image(rng, w, h);
+    for (Pixel& p : opaque.pixels()) p.a = 255;
+    const Layer layer = make_layer(opaque, testing::random_polygon(rng, w, h));
+    const Image before = testing::random_image(rng, 40, 36);
+    const int ox = static_cast<int>(unit(rng) * 20.0) - 5;
+    const int oy = static_cast<int>(unit(rng) * 20.0) - 5;
+    Image whole = before;
+    const std::int64_t whole_count = composite_over(whole, layer, ox, oy);
+    // A random line through the frame splits its rectangle into two convex regions.
+    const Vec2 a(unit(rng) * 40.0, 0.0);
+    const Vec2 b(unit(rng) * 40.0, 36.0);
+    const ConvexPolygon frame_box = ConvexPolygon::rectangle(0.0, 0.0, 40.0, 36.0);
+    const Vec3 line(b.y - a.y, a.x - b.x, b.x * a.y - a.x * b.y);
+    const ConvexPolygon left = clip_to_half_plane(frame_box, line);
+    const ConvexPolygon right = clip_to_half_plane(frame_box, -line);
+    Image pieces = before;
+    const std::int64_t count = composite_over_region(pieces, layer, ox, oy, left) +
+                               composite_over_region(pieces, layer, ox, oy, right);
+    EXPECT_EQ(count, whole_count) << "case " << k;
+    EXPECT_TRUE(pieces.pixels() == whole.pixels()) << "case " << k;
+    Image untouched = before;
+    EXPECT_EQ(composite_over_region(untouched, layer, ox, oy,
+                                    ConvexPolygon::rectangle(100.0, 100.0, 120.0, 120.0)),
+              0);
+    EXPECT_TRUE(untouched.pixels() == before.pixels());
+  }
+}
+
+TEST(Composite, EmptyLayersAndFramesAndFarOffsetsChangeNothing) {
+  const Layer layer = make_layer(Image(4, 4, Pixel{9, 9, 9, 9}));
+  Image frame(5, 5, Pixel{1, 1, 1, 1});
+  EXPECT_EQ(composite_over(frame, layer, 2147483000, -2147483000), 0);
+  EXPECT_EQ(composite_over(frame, make_layer(Image()), 0, 0), 0);
+  Image empty;
+  EXPECT_EQ(composite_over(empty, layer, 0, 0), 0);
+  for (const Pixel& p : frame.pixels()) EXPECT_EQ(p, (Pixel{1, 1, 1, 1}));
+  EXPECT_EQ(composite_over(frame, layer, 3, 3), 4);
+}
+
+}  // namespace
+}  // namespace oflab

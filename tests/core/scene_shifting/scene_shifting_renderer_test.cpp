@@ -1,0 +1,135 @@
+// The scene-shifting renderer against the optic-flow engine's translation level (sideways
+// viewer) and the turning viewer that forces every slice to be rebuilt.
+#include "scene_shifting/scene_shifting_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/engine.h"
+#include "scene_cases.h"
+
+namespace oflab {
+namespace {
+
+using testing::scene_with;
+using testing::square;
+
+constexpr double kEpsilon = 1.0;          // px, the renderer's budget
+constexpr double kEngineThreshold = 0.5;  // px, the engine's translation budget
+// Both place layers on whole pixels: each rounding moves a corner by at most sqrt(2)/2.
+const double kRounding = std::sqrt(2.0) / 2.0;
+
+// Planes parallel to the image plane of a viewer at the origin looking along world -Z.
+Scene train_like_scene() {
+  const Vec3 front(0.0, 0.0, 1.0), up(0.0, 1.0, 0.0);
+  return scene_with({square("far", {0.53, 0.07, -20.0}, front, up, 12.1),
+                     square("middle", {0.31, -0.21, -6.0}, front, up, 3.01),
+                     square("bush-a", {-0.3, 0.2, -2.0}, front, up, 0.6),
+                     square("bush-b", {0.4, 0.1, -2.4}, front, up, 0.6),
+                     square("bush-c", {1.0, 0.0, -3.0}, front, up, 0.6)});
+}
+
+ViewerPose start_view() { return look_at({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, {0.0, 1.0, 0.0}); }
+
+std::vector<ViewerFrame> frames(const Vec3& velocity, const Vec3& omega, int count) {
+  return expand_viewer_segments(start_view(), {{count, velocity, omega}});
+}
+
+SceneShiftingSettings settings_for(double speed) {
+  SceneShiftingSettings s;
+  s.epsilon_px = kEpsilon;
+  s.design_speed = speed;
+  return s;
+}
+
+std::vector<Vec2> engine_corners(const PlaneAnimator& engine, const PlanePose& pose,
+                                 const Camera& camera) {
+  const double tw = pose.texture_size.x, th = pose.texture_size.y;
+  std::vector<Vec2> corners;
+  for (const Vec2& t : {Vec2(0, 0), Vec2(tw, 0), Vec2(tw, th), Vec2(0, th)}) {
+    corners.push_back(pixel_to_centred(camera, apply_homography(engine.displayed_warp(), t)));
+  }
+  return corners;
+}
+
+TEST(SceneShiftingRenderer, SidewaysViewerMatchesTheEnginesTranslationLevelPlaneByPlane) {
+  const Scene scene = train_like_scene();
+  const Camera camera = make_camera(300.0, 320, 240);
+  const double speed = 0.03;
+  const std::vector<ViewerFrame> script = frames({speed, 0.0, 0.0}, {0.0, 0.0, 0.0}, 40);
+  SceneShiftingRenderer renderer(scene, camera, settings_for(speed));
+  EngineSettings engine_settings;
+  engine_settings.thresholds.fill(kEngineThreshold);
+  const glm::ivec2 size(scene.textures[0].width(), scene.textures[0].height());
+  std::vector<PlaneAnimator> engines;
+  for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
+    engines.emplace_back(camera, make_layer(scene.textures[0]), engine_settings);
+  }
+  for (std::size_t i = 0; i < script.size(); ++i) {
+    const SceneShiftingFrameReport r =
+        i == 0 ? renderer.start(script[0].pose)
+               : renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    EXPECT_FALSE(r.view_turned);
+    EXPECT_LE(r.max_measured_error_px, kEpsilon + 1e-9) << "frame " << i;
+    for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
+      const PlanePose pose = polygon_pose(scene.polygons[p], script[i].pose, size);
+      const FrameReport e =
+          i == 0 ? engines[p].start(pose)
+                 : engines[p].advance(polygon_pose(scene.polygons[p], script[i - 1].pose, size),
+                                      script[i - 1].motion, pose);
+      // A fronto-parallel plane under a sideways viewer only translates in the image.
+      EXPECT_TRUE(e.level == Level::kNone || e.level == Level::kTranslate || i == 0)
+          << scene.polygons[p].name << " frame " << i << ": " << level_name(e.level);
+      const std::vector<Vec2> shown = renderer.shown_corners(static_cast<int>(p));
+      const std::vector<Vec2> flow = engine_corners(engines[p], pose, camera);
+      ASSERT_EQ(shown.size(), 4u);
+      for (int k = 0; k < 4; ++k) {
+        EXPECT_LE(glm::length(shown[k] - flow[k]), kEpsilon + kEngineThreshold + 2 * kRounding)
+            << scene.polygons[p].name << " corner " << k << " frame " << i;
+      }
+    }
+  }
+}
+
+TEST(SceneShiftingRenderer, SidewaysViewerShiftsLayersInsteadOfRenderingThemEveryFrame) {
+  const Scene scene = train_like_scene();
+  const Camera camera = make_camera(300.0, 320, 240);
+  const std::vector<ViewerFrame> script = frames({0.03, 0.0, 0.0}, {0.0, 0.0, 0.0}, 30);
+  SceneShiftingRenderer renderer(scene, camera, settings_for(0.03));
+  int rebuilt = 0, shifted = 0;
+  renderer.start(script[0].pose);
+  for (std::size_t i = 1; i < script.size(); ++i) {
+    const auto r = renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    rebuilt += r.rebuilt;
+    shifted += r.shifted;
+  }
+  EXPECT_GT(shifted, rebuilt);
+}
+
+TEST(SceneShiftingRenderer, TurningViewerRebuildsEveryOccupiedSliceEveryFrame) {
+  const Scene scene = train_like_scene();
+  const Camera camera = make_camera(300.0, 320, 240);
+  const std::vector<ViewerFrame> script = frames({0.03, 0.0, 0.0}, {0.0, 0.004, 0.0}, 15);
+  SceneShiftingRenderer renderer(scene, camera, settings_for(0.03));
+  const SceneShiftingFrameReport first = renderer.start(script[0].pose);
+  EXPECT_GE(first.occupied, 3);
+  for (std::size_t i = 1; i < script.size(); ++i) {
+    const auto r = renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    EXPECT_TRUE(r.view_turned);
+    EXPECT_EQ(r.rebuilt, r.occupied) << "frame " << i;
+    EXPECT_EQ(r.shifted + r.scaled, 0);
+    // Rebuilt layers are exact renders.
+    EXPECT_LE(r.max_measured_error_px, 1e-9);
+  }
+}
+
+TEST(SceneShiftingRenderer, RejectsPlanesNotParallelToTheImagePlane) {
+  const Scene scene = scene_with({square(
+      "tilted", {0.0, 0.0, -3.0}, glm::normalize(Vec3(0.3, 0.0, 1.0)), {0.0, 1.0, 0.0}, 1.0)});
+  SceneShiftingRenderer renderer(scene, make_camera(300.0, 320, 240), settings_for(0.03));
+  EXPECT_THROW(renderer.start(start_view()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace oflab

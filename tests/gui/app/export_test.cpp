@@ -1,0 +1,118 @@
+// The window's exports, as the File > Export menu runs them (the dialogs only choose the
+// path): numbered PNGs, the Ogg Theora video and the per-frame CSV, each one frame per
+// frame of the animation, none overwriting an existing file unless told to.
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "models/animation_session.h"
+#include "views/animation_view.h"
+#include "models/scene_model.h"
+#include "app/session_io.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+using ExportTest = WindowTest;
+
+constexpr int kFrames = 8;
+
+// Loads a short rotation script of kFrames frames; the animation view plays it.
+void play_short_script(MainWindow& window, const QTemporaryDir& dir) {
+  const QString path = dir.filePath("short.json");
+  std::ofstream(path.toStdString()) << R"({"format": "oflab-script", "version": 1,
+    "name": "short", "camera": {"focal_px": 256, "image": [320, 240]},
+    "plane": {"point": [0, 0, 1], "normal": [0, 0, 1], "up": [0, -1, 0],
+              "size": [0.949, 0.773]},
+    "motion_model": "centre",
+    "segments": [{"frames": 8, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
+  ASSERT_TRUE(window.load_script(path)) << window.message().toStdString();
+  ASSERT_NE(window.animation_view()->session(), nullptr);
+  ASSERT_EQ(window.animation_view()->session()->frame_count(), kFrames);
+}
+
+std::string read_all(const QString& path) {
+  std::ifstream in(path.toStdString(), std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST_F(ExportTest, PngFramesAreOnePerFrameDifferAndAreNotOverwritten) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir);
+  window().model()->set_frame(3);
+  const QString out = dir.filePath("frames");
+  QString error;
+  ASSERT_TRUE(export_frames_png(&window(), out, false, &error)) << error.toStdString();
+  EXPECT_EQ(window().model()->frame(), 3);  // restored
+  const QStringList files = QDir(out).entryList({"frame-*.png"}, QDir::Files, QDir::Name);
+  ASSERT_EQ(files.size(), kFrames);
+  EXPECT_EQ(files.front(), "frame-0000.png");
+  const QImage first(QDir(out).filePath(files.front()));
+  const QImage last(QDir(out).filePath(files.back()));
+  ASSERT_FALSE(first.isNull());
+  EXPECT_GT(first.width(), 100);
+  EXPECT_EQ(first.size(), last.size());
+  EXPECT_NE(first, last);  // the plane turned
+
+  // A second export refuses to replace the frames and leaves them as they were.
+  const std::string before = read_all(QDir(out).filePath(files.front()));
+  EXPECT_FALSE(export_frames_png(&window(), out, false, &error));
+  EXPECT_TRUE(error.contains("exists")) << error.toStdString();
+  EXPECT_EQ(read_all(QDir(out).filePath(files.front())), before);
+  EXPECT_TRUE(export_frames_png(&window(), out, true, &error)) << error.toStdString();
+}
+
+TEST_F(ExportTest, VideoIsAnOggFileAndAnExistingFileIsKept) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir);
+  const QString path = dir.filePath("movie.ogv");
+  QString error;
+  ASSERT_TRUE(export_video(&window(), path, false, &error)) << error.toStdString();
+  const std::string bytes = read_all(path);
+  ASSERT_GT(bytes.size(), 1000u);
+  EXPECT_EQ(bytes.substr(0, 4), "OggS");
+  EXPECT_NE(bytes.find("theora"), std::string::npos);
+
+  const QString mine = dir.filePath("mine.ogv");
+  std::ofstream(mine.toStdString()) << "a user's file";
+  EXPECT_FALSE(export_video(&window(), mine, false, &error));
+  EXPECT_TRUE(error.contains("exists")) << error.toStdString();
+  EXPECT_EQ(read_all(mine), "a user's file");
+}
+
+TEST_F(ExportTest, CsvHasAHeaderAndOneRowPerFrameAndRefusesScenes) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir);
+  const QString path = dir.filePath("frames.csv");
+  QString error;
+  ASSERT_TRUE(export_frame_csv(&window(), path, false, &error)) << error.toStdString();
+  std::istringstream csv(read_all(path));
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("frame,", 0), 0u) << header;
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) {
+    if (line.empty()) continue;
+    EXPECT_EQ(line.rfind(std::to_string(rows) + ",", 0), 0u) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, kFrames);
+
+  EXPECT_FALSE(export_frame_csv(&window(), path, false, &error));
+  EXPECT_TRUE(error.contains("exists")) << error.toStdString();
+
+  ASSERT_TRUE(window().animation_view()->set_source({"scene", "two", "translate"}));
+  EXPECT_FALSE(export_frame_csv(&window(), dir.filePath("scene.csv"), false, &error));
+  EXPECT_TRUE(error.contains("single plane")) << error.toStdString();
+  EXPECT_FALSE(QFile::exists(dir.filePath("scene.csv")));
+}
+
+}  // namespace
+}  // namespace oflab::test

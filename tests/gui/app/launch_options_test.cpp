@@ -1,0 +1,113 @@
+// oflab's command line: every bad input gives a UsageError naming the option.
+#include "app/launch_options.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace oflab {
+namespace {
+
+std::string usage_error(const std::vector<std::string>& args) {
+  try {
+    parse_launch_options(args);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LaunchOptions, DefaultsOpenTheWholeWindowAt1280By800) {
+  const LaunchOptions o = parse_launch_options({});
+  EXPECT_EQ(o.width, 1280);
+  EXPECT_EQ(o.height, 800);
+  EXPECT_TRUE(o.screenshot.empty());
+  EXPECT_EQ(o.benchmark, 0);
+}
+
+TEST(LaunchOptions, ScreenshotWithFramesAndView) {
+  const LaunchOptions o = parse_launch_options(
+      {"--screenshot", "a.png", "--frames", "3", "--view", "basis", "--size", "640", "480"});
+  EXPECT_EQ(o.screenshot, "a.png");
+  EXPECT_EQ(o.frames, 3);
+  EXPECT_EQ(o.view, "basis");
+  EXPECT_EQ(o.width, 640);
+}
+
+TEST(LaunchOptions, BadValuesNameTheirOption) {
+  EXPECT_NE(usage_error({"--view", "nope"}).find("--view"), std::string::npos);
+  EXPECT_NE(usage_error({"--lesson", "nope"}).find("--lesson"), std::string::npos);
+  EXPECT_NE(usage_error({"--frames", "3"}).find("--frames"), std::string::npos);
+  EXPECT_NE(usage_error({"--screenshot", "a.png", "--frames", "-1"}).find("--frames"),
+            std::string::npos);
+  EXPECT_NE(usage_error({"--screenshot", "a.png", "--frames", "x"}).find("--frames"),
+            std::string::npos);
+  EXPECT_NE(usage_error({"--benchmark", "0"}).find("--benchmark"), std::string::npos);
+  EXPECT_NE(usage_error({"--size", "100", "100"}).find("--size"), std::string::npos);
+  EXPECT_NE(usage_error({"--size", "640"}).find("--size"), std::string::npos);
+  EXPECT_NE(usage_error({"--flow-draw", "arrows,bogus"}).find("--flow-draw"), std::string::npos);
+  EXPECT_NE(usage_error({"--basis", "fourier"}).find("--basis"), std::string::npos);
+  EXPECT_NE(usage_error({"--bogus"}).find("--bogus"), std::string::npos);
+  EXPECT_NE(usage_error({"stray"}).find("stray"), std::string::npos);
+}
+
+TEST(LaunchOptions, UnknownScenesAndModesAreRejectedSayingWhatIsKnown) {
+  const std::string scene = usage_error({"--scene", "office"});
+  EXPECT_EQ(scene.rfind("--scene", 0), 0u) << scene;
+  EXPECT_NE(scene.find("four-cubes"), std::string::npos) << scene;
+  const std::string mode = usage_error({"--mode", "bogus"});
+  EXPECT_EQ(mode.rfind("--mode", 0), 0u) << mode;
+  EXPECT_NE(mode.find("perspective"), std::string::npos);
+  EXPECT_NE(usage_error({"--scene", "cube", "--script", "nowhere"}).find("--script"),
+            std::string::npos);
+}
+
+TEST(LaunchOptions, ShippedSceneModeAndViewerScriptAreAccepted) {
+  const LaunchOptions o =
+      parse_launch_options({"--scene", "cube", "--script", "rotate", "--mode", "affine",
+                            "--view", "animation"});
+  EXPECT_EQ(o.scene, "cube");
+  EXPECT_EQ(o.viewer_script, "rotate");
+  EXPECT_FALSE(o.script.has_value());
+  ASSERT_TRUE(o.mode.has_value());
+  EXPECT_EQ(*o.mode, EngineMode::kAffine);
+  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).viewer_script, "circle");
+  EXPECT_EQ(parse_launch_options({"--view", "analysis"}).view, "analysis");
+}
+
+TEST(LaunchOptions, ShippedScriptIsReadAndUnknownOneListsTheShippedNames) {
+  const LaunchOptions o = parse_launch_options({"--script", "zoom"});
+  ASSERT_TRUE(o.script.has_value());
+  EXPECT_GT(o.script->frames.size(), 1u);
+  const std::string error = usage_error({"--script", "no-such-script"});
+  EXPECT_NE(error.find("--script"), std::string::npos);
+  EXPECT_NE(error.find("zoom"), std::string::npos);
+}
+
+TEST(LaunchOptions, BrokenScriptFileIsRejectedNamingTheFile) {
+  const std::string path = ::testing::TempDir() + "oflab_broken_script.json";
+  std::ofstream(path) << "{\"format\": \"oflab-script\", \"version\": 1, \"plane\": ";
+  const std::string error = usage_error({"--script", path});
+  std::remove(path.c_str());
+  EXPECT_NE(error.find("--script"), std::string::npos);
+  EXPECT_NE(error.find("oflab_broken_script"), std::string::npos);
+}
+
+TEST(LaunchOptions, FlowOverridesApplyOnlyWhatWasGiven) {
+  const LaunchOptions o =
+      parse_launch_options({"--flow-show", "second-order", "--flow-draw", "wheel,zoom"});
+  FlowDisplay d;
+  d.streamlines = true;
+  const FlowDisplay out = with_overrides(d, o);
+  EXPECT_EQ(out.part, FlowPart::kSecondOrder);
+  EXPECT_TRUE(out.colour_wheel);
+  EXPECT_TRUE(out.zoom_to_plane);
+  EXPECT_FALSE(out.arrows);
+  EXPECT_FALSE(out.streamlines);
+  const FlowDisplay untouched = with_overrides(d, parse_launch_options({}));
+  EXPECT_TRUE(untouched.streamlines);
+}
+
+}  // namespace
+}  // namespace oflab

@@ -1,0 +1,183 @@
+// The window for real: it opens on the demo, every view renders, the controls drive the
+// scene, impossible input is refused with a visible message, lessons set themselves up.
+#include <QDoubleSpinBox>
+#include <QTemporaryDir>
+#include <fstream>
+
+#include "views/basis_view.h"
+#include "views/coefficient_table.h"
+#include "views/flow_view.h"
+#include "views/scene_controls.h"
+#include "models/scene_model.h"
+#include "views/slider_spin.h"
+#include "image_checks.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+using MainWindowTest = WindowTest;
+
+bool same_pose(const PlanePose& a, const PlanePose& b) {
+  return a.point == b.point && a.normal == b.normal && a.up == b.up && a.size == b.size;
+}
+
+// Types a value into a control's spin box, as a user would (Enter commits it).
+void type_value(SceneControls* controls, const char* name, double value) {
+  SliderSpin* control = controls->control(QString::fromLatin1(name));
+  ASSERT_NE(control, nullptr) << name;
+  control->spin_box()->setValue(value);
+  QApplication::processEvents();
+}
+
+TEST_F(MainWindowTest, StartsOnTheDefaultDemoWithTheFlowViewInFront) {
+  const PlaneScene demo = default_demo_scene();
+  EXPECT_TRUE(same_pose(window().model()->scene().pose, demo.pose));
+  EXPECT_EQ(window().model()->scene().motion.velocity, demo.motion.velocity);
+  EXPECT_EQ(window().current_view()->view_name(), "flow");
+  EXPECT_EQ(window().view_names(),
+            QStringList({"flow", "basis", "animation", "analysis", "slices"}));
+  EXPECT_TRUE(window().message().isEmpty());
+  // The planar basis row "tx" shows core's coefficient (reference case: -121.03 px/s).
+  EXPECT_EQ(window().flow_view()->coefficient_table()->value_text(0).left(7), "-121.03");
+}
+
+TEST_F(MainWindowTest, EachViewRendersANonEmptyImage) {
+  for (const QString& name : window().view_names()) {
+    ASSERT_TRUE(window().show_view(name));
+    QApplication::processEvents();
+    const QImage image = window().view(name)->render_image();
+    EXPECT_GT(image.width(), 100) << name.toStdString();
+    EXPECT_GT(distinct_colours(image), 50) << name.toStdString();
+  }
+}
+
+TEST_F(MainWindowTest, WindowScreenshotContainsTheRenderedViews) {
+  const QImage image = window().grab_window_image();
+  ASSERT_EQ(image.size(), window().size());
+  const QWidget* vtk = reinterpret_cast<QWidget*>(window().flow_view()->vtk_widget());
+  const QRect area(vtk->mapTo(&window(), QPoint(0, 0)), vtk->size());
+  EXPECT_GT(distinct_colours(image.copy(area)), 50);
+}
+
+TEST_F(MainWindowTest, ChangingAMotionValueChangesTheFlowView) {
+  const QImage before = window().flow_view()->render_image();
+  type_value(window().scene_controls(), "omega_z", -1.5);
+  EXPECT_DOUBLE_EQ(window().model()->scene().motion.omega.z, -1.5);
+  const QImage after = window().flow_view()->render_image();
+  EXPECT_GT(changed_fraction(before, after), 0.01);
+}
+
+TEST_F(MainWindowTest, PlaneBehindTheCameraIsRejectedAndLeavesTheSceneAsItWas) {
+  const PlaneScene kept = window().model()->scene();
+  CoefficientTable* table = window().flow_view()->coefficient_table();
+  const QString tx = table->value_text(0);
+  type_value(window().scene_controls(), "distance", -1.0);
+  EXPECT_TRUE(same_pose(window().model()->scene().pose, kept.pose));
+  EXPECT_TRUE(window().message().contains("behind")) << window().message().toStdString();
+  EXPECT_DOUBLE_EQ(window().scene_controls()->control("distance")->value(), kept.pose.point.z);
+  EXPECT_EQ(table->value_text(0), tx);  // the views still show the old scene
+  // The next accepted edit clears the message.
+  type_value(window().scene_controls(), "distance", 4.0);
+  EXPECT_TRUE(window().message().isEmpty());
+}
+
+TEST_F(MainWindowTest, PlaneThroughTheEyeAndZeroFocalLengthAreRejected) {
+  PlaneScene through_eye = window().model()->scene();
+  through_eye.pose.normal = glm::cross(through_eye.pose.point, Vec3(0, 1, 0));
+  EXPECT_FALSE(window().model()->set_scene(through_eye));
+  EXPECT_TRUE(window().message().contains("eye"));
+  type_value(window().scene_controls(), "focal", 0.0);
+  EXPECT_TRUE(window().message().contains("focal"));
+  EXPECT_DOUBLE_EQ(window().model()->scene().camera.focal_px, 600.0);
+}
+
+TEST_F(MainWindowTest, BrokenScriptFileShowsAnErrorAndKeepsTheSession) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("broken.json");
+  std::ofstream(path.toStdString()) << "{ \"format\": \"oflab-script\", \"camera\": [1, 2";
+  const PlaneScene kept = window().model()->scene();
+  EXPECT_FALSE(window().load_script(path));
+  EXPECT_FALSE(window().message().isEmpty());
+  EXPECT_TRUE(same_pose(window().model()->scene().pose, kept.pose));
+  EXPECT_TRUE(window().model()->script_name().isEmpty());
+}
+
+TEST_F(MainWindowTest, ShippedScriptPlaysItsFrames) {
+  ASSERT_TRUE(window().load_script("zoom"));
+  const PlanePose first = window().model()->current_pose();
+  window().play_frames(5);
+  EXPECT_EQ(window().model()->frame(), 5);
+  EXPECT_LT(window().model()->current_pose().point.z, first.point.z);  // approaching
+}
+
+TEST_F(MainWindowTest, PlayingAdvancesTheMotionAndLoops) {
+  window().play_frames(3);
+  EXPECT_EQ(window().model()->frame(), 3);
+  EXPECT_FALSE(same_pose(window().model()->current_pose(), window().model()->scene().pose));
+  window().model()->set_frame(SceneModel::kLoopFrames);
+  EXPECT_EQ(window().model()->frame(), 0);
+}
+
+TEST_F(MainWindowTest, LessonsSetViewCaptionAndOptions) {
+  window().apply_lesson(*find_lesson("basis-deformations"));
+  EXPECT_EQ(window().current_view()->view_name(), "basis");
+  EXPECT_TRUE(window().caption().contains("px"));
+  EXPECT_TRUE(window().basis_view()->playing());
+  window().apply_lesson(*find_lesson("flow-of-a-plane"));
+  EXPECT_EQ(window().current_view()->view_name(), "flow");
+  EXPECT_TRUE(window().flow_view()->display().streamlines);
+  EXPECT_FALSE(window().basis_view()->playing());
+}
+
+TEST_F(MainWindowTest, GalleryGreysTheTermsAPlaneCannotExcite) {
+  window().show_view("basis");
+  QApplication::processEvents();
+  BasisView* gallery = window().basis_view();
+  gallery->set_basis(BasisKind::kPlanar);
+  gallery->render_image();
+  EXPECT_EQ(gallery->active_tile_count(), 8);  // 2 + 4 + px, py
+  gallery->set_basis(BasisKind::kTaylor);
+  gallery->render_image();
+  EXPECT_EQ(gallery->active_tile_count(), 10);  // v1_yy and v2_xx stay zero
+  gallery->set_basis(BasisKind::kWaxmanUllman);
+  gallery->render_image();
+  EXPECT_EQ(gallery->active_tile_count(), 12);
+}
+
+TEST_F(MainWindowTest, GalleryAnimationMovesTheGrids) {
+  window().show_view("basis");
+  QApplication::processEvents();
+  const QImage before = window().basis_view()->render_image();
+  for (int i = 0; i < 6; ++i) window().basis_view()->step_animation();
+  EXPECT_GT(changed_fraction(before, window().basis_view()->render_image()), 0.005);
+}
+
+TEST_F(MainWindowTest, ResidualPartDrawsNoArrowsAndSaysZero) {
+  FlowDisplay d = window().flow_view()->display();
+  d.part = FlowPart::kExactMinusHomography;
+  window().flow_view()->set_display(d);
+  window().flow_view()->render_image();
+  EXPECT_LT(window().flow_view()->shown_max_magnitude(), 1e-6);
+  d.part = FlowPart::kSecondOrder;
+  window().flow_view()->set_display(d);
+  window().flow_view()->render_image();
+  EXPECT_GT(window().flow_view()->shown_max_magnitude(), 1.0);
+}
+
+TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
+  auto mean_grey = [](const QImage& image) {
+    const QImage small = scaled_rgb(image, QSize(32, 32));
+    double sum = 0;
+    for (int y = 0; y < 32; ++y) {
+      for (int x = 0; x < 32; ++x) sum += qGray(small.pixel(x, y));
+    }
+    return sum / (32 * 32);
+  };
+  EXPECT_LT(mean_grey(window().flow_view()->render_image()), 110.0);
+  window().set_presentation(true);
+  EXPECT_GT(mean_grey(window().flow_view()->render_image()), 150.0);
+}
+
+}  // namespace
+}  // namespace oflab::test

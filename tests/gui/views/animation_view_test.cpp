@@ -1,0 +1,186 @@
+// The animation and analysis views: they render, re-render mode agrees with the exact VTK
+// render, the session round-trips through its JSON file, and bad input changes nothing.
+//
+// Agreement in re-render mode. Both panels then show the exact projection: the engine's
+// from core's perspective warp, the other from VTK's textured polygons, both with nearest
+// texel sampling. Their alpha masks must overlap with IoU >= 0.95 (edges may differ by a
+// pixel), and over the pixels both cover the PSNR must be >= kRerenderPsnrDb: texel
+// choices at pixel-centre ties differ between the two rasterisers, which on the
+// high-contrast butterfly costs a few dB, while a wrong camera, mirrored texture or shifted
+// plane scores far below (a one-pixel shift of the whole frame scores under 14 dB).
+#include "views/animation_view.h"
+
+#include <QTemporaryDir>
+#include <fstream>
+
+#include "views/analysis_view.h"
+#include "models/animation_session.h"
+#include "adapters/frame_images.h"
+#include "models/scene_model.h"
+#include "image_checks.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+constexpr double kRerenderIou = 0.95;
+constexpr double kRerenderPsnrDb = 18.0;
+
+class AnimationViewTest : public WindowTest {
+ protected:
+  AnimationView& animation() { return *window().animation_view(); }
+
+  void set_mode(EngineMode mode) {
+    EngineSettings settings = animation().settings();
+    settings.mode = mode;
+    ASSERT_TRUE(animation().set_settings(settings));
+  }
+
+  // Compares the two panels, writing both on failure.
+  void expect_panels_agree(const QString& name) {
+    const Image& engine = animation().engine_image();
+    const Image& exact = animation().exact_image();
+    ASSERT_EQ(engine.width(), exact.width());
+    const FrameAgreement a = frame_agreement(engine, exact);
+    if (a.mask_iou < kRerenderIou || a.psnr_db < kRerenderPsnrDb) {
+      flatten_image(engine, Qt::black).save(output_dir() + "/" + name + "-engine.png");
+      flatten_image(exact, Qt::black).save(output_dir() + "/" + name + "-exact.png");
+    }
+    EXPECT_GE(a.mask_iou, kRerenderIou) << name.toStdString();
+    EXPECT_GE(a.psnr_db, kRerenderPsnrDb) << name.toStdString();
+  }
+};
+
+TEST_F(AnimationViewTest, AnimationViewRendersBothPanels) {
+  window().show_view("animation");
+  window().play_frames(5);
+  const QImage image = animation().render_image();
+  EXPECT_GT(image.width(), image.height());  // two panels side by side
+  EXPECT_GT(distinct_colours(image), 100);
+  EXPECT_GT(distinct_colours(image.copy(image.width() / 2, 0, image.width() / 2, image.height())),
+            50);  // the exact panel is not empty
+}
+
+TEST_F(AnimationViewTest, DifferenceAndBlinkRender) {
+  window().show_view("animation");
+  animation().set_display(PanelDisplay::kDifference);
+  EXPECT_GT(distinct_colours(animation().render_image()), 5);
+  animation().set_display(PanelDisplay::kBlink);
+  const QImage engine = animation().render_image();
+  animation().set_blink_phase(true);
+  EXPECT_GT(changed_fraction(engine, animation().render_image()), 0.001);
+}
+
+TEST_F(AnimationViewTest, AnalysisViewRendersCharts) {
+  window().show_view("analysis");
+  window().play_frames(12);
+  EXPECT_GT(distinct_colours(window().analysis_view()->render_image()), 10);
+  EXPECT_EQ(window().analysis_view()->last_frame(), 12);
+}
+
+// Clicking a chart jumps to the frame under the pointer; a click in the margin does not.
+TEST_F(AnimationViewTest, ClickingAChartJumpsToThatFrame) {
+  window().show_view("analysis");
+  window().play_frames(12);
+  AnalysisView* analysis = window().analysis_view();
+  auto* charts = analysis->findChild<QWidget*>(QStringLiteral("analysis_charts"));
+  ASSERT_NE(charts, nullptr);
+  ASSERT_EQ(analysis->first_frame(), 0);
+  ASSERT_EQ(analysis->last_frame(), 12);
+  const QPoint margin(2, charts->height() / 2);
+  QTest::mouseClick(charts, Qt::LeftButton, Qt::NoModifier, margin);
+  EXPECT_EQ(window().model()->frame(), 12);
+  const QPoint middle(charts->width() / 2, charts->height() / 2);
+  const int expected = analysis->frame_at(middle.x());
+  ASSERT_GT(expected, 2);
+  ASSERT_LT(expected, 10);
+  QTest::mouseClick(charts, Qt::LeftButton, Qt::NoModifier, middle);
+  EXPECT_EQ(window().model()->frame(), expected);
+}
+
+TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
+  window().show_view("animation");
+  set_mode(EngineMode::kRerender);
+  window().play_frames(8);
+  expect_panels_agree("rerender-plane");
+}
+
+TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
+  window().show_view("animation");
+  set_mode(EngineMode::kRerender);
+  ASSERT_TRUE(animation().set_source({"scene", "four-cubes", "circle"}));
+  window().play_frames(8);
+  expect_panels_agree("rerender-scene");
+}
+
+TEST_F(AnimationViewTest, SteppingBackShowsTheSameFrameAsPlayingForward) {
+  window().show_view("animation");
+  window().play_frames(6);
+  const Image forward = animation().engine_image();
+  window().play_frames(3);
+  window().model()->set_frame(6);
+  const FrameAgreement a = frame_agreement(forward, animation().engine_image());
+  EXPECT_TRUE(std::isinf(a.psnr_db));
+}
+
+TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("session.json");
+  EngineSettings settings = animation().settings();
+  settings.mode = EngineMode::kAffine;
+  settings.thresholds = {0.5, 1.5, 2.0, 0.75};
+  ASSERT_TRUE(animation().set_settings(settings));
+  ASSERT_TRUE(animation().set_source({"scene", "two", "translate"}));
+  animation().set_display(PanelDisplay::kDifference);
+  window().model()->set_frame(7);
+  window().show_view("analysis");
+  ASSERT_TRUE(window().save_session(path, false));
+  EXPECT_FALSE(window().save_session(path, false));  // never overwrites unasked
+
+  window().apply_lesson(*find_lesson("flow-of-a-plane"));
+  ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
+  EXPECT_EQ(animation().settings().mode, EngineMode::kAffine);
+  EXPECT_EQ(animation().settings().thresholds, settings.thresholds);
+  EXPECT_EQ(animation().source().name, "two");
+  EXPECT_EQ(animation().source().viewer, "translate");
+  EXPECT_EQ(animation().display(), PanelDisplay::kDifference);
+  EXPECT_EQ(window().model()->frame(), 7);
+  EXPECT_EQ(window().current_view()->view_name(), "analysis");
+}
+
+TEST_F(AnimationViewTest, BrokenSessionAndSceneFilesChangeNothingAndShowAnError) {
+  QTemporaryDir dir;
+  const QString broken = dir.filePath("broken.json");
+  std::ofstream(broken.toStdString()) << "{ \"format\": \"oflab-scene\", \"polygons\": [1, ";
+  const SourceChoice before = animation().source();
+  EXPECT_FALSE(animation().set_source({"scene", broken.toStdString(), "circle"}));
+  EXPECT_FALSE(window().message().isEmpty());
+  EXPECT_TRUE(animation().source() == before);
+  EXPECT_FALSE(window().load_session(broken));
+  EXPECT_TRUE(window().message().contains("broken.json")) << window().message().toStdString();
+  EXPECT_TRUE(animation().source() == before);
+}
+
+TEST_F(AnimationViewTest, ImpossibleThresholdIsRefused) {
+  EngineSettings settings = animation().settings();
+  const EngineSettings kept = settings;
+  settings.thresholds[1] = -1.0;
+  EXPECT_FALSE(animation().set_settings(settings));
+  EXPECT_EQ(animation().settings().thresholds, kept.thresholds);
+  EXPECT_FALSE(window().message().isEmpty());
+}
+
+TEST_F(AnimationViewTest, NewLessonsSetUpTheirViews) {
+  window().apply_lesson(*find_lesson("affine-vs-perspective"));
+  EXPECT_EQ(animation().settings().mode, EngineMode::kAffine);
+  EXPECT_EQ(window().current_view()->view_name(), "animation");
+  window().apply_lesson(*find_lesson("occlusion"));
+  EXPECT_EQ(animation().source().kind, "scene");
+  EXPECT_GT(distinct_colours(animation().render_image()), 50);
+  window().apply_lesson(*find_lesson("why-errors-accumulate"));
+  EXPECT_EQ(window().current_view()->view_name(), "analysis");
+  EXPECT_EQ(animation().source().kind, "plane");
+}
+
+}  // namespace
+}  // namespace oflab::test

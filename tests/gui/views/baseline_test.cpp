@@ -1,0 +1,93 @@
+// Screenshot baselines of the views (tests/gui/baselines/*.png), compared with the
+// tolerance documented in image_checks.h (PSNR >= 30 dB after scaling to the baseline's
+// size). A failing or missing baseline writes the rendered image, scaled, to
+// <build>/tests/gui/output/ and fails. To accept new images on purpose, run the tests with
+// OFLAB_UPDATE_BASELINES=1: each baseline test then rewrites its PNG and reports itself as
+// skipped, never as passed.
+#include <QDir>
+#include <QFileInfo>
+
+#include "views/animation_view.h"
+#include "views/basis_view.h"
+#include "views/flow_view.h"
+#include "image_checks.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+constexpr int kBaselineWidth = 320;
+
+class BaselineTest : public WindowTest {
+ protected:
+  // Compares `rendered` with baselines/<name>.png.
+  void expect_matches_baseline(const QImage& rendered, const QString& name) {
+    ASSERT_FALSE(rendered.isNull());
+    const QString path = QStringLiteral(OFLAB_GUI_BASELINES "/%1.png").arg(name);
+    const QSize size(kBaselineWidth, kBaselineWidth * rendered.height() / rendered.width());
+    if (qEnvironmentVariableIsSet("OFLAB_UPDATE_BASELINES")) {
+      ASSERT_TRUE(scaled_rgb(rendered, size).save(path, "PNG"));
+      GTEST_SKIP() << "baseline rewritten: " << path.toStdString();
+    }
+    const QString actual_path = output_dir() + "/" + name + "-actual.png";
+    const QImage baseline(path);
+    if (baseline.isNull()) {
+      scaled_rgb(rendered, size).save(actual_path, "PNG");
+      FAIL() << "missing baseline " << path.toStdString() << "; rendered image written to "
+             << actual_path.toStdString();
+    }
+    const double psnr = psnr_db(baseline, scaled_rgb(rendered, baseline.size()));
+    if (psnr < kBaselinePsnrDb) scaled_rgb(rendered, baseline.size()).save(actual_path, "PNG");
+    EXPECT_GE(psnr, kBaselinePsnrDb) << name.toStdString() << " differs from its baseline; "
+                                     << "rendered image written to " << actual_path.toStdString();
+  }
+};
+
+TEST_F(BaselineTest, FlowViewOfTheDemoMatchesItsBaseline) {
+  expect_matches_baseline(window().flow_view()->render_image(), "flow-demo");
+}
+
+TEST_F(BaselineTest, ToleranceCatchesAFlowViewWithoutArrows) {
+  // The tolerance must not be so loose that a lost arrow field passes.
+  const QImage baseline(QStringLiteral(OFLAB_GUI_BASELINES "/flow-demo.png"));
+  ASSERT_FALSE(baseline.isNull()) << "missing baseline flow-demo.png";
+  FlowDisplay d = window().flow_view()->display();
+  d.arrows = false;
+  window().flow_view()->set_display(d);
+  const QImage rendered = scaled_rgb(window().flow_view()->render_image(), baseline.size());
+  EXPECT_LT(psnr_db(baseline, rendered), kBaselinePsnrDb - 5.0);
+}
+
+TEST_F(BaselineTest, FlowViewSecondOrderWithColourWheelMatchesItsBaseline) {
+  FlowDisplay d = window().flow_view()->display();
+  d.part = FlowPart::kSecondOrder;
+  d.colour_wheel = true;
+  d.streamlines = true;
+  window().flow_view()->set_display(d);
+  expect_matches_baseline(window().flow_view()->render_image(), "flow-second-order-wheel");
+}
+
+TEST_F(BaselineTest, PlanarBasisGalleryMatchesItsBaseline) {
+  window().show_view("basis");
+  QApplication::processEvents();
+  window().basis_view()->set_basis(BasisKind::kPlanar);
+  expect_matches_baseline(window().basis_view()->render_image(), "basis-planar");
+}
+
+TEST_F(BaselineTest, AnimationViewOfTheDemoMatchesItsBaseline) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  window().play_frames(10);
+  expect_matches_baseline(window().animation_view()->render_image(), "animation-demo");
+}
+
+TEST_F(BaselineTest, AnimationViewDifferenceMatchesItsBaseline) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  window().animation_view()->set_display(PanelDisplay::kDifference);
+  window().play_frames(10);
+  expect_matches_baseline(window().animation_view()->render_image(), "animation-difference");
+}
+
+}  // namespace
+}  // namespace oflab::test

@@ -1,0 +1,42 @@
+// The scene-shifting view: it draws the train-window slices and the layered animation, and
+// its sliders re-cut the slices (a larger epsilon gives fewer, wider slices).
+#include <QApplication>
+#include <QDoubleSpinBox>
+
+#include "views/slices_view.h"
+#include "views/slider_spin.h"
+#include "image_checks.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+using SlicesViewTest = WindowTest;
+
+TEST_F(SlicesViewTest, DrawsTheSlicesAndPlaysTheLayeredAnimation) {
+  auto* view = dynamic_cast<SlicesView*>(window().view("slices"));
+  ASSERT_NE(view, nullptr);
+  ASSERT_TRUE(window().show_view("slices"));
+  QApplication::processEvents();
+  const QImage first = view->render_image();
+  EXPECT_GT(first.width(), 400);
+  EXPECT_GT(distinct_colours(first), 50);
+  EXPECT_GT(view->slice_count(), 2);
+  for (int i = 0; i < 5; ++i) view->step_animation();
+  const QImage later = view->render_image();
+  EXPECT_GT(changed_fraction(first, later), 0.001);  // the train moved on
+}
+
+TEST_F(SlicesViewTest, LargerEpsilonGivesFewerSlices) {
+  auto* view = dynamic_cast<SlicesView*>(window().view("slices"));
+  ASSERT_NE(view, nullptr);
+  const int before = view->slice_count();
+  auto* epsilon = view->findChildren<SliderSpin*>().front();
+  epsilon->spin_box()->setValue(4.0);
+  QApplication::processEvents();
+  EXPECT_DOUBLE_EQ(view->epsilon_px(), 4.0);
+  EXPECT_LT(view->slice_count(), before);
+}
+
+}  // namespace
+}  // namespace oflab::test
