@@ -1,6 +1,6 @@
 // Checked reading of the fields of oflab's JSON data files (motion scripts, scenes, viewer
-// scripts), shared by their readers. Every problem is thrown as the file kind's error type
-// (the template argument) with a message naming the file, the part and the field:
+// scripts, GUI sessions), shared by their readers. Every problem is thrown as the file kind's
+// error type (the template argument) with a message naming the file, the part and the field:
 //     "datasets/scripts/zoom.json: segment 1: field 'omega': must be a list of 3 numbers".
 #pragma once
 
@@ -64,6 +64,22 @@ template <class Error>
 const json& member(const json& obj, const Place<Error>& w, const std::string& field) {
   if (!obj.contains(field)) w.fail(field, "is missing");
   return obj.at(field);
+}
+
+// obj[field], which must be an object.
+template <class Error>
+const json& object(const json& obj, const Place<Error>& w, const std::string& field) {
+  const json& j = member(obj, w, field);
+  if (!j.is_object()) w.fail(field, "must be an object");
+  return j;
+}
+
+// obj[field], which must be a string.
+template <class Error>
+std::string text(const json& obj, const Place<Error>& w, const std::string& field) {
+  const json& j = member(obj, w, field);
+  if (!j.is_string()) w.fail(field, "must be a string");
+  return j.get<std::string>();
 }
 
 // The value `j` of `field` as a finite number of magnitude at most kMaxMagnitude.

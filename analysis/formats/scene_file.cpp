@@ -19,12 +19,6 @@ constexpr std::size_t kMaxPolygons = 100000;
 using namespace json_fields;
 using Where = json_fields::Place<SceneError>;
 
-std::string text(const json& obj, const Where& w, const std::string& field) {
-  const json& j = member(obj, w, field);
-  if (!j.is_string()) w.fail(field, "must be a string");
-  return j.get<std::string>();
-}
-
 std::string resolve_texture(const std::string& file, const std::string& base_dir) {
   const std::string prefix = "datasets:";
   if (file.rfind(prefix, 0) == 0)

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/engine.h"
-#include "views/basis_catalog.h"
 #include "adapters/flow_display.h"
-#include "models/plane_scene.h"
+#include "engine/engine.h"
+#include "flow/plane_scene.h"
+#include "views/basis_catalog.h"
 
 namespace oflab {
 

@@ -6,7 +6,7 @@
 
 #include <QString>
 
-#include "app/session_file.h"
+#include "formats/session_file.h"
 
 namespace oflab {
 

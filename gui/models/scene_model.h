@@ -13,7 +13,7 @@
 #include <optional>
 
 #include "engine/script.h"
-#include "models/plane_scene.h"
+#include "flow/plane_scene.h"
 
 namespace oflab {
 

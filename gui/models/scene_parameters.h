@@ -8,7 +8,7 @@
 // along its viewing ray, so the centre's image stays where it is.
 #pragma once
 
-#include "models/plane_scene.h"
+#include "flow/plane_scene.h"
 
 namespace oflab {
 

@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "models/plane_scene.h"
+#include "flow/plane_scene.h"
 
 class QComboBox;
 

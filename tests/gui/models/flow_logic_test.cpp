@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "flow/homography.h"
+#include "flow/plane_scene.h"
 #include "views/basis_catalog.h"
 #include "views/flow_parts.h"
 #include "views/palette.h"
-#include "models/plane_scene.h"
 #include "models/scene_parameters.h"
 
 namespace oflab {
@@ -173,23 +173,6 @@ TEST(SceneParameters, ChangingDistanceKeepsTheCentresImage) {
   const Vec2 before = project_centred(s.camera, s.pose.point);
   const Vec2 after = project_centred(s.camera, moved.point);
   EXPECT_NEAR(glm::length(after - before), 0.0, 1e-12);
-}
-
-TEST(PlaneScene, DemoIsValidAndImpossibleScenesAreNamed) {
-  PlaneScene s = default_demo_scene();
-  EXPECT_EQ(plane_scene_problem(s), "");
-  s.pose = with_centre_depth(s.pose, -1.0);
-  EXPECT_NE(plane_scene_problem(s).find("behind"), std::string::npos);
-  s = default_demo_scene();
-  s.pose.normal = glm::cross(s.pose.point, Vec3(0, 1, 0));  // N.P = 0
-  EXPECT_NE(plane_scene_problem(s).find("eye"), std::string::npos);
-  s = default_demo_scene();
-  s.pose.point = Vec3(0.15, -0.1, 0.3);  // centre in front, a corner behind the eye
-  s.pose.normal = Vec3(1.0, 0.0, 0.2);
-  EXPECT_NE(plane_scene_problem(s).find("corner"), std::string::npos);
-  s = default_demo_scene();
-  s.camera.focal_px = 0.0;
-  EXPECT_NE(plane_scene_problem(s).find("focal"), std::string::npos);
 }
 
 TEST(Palette, WheelHueFollowsDirectionAndWhiteMeansNoFlow) {

@@ -1,4 +1,4 @@
-#include "models/plane_scene.h"
+#include "flow/plane_scene.h"
 
 #include <cmath>
 

@@ -1,18 +1,20 @@
 // Saving and loading the whole session of the window as JSON ("oflab-session", version 1):
 // the plane scene (camera, pose, motion), the motion script, the texture file, the
 // animation view's source, engine settings and display, the frame and the view in front.
-// Plain C++ over core; the window applies a loaded Session (MainWindow::apply_session).
+// A file format like the scripts and scenes, read with formats/json_fields.h; the GUI
+// captures and applies sessions (gui/app/session_io.h).
 #pragma once
 
 #include <stdexcept>
 #include <string>
 
 #include "engine/engine.h"
-#include "models/plane_scene.h"
+#include "flow/plane_scene.h"
 
 namespace oflab {
 
-// Thrown for a session file that cannot be used; what() names the file and the field.
+// Thrown for a session file that cannot be used; what() names the file, the part and the field:
+//     "s.json: plane.pose: field 'normal': must be a list of 3 numbers".
 class SessionError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -35,11 +37,13 @@ struct Session {
 std::string session_to_json(const Session& session);
 
 // Parses session text; `origin` names the source in errors. Checks the format tag, the
-// version, types, finiteness, non-negative thresholds and known names; the files it names
-// are checked when the session is applied.
+// version, types, finite numbers of magnitude at most 1e6, a drawable plane
+// (plane_scene_problem), non-negative thresholds and known names; the files it names are
+// checked when the session is applied.
 Session parse_session(const std::string& text, const std::string& origin);
 
-// Reads a session file (parse_session); throws SessionError when it cannot be read.
+// Reads a session file (parse_session, with the file name as origin); throws SessionError
+// when it cannot be read.
 Session read_session_file(const std::string& path);
 
 // Writes a session file. Throws SessionError when the file exists and `overwrite` is

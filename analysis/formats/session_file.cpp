@@ -1,0 +1,139 @@
+#include "formats/session_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "formats/json_fields.h"
+
+namespace oflab {
+namespace {
+
+using namespace json_fields;
+using Where = Place<SessionError>;
+
+json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+json vec(const Vec2& v) { return json::array({v.x, v.y}); }
+
+// obj[field] as a finite number (json_fields::number of the member).
+double number_field(const json& obj, const Where& w, const std::string& field) {
+  return number(member(obj, w, field), w, field);
+}
+
+PlaneScene read_plane(const json& plane, const std::string& origin) {
+  const Where in_plane{origin, "plane"};
+  PlaneScene s;
+  const json& camera = object(plane, in_plane, "camera");
+  const Where in_camera{origin, "plane.camera"};
+  s.camera = make_camera(number_field(camera, in_camera, "focal_px"),
+                         int(number_field(camera, in_camera, "width")),
+                         int(number_field(camera, in_camera, "height")));
+  const json& pose = object(plane, in_plane, "pose");
+  const Where in_pose{origin, "plane.pose"};
+  s.pose.point = vec3(pose, in_pose, "point");
+  s.pose.normal = vec3(pose, in_pose, "normal");
+  s.pose.up = vec3(pose, in_pose, "up");
+  s.pose.size = vec2(pose, in_pose, "size");
+  const json& motion = object(plane, in_plane, "motion");
+  const Where in_motion{origin, "plane.motion"};
+  s.motion.velocity = vec3(motion, in_motion, "velocity");
+  s.motion.omega = vec3(motion, in_motion, "omega");
+  if (!parse_motion_model(text(motion, in_motion, "model").c_str(), &s.motion.model)) {
+    in_motion.fail("model", "unknown motion model");
+  }
+  const std::string problem = plane_scene_problem(s);
+  if (!problem.empty()) in_plane.fail("", problem);
+  return s;
+}
+
+EngineSettings read_settings(const json& j, const Where& w) {
+  EngineSettings s;
+  if (!parse_engine_mode(text(j, w, "mode"), &s.mode)) w.fail("mode", "unknown engine mode");
+  const json& t = member(j, w, "thresholds");
+  if (!t.is_array() || t.size() != size_t(kTermCount)) {
+    w.fail("thresholds", "must be a list of " + std::to_string(kTermCount) + " numbers");
+  }
+  for (int k = 0; k < kTermCount; ++k) {
+    s.thresholds[size_t(k)] = number(t[size_t(k)], w, "thresholds");
+    if (s.thresholds[size_t(k)] < 0) w.fail("thresholds", "must not be negative");
+  }
+  if (!parse_delta_policy(text(j, w, "delta"), &s.delta)) w.fail("delta", "unknown Delta policy");
+  const std::string sampling = text(j, w, "sampling");
+  if (sampling != "nearest" && sampling != "bilinear") w.fail("sampling", "nearest or bilinear");
+  s.sampling = sampling == "nearest" ? Sampling::kNearest : Sampling::kBilinear;
+  return s;
+}
+
+}  // namespace
+
+std::string session_to_json(const Session& s) {
+  json j;
+  j["format"] = "oflab-session";
+  j["version"] = 1;
+  j["plane"] = {{"camera", {{"focal_px", s.plane.camera.focal_px},
+                            {"width", s.plane.camera.width},
+                            {"height", s.plane.camera.height}}},
+                {"pose", {{"point", vec(s.plane.pose.point)}, {"normal", vec(s.plane.pose.normal)},
+                          {"up", vec(s.plane.pose.up)}, {"size", vec(s.plane.pose.size)}}},
+                {"motion", {{"velocity", vec(s.plane.motion.velocity)},
+                            {"omega", vec(s.plane.motion.omega)},
+                            {"model", motion_model_name(s.plane.motion.model)}}}};
+  j["script"] = s.script;
+  j["texture"] = s.texture;
+  j["animation"] = {
+      {"source", {{"kind", s.source_kind}, {"name", s.source_name}, {"viewer", s.viewer_script}}},
+      {"mode", engine_mode_name(s.settings.mode)},
+      {"thresholds", json::array({s.settings.thresholds[0], s.settings.thresholds[1],
+                                  s.settings.thresholds[2], s.settings.thresholds[3]})},
+      {"delta", delta_policy_name(s.settings.delta)},
+      {"sampling", s.settings.sampling == Sampling::kNearest ? "nearest" : "bilinear"},
+      {"display", s.display}};
+  j["frame"] = s.frame;
+  j["view"] = s.view;
+  return j.dump(2) + "\n";
+}
+
+Session parse_session(const std::string& json_text, const std::string& origin) {
+  const Where top{origin, ""};
+  const json root = parse_object(json_text, top);
+  if (text(root, top, "format") != "oflab-session") top.fail("format", "must be \"oflab-session\"");
+  if (number_field(root, top, "version") != 1) top.fail("version", "only version 1 is known");
+  Session s;
+  s.plane = read_plane(object(root, top, "plane"), origin);
+  s.script = text(root, top, "script");
+  s.texture = text(root, top, "texture");
+  const json& animation = object(root, top, "animation");
+  const Where in_animation{origin, "animation"};
+  const json& source = object(animation, in_animation, "source");
+  const Where in_source{origin, "animation.source"};
+  s.source_kind = text(source, in_source, "kind");
+  if (s.source_kind != "plane" && s.source_kind != "script" && s.source_kind != "scene") {
+    in_source.fail("kind", "must be plane, script or scene");
+  }
+  s.source_name = text(source, in_source, "name");
+  s.viewer_script = text(source, in_source, "viewer");
+  s.settings = read_settings(animation, in_animation);
+  s.display = text(animation, in_animation, "display");
+  const double frame = number_field(root, top, "frame");
+  if (frame < 0 || frame != std::floor(frame)) top.fail("frame", "must be a whole number >= 0");
+  s.frame = int(frame);
+  s.view = text(root, top, "view");
+  return s;
+}
+
+Session read_session_file(const std::string& path) {
+  return parse_session(read_file_text<SessionError>(path),
+                       std::filesystem::path(path).filename().string());
+}
+
+void write_session_file(const std::string& path, const Session& session, bool overwrite) {
+  if (!overwrite && std::filesystem::exists(path)) {
+    throw SessionError(path + ": exists; not overwritten");
+  }
+  std::ofstream out(path);
+  out << session_to_json(session);
+  if (!out) throw SessionError(path + ": cannot be written");
+}
+
+}  // namespace oflab
