@@ -131,13 +131,19 @@ TEST(SessionFile, EveryBadFieldIsNamedWithItsPart) {
       {[&](json& j) { j["plane"]["camera"]["width"] = huge; },
        "s.json: plane.camera: field 'width'"},
       {[](json& j) { j["plane"]["camera"]["focal_px"] = 0; }, "s.json: plane: "},
-      {[](json& j) { j["plane"]["pose"]["normal"] = json::array({0, 1}); },
+      {[](json& j) {
+         j["plane"]["pose"]["normal"] = json::array({0, 1});
+       },
        "s.json: plane.pose: field 'normal': must be a list of 3 numbers"},
-      {[](json& j) { j["plane"]["pose"]["normal"] = json::array({0, 0, 0}); },
+      {[](json& j) {
+         j["plane"]["pose"]["normal"] = json::array({0, 0, 0});
+       },
        "s.json: plane: "},
       {[](json& j) { j["plane"]["pose"].erase("size"); },
        "s.json: plane.pose: field 'size': is missing"},
-      {[&](json& j) { j["plane"]["motion"]["omega"] = json::array({0, inf, 0}); },
+      {[&](json& j) {
+         j["plane"]["motion"]["omega"] = json::array({0, inf, 0});
+       },
        "s.json: plane.motion: field 'omega'"},
       {[](json& j) { j["plane"]["motion"]["model"] = "spin"; },
        "s.json: plane.motion: field 'model': unknown motion model"},
@@ -147,7 +153,9 @@ TEST(SessionFile, EveryBadFieldIsNamedWithItsPart) {
       {[](json& j) { j["animation"]["source"].erase("viewer"); },
        "s.json: animation.source: field 'viewer': is missing"},
       {[](json& j) { j["animation"]["mode"] = "fast"; }, "s.json: animation: field 'mode'"},
-      {[](json& j) { j["animation"]["thresholds"] = json::array({1, 2, 3}); },
+      {[](json& j) {
+         j["animation"]["thresholds"] = json::array({1, 2, 3});
+       },
        "s.json: animation: field 'thresholds': must be a list of 4 numbers"},
       {[](json& j) { j["animation"]["thresholds"][2] = -1; },
        "s.json: animation: field 'thresholds': must not be negative"},
@@ -161,8 +169,8 @@ TEST(SessionFile, EveryBadFieldIsNamedWithItsPart) {
   };
   for (const auto& c : cases) {
     const std::string error = error_after(c.edit);
-    EXPECT_EQ(error.rfind(c.expected, 0), 0u) << "expected '" << c.expected << "', got '"
-                                              << error << "'";
+    EXPECT_EQ(error.rfind(c.expected, 0), 0u)
+        << "expected '" << c.expected << "', got '" << error << "'";
   }
 }
 

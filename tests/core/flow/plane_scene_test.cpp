@@ -1,10 +1,10 @@
 // The flow views' scene: the default demo is drawable, and each way a scene cannot be drawn
 // is named.
+#include "flow/plane_scene.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>
-
-#include "flow/plane_scene.h"
 
 namespace oflab {
 namespace {
