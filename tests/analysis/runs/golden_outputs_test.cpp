@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -114,7 +115,9 @@ class Golden : public ::testing::TestWithParam<GoldenCase> {};
 TEST_P(Golden, AnimateOutputsAreUnchanged) {
   const GoldenCase& c = GetParam();
   const fs::path fixtures = fs::path(OFLAB_GOLDEN_DIR) / c.name;
-  const fs::path out_dir = fs::temp_directory_path() / ("oflab-golden-" + c.name);
+  // Per process, so parallel runs of the suite (several build trees) never share a folder.
+  const fs::path out_dir = fs::temp_directory_path() /
+                           ("oflab-golden-" + std::to_string(getpid()) + "-" + c.name);
   fs::remove_all(out_dir);
   std::vector<std::string> args = {"animate"};
   args.insert(args.end(), c.args.begin(), c.args.end());
