@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "runs/animation_run.h"
+#include "image/composite.h"
 
 namespace oflab {
 
@@ -88,7 +88,9 @@ void AnimationSession::record_plane(const FrameReport& report) {
   r.plane = report;
   r.has_books = true;
   history_.push_back(r);
-  plane_frame_ = compose_frame(source_.camera(), plane_->displayed());
+  const PlacedLayer& shown = plane_->displayed();
+  plane_frame_ = Image(source_.camera().width, source_.camera().height);
+  if (!shown.layer.empty()) composite_over(plane_frame_, shown.layer, shown.offset_x, shown.offset_y);
 }
 
 void AnimationSession::record_scene(const AnimationFrame& report) {
