@@ -1,7 +1,6 @@
 // `oflab-cli animate`: plays a motion script through the engine and reports, per frame
 // (CSV) and in summary (text or JSON), what it did and what it cost.
-#include <filesystem>
-#include <fstream>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -19,8 +18,6 @@
 namespace oflab {
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
                                              "--no-skip-hidden"};
 
@@ -34,15 +31,14 @@ void print_summary(const nlohmann::json& j, const std::string& script, EngineMod
     const char* name = level_name(static_cast<Level>(l));
     const int count = j.at("levels").at(name);
     out << "  " << std::setw(12) << std::left << name << std::right << std::setw(6) << count
-        << " frames (" << std::fixed << std::setprecision(1)
-        << 100.0 * count / std::max(1, frames) << "%)\n";
+        << " frames (" << std::fixed << std::setprecision(1) << 100.0 * count / std::max(1, frames)
+        << "%)\n";
   }
   const auto number = [&](const char* key) {
     return j.at(key).is_null() ? std::nan("") : j.at(key).get<double>();
   };
   out << std::setprecision(3) << "  time saved " << 100.0 * number("time_saved") << "% (engine "
-      << number("time_ms") << " ms, re-render " << number("baseline_time_ms")
-      << " ms, same run)\n"
+      << number("time_ms") << " ms, re-render " << number("baseline_time_ms") << " ms, same run)\n"
       << "  work saved " << 100.0 * number("work_saved") << "% (pixels written "
       << j.at("pixels_written").get<std::int64_t>() << " vs "
       << j.at("baseline_pixels_written").get<std::int64_t>() << ")\n"

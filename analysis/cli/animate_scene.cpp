@@ -10,9 +10,9 @@
 #include "cli/animate_options.h"
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
 #include "runs/source_kinds.h"
 #include "runs/statistics.h"
-#include "formats/viewer_script_file.h"
 
 namespace oflab {
 namespace {
@@ -81,8 +81,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result, source.scene->name, source.viewer.name, settings.engine.mode,
-                        out);
+    print_scene_summary(result, source.scene->name, source.viewer.name, settings.engine.mode, out);
   }
   return 0;
 }

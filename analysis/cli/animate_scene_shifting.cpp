@@ -10,8 +10,8 @@
 #include "cli/animate_options.h"
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
-#include "runs/source_kinds.h"
 #include "formats/viewer_script_file.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 namespace {

@@ -90,7 +90,9 @@ void AnimationSession::record_plane(const FrameReport& report) {
   history_.push_back(r);
   const PlacedLayer& shown = plane_->displayed();
   plane_frame_ = Image(source_.camera().width, source_.camera().height);
-  if (!shown.layer.empty()) composite_over(plane_frame_, shown.layer, shown.offset_x, shown.offset_y);
+  if (!shown.layer.empty()) {
+    composite_over(plane_frame_, shown.layer, shown.offset_x, shown.offset_y);
+  }
 }
 
 void AnimationSession::record_scene(const AnimationFrame& report) {
