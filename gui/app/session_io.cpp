@@ -9,7 +9,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "runs/animation_run.h"
+#include "runs/source_kinds.h"
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
@@ -181,6 +181,7 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
 
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error) {
   AnimationSession* session = window->animation_view()->session();
+  // The table writes every kind's CSV; the scene kinds wait for the session to name its kind.
   if (!session || session->source().is_scene()) {
     *error = QStringLiteral(
         "the per-frame CSV is for a single plane (use oflab-cli animate "
@@ -191,13 +192,15 @@ bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, Q
     *error = QStringLiteral("%1 exists; not overwritten").arg(path);
     return false;
   }
-  AnimationOptions options;
-  options.settings = session->settings();
-  options.run_baseline = false;
-  const AnimationRun run = run_animation(session->source().plane_script,
-                                         make_layer(session->source().plane_texture), options);
+  const AnimationSource& played = session->source();
+  RunSource source;
+  source.script = played.plane_script;
+  source.texture = played.plane_texture;
+  source.settings.engine = session->settings();
+  const SourceKind& kind = source_kind("plane");
+  const AnimationRun run = kind.play(source, PlayOptions{});
   std::ofstream out(path.toStdString());
-  write_frame_csv(out, run);
+  kind.write_csv(out, run);
   if (!out) {
     *error = QStringLiteral("%1: cannot be written").arg(path);
     return false;

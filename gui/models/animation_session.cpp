@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "runs/animation_run.h"
+#include "image/composite.h"
 
 namespace oflab {
 
@@ -27,34 +27,6 @@ std::string animation_source_problem(const AnimationSource& source) {
     if (!p.field.empty()) return "polygon '" + polygon.name + "': " + p.field + ": " + p.message;
   }
   return "";
-}
-
-Scene plane_as_scene(const PlanePose& pose, const Image& texture) {
-  const PlaneAxes axes = plane_axes(pose);
-  ScenePolygon polygon;
-  polygon.name = "plane";
-  polygon.centre = pose.point;
-  polygon.front = -axes.normal;  // core/scene/scene.h: the pose's normal N is -F
-  polygon.up = axes.up;
-  polygon.size = pose.size;
-  Scene scene;
-  scene.name = "plane";
-  scene.textures.push_back(texture);
-  scene.texture_names.push_back("texture");
-  scene.polygons.push_back(polygon);
-  return scene;
-}
-
-ViewerPose viewer_for_pose(const PlanePose& first, const PlanePose& now) {
-  // Q maps frame 0's plane axes onto the current ones; s carries the centre along.
-  const PlaneAxes a = plane_axes(first);
-  const PlaneAxes b = plane_axes(now);
-  const Mat3 from(a.right, a.up, a.normal);  // columns
-  const Mat3 to(b.right, b.up, b.normal);
-  ViewerPose view;
-  view.rotation = to * glm::transpose(from);
-  view.translation = now.point - view.rotation * first.point;
-  return view;
 }
 
 AnimationSession::AnimationSession(AnimationSource source, const EngineSettings& settings)
@@ -116,10 +88,14 @@ void AnimationSession::record_plane(const FrameReport& report) {
   r.plane = report;
   r.has_books = true;
   history_.push_back(r);
-  plane_frame_ = compose_frame(source_.camera(), plane_->displayed());
+  const PlacedLayer& shown = plane_->displayed();
+  plane_frame_ = Image(source_.camera().width, source_.camera().height);
+  if (!shown.layer.empty()) {
+    composite_over(plane_frame_, shown.layer, shown.offset_x, shown.offset_y);
+  }
 }
 
-void AnimationSession::record_scene(const SceneFrameReport& report) {
+void AnimationSession::record_scene(const AnimationFrame& report) {
   FrameRecord r;
   r.frame = frame_;
   r.time_ms = report.time_ms;

@@ -104,7 +104,7 @@ class AnimationSession {
   void restart();
   void step();
   void record_plane(const FrameReport& report);
-  void record_scene(const SceneFrameReport& report);
+  void record_scene(const AnimationFrame& report);
 
   AnimationSource source_;
   EngineSettings settings_;
@@ -115,10 +115,5 @@ class AnimationSession {
   std::vector<FrameRecord> history_;
   int frame_ = 0;
 };
-
-// Single-plane sources as scenes: the polygon of `pose` with the viewer frame as world.
-Scene plane_as_scene(const PlanePose& pose, const Image& texture);
-// The viewer pose that shows the polygon of plane_as_scene(first) at pose `now`.
-ViewerPose viewer_for_pose(const PlanePose& first, const PlanePose& now);
 
 }  // namespace oflab
