@@ -33,12 +33,12 @@ QImage flatten_image(const Image& image, const QColor& background) {
   return out;
 }
 
-void draw_level_overlay(QImage& image, const std::vector<PolygonOutline>& outlines,
+void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
                         const std::array<int, kLevelCount>& counts, const QColor& text,
                         double line_width) {
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
-  for (const PolygonOutline& outline : outlines) {
+  for (const LayerOutline& outline : outlines) {
     QPolygonF polygon;
     for (const Vec2& p : outline.points) polygon << QPointF(p.x, p.y);
     painter.setPen(QPen(level_qcolor(outline.level), line_width));

@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "image/image.h"
-#include "models/animation_session.h"
+#include "engine/script.h"  // before animator.h, which uses MotionScript
+#include "engine/animator.h"
 
 namespace oflab {
 
@@ -20,7 +21,7 @@ QImage flatten_image(const Image& image, const QColor& background);
 // Draws each outline (image pixels) in its level's Okabe-Ito colour, `line_width` pixels
 // wide, and a legend of the five levels with this frame's count of polygons per level in
 // the top-left corner. `text` is the legend's text colour.
-void draw_level_overlay(QImage& image, const std::vector<PolygonOutline>& outlines,
+void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
                         const std::array<int, kLevelCount>& counts, const QColor& text,
                         double line_width);
 

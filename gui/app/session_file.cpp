@@ -132,10 +132,7 @@ Session parse_session(const std::string& text, const std::string& origin) {
   s.texture = r.text(j, "texture");
   const json& animation = r.at(j, "animation");
   const json& source = r.at(animation, "source");
-  s.source_kind = r.text(source, "kind");
-  if (s.source_kind != "plane" && s.source_kind != "script" && s.source_kind != "scene") {
-    r.fail("kind", "must be plane, script or scene");
-  }
+  s.source_kind = r.text(source, "kind");  // a source kind's name, checked when applied
   s.source_name = r.text(source, "name");
   s.viewer_script = r.text(source, "viewer");
   s.settings = read_settings(r, animation);
