@@ -29,36 +29,39 @@ const AnimationSourceKind& AnimationModel::source_kind() const {
   return *find_animation_source_kind(source_.kind);
 }
 
-std::string AnimationModel::source_problem(const SourceChoice& choice,
-                                           const EngineSettings& settings) const {
+std::string AnimationModel::start(const SourceChoice& choice, const EngineSettings& settings,
+                                  std::unique_ptr<Animator>* animator,
+                                  AnimationFrame* first) const {
   const AnimationSourceKind* kind = find_animation_source_kind(choice.kind);
   if (!kind) {
     return "unknown source kind '" + choice.kind + "' (known: " + animation_source_kind_names() + ")";
   }
   try {
-    kind->make(choice, *scene_, settings)->start();
+    *animator = kind->make(choice, *scene_, settings);
+    *first = (*animator)->start();
   } catch (const std::exception& e) {  // unreadable files, sources that cannot be played
     return e.what();
   }
   return "";
 }
 
+std::string AnimationModel::source_problem(const SourceChoice& choice,
+                                           const EngineSettings& settings) const {
+  std::unique_ptr<Animator> animator;
+  AnimationFrame first;
+  return start(choice, settings, &animator, &first);
+}
+
 bool AnimationModel::rebuild(const SourceChoice& choice, const EngineSettings& settings) {
-  const AnimationSourceKind* kind = find_animation_source_kind(choice.kind);
-  if (!kind) {
-    emit input_rejected(tr("unknown source kind '%1' (known: %2)")
-                            .arg(QString::fromStdString(choice.kind),
-                                 QString::fromStdString(animation_source_kind_names())));
+  std::unique_ptr<Animator> animator;
+  AnimationFrame first;
+  const std::string problem = start(choice, settings, &animator, &first);
+  if (!problem.empty()) {
+    emit input_rejected(QString::fromStdString(problem));
     return false;
   }
-  try {
-    std::unique_ptr<Animator> animator = kind->make(choice, *scene_, settings);
-    history_.assign(1, animator->start());
-    animator_ = std::move(animator);
-  } catch (const std::exception& e) {  // unreadable files, sources that cannot be played
-    emit input_rejected(QString::fromStdString(e.what()));
-    return false;
-  }
+  animator_ = std::move(animator);
+  history_.assign(1, first);
   source_ = choice;
   settings_ = settings;
   stale_ = false;

@@ -70,6 +70,9 @@ class AnimationModel : public QObject {
   void input_rejected(const QString& message);
 
  private:
+  // Makes and starts the animator of `choice`: empty on success, else one line why not.
+  std::string start(const SourceChoice& choice, const EngineSettings& settings,
+                    std::unique_ptr<Animator>* animator, AnimationFrame* first) const;
   bool rebuild(const SourceChoice& choice, const EngineSettings& settings);
   void seek(int frame);
 
