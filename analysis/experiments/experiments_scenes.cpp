@@ -242,7 +242,7 @@ std::string scale_reading(const std::vector<SceneMeasurement>& grid) {
   }
   const LineFit line = fit_line(n, engine);
   double composite = 0.0;
-  for (const SceneFrameReport& f : grid.front().run.reports) composite += f.composite_ms;
+  for (const AnimationFrame& f : grid.front().run.reports) composite += f.composite_ms;
   composite /= static_cast<double>(std::max<size_t>(1, grid.front().run.reports.size()));
   return "Engine: a straight line through the frame times has slope " +
          fixed(1000.0 * line.slope, 1) + " microseconds per polygon, intercept " +
@@ -282,7 +282,7 @@ Chart four_cubes_chart(const SceneMeasurement& m) {
   static const char* names[] = {"none", "translate", "affine", "perspective", "re-render"};
   for (int l = 0; l < kLevelCount; ++l) {
     ChartSeries s{names[l], x, {}, SeriesStyle::kLine, chart_palette(l + 3)};
-    for (const SceneFrameReport& r : m.run.reports) s.y.push_back(r.levels[l]);
+    for (const AnimationFrame& r : m.run.reports) s.y.push_back(r.levels[l]);
     levels.series.push_back(s);
   }
   Chart chart;

@@ -31,7 +31,7 @@ void summarise_scene_run(SceneRun& run) {
   double psnr_sum = 0.0;
   int psnr_count = 0;
   for (std::size_t i = 0; i < run.reports.size(); ++i) {
-    const SceneFrameReport& r = run.reports[i];
+    const AnimationFrame& r = run.reports[i];
     for (int l = 0; l < kLevelCount; ++l) s.polygon_levels[l] += r.levels[l];
     s.back_facing += r.back_facing;
     s.outside_frustum += r.outside_frustum;
@@ -93,7 +93,7 @@ SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
     run.reports.push_back(play_frame(engine, script, i));
     double baseline_ms = kNaN, conventional_ms = kNaN, psnr = kNaN;
     if (exact) {
-      const SceneFrameReport r = play_frame(*exact, script, i);
+      const AnimationFrame r = play_frame(*exact, script, i);
       baseline_ms = r.time_ms;
       run.summary.baseline_pixels += r.pixels_written;
       psnr = psnr_db(engine.frame(), exact->frame());
@@ -124,8 +124,8 @@ void write_scene_frame_csv(std::ostream& out, const SceneRun& run) {
          "pixels_composited,hidden_area_px,max_measured_error_px,psnr_db,rerender_time_ms,"
          "conventional_time_ms\n";
   for (std::size_t i = 0; i < run.reports.size(); ++i) {
-    const SceneFrameReport& r = run.reports[i];
-    out << r.frame << ',' << r.polygons << ',' << r.drawn();
+    const AnimationFrame& r = run.reports[i];
+    out << r.frame << ',' << r.layers << ',' << r.drawn();
     for (int c : r.levels) out << ',' << c;
     out << ',' << r.back_facing << ',' << r.outside_frustum << ',' << r.hidden << ',' << r.clipped
         << ',' << r.time_ms << ',' << r.update_ms << ',' << r.composite_ms << ',' << r.visibility_ms

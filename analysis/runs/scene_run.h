@@ -55,7 +55,7 @@ struct SceneRunSummary {
 };
 
 struct SceneRun {
-  std::vector<SceneFrameReport> reports;
+  std::vector<AnimationFrame> reports;
   std::vector<double> baseline_ms;      // per frame (NaN when not run)
   std::vector<double> conventional_ms;  // per frame (NaN when not run)
   std::vector<double> psnr_db;          // per frame, engine against exact (NaN when not run)

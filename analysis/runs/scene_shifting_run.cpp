@@ -13,53 +13,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-Level layer_level(LayerUpdate update) {
-  switch (update) {
-    case LayerUpdate::kStill:
-      return Level::kNone;
-    case LayerUpdate::kShifted:
-      return Level::kTranslate;
-    case LayerUpdate::kScaled:
-      return Level::kAffine;
-    case LayerUpdate::kRebuilt:
-      break;
-  }
-  return Level::kRerender;
-}
-
-// The frame in the scene runs' terms: each drawn polygon at the level of its layer.
-SceneFrameReport as_scene_frame(const SceneShiftingFrameReport& r,
-                                const SceneShiftingRenderer& renderer, int polygons) {
-  SceneFrameReport s;
-  s.frame = r.frame;
-  s.polygons = polygons;
-  const std::vector<int>& slice_of = renderer.polygon_slices();
-  for (int p = 0; p < polygons; ++p) {
-    const int slice = slice_of[p];
-    if (slice < 0 || renderer.shown_corners(p).empty()) {
-      ++s.outside_frustum;
-      continue;
-    }
-    ++s.levels[static_cast<int>(layer_level(r.updates[slice]))];
-  }
-  s.time_ms = r.time_ms;
-  s.update_ms = r.time_ms;
-  s.pixels_written = r.pixels_written;
-  s.pixels_composited = r.pixels_composited;
-  s.max_measured_error_px = r.max_measured_error_px;
-  return s;
-}
-
 }  // namespace
-
-double script_design_speed(const ViewerScript& script) {
-  double speed = 0.0;
-  for (const ViewerFrame& f : script.frames) {
-    const Vec3 v = viewer_step(f.motion).translation;
-    speed = std::max(speed, std::hypot(v.x, v.y));
-  }
-  return speed;
-}
 
 SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& script,
                                     const SceneShiftingRunOptions& options) {
@@ -80,7 +34,8 @@ SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& scri
   SceneRun& sr = run.scene_run;
   // The two renderers take turns frame by frame, so a busy machine slows them alike.
   for (int i = 0; i < frames; ++i) {
-    const SceneShiftingFrameReport r = play_frame(renderer, script, i);
+    const AnimationFrame frame = play_frame(renderer, script, i);
+    const SceneShiftingFrameReport& r = renderer.slice_report();
     if (i == 0) run.slices = renderer.slices();
     if (i > 0) {
       run.rebuilt_layers += r.rebuilt;
@@ -91,10 +46,10 @@ SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& scri
       if (r.rebuilt == r.occupied) ++run.turning_frames_all_rebuilt;
     }
     run.frames.push_back(r);
-    sr.reports.push_back(as_scene_frame(r, renderer, polygons));
+    sr.reports.push_back(frame);
     double baseline_ms = kNaN, psnr = kNaN;
     if (exact) {
-      const SceneShiftingFrameReport b = play_frame(*exact, script, i);
+      const AnimationFrame b = play_frame(*exact, script, i);
       baseline_ms = b.time_ms;
       sr.summary.baseline_pixels += b.pixels_written;
       psnr = psnr_db(renderer.frame(), exact->frame());

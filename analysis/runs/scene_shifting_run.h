@@ -33,10 +33,6 @@ struct SceneShiftingRun {
   double design_speed = 0.0;           // the |V| the slices were cut for
 };
 
-// The largest sideways speed of the viewer over the script's frames, world units per frame:
-// the |V| scene shifting cuts its slices for.
-double script_design_speed(const ViewerScript& script);
-
 // Throws std::invalid_argument for a scene scene shifting cannot draw (see
 // SceneShiftingRenderer::start) or settings out of range.
 SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& script,

@@ -23,6 +23,7 @@
 
 #include "engine/decision.h"
 #include "engine/engine.h"
+#include "engine/script.h"
 #include "flow/camera.h"
 #include "image/image.h"
 #include "scene/scene.h"
@@ -93,8 +94,10 @@ class Animator {
   virtual ViewerPose view() const = 0;
 };
 
-// Plays a motion script: frame k shows script.frames[k].pose. Precondition: the script has
-// frames; `texture` premultiplied RGBA.
+// Plays a motion script: frame k shows script.frames[k].pose. `texture` premultiplied RGBA.
+// image() is the engine's displayed layer composed into a camera-sized frame, transparent
+// (nothing) in frames where the plane is not visible; outlines() the displayed polygon.
+// Throws std::invalid_argument when the script has no frames.
 std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
                                               const EngineSettings& settings);
 

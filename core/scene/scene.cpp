@@ -56,6 +56,33 @@ PlanePose polygon_pose(const ScenePolygon& polygon, const ViewerPose& view,
   return pose;
 }
 
+Scene plane_as_scene(const PlanePose& pose, const Image& texture) {
+  const PlaneAxes axes = plane_axes(pose);
+  ScenePolygon polygon;
+  polygon.name = "plane";
+  polygon.centre = pose.point;
+  polygon.front = -axes.normal;  // the pose's normal N is -F (see the header)
+  polygon.up = axes.up;
+  polygon.size = pose.size;
+  Scene scene;
+  scene.name = "plane";
+  scene.textures.push_back(texture);
+  scene.texture_names.push_back("texture");
+  scene.polygons.push_back(polygon);
+  return scene;
+}
+
+ViewerPose viewer_for_pose(const PlanePose& first, const PlanePose& now) {
+  const PlaneAxes a = plane_axes(first);
+  const PlaneAxes b = plane_axes(now);
+  const Mat3 from(a.right, a.up, a.normal);  // columns
+  const Mat3 to(b.right, b.up, b.normal);
+  ViewerPose view;
+  view.rotation = to * glm::transpose(from);
+  view.translation = now.point - view.rotation * first.point;
+  return view;
+}
+
 ScenePolygon polygon_from_vertices(const std::string& name, const std::vector<Vec3>& vertices,
                                    const Vec3& up_hint, int texture) {
   if (vertices.size() < 3) throw std::invalid_argument("needs at least 3 vertices");

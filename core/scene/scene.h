@@ -59,6 +59,16 @@ std::vector<Vec3> polygon_vertices(const ScenePolygon& polygon);
 PlanePose polygon_pose(const ScenePolygon& polygon, const ViewerPose& view,
                        glm::ivec2 texture_size);
 
+// A single plane as a scene: one polygon, named "plane", on the texture rectangle of `pose`
+// (its viewer frame taken as the world), carrying `texture` (premultiplied RGBA). Seen from
+// the identity viewer it is exactly `pose`; see viewer_for_pose for any later pose.
+Scene plane_as_scene(const PlanePose& pose, const Image& texture);
+
+// The viewer pose from which the polygon of plane_as_scene(first, ...) appears at pose `now`
+// (same size): the rotation maps first's plane axes onto now's, the translation carries the
+// centre along. Precondition: both poses have valid axes (plane_pose_problem is empty).
+ViewerPose viewer_for_pose(const PlanePose& first, const PlanePose& now);
+
 // Builds a polygon from the world-space vertices of a convex planar polygon, ordered
 // counter-clockwise when seen from its front (the OBJ and OpenGL convention: the front
 // normal is the right-hand-rule normal of the vertex order). The texture rectangle is the

@@ -70,12 +70,6 @@ const char* polygon_status_name(PolygonStatus status) {
   return "animated";
 }
 
-int SceneFrameReport::drawn() const {
-  int n = 0;
-  for (int c : levels) n += c;
-  return n;
-}
-
 struct SceneAnimator::PolygonState {
   std::vector<Vec3> world_vertices;  // the outline in world coordinates
   std::vector<Vec2> uv;              // the outline, normalised texture coordinates
@@ -91,6 +85,7 @@ struct SceneAnimator::PolygonState {
   bool needs_clipping = false;  // near plane or guard band: render clipped, exactly
   bool updated = false;
   PlacedLayer clipped_layer;  // the clipped exact render (status kClipped)
+  FrameReport report;         // the animator's report (status kAnimated)
 
   const PlacedLayer* shown(PolygonStatus status) const {
     if (status == PolygonStatus::kClipped) return &clipped_layer;
@@ -151,19 +146,19 @@ SceneAnimator::SceneAnimator(const Scene& scene, const Camera& camera,
 
 SceneAnimator::~SceneAnimator() = default;
 
-SceneFrameReport SceneAnimator::start(const ViewerPose& view) {
+AnimationFrame SceneAnimator::start(const ViewerPose& view) {
   frame_index_ = 0;
   for (auto& s : states_) s->live = false;
   return run_frame(nullptr, nullptr, view);
 }
 
-SceneFrameReport SceneAnimator::advance(const ViewerPose& previous, const RigidMotion& motion,
-                                        const ViewerPose& current) {
+AnimationFrame SceneAnimator::advance(const ViewerPose& previous, const RigidMotion& motion,
+                                      const ViewerPose& current) {
   ++frame_index_;
   return run_frame(&previous, &motion, current);
 }
 
-void SceneAnimator::classify(const ViewerPose& view, SceneFrameReport& report) {
+void SceneAnimator::classify(const ViewerPose& view, AnimationFrame& report) {
   const double gw = settings_.guard_band * camera_.width;
   const double gh = settings_.guard_band * camera_.height;
   for (std::size_t i = 0; i < states_.size(); ++i) {
@@ -247,7 +242,7 @@ bool SceneAnimator::fragment_hidden(int fragment, const ViewerPose& view) {
                            settings_.candidate_margin_px);
 }
 
-void SceneAnimator::render_clipped(int index, const ViewerPose& view, SceneFrameReport& report) {
+void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationFrame& report) {
   PolygonState& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
   s.clipped_layer = PlacedLayer{};
@@ -273,7 +268,7 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, SceneFrame
 }
 
 void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const RigidMotion* motion,
-                                   const ViewerPose& current, SceneFrameReport& report) {
+                                   const ViewerPose& current, AnimationFrame& report) {
   PolygonState& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
   const auto t0 = Clock::now();
@@ -303,17 +298,18 @@ void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const 
   levels_[index] = r.level;
   ++report.levels[static_cast<int>(r.level)];
   report.pixels_written += r.pixels_written;
+  s.report = r;
   if (r.visible)
     report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
   report.update_ms += ms_since(t0);
 }
 
-SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const RigidMotion* motion,
-                                          const ViewerPose& current) {
+AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidMotion* motion,
+                                        const ViewerPose& current) {
   const auto t0 = Clock::now();
-  SceneFrameReport report;
+  AnimationFrame report;
   report.frame = frame_index_;
-  report.polygons = static_cast<int>(scene_.polygons.size());
+  report.layers = static_cast<int>(scene_.polygons.size());
   classify(current, report);
   bsp_.back_to_front(eye_position(current), order_);
   const std::vector<BspFragment>& fragments = bsp_.fragments();
@@ -367,6 +363,7 @@ SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const Rigi
       report.hidden_area_px += clip_to_box(polygon_region(static_cast<int>(i)), frame_box).area();
     }
     if (!s.updated) s.live = false;  // its layer is stale: the next update starts afresh
+    if (statuses_[i] == PolygonStatus::kAnimated) report.layer_reports.push_back(s.report);
   }
   const auto t1 = Clock::now();
   frame_.fill(Pixel{});
@@ -382,6 +379,36 @@ SceneFrameReport SceneAnimator::run_frame(const ViewerPose* previous, const Rigi
   report.composite_ms = ms_since(t1);
   report.time_ms = ms_since(t0);
   return report;
+}
+
+std::vector<LayerOutline> SceneAnimator::outlines(const ViewerPose& view) const {
+  std::vector<LayerOutline> result;
+  std::vector<char> listed(states_.size(), 0);
+  for (int f : order_) {
+    const int p = bsp_.fragments()[f].polygon;
+    const PolygonStatus status = statuses_[p];
+    if (listed[p] || (status != PolygonStatus::kAnimated && status != PolygonStatus::kClipped)) {
+      continue;
+    }
+    listed[p] = 1;
+    LayerOutline outline;
+    outline.level = levels_[p];
+    bool in_front = true;
+    for (const Vec3& v : states_[p]->world_vertices) {
+      const Vec3 r = to_view(view, v);
+      in_front = in_front && r.z > 1e-3;
+      if (!in_front) break;
+      outline.points.push_back(centred_to_pixel(camera_, project_centred(camera_, r)));
+    }
+    if (in_front) result.push_back(std::move(outline));
+  }
+  return result;
+}
+
+std::unique_ptr<SceneScriptAnimator> make_scene_animator(std::shared_ptr<const Scene> scene,
+                                                         ViewerScript script,
+                                                         const SceneSettings& settings) {
+  return std::make_unique<SceneScriptAnimator>(std::move(scene), std::move(script), settings);
 }
 
 }  // namespace oflab

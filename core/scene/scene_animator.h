@@ -28,11 +28,13 @@
 #include <vector>
 
 #include "scene/bsp_tree.h"
+#include "engine/animator.h"
 #include "engine/engine.h"
 #include "scene/occlusion.h"
 #include "scene/scene.h"
 #include "scene/view_culling.h"
 #include "scene/viewer_script.h"
+#include "scene/viewer_script_animator.h"
 
 namespace oflab {
 
@@ -55,29 +57,6 @@ struct SceneSettings {
 enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped };
 const char* polygon_status_name(PolygonStatus status);
 
-struct SceneFrameReport {
-  int frame = 0;
-  int polygons = 0;         // in the scene
-  int back_facing = 0;      // culled: seen from behind or edge-on
-  int outside_frustum = 0;  // culled: nothing inside the view frustum
-  int hidden = 0;           // facing, in the frustum, wholly covered: not updated
-  int clipped = 0;          // rendered exactly after clipping (also counted as re-render)
-  std::array<int, kLevelCount> levels{};  // drawn polygons per update level
-  double time_ms = 0.0;             // the whole frame: cull, order, visibility, updates, composite
-  double update_ms = 0.0;           // of which the polygon updates (warps and bookkeeping)
-  double composite_ms = 0.0;        // of which clearing the frame and compositing
-  double visibility_ms = 0.0;       // of which the hidden test: what skipping hidden costs
-  std::int64_t pixels_written = 0;  // by the warp kernels
-  std::int64_t pixels_composited = 0;
-  // Image area (pixels, within the frame) of the hidden polygons: what a re-render of them
-  // would have written, i.e. the warping work the visibility test saved this frame.
-  double hidden_area_px = 0.0;
-  // Largest measured corner error of an animated polygon (core/engine/engine.h), pixels.
-  double max_measured_error_px = 0.0;
-  int culled() const { return back_facing + outside_frustum; }
-  int drawn() const;  // sum of levels
-};
-
 class SceneAnimator {
  public:
   // `scene` must outlive the animator. Builds the BSP tree. Throws std::invalid_argument
@@ -88,13 +67,18 @@ class SceneAnimator {
   SceneAnimator(const SceneAnimator&) = delete;
   SceneAnimator& operator=(const SceneAnimator&) = delete;
 
-  // Frame 0 seen from `view`: every visible polygon is rendered.
-  SceneFrameReport start(const ViewerPose& view);
+  // Frame 0 seen from `view`: every visible polygon is rendered. The report's layers are
+  // the scene's polygons; time_ms covers cull, order, visibility, updates and composite;
+  // hidden_area_px is the image area (within the frame) of the hidden polygons, the warping
+  // work the visibility test saved; max_measured_error_px the largest measured corner error
+  // of an animated polygon (core/engine/engine.h); layer_reports hold the engine report of
+  // each polygon animated this frame (clipped polygons have none), in polygon order.
+  AnimationFrame start(const ViewerPose& view);
 
   // The next frame: `previous` is the viewer of the frame shown so far, `motion` the scene
   // motion towards this frame (core/scene/viewer_script.h), `current` the viewer now.
-  SceneFrameReport advance(const ViewerPose& previous, const RigidMotion& motion,
-                           const ViewerPose& current);
+  AnimationFrame advance(const ViewerPose& previous, const RigidMotion& motion,
+                         const ViewerPose& current);
 
   // The composited frame (camera-sized, premultiplied).
   const Image& frame() const { return frame_; }
@@ -104,18 +88,22 @@ class SceneAnimator {
   const std::vector<PolygonStatus>& statuses() const { return statuses_; }
   // Per polygon, the update level of the last frame (meaningful for drawn polygons).
   const std::vector<Level>& levels() const { return levels_; }
+  // The exact outlines (top-left pixels, seen from `view`, the view of the last frame) of
+  // the polygons drawn in the last frame with their levels, back to front in the BSP order;
+  // a polygon with a vertex within 1e-3 of the eye plane or behind it has none.
+  std::vector<LayerOutline> outlines(const ViewerPose& view) const;
 
  private:
   struct PolygonState;
 
-  SceneFrameReport run_frame(const ViewerPose* previous, const RigidMotion* motion,
-                             const ViewerPose& current);
-  void classify(const ViewerPose& view, SceneFrameReport& report);
+  AnimationFrame run_frame(const ViewerPose* previous, const RigidMotion* motion,
+                           const ViewerPose& current);
+  void classify(const ViewerPose& view, AnimationFrame& report);
   bool fragment_hidden(int fragment, const ViewerPose& view);
   const ConvexPolygon& polygon_region(int polygon);
   void update_polygon(int polygon, const ViewerPose* previous, const RigidMotion* motion,
-                      const ViewerPose& current, SceneFrameReport& report);
-  void render_clipped(int polygon, const ViewerPose& view, SceneFrameReport& report);
+                      const ViewerPose& current, AnimationFrame& report);
+  void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
   ConvexPolygon fragment_region(int fragment, const ViewerPose& view) const;
   ConvexPolygon exact_region(const ViewPolygon& clipped) const;
 
@@ -135,5 +123,14 @@ class SceneAnimator {
   Image frame_;
   int frame_index_ = 0;
 };
+
+// The scene animator playing a viewer script: frame k is seen from script.frames[k].pose.
+using SceneScriptAnimator = ViewerScriptAnimator<SceneAnimator, SceneSettings>;
+
+// Throws std::invalid_argument as SceneAnimator, or when the script has no frames or the
+// scene is null.
+std::unique_ptr<SceneScriptAnimator> make_scene_animator(std::shared_ptr<const Scene> scene,
+                                                         ViewerScript script,
+                                                         const SceneSettings& settings);
 
 }  // namespace oflab

@@ -44,6 +44,21 @@ Mat3 layer_origin_shift(double x, double y) {
   return m;
 }
 
+// The level a polygon of a slice is counted at (see the header's "Levels").
+Level layer_level(LayerUpdate update) {
+  switch (update) {
+    case LayerUpdate::kStill:
+      return Level::kNone;
+    case LayerUpdate::kShifted:
+      return Level::kTranslate;
+    case LayerUpdate::kScaled:
+      return Level::kAffine;
+    case LayerUpdate::kRebuilt:
+      break;
+  }
+  return Level::kRerender;
+}
+
 }  // namespace
 
 struct SceneShiftingRenderer::SliceLayer {
@@ -258,8 +273,9 @@ double SceneShiftingRenderer::measured_error(const ViewerPose& view) const {
   return worst;
 }
 
-SceneShiftingFrameReport SceneShiftingRenderer::start(const ViewerPose& view) {
+AnimationFrame SceneShiftingRenderer::start(const ViewerPose& view) {
   frame_index_ = 0;
+  totals_ = SceneShiftingTotals{};
   cut_slices(view);
   SceneShiftingFrameReport report;
   report.slices = static_cast<int>(slices_.size());
@@ -270,12 +286,12 @@ SceneShiftingFrameReport SceneShiftingRenderer::start(const ViewerPose& view) {
   report.time_ms = ms_since(t0);
   report.updates.assign(slices_.size(), LayerUpdate::kRebuilt);
   report.max_measured_error_px = measured_error(view);
-  return report;
+  return finish(std::move(report));
 }
 
-SceneShiftingFrameReport SceneShiftingRenderer::advance(const ViewerPose& /*previous*/,
-                                                        const RigidMotion& motion,
-                                                        const ViewerPose& current) {
+AnimationFrame SceneShiftingRenderer::advance(const ViewerPose& /*previous*/,
+                                              const RigidMotion& motion,
+                                              const ViewerPose& current) {
   SceneShiftingFrameReport report;
   report.frame = ++frame_index_;
   report.slices = static_cast<int>(slices_.size());
@@ -327,7 +343,66 @@ SceneShiftingFrameReport SceneShiftingRenderer::advance(const ViewerPose& /*prev
   compose(report);
   report.time_ms = ms_since(t0);
   report.max_measured_error_px = measured_error(current);
-  return report;
+  return finish(std::move(report));
+}
+
+// The frame in the animators' terms: each drawn polygon at the level of its slice's update.
+AnimationFrame SceneShiftingRenderer::finish(SceneShiftingFrameReport&& report) {
+  if (report.frame > 0) {
+    totals_.rebuilt_layers += report.rebuilt;
+    totals_.shifted_layers += report.shifted + report.scaled;
+  }
+  if (report.view_turned) {
+    ++totals_.turning_frames;
+    if (report.rebuilt == report.occupied) ++totals_.turning_frames_all_rebuilt;
+  }
+  AnimationFrame f;
+  f.frame = report.frame;
+  f.layers = static_cast<int>(scene_.polygons.size());
+  for (int p = 0; p < f.layers; ++p) {
+    const int slice = polygon_slice_[p];
+    if (slice < 0 || built_corners_[p].empty()) {
+      ++f.outside_frustum;
+      continue;
+    }
+    ++f.levels[static_cast<int>(layer_level(report.updates[slice]))];
+  }
+  f.time_ms = report.time_ms;
+  f.update_ms = report.time_ms;
+  f.pixels_written = report.pixels_written;
+  f.pixels_composited = report.pixels_composited;
+  f.max_measured_error_px = report.max_measured_error_px;
+  if (report.view_turned) f.note = "view turned: the slices are rebuilt";
+  slice_report_ = std::move(report);
+  return f;
+}
+
+std::vector<LayerOutline> SceneShiftingRenderer::outlines(const ViewerPose& /*view*/) const {
+  std::vector<LayerOutline> result;
+  for (std::size_t slice = layers_.size(); slice-- > 0;) {
+    for (int p : layers_[slice].polygons) {
+      LayerOutline outline;
+      outline.level = layer_level(slice_report_.updates.at(slice));
+      for (const Vec2& c : shown_corners(p)) outline.points.push_back(centred_to_pixel(camera_, c));
+      if (!outline.points.empty()) result.push_back(std::move(outline));
+    }
+  }
+  return result;
+}
+
+double script_design_speed(const ViewerScript& script) {
+  double speed = 0.0;
+  for (const ViewerFrame& f : script.frames) {
+    const Vec3 v = viewer_step(f.motion).translation;
+    speed = std::max(speed, std::hypot(v.x, v.y));
+  }
+  return speed;
+}
+
+std::unique_ptr<SceneShiftingAnimator> make_scene_shifting_animator(
+    std::shared_ptr<const Scene> scene, ViewerScript script, SceneShiftingSettings settings) {
+  if (settings.design_speed == 0.0) settings.design_speed = script_design_speed(script);
+  return std::make_unique<SceneShiftingAnimator>(std::move(scene), std::move(script), settings);
 }
 
 }  // namespace oflab

@@ -17,6 +17,12 @@
 //    covers the frame.
 // The frame is the layers composited far to near (premultiplied, transparent elsewhere).
 //
+// Levels (core/engine/animator.h). Each frame is also reported as an AnimationFrame whose
+// layers are the scene's polygons: a polygon drawn when its slice's layer was last built
+// counts at the level of its slice's update (still = none, shifted = translate, scaled =
+// affine, rebuilt = rerender); the others (behind the viewer at start, or not drawn at the
+// last build) count as outside the frustum.
+//
 // Slicing is fixed at start, in depths seen from the start view; each slice's depth range
 // then moves with the viewer's forward steps. After a turn the planes are no longer
 // parallel to the image plane: the turning frames rebuild every slice, so their layers are
@@ -30,12 +36,15 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "engine/animator.h"
 #include "flow/camera.h"
 #include "scene/scene.h"
 #include "scene_shifting/scene_shifting.h"
 #include "scene/viewer_script.h"
+#include "scene/viewer_script_animator.h"
 #include "image/warp.h"
 
 namespace oflab {
@@ -69,6 +78,14 @@ struct SceneShiftingFrameReport {
   double max_measured_error_px = 0.0;
 };
 
+// Slice updates over the frames since start().
+struct SceneShiftingTotals {
+  int turning_frames = 0;              // frames whose step turned the viewing direction
+  int turning_frames_all_rebuilt = 0;  // of those, the frames that rebuilt every occupied slice
+  long rebuilt_layers = 0;             // occupied slices rebuilt, frames after the first
+  long shifted_layers = 0;             // occupied slices shifted or scaled, after the first
+};
+
 class SceneShiftingRenderer {
  public:
   // `scene` must outlive the renderer. Throws std::invalid_argument for a polygon problem
@@ -82,16 +99,24 @@ class SceneShiftingRenderer {
   // Frame 0 seen from `view`: cuts the slices and renders every layer. Throws
   // std::invalid_argument when a polygon in front of the viewer is not parallel to the image
   // plane (its front normal within 1e-6 of -Z in the viewer frame), or the slicing needs
-  // more than settings.max_slices slices.
-  SceneShiftingFrameReport start(const ViewerPose& view);
+  // more than settings.max_slices slices. The report maps the slice updates onto levels
+  // (see "Levels" above); time_ms and update_ms are the slice report's time_ms.
+  AnimationFrame start(const ViewerPose& view);
 
   // The next frame: `previous` the viewer shown so far, `motion` the scene motion towards
   // this frame (core/scene/viewer_script.h), `current` the viewer now.
-  SceneShiftingFrameReport advance(const ViewerPose& previous, const RigidMotion& motion,
-                                   const ViewerPose& current);
+  AnimationFrame advance(const ViewerPose& previous, const RigidMotion& motion,
+                         const ViewerPose& current);
 
   const Image& frame() const { return frame_; }
   const Camera& camera() const { return camera_; }
+  const SceneShiftingSettings& settings() const { return settings_; }
+  // The slice updates of the last frame, and their totals since start().
+  const SceneShiftingFrameReport& slice_report() const { return slice_report_; }
+  const SceneShiftingTotals& totals() const { return totals_; }
+  // The polygons drawn in the last frame as shown (shown_corners, in top-left pixels) with
+  // their slice's level, far to near. `view` is unused: the outlines are the layers' own.
+  std::vector<LayerOutline> outlines(const ViewerPose& view) const;
   // The slices as cut at start (depths from the start view).
   const std::vector<Slice>& slices() const { return slices_; }
   // Per polygon, its slice index, or -1 when it was behind the viewer at start.
@@ -108,6 +133,7 @@ class SceneShiftingRenderer {
   bool covers_frame(const SliceLayer& layer) const;
   void compose(SceneShiftingFrameReport& report);
   double measured_error(const ViewerPose& view) const;
+  AnimationFrame finish(SceneShiftingFrameReport&& report);
 
   const Scene& scene_;
   Camera camera_;
@@ -120,10 +146,25 @@ class SceneShiftingRenderer {
   Layer scratch_;
   Image frame_;
   int frame_index_ = 0;
+  SceneShiftingFrameReport slice_report_;
+  SceneShiftingTotals totals_;
 };
 
 // The viewer's step over one frame for a scene motion (core/scene/viewer_script.h): the viewer
 // moves against the scene, translation -V and rotation -Omega.
 ViewerStep viewer_step(const RigidMotion& motion);
+
+// The largest sideways speed of the viewer over the script's frames, world units per frame:
+// the |V| scene shifting cuts its slices for.
+double script_design_speed(const ViewerScript& script);
+
+// The scene-shifting renderer playing a viewer script (core/scene/viewer_script_animator.h).
+using SceneShiftingAnimator = ViewerScriptAnimator<SceneShiftingRenderer, SceneShiftingSettings>;
+
+// Cuts the slices for settings.design_speed, or for script_design_speed(script) when it is
+// 0. Throws std::invalid_argument as SceneShiftingRenderer, or when the script has no frames
+// or the scene is null.
+std::unique_ptr<SceneShiftingAnimator> make_scene_shifting_animator(
+    std::shared_ptr<const Scene> scene, ViewerScript script, SceneShiftingSettings settings);
 
 }  // namespace oflab

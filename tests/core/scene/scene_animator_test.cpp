@@ -50,7 +50,7 @@ std::vector<ViewerFrame> path(const ViewerPose& start, const Vec3& velocity, con
 template <typename Check>
 void play(SceneAnimator& animator, const std::vector<ViewerFrame>& frames, Check check) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    const SceneFrameReport r =
+    const AnimationFrame r =
         i == 0 ? animator.start(frames[0].pose)
                : animator.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
     check(static_cast<int>(i), r, animator);
@@ -97,7 +97,7 @@ TEST(SceneAnimator, RerenderModeMatchesTheRayCastReference) {
   SceneAnimator animator(scene, camera, settings);
   for (const Vec3& eye : {Vec3(0, 1.5, 5), Vec3(-4, 2, 2), Vec3(3, 3.5, 3), Vec3(1, -0.2, 4)}) {
     const ViewerPose view = look_at(eye, Vec3(0, 0, -0.5), Vec3(0, 1, 0));
-    const SceneFrameReport r = animator.start(view);
+    const AnimationFrame r = animator.start(view);
     EXPECT_GT(r.drawn(), 2);
     expect_matches_reference(animator.frame(), ray_cast_scene(scene, camera, view, settings.near),
                              kExactMismatch, "eye " + std::to_string(eye.x));
@@ -141,7 +141,7 @@ TEST(SceneAnimator, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
     SceneAnimator animator(scene, camera, settings);
     int clipped = 0;
     ASSERT_NO_THROW(
-        play(animator, frames, [&](int i, const SceneFrameReport& r, const SceneAnimator& a) {
+        play(animator, frames, [&](int i, const AnimationFrame& r, const SceneAnimator& a) {
           clipped += r.clipped;
           if (i % 5 != 0) return;
           const Image reference = ray_cast_scene(scene, camera, frames[i].pose, settings.near);
@@ -174,13 +174,13 @@ TEST(SceneAnimator, FullyHiddenPolygonsAreSkippedAndTheSavingIsReported) {
   const ViewerPose view = look_at(Vec3(0, 0, 4), Vec3(0, 0, 0), Vec3(0, 1, 0));
   SceneSettings settings;
   SceneAnimator animator(scene, camera, settings);
-  const SceneFrameReport r = animator.start(view);
+  const AnimationFrame r = animator.start(view);
   EXPECT_EQ(r.hidden, 4);
   EXPECT_EQ(r.drawn(), 1);
   EXPECT_GT(r.hidden_area_px, 4 * 0.5 * 60.0 * 60.0);  // each hidden square is > 40 px wide
   settings.skip_hidden = false;
   SceneAnimator all(scene, camera, settings);
-  const SceneFrameReport r_all = all.start(view);
+  const AnimationFrame r_all = all.start(view);
   EXPECT_EQ(r_all.hidden, 0);
   EXPECT_EQ(r_all.drawn(), 5);
   EXPECT_GT(r_all.pixels_written, r.pixels_written);
@@ -200,10 +200,10 @@ TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
     SceneAnimator a(scene, camera, skip), b(scene, camera, keep);
     int hidden = 0;
     std::vector<Image> kept_frames;
-    play(b, frames, [&](int, const SceneFrameReport&, const SceneAnimator& x) {
+    play(b, frames, [&](int, const AnimationFrame&, const SceneAnimator& x) {
       kept_frames.push_back(x.frame());
     });
-    play(a, frames, [&](int i, const SceneFrameReport& r, const SceneAnimator& x) {
+    play(a, frames, [&](int i, const AnimationFrame& r, const SceneAnimator& x) {
       hidden += r.hidden;
       if (mode == EngineMode::kRerender) {
         EXPECT_EQ(x.frame().pixels(), kept_frames[i].pixels()) << "frame " << i;
@@ -239,9 +239,9 @@ TEST(SceneAnimator, EveryModeAnimatesCubesWithinItsBudget) {
     settings.engine.mode = mode;
     SceneAnimator animator(scene, camera, settings);
     std::array<int, kLevelCount> levels{};
-    play(animator, frames, [&](int i, const SceneFrameReport& r, const SceneAnimator&) {
+    play(animator, frames, [&](int i, const AnimationFrame& r, const SceneAnimator&) {
       for (int l = 0; l < kLevelCount; ++l) levels[l] += r.levels[l];
-      EXPECT_EQ(r.drawn() + r.culled() + r.hidden, r.polygons);
+      EXPECT_EQ(r.drawn() + r.culled() + r.hidden, r.layers);
       if (mode != EngineMode::kAffine) {
         EXPECT_LE(r.max_measured_error_px, 1.25) << engine_mode_name(mode) << " frame " << i;
       }
@@ -301,7 +301,7 @@ TEST(SceneAnimator, JoinedFacesShowGapsInAffineModeOnly) {
     settings.engine.mode = mode;
     exact.engine.mode = EngineMode::kRerender;
     SceneAnimator animator(scene, camera, settings), reference(scene, camera, exact);
-    play(animator, frames, [&](int i, const SceneFrameReport&, const SceneAnimator& a) {
+    play(animator, frames, [&](int i, const AnimationFrame&, const SceneAnimator& a) {
       i == 0 ? reference.start(frames[0].pose)
              : reference.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
       gaps[mode] = std::max(gaps[mode], widest_interior_gap(a.frame(), reference.frame()));

@@ -67,9 +67,12 @@ TEST(SceneShiftingRenderer, SidewaysViewerMatchesTheEnginesTranslationLevelPlane
     engines.emplace_back(camera, make_layer(scene.textures[0]), engine_settings);
   }
   for (std::size_t i = 0; i < script.size(); ++i) {
-    const SceneShiftingFrameReport r =
-        i == 0 ? renderer.start(script[0].pose)
-               : renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    if (i == 0) {
+      renderer.start(script[0].pose);
+    } else {
+      renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    }
+    const SceneShiftingFrameReport& r = renderer.slice_report();
     EXPECT_FALSE(r.view_turned);
     EXPECT_LE(r.max_measured_error_px, kEpsilon + 1e-9) << "frame " << i;
     for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
@@ -100,7 +103,8 @@ TEST(SceneShiftingRenderer, SidewaysViewerShiftsLayersInsteadOfRenderingThemEver
   int rebuilt = 0, shifted = 0;
   renderer.start(script[0].pose);
   for (std::size_t i = 1; i < script.size(); ++i) {
-    const auto r = renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    const SceneShiftingFrameReport& r = renderer.slice_report();
     rebuilt += r.rebuilt;
     shifted += r.shifted;
   }
@@ -112,10 +116,11 @@ TEST(SceneShiftingRenderer, TurningViewerRebuildsEveryOccupiedSliceEveryFrame) {
   const Camera camera = make_camera(300.0, 320, 240);
   const std::vector<ViewerFrame> script = frames({0.03, 0.0, 0.0}, {0.0, 0.004, 0.0}, 15);
   SceneShiftingRenderer renderer(scene, camera, settings_for(0.03));
-  const SceneShiftingFrameReport first = renderer.start(script[0].pose);
-  EXPECT_GE(first.occupied, 3);
+  renderer.start(script[0].pose);
+  EXPECT_GE(renderer.slice_report().occupied, 3);
   for (std::size_t i = 1; i < script.size(); ++i) {
-    const auto r = renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    renderer.advance(script[i - 1].pose, script[i - 1].motion, script[i].pose);
+    const SceneShiftingFrameReport& r = renderer.slice_report();
     EXPECT_TRUE(r.view_turned);
     EXPECT_EQ(r.rebuilt, r.occupied) << "frame " << i;
     EXPECT_EQ(r.shifted + r.scaled, 0);

@@ -1,0 +1,112 @@
+// The single-plane animator of core/engine/animator.h: a motion script played through one
+// PlaneAnimator (core/engine/engine.h), its displayed layer composed into a camera-sized
+// frame, and the plane seen as a one-polygon scene (core/scene/scene.h plane_as_scene).
+#include <algorithm>
+#include <stdexcept>
+
+#include "engine/animator.h"
+#include "image/composite.h"
+
+namespace oflab {
+
+namespace {
+
+class PlaneScriptAnimator final : public Animator {
+ public:
+  PlaneScriptAnimator(const MotionScript& script, const Image& texture,
+                      const EngineSettings& settings)
+      : script_(script),
+        texture_(make_layer(texture)),
+        settings_(settings),
+        scene_(plane_as_scene(script.frames.at(0).pose, texture)),
+        image_(script.camera.width, script.camera.height) {}
+
+  int frame_count() const override { return static_cast<int>(script_.frames.size()); }
+  int frame() const override { return frame_; }
+
+  AnimationFrame start() override {
+    engine_ = std::make_unique<PlaneAnimator>(script_.camera, texture_, settings_);
+    frame_ = 0;
+    return report(engine_->start(script_.frames[0].pose));
+  }
+
+  AnimationFrame advance() override {
+    const ScriptFrame& previous = script_.frames.at(static_cast<size_t>(frame_));
+    ++frame_;
+    return report(engine_->advance(previous.pose, previous.motion,
+                                   script_.frames.at(static_cast<size_t>(frame_)).pose));
+  }
+
+  const Image& image() const override {
+    if (!image_current_) {
+      image_.fill(Pixel{});
+      if (visible_ && !engine_->displayed().layer.empty()) {
+        const PlacedLayer& shown = engine_->displayed();
+        composite_over(image_, shown.layer, shown.offset_x, shown.offset_y);
+      }
+      image_current_ = true;
+    }
+    return image_;
+  }
+
+  const Camera& camera() const override { return script_.camera; }
+
+  std::vector<LayerOutline> outlines() const override {
+    if (!visible_) return {};
+    const double w = texture_.image.width(), h = texture_.image.height();
+    LayerOutline outline;
+    outline.level = level_;
+    for (const Vec2& t : {Vec2(0, 0), Vec2(w, 0), Vec2(w, h), Vec2(0, h)}) {
+      outline.points.push_back(apply_homography(engine_->displayed_warp(), t));
+    }
+    return {outline};
+  }
+
+  const Scene& scene() const override { return scene_; }
+
+  ViewerPose view() const override {
+    const size_t k = static_cast<size_t>(std::max(frame_, 0));
+    return viewer_for_pose(script_.frames[0].pose, script_.frames[k].pose);
+  }
+
+ private:
+  AnimationFrame report(const FrameReport& r) {
+    visible_ = r.visible;
+    level_ = r.level;
+    image_current_ = false;
+    AnimationFrame f;
+    f.frame = r.frame;
+    f.layers = 1;
+    if (r.visible) {
+      f.levels[static_cast<int>(r.level)] = 1;
+      f.max_measured_error_px = r.measured_error_px;
+    }
+    f.time_ms = r.time_ms;
+    f.update_ms = r.time_ms;
+    f.pixels_written = r.pixels_written;
+    f.layer_reports.push_back(r);
+    f.note = r.note;
+    return f;
+  }
+
+  MotionScript script_;
+  Layer texture_;
+  EngineSettings settings_;
+  Scene scene_;
+  std::unique_ptr<PlaneAnimator> engine_;
+  int frame_ = -1;
+  bool visible_ = false;
+  Level level_ = Level::kNone;
+  mutable Image image_;  // composed on demand from the engine's displayed layer
+  mutable bool image_current_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
+                                              const EngineSettings& settings) {
+  if (script.frames.empty()) throw std::invalid_argument("the motion script has no frames");
+  return std::make_unique<PlaneScriptAnimator>(script, texture, settings);
+}
+
+}  // namespace oflab
