@@ -35,7 +35,7 @@ QImage flatten_image(const Image& image, const QColor& background) {
 
 void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
                         const std::array<int, kLevelCount>& counts, const QColor& text,
-                        double line_width) {
+                        double line_width, double text_scale) {
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
   for (const LayerOutline& outline : outlines) {
@@ -46,7 +46,7 @@ void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines
     painter.drawPolygon(polygon);
   }
   QFont font = painter.font();
-  font.setPixelSize(std::max(12, image.height() / 32));
+  font.setPixelSize(int(text_scale * std::max(12, image.height() / 32)));
   painter.setFont(font);
   const int row = font.pixelSize() + 6;
   const int x = 10;
@@ -64,10 +64,11 @@ void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines
   }
 }
 
-void draw_panel_title(QImage& image, const QString& title, const QColor& text) {
+void draw_panel_title(QImage& image, const QString& title, const QColor& text,
+                      double text_scale) {
   QPainter painter(&image);
   QFont font = painter.font();
-  font.setPixelSize(std::max(12, image.height() / 28));
+  font.setPixelSize(int(text_scale * std::max(12, image.height() / 28)));
   font.setBold(true);
   painter.setFont(font);
   painter.setPen(text);

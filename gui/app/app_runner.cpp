@@ -72,7 +72,7 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
                     std::ostream& err) {
   window->play_frames(options.frames);
   const QString view = QString::fromStdString(options.view);
-  ViewPage* page = view.isEmpty() || view == "window" ? nullptr : window->view(view);
+  ViewPage* page = view.isEmpty() || options.whole_window ? nullptr : window->view(view);
   const QImage image = page ? page->render_image() : window->grab_window_image();
   QString error;
   const QString path = QString::fromStdString(options.screenshot);

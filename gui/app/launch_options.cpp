@@ -161,6 +161,10 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--screenshot") && options->screenshot.empty()) {
     throw UsageError("--screenshot: the file name is empty");
   }
+  options->whole_window = cli.has("--whole-window");
+  if (options->whole_window && options->screenshot.empty()) {
+    throw UsageError("--whole-window: only used with --screenshot");
+  }
   if (cli.has("--frames") && options->screenshot.empty()) {
     throw UsageError("--frames: only used with --screenshot");
   }
@@ -195,6 +199,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                            {"--animation-show", 1},
                            {"--view", 1},
                            {"--screenshot", 1},
+                           {"--whole-window", 0},
                            {"--frames", 1},
                            {"--benchmark", 1},
                            {"--size", 2},
@@ -247,7 +252,7 @@ std::string launch_usage() {
          "             [--mode perspective|affine|exact|rerender]\n"
          "             [--animation-show side-by-side|difference|blink]\n"
          "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
-         "             [--screenshot FILE.png --frames N] [--benchmark N] [--size W H]\n"
+         "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "
          "arrows,streamlines,wheel,texture,zoom,common-scale]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"

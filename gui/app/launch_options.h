@@ -23,6 +23,8 @@ struct LaunchOptions {
   std::string view;        // view in front and the one captured; "window" = whole window
   std::string screenshot;  // PNG path; when set, play `frames` frames, save, exit
   int frames = 0;          // frames to play before the screenshot (>= 0)
+  // --whole-window: the screenshot is of the whole window, with `view` in front.
+  bool whole_window = false;
   int benchmark = 0;       // frames of the flow view to render as fast as possible (> 0)
   int width = 1280;        // window size in pixels
   int height = 800;

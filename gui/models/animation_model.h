@@ -15,7 +15,6 @@
 #include <memory>
 #include <vector>
 
-#include "engine/script.h"  // before animator.h, which uses MotionScript
 #include "engine/animator.h"
 #include "models/animation_sources.h"
 

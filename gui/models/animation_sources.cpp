@@ -150,6 +150,11 @@ const AnimationSourceKind* find_animation_source_kind(const std::string& name) {
   return nullptr;
 }
 
+std::string fill_pattern(const std::string& pattern, const std::string& value) {
+  const size_t at = pattern.find("%1");
+  return at == std::string::npos ? pattern : pattern.substr(0, at) + value + pattern.substr(at + 2);
+}
+
 std::string animation_source_kind_names() {
   std::string names;
   for (const AnimationSourceKind& kind : animation_source_kinds()) {

@@ -16,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "engine/script.h"  // before animator.h, which uses MotionScript
 #include "engine/animator.h"
 
 namespace oflab {
@@ -65,6 +64,9 @@ const std::vector<AnimationSourceKind>& animation_source_kinds();
 
 // The kind with this name, or nullptr.
 const AnimationSourceKind* find_animation_source_kind(const std::string& name);
+
+// `pattern` (a label or panel title) with its "%1", if any, replaced by `value`.
+std::string fill_pattern(const std::string& pattern, const std::string& value);
 
 // The names of the kinds, comma separated, for error messages.
 std::string animation_source_kind_names();

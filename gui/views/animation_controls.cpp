@@ -25,6 +25,11 @@ QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
 }
 
+// The picker's entry of `name` of `kind` (a label without %1 names no file).
+QString entry_label(const AnimationSourceKind& kind, const QString& name) {
+  return QString::fromStdString(fill_pattern(kind.label, name.toStdString()));
+}
+
 void select_data(QComboBox* box, const QVariant& data) {
   const int index = box->findData(data);
   if (index >= 0) box->setCurrentIndex(index);
@@ -66,8 +71,7 @@ QWidget* AnimationControls::make_source_row() {
   source_box_->setObjectName(QStringLiteral("animation_source"));
   for (const AnimationSourceKind& kind : animation_source_kinds()) {
     for (const std::string& n : kind.shipped_names()) {
-      source_box_->addItem(QString::fromStdString(kind.label).arg(QString::fromStdString(n)),
-                           source_key(kind.name, n));
+      source_box_->addItem(entry_label(kind, QString::fromStdString(n)), source_key(kind.name, n));
     }
   }
   viewer_box_ = new QComboBox(row);
@@ -215,7 +219,7 @@ void AnimationControls::add_file_entry(QComboBox* box, const std::string& kind,
   }
   const AnimationSourceKind* entry = find_animation_source_kind(kind);
   if (!entry || box->findData(source_key(kind, path)) >= 0) return;
-  box->addItem(QString::fromStdString(entry->label).arg(file), source_key(kind, path));
+  box->addItem(entry_label(*entry, file), source_key(kind, path));
 }
 
 void AnimationControls::set_source(const SourceChoice& choice) {

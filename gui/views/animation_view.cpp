@@ -19,6 +19,9 @@ namespace {
 constexpr int kPanelGap = 16;          // pixels between the two panels
 constexpr int kDifferenceScale = 128;  // grey levels at the top of the heat map's colour bar
 constexpr double kNear = 0.05;         // near plane of the exact render (SceneSettings::near)
+// Panel text in presentation mode, times the normal size: legible from the back of a
+// classroom when the panels are scaled down to fit a 1920 x 1080 window.
+constexpr double kPresentationText = 2.0;
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
 
@@ -137,15 +140,17 @@ const Image& AnimationView::exact_image() {
 
 QImage AnimationView::panel(bool exact) {
   const QColor text = qcolor(theme_.text);
+  const double text_scale = theme_.presentation ? kPresentationText : 1.0;
   QImage image = flatten_image(exact ? exact_image() : engine_image(), qcolor(theme_.background));
   if (exact) {
-    draw_panel_title(image, tr("exact projection (VTK)"), text);
+    draw_panel_title(image, tr("exact projection (VTK)"), text, text_scale);
     return image;
   }
   draw_level_overlay(image, model_->animator()->outlines(), model_->current().levels, text,
-                     theme_.line_width + 1.0);
-  const QString title = QString::fromStdString(model_->source_kind().panel_title);
-  draw_panel_title(image, title.arg(engine_mode_name(model_->settings().mode)), text);
+                     theme_.line_width + 1.0, text_scale);
+  const std::string title =
+      fill_pattern(model_->source_kind().panel_title, engine_mode_name(model_->settings().mode));
+  draw_panel_title(image, QString::fromStdString(title), text, text_scale);
   return image;
 }
 

@@ -5,7 +5,6 @@
 
 #include <QString>
 
-#include "engine/script.h"  // before animator.h, which uses MotionScript
 #include "engine/animator.h"
 
 namespace oflab {
