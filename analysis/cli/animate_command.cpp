@@ -1,7 +1,6 @@
 // `oflab-cli animate`: plays a motion script through the engine and reports, per frame
 // (CSV) and in summary (text or JSON), what it did and what it cost.
-#include <filesystem>
-#include <fstream>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -10,7 +9,6 @@
 #include "cli/animate_options.h"
 #include "cli/animate_scene.h"
 #include "cli/animate_scene_shifting.h"
-#include "runs/animation_run.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "formats/datasets.h"
@@ -20,27 +18,34 @@
 namespace oflab {
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
                                              "--no-skip-hidden"};
 
-void print_summary(const AnimationSummary& s, const std::string& script, EngineMode mode,
+// The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
+void print_summary(const nlohmann::json& j, const std::string& script, EngineMode mode,
                    std::ostream& out) {
-  out << "script " << script << ", mode " << engine_mode_name(mode) << ", " << s.frames
+  const int frames = j.at("frames");
+  out << "script " << script << ", mode " << engine_mode_name(mode) << ", " << frames
       << " frames\n";
   for (int l = 0; l < kLevelCount; ++l) {
-    out << "  " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
-        << std::setw(6) << s.levels[l] << " frames (" << std::fixed << std::setprecision(1)
-        << 100.0 * s.levels[l] / std::max(1, s.frames) << "%)\n";
+    const char* name = level_name(static_cast<Level>(l));
+    const int count = j.at("levels").at(name);
+    out << "  " << std::setw(12) << std::left << name << std::right << std::setw(6) << count
+        << " frames (" << std::fixed << std::setprecision(1) << 100.0 * count / std::max(1, frames)
+        << "%)\n";
   }
-  out << std::setprecision(3) << "  time saved " << 100.0 * s.time_saved << "% (engine "
-      << s.time_ms << " ms, re-render " << s.baseline_time_ms << " ms, same run)\n"
-      << "  work saved " << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs "
-      << s.baseline_pixels << ")\n"
-      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR " << s.mean_psnr_db
-      << " dB\n";
-  if (s.invisible_frames) out << "  " << s.invisible_frames << " frames not visible\n";
+  const auto number = [&](const char* key) {
+    return j.at(key).is_null() ? std::nan("") : j.at(key).get<double>();
+  };
+  out << std::setprecision(3) << "  time saved " << 100.0 * number("time_saved") << "% (engine "
+      << number("time_ms") << " ms, re-render " << number("baseline_time_ms") << " ms, same run)\n"
+      << "  work saved " << 100.0 * number("work_saved") << "% (pixels written "
+      << j.at("pixels_written").get<std::int64_t>() << " vs "
+      << j.at("baseline_pixels_written").get<std::int64_t>() << ")\n"
+      << "  max measured error " << number("max_measured_error_px") << " px, mean PSNR "
+      << number("mean_psnr_db") << " dB\n";
+  const int invisible = j.at("invisible_frames");
+  if (invisible) out << "  " << invisible << " frames not visible\n";
 }
 
 int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
@@ -60,32 +65,28 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   } catch (const std::runtime_error& e) {
     throw UsageError(std::string("--script: ") + e.what());
   }
-  const MotionScript script = read_script_file(script_path);
-  const std::string texture_path = a.text_or("--texture", default_texture_path());
-  const Layer texture = make_layer(read_image(texture_path));
-  AnimationOptions options;
-  options.settings = read_engine_settings(a);
+  RunSource source;
+  source.script = read_script_file(script_path);
+  source.texture = read_image(a.text_or("--texture", default_texture_path()));
+  source.settings.engine = read_engine_settings(a);
+  const EngineSettings& settings = source.settings.engine;
+  PlayOptions options;
   const RunOutput output = read_run_output(a, err);
   output.apply_to(options);
-  const std::string& dir = output.dir;  // empty without --out
-  const AnimationRun run = run_animation(script, texture, options);
-  if (!dir.empty()) {
-    std::ofstream csv(fs::path(dir) / "frames.csv");
-    write_frame_csv(csv, run);
-    std::ofstream summary(fs::path(dir) / "summary.json");
-    summary << summary_json(run.summary).dump(2) << "\n";
-    if (!csv || !summary) throw UsageError("--out: cannot write into '" + dir + "'");
-  }
-  const std::string name = script.name.empty() ? script_arg : script.name;
+  const SourceKind& kind = source_kind("plane");
+  const AnimationRun run = kind.play(source, options);
+  const nlohmann::json summary = kind.summary_json(run);
+  if (!output.dir.empty()) write_run_outputs(output.dir, kind, run, summary);
+  const std::string name = source.script.name.empty() ? script_arg : source.script.name;
   if (a.has("--json")) {
-    nlohmann::json j = summary_json(run.summary);
+    nlohmann::json j = summary;
     j["script"] = name;
-    j["mode"] = engine_mode_name(options.settings.mode);
-    j["delta"] = delta_policy_name(options.settings.delta);
-    j["thresholds"] = options.settings.thresholds;
+    j["mode"] = engine_mode_name(settings.mode);
+    j["delta"] = delta_policy_name(settings.delta);
+    j["thresholds"] = settings.thresholds;
     out << j.dump(2) << "\n";
   } else {
-    print_summary(run.summary, name, options.settings.mode, out);
+    print_summary(summary, name, settings.mode, out);
   }
   return 0;
 }

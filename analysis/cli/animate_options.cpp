@@ -89,10 +89,10 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   return out;
 }
 
-void write_scene_outputs(const std::string& dir, const SceneRun& run,
-                         const nlohmann::json& summary) {
+void write_run_outputs(const std::string& dir, const SourceKind& kind, const AnimationRun& run,
+                       const nlohmann::json& summary) {
   std::ofstream csv(fs::path(dir) / "frames.csv");
-  write_scene_frame_csv(csv, run);
+  kind.write_csv(csv, run);
   std::ofstream json(fs::path(dir) / "summary.json");
   json << summary.dump(2) << "\n";
   if (!csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");

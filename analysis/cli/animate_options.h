@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli/cli_args.h"
-#include "runs/scene_run.h"
+#include "runs/source_kinds.h"
 #include "engine/engine.h"
 #include "image/image.h"
 #include "scene/scene.h"
@@ -31,8 +31,7 @@ struct RunOutput {
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
   std::function<void(int, int)> progress;
 
-  // Sets max_frames, on_frame and progress of a run's options (AnimationOptions,
-  // SceneRunOptions, SceneShiftingRunOptions).
+  // Sets max_frames, on_frame and progress of a run's options (RunOptions, PlayOptions).
   template <class Options>
   void apply_to(Options& options) const {
     options.max_frames = max_frames;
@@ -42,14 +41,14 @@ struct RunOutput {
 };
 RunOutput read_run_output(const CliArgs& args, std::ostream& err);
 
+// Writes DIR/frames.csv (kind.write_csv of `run`) and DIR/summary.json (`summary`).
+// Throws UsageError naming --out when either cannot be written.
+void write_run_outputs(const std::string& dir, const SourceKind& kind, const AnimationRun& run,
+                       const nlohmann::json& summary);
+
 // The scene forms of `oflab-cli animate` (analysis/cli/animate_scene.cpp,
 // analysis/cli/animate_scene_shifting.cpp).
 //
-// Writes DIR/frames.csv (one row per frame of `run`) and DIR/summary.json (`summary`).
-// Throws UsageError naming --out when either cannot be written.
-void write_scene_outputs(const std::string& dir, const SceneRun& run,
-                         const nlohmann::json& summary);
-
 // Runs `body`, the whole of a scene form, and turns the errors of reading its inputs (the
 // scene, the viewer script, image files, a scene the core rejects) into a message on `err`
 // naming the option, returning exit status 2. Other exceptions pass through.

@@ -10,9 +10,9 @@
 #include "cli/animate_options.h"
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
-#include "runs/scene_run.h"
-#include "runs/statistics.h"
 #include "formats/viewer_script_file.h"
+#include "runs/source_kinds.h"
+#include "runs/statistics.h"
 
 namespace oflab {
 namespace {
@@ -30,12 +30,14 @@ SceneSettings read_scene_settings(const CliArgs& a) {
   return s;
 }
 
-void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
+void print_scene_summary(const AnimationRun& run, const std::string& scene,
                          const std::string& script, EngineMode mode, std::ostream& out) {
-  const long total = static_cast<long>(s.polygons) * s.frames;
-  out << "scene " << scene << " (" << s.polygons << " polygons; BSP " << s.bsp.nodes << " nodes, "
-      << s.bsp.splits << " splits), viewer script " << script << ", mode " << engine_mode_name(mode)
-      << ", " << s.frames << " frames\n";
+  const RunSummary& s = run.summary;
+  const long total = static_cast<long>(s.layers) * s.frames;
+  const nlohmann::json& bsp = run.facts.at("bsp");
+  out << "scene " << scene << " (" << s.layers << " polygons; BSP " << bsp.at("nodes").get<int>()
+      << " nodes, " << bsp.at("splits").get<int>() << " splits), viewer script " << script
+      << ", mode " << engine_mode_name(mode) << ", " << s.frames << " frames\n";
   print_polygon_levels(s, out);
   out << "  culled " << s.culled() << " (" << percent(s.culled(), total) << "% of " << total
       << " polygon-frames: back-facing " << s.back_facing << ", outside the frustum "
@@ -58,26 +60,28 @@ void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
 }
 
 int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  const ViewerScript script = read_viewer_script_option(a);
-  const Scene scene = read_scene_option(a);
-  SceneRunOptions options;
-  options.settings = read_scene_settings(a);
+  RunSource source;
+  source.viewer = read_viewer_script_option(a);
+  source.scene = std::make_shared<const Scene>(read_scene_option(a));
+  source.settings = read_scene_settings(a);
+  const SceneSettings& settings = source.settings;
+  PlayOptions options;
   options.conventional = a.has("--compare-conventional");
   const RunOutput output = read_run_output(a, err);
   output.apply_to(options);
-  const std::string& dir = output.dir;  // empty without --out
-  const SceneRun result = run_scene_animation(scene, script, options);
-  nlohmann::json j = scene_summary_json(result.summary);
-  j["scene"] = scene.name;
-  j["script"] = script.name;
-  j["mode"] = engine_mode_name(options.settings.engine.mode);
-  j["thresholds"] = options.settings.engine.thresholds;
-  j["skip_hidden"] = options.settings.skip_hidden;
-  if (!dir.empty()) write_scene_outputs(dir, result, j);
+  const SourceKind& kind = source_kind("scene");
+  const AnimationRun result = kind.play(source, options);
+  nlohmann::json j = kind.summary_json(result);
+  j["scene"] = source.scene->name;
+  j["script"] = source.viewer.name;
+  j["mode"] = engine_mode_name(settings.engine.mode);
+  j["thresholds"] = settings.engine.thresholds;
+  j["skip_hidden"] = settings.skip_hidden;
+  if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result.summary, scene.name, script.name, options.settings.engine.mode, out);
+    print_scene_summary(result, source.scene->name, source.viewer.name, settings.engine.mode, out);
   }
   return 0;
 }

@@ -10,8 +10,8 @@
 #include "cli/animate_options.h"
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
-#include "runs/scene_shifting_run.h"
 #include "formats/viewer_script_file.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 namespace {
@@ -21,21 +21,22 @@ constexpr const char* kEngineOnlyOptions[] = {
     "--threshold", "--thresholds", "--delta",         "--compare-conventional",
     "--near",      "--guard-band", "--no-skip-hidden"};
 
-void print_summary(const SceneShiftingRun& run, const std::string& scene, const std::string& script,
-                   double epsilon, std::ostream& out) {
-  const SceneRunSummary& s = run.scene_run.summary;
-  out << "scene " << scene << " (" << s.polygons << " polygons), viewer script " << script
+void print_summary(const AnimationRun& run, const std::string& scene, const std::string& script,
+                   std::ostream& out) {
+  const RunSummary& s = run.summary;
+  const nlohmann::json& f = run.facts.at("scene_shifting");
+  out << "scene " << scene << " (" << s.layers << " polygons), viewer script " << script
       << ", mode scene-shifting, " << s.frames << " frames\n"
-      << "  " << run.slices.size() << " slices (" << run.frames.front().occupied
-      << " holding planes) for |V| = " << run.design_speed << " units/frame, epsilon = " << epsilon
-      << " px\n";
+      << "  " << f.at("slices").size() << " slices (" << run.facts.at("occupied_slices").get<int>()
+      << " holding planes) for |V| = " << f.at("design_speed").get<double>()
+      << " units/frame, epsilon = " << f.at("epsilon_px").get<double>() << " px\n";
   print_polygon_levels(s, out);
-  out << "  layers after the first frame: " << run.rebuilt_layers << " rebuilt, "
-      << run.shifted_layers << " shifted or scaled\n";
-  if (run.turning_frames > 0) {
-    out << "  the view turned in " << run.turning_frames
-        << " frames; every occupied slice was rebuilt in " << run.turning_frames_all_rebuilt
-        << " of them\n";
+  out << "  layers after the first frame: " << f.at("rebuilt_layers").get<long>() << " rebuilt, "
+      << f.at("shifted_layers").get<long>() << " shifted or scaled\n";
+  const int turning = f.at("turning_frames");
+  if (turning > 0) {
+    out << "  the view turned in " << turning << " frames; every occupied slice was rebuilt in "
+        << f.at("turning_frames_all_rebuilt").get<int>() << " of them\n";
   }
   out << std::setprecision(3) << "  median frame time: scene shifting " << s.median_frame_ms
       << " ms, exact re-render " << s.baseline_median_frame_ms << " ms\n";
@@ -47,47 +48,37 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
     if (a.has(option))
       throw UsageError(std::string(option) + ": not used by --mode scene-shifting");
   }
-  const ViewerScript script = read_viewer_script_option(a);
-  const Scene scene = read_scene_option(a);
-  SceneShiftingRunOptions options;
-  options.settings.epsilon_px = a.number_or("--epsilon", options.settings.epsilon_px);
-  if (!(options.settings.epsilon_px > 0.0) || !std::isfinite(options.settings.epsilon_px)) {
+  RunSource source;
+  source.viewer = read_viewer_script_option(a);
+  source.scene = std::make_shared<const Scene>(read_scene_option(a));
+  SceneShiftingSettings& settings = source.shifting;
+  settings.epsilon_px = a.number_or("--epsilon", settings.epsilon_px);
+  if (!(settings.epsilon_px > 0.0) || !std::isfinite(settings.epsilon_px)) {
     throw UsageError("--epsilon: must be a positive number of pixels");
   }
   const std::string sampling = a.text_or("--sampling", "nearest");
   if (sampling == "bilinear") {
-    options.settings.sampling = Sampling::kBilinear;
+    settings.sampling = Sampling::kBilinear;
   } else if (sampling != "nearest") {
     throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
   }
+  PlayOptions options;
   const RunOutput output = read_run_output(a, err);
   output.apply_to(options);
-  const std::string& dir = output.dir;  // empty without --out
-  const SceneShiftingRun result = run_scene_shifting(scene, script, options);
-  const double eps = options.settings.epsilon_px;
-  nlohmann::json j = scene_summary_json(result.scene_run.summary);
-  j["scene"] = scene.name;
-  j["script"] = script.name;
+  const SourceKind& kind = source_kind("scene-shifting");
+  const AnimationRun result = kind.play(source, options);
+  const double eps = settings.epsilon_px;
+  nlohmann::json j = kind.summary_json(result);
+  j["scene"] = source.scene->name;
+  j["script"] = source.viewer.name;
   j["mode"] = "scene-shifting";
   j["thresholds"] = {eps, eps, eps, eps};  // the one budget, epsilon, stands for every term
   j["skip_hidden"] = false;
-  nlohmann::json slices = nlohmann::json::array();
-  for (const Slice& s : result.slices) {
-    slices.push_back(
-        {{"near", s.near}, {"far", is_background(s) ? nlohmann::json() : nlohmann::json(s.far)}});
-  }
-  j["scene_shifting"] = {{"epsilon_px", eps},
-                         {"design_speed", result.design_speed},
-                         {"slices", slices},
-                         {"rebuilt_layers", result.rebuilt_layers},
-                         {"shifted_layers", result.shifted_layers},
-                         {"turning_frames", result.turning_frames},
-                         {"turning_frames_all_rebuilt", result.turning_frames_all_rebuilt}};
-  if (!dir.empty()) write_scene_outputs(dir, result.scene_run, j);
+  if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_summary(result, scene.name, script.name, eps, out);
+    print_summary(result, source.scene->name, source.viewer.name, out);
   }
   return 0;
 }

@@ -27,6 +27,10 @@ std::vector<MeasuredRun> measure_interleaved(
   std::vector<MeasuredRun> runs(settings.size());
   // times[setting][frame][repetition]
   std::vector<std::vector<std::vector<double>>> times(settings.size());
+  const SourceKind& plane = source_kind("plane");
+  RunSource source;
+  source.script = script;
+  source.texture = texture.image;
   for (int rep = 0; rep < reps; ++rep) {
     if (progress) {
       progress(std::to_string(settings.size()) + " runs of " +
@@ -35,21 +39,20 @@ std::vector<MeasuredRun> measure_interleaved(
                " frames, repetition " + std::to_string(rep + 1) + "/" + std::to_string(reps));
     }
     for (size_t k = 0; k < settings.size(); ++k) {
-      AnimationOptions options;
-      options.settings = settings[k];
+      source.settings.engine = settings[k];
+      PlayOptions options;
       options.max_frames = spec.max_frames;
-      options.run_baseline = false;
-      options.measure_psnr = spec.measure_psnr && rep == 0;
-      AnimationRun run = run_animation(script, texture, options);
+      options.baseline = spec.measure_psnr && rep == 0;  // the exact frames, for PSNR only
+      const AnimationRun run = plane.play(source, options);
       if (rep == 0) {
         runs[k].settings = settings[k];
-        runs[k].reports = run.reports;
+        for (const AnimationFrame& f : run.frames) runs[k].reports.push_back(f.layer_reports[0]);
         runs[k].psnr_db = run.psnr_db;
         runs[k].summary = run.summary;
-        times[k].assign(run.reports.size(), {});
+        times[k].assign(run.frames.size(), {});
       }
-      for (size_t f = 0; f < run.reports.size() && f < times[k].size(); ++f) {
-        times[k][f].push_back(run.reports[f].time_ms);
+      for (size_t f = 0; f < run.frames.size() && f < times[k].size(); ++f) {
+        times[k][f].push_back(run.frames[f].time_ms);
       }
     }
   }

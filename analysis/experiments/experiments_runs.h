@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "runs/animation_run.h"
+#include "runs/source_kinds.h"
 #include "runs/statistics.h"
 
 namespace oflab {
@@ -26,8 +26,8 @@ struct MeasuredRun {
   std::vector<FrameReport> reports;  // first repetition
   std::vector<double> psnr_db;       // per frame; NaN when not measured or not visible
   std::vector<double> frame_ms;      // per frame: median over the repetitions
-  AnimationSummary summary;          // levels, pixels, errors; time_ms = sum of frame_ms;
-                                     // no baseline fields (see time_saved below)
+  RunSummary summary;                // pixels, errors, PSNR; time_ms = sum of frame_ms;
+                                     // baseline fields unused (see time_saved below)
 };
 
 // Plays `script` under each of `settings` in turn, spec.repetitions times over (setting

@@ -1,6 +1,7 @@
 #include "experiments/experiments_scene_shifting.h"
 
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "formats/scene_file.h"
@@ -9,11 +10,11 @@
 namespace oflab {
 namespace {
 
-ApproachFigures figures_of(const SceneRunSummary& s) {
+ApproachFigures figures_of(const RunSummary& s) {
   ApproachFigures f;
   f.frames = s.frames;
-  f.updates = s.drawn() - s.polygon_levels[static_cast<int>(Level::kNone)];
-  f.rerendered = s.polygon_levels[static_cast<int>(Level::kRerender)];
+  f.updates = s.drawn() - s.levels[static_cast<int>(Level::kNone)];
+  f.rerendered = s.levels[static_cast<int>(Level::kRerender)];
   f.pixels = s.pixels;
   f.work_saved = s.work_saved;
   f.max_measured_error_px = s.max_measured_error_px;
@@ -43,18 +44,25 @@ SceneShiftingComparison compare_scene_shifting(const Scene& scene, const ViewerS
                                                double epsilon_px, int max_frames) {
   SceneShiftingComparison c;
   c.script = script.name;
-  SceneShiftingRunOptions ss;
-  ss.settings.epsilon_px = epsilon_px;
-  ss.max_frames = max_frames;
-  const SceneShiftingRun shifting = run_scene_shifting(scene, script, ss);
-  c.slices = shifting.slices;
-  c.scene_shifting = figures_of(shifting.scene_run.summary);
-  c.turning_frames = shifting.turning_frames;
-  c.turning_frames_all_rebuilt = shifting.turning_frames_all_rebuilt;
-  SceneRunOptions flow;
-  flow.settings.engine.thresholds.fill(epsilon_px);
-  flow.max_frames = max_frames;
-  c.optic_flow = figures_of(run_scene_animation(scene, script, flow).summary);
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(scene);
+  source.viewer = script;
+  source.shifting.epsilon_px = epsilon_px;
+  source.settings.engine.thresholds.fill(epsilon_px);
+  PlayOptions options;
+  options.max_frames = max_frames;
+  const AnimationRun shifting = source_kind("scene-shifting").play(source, options);
+  const nlohmann::json& facts = shifting.facts.at("scene_shifting");
+  for (const nlohmann::json& s : facts.at("slices")) {
+    const nlohmann::json& far = s.at("far");
+    c.slices.push_back(
+        {s.at("near").get<double>(),
+         far.is_null() ? std::numeric_limits<double>::infinity() : far.get<double>()});
+  }
+  c.scene_shifting = figures_of(shifting.summary);
+  c.turning_frames = facts.at("turning_frames");
+  c.turning_frames_all_rebuilt = facts.at("turning_frames_all_rebuilt");
+  c.optic_flow = figures_of(source_kind("scene").play(source, options).summary);
   return c;
 }
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "experiments/experiments.h"
-#include "runs/scene_shifting_run.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 
@@ -30,7 +30,7 @@ struct SceneShiftingComparison {
 };
 
 // Runs scene shifting (epsilon_px) and the optic-flow engine (thresholds epsilon_px) on the
-// same scene and script. Throws as run_scene_shifting and run_scene_animation.
+// same scene and script. Throws as the two kinds' play (analysis/runs/source_kinds.h).
 SceneShiftingComparison compare_scene_shifting(const Scene& scene, const ViewerScript& script,
                                                double epsilon_px, int max_frames = -1);
 

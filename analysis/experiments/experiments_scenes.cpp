@@ -87,25 +87,28 @@ SceneMeasurement measure_scene(const std::string& name, const Scene& scene,
   m.polygons = static_cast<int>(scene.polygons.size());
   std::vector<std::vector<double>> engine, rerender, conventional;  // [frame][repetition]
   const int reps = std::max(1, repetitions);
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(scene);
+  source.viewer = script;
+  source.settings = settings;
   for (int rep = 0; rep < reps; ++rep) {
     if (progress) {
       progress(name + " (" + std::to_string(m.polygons) + " polygons), repetition " +
                std::to_string(rep + 1) + "/" + std::to_string(reps));
     }
-    SceneRunOptions options;
-    options.settings = settings;
+    PlayOptions options;
     options.max_frames = max_frames;
-    options.run_baseline = true;
+    options.baseline = true;
     options.conventional = rep < conventional_repetitions;
-    SceneRun run = run_scene_animation(scene, script, options);
-    const size_t frames = run.reports.size();
+    AnimationRun run = source_kind("scene").play(source, options);
+    const size_t frames = run.frames.size();
     if (rep == 0) {
       engine.assign(frames, {});
       rerender.assign(frames, {});
       conventional.assign(frames, {});
     }
     for (size_t f = 0; f < frames && f < engine.size(); ++f) {
-      engine[f].push_back(run.reports[f].time_ms);
+      engine[f].push_back(run.frames[f].time_ms);
       rerender[f].push_back(run.baseline_ms[f]);
       if (options.conventional) conventional[f].push_back(run.conventional_ms[f]);
     }
@@ -131,9 +134,9 @@ Scene cube_grid_scene(int cubes) {
 std::array<double, kLevelCount> polygon_level_percent(const SceneMeasurement& m) {
   std::array<double, kLevelCount> p{};
   double total = 0.0;
-  for (long c : m.run.summary.polygon_levels) total += static_cast<double>(c);
+  for (long c : m.run.summary.levels) total += static_cast<double>(c);
   for (int l = 0; l < kLevelCount; ++l) {
-    p[l] = total > 0 ? 100.0 * static_cast<double>(m.run.summary.polygon_levels[l]) / total : NAN;
+    p[l] = total > 0 ? 100.0 * static_cast<double>(m.run.summary.levels[l]) / total : NAN;
   }
   return p;
 }
@@ -242,8 +245,8 @@ std::string scale_reading(const std::vector<SceneMeasurement>& grid) {
   }
   const LineFit line = fit_line(n, engine);
   double composite = 0.0;
-  for (const AnimationFrame& f : grid.front().run.reports) composite += f.composite_ms;
-  composite /= static_cast<double>(std::max<size_t>(1, grid.front().run.reports.size()));
+  for (const AnimationFrame& f : grid.front().run.frames) composite += f.composite_ms;
+  composite /= static_cast<double>(std::max<size_t>(1, grid.front().run.frames.size()));
   return "Engine: a straight line through the frame times has slope " +
          fixed(1000.0 * line.slope, 1) + " microseconds per polygon, intercept " +
          fixed(line.intercept, 3) + " ms and R^2 = " + fixed(line.r2, 3) +
@@ -282,7 +285,7 @@ Chart four_cubes_chart(const SceneMeasurement& m) {
   static const char* names[] = {"none", "translate", "affine", "perspective", "re-render"};
   for (int l = 0; l < kLevelCount; ++l) {
     ChartSeries s{names[l], x, {}, SeriesStyle::kLine, chart_palette(l + 3)};
-    for (const AnimationFrame& r : m.run.reports) s.y.push_back(r.levels[l]);
+    for (const AnimationFrame& r : m.run.frames) s.y.push_back(r.levels[l]);
     levels.series.push_back(s);
   }
   Chart chart;

@@ -1,7 +1,7 @@
 // Experiment 2 (dissertation sections 6.6 and 6.7): many planes, moving viewer. The scene
 // animator (core/scene/scene_animator.h) plays the shipped scenes (datasets/scenes, Fig. 25) with
 // the compound viewer script of section 6.7.1 (datasets/viewer-scripts/compound.json);
-// analysis/runs/scene_run.h times, frame by frame in the same run, the exact re-render of every
+// analysis/runs/run_driver.h times, frame by frame in the same run, the exact re-render of every
 // visible polygon and the conventional VTK renderer (analysis/runs/vtk_scene_renderer.h).
 #pragma once
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "experiments/experiments.h"
-#include "runs/scene_run.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 
@@ -33,7 +33,7 @@ Experiment2Spec experiment2_spec(bool quick);
 struct SceneMeasurement {
   std::string scene;
   int polygons = 0;
-  SceneRun run;
+  AnimationRun run;
   std::vector<double> engine_ms;
   std::vector<double> rerender_ms;
   std::vector<double> conventional_ms;
@@ -50,7 +50,7 @@ struct Experiment2Result {
   std::vector<SceneMeasurement> grid;    // time against polygon count
 };
 
-// Needs an X display (the conventional renderer). Throws what run_scene_animation throws.
+// Needs an X display (the conventional renderer). Throws what the scene kind's play throws.
 Experiment2Result run_experiment2(const Experiment2Spec& spec,
                                   const std::function<void(const std::string&)>& progress);
 

@@ -26,8 +26,9 @@ bool apply_session(MainWindow* window, const Session& session, QString* error);
 bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite, QString* error);
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error);
 
-// The engine's per-frame CSV (analysis/runs/animation_run.h write_frame_csv) of the single-plane
-// source over its whole script. False with *error for a scene source or an existing file.
+// The per-frame CSV of the single-plane source (the plane kind of analysis/runs/source_kinds.h)
+// over its whole script, the exact re-render run alongside for the PSNR column. False with
+// *error for a scene source, an existing file or one that cannot be written.
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error);
 
 }  // namespace oflab

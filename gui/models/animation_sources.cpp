@@ -9,11 +9,7 @@
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
 #include "models/scene_model.h"
-#include "runs/animation_run.h"
-#include "runs/scene_run.h"
-#include "runs/scene_shifting_run.h"
-#include "scene/scene_animator.h"
-#include "scene_shifting/scene_shifting_renderer.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 namespace {
@@ -29,111 +25,71 @@ Image image_from_qimage(const QImage& texture) {
   return image;
 }
 
-// The plane kinds: the scene panel's texture moved by `script`.
-struct PlaneSource {
-  MotionScript script;
-  Image texture;
-};
-
-PlaneSource panel_plane(const SourceChoice&, const SceneModel& panel) {
-  return {panel.as_script(), image_from_qimage(panel.texture())};
+// The run source of a plane kind: the scene panel's texture moved by a motion script.
+RunSource plane_source(MotionScript script, const SceneModel& panel,
+                       const EngineSettings& settings) {
+  RunSource source;
+  source.script = std::move(script);
+  source.texture = image_from_qimage(panel.texture());
+  source.settings.engine = settings;
+  return source;
 }
 
-PlaneSource scripted_plane(const SourceChoice& choice, const SceneModel& panel) {
-  return {read_script_file(resolve_script_path(choice.name)), image_from_qimage(panel.texture())};
+// The run source of a scene kind: a scene and the viewer script walking through it. Scene
+// shifting keeps its own tolerance (SceneShiftingSettings::epsilon_px, as `oflab-cli
+// animate` does by default) and takes the sampling of the engine settings.
+RunSource scene_source(const SourceChoice& choice, const EngineSettings& settings) {
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(choice.name)));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path(choice.viewer));
+  source.settings.engine = settings;
+  source.shifting.sampling = settings.sampling;
+  return source;
 }
 
-// A kind entry's make and write_csv for a plane source read by `read`.
-template <class Read>
-void set_plane_functions(AnimationSourceKind& kind, Read read) {
-  kind.make = [read](const SourceChoice& choice, const SceneModel& panel,
-                     const EngineSettings& settings) {
-    const PlaneSource source = read(choice, panel);
-    return make_plane_animator(source.script, source.texture, settings);
+using ReadSource = RunSource (*)(const SourceChoice&, const SceneModel&, const EngineSettings&);
+
+// A GUI kind playing analysis kind `run_kind` (analysis/runs/source_kinds.h) from the run
+// source `read` gives.
+AnimationSourceKind kind(std::string name, std::string label, std::string panel_title,
+                         bool follows_scene_panel, std::string default_viewer,
+                         std::function<std::vector<std::string>()> shipped_names,
+                         const char* run_kind, ReadSource read) {
+  AnimationSourceKind k{std::move(name), std::move(label), std::move(panel_title),
+                        follows_scene_panel, !default_viewer.empty(), std::move(default_viewer),
+                        std::move(shipped_names), nullptr, nullptr};
+  const SourceKind& run = source_kind(run_kind);
+  k.make = [&run, read](const SourceChoice& choice, const SceneModel& panel,
+                        const EngineSettings& settings) {
+    return run.make(read(choice, panel, settings), false);
   };
-  kind.write_csv = [read](const SourceChoice& choice, const SceneModel& panel,
-                          const EngineSettings& settings, std::ostream& out) {
-    const PlaneSource source = read(choice, panel);
-    AnimationOptions options;
-    options.settings = settings;
-    options.run_baseline = false;
-    write_frame_csv(out, run_animation(source.script, make_layer(source.texture), options));
+  k.write_csv = [&run, read](const SourceChoice& choice, const SceneModel& panel,
+                             const EngineSettings& settings, std::ostream& out) {
+    PlayOptions options;
+    options.baseline = false;
+    run.write_csv(out, run.play(read(choice, panel, settings), options));
   };
-}
-
-// The scene kinds: a shipped or file scene and the viewer script walking through it.
-struct SceneSource {
-  std::shared_ptr<const Scene> scene;
-  ViewerScript viewer;
-};
-
-SceneSource read_scene_source(const SourceChoice& choice) {
-  return {std::make_shared<const Scene>(read_scene_file(resolve_scene_path(choice.name))),
-          read_viewer_script_file(resolve_viewer_script_path(choice.viewer))};
-}
-
-SceneSettings scene_settings(const EngineSettings& settings) {
-  SceneSettings s;
-  s.engine = settings;
-  return s;
-}
-
-// Scene shifting keeps its own tolerance (SceneShiftingSettings::epsilon_px, as `oflab-cli
-// animate` does by default); it takes the sampling of the engine settings.
-SceneShiftingSettings scene_shifting_settings(const EngineSettings& settings) {
-  SceneShiftingSettings s;
-  s.sampling = settings.sampling;
-  return s;
-}
-
-AnimationSourceKind scene_kind() {
-  AnimationSourceKind kind{"scene", "Scene: %1", kOpticFlowTitle, false, true, "circle",
-                           shipped_scene_names, nullptr, nullptr};
-  kind.make = [](const SourceChoice& choice, const SceneModel&, const EngineSettings& settings)
-      -> std::unique_ptr<Animator> {
-    SceneSource source = read_scene_source(choice);
-    return make_scene_animator(source.scene, std::move(source.viewer), scene_settings(settings));
-  };
-  kind.write_csv = [](const SourceChoice& choice, const SceneModel&,
-                      const EngineSettings& settings, std::ostream& out) {
-    const SceneSource source = read_scene_source(choice);
-    SceneRunOptions options;
-    options.settings = scene_settings(settings);
-    options.run_baseline = false;
-    write_scene_frame_csv(out, run_scene_animation(*source.scene, source.viewer, options));
-  };
-  return kind;
-}
-
-AnimationSourceKind scene_shifting_kind() {
-  AnimationSourceKind kind{"scene-shifting", "Scene shifting: %1", "scene shifting (slices)",
-                           false, true, "train-sideways", shipped_scene_names, nullptr, nullptr};
-  kind.make = [](const SourceChoice& choice, const SceneModel&, const EngineSettings& settings)
-      -> std::unique_ptr<Animator> {
-    SceneSource source = read_scene_source(choice);
-    return make_scene_shifting_animator(source.scene, std::move(source.viewer),
-                                        scene_shifting_settings(settings));
-  };
-  kind.write_csv = [](const SourceChoice& choice, const SceneModel&,
-                      const EngineSettings& settings, std::ostream& out) {
-    const SceneSource source = read_scene_source(choice);
-    SceneShiftingRunOptions options;
-    options.settings = scene_shifting_settings(settings);
-    options.run_baseline = false;
-    write_scene_frame_csv(out, run_scene_shifting(*source.scene, source.viewer, options).scene_run);
-  };
-  return kind;
+  return k;
 }
 
 std::vector<AnimationSourceKind> make_kinds() {
-  AnimationSourceKind panel{"plane", "Plane of the scene panel", kOpticFlowTitle, true, false, "", nullptr,
-                            nullptr, nullptr};
-  panel.shipped_names = [] { return std::vector<std::string>{""}; };
-  set_plane_functions(panel, panel_plane);
-  AnimationSourceKind script{"script", "Plane script: %1", kOpticFlowTitle, false, false, "", shipped_script_names,
-                             nullptr, nullptr};
-  set_plane_functions(script, scripted_plane);
-  return {panel, script, scene_kind(), scene_shifting_kind()};
+  const auto none = [] { return std::vector<std::string>{""}; };
+  const ReadSource panel = [](const SourceChoice&, const SceneModel& p, const EngineSettings& s) {
+    return plane_source(p.as_script(), p, s);
+  };
+  const ReadSource script = [](const SourceChoice& c, const SceneModel& p, const EngineSettings& s) {
+    return plane_source(read_script_file(resolve_script_path(c.name)), p, s);
+  };
+  const ReadSource scene = [](const SourceChoice& c, const SceneModel&, const EngineSettings& s) {
+    return scene_source(c, s);
+  };
+  return {kind("plane", "Plane of the scene panel", kOpticFlowTitle, true, "", none, "plane", panel),
+          kind("script", "Plane script: %1", kOpticFlowTitle, false, "", shipped_script_names,
+               "plane", script),
+          kind("scene", "Scene: %1", kOpticFlowTitle, false, "circle", shipped_scene_names, "scene",
+               scene),
+          kind("scene-shifting", "Scene shifting: %1", "scene shifting (slices)", false,
+               "train-sideways", shipped_scene_names, "scene-shifting", scene)};
 }
 
 }  // namespace

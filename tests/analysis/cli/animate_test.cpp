@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "runs/animation_run.h"
+#include "runs/source_kinds.h"
 #include "cli/commands.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
@@ -26,25 +26,41 @@ namespace fs = std::filesystem;
 // budget of the level in force (the estimates' slack at second order in time).
 constexpr double kEstimateAllowancePx = 0.25;
 
-AnimationRun run_script(const std::string& name, EngineMode mode) {
-  static const Layer texture = make_layer(read_image(default_texture_path()));
-  AnimationOptions o;
-  o.settings.mode = mode;
-  o.measure_psnr = false;
-  o.run_baseline = false;
-  return run_animation(read_script_file(resolve_script_path(name)), texture, o);
+// The engine's reports of a script played as the plane kind, without the baseline.
+struct ScriptRun {
+  std::vector<FrameReport> reports;
+  RunSummary summary;
+};
+
+ScriptRun run_script(const std::string& name, EngineMode mode) {
+  static const Image texture = read_image(default_texture_path());
+  RunSource source;
+  source.script = read_script_file(resolve_script_path(name));
+  source.texture = texture;
+  source.settings.engine.mode = mode;
+  PlayOptions o;
+  o.baseline = false;
+  const AnimationRun run = source_kind("plane").play(source, o);
+  ScriptRun r{{}, run.summary};
+  for (const AnimationFrame& f : run.frames) r.reports.push_back(f.layer_reports.at(0));
+  return r;
 }
 
-int count(const AnimationRun& r, Level l) { return r.summary.levels[static_cast<int>(l)]; }
+// Frames at level `l` (a plane frame not visible counts at its engine's level).
+int count(const ScriptRun& r, Level l) {
+  int n = 0;
+  for (const FrameReport& f : r.reports) n += f.level == l;
+  return n;
+}
 
 TEST(Experiment1, StationaryIsAllNoUpdate) {
-  const AnimationRun r = run_script("stationary", EngineMode::kPerspective);
+  const ScriptRun r = run_script("stationary", EngineMode::kPerspective);
   EXPECT_EQ(count(r, Level::kNone), r.summary.frames - 1);
   EXPECT_EQ(r.reports[0].level, Level::kRerender);
 }
 
 TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
-  const AnimationRun r = run_script("translation-1", EngineMode::kPerspective);
+  const ScriptRun r = run_script("translation-1", EngineMode::kPerspective);
   EXPECT_EQ(count(r, Level::kNone) + count(r, Level::kTranslate), r.summary.frames - 1);
   for (size_t i = 2; i < r.reports.size(); ++i) {
     EXPECT_NE(r.reports[i].level, r.reports[i - 1].level) << "frame " << i;
@@ -52,7 +68,7 @@ TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
 }
 
 TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
-  const AnimationRun r = run_script("zoom", EngineMode::kPerspective);
+  const ScriptRun r = run_script("zoom", EngineMode::kPerspective);
   EXPECT_GE(count(r, Level::kNone) + count(r, Level::kAffine), 0.8 * r.summary.frames);
   EXPECT_GT(count(r, Level::kNone), 0);
   EXPECT_GT(count(r, Level::kAffine), 0);
@@ -60,7 +76,7 @@ TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
 }
 
 TEST(Experiment1, RotationNeedsAffineWarpsAndRerenders) {
-  const AnimationRun r = run_script("rotation", EngineMode::kPerspective);
+  const ScriptRun r = run_script("rotation", EngineMode::kPerspective);
   EXPECT_GT(count(r, Level::kAffine), r.summary.frames / 2);
   EXPECT_GT(count(r, Level::kRerender), 5);
   EXPECT_EQ(count(r, Level::kPerspective), 0);
@@ -68,7 +84,7 @@ TEST(Experiment1, RotationNeedsAffineWarpsAndRerenders) {
 
 TEST(Experiment1, LoopUsesPerspectiveNearTheViewerAndCheapLevelsFarAway) {
   const MotionScript s = read_script_file(resolve_script_path("loop"));
-  const AnimationRun r = run_script("loop", EngineMode::kPerspective);
+  const ScriptRun r = run_script("loop", EngineMode::kPerspective);
   EXPECT_GT(count(r, Level::kPerspective), 0);
   double persp_depth = 0, cheap_depth = 0;
   int persp = 0, cheap = 0;
@@ -86,7 +102,7 @@ TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
                                   "zoom-rotation", "rotation", "loop"}) {
     for (EngineMode mode : {EngineMode::kPerspective, EngineMode::kAffine, EngineMode::kExact,
                             EngineMode::kRerender}) {
-      const AnimationRun r = run_script(name, mode);
+      const ScriptRun r = run_script(name, mode);
       for (const FrameReport& f : r.reports) {
         if (!f.visible) continue;
         EXPECT_LE(f.measured_error_px, 1.0 + kEstimateAllowancePx + f.affine_view_error_px)
@@ -98,7 +114,7 @@ TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
 
 TEST(Experiment1, ExactModeKeepsNoModelErrorAndNeverNeedsTheHigherOrderBudget) {
   for (const char* name : {"translation-2", "zoom-rotation", "loop"}) {
-    const AnimationRun r = run_script(name, EngineMode::kExact);
+    const ScriptRun r = run_script(name, EngineMode::kExact);
     for (const FrameReport& f : r.reports) {
       EXPECT_EQ(f.accumulated[3], 0.0);
       if (f.frame > 0 && f.level == Level::kRerender) {

@@ -191,7 +191,7 @@ const Experiment2Result& experiment2() {
 }
 
 TEST(Experiment2Published, FourCubesUseEveryUpdateLevel) {
-  const auto& levels = experiment2().four_cubes.run.summary.polygon_levels;
+  const auto& levels = experiment2().four_cubes.run.summary.levels;
   for (int l = 0; l < kLevelCount; ++l) {
     EXPECT_GT(levels[l], 0) << level_name(static_cast<Level>(l));
   }
@@ -199,12 +199,12 @@ TEST(Experiment2Published, FourCubesUseEveryUpdateLevel) {
 
 TEST(Experiment2Published, MostFourCubesPolygonsNeedLessThanAPerspectiveWarp) {
   // Published: 62.2% of the polygons needed at most an affine warp.
-  const auto& levels = experiment2().four_cubes.run.summary.polygon_levels;
+  const auto& levels = experiment2().four_cubes.run.summary.levels;
   long total = 0;
   for (long c : levels) total += c;
   ASSERT_GT(total, 0);
   EXPECT_GT(2 * (levels[0] + levels[1] + levels[2]), total);
-  EXPECT_EQ(experiment2().four_cubes.run.reports.size(), 401u) << "the whole compound script";
+  EXPECT_EQ(experiment2().four_cubes.run.frames.size(), 401u) << "the whole compound script";
 }
 
 TEST(Experiment2Published, DrawnPolygonsGrowWithThePolygonCount) {

@@ -1,5 +1,5 @@
 // `oflab-cli animate --mode scene-shifting` on the train-window scene, and the runs behind it.
-#include "runs/scene_shifting_run.h"
+#include "runs/source_kinds.h"
 
 #include <gtest/gtest.h>
 
@@ -48,14 +48,17 @@ TEST(AnimateSceneShifting, NeedsASceneAndRejectsEngineOptions) {
 }
 
 TEST(SceneShiftingRun, TurningScriptRebuildsEveryOccupiedSliceEveryTurningFrame) {
-  const Scene scene = read_scene_file(resolve_scene_path("train-window"));
-  const ViewerScript script = read_viewer_script_file(resolve_viewer_script_path("train-turning"));
-  SceneShiftingRunOptions options;
+  RunSource source;
+  source.scene =
+      std::make_shared<const Scene>(read_scene_file(resolve_scene_path("train-window")));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path("train-turning"));
+  PlayOptions options;
   options.max_frames = 8;
-  const SceneShiftingRun run = run_scene_shifting(scene, script, options);
-  EXPECT_EQ(run.turning_frames, 7);
-  EXPECT_EQ(run.turning_frames_all_rebuilt, run.turning_frames);
-  EXPECT_EQ(run.shifted_layers, 0);
+  const AnimationRun run = source_kind("scene-shifting").play(source, options);
+  const nlohmann::json& facts = run.facts.at("scene_shifting");
+  EXPECT_EQ(facts.at("turning_frames"), 7);
+  EXPECT_EQ(facts.at("turning_frames_all_rebuilt"), facts.at("turning_frames"));
+  EXPECT_EQ(facts.at("shifted_layers"), 0);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
-#include "runs/scene_run.h"
+#include "runs/source_kinds.h"
 #include "formats/viewer_script_file.h"
 #include "scene/scene_animator.h"
 
@@ -89,12 +89,13 @@ TEST(VtkBaseline, ClipsAtTheSameNearPlane) {
 
 TEST(VtkBaseline, ComparisonRunReportsThreeFrameTimes) {
   if (!display_available()) GTEST_SKIP() << "needs an X display: run under xvfb-run -a";
-  const Scene scene = read_scene_file(resolve_scene_path("cube"));
-  const ViewerScript script = read_viewer_script_file(resolve_viewer_script_path("circle"));
-  SceneRunOptions options;
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("cube")));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path("circle"));
+  PlayOptions options;
   options.max_frames = 20;
   options.conventional = true;
-  const SceneRun run = run_scene_animation(scene, script, options);
+  const AnimationRun run = source_kind("scene").play(source, options);
   EXPECT_GT(run.summary.median_frame_ms, 0.0);
   EXPECT_GT(run.summary.baseline_median_frame_ms, 0.0);
   EXPECT_GT(run.summary.conventional_median_frame_ms, 0.0);

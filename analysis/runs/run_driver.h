@@ -1,0 +1,83 @@
+// The one run driver: plays any Animator (core/engine/animator.h) frame by frame and, in the
+// same loop, an optional baseline animator (the same source re-rendered exactly every frame)
+// for time, work and PSNR, and an optional conventional renderer (VTK, for scenes). The
+// three take turns frame by frame, so a busy machine slows them alike. What a kind of
+// source adds (its factory, CSV and JSON summary) is analysis/runs/source_kinds.h.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "engine/animator.h"
+#include "image/image.h"
+
+namespace oflab {
+
+class VtkSceneRenderer;
+
+struct RunOptions {
+  int max_frames = -1;  // play at most this many frames (-1: all of the animator's)
+  // PSNR of frames in which the animator drew nothing: measured (both images usually empty:
+  // kIdenticalPsnrDb) when true, NaN when false (the single plane's "not visible" frames).
+  bool psnr_when_nothing_drawn = true;
+  // Called after each frame with (frames done, total); may print progress.
+  std::function<void(int, int)> progress;
+  // Called with each frame's image (camera-sized, premultiplied), e.g. to save PNGs.
+  std::function<void(int, const Image&)> on_frame;
+};
+
+// Totals over a run. Times in milliseconds of wall time; "baseline" is the exact re-render
+// of the same frames, "conventional" the VTK renderer (NaN medians when not run).
+struct RunSummary {
+  int frames = 0;
+  int layers = 0;                          // of the source (polygons of a scene)
+  std::array<long, kLevelCount> levels{};  // drawn layers per level, summed over the frames
+  long back_facing = 0;
+  long outside_frustum = 0;
+  long hidden = 0;
+  long clipped = 0;
+  double hidden_area_px = 0.0;  // image area of the hidden layers, over the frames
+  std::int64_t pixels = 0;      // written by the animator's warp kernels
+  std::int64_t baseline_pixels = 0;
+  double time_ms = 0.0;
+  double visibility_time_ms = 0.0;  // of time_ms, the hidden test
+  double baseline_time_ms = 0.0;
+  double conventional_time_ms = 0.0;
+  double median_frame_ms = 0.0;
+  double baseline_median_frame_ms = 0.0;
+  double conventional_median_frame_ms = 0.0;
+  double time_saved = 0.0;  // 1 - time / baseline time (0 without a baseline)
+  double work_saved = 0.0;  // 1 - pixels / baseline pixels (0 without a baseline)
+  double max_measured_error_px = 0.0;
+  double mean_psnr_db = 0.0;      // over the finite per-frame PSNRs (NaN when none)
+  double conventional_iou = 0.0;  // mean alpha-mask IoU of VTK against the baseline (or NaN)
+  long culled() const { return back_facing + outside_frustum; }
+  long drawn() const;  // sum of levels
+};
+
+struct AnimationRun {
+  std::vector<AnimationFrame> frames;
+  std::vector<double> psnr_db;          // per frame, animator against baseline (NaN: not measured)
+  std::vector<double> baseline_ms;      // per frame (NaN when not run)
+  std::vector<double> conventional_ms;  // per frame (NaN when not run)
+  RunSummary summary;
+  // What only this kind of source reports, filled by its SourceKind (source_kinds.h).
+  nlohmann::json facts;
+};
+
+// Plays `animator` from start() for min(frame_count, max_frames) frames. `baseline` (may be
+// null) must play the same frames from the same source; its image is the PSNR reference.
+// `conventional` (may be null) renders animator.scene() from animator.view() each frame;
+// its IoU is measured against the baseline's image. Throws what the animators throw.
+AnimationRun run_animator(Animator& animator, Animator* baseline, VtkSceneRenderer* conventional,
+                          const RunOptions& options);
+
+// Alpha-mask intersection over union of two same-sized images (alpha > 127 is covered);
+// 1 when neither covers a pixel.
+double alpha_iou(const Image& a, const Image& b);
+
+}  // namespace oflab

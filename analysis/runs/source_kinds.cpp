@@ -1,0 +1,260 @@
+#include "runs/source_kinds.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+
+#include "runs/statistics.h"
+#include "runs/vtk_scene_renderer.h"
+
+namespace oflab {
+namespace {
+
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+// The baselines: the same source re-rendered exactly every frame.
+EngineSettings engine_settings(const EngineSettings& settings, bool baseline) {
+  EngineSettings s = settings;
+  if (baseline) s.mode = EngineMode::kRerender;
+  return s;
+}
+
+SceneShiftingSettings shifting_settings(const SceneShiftingSettings& settings, bool baseline) {
+  SceneShiftingSettings s = settings;
+  s.always_rebuild = s.always_rebuild || baseline;
+  return s;
+}
+
+// ---- Single plane ----
+
+std::unique_ptr<Animator> make_plane(const RunSource& source, bool baseline) {
+  return make_plane_animator(source.script, source.texture,
+                             engine_settings(source.settings.engine, baseline));
+}
+
+AnimationRun play_plane(const RunSource& source, const PlayOptions& options) {
+  const std::unique_ptr<Animator> animator = make_plane(source, false);
+  const std::unique_ptr<Animator> baseline = options.baseline ? make_plane(source, true) : nullptr;
+  RunOptions run_options = options;
+  run_options.psnr_when_nothing_drawn = false;  // NaN while the plane is not visible
+  return run_animator(*animator, baseline.get(), nullptr, run_options);
+}
+
+// The plane's engine report of frame i (exactly one per frame).
+const FrameReport& plane_report(const AnimationRun& run, std::size_t i) {
+  return run.frames.at(i).layer_reports.at(0);
+}
+
+void write_plane_csv(std::ostream& out, const AnimationRun& run) {
+  out << "frame,level,visible,flow_translate,flow_affine,flow_perspective,flow_higher,"
+         "err_translate,err_affine,err_perspective,err_higher,estimated_error_px,"
+         "measured_error_px,affine_view_error_px,psnr_db,time_ms,pixels_written,note\n";
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    const FrameReport& r = plane_report(run, i);
+    out << r.frame << ',' << level_name(r.level) << ',' << (r.visible ? 1 : 0);
+    for (double f : r.flow) out << ',' << f;
+    for (double e : r.accumulated) out << ',' << e;
+    out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ','
+        << r.affine_view_error_px << ',' << run.psnr_db[i] << ',' << r.time_ms << ','
+        << r.pixels_written << ",\"";
+    for (char c : r.note) out << (c == '"' ? '\'' : c);
+    out << "\"\n";
+  }
+}
+
+// Levels count frames here, the not visible ones at the level their engine reported.
+nlohmann::json plane_summary_json(const AnimationRun& run) {
+  const RunSummary& s = run.summary;
+  std::array<int, kLevelCount> frames_at{};
+  int invisible = 0;
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    const FrameReport& r = plane_report(run, i);
+    ++frames_at[static_cast<int>(r.level)];
+    if (!r.visible) ++invisible;
+  }
+  nlohmann::json levels;
+  for (int l = 0; l < kLevelCount; ++l) levels[level_name(static_cast<Level>(l))] = frames_at[l];
+  return {{"frames", s.frames},
+          {"levels", levels},
+          {"invisible_frames", invisible},
+          {"time_saved", s.time_saved},
+          {"work_saved", s.work_saved},
+          {"max_measured_error_px", s.max_measured_error_px},
+          {"mean_psnr_db", finite_or_null(s.mean_psnr_db)},
+          {"time_ms", s.time_ms},
+          {"baseline_time_ms", s.baseline_time_ms},
+          {"median_frame_ms", finite_or_null(s.median_frame_ms)},
+          {"baseline_median_frame_ms", finite_or_null(s.baseline_median_frame_ms)},
+          {"pixels_written", s.pixels},
+          {"baseline_pixels_written", s.baseline_pixels}};
+}
+
+// ---- Scenes (the scene animator and scene shifting share the CSV and most of the JSON) ----
+
+std::unique_ptr<Animator> make_scene(const RunSource& source, bool baseline) {
+  SceneSettings settings = source.settings;
+  settings.engine = engine_settings(settings.engine, baseline);
+  return make_scene_animator(source.scene, source.viewer, settings);
+}
+
+AnimationRun play_scene(const RunSource& source, const PlayOptions& options) {
+  const auto animator = make_scene_animator(source.scene, source.viewer, source.settings);
+  const std::unique_ptr<Animator> baseline = options.baseline ? make_scene(source, true) : nullptr;
+  std::unique_ptr<VtkSceneRenderer> conventional;
+  if (options.conventional) {
+    conventional = std::make_unique<VtkSceneRenderer>(*source.scene, source.viewer.camera,
+                                                      source.settings.near);
+  }
+  AnimationRun run = run_animator(*animator, baseline.get(), conventional.get(), options);
+  const BspStats bsp = animator->renderer().bsp().stats();
+  run.facts["bsp"] = {{"nodes", bsp.nodes},
+                      {"fragments", bsp.fragments},
+                      {"splits", bsp.splits},
+                      {"depth", bsp.depth}};
+  return run;
+}
+
+void write_scene_csv(std::ostream& out, const AnimationRun& run) {
+  out << "frame,polygons,drawn,none,translate,affine,perspective,rerender,back_facing,"
+         "outside_frustum,hidden,clipped,time_ms,update_ms,composite_ms,visibility_ms,"
+         "pixels_written,"
+         "pixels_composited,hidden_area_px,max_measured_error_px,psnr_db,rerender_time_ms,"
+         "conventional_time_ms\n";
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    const AnimationFrame& r = run.frames[i];
+    out << r.frame << ',' << r.layers << ',' << r.drawn();
+    for (int c : r.levels) out << ',' << c;
+    out << ',' << r.back_facing << ',' << r.outside_frustum << ',' << r.hidden << ',' << r.clipped
+        << ',' << r.time_ms << ',' << r.update_ms << ',' << r.composite_ms << ',' << r.visibility_ms
+        << ',' << r.pixels_written << ',' << r.pixels_composited << ',' << r.hidden_area_px << ','
+        << r.max_measured_error_px << ',' << run.psnr_db[i] << ',' << run.baseline_ms[i] << ','
+        << run.conventional_ms[i] << '\n';
+  }
+}
+
+nlohmann::json scene_levels_json(const RunSummary& s, bool as_percent) {
+  nlohmann::json levels;
+  for (int l = 0; l < kLevelCount; ++l) {
+    const char* name = level_name(static_cast<Level>(l));
+    levels[name] =
+        as_percent ? nlohmann::json(percent(s.levels[l], s.drawn())) : nlohmann::json(s.levels[l]);
+  }
+  return levels;
+}
+
+nlohmann::json scene_summary_json(const AnimationRun& run) {
+  const RunSummary& s = run.summary;
+  const nlohmann::json no_bsp = {{"nodes", 0}, {"fragments", 0}, {"splits", 0}, {"depth", 0}};
+  return {{"frames", s.frames},
+          {"polygons", s.layers},
+          {"bsp", run.facts.value("bsp", no_bsp)},
+          {"polygon_levels", scene_levels_json(s, false)},
+          {"polygon_level_percent", scene_levels_json(s, true)},
+          {"drawn", s.drawn()},
+          {"culled", s.culled()},
+          {"back_facing", s.back_facing},
+          {"outside_frustum", s.outside_frustum},
+          {"hidden", s.hidden},
+          {"clipped", s.clipped},
+          {"hidden_area_px", s.hidden_area_px},
+          {"visibility_ms", s.visibility_time_ms},
+          {"median_frame_ms",
+           {{"engine", finite_or_null(s.median_frame_ms)},
+            {"rerender", finite_or_null(s.baseline_median_frame_ms)},
+            {"conventional", finite_or_null(s.conventional_median_frame_ms)}}},
+          {"time_ms",
+           {{"engine", s.time_ms},
+            {"rerender", s.baseline_time_ms},
+            {"conventional", s.conventional_time_ms}}},
+          {"time_saved", s.time_saved},
+          {"work_saved", s.work_saved},
+          {"pixels_written", s.pixels},
+          {"baseline_pixels_written", s.baseline_pixels},
+          {"max_measured_error_px", s.max_measured_error_px},
+          {"mean_psnr_db", finite_or_null(s.mean_psnr_db)},
+          {"conventional_iou", finite_or_null(s.conventional_iou)}};
+}
+
+// ---- Scene shifting ----
+
+std::unique_ptr<Animator> make_shifting(const RunSource& source, bool baseline) {
+  return make_scene_shifting_animator(source.scene, source.viewer,
+                                      shifting_settings(source.shifting, baseline));
+}
+
+// The "scene_shifting" block of the summary: the slices and the layer updates.
+nlohmann::json shifting_facts(const SceneShiftingRenderer& renderer) {
+  nlohmann::json slices = nlohmann::json::array();
+  for (const Slice& s : renderer.slices()) {
+    slices.push_back(
+        {{"near", s.near}, {"far", is_background(s) ? nlohmann::json() : nlohmann::json(s.far)}});
+  }
+  const SceneShiftingTotals& t = renderer.totals();
+  return {{"epsilon_px", renderer.settings().epsilon_px},
+          {"design_speed", renderer.settings().design_speed},
+          {"slices", slices},
+          {"rebuilt_layers", t.rebuilt_layers},
+          {"shifted_layers", t.shifted_layers},
+          {"turning_frames", t.turning_frames},
+          {"turning_frames_all_rebuilt", t.turning_frames_all_rebuilt}};
+}
+
+AnimationRun play_shifting(const RunSource& source, const PlayOptions& options) {
+  const auto animator = make_scene_shifting_animator(source.scene, source.viewer,
+                                                     shifting_settings(source.shifting, false));
+  const std::unique_ptr<Animator> baseline =
+      options.baseline ? make_shifting(source, true) : nullptr;
+  AnimationRun run = run_animator(*animator, baseline.get(), nullptr, options);
+  run.facts["scene_shifting"] = shifting_facts(animator->renderer());
+  // Slices holding polygons: fixed at start, so the last frame's count is every frame's.
+  run.facts["occupied_slices"] = animator->renderer().slice_report().occupied;
+  return run;
+}
+
+nlohmann::json shifting_summary_json(const AnimationRun& run) {
+  nlohmann::json j = scene_summary_json(run);
+  j["scene_shifting"] = run.facts.at("scene_shifting");
+  return j;
+}
+
+}  // namespace
+
+const std::vector<SourceKind>& source_kinds() {
+  static const std::vector<SourceKind> kinds = {
+      {"plane", make_plane, play_plane, write_plane_csv, plane_summary_json},
+      {"scene", make_scene, play_scene, write_scene_csv, scene_summary_json},
+      {"scene-shifting", make_shifting, play_shifting, write_scene_csv, shifting_summary_json},
+  };
+  return kinds;
+}
+
+const SourceKind& source_kind(const std::string& name) {
+  for (const SourceKind& kind : source_kinds()) {
+    if (name == kind.name) return kind;
+  }
+  throw std::invalid_argument("unknown kind of animation source '" + name + "'");
+}
+
+void print_polygon_levels(const RunSummary& s, std::ostream& out) {
+  const long drawn = s.drawn();
+  out << std::fixed << std::setprecision(1) << "  polygons per level (" << drawn
+      << " drawn polygon-frames):\n";
+  for (int l = 0; l < kLevelCount; ++l) {
+    out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
+        << std::setw(8) << s.levels[l] << " (" << percent(s.levels[l], drawn) << "%)\n";
+  }
+}
+
+void print_savings_and_error(const RunSummary& s, std::ostream& out) {
+  out << "  time saved " << 100.0 * s.time_saved << "% against the exact re-render, work saved "
+      << 100.0 * s.work_saved << "% (pixels written " << s.pixels << " vs " << s.baseline_pixels
+      << ")\n"
+      << "  max measured error " << s.max_measured_error_px << " px, mean PSNR against the exact "
+      << "frame " << s.mean_psnr_db << " dB\n";
+}
+
+}  // namespace oflab

@@ -1,0 +1,71 @@
+// The kinds of animation source, one table: the single plane (a motion script and a
+// texture), the scene (a viewer script through polygons, the scene animator) and scene
+// shifting (the same inputs, Hofmann's slices). Each entry has its factory, its play (the
+// run driver of analysis/runs/run_driver.h with the kind's baseline and facts), its
+// per-frame CSV and its JSON summary; the CLI, the experiments and the GUI's export go
+// through it, so no caller asks which kind a source is. Columns and keys are documented in
+// manual/animation.md (plane) and manual/scenes.md (scene and scene shifting).
+#pragma once
+
+#include <iosfwd>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/animator.h"
+#include "engine/script.h"
+#include "runs/run_driver.h"
+#include "scene/scene.h"
+#include "scene/scene_animator.h"
+#include "scene/viewer_script.h"
+#include "scene_shifting/scene_shifting_renderer.h"
+
+namespace oflab {
+
+// What to animate. A kind reads only its own fields: the plane script, texture and
+// settings.engine; the scene, viewer and settings; the scene, viewer and shifting.
+struct RunSource {
+  MotionScript script;  // single plane
+  Image texture;        // single plane, premultiplied RGBA
+  std::shared_ptr<const Scene> scene;
+  ViewerScript viewer;
+  SceneSettings settings;          // .engine for the plane and the scene animator
+  SceneShiftingSettings shifting;  // design_speed 0: script_design_speed of the viewer
+};
+
+struct PlayOptions : RunOptions {
+  bool baseline = true;       // run the exact re-render in the same loop (time, work, PSNR)
+  bool conventional = false;  // scenes: the VTK renderer too (needs an X display)
+};
+
+struct SourceKind {
+  const char* name;  // "plane", "scene", "scene-shifting"
+  // The source's animator; with `baseline`, the same source re-rendered exactly every frame
+  // (the rerender mode, or every slice rebuilt). Throws std::invalid_argument for a source
+  // the animator rejects.
+  std::unique_ptr<Animator> (*make)(const RunSource& source, bool baseline);
+  // Plays the source; fills the run's facts. Throws as make, and std::runtime_error when
+  // the conventional renderer cannot start.
+  AnimationRun (*play)(const RunSource& source, const PlayOptions& options);
+  // One CSV row per frame, header first.
+  void (*write_csv)(std::ostream& out, const AnimationRun& run);
+  // The run's JSON summary.
+  nlohmann::json (*summary_json)(const AnimationRun& run);
+};
+
+// The kinds, in the order above.
+const std::vector<SourceKind>& source_kinds();
+// The kind named `name`; throws std::invalid_argument for an unknown name.
+const SourceKind& source_kind(const std::string& name);
+
+// Lines of the text summary shared by the scene kinds: "  polygons per level (N drawn
+// polygon-frames):" and a line per level with its count and percent; leaves `out` in fixed
+// notation with one decimal.
+void print_polygon_levels(const RunSummary& summary, std::ostream& out);
+// "  time saved ...% against the exact re-render, work saved ...% (pixels written ...)" and
+// "  max measured error ... px, mean PSNR against the exact frame ... dB", in the stream's
+// current notation.
+void print_savings_and_error(const RunSummary& summary, std::ostream& out);
+
+}  // namespace oflab

@@ -1,0 +1,174 @@
+// The run driver (analysis/runs/run_driver.h) and the table of source kinds
+// (analysis/runs/source_kinds.h): the baseline plays in the same loop as the animator, the
+// plane's PSNR is the one against an exact render, and each kind writes its own CSV.
+#include "runs/run_driver.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "formats/datasets.h"
+#include "formats/image_io.h"
+#include "formats/scene_file.h"
+#include "formats/script_file.h"
+#include "formats/viewer_script_file.h"
+#include "image/composite.h"
+#include "image/image_compare.h"
+#include "runs/source_kinds.h"
+
+namespace oflab {
+namespace {
+
+// Forwards to an animator and logs "<tag><frame>" for every start and advance.
+class LoggingAnimator final : public Animator {
+ public:
+  LoggingAnimator(std::unique_ptr<Animator> inner, char tag, std::vector<std::string>* log)
+      : inner_(std::move(inner)), tag_(tag), log_(log) {}
+  int frame_count() const override { return inner_->frame_count(); }
+  int frame() const override { return inner_->frame(); }
+  AnimationFrame start() override { return logged(inner_->start()); }
+  AnimationFrame advance() override { return logged(inner_->advance()); }
+  const Image& image() const override { return inner_->image(); }
+  const Camera& camera() const override { return inner_->camera(); }
+  std::vector<LayerOutline> outlines() const override { return inner_->outlines(); }
+  const Scene& scene() const override { return inner_->scene(); }
+  ViewerPose view() const override { return inner_->view(); }
+
+ private:
+  AnimationFrame logged(AnimationFrame f) {
+    log_->push_back(tag_ + std::to_string(f.frame));
+    return f;
+  }
+  std::unique_ptr<Animator> inner_;
+  char tag_;
+  std::vector<std::string>* log_;
+};
+
+RunSource plane_source(const std::string& script) {
+  RunSource source;
+  source.script = read_script_file(resolve_script_path(script));
+  source.texture = read_image(default_texture_path());
+  return source;
+}
+
+RunSource scene_source(const std::string& scene, const std::string& script) {
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(scene)));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path(script));
+  return source;
+}
+
+TEST(RunDriver, PlaysTheBaselineInTheSameLoopFrameByFrame) {
+  const RunSource source = plane_source("zoom");
+  const SourceKind& plane = source_kind("plane");
+  std::vector<std::string> log;
+  LoggingAnimator animator(plane.make(source, false), 'a', &log);
+  LoggingAnimator baseline(plane.make(source, true), 'b', &log);
+  RunOptions options;
+  options.max_frames = 4;
+  int progress_calls = 0;
+  options.progress = [&](int done, int total) {
+    EXPECT_EQ(total, 4);
+    EXPECT_EQ(done, ++progress_calls);
+  };
+  const AnimationRun run = run_animator(animator, &baseline, nullptr, options);
+  EXPECT_EQ(log, (std::vector<std::string>{"a0", "b0", "a1", "b1", "a2", "b2", "a3", "b3"}));
+  ASSERT_EQ(run.frames.size(), 4u);
+  EXPECT_EQ(progress_calls, 4);
+  double baseline_ms = 0.0;
+  for (double t : run.baseline_ms) {
+    EXPECT_TRUE(std::isfinite(t));
+    baseline_ms += t;
+  }
+  EXPECT_DOUBLE_EQ(run.summary.baseline_time_ms, baseline_ms);
+  EXPECT_GT(run.summary.baseline_pixels, run.summary.pixels);  // the zoom warps less
+  for (double t : run.conventional_ms) EXPECT_TRUE(std::isnan(t));
+}
+
+TEST(RunDriver, WithoutABaselineNothingIsComparedOrSaved) {
+  const RunSource source = plane_source("zoom");
+  const std::unique_ptr<Animator> animator = source_kind("plane").make(source, false);
+  RunOptions options;
+  options.max_frames = 3;
+  const AnimationRun run = run_animator(*animator, nullptr, nullptr, options);
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    EXPECT_TRUE(std::isnan(run.psnr_db[i]));
+    EXPECT_TRUE(std::isnan(run.baseline_ms[i]));
+  }
+  EXPECT_EQ(run.summary.time_saved, 0.0);
+  EXPECT_TRUE(std::isnan(run.summary.mean_psnr_db));
+}
+
+// The plane's PSNR reference is the re-render baseline's frame: the same image as the
+// exact render of the frame's pose, composed into the camera's frame.
+TEST(RunDriver, PlanePsnrIsAgainstTheExactRenderOfEachPose) {
+  const RunSource source = plane_source("rotation");
+  PlayOptions options;
+  options.max_frames = 40;
+  std::vector<Image> shown;
+  options.on_frame = [&](int, const Image& frame) { shown.push_back(frame); };
+  const AnimationRun run = source_kind("plane").play(source, options);
+  const Camera& camera = source.script.camera;
+  const Layer texture = make_layer(source.texture);
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    if (!run.frames[i].layer_reports.at(0).visible) {
+      EXPECT_TRUE(std::isnan(run.psnr_db[i])) << "frame " << i;
+      continue;
+    }
+    const PlacedLayer exact = render_exact(camera, texture, source.script.frames[i].pose,
+                                           source.settings.engine.sampling);
+    Image reference(camera.width, camera.height);
+    composite_over(reference, exact.layer, exact.offset_x, exact.offset_y);
+    EXPECT_EQ(run.psnr_db[i], psnr_db(shown[i], reference)) << "frame " << i;
+  }
+}
+
+std::string csv_header(const SourceKind& kind, const RunSource& source) {
+  PlayOptions options;
+  options.max_frames = 2;
+  std::ostringstream csv;
+  kind.write_csv(csv, kind.play(source, options));
+  return csv.str().substr(0, csv.str().find('\n'));
+}
+
+TEST(SourceKinds, EachKindWritesItsOwnCsvHeader) {
+  EXPECT_EQ(csv_header(source_kind("plane"), plane_source("zoom")),
+            "frame,level,visible,flow_translate,flow_affine,flow_perspective,flow_higher,"
+            "err_translate,err_affine,err_perspective,err_higher,estimated_error_px,"
+            "measured_error_px,affine_view_error_px,psnr_db,time_ms,pixels_written,note");
+  const std::string scene_header =
+      "frame,polygons,drawn,none,translate,affine,perspective,rerender,back_facing,"
+      "outside_frustum,hidden,clipped,time_ms,update_ms,composite_ms,visibility_ms,"
+      "pixels_written,pixels_composited,hidden_area_px,max_measured_error_px,psnr_db,"
+      "rerender_time_ms,conventional_time_ms";
+  EXPECT_EQ(csv_header(source_kind("scene"), scene_source("two", "translate")), scene_header);
+  EXPECT_EQ(
+      csv_header(source_kind("scene-shifting"), scene_source("train-window", "train-sideways")),
+      scene_header);
+}
+
+TEST(SourceKinds, SummariesCarryWhatOnlyTheirKindReports) {
+  PlayOptions options;
+  options.max_frames = 3;
+  const RunSource plane = plane_source("zoom");
+  const nlohmann::json p =
+      source_kind("plane").summary_json(source_kind("plane").play(plane, options));
+  EXPECT_TRUE(p.contains("invisible_frames"));
+  EXPECT_EQ(p.at("frames"), 3);
+  const RunSource train = scene_source("train-window", "train-sideways");
+  const SourceKind& shifting = source_kind("scene-shifting");
+  const nlohmann::json s = shifting.summary_json(shifting.play(train, options));
+  EXPECT_TRUE(s.at("scene_shifting").contains("slices"));
+  EXPECT_EQ(s.at("bsp").at("nodes"), 0);
+  const SourceKind& scene = source_kind("scene");
+  const nlohmann::json c = scene.summary_json(scene.play(train, options));
+  EXPECT_FALSE(c.contains("scene_shifting"));
+  EXPECT_GT(c.at("bsp").at("nodes").get<int>(), 0);
+  EXPECT_THROW(source_kind("no such kind"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace oflab
