@@ -196,6 +196,7 @@ TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
   EXPECT_LT(mean_grey(window().flow_view()->render_image()), 110.0);
   window().set_presentation(true);
   EXPECT_GT(mean_grey(window().flow_view()->render_image()), 150.0);
+  window().set_presentation(false);  // the application's fonts are global: leave them normal
 }
 
 }  // namespace
