@@ -38,6 +38,8 @@ shot lesson-basis-deformations --lesson basis-deformations --presentation --fram
 shot animation-demo --view animation --frames 10
 shot animation-difference --view animation --mode affine --animation-show difference --frames 10
 shot animation-scene --view animation --scene four-cubes --script circle --frames 40
+shot animation-scene-shifting --view animation --scene train-window --source scene-shifting \
+  --frames 29
 shot analysis-demo --view analysis --frames 40
 shot lesson-affine-vs-perspective --lesson affine-vs-perspective --frames 8
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60

@@ -107,10 +107,7 @@ Session parse_session(const std::string& json_text, const std::string& origin) {
   const Where in_animation{origin, "animation"};
   const json& source = object(animation, in_animation, "source");
   const Where in_source{origin, "animation.source"};
-  s.source_kind = text(source, in_source, "kind");
-  if (s.source_kind != "plane" && s.source_kind != "script" && s.source_kind != "scene") {
-    in_source.fail("kind", "must be plane, script or scene");
-  }
+  s.source_kind = text(source, in_source, "kind");  // a source kind's name, checked when applied
   s.source_name = text(source, in_source, "name");
   s.viewer_script = text(source, in_source, "viewer");
   s.settings = read_settings(animation, in_animation);

@@ -24,9 +24,10 @@ struct Session {
   PlaneScene plane;           // the scene panel's plane at frame 0
   std::string script;         // shipped script name or file, empty when none plays
   std::string texture;        // texture file, empty for the default texture
-  std::string source_kind = "plane";  // animation source: plane, script or scene
+  // The animation source's kind, by its name in gui/models/animation_sources.h.
+  std::string source_kind = "plane";
   std::string source_name;    // script or scene name or file
-  std::string viewer_script;  // scenes only
+  std::string viewer_script;  // kinds with a viewer script only
   EngineSettings settings;
   std::string display = "side-by-side";  // gui/views/animation_controls.h panel_display_name
   int frame = 0;
@@ -38,8 +39,8 @@ std::string session_to_json(const Session& session);
 
 // Parses session text; `origin` names the source in errors. Checks the format tag, the
 // version, types, finite numbers of magnitude at most 1e6, a drawable plane
-// (plane_scene_problem), non-negative thresholds and known names; the files it names are
-// checked when the session is applied.
+// (plane_scene_problem), non-negative thresholds and known names; the files it names and the
+// source kind are checked when the session is applied.
 Session parse_session(const std::string& text, const std::string& origin);
 
 // Reads a session file (parse_session, with the file name as origin); throws SessionError

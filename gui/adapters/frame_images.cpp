@@ -33,12 +33,12 @@ QImage flatten_image(const Image& image, const QColor& background) {
   return out;
 }
 
-void draw_level_overlay(QImage& image, const std::vector<PolygonOutline>& outlines,
+void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
                         const std::array<int, kLevelCount>& counts, const QColor& text,
-                        double line_width) {
+                        double line_width, double text_scale) {
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
-  for (const PolygonOutline& outline : outlines) {
+  for (const LayerOutline& outline : outlines) {
     QPolygonF polygon;
     for (const Vec2& p : outline.points) polygon << QPointF(p.x, p.y);
     painter.setPen(QPen(level_qcolor(outline.level), line_width));
@@ -46,7 +46,7 @@ void draw_level_overlay(QImage& image, const std::vector<PolygonOutline>& outlin
     painter.drawPolygon(polygon);
   }
   QFont font = painter.font();
-  font.setPixelSize(std::max(12, image.height() / 32));
+  font.setPixelSize(int(text_scale * std::max(12, image.height() / 32)));
   painter.setFont(font);
   const int row = font.pixelSize() + 6;
   const int x = 10;
@@ -64,10 +64,11 @@ void draw_level_overlay(QImage& image, const std::vector<PolygonOutline>& outlin
   }
 }
 
-void draw_panel_title(QImage& image, const QString& title, const QColor& text) {
+void draw_panel_title(QImage& image, const QString& title, const QColor& text,
+                      double text_scale) {
   QPainter painter(&image);
   QFont font = painter.font();
-  font.setPixelSize(std::max(12, image.height() / 28));
+  font.setPixelSize(int(text_scale * std::max(12, image.height() / 28)));
   font.setBold(true);
   painter.setFont(font);
   painter.setPen(text);

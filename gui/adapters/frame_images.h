@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "models/animation_session.h"
+#include "engine/animator.h"
 
 namespace oflab {
 
@@ -19,13 +19,16 @@ QImage flatten_image(const Image& image, const QColor& background);
 
 // Draws each outline (image pixels) in its level's Okabe-Ito colour, `line_width` pixels
 // wide, and a legend of the five levels with this frame's count of polygons per level in
-// the top-left corner. `text` is the legend's text colour.
-void draw_level_overlay(QImage& image, const std::vector<PolygonOutline>& outlines,
+// the top-left corner. `text` is the legend's text colour; `text_scale` multiplies the
+// legend's text size (12 pixels or 1/32 of the image height, whichever is larger).
+void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
                         const std::array<int, kLevelCount>& counts, const QColor& text,
-                        double line_width);
+                        double line_width, double text_scale = 1.0);
 
-// Writes a title in the top-right corner (which panel this is).
-void draw_panel_title(QImage& image, const QString& title, const QColor& text);
+// Writes a title in the top-right corner (which panel this is), `text_scale` times 12
+// pixels or 1/28 of the image height, whichever is larger.
+void draw_panel_title(QImage& image, const QString& title, const QColor& text,
+                      double text_scale = 1.0);
 
 // Per-pixel difference of two same-sized premultiplied images: the largest absolute
 // channel difference (RGB and alpha, 0..255) coloured by the viridis map over

@@ -7,6 +7,7 @@
 #include <QWindow>
 #include <ostream>
 
+#include "models/animation_model.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"
 #include "views/flow_view.h"
@@ -43,15 +44,19 @@ bool prepare_window(MainWindow* window, const LaunchOptions& options, std::strin
   window->flow_view()->set_display(with_overrides(window->flow_view()->display(), options));
   if (options.basis) window->basis_view()->set_basis(*options.basis);
   if (options.presentation) window->set_presentation(true);
-  AnimationView* animation = window->animation_view();
-  if (!options.scene.empty()) animation->set_source({"scene", options.scene, options.viewer_script});
+  AnimationModel* animation = window->animation_model();
+  if (!options.scene.empty()) {
+    animation->set_source({options.source_kind, options.scene, options.viewer_script});
+  }
   if (options.mode) {
     EngineSettings settings = animation->settings();
     settings.mode = *options.mode;
     animation->set_settings(settings);
   }
   PanelDisplay display = PanelDisplay::kSideBySide;
-  if (parse_panel_display(options.animation_show, &display)) animation->set_display(display);
+  if (parse_panel_display(options.animation_show, &display)) {
+    window->animation_view()->set_display(display);
+  }
   if (!options.view.empty() && options.view != "window") {
     window->show_view(QString::fromStdString(options.view));
   }
@@ -67,7 +72,7 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
                     std::ostream& err) {
   window->play_frames(options.frames);
   const QString view = QString::fromStdString(options.view);
-  ViewPage* page = view.isEmpty() || view == "window" ? nullptr : window->view(view);
+  ViewPage* page = view.isEmpty() || options.whole_window ? nullptr : window->view(view);
   const QImage image = page ? page->render_image() : window->grab_window_image();
   QString error;
   const QString path = QString::fromStdString(options.screenshot);

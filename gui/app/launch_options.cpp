@@ -9,13 +9,15 @@
 #include "formats/viewer_script_file.h"
 #include "engine/engine.h"
 #include "app/lessons.h"
+#include "app/view_table.h"
+#include "models/animation_sources.h"
 
 namespace oflab {
 namespace {
 
-std::string joined(const std::vector<std::string>& names) {
+std::string joined(const std::vector<std::string>& names, const std::string& separator = ", ") {
   std::string text;
-  for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+  for (const std::string& n : names) text += (text.empty() ? "" : separator) + n;
   return text;
 }
 
@@ -44,7 +46,29 @@ void read_scene(const CliArgs& cli, LaunchOptions* options) {
     throw UsageError("--scene: " + std::string(e.what()));
   }
   options->scene = name;
-  if (options->viewer_script.empty()) options->viewer_script = "circle";
+  if (options->viewer_script.empty()) {
+    options->viewer_script = find_animation_source_kind(options->source_kind)->default_viewer;
+  }
+}
+
+// The kinds --source accepts: those a viewer script walks through (what --scene plays).
+std::vector<std::string> scene_source_kinds() {
+  std::vector<std::string> names;
+  for (const AnimationSourceKind& kind : animation_source_kinds()) {
+    if (kind.uses_viewer) names.push_back(kind.name);
+  }
+  return names;
+}
+
+void read_source(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--source")) return;
+  const std::string text = cli.values("--source").at(0);
+  const std::vector<std::string> kinds = scene_source_kinds();
+  if (std::find(kinds.begin(), kinds.end(), text) == kinds.end()) {
+    throw UsageError("--source: unknown source '" + text + "' (known: " + joined(kinds) + ")");
+  }
+  if (!cli.has("--scene")) throw UsageError("--source: only used with --scene");
+  options->source_kind = text;
 }
 
 void read_mode(const CliArgs& cli, LaunchOptions* options) {
@@ -137,6 +161,10 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--screenshot") && options->screenshot.empty()) {
     throw UsageError("--screenshot: the file name is empty");
   }
+  options->whole_window = cli.has("--whole-window");
+  if (options->whole_window && options->screenshot.empty()) {
+    throw UsageError("--whole-window: only used with --screenshot");
+  }
   if (cli.has("--frames") && options->screenshot.empty()) {
     throw UsageError("--frames: only used with --screenshot");
   }
@@ -154,8 +182,11 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
 }  // namespace
 
 const std::vector<std::string>& screenshot_view_names() {
-  static const std::vector<std::string> names = {"flow", "basis", "animation", "analysis", "slices",
-                                                  "window"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = view_table_names();
+    all.push_back("window");
+    return all;
+  }();
   return names;
 }
 
@@ -163,10 +194,12 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
   const CliArgs cli(args, {{"--lesson", 1},
                            {"--scene", 1},
                            {"--script", 1},
+                           {"--source", 1},
                            {"--mode", 1},
                            {"--animation-show", 1},
                            {"--view", 1},
                            {"--screenshot", 1},
+                           {"--whole-window", 0},
                            {"--frames", 1},
                            {"--benchmark", 1},
                            {"--size", 2},
@@ -183,6 +216,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                      ")");
   }
   read_script(cli, &options);
+  read_source(cli, &options);
   read_scene(cli, &options);
   read_mode(cli, &options);
   read_animation_show(cli, &options);
@@ -211,14 +245,18 @@ FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
 }
 
 std::string launch_usage() {
+  std::vector<std::string> titled;
+  for (const ViewEntry& view : view_table()) titled.push_back(view.name + " (" + view.title + ")");
   return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
+         "             [--source " + joined(scene_source_kinds(), "|") + "]\n"
          "             [--mode perspective|affine|exact|rerender]\n"
          "             [--animation-show side-by-side|difference|blink]\n"
-         "             [--view flow|basis|animation|analysis|window]\n"
-         "             [--screenshot FILE.png --frames N] [--benchmark N] [--size W H]\n"
+         "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
+         "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "
          "arrows,streamlines,wheel,texture,zoom,common-scale]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"
+         "  views: " + joined(titled) + "; window is the whole window\n"
          "  lessons: " +
          lesson_names() + "\n  shipped scripts: " + joined(shipped_script_names()) +
          "\n  shipped scenes (--script then names a viewer script: " +

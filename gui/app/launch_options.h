@@ -1,5 +1,5 @@
 // The command line of oflab:
-//   oflab [--lesson NAME] [--scene S] [--script T] [--mode M] [--view NAME]
+//   oflab [--lesson NAME] [--scene S] [--script T] [--source KIND] [--mode M] [--view NAME]
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
 //         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation] [--help]
 // Plain C++ over analysis/cli/cli_args.h, so it is checked before any window opens and bad
@@ -23,6 +23,8 @@ struct LaunchOptions {
   std::string view;        // view in front and the one captured; "window" = whole window
   std::string screenshot;  // PNG path; when set, play `frames` frames, save, exit
   int frames = 0;          // frames to play before the screenshot (>= 0)
+  // --whole-window: the screenshot is of the whole window, with `view` in front.
+  bool whole_window = false;
   int benchmark = 0;       // frames of the flow view to render as fast as possible (> 0)
   int width = 1280;        // window size in pixels
   int height = 800;
@@ -38,6 +40,9 @@ struct LaunchOptions {
   // --scene NAME|FILE: a multi-plane scene for the animation and analysis views, checked.
   std::string scene;
   std::string viewer_script;
+  // --source KIND: how the scene plays, a source kind with a viewer script
+  // (gui/models/animation_sources.h): "scene" (the default) or "scene-shifting".
+  std::string source_kind = "scene";
   // --mode perspective|affine|exact|rerender: the animation engine's mode.
   std::optional<EngineMode> mode;
   // --animation-show side-by-side|difference|blink: how the animation view shows its panels.
@@ -46,8 +51,8 @@ struct LaunchOptions {
   bool help = false;          // --help: print the usage and exit 0
 };
 
-// The view names a screenshot can capture, in order ("flow", "basis", "animation",
-// "analysis", "window").
+// The view names a screenshot can capture, in order: the view table's
+// (gui/app/view_table.h), then "window".
 const std::vector<std::string>& screenshot_view_names();
 
 // Parses the arguments after the program name. Throws UsageError with one line naming
@@ -56,7 +61,8 @@ const std::vector<std::string>& screenshot_view_names();
 // count, a non-positive benchmark count, a script that is neither a file nor a shipped name
 // or that analysis/formats/script_file.h rejects (the message names the file and field), a scene
 // or viewer script that is neither a file nor a shipped name or that its reader rejects,
-// and an unknown --mode.
+// an unknown --mode, and a --source that is not a kind with a viewer script or comes
+// without --scene.
 LaunchOptions parse_launch_options(const std::vector<std::string>& args);
 
 // The flow view's display with the options' overrides applied.

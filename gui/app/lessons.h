@@ -23,8 +23,8 @@ struct Lesson {
   BasisKind basis = BasisKind::kPlanar;
   bool play_basis = false;   // animate the gallery's deformation amount
   bool play_motion = false;  // play the scene's motion
-  // What the animation and analysis views play (gui/views/animation_controls.h SourceChoice:
-  // kind "plane", "script" or "scene") and in which engine mode.
+  // What the animation and analysis views play (gui/models/animation_sources.h: a kind of
+  // its table, a name and a viewer script) and in which engine mode.
   std::string animation_kind = "plane";
   std::string animation_name;
   std::string animation_viewer;

@@ -20,17 +20,18 @@
 
 #include "formats/datasets.h"
 #include "formats/script_file.h"
-#include "views/analysis_view.h"
-#include "views/slices_view.h"
-#include "views/animation_view.h"
+#include "adapters/texture.h"
 #include "app/app_theme.h"
+#include "app/screenshot.h"
+#include "app/session_io.h"
+#include "app/view_table.h"
+#include "models/animation_model.h"
+#include "models/scene_model.h"
+#include "views/analysis_view.h"
+#include "views/animation_view.h"
 #include "views/basis_view.h"
 #include "views/flow_view.h"
 #include "views/scene_controls.h"
-#include "models/scene_model.h"
-#include "app/screenshot.h"
-#include "app/session_io.h"
-#include "adapters/texture.h"
 
 namespace oflab {
 
@@ -50,16 +51,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   layout->addWidget(tabs_, 1);
   setCentralWidget(central);
 
-  flow_view_ = new FlowView(model_);
-  basis_view_ = new BasisView(model_);
-  add_view(flow_view_);
-  add_view(basis_view_);
-  animation_view_ = new AnimationView(model_);
-  analysis_view_ = new AnalysisView(model_, animation_view_);
-  add_view(animation_view_);
-  add_view(analysis_view_);
-  add_view(new SlicesView(this));
-  connect(animation_view_, &AnimationView::input_rejected, this, &MainWindow::show_message);
+  animation_model_ = new AnimationModel(model_, this);
+  for (const ViewEntry& entry : view_table()) add_view(entry);
+  connect(animation_model_, &AnimationModel::input_rejected, this, &MainWindow::show_message);
 
   controls_ = new SceneControls(model_);
   auto* scroll = new QScrollArea;
@@ -223,23 +217,36 @@ void MainWindow::update_frame_label() {
   scrub_->setValue(model_->frame());
 }
 
-void MainWindow::add_view(ViewPage* view) {
-  views_.push_back(view);
-  tabs_->addTab(view, view->view_title());
-  view->set_theme(view_theme(presentation_));
+void MainWindow::add_view(const ViewEntry& entry) {
+  ViewPage* page = entry.make(ViewModels{model_, animation_model_});
+  views_.push_back({QString::fromStdString(entry.name), page});
+  tabs_->addTab(page, tr(entry.title.c_str()));
+  page->set_theme(view_theme(presentation_));
 }
 
+FlowView* MainWindow::flow_view() const { return find_view<FlowView>(); }
+BasisView* MainWindow::basis_view() const { return find_view<BasisView>(); }
+AnimationView* MainWindow::animation_view() const { return find_view<AnimationView>(); }
+AnalysisView* MainWindow::analysis_view() const { return find_view<AnalysisView>(); }
+
 ViewPage* MainWindow::view(const QString& name) const {
-  for (ViewPage* v : views_) {
-    if (v->view_name() == name) return v;
+  for (const Tab& tab : views_) {
+    if (tab.name == name) return tab.page;
   }
   return nullptr;
 }
 
 QStringList MainWindow::view_names() const {
   QStringList names;
-  for (ViewPage* v : views_) names << v->view_name();
+  for (const Tab& tab : views_) names << tab.name;
   return names;
+}
+
+QString MainWindow::current_view_name() const {
+  for (const Tab& tab : views_) {
+    if (tab.page == tabs_->currentWidget()) return tab.name;
+  }
+  return QString();
 }
 
 bool MainWindow::show_view(const QString& name) {
@@ -257,13 +264,13 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   set_motion_playing(lesson.play_motion);
   model_->set_frame(0);
   model_->set_scene(lesson.scene);
-  flow_view_->set_display(lesson.flow);
-  basis_view_->set_basis(lesson.basis);
-  basis_view_->set_playing(lesson.play_basis);
-  EngineSettings settings = animation_view_->settings();
+  flow_view()->set_display(lesson.flow);
+  basis_view()->set_basis(lesson.basis);
+  basis_view()->set_playing(lesson.play_basis);
+  EngineSettings settings = animation_model_->settings();
   settings.mode = lesson.mode;
-  animation_view_->set_settings(settings);
-  animation_view_->set_source(
+  animation_model_->set_settings(settings);
+  animation_model_->set_source(
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
   show_view(QString::fromStdString(lesson.view));
   set_caption(QString::fromStdString(lesson.caption));
@@ -295,7 +302,7 @@ void MainWindow::set_presentation(bool on) {
   presentation_action_->setChecked(on);
   apply_app_theme(on);
   style_banners();
-  for (ViewPage* v : views_) v->set_theme(view_theme(on));
+  for (const Tab& tab : views_) tab.page->set_theme(view_theme(on));
   // Let the scene panel grow with the fonts instead of clipping its controls.
   fit_scene_panel();
 }
@@ -315,13 +322,13 @@ void MainWindow::set_motion_playing(bool playing) {
 void MainWindow::set_external_clock(bool on) {
   external_clock_ = on;
   set_motion_playing(motion_playing());
-  for (ViewPage* v : views_) v->set_external_clock(on);
+  for (const Tab& tab : views_) tab.page->set_external_clock(on);
 }
 
 void MainWindow::play_frames(int frames) {
   for (int i = 0; i < frames; ++i) {
     model_->advance(1);
-    for (ViewPage* v : views_) v->step_animation();
+    for (const Tab& tab : views_) tab.page->step_animation();
     QApplication::processEvents();
   }
 }

@@ -1,7 +1,7 @@
-// The main window: one SceneModel shared by every view; the views as tabs (flow field,
-// basis deformations; the animation and analysis views are added the same way with
-// add_view); the scene panel as a dock; a caption banner for lessons and a message
-// banner for rejected input; play controls for the scene's motion; presentation mode.
+// The main window: the models (one SceneModel and one AnimationModel) shared by every view;
+// the views as tabs, one per entry of the view table (gui/app/view_table.h); the scene panel
+// as a dock; a caption banner for lessons and a message banner for rejected input; play
+// controls for the scene's motion; presentation mode.
 #pragma once
 
 #include <QMainWindow>
@@ -22,35 +22,52 @@ class QTimer;
 namespace oflab {
 
 class AnalysisView;
+class AnimationModel;
 class AnimationView;
 class BasisView;
 class FlowView;
 class SceneControls;
 class SceneModel;
 class ViewPage;
+struct ViewEntry;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
+  // A tab: a view made by its table entry, with the entry's name.
+  struct Tab {
+    QString name;
+    ViewPage* page;
+  };
+
   // Opens on the default demo with the flow view in front.
   explicit MainWindow(QWidget* parent = nullptr);
 
   SceneModel* model() const { return model_; }
+  AnimationModel* animation_model() const { return animation_model_; }
   SceneControls* scene_controls() const { return controls_; }
-  FlowView* flow_view() const { return flow_view_; }
-  BasisView* basis_view() const { return basis_view_; }
-  AnimationView* animation_view() const { return animation_view_; }
-  AnalysisView* analysis_view() const { return analysis_view_; }
+  // The view of type V among the tabs (nullptr when there is none). V must be complete
+  // where this is called.
+  template <class V>
+  V* find_view() const {
+    for (const Tab& tab : views_) {
+      if (auto* v = dynamic_cast<V*>(tab.page)) return v;
+    }
+    return nullptr;
+  }
+  FlowView* flow_view() const;
+  BasisView* basis_view() const;
+  AnimationView* animation_view() const;
+  AnalysisView* analysis_view() const;
 
-  // Adds a view as a tab (the window takes ownership) and themes it.
-  void add_view(ViewPage* view);
   // The view with this command-line name, or nullptr; all names in tab order.
   ViewPage* view(const QString& name) const;
   QStringList view_names() const;
   // Brings the named view to the front; false when there is no such view.
   bool show_view(const QString& name);
   ViewPage* current_view() const;
+  QString current_view_name() const;
 
   // Sets up a lesson: its scene, view, options and caption.
   void apply_lesson(const Lesson& lesson);
@@ -88,6 +105,7 @@ class MainWindow : public QMainWindow {
   QImage grab_window_image();
 
  private:
+  void add_view(const ViewEntry& entry);
   void create_actions();
   void create_menus();
   void create_play_bar();
@@ -107,14 +125,11 @@ class MainWindow : public QMainWindow {
   SceneControls* controls_;
   QTabWidget* tabs_;
   QDockWidget* scene_dock_ = nullptr;
-  FlowView* flow_view_;
-  BasisView* basis_view_;
-  AnimationView* animation_view_;
-  AnalysisView* analysis_view_;
+  AnimationModel* animation_model_;
   QSlider* scrub_ = nullptr;
   QComboBox* speed_box_ = nullptr;
   QAction* end_action_ = nullptr;
-  std::vector<ViewPage*> views_;
+  std::vector<Tab> views_;
   QLabel* caption_banner_ = nullptr;
   QLabel* message_banner_ = nullptr;
   QLabel* frame_label_ = nullptr;

@@ -9,39 +9,36 @@
 #include <cstring>
 #include <fstream>
 
-#include "runs/source_kinds.h"
-#include "formats/datasets.h"
-#include "formats/scene_file.h"
-#include "formats/script_file.h"
-#include "formats/viewer_script_file.h"
-#include "models/animation_session.h"
-#include "views/animation_view.h"
-#include "app/main_window.h"
-#include "models/scene_model.h"
+#include <sstream>
+
 #include "adapters/texture.h"
+#include "app/main_window.h"
+#include "formats/datasets.h"
+#include "formats/script_file.h"
+#include "models/animation_model.h"
+#include "models/scene_model.h"
+#include "views/animation_view.h"
 
 namespace oflab {
 namespace {
 
-// Checks every file the session names; the message names the file and what is wrong.
-bool check_files(const Session& s, QImage* texture, std::optional<MotionScript>* script,
-                 QString* error) {
+// Checks every file the session names and that its source can be played; the message
+// names the file or the source and what is wrong.
+bool check_files(const Session& s, const AnimationModel& animation, QImage* texture,
+                 std::optional<MotionScript>* script, QString* error) {
   try {
     if (!s.texture.empty()) {
       *texture = load_texture_image(QString::fromStdString(s.texture), error);
       if (texture->isNull()) return false;
     }
     if (!s.script.empty()) *script = read_script_file(resolve_script_path(s.script));
-    if (s.source_kind == "script") read_script_file(resolve_script_path(s.source_name));
-    if (s.source_kind == "scene") {
-      read_scene_file(resolve_scene_path(s.source_name));
-      read_viewer_script_file(resolve_viewer_script_path(s.viewer_script));
-    }
   } catch (const std::runtime_error& e) {
     *error = QString::fromStdString(e.what());
     return false;
   }
-  return true;
+  *error = QString::fromStdString(
+      animation.source_problem({s.source_kind, s.source_name, s.viewer_script}, s.settings));
+  return error->isEmpty();
 }
 
 // Runs `write(frame, image)` over every frame of the animation source, then goes back to
@@ -51,12 +48,12 @@ bool for_each_frame(MainWindow* window, QString* error,
                     const std::function<bool(int, const QImage&)>& write) {
   AnimationView* view = window->animation_view();
   const int saved = window->model()->frame();
-  AnimationSession* session = view->session();
-  if (!session) {
+  const Animator* animator = window->animation_model()->animator();
+  if (!animator) {
     *error = QStringLiteral("the animation view has nothing to play");
     return false;
   }
-  const int frames = session->frame_count();
+  const int frames = animator->frame_count();
   bool ok = true;
   for (int k = 0; k < frames && ok; ++k) {
     window->model()->set_frame(k);
@@ -70,7 +67,7 @@ bool for_each_frame(MainWindow* window, QString* error,
 
 Session capture_session(MainWindow* window) {
   SceneModel* model = window->model();
-  AnimationView* animation = window->animation_view();
+  const AnimationModel* animation = window->animation_model();
   Session s;
   s.plane = model->scene();
   if (model->script()) {
@@ -82,9 +79,9 @@ Session capture_session(MainWindow* window) {
   s.source_name = animation->source().name;
   s.viewer_script = animation->source().viewer;
   s.settings = animation->settings();
-  s.display = panel_display_name(animation->display());
+  s.display = panel_display_name(window->animation_view()->display());
   s.frame = model->frame();
-  s.view = window->current_view()->view_name().toStdString();
+  s.view = window->current_view_name().toStdString();
   return s;
 }
 
@@ -100,9 +97,9 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
     *error = QStringLiteral("unknown view '%1'").arg(QString::fromStdString(s.view));
     return false;
   }
-  if (!check_files(s, &texture, &script, error)) return false;
   SceneModel* model = window->model();
-  AnimationView* animation = window->animation_view();
+  AnimationModel* animation = window->animation_model();
+  if (!check_files(s, *animation, &texture, &script, error)) return false;
   if (!texture.isNull()) model->set_texture(texture, QString::fromStdString(s.texture));
   if (s.texture.empty() && !model->texture_source().isEmpty()) {
     model->set_texture(default_texture(), QString());
@@ -110,10 +107,8 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
   model->set_scene(s.plane);
   if (script) model->set_script(*script, QString::fromStdString(s.script));
   animation->set_settings(s.settings);
-  if (s.source_kind != "plane" || animation->source().kind != "plane") {
-    animation->set_source({s.source_kind, s.source_name, s.viewer_script});
-  }
-  animation->set_display(display);
+  animation->set_source({s.source_kind, s.source_name, s.viewer_script});
+  window->animation_view()->set_display(display);
   model->set_frame(s.frame);
   window->show_view(QString::fromStdString(s.view));
   return true;
@@ -180,27 +175,19 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
 }
 
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error) {
-  AnimationSession* session = window->animation_view()->session();
-  // The table writes every kind's CSV; the scene kinds wait for the session to name its kind.
-  if (!session || session->source().is_scene()) {
-    *error = QStringLiteral(
-        "the per-frame CSV is for a single plane (use oflab-cli animate "
-        "--scene for scenes)");
-    return false;
-  }
   if (!overwrite && QFileInfo::exists(path)) {
     *error = QStringLiteral("%1 exists; not overwritten").arg(path);
     return false;
   }
-  const AnimationSource& played = session->source();
-  RunSource source;
-  source.script = played.plane_script;
-  source.texture = played.plane_texture;
-  source.settings.engine = session->settings();
-  const SourceKind& kind = source_kind("plane");
-  const AnimationRun run = kind.play(source, PlayOptions{});
+  std::ostringstream csv;
+  try {
+    window->animation_model()->write_csv(csv);
+  } catch (const std::exception& e) {  // a source that cannot be played
+    *error = QString::fromStdString(e.what());
+    return false;
+  }
   std::ofstream out(path.toStdString());
-  kind.write_csv(out, run);
+  out << csv.str();
   if (!out) {
     *error = QStringLiteral("%1: cannot be written").arg(path);
     return false;

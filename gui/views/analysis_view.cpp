@@ -11,10 +11,9 @@
 #include <cmath>
 #include <functional>
 
-#include "models/animation_session.h"
-#include "views/animation_view.h"
-#include "views/palette.h"
+#include "models/animation_model.h"
 #include "models/scene_model.h"
+#include "views/palette.h"
 
 namespace oflab {
 namespace {
@@ -30,7 +29,7 @@ QColor level_qcolor(int level) {
 
 // What one chart draws: the records in the window and the x position of a frame.
 struct ChartFrame {
-  const std::vector<FrameRecord>* records;
+  const std::vector<AnimationFrame>* records;
   int first = 0, last = 0;
   QRect area;
   double x(double frame) const {
@@ -56,7 +55,7 @@ void draw_frame_box(QPainter& p, const ChartFrame& f, const QString& title, doub
 
 // A polyline of value(record) over the window, scaled to [0, top].
 void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
-                 const std::function<double(const FrameRecord&)>& value) {
+                 const std::function<double(const AnimationFrame&)>& value) {
   QPainterPath path;
   bool started = false;
   for (int k = f.first; k <= f.last; ++k) {
@@ -74,7 +73,7 @@ void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
   p.drawPath(path);
 }
 
-double series_top(const ChartFrame& f, const std::function<double(const FrameRecord&)>& value,
+double series_top(const ChartFrame& f, const std::function<double(const AnimationFrame&)>& value,
                   double floor) {
   double top = floor;
   for (int k = f.first; k <= f.last; ++k) {
@@ -86,8 +85,8 @@ double series_top(const ChartFrame& f, const std::function<double(const FrameRec
 
 void draw_levels(QPainter& p, const ChartFrame& f, const QColor& text) {
   int top = 1;
-  for (int k = f.first; k <= f.last; ++k) top = std::max(top, (*f.records)[size_t(k)].drawn);
-  draw_frame_box(p, f, QObject::tr("polygons per level (stacked)"), top, text, QString());
+  for (int k = f.first; k <= f.last; ++k) top = std::max(top, (*f.records)[size_t(k)].drawn());
+  draw_frame_box(p, f, QObject::tr("layers per level (stacked)"), top, text, QString());
   const double unit = double(f.area.height()) / top;
   for (int k = f.first; k <= f.last; ++k) {
     double y = f.area.bottom();
@@ -104,11 +103,14 @@ void draw_levels(QPainter& p, const ChartFrame& f, const QColor& text) {
 // Level L's budget: the error it would leave against its threshold, and the measured error.
 void draw_budget(QPainter& p, const ChartFrame& f, int level, double threshold,
                  const QColor& text) {
-  const auto estimate = [level](const FrameRecord& r) {
-    return r.has_books && r.frame > 0 ? neglected_error(r.plane.carried, r.plane.flow, Level(level))
-                                      : std::nan("");
+  const auto estimate = [level](const AnimationFrame& r) {
+    if (r.layer_reports.size() != 1 || r.frame == 0) return std::nan("");
+    const FrameReport& books = r.layer_reports.front();
+    return neglected_error(books.carried, books.flow, Level(level));
   };
-  const auto measured = [](const FrameRecord& r) { return r.measured_error_px; };
+  const auto measured = [](const AnimationFrame& r) {
+    return r.drawn() > 0 ? r.max_measured_error_px : std::nan("");
+  };
   const double top = std::max(series_top(f, estimate, threshold), series_top(f, measured, 0.1));
   draw_frame_box(p, f, QObject::tr("%1: error left").arg(level_name(Level(level))),
                  top, text, QStringLiteral(" px"));
@@ -135,7 +137,7 @@ class AnalysisView::Charts : public QWidget {
     setAttribute(Qt::WA_OpaquePaintEvent);
     setMinimumSize(400, 300);
   }
-  const std::vector<FrameRecord>* records = nullptr;
+  const std::vector<AnimationFrame>* records = nullptr;
   EngineSettings settings;
   ViewTheme theme;
 
@@ -150,7 +152,7 @@ class AnalysisView::Charts : public QWidget {
   }
   void mousePressEvent(QMouseEvent* event) override {
     const int frame = view_->frame_at(event->pos().x());
-    if (frame >= 0) view_->model_->set_frame(frame);
+    if (frame >= 0) view_->model_->scene_model()->set_frame(frame);
   }
 
  private:
@@ -185,22 +187,22 @@ void AnalysisView::Charts::paint(QPainter& p, const QRect& rect) const {
   p.setRenderHint(QPainter::Antialiasing, true);
   const std::vector<QRect> a = areas(rect);
   const auto chart = [&](int i) { return ChartFrame{records, view_->first_, view_->last_, a[size_t(i)]}; };
-  const auto time = [](const FrameRecord& r) { return r.time_ms; };
+  const auto time = [](const AnimationFrame& r) { return r.time_ms; };
   const double time_top = series_top(chart(0), time, 1.0);
   draw_frame_box(p, chart(0), tr("frame time of the engine"), time_top, text, QStringLiteral(" ms"));
   draw_series(p, chart(0), time_top, QPen(text, 1.5), time);
   draw_levels(p, chart(1), text);
   draw_frame_box(p, chart(2), tr("approximated (not re-rendered)"), 100.0, text, QStringLiteral("%"));
   draw_series(p, chart(2), 100.0, QPen(level_qcolor(int(Level::kAffine)), 2.0),
-              [](const FrameRecord& r) { return r.approximated_percent; });
+              [](const AnimationFrame& r) { return approximated_percent(r); });
   for (int level = 0; level < kTermCount; ++level) {
     draw_budget(p, chart(3 + level), level, settings.thresholds[size_t(level)], text);
   }
   for (int i = 0; i < 7; ++i) draw_current(p, chart(i), view_->last_, text);
 }
 
-AnalysisView::AnalysisView(SceneModel* model, AnimationView* animation, QWidget* parent)
-    : ViewPage(parent), model_(model), animation_(animation), theme_(view_theme(false)) {
+AnalysisView::AnalysisView(AnimationModel* model, QWidget* parent)
+    : ViewPage(parent), model_(model), theme_(view_theme(false)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   auto* bar = new QHBoxLayout;
@@ -215,8 +217,8 @@ AnalysisView::AnalysisView(SceneModel* model, AnimationView* animation, QWidget*
   charts_ = new Charts(this);
   layout->addWidget(charts_, 1);
   connect(whole_run_box_, &QCheckBox::toggled, this, [this] { refresh(); });
-  connect(animation_, &AnimationView::frame_shown, this, &AnalysisView::refresh);
-  connect(model_, &SceneModel::scene_changed, this, &AnalysisView::refresh);
+  connect(model_, &AnimationModel::frame_changed, this, &AnalysisView::refresh);
+  connect(model_, &AnimationModel::source_changed, this, &AnalysisView::refresh);
 }
 
 bool AnalysisView::whole_run() const { return whole_run_box_->isChecked(); }
@@ -229,29 +231,23 @@ int AnalysisView::frame_at(int x) const {
   return std::clamp(first_ + int((x - kLeftMargin) * n / span), first_, last_);
 }
 
+void AnalysisView::read_model() {
+  const std::vector<AnimationFrame>& history = model_->history();
+  charts_->records = history.empty() ? nullptr : &history;
+  charts_->settings = model_->settings();
+  charts_->theme = theme_;
+  last_ = history.empty() ? 0 : history.back().frame;
+  first_ = whole_run() ? 0 : std::max(0, last_ - kRecentFrames + 1);
+}
+
 void AnalysisView::refresh() {
   if (!isVisible()) return;
-  AnimationSession* session = animation_->session();
-  charts_->records = session ? &session->history() : nullptr;
-  if (session) {
-    charts_->settings = session->settings();
-    last_ = session->frame();
-    first_ = whole_run() ? 0 : std::max(0, last_ - kRecentFrames + 1);
-  }
-  charts_->theme = theme_;
+  read_model();
   charts_->update();
 }
 
 QImage AnalysisView::render_image() {
-  refresh();
-  AnimationSession* session = animation_->session();
-  charts_->records = session ? &session->history() : nullptr;
-  if (session) {
-    last_ = session->frame();
-    first_ = whole_run() ? 0 : std::max(0, last_ - kRecentFrames + 1);
-    charts_->settings = session->settings();
-  }
-  charts_->theme = theme_;
+  read_model();
   QImage image(charts_->size().expandedTo(QSize(800, 500)), QImage::Format_RGB32);
   QPainter painter(&image);
   charts_->paint(painter, image.rect());

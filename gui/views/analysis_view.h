@@ -1,10 +1,11 @@
 // View 4, "Analysis": the dissertation's analysis window, modernised. Over the last 80
-// frames (or the whole run so far) of the animation view's engine: the frame time, the
-// polygons per level (stacked, level colours), the percentage approximated, and for each
-// cheaper level the error it would have left (the carried estimate plus this frame's flow
-// over its neglected terms, core/engine/decision.h) against its threshold, beside the measured
+// frames (or the whole run so far) of the animation model's run: the frame time, the layers
+// per level (stacked, level colours), the percentage approximated, and for each cheaper
+// level the error it would have left (the carried estimate plus this frame's flow over its
+// neglected terms, core/engine/decision.h; drawn for frames that updated exactly one layer,
+// the only ones whose books are one engine's) against its threshold, beside the measured
 // true error. Painted with Qt (a few hundred line segments per frame); clicking a chart
-// moves the scene model to that frame.
+// moves the scene model to that frame. Reads the animation model only.
 #pragma once
 
 #include "views/view_page.h"
@@ -13,9 +14,7 @@ class QCheckBox;
 
 namespace oflab {
 
-class AnimationView;
-class SceneModel;
-struct FrameRecord;
+class AnimationModel;
 
 class AnalysisView : public ViewPage {
   Q_OBJECT
@@ -23,11 +22,9 @@ class AnalysisView : public ViewPage {
  public:
   static constexpr int kRecentFrames = 80;
 
-  // Both must outlive the view.
-  AnalysisView(SceneModel* model, AnimationView* animation, QWidget* parent = nullptr);
+  // The model must outlive the view.
+  explicit AnalysisView(AnimationModel* model, QWidget* parent = nullptr);
 
-  QString view_name() const override { return QStringLiteral("analysis"); }
-  QString view_title() const override { return tr("Analysis"); }
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
 
@@ -45,9 +42,9 @@ class AnalysisView : public ViewPage {
  private:
   class Charts;
   void refresh();
+  void read_model();
 
-  SceneModel* model_;
-  AnimationView* animation_;
+  AnimationModel* model_;
   Charts* charts_;
   QCheckBox* whole_run_box_;
   ViewTheme theme_;

@@ -8,8 +8,6 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
-#include "formats/datasets.h"
-#include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
 
 namespace oflab {
@@ -25,6 +23,11 @@ constexpr const char* kThresholdLabels[kTermCount] = {"none", "translate", "affi
 
 QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
+}
+
+// The picker's entry of `name` of `kind` (a label without %1 names no file).
+QString entry_label(const AnimationSourceKind& kind, const QString& name) {
+  return QString::fromStdString(fill_pattern(kind.label, name.toStdString()));
 }
 
 void select_data(QComboBox* box, const QVariant& data) {
@@ -66,12 +69,10 @@ QWidget* AnimationControls::make_source_row() {
   layout->setContentsMargins(0, 0, 0, 0);
   source_box_ = new QComboBox(row);
   source_box_->setObjectName(QStringLiteral("animation_source"));
-  source_box_->addItem(tr("Plane of the scene panel"), source_key("plane", ""));
-  for (const std::string& n : shipped_script_names()) {
-    source_box_->addItem(tr("Plane script: %1").arg(QString::fromStdString(n)), source_key("script", n));
-  }
-  for (const std::string& n : shipped_scene_names()) {
-    source_box_->addItem(tr("Scene: %1").arg(QString::fromStdString(n)), source_key("scene", n));
+  for (const AnimationSourceKind& kind : animation_source_kinds()) {
+    for (const std::string& n : kind.shipped_names()) {
+      source_box_->addItem(entry_label(kind, QString::fromStdString(n)), source_key(kind.name, n));
+    }
   }
   viewer_box_ = new QComboBox(row);
   viewer_box_->setObjectName(QStringLiteral("animation_viewer"));
@@ -96,8 +97,14 @@ QWidget* AnimationControls::make_source_row() {
     box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     box->setMinimumContentsLength(8);
   }
-  connect(source_box_, QOverload<int>::of(&QComboBox::activated), this,
-          [this] { emit source_edited(); });
+  connect(source_box_, QOverload<int>::of(&QComboBox::activated), this, [this] {
+    // A kind picked anew starts on its own viewer script (scene shifting: train-sideways).
+    const AnimationSourceKind& kind = current_kind();
+    if (kind.uses_viewer && kind.name != shown_kind_) {
+      select_data(viewer_box_, QString::fromStdString(kind.default_viewer));
+    }
+    emit source_edited();
+  });
   connect(viewer_box_, QOverload<int>::of(&QComboBox::activated), this,
           [this] { emit source_edited(); });
   connect(display_box_, QOverload<int>::of(&QComboBox::activated), this,
@@ -188,32 +195,44 @@ void AnimationControls::set_display(PanelDisplay display) {
   select_data(display_box_, int(display));
 }
 
+const AnimationSourceKind& AnimationControls::current_kind() const {
+  const std::string name = source_box_->currentData().toString().section('|', 0, 0).toStdString();
+  return *find_animation_source_kind(name);  // every entry comes from the table
+}
+
 SourceChoice AnimationControls::source() const {
-  const QString key = source_box_->currentData().toString();
   SourceChoice choice;
-  choice.kind = key.section('|', 0, 0).toStdString();
-  choice.name = key.section('|', 1).toStdString();
-  if (choice.kind == "scene") choice.viewer = viewer_box_->currentData().toString().toStdString();
+  choice.kind = current_kind().name;
+  choice.name = source_box_->currentData().toString().section('|', 1).toStdString();
+  if (current_kind().uses_viewer) {
+    choice.viewer = viewer_box_->currentData().toString().toStdString();
+  }
   return choice;
 }
 
 void AnimationControls::add_file_entry(QComboBox* box, const std::string& kind,
                                        const std::string& path) {
-  const QVariant data = kind.empty() ? QVariant(QString::fromStdString(path))
-                                     : QVariant(source_key(kind, path));
-  if (box->findData(data) >= 0) return;
-  box->addItem(tr("File: %1").arg(QString::fromStdString(path)), data);
+  const QString file = tr("file %1").arg(QString::fromStdString(path));
+  if (kind.empty()) {
+    if (box->findData(QString::fromStdString(path)) < 0) box->addItem(file, QString::fromStdString(path));
+    return;
+  }
+  const AnimationSourceKind* entry = find_animation_source_kind(kind);
+  if (!entry || box->findData(source_key(kind, path)) >= 0) return;
+  box->addItem(entry_label(*entry, file), source_key(kind, path));
 }
 
 void AnimationControls::set_source(const SourceChoice& choice) {
   const QSignalBlocker b0(source_box_), b1(viewer_box_);
   add_file_entry(source_box_, choice.kind, choice.name);
   select_data(source_box_, source_key(choice.kind, choice.name));
-  if (choice.kind == "scene") {
+  const AnimationSourceKind& kind = current_kind();
+  if (kind.uses_viewer) {
     add_file_entry(viewer_box_, "", choice.viewer);
     select_data(viewer_box_, QString::fromStdString(choice.viewer));
   }
-  viewer_box_->setEnabled(choice.kind == "scene");
+  viewer_box_->setEnabled(kind.uses_viewer);
+  shown_kind_ = kind.name;
 }
 
 }  // namespace oflab

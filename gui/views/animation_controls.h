@@ -1,5 +1,5 @@
-// The animation view's control bar: what plays (the single plane of the scene panel, a
-// shipped motion script, or a shipped multi-plane scene with a viewer script), the engine
+// The animation view's control bar: what plays (an entry of the source-kind table,
+// gui/models/animation_sources.h, with its shipped name and viewer script), the engine
 // mode (with a one-click affine/perspective switch), the per-level thresholds, the Delta
 // policy, the sampling, and how the two panels are shown. It only edits values; the view
 // applies them and puts them back when it refuses them.
@@ -8,6 +8,7 @@
 #include <QWidget>
 
 #include "engine/engine.h"
+#include "models/animation_sources.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -19,18 +20,6 @@ namespace oflab {
 enum class PanelDisplay { kSideBySide, kDifference, kBlink };
 const char* panel_display_name(PanelDisplay display);  // "side-by-side", "difference", "blink"
 bool parse_panel_display(const std::string& text, PanelDisplay* display);
-
-// The source picker's choice: kind "plane" (the scene panel's plane and motion), "script"
-// (a motion script for the plane) or "scene" (a scene with a viewer script); names are
-// shipped names or file paths.
-struct SourceChoice {
-  std::string kind = "plane";
-  std::string name;    // script or scene
-  std::string viewer;  // viewer script, scenes only
-  bool operator==(const SourceChoice& o) const {
-    return kind == o.kind && name == o.name && viewer == o.viewer;
-  }
-};
 
 class AnimationControls : public QWidget {
   Q_OBJECT
@@ -55,6 +44,8 @@ class AnimationControls : public QWidget {
   QWidget* make_source_row();
   QWidget* make_engine_row();
   void add_file_entry(QComboBox* box, const std::string& kind, const std::string& path);
+  // The source kind of the picker's current entry.
+  const AnimationSourceKind& current_kind() const;
 
   QComboBox* source_box_ = nullptr;
   QComboBox* viewer_box_ = nullptr;
@@ -64,6 +55,7 @@ class AnimationControls : public QWidget {
   QDoubleSpinBox* thresholds_[kTermCount] = {};
   QComboBox* delta_box_ = nullptr;
   QComboBox* sampling_box_ = nullptr;
+  std::string shown_kind_;  // the kind of the source last shown by set_source
 };
 
 }  // namespace oflab

@@ -28,8 +28,6 @@ class BasisView : public ViewPage {
   BasisView(SceneModel* model, QWidget* parent = nullptr);
   ~BasisView() override;
 
-  QString view_name() const override { return QStringLiteral("basis"); }
-  QString view_title() const override { return tr("Basis deformations"); }
   QImage render_image() override;
   void step_animation() override;
   void set_external_clock(bool on) override;

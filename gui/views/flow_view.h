@@ -25,8 +25,6 @@ class FlowView : public ViewPage {
   FlowView(SceneModel* model, QWidget* parent = nullptr);
   ~FlowView() override;
 
-  QString view_name() const override { return QStringLiteral("flow"); }
-  QString view_title() const override { return tr("Flow field"); }
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
 

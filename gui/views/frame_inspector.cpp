@@ -3,34 +3,52 @@
 #include <QStringList>
 #include <cmath>
 
-#include "flow/flow_field.h"
+#include "models/animation_model.h"
 
 namespace oflab {
 namespace {
 
 QString px(double value) { return QString::number(value, 'f', 2); }
 
-QString scene_summary(const FrameRecord& r) {
+QString layers_summary(const AnimationFrame& f) {
   QStringList counts;
   for (int k = 0; k < kLevelCount; ++k) {
-    counts << QStringLiteral("%1 %2").arg(r.levels[size_t(k)]).arg(level_name(Level(k)));
+    counts << QStringLiteral("%1 %2").arg(f.levels[size_t(k)]).arg(level_name(Level(k)));
   }
-  return QStringLiteral(
-             "<b>Frame %1</b>: %2 polygons drawn (%3).<br>%4% approximated; largest measured "
-             "error %5 px.<br>Each polygon has its own engine and its own error books; the "
-             "level of each is the colour of its outline.")
-      .arg(r.frame)
-      .arg(r.drawn)
-      .arg(counts.join(QStringLiteral(", ")))
-      .arg(r.approximated_percent, 0, 'f', 0)
-      .arg(std::isnan(r.measured_error_px) ? QStringLiteral("-") : px(r.measured_error_px));
+  QString text = QStringLiteral(
+                     "<b>Frame %1</b>: %2 of %3 layers drawn (%4).<br>%5% approximated; "
+                     "largest measured error %6 px.<br>Culled %7, hidden %8.")
+                     .arg(f.frame)
+                     .arg(f.drawn())
+                     .arg(f.layers)
+                     .arg(counts.join(QStringLiteral(", ")))
+                     .arg(approximated_percent(f), 0, 'f', 0)
+                     .arg(f.drawn() > 0 ? px(f.max_measured_error_px) : QStringLiteral("-"))
+                     .arg(f.culled())
+                     .arg(f.hidden);
+  text += QStringLiteral("<br>The level of each layer is the colour of its outline.");
+  if (!f.note.empty()) text += QStringLiteral("<br>Note: %1").arg(QString::fromStdString(f.note));
+  return text;
+}
+
+// Whether `outline` (image pixels) holds `point`, by the crossing rule.
+bool holds(const LayerOutline& outline, const Vec2& point) {
+  bool inside = false;
+  const std::vector<Vec2>& p = outline.points;
+  for (size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+    if ((p[i].y > point.y) != (p[j].y > point.y) &&
+        point.x < (p[j].x - p[i].x) * (point.y - p[i].y) / (p[j].y - p[i].y) + p[i].x) {
+      inside = !inside;
+    }
+  }
+  return inside;
 }
 
 }  // namespace
 
-QString explain_frame(const FrameRecord& record, const EngineSettings& settings) {
-  if (!record.has_books) return scene_summary(record);
-  const FrameReport& r = record.plane;
+QString explain_frame(const AnimationFrame& frame, const EngineSettings& settings) {
+  if (frame.layer_reports.size() != 1) return layers_summary(frame);
+  const FrameReport& r = frame.layer_reports.front();
   if (!r.visible) {
     return QStringLiteral("<b>Frame %1</b>: the plane is not drawn (%2).")
         .arg(r.frame)
@@ -66,33 +84,23 @@ QString explain_frame(const FrameRecord& record, const EngineSettings& settings)
   return text;
 }
 
-QString pixel_readout(const AnimationSession& session, const Vec2& pixel, const Image& exact) {
+QString pixel_readout(const Animator& animator, const Vec2& pixel, const Image& exact) {
   const int x = static_cast<int>(std::floor(pixel.x)), y = static_cast<int>(std::floor(pixel.y));
-  const Image& shown = session.frame_image();
+  const Image& shown = animator.image();
   if (x < 0 || y < 0 || x >= shown.width() || y >= shown.height()) return QString();
-  QString text = QStringLiteral("pixel (%1, %2)").arg(x).arg(y);
   const auto colour = [](const Image& image, int i, int j) {
     if (i >= image.width() || j >= image.height()) return QStringLiteral("-");
     const Pixel p = image.row(j)[i];
     return QStringLiteral("(%1 %2 %3 %4)").arg(p.r).arg(p.g).arg(p.b).arg(p.a);
   };
-  if (session.source().is_scene() || !session.current().plane.visible) {
-    return text + QStringLiteral(": engine %1, exact %2").arg(colour(shown, x, y), colour(exact, x, y));
+  QString level = QStringLiteral("no layer");
+  for (const LayerOutline& outline : animator.outlines()) {  // back to front: the last wins
+    if (holds(outline, pixel)) level = QStringLiteral("level %1").arg(level_name(outline.level));
   }
-  const Camera& camera = session.source().camera();
-  const Vec2 centre(x + 0.5, y + 0.5);
-  const Vec2 texel = apply_homography(glm::inverse(session.displayed_warp()), centre);
-  const PlanePose pose = session.plane_pose();
-  const bool inside = texel.x >= 0 && texel.y >= 0 && texel.x <= pose.texture_size.x &&
-                      texel.y <= pose.texture_size.y;
-  if (!inside) return text + QStringLiteral(": outside the plane");
-  const Vec2 flow = flow_at(planar_flow_coefficients(camera, pose, session.plane_motion()),
-                            pixel_to_centred(camera, centre));
-  const Vec2 truth = apply_homography(session.exact_warp(), texel);
-  return text + QStringLiteral(": flow (%1, %2) px/frame, level %3, error %4 px")
-                    .arg(px(flow.x), px(flow.y))
-                    .arg(level_name(session.current().plane.level))
-                    .arg(px(glm::length(truth - centre)));
+  return QStringLiteral("pixel (%1, %2): %3, engine %4, exact %5")
+      .arg(x)
+      .arg(y)
+      .arg(level, colour(shown, x, y), colour(exact, x, y));
 }
 
 }  // namespace oflab

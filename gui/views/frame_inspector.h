@@ -5,20 +5,21 @@
 
 #include <QString>
 
-#include "models/animation_session.h"
+#include "engine/animator.h"
 
 namespace oflab {
 
-// Rich text: the chosen level and, for each cheaper level, the error it would have left
-// (sum over its neglected terms of carried estimate + this frame's flow, core/engine/decision.h)
-// against its threshold; the flow measures; the estimates carried on. For a scene: the
-// polygons per level, culled and hidden counts are not kept, only levels and the error.
-QString explain_frame(const FrameRecord& record, const EngineSettings& settings);
+// Rich text. A frame that updated exactly one layer (a single plane, or a scene with one
+// animated polygon): the chosen level and, for each cheaper level, the error it would have
+// left (sum over its neglected terms of carried estimate + this frame's flow,
+// core/engine/decision.h) against its threshold; the flow measures; the estimates carried on.
+// Any other frame (several layers, or scene shifting's slices, which keep no per-term
+// books): the layers per level, the culled and hidden counts and the measured error.
+QString explain_frame(const AnimationFrame& frame, const EngineSettings& settings);
 
-// One line about image pixel `pixel` (top-left pixels) of the current frame: for a single
-// plane inside the displayed polygon, the flow vector there (pixels per frame), the level,
-// and the geometric error (distance between where the engine shows that texel and where
-// the exact projection puts it); for a scene, the engine's and the exact colour there.
-QString pixel_readout(const AnimationSession& session, const Vec2& pixel, const Image& exact);
+// One line about image pixel `pixel` (top-left pixels) of the animator's current frame: the
+// level of the topmost drawn layer there (none when no outline holds it), and the engine's
+// and the exact colour there (premultiplied RGBA).
+QString pixel_readout(const Animator& animator, const Vec2& pixel, const Image& exact);
 
 }  // namespace oflab

@@ -39,8 +39,6 @@ class SlicesView : public ViewPage {
   explicit SlicesView(QWidget* parent = nullptr);
   ~SlicesView() override;
 
-  QString view_name() const override { return "slices"; }
-  QString view_title() const override { return "Scene shifting"; }
   QImage render_image() override;
   void step_animation() override;
   void set_theme(const ViewTheme& theme) override;

@@ -1,7 +1,6 @@
-// What the main window needs from a view: a name for the command line, a tab title, a
-// way to render it now and read back its pixels, one animation step, and the theme.
-// The phase-2 views (animation side by side, analysis) implement the same interface and
-// are added with MainWindow::add_view, so the window does not change when they land.
+// What the main window needs from a view: a way to render it now and read back its pixels,
+// one animation step, and the theme. A view's command-line name and tab title are its
+// entry in the view table (gui/app/view_table.h), which the window builds its tabs from.
 #pragma once
 
 #include <QImage>
@@ -16,10 +15,6 @@ class ViewPage : public QWidget {
  public:
   using QWidget::QWidget;
 
-  // Command-line name, lower case: "flow", "basis" (later "animation", "analysis").
-  virtual QString view_name() const = 0;
-  // Tab title, e.g. "Flow field".
-  virtual QString view_title() const = 0;
   // Brings the view up to date with the scene, renders it and returns the rendered VTK
   // content at the view's current size (not the Qt controls around it).
   virtual QImage render_image() = 0;

@@ -148,8 +148,6 @@ TEST(SessionFile, EveryBadFieldIsNamedWithItsPart) {
       {[](json& j) { j["plane"]["motion"]["model"] = "spin"; },
        "s.json: plane.motion: field 'model': unknown motion model"},
       {[](json& j) { j["script"] = 1; }, "s.json: field 'script': must be a string"},
-      {[](json& j) { j["animation"]["source"]["kind"] = "movie"; },
-       "s.json: animation.source: field 'kind'"},
       {[](json& j) { j["animation"]["source"].erase("viewer"); },
        "s.json: animation.source: field 'viewer': is missing"},
       {[](json& j) { j["animation"]["mode"] = "fast"; }, "s.json: animation: field 'mode'"},

@@ -1,6 +1,6 @@
 // The window's exports, as the File > Export menu runs them (the dialogs only choose the
-// path): numbered PNGs, the Ogg Theora video and the per-frame CSV, each one frame per
-// frame of the animation, none overwriting an existing file unless told to.
+// path): numbered PNGs, the Ogg Theora video and the per-frame CSV of every source kind,
+// each one frame per frame of the animation, none overwriting an existing file unless told to.
 #include <QDir>
 #include <QFile>
 #include <QImage>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "models/animation_session.h"
+#include "models/animation_model.h"
 #include "views/animation_view.h"
 #include "models/scene_model.h"
 #include "app/session_io.h"
@@ -32,8 +32,8 @@ void play_short_script(MainWindow& window, const QTemporaryDir& dir) {
     "motion_model": "centre",
     "segments": [{"frames": 8, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
   ASSERT_TRUE(window.load_script(path)) << window.message().toStdString();
-  ASSERT_NE(window.animation_view()->session(), nullptr);
-  ASSERT_EQ(window.animation_view()->session()->frame_count(), kFrames);
+  ASSERT_NE(window.animation_model()->animator(), nullptr);
+  ASSERT_EQ(window.animation_model()->animator()->frame_count(), kFrames);
 }
 
 std::string read_all(const QString& path) {
@@ -87,31 +87,54 @@ TEST_F(ExportTest, VideoIsAnOggFileAndAnExistingFileIsKept) {
   EXPECT_EQ(read_all(mine), "a user's file");
 }
 
-TEST_F(ExportTest, CsvHasAHeaderAndOneRowPerFrameAndRefusesScenes) {
-  QTemporaryDir dir;
-  play_short_script(window(), dir);
-  const QString path = dir.filePath("frames.csv");
-  QString error;
-  ASSERT_TRUE(export_frame_csv(&window(), path, false, &error)) << error.toStdString();
+// The CSV's header line and the number of rows after it, each row starting with its frame.
+std::pair<std::string, int> read_csv(const QString& path) {
   std::istringstream csv(read_all(path));
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header.rfind("frame,", 0), 0u) << header;
   int rows = 0;
   for (std::string line; std::getline(csv, line);) {
     if (line.empty()) continue;
     EXPECT_EQ(line.rfind(std::to_string(rows) + ",", 0), 0u) << line;
     ++rows;
   }
+  return {header, rows};
+}
+
+TEST_F(ExportTest, PlaneCsvHasTheAnimateHeaderAndOneRowPerFrameAndIsNotOverwritten) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir);
+  const QString path = dir.filePath("frames.csv");
+  QString error;
+  ASSERT_TRUE(export_frame_csv(&window(), path, false, &error)) << error.toStdString();
+  const auto [header, rows] = read_csv(path);
+  EXPECT_EQ(header.rfind("frame,level,visible,", 0), 0u) << header;
   EXPECT_EQ(rows, kFrames);
 
+  const std::string before = read_all(path);
   EXPECT_FALSE(export_frame_csv(&window(), path, false, &error));
   EXPECT_TRUE(error.contains("exists")) << error.toStdString();
+  EXPECT_EQ(read_all(path), before);
+}
 
-  ASSERT_TRUE(window().animation_view()->set_source({"scene", "two", "translate"}));
-  EXPECT_FALSE(export_frame_csv(&window(), dir.filePath("scene.csv"), false, &error));
-  EXPECT_TRUE(error.contains("single plane")) << error.toStdString();
-  EXPECT_FALSE(QFile::exists(dir.filePath("scene.csv")));
+// Scenes and scene shifting export the per-polygon-level columns of `oflab-cli animate
+// --scene`, one row per frame of their viewer script.
+TEST_F(ExportTest, SceneAndSceneShiftingCsvsHaveTheSceneHeaderAndOneRowPerFrame) {
+  QTemporaryDir dir;
+  const SourceChoice sources[] = {{"scene", "two", "translate"},
+                                  {"scene-shifting", "train-window", "train-sideways"}};
+  for (const SourceChoice& source : sources) {
+    ASSERT_TRUE(window().animation_model()->set_source(source)) << window().message().toStdString();
+    const int frames = window().animation_model()->animator()->frame_count();
+    const QString path = dir.filePath(QString::fromStdString(source.kind + ".csv"));
+    QString error;
+    ASSERT_TRUE(export_frame_csv(&window(), path, false, &error)) << error.toStdString();
+    const auto [header, rows] = read_csv(path);
+    EXPECT_EQ(header.rfind("frame,polygons,drawn,none,translate,affine,perspective,rerender,", 0),
+              0u)
+        << source.kind << ": " << header;
+    EXPECT_EQ(rows, frames) << source.kind;
+  }
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // oflab's command line: every bad input gives a UsageError naming the option.
 #include "app/launch_options.h"
 
+#include "app/view_table.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -74,6 +76,32 @@ TEST(LaunchOptions, ShippedSceneModeAndViewerScriptAreAccepted) {
   EXPECT_EQ(*o.mode, EngineMode::kAffine);
   EXPECT_EQ(parse_launch_options({"--scene", "cube"}).viewer_script, "circle");
   EXPECT_EQ(parse_launch_options({"--view", "analysis"}).view, "analysis");
+}
+
+// --view takes its names from the view table, plus "window"; --help lists them.
+TEST(LaunchOptions, ViewNamesComeFromTheViewTable) {
+  for (const ViewEntry& entry : view_table()) {
+    EXPECT_EQ(parse_launch_options({"--view", entry.name}).view, entry.name);
+    EXPECT_NE(launch_usage().find(entry.name + " (" + entry.title + ")"), std::string::npos)
+        << entry.name;
+  }
+  EXPECT_EQ(view_table().size(), 5u);
+  EXPECT_EQ(screenshot_view_names().back(), "window");
+  EXPECT_EQ(screenshot_view_names().size(), view_table().size() + 1);
+  const std::string error = usage_error({"--view", "nowhere"});
+  EXPECT_NE(error.find("slices"), std::string::npos) << error;
+}
+
+TEST(LaunchOptions, SceneShiftingIsASourceOfTheSceneWithItsOwnViewerScript) {
+  const LaunchOptions o =
+      parse_launch_options({"--scene", "train-window", "--source", "scene-shifting"});
+  EXPECT_EQ(o.source_kind, "scene-shifting");
+  EXPECT_EQ(o.viewer_script, "train-sideways");
+  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).source_kind, "scene");
+  const std::string unknown = usage_error({"--scene", "cube", "--source", "plane"});
+  EXPECT_EQ(unknown.rfind("--source", 0), 0u) << unknown;
+  EXPECT_NE(unknown.find("scene-shifting"), std::string::npos) << unknown;
+  EXPECT_EQ(usage_error({"--source", "scene"}).rfind("--source", 0), 0u);
 }
 
 TEST(LaunchOptions, ShippedScriptIsReadAndUnknownOneListsTheShippedNames) {

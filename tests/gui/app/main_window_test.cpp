@@ -1,9 +1,11 @@
 // The window for real: it opens on the demo, every view renders, the controls drive the
 // scene, impossible input is refused with a visible message, lessons set themselves up.
 #include <QDoubleSpinBox>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <fstream>
 
+#include "app/view_table.h"
 #include "views/basis_view.h"
 #include "views/coefficient_table.h"
 #include "views/flow_view.h"
@@ -34,12 +36,29 @@ TEST_F(MainWindowTest, StartsOnTheDefaultDemoWithTheFlowViewInFront) {
   const PlaneScene demo = default_demo_scene();
   EXPECT_TRUE(same_pose(window().model()->scene().pose, demo.pose));
   EXPECT_EQ(window().model()->scene().motion.velocity, demo.motion.velocity);
-  EXPECT_EQ(window().current_view()->view_name(), "flow");
+  EXPECT_EQ(window().current_view_name(), "flow");
   EXPECT_EQ(window().view_names(),
             QStringList({"flow", "basis", "animation", "analysis", "slices"}));
   EXPECT_TRUE(window().message().isEmpty());
   // The planar basis row "tx" shows core's coefficient (reference case: -121.03 px/s).
   EXPECT_EQ(window().flow_view()->coefficient_table()->value_text(0).left(7), "-121.03");
+}
+
+// The tabs are the view table's entries, in order, with its titles and names.
+TEST_F(MainWindowTest, TabsAreTheViewTableInOrder) {
+  const auto* tabs = window().findChild<QTabWidget*>(QStringLiteral("view_tabs"));
+  ASSERT_NE(tabs, nullptr);
+  const std::vector<ViewEntry>& table = view_table();
+  ASSERT_EQ(tabs->count(), static_cast<int>(table.size()));
+  for (int i = 0; i < tabs->count(); ++i) {
+    const ViewEntry& entry = table[size_t(i)];
+    const QString name = QString::fromStdString(entry.name);
+    EXPECT_EQ(tabs->tabText(i), QString::fromStdString(entry.title));
+    EXPECT_EQ(window().view_names().at(i), name);
+    EXPECT_EQ(window().view(name), tabs->widget(i));
+    ASSERT_TRUE(window().show_view(name));
+    EXPECT_EQ(window().current_view_name(), name);
+  }
 }
 
 TEST_F(MainWindowTest, EachViewRendersANonEmptyImage) {
@@ -121,11 +140,11 @@ TEST_F(MainWindowTest, PlayingAdvancesTheMotionAndLoops) {
 
 TEST_F(MainWindowTest, LessonsSetViewCaptionAndOptions) {
   window().apply_lesson(*find_lesson("basis-deformations"));
-  EXPECT_EQ(window().current_view()->view_name(), "basis");
+  EXPECT_EQ(window().current_view_name(), "basis");
   EXPECT_TRUE(window().caption().contains("px"));
   EXPECT_TRUE(window().basis_view()->playing());
   window().apply_lesson(*find_lesson("flow-of-a-plane"));
-  EXPECT_EQ(window().current_view()->view_name(), "flow");
+  EXPECT_EQ(window().current_view_name(), "flow");
   EXPECT_TRUE(window().flow_view()->display().streamlines);
   EXPECT_FALSE(window().basis_view()->playing());
 }
@@ -177,6 +196,7 @@ TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
   EXPECT_LT(mean_grey(window().flow_view()->render_image()), 110.0);
   window().set_presentation(true);
   EXPECT_GT(mean_grey(window().flow_view()->render_image()), 150.0);
+  window().set_presentation(false);  // the application's fonts are global: leave them normal
 }
 
 }  // namespace

@@ -14,8 +14,10 @@
 #include <fstream>
 
 #include "views/analysis_view.h"
-#include "models/animation_session.h"
+#include "models/animation_model.h"
 #include "adapters/frame_images.h"
+#include "formats/session_file.h"
+#include "views/palette.h"
 #include "models/scene_model.h"
 #include "image_checks.h"
 #include "window_fixture.h"
@@ -29,11 +31,12 @@ constexpr double kRerenderPsnrDb = 18.0;
 class AnimationViewTest : public WindowTest {
  protected:
   AnimationView& animation() { return *window().animation_view(); }
+  AnimationModel& model() { return *window().animation_model(); }
 
   void set_mode(EngineMode mode) {
-    EngineSettings settings = animation().settings();
+    EngineSettings settings = model().settings();
     settings.mode = mode;
-    ASSERT_TRUE(animation().set_settings(settings));
+    ASSERT_TRUE(model().set_settings(settings));
   }
 
   // Compares the two panels, writing both on failure.
@@ -59,6 +62,65 @@ TEST_F(AnimationViewTest, AnimationViewRendersBothPanels) {
   EXPECT_GT(distinct_colours(image), 100);
   EXPECT_GT(distinct_colours(image.copy(image.width() / 2, 0, image.width() / 2, image.height())),
             50);  // the exact panel is not empty
+}
+
+// Every source kind plays through the same model: frames advance one record each, the
+// engine panel shows something, and the level legend counts the drawn layers.
+TEST_F(AnimationViewTest, EachSourceKindPlaysInTheAnimationView) {
+  window().show_view("animation");
+  const SourceChoice sources[] = {{"plane", "", ""},
+                                  {"scene", "four-cubes", "circle"},
+                                  {"scene-shifting", "train-window", "train-sideways"}};
+  for (const SourceChoice& source : sources) {
+    ASSERT_TRUE(model().set_source(source)) << window().message().toStdString();
+    window().play_frames(6);
+    const Animator* animator = model().animator();
+    ASSERT_NE(animator, nullptr) << source.kind;
+    EXPECT_EQ(animator->frame(), 6) << source.kind;
+    EXPECT_EQ(model().history().size(), 7u) << source.kind;
+    EXPECT_GT(model().current().drawn(), 0) << source.kind;
+    const QImage image = animation().render_image();
+    const QImage engine = image.copy(0, 0, animator->camera().width, animator->camera().height);
+    EXPECT_GT(distinct_colours(engine), 50) << source.kind;
+    // The legend in the top-left corner shows a swatch of every level.
+    const QImage legend = engine.copy(0, 0, engine.width() / 3, engine.height() / 3);
+    for (int k = 0; k < kLevelCount; ++k) {
+      const Rgb8 c = level_colour(Level(k));
+      bool found = false;
+      for (int y = 0; y < legend.height() && !found; ++y) {
+        for (int x = 0; x < legend.width() && !found; ++x) found = legend.pixel(x, y) == qRgb(c.r, c.g, c.b);
+      }
+      EXPECT_TRUE(found) << source.kind << " level " << k;
+    }
+  }
+}
+
+// Scene shifting needs planes parallel to the image plane: other scenes are refused with
+// a message saying so, and the source playing before keeps playing.
+TEST_F(AnimationViewTest, SceneShiftingOfATiltedSceneIsRefusedWithAMessage) {
+  window().show_view("animation");
+  ASSERT_TRUE(model().set_source({"scene", "two", "translate"}));
+  EXPECT_FALSE(model().set_source({"scene-shifting", "four-cubes", "circle"}));
+  EXPECT_TRUE(window().message().contains("parallel")) << window().message().toStdString();
+  EXPECT_EQ(model().source().kind, "scene");
+  EXPECT_GT(distinct_colours(animation().render_image()), 50);
+}
+
+// The analysis view reads the animation model alone: no window, no animation view.
+TEST(AnalysisViewAlone, ChartsTheAnimationModelsRun) {
+  SceneModel scene;
+  AnimationModel model(&scene);
+  AnalysisView analysis(&model);
+  analysis.resize(900, 600);
+  analysis.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&analysis, 10000));
+  scene.set_frame(9);
+  EXPECT_EQ(analysis.last_frame(), 9);
+  EXPECT_GT(distinct_colours(analysis.render_image()), 10);
+  ASSERT_TRUE(model.set_source({"scene", "two", "translate"}));
+  scene.set_frame(4);
+  EXPECT_EQ(analysis.last_frame(), 4);
+  EXPECT_EQ(model.history().size(), 5u);
 }
 
 TEST_F(AnimationViewTest, DifferenceAndBlinkRender) {
@@ -108,7 +170,7 @@ TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
 TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
   window().show_view("animation");
   set_mode(EngineMode::kRerender);
-  ASSERT_TRUE(animation().set_source({"scene", "four-cubes", "circle"}));
+  ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
   window().play_frames(8);
   expect_panels_agree("rerender-scene");
 }
@@ -126,11 +188,11 @@ TEST_F(AnimationViewTest, SteppingBackShowsTheSameFrameAsPlayingForward) {
 TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
   QTemporaryDir dir;
   const QString path = dir.filePath("session.json");
-  EngineSettings settings = animation().settings();
+  EngineSettings settings = model().settings();
   settings.mode = EngineMode::kAffine;
   settings.thresholds = {0.5, 1.5, 2.0, 0.75};
-  ASSERT_TRUE(animation().set_settings(settings));
-  ASSERT_TRUE(animation().set_source({"scene", "two", "translate"}));
+  ASSERT_TRUE(model().set_settings(settings));
+  ASSERT_TRUE(model().set_source({"scene", "two", "translate"}));
   animation().set_display(PanelDisplay::kDifference);
   window().model()->set_frame(7);
   window().show_view("analysis");
@@ -139,47 +201,60 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
 
   window().apply_lesson(*find_lesson("flow-of-a-plane"));
   ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
-  EXPECT_EQ(animation().settings().mode, EngineMode::kAffine);
-  EXPECT_EQ(animation().settings().thresholds, settings.thresholds);
-  EXPECT_EQ(animation().source().name, "two");
-  EXPECT_EQ(animation().source().viewer, "translate");
+  EXPECT_EQ(model().settings().mode, EngineMode::kAffine);
+  EXPECT_EQ(model().settings().thresholds, settings.thresholds);
+  EXPECT_EQ(model().source().name, "two");
+  EXPECT_EQ(model().source().viewer, "translate");
   EXPECT_EQ(animation().display(), PanelDisplay::kDifference);
   EXPECT_EQ(window().model()->frame(), 7);
-  EXPECT_EQ(window().current_view()->view_name(), "analysis");
+  EXPECT_EQ(window().current_view_name(), "analysis");
 }
 
 TEST_F(AnimationViewTest, BrokenSessionAndSceneFilesChangeNothingAndShowAnError) {
   QTemporaryDir dir;
   const QString broken = dir.filePath("broken.json");
   std::ofstream(broken.toStdString()) << "{ \"format\": \"oflab-scene\", \"polygons\": [1, ";
-  const SourceChoice before = animation().source();
-  EXPECT_FALSE(animation().set_source({"scene", broken.toStdString(), "circle"}));
+  const SourceChoice before = model().source();
+  EXPECT_FALSE(model().set_source({"scene", broken.toStdString(), "circle"}));
   EXPECT_FALSE(window().message().isEmpty());
-  EXPECT_TRUE(animation().source() == before);
+  EXPECT_TRUE(model().source() == before);
   EXPECT_FALSE(window().load_session(broken));
   EXPECT_TRUE(window().message().contains("broken.json")) << window().message().toStdString();
-  EXPECT_TRUE(animation().source() == before);
+  EXPECT_TRUE(model().source() == before);
+}
+
+TEST_F(AnimationViewTest, SessionWithAnUnknownSourceKindIsRefusedAndChangesNothing) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("movie.json");
+  Session session;
+  session.source_kind = "movie";
+  session.source_name = "loop";
+  write_session_file(path.toStdString(), session, false);
+  const SourceChoice before = model().source();
+  EXPECT_FALSE(window().load_session(path));
+  EXPECT_TRUE(window().message().contains("movie")) << window().message().toStdString();
+  EXPECT_TRUE(model().source() == before);
 }
 
 TEST_F(AnimationViewTest, ImpossibleThresholdIsRefused) {
-  EngineSettings settings = animation().settings();
+  EngineSettings settings = model().settings();
   const EngineSettings kept = settings;
   settings.thresholds[1] = -1.0;
-  EXPECT_FALSE(animation().set_settings(settings));
-  EXPECT_EQ(animation().settings().thresholds, kept.thresholds);
+  EXPECT_FALSE(model().set_settings(settings));
+  EXPECT_EQ(model().settings().thresholds, kept.thresholds);
   EXPECT_FALSE(window().message().isEmpty());
 }
 
 TEST_F(AnimationViewTest, NewLessonsSetUpTheirViews) {
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
-  EXPECT_EQ(animation().settings().mode, EngineMode::kAffine);
-  EXPECT_EQ(window().current_view()->view_name(), "animation");
+  EXPECT_EQ(model().settings().mode, EngineMode::kAffine);
+  EXPECT_EQ(window().current_view_name(), "animation");
   window().apply_lesson(*find_lesson("occlusion"));
-  EXPECT_EQ(animation().source().kind, "scene");
+  EXPECT_EQ(model().source().kind, "scene");
   EXPECT_GT(distinct_colours(animation().render_image()), 50);
   window().apply_lesson(*find_lesson("why-errors-accumulate"));
-  EXPECT_EQ(window().current_view()->view_name(), "analysis");
-  EXPECT_EQ(animation().source().kind, "plane");
+  EXPECT_EQ(window().current_view_name(), "analysis");
+  EXPECT_EQ(model().source().kind, "plane");
 }
 
 }  // namespace

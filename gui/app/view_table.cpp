@@ -1,0 +1,37 @@
+#include "app/view_table.h"
+
+#include "views/analysis_view.h"
+#include "views/animation_view.h"
+#include "views/basis_view.h"
+#include "views/flow_view.h"
+#include "views/slices_view.h"
+
+namespace oflab {
+
+const std::vector<ViewEntry>& view_table() {
+  static const std::vector<ViewEntry> table = {
+      {"flow", "Flow field", [](const ViewModels& m) -> ViewPage* { return new FlowView(m.scene); }},
+      {"basis", "Basis deformations", [](const ViewModels& m) -> ViewPage* { return new BasisView(m.scene); }},
+      {"animation", "Animation, side by side",
+       [](const ViewModels& m) -> ViewPage* { return new AnimationView(m.animation); }},
+      {"analysis", "Analysis",
+       [](const ViewModels& m) -> ViewPage* { return new AnalysisView(m.animation); }},
+      {"slices", "Scene shifting", [](const ViewModels&) -> ViewPage* { return new SlicesView; }},
+  };
+  return table;
+}
+
+std::vector<std::string> view_table_names() {
+  std::vector<std::string> names;
+  for (const ViewEntry& entry : view_table()) names.push_back(entry.name);
+  return names;
+}
+
+const ViewEntry* find_view_entry(const std::string& name) {
+  for (const ViewEntry& entry : view_table()) {
+    if (entry.name == name) return &entry;
+  }
+  return nullptr;
+}
+
+}  // namespace oflab

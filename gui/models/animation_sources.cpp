@@ -1,0 +1,122 @@
+#include "models/animation_sources.h"
+
+#include <QImage>
+#include <cstring>
+#include <ostream>
+
+#include "formats/datasets.h"
+#include "formats/scene_file.h"
+#include "formats/script_file.h"
+#include "formats/viewer_script_file.h"
+#include "models/scene_model.h"
+#include "runs/source_kinds.h"
+
+namespace oflab {
+namespace {
+
+constexpr const char* kOpticFlowTitle = "optic-flow animation (%1)";
+
+Image image_from_qimage(const QImage& texture) {
+  const QImage rgba = texture.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
+  Image image(rgba.width(), rgba.height());
+  for (int y = 0; y < rgba.height(); ++y) {
+    std::memcpy(image.row(y), rgba.constScanLine(y), size_t(rgba.width()) * 4);
+  }
+  return image;
+}
+
+// The run source of a plane kind: the scene panel's texture moved by a motion script.
+RunSource plane_source(MotionScript script, const SceneModel& panel,
+                       const EngineSettings& settings) {
+  RunSource source;
+  source.script = std::move(script);
+  source.texture = image_from_qimage(panel.texture());
+  source.settings.engine = settings;
+  return source;
+}
+
+// The run source of a scene kind: a scene and the viewer script walking through it. Scene
+// shifting keeps its own tolerance (SceneShiftingSettings::epsilon_px, as `oflab-cli
+// animate` does by default) and takes the sampling of the engine settings.
+RunSource scene_source(const SourceChoice& choice, const EngineSettings& settings) {
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(choice.name)));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path(choice.viewer));
+  source.settings.engine = settings;
+  source.shifting.sampling = settings.sampling;
+  return source;
+}
+
+using ReadSource = RunSource (*)(const SourceChoice&, const SceneModel&, const EngineSettings&);
+
+// A GUI kind playing analysis kind `run_kind` (analysis/runs/source_kinds.h) from the run
+// source `read` gives.
+AnimationSourceKind kind(std::string name, std::string label, std::string panel_title,
+                         bool follows_scene_panel, std::string default_viewer,
+                         std::function<std::vector<std::string>()> shipped_names,
+                         const char* run_kind, ReadSource read) {
+  AnimationSourceKind k{std::move(name), std::move(label), std::move(panel_title),
+                        follows_scene_panel, !default_viewer.empty(), std::move(default_viewer),
+                        std::move(shipped_names), nullptr, nullptr};
+  const SourceKind& run = source_kind(run_kind);
+  k.make = [&run, read](const SourceChoice& choice, const SceneModel& panel,
+                        const EngineSettings& settings) {
+    return run.make(read(choice, panel, settings), false);
+  };
+  k.write_csv = [&run, read](const SourceChoice& choice, const SceneModel& panel,
+                             const EngineSettings& settings, std::ostream& out) {
+    PlayOptions options;
+    options.baseline = false;
+    run.write_csv(out, run.play(read(choice, panel, settings), options));
+  };
+  return k;
+}
+
+std::vector<AnimationSourceKind> make_kinds() {
+  const auto none = [] { return std::vector<std::string>{""}; };
+  const ReadSource panel = [](const SourceChoice&, const SceneModel& p, const EngineSettings& s) {
+    return plane_source(p.as_script(), p, s);
+  };
+  const ReadSource script = [](const SourceChoice& c, const SceneModel& p, const EngineSettings& s) {
+    return plane_source(read_script_file(resolve_script_path(c.name)), p, s);
+  };
+  const ReadSource scene = [](const SourceChoice& c, const SceneModel&, const EngineSettings& s) {
+    return scene_source(c, s);
+  };
+  return {kind("plane", "Plane of the scene panel", kOpticFlowTitle, true, "", none, "plane", panel),
+          kind("script", "Plane script: %1", kOpticFlowTitle, false, "", shipped_script_names,
+               "plane", script),
+          kind("scene", "Scene: %1", kOpticFlowTitle, false, "circle", shipped_scene_names, "scene",
+               scene),
+          kind("scene-shifting", "Scene shifting: %1", "scene shifting (slices)", false,
+               "train-sideways", shipped_scene_names, "scene-shifting", scene)};
+}
+
+}  // namespace
+
+const std::vector<AnimationSourceKind>& animation_source_kinds() {
+  static const std::vector<AnimationSourceKind> kinds = make_kinds();
+  return kinds;
+}
+
+const AnimationSourceKind* find_animation_source_kind(const std::string& name) {
+  for (const AnimationSourceKind& kind : animation_source_kinds()) {
+    if (kind.name == name) return &kind;
+  }
+  return nullptr;
+}
+
+std::string fill_pattern(const std::string& pattern, const std::string& value) {
+  const size_t at = pattern.find("%1");
+  return at == std::string::npos ? pattern : pattern.substr(0, at) + value + pattern.substr(at + 2);
+}
+
+std::string animation_source_kind_names() {
+  std::string names;
+  for (const AnimationSourceKind& kind : animation_source_kinds()) {
+    names += (names.empty() ? "" : ", ") + kind.name;
+  }
+  return names;
+}
+
+}  // namespace oflab
