@@ -25,9 +25,9 @@ namespace fs = std::filesystem;
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
                                              "--no-skip-hidden"};
 
-void print_summary(const AnimationSummary& s, const std::string& script, EngineMode mode,
-                   std::ostream& out) {
-  out << "script " << script << ", mode " << engine_mode_name(mode) << ", " << s.frames
+void print_summary(const AnimationSummary& s, const std::string& script,
+                   const ReusePolicy& policy, std::ostream& out) {
+  out << "script " << script << ", mode " << policy.name << ", " << s.frames
       << " frames\n";
   for (int l = 0; l < kLevelCount; ++l) {
     out << "  " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
@@ -80,12 +80,12 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (a.has("--json")) {
     nlohmann::json j = summary_json(run.summary);
     j["script"] = name;
-    j["mode"] = engine_mode_name(options.settings.mode);
+    j["mode"] = options.settings.policy->name;
     j["delta"] = delta_policy_name(options.settings.delta);
     j["thresholds"] = options.settings.thresholds;
     out << j.dump(2) << "\n";
   } else {
-    print_summary(run.summary, name, options.settings.mode, out);
+    print_summary(run.summary, name, *options.settings.policy, out);
   }
   return 0;
 }

@@ -31,10 +31,10 @@ SceneSettings read_scene_settings(const CliArgs& a) {
 }
 
 void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
-                         const std::string& script, EngineMode mode, std::ostream& out) {
+                         const std::string& script, const ReusePolicy& policy, std::ostream& out) {
   const long total = static_cast<long>(s.polygons) * s.frames;
   out << "scene " << scene << " (" << s.polygons << " polygons; BSP " << s.bsp.nodes << " nodes, "
-      << s.bsp.splits << " splits), viewer script " << script << ", mode " << engine_mode_name(mode)
+      << s.bsp.splits << " splits), viewer script " << script << ", mode " << policy.name
       << ", " << s.frames << " frames\n";
   print_polygon_levels(s, out);
   out << "  culled " << s.culled() << " (" << percent(s.culled(), total) << "% of " << total
@@ -70,14 +70,14 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   nlohmann::json j = scene_summary_json(result.summary);
   j["scene"] = scene.name;
   j["script"] = script.name;
-  j["mode"] = engine_mode_name(options.settings.engine.mode);
+  j["mode"] = options.settings.engine.policy->name;
   j["thresholds"] = options.settings.engine.thresholds;
   j["skip_hidden"] = options.settings.skip_hidden;
   if (!dir.empty()) write_scene_outputs(dir, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result.summary, scene.name, script.name, options.settings.engine.mode, out);
+    print_scene_summary(result.summary, scene.name, script.name, *options.settings.engine.policy, out);
   }
   return 0;
 }

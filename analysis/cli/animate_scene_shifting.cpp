@@ -54,12 +54,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (!(options.settings.epsilon_px > 0.0) || !std::isfinite(options.settings.epsilon_px)) {
     throw UsageError("--epsilon: must be a positive number of pixels");
   }
-  const std::string sampling = a.text_or("--sampling", "nearest");
-  if (sampling == "bilinear") {
-    options.settings.sampling = Sampling::kBilinear;
-  } else if (sampling != "nearest") {
-    throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
-  }
+  options.settings.sampling = read_sampling(a);
   const RunOutput output = read_run_output(a, err);
   output.apply_to(options);
   const std::string& dir = output.dir;  // empty without --out

@@ -279,9 +279,8 @@ Chart four_cubes_chart(const SceneMeasurement& m) {
   levels.title = "polygons per update level";
   levels.x_label = "frame";
   levels.y_label = "polygons";
-  static const char* names[] = {"none", "translate", "affine", "perspective", "re-render"};
   for (int l = 0; l < kLevelCount; ++l) {
-    ChartSeries s{names[l], x, {}, SeriesStyle::kLine, chart_palette(l + 3)};
+    ChartSeries s{level_title(Level(l)), x, {}, SeriesStyle::kLine, chart_palette(l + 3)};
     for (const SceneFrameReport& r : m.run.reports) s.y.push_back(r.levels[l]);
     levels.series.push_back(s);
   }

@@ -86,7 +86,7 @@ AnimationRun run_animation(const MotionScript& script, const Layer& texture,
   s.median_frame_ms = median_of(times);
   if (options.run_baseline) {
     EngineSettings baseline = options.settings;
-    baseline.mode = EngineMode::kRerender;
+    baseline.policy = &reuse_policy("rerender");
     std::vector<double> baseline_times;
     play(script, texture, baseline, frames, [&](int, const FrameReport& r, const PlaneAnimator&) {
       baseline_times.push_back(r.time_ms);

@@ -80,7 +80,7 @@ SceneRun run_scene_animation(const Scene& scene, const ViewerScript& script,
   std::unique_ptr<SceneAnimator> exact;
   if (options.run_baseline) {
     SceneSettings settings = options.settings;
-    settings.engine.mode = EngineMode::kRerender;
+    settings.engine.policy = &reuse_policy("rerender");
     exact = std::make_unique<SceneAnimator>(scene, script.camera, settings);
   }
   std::unique_ptr<VtkSceneRenderer> conventional;

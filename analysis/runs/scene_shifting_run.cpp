@@ -73,7 +73,7 @@ SceneShiftingRun run_scene_shifting(const Scene& scene, const ViewerScript& scri
   std::unique_ptr<SceneShiftingRenderer> exact;
   if (options.run_baseline) {
     SceneShiftingSettings always = settings;
-    always.always_rebuild = true;
+    always.policy = &reuse_policy("rerender");
     exact = std::make_unique<SceneShiftingRenderer>(scene, script.camera, always);
   }
   const int polygons = static_cast<int>(scene.polygons.size());

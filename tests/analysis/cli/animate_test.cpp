@@ -26,10 +26,10 @@ namespace fs = std::filesystem;
 // budget of the level in force (the estimates' slack at second order in time).
 constexpr double kEstimateAllowancePx = 0.25;
 
-AnimationRun run_script(const std::string& name, EngineMode mode) {
+AnimationRun run_script(const std::string& name, const std::string& policy) {
   static const Layer texture = make_layer(read_image(default_texture_path()));
   AnimationOptions o;
-  o.settings.mode = mode;
+  o.settings.policy = &reuse_policy(policy);
   o.measure_psnr = false;
   o.run_baseline = false;
   return run_animation(read_script_file(resolve_script_path(name)), texture, o);
@@ -38,13 +38,13 @@ AnimationRun run_script(const std::string& name, EngineMode mode) {
 int count(const AnimationRun& r, Level l) { return r.summary.levels[static_cast<int>(l)]; }
 
 TEST(Experiment1, StationaryIsAllNoUpdate) {
-  const AnimationRun r = run_script("stationary", EngineMode::kPerspective);
+  const AnimationRun r = run_script("stationary", "perspective");
   EXPECT_EQ(count(r, Level::kNone), r.summary.frames - 1);
   EXPECT_EQ(r.reports[0].level, Level::kRerender);
 }
 
 TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
-  const AnimationRun r = run_script("translation-1", EngineMode::kPerspective);
+  const AnimationRun r = run_script("translation-1", "perspective");
   EXPECT_EQ(count(r, Level::kNone) + count(r, Level::kTranslate), r.summary.frames - 1);
   for (size_t i = 2; i < r.reports.size(); ++i) {
     EXPECT_NE(r.reports[i].level, r.reports[i - 1].level) << "frame " << i;
@@ -52,7 +52,7 @@ TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
 }
 
 TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
-  const AnimationRun r = run_script("zoom", EngineMode::kPerspective);
+  const AnimationRun r = run_script("zoom", "perspective");
   EXPECT_GE(count(r, Level::kNone) + count(r, Level::kAffine), 0.8 * r.summary.frames);
   EXPECT_GT(count(r, Level::kNone), 0);
   EXPECT_GT(count(r, Level::kAffine), 0);
@@ -60,7 +60,7 @@ TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
 }
 
 TEST(Experiment1, RotationNeedsAffineWarpsAndRerenders) {
-  const AnimationRun r = run_script("rotation", EngineMode::kPerspective);
+  const AnimationRun r = run_script("rotation", "perspective");
   EXPECT_GT(count(r, Level::kAffine), r.summary.frames / 2);
   EXPECT_GT(count(r, Level::kRerender), 5);
   EXPECT_EQ(count(r, Level::kPerspective), 0);
@@ -68,7 +68,7 @@ TEST(Experiment1, RotationNeedsAffineWarpsAndRerenders) {
 
 TEST(Experiment1, LoopUsesPerspectiveNearTheViewerAndCheapLevelsFarAway) {
   const MotionScript s = read_script_file(resolve_script_path("loop"));
-  const AnimationRun r = run_script("loop", EngineMode::kPerspective);
+  const AnimationRun r = run_script("loop", "perspective");
   EXPECT_GT(count(r, Level::kPerspective), 0);
   double persp_depth = 0, cheap_depth = 0;
   int persp = 0, cheap = 0;
@@ -84,13 +84,13 @@ TEST(Experiment1, LoopUsesPerspectiveNearTheViewerAndCheapLevelsFarAway) {
 TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
   for (const char* name : {"stationary", "translation-1", "translation-2", "zoom",
                                   "zoom-rotation", "rotation", "loop"}) {
-    for (EngineMode mode : {EngineMode::kPerspective, EngineMode::kAffine, EngineMode::kExact,
-                            EngineMode::kRerender}) {
+    for (const ReusePolicy& policy : reuse_policies()) {
+      const std::string mode = policy.name;
       const AnimationRun r = run_script(name, mode);
       for (const FrameReport& f : r.reports) {
         if (!f.visible) continue;
         EXPECT_LE(f.measured_error_px, 1.0 + kEstimateAllowancePx + f.affine_view_error_px)
-            << name << " " << engine_mode_name(mode) << " frame " << f.frame;
+            << name << " " << mode << " frame " << f.frame;
       }
     }
   }
@@ -98,7 +98,7 @@ TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
 
 TEST(Experiment1, ExactModeKeepsNoModelErrorAndNeverNeedsTheHigherOrderBudget) {
   for (const char* name : {"translation-2", "zoom-rotation", "loop"}) {
-    const AnimationRun r = run_script(name, EngineMode::kExact);
+    const AnimationRun r = run_script(name, "exact");
     for (const FrameReport& f : r.reports) {
       EXPECT_EQ(f.accumulated[3], 0.0);
       if (f.frame > 0 && f.level == Level::kRerender) {
