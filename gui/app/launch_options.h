@@ -38,8 +38,9 @@ struct LaunchOptions {
   // --scene NAME|FILE: a multi-plane scene for the animation and analysis views, checked.
   std::string scene;
   std::string viewer_script;
-  // --mode perspective|affine|exact|rerender: the animation engine's mode.
-  std::optional<EngineMode> mode;
+  // --mode NAME: the animation engine's reuse policy (core/engine/reuse_policy.h); null
+  // when not given.
+  const ReusePolicy* mode = nullptr;
   // --animation-show side-by-side|difference|blink: how the animation view shows its panels.
   std::string animation_show;
   bool presentation = false;  // start in presentation mode

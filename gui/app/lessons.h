@@ -24,11 +24,11 @@ struct Lesson {
   bool play_basis = false;   // animate the gallery's deformation amount
   bool play_motion = false;  // play the scene's motion
   // What the animation and analysis views play (gui/views/animation_controls.h SourceChoice:
-  // kind "plane", "script" or "scene") and in which engine mode.
+  // kind "plane", "script" or "scene") and with which reuse policy (core/engine/reuse_policy.h).
   std::string animation_kind = "plane";
   std::string animation_name;
   std::string animation_viewer;
-  EngineMode mode = EngineMode::kPerspective;
+  const ReusePolicy* mode = &default_reuse_policy();
 };
 
 // Every preset, in teaching order.

@@ -261,7 +261,7 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   basis_view_->set_basis(lesson.basis);
   basis_view_->set_playing(lesson.play_basis);
   EngineSettings settings = animation_view_->settings();
-  settings.mode = lesson.mode;
+  settings.policy = lesson.mode;
   animation_view_->set_settings(settings);
   animation_view_->set_source(
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});

@@ -78,16 +78,17 @@ PlaneScene read_plane(const Reader& r, const json& j) {
 
 EngineSettings read_settings(const Reader& r, const json& j) {
   EngineSettings s;
-  if (!parse_engine_mode(r.text(j, "mode"), &s.mode)) r.fail("mode", "unknown engine mode");
+  s.policy = find_reuse_policy(r.text(j, "mode"));
+  if (!s.policy) r.fail("mode", "unknown reuse policy (one of " + reuse_policy_names() + ")");
   const auto t = r.numbers(j, "thresholds", kTermCount);
   for (int k = 0; k < kTermCount; ++k) {
     if (t[size_t(k)] < 0) r.fail("thresholds", "must not be negative");
     s.thresholds[size_t(k)] = t[size_t(k)];
   }
   if (!parse_delta_policy(r.text(j, "delta"), &s.delta)) r.fail("delta", "unknown Delta policy");
-  const std::string sampling = r.text(j, "sampling");
-  if (sampling != "nearest" && sampling != "bilinear") r.fail("sampling", "nearest or bilinear");
-  s.sampling = sampling == "nearest" ? Sampling::kNearest : Sampling::kBilinear;
+  if (!parse_sampling(r.text(j, "sampling"), &s.sampling)) {
+    r.fail("sampling", "one of " + sampling_name_list());
+  }
   return s;
 }
 
@@ -109,11 +110,11 @@ std::string session_to_json(const Session& s) {
   j["texture"] = s.texture;
   j["animation"] = {
       {"source", {{"kind", s.source_kind}, {"name", s.source_name}, {"viewer", s.viewer_script}}},
-      {"mode", engine_mode_name(s.settings.mode)},
+      {"mode", s.settings.policy->name},
       {"thresholds", json::array({s.settings.thresholds[0], s.settings.thresholds[1],
                                   s.settings.thresholds[2], s.settings.thresholds[3]})},
       {"delta", delta_policy_name(s.settings.delta)},
-      {"sampling", s.settings.sampling == Sampling::kNearest ? "nearest" : "bilinear"},
+      {"sampling", sampling_name(s.settings.sampling)},
       {"display", s.display}};
   j["frame"] = s.frame;
   j["view"] = s.view;

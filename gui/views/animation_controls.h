@@ -1,8 +1,9 @@
 // The animation view's control bar: what plays (the single plane of the scene panel, a
-// shipped motion script, or a shipped multi-plane scene with a viewer script), the engine
-// mode (with a one-click affine/perspective switch), the per-level thresholds, the Delta
-// policy, the sampling, and how the two panels are shown. It only edits values; the view
-// applies them and puts them back when it refuses them.
+// shipped motion script, or a shipped multi-plane scene with a viewer script), the engine's
+// reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
+// affine/perspective switch), the per-level thresholds, the Delta policy, the sampling, and
+// how the two panels are shown. It only edits values; the view applies them and puts them
+// back when it refuses them.
 #pragma once
 
 #include <QWidget>

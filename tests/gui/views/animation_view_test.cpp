@@ -10,10 +10,13 @@
 // plane scores far below (a one-pixel shift of the whole frame scores under 14 dB).
 #include "views/animation_view.h"
 
+#include <QComboBox>
 #include <QTemporaryDir>
 #include <fstream>
 
 #include "views/analysis_view.h"
+#include "views/frame_inspector.h"
+#include "app/session_file.h"
 #include "models/animation_session.h"
 #include "adapters/frame_images.h"
 #include "models/scene_model.h"
@@ -30,9 +33,9 @@ class AnimationViewTest : public WindowTest {
  protected:
   AnimationView& animation() { return *window().animation_view(); }
 
-  void set_mode(EngineMode mode) {
+  void set_mode(const std::string& policy) {
     EngineSettings settings = animation().settings();
-    settings.mode = mode;
+    settings.policy = &reuse_policy(policy);
     ASSERT_TRUE(animation().set_settings(settings));
   }
 
@@ -100,14 +103,14 @@ TEST_F(AnimationViewTest, ClickingAChartJumpsToThatFrame) {
 
 TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
   window().show_view("animation");
-  set_mode(EngineMode::kRerender);
+  set_mode("rerender");
   window().play_frames(8);
   expect_panels_agree("rerender-plane");
 }
 
 TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
   window().show_view("animation");
-  set_mode(EngineMode::kRerender);
+  set_mode("rerender");
   ASSERT_TRUE(animation().set_source({"scene", "four-cubes", "circle"}));
   window().play_frames(8);
   expect_panels_agree("rerender-scene");
@@ -127,7 +130,7 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
   QTemporaryDir dir;
   const QString path = dir.filePath("session.json");
   EngineSettings settings = animation().settings();
-  settings.mode = EngineMode::kAffine;
+  settings.policy = &reuse_policy("affine");
   settings.thresholds = {0.5, 1.5, 2.0, 0.75};
   ASSERT_TRUE(animation().set_settings(settings));
   ASSERT_TRUE(animation().set_source({"scene", "two", "translate"}));
@@ -139,7 +142,7 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
 
   window().apply_lesson(*find_lesson("flow-of-a-plane"));
   ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
-  EXPECT_EQ(animation().settings().mode, EngineMode::kAffine);
+  EXPECT_STREQ(animation().settings().policy->name, "affine");
   EXPECT_EQ(animation().settings().thresholds, settings.thresholds);
   EXPECT_EQ(animation().source().name, "two");
   EXPECT_EQ(animation().source().viewer, "translate");
@@ -172,7 +175,7 @@ TEST_F(AnimationViewTest, ImpossibleThresholdIsRefused) {
 
 TEST_F(AnimationViewTest, NewLessonsSetUpTheirViews) {
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
-  EXPECT_EQ(animation().settings().mode, EngineMode::kAffine);
+  EXPECT_STREQ(animation().settings().policy->name, "affine");
   EXPECT_EQ(window().current_view()->view_name(), "animation");
   window().apply_lesson(*find_lesson("occlusion"));
   EXPECT_EQ(animation().source().kind, "scene");
@@ -180,6 +183,62 @@ TEST_F(AnimationViewTest, NewLessonsSetUpTheirViews) {
   window().apply_lesson(*find_lesson("why-errors-accumulate"));
   EXPECT_EQ(window().current_view()->view_name(), "analysis");
   EXPECT_EQ(animation().source().kind, "plane");
+}
+
+TEST_F(AnimationViewTest, ModeBoxListsTheReusePoliciesAndFollowsTheSettings) {
+  auto* box = animation().findChild<QComboBox*>(QStringLiteral("animation_mode"));
+  ASSERT_NE(box, nullptr);
+  ASSERT_EQ(box->count(), int(reuse_policies().size()));
+  for (int i = 0; i < box->count(); ++i) {
+    EXPECT_EQ(box->itemText(i).toStdString(), reuse_policies()[size_t(i)].name);
+  }
+  set_mode("exact");
+  EXPECT_EQ(box->currentText().toStdString(), "exact");
+  EXPECT_STREQ(animation().settings().policy->name, "exact");
+}
+
+TEST(FrameInspector, MarksTheLevelsThePolicyDoesNotAllow) {
+  FrameRecord record;
+  record.has_books = true;
+  record.plane.frame = 3;
+  record.plane.level = Level::kRerender;
+  EngineSettings settings;
+  settings.policy = &reuse_policy("affine");
+  const std::string affine = explain_frame(record, settings).toStdString();
+  EXPECT_NE(affine.find("perspective: leaves 0.00 px &le; 1.00 px (not allowed by the affine "
+                        "policy)"),
+            std::string::npos)
+      << affine;
+  EXPECT_EQ(affine.find("affine: leaves 0.00 px &le; 1.00 px (not allowed"), std::string::npos);
+  settings.policy = &reuse_policy("perspective");
+  EXPECT_EQ(explain_frame(record, settings).toStdString().find("not allowed"), std::string::npos);
+}
+
+TEST(SessionFile, PolicyAndSamplingRoundTripByNameAndUnknownNamesAreRefused) {
+  Session session;
+  session.plane = default_demo_scene();
+  session.settings.policy = &reuse_policy("exact");
+  session.settings.sampling = Sampling::kBilinear;
+  const std::string text = session_to_json(session);
+  const Session back = parse_session(text, "test");
+  EXPECT_EQ(back.settings.policy, &reuse_policy("exact"));
+  EXPECT_EQ(back.settings.sampling, Sampling::kBilinear);
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const size_t at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? t : t.replace(at, from.size(), to);
+  };
+  try {
+    parse_session(replaced("\"mode\": \"exact\"", "\"mode\": \"bogus\""), "test");
+    ADD_FAILURE() << "an unknown policy was accepted";
+  } catch (const SessionError& e) {
+    EXPECT_NE(std::string(e.what()).find("'mode'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(reuse_policy_names()), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(
+      parse_session(replaced("\"sampling\": \"bilinear\"", "\"sampling\": \"cubic\""), "test"),
+      SessionError);
 }
 
 }  // namespace
