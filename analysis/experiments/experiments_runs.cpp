@@ -158,6 +158,14 @@ std::string level_mix_reading(const std::array<double, kLevelCount>& published,
   return text.empty() ? "level mix within 5 points" : text;
 }
 
+std::vector<std::string> level_header(const std::string& first,
+                                      const std::vector<std::string>& rest) {
+  std::vector<std::string> header = {first};
+  for (int l = 0; l < kLevelCount; ++l) header.push_back(level_title(Level(l)));
+  header.insert(header.end(), rest.begin(), rest.end());
+  return header;
+}
+
 std::string fixed(double value, int decimals) {
   if (!std::isfinite(value)) return "n/a";
   std::ostringstream s;

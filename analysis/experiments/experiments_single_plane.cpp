@@ -152,9 +152,8 @@ ReportTable comparison_table(const Experiment1Result& result) {
   t.caption =
       "Experiment 1: percent of frames per update level (frames after the first) and "
       "time saved against re-rendering every frame, thresholds 1 px";
-  t.header = {"script / source", "none",         "translate",  "affine",
-              "perspective",     "re-render",    "time saved", "work saved",
-              "max error px",    "mean PSNR dB", "reading"};
+  t.header = level_header("script / source", {"time saved", "work saved", "max error px",
+                                              "mean PSNR dB", "reading"});
   for (const Experiment1Script& s : result.scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
     if (!pub) throw std::logic_error("no published row for " + s.script);
@@ -186,17 +185,9 @@ ReportTable cost_table(const Experiment1Result& result) {
       "Cost of the frames at each level relative to re-rendering the same frames (engine time "
       "over them / re-render baseline time over them), perspective mode, and the median "
       "per-frame flow of each term";
-  t.header = {"script / source",
-              "none",
-              "translate",
-              "affine",
-              "perspective",
-              "re-render",
-              "re-render median ms",
-              "flow: translation px",
-              "flow: first order px",
-              "flow: second order px",
-              "flow: higher order px"};
+  t.header = level_header("script / source",
+                          {"re-render median ms", "flow: translation px", "flow: first order px",
+                           "flow: second order px", "flow: higher order px"});
   t.rows.push_back({"dissertation (6.4.8, A.2)", "0.000", fixed(kPublishedRelativeCost[1], 3),
                     fixed(kPublishedRelativeCost[2], 3), "1.000", "1.000", "-", "-", "-", "-",
                     "-"});

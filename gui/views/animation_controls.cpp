@@ -18,8 +18,6 @@ namespace {
 constexpr DeltaPolicy kDeltas[] = {DeltaPolicy::kDissertation, DeltaPolicy::kOne,
                                    DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
                                    DeltaPolicy::kFourthRootAbsDet};
-constexpr const char* kThresholdLabels[kTermCount] = {"none", "translate", "affine",
-                                                     "perspective"};
 
 QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
@@ -142,7 +140,7 @@ QWidget* AnimationControls::make_engine_row() {
     thresholds_[k]->setRange(0.0, 100.0);
     thresholds_[k]->setDecimals(2);
     thresholds_[k]->setSingleStep(0.25);
-    thresholds_[k]->setToolTip(tr("Threshold of level %1, pixels").arg(kThresholdLabels[k]));
+    thresholds_[k]->setToolTip(tr("Threshold of level %1, pixels").arg(level_name(Level(k))));
     thresholds_[k]->setKeyboardTracking(false);
     thresholds->addWidget(thresholds_[k]);
     connect(thresholds_[k], QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
