@@ -25,10 +25,9 @@ namespace fs = std::filesystem;
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
                                              "--no-skip-hidden"};
 
-void print_summary(const AnimationSummary& s, const std::string& script,
-                   const ReusePolicy& policy, std::ostream& out) {
-  out << "script " << script << ", mode " << policy.name << ", " << s.frames
-      << " frames\n";
+void print_summary(const AnimationSummary& s, const std::string& script, const ReusePolicy& policy,
+                   std::ostream& out) {
+  out << "script " << script << ", mode " << policy.name << ", " << s.frames << " frames\n";
   for (int l = 0; l < kLevelCount; ++l) {
     out << "  " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
         << std::setw(6) << s.levels[l] << " frames (" << std::fixed << std::setprecision(1)

@@ -34,8 +34,8 @@ void print_scene_summary(const SceneRunSummary& s, const std::string& scene,
                          const std::string& script, const ReusePolicy& policy, std::ostream& out) {
   const long total = static_cast<long>(s.polygons) * s.frames;
   out << "scene " << scene << " (" << s.polygons << " polygons; BSP " << s.bsp.nodes << " nodes, "
-      << s.bsp.splits << " splits), viewer script " << script << ", mode " << policy.name
-      << ", " << s.frames << " frames\n";
+      << s.bsp.splits << " splits), viewer script " << script << ", mode " << policy.name << ", "
+      << s.frames << " frames\n";
   print_polygon_levels(s, out);
   out << "  culled " << s.culled() << " (" << percent(s.culled(), total) << "% of " << total
       << " polygon-frames: back-facing " << s.back_facing << ", outside the frustum "
@@ -77,7 +77,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result.summary, scene.name, script.name, *options.settings.engine.policy, out);
+    print_scene_summary(result.summary, scene.name, script.name, *options.settings.engine.policy,
+                        out);
   }
   return 0;
 }

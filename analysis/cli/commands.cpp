@@ -7,6 +7,29 @@
 
 namespace oflab {
 
+namespace {
+
+// `animate --help`: the --mode and --sampling values come from their registries.
+std::string animate_usage() {
+  std::string usage = "oflab-cli animate --script NAME|FILE [--texture FILE]\n";
+  usage += "               [--mode " + reuse_policy_names("|") + "]\n";
+  usage +=
+      "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
+      "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
+  usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
+  usage +=
+      "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
+      "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
+      "               [--compare-conventional] [--near Z] [--guard-band G]\n"
+      "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
+      "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
+      "               [--epsilon PX] [--sampling, --frames, --out, --json, --quiet as above]\n"
+      "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
+  return usage;
+}
+
+}  // namespace
+
 const std::vector<Command>& all_commands() {
   static const std::vector<Command> commands = {
       {"flow", "instantaneous optic flow of a moving plane: coefficients, bases, homographies",
@@ -15,19 +38,7 @@ const std::vector<Command>& all_commands() {
        "               --plane-size SW SH] [--dt T] [--motion screw|rt|centre] [--json]",
        run_flow_command},
       {"animate", "play a motion script through the engine: levels, errors, savings",
-       "oflab-cli animate --script NAME|FILE [--texture FILE]\n"
-       "               [--mode " + reuse_policy_names("|") + "]\n"
-       "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
-       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n"
-       "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n"
-       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
-       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
-       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
-       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
-       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
-       "               [--epsilon PX] [--sampling, --frames, --out, --json, --quiet as above]\n"
-       "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting",
-       run_animate_command},
+       animate_usage(), run_animate_command},
       {"policies", "list the engine's reuse policies (the values of animate --mode)",
        "oflab-cli policies [--json]", run_policies_command},
       {"make-butterfly", "write the bundled butterfly texture as a PNG",

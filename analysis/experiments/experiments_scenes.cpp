@@ -176,10 +176,10 @@ ReportTable four_cubes_table(const Experiment2Result& r) {
   t.caption =
       "Four cubes (20 polygons), compound script: percent of drawn polygons per update level "
       "over all frames (section 6.7.3)";
-  t.header = level_header("source", {"less than perspective",
-                                     "time saved vs exact re-render (frames after the first)",
-                                     "VTK time / engine time", "polygon-frames culled / hidden",
-                                     "max error px", "reading"});
+  t.header = level_header(
+      "source",
+      {"less than perspective", "time saved vs exact re-render (frames after the first)",
+       "VTK time / engine time", "polygon-frames culled / hidden", "max error px", "reading"});
   std::vector<std::string> pub_row = {"dissertation"};
   for (double v : published_four_cubes_levels()) pub_row.push_back(fixed(v, 1));
   for (const char* c : {"62.2", "-", "-", "-", "-", ""}) pub_row.push_back(c);

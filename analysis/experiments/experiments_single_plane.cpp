@@ -66,11 +66,11 @@ std::string time_reading(const MeasuredRun& run, const MeasuredRun& baseline,
     const double cost_term = direction * share[l] * (cost[l] - kPublishedRelativeCost[l]);
     if (cost_term > largest) {
       largest = cost_term;
-      why = std::string(l == 0 ? "frames with no update (bookkeeping only)"
-                               : level_title(Level(l))) +
-            (l == 0 ? " cost " : " frames cost ") + fixed(cost[l], 2) +
-            " of re-rendering the same frames here, published about " +
-            fixed(kPublishedRelativeCost[l], 2);
+      why =
+          std::string(l == 0 ? "frames with no update (bookkeeping only)" : level_title(Level(l))) +
+          (l == 0 ? " cost " : " frames cost ") + fixed(cost[l], 2) +
+          " of re-rendering the same frames here, published about " +
+          fixed(kPublishedRelativeCost[l], 2);
     }
   }
   return why.empty() ? text : text + ": " + why;
@@ -152,8 +152,8 @@ ReportTable comparison_table(const Experiment1Result& result) {
   t.caption =
       "Experiment 1: percent of frames per update level (frames after the first) and "
       "time saved against re-rendering every frame, thresholds 1 px";
-  t.header = level_header("script / source", {"time saved", "work saved", "max error px",
-                                              "mean PSNR dB", "reading"});
+  t.header = level_header("script / source",
+                          {"time saved", "work saved", "max error px", "mean PSNR dB", "reading"});
   for (const Experiment1Script& s : result.scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
     if (!pub) throw std::logic_error("no published row for " + s.script);
@@ -171,8 +171,8 @@ ReportTable comparison_table(const Experiment1Result& result) {
       t.rows.push_back(published_row("7: Loop - dissertation, affine only (6.5.1)",
                                      published_affine_loop().level_percent, "-"));
     }
-    t.rows.push_back(oflab_row(s.script + " - oflab affine", s.mode("affine"),
-                               s.baseline, affine_reading(s)));
+    t.rows.push_back(
+        oflab_row(s.script + " - oflab affine", s.mode("affine"), s.baseline, affine_reading(s)));
     t.rows.push_back(oflab_row(s.script + " - oflab exact", s.mode("exact"), s.baseline,
                                exact_reading(s, *pub)));
   }

@@ -65,8 +65,8 @@ double neglected_error(const TermArray& accumulated, const TermArray& flow, Leve
   return sum;
 }
 
-Level choose_level(const TermArray& accumulated, const TermArray& flow,
-                   const TermArray& thresholds, const LevelSet& allowed) {
+Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
+                   const LevelSet& allowed) {
   for (int l = 0; l < kTermCount; ++l) {
     const Level level = static_cast<Level>(l);
     if (!allowed[l]) continue;

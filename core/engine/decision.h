@@ -63,8 +63,8 @@ FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const Rig
 // budget of "none", [1] of "translate", [2] of "affine", [3] of "perspective".
 // Levels missing from `allowed` are never chosen (the affine policy leaves out
 // perspective); re-render is chosen when no allowed level is acceptable, allowed or not.
-Level choose_level(const TermArray& accumulated, const TermArray& flow,
-                   const TermArray& thresholds, const LevelSet& allowed);
+Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
+                   const LevelSet& allowed);
 
 // The error a level leaves pending: the sum of (accumulated + flow) over its neglected terms.
 double neglected_error(const TermArray& accumulated, const TermArray& flow, Level level);

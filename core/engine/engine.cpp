@@ -283,8 +283,8 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
   TermArray carried = accumulated_;
   for (double& e : carried) e *= std::max(1.0, largest_singular_value(stretch));
   report.carried = carried;
-  report.level = policy().choose(policy(), {report.flow, carried, settings_.thresholds,
-                                           level_pixels()});
+  report.level =
+      policy().choose(policy(), {report.flow, carried, settings_.thresholds, level_pixels()});
   for (int k = 0; k < kTermCount; ++k) {
     accumulated_[k] = k >= static_cast<int>(report.level) ? carried[k] + report.flow[k] : 0.0;
   }

@@ -210,8 +210,8 @@ FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
 }
 
 std::string launch_usage() {
-  return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
-         "             [--mode " + reuse_policy_names("|") + "]\n"
+  const std::string mode = "             [--mode " + reuse_policy_names("|") + "]\n";
+  return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n" + mode +
          "             [--animation-show side-by-side|difference|blink]\n"
          "             [--view flow|basis|animation|analysis|window]\n"
          "             [--screenshot FILE.png --frames N] [--benchmark N] [--size W H]\n"

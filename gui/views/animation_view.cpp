@@ -233,8 +233,7 @@ QImage AnimationView::panel(bool exact) {
   } else {
     const FrameRecord& r = s->current();
     draw_level_overlay(image, s->outlines(), r.levels, text, theme_.line_width + 1.0);
-    draw_panel_title(image, tr("optic-flow animation (%1)").arg(settings_.policy->name),
-                     text);
+    draw_panel_title(image, tr("optic-flow animation (%1)").arg(settings_.policy->name), text);
   }
   return image;
 }

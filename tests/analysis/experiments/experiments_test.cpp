@@ -73,8 +73,7 @@ TEST(Experiment1Published, EveryShippedExperimentScriptHasAPublishedRow) {
 TEST(Experiment1Published, OnlyScriptsPublishedWithPerspectiveWarpsUseThem) {
   for (const Experiment1Script& s : experiment1().scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
-    const int perspective =
-        count_after_first(s.mode("perspective"), Level::kPerspective);
+    const int perspective = count_after_first(s.mode("perspective"), Level::kPerspective);
     if (pub->level_percent[static_cast<int>(Level::kPerspective)] > 0) {
       EXPECT_GT(perspective, 0) << s.script;
     } else {
@@ -96,8 +95,7 @@ TEST(Experiment1Published, ScriptsPublishedWithOnlyNoUpdateOrTranslationNeverRer
 TEST(Experiment1Published, StationaryNeedsNoUpdateAndTranslationOneTranslatesEverySecondFrame) {
   const MeasuredRun& still = script("stationary").mode("perspective");
   EXPECT_EQ(level_percent_after_first(still)[static_cast<int>(Level::kNone)], 100.0);
-  const auto moving =
-      level_percent_after_first(script("translation-1").mode("perspective"));
+  const auto moving = level_percent_after_first(script("translation-1").mode("perspective"));
   EXPECT_NEAR(moving[static_cast<int>(Level::kNone)], 50.0, 2.0);
   EXPECT_NEAR(moving[static_cast<int>(Level::kTranslate)], 50.0, 2.0);
 }

@@ -134,8 +134,7 @@ TEST(SceneAnimator, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
   const Camera camera = make_camera(160.0, 160, 120);
   const auto frames = path(look_at(Vec3(0.1, 0.05, 1.5), Vec3(0.1, 0.05, 0), Vec3(0, 1, 0)),
                            Vec3(0, 0, 0.05), Vec3(0, 0.004, 0), 70);
-  for (const std::string mode :
-       {"rerender", "perspective", "affine", "exact"}) {
+  for (const std::string mode : {"rerender", "perspective", "affine", "exact"}) {
     SceneSettings settings;
     settings.engine.policy = &reuse_policy(mode);
     SceneAnimator animator(scene, camera, settings);
@@ -233,8 +232,7 @@ TEST(SceneAnimator, EveryModeAnimatesCubesWithinItsBudget) {
                                      {25, Vec3(0.0), Vec3(0, 0, 0.02)},
                                      {5, Vec3(0.0), Vec3(0.0)},
                                      {20, Vec3(0.05, 0, 0), Vec3(0, -0.05 / 5.2, 0)}});
-  for (const std::string mode :
-       {"perspective", "affine", "exact", "rerender"}) {
+  for (const std::string mode : {"perspective", "affine", "exact", "rerender"}) {
     SceneSettings settings;
     settings.engine.policy = &reuse_policy(mode);
     SceneAnimator animator(scene, camera, settings);
