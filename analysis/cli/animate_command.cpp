@@ -22,10 +22,10 @@ constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near",
                                              "--no-skip-hidden"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
-void print_summary(const nlohmann::json& j, const std::string& script, EngineMode mode,
+void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,
                    std::ostream& out) {
   const int frames = j.at("frames");
-  out << "script " << script << ", mode " << engine_mode_name(mode) << ", " << frames
+  out << "script " << script << ", mode " << policy.name << ", " << frames
       << " frames\n";
   for (int l = 0; l < kLevelCount; ++l) {
     const char* name = level_name(static_cast<Level>(l));
@@ -81,12 +81,12 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (a.has("--json")) {
     nlohmann::json j = summary;
     j["script"] = name;
-    j["mode"] = engine_mode_name(settings.mode);
+    j["mode"] = settings.policy->name;
     j["delta"] = delta_policy_name(settings.delta);
     j["thresholds"] = settings.thresholds;
     out << j.dump(2) << "\n";
   } else {
-    print_summary(summary, name, settings.mode, out);
+    print_summary(summary, name, *settings.policy, out);
   }
   return 0;
 }

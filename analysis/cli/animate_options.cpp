@@ -29,9 +29,11 @@ bool is_obj_file(const std::string& path) {
 
 EngineSettings read_engine_settings(const CliArgs& a) {
   EngineSettings s;
-  const std::string mode = a.text_or("--mode", "perspective");
-  if (!parse_engine_mode(mode, &s.mode)) {
-    throw UsageError("--mode: '" + mode + "' is not one of perspective, affine, rerender, exact");
+  const std::string mode = a.text_or("--mode", default_reuse_policy().name);
+  s.policy = find_reuse_policy(mode);
+  if (!s.policy) {
+    throw UsageError("--mode: '" + mode + "' is not one of " + reuse_policy_names() +
+                     ", scene-shifting");
   }
   if (a.has("--threshold") && a.has("--thresholds")) {
     throw UsageError("--thresholds: give either --threshold or --thresholds, not both");
@@ -51,15 +53,17 @@ EngineSettings read_engine_settings(const CliArgs& a) {
     throw UsageError("--delta: '" + delta +
                      "' is not one of 1, det, sqrt, fourth-root, dissertation");
   }
-  const std::string sampling = a.text_or("--sampling", "nearest");
-  if (sampling == "nearest") {
-    s.sampling = Sampling::kNearest;
-  } else if (sampling == "bilinear") {
-    s.sampling = Sampling::kBilinear;
-  } else {
-    throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
-  }
+  s.sampling = read_sampling(a);
   return s;
+}
+
+Sampling read_sampling(const CliArgs& a) {
+  Sampling sampling = Sampling::kNearest;
+  const std::string text = a.text_or("--sampling", sampling_name(sampling));
+  if (!parse_sampling(text, &sampling)) {
+    throw UsageError("--sampling: '" + text + "' is not one of " + sampling_name_list());
+  }
+  return sampling;
 }
 
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {

@@ -16,9 +16,14 @@
 
 namespace oflab {
 
-// --mode, --threshold / --thresholds, --delta, --sampling. Throws UsageError naming the
-// option for a bad value.
+// --mode (a reuse policy of core/engine/reuse_policy.h; "scene-shifting" is handled before),
+// --threshold / --thresholds, --delta, --sampling. Throws UsageError naming the option and
+// the accepted values for a bad value.
 EngineSettings read_engine_settings(const CliArgs& args);
+
+// --sampling nearest|bilinear (default nearest). Throws UsageError naming the option and the
+// accepted values for any other word.
+Sampling read_sampling(const CliArgs& args);
 
 // What every form of `oflab-cli animate` does with its output options: --frames N (at most N
 // frames; -1 for all), --out DIR (created, or an existing empty one; --force for a non-empty

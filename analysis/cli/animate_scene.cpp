@@ -31,13 +31,13 @@ SceneSettings read_scene_settings(const CliArgs& a) {
 }
 
 void print_scene_summary(const AnimationRun& run, const std::string& scene,
-                         const std::string& script, EngineMode mode, std::ostream& out) {
+                         const std::string& script, const ReusePolicy& policy, std::ostream& out) {
   const RunSummary& s = run.summary;
   const long total = static_cast<long>(s.layers) * s.frames;
   const nlohmann::json& bsp = run.facts.at("bsp");
   out << "scene " << scene << " (" << s.layers << " polygons; BSP " << bsp.at("nodes").get<int>()
       << " nodes, " << bsp.at("splits").get<int>() << " splits), viewer script " << script
-      << ", mode " << engine_mode_name(mode) << ", " << s.frames << " frames\n";
+      << ", mode " << policy.name << ", " << s.frames << " frames\n";
   print_polygon_levels(s, out);
   out << "  culled " << s.culled() << " (" << percent(s.culled(), total) << "% of " << total
       << " polygon-frames: back-facing " << s.back_facing << ", outside the frustum "
@@ -74,14 +74,14 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   nlohmann::json j = kind.summary_json(result);
   j["scene"] = source.scene->name;
   j["script"] = source.viewer.name;
-  j["mode"] = engine_mode_name(settings.engine.mode);
+  j["mode"] = settings.engine.policy->name;
   j["thresholds"] = settings.engine.thresholds;
   j["skip_hidden"] = settings.skip_hidden;
   if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result, source.scene->name, source.viewer.name, settings.engine.mode, out);
+    print_scene_summary(result, source.scene->name, source.viewer.name, *settings.engine.policy, out);
   }
   return 0;
 }

@@ -56,12 +56,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (!(settings.epsilon_px > 0.0) || !std::isfinite(settings.epsilon_px)) {
     throw UsageError("--epsilon: must be a positive number of pixels");
   }
-  const std::string sampling = a.text_or("--sampling", "nearest");
-  if (sampling == "bilinear") {
-    settings.sampling = Sampling::kBilinear;
-  } else if (sampling != "nearest") {
-    throw UsageError("--sampling: '" + sampling + "' is not one of nearest, bilinear");
-  }
+  settings.sampling = read_sampling(a);
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
   output.apply_to(options);

@@ -2,7 +2,33 @@
 
 #include <ostream>
 
+#include "engine/reuse_policy.h"
+#include "image/warp.h"
+
 namespace oflab {
+
+namespace {
+
+// `animate --help`: the --mode and --sampling values come from their registries.
+std::string animate_usage() {
+  std::string usage = "oflab-cli animate --script NAME|FILE [--texture FILE]\n";
+  usage += "               [--mode " + reuse_policy_names("|") + "]\n";
+  usage +=
+      "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
+      "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
+  usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
+  usage +=
+      "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
+      "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
+      "               [--compare-conventional] [--near Z] [--guard-band G]\n"
+      "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
+      "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
+      "               [--epsilon PX] [--sampling, --frames, --out, --json, --quiet as above]\n"
+      "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
+  return usage;
+}
+
+}  // namespace
 
 const std::vector<Command>& all_commands() {
   static const std::vector<Command> commands = {
@@ -12,16 +38,9 @@ const std::vector<Command>& all_commands() {
        "               --plane-size SW SH] [--dt T] [--motion screw|rt|centre] [--json]",
        run_flow_command},
       {"animate", "play a motion script through the engine: levels, errors, savings",
-       "oflab-cli animate --script NAME|FILE [--texture FILE]\n"
-       "               [--mode perspective|affine|rerender|exact]\n"
-       "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
-       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n"
-       "               [--sampling nearest|bilinear] [--frames N]\n"
-       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
-       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
-       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
-       "               [--no-skip-hidden]   (--compare-conventional needs an X display)",
-       run_animate_command},
+       animate_usage(), run_animate_command},
+      {"policies", "list the engine's reuse policies (the values of animate --mode)",
+       "oflab-cli policies [--json]", run_policies_command},
       {"make-butterfly", "write the bundled butterfly texture as a PNG",
        "oflab-cli make-butterfly --out FILE [--force]", run_make_butterfly_command},
       {"make-scene", "write a grid-of-cubes scene, an OBJ file as a scene, or the tile texture",

@@ -14,7 +14,7 @@ using CommandArgs = std::vector<std::string>;
 struct Command {
   const char* name;
   const char* summary;
-  const char* usage;
+  std::string usage;
   int (*run)(const CommandArgs& args, std::ostream& out, std::ostream& err);
 };
 
@@ -35,6 +35,10 @@ int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::
 // `oflab-cli experiments`: re-runs the dissertation's experiments and writes a report
 // (analysis/cli/experiments_command.cpp, manual/experiments.md).
 int run_experiments_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// `oflab-cli policies`: lists the engine's reuse policies, the values of `animate --mode`
+// (analysis/cli/policies_command.cpp, core/engine/reuse_policy.h).
+int run_policies_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
 // `oflab-cli make-scene`: writes a grid-of-cubes scene, an OBJ file as a scene, or the
 // scenes' tile texture (analysis/cli/make_scene_command.cpp, manual/scenes.md).

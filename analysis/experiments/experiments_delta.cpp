@@ -176,7 +176,7 @@ DeltaResult run_delta_comparison(const Layer& texture, const RunSpec& spec,
     settings.push_back(s);
   }
   EngineSettings baseline;
-  baseline.mode = EngineMode::kRerender;
+  baseline.policy = &reuse_policy("rerender");
   settings.push_back(baseline);
   DeltaResult result;
   result.spec = spec;

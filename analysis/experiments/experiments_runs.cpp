@@ -13,11 +13,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-const char* level_word(int level) {
-  static const char* words[] = {"none", "translate", "affine", "perspective", "re-render"};
-  return words[level];
-}
-
 }  // namespace
 
 std::vector<MeasuredRun> measure_interleaved(
@@ -72,7 +67,7 @@ std::vector<ScriptRuns> measure_scripts(const std::vector<std::string>& scripts,
                                         const RunSpec& spec,
                                         const std::function<void(const std::string&)>& progress) {
   EngineSettings baseline;
-  baseline.mode = EngineMode::kRerender;
+  baseline.policy = &reuse_policy("rerender");
   settings.push_back(baseline);
   std::vector<ScriptRuns> result;
   for (const std::string& name : scripts) {
@@ -160,10 +155,18 @@ std::string level_mix_reading(const std::array<double, kLevelCount>& published,
     const int l = order[k];
     if (std::abs(diff[l]) < 5.0) break;
     if (!text.empty()) text += ", ";
-    text += std::string(diff[l] > 0 ? "more " : "fewer ") + level_word(l) + " (" +
+    text += std::string(diff[l] > 0 ? "more " : "fewer ") + level_title(Level(l)) + " (" +
             signed_fixed(diff[l], 0) + ")";
   }
   return text.empty() ? "level mix within 5 points" : text;
+}
+
+std::vector<std::string> level_header(const std::string& first,
+                                      const std::vector<std::string>& rest) {
+  std::vector<std::string> header = {first};
+  for (int l = 0; l < kLevelCount; ++l) header.push_back(level_title(Level(l)));
+  header.insert(header.end(), rest.begin(), rest.end());
+  return header;
 }
 
 std::string fixed(double value, int decimals) {

@@ -79,6 +79,11 @@ int sampling_limit_rerenders(const MeasuredRun& run);
 std::string level_mix_reading(const std::array<double, kLevelCount>& published,
                               const std::array<double, kLevelCount>& measured);
 
+// A table header: `first`, one column per level titled level_title ("none" .. "re-render"),
+// then `rest`.
+std::vector<std::string> level_header(const std::string& first,
+                                      const std::vector<std::string>& rest);
+
 // Number formatting for report tables: fixed decimals; "n/a" for non-finite values.
 std::string fixed(double value, int decimals);
 std::string percent(double fraction, int decimals = 1);  // 0.123 -> "12.3%"

@@ -179,18 +179,10 @@ ReportTable four_cubes_table(const Experiment2Result& r) {
   t.caption =
       "Four cubes (20 polygons), compound script: percent of drawn polygons per update level "
       "over all frames (section 6.7.3)";
-  t.header = {"source",
-              "none",
-              "translate",
-              "affine",
-              "perspective",
-              "re-render",
-              "less than perspective",
-              "time saved vs exact re-render (frames after the first)",
-              "VTK time / engine time",
-              "polygon-frames culled / hidden",
-              "max error px",
-              "reading"};
+  t.header = level_header(
+      "source",
+      {"less than perspective", "time saved vs exact re-render (frames after the first)",
+       "VTK time / engine time", "polygon-frames culled / hidden", "max error px", "reading"});
   std::vector<std::string> pub_row = {"dissertation"};
   for (double v : published_four_cubes_levels()) pub_row.push_back(fixed(v, 1));
   for (const char* c : {"62.2", "-", "-", "-", "-", ""}) pub_row.push_back(c);
@@ -282,9 +274,8 @@ Chart four_cubes_chart(const SceneMeasurement& m) {
   levels.title = "polygons per update level";
   levels.x_label = "frame";
   levels.y_label = "polygons";
-  static const char* names[] = {"none", "translate", "affine", "perspective", "re-render"};
   for (int l = 0; l < kLevelCount; ++l) {
-    ChartSeries s{names[l], x, {}, SeriesStyle::kLine, chart_palette(l + 3)};
+    ChartSeries s{level_title(Level(l)), x, {}, SeriesStyle::kLine, chart_palette(l + 3)};
     for (const AnimationFrame& r : m.run.frames) s.y.push_back(r.levels[l]);
     levels.series.push_back(s);
   }

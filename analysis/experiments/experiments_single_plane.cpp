@@ -19,8 +19,6 @@ namespace {
 constexpr std::array<double, kLevelCount> kPublishedRelativeCost = {
     0.0, 1.0 / kPublishedPerspectiveOverTranslate, 1.0 / kPublishedPerspectiveOverAffine, 1.0, 1.0};
 
-const char* kLevelWords[] = {"none", "translate", "affine", "perspective", "re-render"};
-
 std::array<double, kLevelCount> relative_costs(const MeasuredRun& run,
                                                const MeasuredRun& baseline) {
   std::array<double, kLevelCount> cost{};
@@ -60,17 +58,19 @@ std::string time_reading(const MeasuredRun& run, const MeasuredRun& baseline,
     const double mix_term = direction * (share[l] - published_share[l]) * kPublishedRelativeCost[l];
     if (mix_term > largest) {
       largest = mix_term;
-      why = std::string(share[l] > published_share[l] ? "more " : "fewer ") + kLevelWords[l] +
-            " frames (" + fixed(share[l], 0) + "% vs " + fixed(published_share[l], 0) + "%)";
+      why = std::string(share[l] > published_share[l] ? "more " : "fewer ") +
+            level_title(Level(l)) + " frames (" + fixed(share[l], 0) + "% vs " +
+            fixed(published_share[l], 0) + "%)";
     }
     if (!std::isfinite(cost[l])) continue;
     const double cost_term = direction * share[l] * (cost[l] - kPublishedRelativeCost[l]);
     if (cost_term > largest) {
       largest = cost_term;
-      why = std::string(l == 0 ? "frames with no update (bookkeeping only)" : kLevelWords[l]) +
-            (l == 0 ? " cost " : " frames cost ") + fixed(cost[l], 2) +
-            " of re-rendering the same frames here, published about " +
-            fixed(kPublishedRelativeCost[l], 2);
+      why =
+          std::string(l == 0 ? "frames with no update (bookkeeping only)" : level_title(Level(l))) +
+          (l == 0 ? " cost " : " frames cost ") + fixed(cost[l], 2) +
+          " of re-rendering the same frames here, published about " +
+          fixed(kPublishedRelativeCost[l], 2);
     }
   }
   return why.empty() ? text : text + ": " + why;
@@ -114,8 +114,8 @@ std::vector<std::string> oflab_row(const std::string& label, const MeasuredRun& 
 }
 
 std::string affine_reading(const Experiment1Script& s) {
-  const MeasuredRun& affine = s.mode(EngineMode::kAffine);
-  const MeasuredRun& persp = s.mode(EngineMode::kPerspective);
+  const MeasuredRun& affine = s.mode("affine");
+  const MeasuredRun& persp = s.mode("perspective");
   const double ratio = affine.summary.time_ms / persp.summary.time_ms;
   std::string text;
   if (s.script == "loop") {
@@ -140,8 +140,8 @@ std::string affine_reading(const Experiment1Script& s) {
 }
 
 std::string exact_reading(const Experiment1Script& s, const PublishedScriptResult& pub) {
-  const MeasuredRun& exact = s.mode(EngineMode::kExact);
-  const MeasuredRun& persp = s.mode(EngineMode::kPerspective);
+  const MeasuredRun& exact = s.mode("exact");
+  const MeasuredRun& persp = s.mode("perspective");
   return "vs published: " + level_mix_reading(pub.level_percent, level_percent_after_first(exact)) +
          "; vs oflab perspective mode: " +
          level_mix_reading(level_percent_after_first(persp), level_percent_after_first(exact));
@@ -152,13 +152,12 @@ ReportTable comparison_table(const Experiment1Result& result) {
   t.caption =
       "Experiment 1: percent of frames per update level (frames after the first) and "
       "time saved against re-rendering every frame, thresholds 1 px";
-  t.header = {"script / source", "none",         "translate",  "affine",
-              "perspective",     "re-render",    "time saved", "work saved",
-              "max error px",    "mean PSNR dB", "reading"};
+  t.header = level_header("script / source",
+                          {"time saved", "work saved", "max error px", "mean PSNR dB", "reading"});
   for (const Experiment1Script& s : result.scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
     if (!pub) throw std::logic_error("no published row for " + s.script);
-    const MeasuredRun& persp = s.mode(EngineMode::kPerspective);
+    const MeasuredRun& persp = s.mode("perspective");
     t.rows.push_back(published_row(pub->title + " - dissertation", pub->level_percent,
                                    fixed(pub->time_saved_percent, 1) + "%"));
     const std::array<double, kLevelCount> share = level_percent_after_first(persp);
@@ -172,9 +171,9 @@ ReportTable comparison_table(const Experiment1Result& result) {
       t.rows.push_back(published_row("7: Loop - dissertation, affine only (6.5.1)",
                                      published_affine_loop().level_percent, "-"));
     }
-    t.rows.push_back(oflab_row(s.script + " - oflab affine", s.mode(EngineMode::kAffine),
-                               s.baseline, affine_reading(s)));
-    t.rows.push_back(oflab_row(s.script + " - oflab exact", s.mode(EngineMode::kExact), s.baseline,
+    t.rows.push_back(
+        oflab_row(s.script + " - oflab affine", s.mode("affine"), s.baseline, affine_reading(s)));
+    t.rows.push_back(oflab_row(s.script + " - oflab exact", s.mode("exact"), s.baseline,
                                exact_reading(s, *pub)));
   }
   return t;
@@ -186,22 +185,14 @@ ReportTable cost_table(const Experiment1Result& result) {
       "Cost of the frames at each level relative to re-rendering the same frames (engine time "
       "over them / re-render baseline time over them), perspective mode, and the median "
       "per-frame flow of each term";
-  t.header = {"script / source",
-              "none",
-              "translate",
-              "affine",
-              "perspective",
-              "re-render",
-              "re-render median ms",
-              "flow: translation px",
-              "flow: first order px",
-              "flow: second order px",
-              "flow: higher order px"};
+  t.header = level_header("script / source",
+                          {"re-render median ms", "flow: translation px", "flow: first order px",
+                           "flow: second order px", "flow: higher order px"});
   t.rows.push_back({"dissertation (6.4.8, A.2)", "0.000", fixed(kPublishedRelativeCost[1], 3),
                     fixed(kPublishedRelativeCost[2], 3), "1.000", "1.000", "-", "-", "-", "-",
                     "-"});
   for (const Experiment1Script& s : result.scripts) {
-    const MeasuredRun& persp = s.mode(EngineMode::kPerspective);
+    const MeasuredRun& persp = s.mode("perspective");
     const std::array<double, kLevelCount> cost = relative_costs(persp, s.baseline);
     std::vector<std::string> row = {s.script,
                                     fixed(cost[0], 3),
@@ -218,7 +209,7 @@ ReportTable cost_table(const Experiment1Result& result) {
 }
 
 Chart script_chart(const Experiment1Script& s, const MeasuredRun& run) {
-  const std::string mode = engine_mode_name(run.settings.mode);
+  const std::string mode = run.settings.policy->name;
   ChartSeries engine{mode + " mode", {}, run.frame_ms, SeriesStyle::kLine, chart_palette(0)};
   ChartSeries rerender{
       "re-render baseline", {}, s.baseline.frame_ms, SeriesStyle::kLine, chart_palette(1)};
@@ -257,7 +248,7 @@ Chart savings_chart(const Experiment1Result& result) {
   for (size_t i = 0; i < result.scripts.size(); ++i) {
     const Experiment1Script& s = result.scripts[i];
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
-    const MeasuredRun& persp = s.mode(EngineMode::kPerspective);
+    const MeasuredRun& persp = s.mode("perspective");
     const double x = static_cast<double>(i);
     ticks.push_back({x, s.script});
     const auto share = level_percent_after_first(persp);
@@ -301,17 +292,17 @@ const std::vector<std::string>& experiment1_scripts() {
   return names;
 }
 
-const std::vector<EngineMode>& experiment1_modes() {
-  static const std::vector<EngineMode> modes = {EngineMode::kPerspective, EngineMode::kAffine,
-                                                EngineMode::kExact};
+const std::vector<const ReusePolicy*>& experiment1_modes() {
+  static const std::vector<const ReusePolicy*> modes = {
+      &reuse_policy("perspective"), &reuse_policy("affine"), &reuse_policy("exact")};
   return modes;
 }
 
-const MeasuredRun& Experiment1Script::mode(EngineMode m) const {
+const MeasuredRun& Experiment1Script::mode(const std::string& policy) const {
   for (const MeasuredRun& r : modes) {
-    if (r.settings.mode == m) return r;
+    if (r.settings.policy->name == policy) return r;
   }
-  throw std::logic_error(std::string("Experiment 1 has no run in mode ") + engine_mode_name(m));
+  throw std::logic_error("Experiment 1 has no run in mode " + policy);
 }
 
 RunSpec experiment1_spec(bool quick) {
@@ -327,9 +318,9 @@ Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
   Experiment1Result result;
   result.spec = spec;
   std::vector<EngineSettings> settings;
-  for (EngineMode m : experiment1_modes()) {
+  for (const ReusePolicy* m : experiment1_modes()) {
     EngineSettings s;
-    s.mode = m;
+    s.policy = m;
     settings.push_back(s);
   }
   for (ScriptRuns& r : measure_scripts(experiment1_scripts(), texture, settings, spec, progress)) {
@@ -368,7 +359,7 @@ ReportSection experiment1_section(const Experiment1Result& result, ExperimentCon
   section.table(cost_table(result));
   for (const Experiment1Script& s : result.scripts) {
     for (const MeasuredRun& run : s.modes) {
-      const std::string mode = engine_mode_name(run.settings.mode);
+      const std::string mode = run.settings.policy->name;
       section.figure(context.add_chart(
           "exp1-" + s.script + "-" + mode, script_chart(s, run),
           "Experiment 1, " + s.script + ", " + mode +

@@ -15,14 +15,15 @@ namespace oflab {
 // The seven scripts in the dissertation's order (section 6.4.8's table).
 const std::vector<std::string>& experiment1_scripts();
 
-// The engine modes Experiment 1 compares, in report order.
-const std::vector<EngineMode>& experiment1_modes();  // perspective, affine, exact
+// The reuse policies Experiment 1 compares, in report order: perspective, affine, exact.
+const std::vector<const ReusePolicy*>& experiment1_modes();
 
 struct Experiment1Script {
   std::string script;
   MeasuredRun baseline;            // mode re-render, same frames, same repetitions
   std::vector<MeasuredRun> modes;  // one per experiment1_modes(), same order
-  const MeasuredRun& mode(EngineMode m) const;
+  // The run of the policy named `policy`; throws std::logic_error when there is none.
+  const MeasuredRun& mode(const std::string& policy) const;
 };
 
 struct Experiment1Result {

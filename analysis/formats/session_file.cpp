@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "engine/reuse_policy.h"
 #include "formats/json_fields.h"
 
 namespace oflab {
@@ -49,7 +50,8 @@ PlaneScene read_plane(const json& plane, const std::string& origin) {
 
 EngineSettings read_settings(const json& j, const Where& w) {
   EngineSettings s;
-  if (!parse_engine_mode(text(j, w, "mode"), &s.mode)) w.fail("mode", "unknown engine mode");
+  s.policy = find_reuse_policy(text(j, w, "mode"));
+  if (!s.policy) w.fail("mode", "unknown reuse policy (one of " + reuse_policy_names() + ")");
   const json& t = member(j, w, "thresholds");
   if (!t.is_array() || t.size() != size_t(kTermCount)) {
     w.fail("thresholds", "must be a list of " + std::to_string(kTermCount) + " numbers");
@@ -59,9 +61,9 @@ EngineSettings read_settings(const json& j, const Where& w) {
     if (s.thresholds[size_t(k)] < 0) w.fail("thresholds", "must not be negative");
   }
   if (!parse_delta_policy(text(j, w, "delta"), &s.delta)) w.fail("delta", "unknown Delta policy");
-  const std::string sampling = text(j, w, "sampling");
-  if (sampling != "nearest" && sampling != "bilinear") w.fail("sampling", "nearest or bilinear");
-  s.sampling = sampling == "nearest" ? Sampling::kNearest : Sampling::kBilinear;
+  if (!parse_sampling(text(j, w, "sampling"), &s.sampling)) {
+    w.fail("sampling", "one of " + sampling_name_list());
+  }
   return s;
 }
 
@@ -83,11 +85,11 @@ std::string session_to_json(const Session& s) {
   j["texture"] = s.texture;
   j["animation"] = {
       {"source", {{"kind", s.source_kind}, {"name", s.source_name}, {"viewer", s.viewer_script}}},
-      {"mode", engine_mode_name(s.settings.mode)},
+      {"mode", s.settings.policy->name},
       {"thresholds", json::array({s.settings.thresholds[0], s.settings.thresholds[1],
                                   s.settings.thresholds[2], s.settings.thresholds[3]})},
       {"delta", delta_policy_name(s.settings.delta)},
-      {"sampling", s.settings.sampling == Sampling::kNearest ? "nearest" : "bilinear"},
+      {"sampling", sampling_name(s.settings.sampling)},
       {"display", s.display}};
   j["frame"] = s.frame;
   j["view"] = s.view;

@@ -24,6 +24,8 @@
 #include <ostream>
 #include <sstream>
 
+#include "engine/decision.h"
+
 namespace oflab {
 namespace {
 
@@ -162,7 +164,9 @@ ChartColor chart_palette(int index) {
 }
 
 std::vector<AxisTick> level_ticks() {
-  return {{0, "none"}, {1, "translate"}, {2, "affine"}, {3, "perspective"}, {4, "re-render"}};
+  std::vector<AxisTick> ticks;
+  for (int l = 0; l < kLevelCount; ++l) ticks.push_back({double(l), level_title(Level(l))});
+  return ticks;
 }
 
 void write_chart_png(const Chart& chart, const std::string& path) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "runs/statistics.h"
+#include "engine/reuse_policy.h"
 #include "runs/vtk_scene_renderer.h"
 
 namespace oflab {
@@ -19,13 +20,13 @@ nlohmann::json finite_or_null(double v) {
 // The baselines: the same source re-rendered exactly every frame.
 EngineSettings engine_settings(const EngineSettings& settings, bool baseline) {
   EngineSettings s = settings;
-  if (baseline) s.mode = EngineMode::kRerender;
+  if (baseline) s.policy = &reuse_policy("rerender");
   return s;
 }
 
 SceneShiftingSettings shifting_settings(const SceneShiftingSettings& settings, bool baseline) {
   SceneShiftingSettings s = settings;
-  s.always_rebuild = s.always_rebuild || baseline;
+  if (baseline) s.policy = &reuse_policy("rerender");
   return s;
 }
 

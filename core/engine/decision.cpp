@@ -9,15 +9,33 @@
 
 namespace oflab {
 
-const char* level_name(Level level) {
-  switch (level) {
-    case Level::kNone: return "none";
-    case Level::kTranslate: return "translate";
-    case Level::kAffine: return "affine";
-    case Level::kPerspective: return "perspective";
-    case Level::kRerender: return "rerender";
+namespace {
+
+struct LevelWords {
+  const char* name;
+  const char* title;
+};
+
+// Indexed by static_cast<int>(Level).
+constexpr LevelWords kLevelWords[kLevelCount] = {{"none", "none"},
+                                                 {"translate", "translate"},
+                                                 {"affine", "affine"},
+                                                 {"perspective", "perspective"},
+                                                 {"rerender", "re-render"}};
+
+}  // namespace
+
+const char* level_name(Level level) { return kLevelWords[static_cast<int>(level)].name; }
+
+const char* level_title(Level level) { return kLevelWords[static_cast<int>(level)].title; }
+
+bool parse_level(const std::string& text, Level* level) {
+  for (int l = 0; l < kLevelCount; ++l) {
+    if (text != kLevelWords[l].name) continue;
+    *level = static_cast<Level>(l);
+    return true;
   }
-  return "none";
+  return false;
 }
 
 FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const RigidMotion& motion,
@@ -47,11 +65,11 @@ double neglected_error(const TermArray& accumulated, const TermArray& flow, Leve
   return sum;
 }
 
-Level choose_level(const TermArray& accumulated, const TermArray& flow,
-                   const TermArray& thresholds, bool allow_perspective) {
+Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
+                   const LevelSet& allowed) {
   for (int l = 0; l < kTermCount; ++l) {
     const Level level = static_cast<Level>(l);
-    if (level == Level::kPerspective && !allow_perspective) break;
+    if (!allowed[l]) continue;
     if (neglected_error(accumulated, flow, level) <= thresholds[l]) return level;
   }
   return Level::kRerender;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "flow/camera.h"
@@ -25,7 +26,18 @@ namespace oflab {
 enum class Level { kNone = 0, kTranslate = 1, kAffine = 2, kPerspective = 3, kRerender = 4 };
 constexpr int kLevelCount = 5;
 constexpr int kTermCount = 4;
-const char* level_name(Level level);  // "none", "translate", "affine", "perspective", "rerender"
+
+// The one vocabulary of levels. level_name is the identifier written in files and JSON
+// ("none", "translate", "affine", "perspective", "rerender"); level_title is the word for
+// tables, charts and prose (the same, except "re-render"). parse_level accepts the names
+// only and returns false, leaving *level unchanged, for anything else.
+const char* level_name(Level level);
+const char* level_title(Level level);
+bool parse_level(const std::string& text, Level* level);
+
+// A set of levels, indexed by static_cast<int>(Level).
+using LevelSet = std::array<bool, kLevelCount>;
+constexpr LevelSet kAllLevels{true, true, true, true, true};
 
 using TermArray = std::array<double, kTermCount>;
 
@@ -49,9 +61,10 @@ FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const Rig
 // that level's threshold; the lowest acceptable level wins and re-render is always
 // acceptable. thresholds[L] belongs to level L+1's lower neighbour: thresholds[0] is the
 // budget of "none", [1] of "translate", [2] of "affine", [3] of "perspective".
-// `allow_perspective` false (affine mode) makes perspective unacceptable.
-Level choose_level(const TermArray& accumulated, const TermArray& flow,
-                   const TermArray& thresholds, bool allow_perspective);
+// Levels missing from `allowed` are never chosen (the affine policy leaves out
+// perspective); re-render is chosen when no allowed level is acceptable, allowed or not.
+Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
+                   const LevelSet& allowed);
 
 // The error a level leaves pending: the sum of (accumulated + flow) over its neglected terms.
 double neglected_error(const TermArray& accumulated, const TermArray& flow, Level level);

@@ -44,31 +44,6 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-bool parse_engine_mode(const std::string& text, EngineMode* mode) {
-  if (text == "perspective") {
-    *mode = EngineMode::kPerspective;
-  } else if (text == "affine") {
-    *mode = EngineMode::kAffine;
-  } else if (text == "rerender") {
-    *mode = EngineMode::kRerender;
-  } else if (text == "exact") {
-    *mode = EngineMode::kExact;
-  } else {
-    return false;
-  }
-  return true;
-}
-
-const char* engine_mode_name(EngineMode mode) {
-  switch (mode) {
-    case EngineMode::kPerspective: return "perspective";
-    case EngineMode::kAffine: return "affine";
-    case EngineMode::kRerender: return "rerender";
-    case EngineMode::kExact: return "exact";
-  }
-  return "perspective";
-}
-
 std::string plane_visibility_problem(const PlanePose& pose) {
   const PoseProblem p = plane_pose_problem(pose);
   if (!p.field.empty()) return p.message;
@@ -127,7 +102,7 @@ void PlaneAnimator::rerender(const PlanePose& pose_in, FrameReport& report) {
     return;
   }
   displayed_ = exact_texture_warp(camera_, pose);
-  if (settings_.mode == EngineMode::kAffine) {
+  if (policy().initial_view == InitialView::kAffinePart) {
     // Section 6.5: the initial view is affine too, and the flow model follows it.
     displayed_ = affine_part_at(displayed_, 0.5 * texel_corners(texture_)[2]);
   }
@@ -242,7 +217,7 @@ void PlaneAnimator::finish_report(const PlanePose& pose, FrameReport& report) co
   report.estimated_error_px = neglected_error(accumulated_, TermArray{}, Level::kNone);
   report.measured_error_px =
       report.visible ? corner_error(pose) : std::numeric_limits<double>::quiet_NaN();
-  if (settings_.mode == EngineMode::kAffine && report.visible) {
+  if (policy().initial_view == InitialView::kAffinePart && report.visible) {
     const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
     const Mat3 affine = affine_part_at(exact, 0.5 * texel_corners(texture_)[2]);
     double worst = 0.0;
@@ -251,6 +226,14 @@ void PlaneAnimator::finish_report(const PlanePose& pose, FrameReport& report) co
     }
     report.affine_view_error_px = worst;
   }
+}
+
+LevelPixels PlaneAnimator::level_pixels() const {
+  const auto area = [](const Layer& l) {
+    return static_cast<std::int64_t>(l.image.width()) * l.image.height();
+  };
+  const std::int64_t displayed = area(display_.layer);
+  return estimate_level_pixels(displayed, cache_.valid ? area(cache_.layer) : displayed);
 }
 
 FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion& motion,
@@ -263,7 +246,8 @@ FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion&
   current.texture_size = glm::ivec2(texture_.image.width(), texture_.image.height());
   const bool visible_now = plane_visibility_problem(current).empty() && !texture_.empty();
   const bool flow_usable = plane_visibility_problem(previous).empty();
-  if (!shown_ || !visible_now || !flow_usable || settings_.mode == EngineMode::kRerender) {
+  // A policy without reuse levels re-renders without measuring the flow.
+  if (!shown_ || !visible_now || !flow_usable || !policy().allows_reuse()) {
     rerender(current, report);
   } else {
     decide_and_update(previous, motion, current, report);
@@ -275,12 +259,12 @@ FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion&
 
 void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
                                   const PlanePose& current) {
-  if (settings_.mode == EngineMode::kExact) {
+  if (policy().model == ModelUpdate::kExact) {
     model_ = exact_texture_warp(camera_, current);  // the exact frame-to-frame homography
     return;
   }
   PlanarFlowCoefficients step = flow;
-  if (settings_.mode == EngineMode::kAffine) step.px = step.py = 0.0;  // affine flow model
+  if (policy().model == ModelUpdate::kAffineTaylor) step.px = step.py = 0.0;  // affine flow model
   model_ = centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
 }
 
@@ -290,7 +274,7 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
   const PlanarFlowCoefficients flow =
       reexpand(planar_flow_coefficients(camera_, previous, motion), m.expansion_point);
   report.flow = m.flow;
-  if (settings_.mode == EngineMode::kExact) report.flow[3] = 0.0;
+  if (policy().model == ModelUpdate::kExact) report.flow[3] = 0.0;  // nothing of higher order
   advance_model(flow, current);
   // Pending errors are image displacements: this frame's motion stretches them by up to
   // the largest singular value of its Jacobian, so they are carried forward scaled by it.
@@ -299,8 +283,8 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
   TermArray carried = accumulated_;
   for (double& e : carried) e *= std::max(1.0, largest_singular_value(stretch));
   report.carried = carried;
-  report.level = choose_level(carried, report.flow, settings_.thresholds,
-                              settings_.mode != EngineMode::kAffine);
+  report.level =
+      policy().choose(policy(), {report.flow, carried, settings_.thresholds, level_pixels()});
   for (int k = 0; k < kTermCount; ++k) {
     accumulated_[k] = k >= static_cast<int>(report.level) ? carried[k] + report.flow[k] : 0.0;
   }

@@ -3,9 +3,10 @@
 //
 // Frames. `displayed warp` D maps texel coordinates (core/flow/plane.h) to top-left image
 // pixels (core/flow/camera.h). The engine shows D(texture) and keeps, besides it:
-//  - the model warp B: where its flow model says the plane is now. Perspective and affine
-//    modes advance B by the first-order Taylor homography of each frame's motion; exact
-//    and re-render modes set B to the exact texture-to-image warp of the current pose.
+//  - the model warp B: where its flow model says the plane is now. The reuse policy
+//    (core/engine/reuse_policy.h) says how B advances: by the first-order Taylor homography
+//    of each frame's motion (perspective policy), by its affine part (affine), or to the
+//    exact texture-to-image warp of the current pose (exact).
 //  - a perspective cache (section 5.4.3, corrected eq. 55): D = W_aff W_persp with the
 //    source origin at the texture centre; the cache is W_persp(texture) and affine updates
 //    warp the cache by the new W_aff, never the previous frame, so resampling does not
@@ -22,6 +23,7 @@
 
 #include "flow/camera.h"
 #include "engine/decision.h"
+#include "engine/reuse_policy.h"
 #include "flow/decomposition.h"
 #include "image/layer.h"
 #include "flow/motion.h"
@@ -30,17 +32,9 @@
 
 namespace oflab {
 
-enum class EngineMode {
-  kPerspective,  // Algorithm 1, corrected (default)
-  kAffine,       // section 6.5: affine warps only, affine initial view too
-  kRerender,     // the baseline: exact every frame
-  kExact,        // perspective level uses the exact frame-to-frame homography
-};
-bool parse_engine_mode(const std::string& text, EngineMode* mode);
-const char* engine_mode_name(EngineMode mode);
-
 struct EngineSettings {
-  EngineMode mode = EngineMode::kPerspective;
+  // What may be reused and how levels are chosen (core/engine/reuse_policy.h); never null.
+  const ReusePolicy* policy = &default_reuse_policy();
   TermArray thresholds{1.0, 1.0, 1.0, 1.0};  // pixels, budgets of none..perspective
   DeltaPolicy delta = DeltaPolicy::kDissertation;
   Sampling sampling = Sampling::kNearest;
@@ -62,8 +56,9 @@ struct FrameReport {
   TermArray accumulated{};    // accumulated estimates after this frame, pixels
   double estimated_error_px = 0.0;  // pending error the level left, by the estimates
   double measured_error_px = 0.0;
-  // Affine mode only: the error an affine view of the current pose has by itself (its
-  // missing perspective), part of measured_error_px that no update level can remove.
+  // Policies with an affine initial view only: the error an affine view of the current pose
+  // has by itself (its missing perspective), part of measured_error_px that no update level
+  // can remove.
   double affine_view_error_px = 0.0;
   double time_ms = 0.0;       // wall time of the update (warps and bookkeeping)
   std::int64_t pixels_written = 0;  // pixels the warp kernels wrote this frame
@@ -97,7 +92,7 @@ class PlaneAnimator {
   // texture's texel size is taken from the image, overriding pose.texture_size.
   PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings);
 
-  // Frame 0: renders `pose` (exactly, or its affine approximation in affine mode).
+  // Frame 0: renders `pose` in the policy's initial view (exactly, or its affine part).
   FrameReport start(const PlanePose& pose);
 
   // The next frame: `previous` is the frame shown so far (pose and its motion towards the
@@ -108,6 +103,7 @@ class PlaneAnimator {
   const PlacedLayer& displayed() const { return display_; }
   const Mat3& displayed_warp() const { return displayed_; }
   const EngineSettings& settings() const { return settings_; }
+  const ReusePolicy& policy() const { return *settings_.policy; }
 
  private:
   struct Cache {
@@ -127,6 +123,7 @@ class PlaneAnimator {
   void show(WarpedLayer&& warped, FrameReport& report);
   void cache_from_display();
   void finish_report(const PlanePose& pose, FrameReport& report) const;
+  LevelPixels level_pixels() const;
   bool apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report);
   void apply_perspective(const Mat3& target, FrameReport& report);
   void rebuild_cache(const Mat3& target, FrameReport& report);

@@ -37,6 +37,27 @@ void layer_box(const ConvexPolygon& polygon, int& x0, int& y0, int& width, int& 
 
 }  // namespace
 
+const char* sampling_name(Sampling sampling) {
+  return sampling == Sampling::kBilinear ? "bilinear" : "nearest";
+}
+
+bool parse_sampling(const std::string& text, Sampling* sampling) {
+  for (int i = 0; i < kSamplingCount; ++i) {
+    if (text != sampling_name(static_cast<Sampling>(i))) continue;
+    *sampling = static_cast<Sampling>(i);
+    return true;
+  }
+  return false;
+}
+
+std::string sampling_name_list(const std::string& separator) {
+  std::string list;
+  for (int i = 0; i < kSamplingCount; ++i) {
+    list += (i == 0 ? "" : separator) + std::string(sampling_name(static_cast<Sampling>(i)));
+  }
+  return list;
+}
+
 WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image& output,
                           int output_origin_x, int output_origin_y, const WarpOptions& options) {
   const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);

@@ -33,6 +33,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "flow/geometry.h"
 #include "image/image.h"
@@ -41,6 +42,16 @@
 namespace oflab {
 
 enum class Sampling { kNearest, kBilinear };
+constexpr int kSamplingCount = 2;
+
+// The one vocabulary of samplings: sampling_name gives "nearest" or "bilinear" (the words
+// of options, session files and JSON); parse_sampling accepts exactly those and returns
+// false, leaving *sampling unchanged, for anything else; sampling_name_list joins the
+// names with `separator`: "nearest, bilinear" for error messages, "nearest|bilinear" for
+// usage lines.
+const char* sampling_name(Sampling sampling);
+bool parse_sampling(const std::string& text, Sampling* sampling);
+std::string sampling_name_list(const std::string& separator = ", ");
 
 // Which kernel runs. kAutomatic picks kAffine when M's bottom row is (0, 0, 1) after
 // division by M33 (exactly), else kPerspective. kPerspective accepts affine matrices too

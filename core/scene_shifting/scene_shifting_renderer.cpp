@@ -308,7 +308,7 @@ AnimationFrame SceneShiftingRenderer::advance(const ViewerPose& /*previous*/,
   // The viewer would reach the nearest slice: nothing can be shifted.
   const bool reaches = step.translation.z >= current_slices.front().near;
   std::vector<SliceDecision> decisions(layers_.size());
-  if (!reaches && !settings_.always_rebuild) {
+  if (!reaches && settings_.policy->allows_reuse()) {
     decisions =
         decide_slice_updates(camera_, current_slices, step, accumulated, settings_.epsilon_px);
   } else {

@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "engine/animator.h"
+#include "engine/reuse_policy.h"
 #include "flow/camera.h"
 #include "scene/scene.h"
 #include "scene_shifting/scene_shifting.h"
@@ -56,7 +57,9 @@ struct SceneShiftingSettings {
   Sampling sampling = Sampling::kNearest;
   // Layers reach this fraction of the image size beyond every side of the frame (>= 0).
   double guard_band = 1.0;
-  bool always_rebuild = false;  // the exact baseline: every slice rendered every frame
+  // A policy that allows no reuse (rerender, core/engine/reuse_policy.h) is the exact
+  // baseline: every slice rendered every frame. Any other policy shifts and scales layers.
+  const ReusePolicy* policy = &default_reuse_policy();
   int max_slices = 64;          // cap on the slice count (scene_slices throws beyond it)
 };
 

@@ -50,7 +50,7 @@ bool prepare_window(MainWindow* window, const LaunchOptions& options, std::strin
   }
   if (options.mode) {
     EngineSettings settings = animation->settings();
-    settings.mode = *options.mode;
+    settings.policy = options.mode;
     animation->set_settings(settings);
   }
   PanelDisplay display = PanelDisplay::kSideBySide;

@@ -8,6 +8,7 @@
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
 #include "engine/engine.h"
+#include "engine/reuse_policy.h"
 #include "app/lessons.h"
 #include "app/view_table.h"
 #include "models/animation_sources.h"
@@ -74,12 +75,10 @@ void read_source(const CliArgs& cli, LaunchOptions* options) {
 void read_mode(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--mode")) return;
   const std::string text = cli.values("--mode").at(0);
-  EngineMode mode = EngineMode::kPerspective;
-  if (!parse_engine_mode(text, &mode)) {
-    throw UsageError("--mode: unknown mode '" + text +
-                     "' (known: perspective, affine, exact, rerender)");
+  options->mode = find_reuse_policy(text);
+  if (!options->mode) {
+    throw UsageError("--mode: unknown mode '" + text + "' (known: " + reuse_policy_names() + ")");
   }
-  options->mode = mode;
 }
 
 void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
@@ -249,7 +248,7 @@ std::string launch_usage() {
   for (const ViewEntry& view : view_table()) titled.push_back(view.name + " (" + view.title + ")");
   return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
          "             [--source " + joined(scene_source_kinds(), "|") + "]\n"
-         "             [--mode perspective|affine|exact|rerender]\n"
+         "             [--mode " + reuse_policy_names("|") + "]\n"
          "             [--animation-show side-by-side|difference|blink]\n"
          "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
          "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"

@@ -43,8 +43,9 @@ struct LaunchOptions {
   // --source KIND: how the scene plays, a source kind with a viewer script
   // (gui/models/animation_sources.h): "scene" (the default) or "scene-shifting".
   std::string source_kind = "scene";
-  // --mode perspective|affine|exact|rerender: the animation engine's mode.
-  std::optional<EngineMode> mode;
+  // --mode NAME: the animation engine's reuse policy (core/engine/reuse_policy.h); null
+  // when not given.
+  const ReusePolicy* mode = nullptr;
   // --animation-show side-by-side|difference|blink: how the animation view shows its panels.
   std::string animation_show;
   bool presentation = false;  // start in presentation mode

@@ -48,7 +48,7 @@ Lesson affine_vs_perspective() {
       "to see where the two disagree.";
   lesson.view = "animation";
   lesson.scene = default_demo_scene();
-  lesson.mode = EngineMode::kAffine;
+  lesson.mode = &reuse_policy("affine");
   return lesson;
 }
 

@@ -24,11 +24,12 @@ struct Lesson {
   bool play_basis = false;   // animate the gallery's deformation amount
   bool play_motion = false;  // play the scene's motion
   // What the animation and analysis views play (gui/models/animation_sources.h: a kind of
-  // its table, a name and a viewer script) and in which engine mode.
+  // its table, a name and a viewer script) and with which reuse policy
+  // (core/engine/reuse_policy.h).
   std::string animation_kind = "plane";
   std::string animation_name;
   std::string animation_viewer;
-  EngineMode mode = EngineMode::kPerspective;
+  const ReusePolicy* mode = &default_reuse_policy();
 };
 
 // Every preset, in teaching order.

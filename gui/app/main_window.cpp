@@ -268,7 +268,7 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   basis_view()->set_basis(lesson.basis);
   basis_view()->set_playing(lesson.play_basis);
   EngineSettings settings = animation_model_->settings();
-  settings.mode = lesson.mode;
+  settings.policy = lesson.mode;
   animation_model_->set_settings(settings);
   animation_model_->set_source(
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});

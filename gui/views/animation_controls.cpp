@@ -13,13 +13,9 @@
 namespace oflab {
 namespace {
 
-constexpr EngineMode kModes[] = {EngineMode::kPerspective, EngineMode::kAffine,
-                                 EngineMode::kExact, EngineMode::kRerender};
 constexpr DeltaPolicy kDeltas[] = {DeltaPolicy::kDissertation, DeltaPolicy::kOne,
                                    DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
                                    DeltaPolicy::kFourthRootAbsDet};
-constexpr const char* kThresholdLabels[kTermCount] = {"none", "translate", "affine",
-                                                     "perspective"};
 
 QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
@@ -119,7 +115,10 @@ QWidget* AnimationControls::make_engine_row() {
   layout->setContentsMargins(0, 0, 0, 0);
   mode_box_ = new QComboBox(row);
   mode_box_->setObjectName(QStringLiteral("animation_mode"));
-  for (EngineMode m : kModes) mode_box_->addItem(engine_mode_name(m), int(m));
+  for (const ReusePolicy& p : reuse_policies()) {
+    mode_box_->addItem(p.name, QString(p.name));
+    mode_box_->setItemData(mode_box_->count() - 1, QString(p.summary), Qt::ToolTipRole);
+  }
   affine_switch_ = new QPushButton(tr("Affine/persp."), row);
   affine_switch_->setToolTip(tr("Switches between the affine and the perspective mode"));
   layout->addWidget(new QLabel(tr("Mode"), row));
@@ -128,8 +127,9 @@ QWidget* AnimationControls::make_engine_row() {
   delta_box_ = new QComboBox(row);
   for (DeltaPolicy d : kDeltas) delta_box_->addItem(delta_policy_name(d), int(d));
   sampling_box_ = new QComboBox(row);
-  sampling_box_->addItem(tr("nearest"), int(Sampling::kNearest));
-  sampling_box_->addItem(tr("bilinear"), int(Sampling::kBilinear));
+  for (int i = 0; i < kSamplingCount; ++i) {
+    sampling_box_->addItem(sampling_name(Sampling(i)), i);
+  }
   layout->addWidget(new QLabel(tr("Delta"), row));
   layout->addWidget(delta_box_);
   layout->addWidget(sampling_box_);
@@ -147,7 +147,7 @@ QWidget* AnimationControls::make_engine_row() {
     thresholds_[k]->setRange(0.0, 100.0);
     thresholds_[k]->setDecimals(2);
     thresholds_[k]->setSingleStep(0.25);
-    thresholds_[k]->setToolTip(tr("Threshold of level %1, pixels").arg(kThresholdLabels[k]));
+    thresholds_[k]->setToolTip(tr("Threshold of level %1, pixels").arg(level_name(Level(k))));
     thresholds_[k]->setKeyboardTracking(false);
     thresholds->addWidget(thresholds_[k]);
     connect(thresholds_[k], QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
@@ -157,8 +157,8 @@ QWidget* AnimationControls::make_engine_row() {
     connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { emit settings_edited(); });
   }
   connect(affine_switch_, &QPushButton::clicked, this, [this] {
-    const bool affine = mode_box_->currentData().toInt() == int(EngineMode::kAffine);
-    select_data(mode_box_, int(affine ? EngineMode::kPerspective : EngineMode::kAffine));
+    const bool affine = mode_box_->currentData().toString() == QStringLiteral("affine");
+    select_data(mode_box_, affine ? QStringLiteral("perspective") : QStringLiteral("affine"));
     emit settings_edited();
   });
   thresholds->addStretch(1);
@@ -168,7 +168,8 @@ QWidget* AnimationControls::make_engine_row() {
 
 EngineSettings AnimationControls::settings() const {
   EngineSettings s;
-  s.mode = static_cast<EngineMode>(mode_box_->currentData().toInt());
+  s.policy = find_reuse_policy(mode_box_->currentData().toString().toStdString());
+  if (!s.policy) s.policy = &default_reuse_policy();  // the box lists the registry only
   for (int k = 0; k < kTermCount; ++k) s.thresholds[size_t(k)] = thresholds_[k]->value();
   s.delta = static_cast<DeltaPolicy>(delta_box_->currentData().toInt());
   s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
@@ -177,7 +178,7 @@ EngineSettings AnimationControls::settings() const {
 
 void AnimationControls::set_settings(const EngineSettings& s) {
   const QSignalBlocker b0(mode_box_), b1(delta_box_), b2(sampling_box_);
-  select_data(mode_box_, int(s.mode));
+  select_data(mode_box_, QString(s.policy->name));
   select_data(delta_box_, int(s.delta));
   select_data(sampling_box_, int(s.sampling));
   for (int k = 0; k < kTermCount; ++k) {

@@ -1,6 +1,7 @@
 // The animation view's control bar: what plays (an entry of the source-kind table,
-// gui/models/animation_sources.h, with its shipped name and viewer script), the engine
-// mode (with a one-click affine/perspective switch), the per-level thresholds, the Delta
+// gui/models/animation_sources.h, with its shipped name and viewer script), the engine's
+// reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
+// affine/perspective switch), the per-level thresholds, the Delta
 // policy, the sampling, and how the two panels are shown. It only edits values; the view
 // applies them and puts them back when it refuses them.
 #pragma once

@@ -149,7 +149,7 @@ QImage AnimationView::panel(bool exact) {
   draw_level_overlay(image, model_->animator()->outlines(), model_->current().levels, text,
                      theme_.line_width + 1.0, text_scale);
   const std::string title =
-      fill_pattern(model_->source_kind().panel_title, engine_mode_name(model_->settings().mode));
+      fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
   draw_panel_title(image, QString::fromStdString(title), text, text_scale);
   return image;
 }

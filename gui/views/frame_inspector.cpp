@@ -61,13 +61,16 @@ QString explain_frame(const AnimationFrame& frame, const EngineSettings& setting
   for (int level = 0; level < kTermCount; ++level) {
     const double error = neglected_error(r.carried, r.flow, Level(level));
     const double limit = settings.thresholds[size_t(level)];
-    const bool banned = level == int(Level::kPerspective) && settings.mode == EngineMode::kAffine;
+    const QString banned =
+        settings.policy->allows(Level(level))
+            ? QString()
+            : QStringLiteral(" (not allowed by the %1 policy)").arg(settings.policy->name);
     text += QStringLiteral("&nbsp;&nbsp;%1: leaves %2 px %3 %4 px%5<br>")
                 .arg(level_name(Level(level)))
                 .arg(px(error))
                 .arg(error <= limit ? QStringLiteral("&le;") : QStringLiteral("&gt;"))
                 .arg(px(limit))
-                .arg(banned ? QStringLiteral(" (not allowed in affine mode)") : QString());
+                .arg(banned);
   }
   if (!r.note.empty()) text += QStringLiteral("Note: %1<br>").arg(QString::fromStdString(r.note));
   text += QStringLiteral("Flow this frame (translation, affine, perspective, higher): "

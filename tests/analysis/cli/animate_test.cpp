@@ -32,12 +32,12 @@ struct ScriptRun {
   RunSummary summary;
 };
 
-ScriptRun run_script(const std::string& name, EngineMode mode) {
+ScriptRun run_script(const std::string& name, const std::string& policy) {
   static const Image texture = read_image(default_texture_path());
   RunSource source;
   source.script = read_script_file(resolve_script_path(name));
   source.texture = texture;
-  source.settings.engine.mode = mode;
+  source.settings.engine.policy = &reuse_policy(policy);
   PlayOptions o;
   o.baseline = false;
   const AnimationRun run = source_kind("plane").play(source, o);
@@ -54,13 +54,13 @@ int count(const ScriptRun& r, Level l) {
 }
 
 TEST(Experiment1, StationaryIsAllNoUpdate) {
-  const ScriptRun r = run_script("stationary", EngineMode::kPerspective);
+  const ScriptRun r = run_script("stationary", "perspective");
   EXPECT_EQ(count(r, Level::kNone), r.summary.frames - 1);
   EXPECT_EQ(r.reports[0].level, Level::kRerender);
 }
 
 TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
-  const ScriptRun r = run_script("translation-1", EngineMode::kPerspective);
+  const ScriptRun r = run_script("translation-1", "perspective");
   EXPECT_EQ(count(r, Level::kNone) + count(r, Level::kTranslate), r.summary.frames - 1);
   for (size_t i = 2; i < r.reports.size(); ++i) {
     EXPECT_NE(r.reports[i].level, r.reports[i - 1].level) << "frame " << i;
@@ -68,7 +68,7 @@ TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
 }
 
 TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
-  const ScriptRun r = run_script("zoom", EngineMode::kPerspective);
+  const ScriptRun r = run_script("zoom", "perspective");
   EXPECT_GE(count(r, Level::kNone) + count(r, Level::kAffine), 0.8 * r.summary.frames);
   EXPECT_GT(count(r, Level::kNone), 0);
   EXPECT_GT(count(r, Level::kAffine), 0);
@@ -76,7 +76,7 @@ TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
 }
 
 TEST(Experiment1, RotationNeedsAffineWarpsAndRerenders) {
-  const ScriptRun r = run_script("rotation", EngineMode::kPerspective);
+  const ScriptRun r = run_script("rotation", "perspective");
   EXPECT_GT(count(r, Level::kAffine), r.summary.frames / 2);
   EXPECT_GT(count(r, Level::kRerender), 5);
   EXPECT_EQ(count(r, Level::kPerspective), 0);
@@ -84,7 +84,7 @@ TEST(Experiment1, RotationNeedsAffineWarpsAndRerenders) {
 
 TEST(Experiment1, LoopUsesPerspectiveNearTheViewerAndCheapLevelsFarAway) {
   const MotionScript s = read_script_file(resolve_script_path("loop"));
-  const ScriptRun r = run_script("loop", EngineMode::kPerspective);
+  const ScriptRun r = run_script("loop", "perspective");
   EXPECT_GT(count(r, Level::kPerspective), 0);
   double persp_depth = 0, cheap_depth = 0;
   int persp = 0, cheap = 0;
@@ -100,13 +100,13 @@ TEST(Experiment1, LoopUsesPerspectiveNearTheViewerAndCheapLevelsFarAway) {
 TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
   for (const char* name : {"stationary", "translation-1", "translation-2", "zoom",
                                   "zoom-rotation", "rotation", "loop"}) {
-    for (EngineMode mode : {EngineMode::kPerspective, EngineMode::kAffine, EngineMode::kExact,
-                            EngineMode::kRerender}) {
+    for (const ReusePolicy& policy : reuse_policies()) {
+      const std::string mode = policy.name;
       const ScriptRun r = run_script(name, mode);
       for (const FrameReport& f : r.reports) {
         if (!f.visible) continue;
         EXPECT_LE(f.measured_error_px, 1.0 + kEstimateAllowancePx + f.affine_view_error_px)
-            << name << " " << engine_mode_name(mode) << " frame " << f.frame;
+            << name << " " << mode << " frame " << f.frame;
       }
     }
   }
@@ -114,7 +114,7 @@ TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
 
 TEST(Experiment1, ExactModeKeepsNoModelErrorAndNeverNeedsTheHigherOrderBudget) {
   for (const char* name : {"translation-2", "zoom-rotation", "loop"}) {
-    const ScriptRun r = run_script(name, EngineMode::kExact);
+    const ScriptRun r = run_script(name, "exact");
     for (const FrameReport& f : r.reports) {
       EXPECT_EQ(f.accumulated[3], 0.0);
       if (f.frame > 0 && f.level == Level::kRerender) {

@@ -73,8 +73,7 @@ TEST(Experiment1Published, EveryShippedExperimentScriptHasAPublishedRow) {
 TEST(Experiment1Published, OnlyScriptsPublishedWithPerspectiveWarpsUseThem) {
   for (const Experiment1Script& s : experiment1().scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
-    const int perspective =
-        count_after_first(s.mode(EngineMode::kPerspective), Level::kPerspective);
+    const int perspective = count_after_first(s.mode("perspective"), Level::kPerspective);
     if (pub->level_percent[static_cast<int>(Level::kPerspective)] > 0) {
       EXPECT_GT(perspective, 0) << s.script;
     } else {
@@ -87,17 +86,16 @@ TEST(Experiment1Published, ScriptsPublishedWithOnlyNoUpdateOrTranslationNeverRer
   for (const char* name : {"stationary", "translation-1"}) {
     for (const MeasuredRun& run : script(name).modes) {
       EXPECT_EQ(count_after_first(run, Level::kRerender), 0)
-          << name << " " << engine_mode_name(run.settings.mode);
+          << name << " " << run.settings.policy->name;
       EXPECT_EQ(count_after_first(run, Level::kAffine), 0) << name;
     }
   }
 }
 
 TEST(Experiment1Published, StationaryNeedsNoUpdateAndTranslationOneTranslatesEverySecondFrame) {
-  const MeasuredRun& still = script("stationary").mode(EngineMode::kPerspective);
+  const MeasuredRun& still = script("stationary").mode("perspective");
   EXPECT_EQ(level_percent_after_first(still)[static_cast<int>(Level::kNone)], 100.0);
-  const auto moving =
-      level_percent_after_first(script("translation-1").mode(EngineMode::kPerspective));
+  const auto moving = level_percent_after_first(script("translation-1").mode("perspective"));
   EXPECT_NEAR(moving[static_cast<int>(Level::kNone)], 50.0, 2.0);
   EXPECT_NEAR(moving[static_cast<int>(Level::kTranslate)], 50.0, 2.0);
 }
@@ -106,12 +104,12 @@ TEST(Experiment1Published, ScriptsPublishedWithRerendersWarpAffinelyAndRotationR
   // Published: re-renders in translation-2, zoom, zoom-rotation and rotation, most of all
   // in rotation; the affine warp is their commonest update.
   for (const char* name : {"translation-2", "zoom", "zoom-rotation", "rotation"}) {
-    const MeasuredRun& run = script(name).mode(EngineMode::kPerspective);
+    const MeasuredRun& run = script(name).mode("perspective");
     EXPECT_GT(count_after_first(run, Level::kAffine), 0) << name;
   }
   const auto rerender_share = [](const char* name) {
     return level_percent_after_first(
-        script(name).mode(EngineMode::kPerspective))[static_cast<int>(Level::kRerender)];
+        script(name).mode("perspective"))[static_cast<int>(Level::kRerender)];
   };
   for (const char* name : {"translation-2", "zoom", "zoom-rotation"}) {
     EXPECT_GT(rerender_share("rotation"), rerender_share(name)) << name;
@@ -124,7 +122,7 @@ TEST(Experiment1Published, WorkSavingsOrderTheScriptsAsThePublishedTimeSavings) 
   // written (deterministic), group against group.
   const auto work = [](const std::string& name) {
     const Experiment1Script& s = script(name);
-    return work_saved(s.mode(EngineMode::kPerspective), s.baseline);
+    return work_saved(s.mode("perspective"), s.baseline);
   };
   const std::vector<std::vector<std::string>> groups = {{"stationary", "translation-1"},
                                                         {"translation-2", "zoom", "zoom-rotation"},
@@ -145,9 +143,9 @@ TEST(Experiment1Published, WorkSavingsOrderTheScriptsAsThePublishedTimeSavings) 
 TEST(Experiment1Published, AffineOnlyLoopDoesLessWorkThanThePerspectiveLoop) {
   // Section 6.5.1: the affine-only loop took about a third of the full algorithm's time.
   const Experiment1Script& loop = script("loop");
-  const MeasuredRun& affine = loop.mode(EngineMode::kAffine);
+  const MeasuredRun& affine = loop.mode("affine");
   EXPECT_EQ(count_after_first(affine, Level::kPerspective), 0);
-  EXPECT_LT(affine.summary.pixels, loop.mode(EngineMode::kPerspective).summary.pixels);
+  EXPECT_LT(affine.summary.pixels, loop.mode("perspective").summary.pixels);
 }
 
 TEST(Experiment1Published, LevelPercentagesCoverEveryFrameAfterTheFirst) {

@@ -26,7 +26,7 @@ Session sample_session() {
   s.source_kind = "scene";
   s.source_name = "two";
   s.viewer_script = "translate";
-  s.settings.mode = EngineMode::kAffine;
+  s.settings.policy = &reuse_policy("affine");
   s.settings.thresholds = {0.5, 1.5, 2.0, 0.75};
   s.settings.delta = DeltaPolicy::kOne;
   s.settings.sampling = Sampling::kBilinear;
@@ -71,7 +71,7 @@ TEST(SessionFile, WrittenSessionReadsBackUnchanged) {
   EXPECT_EQ(back.source_kind, s.source_kind);
   EXPECT_EQ(back.source_name, s.source_name);
   EXPECT_EQ(back.viewer_script, s.viewer_script);
-  EXPECT_EQ(back.settings.mode, EngineMode::kAffine);
+  EXPECT_EQ(back.settings.policy, &reuse_policy("affine"));
   EXPECT_EQ(back.settings.thresholds, s.settings.thresholds);
   EXPECT_EQ(back.settings.delta, DeltaPolicy::kOne);
   EXPECT_EQ(back.settings.sampling, Sampling::kBilinear);

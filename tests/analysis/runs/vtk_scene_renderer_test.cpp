@@ -51,7 +51,7 @@ void compare_with_exact(const std::string& scene_name, const std::string& script
   const Scene scene = read_scene_file(resolve_scene_path(scene_name));
   const ViewerScript script = read_viewer_script_file(resolve_viewer_script_path(script_name));
   SceneSettings settings;
-  settings.engine.mode = EngineMode::kRerender;
+  settings.engine.policy = &reuse_policy("rerender");
   SceneAnimator exact(scene, script.camera, settings);
   VtkSceneRenderer vtk(scene, script.camera, settings.near);
   for (int f : frames) {

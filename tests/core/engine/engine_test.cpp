@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "image/composite.h"
 #include "engine/decision.h"
 #include "engine/engine.h"
+#include "engine/reuse_policy.h"
 #include "flow/homography.h"
 #include "engine/script.h"
 
@@ -60,21 +63,74 @@ TEST(Decision, HigherOrderMeasurePredictsTheTaylorHomographyResidual) {
 
 TEST(Decision, LowestLevelWithinItsBudgetWins) {
   const TermArray thresholds{1.0, 1.0, 1.0, 1.0};
-  EXPECT_EQ(choose_level({0, 0, 0, 0}, {0.5, 0, 0, 0}, thresholds, true), Level::kNone);
-  EXPECT_EQ(choose_level({0.6, 0, 0, 0}, {0.5, 0, 0, 0}, thresholds, true), Level::kTranslate);
-  EXPECT_EQ(choose_level({0, 0.6, 0, 0}, {0, 0.5, 0, 0}, thresholds, true), Level::kAffine);
-  EXPECT_EQ(choose_level({0, 0, 0.6, 0}, {0, 0, 0.5, 0}, thresholds, true), Level::kPerspective);
-  EXPECT_EQ(choose_level({0, 0, 0.6, 0}, {0, 0, 0.5, 0}, thresholds, false), Level::kRerender);
-  EXPECT_EQ(choose_level({0, 0, 0, 0.6}, {0, 0, 0, 0.5}, thresholds, true), Level::kRerender);
+  const LevelSet all = kAllLevels, no_perspective{true, true, true, false, true};
+  EXPECT_EQ(choose_level({0, 0, 0, 0}, {0.5, 0, 0, 0}, thresholds, all), Level::kNone);
+  EXPECT_EQ(choose_level({0.6, 0, 0, 0}, {0.5, 0, 0, 0}, thresholds, all), Level::kTranslate);
+  EXPECT_EQ(choose_level({0, 0.6, 0, 0}, {0, 0.5, 0, 0}, thresholds, all), Level::kAffine);
+  EXPECT_EQ(choose_level({0, 0, 0.6, 0}, {0, 0, 0.5, 0}, thresholds, all), Level::kPerspective);
+  EXPECT_EQ(choose_level({0, 0, 0.6, 0}, {0, 0, 0.5, 0}, thresholds, no_perspective),
+            Level::kRerender);
+  EXPECT_EQ(choose_level({0, 0, 0, 0.6}, {0, 0, 0, 0.5}, thresholds, all), Level::kRerender);
   // Budgets hold the sum of what a level neglects, not each term alone.
-  EXPECT_EQ(choose_level({0, 0, 0, 0}, {0.6, 0.6, 0, 0}, thresholds, true), Level::kTranslate);
+  EXPECT_EQ(choose_level({0, 0, 0, 0}, {0.6, 0.6, 0, 0}, thresholds, all), Level::kTranslate);
+}
+
+TEST(Decision, LevelNamesRoundTripAndTitlesSpellReRender) {
+  for (int l = 0; l < kLevelCount; ++l) {
+    Level parsed = Level::kNone;
+    ASSERT_TRUE(parse_level(level_name(Level(l)), &parsed)) << level_name(Level(l));
+    EXPECT_EQ(parsed, Level(l));
+  }
+  EXPECT_STREQ(level_name(Level::kRerender), "rerender");
+  EXPECT_STREQ(level_title(Level::kRerender), "re-render");
+  EXPECT_STREQ(level_title(Level::kAffine), "affine");
+  Level untouched = Level::kAffine;
+  EXPECT_FALSE(parse_level("re-render", &untouched));
+  EXPECT_FALSE(parse_level("", &untouched));
+  EXPECT_EQ(untouched, Level::kAffine);
+}
+
+// What a policy outside the registry saw, frame by frame (see the test below).
+std::vector<FrameInputs> g_seen_inputs;
+Level recording_choice(const ReusePolicy& policy, const FrameInputs& inputs) {
+  g_seen_inputs.push_back(inputs);
+  return threshold_choice(policy, inputs);
+}
+
+TEST(Engine, APolicyOutsideTheRegistryDrivesTheEngineAndSeesLevelCosts) {
+  const Camera cam = make_camera(300.0, 320, 240);
+  const auto frames = expand_segments(facing_pose(2.0), MotionModel::kSpinAboutCentre,
+                                      {{30, Vec3(0.004, 0.0, -0.01), Vec3(0.01, 0.02, 0.03)}});
+  ReusePolicy recording = default_reuse_policy();
+  recording.choose = recording_choice;
+  EngineSettings spy;
+  spy.policy = &recording;
+  PlaneAnimator a(cam, checker_texture(96, 64), spy), b(cam, checker_texture(96, 64), {});
+  a.start(frames[0].pose);
+  b.start(frames[0].pose);
+  g_seen_inputs.clear();
+  for (size_t i = 1; i < frames.size(); ++i) {
+    const Image& shown = a.displayed().layer.image;
+    const std::int64_t area = std::int64_t(shown.width()) * shown.height();
+    const FrameReport r = a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
+    ASSERT_EQ(g_seen_inputs.size(), i);
+    const FrameInputs& in = g_seen_inputs.back();
+    EXPECT_EQ(in.flow, r.flow);
+    EXPECT_EQ(in.carried, r.carried);
+    EXPECT_EQ(in.pixels[int(Level::kTranslate)], 0);
+    EXPECT_EQ(in.pixels[int(Level::kAffine)], area);
+    EXPECT_EQ(in.pixels[int(Level::kRerender)], area);
+    EXPECT_GE(in.pixels[int(Level::kPerspective)], area);
+    EXPECT_EQ(r.level, b.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose).level)
+        << "frame " << i;
+  }
 }
 
 TEST(Engine, RerenderModeEqualsADirectExactRenderPixelForPixel) {
   const Camera cam = make_camera(300.0, 320, 240);
   const Layer tex = checker_texture(96, 64);
   EngineSettings s;
-  s.mode = EngineMode::kRerender;
+  s.policy = &reuse_policy("rerender");
   const auto frames = expand_segments(facing_pose(2.0), MotionModel::kSpinAboutCentre,
                                       {{20, Vec3(0.01, 0.0, -0.02), Vec3(0.02, 0.03, 0.05)}});
   PlaneAnimator a(cam, tex, s);
@@ -113,7 +169,7 @@ TEST(Engine, ExactModeHasNoModelErrorAndRerendersOnlyForSampling) {
   const auto frames = expand_segments(start, MotionModel::kSpinAboutCentre,
                                       {{80, Vec3(0.005, 0.0, -0.01), Vec3(0.01, 0.03, 0.02)}});
   EngineSettings s;
-  s.mode = EngineMode::kExact;
+  s.policy = &reuse_policy("exact");
   PlaneAnimator a(cam, checker_texture(96, 64), s);
   a.start(frames[0].pose);
   for (size_t i = 1; i < frames.size(); ++i) {

@@ -114,6 +114,22 @@ void check_random_cases(unsigned seed, bool perspective, WarpOptions options, in
   EXPECT_GT(non_empty, 250);
 }
 
+TEST(Sampling, NamesRoundTripAndUnknownWordsAreRejected) {
+  for (int i = 0; i < kSamplingCount; ++i) {
+    Sampling parsed = Sampling(1 - i);
+    ASSERT_TRUE(parse_sampling(sampling_name(Sampling(i)), &parsed));
+    EXPECT_EQ(parsed, Sampling(i));
+  }
+  EXPECT_STREQ(sampling_name(Sampling::kNearest), "nearest");
+  EXPECT_STREQ(sampling_name(Sampling::kBilinear), "bilinear");
+  EXPECT_EQ(sampling_name_list(), "nearest, bilinear");
+  EXPECT_EQ(sampling_name_list("|"), "nearest|bilinear");
+  Sampling untouched = Sampling::kBilinear;
+  EXPECT_FALSE(parse_sampling("Nearest", &untouched));
+  EXPECT_FALSE(parse_sampling("", &untouched));
+  EXPECT_EQ(untouched, Sampling::kBilinear);
+}
+
 TEST(WarpKernels, NearestAffineKernelMatchesReferenceOnRandomMatrices) {
   check_random_cases(11, false, {Sampling::kNearest, WarpKernel::kAffine}, 0);
 }

@@ -93,7 +93,7 @@ TEST(SceneAnimator, RerenderModeMatchesTheRayCastReference) {
   const Scene scene = scene_with(polygons);
   const Camera camera = make_camera(200.0, 200, 150);
   SceneSettings settings;
-  settings.engine.mode = EngineMode::kRerender;
+  settings.engine.policy = &reuse_policy("rerender");
   SceneAnimator animator(scene, camera, settings);
   for (const Vec3& eye : {Vec3(0, 1.5, 5), Vec3(-4, 2, 2), Vec3(3, 3.5, 3), Vec3(1, -0.2, 4)}) {
     const ViewerPose view = look_at(eye, Vec3(0, 0, -0.5), Vec3(0, 1, 0));
@@ -114,7 +114,7 @@ TEST(SceneAnimator, SplitPolygonsAreCompositedPieceByPiece) {
   const Scene scene = scene_with(polygons);
   const Camera camera = make_camera(220.0, 200, 150);
   SceneSettings settings;
-  settings.engine.mode = EngineMode::kRerender;
+  settings.engine.policy = &reuse_policy("rerender");
   SceneAnimator animator(scene, camera, settings);
   ASSERT_EQ(animator.bsp().stats().splits, 1);
   for (const Vec3& eye : {Vec3(3, 3, 4), Vec3(2, 4, 2), Vec3(4, 2.5, -0.5)}) {
@@ -134,10 +134,9 @@ TEST(SceneAnimator, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
   const Camera camera = make_camera(160.0, 160, 120);
   const auto frames = path(look_at(Vec3(0.1, 0.05, 1.5), Vec3(0.1, 0.05, 0), Vec3(0, 1, 0)),
                            Vec3(0, 0, 0.05), Vec3(0, 0.004, 0), 70);
-  for (EngineMode mode :
-       {EngineMode::kRerender, EngineMode::kPerspective, EngineMode::kAffine, EngineMode::kExact}) {
+  for (const std::string mode : {"rerender", "perspective", "affine", "exact"}) {
     SceneSettings settings;
-    settings.engine.mode = mode;
+    settings.engine.policy = &reuse_policy(mode);
     SceneAnimator animator(scene, camera, settings);
     int clipped = 0;
     ASSERT_NO_THROW(
@@ -145,12 +144,12 @@ TEST(SceneAnimator, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
           clipped += r.clipped;
           if (i % 5 != 0) return;
           const Image reference = ray_cast_scene(scene, camera, frames[i].pose, settings.near);
-          if (mode == EngineMode::kRerender) {
+          if (mode == "rerender") {
             expect_matches_reference(a.frame(), reference, kExactMismatch,
                                      "frame " + std::to_string(i));
           } else {
             EXPECT_GE(coverage_iou(a.frame(), reference), kApproximateCoverageIou)
-                << engine_mode_name(mode) << " frame " << i;
+                << mode << " frame " << i;
           }
         }));
     EXPECT_GT(clipped, 3) << "the path must cross the near plane";
@@ -193,9 +192,9 @@ TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
   const Camera camera = make_camera(240.0, 200, 150);
   const auto frames = path(look_at(Vec3(0, 0.1, 4), Vec3(0, 0.1, 0), Vec3(0, 1, 0)),
                            Vec3(0.04, 0, 0), Vec3(0, 0, 0), 60);
-  for (EngineMode mode : {EngineMode::kRerender, EngineMode::kPerspective}) {
+  for (const std::string mode : {"rerender", "perspective"}) {
     SceneSettings skip, keep;
-    skip.engine.mode = keep.engine.mode = mode;
+    skip.engine.policy = keep.engine.policy = &reuse_policy(mode);
     keep.skip_hidden = false;
     SceneAnimator a(scene, camera, skip), b(scene, camera, keep);
     int hidden = 0;
@@ -205,7 +204,7 @@ TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
     });
     play(a, frames, [&](int i, const AnimationFrame& r, const SceneAnimator& x) {
       hidden += r.hidden;
-      if (mode == EngineMode::kRerender) {
+      if (mode == "rerender") {
         EXPECT_EQ(x.frame().pixels(), kept_frames[i].pixels()) << "frame " << i;
       } else {
         // A polygon that comes out is re-rendered exactly where the other run shows its
@@ -214,7 +213,7 @@ TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
             << "frame " << i;
       }
     });
-    EXPECT_GT(hidden, 20) << engine_mode_name(mode);
+    EXPECT_GT(hidden, 20) << mode;
   }
 }
 
@@ -233,20 +232,19 @@ TEST(SceneAnimator, EveryModeAnimatesCubesWithinItsBudget) {
                                      {25, Vec3(0.0), Vec3(0, 0, 0.02)},
                                      {5, Vec3(0.0), Vec3(0.0)},
                                      {20, Vec3(0.05, 0, 0), Vec3(0, -0.05 / 5.2, 0)}});
-  for (EngineMode mode :
-       {EngineMode::kPerspective, EngineMode::kAffine, EngineMode::kExact, EngineMode::kRerender}) {
+  for (const std::string mode : {"perspective", "affine", "exact", "rerender"}) {
     SceneSettings settings;
-    settings.engine.mode = mode;
+    settings.engine.policy = &reuse_policy(mode);
     SceneAnimator animator(scene, camera, settings);
     std::array<int, kLevelCount> levels{};
     play(animator, frames, [&](int i, const AnimationFrame& r, const SceneAnimator&) {
       for (int l = 0; l < kLevelCount; ++l) levels[l] += r.levels[l];
       EXPECT_EQ(r.drawn() + r.culled() + r.hidden, r.layers);
-      if (mode != EngineMode::kAffine) {
-        EXPECT_LE(r.max_measured_error_px, 1.25) << engine_mode_name(mode) << " frame " << i;
+      if (mode != "affine") {
+        EXPECT_LE(r.max_measured_error_px, 1.25) << mode << " frame " << i;
       }
     });
-    if (mode == EngineMode::kRerender) {
+    if (mode == "rerender") {
       EXPECT_EQ(levels[static_cast<int>(Level::kRerender)],
                 std::accumulate(levels.begin(), levels.end(), 0));
     } else {
@@ -254,7 +252,7 @@ TEST(SceneAnimator, EveryModeAnimatesCubesWithinItsBudget) {
                     levels[static_cast<int>(Level::kTranslate)] +
                     levels[static_cast<int>(Level::kAffine)],
                 levels[static_cast<int>(Level::kRerender)])
-          << engine_mode_name(mode);
+          << mode;
     }
   }
 }
@@ -295,11 +293,11 @@ TEST(SceneAnimator, JoinedFacesShowGapsInAffineModeOnly) {
   const Camera camera = make_camera(300.0, 240, 180);
   const auto frames = path(look_at(Vec3(-1.2, 1.4, 2.2), Vec3(0, 0, 0), Vec3(0, 1, 0)),
                            Vec3(0.03, 0, 0), Vec3(0, -0.03 / 2.9, 0), 60);
-  std::map<EngineMode, int> gaps;
-  for (EngineMode mode : {EngineMode::kPerspective, EngineMode::kExact, EngineMode::kAffine}) {
+  std::map<std::string, int> gaps;
+  for (const std::string mode : {"perspective", "exact", "affine"}) {
     SceneSettings settings, exact;
-    settings.engine.mode = mode;
-    exact.engine.mode = EngineMode::kRerender;
+    settings.engine.policy = &reuse_policy(mode);
+    exact.engine.policy = &reuse_policy("rerender");
     SceneAnimator animator(scene, camera, settings), reference(scene, camera, exact);
     play(animator, frames, [&](int i, const AnimationFrame&, const SceneAnimator& a) {
       i == 0 ? reference.start(frames[0].pose)
@@ -310,9 +308,9 @@ TEST(SceneAnimator, JoinedFacesShowGapsInAffineModeOnly) {
   // Each face may be off by its 1 px budget (plus the 0.25 px allowance), so two faces can
   // part by up to 2.5 px: no gap pixel may lie more than 1 px from a drawn pixel. Affine
   // views of the faces part by far more.
-  EXPECT_LE(gaps[EngineMode::kPerspective], 1);
-  EXPECT_LE(gaps[EngineMode::kExact], 1);
-  EXPECT_GE(gaps[EngineMode::kAffine], 3);
+  EXPECT_LE(gaps["perspective"], 1);
+  EXPECT_LE(gaps["exact"], 1);
+  EXPECT_GE(gaps["affine"], 3);
 }
 
 }  // namespace

@@ -10,11 +10,13 @@
 // plane scores far below (a one-pixel shift of the whole frame scores under 14 dB).
 #include "views/animation_view.h"
 
+#include <QComboBox>
 #include <QTemporaryDir>
 #include <fstream>
 
 #include "views/analysis_view.h"
 #include "models/animation_model.h"
+#include "views/frame_inspector.h"
 #include "adapters/frame_images.h"
 #include "formats/session_file.h"
 #include "views/palette.h"
@@ -33,9 +35,9 @@ class AnimationViewTest : public WindowTest {
   AnimationView& animation() { return *window().animation_view(); }
   AnimationModel& model() { return *window().animation_model(); }
 
-  void set_mode(EngineMode mode) {
+  void set_mode(const std::string& policy) {
     EngineSettings settings = model().settings();
-    settings.mode = mode;
+    settings.policy = &reuse_policy(policy);
     ASSERT_TRUE(model().set_settings(settings));
   }
 
@@ -162,14 +164,14 @@ TEST_F(AnimationViewTest, ClickingAChartJumpsToThatFrame) {
 
 TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
   window().show_view("animation");
-  set_mode(EngineMode::kRerender);
+  set_mode("rerender");
   window().play_frames(8);
   expect_panels_agree("rerender-plane");
 }
 
 TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
   window().show_view("animation");
-  set_mode(EngineMode::kRerender);
+  set_mode("rerender");
   ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
   window().play_frames(8);
   expect_panels_agree("rerender-scene");
@@ -189,7 +191,7 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
   QTemporaryDir dir;
   const QString path = dir.filePath("session.json");
   EngineSettings settings = model().settings();
-  settings.mode = EngineMode::kAffine;
+  settings.policy = &reuse_policy("affine");
   settings.thresholds = {0.5, 1.5, 2.0, 0.75};
   ASSERT_TRUE(model().set_settings(settings));
   ASSERT_TRUE(model().set_source({"scene", "two", "translate"}));
@@ -201,7 +203,7 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
 
   window().apply_lesson(*find_lesson("flow-of-a-plane"));
   ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
-  EXPECT_EQ(model().settings().mode, EngineMode::kAffine);
+  EXPECT_STREQ(model().settings().policy->name, "affine");
   EXPECT_EQ(model().settings().thresholds, settings.thresholds);
   EXPECT_EQ(model().source().name, "two");
   EXPECT_EQ(model().source().viewer, "translate");
@@ -247,7 +249,7 @@ TEST_F(AnimationViewTest, ImpossibleThresholdIsRefused) {
 
 TEST_F(AnimationViewTest, NewLessonsSetUpTheirViews) {
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
-  EXPECT_EQ(model().settings().mode, EngineMode::kAffine);
+  EXPECT_STREQ(model().settings().policy->name, "affine");
   EXPECT_EQ(window().current_view_name(), "animation");
   window().apply_lesson(*find_lesson("occlusion"));
   EXPECT_EQ(model().source().kind, "scene");
@@ -255,6 +257,62 @@ TEST_F(AnimationViewTest, NewLessonsSetUpTheirViews) {
   window().apply_lesson(*find_lesson("why-errors-accumulate"));
   EXPECT_EQ(window().current_view_name(), "analysis");
   EXPECT_EQ(model().source().kind, "plane");
+}
+
+TEST_F(AnimationViewTest, ModeBoxListsTheReusePoliciesAndFollowsTheSettings) {
+  auto* box = animation().findChild<QComboBox*>(QStringLiteral("animation_mode"));
+  ASSERT_NE(box, nullptr);
+  ASSERT_EQ(box->count(), int(reuse_policies().size()));
+  for (int i = 0; i < box->count(); ++i) {
+    EXPECT_EQ(box->itemText(i).toStdString(), reuse_policies()[size_t(i)].name);
+  }
+  set_mode("exact");
+  EXPECT_EQ(box->currentText().toStdString(), "exact");
+  EXPECT_STREQ(animation().settings().policy->name, "exact");
+}
+
+TEST(FrameInspector, MarksTheLevelsThePolicyDoesNotAllow) {
+  FrameRecord record;
+  record.has_books = true;
+  record.plane.frame = 3;
+  record.plane.level = Level::kRerender;
+  EngineSettings settings;
+  settings.policy = &reuse_policy("affine");
+  const std::string affine = explain_frame(record, settings).toStdString();
+  EXPECT_NE(affine.find("perspective: leaves 0.00 px &le; 1.00 px (not allowed by the affine "
+                        "policy)"),
+            std::string::npos)
+      << affine;
+  EXPECT_EQ(affine.find("affine: leaves 0.00 px &le; 1.00 px (not allowed"), std::string::npos);
+  settings.policy = &reuse_policy("perspective");
+  EXPECT_EQ(explain_frame(record, settings).toStdString().find("not allowed"), std::string::npos);
+}
+
+TEST(SessionFile, PolicyAndSamplingRoundTripByNameAndUnknownNamesAreRefused) {
+  Session session;
+  session.plane = default_demo_scene();
+  session.settings.policy = &reuse_policy("exact");
+  session.settings.sampling = Sampling::kBilinear;
+  const std::string text = session_to_json(session);
+  const Session back = parse_session(text, "test");
+  EXPECT_EQ(back.settings.policy, &reuse_policy("exact"));
+  EXPECT_EQ(back.settings.sampling, Sampling::kBilinear);
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const size_t at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? t : t.replace(at, from.size(), to);
+  };
+  try {
+    parse_session(replaced("\"mode\": \"exact\"", "\"mode\": \"bogus\""), "test");
+    ADD_FAILURE() << "an unknown policy was accepted";
+  } catch (const SessionError& e) {
+    EXPECT_NE(std::string(e.what()).find("'mode'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(reuse_policy_names()), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(
+      parse_session(replaced("\"sampling\": \"bilinear\"", "\"sampling\": \"cubic\""), "test"),
+      SessionError);
 }
 
 }  // namespace

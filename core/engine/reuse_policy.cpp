@@ -1,0 +1,71 @@
+// The registry of reuse policies (see core/engine/reuse_policy.h and manual/animation.md).
+#include "engine/reuse_policy.h"
+
+#include <stdexcept>
+
+namespace oflab {
+namespace {
+
+constexpr LevelSet kNoPerspective{true, true, true, false, true};
+constexpr LevelSet kOnlyRerender{false, false, false, false, true};
+
+Level always_rerender(const ReusePolicy&, const FrameInputs&) { return Level::kRerender; }
+
+}  // namespace
+
+LevelPixels estimate_level_pixels(std::int64_t displayed_px, std::int64_t cache_px) {
+  return {0, 0, displayed_px, cache_px + displayed_px, displayed_px};
+}
+
+bool ReusePolicy::allows_reuse() const {
+  for (int l = 0; l < static_cast<int>(Level::kRerender); ++l) {
+    if (allowed[l]) return true;
+  }
+  return false;
+}
+
+Level threshold_choice(const ReusePolicy& policy, const FrameInputs& inputs) {
+  return choose_level(inputs.carried, inputs.flow, inputs.thresholds, policy.allowed);
+}
+
+const std::vector<ReusePolicy>& reuse_policies() {
+  static const std::vector<ReusePolicy> policies = {
+      {"perspective", "Algorithm 1, corrected: every level, first-order Taylor flow model",
+       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice},
+      {"affine", "section 6.5: affine initial view and flow model, no perspective level",
+       InitialView::kAffinePart, ModelUpdate::kAffineTaylor, kNoPerspective, threshold_choice},
+      {"exact", "every level, but the model follows the exact warp of each pose",
+       InitialView::kExact, ModelUpdate::kExact, kAllLevels, threshold_choice},
+      {"rerender", "the baseline: no reuse, every frame rendered exactly", InitialView::kExact,
+       ModelUpdate::kExact, kOnlyRerender, always_rerender},
+  };
+  return policies;
+}
+
+const ReusePolicy* find_reuse_policy(const std::string& name) {
+  for (const ReusePolicy& p : reuse_policies()) {
+    if (name == p.name) return &p;
+  }
+  return nullptr;
+}
+
+const ReusePolicy& reuse_policy(const std::string& name) {
+  const ReusePolicy* p = find_reuse_policy(name);
+  if (!p) {
+    throw std::invalid_argument("unknown reuse policy '" + name + "' (one of " +
+                                reuse_policy_names() + ")");
+  }
+  return *p;
+}
+
+const ReusePolicy& default_reuse_policy() { return reuse_policies().front(); }
+
+std::string reuse_policy_names(const std::string& separator) {
+  std::string names;
+  for (const ReusePolicy& p : reuse_policies()) {
+    names += (names.empty() ? "" : separator) + std::string(p.name);
+  }
+  return names;
+}
+
+}  // namespace oflab

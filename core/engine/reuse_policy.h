@@ -1,0 +1,97 @@
+// Reuse policies: the registry of the ways the engine (core/engine/engine.h) may reuse the
+// previous image of a plane. A policy is data plus one function: the initial view it shows,
+// how its model of the displayed warp advances, the update levels it allows and how it
+// chooses one each frame. The CLI (`oflab-cli animate --mode`, `oflab-cli policies`), the
+// GUI, session files and help texts all read this table; adding a policy is adding an
+// entry to reuse_policies() (core/engine/reuse_policy.cpp), see manual/animation.md.
+//
+// The first four entries are the dissertation's modes:
+//   perspective  Algorithm 1, corrected (section 5.6.1): every level, Taylor model;
+//   affine       section 6.5: no perspective level, affine initial view and flow model;
+//   exact        the perspective level uses the exact frame-to-frame homography;
+//   rerender     the baseline: no reuse, every frame rendered exactly.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/decision.h"
+
+namespace oflab {
+
+// The displayed warp a policy shows after a re-render (frame 0 and every re-render level).
+enum class InitialView {
+  kExact,       // the exact texel -> image warp of the pose (exact_texture_warp)
+  kAffinePart,  // its affine part about the texture centre (section 6.5): the frame is an
+                // affine image, whose missing perspective no update level can remove
+};
+
+// How the engine's model warp B (engine.h) follows the plane from frame to frame.
+enum class ModelUpdate {
+  kTaylor,        // B <- H1 B, H1 the first-order Taylor homography of the frame's flow
+  kAffineTaylor,  // the same with the perspective terms px, py zeroed (an affine flow model)
+  kExact,         // B <- the exact texture warp of the current pose: the model misses nothing
+                  // of higher order, so the engine takes the higher-order term as zero
+};
+
+// Pixels each level would write, indexed by static_cast<int>(Level).
+using LevelPixels = std::array<std::int64_t, kLevelCount>;
+
+// Everything a policy sees when it chooses the level of one frame of one plane.
+struct FrameInputs {
+  TermArray flow{};        // this frame's flow measures (measure_flow), pixels
+  TermArray carried{};     // accumulated errors carried into the decision, pixels
+  TermArray thresholds{};  // budgets of none..perspective, pixels (see choose_level)
+  LevelPixels pixels{};    // cost of each level for this layer (estimate_level_pixels)
+};
+
+// The cost estimate of FrameInputs::pixels, before any warp is run, from the layers the
+// engine holds: `displayed_px` is the pixel count (width x height) of the displayed layer
+// and `cache_px` that of the perspective cache (the displayed layer's when there is none).
+//   none, translate: 0 (the layer is reused, or placed again on whole pixels);
+//   affine: displayed_px (the cache warped onto a layer of about the displayed size);
+//   perspective: cache_px + displayed_px (a new cache of about the old one's size, then
+//     the affine step);
+//   rerender: displayed_px (the texture warped straight onto a layer of that size).
+// Upper bounds: the kernels write only the pixels inside the warped polygon.
+LevelPixels estimate_level_pixels(std::int64_t displayed_px, std::int64_t cache_px);
+
+struct ReusePolicy {
+  const char* name;     // the identifier of --mode, session files and JSON "mode"
+  const char* summary;  // one line for `oflab-cli policies` and tooltips
+  InitialView initial_view;
+  ModelUpdate model;
+  LevelSet allowed;  // levels it may choose; re-render is always allowed
+  // The level of this frame; must be one of `allowed` (re-render is always acceptable).
+  Level (*choose)(const ReusePolicy& policy, const FrameInputs& inputs);
+
+  bool allows(Level level) const { return allowed[static_cast<int>(level)]; }
+  // False when only re-render is allowed: the engine then re-renders without measuring.
+  bool allows_reuse() const;
+};
+
+// The threshold rule of Algorithm 1 (choose_level) over the policy's allowed levels; the
+// choice of perspective, affine and exact.
+Level threshold_choice(const ReusePolicy& policy, const FrameInputs& inputs);
+
+// Every policy, in the order help texts and the GUI list them (perspective first). The
+// entries live as long as the program; pointers to them may be kept and compared.
+const std::vector<ReusePolicy>& reuse_policies();
+
+// The policy called `name`, or nullptr when there is none.
+const ReusePolicy* find_reuse_policy(const std::string& name);
+
+// The policy called `name`; throws std::invalid_argument naming it and the known policies
+// when there is none. For names written in code; parse user input with find_reuse_policy.
+const ReusePolicy& reuse_policy(const std::string& name);
+
+// "perspective": the policy of a default EngineSettings.
+const ReusePolicy& default_reuse_policy();
+
+// The policy names in registry order, joined by `separator`: "perspective, affine, exact,
+// rerender" for error messages ("one of ..."), or "perspective|affine|..." for usage lines.
+std::string reuse_policy_names(const std::string& separator = ", ");
+
+}  // namespace oflab

@@ -1,0 +1,130 @@
+// The registry of reuse policies: its entries, lookups, the levels each policy allows, and
+// the threshold choice against an independent computation of the rule.
+#include "engine/reuse_policy.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "engine/engine.h"
+
+namespace oflab {
+namespace {
+
+// The threshold rule written out from its statement (manual/animation.md): level L is
+// acceptable when the errors of terms L..3, accumulated plus this frame's, sum to at most
+// thresholds[L]; the lowest acceptable allowed level wins, else re-render. The sums are
+// built from the top term down, unlike choose_level.
+Level reference_choice(const FrameInputs& in, const LevelSet& allowed) {
+  double neglected[kTermCount];
+  double sum = 0.0;
+  for (int k = kTermCount - 1; k >= 0; --k) {
+    sum += in.carried[k] + in.flow[k];
+    neglected[k] = sum;
+  }
+  for (int l = 0; l < kTermCount; ++l) {
+    if (allowed[l] && neglected[l] <= in.thresholds[l]) return static_cast<Level>(l);
+  }
+  return Level::kRerender;
+}
+
+TEST(ReusePolicies, RegistryListsTheDissertationModesFirstInOrder) {
+  const std::vector<ReusePolicy>& all = reuse_policies();
+  ASSERT_GE(all.size(), 4u);
+  EXPECT_STREQ(all[0].name, "perspective");
+  EXPECT_STREQ(all[1].name, "affine");
+  EXPECT_STREQ(all[2].name, "exact");
+  EXPECT_STREQ(all[3].name, "rerender");
+  EXPECT_EQ(&default_reuse_policy(), &all[0]);
+  EXPECT_EQ(EngineSettings{}.policy, &all[0]);
+}
+
+TEST(ReusePolicies, NamesAreUniqueAndEveryEntryHasASummaryAndAChoice) {
+  std::set<std::string> names;
+  for (const ReusePolicy& p : reuse_policies()) {
+    EXPECT_TRUE(names.insert(p.name).second) << "duplicate policy " << p.name;
+    EXPECT_NE(std::string(p.summary), "") << p.name;
+    EXPECT_EQ(std::string(p.summary).find('\n'), std::string::npos) << p.name;
+    EXPECT_NE(p.choose, nullptr) << p.name;
+    EXPECT_TRUE(p.allows(Level::kRerender)) << p.name;
+  }
+}
+
+TEST(ReusePolicies, LookupFindsEachEntryAndRejectsUnknownNames) {
+  for (const ReusePolicy& p : reuse_policies()) {
+    EXPECT_EQ(find_reuse_policy(p.name), &p);
+    EXPECT_EQ(&reuse_policy(p.name), &p);
+  }
+  EXPECT_EQ(find_reuse_policy("scene-shifting"), nullptr);
+  EXPECT_EQ(find_reuse_policy("Perspective"), nullptr);
+  EXPECT_EQ(find_reuse_policy(""), nullptr);
+  try {
+    reuse_policy("bogus");
+    FAIL() << "no exception for an unknown policy";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'bogus'"), std::string::npos) << message;
+    EXPECT_NE(message.find("perspective, affine, exact, rerender"), std::string::npos) << message;
+  }
+}
+
+TEST(ReusePolicies, NameListJoinsTheRegistryInOrder) {
+  EXPECT_EQ(reuse_policy_names().rfind("perspective, affine, exact, rerender", 0), 0u);
+  EXPECT_EQ(reuse_policy_names("|").rfind("perspective|affine|exact|rerender", 0), 0u);
+}
+
+TEST(ReusePolicies, EachModeAllowsItsLevels) {
+  const auto allowed = [](const char* name) { return reuse_policy(name).allowed; };
+  EXPECT_EQ(allowed("perspective"), (LevelSet{true, true, true, true, true}));
+  EXPECT_EQ(allowed("affine"), (LevelSet{true, true, true, false, true}));
+  EXPECT_EQ(allowed("exact"), (LevelSet{true, true, true, true, true}));
+  EXPECT_EQ(allowed("rerender"), (LevelSet{false, false, false, false, true}));
+  EXPECT_TRUE(reuse_policy("affine").allows_reuse());
+  EXPECT_FALSE(reuse_policy("rerender").allows_reuse());
+  EXPECT_EQ(reuse_policy("affine").initial_view, InitialView::kAffinePart);
+  EXPECT_EQ(reuse_policy("perspective").initial_view, InitialView::kExact);
+  EXPECT_EQ(reuse_policy("affine").model, ModelUpdate::kAffineTaylor);
+  EXPECT_EQ(reuse_policy("perspective").model, ModelUpdate::kTaylor);
+  EXPECT_EQ(reuse_policy("exact").model, ModelUpdate::kExact);
+}
+
+TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> term(0.0, 0.8), budget(0.2, 2.0);
+  std::set<Level> seen;
+  for (int trial = 0; trial < 2000; ++trial) {
+    FrameInputs in;
+    for (int k = 0; k < kTermCount; ++k) {
+      in.flow[k] = term(rng);
+      in.carried[k] = 0.5 * term(rng);
+      in.thresholds[k] = budget(rng);
+    }
+    in.pixels = estimate_level_pixels(1000, 600);
+    for (const ReusePolicy& p : reuse_policies()) {
+      const Level chosen = p.choose(p, in);
+      EXPECT_TRUE(p.allows(chosen)) << p.name;
+      if (p.allows_reuse()) {
+        EXPECT_EQ(chosen, reference_choice(in, p.allowed)) << p.name << " trial " << trial;
+      } else {
+        EXPECT_EQ(chosen, Level::kRerender) << p.name;
+      }
+      seen.insert(chosen);
+    }
+  }
+  EXPECT_EQ(seen.size(), static_cast<size_t>(kLevelCount));  // every level was exercised
+}
+
+TEST(ReusePolicies, LevelCostsCountTheWarpsEachLevelRuns) {
+  const LevelPixels p = estimate_level_pixels(5000, 3000);
+  EXPECT_EQ(p[static_cast<int>(Level::kNone)], 0);
+  EXPECT_EQ(p[static_cast<int>(Level::kTranslate)], 0);
+  EXPECT_EQ(p[static_cast<int>(Level::kAffine)], 5000);       // cache -> display
+  EXPECT_EQ(p[static_cast<int>(Level::kPerspective)], 8000);  // texture -> cache -> display
+  EXPECT_EQ(p[static_cast<int>(Level::kRerender)], 5000);     // texture -> display
+}
+
+}  // namespace
+}  // namespace oflab
