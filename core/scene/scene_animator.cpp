@@ -312,6 +312,17 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
   report.layers = static_cast<int>(scene_.polygons.size());
   classify(current, report);
   bsp_.back_to_front(eye_position(current), order_);
+  update_front_to_back(previous, motion, current, report);
+  tally_hidden_and_stale(report);
+  const auto t1 = Clock::now();
+  compose(report);
+  report.composite_ms = ms_since(t1);
+  report.time_ms = ms_since(t0);
+  return report;
+}
+
+void SceneAnimator::update_front_to_back(const ViewerPose* previous, const RigidMotion* motion,
+                                         const ViewerPose& current, AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   fragment_drawn_.assign(fragments.size(), 0);
   fragment_regions_.resize(fragments.size());
@@ -340,20 +351,27 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
     fragment_drawn_[f] = 1;
     if (!s.whole) fragment_regions_[f] = fragment_region(f, current);
     if (settings_.skip_hidden && s.opaque) {
-      // What this fragment certainly paints opaque hides whatever is tested after it.
       const auto tv = Clock::now();
-      if (s.whole) {
-        occlusion_.add_occluder(shown->layer.polygon, settings_.occluder_inset_px,
-                                Vec2(shown->offset_x, shown->offset_y));
-      } else {
-        const ConvexPolygon drawn =
-            intersection(translated(shown->layer.polygon, shown->offset_x, shown->offset_y),
-                         fragment_regions_[f]);
-        occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
-      }
+      add_occluder(f, *shown);
       report.visibility_ms += ms_since(tv);
     }
   }
+}
+
+void SceneAnimator::add_occluder(int fragment, const PlacedLayer& shown) {
+  // What this fragment certainly paints opaque hides whatever is tested after it.
+  const PolygonState& s = *states_[bsp_.fragments()[fragment].polygon];
+  if (s.whole) {
+    occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
+                            Vec2(shown.offset_x, shown.offset_y));
+  } else {
+    const ConvexPolygon drawn = intersection(
+        translated(shown.layer.polygon, shown.offset_x, shown.offset_y), fragment_regions_[fragment]);
+    occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
+  }
+}
+
+void SceneAnimator::tally_hidden_and_stale(AnimationFrame& report) {
   const BoundingBox frame_box{0.0, 0.0, static_cast<double>(camera_.width),
                               static_cast<double>(camera_.height)};
   for (std::size_t i = 0; i < states_.size(); ++i) {
@@ -365,7 +383,10 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
     if (!s.updated) s.live = false;  // its layer is stale: the next update starts afresh
     if (statuses_[i] == PolygonStatus::kAnimated) report.layer_reports.push_back(s.report);
   }
-  const auto t1 = Clock::now();
+}
+
+void SceneAnimator::compose(AnimationFrame& report) {
+  const std::vector<BspFragment>& fragments = bsp_.fragments();
   frame_.fill(Pixel{});
   for (int f : order_) {
     if (!fragment_drawn_[f]) continue;
@@ -376,9 +397,6 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
                           : composite_over_region(frame_, shown->layer, shown->offset_x,
                                                   shown->offset_y, fragment_regions_[f]);
   }
-  report.composite_ms = ms_since(t1);
-  report.time_ms = ms_since(t0);
-  return report;
 }
 
 std::vector<LayerOutline> SceneAnimator::outlines(const ViewerPose& view) const {

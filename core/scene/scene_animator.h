@@ -98,6 +98,13 @@ class SceneAnimator {
 
   AnimationFrame run_frame(const ViewerPose* previous, const RigidMotion* motion,
                            const ViewerPose& current);
+  // The steps of run_frame: visibility and updates front to back, the hidden polygons'
+  // tally, compositing back to front.
+  void update_front_to_back(const ViewerPose* previous, const RigidMotion* motion,
+                            const ViewerPose& current, AnimationFrame& report);
+  void add_occluder(int fragment, const PlacedLayer& shown);
+  void tally_hidden_and_stale(AnimationFrame& report);
+  void compose(AnimationFrame& report);
   void classify(const ViewerPose& view, AnimationFrame& report);
   bool fragment_hidden(int fragment, const ViewerPose& view);
   const ConvexPolygon& polygon_region(int polygon);

@@ -268,14 +268,18 @@ TEST_F(AnimationViewTest, ModeBoxListsTheReusePoliciesAndFollowsTheSettings) {
   }
   set_mode("exact");
   EXPECT_EQ(box->currentText().toStdString(), "exact");
-  EXPECT_STREQ(animation().settings().policy->name, "exact");
+  EXPECT_STREQ(model().settings().policy->name, "exact");
 }
 
 TEST(FrameInspector, MarksTheLevelsThePolicyDoesNotAllow) {
-  FrameRecord record;
-  record.has_books = true;
-  record.plane.frame = 3;
-  record.plane.level = Level::kRerender;
+  AnimationFrame record;
+  record.frame = 3;
+  record.layers = 1;
+  record.levels[static_cast<int>(Level::kRerender)] = 1;
+  FrameReport plane;
+  plane.frame = 3;
+  plane.level = Level::kRerender;
+  record.layer_reports.push_back(plane);
   EngineSettings settings;
   settings.policy = &reuse_policy("affine");
   const std::string affine = explain_frame(record, settings).toStdString();
