@@ -71,9 +71,13 @@ void draw_panel_title(QImage& image, const QString& title, const QColor& text,
   font.setPixelSize(int(text_scale * std::max(12, image.height() / 28)));
   font.setBold(true);
   painter.setFont(font);
+  const QRect area(0, 8, image.width() - 10, font.pixelSize() + 8);
+  // A backdrop of the opposite lightness keeps the title legible on any frame content.
+  const QRect box = painter.boundingRect(area, Qt::AlignRight | Qt::AlignTop, title)
+                        .adjusted(-6, -2, 6, 2);
+  painter.fillRect(box, text.lightness() > 127 ? QColor(0, 0, 0, 170) : QColor(255, 255, 255, 190));
   painter.setPen(text);
-  painter.drawText(QRect(0, 8, image.width() - 10, font.pixelSize() + 8),
-                   Qt::AlignRight | Qt::AlignTop, title);
+  painter.drawText(area, Qt::AlignRight | Qt::AlignTop, title);
 }
 
 QImage difference_heat_map(const Image& a, const Image& b, int full_scale, const QColor& text) {

@@ -83,13 +83,16 @@ std::vector<AnimationSourceKind> make_kinds() {
   const ReadSource scene = [](const SourceChoice& c, const SceneModel&, const EngineSettings& s) {
     return scene_source(c, s);
   };
+  AnimationSourceKind shifting =
+      kind("scene-shifting", "Scene shifting: %1", "scene shifting (slices)", false,
+           "train-sideways", shipped_scene_names, "scene-shifting", scene);
+  shifting.uses_reuse_policy = false;  // its slices follow epsilon (core/scene_shifting)
   return {kind("plane", "Plane of the scene panel", kOpticFlowTitle, true, "", none, "plane", panel),
           kind("script", "Plane script: %1", kOpticFlowTitle, false, "", shipped_script_names,
                "plane", script),
           kind("scene", "Scene: %1", kOpticFlowTitle, false, "circle", shipped_scene_names, "scene",
                scene),
-          kind("scene-shifting", "Scene shifting: %1", "scene shifting (slices)", false,
-               "train-sideways", shipped_scene_names, "scene-shifting", scene)};
+          shifting};
 }
 
 }  // namespace

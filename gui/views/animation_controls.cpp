@@ -99,6 +99,7 @@ QWidget* AnimationControls::make_source_row() {
     if (kind.uses_viewer && kind.name != shown_kind_) {
       select_data(viewer_box_, QString::fromStdString(kind.default_viewer));
     }
+    show_kind(kind);
     emit source_edited();
   });
   connect(viewer_box_, QOverload<int>::of(&QComboBox::activated), this,
@@ -232,8 +233,17 @@ void AnimationControls::set_source(const SourceChoice& choice) {
     add_file_entry(viewer_box_, "", choice.viewer);
     select_data(viewer_box_, QString::fromStdString(choice.viewer));
   }
-  viewer_box_->setEnabled(kind.uses_viewer);
+  show_kind(kind);
   shown_kind_ = kind.name;
+}
+
+void AnimationControls::show_kind(const AnimationSourceKind& kind) {
+  viewer_box_->setEnabled(kind.uses_viewer);
+  // Scene shifting keeps its own tolerance: the policy, thresholds and Delta do not apply.
+  for (QWidget* w : std::initializer_list<QWidget*>{mode_box_, affine_switch_, delta_box_}) {
+    w->setEnabled(kind.uses_reuse_policy);
+  }
+  for (QDoubleSpinBox* t : thresholds_) t->setEnabled(kind.uses_reuse_policy);
 }
 
 }  // namespace oflab

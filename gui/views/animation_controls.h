@@ -45,6 +45,9 @@ class AnimationControls : public QWidget {
   QWidget* make_source_row();
   QWidget* make_engine_row();
   void add_file_entry(QComboBox* box, const std::string& kind, const std::string& path);
+  // Enables what applies to `kind`: the viewer script box, and the policy, threshold and
+  // Delta controls (not for scene shifting).
+  void show_kind(const AnimationSourceKind& kind);
   // The source kind of the picker's current entry.
   const AnimationSourceKind& current_kind() const;
 

@@ -108,6 +108,18 @@ TEST_F(AnimationViewTest, SceneShiftingOfATiltedSceneIsRefusedWithAMessage) {
   EXPECT_GT(distinct_colours(animation().render_image()), 50);
 }
 
+// Scene shifting keeps its own tolerance: the policy controls are off while it plays and
+// on again for the other kinds.
+TEST_F(AnimationViewTest, PolicyControlsAreOffOnlyForSceneShifting) {
+  window().show_view("animation");
+  auto* mode = animation().findChild<QComboBox*>(QStringLiteral("animation_mode"));
+  ASSERT_NE(mode, nullptr);
+  ASSERT_TRUE(model().set_source({"scene-shifting", "train-window", "train-sideways"}));
+  EXPECT_FALSE(mode->isEnabled());
+  ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
+  EXPECT_TRUE(mode->isEnabled());
+}
+
 // The analysis view reads the animation model alone: no window, no animation view.
 TEST(AnalysisViewAlone, ChartsTheAnimationModelsRun) {
   SceneModel scene;
