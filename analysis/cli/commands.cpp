@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "engine/reuse_policy.h"
+#include "experiments/experiments.h"
 #include "image/warp.h"
 
 namespace oflab {
@@ -28,6 +29,14 @@ std::string animate_usage() {
   return usage;
 }
 
+// `experiments --help`: the --only values come from the experiments table.
+std::string experiments_usage() {
+  std::string only;
+  for (const std::string& name : experiment_names()) only += (only.empty() ? "" : "|") + name;
+  return "oflab-cli experiments [--out DIR] [--only " + only + " ...] [--quick]\n"
+         "               [--force]   (draws charts: needs an X display, e.g. xvfb-run -a)";
+}
+
 }  // namespace
 
 const std::vector<Command>& all_commands() {
@@ -50,9 +59,7 @@ const std::vector<Command>& all_commands() {
       {"slices", "scene-shifting slices of a sideways-moving viewer and their asymptote",
        "oflab-cli slices --speed V --focal K --epsilon E [--near Z0] [--json]", run_slices_command},
       {"experiments", "re-run the dissertation's experiments; report beside the published figures",
-       "oflab-cli experiments [--out DIR] [--only exp1|delta|warp|exp2|sweep ...] [--quick]\n"
-       "               [--force]   (draws charts: needs an X display, e.g. xvfb-run -a)",
-       run_experiments_command},
+       experiments_usage(), run_experiments_command},
   };
   return commands;
 }

@@ -5,7 +5,7 @@
 #
 # The rule (stated above the page's file tables): a header is named by its path relative to
 # its layer folder, between backticks: core/engine/animator.h is written `engine/animator.h`,
-# analysis/runs/scene_run.h `runs/scene_run.h`, gui/models/scene_model.h
+# analysis/runs/run_driver.h `runs/run_driver.h`, gui/models/scene_model.h
 # `models/scene_model.h` - exactly as it is included.
 # Fails when a header under core/, analysis/ or gui/ is not named, and when the page names, in
 # that form, a header that does not exist (a backticked "<folder>/<name>.h" whose folder is a
