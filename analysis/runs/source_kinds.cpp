@@ -17,24 +17,19 @@ nlohmann::json finite_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
 }
 
-// The baselines: the same source re-rendered exactly every frame.
-EngineSettings engine_settings(const EngineSettings& settings, bool baseline) {
-  EngineSettings s = settings;
-  if (baseline) s.policy = &reuse_policy("rerender");
-  return s;
-}
-
-SceneShiftingSettings shifting_settings(const SceneShiftingSettings& settings, bool baseline) {
-  SceneShiftingSettings s = settings;
-  if (baseline) s.policy = &reuse_policy("rerender");
-  return s;
+// `settings` (EngineSettings or SceneShiftingSettings), or for the baseline the same with
+// the rerender policy: the source rendered exactly every frame.
+template <class Settings>
+Settings with_baseline(Settings settings, bool baseline) {
+  if (baseline) settings.policy = &reuse_policy("rerender");
+  return settings;
 }
 
 // ---- Single plane ----
 
 std::unique_ptr<Animator> make_plane(const RunSource& source, bool baseline) {
   return make_plane_animator(source.script, source.texture,
-                             engine_settings(source.settings.engine, baseline));
+                             with_baseline(source.settings.engine, baseline));
 }
 
 AnimationRun play_plane(const RunSource& source, const PlayOptions& options) {
@@ -98,7 +93,7 @@ nlohmann::json plane_summary_json(const AnimationRun& run) {
 
 std::unique_ptr<Animator> make_scene(const RunSource& source, bool baseline) {
   SceneSettings settings = source.settings;
-  settings.engine = engine_settings(settings.engine, baseline);
+  settings.engine = with_baseline(settings.engine, baseline);
   return make_scene_animator(source.scene, source.viewer, settings);
 }
 
@@ -184,7 +179,7 @@ nlohmann::json scene_summary_json(const AnimationRun& run) {
 
 std::unique_ptr<Animator> make_shifting(const RunSource& source, bool baseline) {
   return make_scene_shifting_animator(source.scene, source.viewer,
-                                      shifting_settings(source.shifting, baseline));
+                                      with_baseline(source.shifting, baseline));
 }
 
 // The "scene_shifting" block of the summary: the slices and the layer updates.
@@ -205,8 +200,8 @@ nlohmann::json shifting_facts(const SceneShiftingRenderer& renderer) {
 }
 
 AnimationRun play_shifting(const RunSource& source, const PlayOptions& options) {
-  const auto animator = make_scene_shifting_animator(source.scene, source.viewer,
-                                                     shifting_settings(source.shifting, false));
+  const auto animator =
+      make_scene_shifting_animator(source.scene, source.viewer, source.shifting);
   const std::unique_ptr<Animator> baseline =
       options.baseline ? make_shifting(source, true) : nullptr;
   AnimationRun run = run_animator(*animator, baseline.get(), nullptr, options);

@@ -24,6 +24,15 @@ QImage wrap(const Image& image) {
 
 }  // namespace
 
+Image image_from_qimage(const QImage& qimage) {
+  const QImage rgba = qimage.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
+  Image image(rgba.width(), rgba.height());
+  for (int y = 0; y < rgba.height(); ++y) {
+    std::memcpy(image.row(y), rgba.constScanLine(y), size_t(rgba.width()) * 4);
+  }
+  return image;
+}
+
 QImage flatten_image(const Image& image, const QColor& background) {
   QImage out(std::max(1, image.width()), std::max(1, image.height()), QImage::Format_RGB32);
   out.fill(background);

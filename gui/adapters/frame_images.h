@@ -14,6 +14,10 @@
 
 namespace oflab {
 
+// Any QImage as a premultiplied RGBA8 core image of the same size (the inverse of wrapping a
+// core image: rows are Format_RGBA8888_Premultiplied).
+Image image_from_qimage(const QImage& qimage);
+
 // A premultiplied core image as an opaque QImage over `background`.
 QImage flatten_image(const Image& image, const QColor& background);
 

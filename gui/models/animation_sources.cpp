@@ -1,9 +1,8 @@
 #include "models/animation_sources.h"
 
-#include <QImage>
-#include <cstring>
 #include <ostream>
 
+#include "adapters/frame_images.h"
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
@@ -15,15 +14,6 @@ namespace oflab {
 namespace {
 
 constexpr const char* kOpticFlowTitle = "optic-flow animation (%1)";
-
-Image image_from_qimage(const QImage& texture) {
-  const QImage rgba = texture.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
-  Image image(rgba.width(), rgba.height());
-  for (int y = 0; y < rgba.height(); ++y) {
-    std::memcpy(image.row(y), rgba.constScanLine(y), size_t(rgba.width()) * 4);
-  }
-  return image;
-}
 
 // The run source of a plane kind: the scene panel's texture moved by a motion script.
 RunSource plane_source(MotionScript script, const SceneModel& panel,
