@@ -83,4 +83,22 @@ ConvexPolygon project_to_pixels(const Camera& camera, const ViewPolygon& polygon
   return make_polygon_unchecked(std::move(pixels));
 }
 
+ConvexPolygon plane_image_polygon(const Camera& camera, const PlanePose& pose, double near) {
+  ViewPolygon rectangle;
+  for (const Vec3& corner : plane_corners(pose)) {
+    if (!std::isfinite(corner.x) || !std::isfinite(corner.y) || !std::isfinite(corner.z)) {
+      return ConvexPolygon{};
+    }
+    rectangle.points.push_back(corner);
+    rectangle.uv.push_back(Vec2(0.0));  // texture coordinates are not needed here
+  }
+  clip_to_frustum_in_place(rectangle, view_frustum(camera, near, 0.0));
+  if (rectangle.empty()) return ConvexPolygon{};
+  return project_to_pixels(camera, rectangle);
+}
+
+bool plane_meets_image(const Camera& camera, const PlanePose& pose, double near) {
+  return !plane_image_polygon(camera, pose, near).empty();
+}
+
 }  // namespace oflab

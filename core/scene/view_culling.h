@@ -9,6 +9,7 @@
 
 #include "flow/camera.h"
 #include "flow/geometry.h"
+#include "flow/plane.h"
 #include "image/polygon.h"
 
 namespace oflab {
@@ -46,5 +47,16 @@ void clip_to_frustum_in_place(ViewPolygon& polygon, const ViewFrustum& frustum);
 // The projection of a polygon lying at Z > 0 in top-left pixel coordinates.
 // Precondition: every point has Z > 0 (true after clip_to_frustum).
 ConvexPolygon project_to_pixels(const Camera& camera, const ViewPolygon& polygon);
+
+// The part of a textured plane's rectangle (plane_corners of core/flow/plane.h) that is
+// seen inside the image: the rectangle clipped to Z >= near and to the image border, then
+// projected to top-left pixels. Empty when no part of the plane in front of the near plane
+// projects into the image with positive area: wholly beside or behind the camera, edge-on,
+// or a pose whose corners are not finite. Preconditions: valid camera, near > 0 (world
+// units along the optical axis).
+ConvexPolygon plane_image_polygon(const Camera& camera, const PlanePose& pose, double near);
+
+// True when plane_image_polygon is not empty: the plane is visible in the image.
+bool plane_meets_image(const Camera& camera, const PlanePose& pose, double near);
 
 }  // namespace oflab

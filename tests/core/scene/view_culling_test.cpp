@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+
+#include "flow/plane.h"
 
 #include "scene/scene.h"
 #include "scene/scene_animator.h"
@@ -102,6 +105,74 @@ TEST(ViewCulling, CullingRemovesExactlyThePolygonsThatDrawNothing) {
   EXPECT_GT(culled, 5);
   EXPECT_GT(back, 2);
   EXPECT_GT(kept, 3);
+}
+
+// Independent count: the pixel centres whose ray meets the plane rectangle at Z >= near,
+// found by intersecting each ray with the plane and testing the in-plane coordinates.
+int pixels_seeing_plane(const Camera& camera, const PlanePose& pose, double near) {
+  const PlaneAxes axes = plane_axes(pose);
+  int hits = 0;
+  for (int j = 0; j < camera.height; ++j) {
+    for (int i = 0; i < camera.width; ++i) {
+      const Vec3 ray((i + 0.5 - camera.cx) / camera.focal_px,
+                     (j + 0.5 - camera.cy) / camera.focal_px, 1.0);
+      const double along = glm::dot(axes.normal, ray);
+      if (std::abs(along) < 1e-15) continue;
+      const double z = glm::dot(axes.normal, pose.point) / along;  // the ray's Z = t
+      if (!(z >= near)) continue;
+      const Vec3 offset = z * ray - pose.point;
+      hits += std::abs(glm::dot(offset, axes.right)) <= 0.5 * pose.size.x &&
+              std::abs(glm::dot(offset, axes.up)) <= 0.5 * pose.size.y;
+    }
+  }
+  return hits;
+}
+
+TEST(ViewCulling, PlaneImagePolygonCoversThePixelsThatSeeThePlane) {
+  const Camera camera = make_camera(64.0, 96, 64);
+  const double near = 0.05;
+  std::mt19937 rng(20261123);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int seen = 0, unseen = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    PlanePose pose;
+    pose.point = Vec3(3.0 * u(rng), 2.0 * u(rng), 1.5 + 2.5 * u(rng));
+    pose.normal = Vec3(u(rng), u(rng), u(rng));
+    pose.up = Vec3(u(rng), u(rng), u(rng));
+    pose.size = Vec2(1.0 + 0.8 * u(rng), 1.0 + 0.8 * u(rng));
+    const ConvexPolygon shown = plane_image_polygon(camera, pose, near);
+    const int hits = pixels_seeing_plane(camera, pose, near);
+    double perimeter = 0.0;
+    const auto& v = shown.vertices();
+    for (std::size_t k = 0; k < v.size(); ++k) perimeter += glm::length(v[(k + 1) % v.size()] - v[k]);
+    // Pixel centres inside a convex polygon number its area, give or take its boundary.
+    EXPECT_NEAR(shown.area(), hits, perimeter + 4.0) << "trial " << trial;
+    EXPECT_EQ(plane_meets_image(camera, pose, near), !shown.empty());
+    if (hits > 0) {
+      EXPECT_TRUE(plane_meets_image(camera, pose, near)) << "trial " << trial;
+    }
+    (shown.empty() ? unseen : seen) += 1;
+  }
+  EXPECT_GT(seen, 40);  // the random poses exercise both outcomes
+  EXPECT_GT(unseen, 40);
+}
+
+TEST(ViewCulling, PlaneBesideBehindOrEdgeOnIsNotInTheImage) {
+  const Camera camera = make_camera(256.0, 320, 240);
+  PlanePose pose;
+  pose.point = Vec3(0.0, 0.0, 2.0);
+  EXPECT_TRUE(plane_meets_image(camera, pose, 0.05));
+  pose.point = Vec3(5.0, 0.0, 2.0);  // projects at u = 160 + 640, far right of the image
+  EXPECT_FALSE(plane_meets_image(camera, pose, 0.05));
+  pose.point = Vec3(0.0, 0.0, -2.0);  // behind the eye
+  EXPECT_FALSE(plane_meets_image(camera, pose, 0.05));
+  pose.point = Vec3(0.0, 0.0, 2.0);
+  pose.normal = Vec3(1.0, 0.0, 0.0);  // edge-on through the optical axis: no area
+  pose.up = Vec3(0.0, -1.0, 0.0);
+  EXPECT_FALSE(plane_meets_image(camera, pose, 0.05));
+  pose.normal = Vec3(0.0, 0.0, 1.0);
+  pose.point = Vec3(0.0, 0.0, 0.2);  // straddles nothing, fills the whole view
+  EXPECT_NEAR(plane_image_polygon(camera, pose, 0.05).area(), 320.0 * 240.0, 1e-6);
 }
 
 }  // namespace
