@@ -214,16 +214,25 @@ void FlowRenderer::set_theme(const ViewTheme& theme) {
   set_line_style(streamlines_->GetProperty(), theme.streamline, theme.line_width);
   arrows_->GetProperty()->SetLineWidth(static_cast<float>(theme.line_width));
   set_text_style(caption_->GetTextProperty(), theme.text, theme.font_size);
-  set_text_style(wheel_caption_->GetTextProperty(), theme.text, theme.font_size - 2);
-  set_text_style(scalar_title_->GetTextProperty(), theme.text, theme.font_size * 3 / 4);
+  set_text_style(wheel_caption_->GetTextProperty(), theme.text, theme.label_size);
+  set_text_style(scalar_title_->GetTextProperty(), theme.text, theme.label_size);
   for (vtkTextProperty* p :
        {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
-    set_text_style(p, theme.text, theme.font_size - 2);
+    set_text_style(p, theme.text, theme.label_size);
     p->BoldOff();
     p->ItalicOff();
     p->ShadowOff();
   }
   plane_->GetProperty()->SetOpacity(theme.presentation ? 0.6 : 0.45);
+}
+
+double FlowRenderer::smallest_text_px() const {
+  int points = caption_->GetTextProperty()->GetFontSize();
+  for (vtkTextProperty* p : {wheel_caption_->GetTextProperty(), scalar_title_->GetTextProperty(),
+                             scalar_bar_->GetLabelTextProperty()}) {
+    points = std::min(points, p->GetFontSize());
+  }
+  return font_points_to_px(points, window_);
 }
 
 void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display,

@@ -46,6 +46,9 @@ class FlowRenderer {
 
   // Largest magnitude of the shown part on the arrow grid after the last update (px/s).
   double shown_max_magnitude() const { return shown_max_; }
+  // The smallest font of its captions, colour-bar title and labels, screen pixels (VTK
+  // font points at the window's DPI).
+  double smallest_text_px() const;
 
  private:
   void create_actors();

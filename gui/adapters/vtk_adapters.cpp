@@ -3,6 +3,7 @@
 #include <vtkCellArray.h>
 #include <vtkPointData.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -108,6 +109,10 @@ void set_line_style(vtkProperty* property, const RgbF& colour, double width) {
   property->SetColor(colour[0], colour[1], colour[2]);
   property->SetLineWidth(static_cast<float>(width));
   property->LightingOff();
+}
+
+double font_points_to_px(int points, vtkRenderWindow* window) {
+  return points * window->GetDPI() / 72.0;
 }
 
 void set_text_style(vtkTextProperty* property, const RgbF& colour, int font_size) {

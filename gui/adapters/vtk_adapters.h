@@ -20,6 +20,7 @@
 #include "views/view_theme.h"
 
 class vtkProperty;
+class vtkRenderWindow;
 class vtkTextProperty;
 
 namespace oflab {
@@ -49,5 +50,8 @@ vtkSmartPointer<vtkLookupTable> magnitude_lookup_table(double max_value, double 
 RgbF rgb(const Rgb8& colour);
 void set_line_style(vtkProperty* property, const RgbF& colour, double width);
 void set_text_style(vtkTextProperty* property, const RgbF& colour, int font_size);
+// Screen pixels of a VTK font size: VTK draws `points` points at the window's DPI (72 DPI
+// makes a point one pixel).
+double font_points_to_px(int points, vtkRenderWindow* window);
 
 }  // namespace oflab

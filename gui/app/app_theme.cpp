@@ -5,6 +5,8 @@
 #include <QPalette>
 #include <QStyle>
 
+#include "views/view_theme.h"
+
 namespace oflab {
 namespace {
 
@@ -45,7 +47,8 @@ void apply_app_theme(bool presentation) {
   }
   QApplication::setPalette(presentation ? light_palette() : dark_palette());
   QFont font = base_font;
-  if (presentation) font.setPointSizeF(base_font.pointSizeF() * 1.6);
+  const ViewTheme theme = view_theme(presentation);
+  if (theme.control_font_px > 0) font.setPixelSize(theme.control_font_px);
   QApplication::setFont(font);
 }
 

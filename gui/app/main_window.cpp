@@ -1,6 +1,9 @@
 #include "app/main_window.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QComboBox>
 #include <QSlider>
 #include <QApplication>
@@ -76,6 +79,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     update_frame_label();
   });
   apply_app_theme(false);
+  QApplication::instance()->installEventFilter(this);
   statusBar()->showMessage(tr("Default demo: a textured plane in a screw motion"));
   resize(1280, 800);
 }
@@ -121,24 +125,31 @@ void MainWindow::create_actions() {
   play_action_ = new QAction(tr("Play motion"), this);
   play_action_->setCheckable(true);
   play_action_->setShortcut(Qt::Key_Space);
+  play_action_->setToolTip(tr("Play or pause the scene's motion (Space)"));
   connect(play_action_, &QAction::toggled, this, &MainWindow::set_motion_playing);
   step_action_ = new QAction(tr("Step"), this);
   step_action_->setShortcut(Qt::Key_Right);
+  step_action_->setToolTip(tr("One frame forward (Right arrow)"));
   connect(step_action_, &QAction::triggered, this, [this] { model_->advance(1); });
   back_action_ = new QAction(tr("Back"), this);
   back_action_->setShortcut(Qt::Key_Left);
+  back_action_->setToolTip(tr("One frame back (Left arrow)"));
   connect(back_action_, &QAction::triggered, this,
           [this] { model_->set_frame(std::max(0, model_->frame() - 1)); });
   end_action_ = new QAction(tr("Last frame"), this);
   end_action_->setShortcut(Qt::Key_End);
+  end_action_->setToolTip(tr("The last frame of the loop (End)"));
   connect(end_action_, &QAction::triggered, this,
           [this] { model_->set_frame(model_->loop_frames() - 1); });
   reset_action_ = new QAction(tr("First frame"), this);
   reset_action_->setShortcut(Qt::Key_Home);
+  reset_action_->setToolTip(tr("Back to frame 0 (Home)"));
   connect(reset_action_, &QAction::triggered, this, [this] { model_->set_frame(0); });
   presentation_action_ = new QAction(tr("Presentation mode"), this);
   presentation_action_->setCheckable(true);
   presentation_action_->setShortcut(Qt::Key_F11);
+  presentation_action_->setToolTip(
+      tr("Light backgrounds, large text and thick lines for a projector (F11)"));
   connect(presentation_action_, &QAction::toggled, this, &MainWindow::set_presentation);
 }
 
@@ -168,6 +179,7 @@ void MainWindow::create_menus() {
   for (QAction* a : {play_action_, step_action_, back_action_, reset_action_, end_action_}) {
     view->addAction(a);
   }
+  create_view_shortcuts(view);
   QMenu* lesson_menu = menuBar()->addMenu(tr("&Lessons"));
   for (const Lesson& lesson : lessons()) {
     const std::string name = lesson.name;
@@ -219,6 +231,7 @@ void MainWindow::update_frame_label() {
 
 void MainWindow::add_view(const ViewEntry& entry) {
   ViewPage* page = entry.make(ViewModels{model_, animation_model_});
+  page->setFocusPolicy(Qt::StrongFocus);  // clicking a view takes the focus from a field
   views_.push_back({QString::fromStdString(entry.name), page});
   tabs_->addTab(page, tr(entry.title.c_str()));
   page->set_theme(view_theme(presentation_));
@@ -417,6 +430,57 @@ void MainWindow::save_view_screenshot() {
   const QImage image = current_view()->render_image().scaledToWidth(width, Qt::SmoothTransformation);
   QString error;
   if (!save_png(image, path, &error)) show_message(error);
+}
+
+void MainWindow::create_view_shortcuts(QMenu* menu) {
+  // Ctrl+1 .. Ctrl+9 bring the Nth view of the table to the front.
+  menu->addSeparator();
+  const std::vector<ViewEntry>& table = view_table();
+  for (int i = 0; i < int(table.size()) && i < 9; ++i) {
+    const QString title = tr(table[size_t(i)].title.c_str());
+    const QKeySequence keys(Qt::CTRL + Qt::Key_1 + i);
+    QAction* show = menu->addAction(tr("Show %1").arg(title));
+    show->setShortcut(keys);
+    connect(show, &QAction::triggered, this, [this, i] { tabs_->setCurrentIndex(i); });
+    tabs_->setTabToolTip(i, tr("%1 (%2)").arg(title, keys.toString(QKeySequence::NativeText)));
+  }
+}
+
+bool MainWindow::handle_play_key(QWidget* target, int key) {
+  // A field being typed into keeps its keys (the cursor, the space); Enter commits it.
+  auto* field = qobject_cast<QLineEdit*>(target);
+  if (!field && qobject_cast<QAbstractSpinBox*>(target)) field = target->findChild<QLineEdit*>();
+  if (field && field->isModified()) return false;
+  QAction* action = nullptr;
+  switch (key) {
+    case Qt::Key_Space: action = play_action_; break;
+    case Qt::Key_Left: action = back_action_; break;
+    case Qt::Key_Right: action = step_action_; break;
+    case Qt::Key_Home: action = reset_action_; break;
+    case Qt::Key_End: action = end_action_; break;
+    default: return false;
+  }
+  action->trigger();
+  return true;
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() != QEvent::KeyPress) return QMainWindow::eventFilter(watched, event);
+  auto* widget = qobject_cast<QWidget*>(watched);
+  const auto* key = static_cast<QKeyEvent*>(event);
+  if (!widget || widget->window() != this || (key->modifiers() & ~Qt::KeypadModifier)) {
+    return QMainWindow::eventFilter(watched, event);
+  }
+  const bool in_number_field =
+      qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QAbstractSpinBox*>(widget->parentWidget());
+  if (in_number_field && (key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter)) {
+    // The field applies the value first; then the view gets the keys back.
+    QTimer::singleShot(0, this, [this] {
+      if (current_view()) current_view()->setFocus(Qt::OtherFocusReason);
+    });
+    return QMainWindow::eventFilter(watched, event);
+  }
+  return handle_play_key(widget, key->key()) || QMainWindow::eventFilter(watched, event);
 }
 
 bool MainWindow::save_session(const QString& path, bool overwrite) {

@@ -104,7 +104,15 @@ class MainWindow : public QMainWindow {
   // The whole window as drawn, VTK content included.
   QImage grab_window_image();
 
+ protected:
+  // The play keys (Space, Left, Right, Home, End) act whatever has focus, except in a number
+  // field the user is typing into; Enter in a number field applies the value and gives the
+  // focus back to the view.
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
  private:
+  void create_view_shortcuts(QMenu* menu);
+  bool handle_play_key(QWidget* target, int key);
   void add_view(const ViewEntry& entry);
   void create_actions();
   void create_menus();

@@ -1,16 +1,26 @@
 // View 4, "Analysis": the dissertation's analysis window, modernised. Over the last 80
-// frames (or the whole run so far) of the animation model's run: the frame time, the layers
-// per level (stacked, level colours), the percentage approximated, and for each cheaper
-// level the error it would have left (the carried estimate plus this frame's flow over its
-// neglected terms, core/engine/decision.h; drawn for frames that updated exactly one layer,
-// the only ones whose books are one engine's) against its threshold, beside the measured
-// true error. Painted with Qt (a few hundred line segments per frame); clicking a chart
-// moves the scene model to that frame. Reads the animation model only.
+// frames (or the whole loop) of the animation model's run: the frame time, the layers per
+// level (stacked, in the level colours, with their legend), the percentage approximated,
+// and for each cheaper level the error it would have left (the carried estimate plus this
+// frame's flow over its neglected terms, core/engine/decision.h; drawn for frames that
+// updated exactly one layer, the only ones whose books are one engine's) against its
+// threshold, beside the measured true error. Every chart has a frame axis with ticks; a
+// status line names the current frame, or says why its plane is not drawn (a frame whose
+// plane is not visible leaves a gap in the charts, never zeros).
+//
+// Clicking a chart moves the scene model to the frame under the pointer: each chart maps x
+// through its own rectangle. The x axis moves only when the current frame leaves it
+// (playing on past its end, or looping back), never because of a click, so the history
+// stays still under the pointer. Painted with Qt; reads the animation model only.
 #pragma once
+
+#include <QRect>
+#include <vector>
 
 #include "views/view_page.h"
 
 class QCheckBox;
+class QLabel;
 
 namespace oflab {
 
@@ -21,20 +31,34 @@ class AnalysisView : public ViewPage {
 
  public:
   static constexpr int kRecentFrames = 80;
+  // Charts: 0 frame time, 1 layers per level, 2 percent approximated, 3..6 the budgets of
+  // levels none, translate, affine and perspective.
+  static constexpr int kChartCount = 7;
 
   // The model must outlive the view.
   explicit AnalysisView(AnimationModel* model, QWidget* parent = nullptr);
 
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
+  double smallest_text_px() const override;
 
   bool whole_run() const;
   void set_whole_run(bool on);
-  // The frame a click at widget x would jump to; -1 outside the charts.
-  int frame_at(int x) const;
-  // The frames charted: [first, last] (last = the current frame).
+  // The frame a click at `point` (charts widget pixels) jumps to: the frame under x in the
+  // chart whose plot rectangle holds the point; -1 outside every chart.
+  int frame_at(const QPoint& point) const;
+  // Plot rectangle of chart `index` (0 .. kChartCount - 1) in charts widget pixels, as last
+  // laid out for the widget's size and the theme's font.
+  QRect chart_area(int index) const;
+  // The x axis: frames [first, last]. The run is charted up to current_frame() <= last.
   int first_frame() const { return first_; }
   int last_frame() const { return last_; }
+  int current_frame() const { return current_; }
+  // Frames that get a labelled tick on a chart `width_px` wide, for labels of `label_px`
+  // pixel font: multiples of 1, 2 or 5 x 10^k, far enough apart for their labels.
+  static std::vector<int> frame_ticks(int first, int last, int width_px, int label_px);
+  // The status line: the current frame's level and error, or why its plane is not drawn.
+  QString status_text() const;
 
  protected:
   void showEvent(QShowEvent* event) override;
@@ -43,13 +67,16 @@ class AnalysisView : public ViewPage {
   class Charts;
   void refresh();
   void read_model();
+  void follow_current_frame(int current, int loop_frames);
 
   AnimationModel* model_;
   Charts* charts_;
   QCheckBox* whole_run_box_;
+  QLabel* key_;
   ViewTheme theme_;
   int first_ = 0;
   int last_ = 0;
+  int current_ = 0;
 };
 
 }  // namespace oflab

@@ -57,6 +57,18 @@ AnimationControls::AnimationControls(QWidget* parent) : QWidget(parent) {
   layout->setSpacing(2);
   layout->addWidget(make_source_row());
   layout->addWidget(make_engine_row());
+  explain_controls();
+}
+
+void AnimationControls::explain_controls() {
+  source_box_->setToolTip(tr("What plays: the scene panel's plane, a shipped script, scene or "
+                             "scene-shifting run, or a file"));
+  viewer_box_->setToolTip(tr("The viewer's path through a scene (a viewer script)"));
+  display_box_->setToolTip(tr("How the engine's frame and the exact projection are shown"));
+  mode_box_->setToolTip(tr("The reuse policy: which update levels the engine may use"));
+  delta_box_->setToolTip(tr("Delta: how much of the scaling the perspective cache takes from "
+                            "the affine warp (section 5.4.3)"));
+  sampling_box_->setToolTip(tr("Nearest or bilinear sampling in the warps"));
 }
 
 QWidget* AnimationControls::make_source_row() {

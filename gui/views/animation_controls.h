@@ -44,6 +44,7 @@ class AnimationControls : public QWidget {
  private:
   QWidget* make_source_row();
   QWidget* make_engine_row();
+  void explain_controls();  // a tooltip on every control
   void add_file_entry(QComboBox* box, const std::string& kind, const std::string& path);
   // Enables what applies to `kind`: the viewer script box, and the policy, threshold and
   // Delta controls (not for scene shifting).

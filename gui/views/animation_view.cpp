@@ -111,7 +111,7 @@ void AnimationView::set_theme(const ViewTheme& theme) {
   theme_ = theme;
   canvas_->set_background(qcolor(theme.background));
   QFont font = inspector_->font();
-  font.setPointSize(theme.presentation ? 13 : 9);
+  font.setPixelSize(theme.presentation ? theme.label_size : 12);
   inspector_->setFont(font);
   inspector_->setFixedWidth(theme.presentation ? 380 : 260);
   refresh();

@@ -141,10 +141,9 @@ void BasisTiles::style_tile(Tile& tile) {
   set_line_style(tile.grid->GetProperty(), grid, theme_.line_width + 0.5);
   set_line_style(tile.square->GetProperty(), theme_.muted, 1.0);
   const RgbF& text = tile.active ? theme_.text : theme_.muted;
-  const int font = theme_.presentation ? theme_.font_size - 2 : theme_.font_size - 1;
-  set_text_style(tile.title->GetTextProperty(), text, font);
+  set_text_style(tile.title->GetTextProperty(), text, theme_.label_size + 1);
   tile.title->GetTextProperty()->BoldOn();
-  set_text_style(tile.value->GetTextProperty(), text, font - 2);
+  set_text_style(tile.value->GetTextProperty(), text, theme_.label_size);
 }
 
 void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_px, double amount) {
@@ -169,6 +168,15 @@ void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_p
     tile.value->SetInput(shown.c_str());
     style_tile(tile);
   }
+}
+
+double BasisTiles::smallest_text_px() const {
+  int points = tiles_.front().title->GetTextProperty()->GetFontSize();
+  for (const Tile& tile : tiles_) {
+    points = std::min({points, tile.title->GetTextProperty()->GetFontSize(),
+                       tile.value->GetTextProperty()->GetFontSize()});
+  }
+  return font_points_to_px(points, window_);
 }
 
 void BasisTiles::fit_cameras() {

@@ -38,6 +38,8 @@ class BasisTiles {
 
   // Number of tiles whose coefficient is not zero after the last update.
   int active_tile_count() const { return active_count_; }
+  // The smallest font of the tiles' titles and values, screen pixels.
+  double smallest_text_px() const;
 
  private:
   struct Tile {

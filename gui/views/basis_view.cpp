@@ -73,6 +73,11 @@ QWidget* BasisView::make_option_bar() {
   play_box_->setObjectName(QStringLiteral("gallery_play"));
   row->addWidget(play_box_);
   row->addStretch(1);
+  basis_box_->setToolTip(tr("The basis the flow's Taylor terms are shown in (dissertation "
+                            "Fig. 14-16)"));
+  amount_slider_->setToolTip(tr("How far each tile deforms its grid, as a fraction of half a "
+                                "tile"));
+  play_box_->setToolTip(tr("Animate every tile from undeformed to the chosen amount and back"));
   connect(basis_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
           [this](int) { refresh(); });
   connect(amount_slider_, &QSlider::valueChanged, this, [this](int) { refresh(); });
@@ -154,6 +159,8 @@ QImage BasisView::render_image() {
   vtk_widget_->renderWindow()->Render();
   return vtk_widget_->grabFramebuffer();
 }
+
+double BasisView::smallest_text_px() const { return tiles_->smallest_text_px(); }
 
 void BasisView::set_theme(const ViewTheme& theme) {
   tiles_->set_theme(theme);

@@ -32,6 +32,7 @@ class BasisView : public ViewPage {
   void step_animation() override;
   void set_external_clock(bool on) override;
   void set_theme(const ViewTheme& theme) override;
+  double smallest_text_px() const override;
 
   BasisKind basis() const;
   void set_basis(BasisKind kind);

@@ -2,9 +2,12 @@
 
 #include <QComboBox>
 #include <QHeaderView>
+#include <QEvent>
 #include <QLabel>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace oflab {
 
@@ -18,6 +21,7 @@ CoefficientTable::CoefficientTable(QWidget* parent) : QWidget(parent) {
     basis_box_->addItem(QString::fromUtf8(basis_title(static_cast<BasisKind>(k))));
   }
   basis_box_->setCurrentIndex(static_cast<int>(BasisKind::kPlanar));
+  basis_box_->setToolTip(tr("The basis the coefficients are given in (dissertation Fig. 14-16)"));
   layout->addWidget(basis_box_);
   table_ = new QTableWidget(0, 3, this);
   table_->setObjectName(QStringLiteral("coefficient_table"));
@@ -63,7 +67,8 @@ void CoefficientTable::refill() {
                                  QString::fromUtf8(order_unit(term.order))};
       for (int col = 0; col < 3; ++col) {
         auto* item = new QTableWidgetItem(cells[col]);
-        item->setToolTip(QString::fromStdString(term.description));
+        item->setToolTip(tr("%1: %2, in %3")
+                             .arg(cells[0], QString::fromStdString(term.description), cells[2]));
         if (col == 1) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         table_->setItem(row, col, item);
       }
@@ -85,7 +90,28 @@ void CoefficientTable::refill() {
       }
     }
   }
-  if (rebuild) table_->resizeColumnsToContents();
+  if (rebuild) fit_columns();
+}
+
+void CoefficientTable::fit_columns() {
+  const QFontMetrics fm(table_->font());
+  table_->resizeColumnsToContents();
+  table_->resizeRowsToContents();
+  // Values are written with 5 significant digits ('g'): these are the widest such texts.
+  int widest = 0;
+  for (const QString& v : {QStringLiteral("-0.00088888"), QStringLiteral("-8.8888e+88")}) {
+    widest = std::max(widest, fm.horizontalAdvance(v));
+  }
+  const int padding = 2 * fm.averageCharWidth() + 8;  // the item's margins and focus frame
+  table_->setColumnWidth(1, std::max(table_->columnWidth(1), widest + padding));
+  int width = 2 * table_->frameWidth() + table_->verticalScrollBar()->sizeHint().width();
+  for (int col = 0; col < table_->columnCount(); ++col) width += table_->columnWidth(col);
+  table_->setMinimumWidth(width);
+}
+
+void CoefficientTable::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange && table_) fit_columns();
 }
 
 }  // namespace oflab

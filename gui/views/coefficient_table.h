@@ -1,7 +1,8 @@
 // The side table of the flow view: the current flow's coefficients in the chosen basis
 // (raw Taylor, Waxman-Ullman or planar), one row per term with its value and unit.
 // Terms that are zero up to rounding are greyed, so for a plane the table shows which
-// terms a plane can never excite.
+// terms a plane can never excite. No cell is ever elided: the columns fit the widest value
+// the table can show in the current font (presentation mode included).
 #pragma once
 
 #include <QWidget>
@@ -29,8 +30,14 @@ class CoefficientTable : public QWidget {
   // The displayed text of a row's value cell (for tests), or empty if out of range.
   QString value_text(int row) const;
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   void refill();
+  // Columns wide enough for every symbol, unit and any value the table can show (so
+  // nothing is elided), rows tall enough for the font, and the table at least as wide.
+  void fit_columns();
 
   QComboBox* basis_box_;
   QTableWidget* table_;

@@ -76,6 +76,12 @@ QWidget* FlowView::make_option_bar() {
   common_scale_box_->setToolTip(
       tr("Draw every part at the full flow's arrow scale, so parts compare by length"));
   zoom_box_->setToolTip(tr("Fit the view to the plane's image instead of the whole image"));
+  arrows_box_->setToolTip(tr("Arrows of the chosen part of the flow, length in pixels per second "
+                             "times the arrow scale; colour is the magnitude, px/s"));
+  streamlines_box_->setToolTip(tr("Paths a point would follow in the instantaneous field"));
+  wheel_box_->setToolTip(tr("Colour the plane by the flow: hue is the direction, saturation "
+                            "the magnitude"));
+  texture_box_->setToolTip(tr("Show the plane's texture under the flow"));
   const FlowDisplay defaults;
   arrows_box_->setChecked(defaults.arrows);
   texture_box_->setChecked(defaults.texture);
@@ -146,6 +152,8 @@ QImage FlowView::render_image() {
   vtk_widget_->renderWindow()->Render();
   return vtk_widget_->grabFramebuffer();
 }
+
+double FlowView::smallest_text_px() const { return renderer_->smallest_text_px(); }
 
 void FlowView::set_theme(const ViewTheme& theme) {
   renderer_->set_theme(theme);

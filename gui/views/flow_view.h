@@ -27,6 +27,7 @@ class FlowView : public ViewPage {
 
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
+  double smallest_text_px() const override;
 
   FlowDisplay display() const;
   void set_display(const FlowDisplay& display);

@@ -10,7 +10,7 @@ namespace {
 
 QString px(double value) { return QString::number(value, 'f', 2); }
 
-QString layers_summary(const AnimationFrame& f) {
+QString layers_summary(const AnimationFrame& f, const ReusePolicy& policy) {
   QStringList counts;
   for (int k = 0; k < kLevelCount; ++k) {
     counts << QStringLiteral("%1 %2").arg(f.levels[size_t(k)]).arg(level_name(Level(k)));
@@ -27,6 +27,13 @@ QString layers_summary(const AnimationFrame& f) {
                      .arg(f.culled())
                      .arg(f.hidden);
   text += QStringLiteral("<br>The level of each layer is the colour of its outline.");
+  const QString reason = not_drawn_reason(f);
+  if (!reason.isEmpty()) text += QStringLiteral("<br>Nothing is drawn: %1.").arg(reason.toHtmlEscaped());
+  if (policy.initial_view == InitialView::kAffinePart && f.levels[size_t(Level::kRerender)] > 0) {
+    text += QStringLiteral("<br>Re-rendered layers show the %1 policy's affine initial view "
+                           "(section 6.5), not the exact projection.")
+                .arg(QString::fromUtf8(policy.name));
+  }
   if (!f.note.empty()) text += QStringLiteral("<br>Note: %1").arg(QString::fromStdString(f.note));
   return text;
 }
@@ -44,18 +51,68 @@ bool holds(const LayerOutline& outline, const Vec2& point) {
   return inside;
 }
 
+// What a reuse level does to the previous image, in a few words.
+QString reuse_words(Level level) {
+  switch (level) {
+    case Level::kNone: return QStringLiteral("the previous image, unchanged");
+    case Level::kTranslate: return QStringLiteral("the previous image moved by whole pixels");
+    case Level::kAffine: return QStringLiteral("an affine warp of the perspective cache");
+    case Level::kPerspective: return QStringLiteral("a new perspective cache, then its affine warp");
+    default: return QStringLiteral("a re-render");
+  }
+}
+
+// The note of the first layer that is not visible, empty when every layer is.
+QString hidden_layer_note(const AnimationFrame& f) {
+  for (const FrameReport& r : f.layer_reports) {
+    if (!r.visible) {
+      return r.note.empty() ? QStringLiteral("not visible") : QString::fromStdString(r.note);
+    }
+  }
+  return QString();
+}
+
 }  // namespace
 
+QString not_drawn_reason(const AnimationFrame& frame) {
+  if (frame.drawn() > 0) return QString();
+  const QString note = hidden_layer_note(frame);
+  if (!note.isEmpty()) return note;
+  if (frame.outside_frustum > 0) return QStringLiteral("outside the image");
+  if (frame.back_facing > 0) return QStringLiteral("seen from behind or edge-on");
+  if (!frame.note.empty()) return QString::fromStdString(frame.note);
+  return frame.layers > 0 ? QStringLiteral("every layer is hidden") : QStringLiteral("no layers");
+}
+
+QString describe_shown_view(const FrameReport& r, const ReusePolicy& policy) {
+  const double error = r.measured_error_px;
+  const QString off = std::isfinite(error) && error < kExactTolerancePx
+                          ? QStringLiteral("exact: %1 px from the exact projection").arg(px(error))
+                          : QStringLiteral("%1 px off the exact projection").arg(px(error));
+  if (r.level != Level::kRerender) return QStringLiteral("%1: %2").arg(reuse_words(r.level), off);
+  const QString how = r.frame == 0 ? QStringLiteral("rendered") : QStringLiteral("re-rendered");
+  if (policy.initial_view == InitialView::kAffinePart) {
+    return QStringLiteral("%1 as the %2 policy's affine initial view of section 6.5 (the affine "
+                          "part of the exact warp about the texture centre): %3; the affine view "
+                          "alone is %4 px off")
+        .arg(how, QString::fromUtf8(policy.name), off, px(r.affine_view_error_px));
+  }
+  return QStringLiteral("%1 from the texture with the exact projection: %2").arg(how, off);
+}
+
 QString explain_frame(const AnimationFrame& frame, const EngineSettings& settings) {
-  if (frame.layer_reports.size() != 1) return layers_summary(frame);
+  if (frame.layer_reports.size() != 1) return layers_summary(frame, *settings.policy);
   const FrameReport& r = frame.layer_reports.front();
   if (!r.visible) {
     return QStringLiteral("<b>Frame %1</b>: the plane is not drawn (%2).")
         .arg(r.frame)
-        .arg(QString::fromStdString(r.note));
+        .arg(r.note.empty() ? QStringLiteral("not visible") : QString::fromStdString(r.note));
   }
-  QString text = QStringLiteral("<b>Frame %1: %2</b>").arg(r.frame).arg(level_name(r.level));
-  if (r.frame == 0) return text + QStringLiteral(" (the first frame is rendered exactly).");
+  QString text = QStringLiteral("<b>Frame %1: %2</b><br>Shown: %3.")
+                     .arg(r.frame)
+                     .arg(level_name(r.level))
+                     .arg(describe_shown_view(r, *settings.policy).toHtmlEscaped());
+  if (r.frame == 0) return text;
   text += QStringLiteral("<br>The cheapest level whose neglected error stays within its "
                          "threshold wins:<br>");
   for (int level = 0; level < kTermCount; ++level) {

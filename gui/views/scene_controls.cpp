@@ -17,18 +17,21 @@ SceneControls::SceneControls(SceneModel* model, QWidget* parent) : QWidget(paren
   layout->addWidget(make_plane_group());
   layout->addWidget(make_camera_group());
   layout->addStretch(1);
-  connect(model_, &SceneModel::scene_changed, this, &SceneControls::sync_from_model);
+  // The scene at time 0 changes with its source only, not with the frame: syncing on every
+  // frame would rewrite a number the user is typing while the motion plays.
+  connect(model_, &SceneModel::source_changed, this, &SceneControls::sync_from_model);
   connect(model_, &SceneModel::scene_rejected, this, &SceneControls::sync_from_model);
   sync_from_model();
 }
 
 SliderSpin* SceneControls::add_control(QWidget* group, const QString& name, const QString& label,
-                                       double minimum, double maximum, double step, int decimals,
-                                       const QString& suffix,
+                                       const QString& what, const Range& range,
                                        std::function<double(const PlaneScene&)> get,
                                        std::function<void(PlaneScene&, double)> set) {
-  auto* widget = new SliderSpin(label, minimum, maximum, step, decimals, suffix, group);
+  auto* widget = new SliderSpin(label, range.minimum, range.maximum, range.step, range.decimals,
+                                range.suffix, group);
   widget->setObjectName(name);
+  widget->set_description(what);
   group->layout()->addWidget(widget);
   bindings_.push_back({widget, get, set});
   connect(widget, &SliderSpin::edited, this,
@@ -40,16 +43,21 @@ QWidget* SceneControls::make_motion_group() {
   auto* group = new QGroupBox(tr("Motion (per second)"), this);
   new QVBoxLayout(group);
   const char* axes[3] = {"x", "y", "z"};
+  const char* directions[3] = {"x (right)", "y (down)", "z (away from the eye)"};
   for (int i = 0; i < 3; ++i) {
     add_control(
         group, QStringLiteral("velocity_%1").arg(axes[i]), QStringLiteral("V %1").arg(axes[i]),
-        -3.0, 3.0, 0.01, 2, tr(" u/s"), [i](const PlaneScene& s) { return s.motion.velocity[i]; },
+        tr("Velocity V of the plane along the camera's %1 axis")
+            .arg(directions[i]),
+        {-3.0, 3.0, 0.01, 2, tr(" u/s")}, [i](const PlaneScene& s) { return s.motion.velocity[i]; },
         [i](PlaneScene& s, double v) { s.motion.velocity[i] = v; });
   }
   for (int i = 0; i < 3; ++i) {
     add_control(
         group, QStringLiteral("omega_%1").arg(axes[i]), QStringLiteral("Omega %1").arg(axes[i]),
-        -3.0, 3.0, 0.01, 2, tr(" rad/s"), [i](const PlaneScene& s) { return s.motion.omega[i]; },
+        tr("Angular velocity Omega of the plane about the camera's %1 axis")
+            .arg(directions[i]),
+        {-3.0, 3.0, 0.01, 2, tr(" rad/s")}, [i](const PlaneScene& s) { return s.motion.omega[i]; },
         [i](PlaneScene& s, double v) { s.motion.omega[i] = v; });
   }
   model_box_ = new QComboBox(group);
@@ -58,6 +66,7 @@ QWidget* SceneControls::make_motion_group() {
   model_box_->addItem(tr("Rotate, then translate"), int(MotionModel::kRotateThenTranslate));
   model_box_->addItem(tr("Spin about the plane centre (V = V_c)"),
                       int(MotionModel::kSpinAboutCentre));
+  model_box_->setToolTip(tr("How V and Omega move the plane over time"));
   group->layout()->addWidget(model_box_);
   connect(model_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int) {
     const auto model = static_cast<MotionModel>(model_box_->currentData().toInt());
@@ -70,7 +79,9 @@ QWidget* SceneControls::make_plane_group() {
   auto* group = new QGroupBox(tr("Plane"), this);
   new QVBoxLayout(group);
   add_control(
-      group, QStringLiteral("turn"), tr("Turn"), -180.0, 180.0, 0.5, 1, tr(" deg"),
+      group, QStringLiteral("turn"), tr("Turn"),
+      tr("Turn of the plane's normal about the vertical axis at frame 0 (0 faces the eye)"),
+      {-180.0, 180.0, 0.5, 1, tr(" deg")},
       [](const PlaneScene& s) { return orientation_of(s.pose.normal).turn_deg; },
       [](PlaneScene& s, double v) {
         PlaneOrientation o = orientation_of(s.pose.normal);
@@ -78,7 +89,9 @@ QWidget* SceneControls::make_plane_group() {
         s.pose.normal = normal_of(o);
       });
   add_control(
-      group, QStringLiteral("tilt"), tr("Tilt"), -90.0, 90.0, 0.5, 1, tr(" deg"),
+      group, QStringLiteral("tilt"), tr("Tilt"),
+      tr("Tilt of the plane's normal up or down at frame 0 (0 faces the eye)"),
+      {-90.0, 90.0, 0.5, 1, tr(" deg")},
       [](const PlaneScene& s) { return orientation_of(s.pose.normal).tilt_deg; },
       [](PlaneScene& s, double v) {
         PlaneOrientation o = orientation_of(s.pose.normal);
@@ -86,7 +99,9 @@ QWidget* SceneControls::make_plane_group() {
         s.pose.normal = normal_of(o);
       });
   add_control(
-      group, QStringLiteral("distance"), tr("Distance"), -5.0, 30.0, 0.05, 2, tr(" u"),
+      group, QStringLiteral("distance"), tr("Distance"),
+      tr("Depth Z of the plane's centre in front of the eye at frame 0"),
+      {-5.0, 30.0, 0.05, 2, tr(" u")},
       [](const PlaneScene& s) { return s.pose.point.z; },
       [](PlaneScene& s, double v) { s.pose = with_centre_depth(s.pose, v); });
   return group;
@@ -96,7 +111,8 @@ QWidget* SceneControls::make_camera_group() {
   auto* group = new QGroupBox(tr("Camera"), this);
   new QVBoxLayout(group);
   add_control(
-      group, QStringLiteral("focal"), tr("Focal"), 0.0, 3000.0, 10.0, 0, tr(" px"),
+      group, QStringLiteral("focal"), tr("Focal"),
+      tr("Focal length of the camera: larger zooms in"), {0.0, 3000.0, 10.0, 0, tr(" px")},
       [](const PlaneScene& s) { return s.camera.focal_px; },
       [](PlaneScene& s, double v) { s.camera.focal_px = v; });
   return group;

@@ -41,8 +41,15 @@ class SceneControls : public QWidget {
   QWidget* make_motion_group();
   QWidget* make_plane_group();
   QWidget* make_camera_group();
-  SliderSpin* add_control(QWidget* group, const QString& name, const QString& label, double minimum,
-                          double maximum, double step, int decimals, const QString& suffix,
+  // A control's values: from minimum to maximum in steps, shown with decimals and unit.
+  struct Range {
+    double minimum, maximum, step;
+    int decimals;
+    QString suffix;
+  };
+  // `what` is the control's tooltip: what it means (its unit is added).
+  SliderSpin* add_control(QWidget* group, const QString& name, const QString& label,
+                          const QString& what, const Range& range,
                           std::function<double(const PlaneScene&)> get,
                           std::function<void(PlaneScene&, double)> set);
   void propose(const std::function<void(PlaneScene&)>& change);

@@ -17,6 +17,13 @@ QColor qcolor(const RgbF& c, int alpha = 255) {
   return QColor::fromRgbF(c[0], c[1], c[2], alpha / 255.0);
 }
 
+// The diagram's text: the theme's caption size.
+QFont diagram_font(const ViewTheme& theme) {
+  QFont font;
+  font.setPixelSize(theme.font_size);
+  return font;
+}
+
 // Lateral extent of the diagram, world units either side of the axis.
 constexpr double kHalfWidth = 12.0;
 
@@ -34,9 +41,7 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
     return left + (right - left) * std::sqrt(std::min(z, max_depth) / max_depth);
   };
   auto y_of = [&](double x) { return top + (bottom - top) * (0.5 - x / (2.0 * kHalfWidth)); };
-  QFont font = p.font();
-  font.setPixelSize(theme.font_size);
-  p.setFont(font);
+  p.setFont(diagram_font(theme));
   const QColor text = qcolor(theme.text);
   // Alternate slice bands, boundaries, and the background slice.
   for (size_t i = 0; i < slices.size(); ++i) {
@@ -78,6 +83,9 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
 SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(false)) {
   epsilon_ = new SliderSpin("epsilon", 0.25, 8.0, 0.25, 2, " px/frame", this);
   speed_ = new SliderSpin("speed |V|", 0.01, 0.2, 0.01, 2, " units/frame", this);
+  epsilon_->set_description(tr("Tolerance epsilon: how far apart, at most, the points of one "
+                               "slice may move in a frame"));
+  speed_->set_description(tr("Speed |V| of the viewer moving sideways"));
   diagram_ = new QLabel(this);
   frame_label_ = new QLabel(this);
   caption_ = new QLabel(this);
@@ -190,6 +198,8 @@ void SlicesView::resizeEvent(QResizeEvent* event) {
   ViewPage::resizeEvent(event);
   refresh();
 }
+
+double SlicesView::smallest_text_px() const { return QFontInfo(diagram_font(theme_)).pixelSize(); }
 
 void SlicesView::set_theme(const ViewTheme& theme) {
   theme_ = theme;

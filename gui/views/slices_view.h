@@ -42,6 +42,7 @@ class SlicesView : public ViewPage {
   QImage render_image() override;
   void step_animation() override;
   void set_theme(const ViewTheme& theme) override;
+  double smallest_text_px() const override;
 
   // The slicing in force (for tests): epsilon in pixels per frame, speed in world units
   // per frame.

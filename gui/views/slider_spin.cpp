@@ -10,7 +10,7 @@ namespace oflab {
 
 SliderSpin::SliderSpin(const QString& label, double minimum, double maximum, double step,
                        int decimals, const QString& suffix, QWidget* parent)
-    : QWidget(parent), minimum_(minimum), step_(step) {
+    : QWidget(parent), minimum_(minimum), step_(step), suffix_(suffix.trimmed()) {
   auto* row = new QHBoxLayout(this);
   row->setContentsMargins(0, 0, 0, 0);
   auto* name = new QLabel(label, this);
@@ -48,9 +48,18 @@ int SliderSpin::slider_position(double value) const {
 double SliderSpin::value() const { return spin_->value(); }
 
 void SliderSpin::set_value(double value) {
+  if (std::abs(spin_->value() - value) < 0.5 * std::pow(10.0, -spin_->decimals())) return;
   const QSignalBlocker b1(slider_), b2(spin_);
   spin_->setValue(value);
   slider_->setValue(slider_position(value));
+}
+
+void SliderSpin::set_description(const QString& what) {
+  const QString tip = suffix_.isEmpty() ? what : tr("%1, in %2").arg(what, suffix_);
+  setToolTip(tip);
+  for (QWidget* part : findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+    part->setToolTip(tip);
+  }
 }
 
 }  // namespace oflab

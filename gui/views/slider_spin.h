@@ -20,7 +20,11 @@ class SliderSpin : public QWidget {
              const QString& suffix, QWidget* parent = nullptr);
 
   double value() const;
-  void set_value(double value);  // emits nothing
+  // Emits nothing. A value equal to the shown one (to the shown decimals) leaves the field
+  // alone, so a number being typed survives the scene pushing its values back every frame.
+  void set_value(double value);
+  // The tooltip of the label, slider and field: what the value means; the unit is added.
+  void set_description(const QString& what);
   QDoubleSpinBox* spin_box() const { return spin_; }
   QSlider* slider() const { return slider_; }
 
@@ -33,6 +37,7 @@ class SliderSpin : public QWidget {
   QSlider* slider_;
   QDoubleSpinBox* spin_;
   double minimum_, step_;
+  QString suffix_;
 };
 
 }  // namespace oflab

@@ -25,6 +25,10 @@ class ViewPage : public QWidget {
   // (reproducible screenshots and benchmarks); its playing state is kept.
   virtual void set_external_clock(bool on) { (void)on; }
   virtual void set_theme(const ViewTheme& theme) = 0;
+  // The size of the smallest text the view draws inside its rendered content (captions,
+  // legends, colour-bar and chart labels), screen pixels, as its drawing objects hold it
+  // now; 0 for a view that draws no text of its own (its Qt controls use the app font).
+  virtual double smallest_text_px() const { return 0.0; }
 };
 
 }  // namespace oflab

@@ -13,7 +13,9 @@ ViewTheme view_theme(bool presentation) {
     t.tile_background = {1.0, 1.0, 1.0};
     t.muted_background = {0.86, 0.86, 0.86};
     t.muted = {0.62, 0.62, 0.62};
-    t.font_size = 20;
+    t.font_size = 22;
+    t.label_size = 20;
+    t.control_font_px = 20;
     t.line_width = 2.5;
   } else {
     t.background = {0.09, 0.10, 0.12};
@@ -24,6 +26,8 @@ ViewTheme view_theme(bool presentation) {
     t.muted_background = {0.20, 0.20, 0.20};
     t.muted = {0.42, 0.42, 0.42};
     t.font_size = 14;
+    t.label_size = 12;
+    t.control_font_px = 0;
     t.line_width = 1.5;
   }
   return t;

@@ -18,9 +18,18 @@ struct ViewTheme {
   RgbF tile_background;   // gallery tile with a non-zero coefficient
   RgbF muted_background;  // gallery tile whose coefficient is zero
   RgbF muted;             // grid and text of a zero tile
-  int font_size = 14;     // caption text, pixels
+  int font_size = 14;     // captions and titles, pixels
+  // The smallest text a view draws (legends, colour-bar and chart labels, axis ticks,
+  // tile values), pixels: at least kPresentationMinTextPx in presentation mode.
+  int label_size = 12;
+  // Qt controls' font, pixels; 0 keeps the platform's font (the normal look).
+  int control_font_px = 0;
   double line_width = 1.5;
 };
+
+// The smallest text size presentation mode allows anywhere, pixels: readable from the
+// back of a classroom on a 1920x1080 projector.
+constexpr int kPresentationMinTextPx = 18;
 
 // The normal look (presentation == false) or presentation mode (true).
 ViewTheme view_theme(bool presentation);

@@ -1,0 +1,218 @@
+// The window as a teacher uses it: at 1920x1080 in presentation mode no text is smaller than
+// kPresentationMinTextPx and no coefficient is elided; the play keys work whatever has
+// focus; a value typed while the motion plays applies; Ctrl+N shows the Nth view; every
+// control explains itself in a tooltip.
+#include <QAbstractButton>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollBar>
+#include <QTabBar>
+#include <QTableWidget>
+
+#include "models/scene_model.h"
+#include "views/coefficient_table.h"
+#include "views/flow_view.h"
+#include "views/scene_controls.h"
+#include "views/slider_spin.h"
+#include "views/view_page.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+using ClassroomTest = WindowTest;
+
+// The controls a user can click or type into, among the widgets visible in the window.
+std::vector<QWidget*> visible_controls(QWidget& window) {
+  std::vector<QWidget*> controls;
+  for (QWidget* w : window.findChildren<QWidget*>()) {
+    if (!w->isVisibleTo(&window) || qobject_cast<QScrollBar*>(w)) continue;
+    // Parts Qt builds inside a control (a tab bar's scroll arrows, a dock's title buttons)
+    // are that control's, not the window's.
+    if (qobject_cast<QTabBar*>(w->parentWidget()) || w->inherits("QDockWidgetTitleButton")) continue;
+    if (qobject_cast<QAbstractButton*>(w) || qobject_cast<QAbstractSlider*>(w) ||
+        qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QComboBox*>(w)) {
+      controls.push_back(w);
+    }
+  }
+  return controls;
+}
+
+// Text-bearing widgets: labels, controls, tables, tab bars.
+bool shows_text(QWidget* w) {
+  return qobject_cast<QLabel*>(w) || qobject_cast<QAbstractButton*>(w) ||
+         qobject_cast<QComboBox*>(w) || qobject_cast<QAbstractSpinBox*>(w) ||
+         qobject_cast<QTableWidget*>(w) || qobject_cast<QTabBar*>(w) || qobject_cast<QLineEdit*>(w);
+}
+
+void show_at_projector_size(MainWindow& window) {
+  window.resize(1920, 1080);
+  window.set_presentation(true);
+  QApplication::processEvents();
+}
+
+TEST_F(ClassroomTest, PresentationTextIsAtLeastEighteenPixelsOnEveryView) {
+  show_at_projector_size(window());
+  for (const QString& name : window().view_names()) {
+    ASSERT_TRUE(window().show_view(name));
+    window().play_frames(2);
+    window().view(name)->render_image();
+    const double drawn = window().view(name)->smallest_text_px();
+    if (drawn > 0.0) {
+      EXPECT_GE(drawn, kPresentationMinTextPx) << name.toStdString();
+    }
+    for (QWidget* w : window().findChildren<QWidget*>()) {
+      if (!w->isVisibleTo(&window()) || !shows_text(w)) continue;
+      EXPECT_GE(QFontInfo(w->font()).pixelSize(), kPresentationMinTextPx)
+          << name.toStdString() << ": " << w->metaObject()->className() << " "
+          << w->objectName().toStdString();
+    }
+  }
+  window().set_presentation(false);  // the application's fonts are global: leave them normal
+}
+
+TEST_F(ClassroomTest, NormalLookKeepsItsSmallerText) {
+  // The scale is the theme's: the normal look is not presentation-sized.
+  EXPECT_LT(window().flow_view()->smallest_text_px(), kPresentationMinTextPx);
+  EXPECT_LT(window().view("analysis")->smallest_text_px(), kPresentationMinTextPx);
+}
+
+TEST_F(ClassroomTest, CoefficientTableElidesNothingAtProjectorSize) {
+  show_at_projector_size(window());
+  window().show_view("flow");
+  // Frames where the planar terms take long values (negative, many digits).
+  for (int frame : {0, 7, 20}) {
+    window().model()->set_frame(frame);
+    QApplication::processEvents();
+    auto* table = window().flow_view()->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
+    ASSERT_NE(table, nullptr);
+    const QFontMetrics fm(table->font());
+    int columns = 0;
+    for (int col = 0; col < table->columnCount(); ++col) columns += table->columnWidth(col);
+    EXPECT_GE(table->viewport()->width(), columns) << "the table is cut on the right";
+    for (int row = 0; row < table->rowCount(); ++row) {
+      for (int col = 0; col < table->columnCount(); ++col) {
+        const QString text = table->item(row, col)->text();
+        // The item's margins take a few pixels either side of the text.
+        EXPECT_LE(fm.horizontalAdvance(text) + 6, table->columnWidth(col))
+            << "row " << row << " column " << col << ": " << text.toStdString();
+      }
+    }
+  }
+  window().set_presentation(false);
+}
+
+TEST_F(ClassroomTest, EveryVisibleControlHasATooltip) {
+  for (const QString& name : window().view_names()) {
+    ASSERT_TRUE(window().show_view(name));
+    QApplication::processEvents();
+    for (QWidget* w : visible_controls(window())) {
+      EXPECT_FALSE(w->toolTip().trimmed().isEmpty())
+          << name.toStdString() << ": " << w->metaObject()->className() << " '"
+          << w->objectName().toStdString() << "'";
+    }
+  }
+}
+
+TEST_F(ClassroomTest, EveryCoefficientSaysWhatItIsAndItsUnit) {
+  auto* table = window().flow_view()->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
+  ASSERT_NE(table, nullptr);
+  for (int row = 0; row < table->rowCount(); ++row) {
+    const QString tip = table->item(row, 1)->toolTip();
+    EXPECT_TRUE(tip.startsWith(table->item(row, 0)->text() + ": ")) << tip.toStdString();
+    EXPECT_TRUE(tip.endsWith(table->item(row, 2)->text())) << tip.toStdString();
+  }
+}
+
+TEST_F(ClassroomTest, ControlNumberKeysShowTheViewsInTableOrder) {
+  QApplication::setActiveWindow(&window());
+  const QStringList names = window().view_names();
+  for (int i = names.size() - 1; i >= 0; --i) {
+    QTest::keyClick(&window(), Qt::Key(Qt::Key_1 + i), Qt::ControlModifier);
+    EXPECT_EQ(window().current_view_name(), names.at(i));
+  }
+}
+
+TEST_F(ClassroomTest, PlayKeysWorkWhateverHasFocus) {
+  QApplication::setActiveWindow(&window());
+  SliderSpin* turn = window().scene_controls()->control(QStringLiteral("turn"));
+  auto* part = window().flow_view()->findChild<QComboBox*>(QStringLiteral("flow_part"));
+  for (QWidget* focus : {static_cast<QWidget*>(turn->slider()), static_cast<QWidget*>(part),
+                         static_cast<QWidget*>(turn->spin_box())}) {
+    focus->setFocus();
+    QApplication::processEvents();
+    const double turn_before = turn->value();
+    const int part_before = part->currentIndex();
+    window().model()->set_frame(5);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Right);
+    EXPECT_EQ(window().model()->frame(), 6) << focus->metaObject()->className();
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Left);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Left);
+    EXPECT_EQ(window().model()->frame(), 4);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_End);
+    EXPECT_EQ(window().model()->frame(), window().model()->loop_frames() - 1);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Home);
+    EXPECT_EQ(window().model()->frame(), 0);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    EXPECT_TRUE(window().motion_playing());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    EXPECT_FALSE(window().motion_playing());
+    EXPECT_EQ(turn->value(), turn_before) << "the keys went to the control";
+    EXPECT_EQ(part->currentIndex(), part_before);
+  }
+}
+
+// Types `text` into a number field and presses Enter, as a user would.
+void type_and_enter(QDoubleSpinBox* field, const QString& text) {
+  field->setFocus();
+  QApplication::processEvents();
+  QLineEdit* edit = field->findChild<QLineEdit*>();
+  edit->selectAll();
+  QTest::keyClicks(QApplication::focusWidget(), text);
+  QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+  QApplication::processEvents();
+}
+
+TEST_F(ClassroomTest, EnterAppliesTheValueAndSpaceThenPlays) {
+  QApplication::setActiveWindow(&window());
+  SliderSpin* vx = window().scene_controls()->control(QStringLiteral("velocity_x"));
+  type_and_enter(vx->spin_box(), QStringLiteral("0.5"));
+  EXPECT_DOUBLE_EQ(window().model()->scene().motion.velocity.x, 0.5);
+  QWidget* focus = QApplication::focusWidget();
+  ASSERT_NE(focus, nullptr);
+  EXPECT_TRUE(focus == window().current_view() || window().current_view()->isAncestorOf(focus))
+      << focus->metaObject()->className();
+  QTest::keyClick(focus, Qt::Key_Space);
+  EXPECT_TRUE(window().motion_playing());
+  EXPECT_DOUBLE_EQ(vx->value(), 0.5);
+  EXPECT_TRUE(vx->spin_box()->text().startsWith(QStringLiteral("0.50")))
+      << vx->spin_box()->text().toStdString();
+  window().set_motion_playing(false);
+}
+
+TEST_F(ClassroomTest, ValuesTypedWhilePlayingApply) {
+  QApplication::setActiveWindow(&window());
+  window().set_motion_playing(true);
+  SliderSpin* vy = window().scene_controls()->control(QStringLiteral("velocity_y"));
+  QDoubleSpinBox* field = vy->spin_box();
+  field->setFocus();
+  field->findChild<QLineEdit*>()->selectAll();
+  QTest::keyClicks(QApplication::focusWidget(), QStringLiteral("0.7"));
+  // Frames go by while the user types: the typed text must survive them.
+  for (int i = 0; i < 5; ++i) window().model()->advance(1);
+  QApplication::processEvents();
+  EXPECT_TRUE(field->text().startsWith(QStringLiteral("0.7"))) << field->text().toStdString();
+  QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+  QApplication::processEvents();
+  EXPECT_DOUBLE_EQ(window().model()->scene().motion.velocity.y, 0.7);
+  EXPECT_TRUE(window().motion_playing());
+  window().set_motion_playing(false);
+}
+
+}  // namespace
+}  // namespace oflab::test

@@ -1,0 +1,234 @@
+// The analysis view's charts: a click on any chart (the four small budget charts included)
+// lands on the frame under the pointer, computed here from the chart's own rectangle; the
+// axis stays still after a jump; every chart has a frame axis and the levels chart a
+// legend. And the inspector's words for each policy's frames.
+#include "views/analysis_view.h"
+
+#include <QPainter>
+
+#include "engine/engine.h"
+#include "flow/geometry.h"
+#include "models/animation_model.h"
+#include "models/scene_model.h"
+#include "views/frame_inspector.h"
+#include "views/palette.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+class AnalysisViewTest : public WindowTest {
+ protected:
+  AnalysisView& analysis() { return *window().analysis_view(); }
+  QWidget* charts() { return analysis().findChild<QWidget*>(QStringLiteral("analysis_charts")); }
+
+  // The centre of frame `frame`'s column in chart `index`: its rectangle split into one
+  // equal column per frame of the axis.
+  QPoint column_centre(int index, int frame) {
+    const QRect area = analysis().chart_area(index);
+    const int n = analysis().last_frame() - analysis().first_frame() + 1;
+    const double x = area.left() + (frame - analysis().first_frame() + 0.5) * area.width() / n;
+    return QPoint(int(std::lround(x)), area.center().y());
+  }
+};
+
+TEST_F(AnalysisViewTest, ClickOnEveryChartLandsOnTheFrameUnderThePointer) {
+  window().resize(1920, 1080);
+  window().show_view("analysis");
+  window().play_frames(40);
+  ASSERT_NE(charts(), nullptr);
+  ASSERT_EQ(analysis().current_frame(), 40);
+  for (int chart = 0; chart < AnalysisView::kChartCount; ++chart) {
+    const QRect area = analysis().chart_area(chart);
+    ASSERT_TRUE(charts()->rect().contains(area)) << chart;
+    for (int frame : {3, 17, 29, 38}) {
+      QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, column_centre(chart, frame));
+      EXPECT_EQ(window().model()->frame(), frame) << "chart " << chart;
+    }
+  }
+}
+
+TEST_F(AnalysisViewTest, ClickBetweenChartsDoesNothing) {
+  window().show_view("analysis");
+  window().play_frames(12);
+  const QRect first = analysis().chart_area(0), second = analysis().chart_area(1);
+  const QPoint gap(first.center().x(), (first.bottom() + second.top()) / 2);
+  QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, gap);
+  EXPECT_EQ(window().model()->frame(), 12);
+  QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, QPoint(2, first.center().y()));
+  EXPECT_EQ(window().model()->frame(), 12);
+}
+
+TEST_F(AnalysisViewTest, TheAxisStaysStillUnderThePointerAfterAJump) {
+  window().show_view("analysis");
+  window().play_frames(100);  // past the 80 recent frames: the axis has scrolled
+  const int first = analysis().first_frame(), last = analysis().last_frame();
+  ASSERT_EQ(last, 100);
+  ASSERT_EQ(first, 100 - AnalysisView::kRecentFrames + 1);
+  const QPoint target = column_centre(0, 50);
+  QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, target);
+  ASSERT_EQ(window().model()->frame(), 50);
+  EXPECT_EQ(analysis().first_frame(), first);
+  EXPECT_EQ(analysis().last_frame(), last);
+  EXPECT_EQ(analysis().frame_at(target), 50) << "the same place still means the same frame";
+  // Playing on within the axis keeps it; past its end it scrolls again.
+  window().play_frames(10);
+  EXPECT_EQ(analysis().first_frame(), first);
+  window().play_frames(45);
+  EXPECT_EQ(analysis().last_frame(), 105);
+}
+
+TEST_F(AnalysisViewTest, WholeLoopAxisSpansTheLoop) {
+  window().show_view("analysis");
+  analysis().set_whole_run(true);
+  window().play_frames(5);
+  EXPECT_EQ(analysis().first_frame(), 0);
+  EXPECT_EQ(analysis().last_frame(), window().animation_model()->animator()->frame_count() - 1);
+  EXPECT_EQ(analysis().current_frame(), 5);
+}
+
+TEST(AnalysisFrameTicks, AreRoundFramesFarEnoughApartForTheirLabels) {
+  for (int width : {300, 900, 1800}) {
+    for (int label : {12, 20}) {
+      const std::vector<int> ticks = AnalysisView::frame_ticks(21, 100, width, label);
+      ASSERT_GE(ticks.size(), 2u) << width;
+      const int step = ticks[1] - ticks[0];
+      int base = step;
+      while (base % 10 == 0) base /= 10;
+      EXPECT_TRUE(base == 1 || base == 2 || base == 5) << step;
+      EXPECT_GE(step * double(width) / 80, 3.0 * label);
+      for (size_t i = 0; i < ticks.size(); ++i) {
+        EXPECT_EQ(ticks[i] % step, 0);
+        EXPECT_GE(ticks[i], 21);
+        EXPECT_LE(ticks[i], 100);
+        if (i > 0) {
+          EXPECT_EQ(ticks[i] - ticks[i - 1], step);
+        }
+      }
+      EXPECT_LT(ticks.front() - step, 21) << "the first round frame is not skipped";
+    }
+  }
+}
+
+// Pixels of exactly `colour` in `area` of `image`.
+int count_colour(const QImage& image, const QRect& area, const QColor& colour) {
+  int n = 0;
+  for (int y = std::max(0, area.top()); y <= std::min(image.height() - 1, area.bottom()); ++y) {
+    for (int x = std::max(0, area.left()); x <= std::min(image.width() - 1, area.right()); ++x) {
+      n += image.pixelColor(x, y).rgb() == colour.rgb();
+    }
+  }
+  return n;
+}
+
+TEST_F(AnalysisViewTest, LevelsChartHasALegendAndEveryChartAFrameAxis) {
+  window().resize(1600, 1000);
+  window().show_view("analysis");
+  window().play_frames(3);  // few frames: the levels' bars cover little of the chart
+  QApplication::processEvents();
+  const QImage image = analysis().render_image();
+  ASSERT_EQ(image.size(), charts()->size());
+  const QRect levels = analysis().chart_area(1);
+  const int line = QFontMetrics(QFont()).height() + 40;
+  const QRect title_strip(levels.left(), levels.top() - line, levels.width(), line);
+  for (int level = 0; level < kLevelCount; ++level) {
+    const Rgb8 c = level_colour(Level(level));
+    EXPECT_GT(count_colour(image, title_strip, QColor(c.r, c.g, c.b)), 20)
+        << "no legend swatch for " << level_name(Level(level));
+  }
+  const QColor background = image.pixelColor(2, image.height() - 2);
+  for (int chart = 0; chart < AnalysisView::kChartCount; ++chart) {
+    const QRect area = analysis().chart_area(chart);
+    const QRect axis(area.left(), area.bottom() + 2, area.width(), 20);
+    const int marks = axis.width() * axis.height() - count_colour(image, axis, background);
+    EXPECT_GT(marks, 30) << "no ticks or labels under chart " << chart;
+  }
+}
+
+// What the inspector says about frame 0 and a later frame of every policy on the demo.
+TEST(FrameInspector, SaysWhatEachPolicysFramesAreAndHowFarFromExact) {
+  SceneModel scene;
+  AnimationModel model(&scene);
+  for (const ReusePolicy& policy : reuse_policies()) {
+    EngineSettings settings = model.settings();
+    settings.policy = &policy;
+    ASSERT_TRUE(model.set_settings(settings)) << policy.name;
+    scene.set_frame(12);
+    for (const AnimationFrame& record : {model.history().front(), model.history().back()}) {
+      ASSERT_EQ(record.layer_reports.size(), 1u);
+      const FrameReport& r = record.layer_reports.front();
+      const std::string text = explain_frame(record, settings).toStdString();
+      const std::string shown = describe_shown_view(r, policy).toStdString();
+      EXPECT_NE(text.find(QString::fromStdString(shown).toHtmlEscaped().toStdString()),
+                std::string::npos);
+      const std::string error = QString::number(r.measured_error_px, 'f', 2).toStdString();
+      EXPECT_NE(shown.find(error + " px"), std::string::npos) << shown;
+      const bool exact = r.measured_error_px < kExactTolerancePx;
+      EXPECT_EQ(shown.find("exact:") != std::string::npos, exact) << policy.name << ": " << shown;
+      if (r.level == Level::kRerender && policy.initial_view == InitialView::kAffinePart) {
+        EXPECT_NE(shown.find("affine initial view of section 6.5"), std::string::npos) << shown;
+      }
+      if (r.level == Level::kRerender && policy.initial_view == InitialView::kExact) {
+        EXPECT_NE(shown.find("with the exact projection"), std::string::npos) << shown;
+      }
+    }
+  }
+}
+
+// The affine policy's frame 0 is the affine part of the exact warp about the texture
+// centre: its measured error is the corner distance between that affine view and the exact
+// projection, computed here with the affine part taken by central differences.
+TEST(FrameInspector, AffineInitialViewIsReportedOffByItsMeasuredDistance) {
+  SceneModel scene;
+  AnimationModel model(&scene);
+  EngineSettings settings = model.settings();
+  settings.policy = &reuse_policy("affine");
+  ASSERT_TRUE(model.set_settings(settings));
+  const FrameReport& r = model.history().front().layer_reports.front();
+  const PlanePose pose = scene.current_pose();
+  const Mat3 exact = exact_texture_warp(scene.scene().camera, pose);
+  const Vec2 size(pose.texture_size.x, pose.texture_size.y), centre = 0.5 * size;
+  const double h = 1e-3;  // texels
+  const auto at = [&](const Vec2& t) { return apply_homography(exact, t); };
+  const Vec2 dx = (at(centre + Vec2(h, 0)) - at(centre - Vec2(h, 0))) / (2 * h);
+  const Vec2 dy = (at(centre + Vec2(0, h)) - at(centre - Vec2(0, h))) / (2 * h);
+  double worst = 0.0;
+  for (const Vec2& t : {Vec2(0, 0), Vec2(size.x, 0), size, Vec2(0, size.y)}) {
+    const Vec2 affine = at(centre) + (t.x - centre.x) * dx + (t.y - centre.y) * dy;
+    worst = std::max(worst, glm::length(affine - at(t)));
+  }
+  ASSERT_GT(worst, 1.0) << "the demo's first pose should show perspective";
+  EXPECT_NEAR(r.measured_error_px, worst, 0.05);
+  const std::string shown = describe_shown_view(r, *settings.policy).toStdString();
+  EXPECT_NE(shown.find(QString::number(r.measured_error_px, 'f', 2).toStdString() +
+                       " px off the exact"),
+            std::string::npos)
+      << shown;
+  EXPECT_EQ(shown.find("exact:"), std::string::npos);
+}
+
+TEST(FrameInspector, NotVisibleFramesSayWhyInsteadOfShowingNumbers) {
+  AnimationFrame record;
+  record.frame = 7;
+  record.layers = 1;
+  FrameReport plane;
+  plane.frame = 7;
+  plane.visible = false;
+  plane.note = "not visible: a corner is at or behind the eye";
+  record.layer_reports.push_back(plane);
+  EXPECT_EQ(not_drawn_reason(record), QString::fromStdString(plane.note));
+  const QString text = explain_frame(record, EngineSettings{});
+  EXPECT_TRUE(text.contains(QString::fromStdString(plane.note))) << text.toStdString();
+  EXPECT_FALSE(text.contains(QStringLiteral("leaves"))) << text.toStdString();
+
+  AnimationFrame scene;
+  scene.layers = 3;
+  scene.outside_frustum = 3;
+  EXPECT_EQ(not_drawn_reason(scene), QStringLiteral("outside the image"));
+  EXPECT_TRUE(explain_frame(scene, EngineSettings{}).contains(QStringLiteral("outside the image")));
+  scene.levels[size_t(Level::kAffine)] = 1;
+  EXPECT_TRUE(not_drawn_reason(scene).isEmpty());
+}
+
+}  // namespace
+}  // namespace oflab::test
