@@ -4,6 +4,7 @@
 #include <QFont>
 #include <QPalette>
 #include <QStyle>
+#include <vector>
 
 #include "views/view_theme.h"
 
@@ -38,10 +39,21 @@ QPalette light_palette() {
   return p;
 }
 
+// Widgets the platform gives a font of their own (smaller, often), which the application
+// font does not replace.
+constexpr const char* kOwnFontClasses[] = {"QHeaderView", "QDockWidget", "QStatusBar",
+                                           "QMenuBar", "QMenu", "QTabBar", "QToolButton",
+                                           "QTipLabel", "QMessageBox"};
+
 }  // namespace
 
 void apply_app_theme(bool presentation) {
   static const QFont base_font = QApplication::font();
+  static const std::vector<QFont> base_class_fonts = [] {
+    std::vector<QFont> fonts;
+    for (const char* name : kOwnFontClasses) fonts.push_back(QApplication::font(name));
+    return fonts;
+  }();
   if (QApplication::style()->objectName().compare(QLatin1String("fusion"), Qt::CaseInsensitive)) {
     QApplication::setStyle(QStringLiteral("Fusion"));  // the application owns the style
   }
@@ -50,6 +62,9 @@ void apply_app_theme(bool presentation) {
   const ViewTheme theme = view_theme(presentation);
   if (theme.control_font_px > 0) font.setPixelSize(theme.control_font_px);
   QApplication::setFont(font);
+  for (size_t i = 0; i < base_class_fonts.size(); ++i) {
+    QApplication::setFont(theme.control_font_px > 0 ? font : base_class_fonts[i], kOwnFontClasses[i]);
+  }
 }
 
 }  // namespace oflab

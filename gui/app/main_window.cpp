@@ -314,6 +314,8 @@ void MainWindow::set_presentation(bool on) {
   const QSignalBlocker block(presentation_action_);
   presentation_action_->setChecked(on);
   apply_app_theme(on);
+  // A dock paints its title in the font it was made with unless it has one of its own.
+  scene_dock_->setFont(QApplication::font());
   style_banners();
   for (const Tab& tab : views_) tab.page->set_theme(view_theme(on));
   // Let the scene panel grow with the fonts instead of clipping its controls.

@@ -67,8 +67,9 @@ void draw_frame_axis(QPainter& p, const ChartFrame& f, const QColor& text) {
     p.drawLine(QPointF(x, f.area.bottom()), QPointF(x, f.area.bottom() + 5));
     const QString label = QString::number(frame);
     const int w = fm.horizontalAdvance(label);
-    p.drawText(QRectF(x - w / 2.0 - 2, f.area.bottom() + 5, w + 4, fm.height()), Qt::AlignCenter,
-               label);
+    // Centred on its tick, but never left of the chart (the margin holds the word "frame").
+    const double left = std::max(x - w / 2.0 - 2, double(f.area.left()));
+    p.drawText(QRectF(left, f.area.bottom() + 5, w + 4, fm.height()), Qt::AlignCenter, label);
   }
   const int margin = left_margin(fm);
   p.drawText(QRect(f.area.left() - margin, f.area.bottom() + 5, margin - 6, fm.height()),

@@ -72,7 +72,8 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   p.drawEllipse(QPointF(left, y_of(0.0)), 5, 5);
   p.setPen(text);
   p.drawText(QPointF(left - 30, bottom + 20), "eye");
-  p.drawText(QPointF(right - 160, bottom + 20),
+  // Right-aligned to the diagram's edge, whatever the font size.
+  p.drawText(QRectF(left, bottom + 4, right - left, p.fontMetrics().height()), Qt::AlignRight,
              QString("depth (sqrt scale) to %1").arg(max_depth, 0, 'f', 0));
   p.drawText(QPointF(left, top - 10), QString("%1 slices (%2 finite + background)")
                                           .arg(slices.size())

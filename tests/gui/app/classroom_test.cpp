@@ -7,7 +7,10 @@
 #include <QAbstractSpinBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QDockWidget>
 #include <QHeaderView>
+#include <QMenuBar>
+#include <QStatusBar>
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollBar>
@@ -47,7 +50,9 @@ std::vector<QWidget*> visible_controls(QWidget& window) {
 bool shows_text(QWidget* w) {
   return qobject_cast<QLabel*>(w) || qobject_cast<QAbstractButton*>(w) ||
          qobject_cast<QComboBox*>(w) || qobject_cast<QAbstractSpinBox*>(w) ||
-         qobject_cast<QTableWidget*>(w) || qobject_cast<QTabBar*>(w) || qobject_cast<QLineEdit*>(w);
+         qobject_cast<QTableWidget*>(w) || qobject_cast<QTabBar*>(w) || qobject_cast<QLineEdit*>(w) ||
+         qobject_cast<QHeaderView*>(w) || qobject_cast<QDockWidget*>(w) ||
+         qobject_cast<QStatusBar*>(w) || qobject_cast<QMenuBar*>(w);
 }
 
 void show_at_projector_size(MainWindow& window) {
