@@ -41,6 +41,7 @@ shot animation-scene --view animation --scene four-cubes --script circle --frame
 shot animation-scene-shifting --view animation --scene train-window --source scene-shifting \
   --frames 29
 shot analysis-demo --view analysis --frames 40
+shot analysis-presentation --view analysis --presentation --size 1920 1080 --frames 40
 shot lesson-affine-vs-perspective --lesson affine-vs-perspective --frames 8
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
