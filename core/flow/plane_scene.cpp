@@ -13,19 +13,29 @@ bool finite(const Vec3& v) {
 // would be thousands of pixels wide.
 constexpr double kMinCornerDepth = 1e-3;
 
+constexpr double kPi = 3.14159265358979323846;
+
+// A plane turning once every kDemoTurnSeconds about the axis `axis` through `centre`: a
+// screw motion of zero pitch (V = -Omega x centre keeps the centre still).
+RigidMotion turning_motion(const Vec3& axis, const Vec3& centre) {
+  RigidMotion motion;
+  motion.omega = glm::normalize(axis) * (2.0 * kPi / kDemoTurnSeconds);
+  motion.velocity = -glm::cross(motion.omega, centre);
+  motion.model = MotionModel::kScrew;
+  return motion;
+}
+
 }  // namespace
 
 PlaneScene default_demo_scene() {
   PlaneScene scene;
   scene.camera = make_camera(600.0, 800, 600);
-  scene.pose.point = Vec3(0.15, -0.1, 3.0);
-  scene.pose.normal = Vec3(0.25, -0.15, 1.0);
+  scene.pose.point = Vec3(0.2, 0.0, 2.0);
+  scene.pose.normal = Vec3(0.4, -0.2, 1.0);
   scene.pose.up = Vec3(0.0, -1.0, 0.0);
   scene.pose.size = Vec2(1.0, 0.8);
   scene.pose.texture_size = glm::ivec2(243, 198);
-  scene.motion.velocity = Vec3(0.3, -0.2, 0.5);
-  scene.motion.omega = Vec3(0.4, -0.3, 0.6);
-  scene.motion.model = MotionModel::kScrew;
+  scene.motion = turning_motion(Vec3(0.3, 0.3, 1.0), Vec3(0.0, 0.0, 2.06));
   return scene;
 }
 

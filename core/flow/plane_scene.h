@@ -17,12 +17,20 @@ struct PlaneScene {
   RigidMotion motion;
 };
 
-// The default demo: 800 x 600 image, f = 600 px, a 1 x 0.8 plane at P = (0.15, -0.1, 3)
-// tilted towards the viewer (N = (0.25, -0.15, 1), U = (0, -1, 0)) in a screw motion with
-// V = (0.3, -0.2, 0.5) world units per second and Omega = (0.4, -0.3, 0.6) rad per second.
-// The texture size is the bundled butterfly's (243 x 198 texels); SceneModel sets it to
-// whatever texture is loaded.
+// The default demo: 800 x 600 image, f = 600 px, the butterfly on a 1 x 0.8 plane at
+// P = (0.2, 0, 2) tilted towards the viewer (N = (0.4, -0.2, 1), U = (0, -1, 0)) turning
+// once every kDemoTurnSeconds about the axis (0.3, 0.3, 1) through (0, 0, 2.06): a screw
+// motion of zero pitch, Omega = 2 pi / 5 s along that axis and V = -Omega x (0, 0, 2.06).
+// The plane circles about the axis (translation), comes nearer and goes away (scale),
+// turns in the image (rotation) and changes its tilt (shear and the perspective terms); its
+// whole rectangle stays inside the image in every frame, and after one turn (the scene
+// panel's 150-frame loop at 30 frames per second) it is back at its start, so the loop
+// is seamless. The texture size is the bundled butterfly's (243 x 198 texels); SceneModel
+// sets it to whatever texture is loaded.
 PlaneScene default_demo_scene();
+
+// Seconds of one turn of the default demo: the scene panel's loop (150 frames at 30 per second).
+constexpr double kDemoTurnSeconds = 5.0;
 
 // Empty when every view can draw the scene, otherwise one line saying what is wrong:
 // core's camera_problem and plane_pose_problem, plus a check that all four plane corners
