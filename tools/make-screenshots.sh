@@ -15,7 +15,7 @@ mkdir -p "$out"
 shot() {  # shot NAME ARGS...: one screenshot into manual/images/NAME.png
   local name=$1
   shift
-  xvfb-run -a -s "-screen 0 1600x1000x24" "$oflab" --screenshot "$out/$name.png" "$@" \
+  xvfb-run -a -s "-screen 0 ${screen:-1600x1000}x24" "$oflab" --screenshot "$out/$name.png" "$@" \
     2> >(grep -v 'XDG_RUNTIME_DIR' >&2)
 }
 
@@ -42,7 +42,13 @@ shot animation-scene-shifting --view animation --scene train-window --source sce
   --frames 29
 shot analysis-demo --view analysis --frames 40
 shot analysis-presentation --view analysis --presentation --size 1920 1080 --frames 40
-shot lesson-affine-vs-perspective --lesson affine-vs-perspective --frames 8
+# The classroom's projector: the comparison layout at 1920 x 1080, normal and presentation.
+screen=1920x1200 shot lesson-affine-vs-perspective --lesson affine-vs-perspective \
+  --size 1920 1080 --frames 40
+screen=1920x1200 shot animation-comparison --lesson affine-vs-perspective --view animation \
+  --size 1920 1080 --frames 40
+screen=1920x1200 shot animation-comparison-presentation --lesson affine-vs-perspective \
+  --view animation --presentation --size 1920 1080 --frames 40
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
 shot slices --view slices --frames 10

@@ -1,6 +1,7 @@
 #include "adapters/frame_images.h"
 
-#include <QPainter>
+#include <QFontMetricsF>
+#include <QObject>
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
@@ -42,56 +43,52 @@ QImage flatten_image(const Image& image, const QColor& background) {
   return out;
 }
 
-void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
-                        const std::array<int, kLevelCount>& counts, const QColor& text,
-                        double line_width, double text_scale) {
-  QPainter painter(&image);
+void draw_level_outlines(QPainter& painter, const std::vector<LayerOutline>& outlines,
+                         const QTransform& to_view, double line_width) {
+  painter.save();
   painter.setRenderHint(QPainter::Antialiasing, true);
+  painter.setBrush(Qt::NoBrush);
   for (const LayerOutline& outline : outlines) {
     QPolygonF polygon;
-    for (const Vec2& p : outline.points) polygon << QPointF(p.x, p.y);
+    for (const Vec2& p : outline.points) polygon << to_view.map(QPointF(p.x, p.y));
     painter.setPen(QPen(level_qcolor(outline.level), line_width));
-    painter.setBrush(Qt::NoBrush);
     painter.drawPolygon(polygon);
   }
+  painter.restore();
+}
+
+void draw_level_legend(QPainter& painter, const QRectF& area, const QColor& text, int text_px) {
+  painter.save();
   QFont font = painter.font();
-  font.setPixelSize(int(text_scale * std::max(12, image.height() / 32)));
+  font.setPixelSize(text_px);
   painter.setFont(font);
-  const int row = font.pixelSize() + 6;
-  const int x = 10;
-  int y = 10;
-  // A translucent box keeps the legend readable over any texture.
-  const QColor box = text.lightness() > 128 ? QColor(0, 0, 0, 150) : QColor(255, 255, 255, 190);
-  painter.fillRect(x - 4, y - 4, 12 * row, kLevelCount * row + 4, box);
+  const QFontMetricsF metrics(font);
+  const double swatch = text_px, row = text_px * 1.6;
+  // One row when it fits, else as many rows as needed, centred vertically in the area.
+  double width = 0.0;
+  for (int k = 0; k < kLevelCount; ++k) {
+    width += swatch * 2.4 + metrics.horizontalAdvance(QString::fromLatin1(level_name(Level(k))));
+  }
+  const int rows = std::max(1, int(std::ceil(width / std::max(1.0, area.width()))));
+  double x = area.left(), y = area.center().y() - rows * row / 2;
   for (int k = 0; k < kLevelCount; ++k) {
     const Level level = static_cast<Level>(k);
-    painter.fillRect(x, y, row - 4, row - 4, level_qcolor(level));
+    const QString name = QString::fromLatin1(level_name(level));
+    const double item = swatch * 2.4 + metrics.horizontalAdvance(name);
+    if (x > area.left() && x + item > area.right()) {
+      x = area.left();
+      y += row;
+    }
+    painter.fillRect(QRectF(x, y + (row - swatch) / 2, swatch, swatch), level_qcolor(level));
     painter.setPen(text);
-    painter.drawText(x + row + 2, y + row - 8,
-                     QStringLiteral("%1  %2").arg(level_name(level)).arg(counts[size_t(k)]));
-    y += row;
+    painter.drawText(QRectF(x + swatch * 1.4, y, item, row), Qt::AlignLeft | Qt::AlignVCenter, name);
+    x += item;
   }
+  painter.restore();
 }
 
-void draw_panel_title(QImage& image, const QString& title, const QColor& text,
-                      double text_scale) {
-  QPainter painter(&image);
-  QFont font = painter.font();
-  font.setPixelSize(int(text_scale * std::max(12, image.height() / 28)));
-  font.setBold(true);
-  painter.setFont(font);
-  const QRect area(0, 8, image.width() - 10, font.pixelSize() + 8);
-  // A backdrop of the opposite lightness keeps the title legible on any frame content.
-  const QRect box = painter.boundingRect(area, Qt::AlignRight | Qt::AlignTop, title)
-                        .adjusted(-6, -2, 6, 2);
-  painter.fillRect(box, text.lightness() > 127 ? QColor(0, 0, 0, 170) : QColor(255, 255, 255, 190));
-  painter.setPen(text);
-  painter.drawText(area, Qt::AlignRight | Qt::AlignTop, title);
-}
-
-QImage difference_heat_map(const Image& a, const Image& b, int full_scale, const QColor& text) {
-  const int bar = std::max(60, a.width() / 10);
-  QImage out(a.width() + bar, a.height(), QImage::Format_RGB32);
+QImage difference_map(const Image& a, const Image& b, int full_scale) {
+  QImage out(std::max(1, a.width()), std::max(1, a.height()), QImage::Format_RGB32);
   out.fill(QColor(0, 0, 0));
   for (int y = 0; y < a.height(); ++y) {
     const Pixel* pa = a.row(y);
@@ -104,24 +101,34 @@ QImage difference_heat_map(const Image& a, const Image& b, int full_scale, const
       line[x] = qRgb(c.r, c.g, c.b);
     }
   }
-  QPainter painter(&out);
-  painter.fillRect(a.width(), 0, bar, a.height(), QColor(250, 250, 250));
-  const int top = 30, bottom = a.height() - 30, left = a.width() + 10, width = bar / 3;
-  for (int y = top; y <= bottom; ++y) {
-    const Rgb8 c = magnitude_colour(1.0 - double(y - top) / std::max(1, bottom - top));
-    painter.fillRect(left, y, width, 1, qcolor(c));
-  }
-  QFont font = painter.font();
-  font.setPixelSize(std::max(10, a.height() / 40));
-  painter.setFont(font);
-  painter.setPen(text.lightness() > 128 ? QColor(30, 30, 30) : text);
-  for (int i = 0; i <= 4; ++i) {
-    const int y = bottom - (bottom - top) * i / 4;
-    painter.drawText(left + width + 4, y + font.pixelSize() / 2,
-                     QString::number(full_scale * i / 4) + (i == 4 ? QStringLiteral("+") : QString()));
-  }
-  painter.drawText(QRect(a.width(), 4, bar, top - 6), Qt::AlignCenter, QStringLiteral("|diff|"));
   return out;
+}
+
+void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, const QColor& text,
+                         int text_px) {
+  painter.save();
+  QFont font = painter.font();
+  font.setPixelSize(text_px);
+  painter.setFont(font);
+  painter.setPen(text);
+  // Caption row, ramp row, tick-label row.
+  const double row = area.height() / 3;
+  painter.drawText(QRectF(area.left(), area.top(), area.width(), row), Qt::AlignLeft | Qt::AlignVCenter,
+                   QObject::tr("|shown - exact|, grey levels"));
+  const double left = area.left() + text_px, width = area.width() - 3 * text_px;
+  const QRectF ramp(left, area.top() + row, width, row * 0.8);
+  for (int x = 0; x < int(width); ++x) {
+    painter.fillRect(QRectF(left + x, ramp.top(), 1.5, ramp.height()),
+                     qcolor(magnitude_colour(double(x) / std::max(1.0, width - 1))));
+  }
+  for (int i = 0; i <= 4; ++i) {
+    const double x = left + width * i / 4;
+    painter.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + row * 0.2));
+    const QString label = QString::number(full_scale * i / 4) + (i == 4 ? QStringLiteral("+") : QString());
+    painter.drawText(QRectF(x - 3 * text_px, ramp.bottom(), 6 * text_px, row * 1.2), Qt::AlignCenter,
+                     label);
+  }
+  painter.restore();
 }
 
 FrameAgreement frame_agreement(const Image& a, const Image& b) {

@@ -1,11 +1,13 @@
-// The pictures of the animation view, painted with Qt from core images: the engine's frame
-// with each polygon outlined in its level's colour and a legend, the exact frame, their
-// difference as a heat map with a colour bar, and the comparison figures the tests use.
+// The pictures of the animation view, painted with Qt from core images: polygon outlines in
+// their levels' colours and a legend of the levels, the difference of two frames as a heat
+// map with its colour bar, and the comparison figures the tests use.
 // Images are camera-sized; pixel (x, y) of a core Image is pixel (x, y) of the QImage.
 #pragma once
 
 #include <QColor>
 #include <QImage>
+#include <QPainter>
+#include <QTransform>
 #include <QString>
 #include <vector>
 
@@ -21,24 +23,25 @@ Image image_from_qimage(const QImage& qimage);
 // A premultiplied core image as an opaque QImage over `background`.
 QImage flatten_image(const Image& image, const QColor& background);
 
-// Draws each outline (image pixels) in its level's Okabe-Ito colour, `line_width` pixels
-// wide, and a legend of the five levels with this frame's count of polygons per level in
-// the top-left corner. `text` is the legend's text colour; `text_scale` multiplies the
-// legend's text size (12 pixels or 1/32 of the image height, whichever is larger).
-void draw_level_overlay(QImage& image, const std::vector<LayerOutline>& outlines,
-                        const std::array<int, kLevelCount>& counts, const QColor& text,
-                        double line_width, double text_scale = 1.0);
+// Draws each outline (image pixels mapped by `to_view` onto the painter) in its level's
+// Okabe-Ito colour, `line_width` painter pixels wide.
+void draw_level_outlines(QPainter& painter, const std::vector<LayerOutline>& outlines,
+                         const QTransform& to_view, double line_width);
 
-// Writes a title in the top-right corner (which panel this is), `text_scale` times 12
-// pixels or 1/28 of the image height, whichever is larger.
-void draw_panel_title(QImage& image, const QString& title, const QColor& text,
-                      double text_scale = 1.0);
+// A legend of the five levels inside `area`: a swatch of each level's colour and its name,
+// in `text` at `text_px` pixels, in one row when it fits and in more rows when not.
+void draw_level_legend(QPainter& painter, const QRectF& area, const QColor& text, int text_px);
 
 // Per-pixel difference of two same-sized premultiplied images: the largest absolute
 // channel difference (RGB and alpha, 0..255) coloured by the viridis map over
-// [0, full_scale], with a vertical colour bar labelled in grey levels on the right.
-// Precondition: a and b have the same size; full_scale > 0.
-QImage difference_heat_map(const Image& a, const Image& b, int full_scale, const QColor& text);
+// [0, full_scale]. Precondition: a and b have the same size; full_scale > 0.
+QImage difference_map(const Image& a, const Image& b, int full_scale);
+
+// The colour bar of difference_map inside `area`: the viridis ramp from 0 (left) to
+// full_scale (right), five ticks labelled in grey levels ("128+" at the top) and a caption,
+// in `text` at `text_px` pixels.
+void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, const QColor& text,
+                         int text_px);
 
 // How far two frames agree: intersection over union of their alpha masks (alpha > 127),
 // and PSNR (dB, RGB of the premultiplied colours) over the pixels where both are covered.

@@ -84,9 +84,10 @@ void read_mode(const CliArgs& cli, LaunchOptions* options) {
 void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--animation-show")) return;
   const std::string text = cli.values("--animation-show").at(0);
-  if (text != "side-by-side" && text != "difference" && text != "blink") {
-    throw UsageError("--animation-show: unknown display '" + text +
-                     "' (known: side-by-side, difference, blink)");
+  PanelDisplay display;
+  if (!parse_panel_display(text, &display)) {
+    throw UsageError("--animation-show: unknown display '" + text + "' (known: " +
+                     panel_display_names() + ")");
   }
   options->animation_show = text;
 }
@@ -249,7 +250,7 @@ std::string launch_usage() {
   return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
          "             [--source " + joined(scene_source_kinds(), "|") + "]\n"
          "             [--mode " + reuse_policy_names("|") + "]\n"
-         "             [--animation-show side-by-side|difference|blink]\n"
+         "             [--animation-show side-by-side|difference|blink|comparison]\n"
          "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
          "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "

@@ -46,7 +46,7 @@ struct LaunchOptions {
   // --mode NAME: the animation engine's reuse policy (core/engine/reuse_policy.h); null
   // when not given.
   const ReusePolicy* mode = nullptr;
-  // --animation-show side-by-side|difference|blink: how the animation view shows its panels.
+  // --animation-show side-by-side|difference|blink|comparison: how the animation view shows its panels.
   std::string animation_show;
   bool presentation = false;  // start in presentation mode
   bool help = false;          // --help: print the usage and exit 0

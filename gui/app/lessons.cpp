@@ -8,8 +8,8 @@ Lesson flow_of_a_plane() {
   lesson.name = "flow-of-a-plane";
   lesson.title = "The flow of a plane";
   lesson.caption =
-      "The flow of a plane. The butterfly turns and moves away from us; each arrow shows how "
-      "fast that point of the image moves (pixels per second). For a plane this flow is "
+      "The flow of a plane. The butterfly circles, turns and tilts in front of us; each arrow "
+      "shows how fast that point of the image moves (pixels per second). For a plane this flow is "
       "exactly quadratic: choose 'Exact - homography flow' under Show and it vanishes. "
       "Choose 'Exact - affine flow' to see what an affine warp misses.";
   lesson.view = "flow";
@@ -41,14 +41,18 @@ Lesson affine_vs_perspective() {
   lesson.name = "affine-vs-perspective";
   lesson.title = "Affine vs perspective";
   lesson.caption =
-      "Affine vs perspective. Left: the optic-flow animation, here with affine warps only; "
-      "right: the exact projection. The plane turns as it moves, so its edges should "
-      "converge in perspective: an affine warp keeps parallel edges parallel and cannot. Press "
-      "'Affine/persp.' to switch to perspective updates, and choose 'Difference heat map' "
-      "to see where the two disagree.";
+      "Affine vs perspective. The butterfly tips towards us and away, close to us, so its near "
+      "edge looks much longer than its far edge. Three panels play the same frames at once: affine "
+      "warps, perspective warps and the exact projection; under each approximation, its "
+      "difference from the exact frame. An affine warp keeps parallel edges parallel: watch "
+      "its heat map light up at the far edge while the perspective panel stays close.";
   lesson.view = "animation";
   lesson.scene = default_demo_scene();
+  lesson.animation_kind = "script";
+  lesson.animation_name = "swing";
   lesson.mode = &reuse_policy("affine");
+  lesson.display = PanelDisplay::kComparison;
+  lesson.play_motion = true;
   return lesson;
 }
 

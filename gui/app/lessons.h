@@ -9,6 +9,7 @@
 #include "adapters/flow_display.h"
 #include "engine/engine.h"
 #include "flow/plane_scene.h"
+#include "views/animation_controls.h"
 #include "views/basis_catalog.h"
 
 namespace oflab {
@@ -30,6 +31,8 @@ struct Lesson {
   std::string animation_name;
   std::string animation_viewer;
   const ReusePolicy* mode = &default_reuse_policy();
+  // How the animation view shows its panels (the comparison plays several policies at once).
+  PanelDisplay display = PanelDisplay::kSideBySide;
 };
 
 // Every preset, in teaching order.

@@ -285,6 +285,7 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   animation_model_->set_settings(settings);
   animation_model_->set_source(
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
+  animation_view()->set_display(lesson.display);
   show_view(QString::fromStdString(lesson.view));
   set_caption(QString::fromStdString(lesson.caption));
   statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));

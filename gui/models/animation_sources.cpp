@@ -47,7 +47,7 @@ AnimationSourceKind kind(std::string name, std::string label, std::string panel_
                          const char* run_kind, ReadSource read) {
   AnimationSourceKind k{std::move(name), std::move(label), std::move(panel_title),
                         follows_scene_panel, !default_viewer.empty(), std::move(default_viewer),
-                        std::move(shipped_names), nullptr, nullptr};
+                        std::move(shipped_names), nullptr, nullptr, nullptr};
   const SourceKind& run = source_kind(run_kind);
   k.make = [&run, read](const SourceChoice& choice, const SceneModel& panel,
                         const EngineSettings& settings) {
@@ -73,13 +73,20 @@ std::vector<AnimationSourceKind> make_kinds() {
   const ReadSource scene = [](const SourceChoice& c, const SceneModel&, const EngineSettings& s) {
     return scene_source(c, s);
   };
+  const auto plane_script = [](ReadSource read) {
+    return [read](const SourceChoice& c, const SceneModel& p) { return read(c, p, EngineSettings()).script; };
+  };
+  AnimationSourceKind plane =
+      kind("plane", "Plane of the scene panel", kOpticFlowTitle, true, "", none, "plane", panel);
+  plane.plane_script = plane_script(panel);
+  AnimationSourceKind plane_file = kind("script", "Plane script: %1", kOpticFlowTitle, false, "",
+                                        shipped_script_names, "plane", script);
+  plane_file.plane_script = plane_script(script);
   AnimationSourceKind shifting =
       kind("scene-shifting", "Scene shifting: %1", "scene shifting (slices)", false,
            "train-sideways", shipped_scene_names, "scene-shifting", scene);
   shifting.uses_reuse_policy = false;  // its slices follow epsilon (core/scene_shifting)
-  return {kind("plane", "Plane of the scene panel", kOpticFlowTitle, true, "", none, "plane", panel),
-          kind("script", "Plane script: %1", kOpticFlowTitle, false, "", shipped_script_names,
-               "plane", script),
+  return {plane, plane_file,
           kind("scene", "Scene: %1", kOpticFlowTitle, false, "circle", shipped_scene_names, "scene",
                scene),
           shifting};

@@ -57,6 +57,9 @@ struct AnimationSourceKind {
   std::function<void(const SourceChoice& choice, const SceneModel& panel,
                      const EngineSettings& settings, std::ostream& out)>
       write_csv;
+  // The motion script of a single-plane kind (what zoom-to-fit frames); null for kinds
+  // that play a scene. Throws like make.
+  std::function<MotionScript(const SourceChoice& choice, const SceneModel& panel)> plane_script;
   // The engine's reuse policy, thresholds and Delta policy drive it (scene shifting keeps
   // its own tolerance instead, so the controls for them do not apply).
   bool uses_reuse_policy = true;

@@ -17,6 +17,9 @@ constexpr DeltaPolicy kDeltas[] = {DeltaPolicy::kDissertation, DeltaPolicy::kOne
                                    DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
                                    DeltaPolicy::kFourthRootAbsDet};
 
+constexpr PanelDisplay kDisplays[] = {PanelDisplay::kSideBySide, PanelDisplay::kDifference,
+                                      PanelDisplay::kBlink, PanelDisplay::kComparison};
+
 QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
 }
@@ -33,16 +36,23 @@ void select_data(QComboBox* box, const QVariant& data) {
 
 }  // namespace
 
+std::string panel_display_names(const std::string& separator) {
+  std::string names;
+  for (PanelDisplay d : kDisplays) names += (names.empty() ? "" : separator) + panel_display_name(d);
+  return names;
+}
+
 const char* panel_display_name(PanelDisplay display) {
   switch (display) {
     case PanelDisplay::kDifference: return "difference";
     case PanelDisplay::kBlink: return "blink";
+    case PanelDisplay::kComparison: return "comparison";
     default: return "side-by-side";
   }
 }
 
 bool parse_panel_display(const std::string& text, PanelDisplay* display) {
-  for (PanelDisplay d : {PanelDisplay::kSideBySide, PanelDisplay::kDifference, PanelDisplay::kBlink}) {
+  for (PanelDisplay d : kDisplays) {
     if (text == panel_display_name(d)) {
       *display = d;
       return true;
@@ -94,6 +104,11 @@ QWidget* AnimationControls::make_source_row() {
   display_box_->addItem(tr("Side by side"), int(PanelDisplay::kSideBySide));
   display_box_->addItem(tr("Difference heat map"), int(PanelDisplay::kDifference));
   display_box_->addItem(tr("Blink"), int(PanelDisplay::kBlink));
+  display_box_->addItem(tr("Affine, perspective and exact"), int(PanelDisplay::kComparison));
+  display_box_->setItemData(display_box_->count() - 1,
+                            tr("Plays the affine and the perspective policy at once beside the exact "
+                               "projection, each with a difference heat map"),
+                            Qt::ToolTipRole);
   layout->addWidget(new QLabel(tr("Play"), row));
   layout->addWidget(source_box_, 2);
   layout->addWidget(new QLabel(tr("viewer"), row));

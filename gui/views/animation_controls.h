@@ -17,10 +17,14 @@ class QPushButton;
 
 namespace oflab {
 
-// How the animation view shows the engine's frame and the exact one.
-enum class PanelDisplay { kSideBySide, kDifference, kBlink };
-const char* panel_display_name(PanelDisplay display);  // "side-by-side", "difference", "blink"
+// How the animation view shows the engine's frame and the exact one; kComparison plays
+// several reuse policies at once beside the exact frame (gui/models/policy_comparison.h).
+enum class PanelDisplay { kSideBySide, kDifference, kBlink, kComparison };
+// "side-by-side", "difference", "blink", "comparison"
+const char* panel_display_name(PanelDisplay display);
 bool parse_panel_display(const std::string& text, PanelDisplay* display);
+// The names of every display joined by `separator`, for help texts and error messages.
+std::string panel_display_names(const std::string& separator = ", ");
 
 class AnimationControls : public QWidget {
   Q_OBJECT

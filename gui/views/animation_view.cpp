@@ -1,34 +1,98 @@
 #include "views/animation_view.h"
 
+#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
+#include <QPushButton>
 #include <QShowEvent>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
 
 #include "adapters/frame_images.h"
 #include "models/animation_model.h"
+#include "models/policy_comparison.h"
 #include "runs/vtk_scene_renderer.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
+#include "views/panel_layout.h"
 
 namespace oflab {
+
+// One panel: a camera-sized picture, the level outlines drawn on it, and the lines under it.
+struct PanelContent {
+  QString title;
+  QImage image;
+  std::vector<LayerOutline> levels;
+  QStringList caption;
+};
+
 namespace {
 
-constexpr int kPanelGap = 16;          // pixels between the two panels
 constexpr int kDifferenceScale = 128;  // grey levels at the top of the heat map's colour bar
 constexpr double kNear = 0.05;         // near plane of the exact render (SceneSettings::near)
-// Panel text in presentation mode, times the normal size: legible from the back of a
-// classroom when the panels are scaled down to fit a 1920 x 1080 window.
-constexpr double kPresentationText = 2.0;
+constexpr double kHeatRowShare = 0.34;  // the comparison's heat-map row, of the panels' height
+// A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
+constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
+const QSize kDefaultCanvas(1280, 640);
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
+
+// "48.2 k", "1.31 M": a pixel count for a caption.
+QString count_text(double n) {
+  if (n >= 1e6) return QString::number(n / 1e6, 'f', 2) + QStringLiteral(" M");
+  if (n >= 1e3) return QString::number(n / 1e3, 'f', 1) + QStringLiteral(" k");
+  return QString::number(n, 'f', 0);
+}
+
+// The two caption lines of an engine panel: the levels of this frame and the measured error,
+// then the cost of this frame and of the run so far.
+QStringList run_caption(const AnimationFrame& frame, double run_pixels, double run_ms) {
+  QStringList levels;
+  for (int k = 0; k < kLevelCount; ++k) {
+    const int n = frame.levels[size_t(k)];
+    if (n == 0) continue;
+    const QString name = QString::fromLatin1(level_name(Level(k)));
+    levels << (frame.layers > 1 ? QStringLiteral("%1 %2").arg(name).arg(n) : name);
+  }
+  if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
+  return {QObject::tr("%1 · error %2 px").arg(levels.join(QStringLiteral(", ")))
+              .arg(frame.max_measured_error_px, 0, 'f', 2),
+          QObject::tr("frame %1 px, %2 ms · run %3 px, %4 ms")
+              .arg(count_text(double(frame.pixels_written)))
+              .arg(frame.time_ms, 0, 'f', 1)
+              .arg(count_text(run_pixels))
+              .arg(run_ms, 0, 'f', 0)};
+}
+
+// The caption of a difference heat map: how far the two frames agree.
+QStringList agreement_caption(const Image& shown, const Image& exact) {
+  const FrameAgreement a = frame_agreement(shown, exact);
+  const QString psnr = std::isfinite(a.psnr_db) ? QString::number(a.psnr_db, 'f', 1) + QStringLiteral(" dB")
+                                                : QObject::tr("equal");
+  return {QObject::tr("coverage IoU %1 · PSNR %2").arg(a.mask_iou, 0, 'f', 3).arg(psnr)};
+}
+
+// The largest rectangle of `aspect` (width / height) centred in `within`.
+QRectF centred_with_aspect(const QRectF& within, double aspect) {
+  double w = within.width(), h = within.height();
+  if (w / h > aspect) {
+    w = h * aspect;
+  } else {
+    h = w / aspect;
+  }
+  return QRectF(within.center().x() - w / 2, within.center().y() - h / 2, w, h);
+}
 
 }  // namespace
 
 AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
-    : ViewPage(parent), model_(model), theme_(view_theme(false)) {
+    : ViewPage(parent),
+      model_(model),
+      comparison_(std::make_unique<PolicyComparison>(model)),
+      theme_(view_theme(false)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   controls_ = new AnimationControls(this);
@@ -42,6 +106,8 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
   connect(model_, &AnimationModel::source_changed, this, [this] {
     exact_.reset();
     exact_frame_index_ = -1;
+    fit_known_ = false;
+    comparison_->reset();
     show_model_state();
     refresh();
   });
@@ -78,16 +144,46 @@ QWidget* AnimationView::make_panels() {
   row->addWidget(canvas_, 1);
   row->addWidget(inspector_);
   layout->addLayout(row, 1);
+  auto* bottom = new QHBoxLayout;
   readout_ = new QLabel(tr("Move the mouse over the frames for a readout."), box);
   readout_->setObjectName(QStringLiteral("pixel_readout"));
-  layout->addWidget(readout_);
+  zoom_box_ = new QDoubleSpinBox(box);
+  zoom_box_->setObjectName(QStringLiteral("animation_zoom"));
+  zoom_box_->setRange(kMinZoom, kMaxZoom);
+  zoom_box_->setSingleStep(0.25);
+  zoom_box_->setValue(1.0);
+  zoom_box_->setSuffix(QStringLiteral(" x"));
+  zoom_box_->setToolTip(tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
+                           "over the panels)"));
+  auto* fit = new QPushButton(tr("Fit"), box);
+  fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
+  bottom->addWidget(readout_, 1);
+  bottom->addWidget(new QLabel(tr("Zoom"), box));
+  bottom->addWidget(zoom_box_);
+  bottom->addWidget(fit);
+  layout->addLayout(bottom);
   connect(canvas_, &ImageCanvas::hovered, this, &AnimationView::show_readout);
+  connect(canvas_, &ImageCanvas::wheel_turned, this,
+          [this](double notches) { set_zoom(zoom_ * std::pow(kWheelZoomStep, notches)); });
+  connect(canvas_, &ImageCanvas::resized, this, &AnimationView::refresh);
+  connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+          [this](double zoom) { set_zoom(zoom); });
+  connect(fit, &QPushButton::clicked, this, [this] { set_zoom(1.0); });
   return box;
+}
+
+void AnimationView::set_zoom(double zoom) {
+  if (!std::isfinite(zoom)) return;
+  zoom_ = std::clamp(zoom, kMinZoom, kMaxZoom);
+  const QSignalBlocker block(zoom_box_);
+  zoom_box_->setValue(zoom_);
+  refresh();
 }
 
 void AnimationView::set_display(PanelDisplay display) {
   display_ = display;
   controls_->set_display(display);
+  inspector_->setVisible(display != PanelDisplay::kComparison);
   blink_phase_ = false;
   if (display == PanelDisplay::kBlink && !external_clock_) {
     blink_timer_->start();
@@ -99,7 +195,7 @@ void AnimationView::set_display(PanelDisplay display) {
 
 void AnimationView::set_blink_phase(bool exact) {
   blink_phase_ = exact;
-  if (isVisible()) canvas_->set_image(compose());
+  refresh();
 }
 
 void AnimationView::set_external_clock(bool on) {
@@ -138,38 +234,183 @@ const Image& AnimationView::exact_image() {
   return exact_frame_;
 }
 
-QImage AnimationView::panel(bool exact) {
-  const QColor text = qcolor(theme_.text);
-  const double text_scale = theme_.presentation ? kPresentationText : 1.0;
-  QImage image = flatten_image(exact ? exact_image() : engine_image(), qcolor(theme_.background));
-  if (exact) {
-    draw_panel_title(image, tr("exact projection (VTK)"), text, text_scale);
-    return image;
+PanelContent AnimationView::engine_panel() {
+  double pixels = 0.0, ms = 0.0;
+  for (const AnimationFrame& f : model_->history()) {
+    pixels += double(f.pixels_written);
+    ms += f.time_ms;
   }
-  draw_level_overlay(image, model_->animator()->outlines(), model_->current().levels, text,
-                     theme_.line_width + 1.0, text_scale);
   const std::string title =
       fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
-  draw_panel_title(image, QString::fromStdString(title), text, text_scale);
-  return image;
+  return {QString::fromStdString(title), flatten_image(engine_image(), qcolor(theme_.background)),
+          model_->animator()->outlines(), run_caption(model_->current(), pixels, ms)};
 }
 
-QImage AnimationView::compose() {
-  if (!model_->animator()) return QImage();
-  panel_split_ = 0.0;
-  if (display_ == PanelDisplay::kDifference) {
-    return difference_heat_map(engine_image(), exact_image(), kDifferenceScale, qcolor(theme_.text));
+PanelContent AnimationView::exact_panel() {
+  const Animator* animator = model_->animator();
+  return {tr("exact projection (VTK)"), flatten_image(exact_image(), qcolor(theme_.background)), {},
+          {tr("frame %1 of %2").arg(animator->frame()).arg(animator->frame_count())}};
+}
+
+std::vector<PanelContent> AnimationView::comparison_panels() {
+  std::vector<PanelContent> shown, heat;
+  const Image& exact = exact_image();
+  for (const ComparedRun& run : comparison_->runs()) {
+    const QString name = QString::fromLatin1(run.policy->name);
+    if (!run.animator) {
+      shown.push_back({name, QImage(), {}, {QString::fromStdString(run.problem)}});
+      continue;
+    }
+    const Image& image = run.animator->image();
+    shown.push_back({tr("%1 policy").arg(name), flatten_image(image, qcolor(theme_.background)),
+                     run.animator->outlines(),
+                     run_caption(run.last, double(run.pixels_written), run.time_ms)});
+    heat.push_back({tr("%1 - exact").arg(name), difference_map(image, exact, kDifferenceScale), {},
+                    agreement_caption(image, exact)});
   }
-  if (display_ == PanelDisplay::kBlink) return panel(blink_phase_);
-  const QImage left = panel(false);
-  const QImage right = panel(true);
-  QImage both(left.width() + kPanelGap + right.width(), left.height(), QImage::Format_RGB32);
-  both.fill(qcolor(theme_.background).darker(130));
-  QPainter painter(&both);
-  painter.drawImage(0, 0, left);
-  painter.drawImage(left.width() + kPanelGap, 0, right);
-  panel_split_ = left.width() + kPanelGap;
-  return both;
+  shown.push_back(exact_panel());
+  shown.insert(shown.end(), heat.begin(), heat.end());
+  return shown;
+}
+
+std::vector<PanelContent> AnimationView::panels() {
+  switch (display_) {
+    case PanelDisplay::kComparison:
+      if (!comparison_->runs().empty()) return comparison_panels();
+      break;
+    case PanelDisplay::kDifference:
+      return {{tr("engine - exact"), difference_map(engine_image(), exact_image(), kDifferenceScale),
+               {}, agreement_caption(engine_image(), exact_image())}};
+    case PanelDisplay::kBlink:
+      return {blink_phase_ ? exact_panel() : engine_panel()};
+    default:
+      break;
+  }
+  return {engine_panel(), exact_panel()};
+}
+
+QRectF AnimationView::fit_content() {
+  if (fit_known_) return fit_;
+  fit_ = QRectF();
+  const AnimationSourceKind& kind = model_->source_kind();
+  if (kind.plane_script) {
+    try {
+      fit_ = script_image_bounds(kind.plane_script(model_->source(), *model_->scene_model()), kNear);
+    } catch (const std::exception&) {  // the model refuses such sources with a message
+      fit_ = QRectF();
+    }
+  }
+  fit_known_ = true;
+  return fit_;
+}
+
+void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
+                                const std::vector<std::vector<Vec2>>& outlines) {
+  const QRectF target = centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height());
+  panel_rects_.push_back(target);
+  const QTransform to_panel = frame_to_panel(shown_frame_, target);
+  const QColor background = qcolor(theme_.background);
+  const QColor outline = qcolor(theme_.outline);
+  painter.save();
+  painter.setClipRect(target);
+  // Outside the camera image: a shade apart from the image's own background.
+  painter.fillRect(target, background.lightness() > 128 ? background.darker(112) : background.lighter(160));
+  painter.setTransform(to_panel);
+  painter.drawImage(QPointF(0, 0), panel.image);
+  painter.resetTransform();
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  painter.setBrush(Qt::NoBrush);
+  painter.setPen(QPen(outline, 1.0, Qt::DotLine));
+  painter.drawRect(to_panel.mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size()))));
+  painter.setPen(QPen(outline, theme_.line_width, Qt::DashLine));
+  for (const std::vector<Vec2>& points : outlines) {
+    QPolygonF polygon;
+    for (const Vec2& p : points) polygon << to_panel.map(QPointF(p.x, p.y));
+    painter.drawPolygon(polygon);
+  }
+  draw_level_outlines(painter, panel.levels, to_panel, theme_.line_width + 1.5);
+  painter.restore();
+  const int text_px = theme_.font_size;
+  QFont font = painter.font();
+  font.setPixelSize(int(text_px * 1.15));
+  font.setBold(true);
+  painter.setFont(font);
+  painter.setPen(qcolor(theme_.text));
+  const QFontMetrics title_metrics(font);
+  painter.drawText(cell.title, Qt::AlignCenter,
+                   title_metrics.elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
+  font.setPixelSize(text_px);
+  font.setBold(false);
+  painter.setFont(font);
+  const QFontMetrics metrics(font);
+  const double line = cell.caption.height() / 2;
+  for (int i = 0; i < panel.caption.size() && i < 2; ++i) {
+    const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(), line);
+    painter.drawText(row, Qt::AlignCenter,
+                     metrics.elidedText(panel.caption[i], Qt::ElideRight, int(row.width())));
+  }
+}
+
+void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat) {
+  const QColor text = qcolor(theme_.text);
+  const int text_px = theme_.font_size;
+  const double bar_height = text_px * 3.6;
+  // Side by side in a wide band, stacked (legend above the colour bar) in a cell.
+  const bool stacked = band.height() >= 2 * bar_height;
+  QRectF legend = band, bar = band;
+  if (levels && heat && stacked) {
+    legend.setBottom(band.bottom() - bar_height);
+    bar.setTop(legend.bottom());
+  } else if (levels && heat) {
+    legend.setWidth(band.width() * 0.55);
+    bar.setLeft(band.right() - std::min(band.width() * 0.4, 30.0 * text_px));
+  }
+  if (levels) draw_level_legend(painter, legend, text, text_px);
+  if (heat) {
+    bar.setWidth(std::min(bar.width(), 30.0 * text_px));
+    draw_difference_bar(painter, QRectF(bar.left(), bar.bottom() - std::min(bar.height(), bar_height),
+                                        bar.width(), std::min(bar.height(), bar_height)),
+                        kDifferenceScale, text, text_px);
+  }
+}
+
+QImage AnimationView::compose(const QSize& size) {
+  QImage canvas(size, QImage::Format_RGB32);
+  canvas.fill(qcolor(theme_.background));
+  panel_rects_.clear();
+  const Animator* animator = model_->animator();
+  if (!animator) return canvas;
+  const std::vector<PanelContent> contents = panels();
+  const int text_px = theme_.font_size;
+  const double gap = text_px, title = text_px * 1.8, caption = text_px * 1.35 * 2 + 2;
+  // The comparison puts the heat maps in a second row, each under its policy, and the
+  // legends in the spare cell under the exact panel; the other layouts have one row and
+  // the legends in a band below it.
+  const bool heat_row = display_ == PanelDisplay::kComparison && contents.size() > 2;
+  const double band = heat_row ? 0.0 : text_px * 3.9;
+  const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap / 2 - band);
+  const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
+  QRectF top = area;
+  if (heat_row) top.setHeight(area.height() * (1.0 - kHeatRowShare));
+  std::vector<PanelCell> cells = panel_row(top, columns, gap, title, caption);
+  QRectF legends(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
+  if (heat_row) {
+    const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(), area.bottom() - top.bottom() - gap / 2);
+    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, caption / 2);
+    cells.insert(cells.end(), more.begin(), more.end() - 1);
+    legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
+  }
+  const QRectF& first = cells.front().image;
+  const Camera& camera = animator->camera();
+  shown_frame_ = panel_frame(fit_content(), QSizeF(camera.width, camera.height),
+                             first.width() / first.height(), zoom_);
+  const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
+  QPainter painter(&canvas);
+  for (size_t i = 0; i < contents.size(); ++i) paint_panel(painter, contents[i], cells[i], outlines);
+  const bool levels = std::any_of(contents.begin(), contents.end(),
+                                  [](const PanelContent& c) { return !c.levels.empty(); });
+  paint_band(painter, legends, levels, heat_row || display_ == PanelDisplay::kDifference);
+  return canvas;
 }
 
 void AnimationView::refresh() {
@@ -178,8 +419,12 @@ void AnimationView::refresh() {
 }
 
 QImage AnimationView::render_image() {
-  if (model_->animator()) inspector_->setText(explain_frame(model_->current(), model_->settings()));
-  const QImage image = compose();
+  if (model_->animator() && display_ != PanelDisplay::kComparison) {
+    inspector_->setText(explain_frame(model_->current(), model_->settings()));
+  }
+  QSize size = canvas_->size();
+  if (size.width() < kMinCanvasWidth || size.height() < kMinCanvasHeight) size = kDefaultCanvas;
+  const QImage image = compose(size);
   canvas_->set_image(image);
   return image;
 }
@@ -192,9 +437,12 @@ void AnimationView::showEvent(QShowEvent* event) {
 void AnimationView::show_readout(QPointF pixel) {
   const Animator* animator = model_->animator();
   if (!animator) return;
-  double x = pixel.x();
-  if (panel_split_ > 0.0 && x >= panel_split_) x -= panel_split_;
-  readout_->setText(pixel_readout(*animator, Vec2(x, pixel.y()), exact_image()));
+  for (const QRectF& r : panel_rects_) {
+    if (!r.contains(pixel)) continue;
+    const QPointF p = frame_to_panel(shown_frame_, r).inverted().map(pixel);
+    readout_->setText(pixel_readout(*animator, Vec2(p.x(), p.y()), exact_image()));
+    return;
+  }
 }
 
 }  // namespace oflab

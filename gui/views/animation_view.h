@@ -1,30 +1,46 @@
-// View 3, "Animation, side by side": on the left the animation model's frame (each layer
-// outlined in the colour of the level it was updated at this frame, with a legend); on the
-// right the exact projection of the same frame rendered by VTK as textured 3D polygons with
-// the matching camera (analysis/runs/vtk_scene_renderer.h). A difference heat map and a
-// blink toggle compare the two. Beside them, the frame inspector; under them, the readout
-// of the pixel under the cursor.
+// View 3, "Animation, side by side": the animation model's frame beside the exact projection
+// of the same frame rendered by VTK as textured 3D polygons with the matching camera
+// (analysis/runs/vtk_scene_renderer.h). Made for a projector: the panels are painted at the
+// view's own size and fill it, every panel shows the same part of the camera image (zoom to
+// fit on the plane over its whole loop, times a zoom the teacher sets with the Zoom box or
+// the mouse wheel), every panel outlines the exact polygons, and titles, numbers and
+// legends sit in bands around the images, never over them.
+//
+// Layouts (PanelDisplay): side by side (engine | exact); the difference heat map; blink
+// (engine and exact in turn); and the comparison, which plays several reuse policies at
+// once on the same frames (gui/models/policy_comparison.h; affine and perspective by
+// default) beside the exact projection, each approximation with its level outlines,
+// measured error and cost, and under each its difference heat map against the exact frame.
+// Beside the panels, the frame inspector (not in the comparison, which has no single
+// engine); under them, the readout of the pixel under the cursor and the zoom.
 //
 // What plays is the animation model's source (gui/models/animation_model.h): the scene
 // panel's plane, a motion script, a multi-plane scene walked through by a viewer script, or
 // scene shifting of such a scene, all through one Animator. The controls edit the model;
-// the view redraws on its signals. The engine runs only while a view asks for its frames.
+// the view redraws on its signals. The engines run only while a view asks for their frames.
 #pragma once
 
+#include <QRectF>
 #include <memory>
+#include <vector>
 
 #include "image/image.h"
 #include "views/animation_controls.h"
+#include "views/panel_layout.h"
 #include "views/view_page.h"
 
+class QDoubleSpinBox;
 class QLabel;
+class QPainter;
 class QTimer;
 
 namespace oflab {
 
 class AnimationModel;
 class ImageCanvas;
+class PolicyComparison;
 class VtkSceneRenderer;
+struct PanelContent;
 
 class AnimationView : public ViewPage {
   Q_OBJECT
@@ -34,6 +50,7 @@ class AnimationView : public ViewPage {
   explicit AnimationView(AnimationModel* model, QWidget* parent = nullptr);
   ~AnimationView() override;
 
+  // The panels as the canvas shows them, painted at the canvas's size.
   QImage render_image() override;
   void set_external_clock(bool on) override;
   void set_theme(const ViewTheme& theme) override;
@@ -44,6 +61,24 @@ class AnimationView : public ViewPage {
   // Blink shows the engine's frame (phase false) or the exact one (true).
   bool blink_phase() const { return blink_phase_; }
   void set_blink_phase(bool exact);
+
+  // The policies of the comparison layout (1 .. kMaxComparedPolicies of the registry).
+  PolicyComparison& comparison() { return *comparison_; }
+
+  // The teacher's zoom on top of zoom-to-fit: 1 fits the plane's whole loop; clamped to
+  // [kMinZoom, kMaxZoom]. The mouse wheel over the panels multiplies it by kWheelZoomStep
+  // per notch.
+  double zoom() const { return zoom_; }
+  void set_zoom(double zoom);
+  static constexpr double kMinZoom = 0.25;
+  static constexpr double kMaxZoom = 8.0;
+  static constexpr double kWheelZoomStep = 1.25;
+
+  // What the last render showed: the part of the camera image (camera pixels) every panel
+  // frames, and the canvas rectangles of the panels' images in panel order (for the
+  // comparison: the policies, the exact panel, then the heat maps).
+  QRectF shown_frame() const { return shown_frame_; }
+  const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
 
   // The animator's frame and the exact frame at the current frame (camera-sized; empty
   // when nothing can be played).
@@ -59,15 +94,25 @@ class AnimationView : public ViewPage {
  private:
   QWidget* make_panels();
   void show_model_state();
-  QImage compose();
-  QImage panel(bool exact);
+  QImage compose(const QSize& size);
+  std::vector<PanelContent> panels();
+  std::vector<PanelContent> comparison_panels();
+  PanelContent engine_panel();
+  PanelContent exact_panel();
+  // Paints `panel` into `cell` with the shared framing and the exact outlines (camera pixels).
+  void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
+                   const std::vector<std::vector<Vec2>>& outlines);
+  void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
+  QRectF fit_content();
   void show_readout(QPointF pixel);
 
   AnimationModel* model_;
   AnimationControls* controls_;
+  std::unique_ptr<PolicyComparison> comparison_;
   ImageCanvas* canvas_ = nullptr;
   QLabel* inspector_ = nullptr;
   QLabel* readout_ = nullptr;
+  QDoubleSpinBox* zoom_box_ = nullptr;
   QTimer* blink_timer_;
   std::unique_ptr<VtkSceneRenderer> exact_;  // of the model's source; null after a change
   Image exact_frame_;
@@ -76,7 +121,11 @@ class AnimationView : public ViewPage {
   ViewTheme theme_;
   bool blink_phase_ = false;
   bool external_clock_ = false;
-  double panel_split_ = 0.0;  // x where the right panel starts in the composed image
+  double zoom_ = 1.0;
+  bool fit_known_ = false;  // fit_ is up to date with the model's source
+  QRectF fit_;              // the plane's image over its loop (empty: the whole image)
+  QRectF shown_frame_;
+  std::vector<QRectF> panel_rects_;
 };
 
 }  // namespace oflab

@@ -2,6 +2,7 @@
 
 #include <QMouseEvent>
 #include <QPainter>
+#include <QWheelEvent>
 
 namespace oflab {
 
@@ -43,6 +44,16 @@ void ImageCanvas::mouseMoveEvent(QMouseEvent* event) {
   if (r.isEmpty() || !r.contains(event->pos())) return;
   const double scale = image_.width() / r.width();
   emit hovered(QPointF((event->pos().x() - r.left()) * scale, (event->pos().y() - r.top()) * scale));
+}
+
+void ImageCanvas::wheelEvent(QWheelEvent* event) {
+  emit wheel_turned(event->angleDelta().y() / 120.0);
+  event->accept();
+}
+
+void ImageCanvas::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  emit resized();
 }
 
 }  // namespace oflab

@@ -1,5 +1,5 @@
 // A widget that shows one image scaled to fit (aspect kept, centred) and reports the image
-// pixel under the mouse. The animation view paints its panels into one image and shows it
+// pixel under the mouse, wheel turns and resizes. The animation view paints its panels into one image and shows it
 // here, so what the window shows is exactly what render_image returns.
 #pragma once
 
@@ -22,10 +22,16 @@ class ImageCanvas : public QWidget {
  signals:
   // The mouse is over image pixel `pixel` (continuous, top-left origin of the image).
   void hovered(QPointF pixel);
+  // The mouse wheel turned by `notches` (positive: away from the user) over the widget.
+  void wheel_turned(double notches);
+  // The widget changed size (a view painting at the canvas's size paints again).
+  void resized();
 
  protected:
   void paintEvent(QPaintEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   QRectF target_rect() const;

@@ -67,7 +67,7 @@ TEST_F(AnimationViewTest, AnimationViewRendersBothPanels) {
 }
 
 // Every source kind plays through the same model: frames advance one record each, the
-// engine panel shows something, and the level legend counts the drawn layers.
+// engine panel shows something, and the level legend under the panels names every level.
 TEST_F(AnimationViewTest, EachSourceKindPlaysInTheAnimationView) {
   window().show_view("animation");
   const SourceChoice sources[] = {{"plane", "", ""},
@@ -82,10 +82,12 @@ TEST_F(AnimationViewTest, EachSourceKindPlaysInTheAnimationView) {
     EXPECT_EQ(model().history().size(), 7u) << source.kind;
     EXPECT_GT(model().current().drawn(), 0) << source.kind;
     const QImage image = animation().render_image();
-    const QImage engine = image.copy(0, 0, animator->camera().width, animator->camera().height);
+    ASSERT_FALSE(animation().panel_rects().empty());
+    const QImage engine = image.copy(animation().panel_rects().front().toAlignedRect());
     EXPECT_GT(distinct_colours(engine), 50) << source.kind;
-    // The legend in the top-left corner shows a swatch of every level.
-    const QImage legend = engine.copy(0, 0, engine.width() / 3, engine.height() / 3);
+    // The legend under the panels shows a swatch of every level.
+    const QImage legend = image.copy(0, int(animation().panel_rects().front().bottom()), image.width(),
+                                     image.height() - int(animation().panel_rects().front().bottom()));
     for (int k = 0; k < kLevelCount; ++k) {
       const Rgb8 c = level_colour(Level(k));
       bool found = false;

@@ -89,5 +89,13 @@ TEST_F(BaselineTest, AnimationViewDifferenceMatchesItsBaseline) {
   expect_matches_baseline(window().animation_view()->render_image(), "animation-difference");
 }
 
+TEST_F(BaselineTest, AnimationViewComparisonMatchesItsBaseline) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  window().animation_view()->set_display(PanelDisplay::kComparison);
+  window().play_frames(10);
+  expect_matches_baseline(window().animation_view()->render_image(), "animation-comparison");
+}
+
 }  // namespace
 }  // namespace oflab::test

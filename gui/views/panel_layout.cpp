@@ -1,0 +1,76 @@
+#include "views/panel_layout.h"
+
+#include <algorithm>
+
+#include "scene/view_culling.h"
+
+namespace oflab {
+
+std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, double title_px,
+                                 double caption_px) {
+  std::vector<PanelCell> cells;
+  const double width = (row.width() - gap * (columns - 1)) / columns;
+  for (int c = 0; c < columns; ++c) {
+    const double left = row.left() + c * (width + gap);
+    PanelCell cell;
+    cell.title = QRectF(left, row.top(), width, title_px);
+    cell.caption = QRectF(left, row.bottom() - caption_px, width, caption_px);
+    cell.image = QRectF(left, cell.title.bottom(), width,
+                        std::max(1.0, cell.caption.top() - cell.title.bottom()));
+    cells.push_back(cell);
+  }
+  return cells;
+}
+
+QRectF panel_frame(const QRectF& content, const QSizeF& camera_size, double aspect, double zoom) {
+  QRectF frame = content.isEmpty() ? QRectF(QPointF(0, 0), camera_size) : content;
+  const double mx = kFitMargin * frame.width(), my = kFitMargin * frame.height();
+  frame.adjust(-mx, -my, mx, my);
+  const QPointF centre = frame.center();
+  double w = frame.width(), h = frame.height();
+  if (w / h < aspect) {
+    w = h * aspect;
+  } else {
+    h = w / aspect;
+  }
+  w /= zoom;
+  h /= zoom;
+  return QRectF(centre.x() - w / 2, centre.y() - h / 2, w, h);
+}
+
+QTransform frame_to_panel(const QRectF& frame, const QRectF& target) {
+  const double scale = target.width() / frame.width();
+  return QTransform(scale, 0, 0, scale, target.left() - frame.left() * scale,
+                    target.top() - frame.top() * scale);
+}
+
+QRectF script_image_bounds(const MotionScript& script, double near) {
+  QRectF bounds;
+  for (const ScriptFrame& frame : script.frames) {
+    const ConvexPolygon seen = plane_image_polygon(script.camera, frame.pose, near);
+    if (seen.empty()) continue;
+    const BoundingBox box = seen.bounds();
+    bounds |= QRectF(QPointF(box.x_min, box.y_min), QPointF(box.x_max, box.y_max));
+  }
+  return bounds;
+}
+
+std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,
+                                              const Camera& camera, double near) {
+  std::vector<std::vector<Vec2>> outlines;
+  const ViewFrustum frustum = view_frustum(camera, near, 0.0);
+  for (const ScenePolygon& polygon : scene.polygons) {
+    if (is_back_facing(direction_to_view(view, polygon.front), to_view(view, polygon.centre))) {
+      continue;
+    }
+    ViewPolygon seen;
+    seen.uv = polygon_outline(polygon);
+    for (const Vec3& p : polygon_vertices(polygon)) seen.points.push_back(to_view(view, p));
+    clip_to_frustum_in_place(seen, frustum);
+    if (seen.empty()) continue;
+    outlines.push_back(project_to_pixels(camera, seen).vertices());
+  }
+  return outlines;
+}
+
+}  // namespace oflab

@@ -1,0 +1,56 @@
+// The geometry of the animation view's panels, painted onto a canvas of the view's own size:
+// rows of equal cells, each with a title band above its image and a caption band below (so
+// titles, numbers and legends never cover the frame), one shared framing of the camera
+// image for every panel (zoom to fit the plane over its loop, times the teacher's zoom),
+// and the exact outlines of what is animated, drawn on every panel.
+//
+// Units: camera pixels (top-left origin of the camera image) for frames and outlines,
+// canvas pixels for cells.
+#pragma once
+
+#include <QRectF>
+#include <QTransform>
+#include <vector>
+
+#include "engine/animator.h"
+#include "engine/script.h"
+
+namespace oflab {
+
+// One panel on the canvas.
+struct PanelCell {
+  QRectF title;    // band above the image: which panel this is
+  QRectF image;    // the framed camera image
+  QRectF caption;  // band below the image: its numbers
+};
+
+// `columns` equal cells side by side filling `row`, `gap` pixels apart, each with a title band
+// `title_px` and a caption band `caption_px` high. Precondition: columns >= 1.
+std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, double title_px,
+                                 double caption_px);
+
+// Fraction of the content's size added on every side when fitting it.
+constexpr double kFitMargin = 0.04;
+
+// The part of the camera image (camera pixels) every panel shows: `content` grown by
+// kFitMargin of its size on every side, widened or heightened about its centre to `aspect`
+// (width / height of the panels' image areas), then shrunk about its centre by `zoom`
+// (1 = fit, 2 = twice as large). An empty content frames `camera_size` whole.
+// Preconditions: aspect > 0, zoom > 0.
+QRectF panel_frame(const QRectF& content, const QSizeF& camera_size, double aspect, double zoom);
+
+// Maps camera pixels of `frame` onto canvas pixels of `target` (same aspect: a uniform
+// scale and a shift).
+QTransform frame_to_panel(const QRectF& frame, const QRectF& target);
+
+// The bounding box of the plane's part inside the image (plane_image_polygon with `near`)
+// over every frame of `script`: what zoom-to-fit frames. Empty when the plane is never seen.
+QRectF script_image_bounds(const MotionScript& script, double near);
+
+// The exact image outlines (camera pixels) of the polygons of `scene` seen from `view` with
+// `camera`: each polygon's outline clipped to the near plane `near` and the image border,
+// skipping back-facing and edge-on polygons and those wholly outside the picture.
+std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,
+                                              const Camera& camera, double near);
+
+}  // namespace oflab

@@ -1,0 +1,193 @@
+// The animation view at projector scale: the comparison layout plays every compared policy
+// on the model's frame, every panel shows the same framing, zoom-to-fit holds the plane's
+// whole loop, and in the affine-vs-perspective lesson at 1920 x 1080 the plane covers at
+// least a tenth of the view.
+//
+// Plane areas are measured independently of the view's geometry: the image area of the
+// plane's rectangle at the script's pose (shoelace over the projected corners; the whole
+// plane is inside the shown frame, see ZoomToFit...), times the square of each panel's scale
+// (panel pixels per camera pixel).
+#include <QApplication>
+#include <QWidget>
+#include <cmath>
+#include <cstring>
+
+#include "formats/datasets.h"
+#include "formats/script_file.h"
+#include "models/animation_model.h"
+#include "models/policy_comparison.h"
+#include "models/scene_model.h"
+#include "scene/view_culling.h"
+#include "views/animation_view.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+constexpr double kNear = 0.05;
+
+class AnimationLayoutTest : public WindowTest {
+ protected:
+  AnimationView& animation() { return *window().animation_view(); }
+  AnimationModel& model() { return *window().animation_model(); }
+
+  void show_comparison() {
+    window().show_view("animation");
+    window().set_external_clock(true);
+    animation().set_display(PanelDisplay::kComparison);
+  }
+};
+
+// Image area (camera pixels squared) of the plane's rectangle at `pose`, by the shoelace
+// formula over its projected corners. Precondition: every corner is in front of the eye.
+double plane_image_area(const Camera& camera, const PlanePose& pose) {
+  std::vector<Vec2> p;
+  for (const Vec3& corner : plane_corners(pose)) p.push_back(project_centred(camera, corner));
+  double twice = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Vec2& a = p[i];
+    const Vec2& b = p[(i + 1) % p.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return std::abs(twice) / 2;
+}
+
+TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
+  show_comparison();
+  window().play_frames(12);
+  animation().render_image();
+  const auto& runs = animation().comparison().runs();
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_STREQ(runs[0].policy->name, "affine");
+  EXPECT_STREQ(runs[1].policy->name, "perspective");
+  for (const ComparedRun& run : runs) {
+    ASSERT_NE(run.animator, nullptr) << run.problem;
+    EXPECT_EQ(run.animator->frame(), 12);
+    EXPECT_EQ(run.last.frame, 12);
+  }
+  // Two approximations, the exact frame, two heat maps.
+  EXPECT_EQ(animation().panel_rects().size(), 5u);
+  // A compared run shows exactly what the model shows when the model plays that policy.
+  EngineSettings settings = model().settings();
+  settings.policy = &reuse_policy("affine");
+  ASSERT_TRUE(model().set_settings(settings));
+  const Image& model_frame = model().animator()->image();
+  const Image& compared = animation().comparison().runs()[0].animator->image();
+  ASSERT_EQ(model_frame.width(), compared.width());
+  EXPECT_EQ(std::memcmp(model_frame.row(0), compared.row(0), size_t(compared.width()) * compared.height() * 4), 0);
+  // Stepping back restarts them on the same frame.
+  window().model()->set_frame(5);
+  for (const ComparedRun& run : animation().comparison().runs()) EXPECT_EQ(run.animator->frame(), 5);
+}
+
+TEST_F(AnimationLayoutTest, ComparisonTakesOneToFourPoliciesOfTheRegistry) {
+  show_comparison();
+  PolicyComparison& comparison = animation().comparison();
+  EXPECT_THROW(comparison.set_policies({}), std::invalid_argument);
+  std::vector<const ReusePolicy*> all;
+  for (const ReusePolicy& p : reuse_policies()) all.push_back(&p);
+  all.resize(std::min<size_t>(all.size(), kMaxComparedPolicies));
+  comparison.set_policies(all);
+  window().play_frames(3);
+  animation().render_image();
+  EXPECT_EQ(comparison.runs().size(), all.size());
+  EXPECT_EQ(animation().panel_rects().size(), 2 * all.size() + 1);
+  std::vector<const ReusePolicy*> too_many(kMaxComparedPolicies + 1, &default_reuse_policy());
+  EXPECT_THROW(comparison.set_policies(too_many), std::invalid_argument);
+}
+
+// Every panel frames the same part of the camera image: each panel rectangle has the shown
+// frame's aspect, so one camera pixel lands at the same relative place in each.
+TEST_F(AnimationLayoutTest, FramingIsIdenticalOnEveryPanel) {
+  for (PanelDisplay display : {PanelDisplay::kSideBySide, PanelDisplay::kComparison}) {
+    show_comparison();
+    animation().set_display(display);
+    window().play_frames(4);
+    animation().render_image();
+    const QRectF frame = animation().shown_frame();
+    const std::vector<QRectF>& panels = animation().panel_rects();
+    ASSERT_GE(panels.size(), 2u);
+    for (const QRectF& r : panels) {
+      EXPECT_NEAR(r.width() / r.height(), frame.width() / frame.height(), 1e-6);
+      EXPECT_GE(r.width(), 100.0);
+    }
+    // The top row's panels are the same size.
+    EXPECT_NEAR(panels[0].width(), panels[1].width(), 1e-6);
+    EXPECT_NEAR(panels[0].top(), panels[1].top(), 1e-6);
+  }
+}
+
+// Zoom to fit holds the plane's whole loop; the teacher's zoom shrinks the frame about the
+// same centre, and the wheel multiplies it.
+TEST_F(AnimationLayoutTest, ZoomToFitHoldsTheLoopAndZoomScalesAboutItsCentre) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  animation().render_image();
+  const QRectF fit = animation().shown_frame();
+  const MotionScript script = window().model()->as_script();
+  for (const ScriptFrame& f : script.frames) {
+    for (const Vec3& corner : plane_corners(f.pose)) {
+      const Vec2 p = centred_to_pixel(script.camera, project_centred(script.camera, corner));
+      EXPECT_TRUE(fit.contains(QPointF(p.x, p.y))) << p.x << " " << p.y;
+    }
+  }
+  animation().set_zoom(2.0);
+  animation().render_image();
+  const QRectF zoomed = animation().shown_frame();
+  EXPECT_NEAR(zoomed.width(), fit.width() / 2, 1e-6);
+  EXPECT_NEAR(zoomed.center().x(), fit.center().x(), 1e-6);
+  EXPECT_NEAR(zoomed.center().y(), fit.center().y(), 1e-6);
+  animation().set_zoom(100.0);
+  EXPECT_EQ(animation().zoom(), AnimationView::kMaxZoom);
+}
+
+// The swing script of the lesson keeps the whole plane inside its image in every frame.
+TEST(SwingScript, StaysInsideTheImage) {
+  const MotionScript script = read_script_file(resolve_script_path("swing"));
+  ASSERT_EQ(script.frames.size(), 120u);
+  for (size_t k = 0; k < script.frames.size(); ++k) {
+    EXPECT_TRUE(plane_meets_image(script.camera, script.frames[k].pose, kNear)) << k;
+    for (const Vec3& corner : plane_corners(script.frames[k].pose)) {
+      const Vec2 p = centred_to_pixel(script.camera, project_centred(script.camera, corner));
+      EXPECT_TRUE(p.x > 0 && p.y > 0 && p.x < script.camera.width && p.y < script.camera.height) << k;
+    }
+  }
+}
+
+// Done-when of the classroom issue: at 1920 x 1080 the lesson's plane covers at least a
+// tenth of the animation view, and the affine and perspective panels play beside the exact.
+TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
+  window().resize(1920, 1080);
+  QApplication::processEvents();
+  window().apply_lesson(*find_lesson("affine-vs-perspective"));
+  window().set_motion_playing(false);
+  window().set_external_clock(true);
+  QApplication::processEvents();
+  ASSERT_EQ(animation().display(), PanelDisplay::kComparison);
+  const double view_area = double(animation().width()) * animation().height();
+  const MotionScript script = read_script_file(resolve_script_path("swing"));
+  for (int frame : {0, 20, 45, 75, 110}) {
+    window().model()->set_frame(frame);
+    animation().render_image();
+    const std::vector<QRectF>& panels = animation().panel_rects();
+    ASSERT_EQ(panels.size(), 5u);
+    // affine | perspective | exact side by side in one row.
+    EXPECT_LT(panels[0].right(), panels[1].left());
+    EXPECT_LT(panels[1].right(), panels[2].left());
+    EXPECT_NEAR(panels[0].top(), panels[2].top(), 1e-6);
+    const QRectF frame_rect = animation().shown_frame();
+    const double covered = plane_image_area(script.camera, script.frames[size_t(frame)].pose);
+    double plane_area = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double scale = panels[size_t(i)].width() / frame_rect.width();
+      plane_area += covered * scale * scale;
+    }
+    RecordProperty("plane_share_frame_" + std::to_string(frame), std::to_string(plane_area / view_area));
+    EXPECT_GE(plane_area / view_area, 0.10) << "frame " << frame << ": " << plane_area / view_area
+                                            << " of " << animation().width() << " x " << animation().height();
+    for (const ComparedRun& run : animation().comparison().runs()) EXPECT_EQ(run.animator->frame(), frame);
+  }
+}
+
+}  // namespace
+}  // namespace oflab::test
