@@ -40,10 +40,10 @@ const QSize kDefaultCanvas(1280, 640);
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
 
-// "48.2 k", "1.31 M": a pixel count for a caption.
+// "202 k", "8.4 M": a pixel count for a caption, short enough for a projector's panel.
 QString count_text(double n) {
-  if (n >= 1e6) return QString::number(n / 1e6, 'f', 2) + QStringLiteral(" M");
-  if (n >= 1e3) return QString::number(n / 1e3, 'f', 1) + QStringLiteral(" k");
+  if (n >= 1e6) return QString::number(n / 1e6, 'f', 1) + QStringLiteral(" M");
+  if (n >= 1e3) return QString::number(n / 1e3, 'f', 0) + QStringLiteral(" k");
   return QString::number(n, 'f', 0);
 }
 
@@ -60,7 +60,7 @@ QStringList run_caption(const AnimationFrame& frame, double run_pixels, double r
   if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
   return {QObject::tr("%1 · error %2 px").arg(levels.join(QStringLiteral(", ")))
               .arg(frame.max_measured_error_px, 0, 'f', 2),
-          QObject::tr("frame %1 px, %2 ms · run %3 px, %4 ms")
+          QObject::tr("%1 px, %2 ms (run %3 px, %4 ms)")
               .arg(count_text(double(frame.pixels_written)))
               .arg(frame.time_ms, 0, 'f', 1)
               .arg(count_text(run_pixels))
@@ -388,7 +388,7 @@ QImage AnimationView::compose(const QSize& size) {
   // the legends in a band below it.
   const bool heat_row = display_ == PanelDisplay::kComparison && contents.size() > 2;
   const double band = heat_row ? 0.0 : text_px * 3.9;
-  const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap / 2 - band);
+  const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap - band);
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
   QRectF top = area;
   if (heat_row) top.setHeight(area.height() * (1.0 - kHeatRowShare));

@@ -99,7 +99,9 @@ TEST(FlowParts, StreamlineOfATranslationIsAStraightSegment) {
 
 TEST(FlowParts, StreamlineStopsAtThePlaneOutline) {
   const FlowContext c = demo_context();
-  const auto path = trace_streamline(c, FlowPart::kTranslation, Vec2(20, 0), 10.0, 100);
+  // Long enough to travel 2000 px at the translation's speed: far beyond the plane.
+  const double speed = glm::length(Vec2(c.coefficients.tx, c.coefficients.ty));
+  const auto path = trace_streamline(c, FlowPart::kTranslation, Vec2(20, 0), 2000.0 / speed, 100);
   ASSERT_GE(path.size(), 2u);
   EXPECT_LT(path.size(), 101u);
   for (const Vec2& p : path) EXPECT_TRUE(sees_plane(c, p));
