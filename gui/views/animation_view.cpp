@@ -33,7 +33,8 @@ namespace {
 
 constexpr int kDifferenceScale = 128;  // grey levels at the top of the heat map's colour bar
 constexpr double kNear = 0.05;         // near plane of the exact render (SceneSettings::near)
-constexpr double kHeatRowShare = 0.34;  // the comparison's heat-map row, of the panels' height
+constexpr double kHeatRowShare = 0.34;
+constexpr double kCaptionLine = 1.4;  // caption line height, times the text size  // the comparison's heat-map row, of the panels' height
 // A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
 constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
@@ -330,21 +331,26 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   }
   draw_level_outlines(painter, panel.levels, to_panel, theme_.line_width + 1.5);
   painter.restore();
+  paint_texts(painter, panel, cell);
+}
+
+void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell) {
   const int text_px = theme_.font_size;
   QFont font = painter.font();
-  font.setPixelSize(int(text_px * 1.15));
   font.setBold(true);
+  // The title a little larger than the text when it fits, else at the text size, elided.
+  font.setPixelSize(int(text_px * 1.15));
+  if (QFontMetrics(font).horizontalAdvance(panel.title) > cell.title.width()) font.setPixelSize(text_px);
   painter.setFont(font);
   painter.setPen(qcolor(theme_.text));
-  const QFontMetrics title_metrics(font);
   painter.drawText(cell.title, Qt::AlignCenter,
-                   title_metrics.elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
+                   QFontMetrics(font).elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
   font.setPixelSize(text_px);
   font.setBold(false);
   painter.setFont(font);
   const QFontMetrics metrics(font);
-  const double line = cell.caption.height() / 2;
-  for (int i = 0; i < panel.caption.size() && i < 2; ++i) {
+  const double line = text_px * kCaptionLine;
+  for (int i = 0; i < panel.caption.size() && (i + 1) * line <= cell.caption.height() + 1; ++i) {
     const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(), line);
     painter.drawText(row, Qt::AlignCenter,
                      metrics.elidedText(panel.caption[i], Qt::ElideRight, int(row.width())));
@@ -382,7 +388,7 @@ QImage AnimationView::compose(const QSize& size) {
   if (!animator) return canvas;
   const std::vector<PanelContent> contents = panels();
   const int text_px = theme_.font_size;
-  const double gap = text_px, title = text_px * 1.8, caption = text_px * 1.35 * 2 + 2;
+  const double gap = text_px, title = text_px * 1.8, caption = text_px * kCaptionLine * 2;
   // The comparison puts the heat maps in a second row, each under its policy, and the
   // legends in the spare cell under the exact panel; the other layouts have one row and
   // the legends in a band below it.
@@ -396,7 +402,7 @@ QImage AnimationView::compose(const QSize& size) {
   QRectF legends(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
   if (heat_row) {
     const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(), area.bottom() - top.bottom() - gap / 2);
-    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, caption / 2);
+    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, caption / 2);  // one line
     cells.insert(cells.end(), more.begin(), more.end() - 1);
     legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
   }

@@ -102,6 +102,8 @@ class AnimationView : public ViewPage {
   // Paints `panel` into `cell` with the shared framing and the exact outlines (camera pixels).
   void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
                    const std::vector<std::vector<Vec2>>& outlines);
+  // The title above the panel's image and its caption lines below it.
+  void paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell);
   void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
   QRectF fit_content();
   void show_readout(QPointF pixel);

@@ -19,6 +19,7 @@
 #include "models/scene_model.h"
 #include "scene/view_culling.h"
 #include "views/animation_view.h"
+#include "image_checks.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -139,6 +140,21 @@ TEST_F(AnimationLayoutTest, ZoomToFitHoldsTheLoopAndZoomScalesAboutItsCentre) {
   EXPECT_NEAR(zoomed.center().y(), fit.center().y(), 1e-6);
   animation().set_zoom(100.0);
   EXPECT_EQ(animation().zoom(), AnimationView::kMaxZoom);
+}
+
+// What the window shows is what render_image returns: a grab of the canvas widget (the
+// path of exports that take what is on screen) has every panel of the comparison.
+TEST_F(AnimationLayoutTest, ACanvasGrabShowsEveryPanelOfTheLayout) {
+  show_comparison();
+  window().play_frames(6);
+  const QImage rendered = animation().render_image().convertToFormat(QImage::Format_RGB32);
+  auto* canvas = animation().findChild<QWidget*>(QStringLiteral("animation_canvas"));
+  ASSERT_NE(canvas, nullptr);
+  QApplication::processEvents();
+  const QImage grabbed = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
+  ASSERT_EQ(grabbed.size(), rendered.size());
+  EXPECT_GE(psnr_db(grabbed, rendered), 40.0);
+  EXPECT_EQ(animation().panel_rects().size(), 5u);
 }
 
 // The swing script of the lesson keeps the whole plane inside its image in every frame.
