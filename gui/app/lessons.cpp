@@ -45,7 +45,7 @@ Lesson affine_vs_perspective() {
       "edge looks much longer than its far edge. Three panels play the same frames at once: affine "
       "warps, perspective warps and the exact projection; under each approximation, its "
       "difference from the exact frame. An affine warp keeps parallel edges parallel: watch "
-      "its heat map light up at the far edge while the perspective panel stays close.";
+      "its heat map light up while the perspective panel's stays dark.";
   lesson.view = "animation";
   lesson.scene = default_demo_scene();
   lesson.animation_kind = "script";
