@@ -4,6 +4,7 @@
 #include <QObject>
 #include <QPainterPath>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -90,6 +91,12 @@ void draw_level_legend(QPainter& painter, const QRectF& area, const QColor& text
 QImage difference_map(const Image& a, const Image& b, int full_scale) {
   QImage out(std::max(1, a.width()), std::max(1, a.height()), QImage::Format_RGB32);
   out.fill(QColor(0, 0, 0));
+  // Differences are whole grey levels 0..255: colour each once.
+  std::array<QRgb, 256> colours;
+  for (int d = 0; d < 256; ++d) {
+    const Rgb8 c = magnitude_colour(static_cast<double>(d) / full_scale);
+    colours[size_t(d)] = qRgb(c.r, c.g, c.b);
+  }
   for (int y = 0; y < a.height(); ++y) {
     const Pixel* pa = a.row(y);
     const Pixel* pb = b.row(y);
@@ -97,8 +104,7 @@ QImage difference_map(const Image& a, const Image& b, int full_scale) {
     for (int x = 0; x < a.width(); ++x) {
       const int d = std::max({std::abs(pa[x].r - pb[x].r), std::abs(pa[x].g - pb[x].g),
                               std::abs(pa[x].b - pb[x].b), std::abs(pa[x].a - pb[x].a)});
-      const Rgb8 c = magnitude_colour(static_cast<double>(d) / full_scale);
-      line[x] = qRgb(c.r, c.g, c.b);
+      line[x] = colours[size_t(d)];
     }
   }
   return out;
