@@ -95,7 +95,7 @@ ReportTable delta_table(const DeltaResult& r) {
     const auto& levels = run.summary.levels;
     t.rows.push_back({delta_policy_name(run.settings.delta),
                       published_statement(run.settings.delta), fixed(run.summary.time_ms, 1),
-                      percent(time_saved(run, r.baseline)), fixed(run.summary.median_frame_ms, 4),
+                      percent(time_saved(run)), fixed(run.summary.median_frame_ms, 4),
                       fixed(max_ms, 3), std::to_string(run.summary.pixels),
                       std::to_string(levels[static_cast<int>(Level::kPerspective)]),
                       std::to_string(levels[static_cast<int>(Level::kRerender)]),
