@@ -193,8 +193,8 @@ ReportSection delta_section(const DeltaResult& result, ExperimentContext& contex
   s.paragraph(
       "The loop script (" + std::to_string(result.baseline.reports.size()) +
       " frames) in perspective mode under each Delta policy, thresholds 1 px, " +
-      count_of(result.spec.repetitions, "interleaved repetition") +
-      " (per-frame medians), with the re-render baseline. The "
+      "a warm-up and " + count_of(result.spec.repetitions, "timed repetition") +
+      " (per-frame medians), each interleaved with the re-render baseline. The "
       "dissertation published this comparison as graphs and statements only, so the table "
       "sets its statement beside oflab's measurements. Delta = 1 keeps the perspective cache at "
       "texture size; sqrt|det A| puts it at output size (the affine step preserves area); "

@@ -28,7 +28,7 @@ std::vector<MeasuredRun> measure_interleaved(
       progress(std::string(s.policy->name) + " mode, " +
                (spec.max_frames > 0 ? "at most " + std::to_string(spec.max_frames)
                                     : std::to_string(script.frames.size())) +
-               " frames, a warm-up and " + count_of(spec.repetitions, "timed pass"));
+               " frames, a warm-up and " + count_of(spec.repetitions, "timed repetition"));
     }
     source.settings.engine = s;
     PlayOptions options;  // the one timing of analysis/runs/run_driver.h, as the CLI's

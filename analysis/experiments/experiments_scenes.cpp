@@ -92,7 +92,7 @@ SceneMeasurement measure_scene(const std::string& name, const Scene& scene,
   source.settings = settings;
   if (progress) {
     progress(name + " (" + std::to_string(m.polygons) + " polygons), a warm-up and " +
-             count_of(reps, "timed pass"));
+             count_of(reps, "timed repetition"));
   }
   PlayOptions options;  // the one timing of analysis/runs/run_driver.h, as the CLI's
   options.max_frames = max_frames;

@@ -339,12 +339,14 @@ ReportSection experiment1_section(const Experiment1Result& result, ExperimentCon
       "The seven shipped scripts (datasets/scripts, focal length 256 px, 640 x 480 image) with "
       "the 243 x 198 butterfly texture, all thresholds 1 px, nearest sampling, Delta as the "
       "dissertation's rule. Each script ran in perspective, affine and exact mode and in "
-      "re-render mode (the baseline), interleaved, " +
-      (spec.repetitions == 1 ? std::string("once") : std::to_string(spec.repetitions) + " times") +
+      "re-render mode, each interleaved frame by frame with the re-render baseline, timed as "
+      "oflab-cli animate times: an untimed warm-up pass, then " +
+      count_of(spec.repetitions, "timed repetition") +
       (spec.max_frames > 0 ? ", at most " + std::to_string(spec.max_frames) + " frames each"
                            : ", whole scripts") +
       ". Frame times are per-frame medians over the repetitions; time saved compares their sums "
-      "with the re-render run's, frame 0 included. Work saved compares pixels written by the "
+      "with those of the baseline interleaved with the run, frame 0 included. Work saved "
+      "compares pixels written by the "
       "warp kernels. Level percentages count the frames after the first (frame 0 is the "
       "initial render in every mode). Max error is the largest measured corner distance from "
       "the exact projection; PSNR is against an exact render of each frame.");

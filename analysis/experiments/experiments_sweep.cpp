@@ -114,7 +114,7 @@ ReportSection sweep_section(const SweepResult& result, ExperimentContext& contex
   for (double t : result.spec.thresholds_px) list += (list.empty() ? "" : ", ") + fixed(t, 2);
   s.paragraph(
       "Every Experiment 1 script in perspective mode with all four thresholds set to " + list +
-      " px, " + count_of(result.spec.run.repetitions, "interleaved repetition") +
+      " px, a warm-up and " + count_of(result.spec.run.repetitions, "timed repetition") +
       (result.spec.run.max_frames > 0
            ? ", at most " + std::to_string(result.spec.run.max_frames) + " frames per script"
            : ", whole scripts") +
