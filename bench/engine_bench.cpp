@@ -95,9 +95,9 @@ void register_engine_cases(int repetitions) {
   for (const char* script : kScripts) {
     for (const ReusePolicy& policy : reuse_policies()) {
       const std::string name = std::string("engine/") + script + "/" + policy.name;
-      benchmark::RegisterBenchmark(name.c_str(),
-                                   [script = std::string(script), p = &policy](
-                                       benchmark::State& state) { run_case(state, script, p); })
+      benchmark::RegisterBenchmark(
+          name.c_str(), [script = std::string(script),
+                         p = &policy](benchmark::State& state) { run_case(state, script, p); })
           ->UseManualTime()
           ->Repetitions(repetitions)
           ->ReportAggregatesOnly(true)

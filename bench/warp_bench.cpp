@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "engine_bench.h"
 #include "image/warp.h"
 #include "warp_cases.h"
-#include "engine_bench.h"
 #ifdef OFLAB_BENCH_WITH_OPENCV
 #include "opencv_peer.h"
 #endif

@@ -94,7 +94,8 @@ std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run
 double relative_level_cost(const MeasuredRun& run, Level level) {
   double engine = 0.0, rerender = 0.0;
   int frames = 0;
-  const size_t n = std::min({run.reports.size(), run.frame_ms.size(), run.baseline_frame_ms.size()});
+  const size_t n =
+      std::min({run.reports.size(), run.frame_ms.size(), run.baseline_frame_ms.size()});
   for (size_t i = 1; i < n; ++i) {
     if (run.reports[i].level != level) continue;
     engine += run.frame_ms[i];

@@ -125,7 +125,8 @@ class RunLoop {
       }
       if (with_conventional) conventional_ms = conventional_->render(animator_.view());
       if (record) record_frame(i, f);
-      if (timed) add_samples(samples_[static_cast<std::size_t>(i)], f, baseline_ms, conventional_ms);
+      if (timed)
+        add_samples(samples_[static_cast<std::size_t>(i)], f, baseline_ms, conventional_ms);
       if (options_.progress) options_.progress(pass * frames_ + i + 1, passes_ * frames_);
     }
   }
@@ -137,7 +138,8 @@ class RunLoop {
     if (baseline_ && (options_.psnr_when_nothing_drawn || f.drawn() > 0)) {
       psnr = psnr_db(animator_.image(), baseline_->image());
     }
-    if (conventional_ && baseline_) iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
+    if (conventional_ && baseline_)
+      iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
     run_.psnr_db.push_back(psnr);
     if (options_.on_frame) options_.on_frame(i, animator_.image());
   }

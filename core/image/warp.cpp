@@ -64,7 +64,8 @@ void clear_previous(const ConvexPolygon& old_polygon, int old_width, int old_hei
   PixelSpan old;
   while (scan.next(old)) {
     std::int64_t i = static_cast<std::int64_t>(old.y) * old_width + old.x_begin;
-    const std::int64_t end = std::min(size, static_cast<std::int64_t>(old.y) * old_width + old.x_end);
+    const std::int64_t end =
+        std::min(size, static_cast<std::int64_t>(old.y) * old_width + old.x_end);
     while (i < end) {  // the old span's flat range, cut into the new rows
       const std::int64_t row = i / width, from = i % width;
       const std::int64_t to = from + std::min(end - i, width - from);

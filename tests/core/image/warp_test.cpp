@@ -401,13 +401,14 @@ TEST(WarpKernels, ReusingWarpEqualsAFreshWarpPixelForPixel) {
   for (Sampling sampling : {Sampling::kNearest, Sampling::kBilinear}) {
     WarpedLayer reused;
     for (int step = 0; step < 200; ++step) {
-      const Layer source = make_layer(testing::random_image(rng, 40, 30),
-                                      testing::random_polygon(rng, 40, 30));
+      const Layer source =
+          make_layer(testing::random_image(rng, 40, 30), testing::random_polygon(rng, 40, 30));
       const double scale = std::exp(0.8 * unit(rng));
       Mat3 m = rotation_about(180.0 * unit(rng), 20.0, 15.0) *
                mat3_from_rows({scale, 0.2 * unit(rng), 30.0 * unit(rng)},
                               {0.0, scale, 30.0 * unit(rng)}, {0.0, 0.0, 1.0});
-      if (step % 3 == 0) m = mat3_from_rows({1, 0, 0}, {0, 1, 0}, {0.004 * unit(rng), 0.004 * unit(rng), 1}) * m;
+      if (step % 3 == 0)
+        m = mat3_from_rows({1, 0, 0}, {0, 1, 0}, {0.004 * unit(rng), 0.004 * unit(rng), 1}) * m;
       if (step % 17 == 0) m = translation_matrix(1e4, 0.0) * m;  // may leave nothing visible
       const WarpedLayer fresh = warp_layer(source, m, {sampling});
       warp_layer_reusing(source, m, reused, {sampling});
