@@ -3,7 +3,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -25,33 +24,6 @@ cv::Mat opencv_matrix(const WarpCase& c) {
   return out;
 }
 
-// Fraction of the polygon pixels where OpenCV's result equals oflab's (nearest) or is
-// within 2 levels per channel (bilinear): a check that both warp the same case. OpenCV
-// rounds positions to 1/1024 pixel (nearest) and bilinear weights to 1/32, so pixels on
-// sampling boundaries may differ.
-double agreement(const WarpCase& c, const cv::Mat& opencv_output, bool bilinear) {
-  WarpOptions options;
-  options.sampling = bilinear ? Sampling::kBilinear : Sampling::kNearest;
-  const Pixel unwritten{1, 2, 3, 0};  // not premultiplied: no warp writes it
-  Image reference(c.output_width, c.output_height, unwritten);
-  warp_layer_into(c.source, c.warp, reference, c.origin_x, c.origin_y, options);
-  std::int64_t inside = 0;
-  std::int64_t agree = 0;
-  const int tolerance = bilinear ? 2 : 0;
-  for (int y = 0; y < c.output_height; ++y) {
-    const auto* opencv_row = opencv_output.ptr<Pixel>(y);
-    for (int x = 0; x < c.output_width; ++x) {
-      const Pixel a = reference.at(x, y);
-      if (a == unwritten) continue;  // outside the polygon
-      const Pixel b = opencv_row[x];
-      ++inside;
-      agree += std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance &&
-               std::abs(a.b - b.b) <= tolerance && std::abs(a.a - b.a) <= tolerance;
-    }
-  }
-  return inside > 0 ? static_cast<double>(agree) / static_cast<double>(inside) : 1.0;
-}
-
 }  // namespace
 
 void register_opencv_cases(const std::vector<WarpCase>& cases, bool bilinear_too, int repetitions) {
@@ -68,7 +40,8 @@ void register_opencv_cases(const std::vector<WarpCase>& cases, bool bilinear_too
             name.c_str(),
             [c, bilinear, perspective](benchmark::State& state) {
               const cv::Mat source = wrap(c.source.image);
-              cv::Mat output(c.output_height, c.output_width, CV_8UC4);
+              Image result(c.output_width, c.output_height);
+              cv::Mat output = wrap(result);  // OpenCV writes into oflab's image
               const cv::Mat m = opencv_matrix(c);
               const int flags = bilinear ? cv::INTER_LINEAR : cv::INTER_NEAREST;
               for (auto _ : state) {
@@ -81,7 +54,8 @@ void register_opencv_cases(const std::vector<WarpCase>& cases, bool bilinear_too
                 benchmark::DoNotOptimize(output.data);
                 benchmark::ClobberMemory();
               }
-              state.counters["agree"] = agreement(c, output, bilinear);
+              state.counters["agree"] =
+                  agreement(c, result, bilinear ? Sampling::kBilinear : Sampling::kNearest);
               state.counters["Mpx/s"] =
                   benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
                                      benchmark::Counter::kIsIterationInvariantRate);

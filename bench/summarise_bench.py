@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Turns the JSON written by oflab-bench into the tables of manual/warping.md.
 
-Usage:
+Usage (the pixman and OpenCV columns stay "-" when oflab-bench was built without them):
     for i in 1 2 3; do
       build/bench/oflab-bench --benchmark_out=warp-bench-$i.json --benchmark_out_format=json
     done
@@ -32,6 +32,8 @@ def load_medians(path):
             "real": b["real_time"] * scale,
             "mpx": b.get("Mpx/s"),
             "agree": b.get("agree"),
+            "frame_ms": b.get("frame_ms"),
+            "kernel_ms": b.get("kernel_ms"),
         }
     return data.get("context", {}), medians
 
@@ -69,8 +71,8 @@ def main():
 
     print("Appendix A.2 cases, nearest, median CPU ms\n")
     print("| image | matrix | affine | perspective | persp/affine | OpenCV affine "
-          "| OpenCV persp | OpenCV/oflab | copy |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| OpenCV persp | OpenCV/oflab | pixman | pixman/oflab | copy |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for size in ("243x198", "121x99"):
         for matrix in ("identity", "rot45", "M-affine", "M"):
             affine = cpu(m, f"warp/affine/nearest/{size}/{matrix}")
@@ -80,14 +82,17 @@ def main():
             # oflab's own kernel for the matrix against OpenCV's matching function.
             own = affine if affine is not None else persp
             peer = cv_affine if cv_affine is not None else cv_persp
+            pixman = cpu(m, f"pixman/nearest/{size}/{matrix}")
             print(f"| {size} | {matrix} | {fmt(affine)} | {fmt(persp)} | "
                   f"{fmt(ratio(persp, affine), 2)} | {fmt(cv_affine)} | {fmt(cv_persp)} | "
-                  f"{fmt(ratio(peer, own), 1)} | {fmt(cpu(m, f'copy/{size}/{matrix}'))} |")
+                  f"{fmt(ratio(peer, own), 1)} | {fmt(pixman)} | {fmt(ratio(pixman, own), 1)} | "
+                  f"{fmt(cpu(m, f'copy/{size}/{matrix}'))} |")
 
     print("\nFrames, median CPU ms (Mpx/s over the polygon's pixels)\n")
     print("| case | kernel | nearest | bilinear | bilinear/nearest | OpenCV nearest "
-          "| OpenCV bilinear | OpenCV/oflab nearest | warp/copy nearest |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| OpenCV bilinear | OpenCV/oflab nearest | pixman nearest | pixman bilinear "
+          "| pixman/oflab nearest | warp/copy nearest |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for size in ("1024x768", "1920x1080"):
         for matrix in ("rotation", "tilt"):
             copy = cpu(m, f"copy/{size}/{matrix}")
@@ -98,11 +103,14 @@ def main():
                     continue
                 cv_near = cpu(m, f"opencv/{kernel}/nearest/{size}/{matrix}")
                 cv_bil = cpu(m, f"opencv/{kernel}/bilinear/{size}/{matrix}")
+                px_near = cpu(m, f"pixman/nearest/{size}/{matrix}")
+                px_bil = cpu(m, f"pixman/bilinear/{size}/{matrix}")
                 near_cpu = near["cpu"]
                 bil_cpu = None if bil is None else bil["cpu"]
                 print(f"| {size} {matrix} | {kernel} | {fmt(near_cpu)} ({near['mpx']:.0f}) | "
                       f"{fmt(bil_cpu)} | {fmt(ratio(bil_cpu, near_cpu), 2)} | {fmt(cv_near)} | "
-                      f"{fmt(cv_bil)} | {fmt(ratio(cv_near, near_cpu), 1)} | "
+                      f"{fmt(cv_bil)} | {fmt(ratio(cv_near, near_cpu), 1)} | {fmt(px_near)} | "
+                      f"{fmt(px_bil)} | {fmt(ratio(px_near, near_cpu), 1)} | "
                       f"{fmt(ratio(near_cpu, copy), 1)} |")
 
     print("\nPerspective kernel / affine kernel on the same (affine) matrix\n")
@@ -117,13 +125,25 @@ def main():
                                    cpu(m, f"warp/affine/{sampling}/{size}/{matrix}")), 2))
         print(f"| {size} {matrix} | {cells[0]} | {cells[1]} |")
 
+    engines = [(n, e) for n, e in m.items() if n.startswith("engine/")]
+    if engines:
+        print("\nEngine cases: median frame (engine's timed part) and the bare kernel drawing "
+              "the exact warp of the same poses, ms\n")
+        print("| script | mode | engine frame | kernel frame | engine/kernel |")
+        print("|---|---|---|---|---|")
+        for name, e in engines:
+            _, script, mode = name.split("/")
+            print(f"| {script} | {mode} | {fmt(e['frame_ms'], 4)} | {fmt(e['kernel_ms'], 4)} | "
+                  f"{fmt(ratio(e['frame_ms'], e['kernel_ms']), 2)} |")
+
     print("\nSpread over the runs (lowest - highest median CPU ms)\n")
     for name, e in m.items():
         print(f"- {name}: {e['low']:.3f} - {e['high']:.3f} ({e['runs']} runs)")
 
-    agree = [(n, e["agree"]) for n, e in m.items() if n.startswith("opencv/") and e["agree"]]
+    agree = [(n, e["agree"]) for n, e in m.items()
+             if n.startswith(("opencv/", "pixman/")) and e["agree"] is not None]
     if agree:
-        print("\nOpenCV pixels agreeing with oflab's (fraction of the polygon's pixels)\n")
+        print("\nPeer pixels agreeing with oflab's (fraction of the polygon's pixels)\n")
         for name, value in agree:
             print(f"- {name}: {value:.4f}")
 

@@ -1,8 +1,10 @@
 // oflab-bench: Google Benchmark timings of the warp kernels (manual/warping.md).
 //
 // Case names: warp/<kernel>/<sampling>/<size>/<matrix>, copy/<size>/<matrix> (memcpy of
-// the same number of output bytes: the memory-bandwidth floor) and, when OpenCV is
-// available, opencv/<kernel>/<sampling>/<size>/<matrix>. Every case reports aggregates
+// the same number of output bytes: the memory-bandwidth floor), when OpenCV is available
+// opencv/<kernel>/<sampling>/<size>/<matrix>, when pixman is available
+// pixman/<sampling>/<size>/<matrix>, and the engine cases of engine_bench.h
+// (engine/<script>/<mode>). Every warp case reports aggregates
 // over repetitions (median included) and a Mpx/s counter: output pixels inside the warped
 // polygon per second. Everything runs on one thread. Usual Google Benchmark flags work,
 // e.g. --benchmark_filter=1024x768 --benchmark_format=json.
@@ -12,10 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "engine_bench.h"
 #include "image/warp.h"
 #include "warp_cases.h"
 #ifdef OFLAB_BENCH_WITH_OPENCV
 #include "opencv_peer.h"
+#endif
+#ifdef OFLAB_BENCH_WITH_PIXMAN
+#include "pixman_peer.h"
 #endif
 
 namespace oflab::bench {
@@ -93,6 +99,11 @@ void register_all() {
   register_opencv_cases(table, false, kRepetitions);
   register_opencv_cases(frames, true, kRepetitions);
 #endif
+#ifdef OFLAB_BENCH_WITH_PIXMAN
+  register_pixman_cases(table, false, kRepetitions);
+  register_pixman_cases(frames, true, kRepetitions);
+#endif
+  register_engine_cases(kRepetitions);
 }
 
 }  // namespace

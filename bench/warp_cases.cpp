@@ -2,6 +2,7 @@
 #include "warp_cases.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 #include "image/image.h"
@@ -76,6 +77,28 @@ WarpCase boxed_case(const std::string& size, const std::string& name, const Laye
 }
 
 }  // namespace
+
+double agreement(const WarpCase& c, const Image& peer_output, Sampling sampling) {
+  WarpOptions options;
+  options.sampling = sampling;
+  const Pixel unwritten{1, 2, 3, 0};  // not premultiplied: no warp writes it
+  Image reference(c.output_width, c.output_height, unwritten);
+  warp_layer_into(c.source, c.warp, reference, c.origin_x, c.origin_y, options);
+  std::int64_t inside = 0;
+  std::int64_t agree = 0;
+  const int tolerance = sampling == Sampling::kBilinear ? 2 : 0;
+  for (int y = 0; y < c.output_height; ++y) {
+    for (int x = 0; x < c.output_width; ++x) {
+      const Pixel a = reference.at(x, y);
+      if (a == unwritten) continue;  // outside the polygon
+      const Pixel b = peer_output.at(x, y);
+      ++inside;
+      agree += std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance &&
+               std::abs(a.b - b.b) <= tolerance && std::abs(a.a - b.a) <= tolerance;
+    }
+  }
+  return inside > 0 ? static_cast<double>(agree) / static_cast<double>(inside) : 1.0;
+}
 
 std::vector<WarpCase> appendix_a2_cases() {
   const Mat3 m = mat3_from_rows({0.8, 0.6, 0.0}, {-0.4, 0.8, 0.0}, {0.1, -0.3, 1.0});

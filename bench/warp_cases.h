@@ -35,6 +35,13 @@ struct WarpCase {
 // to the warped polygon's bounding box, as the dissertation's warp did.
 std::vector<WarpCase> appendix_a2_cases();
 
+// Fraction of the case's polygon pixels where a peer's output (output_width x
+// output_height, premultiplied RGBA in oflab's byte order) equals oflab's warp of the same
+// case (nearest) or is within 2 levels per channel (bilinear): a check that a peer warps
+// the same case. Peers round positions and weights differently (OpenCV to 1/1024 pixel and
+// 1/32, pixman to 1/65536 pixel and 1/128), so pixels on sampling boundaries may differ.
+double agreement(const WarpCase& c, const Image& peer_output, Sampling sampling);
+
 // 1024 x 768 and 1920 x 1080 sources warped into same-sized frames: "rotation" is 45
 // degrees about the frame centre, "tilt" a camera pitch of 20 degrees (focal length =
 // frame width) composed with a 0.85 zoom about the centre.

@@ -12,6 +12,8 @@ packages=(
 )
 # OpenCV is an optional benchmark peer; ask for it with OFLAB_WITH_OPENCV=1.
 if [[ "${OFLAB_WITH_OPENCV:-0}" == "1" ]]; then packages+=(libopencv-dev); fi
+# pixman is another optional benchmark peer; ask for it with OFLAB_WITH_PIXMAN=1.
+if [[ "${OFLAB_WITH_PIXMAN:-0}" == "1" ]]; then packages+=(libpixman-1-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -103,6 +103,7 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--delta", 1},
                            {"--sampling", 1},
                            {"--frames", 1},
+                           {"--repeat-timing", 1},
                            {"--out", 1},
                            {"--force", 0},
                            {"--frames-png", 0},

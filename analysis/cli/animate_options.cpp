@@ -72,6 +72,11 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
     out.max_frames = a.integer("--frames");
     if (out.max_frames < 1) throw UsageError("--frames: must be at least 1");
   }
+  out.timing_repetitions = a.integer_or("--repeat-timing", kDefaultTimingRepetitions);
+  if (out.timing_repetitions < 1 || out.timing_repetitions > kMaxTimingRepetitions) {
+    throw UsageError("--repeat-timing: " + std::to_string(out.timing_repetitions) +
+                     " is outside 1.." + std::to_string(kMaxTimingRepetitions));
+  }
   out.dir = a.text_or("--out", "");
   if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
   if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
@@ -84,10 +89,15 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
     };
   }
   const bool quiet = a.has("--quiet");
-  out.progress = [quiet, &err](int done, int total) {
-    if (quiet || total < 200) return;
-    if (done % std::max(1, total / 10) == 0 || done == total) {
-      err << "animate: frame " << done << "/" << total << "\n" << std::flush;
+  const int passes = out.timing_repetitions + 1;  // the warm-up and the timed passes
+  out.progress = [quiet, passes, &err](int done, int total) {
+    const int frames = total / passes;
+    if (quiet || frames < 200) return;
+    const int frame = (done - 1) % frames + 1;
+    if (frame % std::max(1, frames / 10) == 0 || frame == frames) {
+      err << "animate: frame " << frame << "/" << frames << " of pass " << (done - 1) / frames + 1
+          << "/" << passes << " (a warm-up, then the timed passes)\n"
+          << std::flush;
     }
   };
   return out;

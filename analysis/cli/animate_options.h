@@ -25,21 +25,28 @@ EngineSettings read_engine_settings(const CliArgs& args);
 // accepted values for any other word.
 Sampling read_sampling(const CliArgs& args);
 
-// What every form of `oflab-cli animate` does with its output options: --frames N (at most N
-// frames; -1 for all), --out DIR (created, or an existing empty one; --force for a non-empty
+// What every form of `oflab-cli animate` does with its output and timing options: --frames N
+// (at most N frames; -1 for all), --repeat-timing N (timed passes after an untimed warm-up,
+// 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions; analysis/runs/run_driver.h), --out DIR (created, or an existing empty one; --force for a non-empty
 // one), --frames-png (each frame as DIR/frame_NNNNN.png; needs --out) and --quiet (no
 // progress lines; otherwise runs of 200 frames or more report every tenth on `err`).
 // Throws UsageError naming the option. `err` must outlive the returned callbacks.
+constexpr int kMaxTimingRepetitions = 1000;
+
 struct RunOutput {
   int max_frames = -1;
+  int timing_repetitions = kDefaultTimingRepetitions;
   std::string dir;                                  // empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
   std::function<void(int, int)> progress;
 
-  // Sets max_frames, on_frame and progress of a run's options (RunOptions, PlayOptions).
+  // Sets max_frames, the timing (a warm-up, timing_repetitions timed passes), on_frame and
+  // progress of a run's options (RunOptions, PlayOptions).
   template <class Options>
   void apply_to(Options& options) const {
     options.max_frames = max_frames;
+    options.warm_up = true;
+    options.timing_repetitions = timing_repetitions;
     options.on_frame = on_frame;
     options.progress = progress;
   }

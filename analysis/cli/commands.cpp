@@ -5,6 +5,7 @@
 #include "engine/reuse_policy.h"
 #include "experiments/experiments.h"
 #include "image/warp.h"
+#include "runs/run_driver.h"
 
 namespace oflab {
 
@@ -19,12 +20,16 @@ std::string animate_usage() {
       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage +=
+      "               [--repeat-timing N]   (timed passes after a warm-up, default " +
+      std::to_string(kDefaultTimingRepetitions) + ")\n";
+  usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
-      "               [--epsilon PX] [--sampling, --frames, --out, --json, --quiet as above]\n"
+      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --out, --json,\n"
+      "               --quiet as above]\n"
       "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
   return usage;
 }

@@ -18,46 +18,34 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 std::vector<MeasuredRun> measure_interleaved(
     const MotionScript& script, const Layer& texture, const std::vector<EngineSettings>& settings,
     const RunSpec& spec, const std::function<void(const std::string&)>& progress) {
-  const int reps = std::max(1, spec.repetitions);
-  std::vector<MeasuredRun> runs(settings.size());
-  // times[setting][frame][repetition]
-  std::vector<std::vector<std::vector<double>>> times(settings.size());
+  std::vector<MeasuredRun> runs;
   const SourceKind& plane = source_kind("plane");
   RunSource source;
   source.script = script;
   source.texture = texture.image;
-  for (int rep = 0; rep < reps; ++rep) {
+  for (const EngineSettings& s : settings) {
     if (progress) {
-      progress(std::to_string(settings.size()) + " runs of " +
+      progress(std::string(s.policy->name) + " mode, " +
                (spec.max_frames > 0 ? "at most " + std::to_string(spec.max_frames)
                                     : std::to_string(script.frames.size())) +
-               " frames, repetition " + std::to_string(rep + 1) + "/" + std::to_string(reps));
+               " frames, a warm-up and " + count_of(spec.repetitions, "timed repetition"));
     }
-    for (size_t k = 0; k < settings.size(); ++k) {
-      source.settings.engine = settings[k];
-      PlayOptions options;
-      options.max_frames = spec.max_frames;
-      options.baseline = spec.measure_psnr && rep == 0;  // the exact frames, for PSNR only
-      const AnimationRun run = plane.play(source, options);
-      if (rep == 0) {
-        runs[k].settings = settings[k];
-        for (const AnimationFrame& f : run.frames) runs[k].reports.push_back(f.layer_reports[0]);
-        runs[k].psnr_db = run.psnr_db;
-        runs[k].summary = run.summary;
-        times[k].assign(run.frames.size(), {});
-      }
-      for (size_t f = 0; f < run.frames.size() && f < times[k].size(); ++f) {
-        times[k][f].push_back(run.frames[f].time_ms);
-      }
+    source.settings.engine = s;
+    PlayOptions options;  // the one timing of analysis/runs/run_driver.h, as the CLI's
+    options.max_frames = spec.max_frames;
+    options.warm_up = true;
+    options.timing_repetitions = std::max(1, spec.repetitions);
+    AnimationRun run = plane.play(source, options);
+    MeasuredRun r;
+    r.settings = s;
+    for (const AnimationFrame& f : run.frames) {
+      r.reports.push_back(f.layer_reports[0]);
+      r.frame_ms.push_back(f.time_ms);
     }
-  }
-  for (size_t k = 0; k < runs.size(); ++k) {
-    MeasuredRun& r = runs[k];
-    r.frame_ms.clear();
-    for (const auto& per_rep : times[k]) r.frame_ms.push_back(median_of(per_rep));
-    r.summary.time_ms = 0.0;
-    for (double t : r.frame_ms) r.summary.time_ms += t;
-    r.summary.median_frame_ms = median_of(r.frame_ms);
+    r.baseline_frame_ms = run.baseline_ms;
+    r.psnr_db = spec.measure_psnr ? run.psnr_db : std::vector<double>(run.frames.size(), kNaN);
+    r.summary = run.summary;
+    runs.push_back(std::move(r));
   }
   return runs;
 }
@@ -84,8 +72,8 @@ std::vector<ScriptRuns> measure_scripts(const std::vector<std::string>& scripts,
   return result;
 }
 
-double time_saved(const MeasuredRun& run, const MeasuredRun& baseline) {
-  return baseline.summary.time_ms > 0 ? 1.0 - run.summary.time_ms / baseline.summary.time_ms : kNaN;
+double time_saved(const MeasuredRun& run) {
+  return run.summary.baseline_time_ms > 0 ? run.summary.time_saved : kNaN;
 }
 
 double work_saved(const MeasuredRun& run, const MeasuredRun& baseline) {
@@ -103,14 +91,15 @@ std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run
   return percent;
 }
 
-double relative_level_cost(const MeasuredRun& run, const MeasuredRun& baseline, Level level) {
+double relative_level_cost(const MeasuredRun& run, Level level) {
   double engine = 0.0, rerender = 0.0;
   int frames = 0;
-  const size_t n = std::min({run.reports.size(), run.frame_ms.size(), baseline.frame_ms.size()});
+  const size_t n =
+      std::min({run.reports.size(), run.frame_ms.size(), run.baseline_frame_ms.size()});
   for (size_t i = 1; i < n; ++i) {
     if (run.reports[i].level != level) continue;
     engine += run.frame_ms[i];
-    rerender += baseline.frame_ms[i];
+    rerender += run.baseline_frame_ms[i];
     ++frames;
   }
   return frames > 0 && rerender > 0 ? engine / rerender : kNaN;

@@ -1,8 +1,8 @@
 // Measured engine runs for the experiments: a script played under several engine
-// settings, interleaved and repeated in one process, so that every setting (and the
-// re-render baseline) sees the same machine load; timings are per-frame medians over the
-// repetitions. Level choices, pixel counts and errors are deterministic and taken from the
-// first repetition.
+// settings, each interleaved frame by frame with the re-render baseline so that both see
+// the same machine load, timed as `oflab-cli animate` times (analysis/runs/run_driver.h: an
+// untimed warm-up pass, then per-frame medians over the timed passes). Level choices,
+// pixel counts and errors are deterministic and taken from the first pass.
 #pragma once
 
 #include <array>
@@ -17,22 +17,25 @@ namespace oflab {
 
 struct RunSpec {
   int max_frames = -1;        // play at most this many frames (-1: the whole script)
-  int repetitions = 1;        // >= 1; timings are medians over these
-  bool measure_psnr = false;  // PSNR against an exact render, in the first repetition
+  int repetitions = 1;        // timed passes (>= 1); timings are medians over these
+  bool measure_psnr = false;  // keep the PSNR against the exact render (else NaN)
 };
 
 struct MeasuredRun {
   EngineSettings settings;
   std::vector<FrameReport> reports;  // first repetition
   std::vector<double> psnr_db;       // per frame; NaN when not measured or not visible
-  std::vector<double> frame_ms;      // per frame: median over the repetitions
-  RunSummary summary;                // pixels, errors, PSNR; time_ms = sum of frame_ms;
-                                     // baseline fields unused (see time_saved below)
+  std::vector<double> frame_ms;      // per frame: median over the timed passes
+  // Per frame: the re-render baseline interleaved with this run, median over the passes.
+  std::vector<double> baseline_frame_ms;
+  RunSummary summary;  // of the run driver: time_ms = sum of frame_ms, baseline_time_ms =
+                       // sum of baseline_frame_ms, time_saved, pixels, errors, PSNR
 };
 
-// Plays `script` under each of `settings` in turn, spec.repetitions times over (setting
-// order kept within each repetition). `progress` (may be empty) receives a short line
-// before each repetition. Returns one MeasuredRun per setting, in order.
+// Plays `script` under each of `settings` in turn through the plane's source kind, with
+// the re-render baseline interleaved, a warm-up pass and spec.repetitions timed passes.
+// `progress` (may be empty) receives a short line before each setting. Returns one
+// MeasuredRun per setting, in order.
 std::vector<MeasuredRun> measure_interleaved(
     const MotionScript& script, const Layer& texture, const std::vector<EngineSettings>& settings,
     const RunSpec& spec, const std::function<void(const std::string&)>& progress);
@@ -52,8 +55,9 @@ std::vector<ScriptRuns> measure_scripts(const std::vector<std::string>& scripts,
                                         const RunSpec& spec,
                                         const std::function<void(const std::string&)>& progress);
 
-// 1 - time / baseline time, over the same frames (sums of the per-frame medians).
-double time_saved(const MeasuredRun& run, const MeasuredRun& baseline);
+// 1 - time / baseline time, over the same frames (sums of the per-frame medians of the run
+// and of the re-render interleaved with it); NaN without a baseline time.
+double time_saved(const MeasuredRun& run);
 // 1 - pixels written / baseline pixels written.
 double work_saved(const MeasuredRun& run, const MeasuredRun& baseline);
 
@@ -62,9 +66,9 @@ double work_saved(const MeasuredRun& run, const MeasuredRun& baseline);
 std::array<double, kLevelCount> level_percent_after_first(const MeasuredRun& run);
 
 // What the frames after the first at `level` cost relative to re-rendering the same frames:
-// sum of run.frame_ms over them / sum of baseline.frame_ms over them. NaN if there is none.
-// Precondition: baseline played the same frames.
-double relative_level_cost(const MeasuredRun& run, const MeasuredRun& baseline, Level level);
+// sum of run.frame_ms over them / sum of run.baseline_frame_ms over them. NaN if there is
+// none.
+double relative_level_cost(const MeasuredRun& run, Level level);
 
 // Median over the frames after the first of each term's per-frame flow measure (pixels),
 // and of their sum (index kTermCount).

@@ -85,39 +85,27 @@ SceneMeasurement measure_scene(const std::string& name, const Scene& scene,
   SceneMeasurement m;
   m.scene = name;
   m.polygons = static_cast<int>(scene.polygons.size());
-  std::vector<std::vector<double>> engine, rerender, conventional;  // [frame][repetition]
   const int reps = std::max(1, repetitions);
   RunSource source;
   source.scene = std::make_shared<const Scene>(scene);
   source.viewer = script;
   source.settings = settings;
-  for (int rep = 0; rep < reps; ++rep) {
-    if (progress) {
-      progress(name + " (" + std::to_string(m.polygons) + " polygons), repetition " +
-               std::to_string(rep + 1) + "/" + std::to_string(reps));
-    }
-    PlayOptions options;
-    options.max_frames = max_frames;
-    options.baseline = true;
-    options.conventional = rep < conventional_repetitions;
-    AnimationRun run = source_kind("scene").play(source, options);
-    const size_t frames = run.frames.size();
-    if (rep == 0) {
-      engine.assign(frames, {});
-      rerender.assign(frames, {});
-      conventional.assign(frames, {});
-    }
-    for (size_t f = 0; f < frames && f < engine.size(); ++f) {
-      engine[f].push_back(run.frames[f].time_ms);
-      rerender[f].push_back(run.baseline_ms[f]);
-      if (options.conventional) conventional[f].push_back(run.conventional_ms[f]);
-    }
-    if (rep == 0) m.run = std::move(run);
+  if (progress) {
+    progress(name + " (" + std::to_string(m.polygons) + " polygons), a warm-up and " +
+             count_of(reps, "timed repetition"));
   }
-  for (size_t f = 0; f < engine.size(); ++f) {
-    m.engine_ms.push_back(median_of(engine[f]));
-    m.rerender_ms.push_back(median_of(rerender[f]));
-    m.conventional_ms.push_back(median_of(conventional[f]));
+  PlayOptions options;  // the one timing of analysis/runs/run_driver.h, as the CLI's
+  options.max_frames = max_frames;
+  options.baseline = true;
+  options.warm_up = true;
+  options.timing_repetitions = reps;
+  options.conventional = conventional_repetitions > 0;
+  options.conventional_repetitions = conventional_repetitions;
+  m.run = source_kind("scene").play(source, options);
+  for (std::size_t f = 0; f < m.run.frames.size(); ++f) {
+    m.engine_ms.push_back(m.run.frames[f].time_ms);
+    m.rerender_ms.push_back(m.run.baseline_ms[f]);
+    m.conventional_ms.push_back(m.run.conventional_ms[f]);
   }
   return m;
 }

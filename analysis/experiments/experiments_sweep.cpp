@@ -24,7 +24,7 @@ std::string sweep_reading(const SweepScript& s, size_t k, const SweepSpec& spec)
   }
   if (!has_one) return "";
   const MeasuredRun& ref = s.runs[one];
-  const double dt = 100.0 * (time_saved(run, s.baseline) - time_saved(ref, s.baseline));
+  const double dt = 100.0 * (time_saved(run) - time_saved(ref));
   const double dw = 100.0 * (work_saved(run, s.baseline) - work_saved(ref, s.baseline));
   const double de = run.summary.max_measured_error_px - ref.summary.max_measured_error_px;
   return "vs 1 px: time saved " + signed_fixed(dt, 1) + " points, work saved " +
@@ -42,7 +42,7 @@ ReportTable sweep_table(const SweepResult& r) {
       const MeasuredRun& run = s.runs[k];
       std::vector<std::string> row = {s.script, fixed(r.spec.thresholds_px[k], 2)};
       for (double p : level_percent_after_first(run)) row.push_back(fixed(p, 1));
-      row.push_back(percent(time_saved(run, s.baseline)));
+      row.push_back(percent(time_saved(run)));
       row.push_back(percent(work_saved(run, s.baseline)));
       row.push_back(fixed(run.summary.max_measured_error_px, 2));
       row.push_back(fixed(run.summary.mean_psnr_db, 1));
@@ -114,7 +114,7 @@ ReportSection sweep_section(const SweepResult& result, ExperimentContext& contex
   for (double t : result.spec.thresholds_px) list += (list.empty() ? "" : ", ") + fixed(t, 2);
   s.paragraph(
       "Every Experiment 1 script in perspective mode with all four thresholds set to " + list +
-      " px, " + count_of(result.spec.run.repetitions, "interleaved repetition") +
+      " px, a warm-up and " + count_of(result.spec.run.repetitions, "timed repetition") +
       (result.spec.run.max_frames > 0
            ? ", at most " + std::to_string(result.spec.run.max_frames) + " frames per script"
            : ", whole scripts") +
@@ -124,8 +124,8 @@ ReportSection sweep_section(const SweepResult& result, ExperimentContext& contex
   s.table(sweep_table(result));
   Chart savings;
   savings.panels = {per_script_panel(result, "time saved against re-rendering", "%",
-                                     [](const SweepScript& sc, const MeasuredRun& run) {
-                                       return 100.0 * time_saved(run, sc.baseline);
+                                     [](const SweepScript&, const MeasuredRun& run) {
+                                       return 100.0 * time_saved(run);
                                      }),
                     per_script_panel(result, "work saved (pixels written)", "%",
                                      [](const SweepScript& sc, const MeasuredRun& run) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "image/image_compare.h"
 #include "runs/statistics.h"
@@ -69,39 +71,129 @@ double alpha_iou(const Image& a, const Image& b) {
   return either ? static_cast<double>(both) / static_cast<double>(either) : 1.0;
 }
 
+namespace {
+
+// One frame's times in each timed pass, for the medians.
+struct TimeSamples {
+  std::vector<double> frame, update, composite, visibility, baseline, conventional;
+  std::vector<std::vector<double>> layers;  // per layer report
+};
+
+// The passes of one run: the first records the frames (and PSNR, IoU, on_frame); the last
+// `timed` ones are timed.
+class RunLoop {
+ public:
+  RunLoop(Animator& animator, Animator* baseline, VtkSceneRenderer* conventional,
+          const RunOptions& options)
+      : animator_(animator), baseline_(baseline), conventional_(conventional), options_(options) {
+    const int all = animator.frame_count();
+    frames_ = options.max_frames < 0 ? all : std::min(all, options.max_frames);
+    passes_ = options.timing_repetitions + (options.warm_up ? 1 : 0);
+    samples_.resize(static_cast<std::size_t>(std::max(frames_, 0)));
+  }
+
+  AnimationRun run() {
+    for (int pass = 0; pass < passes_; ++pass) play_pass(pass);
+    take_medians();
+    run_.summary.frames = frames_;
+    run_.summary.layers = run_.frames.empty() ? 0 : run_.frames.front().layers;
+    run_.summary.conventional_iou =
+        conventional_ && baseline_ && frames_ > 0 ? iou_sum_ / frames_ : kNaN;
+    summarise(run_);
+    return std::move(run_);
+  }
+
+ private:
+  bool conventional_in(int pass) const {
+    if (!conventional_) return false;
+    if (pass == 0) return true;  // the recording pass, for the IoU
+    const int timed_index = pass - (options_.warm_up ? 1 : 0);
+    return options_.conventional_repetitions < 0 || timed_index < options_.conventional_repetitions;
+  }
+
+  void play_pass(int pass) {
+    const bool record = pass == 0;
+    const bool timed = pass >= (options_.warm_up ? 1 : 0);
+    const bool with_conventional = conventional_in(pass);
+    for (int i = 0; i < frames_; ++i) {
+      const AnimationFrame f = i == 0 ? animator_.start() : animator_.advance();
+      double baseline_ms = kNaN, conventional_ms = kNaN;
+      if (baseline_) {
+        const AnimationFrame b = i == 0 ? baseline_->start() : baseline_->advance();
+        baseline_ms = b.time_ms;
+        if (record) run_.summary.baseline_pixels += b.pixels_written;
+      }
+      if (with_conventional) conventional_ms = conventional_->render(animator_.view());
+      if (record) record_frame(i, f);
+      if (timed)
+        add_samples(samples_[static_cast<std::size_t>(i)], f, baseline_ms, conventional_ms);
+      if (options_.progress) options_.progress(pass * frames_ + i + 1, passes_ * frames_);
+    }
+  }
+
+  // The frame's deterministic facts, its PSNR and IoU against the baseline, on_frame.
+  void record_frame(int i, const AnimationFrame& f) {
+    run_.frames.push_back(f);
+    double psnr = kNaN;
+    if (baseline_ && (options_.psnr_when_nothing_drawn || f.drawn() > 0)) {
+      psnr = psnr_db(animator_.image(), baseline_->image());
+    }
+    if (conventional_ && baseline_)
+      iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
+    run_.psnr_db.push_back(psnr);
+    if (options_.on_frame) options_.on_frame(i, animator_.image());
+  }
+
+  static void add_samples(TimeSamples& t, const AnimationFrame& f, double baseline_ms,
+                          double conventional_ms) {
+    t.frame.push_back(f.time_ms);
+    t.update.push_back(f.update_ms);
+    t.composite.push_back(f.composite_ms);
+    t.visibility.push_back(f.visibility_ms);
+    t.baseline.push_back(baseline_ms);
+    t.conventional.push_back(conventional_ms);
+    t.layers.resize(std::max(t.layers.size(), f.layer_reports.size()));
+    for (std::size_t k = 0; k < f.layer_reports.size(); ++k) {
+      t.layers[k].push_back(f.layer_reports[k].time_ms);
+    }
+  }
+
+  void take_medians() {
+    for (std::size_t i = 0; i < run_.frames.size(); ++i) {
+      AnimationFrame& f = run_.frames[i];
+      const TimeSamples& t = samples_[i];
+      f.time_ms = median_of(t.frame);
+      f.update_ms = median_of(t.update);
+      f.composite_ms = median_of(t.composite);
+      f.visibility_ms = median_of(t.visibility);
+      for (std::size_t k = 0; k < f.layer_reports.size() && k < t.layers.size(); ++k) {
+        f.layer_reports[k].time_ms = median_of(t.layers[k]);
+      }
+      run_.baseline_ms.push_back(median_of(t.baseline));
+      run_.conventional_ms.push_back(median_of(t.conventional));
+    }
+  }
+
+  Animator& animator_;
+  Animator* baseline_;
+  VtkSceneRenderer* conventional_;
+  const RunOptions& options_;
+  int frames_ = 0;
+  int passes_ = 0;
+  std::vector<TimeSamples> samples_;  // per frame
+  double iou_sum_ = 0.0;
+  AnimationRun run_;
+};
+
+}  // namespace
+
 AnimationRun run_animator(Animator& animator, Animator* baseline, VtkSceneRenderer* conventional,
                           const RunOptions& options) {
-  AnimationRun run;
-  const int all = animator.frame_count();
-  const int frames = options.max_frames < 0 ? all : std::min(all, options.max_frames);
-  double iou_sum = 0.0;
-  for (int i = 0; i < frames; ++i) {
-    run.frames.push_back(i == 0 ? animator.start() : animator.advance());
-    const AnimationFrame& f = run.frames.back();
-    double baseline_ms = kNaN, conventional_ms = kNaN, psnr = kNaN;
-    if (baseline) {
-      const AnimationFrame b = i == 0 ? baseline->start() : baseline->advance();
-      baseline_ms = b.time_ms;
-      run.summary.baseline_pixels += b.pixels_written;
-      if (options.psnr_when_nothing_drawn || f.drawn() > 0) {
-        psnr = psnr_db(animator.image(), baseline->image());
-      }
-    }
-    if (conventional) {
-      conventional_ms = conventional->render(animator.view());
-      if (baseline) iou_sum += alpha_iou(conventional->image(), baseline->image());
-    }
-    run.baseline_ms.push_back(baseline_ms);
-    run.conventional_ms.push_back(conventional_ms);
-    run.psnr_db.push_back(psnr);
-    if (options.on_frame) options.on_frame(i, animator.image());
-    if (options.progress) options.progress(i + 1, frames);
+  if (options.timing_repetitions < 1) {
+    throw std::invalid_argument("run_animator: timing_repetitions must be at least 1, not " +
+                                std::to_string(options.timing_repetitions));
   }
-  run.summary.frames = frames;
-  run.summary.layers = run.frames.empty() ? 0 : run.frames.front().layers;
-  run.summary.conventional_iou = conventional && baseline && frames > 0 ? iou_sum / frames : kNaN;
-  summarise(run);
-  return run;
+  return RunLoop(animator, baseline, conventional, options).run();
 }
 
 }  // namespace oflab

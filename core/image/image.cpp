@@ -48,6 +48,15 @@ Image::Image(int width, int height, Pixel fill) {
 
 void Image::fill(Pixel value) { std::fill(pixels_.begin(), pixels_.end(), value); }
 
+void Image::reshape(int width, int height) {
+  check_dimensions(width, height);
+  const bool empty = width == 0 || height == 0;
+  width_ = empty ? 0 : width;
+  height_ = empty ? 0 : height;
+  // resize() never gives memory back, so a buffer that shrinks and grows again stays put.
+  pixels_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+}
+
 Image image_from_straight_rgba(int width, int height,
                                const std::vector<std::uint8_t>& straight_rgba) {
   check_dimensions(width, height);

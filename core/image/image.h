@@ -71,6 +71,11 @@ class Image {
   // Sets every pixel to `value`.
   void fill(Pixel value);
 
+  // Makes the image width x height, keeping its storage when that is large enough (no
+  // allocation then): pixel values are unspecified afterwards, the caller writes them all.
+  // Throws std::invalid_argument as the constructor does.
+  void reshape(int width, int height);
+
  private:
   int width_ = 0;
   int height_ = 0;

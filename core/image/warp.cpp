@@ -1,10 +1,13 @@
 // Layer warps: the public entry points (warp.h) over warp_plan.h and warp_kernels.h.
 #include "image/warp.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "image/scan_conversion.h"
 #include "image/warp_kernels.h"
 #include "image/warp_plan.h"
 
@@ -33,6 +36,46 @@ void layer_box(const ConvexPolygon& polygon, int& x0, int& y0, int& width, int& 
   y0 = static_cast<int>(top);
   width = static_cast<int>(w);
   height = static_cast<int>(h);
+}
+
+// Each row's span of `polygon` in an image of the given size (empty rows as {0, 0}), into
+// `spans` (its memory reused).
+void row_spans(const ConvexPolygon& polygon, int width, int height, std::vector<PixelSpan>& spans) {
+  spans.assign(static_cast<std::size_t>(height), PixelSpan{});
+  ScanConverter scan(polygon, width, height);
+  PixelSpan span;
+  while (scan.next(span)) spans[static_cast<std::size_t>(span.y)] = span;
+}
+
+// `image` was a layer of old_width x old_height pixels, transparent outside `old_polygon`,
+// and has been reshaped (same memory, row after row). Makes transparent the pixels the
+// old layer covered that the new spans do not: every other pixel is transparent already
+// or written by the next warp. For consecutive frames of an animation the two polygons
+// nearly coincide, so this touches few pixels.
+void clear_previous(const ConvexPolygon& old_polygon, int old_width, int old_height,
+                    const std::vector<PixelSpan>& spans, Image& image) {
+  const std::int64_t width = image.width();
+  const std::int64_t size = static_cast<std::int64_t>(image.pixel_count());
+  Pixel* pixels = image.pixels().data();
+  const auto clear = [&](std::int64_t row, std::int64_t from, std::int64_t to) {
+    if (from < to) std::fill(pixels + row * width + from, pixels + row * width + to, Pixel{});
+  };
+  ScanConverter scan(old_polygon, old_width, old_height);
+  PixelSpan old;
+  while (scan.next(old)) {
+    std::int64_t i = static_cast<std::int64_t>(old.y) * old_width + old.x_begin;
+    const std::int64_t end =
+        std::min(size, static_cast<std::int64_t>(old.y) * old_width + old.x_end);
+    while (i < end) {  // the old span's flat range, cut into the new rows
+      const std::int64_t row = i / width, from = i % width;
+      const std::int64_t to = from + std::min(end - i, width - from);
+      const PixelSpan& keep = spans[static_cast<std::size_t>(row)];
+      const std::int64_t begin = keep.x_begin < keep.x_end ? keep.x_begin : width;
+      clear(row, from, std::min<std::int64_t>(to, begin));
+      clear(row, std::max<std::int64_t>(from, keep.x_begin < keep.x_end ? keep.x_end : width), to);
+      i += to - from;
+    }
+  }
 }
 
 }  // namespace
@@ -71,21 +114,39 @@ WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image
 
 WarpedLayer warp_layer(const Layer& source, const Mat3& source_to_dest,
                        const WarpOptions& options) {
-  const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);
   WarpedLayer result;
-  result.stats.kernel_used = kernel_name(prepared.affine_kernel);
-  if (prepared.warped_polygon.empty()) return result;
+  warp_layer_reusing(source, source_to_dest, result, options);
+  return result;
+}
 
+void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedLayer& result,
+                        const WarpOptions& options) {
+  const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);
+  WarpStats stats;
+  stats.kernel_used = kernel_name(prepared.affine_kernel);
+  if (prepared.warped_polygon.empty()) {
+    result.layer.image.reshape(0, 0);
+    result.layer.polygon = ConvexPolygon();
+    result.offset_x = result.offset_y = 0;
+    result.stats = stats;
+    return;
+  }
   int x0 = 0, y0 = 0, width = 0, height = 0;
   layer_box(prepared.warped_polygon, x0, y0, width, height);
-  Image image(width, height);
-  const WarpPlan plan = plan_warp(prepared, options.sampling, width, height, x0, y0);
-  result.stats.pixels_written = run_warp_kernel(plan, source.image, image);
+  WarpPlan plan = plan_warp(prepared, options.sampling, width, height, x0, y0);
+  // Nothing above throws once the layer is touched, so a refused warp leaves it as it was.
+  thread_local std::vector<PixelSpan> spans;  // memory kept from warp to warp
+  row_spans(plan.polygon, width, height, spans);
+  Image& image = result.layer.image;
+  const int old_width = image.width(), old_height = image.height();
+  image.reshape(width, height);
+  clear_previous(result.layer.polygon, old_width, old_height, spans, image);
+  stats.pixels_written = run_warp_kernel(plan, source.image, image);
   // plan.polygon is the warped polygon in the new layer's pixel coordinates.
-  result.layer = make_layer(std::move(image), plan.polygon);
+  result.layer.polygon = std::move(plan.polygon);
   result.offset_x = x0;
   result.offset_y = y0;
-  return result;
+  result.stats = stats;
 }
 
 WarpStats warp_affine_into(const Layer& source, const Mat3& source_to_dest, Image& output,

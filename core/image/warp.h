@@ -100,6 +100,17 @@ WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image
 WarpedLayer warp_layer(const Layer& source, const Mat3& source_to_dest,
                        const WarpOptions& options = {});
 
+// warp_layer into `result`, reusing the memory of its image when it is large enough (no
+// allocation of pixels then: an animation that warps into the same results every frame
+// allocates pixels only while its layers grow). Precondition: `result` is empty or holds
+// a layer transparent outside its polygon (any result of a warp, or a copy of one). The
+// outcome equals warp_layer's, pixel for pixel: the kernel writes the pixels inside the
+// warped polygon, and of the others only those the previous layer covered are cleared,
+// the rest being transparent already. Throws std::invalid_argument as warp_layer, and
+// then leaves `result` unchanged.
+void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedLayer& result,
+                        const WarpOptions& options = {});
+
 // The two kernels, for benchmarks and tests: warp_layer_into with options.kernel forced.
 // warp_affine_into throws std::invalid_argument if M is not affine.
 WarpStats warp_affine_into(const Layer& source, const Mat3& source_to_dest, Image& output,

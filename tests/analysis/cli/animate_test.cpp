@@ -3,6 +3,8 @@
 // command-line contract.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -140,6 +142,28 @@ TEST(AnimateCommand, JsonSummaryHasTheContractedFields) {
     EXPECT_TRUE(j.contains(k)) << k;
   }
   EXPECT_GT(j["work_saved"].get<double>(), 0.5);
+  // The medians of the timed passes, engine and interleaved re-render.
+  EXPECT_GT(j["median_frame_ms"].get<double>(), 0.0);
+  EXPECT_GT(j["baseline_median_frame_ms"].get<double>(), 0.0);
+}
+
+TEST(AnimateCommand, RepeatTimingTakesAPositiveWholeNumber) {
+  for (const char* n : {"1", "2", "5"}) {
+    const Cli c = cli({"animate", "--script", "zoom", "--frames", "5", "--repeat-timing", n,
+                       "--json"});
+    EXPECT_EQ(c.code, 0) << n << ": " << c.err;
+  }
+  for (const char* n : {"0", "-3", "2.5", "x", "1001"}) {
+    const Cli c = cli({"animate", "--script", "zoom", "--frames", "5", "--repeat-timing", n});
+    EXPECT_EQ(c.code, 2) << n;
+    EXPECT_NE(c.err.find("--repeat-timing"), std::string::npos) << c.err;
+    EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;  // one line
+  }
+  EXPECT_EQ(cli({"animate", "--script", "zoom", "--repeat-timing"}).code, 2);
+  const Cli scene = cli({"animate", "--scene", "four-cubes", "--script", "circle", "--frames", "3",
+                         "--repeat-timing", "0"});
+  EXPECT_EQ(scene.code, 2);
+  EXPECT_NE(scene.err.find("--repeat-timing"), std::string::npos) << scene.err;
 }
 
 TEST(AnimateCommand, AllScriptsRunInAllModes) {

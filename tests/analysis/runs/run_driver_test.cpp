@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -86,6 +89,100 @@ TEST(RunDriver, PlaysTheBaselineInTheSameLoopFrameByFrame) {
   EXPECT_DOUBLE_EQ(run.summary.baseline_time_ms, baseline_ms);
   EXPECT_GT(run.summary.baseline_pixels, run.summary.pixels);  // the zoom warps less
   for (double t : run.conventional_ms) EXPECT_TRUE(std::isnan(t));
+}
+
+// Forwards to an animator but reports scripted times: `ms(pass, frame)`, the pass counted
+// by the calls of start() from 0.
+class ScriptedTimeAnimator final : public Animator {
+ public:
+  ScriptedTimeAnimator(std::unique_ptr<Animator> inner, std::function<double(int, int)> ms)
+      : inner_(std::move(inner)), ms_(std::move(ms)) {}
+  int frame_count() const override { return inner_->frame_count(); }
+  int frame() const override { return inner_->frame(); }
+  AnimationFrame start() override {
+    ++starts_;
+    return timed(inner_->start());
+  }
+  AnimationFrame advance() override { return timed(inner_->advance()); }
+  const Image& image() const override { return inner_->image(); }
+  const Camera& camera() const override { return inner_->camera(); }
+  std::vector<LayerOutline> outlines() const override { return inner_->outlines(); }
+  const Scene& scene() const override { return inner_->scene(); }
+  ViewerPose view() const override { return inner_->view(); }
+  int starts() const { return starts_; }
+
+ private:
+  AnimationFrame timed(AnimationFrame f) {
+    f.time_ms = f.update_ms = ms_(starts_ - 1, f.frame);
+    for (FrameReport& r : f.layer_reports) r.time_ms = f.time_ms;
+    return f;
+  }
+  std::unique_ptr<Animator> inner_;
+  std::function<double(int, int)> ms_;
+  int starts_ = 0;
+};
+
+// A warm-up pass whose times are thrown away, then per-frame medians over the timed passes,
+// for the animator, its layer reports and the interleaved baseline; the frames themselves
+// (and on_frame) come from one pass.
+TEST(RunDriver, TimesAreMediansOverTheTimedPassesAfterAnUntimedWarmUp) {
+  const RunSource source = plane_source("zoom");
+  const SourceKind& plane = source_kind("plane");
+  // Pass 0 is the warm-up (huge times); passes 1..3 give i+1, 10(i+1), 2(i+1): median 2(i+1).
+  const auto engine_ms = [](int pass, int i) {
+    const double k[] = {1000.0, 1.0, 10.0, 2.0};
+    return k[pass] * (i + 1);
+  };
+  const auto baseline_ms = [](int pass, int i) {
+    const double k[] = {500.0, 3.0, 4.0, 30.0};
+    return k[pass] * (i + 1);
+  };
+  ScriptedTimeAnimator animator(plane.make(source, false), engine_ms);
+  ScriptedTimeAnimator baseline(plane.make(source, true), baseline_ms);
+  RunOptions options;
+  options.max_frames = 4;
+  options.warm_up = true;
+  options.timing_repetitions = 3;
+  int progress_calls = 0, frames_shown = 0;
+  options.progress = [&](int done, int total) {
+    EXPECT_EQ(total, 16);
+    EXPECT_EQ(done, ++progress_calls);
+  };
+  options.on_frame = [&](int i, const Image&) { EXPECT_EQ(i, frames_shown++); };
+  const AnimationRun run = run_animator(animator, &baseline, nullptr, options);
+  EXPECT_EQ(animator.starts(), 4);
+  EXPECT_EQ(baseline.starts(), 4);
+  EXPECT_EQ(progress_calls, 16);
+  EXPECT_EQ(frames_shown, 4);
+  ASSERT_EQ(run.frames.size(), 4u);
+  double engine_sum = 0.0, baseline_sum = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const AnimationFrame& f = run.frames[static_cast<std::size_t>(i)];
+    EXPECT_EQ(f.frame, i);
+    EXPECT_DOUBLE_EQ(f.time_ms, 2.0 * (i + 1));
+    EXPECT_DOUBLE_EQ(f.update_ms, 2.0 * (i + 1));
+    EXPECT_DOUBLE_EQ(f.layer_reports.at(0).time_ms, 2.0 * (i + 1));
+    EXPECT_DOUBLE_EQ(run.baseline_ms[static_cast<std::size_t>(i)], 4.0 * (i + 1));
+    EXPECT_TRUE(std::isfinite(run.psnr_db[static_cast<std::size_t>(i)]));
+    engine_sum += 2.0 * (i + 1);
+    baseline_sum += 4.0 * (i + 1);
+  }
+  EXPECT_DOUBLE_EQ(run.summary.time_ms, engine_sum);
+  EXPECT_DOUBLE_EQ(run.summary.baseline_time_ms, baseline_sum);
+  EXPECT_DOUBLE_EQ(run.summary.median_frame_ms, 5.0);  // of 2, 4, 6, 8
+  EXPECT_DOUBLE_EQ(run.summary.baseline_median_frame_ms, 10.0);
+  EXPECT_DOUBLE_EQ(run.summary.time_saved, 1.0 - engine_sum / baseline_sum);
+  // Pixels count one pass, not four.
+  std::int64_t pixels = 0;
+  for (const AnimationFrame& f : run.frames) pixels += f.pixels_written;
+  EXPECT_EQ(run.summary.pixels, pixels);
+}
+
+TEST(RunDriver, RefusesFewerThanOneTimedPass) {
+  const std::unique_ptr<Animator> animator = source_kind("plane").make(plane_source("zoom"), false);
+  RunOptions options;
+  options.timing_repetitions = 0;
+  EXPECT_THROW(run_animator(*animator, nullptr, nullptr, options), std::invalid_argument);
 }
 
 TEST(RunDriver, WithoutABaselineNothingIsComparedOrSaved) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <set>
 #include <vector>
 
 #include "image/composite.h"
@@ -123,6 +124,27 @@ TEST(Engine, APolicyOutsideTheRegistryDrivesTheEngineAndSeesLevelCosts) {
     EXPECT_GE(in.pixels[int(Level::kPerspective)], area);
     EXPECT_EQ(r.level, b.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose).level)
         << "frame " << i;
+  }
+}
+
+// Steady state: a plane spinning in its own plane keeps its layer size, so after the first
+// frames every warp reuses the same few layer buffers (the displayed layer and the warp
+// scratch swap; the cache is copied into its own memory), in every policy.
+TEST(Engine, SteadyFramesReuseTheLayerBuffers) {
+  const Camera cam = make_camera(256.0, 320, 240);
+  const auto frames = expand_segments(facing_pose(2.0), MotionModel::kSpinAboutCentre,
+                                      {{80, Vec3(0.0), Vec3(0.0, 0.0, 0.05)}});
+  for (const ReusePolicy& policy : reuse_policies()) {
+    EngineSettings settings;
+    settings.policy = &policy;
+    PlaneAnimator a(cam, checker_texture(96, 96), settings);
+    a.start(frames[0].pose);
+    std::set<const Pixel*> buffers;
+    for (size_t i = 1; i < frames.size(); ++i) {
+      a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
+      if (i >= 20) buffers.insert(a.displayed().layer.image.pixels().data());
+    }
+    EXPECT_LE(buffers.size(), 3u) << policy.name;
   }
 }
 

@@ -392,6 +392,61 @@ TEST(WarpKernels, NewLayerIsTransparentOutsideItsPolygonAndCoversIt) {
   EXPECT_NEAR(opaque, 2500.0, 100.0);
 }
 
+// warp_layer_reusing against a fresh warp_layer of the same case (the reference: a new,
+// zero-filled layer), over a chain of warps into one result whose layers grow, shrink,
+// change shape, move and sometimes vanish, with either sampling.
+TEST(WarpKernels, ReusingWarpEqualsAFreshWarpPixelForPixel) {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (Sampling sampling : {Sampling::kNearest, Sampling::kBilinear}) {
+    WarpedLayer reused;
+    for (int step = 0; step < 200; ++step) {
+      const Layer source =
+          make_layer(testing::random_image(rng, 40, 30), testing::random_polygon(rng, 40, 30));
+      const double scale = std::exp(0.8 * unit(rng));
+      Mat3 m = rotation_about(180.0 * unit(rng), 20.0, 15.0) *
+               mat3_from_rows({scale, 0.2 * unit(rng), 30.0 * unit(rng)},
+                              {0.0, scale, 30.0 * unit(rng)}, {0.0, 0.0, 1.0});
+      if (step % 3 == 0)
+        m = mat3_from_rows({1, 0, 0}, {0, 1, 0}, {0.004 * unit(rng), 0.004 * unit(rng), 1}) * m;
+      if (step % 17 == 0) m = translation_matrix(1e4, 0.0) * m;  // may leave nothing visible
+      const WarpedLayer fresh = warp_layer(source, m, {sampling});
+      warp_layer_reusing(source, m, reused, {sampling});
+      ASSERT_EQ(reused.offset_x, fresh.offset_x) << step;
+      ASSERT_EQ(reused.offset_y, fresh.offset_y) << step;
+      ASSERT_EQ(reused.stats.pixels_written, fresh.stats.pixels_written) << step;
+      ASSERT_EQ(reused.layer.image.width(), fresh.layer.image.width()) << step;
+      ASSERT_EQ(reused.layer.image.height(), fresh.layer.image.height()) << step;
+      ASSERT_TRUE(reused.layer.image.pixels() == fresh.layer.image.pixels()) << "step " << step;
+      ASSERT_EQ(reused.layer.polygon.vertices(), fresh.layer.polygon.vertices()) << step;
+    }
+  }
+}
+
+TEST(WarpKernels, ReusingWarpKeepsTheMemoryWhenTheLayerDoesNotGrow) {
+  const Layer layer = make_layer(Image(50, 50, Pixel{10, 20, 30, 255}));
+  WarpedLayer reused;
+  warp_layer_reusing(layer, rotation_about(45.0, 25.0, 25.0), reused);
+  const Pixel* memory = reused.layer.image.pixels().data();
+  for (double degrees : {40.0, 10.0, 0.0, 30.0, 45.0}) {
+    warp_layer_reusing(layer, rotation_about(degrees, 25.0, 25.0), reused);
+    EXPECT_EQ(reused.layer.image.pixels().data(), memory) << degrees;
+  }
+}
+
+TEST(WarpKernels, RefusedReusingWarpLeavesTheResultAsItWas) {
+  const Layer layer = make_layer(Image(20, 20, Pixel{1, 2, 3, 255}));
+  WarpedLayer reused;
+  warp_layer_reusing(layer, translation_matrix(3.0, 4.0), reused);
+  const WarpedLayer before = reused;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(warp_layer_reusing(layer, translation_matrix(nan, 0.0), reused),
+               std::invalid_argument);
+  EXPECT_TRUE(reused.layer.image.pixels() == before.layer.image.pixels());
+  EXPECT_EQ(reused.offset_x, before.offset_x);
+  EXPECT_EQ(reused.layer.polygon.vertices(), before.layer.polygon.vertices());
+}
+
 TEST(WarpKernels, ZeroSizeImagesGiveEmptyResults) {
   const Layer empty = make_layer(Image());
   Image output(10, 10, kSentinel);
