@@ -18,6 +18,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QPainter>
+
 #include "flow/homography.h"
 #include "adapters/vtk_adapters.h"
 
@@ -74,6 +76,17 @@ double arrow_spacing(const FlowContext& context, const FlowDisplay& display) {
   return std::clamp(extent / 14.0, 6.0, 48.0);
 }
 
+// The smallest 1, 2 or 5 times a power of ten at or above `value` (> 0), so the colour bar
+// keeps its labels while the largest magnitude drifts from frame to frame.
+double round_up_to_nice(double value) {
+  if (!(value > 0.0)) return 1.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(value)));
+  for (double step : {1.0, 2.0, 5.0, 10.0}) {
+    if (step * decade >= value * (1.0 - 1e-12)) return step * decade;
+  }
+  return 10.0 * decade;
+}
+
 }  // namespace
 
 FlowRenderer::FlowRenderer(vtkRenderWindow* window) : window_(window), theme_(view_theme(false)) {
@@ -126,7 +139,6 @@ void FlowRenderer::create_actors() {
   texture_->InterpolateOn();
   plane_->SetTexture(texture_);
   plane_->GetProperty()->LightingOff();
-  plane_->GetProperty()->SetOpacity(0.45);
   scene_->AddActor(plane_);
   frame_ = line_actor();
   outline_ = line_actor();
@@ -200,7 +212,22 @@ void FlowRenderer::create_legend_and_text() {
 }
 
 void FlowRenderer::set_texture(const QImage& texture) {
-  texture_->SetInputData(image_data_from_qimage(texture));
+  texture_image_ = texture;
+  update_faded_texture();
+}
+
+// The texture faded towards the background, drawn opaque: the same picture as a
+// translucent plane, without VTK's translucent pass (several full-window passes on a
+// software renderer).
+void FlowRenderer::update_faded_texture() {
+  if (texture_image_.isNull()) return;
+  QImage faded(texture_image_.size(), QImage::Format_RGB32);
+  faded.fill(QColor::fromRgbF(theme_.background[0], theme_.background[1], theme_.background[2]));
+  QPainter painter(&faded);
+  painter.setOpacity(theme_.presentation ? 0.6 : 0.45);
+  painter.drawImage(0, 0, texture_image_);
+  painter.end();
+  texture_->SetInputData(image_data_from_qimage(faded));
 }
 
 void FlowRenderer::set_theme(const ViewTheme& theme) {
@@ -223,7 +250,7 @@ void FlowRenderer::set_theme(const ViewTheme& theme) {
     p->ItalicOff();
     p->ShadowOff();
   }
-  plane_->GetProperty()->SetOpacity(theme.presentation ? 0.6 : 0.45);
+  update_faded_texture();
 }
 
 double FlowRenderer::smallest_text_px() const {
@@ -302,11 +329,18 @@ void FlowRenderer::update_arrows(const std::vector<FlowSample>& samples, double 
   arrow_input_->GetPointData()->SetVectors(vectors);
   arrow_input_->GetPointData()->SetScalars(magnitudes);
   arrow_input_->Modified();
-  auto table = magnitude_lookup_table(shown_max_, theme_.presentation ? 0.8 : 1.0);
-  auto* mapper = arrows_->GetMapper();
-  mapper->SetLookupTable(table);
-  mapper->SetScalarRange(table->GetRange());
-  scalar_bar_->SetLookupTable(table);
+  // A new table only when the bar's rounded range changes: rebuilding the scalar bar is
+  // a large part of a frame.
+  const double bar_max = round_up_to_nice(shown_max_);
+  if (bar_max != bar_max_ || bar_presentation_ != theme_.presentation) {
+    bar_max_ = bar_max;
+    bar_presentation_ = theme_.presentation;
+    auto table = magnitude_lookup_table(bar_max, theme_.presentation ? 0.8 : 1.0);
+    auto* mapper = arrows_->GetMapper();
+    mapper->SetLookupTable(table);
+    mapper->SetScalarRange(table->GetRange());
+    scalar_bar_->SetLookupTable(table);
+  }
   arrows_->SetVisibility(display.arrows);
   scalar_bar_->SetVisibility(display.arrows);
   scalar_title_->SetVisibility(display.arrows);

@@ -51,6 +51,7 @@ class FlowRenderer {
   double smallest_text_px() const;
 
  private:
+  void update_faded_texture();
   void create_actors();
   void create_arrow_pipeline();
   void create_legend_and_text();
@@ -74,6 +75,9 @@ class FlowRenderer {
   Vec2 view_half_size_{400.0, 300.0};  // half the image region that must stay visible, px
   ViewTheme theme_;
   double shown_max_ = 0.0;
+  double bar_max_ = -1.0;           // colour bar's upper end (px/s), a 1-2-5 step
+  bool bar_presentation_ = false;   // theme the bar's table was made for
+  QImage texture_image_;            // the plane's texture as given
   vtkSmartPointer<vtkRenderer> scene_, overlay_, legend_, side_;
   vtkSmartPointer<vtkCallbackCommand> fit_callback_;
   vtkSmartPointer<vtkActor> plane_, frame_, outline_, centre_mark_, arrows_, streamlines_,

@@ -42,8 +42,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("oflab - Optic Flow Lab"));
   model_ = new SceneModel(this);
   motion_timer_ = new QTimer(this);
+  motion_timer_->setTimerType(Qt::PreciseTimer);
   motion_timer_->setInterval(static_cast<int>(1000.0 * SceneModel::kSecondsPerFrame));
-  connect(motion_timer_, &QTimer::timeout, this, [this] { model_->advance(1); });
+  // Frames follow the wall clock: a late tick advances by the frames due (dropping some),
+  // so the motion keeps real speed when drawing is slower than the rate.
+  connect(motion_timer_, &QTimer::timeout, this, [this] {
+    const int due = pacer_.frames_due(play_clock_.elapsed());
+    if (due > 0) model_->advance(due);
+  });
 
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
@@ -215,9 +221,8 @@ void MainWindow::add_scrub_controls(QToolBar* bar) {
   for (int fps : {5, 10, 15, 30, 60}) speed_box_->addItem(tr("%1 fps").arg(fps), fps);
   speed_box_->setCurrentIndex(3);
   bar->addWidget(speed_box_);
-  connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this, [this] {
-    motion_timer_->setInterval(1000 / speed_box_->currentData().toInt());
-  });
+  connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this] { set_play_rate(speed_box_->currentData().toInt()); });
 }
 
 void MainWindow::update_frame_label() {
@@ -322,12 +327,24 @@ void MainWindow::set_presentation(bool on) {
   fit_scene_panel();
 }
 
+int MainWindow::play_rate() const { return speed_box_->currentData().toInt(); }
+
+void MainWindow::set_play_rate(int frames_per_second) {
+  const int index = std::max(0, speed_box_->findData(frames_per_second));
+  speed_box_->setCurrentIndex(index);
+  motion_timer_->setInterval(1000 / play_rate());
+  play_clock_.start();
+  pacer_.start(0, play_rate());
+}
+
 bool MainWindow::motion_playing() const { return play_action_->isChecked(); }
 
 void MainWindow::set_motion_playing(bool playing) {
   const QSignalBlocker block(play_action_);
   play_action_->setChecked(playing);
   if (playing && !external_clock_) {
+    play_clock_.start();
+    pacer_.start(0, play_rate());
     motion_timer_->start();
   } else {
     motion_timer_->stop();

@@ -4,10 +4,12 @@
 // controls for the scene's motion; presentation mode.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <vector>
 
 #include "app/lessons.h"
+#include "models/frame_pacer.h"
 
 class QAction;
 class QComboBox;
@@ -80,6 +82,11 @@ class MainWindow : public QMainWindow {
   bool presentation() const { return presentation_; }
   void set_presentation(bool on);
 
+  // Live play rate in frames per second, one of the speed box's (5, 10, 15, 30, 60); an
+  // unknown rate picks the first. Frames follow the wall clock (models/frame_pacer.h).
+  int play_rate() const;
+  void set_play_rate(int frames_per_second);
+
   bool motion_playing() const;
   void set_motion_playing(bool playing);
 
@@ -142,6 +149,8 @@ class MainWindow : public QMainWindow {
   QLabel* message_banner_ = nullptr;
   QLabel* frame_label_ = nullptr;
   QTimer* motion_timer_;
+  QElapsedTimer play_clock_;
+  FramePacer pacer_;
   QAction* play_action_ = nullptr;
   QAction* step_action_ = nullptr;
   QAction* back_action_ = nullptr;
