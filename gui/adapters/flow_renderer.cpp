@@ -148,7 +148,8 @@ void FlowRenderer::create_actors() {
   wheel_legend_->GetProperty()->LightingOff();
   wheel_image_ = vtkSmartPointer<vtkImageActor>::New();
   wheel_image_->GetProperty()->SetInterpolationTypeToLinear();
-  wheel_image_->GetMapper()->SetInputData(vtkSmartPointer<vtkImageData>::New());
+  wheel_data_ = vtkSmartPointer<vtkImageData>::New();
+  wheel_image_->GetMapper()->SetInputData(wheel_data_);
   wheel_image_->VisibilityOff();
   create_arrow_pipeline();
   create_legend_and_text();
@@ -352,12 +353,15 @@ void FlowRenderer::update_streamlines(const FlowContext& context, const FlowDisp
   if (display.streamlines && arrow_seconds > 0.0) {
     const double seed_spacing = 2.0 * arrow_spacing(context, display);
     for (const FlowSample& seed : sample_flow_grid(context, FlowPart::kTranslation, seed_spacing)) {
-      std::vector<Vec3> line;
-      for (const Vec2& p :
-           trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16)) {
-        line.push_back(image_plane_point(context.camera, p));
+      const std::vector<Vec2> path =
+          trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16);
+      // The line, then an arrow head at its end so the direction reads.
+      for (const std::vector<Vec2>& part : {path, streamline_arrow_head(path, 0.3 * seed_spacing)}) {
+        if (part.size() < 2) continue;
+        std::vector<Vec3> line;
+        for (const Vec2& p : part) line.push_back(image_plane_point(context.camera, p));
+        lines.push_back(line);
       }
-      lines.push_back(line);
     }
   }
   set_input(streamlines_, polylines(lines));
@@ -387,22 +391,28 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
       largest = std::max(largest, glm::length(flows[k]));
     }
   }
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(nx, ny, 1);
+  // One image kept from frame to frame, opaque (RGB, the background where the plane is
+  // not seen): a translucent image would cost VTK's translucent pass every frame.
+  vtkImageData* image = wheel_data_;
+  if (image->GetDimensions()[0] != nx || image->GetDimensions()[1] != ny) {
+    image->SetDimensions(nx, ny, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  }
   // Slightly behind the image plane (same projection), so arrows and lines draw on top.
   constexpr double kBehind = 1.002;
   const Vec3 origin = kBehind * image_plane_point(context.camera, centre_of(0, 0));
   image->SetOrigin(origin.x, origin.y, origin.z);
   const double step = kBehind * kWheelStepPx / context.camera.focal_px;
   image->SetSpacing(step, step, 1.0);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
-  auto* rgba = static_cast<unsigned char*>(image->GetScalarPointer());
+  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
+  const Rgb8 background{static_cast<unsigned char>(std::lround(255.0 * theme_.background[0])),
+                        static_cast<unsigned char>(std::lround(255.0 * theme_.background[1])),
+                        static_cast<unsigned char>(std::lround(255.0 * theme_.background[2]))};
   for (size_t k = 0; k < flows.size(); ++k) {
-    const Rgb8 c = flow_wheel_colour(flows[k], largest);
-    const unsigned char a = inside[k] ? 230 : 0;
-    rgba[4 * k] = c.r, rgba[4 * k + 1] = c.g, rgba[4 * k + 2] = c.b, rgba[4 * k + 3] = a;
+    const Rgb8 c = inside[k] ? flow_wheel_colour(flows[k], largest) : background;
+    rgb[3 * k] = c.r, rgb[3 * k + 1] = c.g, rgb[3 * k + 2] = c.b;
   }
-  wheel_image_->GetMapper()->SetInputData(image);
+  image->Modified();
   wheel_caption_->SetInput(QStringLiteral("Colour wheel (bottom right): hue = direction, "
                                           "white to full colour = 0 to %1 px/s")
                                .arg(largest, 0, 'g', 3)

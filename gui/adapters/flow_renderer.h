@@ -11,6 +11,7 @@
 
 #include <vtkActor.h>
 #include <vtkImageActor.h>
+#include <vtkImageData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -85,6 +86,7 @@ class FlowRenderer {
   vtkSmartPointer<vtkTexture> texture_;
   vtkSmartPointer<vtkPolyData> arrow_input_;
   vtkSmartPointer<vtkImageActor> wheel_image_;
+  vtkSmartPointer<vtkImageData> wheel_data_;  // the wheel's colours, reused
   vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
   vtkSmartPointer<vtkTextActor> caption_, wheel_caption_, scalar_title_;
 };
