@@ -21,13 +21,15 @@
 #include <QPainter>
 
 #include "flow/homography.h"
+#include "scene/view_culling.h"
 #include "adapters/vtk_adapters.h"
 
 namespace oflab {
 namespace {
 
 constexpr double kDegreesPerRadian = 57.29577951308232;
-constexpr double kWheelStepPx = 3.0;  // wheel image resolution, image pixels per cell
+constexpr double kWheelStepPx = 3.0;
+constexpr double kNearPlane = 1e-3;  // world units: nearer than this counts as not seen  // wheel image resolution, image pixels per cell
 
 vtkSmartPointer<vtkActor> line_actor() {
   auto actor = vtkSmartPointer<vtkActor>::New();
@@ -280,9 +282,15 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   const bool rounding_only = shown_max_ <= 1e-9 * full_max;
   const double scale_max = display.common_scale || rounding_only ? full_max : shown_max_;
   const double arrow_seconds = scale_max > 0.0 ? 0.9 * spacing / scale_max : 0.0;
-  update_arrows(shown, arrow_seconds, display);
-  update_streamlines(context, display, arrow_seconds);
-  update_wheel(context, display);
+  // A plane that has left the picture has no flow to show: no arrows, lines, wheel or
+  // colour bar, and the caption says so (the side table's terms are those of the plane
+  // extended beyond the image).
+  plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane);
+  FlowDisplay drawn = display;
+  if (!plane_in_image_) drawn.arrows = drawn.streamlines = drawn.colour_wheel = false;
+  update_arrows(shown, arrow_seconds, drawn);
+  update_streamlines(context, drawn, arrow_seconds);
+  update_wheel(context, drawn);
   update_caption(display, frame_caption);
 }
 
@@ -421,6 +429,12 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
 }
 
 void FlowRenderer::update_caption(const FlowDisplay& display, const QString& frame_caption) {
+  if (!plane_in_image_) {
+    caption_text_ = QStringLiteral("The plane is outside the image: no flow to show");
+    if (!frame_caption.isEmpty()) caption_text_ += QStringLiteral("\n") + frame_caption;
+    caption_->SetInput(caption_text_.toUtf8().constData());
+    return;
+  }
   const bool residual =
       display.part == FlowPart::kExactMinusHomography || display.part == FlowPart::kExactMinusAffine;
   QString text = QStringLiteral("%1   max |v| = %2 px/s")
@@ -428,6 +442,7 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
                      .arg(shown_max_, 0, 'g', 3);
   if (residual && shown_max_ < 1e-6) text += QStringLiteral(" (zero up to rounding)");
   if (!frame_caption.isEmpty()) text += QStringLiteral("\n") + frame_caption;
+  caption_text_ = text;
   caption_->SetInput(text.toUtf8().constData());
 }
 

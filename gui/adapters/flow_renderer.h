@@ -50,6 +50,11 @@ class FlowRenderer {
   // The smallest font of its captions, colour-bar title and labels, screen pixels (VTK
   // font points at the window's DPI).
   double smallest_text_px() const;
+  // False when no part of the plane is seen inside the image (scene/view_culling.h's
+  // plane_meets_image) after the last update: nothing but the caption is drawn then.
+  bool plane_in_image() const { return plane_in_image_; }
+  // The caption line(s) drawn at the top left after the last update.
+  const QString& caption() const { return caption_text_; }
 
  private:
   void update_faded_texture();
@@ -76,6 +81,8 @@ class FlowRenderer {
   Vec2 view_half_size_{400.0, 300.0};  // half the image region that must stay visible, px
   ViewTheme theme_;
   double shown_max_ = 0.0;
+  bool plane_in_image_ = true;
+  QString caption_text_;
   double bar_max_ = -1.0;           // colour bar's upper end (px/s), a 1-2-5 step
   bool bar_presentation_ = false;   // theme the bar's table was made for
   QImage texture_image_;            // the plane's texture as given

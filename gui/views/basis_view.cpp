@@ -16,6 +16,7 @@
 #include "views/basis_tiles.h"
 #include "views/flow_parts.h"
 #include "models/scene_model.h"
+#include "scene/view_culling.h"
 
 namespace oflab {
 namespace {
@@ -93,6 +94,7 @@ void BasisView::set_amount(double amount) {
 }
 bool BasisView::playing() const { return playing_; }
 int BasisView::active_tile_count() const { return tiles_->active_tile_count(); }
+QString BasisView::summary() const { return summary_->text(); }
 
 void BasisView::set_playing(bool playing) {
   playing_ = playing;
@@ -134,7 +136,12 @@ void BasisView::update_tiles() {
       ++second_order_active;
     }
   }
-  summary_->setText(tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
+  QString outside;
+  if (!plane_meets_image(scene.camera, context.pose, 1e-3)) {
+    outside = tr("The plane is outside the image: these are the terms of its plane extended "
+                 "beyond the picture, not of anything seen. ");
+  }
+  summary_->setText(outside + tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
                        "second-order ones. Grey tiles are terms this flow does not excite.")
                         .arg(QString::fromUtf8(basis_title(basis())))
                         .arg(tiles_->active_tile_count())

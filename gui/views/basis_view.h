@@ -43,6 +43,8 @@ class BasisView : public ViewPage {
   void set_playing(bool playing);
   // Tiles with a non-zero coefficient after the last update.
   int active_tile_count() const;
+  // The line under the tiles; it starts by saying so when the plane is outside the image.
+  QString summary() const;
   QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
 
   void refresh();

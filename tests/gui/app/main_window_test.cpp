@@ -184,6 +184,27 @@ TEST_F(MainWindowTest, ResidualPartDrawsNoArrowsAndSaysZero) {
   EXPECT_GT(window().flow_view()->shown_max_magnitude(), 1.0);
 }
 
+// A plane moved out of the picture: the flow view draws no flow and says why (no
+// "max |v| = 0" over a colour bar), the basis view says its terms describe nothing seen.
+TEST_F(MainWindowTest, APlaneOutsideTheImageIsSaidToBeOutside) {
+  window().flow_view()->render_image();
+  EXPECT_TRUE(window().flow_view()->plane_in_image());
+  EXPECT_FALSE(window().flow_view()->caption().contains("outside"));
+  PlaneScene scene = default_demo_scene();
+  scene.pose.point = Vec3(40.0, 0.0, scene.pose.point.z);  // far to the right of the image
+  ASSERT_TRUE(window().model()->set_scene(scene));
+  window().flow_view()->render_image();
+  EXPECT_FALSE(window().flow_view()->plane_in_image());
+  EXPECT_TRUE(window().flow_view()->caption().startsWith("The plane is outside the image"))
+      << window().flow_view()->caption().toStdString();
+  EXPECT_FALSE(window().flow_view()->caption().contains("max |v|"));
+  EXPECT_EQ(window().flow_view()->shown_max_magnitude(), 0.0);
+  EXPECT_FALSE(window().flow_view()->coefficient_table()->isEnabled());
+  window().show_view("basis");
+  QApplication::processEvents();
+  EXPECT_TRUE(window().basis_view()->summary().startsWith("The plane is outside the image"));
+}
+
 TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
   auto mean_grey = [](const QImage& image) {
     const QImage small = scaled_rgb(image, QSize(32, 32));
