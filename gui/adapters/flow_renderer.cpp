@@ -89,6 +89,14 @@ double round_up_to_nice(double value) {
   return 10.0 * decade;
 }
 
+// The plane's centre is in front of the camera and projects inside the image: a plane
+// seen edge-on there covers no pixel but is not outside the picture.
+bool centre_in_image(const Camera& camera, const PlanePose& pose) {
+  if (!(pose.point.z > 0.0)) return false;
+  const Vec2 p = project_centred(camera, pose.point);
+  return std::abs(p.x) <= 0.5 * camera.width && std::abs(p.y) <= 0.5 * camera.height;
+}
+
 }  // namespace
 
 FlowRenderer::FlowRenderer(vtkRenderWindow* window) : window_(window), theme_(view_theme(false)) {
@@ -275,6 +283,7 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   const std::vector<FlowSample> shown =
       display.part == FlowPart::kFull ? full : sample_flow_grid(context, display.part, spacing);
   shown_max_ = max_flow_magnitude(shown);
+  shown_samples_ = static_cast<int>(shown.size());
   // Each part fills the grid unless the common scale is asked for, or the part is zero up
   // to rounding (a residual): then the full flow sets the scale, so parts compare by length
   // and rounding noise is never blown up into arrows.
@@ -285,7 +294,8 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   // A plane that has left the picture has no flow to show: no arrows, lines, wheel or
   // colour bar, and the caption says so (the side table's terms are those of the plane
   // extended beyond the image).
-  plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane);
+  plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane) ||
+                    centre_in_image(context.camera, context.pose);
   FlowDisplay drawn = display;
   if (!plane_in_image_) drawn.arrows = drawn.streamlines = drawn.colour_wheel = false;
   update_arrows(shown, arrow_seconds, drawn);
@@ -429,8 +439,14 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
 }
 
 void FlowRenderer::update_caption(const FlowDisplay& display, const QString& frame_caption) {
-  if (!plane_in_image_) {
-    caption_text_ = QStringLiteral("The plane is outside the image: no flow to show");
+  if (!plane_in_image_ || shown_samples_ == 0) {
+    // Outside, or seen so nearly edge-on that no grid sample falls inside it: there is no
+    // flow to show and no residual to call zero.
+    caption_text_ = plane_in_image_
+                        ? QStringLiteral("%1: no grid sample falls inside the plane's image (seen "
+                                         "edge-on or too small), so there is nothing to compare")
+                              .arg(QString::fromUtf8(flow_part_title(display.part)))
+                        : QStringLiteral("The plane is outside the image: no flow to show");
     if (!frame_caption.isEmpty()) caption_text_ += QStringLiteral("\n") + frame_caption;
     caption_->SetInput(caption_text_.toUtf8().constData());
     return;

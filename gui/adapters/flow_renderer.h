@@ -51,7 +51,8 @@ class FlowRenderer {
   // font points at the window's DPI).
   double smallest_text_px() const;
   // False when no part of the plane is seen inside the image (scene/view_culling.h's
-  // plane_meets_image) after the last update: nothing but the caption is drawn then.
+  // plane_meets_image) and its centre is not in the image either (a plane seen edge-on in
+  // the picture is not outside), after the last update: only the caption is drawn then.
   bool plane_in_image() const { return plane_in_image_; }
   // The caption line(s) drawn at the top left after the last update.
   const QString& caption() const { return caption_text_; }
@@ -82,6 +83,7 @@ class FlowRenderer {
   ViewTheme theme_;
   double shown_max_ = 0.0;
   bool plane_in_image_ = true;
+  int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
   QString caption_text_;
   double bar_max_ = -1.0;           // colour bar's upper end (px/s), a 1-2-5 step
   bool bar_presentation_ = false;   // theme the bar's table was made for

@@ -116,7 +116,15 @@ void BasisView::set_external_clock(bool on) {
   set_playing(playing_);
 }
 
-double BasisView::animated_amount() const { return amount() * 0.5 * (1.0 - std::cos(phase_)); }
+// Between kLowestShare and all of the amount, never zero: a tile passing through zero
+// amplitude looks undeformed, and its term would seem to do nothing.
+double BasisView::animated_amount() const {
+  constexpr double kLowestShare = 0.35;
+  const double swing = 0.5 * (1.0 - std::cos(phase_));  // 0 .. 1
+  return amount() * (kLowestShare + (1.0 - kLowestShare) * swing);
+}
+
+int BasisView::value_font_size() const { return tiles_->value_font_size(); }
 
 void BasisView::step_animation() {
   phase_ += kPhaseStep;

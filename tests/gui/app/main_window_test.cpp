@@ -1,6 +1,7 @@
 // The window for real: it opens on the demo, every view renders, the controls drive the
 // scene, impossible input is refused with a visible message, lessons set themselves up.
 #include <QDoubleSpinBox>
+#include <algorithm>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <fstream>
@@ -172,6 +173,25 @@ TEST_F(MainWindowTest, GalleryAnimationMovesTheGrids) {
   EXPECT_GT(changed_fraction(before, window().basis_view()->render_image()), 0.005);
 }
 
+// Playing, the tiles swing between 35 % and all of the amount: over a whole loop no tile
+// passes through zero amplitude (where every tile would look undeformed).
+TEST_F(MainWindowTest, BasisTilesNeverPassThroughZeroAmplitude) {
+  BasisView* basis = window().basis_view();
+  window().show_view("basis");
+  basis->set_amount(0.6);
+  double lowest = 1.0, highest = 0.0;
+  for (int i = 0; i < 96; ++i) {  // two cycles of 48 steps
+    basis->step_animation();
+    lowest = std::min(lowest, basis->animated_amount());
+    highest = std::max(highest, basis->animated_amount());
+  }
+  EXPECT_GT(lowest, 0.3 * 0.6);
+  EXPECT_NEAR(highest, 0.6, 0.01);
+  EXPECT_LT(lowest, 0.4 * 0.6);  // it does swing
+  window().set_presentation(true);
+  EXPECT_GE(basis->value_font_size(), 18);
+}
+
 TEST_F(MainWindowTest, ResidualPartDrawsNoArrowsAndSaysZero) {
   FlowDisplay d = window().flow_view()->display();
   d.part = FlowPart::kExactMinusHomography;
@@ -203,6 +223,24 @@ TEST_F(MainWindowTest, APlaneOutsideTheImageIsSaidToBeOutside) {
   window().show_view("basis");
   QApplication::processEvents();
   EXPECT_TRUE(window().basis_view()->summary().startsWith("The plane is outside the image"));
+}
+
+// Nearly edge-on, the plane covers no grid sample: the residual is not called "zero up to
+// rounding", the caption says there is nothing to compare.
+TEST_F(MainWindowTest, AnEdgeOnPlaneHasNothingToCompare) {
+  PlaneScene scene = default_demo_scene();
+  scene.pose.point = Vec3(0.0031, 0.0, 5.0);
+  scene.pose.normal = Vec3(1.0, 0.0, 1e-6);  // the view ray through the centre grazes it
+  scene.pose.up = Vec3(0.0, -1.0, 0.0);
+  ASSERT_TRUE(window().model()->set_scene(scene));
+  FlowDisplay d = window().flow_view()->display();
+  d.part = FlowPart::kExactMinusAffine;
+  window().flow_view()->set_display(d);
+  window().flow_view()->render_image();
+  const QString caption = window().flow_view()->caption();
+  EXPECT_TRUE(caption.contains("nothing to compare")) << caption.toStdString();
+  EXPECT_FALSE(caption.contains("zero up to rounding")) << caption.toStdString();
+  EXPECT_TRUE(window().flow_view()->plane_in_image());  // edge-on is not outside
 }
 
 TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
