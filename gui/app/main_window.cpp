@@ -291,11 +291,17 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   animation_model_->set_source(
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
   show_view(QString::fromStdString(lesson.view));
-  set_caption(QString::fromStdString(lesson.caption));
+  show_lesson_caption(QString::fromStdString(lesson.name));
   statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
 }
 
 QString MainWindow::caption() const { return caption_banner_->text(); }
+
+void MainWindow::show_lesson_caption(const QString& name) {
+  const Lesson* lesson = find_lesson(name.toStdString());
+  lesson_ = lesson ? name : QString();
+  set_caption(lesson ? QString::fromStdString(lesson->caption) : QString());
+}
 
 void MainWindow::set_caption(const QString& text) {
   caption_banner_->setText(text);
@@ -330,8 +336,9 @@ void MainWindow::set_presentation(bool on) {
 int MainWindow::play_rate() const { return speed_box_->currentData().toInt(); }
 
 void MainWindow::set_play_rate(int frames_per_second) {
-  const int index = std::max(0, speed_box_->findData(frames_per_second));
-  speed_box_->setCurrentIndex(index);
+  const int rate = std::max(1, frames_per_second);
+  if (speed_box_->findData(rate) < 0) speed_box_->addItem(tr("%1 fps").arg(rate), rate);
+  speed_box_->setCurrentIndex(speed_box_->findData(rate));
   motion_timer_->setInterval(1000 / play_rate());
   play_clock_.start();
   pacer_.start(0, play_rate());

@@ -18,6 +18,8 @@
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "views/animation_view.h"
+#include "views/basis_view.h"
+#include "views/flow_view.h"
 
 namespace oflab {
 namespace {
@@ -82,8 +84,42 @@ Session capture_session(MainWindow* window) {
   s.display = panel_display_name(window->animation_view()->display());
   s.frame = model->frame();
   s.view = window->current_view_name().toStdString();
+  const FlowDisplay flow = window->flow_view()->display();
+  s.flow_part = flow_part_key(flow.part);
+  s.flow_draw = {flow.arrows,  flow.streamlines,   flow.colour_wheel,
+                 flow.texture, flow.zoom_to_plane, flow.common_scale};
+  s.basis = basis_key(window->basis_view()->basis());
+  s.basis_playing = window->basis_view()->playing();
+  s.presentation = window->presentation();
+  s.lesson = window->lesson().toStdString();
+  s.play_rate = window->play_rate();
   return s;
 }
+
+namespace {
+
+// The window part of a session (flow view, basis, presentation, lesson, rate) when every
+// name in it is known; false with *error naming the field otherwise.
+bool parse_window_state(const Session& s, FlowDisplay* flow, BasisKind* basis, QString* error) {
+  if (!parse_flow_part(s.flow_part, &flow->part)) {
+    *error = QStringLiteral("window.flow_part: unknown part '%1'").arg(s.flow_part.c_str());
+    return false;
+  }
+  if (!parse_basis_kind(s.basis, basis)) {
+    *error = QStringLiteral("window.basis: unknown basis '%1'").arg(s.basis.c_str());
+    return false;
+  }
+  if (!s.lesson.empty() && !find_lesson(s.lesson)) {
+    *error = QStringLiteral("window.lesson: unknown lesson '%1'").arg(s.lesson.c_str());
+    return false;
+  }
+  flow->arrows = s.flow_draw[0], flow->streamlines = s.flow_draw[1];
+  flow->colour_wheel = s.flow_draw[2], flow->texture = s.flow_draw[3];
+  flow->zoom_to_plane = s.flow_draw[4], flow->common_scale = s.flow_draw[5];
+  return true;
+}
+
+}  // namespace
 
 bool apply_session(MainWindow* window, const Session& s, QString* error) {
   QImage texture;
@@ -97,6 +133,9 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
     *error = QStringLiteral("unknown view '%1'").arg(QString::fromStdString(s.view));
     return false;
   }
+  FlowDisplay flow = window->flow_view()->display();
+  BasisKind basis = BasisKind::kPlanar;
+  if (!parse_window_state(s, &flow, &basis, error)) return false;
   SceneModel* model = window->model();
   AnimationModel* animation = window->animation_model();
   if (!check_files(s, *animation, &texture, &script, error)) return false;
@@ -110,6 +149,12 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
   animation->set_source({s.source_kind, s.source_name, s.viewer_script});
   window->animation_view()->set_display(display);
   model->set_frame(s.frame);
+  window->flow_view()->set_display(flow);
+  window->basis_view()->set_basis(basis);
+  window->basis_view()->set_playing(s.basis_playing);
+  window->set_presentation(s.presentation);
+  window->show_lesson_caption(QString::fromStdString(s.lesson));
+  window->set_play_rate(s.play_rate);
   window->show_view(QString::fromStdString(s.view));
   return true;
 }

@@ -243,6 +243,45 @@ TEST_F(MainWindowTest, AnEdgeOnPlaneHasNothingToCompare) {
   EXPECT_TRUE(window().flow_view()->plane_in_image());  // edge-on is not outside
 }
 
+// Everything the window shows beyond the scene comes back from a saved session: the flow
+// options, the basis and its play state, presentation mode, the lesson, the rate, the view.
+TEST_F(MainWindowTest, SessionRestoresTheWindowState) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("window.json");
+  window().apply_lesson(*find_lesson("basis-deformations"));
+  FlowDisplay flow = window().flow_view()->display();
+  flow.part = FlowPart::kSecondOrder;
+  flow.arrows = false, flow.streamlines = true, flow.colour_wheel = true;
+  flow.texture = false, flow.zoom_to_plane = false, flow.common_scale = true;
+  window().flow_view()->set_display(flow);
+  window().basis_view()->set_basis(BasisKind::kWaxmanUllman);
+  window().set_presentation(true);
+  window().set_play_rate(10);
+  window().show_view("flow");
+  ASSERT_TRUE(window().save_session(path, false));
+  // Change everything, then load.
+  window().apply_lesson(*find_lesson("flow-of-a-plane"));
+  window().set_presentation(false);
+  window().set_play_rate(60);
+  window().basis_view()->set_basis(BasisKind::kPlanar);
+  window().show_view("analysis");
+  ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
+  const FlowDisplay back = window().flow_view()->display();
+  EXPECT_EQ(back.part, FlowPart::kSecondOrder);
+  EXPECT_FALSE(back.arrows);
+  EXPECT_TRUE(back.streamlines);
+  EXPECT_TRUE(back.colour_wheel);
+  EXPECT_FALSE(back.texture);
+  EXPECT_FALSE(back.zoom_to_plane);
+  EXPECT_TRUE(back.common_scale);
+  EXPECT_EQ(window().basis_view()->basis(), BasisKind::kWaxmanUllman);
+  EXPECT_TRUE(window().presentation());
+  EXPECT_EQ(window().lesson(), "basis-deformations");
+  EXPECT_EQ(window().caption().toStdString(), find_lesson("basis-deformations")->caption);
+  EXPECT_EQ(window().play_rate(), 10);
+  EXPECT_EQ(window().current_view_name(), "flow");
+}
+
 TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
   auto mean_grey = [](const QImage& image) {
     const QImage small = scaled_rgb(image, QSize(32, 32));
