@@ -429,13 +429,17 @@ void MainWindow::create_export_menu(QMenu* file) {
   connect(exports->addAction(tr("Animation as numbered PNGs...")), &QAction::triggered, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Directory for the frames"));
     QString error;
-    if (!dir.isEmpty() && !export_frames_png(this, dir, false, &error)) show_message(error);
+    if (dir.isEmpty()) return;
+    if (!export_frames_png(this, dir, false, &error)) return show_message(error);
+    statusBar()->showMessage(tr("Wrote the animation view's frames to %1").arg(dir), 15000);
   });
   connect(exports->addAction(tr("Animation as Ogg Theora video...")), &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save video"), QStringLiteral("oflab.ogv"),
                                                       tr("Ogg Theora video (*.ogv)"));
     QString error;
-    if (!path.isEmpty() && !export_video(this, path, true, &error)) show_message(error);
+    if (path.isEmpty()) return;
+    if (!export_video(this, path, true, &error)) return show_message(error);
+    statusBar()->showMessage(tr("Wrote the video to %1").arg(path), 15000);
   });
   connect(exports->addAction(tr("Per-frame CSV...")), &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save per-frame CSV"),

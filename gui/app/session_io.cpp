@@ -5,6 +5,8 @@
 #include <vtkSmartPointer.h>
 
 #include <QDir>
+#include <QFile>
+#include <QProgressDialog>
 #include <QFileInfo>
 #include <cstring>
 #include <fstream>
@@ -13,6 +15,7 @@
 
 #include "adapters/texture.h"
 #include "app/main_window.h"
+#include "app/screenshot.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "models/animation_model.h"
@@ -43,9 +46,11 @@ bool check_files(const Session& s, const AnimationModel& animation, QImage* text
   return error->isEmpty();
 }
 
-// Runs `write(frame, image)` over every frame of the animation source, then goes back to
-// the frame shown before. False when there is no source (with *error set) or when `write`
-// returns false (which sets *error itself).
+// Runs `write(frame, image)` over every frame of the animation source, `image` being the
+// whole animation view as on screen (every panel of its layout, VTK content included),
+// then goes back to the frame shown before. A progress dialog counts the frames and can
+// cancel. False when there is no source (with *error set), when `write` returns false
+// (which sets *error itself) or when cancelled (*error says so).
 bool for_each_frame(MainWindow* window, QString* error,
                     const std::function<bool(int, const QImage&)>& write) {
   AnimationView* view = window->animation_view();
@@ -56,11 +61,24 @@ bool for_each_frame(MainWindow* window, QString* error,
     return false;
   }
   const int frames = animator->frame_count();
+  QProgressDialog progress(QStringLiteral("Exporting the animation view..."),
+                           QStringLiteral("Cancel"), 0, frames, window);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(500);
   bool ok = true;
   for (int k = 0; k < frames && ok; ++k) {
+    progress.setValue(k);
+    progress.setLabelText(QStringLiteral("Exporting frame %1 of %2...").arg(k + 1).arg(frames));
+    if (progress.wasCanceled()) {
+      *error = QStringLiteral("export cancelled; the frames written so far were removed");
+      ok = false;
+      break;
+    }
     window->model()->set_frame(k);
-    ok = write(k, view->render_image());
+    view->render_image();  // brings every panel up to this frame
+    ok = write(k, grab_with_vtk(view));
   }
+  progress.setValue(frames);
   window->model()->set_frame(saved);
   return ok;
 }
@@ -165,7 +183,8 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
     *error = QStringLiteral("%1: cannot create the directory").arg(directory);
     return false;
   }
-  return for_each_frame(window, error, [&](int k, const QImage& image) {
+  QStringList written;  // removed again when the export stops early: no partial set
+  const bool ok = for_each_frame(window, error, [&](int k, const QImage& image) {
     const QString path =
         QDir(directory).filePath(QStringLiteral("frame-%1.png").arg(k, 4, 10, QChar('0')));
     if (!overwrite && QFileInfo::exists(path)) {
@@ -176,8 +195,13 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
       *error = QStringLiteral("%1: cannot be written").arg(path);
       return false;
     }
+    written << path;
     return true;
   });
+  if (!ok) {
+    for (const QString& path : written) QFile::remove(path);
+  }
+  return ok;
 }
 
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error) {
@@ -211,6 +235,7 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
     return false;
   });
   if (started) writer->End();
+  if (!ok && started) QFile::remove(path);  // no partial video is left behind
   if (ok && !QFileInfo::exists(path)) {
     *error = QStringLiteral("%1: the video could not be written").arg(path);
     return false;
