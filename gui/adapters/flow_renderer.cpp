@@ -276,7 +276,12 @@ double FlowRenderer::smallest_text_px() const {
 void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display,
                           const QString& frame_caption) {
   camera_ = context.camera;
-  choose_view_region(context, display);
+  plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane) ||
+                    centre_in_image(context.camera, context.pose);
+  // With the plane out of the picture, the whole image is shown (there is nothing to zoom to).
+  FlowDisplay framing = display;
+  if (!plane_in_image_) framing.zoom_to_plane = false;
+  choose_view_region(context, framing);
   update_plane(context, display);
   const double spacing = arrow_spacing(context, display);
   const std::vector<FlowSample> full = sample_flow_grid(context, FlowPart::kFull, spacing);
@@ -294,8 +299,6 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   // A plane that has left the picture has no flow to show: no arrows, lines, wheel or
   // colour bar, and the caption says so (the side table's terms are those of the plane
   // extended beyond the image).
-  plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane) ||
-                    centre_in_image(context.camera, context.pose);
   FlowDisplay drawn = display;
   if (!plane_in_image_) drawn.arrows = drawn.streamlines = drawn.colour_wheel = false;
   update_arrows(shown, arrow_seconds, drawn);
