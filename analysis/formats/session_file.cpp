@@ -67,6 +67,34 @@ EngineSettings read_settings(const json& j, const Where& w) {
   return s;
 }
 
+bool boolean(const json& obj, const Where& w, const std::string& field) {
+  const json& value = member(obj, w, field);
+  if (!value.is_boolean()) w.fail(field, "must be true or false");
+  return value.get<bool>();
+}
+
+// The "window" object: the flow view's options, the basis, presentation, lesson, rate.
+void read_window(const json& j, const Where& w, Session* s) {
+  s->flow_part = text(j, w, "flow_part");
+  const json& draw = member(j, w, "flow_draw");
+  if (!draw.is_array() || draw.size() != s->flow_draw.size()) {
+    w.fail("flow_draw", "must be a list of " + std::to_string(s->flow_draw.size()) + " booleans");
+  }
+  for (size_t k = 0; k < s->flow_draw.size(); ++k) {
+    if (!draw[k].is_boolean()) w.fail("flow_draw", "must be a list of booleans");
+    s->flow_draw[k] = draw[k].get<bool>();
+  }
+  s->basis = text(j, w, "basis");
+  s->basis_playing = boolean(j, w, "basis_playing");
+  s->presentation = boolean(j, w, "presentation");
+  s->lesson = text(j, w, "lesson");
+  const double rate = number_field(j, w, "play_rate");
+  if (rate < 1 || rate > 1000 || rate != std::floor(rate)) {
+    w.fail("play_rate", "must be a whole number of frames per second in 1..1000");
+  }
+  s->play_rate = int(rate);
+}
+
 }  // namespace
 
 std::string session_to_json(const Session& s) {
@@ -93,6 +121,12 @@ std::string session_to_json(const Session& s) {
       {"display", s.display}};
   j["frame"] = s.frame;
   j["view"] = s.view;
+  json draw = json::array();
+  for (bool on : s.flow_draw) draw.push_back(on);
+  j["window"] = {{"flow_part", s.flow_part},   {"flow_draw", draw},
+                 {"basis", s.basis},           {"basis_playing", s.basis_playing},
+                 {"presentation", s.presentation}, {"lesson", s.lesson},
+                 {"play_rate", s.play_rate}};
   return j.dump(2) + "\n";
 }
 
@@ -118,6 +152,7 @@ Session parse_session(const std::string& json_text, const std::string& origin) {
   if (frame < 0 || frame != std::floor(frame)) top.fail("frame", "must be a whole number >= 0");
   s.frame = int(frame);
   s.view = text(root, top, "view");
+  if (root.contains("window")) read_window(object(root, top, "window"), Where{origin, "window"}, &s);
   return s;
 }
 

@@ -1,10 +1,12 @@
 // Saving and loading the whole session of the window as JSON ("oflab-session", version 1):
 // the plane scene (camera, pose, motion), the motion script, the texture file, the
-// animation view's source, engine settings and display, the frame and the view in front.
+// animation view's source, engine settings and display, the frame and the view in front,
+// and the window's state (flow view options, basis, presentation mode, lesson, play rate).
 // A file format like the scripts and scenes, read with formats/json_fields.h; the GUI
 // captures and applies sessions (gui/app/session_io.h).
 #pragma once
 
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +34,17 @@ struct Session {
   std::string display = "side-by-side";  // gui/views/animation_controls.h panel_display_name
   int frame = 0;
   std::string view = "flow";
+  // What the window shows beyond the scene ("window" object; files without it get these
+  // defaults). Names are the GUI's keys, checked when applied.
+  std::string flow_part = "full";  // gui/views/flow_parts.h flow_part_key
+  // The flow view's drawing options, in the order arrows, streamlines, colour wheel,
+  // texture, zoom to the plane, common scale (gui/adapters/flow_display.h).
+  std::array<bool, 6> flow_draw{{true, false, false, true, true, false}};
+  std::string basis = "planar";  // gui/views/basis_catalog.h basis_key
+  bool basis_playing = false;
+  bool presentation = false;
+  std::string lesson;            // the lesson whose caption shows, empty for none
+  int play_rate = 30;            // live play, frames per second (> 0)
 };
 
 // The session as JSON text (pretty-printed).

@@ -18,14 +18,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QPainter>
+
 #include "flow/homography.h"
+#include "scene/view_culling.h"
 #include "adapters/vtk_adapters.h"
 
 namespace oflab {
 namespace {
 
 constexpr double kDegreesPerRadian = 57.29577951308232;
-constexpr double kWheelStepPx = 3.0;  // wheel image resolution, image pixels per cell
+constexpr double kWheelStepPx = 3.0;
+constexpr double kNearPlane = 1e-3;  // world units: nearer than this counts as not seen  // wheel image resolution, image pixels per cell
 
 vtkSmartPointer<vtkActor> line_actor() {
   auto actor = vtkSmartPointer<vtkActor>::New();
@@ -72,6 +76,25 @@ double arrow_spacing(const FlowContext& context, const FlowDisplay& display) {
   const double extent = std::min(std::max(high.x - low.x, high.y - low.y),
                                  double(std::max(context.camera.width, context.camera.height)));
   return std::clamp(extent / 14.0, 6.0, 48.0);
+}
+
+// The smallest 1, 2 or 5 times a power of ten at or above `value` (> 0), so the colour bar
+// keeps its labels while the largest magnitude drifts from frame to frame.
+double round_up_to_nice(double value) {
+  if (!(value > 0.0)) return 1.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(value)));
+  for (double step : {1.0, 2.0, 5.0, 10.0}) {
+    if (step * decade >= value * (1.0 - 1e-12)) return step * decade;
+  }
+  return 10.0 * decade;
+}
+
+// The plane's centre is in front of the camera and projects inside the image: a plane
+// seen edge-on there covers no pixel but is not outside the picture.
+bool centre_in_image(const Camera& camera, const PlanePose& pose) {
+  if (!(pose.point.z > 0.0)) return false;
+  const Vec2 p = project_centred(camera, pose.point);
+  return std::abs(p.x) <= 0.5 * camera.width && std::abs(p.y) <= 0.5 * camera.height;
 }
 
 }  // namespace
@@ -126,7 +149,6 @@ void FlowRenderer::create_actors() {
   texture_->InterpolateOn();
   plane_->SetTexture(texture_);
   plane_->GetProperty()->LightingOff();
-  plane_->GetProperty()->SetOpacity(0.45);
   scene_->AddActor(plane_);
   frame_ = line_actor();
   outline_ = line_actor();
@@ -136,7 +158,8 @@ void FlowRenderer::create_actors() {
   wheel_legend_->GetProperty()->LightingOff();
   wheel_image_ = vtkSmartPointer<vtkImageActor>::New();
   wheel_image_->GetProperty()->SetInterpolationTypeToLinear();
-  wheel_image_->GetMapper()->SetInputData(vtkSmartPointer<vtkImageData>::New());
+  wheel_data_ = vtkSmartPointer<vtkImageData>::New();
+  wheel_image_->GetMapper()->SetInputData(wheel_data_);
   wheel_image_->VisibilityOff();
   create_arrow_pipeline();
   create_legend_and_text();
@@ -200,7 +223,22 @@ void FlowRenderer::create_legend_and_text() {
 }
 
 void FlowRenderer::set_texture(const QImage& texture) {
-  texture_->SetInputData(image_data_from_qimage(texture));
+  texture_image_ = texture;
+  update_faded_texture();
+}
+
+// The texture faded towards the background, drawn opaque: the same picture as a
+// translucent plane, without VTK's translucent pass (several full-window passes on a
+// software renderer).
+void FlowRenderer::update_faded_texture() {
+  if (texture_image_.isNull()) return;
+  QImage faded(texture_image_.size(), QImage::Format_RGB32);
+  faded.fill(QColor::fromRgbF(theme_.background[0], theme_.background[1], theme_.background[2]));
+  QPainter painter(&faded);
+  painter.setOpacity(theme_.presentation ? 0.6 : 0.45);
+  painter.drawImage(0, 0, texture_image_);
+  painter.end();
+  texture_->SetInputData(image_data_from_qimage(faded));
 }
 
 void FlowRenderer::set_theme(const ViewTheme& theme) {
@@ -223,7 +261,7 @@ void FlowRenderer::set_theme(const ViewTheme& theme) {
     p->ItalicOff();
     p->ShadowOff();
   }
-  plane_->GetProperty()->SetOpacity(theme.presentation ? 0.6 : 0.45);
+  update_faded_texture();
 }
 
 double FlowRenderer::smallest_text_px() const {
@@ -238,13 +276,19 @@ double FlowRenderer::smallest_text_px() const {
 void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display,
                           const QString& frame_caption) {
   camera_ = context.camera;
-  choose_view_region(context, display);
+  plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane) ||
+                    centre_in_image(context.camera, context.pose);
+  // With the plane out of the picture, the whole image is shown (there is nothing to zoom to).
+  FlowDisplay framing = display;
+  if (!plane_in_image_) framing.zoom_to_plane = false;
+  choose_view_region(context, framing);
   update_plane(context, display);
   const double spacing = arrow_spacing(context, display);
   const std::vector<FlowSample> full = sample_flow_grid(context, FlowPart::kFull, spacing);
   const std::vector<FlowSample> shown =
       display.part == FlowPart::kFull ? full : sample_flow_grid(context, display.part, spacing);
   shown_max_ = max_flow_magnitude(shown);
+  shown_samples_ = static_cast<int>(shown.size());
   // Each part fills the grid unless the common scale is asked for, or the part is zero up
   // to rounding (a residual): then the full flow sets the scale, so parts compare by length
   // and rounding noise is never blown up into arrows.
@@ -252,9 +296,14 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   const bool rounding_only = shown_max_ <= 1e-9 * full_max;
   const double scale_max = display.common_scale || rounding_only ? full_max : shown_max_;
   const double arrow_seconds = scale_max > 0.0 ? 0.9 * spacing / scale_max : 0.0;
-  update_arrows(shown, arrow_seconds, display);
-  update_streamlines(context, display, arrow_seconds);
-  update_wheel(context, display);
+  // A plane that has left the picture has no flow to show: no arrows, lines, wheel or
+  // colour bar, and the caption says so (the side table's terms are those of the plane
+  // extended beyond the image).
+  FlowDisplay drawn = display;
+  if (!plane_in_image_) drawn.arrows = drawn.streamlines = drawn.colour_wheel = false;
+  update_arrows(shown, arrow_seconds, drawn);
+  update_streamlines(context, drawn, arrow_seconds);
+  update_wheel(context, drawn);
   update_caption(display, frame_caption);
 }
 
@@ -302,11 +351,18 @@ void FlowRenderer::update_arrows(const std::vector<FlowSample>& samples, double 
   arrow_input_->GetPointData()->SetVectors(vectors);
   arrow_input_->GetPointData()->SetScalars(magnitudes);
   arrow_input_->Modified();
-  auto table = magnitude_lookup_table(shown_max_, theme_.presentation ? 0.8 : 1.0);
-  auto* mapper = arrows_->GetMapper();
-  mapper->SetLookupTable(table);
-  mapper->SetScalarRange(table->GetRange());
-  scalar_bar_->SetLookupTable(table);
+  // A new table only when the bar's rounded range changes: rebuilding the scalar bar is
+  // a large part of a frame.
+  const double bar_max = round_up_to_nice(shown_max_);
+  if (bar_max != bar_max_ || bar_presentation_ != theme_.presentation) {
+    bar_max_ = bar_max;
+    bar_presentation_ = theme_.presentation;
+    auto table = magnitude_lookup_table(bar_max, theme_.presentation ? 0.8 : 1.0);
+    auto* mapper = arrows_->GetMapper();
+    mapper->SetLookupTable(table);
+    mapper->SetScalarRange(table->GetRange());
+    scalar_bar_->SetLookupTable(table);
+  }
   arrows_->SetVisibility(display.arrows);
   scalar_bar_->SetVisibility(display.arrows);
   scalar_title_->SetVisibility(display.arrows);
@@ -318,12 +374,15 @@ void FlowRenderer::update_streamlines(const FlowContext& context, const FlowDisp
   if (display.streamlines && arrow_seconds > 0.0) {
     const double seed_spacing = 2.0 * arrow_spacing(context, display);
     for (const FlowSample& seed : sample_flow_grid(context, FlowPart::kTranslation, seed_spacing)) {
-      std::vector<Vec3> line;
-      for (const Vec2& p :
-           trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16)) {
-        line.push_back(image_plane_point(context.camera, p));
+      const std::vector<Vec2> path =
+          trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16);
+      // The line, then an arrow head at its end so the direction reads.
+      for (const std::vector<Vec2>& part : {path, streamline_arrow_head(path, 0.3 * seed_spacing)}) {
+        if (part.size() < 2) continue;
+        std::vector<Vec3> line;
+        for (const Vec2& p : part) line.push_back(image_plane_point(context.camera, p));
+        lines.push_back(line);
       }
-      lines.push_back(line);
     }
   }
   set_input(streamlines_, polylines(lines));
@@ -353,22 +412,28 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
       largest = std::max(largest, glm::length(flows[k]));
     }
   }
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(nx, ny, 1);
+  // One image kept from frame to frame, opaque (RGB, the background where the plane is
+  // not seen): a translucent image would cost VTK's translucent pass every frame.
+  vtkImageData* image = wheel_data_;
+  if (image->GetDimensions()[0] != nx || image->GetDimensions()[1] != ny) {
+    image->SetDimensions(nx, ny, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  }
   // Slightly behind the image plane (same projection), so arrows and lines draw on top.
   constexpr double kBehind = 1.002;
   const Vec3 origin = kBehind * image_plane_point(context.camera, centre_of(0, 0));
   image->SetOrigin(origin.x, origin.y, origin.z);
   const double step = kBehind * kWheelStepPx / context.camera.focal_px;
   image->SetSpacing(step, step, 1.0);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
-  auto* rgba = static_cast<unsigned char*>(image->GetScalarPointer());
+  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
+  const Rgb8 background{static_cast<unsigned char>(std::lround(255.0 * theme_.background[0])),
+                        static_cast<unsigned char>(std::lround(255.0 * theme_.background[1])),
+                        static_cast<unsigned char>(std::lround(255.0 * theme_.background[2]))};
   for (size_t k = 0; k < flows.size(); ++k) {
-    const Rgb8 c = flow_wheel_colour(flows[k], largest);
-    const unsigned char a = inside[k] ? 230 : 0;
-    rgba[4 * k] = c.r, rgba[4 * k + 1] = c.g, rgba[4 * k + 2] = c.b, rgba[4 * k + 3] = a;
+    const Rgb8 c = inside[k] ? flow_wheel_colour(flows[k], largest) : background;
+    rgb[3 * k] = c.r, rgb[3 * k + 1] = c.g, rgb[3 * k + 2] = c.b;
   }
-  wheel_image_->GetMapper()->SetInputData(image);
+  image->Modified();
   wheel_caption_->SetInput(QStringLiteral("Colour wheel (bottom right): hue = direction, "
                                           "white to full colour = 0 to %1 px/s")
                                .arg(largest, 0, 'g', 3)
@@ -377,6 +442,18 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
 }
 
 void FlowRenderer::update_caption(const FlowDisplay& display, const QString& frame_caption) {
+  if (!plane_in_image_ || shown_samples_ == 0) {
+    // Outside, or seen so nearly edge-on that no grid sample falls inside it: there is no
+    // flow to show and no residual to call zero.
+    caption_text_ = plane_in_image_
+                        ? QStringLiteral("%1: no grid sample falls inside the plane's image (seen "
+                                         "edge-on or too small), so there is nothing to compare")
+                              .arg(QString::fromUtf8(flow_part_title(display.part)))
+                        : QStringLiteral("The plane is outside the image: no flow to show");
+    if (!frame_caption.isEmpty()) caption_text_ += QStringLiteral("\n") + frame_caption;
+    caption_->SetInput(caption_text_.toUtf8().constData());
+    return;
+  }
   const bool residual =
       display.part == FlowPart::kExactMinusHomography || display.part == FlowPart::kExactMinusAffine;
   QString text = QStringLiteral("%1   max |v| = %2 px/s")
@@ -384,6 +461,7 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
                      .arg(shown_max_, 0, 'g', 3);
   if (residual && shown_max_ < 1e-6) text += QStringLiteral(" (zero up to rounding)");
   if (!frame_caption.isEmpty()) text += QStringLiteral("\n") + frame_caption;
+  caption_text_ = text;
   caption_->SetInput(text.toUtf8().constData());
 }
 

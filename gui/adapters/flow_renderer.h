@@ -11,6 +11,7 @@
 
 #include <vtkActor.h>
 #include <vtkImageActor.h>
+#include <vtkImageData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -49,8 +50,15 @@ class FlowRenderer {
   // The smallest font of its captions, colour-bar title and labels, screen pixels (VTK
   // font points at the window's DPI).
   double smallest_text_px() const;
+  // False when no part of the plane is seen inside the image (scene/view_culling.h's
+  // plane_meets_image) and its centre is not in the image either (a plane seen edge-on in
+  // the picture is not outside), after the last update: only the caption is drawn then.
+  bool plane_in_image() const { return plane_in_image_; }
+  // The caption line(s) drawn at the top left after the last update.
+  const QString& caption() const { return caption_text_; }
 
  private:
+  void update_faded_texture();
   void create_actors();
   void create_arrow_pipeline();
   void create_legend_and_text();
@@ -74,6 +82,12 @@ class FlowRenderer {
   Vec2 view_half_size_{400.0, 300.0};  // half the image region that must stay visible, px
   ViewTheme theme_;
   double shown_max_ = 0.0;
+  bool plane_in_image_ = true;
+  int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
+  QString caption_text_;
+  double bar_max_ = -1.0;           // colour bar's upper end (px/s), a 1-2-5 step
+  bool bar_presentation_ = false;   // theme the bar's table was made for
+  QImage texture_image_;            // the plane's texture as given
   vtkSmartPointer<vtkRenderer> scene_, overlay_, legend_, side_;
   vtkSmartPointer<vtkCallbackCommand> fit_callback_;
   vtkSmartPointer<vtkActor> plane_, frame_, outline_, centre_mark_, arrows_, streamlines_,
@@ -81,6 +95,7 @@ class FlowRenderer {
   vtkSmartPointer<vtkTexture> texture_;
   vtkSmartPointer<vtkPolyData> arrow_input_;
   vtkSmartPointer<vtkImageActor> wheel_image_;
+  vtkSmartPointer<vtkImageData> wheel_data_;  // the wheel's colours, reused
   vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
   vtkSmartPointer<vtkTextActor> caption_, wheel_caption_, scalar_title_;
 };

@@ -42,8 +42,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("oflab - Optic Flow Lab"));
   model_ = new SceneModel(this);
   motion_timer_ = new QTimer(this);
+  motion_timer_->setTimerType(Qt::PreciseTimer);
   motion_timer_->setInterval(static_cast<int>(1000.0 * SceneModel::kSecondsPerFrame));
-  connect(motion_timer_, &QTimer::timeout, this, [this] { model_->advance(1); });
+  // Frames follow the wall clock: a late tick advances by the frames due (dropping some),
+  // so the motion keeps real speed when drawing is slower than the rate.
+  connect(motion_timer_, &QTimer::timeout, this, [this] {
+    const int due = pacer_.frames_due(play_clock_.elapsed());
+    if (due > 0) model_->advance(due);
+  });
 
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
@@ -215,9 +221,8 @@ void MainWindow::add_scrub_controls(QToolBar* bar) {
   for (int fps : {5, 10, 15, 30, 60}) speed_box_->addItem(tr("%1 fps").arg(fps), fps);
   speed_box_->setCurrentIndex(3);
   bar->addWidget(speed_box_);
-  connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this, [this] {
-    motion_timer_->setInterval(1000 / speed_box_->currentData().toInt());
-  });
+  connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this] { set_play_rate(speed_box_->currentData().toInt()); });
 }
 
 void MainWindow::update_frame_label() {
@@ -287,11 +292,17 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
   animation_view()->set_display(lesson.display);
   show_view(QString::fromStdString(lesson.view));
-  set_caption(QString::fromStdString(lesson.caption));
+  show_lesson_caption(QString::fromStdString(lesson.name));
   statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
 }
 
 QString MainWindow::caption() const { return caption_banner_->text(); }
+
+void MainWindow::show_lesson_caption(const QString& name) {
+  const Lesson* lesson = find_lesson(name.toStdString());
+  lesson_ = lesson ? name : QString();
+  set_caption(lesson ? QString::fromStdString(lesson->caption) : QString());
+}
 
 void MainWindow::set_caption(const QString& text) {
   caption_banner_->setText(text);
@@ -323,12 +334,25 @@ void MainWindow::set_presentation(bool on) {
   fit_scene_panel();
 }
 
+int MainWindow::play_rate() const { return speed_box_->currentData().toInt(); }
+
+void MainWindow::set_play_rate(int frames_per_second) {
+  const int rate = std::max(1, frames_per_second);
+  if (speed_box_->findData(rate) < 0) speed_box_->addItem(tr("%1 fps").arg(rate), rate);
+  speed_box_->setCurrentIndex(speed_box_->findData(rate));
+  motion_timer_->setInterval(1000 / play_rate());
+  play_clock_.start();
+  pacer_.start(0, play_rate());
+}
+
 bool MainWindow::motion_playing() const { return play_action_->isChecked(); }
 
 void MainWindow::set_motion_playing(bool playing) {
   const QSignalBlocker block(play_action_);
   play_action_->setChecked(playing);
   if (playing && !external_clock_) {
+    play_clock_.start();
+    pacer_.start(0, play_rate());
     motion_timer_->start();
   } else {
     motion_timer_->stop();
@@ -406,13 +430,17 @@ void MainWindow::create_export_menu(QMenu* file) {
   connect(exports->addAction(tr("Animation as numbered PNGs...")), &QAction::triggered, this, [this] {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Directory for the frames"));
     QString error;
-    if (!dir.isEmpty() && !export_frames_png(this, dir, false, &error)) show_message(error);
+    if (dir.isEmpty()) return;
+    if (!export_frames_png(this, dir, false, &error)) return show_message(error);
+    statusBar()->showMessage(tr("Wrote the animation view's frames to %1").arg(dir), 15000);
   });
   connect(exports->addAction(tr("Animation as Ogg Theora video...")), &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save video"), QStringLiteral("oflab.ogv"),
                                                       tr("Ogg Theora video (*.ogv)"));
     QString error;
-    if (!path.isEmpty() && !export_video(this, path, true, &error)) show_message(error);
+    if (path.isEmpty()) return;
+    if (!export_video(this, path, true, &error)) return show_message(error);
+    statusBar()->showMessage(tr("Wrote the video to %1").arg(path), 15000);
   });
   connect(exports->addAction(tr("Per-frame CSV...")), &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save per-frame CSV"),

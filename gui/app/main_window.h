@@ -4,10 +4,12 @@
 // controls for the scene's motion; presentation mode.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <vector>
 
 #include "app/lessons.h"
+#include "models/frame_pacer.h"
 
 class QAction;
 class QComboBox;
@@ -72,6 +74,10 @@ class MainWindow : public QMainWindow {
   // Sets up a lesson: its scene, view, options and caption.
   void apply_lesson(const Lesson& lesson);
   QString caption() const;
+  // The lesson whose caption shows ("" for none); show_lesson_caption sets it and its
+  // caption without touching the scene (a saved session carries the scene itself).
+  QString lesson() const { return lesson_; }
+  void show_lesson_caption(const QString& name);
   void set_caption(const QString& text);  // empty hides the banner
 
   // The message shown for rejected input; empty when none is visible.
@@ -79,6 +85,12 @@ class MainWindow : public QMainWindow {
 
   bool presentation() const { return presentation_; }
   void set_presentation(bool on);
+
+  // Live play rate in frames per second (the speed box offers 5, 10, 15, 30 and 60; another
+  // rate is added to it, one below 1 is taken as 1). Frames follow the wall clock
+  // (models/frame_pacer.h).
+  int play_rate() const;
+  void set_play_rate(int frames_per_second);
 
   bool motion_playing() const;
   void set_motion_playing(bool playing);
@@ -142,12 +154,15 @@ class MainWindow : public QMainWindow {
   QLabel* message_banner_ = nullptr;
   QLabel* frame_label_ = nullptr;
   QTimer* motion_timer_;
+  QElapsedTimer play_clock_;
+  FramePacer pacer_;
   QAction* play_action_ = nullptr;
   QAction* step_action_ = nullptr;
   QAction* back_action_ = nullptr;
   QAction* reset_action_ = nullptr;
   QAction* presentation_action_ = nullptr;
   bool presentation_ = false;
+  QString lesson_;
   bool external_clock_ = false;
 };
 

@@ -5,6 +5,8 @@
 #include <vtkSmartPointer.h>
 
 #include <QDir>
+#include <QFile>
+#include <QProgressDialog>
 #include <QFileInfo>
 #include <cstring>
 #include <fstream>
@@ -13,11 +15,14 @@
 
 #include "adapters/texture.h"
 #include "app/main_window.h"
+#include "app/screenshot.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "views/animation_view.h"
+#include "views/basis_view.h"
+#include "views/flow_view.h"
 
 namespace oflab {
 namespace {
@@ -41,9 +46,11 @@ bool check_files(const Session& s, const AnimationModel& animation, QImage* text
   return error->isEmpty();
 }
 
-// Runs `write(frame, image)` over every frame of the animation source, then goes back to
-// the frame shown before. False when there is no source (with *error set) or when `write`
-// returns false (which sets *error itself).
+// Runs `write(frame, image)` over every frame of the animation source, `image` being the
+// whole animation view as on screen (every panel of its layout, VTK content included),
+// then goes back to the frame shown before. A progress dialog counts the frames and can
+// cancel. False when there is no source (with *error set), when `write` returns false
+// (which sets *error itself) or when cancelled (*error says so).
 bool for_each_frame(MainWindow* window, QString* error,
                     const std::function<bool(int, const QImage&)>& write) {
   AnimationView* view = window->animation_view();
@@ -54,11 +61,24 @@ bool for_each_frame(MainWindow* window, QString* error,
     return false;
   }
   const int frames = animator->frame_count();
+  QProgressDialog progress(QStringLiteral("Exporting the animation view..."),
+                           QStringLiteral("Cancel"), 0, frames, window);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(500);
   bool ok = true;
   for (int k = 0; k < frames && ok; ++k) {
+    progress.setValue(k);
+    progress.setLabelText(QStringLiteral("Exporting frame %1 of %2...").arg(k + 1).arg(frames));
+    if (progress.wasCanceled()) {
+      *error = QStringLiteral("export cancelled; the frames written so far were removed");
+      ok = false;
+      break;
+    }
     window->model()->set_frame(k);
-    ok = write(k, view->render_image());
+    view->render_image();  // brings every panel up to this frame
+    ok = write(k, grab_with_vtk(view));
   }
+  progress.setValue(frames);
   window->model()->set_frame(saved);
   return ok;
 }
@@ -82,8 +102,42 @@ Session capture_session(MainWindow* window) {
   s.display = panel_display_name(window->animation_view()->display());
   s.frame = model->frame();
   s.view = window->current_view_name().toStdString();
+  const FlowDisplay flow = window->flow_view()->display();
+  s.flow_part = flow_part_key(flow.part);
+  s.flow_draw = {flow.arrows,  flow.streamlines,   flow.colour_wheel,
+                 flow.texture, flow.zoom_to_plane, flow.common_scale};
+  s.basis = basis_key(window->basis_view()->basis());
+  s.basis_playing = window->basis_view()->playing();
+  s.presentation = window->presentation();
+  s.lesson = window->lesson().toStdString();
+  s.play_rate = window->play_rate();
   return s;
 }
+
+namespace {
+
+// The window part of a session (flow view, basis, presentation, lesson, rate) when every
+// name in it is known; false with *error naming the field otherwise.
+bool parse_window_state(const Session& s, FlowDisplay* flow, BasisKind* basis, QString* error) {
+  if (!parse_flow_part(s.flow_part, &flow->part)) {
+    *error = QStringLiteral("window.flow_part: unknown part '%1'").arg(s.flow_part.c_str());
+    return false;
+  }
+  if (!parse_basis_kind(s.basis, basis)) {
+    *error = QStringLiteral("window.basis: unknown basis '%1'").arg(s.basis.c_str());
+    return false;
+  }
+  if (!s.lesson.empty() && !find_lesson(s.lesson)) {
+    *error = QStringLiteral("window.lesson: unknown lesson '%1'").arg(s.lesson.c_str());
+    return false;
+  }
+  flow->arrows = s.flow_draw[0], flow->streamlines = s.flow_draw[1];
+  flow->colour_wheel = s.flow_draw[2], flow->texture = s.flow_draw[3];
+  flow->zoom_to_plane = s.flow_draw[4], flow->common_scale = s.flow_draw[5];
+  return true;
+}
+
+}  // namespace
 
 bool apply_session(MainWindow* window, const Session& s, QString* error) {
   QImage texture;
@@ -97,6 +151,9 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
     *error = QStringLiteral("unknown view '%1'").arg(QString::fromStdString(s.view));
     return false;
   }
+  FlowDisplay flow = window->flow_view()->display();
+  BasisKind basis = BasisKind::kPlanar;
+  if (!parse_window_state(s, &flow, &basis, error)) return false;
   SceneModel* model = window->model();
   AnimationModel* animation = window->animation_model();
   if (!check_files(s, *animation, &texture, &script, error)) return false;
@@ -110,6 +167,12 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
   animation->set_source({s.source_kind, s.source_name, s.viewer_script});
   window->animation_view()->set_display(display);
   model->set_frame(s.frame);
+  window->flow_view()->set_display(flow);
+  window->basis_view()->set_basis(basis);
+  window->basis_view()->set_playing(s.basis_playing);
+  window->set_presentation(s.presentation);
+  window->show_lesson_caption(QString::fromStdString(s.lesson));
+  window->set_play_rate(s.play_rate);
   window->show_view(QString::fromStdString(s.view));
   return true;
 }
@@ -120,7 +183,8 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
     *error = QStringLiteral("%1: cannot create the directory").arg(directory);
     return false;
   }
-  return for_each_frame(window, error, [&](int k, const QImage& image) {
+  QStringList written;  // removed again when the export stops early: no partial set
+  const bool ok = for_each_frame(window, error, [&](int k, const QImage& image) {
     const QString path =
         QDir(directory).filePath(QStringLiteral("frame-%1.png").arg(k, 4, 10, QChar('0')));
     if (!overwrite && QFileInfo::exists(path)) {
@@ -131,8 +195,13 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
       *error = QStringLiteral("%1: cannot be written").arg(path);
       return false;
     }
+    written << path;
     return true;
   });
+  if (!ok) {
+    for (const QString& path : written) QFile::remove(path);
+  }
+  return ok;
 }
 
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error) {
@@ -166,6 +235,7 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
     return false;
   });
   if (started) writer->End();
+  if (!ok && started) QFile::remove(path);  // no partial video is left behind
   if (ok && !QFileInfo::exists(path)) {
     *error = QStringLiteral("%1: the video could not be written").arg(path);
     return false;

@@ -19,10 +19,13 @@ Session capture_session(MainWindow* window);
 // (texture, script, scene, viewer script) cannot be read or a value is unknown.
 bool apply_session(MainWindow* window, const Session& session, QString* error);
 
-// Plays the animation view's source from frame 0 to its last frame and writes what the
-// view shows for each frame: `directory`/frame-0000.png ... (PNG) or one .ogv file
-// (video, vtkOggTheoraWriter at 30 fps). Refuses existing files unless `overwrite`.
-// Returns false with *error set on failure. The window's frame is restored afterwards.
+// Plays the animation view's source from frame 0 to its last frame and writes the whole
+// view as on screen for each frame (every panel of its layout, grabbed with
+// app/screenshot.h's grab_with_vtk, so images are as wide as the view): `directory`/
+// frame-0000.png ... (PNG) or one .ogv file (video, vtkOggTheoraWriter at 30 fps). A
+// progress dialog counts the frames and can cancel. Refuses existing files unless
+// `overwrite`. Returns false with *error set on failure or cancel, and then removes what
+// it wrote (no partial set of frames, no partial video). The window's frame is restored.
 bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite, QString* error);
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error);
 

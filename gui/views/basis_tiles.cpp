@@ -141,9 +141,9 @@ void BasisTiles::style_tile(Tile& tile) {
   set_line_style(tile.grid->GetProperty(), grid, theme_.line_width + 0.5);
   set_line_style(tile.square->GetProperty(), theme_.muted, 1.0);
   const RgbF& text = tile.active ? theme_.text : theme_.muted;
-  set_text_style(tile.title->GetTextProperty(), text, theme_.label_size + 1);
+  set_text_style(tile.title->GetTextProperty(), text, title_font_size());
   tile.title->GetTextProperty()->BoldOn();
-  set_text_style(tile.value->GetTextProperty(), text, theme_.label_size);
+  set_text_style(tile.value->GetTextProperty(), text, value_font_size());
 }
 
 void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_px, double amount) {

@@ -41,6 +41,11 @@ class BasisTiles {
   // The smallest font of the tiles' titles and values, screen pixels.
   double smallest_text_px() const;
 
+  // Font sizes of the tiles' titles and value labels for the current theme, pixels: the
+  // theme's label size (at least 18 px in presentation mode) and one more for titles.
+  int title_font_size() const { return theme_.label_size + 1; }
+  int value_font_size() const { return theme_.label_size; }
+
  private:
   struct Tile {
     vtkSmartPointer<vtkRenderer> renderer;

@@ -16,6 +16,7 @@
 #include "views/basis_tiles.h"
 #include "views/flow_parts.h"
 #include "models/scene_model.h"
+#include "scene/view_culling.h"
 
 namespace oflab {
 namespace {
@@ -93,6 +94,7 @@ void BasisView::set_amount(double amount) {
 }
 bool BasisView::playing() const { return playing_; }
 int BasisView::active_tile_count() const { return tiles_->active_tile_count(); }
+QString BasisView::summary() const { return summary_->text(); }
 
 void BasisView::set_playing(bool playing) {
   playing_ = playing;
@@ -114,7 +116,15 @@ void BasisView::set_external_clock(bool on) {
   set_playing(playing_);
 }
 
-double BasisView::animated_amount() const { return amount() * 0.5 * (1.0 - std::cos(phase_)); }
+// Between kLowestShare and all of the amount, never zero: a tile passing through zero
+// amplitude looks undeformed, and its term would seem to do nothing.
+double BasisView::animated_amount() const {
+  constexpr double kLowestShare = 0.35;
+  const double swing = 0.5 * (1.0 - std::cos(phase_));  // 0 .. 1
+  return amount() * (kLowestShare + (1.0 - kLowestShare) * swing);
+}
+
+int BasisView::value_font_size() const { return tiles_->value_font_size(); }
 
 void BasisView::step_animation() {
   phase_ += kPhaseStep;
@@ -134,7 +144,12 @@ void BasisView::update_tiles() {
       ++second_order_active;
     }
   }
-  summary_->setText(tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
+  QString outside;
+  if (!plane_meets_image(scene.camera, context.pose, 1e-3)) {
+    outside = tr("The plane is outside the image: these are the terms of its plane extended "
+                 "beyond the picture, not of anything seen. ");
+  }
+  summary_->setText(outside + tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
                        "second-order ones. Grey tiles are terms this flow does not excite.")
                         .arg(QString::fromUtf8(basis_title(basis())))
                         .arg(tiles_->active_tile_count())

@@ -43,6 +43,13 @@ class BasisView : public ViewPage {
   void set_playing(bool playing);
   // Tiles with a non-zero coefficient after the last update.
   int active_tile_count() const;
+  // The line under the tiles; it starts by saying so when the plane is outside the image.
+  QString summary() const;
+  // The grids' displacement now: while playing it swings between 35 % and 100 % of
+  // amount() (never through zero); paused it is amount().
+  double animated_amount() const;
+  // Font size of the tiles' value labels, pixels.
+  int value_font_size() const;
   QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
 
   void refresh();
@@ -53,7 +60,6 @@ class BasisView : public ViewPage {
  private:
   QWidget* make_option_bar();
   void update_tiles();
-  double animated_amount() const;
 
   SceneModel* model_;
   QVTKOpenGLNativeWidget* vtk_widget_;

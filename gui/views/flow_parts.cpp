@@ -162,6 +162,19 @@ std::vector<Vec2> trace_streamline(const FlowContext& context, FlowPart part, co
   return path;
 }
 
+std::vector<Vec2> streamline_arrow_head(const std::vector<Vec2>& path, double length_px) {
+  if (path.size() < 2) return {};
+  const Vec2 tip = path.back();
+  const Vec2 step = tip - path[path.size() - 2];
+  const double step_length = glm::length(step);
+  if (!(step_length > 0.0)) return {};
+  const Vec2 back = -step / step_length * length_px;
+  const double c = std::cos(0.4363323129985824), s = std::sin(0.4363323129985824);  // 25 deg
+  const Vec2 left(c * back.x - s * back.y, s * back.x + c * back.y);
+  const Vec2 right(c * back.x + s * back.y, -s * back.x + c * back.y);
+  return {tip + left, tip, tip + right};
+}
+
 double max_flow_magnitude(const std::vector<FlowSample>& samples) {
   double largest = 0.0;
   for (const FlowSample& s : samples) largest = std::max(largest, glm::length(s.flow));

@@ -68,6 +68,12 @@ std::vector<FlowSample> sample_flow_grid(const FlowContext& context, FlowPart pa
 std::vector<Vec2> trace_streamline(const FlowContext& context, FlowPart part, const Vec2& seed,
                                    double duration_s, int steps);
 
+// The arrow head that shows a streamline's direction: three points (one wing, the tip,
+// the other wing) with the tip at the path's last point and the wings `length_px` back
+// along its last step, 25 degrees either side. Empty when the path has fewer than two
+// distinct points (no direction to show).
+std::vector<Vec2> streamline_arrow_head(const std::vector<Vec2>& path, double length_px);
+
 // Largest flow magnitude among the samples (0 for none).
 double max_flow_magnitude(const std::vector<FlowSample>& samples);
 

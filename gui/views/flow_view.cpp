@@ -36,6 +36,16 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   auto* side_layout = new QVBoxLayout(side);
   side_layout->setContentsMargins(4, 0, 0, 0);
   side_layout->addWidget(make_option_bar());
+  outside_note_ = new QLabel(
+      tr("The plane is outside the image. The terms below are those of its plane "
+         "extended beyond the picture, not of anything seen."),
+      side);
+  outside_note_->setObjectName(QStringLiteral("flow_outside_note"));
+  outside_note_->setWordWrap(true);
+  outside_note_->setStyleSheet(QStringLiteral("QLabel { color: white; background: #D55E00; "
+                                              "padding: 4px; }"));
+  outside_note_->hide();
+  side_layout->addWidget(outside_note_);
   side_layout->addWidget(table_, 1);
   auto* splitter = new QSplitter(Qt::Horizontal, this);
   splitter->addWidget(vtk_widget_);
@@ -132,6 +142,9 @@ void FlowView::update_scene() {
   if (!model_->script_name().isEmpty()) frame.prepend(tr("script %1, ").arg(model_->script_name()));
   renderer_->update(context, display(), frame);
   table_->show_terms(context.terms, 0.5 * std::hypot(scene.camera.width, scene.camera.height));
+  const bool outside = !renderer_->plane_in_image();
+  if (outside_note_->isVisibleTo(this) != outside) outside_note_->setVisible(outside);
+  table_->setEnabled(!outside);
   dirty_ = false;
 }
 

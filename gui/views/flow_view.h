@@ -10,6 +10,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QVTKOpenGLNativeWidget;
 
 namespace oflab {
@@ -35,6 +36,10 @@ class FlowView : public ViewPage {
   QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
   // Largest magnitude of the shown part after the last update, px/s.
   double shown_max_magnitude() const { return renderer_->shown_max_magnitude(); }
+  // False when the plane is outside the image after the last update; the view then draws
+  // no flow, its caption says so and a note over the greyed table explains the terms.
+  bool plane_in_image() const { return renderer_->plane_in_image(); }
+  QString caption() const { return renderer_->caption(); }
 
   // Updates the VTK scene from the model and renders when the view is visible (otherwise
   // it renders when shown).
@@ -51,6 +56,7 @@ class FlowView : public ViewPage {
   QVTKOpenGLNativeWidget* vtk_widget_;
   std::unique_ptr<FlowRenderer> renderer_;
   CoefficientTable* table_;
+  QLabel* outside_note_ = nullptr;
   QComboBox* part_box_ = nullptr;
   QCheckBox* arrows_box_ = nullptr;
   QCheckBox* streamlines_box_ = nullptr;

@@ -33,6 +33,13 @@ Session sample_session() {
   s.display = "difference";
   s.frame = 7;
   s.view = "analysis";
+  s.flow_part = "second-order";
+  s.flow_draw = {false, true, true, false, false, true};
+  s.basis = "taylor";
+  s.basis_playing = true;
+  s.presentation = true;
+  s.lesson = "basis-deformations";
+  s.play_rate = 15;
   return s;
 }
 
@@ -78,7 +85,30 @@ TEST(SessionFile, WrittenSessionReadsBackUnchanged) {
   EXPECT_EQ(back.display, s.display);
   EXPECT_EQ(back.frame, 7);
   EXPECT_EQ(back.view, s.view);
+  EXPECT_EQ(back.flow_part, "second-order");
+  EXPECT_EQ(back.flow_draw, s.flow_draw);
+  EXPECT_EQ(back.basis, "taylor");
+  EXPECT_TRUE(back.basis_playing);
+  EXPECT_TRUE(back.presentation);
+  EXPECT_EQ(back.lesson, "basis-deformations");
+  EXPECT_EQ(back.play_rate, 15);
   fs::remove(file);
+}
+
+// Sessions saved before the window's state was kept have no "window" object: they read
+// with the window's defaults.
+TEST(SessionFile, ASessionWithoutWindowStateReadsWithTheDefaults) {
+  json j = json::parse(session_to_json(sample_session()));
+  j.erase("window");
+  const Session back = parse_session(j.dump(), "old.json");
+  const Session defaults;
+  EXPECT_EQ(back.flow_part, defaults.flow_part);
+  EXPECT_EQ(back.flow_draw, defaults.flow_draw);
+  EXPECT_EQ(back.basis, defaults.basis);
+  EXPECT_FALSE(back.presentation);
+  EXPECT_TRUE(back.lesson.empty());
+  EXPECT_EQ(back.play_rate, 30);
+  EXPECT_EQ(back.view, "analysis");  // the rest is read as before
 }
 
 TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {
@@ -148,6 +178,16 @@ TEST(SessionFile, EveryBadFieldIsNamedWithItsPart) {
       {[](json& j) { j["plane"]["motion"]["model"] = "spin"; },
        "s.json: plane.motion: field 'model': unknown motion model"},
       {[](json& j) { j["script"] = 1; }, "s.json: field 'script': must be a string"},
+      {[](json& j) { j["window"] = 1; }, "s.json: field 'window': must be an object"},
+      {[](json& j) { j["window"]["flow_draw"] = json::array({true}); },
+       "s.json: window: field 'flow_draw': must be a list of 6 booleans"},
+      {[](json& j) { j["window"]["flow_draw"][2] = 1; },
+       "s.json: window: field 'flow_draw': must be a list of booleans"},
+      {[](json& j) { j["window"]["presentation"] = "yes"; },
+       "s.json: window: field 'presentation': must be true or false"},
+      {[](json& j) { j["window"]["play_rate"] = 0; }, "s.json: window: field 'play_rate'"},
+      {[](json& j) { j["window"]["play_rate"] = 12.5; }, "s.json: window: field 'play_rate'"},
+      {[](json& j) { j["window"].erase("basis"); }, "s.json: window: field 'basis': is missing"},
       {[](json& j) { j["animation"]["source"].erase("viewer"); },
        "s.json: animation.source: field 'viewer': is missing"},
       {[](json& j) { j["animation"]["mode"] = "fast"; }, "s.json: animation: field 'mode'"},

@@ -58,6 +58,8 @@ TEST_F(ExportTest, PngFramesAreOnePerFrameDifferAndAreNotOverwritten) {
   const QImage last(QDir(out).filePath(files.back()));
   ASSERT_FALSE(first.isNull());
   EXPECT_GT(first.width(), 100);
+  // The whole view as on screen (every panel), not one re-rendered panel.
+  EXPECT_EQ(first.size(), window().animation_view()->size());
   EXPECT_EQ(first.size(), last.size());
   EXPECT_NE(first, last);  // the plane turned
 

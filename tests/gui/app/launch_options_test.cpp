@@ -122,6 +122,15 @@ TEST(LaunchOptions, BrokenScriptFileIsRejectedNamingTheFile) {
   EXPECT_NE(error.find("oflab_broken_script"), std::string::npos);
 }
 
+// The usage names every view of the view table, the scene-shifting view "slices" too.
+TEST(LaunchOptions, UsageListsEveryViewIncludingSlices) {
+  const std::string usage = launch_usage();
+  for (const std::string name : {"flow", "basis", "animation", "analysis", "slices"}) {
+    EXPECT_NE(usage.find(name + " ("), std::string::npos) << name;
+  }
+  EXPECT_NE(usage.find("slices (Scene shifting)"), std::string::npos);
+}
+
 TEST(LaunchOptions, FlowOverridesApplyOnlyWhatWasGiven) {
   const LaunchOptions o =
       parse_launch_options({"--flow-show", "second-order", "--flow-draw", "wheel,zoom"});

@@ -1,6 +1,7 @@
 // The window for real: it opens on the demo, every view renders, the controls drive the
 // scene, impossible input is refused with a visible message, lessons set themselves up.
 #include <QDoubleSpinBox>
+#include <algorithm>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <fstream>
@@ -175,6 +176,25 @@ TEST_F(MainWindowTest, GalleryAnimationMovesTheGrids) {
   EXPECT_GT(changed_fraction(before, window().basis_view()->render_image()), 0.005);
 }
 
+// Playing, the tiles swing between 35 % and all of the amount: over a whole loop no tile
+// passes through zero amplitude (where every tile would look undeformed).
+TEST_F(MainWindowTest, BasisTilesNeverPassThroughZeroAmplitude) {
+  BasisView* basis = window().basis_view();
+  window().show_view("basis");
+  basis->set_amount(0.6);
+  double lowest = 1.0, highest = 0.0;
+  for (int i = 0; i < 96; ++i) {  // two cycles of 48 steps
+    basis->step_animation();
+    lowest = std::min(lowest, basis->animated_amount());
+    highest = std::max(highest, basis->animated_amount());
+  }
+  EXPECT_GT(lowest, 0.3 * 0.6);
+  EXPECT_NEAR(highest, 0.6, 0.01);
+  EXPECT_LT(lowest, 0.4 * 0.6);  // it does swing
+  window().set_presentation(true);
+  EXPECT_GE(basis->value_font_size(), 18);
+}
+
 TEST_F(MainWindowTest, ResidualPartDrawsNoArrowsAndSaysZero) {
   FlowDisplay d = window().flow_view()->display();
   d.part = FlowPart::kExactMinusHomography;
@@ -185,6 +205,84 @@ TEST_F(MainWindowTest, ResidualPartDrawsNoArrowsAndSaysZero) {
   window().flow_view()->set_display(d);
   window().flow_view()->render_image();
   EXPECT_GT(window().flow_view()->shown_max_magnitude(), 1.0);
+}
+
+// A plane moved out of the picture: the flow view draws no flow and says why (no
+// "max |v| = 0" over a colour bar), the basis view says its terms describe nothing seen.
+TEST_F(MainWindowTest, APlaneOutsideTheImageIsSaidToBeOutside) {
+  window().flow_view()->render_image();
+  EXPECT_TRUE(window().flow_view()->plane_in_image());
+  EXPECT_FALSE(window().flow_view()->caption().contains("outside"));
+  PlaneScene scene = default_demo_scene();
+  scene.pose.point = Vec3(40.0, 0.0, scene.pose.point.z);  // far to the right of the image
+  ASSERT_TRUE(window().model()->set_scene(scene));
+  window().flow_view()->render_image();
+  EXPECT_FALSE(window().flow_view()->plane_in_image());
+  EXPECT_TRUE(window().flow_view()->caption().startsWith("The plane is outside the image"))
+      << window().flow_view()->caption().toStdString();
+  EXPECT_FALSE(window().flow_view()->caption().contains("max |v|"));
+  EXPECT_EQ(window().flow_view()->shown_max_magnitude(), 0.0);
+  EXPECT_FALSE(window().flow_view()->coefficient_table()->isEnabled());
+  window().show_view("basis");
+  QApplication::processEvents();
+  EXPECT_TRUE(window().basis_view()->summary().startsWith("The plane is outside the image"));
+}
+
+// Nearly edge-on, the plane covers no grid sample: the residual is not called "zero up to
+// rounding", the caption says there is nothing to compare.
+TEST_F(MainWindowTest, AnEdgeOnPlaneHasNothingToCompare) {
+  PlaneScene scene = default_demo_scene();
+  scene.pose.point = Vec3(0.0031, 0.0, 5.0);
+  scene.pose.normal = Vec3(1.0, 0.0, 1e-6);  // the view ray through the centre grazes it
+  scene.pose.up = Vec3(0.0, -1.0, 0.0);
+  ASSERT_TRUE(window().model()->set_scene(scene));
+  FlowDisplay d = window().flow_view()->display();
+  d.part = FlowPart::kExactMinusAffine;
+  window().flow_view()->set_display(d);
+  window().flow_view()->render_image();
+  const QString caption = window().flow_view()->caption();
+  EXPECT_TRUE(caption.contains("nothing to compare")) << caption.toStdString();
+  EXPECT_FALSE(caption.contains("zero up to rounding")) << caption.toStdString();
+  EXPECT_TRUE(window().flow_view()->plane_in_image());  // edge-on is not outside
+}
+
+// Everything the window shows beyond the scene comes back from a saved session: the flow
+// options, the basis and its play state, presentation mode, the lesson, the rate, the view.
+TEST_F(MainWindowTest, SessionRestoresTheWindowState) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("window.json");
+  window().apply_lesson(*find_lesson("basis-deformations"));
+  FlowDisplay flow = window().flow_view()->display();
+  flow.part = FlowPart::kSecondOrder;
+  flow.arrows = false, flow.streamlines = true, flow.colour_wheel = true;
+  flow.texture = false, flow.zoom_to_plane = false, flow.common_scale = true;
+  window().flow_view()->set_display(flow);
+  window().basis_view()->set_basis(BasisKind::kWaxmanUllman);
+  window().set_presentation(true);
+  window().set_play_rate(10);
+  window().show_view("flow");
+  ASSERT_TRUE(window().save_session(path, false));
+  // Change everything, then load.
+  window().apply_lesson(*find_lesson("flow-of-a-plane"));
+  window().set_presentation(false);
+  window().set_play_rate(60);
+  window().basis_view()->set_basis(BasisKind::kPlanar);
+  window().show_view("analysis");
+  ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
+  const FlowDisplay back = window().flow_view()->display();
+  EXPECT_EQ(back.part, FlowPart::kSecondOrder);
+  EXPECT_FALSE(back.arrows);
+  EXPECT_TRUE(back.streamlines);
+  EXPECT_TRUE(back.colour_wheel);
+  EXPECT_FALSE(back.texture);
+  EXPECT_FALSE(back.zoom_to_plane);
+  EXPECT_TRUE(back.common_scale);
+  EXPECT_EQ(window().basis_view()->basis(), BasisKind::kWaxmanUllman);
+  EXPECT_TRUE(window().presentation());
+  EXPECT_EQ(window().lesson(), "basis-deformations");
+  EXPECT_EQ(window().caption().toStdString(), find_lesson("basis-deformations")->caption);
+  EXPECT_EQ(window().play_rate(), 10);
+  EXPECT_EQ(window().current_view_name(), "flow");
 }
 
 TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {

@@ -97,6 +97,29 @@ TEST(FlowParts, StreamlineOfATranslationIsAStraightSegment) {
   EXPECT_NEAR(glm::length(path.back() - expected), 0.0, 1e-9);
 }
 
+TEST(FlowParts, StreamlineArrowHeadPointsAlongTheLastStep) {
+  const FlowContext c = demo_context();
+  const auto path = trace_streamline(c, FlowPart::kFull, Vec2(10, -5), 0.2, 16);
+  ASSERT_GE(path.size(), 3u);
+  const auto head = streamline_arrow_head(path, 12.0);
+  ASSERT_EQ(head.size(), 3u);
+  EXPECT_EQ(head[1], path.back());
+  const Vec2 forward = glm::normalize(path.back() - path[path.size() - 2]);
+  for (const Vec2& wing : {head[0], head[2]}) {
+    EXPECT_NEAR(glm::length(wing - head[1]), 12.0, 1e-9);
+    // Behind the tip, at 25 degrees from the line: cos 25 = 0.9063.
+    EXPECT_NEAR(glm::dot(head[1] - wing, forward) / 12.0, std::cos(25.0 * M_PI / 180.0), 1e-9);
+  }
+  // The wings lie on opposite sides of the line.
+  const auto side = [&](const Vec2& w) {
+    const Vec2 d = w - head[1];
+    return forward.x * d.y - forward.y * d.x;
+  };
+  EXPECT_LT(side(head[0]) * side(head[2]), 0.0);
+  EXPECT_TRUE(streamline_arrow_head({Vec2(1, 1)}, 5.0).empty());
+  EXPECT_TRUE(streamline_arrow_head({Vec2(1, 1), Vec2(1, 1)}, 5.0).empty());
+}
+
 TEST(FlowParts, StreamlineStopsAtThePlaneOutline) {
   const FlowContext c = demo_context();
   // Long enough to travel 2000 px at the translation's speed: far beyond the plane.
