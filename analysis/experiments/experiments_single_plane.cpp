@@ -95,7 +95,8 @@ std::vector<std::string> published_row(const std::string& label,
   std::vector<std::string> row = {label};
   for (const std::string& c : level_cells(share)) row.push_back(c);
   for (const std::string& c :
-       {saved, std::string("-"), std::string("-"), std::string("-"), std::string("")}) {
+       {saved, std::string("-"), std::string("-"), std::string("-"), std::string("-"),
+        std::string("")}) {
     row.push_back(c);
   }
   return row;
@@ -108,6 +109,7 @@ std::vector<std::string> oflab_row(const std::string& label, const MeasuredRun& 
   row.push_back(percent(time_saved(run, baseline)));
   row.push_back(percent(work_saved(run, baseline)));
   row.push_back(fixed(run.summary.max_measured_error_px, 2));
+  row.push_back(fixed(run.summary.max_excess_px, 2));
   row.push_back(fixed(run.summary.mean_psnr_db, 1));
   row.push_back(reading);
   return row;
@@ -153,7 +155,8 @@ ReportTable comparison_table(const Experiment1Result& result) {
       "Experiment 1: percent of frames per update level (frames after the first) and "
       "time saved against re-rendering every frame, thresholds 1 px";
   t.header = level_header("script / source",
-                          {"time saved", "work saved", "max error px", "mean PSNR dB", "reading"});
+                          {"time saved", "work saved", "max error px",
+                           "max excess px", "mean PSNR dB", "reading"});
   for (const Experiment1Script& s : result.scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
     if (!pub) throw std::logic_error("no published row for " + s.script);

@@ -192,7 +192,12 @@ PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const
     return {Framing::kNotShown, "not visible: the plane is seen edge-on", {}};
   }
   if (!plane_meets_image(camera_, pose, settings_.near)) {
-    return {Framing::kNotShown, "outside the image", {}};
+    bool beyond_near = false;
+    for (const Vec3& c : plane_corners(pose)) beyond_near = beyond_near || c.z >= settings_.near;
+    return {Framing::kNotShown,
+            beyond_near ? "outside the image"
+                        : "not visible: wholly nearer than the near plane or behind the eye",
+            {}};
   }
   const double gw = settings_.guard_band * camera_.width;
   const double gh = settings_.guard_band * camera_.height;
