@@ -30,6 +30,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "flow/camera.h"
 #include "engine/decision.h"
