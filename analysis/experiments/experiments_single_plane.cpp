@@ -94,9 +94,8 @@ std::vector<std::string> published_row(const std::string& label,
                                        const std::string& saved) {
   std::vector<std::string> row = {label};
   for (const std::string& c : level_cells(share)) row.push_back(c);
-  for (const std::string& c :
-       {saved, std::string("-"), std::string("-"), std::string("-"), std::string("-"),
-        std::string("")}) {
+  for (const std::string& c : {saved, std::string("-"), std::string("-"), std::string("-"),
+                               std::string("-"), std::string("")}) {
     row.push_back(c);
   }
   return row;
@@ -154,9 +153,8 @@ ReportTable comparison_table(const Experiment1Result& result) {
   t.caption =
       "Experiment 1: percent of frames per update level (frames after the first) and "
       "time saved against re-rendering every frame, thresholds 1 px";
-  t.header = level_header("script / source",
-                          {"time saved", "work saved", "max error px",
-                           "max excess px", "mean PSNR dB", "reading"});
+  t.header = level_header("script / source", {"time saved", "work saved", "max error px",
+                                              "max excess px", "mean PSNR dB", "reading"});
   for (const Experiment1Script& s : result.scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
     if (!pub) throw std::logic_error("no published row for " + s.script);

@@ -123,7 +123,6 @@ PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose
   return {std::move(w.layer), w.offset_x, w.offset_y};
 }
 
-
 PlaneAnimator::PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings)
     : camera_(camera), texture_(std::move(texture)), settings_(settings) {}
 
@@ -167,7 +166,8 @@ void PlaneAnimator::update(const PlanePose* previous, const RigidMotion* motion,
     try {
       render_fresh(current, report);
       finish_report(current, report);
-      if (report.visible) report.note = std::string("re-rendered after a refusal: ") + refused.what();
+      if (report.visible)
+        report.note = std::string("re-rendered after a refusal: ") + refused.what();
     } catch (const std::exception& again) {
       report = FrameReport{};
       report.frame = frame_;
@@ -183,8 +183,9 @@ PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const
   const PoseProblem p = plane_pose_problem(pose);
   // A centre behind the eye or a plane through it is a matter for clipping; anything else
   // (non-finite values, degenerate axes) cannot be drawn at all.
-  const bool drawable_axes = p.field.empty() || (p.field == "point" && std::isfinite(pose.point.x) &&
-                                                std::isfinite(pose.point.y) && std::isfinite(pose.point.z));
+  const bool drawable_axes =
+      p.field.empty() || (p.field == "point" && std::isfinite(pose.point.x) &&
+                          std::isfinite(pose.point.y) && std::isfinite(pose.point.z));
   if (!drawable_axes) return {Framing::kNotShown, "not visible: " + p.message, {}};
   const Vec3 corner0 = plane_corners(pose)[0];
   const Vec3 to_eye = p.field.empty() ? pose.point : corner0;
@@ -211,8 +212,10 @@ PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const
   }
   if (whole) return {};
   rectangle.uv = {Vec2(0.0, 0.0), Vec2(1.0, 0.0), Vec2(1.0, 1.0), Vec2(0.0, 1.0)};
-  Framing f{Framing::kClipped, "clipped: the plane reaches in front of the near plane or "
-                               "beyond the guard band, rendered exactly", {}};
+  Framing f{Framing::kClipped,
+            "clipped: the plane reaches in front of the near plane or "
+            "beyond the guard band, rendered exactly",
+            {}};
   f.clipped = clip_to_frustum(rectangle, view_frustum(camera_, settings_.near, 1.0));
   if (f.clipped.empty()) return {Framing::kNotShown, "outside the image", {}};
   return f;
@@ -221,9 +224,15 @@ PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const
 void PlaneAnimator::render_fresh(const PlanePose& pose, FrameReport& report) {
   const Framing framing = frame_pose(pose);
   switch (framing.kind) {
-    case Framing::kNotShown: hide(framing.note, report); break;
-    case Framing::kClipped: show_clipped(pose, framing, report); break;
-    case Framing::kWhole: rerender(pose, report); break;
+    case Framing::kNotShown:
+      hide(framing.note, report);
+      break;
+    case Framing::kClipped:
+      show_clipped(pose, framing, report);
+      break;
+    case Framing::kWhole:
+      rerender(pose, report);
+      break;
   }
 }
 
@@ -350,8 +359,8 @@ void PlaneAnimator::cache_from_display() {
 void PlaneAnimator::show_from_cache(FrameReport& report) {
   WarpOptions options;
   options.sampling = settings_.sampling;
-  show(warp_layer(cache_.layer, cache_.to_display, options),
-       cache_.to_display * cache_.from_texel, report);
+  show(warp_layer(cache_.layer, cache_.to_display, options), cache_.to_display * cache_.from_texel,
+       report);
 }
 
 bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point,
@@ -415,7 +424,8 @@ LevelPixels PlaneAnimator::level_pixels() const {
 void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
                                   const PlanePose& current) {
   if (policy().model == ModelUpdate::kExact) {
-    model_ = exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
+    model_ =
+        exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
     return;
   }
   PlanarFlowCoefficients step = flow;
@@ -425,14 +435,18 @@ void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
 
 Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& point) const {
   switch (level) {
-    case Level::kNone: return displayed_;
+    case Level::kNone:
+      return displayed_;
     case Level::kTranslate: {
       const Vec2 step = translation_step(correction, point);
       return translation_matrix(step.x, step.y) * displayed_;
     }
-    case Level::kAffine: return affine_part_at(correction, point) * displayed_;
-    case Level::kPerspective: return model_;
-    case Level::kRerender: break;
+    case Level::kAffine:
+      return affine_part_at(correction, point) * displayed_;
+    case Level::kPerspective:
+      return model_;
+    case Level::kRerender:
+      break;
   }
   return displayed_;
 }
@@ -457,7 +471,8 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
   const Vec2 point = centred_to_pixel(camera_, m.expansion_point);
   const Mat3 target = target_warp(current);
   for (int l = 0; l < kTermCount; ++l) {
-    report.pending[l] = corner_distance(warp_after(static_cast<Level>(l), correction, point), target);
+    report.pending[l] =
+        corner_distance(warp_after(static_cast<Level>(l), correction, point), target);
   }
   report.level = policy().choose(
       policy(), {report.flow, carried, settings_.thresholds, level_pixels(), report.pending});
@@ -476,11 +491,20 @@ void PlaneAnimator::apply_level(FrameReport& report, const Vec2& expansion_point
   const Vec2 point = centred_to_pixel(camera_, expansion_point);
   bool within_limit = true;
   switch (report.level) {
-    case Level::kNone: break;
-    case Level::kTranslate: apply_translation(translation_step(correction, point)); break;
-    case Level::kAffine: within_limit = apply_affine(correction, point, report); break;
-    case Level::kPerspective: within_limit = apply_perspective(model_, report); break;
-    case Level::kRerender: rerender(current, report); break;
+    case Level::kNone:
+      break;
+    case Level::kTranslate:
+      apply_translation(translation_step(correction, point));
+      break;
+    case Level::kAffine:
+      within_limit = apply_affine(correction, point, report);
+      break;
+    case Level::kPerspective:
+      within_limit = apply_perspective(model_, report);
+      break;
+    case Level::kRerender:
+      rerender(current, report);
+      break;
   }
   if (!within_limit) {
     report.note = "sampling limit: the cache would be magnified too much";

@@ -32,13 +32,13 @@
 #include <string>
 #include <vector>
 
-#include "flow/camera.h"
 #include "engine/decision.h"
 #include "engine/reuse_policy.h"
+#include "flow/camera.h"
 #include "flow/decomposition.h"
-#include "image/layer.h"
 #include "flow/motion.h"
 #include "flow/plane.h"
+#include "image/layer.h"
 #include "image/warp.h"
 #include "scene/view_culling.h"
 
@@ -70,8 +70,8 @@ struct EngineSettings {
 struct FrameReport {
   int frame = 0;
   Level level = Level::kNone;
-  bool visible = true;        // false: nothing drawn, no error counted (see note)
-  bool clipped = false;       // rendered exactly after clipping (level re-render)
+  bool visible = true;   // false: nothing drawn, no error counted (see note)
+  bool clipped = false;  // rendered exactly after clipping (level re-render)
   // Why a frame is special: "outside the image", "not visible: ...", "clipped: ...",
   // "sampling limit: ...", "re-rendered after a refusal: ...".
   std::string note;
@@ -161,7 +161,7 @@ class PlaneAnimator {
   // How a pose can be drawn this frame (see "Framing" above).
   struct Framing {
     enum Kind { kWhole, kClipped, kNotShown } kind = kWhole;
-    std::string note;   // kClipped, kNotShown: why
+    std::string note;     // kClipped, kNotShown: why
     ViewPolygon clipped;  // kClipped: the rectangle clipped to the view frustum
   };
   Framing frame_pose(const PlanePose& pose) const;

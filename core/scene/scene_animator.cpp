@@ -228,8 +228,8 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationF
   try {
     WarpStats stats;
     s.clipped_layer = oflab::render_clipped(camera_, scratch_textures_[polygon.texture],
-                                            polygon_pose(polygon, view, s.texture_size),
-                                            s.clipped, settings_.engine.sampling, &stats);
+                                            polygon_pose(polygon, view, s.texture_size), s.clipped,
+                                            settings_.engine.sampling, &stats);
     report.pixels_written += stats.pixels_written;
   } catch (const std::invalid_argument&) {
     // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.

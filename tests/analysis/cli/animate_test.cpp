@@ -6,17 +6,16 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
-#include "runs/source_kinds.h"
 #include "cli/commands.h"
+#include "cli_capture.h"
+#include "flow/homography.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/script_file.h"
-#include "flow/homography.h"
-#include "cli_capture.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 namespace {
@@ -161,7 +160,10 @@ TEST(Experiment1, TranslationOneMeasuredErrorIsNeverBelowTheShownDisplacement) {
   int compared = 0, displaced = 0;
   for (int i = 0; i < shown->frame_count(); ++i) {
     const AnimationFrame f = i == 0 ? shown->start() : shown->advance();
-    if (i == 0) truth->start(); else truth->advance();
+    if (i == 0)
+      truth->start();
+    else
+      truth->advance();
     const FrameReport& r = f.layer_reports.at(0);
     bool inside = true;
     for (const Vec2& p : projected_corners(script.camera, script.frames[i].pose)) {
@@ -199,13 +201,14 @@ TEST(AnimateCommand, PlaneLeavingTheImageIsNotVisibleInTheCsv) {
   const fs::path dir = fs::temp_directory_path() / "oflab-leaving-plane";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  nlohmann::json script = nlohmann::json::parse(std::ifstream(resolve_script_path("translation-1")));
+  nlohmann::json script =
+      nlohmann::json::parse(std::ifstream(resolve_script_path("translation-1")));
   script["segments"][0]["frames"] = 30;
   script["segments"][0]["velocity"] = {0.1, 0.0, 0.0};  // 25.6 px per frame, out by frame 20
   std::ofstream(dir / "leaving.json") << script.dump();
-  const testing::CliResult c = testing::run_cli_captured(
-      {"animate", "--script", (dir / "leaving.json").string(), "--out", (dir / "out").string(),
-       "--quiet"});
+  const testing::CliResult c =
+      testing::run_cli_captured({"animate", "--script", (dir / "leaving.json").string(), "--out",
+                                 (dir / "out").string(), "--quiet"});
   ASSERT_EQ(c.code, 0) << c.err;
   std::ifstream csv(dir / "out" / "frames.csv");
   std::string line;

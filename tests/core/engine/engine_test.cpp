@@ -1,5 +1,7 @@
 // The decision procedure and the engine on synthetic scripts (no files): flow measures
 // against independent computations, the level rule, and the engine's contracts.
+#include "engine/engine.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,13 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "image/composite.h"
 #include "engine/decision.h"
-#include "engine/engine.h"
 #include "engine/reuse_policy.h"
+#include "engine/script.h"
 #include "flow/decomposition.h"
 #include "flow/homography.h"
-#include "engine/script.h"
+#include "image/composite.h"
 
 namespace oflab {
 namespace {
@@ -198,8 +199,7 @@ TEST(Engine, PlaneBehindTheCameraAndEmptyTextureAreReportedNotFatal) {
     const FrameReport r = a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
     if (!r.visible) {
       ++hidden;
-      EXPECT_TRUE(r.note.find("not visible") != std::string::npos ||
-                  r.note == "outside the image")
+      EXPECT_TRUE(r.note.find("not visible") != std::string::npos || r.note == "outside the image")
           << r.note;
       EXPECT_TRUE(std::isnan(r.measured_error_px));
     }
@@ -320,9 +320,9 @@ TEST(EngineFraming, PlaneAMillionthFromEdgeOnIsReportedNotDrawn) {
 TEST(EngineFraming, PlaneLeavingTheImageIsNotVisibleAndComesBackRerendered) {
   // Sideways at 40 px per frame: the plane leaves the image, then returns.
   const Camera cam = make_camera(256.0, 320, 240);
-  const auto frames = expand_segments(facing_pose(2.0), MotionModel::kScrew,
-                                      {{12, Vec3(0.3, 0.0, 0.0), Vec3(0.0)},
-                                       {12, Vec3(-0.3, 0.0, 0.0), Vec3(0.0)}});
+  const auto frames = expand_segments(
+      facing_pose(2.0), MotionModel::kScrew,
+      {{12, Vec3(0.3, 0.0, 0.0), Vec3(0.0)}, {12, Vec3(-0.3, 0.0, 0.0), Vec3(0.0)}});
   const std::vector<FrameReport> r = play(cam, frames);
   bool was_outside = false, came_back = false;
   for (const FrameReport& f : r) {
@@ -432,9 +432,9 @@ TEST(Errata, Erratum23SecondOrderMeasureIsTheQuadraticFlowAtTheCorners) {
 // Erratum 25: the update rule of the error books, replayed from the reports (neglected
 // terms accumulate, handled ones are caught up with, re-render clears all) and checked
 // against the truth. On a frontal plane sliding exactly 0.5 px per frame, translated every
-// second frame by exactly one pixel (no rounding, no higher orders) the corrected books equal the measured error of every frame, found
-// from where the shown pixels are; the printed rule, which accumulates only the terms
-// below the level, would book nothing while the image drifts.
+// second frame by exactly one pixel (no rounding, no higher orders) the corrected books equal the
+// measured error of every frame, found from where the shown pixels are; the printed rule, which
+// accumulates only the terms below the level, would book nothing while the image drifts.
 TEST(Errata, Erratum25NeglectedTermsAccumulateHandledOnesResetAndTheBooksMatchTheTruth) {
   const Camera cam = make_camera(256.0, 320, 240);
   const auto frames = expand_segments(facing_pose(1.0), MotionModel::kScrew,
