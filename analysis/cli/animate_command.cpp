@@ -43,7 +43,9 @@ void print_summary(const nlohmann::json& j, const std::string& script, const Reu
       << j.at("pixels_written").get<std::int64_t>() << " vs "
       << j.at("baseline_pixels_written").get<std::int64_t>() << ")\n"
       << "  max measured error " << number("max_measured_error_px") << " px, mean PSNR "
-      << number("mean_psnr_db") << " dB\n";
+      << number("mean_psnr_db") << " dB\n"
+      << "  max excess " << number("max_excess_px")
+      << " px (measured minus estimated error, worst frame)\n";
   const int invisible = j.at("invisible_frames");
   if (invisible) out << "  " << invisible << " frames not visible\n";
 }

@@ -91,8 +91,8 @@ std::vector<std::string> published_row(const std::string& label,
                                        const std::string& saved) {
   std::vector<std::string> row = {label};
   for (const std::string& c : level_cells(share)) row.push_back(c);
-  for (const std::string& c :
-       {saved, std::string("-"), std::string("-"), std::string("-"), std::string("")}) {
+  for (const std::string& c : {saved, std::string("-"), std::string("-"), std::string("-"),
+                               std::string("-"), std::string("")}) {
     row.push_back(c);
   }
   return row;
@@ -105,6 +105,7 @@ std::vector<std::string> oflab_row(const std::string& label, const MeasuredRun& 
   row.push_back(percent(time_saved(run)));
   row.push_back(percent(work_saved(run, baseline)));
   row.push_back(fixed(run.summary.max_measured_error_px, 2));
+  row.push_back(fixed(run.summary.max_excess_px, 2));
   row.push_back(fixed(run.summary.mean_psnr_db, 1));
   row.push_back(reading);
   return row;
@@ -149,8 +150,8 @@ ReportTable comparison_table(const Experiment1Result& result) {
   t.caption =
       "Experiment 1: percent of frames per update level (frames after the first) and "
       "time saved against re-rendering every frame, thresholds 1 px";
-  t.header = level_header("script / source",
-                          {"time saved", "work saved", "max error px", "mean PSNR dB", "reading"});
+  t.header = level_header("script / source", {"time saved", "work saved", "max error px",
+                                              "max excess px", "mean PSNR dB", "reading"});
   for (const Experiment1Script& s : result.scripts) {
     const PublishedScriptResult* pub = published_experiment1_row(s.script);
     if (!pub) throw std::logic_error("no published row for " + s.script);

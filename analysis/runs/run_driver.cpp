@@ -34,6 +34,11 @@ void summarise(AnimationRun& run) {
     s.time_ms += f.time_ms;
     s.visibility_time_ms += f.visibility_ms;
     s.max_measured_error_px = std::max(s.max_measured_error_px, f.max_measured_error_px);
+    for (const FrameReport& r : f.layer_reports) {
+      if (!r.visible || !std::isfinite(r.measured_error_px)) continue;
+      const double excess = r.measured_error_px - r.estimated_error_px;
+      s.max_excess_px = std::isnan(s.max_excess_px) ? excess : std::max(s.max_excess_px, excess);
+    }
     times.push_back(f.time_ms);
     if (std::isfinite(run.baseline_ms[i])) s.baseline_time_ms += run.baseline_ms[i];
     if (std::isfinite(run.conventional_ms[i])) s.conventional_time_ms += run.conventional_ms[i];

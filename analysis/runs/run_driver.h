@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -64,6 +65,10 @@ struct RunSummary {
   double time_saved = 0.0;  // 1 - time / baseline time (0 without a baseline)
   double work_saved = 0.0;  // 1 - pixels / baseline pixels (0 without a baseline)
   double max_measured_error_px = 0.0;
+  // Measured minus estimated error (FrameReport) of the worst visible engine layer report
+  // over the run, pixels: at most 0 when the estimates bound the truth; NaN when there was
+  // no such report (scene shifting keeps no per-layer books).
+  double max_excess_px = std::numeric_limits<double>::quiet_NaN();
   double mean_psnr_db = 0.0;      // over the finite per-frame PSNRs (NaN when none)
   double conventional_iou = 0.0;  // mean alpha-mask IoU of VTK against the baseline (or NaN)
   long culled() const { return back_facing + outside_frustum; }

@@ -80,6 +80,7 @@ nlohmann::json plane_summary_json(const AnimationRun& run) {
           {"time_saved", s.time_saved},
           {"work_saved", s.work_saved},
           {"max_measured_error_px", s.max_measured_error_px},
+          {"max_excess_px", finite_or_null(s.max_excess_px)},
           {"mean_psnr_db", finite_or_null(s.mean_psnr_db)},
           {"time_ms", s.time_ms},
           {"baseline_time_ms", s.baseline_time_ms},
@@ -171,6 +172,7 @@ nlohmann::json scene_summary_json(const AnimationRun& run) {
           {"pixels_written", s.pixels},
           {"baseline_pixels_written", s.baseline_pixels},
           {"max_measured_error_px", s.max_measured_error_px},
+          {"max_excess_px", finite_or_null(s.max_excess_px)},
           {"mean_psnr_db", finite_or_null(s.mean_psnr_db)},
           {"conventional_iou", finite_or_null(s.conventional_iou)}};
 }

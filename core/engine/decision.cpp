@@ -67,10 +67,17 @@ double neglected_error(const TermArray& accumulated, const TermArray& flow, Leve
 
 Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
                    const LevelSet& allowed) {
+  return choose_level(accumulated, flow, thresholds, allowed, TermArray{});
+}
+
+Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
+                   const LevelSet& allowed, const TermArray& pending) {
   for (int l = 0; l < kTermCount; ++l) {
     const Level level = static_cast<Level>(l);
     if (!allowed[l]) continue;
-    if (neglected_error(accumulated, flow, level) <= thresholds[l]) return level;
+    if (neglected_error(accumulated, flow, level) <= thresholds[l] && pending[l] <= thresholds[l]) {
+      return level;
+    }
   }
   return Level::kRerender;
 }

@@ -65,6 +65,10 @@ FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const Rig
 // perspective); re-render is chosen when no allowed level is acceptable, allowed or not.
 Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
                    const LevelSet& allowed);
+// The same, with a second test: level L (none..perspective) is acceptable only when
+// pending[L], the exact error it would leave (pixels), also stays within thresholds[L].
+Level choose_level(const TermArray& accumulated, const TermArray& flow, const TermArray& thresholds,
+                   const LevelSet& allowed, const TermArray& pending);
 
 // The error a level leaves pending: the sum of (accumulated + flow) over its neglected terms.
 double neglected_error(const TermArray& accumulated, const TermArray& flow, Level level);

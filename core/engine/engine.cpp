@@ -2,6 +2,7 @@
 // the frames and manual/animation.md for the rules and the errata fixed (22-27).
 #include "engine/engine.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -46,6 +47,37 @@ double elapsed_ms(Clock::time_point since) {
   return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
 }
 
+// Texel -> top-left pixel homography of the plane's texture rectangle, scaled so that its
+// denominator is the depth Z of the texel's point (positive in front of the eye, negative
+// behind it), whichever corner lies behind the eye.
+Mat3 depth_signed_texture_warp(const Camera& camera, const PlanePose& pose) {
+  const PlaneAxes a = plane_axes(pose);
+  const Mat3 plane_to_camera(a.right, a.up, pose.point);
+  const Mat3 h = translation_matrix(camera.cx, camera.cy) * centred_intrinsics(camera) *
+                 plane_to_camera * texel_to_plane(pose);
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(entry(h, r, c)));
+  }
+  return h * (1.0 / largest);
+}
+
+// Replaces a layer's valid polygon for the lifetime of the guard, restoring it after.
+class PolygonSwap {
+ public:
+  PolygonSwap(Layer& layer, ConvexPolygon polygon)
+      : layer_(layer), saved_(std::move(layer_.polygon)) {
+    layer_.polygon = std::move(polygon);
+  }
+  ~PolygonSwap() { layer_.polygon = std::move(saved_); }
+  PolygonSwap(const PolygonSwap&) = delete;
+  PolygonSwap& operator=(const PolygonSwap&) = delete;
+
+ private:
+  Layer& layer_;
+  ConvexPolygon saved_;
+};
+
 }  // namespace
 
 std::string plane_visibility_problem(const PlanePose& pose) {
@@ -74,46 +106,196 @@ PlacedLayer render_exact(const Camera& camera, const Layer& texture, const Plane
   return {std::move(w.layer), w.offset_x, w.offset_y};
 }
 
+PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose& pose,
+                           const ViewPolygon& clipped, Sampling sampling, WarpStats* stats) {
+  const glm::ivec2 size(texture.image.width(), texture.image.height());
+  PlanePose sized = pose;
+  sized.texture_size = size;
+  double z_min = clipped.points.at(0).z, z_max = z_min;
+  for (const Vec3& p : clipped.points) {
+    z_min = std::min(z_min, p.z);
+    z_max = std::max(z_max, p.z);
+  }
+  WarpOptions options;
+  options.sampling = sampling;
+  // The warp's horizon margin must not cut into the clipped polygon itself.
+  options.horizon_epsilon = std::clamp(0.5 * z_min / z_max, 1e-4, kDefaultHorizonEpsilon);
+  // Only the clipped part of the texture is drawn (the texture's own polygon is restored).
+  const PolygonSwap part(texture, texel_polygon(clipped.uv, size));
+  WarpedLayer w = warp_layer(texture, depth_signed_texture_warp(camera, sized), options);
+  if (stats) *stats = w.stats;
+  return {std::move(w.layer), w.offset_x, w.offset_y};
+}
+
 PlaneAnimator::PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings)
     : camera_(camera), texture_(std::move(texture)), settings_(settings) {}
 
 FrameReport PlaneAnimator::start(const PlanePose& pose) {
   frame_ = 0;
+  shown_ = false;
   FrameReport report;
-  const auto t0 = Clock::now();
-  rerender(pose, report);
-  report.time_ms = elapsed_ms(t0);  // the update only: the diagnostics below are not timed
-  finish_report(pose, report);
+  update(nullptr, nullptr, pose, report);
   return report;
 }
 
+FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion& motion,
+                                   const PlanePose& current) {
+  ++frame_;
+  FrameReport report;
+  update(&previous, &motion, current, report);
+  return report;
+}
 
-void PlaneAnimator::rerender(const PlanePose& pose_in, FrameReport& report) {
-  report.level = Level::kRerender;
+void PlaneAnimator::update(const PlanePose* previous, const RigidMotion* motion,
+                           const PlanePose& current, FrameReport& report) {
+  // time_ms covers deciding, warping and placing; the diagnostics of finish_report (the
+  // measured error) run after the clock is read.
+  const auto t0 = Clock::now();
   report.frame = frame_;
+  try {
+    // The flow is measured at the previous pose: it must be a whole, drawable plane.
+    const bool flow_usable = previous && shown_ && plane_visibility_problem(*previous).empty();
+    if (flow_usable && policy().allows_reuse() && frame_pose(current).kind == Framing::kWhole) {
+      decide_and_update(*previous, *motion, current, report);
+    } else {
+      render_fresh(current, report);
+    }
+    report.time_ms = elapsed_ms(t0);
+    finish_report(current, report);
+  } catch (const std::exception& refused) {
+    // Any refusal (a warp beyond its range, a singular map) becomes a fresh exact render of
+    // the frame, or an invisible frame when even that is refused.
+    report = FrameReport{};
+    report.frame = frame_;
+    try {
+      render_fresh(current, report);
+      report.time_ms = elapsed_ms(t0);
+      finish_report(current, report);
+      if (report.visible) {
+        report.note = std::string("re-rendered after a refusal: ") + refused.what();
+      }
+    } catch (const std::exception& again) {
+      report = FrameReport{};
+      report.frame = frame_;
+      hide(std::string("not drawn: ") + again.what(), report);
+      report.time_ms = elapsed_ms(t0);
+      finish_report(current, report);
+    }
+  }
+}
+
+PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const {
+  const PlanePose pose = sized_pose(pose_in);
+  if (texture_.empty()) return {Framing::kNotShown, "not visible: the texture is empty", {}};
+  const PoseProblem p = plane_pose_problem(pose);
+  // A centre behind the eye or a plane through it is a matter for clipping; anything else
+  // (non-finite values, degenerate axes) cannot be drawn at all.
+  const bool drawable_axes =
+      p.field.empty() || (p.field == "point" && std::isfinite(pose.point.x) &&
+                          std::isfinite(pose.point.y) && std::isfinite(pose.point.z));
+  if (!drawable_axes) return {Framing::kNotShown, "not visible: " + p.message, {}};
+  const Vec3 corner0 = plane_corners(pose)[0];
+  const Vec3 to_eye = p.field.empty() ? pose.point : corner0;
+  if (std::abs(glm::dot(glm::normalize(pose.normal), glm::normalize(to_eye))) < 1e-3) {
+    return {Framing::kNotShown, "not visible: the plane is seen edge-on", {}};
+  }
+  if (!plane_meets_image(camera_, pose, settings_.near)) {
+    bool beyond_near = false;
+    for (const Vec3& c : plane_corners(pose)) beyond_near = beyond_near || c.z >= settings_.near;
+    return {Framing::kNotShown,
+            beyond_near ? "outside the image"
+                        : "not visible: wholly nearer than the near plane or behind the eye",
+            {}};
+  }
+  const double gw = settings_.guard_band * camera_.width;
+  const double gh = settings_.guard_band * camera_.height;
+  ViewPolygon rectangle;
+  bool whole = true;
+  for (const Vec3& c : plane_corners(pose)) {
+    rectangle.points.push_back(c);
+    const Vec2 q = c.z > 0.0 ? centred_to_pixel(camera_, project_centred(camera_, c)) : Vec2(0.0);
+    whole = whole && c.z >= settings_.near && q.x >= -gw && q.x <= camera_.width + gw &&
+            q.y >= -gh && q.y <= camera_.height + gh;
+  }
+  if (whole) return {};
+  rectangle.uv = {Vec2(0.0, 0.0), Vec2(1.0, 0.0), Vec2(1.0, 1.0), Vec2(0.0, 1.0)};
+  Framing f{Framing::kClipped,
+            "clipped: the plane reaches in front of the near plane or "
+            "beyond the guard band, rendered exactly",
+            {}};
+  f.clipped = clip_to_frustum(rectangle, view_frustum(camera_, settings_.near, 1.0));
+  if (f.clipped.empty()) return {Framing::kNotShown, "outside the image", {}};
+  return f;
+}
+
+void PlaneAnimator::render_fresh(const PlanePose& pose, FrameReport& report) {
+  const Framing framing = frame_pose(pose);
+  switch (framing.kind) {
+    case Framing::kNotShown:
+      hide(framing.note, report);
+      break;
+    case Framing::kClipped:
+      show_clipped(pose, framing, report);
+      break;
+    case Framing::kWhole:
+      rerender(pose, report);
+      break;
+  }
+}
+
+void PlaneAnimator::hide(const std::string& note, FrameReport& report) {
+  report.level = Level::kRerender;
+  report.visible = false;
+  report.note = note;
   cache_.valid = false;
-  PlanePose pose = pose_in;
-  pose.texture_size = glm::ivec2(texture_.image.width(), texture_.image.height());
-  std::string problem = plane_visibility_problem(pose);
-  if (problem.empty() && texture_.empty()) problem = "the texture is empty";
-  if (!problem.empty()) {
-    report.visible = false;
-    report.note = "not visible: " + problem;
-    report.measured_error_px = std::numeric_limits<double>::quiet_NaN();
-    display_ = PlacedLayer{};
-    shown_ = false;
-    accumulated_.fill(0.0);
-    return;
-  }
-  displayed_ = exact_texture_warp(camera_, pose);
-  if (policy().initial_view == InitialView::kAffinePart) {
-    // Section 6.5: the initial view is affine too, and the flow model follows it.
-    displayed_ = affine_part_at(displayed_, 0.5 * texel_corners(texture_)[2]);
-  }
+  display_ = PlacedLayer{};
+  clipped_outline_.clear();
+  clipped_ = false;
+  shown_ = false;
+  accumulated_.fill(0.0);
+}
+
+void PlaneAnimator::show_clipped(const PlanePose& pose, const Framing& framing,
+                                 FrameReport& report) {
+  report.level = Level::kRerender;
+  report.clipped = true;
+  report.note = framing.note;
+  cache_.valid = false;
+  shown_ = false;  // the layer holds only part of the plane: the next frame starts afresh
+  accumulated_.fill(0.0);
+  WarpStats stats;
+  display_ = render_clipped(camera_, texture_, pose, framing.clipped, settings_.sampling, &stats);
+  report.pixels_written += stats.pixels_written;
+  clipped_outline_ = project_to_pixels(camera_, framing.clipped).vertices();
+  clipped_ = true;
+}
+
+void PlaneAnimator::rerender(const PlanePose& pose, FrameReport& report) {
+  report.level = Level::kRerender;
+  cache_.valid = false;
+  clipped_ = false;
+  displayed_ = target_warp(pose);
   model_ = displayed_;
-  show(texture_, displayed_, report);
+  show(texture_, displayed_, displayed_, report);
   shown_ = true;
   accumulated_.fill(0.0);
+}
+
+Mat3 PlaneAnimator::target_warp(const PlanePose& pose) const {
+  const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
+  // Section 6.5: the initial view is affine too, and the flow model follows it.
+  if (policy().initial_view == InitialView::kAffinePart) {
+    return affine_part_at(exact, 0.5 * texel_corners(texture_)[2]);
+  }
+  return exact;
+}
+
+std::vector<Vec2> PlaneAnimator::displayed_outline() const {
+  if (display_.layer.empty()) return {};
+  if (clipped_) return clipped_outline_;
+  std::vector<Vec2> out;
+  for (const Vec2& t : texel_corners(texture_)) out.push_back(apply_homography(displayed_, t));
+  return out;
 }
 
 std::vector<Vec2> PlaneAnimator::displayed_corners_centred() const {
@@ -130,38 +312,51 @@ PlanePose PlaneAnimator::sized_pose(const PlanePose& pose) const {
   return sized;
 }
 
-double PlaneAnimator::corner_error(const PlanePose& pose) const {
-  const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
+double PlaneAnimator::corner_distance(const Mat3& a, const Mat3& b) const {
   double worst = 0.0;
   for (const Vec2& t : texel_corners(texture_)) {
-    worst = std::max(worst, glm::length(apply_homography(displayed_, t) -
-                                        apply_homography(exact, t)));
+    worst = std::max(worst, glm::length(apply_homography(a, t) - apply_homography(b, t)));
   }
   return worst;
 }
 
-void PlaneAnimator::apply_translation(const Mat3& correction, const Vec2& point) {
-  // The layer is reused as it is, placed with sub-pixel precision (drawn at the nearest
-  // whole pixel: the sampling allowance); the displayed warp stays exact.
+double PlaneAnimator::shown_error(const PlanePose& pose) const {
+  // Where the pixels are: the warp that made the layer, moved by the whole pixels the layer
+  // was shifted since.
+  const glm::ivec2 moved = glm::ivec2(display_.offset_x, display_.offset_y) - layer_origin_;
+  const Mat3 shown = translation_matrix(moved.x, moved.y) * layer_warp_;
+  return corner_distance(shown, exact_texture_warp(camera_, sized_pose(pose)));
+}
+
+Vec2 PlaneAnimator::translation_step(const Mat3& correction, const Vec2& point) const {
   const Vec2 motion = apply_homography(correction, point) - point;
-  const Mat3 shift = translation_matrix(motion.x, motion.y);
+  return Vec2(std::round(motion.x), std::round(motion.y));
+}
+
+void PlaneAnimator::apply_translation(const Vec2& step) {
+  // The layer is reused as it is, moved by whole pixels; the remainder stays pending.
+  const Mat3 shift = translation_matrix(step.x, step.y);
   displayed_ = shift * displayed_;
   cache_.to_display = shift * cache_.to_display;
-  shift_ += motion;
-  place_display();
+  display_.offset_x += static_cast<int>(step.x);
+  display_.offset_y += static_cast<int>(step.y);
 }
 
-void PlaneAnimator::place_display() {
-  display_.offset_x = base_offset_.x + static_cast<int>(std::lround(shift_.x));
-  display_.offset_y = base_offset_.y + static_cast<int>(std::lround(shift_.y));
-}
-
-void PlaneAnimator::show(const Layer& source, const Mat3& source_to_image, FrameReport& report) {
+void PlaneAnimator::show(const Layer& source, const Mat3& source_to_image,
+                        const Mat3& texel_to_image, FrameReport& report) {
   warp_reusing(source, source_to_image, report);
   std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
-  base_offset_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
-  shift_ = Vec2(0.0);
-  place_display();
+  display_.offset_x = warped_.offset_x;
+  display_.offset_y = warped_.offset_y;
+  layer_warp_ = texel_to_image;
+  layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
+}
+
+void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
+  WarpOptions options;
+  options.sampling = settings_.sampling;
+  warp_layer_reusing(source, warp, warped_, options);
+  report.pixels_written += warped_.stats.pixels_written;
 }
 
 void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
@@ -174,28 +369,15 @@ void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameRep
 void PlaneAnimator::cache_from_display() {
   // The displayed layer is an exact image of the texture under displayed_, so it can serve
   // as the cache without another warp (its resolution is the output's).
-  const Mat3 origin = translation_matrix(base_offset_.x + shift_.x, base_offset_.y + shift_.y);
+  const Mat3 origin = translation_matrix(display_.offset_x, display_.offset_y);
   cache_.layer = display_.layer;  // a copy into the cache's memory when it is large enough
   cache_.to_display = origin;
   cache_.from_texel = glm::inverse(origin) * displayed_;
   cache_.valid = true;
 }
 
-void PlaneAnimator::rebuild_cache(const Mat3& target, FrameReport& report) {
-  const Vec2 centre = 0.5 * texel_corners(texture_)[2];
-  const Mat3 to_centre = translation_matrix(centre.x, centre.y);
-  const AffinePerspectiveSplit split =
-      split_affine_perspective(target * to_centre, settings_.delta);
-  const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
-  warp_reusing(texture_, texel_to_cache, report);
-  std::swap(cache_.layer, warped_.layer);
-  cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
-  cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
-  cache_.valid = true;
-}
-
 void PlaneAnimator::show_from_cache(FrameReport& report) {
-  show(cache_.layer, cache_.to_display, report);
+  show(cache_.layer, cache_.to_display, cache_.to_display * cache_.from_texel, report);
 }
 
 bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point,
@@ -210,25 +392,38 @@ bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point,
   return true;
 }
 
-void PlaneAnimator::apply_perspective(const Mat3& target, FrameReport& report) {
-  rebuild_cache(target, report);
+bool PlaneAnimator::apply_perspective(const Mat3& target, FrameReport& report) {
+  const Vec2 centre = 0.5 * texel_corners(texture_)[2];
+  const Mat3 to_centre = translation_matrix(centre.x, centre.y);
+  const AffinePerspectiveSplit split =
+      split_affine_perspective(target * to_centre, settings_.delta);
+  // The sampling limit holds here too: the affine rest must not magnify the new cache
+  // along any axis by more than the limit (its determinant alone would hide anisotropy).
+  if (largest_singular_value(split.affine) > settings_.max_magnification) return false;
+  const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
+  warp_reusing(texture_, texel_to_cache, report);
+  std::swap(cache_.layer, warped_.layer);  // the old cache's memory serves the next warp
+  cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
+  cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
+  cache_.valid = true;
   displayed_ = target;
   show_from_cache(report);
+  return true;
 }
 
 void PlaneAnimator::finish_report(const PlanePose& pose, FrameReport& report) const {
   report.accumulated = accumulated_;
-  report.estimated_error_px = neglected_error(accumulated_, TermArray{}, Level::kNone);
-  report.measured_error_px =
-      report.visible ? corner_error(pose) : std::numeric_limits<double>::quiet_NaN();
-  if (policy().initial_view == InitialView::kAffinePart && report.visible) {
+  const bool reused = report.visible && !report.clipped && report.level != Level::kRerender;
+  report.estimated_error_px = 0.0;
+  if (reused) {
+    report.estimated_error_px = std::max(neglected_error(accumulated_, TermArray{}, Level::kNone),
+                                         report.pending[static_cast<int>(report.level)]);
+  }
+  report.measured_error_px = std::numeric_limits<double>::quiet_NaN();
+  if (report.visible) report.measured_error_px = report.clipped ? 0.0 : shown_error(pose);
+  if (policy().initial_view == InitialView::kAffinePart && report.visible && !report.clipped) {
     const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
-    const Mat3 affine = affine_part_at(exact, 0.5 * texel_corners(texture_)[2]);
-    double worst = 0.0;
-    for (const Vec2& t : texel_corners(texture_)) {
-      worst = std::max(worst, glm::length(apply_homography(affine, t) - apply_homography(exact, t)));
-    }
-    report.affine_view_error_px = worst;
+    report.affine_view_error_px = corner_distance(target_warp(pose), exact);
   }
 }
 
@@ -240,36 +435,34 @@ LevelPixels PlaneAnimator::level_pixels() const {
   return estimate_level_pixels(displayed, cache_.valid ? area(cache_.layer) : displayed);
 }
 
-FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion& motion,
-                                   const PlanePose& current_in) {
-  ++frame_;
-  const auto t0 = Clock::now();
-  FrameReport report;
-  report.frame = frame_;
-  PlanePose current = current_in;
-  current.texture_size = glm::ivec2(texture_.image.width(), texture_.image.height());
-  const bool visible_now = plane_visibility_problem(current).empty() && !texture_.empty();
-  const bool flow_usable = plane_visibility_problem(previous).empty();
-  // A policy without reuse levels re-renders without measuring the flow.
-  if (!shown_ || !visible_now || !flow_usable || !policy().allows_reuse()) {
-    rerender(current, report);
-  } else {
-    decide_and_update(previous, motion, current, report);
-  }
-  report.time_ms = elapsed_ms(t0);  // deciding, warping and placing: not the diagnostics
-  finish_report(current, report);
-  return report;
-}
-
 void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
                                   const PlanePose& current) {
   if (policy().model == ModelUpdate::kExact) {
-    model_ = exact_texture_warp(camera_, current);  // the exact frame-to-frame homography
+    model_ =
+        exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
     return;
   }
   PlanarFlowCoefficients step = flow;
   if (policy().model == ModelUpdate::kAffineTaylor) step.px = step.py = 0.0;  // affine flow model
   model_ = centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
+}
+
+Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& point) const {
+  switch (level) {
+    case Level::kNone:
+      return displayed_;
+    case Level::kTranslate: {
+      const Vec2 step = translation_step(correction, point);
+      return translation_matrix(step.x, step.y) * displayed_;
+    }
+    case Level::kAffine:
+      return affine_part_at(correction, point) * displayed_;
+    case Level::kPerspective:
+      return model_;
+    case Level::kRerender:
+      break;
+  }
+  return displayed_;
 }
 
 void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMotion& motion,
@@ -287,8 +480,19 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
   TermArray carried = accumulated_;
   for (double& e : carried) e *= std::max(1.0, largest_singular_value(stretch));
   report.carried = carried;
-  report.level =
-      policy().choose(policy(), {report.flow, carried, settings_.thresholds, level_pixels()});
+  // The exact error each level would leave, against the policy's view of the current pose.
+  const Mat3 correction = model_ * glm::inverse(displayed_);
+  const Vec2 point = centred_to_pixel(camera_, m.expansion_point);
+  const Mat3 target = target_warp(current);
+  for (int l = 0; l < kTermCount; ++l) {
+    report.pending[l] =
+        corner_distance(warp_after(static_cast<Level>(l), correction, point), target);
+  }
+  report.level = policy().choose(
+      policy(), {report.flow, carried, settings_.thresholds, level_pixels(), report.pending});
+  // Erratum 25, corrected: the terms the level neglects accumulate, the ones it handles are
+  // caught up with. What the books cannot see (the sub-pixel remainder of a whole-pixel
+  // translation, higher orders the first-order bookkeeping misses) is in report.pending.
   for (int k = 0; k < kTermCount; ++k) {
     accumulated_[k] = k >= static_cast<int>(report.level) ? carried[k] + report.flow[k] : 0.0;
   }
@@ -299,21 +503,25 @@ void PlaneAnimator::apply_level(FrameReport& report, const Vec2& expansion_point
                                 const PlanePose& current) {
   const Mat3 correction = model_ * glm::inverse(displayed_);
   const Vec2 point = centred_to_pixel(camera_, expansion_point);
-  try {
-    switch (report.level) {
-      case Level::kNone: break;
-      case Level::kTranslate: apply_translation(correction, point); break;
-      case Level::kAffine:
-        if (!apply_affine(correction, point, report)) {
-          report.note = "sampling limit: the cache would be magnified too much";
-          rerender(current, report);
-        }
-        break;
-      case Level::kPerspective: apply_perspective(model_, report); break;
-      case Level::kRerender: rerender(current, report); break;
-    }
-  } catch (const std::invalid_argument& e) {
-    report.note = std::string("warp refused, re-rendered: ") + e.what();
+  bool within_limit = true;
+  switch (report.level) {
+    case Level::kNone:
+      break;
+    case Level::kTranslate:
+      apply_translation(translation_step(correction, point));
+      break;
+    case Level::kAffine:
+      within_limit = apply_affine(correction, point, report);
+      break;
+    case Level::kPerspective:
+      within_limit = apply_perspective(model_, report);
+      break;
+    case Level::kRerender:
+      rerender(current, report);
+      break;
+  }
+  if (!within_limit) {
+    report.note = "sampling limit: the cache would be magnified too much";
     rerender(current, report);
   }
 }

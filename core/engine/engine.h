@@ -12,23 +12,35 @@
 //    warp the cache by the new W_aff, never the previous frame, so resampling does not
 //    compound.
 // Each frame the pending correction C = B D^-1 is applied at the chosen level:
-//   translate: the whole-pixel part of C's motion of the expansion point;
+//   translate: C's motion of the expansion point rounded to whole pixels (the layer is
+//     moved on whole pixels; the sub-pixel remainder stays pending, and is counted in the
+//     exact pending error of FrameReport::pending and the estimate);
 //   affine: C's first-order (affine) part about the expansion point;
 //   perspective: C itself (a new cache, then the affine step);
 //   re-render: D = the exact warp, rendered straight from the texture.
+// D is always where the shown pixels are, so the measured error is that of the image.
+//
+// Framing. A pose is drawn whole (the engine animates the texture rectangle) only while
+// the rectangle lies beyond the near plane and projects within the guard band; a plane
+// that still meets the image otherwise is clipped in 3D and rendered exactly that frame
+// (as the scene animator does, core/scene/scene_animator.h), and a plane that does not
+// meet the image (core/scene/view_culling.h plane_meets_image) is not visible: nothing is
+// drawn and no error is counted. No pose makes start() or advance() throw.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
-#include "flow/camera.h"
 #include "engine/decision.h"
 #include "engine/reuse_policy.h"
+#include "flow/camera.h"
 #include "flow/decomposition.h"
-#include "image/layer.h"
 #include "flow/motion.h"
 #include "flow/plane.h"
+#include "image/layer.h"
 #include "image/warp.h"
+#include "scene/view_culling.h"
 
 namespace oflab {
 
@@ -40,21 +52,38 @@ struct EngineSettings {
   Sampling sampling = Sampling::kNearest;
   // Sampling limit: an affine step that would magnify the cache by more than this (largest
   // singular value of its Jacobian) re-renders instead, as magnifying loses detail.
+  // It applies to every level that reuses the cache: the affine step and the affine rest
+  // of a perspective update (anisotropy included: the largest singular value).
   double max_magnification = 2.0;
+  // Framing (see above): the near plane Z = near (world units, > 0) and the guard band, a
+  // fraction of the image size on every side (>= 0) within which the whole rectangle must
+  // project to be animated.
+  double near = 0.05;
+  double guard_band = 0.5;
 };
 
 // What the engine did in one frame. Error estimates are the engine's own bookkeeping;
-// measured_error_px is the truth: the largest distance between the displayed polygon's
-// corners and the exact projection (NaN when the plane is not visible).
+// measured_error_px is the truth: the largest distance between where the shown layer's
+// pixels put the texture's corners (the warp that made the layer, moved by the whole pixels
+// the layer was shifted since) and the exact projection of the corners; 0 for a clipped
+// exact render, NaN when the plane is not visible.
 struct FrameReport {
   int frame = 0;
   Level level = Level::kNone;
-  bool visible = true;
-  std::string note;           // why a frame is special: "not visible: ...", "sampling limit"
+  bool visible = true;   // false: nothing drawn, no error counted (see note)
+  bool clipped = false;  // rendered exactly after clipping (level re-render)
+  // Why a frame is special: "outside the image", "not visible: ...", "clipped: ...",
+  // "sampling limit: ...", "re-rendered after a refusal: ...".
+  std::string note;
   TermArray flow{};           // this frame's flow measures, pixels
   TermArray carried{};        // accumulated estimates carried into the decision, pixels
   TermArray accumulated{};    // accumulated estimates after this frame, pixels
-  double estimated_error_px = 0.0;  // pending error the level left, by the estimates
+  // Exact error each level none..perspective would have left (FrameInputs::pending).
+  TermArray pending{};
+  // Pending error the level left: the larger of the books (the sum of `accumulated`) and
+  // the exact pending error of the chosen level, so an upper bound of the error against
+  // the policy's own view of the pose (the exact projection, or its affine part).
+  double estimated_error_px = 0.0;
   double measured_error_px = 0.0;
   // Policies with an affine initial view only: the error an affine view of the current pose
   // has by itself (its missing perspective), part of measured_error_px that no update level
@@ -88,6 +117,17 @@ Mat3 exact_texture_warp(const Camera& camera, const PlanePose& pose);
 PlacedLayer render_exact(const Camera& camera, const Layer& texture, const PlanePose& pose,
                          Sampling sampling, WarpStats* stats = nullptr);
 
+// The exact image of `clipped`, the part of the plane's rectangle kept by clip_to_frustum
+// (viewer frame, uv normalised texture coordinates of `texture`'s image), whatever lies
+// behind the eye: one perspective warp of the clipped texture polygon with a depth-signed
+// homography. `pose` gives the plane (its texture_size is taken from the texture). The
+// texture's polygon is replaced by the clipped one during the call and restored after.
+// Throws std::invalid_argument when the warp refuses (a sliver beyond its fixed-point
+// range). Precondition: clipped is not empty and lies at Z > 0.
+PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose& pose,
+                           const ViewPolygon& clipped, Sampling sampling,
+                           WarpStats* stats = nullptr);
+
 class PlaneAnimator {
  public:
   // `texture` is premultiplied RGBA (any size; an empty texture draws nothing). The
@@ -103,7 +143,12 @@ class PlaneAnimator {
                       const PlanePose& current);
 
   const PlacedLayer& displayed() const { return display_; }
+  // Texel -> image pixel warp of the shown layer (the whole texture rectangle; meaningless
+  // in a clipped or not visible frame, see displayed_outline).
   const Mat3& displayed_warp() const { return displayed_; }
+  // The shown polygon in top-left image pixels: the texture rectangle through the displayed
+  // warp, the clipped polygon's image in a clipped frame, empty when nothing is shown.
+  std::vector<Vec2> displayed_outline() const;
   const EngineSettings& settings() const { return settings_; }
   const ReusePolicy& policy() const { return *settings_.policy; }
 
@@ -115,34 +160,55 @@ class PlaneAnimator {
     Mat3 to_display{1.0};  // cache layer pixels -> image pixels (affine)
   };
 
+  // How a pose can be drawn this frame (see "Framing" above).
+  struct Framing {
+    enum Kind { kWhole, kClipped, kNotShown } kind = kWhole;
+    std::string note;     // kClipped, kNotShown: why
+    ViewPolygon clipped;  // kClipped: the rectangle clipped to the view frustum
+  };
+  Framing frame_pose(const PlanePose& pose) const;
+
+  void update(const PlanePose* previous, const RigidMotion* motion, const PlanePose& current,
+              FrameReport& report);
+  void render_fresh(const PlanePose& pose, FrameReport& report);
+  void hide(const std::string& note, FrameReport& report);
+  void show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report);
   void decide_and_update(const PlanePose& previous, const RigidMotion& motion,
                          const PlanePose& current, FrameReport& report);
   void advance_model(const PlanarFlowCoefficients& flow, const PlanePose& current);
+  Mat3 target_warp(const PlanePose& pose) const;
+  Vec2 translation_step(const Mat3& correction, const Vec2& point) const;
+  Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point) const;
   void apply_level(FrameReport& report, const Vec2& expansion_point, const PlanePose& current);
   void rerender(const PlanePose& pose, FrameReport& report);
-  void apply_translation(const Mat3& correction, const Vec2& point);
-  void place_display();
-  // Warps `source` into the displayed layer (reusing memory) and places it.
-  void show(const Layer& source, const Mat3& source_to_image, FrameReport& report);
+  void apply_translation(const Vec2& step);
+  // Warps `source` by source_to_image into the displayed layer (reusing memory) and places
+  // it; texel_to_image is the warp the layer then shows (for the measured error).
+  void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
+            FrameReport& report);
   // Warps `source` into warped_, reusing its memory; counts the pixels written.
   void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report);
   void cache_from_display();
   void finish_report(const PlanePose& pose, FrameReport& report) const;
   LevelPixels level_pixels() const;
   bool apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report);
-  void apply_perspective(const Mat3& target, FrameReport& report);
-  void rebuild_cache(const Mat3& target, FrameReport& report);
+  bool apply_perspective(const Mat3& target, FrameReport& report);
   void show_from_cache(FrameReport& report);
   std::vector<Vec2> displayed_corners_centred() const;
-  double corner_error(const PlanePose& pose) const;
+  double corner_distance(const Mat3& a, const Mat3& b) const;
+  double shown_error(const PlanePose& pose) const;
   PlanePose sized_pose(const PlanePose& pose) const;
 
   Camera camera_;
   Layer texture_;
   EngineSettings settings_;
-  PlacedLayer display_;      // drawn at base_offset_ + round(shift_)
-  glm::ivec2 base_offset_{0, 0};
-  Vec2 shift_{0.0};          // exact translation applied since the layer was warped
+  PlacedLayer display_;
+  // The warp that made display_.layer (texel -> image pixels) and the layer's offset then:
+  // the measured error follows the pixels from these, independently of displayed_.
+  Mat3 layer_warp_{1.0};
+  glm::ivec2 layer_origin_{0, 0};
+  std::vector<Vec2> clipped_outline_;  // the shown polygon of a clipped frame
+  bool clipped_ = false;               // the last frame was a clipped render
   Mat3 displayed_{1.0};
   Mat3 model_{1.0};
   Cache cache_;
@@ -150,7 +216,9 @@ class PlaneAnimator {
   // that in a steady state the frames reuse the same few layer buffers.
   WarpedLayer warped_;
   TermArray accumulated_{};
-  bool shown_ = false;  // false until something visible has been rendered
+  // True while the shown layer is the whole plane and may be reused: false before the first
+  // render and after a frame that was clipped or not visible.
+  bool shown_ = false;
   int frame_ = 0;
 };
 

@@ -53,12 +53,10 @@ class PlaneScriptAnimator final : public Animator {
 
   std::vector<LayerOutline> outlines() const override {
     if (!visible_) return {};
-    const double w = texture_.image.width(), h = texture_.image.height();
     LayerOutline outline;
     outline.level = level_;
-    for (const Vec2& t : {Vec2(0, 0), Vec2(w, 0), Vec2(w, h), Vec2(0, h)}) {
-      outline.points.push_back(apply_homography(engine_->displayed_warp(), t));
-    }
+    outline.points = engine_->displayed_outline();
+    if (outline.points.empty()) return {};
     return {outline};
   }
 
@@ -80,6 +78,7 @@ class PlaneScriptAnimator final : public Animator {
     if (r.visible) {
       f.levels[static_cast<int>(r.level)] = 1;
       f.max_measured_error_px = r.measured_error_px;
+      f.clipped = r.clipped ? 1 : 0;
     }
     f.time_ms = r.time_ms;
     f.update_ms = r.time_ms;

@@ -25,7 +25,8 @@ bool ReusePolicy::allows_reuse() const {
 }
 
 Level threshold_choice(const ReusePolicy& policy, const FrameInputs& inputs) {
-  return choose_level(inputs.carried, inputs.flow, inputs.thresholds, policy.allowed);
+  return choose_level(inputs.carried, inputs.flow, inputs.thresholds, policy.allowed,
+                      inputs.pending);
 }
 
 const std::vector<ReusePolicy>& reuse_policies() {

@@ -45,6 +45,11 @@ struct FrameInputs {
   TermArray carried{};     // accumulated errors carried into the decision, pixels
   TermArray thresholds{};  // budgets of none..perspective, pixels (see choose_level)
   LevelPixels pixels{};    // cost of each level for this layer (estimate_level_pixels)
+  // The exact error each level none..perspective would leave: the largest corner distance,
+  // pixels, between the warp that level would show and the policy's own view of the
+  // current pose (the engine has the poses). Where the first-order books underestimate,
+  // this is what bounds the shown error.
+  TermArray pending{};
 };
 
 // The cost estimate of FrameInputs::pixels, before any warp is run, from the layers the
@@ -72,8 +77,9 @@ struct ReusePolicy {
   bool allows_reuse() const;
 };
 
-// The threshold rule of Algorithm 1 (choose_level) over the policy's allowed levels; the
-// choice of perspective, affine and exact.
+// The threshold rule of Algorithm 1 (choose_level) over the policy's allowed levels, a
+// level being acceptable only when its exact pending error also stays within its
+// threshold; the choice of perspective, affine and exact.
 Level threshold_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 
 // Every policy, in the order help texts and the GUI list them (perspective first). The

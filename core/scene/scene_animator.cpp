@@ -21,12 +21,6 @@ double ms_since(Clock::time_point t0) {
 
 glm::ivec2 texture_size(const Image& texture) { return {texture.width(), texture.height()}; }
 
-ConvexPolygon texel_polygon(const std::vector<Vec2>& uv, glm::ivec2 size) {
-  std::vector<Vec2> texels;
-  for (const Vec2& p : uv) texels.emplace_back(p.x * size.x, p.y * size.y);
-  return make_polygon_unchecked(std::move(texels));
-}
-
 // The intersection of two convex polygons: `a` clipped by every edge of `b`.
 ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
   const std::vector<Vec2>& v = b.vertices();
@@ -35,21 +29,6 @@ ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
     a = clip_to_half_plane(a, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
   }
   return b.empty() ? ConvexPolygon() : a;
-}
-
-// Texel -> top-left pixel homography of the polygon's texture rectangle seen from `view`,
-// scaled so that its denominator is the depth Z of the texel's point (positive in front of
-// the eye, negative behind it), whichever corner lies behind the eye.
-Mat3 depth_signed_texture_warp(const Camera& camera, const PlanePose& pose) {
-  const PlaneAxes a = plane_axes(pose);
-  const Mat3 plane_to_camera(a.right, a.up, pose.point);
-  const Mat3 h = translation_matrix(camera.cx, camera.cy) * centred_intrinsics(camera) *
-                 plane_to_camera * texel_to_plane(pose);
-  double largest = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(entry(h, r, c)));
-  }
-  return h * (1.0 / largest);
 }
 
 }  // namespace
@@ -246,22 +225,12 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationF
   PolygonState& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
   s.clipped_layer = PlacedLayer{};
-  Layer& texture = scratch_textures_[polygon.texture];
-  texture.polygon = texel_polygon(s.clipped.uv, s.texture_size);
-  const Mat3 warp = depth_signed_texture_warp(camera_, polygon_pose(polygon, view, s.texture_size));
-  double z_min = s.clipped.points[0].z, z_max = z_min;
-  for (const Vec3& p : s.clipped.points) {
-    z_min = std::min(z_min, p.z);
-    z_max = std::max(z_max, p.z);
-  }
-  WarpOptions options;
-  options.sampling = settings_.engine.sampling;
-  // The warp's horizon margin must not cut into the clipped polygon itself.
-  options.horizon_epsilon = std::clamp(0.5 * z_min / z_max, 1e-4, kDefaultHorizonEpsilon);
   try {
-    WarpedLayer w = warp_layer(texture, warp, options);
-    report.pixels_written += w.stats.pixels_written;
-    s.clipped_layer = PlacedLayer{std::move(w.layer), w.offset_x, w.offset_y};
+    WarpStats stats;
+    s.clipped_layer = oflab::render_clipped(camera_, scratch_textures_[polygon.texture],
+                                            polygon_pose(polygon, view, s.texture_size), s.clipped,
+                                            settings_.engine.sampling, &stats);
+    report.pixels_written += stats.pixels_written;
   } catch (const std::invalid_argument&) {
     // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.
   }

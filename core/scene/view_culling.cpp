@@ -74,6 +74,12 @@ ViewPolygon clip_to_frustum(const ViewPolygon& polygon, const ViewFrustum& frust
   return clipped;
 }
 
+ConvexPolygon texel_polygon(const std::vector<Vec2>& uv, glm::ivec2 size) {
+  std::vector<Vec2> texels;
+  for (const Vec2& p : uv) texels.emplace_back(p.x * size.x, p.y * size.y);
+  return make_polygon_unchecked(std::move(texels));
+}
+
 ConvexPolygon project_to_pixels(const Camera& camera, const ViewPolygon& polygon) {
   std::vector<Vec2> pixels;
   pixels.reserve(polygon.points.size());

@@ -44,6 +44,9 @@ ViewPolygon clip_to_frustum(const ViewPolygon& polygon, const ViewFrustum& frust
 // The same in place, without allocating when the polygon lies wholly inside or outside.
 void clip_to_frustum_in_place(ViewPolygon& polygon, const ViewFrustum& frustum);
 
+// The texel polygon of normalised texture coordinates `uv` on a texture of `size` texels.
+ConvexPolygon texel_polygon(const std::vector<Vec2>& uv, glm::ivec2 size);
+
 // The projection of a polygon lying at Z > 0 in top-left pixel coordinates.
 // Precondition: every point has Z > 0 (true after clip_to_frustum).
 ConvexPolygon project_to_pixels(const Camera& camera, const ViewPolygon& polygon);

@@ -8,25 +8,27 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
-#include "runs/source_kinds.h"
 #include "cli/commands.h"
+#include "cli_capture.h"
+#include "flow/homography.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/script_file.h"
-#include "cli_capture.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Documented in manual/animation.md: how far the measured corner error may exceed the
-// budget of the level in force (the estimates' slack at second order in time).
-constexpr double kEstimateAllowancePx = 0.25;
+// Documented in manual/animation.md ("The exact check"): how far the measured corner error
+// may exceed the budget of the level in force. The whole-pixel placement of a translated
+// layer is measured, not allowed for, so none; kTolerancePx is floating-point rounding.
+constexpr double kSamplingAllowancePx = 0.0;
+constexpr double kTolerancePx = 1e-9;
 
 // The engine's reports of a script played as the plane kind, without the baseline.
 struct ScriptRun {
@@ -34,12 +36,14 @@ struct ScriptRun {
   RunSummary summary;
 };
 
-ScriptRun run_script(const std::string& name, const std::string& policy) {
+ScriptRun run_script(const std::string& name, const std::string& policy,
+                     Sampling sampling = Sampling::kNearest) {
   static const Image texture = read_image(default_texture_path());
   RunSource source;
   source.script = read_script_file(resolve_script_path(name));
   source.texture = texture;
   source.settings.engine.policy = &reuse_policy(policy);
+  source.settings.engine.sampling = sampling;
   PlayOptions o;
   o.baseline = false;
   const AnimationRun run = source_kind("plane").play(source, o);
@@ -62,11 +66,17 @@ TEST(Experiment1, StationaryIsAllNoUpdate) {
 }
 
 TEST(Experiment1, TranslationOneAlternatesNoUpdateAndTranslate) {
+  // 0.77 px per frame: two frames without an update would owe more than 1 px. Whole-pixel
+  // translations leave a sub-pixel rest, so now and then two translations follow each
+  // other (the rest plus a frame's motion exceeds the budget).
   const ScriptRun r = run_script("translation-1", "perspective");
   EXPECT_EQ(count(r, Level::kNone) + count(r, Level::kTranslate), r.summary.frames - 1);
   for (size_t i = 2; i < r.reports.size(); ++i) {
-    EXPECT_NE(r.reports[i].level, r.reports[i - 1].level) << "frame " << i;
+    EXPECT_FALSE(r.reports[i].level == Level::kNone && r.reports[i - 1].level == Level::kNone)
+        << "frame " << i;
   }
+  EXPECT_GE(count(r, Level::kTranslate), 0.45 * r.summary.frames);
+  EXPECT_LE(count(r, Level::kTranslate), 0.65 * r.summary.frames);
 }
 
 TEST(Experiment1, ZoomIsMostlyNoUpdateAndAffine) {
@@ -100,18 +110,120 @@ TEST(Experiment1, LoopUsesPerspectiveNearTheViewerAndCheapLevelsFarAway) {
 }
 
 TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
-  for (const char* name : {"stationary", "translation-1", "translation-2", "zoom",
-                                  "zoom-rotation", "rotation", "loop"}) {
+  // Every shipped script, every policy: the measured error (from where the pixels are)
+  // stays within the threshold plus the allowance, and a reused frame's estimate bounds it
+  // (the affine policy's view misses its perspective on top, affine_view_error_px).
+  for (const std::string& name : shipped_script_names()) {
     for (const ReusePolicy& policy : reuse_policies()) {
       const std::string mode = policy.name;
       const ScriptRun r = run_script(name, mode);
       for (const FrameReport& f : r.reports) {
         if (!f.visible) continue;
-        EXPECT_LE(f.measured_error_px, 1.0 + kEstimateAllowancePx + f.affine_view_error_px)
+        const double view = f.affine_view_error_px;
+        EXPECT_LE(f.measured_error_px, 1.0 + kSamplingAllowancePx + kTolerancePx + view)
             << name << " " << mode << " frame " << f.frame;
+        if (f.level == Level::kRerender) continue;
+        EXPECT_LE(f.measured_error_px, f.estimated_error_px + kTolerancePx + view)
+            << name << " " << mode << " frame " << f.frame;
+      }
+      if (policy.initial_view == InitialView::kExact) {
+        EXPECT_LE(r.summary.max_excess_px, kTolerancePx) << name << " " << mode;
       }
     }
   }
+}
+
+// Alpha-weighted centroid of an image (premultiplied: alpha is the weight), top-left pixels.
+Vec2 alpha_centroid(const Image& image) {
+  double sum = 0.0;
+  Vec2 c(0.0);
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const double a = image.at(x, y).a;
+      sum += a;
+      c += a * Vec2(x + 0.5, y + 0.5);
+    }
+  }
+  return sum > 0.0 ? c / sum : Vec2(std::nan(""));
+}
+
+TEST(Experiment1, TranslationOneMeasuredErrorIsNeverBelowTheShownDisplacement) {
+  // An independent measure of what is shown: the alpha-weighted centroid of the shown frame
+  // against that of the exact render of the same pose (bilinear, so sub-pixel positions
+  // show), while the plane lies wholly inside the image.
+  const MotionScript script = read_script_file(resolve_script_path("translation-1"));
+  const Image texture = read_image(default_texture_path());
+  EngineSettings settings;
+  settings.sampling = Sampling::kBilinear;
+  EngineSettings exact = settings;
+  exact.policy = &reuse_policy("rerender");
+  const auto shown = make_plane_animator(script, texture, settings);
+  const auto truth = make_plane_animator(script, texture, exact);
+  int compared = 0, displaced = 0;
+  for (int i = 0; i < shown->frame_count(); ++i) {
+    const AnimationFrame f = i == 0 ? shown->start() : shown->advance();
+    if (i == 0)
+      truth->start();
+    else
+      truth->advance();
+    const FrameReport& r = f.layer_reports.at(0);
+    bool inside = true;
+    for (const Vec2& p : projected_corners(script.camera, script.frames[i].pose)) {
+      const Vec2 q = centred_to_pixel(script.camera, p);
+      inside = inside && q.x > 1 && q.y > 1 && q.x < script.camera.width - 1 &&
+               q.y < script.camera.height - 1;
+    }
+    if (!inside) continue;
+    const double d = glm::length(alpha_centroid(shown->image()) - alpha_centroid(truth->image()));
+    EXPECT_GE(r.measured_error_px + 0.01, d) << "frame " << i;
+    ++compared;
+    displaced += d > 0.1;
+  }
+  EXPECT_GT(compared, 30);
+  EXPECT_GT(displaced, 10);  // the check has teeth: most frames show a sub-pixel offset
+}
+
+TEST(AnimateCommand, PlaneFlyingIntoTheEyePlaysToItsEndClippedThenNotVisible) {
+  const ScriptRun r = run_script("approach", "perspective");
+  int clipped = 0, hidden = 0;
+  for (const FrameReport& f : r.reports) {
+    clipped += f.clipped;
+    hidden += !f.visible;
+  }
+  EXPECT_EQ(r.reports.size(), 14u);
+  EXPECT_GT(clipped, 0);
+  EXPECT_GT(hidden, 0);
+  const testing::CliResult c =
+      testing::run_cli_captured({"animate", "--script", "approach", "--json", "--quiet"});
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(nlohmann::json::parse(c.out)["invisible_frames"].get<int>(), hidden);
+}
+
+TEST(AnimateCommand, PlaneLeavingTheImageIsNotVisibleInTheCsv) {
+  const fs::path dir = fs::temp_directory_path() / "oflab-leaving-plane";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json script =
+      nlohmann::json::parse(std::ifstream(resolve_script_path("translation-1")));
+  script["segments"][0]["frames"] = 30;
+  script["segments"][0]["velocity"] = {0.1, 0.0, 0.0};  // 25.6 px per frame, out by frame 20
+  std::ofstream(dir / "leaving.json") << script.dump();
+  const testing::CliResult c =
+      testing::run_cli_captured({"animate", "--script", (dir / "leaving.json").string(), "--out",
+                                 (dir / "out").string(), "--quiet"});
+  ASSERT_EQ(c.code, 0) << c.err;
+  std::ifstream csv(dir / "out" / "frames.csv");
+  std::string line;
+  std::getline(csv, line);
+  int outside = 0;
+  while (std::getline(csv, line)) {
+    const bool hidden = line.find(",rerender,0,") != std::string::npos;
+    const bool noted = line.find("\"outside the image\"") != std::string::npos;
+    EXPECT_EQ(hidden, noted) << line;
+    outside += hidden && noted;
+  }
+  EXPECT_GE(outside, 8);
+  fs::remove_all(dir);
 }
 
 TEST(Experiment1, ExactModeKeepsNoModelErrorAndNeverNeedsTheHigherOrderBudget) {

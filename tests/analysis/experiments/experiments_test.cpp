@@ -96,8 +96,10 @@ TEST(Experiment1Published, StationaryNeedsNoUpdateAndTranslationOneTranslatesEve
   const MeasuredRun& still = script("stationary").mode("perspective");
   EXPECT_EQ(level_percent_after_first(still)[static_cast<int>(Level::kNone)], 100.0);
   const auto moving = level_percent_after_first(script("translation-1").mode("perspective"));
-  EXPECT_NEAR(moving[static_cast<int>(Level::kNone)], 50.0, 2.0);
-  EXPECT_NEAR(moving[static_cast<int>(Level::kTranslate)], 50.0, 2.0);
+  // Within the report's "level mix within 5 points": whole-pixel translations leave a
+  // sub-pixel rest, which now and then calls for a second translation in a row.
+  EXPECT_NEAR(moving[static_cast<int>(Level::kNone)], 50.0, 5.0);
+  EXPECT_NEAR(moving[static_cast<int>(Level::kTranslate)], 50.0, 5.0);
 }
 
 TEST(Experiment1Published, ScriptsPublishedWithRerendersWarpAffinelyAndRotationRerendersMost) {

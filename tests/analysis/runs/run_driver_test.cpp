@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -265,6 +266,37 @@ TEST(SourceKinds, SummariesCarryWhatOnlyTheirKindReports) {
   EXPECT_FALSE(c.contains("scene_shifting"));
   EXPECT_GT(c.at("bsp").at("nodes").get<int>(), 0);
   EXPECT_THROW(source_kind("no such kind"), std::invalid_argument);
+}
+
+TEST(Scenes, DefaultPolicyBooksHoldOnEveryShippedScene) {
+  // Every shipped scene seen along every shipped viewer script, default policy: for each
+  // polygon the engine reuses, the measured error (from where its pixels are) is bounded by
+  // its estimate and stays within the threshold (manual/animation.md, "The exact check").
+  constexpr double kTolerancePx = 1e-9;
+  for (const std::string& scene_name : shipped_scene_names()) {
+    RunSource source;
+    source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(scene_name)));
+    for (const std::string& script : shipped_viewer_script_names()) {
+      source.viewer = read_viewer_script_file(resolve_viewer_script_path(script));
+      PlayOptions o;
+      o.baseline = false;
+      const AnimationRun run = source_kind("scene").play(source, o);
+      int reused = 0;
+      for (const AnimationFrame& f : run.frames) {
+        for (const FrameReport& r : f.layer_reports) {
+          if (!r.visible || r.level == Level::kRerender) continue;
+          ++reused;
+          EXPECT_LE(r.measured_error_px, r.estimated_error_px + kTolerancePx)
+              << scene_name << " / " << script << " frame " << f.frame;
+          EXPECT_LE(r.measured_error_px, 1.0 + kTolerancePx)
+              << scene_name << " / " << script << " frame " << f.frame;
+        }
+      }
+      if (reused > 0) {
+        EXPECT_LE(run.summary.max_excess_px, kTolerancePx) << scene_name << " / " << script;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -16,7 +16,9 @@ using testing::scene_with;
 using testing::square;
 
 constexpr double kEpsilon = 1.0;          // px, the renderer's budget
-constexpr double kEngineThreshold = 0.5;  // px, the engine's translation budget
+// px, the engine's translation budget: at least the 0.71 px a whole-pixel translation may
+// leave, or the engine's exact check rightly prefers a sub-pixel affine warp.
+constexpr double kEngineThreshold = 1.0;
 // Both place layers on whole pixels: each rounding moves a corner by at most sqrt(2)/2.
 const double kRounding = std::sqrt(2.0) / 2.0;
 
@@ -81,6 +83,9 @@ TEST(SceneShiftingRenderer, SidewaysViewerMatchesTheEnginesTranslationLevelPlane
           i == 0 ? engines[p].start(pose)
                  : engines[p].advance(polygon_pose(scene.polygons[p], script[i - 1].pose, size),
                                       script[i - 1].motion, pose);
+      // Beyond the guard band the engine clips and renders exactly, outside the image it
+      // shows nothing: no warp to compare then.
+      if (e.clipped || !e.visible) continue;
       // A fronto-parallel plane under a sideways viewer only translates in the image.
       EXPECT_TRUE(e.level == Level::kNone || e.level == Level::kTranslate || i == 0)
           << scene.polygons[p].name << " frame " << i << ": " << level_name(e.level);
