@@ -359,13 +359,6 @@ void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameRep
   report.pixels_written += warped_.stats.pixels_written;
 }
 
-void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
-  WarpOptions options;
-  options.sampling = settings_.sampling;
-  warp_layer_reusing(source, warp, warped_, options);
-  report.pixels_written += warped_.stats.pixels_written;
-}
-
 void PlaneAnimator::cache_from_display() {
   // The displayed layer is an exact image of the texture under displayed_, so it can serve
   // as the cache without another warp (its resolution is the output's).
