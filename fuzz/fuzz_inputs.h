@@ -3,7 +3,7 @@
 // the reader accepts the input or refuses it with its own documented error; anything else (a
 // crash, a sanitizer report, any other exception) escapes and is a finding. Used by the
 // libFuzzer harnesses (fuzz_main.cpp, built with OFLAB_FUZZ=ON) and by the regression test
-// that replays every committed crash input (tests/analysis/formats/fuzz_regressions_test.cpp).
+// that replays every committed crash input (fuzz/fuzz_regressions_test.cpp).
 #pragma once
 
 #include <map>
