@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
+  clang-14 clang libclang-rt-14-dev
 )
 # OpenCV is an optional benchmark peer; ask for it with OFLAB_WITH_OPENCV=1.
 if [[ "${OFLAB_WITH_OPENCV:-0}" == "1" ]]; then packages+=(libopencv-dev); fi

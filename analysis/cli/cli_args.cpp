@@ -71,15 +71,22 @@ int CliArgs::integer_or(const std::string& name, int fallback) const {
   return has(name) ? integer(name) : fallback;
 }
 
+double CliArgs::coordinate(const std::string& name, const std::string& text) const {
+  const double v = parse_number(name, text);
+  if (std::abs(v) > kMaxCoordinate) {
+    throw UsageError(name + ": '" + text + "' is larger than 1e6 in magnitude (the limit)");
+  }
+  return v;
+}
+
 Vec2 CliArgs::vec2(const std::string& name) const {
   const auto& v = values(name);
-  return Vec2(parse_number(name, v.at(0)), parse_number(name, v.at(1)));
+  return Vec2(coordinate(name, v.at(0)), coordinate(name, v.at(1)));
 }
 
 Vec3 CliArgs::vec3(const std::string& name) const {
   const auto& v = values(name);
-  return Vec3(parse_number(name, v.at(0)), parse_number(name, v.at(1)),
-              parse_number(name, v.at(2)));
+  return Vec3(coordinate(name, v.at(0)), coordinate(name, v.at(1)), coordinate(name, v.at(2)));
 }
 
 std::string CliArgs::text_or(const std::string& name, const std::string& fallback) const {

@@ -35,12 +35,16 @@ class CliArgs {
   std::optional<double> optional_number(const std::string& name) const;
   int integer(const std::string& name) const;
   int integer_or(const std::string& name, int fallback) const;
+  // Vectors (positions, directions, sizes): each value also at most kMaxCoordinate in
+  // magnitude, as in oflab's data files.
+  static constexpr double kMaxCoordinate = 1e6;
   Vec2 vec2(const std::string& name) const;
   Vec3 vec3(const std::string& name) const;
   std::string text_or(const std::string& name, const std::string& fallback) const;
 
  private:
   double parse_number(const std::string& name, const std::string& text) const;
+  double coordinate(const std::string& name, const std::string& text) const;
   std::map<std::string, std::vector<std::string>> values_;
 };
 

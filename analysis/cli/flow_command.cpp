@@ -1,5 +1,6 @@
 // `oflab-cli flow`: prints the planar flow coefficients, the planar basis and, with --dt,
 // the Taylor and exact homographies and the corner errors of each approximation level.
+#include <cmath>
 #include <ostream>
 
 #include <nlohmann/json.hpp>
@@ -29,8 +30,8 @@ std::string option_for_field(const std::string& field) {
 
 nlohmann::json flow_report(const CliArgs& a) {
   const Vec2 image = a.vec2("--image");
-  if (image.x < 1 || image.y < 1 || image.x != static_cast<int>(image.x) ||
-      image.y != static_cast<int>(image.y)) {
+  if (image.x < 1 || image.y < 1 || image.x != std::floor(image.x) ||
+      image.y != std::floor(image.y)) {
     throw UsageError("--image: width and height must be positive whole numbers");
   }
   const Camera camera = make_camera(a.number("--focal"), static_cast<int>(image.x),

@@ -1,26 +1,104 @@
 #include "formats/image_io.h"
 
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
 namespace oflab {
+namespace {
 
-Image read_image(const std::string& path) {
+// The contents of `path`, refused above kMaxImageFileBytes before anything is read.
+std::string read_bytes(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw ImageFileError(path + ": cannot read image (it is a directory)");
+  }
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw ImageFileError(path + ": cannot read image (cannot open the file)");
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw ImageFileError(path + ": cannot read image (not a regular file)");
+  if (size > kMaxImageFileBytes) {
+    throw ImageFileError(path + ": image file is larger than " +
+                         std::to_string(kMaxImageFileBytes >> 20) + " MiB");
+  }
+  std::string bytes(static_cast<size_t>(size), '\0');
+  in.seekg(0);
+  in.read(bytes.data(), size);
+  if (!in) throw ImageFileError(path + ": cannot read image (read error)");
+  return bytes;
+}
+
+bool starts_with(const std::string& bytes, const char* signature, size_t length) {
+  return bytes.size() >= length && std::memcmp(bytes.data(), signature, length) == 0;
+}
+
+// The size in a PNG's IHDR chunk (always first, at byte 8), when the bytes have one.
+bool png_header_size(const std::string& bytes, ImageFileSize* size) {
+  if (bytes.size() < 24 || bytes.compare(12, 4, "IHDR") != 0) return false;
+  const auto be32 = [&](size_t at) {
+    std::uint32_t v = 0;
+    for (size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+    return v;
+  };
+  // Sides beyond 2^31 are reported as the largest int: refused by the limits all the same.
+  size->width = static_cast<int>(std::min<std::uint32_t>(be32(16), 0x7fffffff));
+  size->height = static_cast<int>(std::min<std::uint32_t>(be32(20), 0x7fffffff));
+  return true;
+}
+
+// The checks of check_image_file on bytes in memory.
+ImageFileSize check_image_bytes(const std::string& bytes, const std::string& origin) {
+  const bool png = starts_with(bytes, "\x89PNG\r\n\x1a\n", 8);
+  if (!png && !starts_with(bytes, "\xff\xd8\xff", 3)) {
+    throw ImageFileError(origin + ": not a PNG or JPEG file (the only image formats read)");
+  }
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = static_cast<int>(bytes.size());
+  ImageFileSize size;
+  int channels = 0;
+  if (png && png_header_size(bytes, &size)) {
+    // stb_image refuses some large PNGs itself, but names no size: check ours first.
+  } else if (!stbi_info_from_memory(data, length, &size.width, &size.height, &channels)) {
+    throw ImageFileError(origin + ": cannot read image header (" + stbi_failure_reason() + ")");
+  }
+  if (size.width < 1 || size.height < 1) throw ImageFileError(origin + ": image is empty");
+  if (size.width > kMaxImageDimension || size.height > kMaxImageDimension ||
+      std::int64_t(size.width) * size.height > kMaxImagePixels) {
+    throw ImageFileError(origin + ": image of " + std::to_string(size.width) + " x " +
+                         std::to_string(size.height) + " pixels is larger than the limit (" +
+                         std::to_string(kMaxImagePixels) + " pixels, " +
+                         std::to_string(kMaxImageDimension) + " on a side)");
+  }
+  return size;
+}
+
+}  // namespace
+
+ImageFileSize check_image_file(const std::string& path) {
+  return check_image_bytes(read_bytes(path), path);
+}
+
+Image decode_image(const std::string& bytes, const std::string& origin) {
+  const ImageFileSize size = check_image_bytes(bytes, origin);
   int w = 0, h = 0, channels = 0;
   std::unique_ptr<unsigned char, void (*)(void*)> data(
-      stbi_load(path.c_str(), &w, &h, &channels, 4), stbi_image_free);
-  if (!data) {
-    throw ImageFileError(path + ": cannot read image (" + stbi_failure_reason() + ")");
+      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                            static_cast<int>(bytes.size()), &w, &h, &channels, 4),
+      stbi_image_free);
+  if (!data) throw ImageFileError(origin + ": cannot read image (" + stbi_failure_reason() + ")");
+  if (w != size.width || h != size.height) {
+    throw ImageFileError(origin + ": cannot read image (the header's size is not the image's)");
   }
-  if (w > kMaxImageDimension || h > kMaxImageDimension) {
-    throw ImageFileError(path + ": image is larger than " + std::to_string(kMaxImageDimension) +
-                         " pixels on a side");
-  }
-  const std::vector<std::uint8_t> bytes(data.get(), data.get() + static_cast<size_t>(w) * h * 4);
-  return image_from_straight_rgba(w, h, bytes);
+  const std::vector<std::uint8_t> pixels(data.get(), data.get() + static_cast<size_t>(w) * h * 4);
+  return image_from_straight_rgba(w, h, pixels);
 }
+
+Image read_image(const std::string& path) { return decode_image(read_bytes(path), path); }
 
 void write_png(const std::string& path, const Image& image) {
   if (image.empty()) throw ImageFileError(path + ": refusing to write an empty image");

@@ -1,7 +1,10 @@
-// Reading and writing image files (PNG, JPEG, BMP, TGA in; PNG out), converting between
-// the files' straight alpha and core's premultiplied RGBA8.
+// Reading and writing image files (PNG and JPEG in; PNG out), converting between the files'
+// straight alpha and core's premultiplied RGBA8. A file is checked before it is decoded: its
+// first bytes must be a PNG or JPEG signature and its header's size must be within the
+// limits below, so a hostile file never reaches the decoder's allocations.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -14,9 +17,30 @@ class ImageFileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Reads an image file; images without alpha become opaque. Throws ImageFileError naming
-// the path and the reason (missing, unreadable, not an image, too large).
+// Largest image file read, in bytes, and largest image, in pixels (width * height; each
+// side is also at most kMaxImageDimension of core/image/image.h). 4096 x 4096 fits.
+constexpr std::int64_t kMaxImageFileBytes = 256LL << 20;
+constexpr std::int64_t kMaxImagePixels = 4096LL * 4096;
+
+// An image's size in pixels, as its file's header declares it.
+struct ImageFileSize {
+  int width = 0;
+  int height = 0;
+};
+
+// The width and height an image file's header declares. Throws ImageFileError naming the
+// path and the reason: missing or unreadable, larger than kMaxImageFileBytes, not a PNG or
+// JPEG (by its signature), a header stb_image cannot read, a zero size, a side above
+// kMaxImageDimension or more than kMaxImagePixels pixels. Decodes no pixels.
+ImageFileSize check_image_file(const std::string& path);
+
+// Reads a PNG or JPEG file (checked first by check_image_file); images without alpha become
+// opaque. Throws ImageFileError naming the path and the reason.
 Image read_image(const std::string& path);
+
+// Reads an image from bytes in memory, with the checks of read_image; `origin` names the
+// source in errors.
+Image decode_image(const std::string& bytes, const std::string& origin);
 
 // Writes `image` as an 8-bit RGBA PNG (straight alpha). Throws ImageFileError on failure.
 // Overwrites `path`: callers decide whether that is allowed.

@@ -36,23 +36,33 @@ struct Place {
   }
 };
 
-// The contents of the file at `path`; Error "PATH: cannot open the file" if it cannot be read.
+// Largest data file read (JSON or OBJ), in bytes: parsed JSON takes about ten times its size.
+constexpr long long kMaxFileBytes = 64LL << 20;
+
+// The contents of the file at `path`; Error "PATH: cannot open the file" if it cannot be read,
+// "PATH: larger than 64 MiB" above kMaxFileBytes (checked before reading).
 template <class Error>
 std::string read_file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw Error(path + ": cannot open the file");
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw Error(path + ": cannot read the file (not a regular file)");
+  if (size > kMaxFileBytes) throw Error(path + ": larger than 64 MiB, the limit for data files");
+  in.seekg(0);
   std::ostringstream text;
   text << in.rdbuf();
+  if (!in) throw Error(path + ": cannot read the file");
   return text.str();
 }
 
-// `text` parsed; it must be a JSON object.
+// `text` parsed; it must be a JSON object. Every exception of the JSON library (a syntax
+// error, a number too large for a double such as 1e400, ...) becomes an Error naming the file.
 template <class Error>
 json parse_object(const std::string& text, const Place<Error>& top) {
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
     top.fail("", std::string("not valid JSON (") + e.what() + ")");
   }
   if (!root.is_object()) top.fail("", "must be a JSON object");
@@ -80,6 +90,13 @@ std::string text(const json& obj, const Place<Error>& w, const std::string& fiel
   const json& j = member(obj, w, field);
   if (!j.is_string()) w.fail(field, "must be a string");
   return j.get<std::string>();
+}
+
+// obj[field] when present (it must then be a string), else `fallback`.
+template <class Error>
+std::string optional_text(const json& obj, const Place<Error>& w, const std::string& field,
+                          const std::string& fallback) {
+  return obj.contains(field) ? text(obj, w, field) : fallback;
 }
 
 // The value `j` of `field` as a finite number of magnitude at most kMaxMagnitude.

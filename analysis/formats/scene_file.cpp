@@ -14,8 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kMaxPolygons = 100000;
-
 using namespace json_fields;
 using Where = json_fields::Place<SceneError>;
 
@@ -103,14 +101,16 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
     top.fail("format", "must be \"oflab-scene\"");
   }
   Scene scene;
-  scene.name = root.contains("name") ? text(root, top, "name") : fs::path(origin).stem().string();
-  scene.description = root.contains("description") ? text(root, top, "description") : "";
+  scene.name = optional_text(root, top, "name", fs::path(origin).stem().string());
+  scene.description = optional_text(root, top, "description", "");
   read_textures(root, top, base_dir, scene);
-  const std::string default_texture = root.contains("texture") ? text(root, top, "texture") : "";
+  const std::string default_texture = optional_text(root, top, "texture", "");
   if (!default_texture.empty()) (void)texture_index(root, top, scene, "");
   const json& polygons = member(root, top, "polygons");
   if (!polygons.is_array() || polygons.empty()) top.fail("polygons", "must be a non-empty list");
-  if (polygons.size() > kMaxPolygons) top.fail("polygons", "more than 100000 polygons");
+  if (polygons.size() > size_t(kMaxScenePolygons)) {
+    top.fail("polygons", "more than " + std::to_string(kMaxScenePolygons) + " polygons");
+  }
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const json& obj = polygons[i];
     Where w{origin, "polygon " + std::to_string(i)};

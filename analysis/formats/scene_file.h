@@ -20,6 +20,9 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Most polygons in a scene file (and faces in an OBJ file).
+constexpr int kMaxScenePolygons = 100000;
+
 // Reads a scene file and the textures it names. Texture paths are relative to the scene
 // file's directory, or to the datasets directory when written "datasets:PATH".
 // Checks types, finiteness, planarity and convexity of vertex polygons, non-zero normals,

@@ -42,8 +42,8 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
   const Where top{origin, ""};
   const json root = parse_object(text, top);
   MotionScript s;
-  s.name = root.value("name", std::string());
-  s.description = root.value("description", std::string());
+  s.name = optional_text(root, top, "name", "");
+  s.description = optional_text(root, top, "description", "");
   s.camera = read_camera(root, top);
   const json& plane = member(root, top, "plane");
   if (!plane.is_object()) top.fail("plane", "must be an object");
@@ -51,7 +51,7 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
   base.size = vec2(plane, top, "size");
   if (!(base.size.x > 0 && base.size.y > 0)) top.fail("size", "must be two positive numbers");
   MotionModel model = MotionModel::kScrew;
-  const std::string model_name = root.value("motion_model", std::string("screw"));
+  const std::string model_name = optional_text(root, top, "motion_model", "screw");
   if (!parse_motion_model(model_name.c_str(), &model)) {
     top.fail("motion_model", "must be one of screw, rt, centre");
   }
@@ -62,11 +62,14 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
     const json& segs = root.at("segments");
     if (!segs.is_array() || segs.empty()) top.fail("segments", "must be a non-empty list");
     std::vector<ScriptSegment> segments;
+    long total = 0;  // checked against the cap before anything is expanded
     for (size_t i = 0; i < segs.size(); ++i) {
       const Where w{origin, "segment " + std::to_string(i)};
       if (!segs[i].is_object()) w.fail("", "must be an object");
       ScriptSegment seg;
       seg.frames = positive_integer(segs[i], w, "frames");
+      total += seg.frames;
+      if (total > kMaxCount) w.fail("frames", "the script has more than 1000000 frames");
       const RigidMotion m = read_motion(segs[i], w, model);
       seg.velocity = m.velocity;
       seg.omega = m.omega;
@@ -76,6 +79,7 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
   } else {
     const json& frames = root.at("frames");
     if (!frames.is_array() || frames.empty()) top.fail("frames", "must be a non-empty list");
+    if (frames.size() > size_t(kMaxCount)) top.fail("frames", "more than 1000000 frames");
     for (size_t i = 0; i < frames.size(); ++i) {
       const Where w{origin, "frame " + std::to_string(i)};
       if (!frames[i].is_object()) w.fail("", "must be an object");
@@ -85,7 +89,6 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
       s.frames.push_back(f);
     }
   }
-  if (s.frames.size() > 1000000) top.fail("", "more than 1000000 frames");
   return s;
 }
 

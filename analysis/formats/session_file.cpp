@@ -22,14 +22,21 @@ double number_field(const json& obj, const Where& w, const std::string& field) {
   return number(member(obj, w, field), w, field);
 }
 
+// obj[field] as an image side: a whole number of pixels from 1 to 8192, as in motion scripts.
+int image_side(const json& obj, const Where& w, const std::string& field) {
+  const double v = number_field(obj, w, field);
+  if (v < 1 || v > 8192 || v != std::floor(v)) w.fail(field, "must be a whole number from 1 to 8192");
+  return static_cast<int>(v);
+}
+
 PlaneScene read_plane(const json& plane, const std::string& origin) {
   const Where in_plane{origin, "plane"};
   PlaneScene s;
   const json& camera = object(plane, in_plane, "camera");
   const Where in_camera{origin, "plane.camera"};
   s.camera = make_camera(number_field(camera, in_camera, "focal_px"),
-                         int(number_field(camera, in_camera, "width")),
-                         int(number_field(camera, in_camera, "height")));
+                         image_side(camera, in_camera, "width"),
+                         image_side(camera, in_camera, "height"));
   const json& pose = object(plane, in_plane, "pose");
   const Where in_pose{origin, "plane.pose"};
   s.pose.point = vec3(pose, in_pose, "point");

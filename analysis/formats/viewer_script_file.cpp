@@ -22,11 +22,8 @@ ViewerScript parse_viewer_script(const std::string& text, const std::string& ori
     top.fail("format", "must be \"oflab-viewer-script\"");
   }
   ViewerScript script;
-  for (const char* field : {"name", "description"}) {
-    if (root.contains(field) && !root.at(field).is_string()) top.fail(field, "must be a string");
-  }
-  script.name = root.value("name", fs::path(origin).stem().string());
-  script.description = root.value("description", std::string());
+  script.name = optional_text(root, top, "name", fs::path(origin).stem().string());
+  script.description = optional_text(root, top, "description", "");
   script.camera = read_camera(root, top);
   const json& viewer = member(root, top, "viewer");
   if (!viewer.is_object()) top.fail("viewer", "must be an object");

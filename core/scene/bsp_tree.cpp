@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 namespace oflab {
 namespace {
@@ -59,7 +61,8 @@ void split(const BspFragment& f, const Vec3& normal, double offset, double eps, 
 
 }  // namespace
 
-BspTree::BspTree(const std::vector<ScenePolygon>& polygons) {
+BspTree::BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments)
+    : max_fragments_(max_fragments) {
   double scale = 1.0;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     BspFragment f;
@@ -78,6 +81,13 @@ BspTree::BspTree(const std::vector<ScenePolygon>& polygons) {
   if (!ids.empty()) root_ = build(std::move(ids), 1);
   stats_.nodes = static_cast<int>(nodes_.size());
   stats_.fragments = static_cast<int>(fragments_.size());
+}
+
+void BspTree::fail_fragment_limit() const {
+  throw std::invalid_argument(
+      "the scene's " + std::to_string(planes_.size()) + " polygons cut each other into more than " +
+      std::to_string(max_fragments_) +
+      " BSP fragments (the limit): polygons that intersect each other split without end");
 }
 
 int BspTree::choose_splitter(const std::vector<int>& ids) const {
@@ -132,6 +142,7 @@ int BspTree::build(std::vector<int> ids, int depth) {
     } else if (side == Side::kBack) {
       back_ids.push_back(id);
     } else {
+      if (fragments_.size() >= size_t(max_fragments_)) fail_fragment_limit();
       BspFragment f, b;
       split(fragments_[id], node.normal, node.offset, epsilon_, f, b);
       ++stats_.splits;

@@ -39,10 +39,18 @@ class BspTree {
  public:
   BspTree() = default;
 
+  // Most fragments a tree may hold. Polygons that do not intersect each other stay far below
+  // it (shipped scenes: at most a few splits per polygon); intersecting ones can split
+  // without end (3000 random quads give about 150 000 fragments).
+  static constexpr int kMaxBspFragments = 200000;
+
   // Builds the tree. The splitting plane of each node is chosen among up to 24 candidate
   // fragments to keep splits few and the two sides balanced. Deterministic.
   // Precondition: every polygon is valid (scene_polygon_problem is empty).
-  explicit BspTree(const std::vector<ScenePolygon>& polygons);
+  // Throws std::invalid_argument naming the limit when more than `max_fragments` would be
+  // needed (checked before each split, so memory stays bounded).
+  explicit BspTree(const std::vector<ScenePolygon>& polygons,
+                   int max_fragments = kMaxBspFragments);
 
   // Replaces `order` with the indices of every fragment, back to front as seen from `eye`
   // (world coordinates): a fragment never comes after one it can hide. Fragments in a
@@ -67,12 +75,14 @@ class BspTree {
 
   int build(std::vector<int> fragment_ids, int depth);
   int choose_splitter(const std::vector<int>& fragment_ids) const;
+  [[noreturn]] void fail_fragment_limit() const;
   void traverse(int node, const Vec3& eye, std::vector<int>& order) const;
 
   std::vector<Node> nodes_;
   std::vector<BspFragment> fragments_;
   std::vector<Plane> planes_;  // per scene polygon
   double epsilon_ = 1e-9;      // plane-side tolerance, world units
+  int max_fragments_ = kMaxBspFragments;
   int root_ = -1;
   BspStats stats_;
 };

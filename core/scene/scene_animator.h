@@ -60,8 +60,8 @@ const char* polygon_status_name(PolygonStatus status);
 class SceneAnimator {
  public:
   // `scene` must outlive the animator. Builds the BSP tree. Throws std::invalid_argument
-  // when a polygon has a problem (scene_polygon_problem), the camera is invalid, or a
-  // setting is out of range.
+  // when a polygon has a problem (scene_polygon_problem), the camera is invalid, a
+  // setting is out of range, or the BSP tree would exceed BspTree::kMaxBspFragments.
   SceneAnimator(const Scene& scene, const Camera& camera, const SceneSettings& settings);
   ~SceneAnimator();
   SceneAnimator(const SceneAnimator&) = delete;

@@ -5,6 +5,7 @@
 #include <QPainterPath>
 
 #include "formats/datasets.h"
+#include "formats/image_io.h"
 #include "views/palette.h"
 
 namespace oflab {
@@ -73,6 +74,12 @@ QImage default_texture() {
 }
 
 QImage load_texture_image(const QString& path, QString* error) {
+  try {
+    (void)check_image_file(path.toStdString());  // signature and size before any decoding
+  } catch (const ImageFileError& e) {
+    if (error) *error = QString::fromStdString(e.what());
+    return {};
+  }
   QImageReader reader(path);
   QImage image = reader.read();
   if (image.isNull()) {

@@ -16,8 +16,9 @@ QImage procedural_texture();
 // honoured), or procedural_texture() when it cannot be read.
 QImage default_texture();
 
-// Reads a PNG or JPEG (any format Qt's image plugins read) as RGBA. Returns a null image
-// and sets *error to one line naming the file when it cannot be read.
+// Reads a PNG or JPEG as RGBA, after analysis/formats/image_io.h's check_image_file (the
+// signature and the size limits). Returns a null image and sets *error to one line naming
+// the file when it cannot be read or is refused.
 QImage load_texture_image(const QString& path, QString* error);
 
 }  // namespace oflab

@@ -162,5 +162,35 @@ TEST(BspTree, EmptySceneGivesAnEmptyOrder) {
   EXPECT_TRUE(order.empty());
 }
 
+// Large squares through a small box all intersect each other, so every split makes more:
+// the fragment count grows much faster than the polygon count, and the cap stops it.
+std::vector<ScenePolygon> intersecting_squares(int count) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<ScenePolygon> out;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 normal = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3, 0, 0));
+    const Vec3 up = glm::cross(normal, std::abs(normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+    out.push_back(square("s" + std::to_string(i), Vec3(0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng)),
+                         normal, glm::normalize(up), 4.0));
+  }
+  return out;
+}
+
+TEST(BspTree, IntersectingPolygonsStopAtTheFragmentCapWithAClearMessage) {
+  const std::vector<ScenePolygon> polygons = intersecting_squares(60);
+  const int unlimited = BspTree(polygons).stats().fragments;
+  EXPECT_GT(unlimited, 600) << "60 intersecting squares should split into many fragments";
+  try {
+    const BspTree capped(polygons, 300);
+    ADD_FAILURE() << "no error past the cap";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("more than 300 BSP fragments (the limit)"), std::string::npos) << what;
+    EXPECT_NE(what.find("60 polygons"), std::string::npos) << what;
+  }
+  EXPECT_EQ(BspTree(polygons, unlimited).stats().fragments, unlimited);
+}
+
 }  // namespace
 }  // namespace oflab

@@ -1,0 +1,106 @@
+#include "fuzz_inputs.h"
+
+#include <sstream>
+#include <vector>
+
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "formats/datasets.h"
+#include "formats/image_io.h"
+#include "formats/obj_scene.h"
+#include "formats/scene_file.h"
+#include "formats/script_file.h"
+#include "formats/session_file.h"
+#include "formats/viewer_script_file.h"
+#include "scene/bsp_tree.h"
+
+namespace oflab::fuzz {
+namespace {
+
+// Scenes read by the fuzzers are also partitioned (the BSP's fragment cap is part of reading a
+// scene safely), up to this many polygons so that one input stays quick.
+constexpr std::size_t kMaxPartitionedPolygons = 64;
+
+void partition(const Scene& scene) {
+  if (scene.polygons.size() > kMaxPartitionedPolygons) return;
+  try {
+    (void)BspTree(scene.polygons);
+  } catch (const std::invalid_argument&) {  // the fragment cap
+  }
+}
+
+void motion_script(const std::string& bytes) {
+  try {
+    (void)parse_script(bytes, "fuzz.json");
+  } catch (const ScriptError&) {
+  }
+}
+
+void viewer_script(const std::string& bytes) {
+  try {
+    (void)parse_viewer_script(bytes, "fuzz.json");
+  } catch (const ViewerScriptError&) {
+  }
+}
+
+void scene(const std::string& bytes) {
+  try {
+    partition(parse_scene(bytes, "fuzz.json", datasets_dir() + "/scenes"));
+  } catch (const SceneError&) {
+  }
+}
+
+void session(const std::string& bytes) {
+  try {
+    (void)parse_session(bytes, "fuzz.json");
+  } catch (const SessionError&) {
+  }
+}
+
+void obj(const std::string& bytes) {
+  try {
+    partition(parse_obj_scene(bytes, "fuzz.obj", Image(1, 1), "t"));
+  } catch (const SceneError&) {
+  }
+}
+
+void image(const std::string& bytes) {
+  try {
+    (void)decode_image(bytes, "fuzz.png");
+  } catch (const ImageFileError&) {
+  }
+}
+
+// The arguments: the input split at NUL bytes or newlines. The first argument chooses the
+// headless command (flow or slices, whose option readers are the CLI's), the rest are its
+// options; usage errors are exit code 2, never an exception.
+void command_line(const std::string& bytes) {
+  std::vector<std::string> args;
+  std::string current;
+  for (char c : bytes) {
+    if (c == '\0' || c == '\n') {
+      args.push_back(current);
+      current.clear();
+    } else {
+      current += c;
+    }
+  }
+  args.push_back(current);
+  std::ostringstream out, err;
+  const CommandArgs rest(args.begin() + 1, args.end());
+  const int code = args[0] == "slices" ? run_slices_command(rest, out, err)
+                                       : run_flow_command(rest, out, err);
+  if (code != 0 && code != 2) throw std::logic_error("unexpected exit code");
+}
+
+}  // namespace
+
+const std::map<std::string, Target>& targets() {
+  static const std::map<std::string, Target> all = {
+      {"motion-script", motion_script}, {"viewer-script", viewer_script}, {"scene", scene},
+      {"session", session},             {"obj", obj},                     {"image", image},
+      {"command-line", command_line}};
+  return all;
+}
+
+}  // namespace oflab::fuzz
