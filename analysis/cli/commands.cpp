@@ -20,6 +20,7 @@ std::string animate_usage() {
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
+      "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
@@ -34,7 +35,8 @@ std::string experiments_usage() {
   std::string only;
   for (const std::string& name : experiment_names()) only += (only.empty() ? "" : "|") + name;
   return "oflab-cli experiments [--out DIR] [--only " + only + " ...] [--quick]\n"
-         "               [--force]   (draws charts: needs an X display, e.g. xvfb-run -a)";
+         "               [--videos mp4|gif|ogv] [--force]\n"
+         "               (draws charts: needs an X display, e.g. xvfb-run -a)";
 }
 
 }  // namespace
