@@ -3,26 +3,29 @@
 // and colours checked against the frames written.
 #include "formats/video_file.h"
 
-#include <gif_lib.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <vector>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
-#include <libswscale/swscale.h>
 }
+
+#include "video_decode.h"
 
 namespace oflab {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::decode_with_libav;
+using testing::Decoded;
+using testing::read_gif;
+using testing::SlurpedGif;
 
 // A smooth pattern that moves with k: red ramps across, green down, blue with the frame.
 Image test_frame(int width, int height, int k) {
@@ -35,57 +38,6 @@ Image test_frame(int width, int height, int k) {
     }
   }
   return image;
-}
-
-struct Decoded {
-  int frames = 0;
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> first_rgb;  // the first frame, RGB24, rows top to bottom
-};
-
-// Decodes every video frame of `path` with libavformat and libavcodec.
-Decoded decode_with_libav(const std::string& path) {
-  Decoded d;
-  AVFormatContext* format = nullptr;
-  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return d;
-  avformat_find_stream_info(format, nullptr);
-  const AVCodec* codec = nullptr;
-  const int stream = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
-  AVCodecContext* context = avcodec_alloc_context3(codec);
-  avcodec_parameters_to_context(context, format->streams[stream]->codecpar);
-  avcodec_open2(context, codec, nullptr);
-  AVPacket* packet = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
-  const auto drain = [&] {
-    while (avcodec_receive_frame(context, frame) == 0) {
-      if (d.frames++ > 0) continue;
-      d.width = frame->width;
-      d.height = frame->height;
-      d.first_rgb.resize(static_cast<size_t>(d.width) * d.height * 3);
-      SwsContext* sws = sws_getContext(d.width, d.height, AVPixelFormat(frame->format), d.width,
-                                       d.height, AV_PIX_FMT_RGB24, SWS_BICUBIC, nullptr, nullptr,
-                                       nullptr);
-      uint8_t* out[1] = {d.first_rgb.data()};
-      const int stride[1] = {3 * d.width};
-      sws_scale(sws, frame->data, frame->linesize, 0, d.height, out, stride);
-      sws_freeContext(sws);
-    }
-  };
-  while (av_read_frame(format, packet) >= 0) {
-    if (packet->stream_index == stream) {
-      avcodec_send_packet(context, packet);
-      drain();
-    }
-    av_packet_unref(packet);
-  }
-  avcodec_send_packet(context, nullptr);
-  drain();
-  av_frame_free(&frame);
-  av_packet_free(&packet);
-  avcodec_free_context(&context);
-  avformat_close_input(&format);
-  return d;
 }
 
 // Mean absolute difference of the decoded first frame from `image` (RGB, over the decoded size).
@@ -151,10 +103,9 @@ TEST_F(VideoFileTest, Mp4UsesH264WhenLibavcodecHasIt) {
 
 TEST_F(VideoFileTest, GifHasTheRequestedFramesAndExactSize) {
   const std::string path = write("clip.gif", 7, 33, 21);
-  int error = 0;
-  GifFileType* gif = DGifOpenFileName(path.c_str(), &error);
-  ASSERT_NE(gif, nullptr) << GifErrorString(error);
-  ASSERT_EQ(DGifSlurp(gif), GIF_OK);
+  const SlurpedGif slurped = read_gif(path);
+  const GifFileType* gif = slurped.get();
+  ASSERT_NE(gif, nullptr);
   EXPECT_EQ(gif->ImageCount, 7);
   EXPECT_EQ(gif->SWidth, 33);
   EXPECT_EQ(gif->SHeight, 21);
@@ -166,9 +117,8 @@ TEST_F(VideoFileTest, GifHasTheRequestedFramesAndExactSize) {
   EXPECT_NEAR(c.Green, want.g, 12);
   EXPECT_NEAR(c.Blue, want.b, 12);
   GraphicsControlBlock control;
-  ASSERT_EQ(DGifSavedExtensionToGCB(gif, 0, &control), GIF_OK);
+  ASSERT_EQ(DGifSavedExtensionToGCB(slurped.get(), 0, &control), GIF_OK);
   EXPECT_EQ(control.DelayTime, 4);  // 25 fps: 4 hundredths of a second
-  DGifCloseFile(gif, &error);
 }
 
 TEST_F(VideoFileTest, OgvDecodesWithFrameCountAndSize) {
