@@ -1,6 +1,8 @@
 # Writes OUT.gz: the man page of PROGRAM from its --help, by help2man, with the sections
 # of INCLUDE. Run as cmake -DHELP2MAN=... -DPROGRAM=... -DNAME=... -DVERSION=... -DOUT=...
 # -DINCLUDE=... -P make_man_page.cmake (from cmake/OflabInstall.cmake).
+get_filename_component(dir "${OUT}" DIRECTORY)
+file(MAKE_DIRECTORY "${dir}")
 execute_process(
   COMMAND ${HELP2MAN} --no-info --no-discard-stderr --version-string=${VERSION}
           --include=${INCLUDE} --output=${OUT} ${PROGRAM}

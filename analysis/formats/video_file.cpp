@@ -1,9 +1,6 @@
 #include "formats/video_file.h"
 
 #include <gif_lib.h>
-#include <vtkImageData.h>
-#include <vtkOggTheoraWriter.h>
-#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <cctype>
@@ -43,7 +40,7 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// ---- MP4: H.264 (or the fallback of mp4_encoder_name) in an MP4 container ----
+// ---- MP4 and Ogg Theora: libavformat's muxers and libavcodec's encoders ----
 
 std::string av_message(int code) {
   char text[AV_ERROR_MAX_STRING_SIZE] = {};
@@ -61,39 +58,69 @@ const AVCodec* mp4_encoder() {
   return avcodec_find_encoder(AV_CODEC_ID_MPEG4);
 }
 
-class Mp4Encoder final : public VideoWriter::Encoder {
+// The encoder's options: H.264 at constant quality, Theora at quality 7 of 10, MPEG-4
+// part 2 at a fixed rate.
+void set_quality(AVCodecContext* context, const AVCodec* codec, AVDictionary** options) {
+  const std::string name = codec->name;
+  if (name == "libx264") {
+    av_dict_set(options, "preset", "medium", 0);
+    av_dict_set(options, "crf", "20", 0);  // visually lossless for flat synthetic images
+  } else if (name == "libtheora") {
+    context->flags |= AV_CODEC_FLAG_QSCALE;
+    context->global_quality = 7 * FF_QP2LAMBDA;
+  } else {
+    context->bit_rate = 4000000;
+  }
+}
+
+// One libavformat container with one libavcodec video stream in YUV 4:2:0.
+class LibavEncoder final : public VideoWriter::Encoder {
  public:
+  // `muxer`: libavformat's name ("mp4", "ogg"); `codec`: the encoder (may be null).
+  LibavEncoder(const char* muxer, const AVCodec* codec) : muxer_(muxer), codec_(codec) {}
+
   void open(const std::string& path, VideoSize size, int fps) override {
     size_ = size;
-    const AVCodec* codec = mp4_encoder();
-    if (!codec) throw VideoFileError("this libavcodec has no H.264 or MPEG-4 encoder");
-    av_check(avformat_alloc_output_context2(&format_, nullptr, "mp4", path.c_str()),
-             "cannot set up an MP4 file");
+    const AVCodec* codec = codec_;
+    if (!codec) throw VideoFileError(std::string("this libavcodec has no encoder for ") + muxer_);
+    av_log_set_level(AV_LOG_ERROR);  // the encoders' banners are not for the terminal
+    av_check(avformat_alloc_output_context2(&format_, nullptr, muxer_, path.c_str()),
+             "cannot set up the container");
     stream_ = avformat_new_stream(format_, nullptr);
     context_ = avcodec_alloc_context3(codec);
     frame_ = av_frame_alloc();
+    rgba_ = av_frame_alloc();
     packet_ = av_packet_alloc();
-    if (!stream_ || !context_ || !frame_ || !packet_) throw VideoFileError("out of memory");
+    if (!stream_ || !context_ || !frame_ || !rgba_ || !packet_) {
+      throw VideoFileError("out of memory");
+    }
     open_codec(codec, fps);
     av_check(avio_open(&format_->pb, path.c_str(), AVIO_FLAG_WRITE), "cannot create the file");
     AVDictionary* muxer = nullptr;
-    av_dict_set(&muxer, "movflags", "faststart", 0);  // index first: slides start at once
+    if (std::string(muxer_) == "mp4") {
+      av_dict_set(&muxer, "movflags", "faststart", 0);  // index first: slides start at once
+    }
     const int written = avformat_write_header(format_, &muxer);
     av_dict_free(&muxer);
-    av_check(written, "cannot write the MP4 header");
+    av_check(written, "cannot write the header");
     frame_->format = context_->pix_fmt;
     frame_->width = size.width;
     frame_->height = size.height;
     av_check(av_frame_get_buffer(frame_, 0), "out of memory");
+    rgba_->format = AV_PIX_FMT_RGBA;  // padded rows: swscale's vector code reads past a row
+    rgba_->width = size.width;
+    rgba_->height = size.height;
+    av_check(av_frame_get_buffer(rgba_, 0), "out of memory");
     scaler_ = sws_getContext(size.width, size.height, AV_PIX_FMT_RGBA, size.width, size.height,
                              context_->pix_fmt, SWS_BICUBIC, nullptr, nullptr, nullptr);
     if (!scaler_) throw VideoFileError("no RGBA to YUV conversion");
   }
 
-  ~Mp4Encoder() override {
+  ~LibavEncoder() override {
     sws_freeContext(scaler_);
     av_packet_free(&packet_);
     av_frame_free(&frame_);
+    av_frame_free(&rgba_);
     avcodec_free_context(&context_);
     if (format_ && format_->pb) avio_closep(&format_->pb);
     avformat_free_context(format_);
@@ -101,22 +128,24 @@ class Mp4Encoder final : public VideoWriter::Encoder {
 
   void add(const Image& image) override {
     av_check(av_frame_make_writable(frame_), "out of memory");
-    const auto* pixels = reinterpret_cast<const std::uint8_t*>(image.row(0));
-    const std::uint8_t* planes[1] = {pixels};
-    const int strides[1] = {4 * image.width()};
-    sws_scale(scaler_, planes, strides, 0, size_.height, frame_->data, frame_->linesize);
+    for (int y = 0; y < size_.height; ++y) {  // premultiplied RGBA: the pixel over black
+      std::memcpy(rgba_->data[0] + static_cast<std::size_t>(y) * rgba_->linesize[0], image.row(y),
+                  static_cast<std::size_t>(size_.width) * sizeof(Pixel));
+    }
+    sws_scale(scaler_, rgba_->data, rgba_->linesize, 0, size_.height, frame_->data,
+              frame_->linesize);
     frame_->pts = next_pts_++;
     encode(frame_);
   }
 
   void finish() override {
     encode(nullptr);
-    av_check(av_write_trailer(format_), "cannot complete the MP4 file");
+    av_check(av_write_trailer(format_), "cannot complete the file");
     av_check(avio_closep(&format_->pb), "cannot close the file");
   }
 
  private:
-  // Yuv 4:2:0 in limited range with BT.601 colours: what presentation programs play.
+  // YUV 4:2:0 in limited range with BT.601 colours: what presentation programs play.
   void open_codec(const AVCodec* codec, int fps) {
     context_->width = size_.width;
     context_->height = size_.height;
@@ -126,15 +155,11 @@ class Mp4Encoder final : public VideoWriter::Encoder {
     context_->gop_size = fps;
     context_->color_range = AVCOL_RANGE_MPEG;
     context_->colorspace = AVCOL_SPC_SMPTE170M;
-    context_->bit_rate = codec->id == AV_CODEC_ID_MPEG4 ? 4000000 : 0;
     if (format_->oformat->flags & AVFMT_GLOBALHEADER) {
       context_->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     }
     AVDictionary* options = nullptr;
-    if (std::string(codec->name) == "libx264") {
-      av_dict_set(&options, "preset", "medium", 0);
-      av_dict_set(&options, "crf", "20", 0);  // visually lossless for flat synthetic images
-    }
+    set_quality(context_, codec, &options);
     const int opened = avcodec_open2(context_, codec, &options);
     av_dict_free(&options);
     av_check(opened, "cannot open the video encoder");
@@ -149,17 +174,23 @@ class Mp4Encoder final : public VideoWriter::Encoder {
       const int got = avcodec_receive_packet(context_, packet_);
       if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) return;
       av_check(got, "the video encoder failed");
+      // Every frame lasts one tick of 1/fps; without it the MP4 edit list ends at the last
+      // frame's start and players drop that frame.
+      if (packet_->duration == 0) packet_->duration = 1;
       av_packet_rescale_ts(packet_, context_->time_base, stream_->time_base);
       packet_->stream_index = stream_->index;
       av_check(av_interleaved_write_frame(format_, packet_), "cannot write a video packet");
     }
   }
 
+  const char* muxer_;
+  const AVCodec* codec_;
   VideoSize size_;
   AVFormatContext* format_ = nullptr;
   AVStream* stream_ = nullptr;
   AVCodecContext* context_ = nullptr;
-  AVFrame* frame_ = nullptr;
+  AVFrame* frame_ = nullptr;  // YUV, to the encoder
+  AVFrame* rgba_ = nullptr;   // the image's pixels, padded
   AVPacket* packet_ = nullptr;
   SwsContext* scaler_ = nullptr;
   std::int64_t next_pts_ = 0;
@@ -243,55 +274,12 @@ class GifEncoder final : public VideoWriter::Encoder {
   int delay_cs_ = 3;
 };
 
-// ---- Ogg Theora: VTK's writer (rows bottom to top, RGB) ----
-
-class OgvEncoder final : public VideoWriter::Encoder {
- public:
-  void open(const std::string& path, VideoSize size, int fps) override {
-    size_ = size;
-    writer_->SetFileName(path.c_str());
-    writer_->SetRate(fps);
-    writer_->SetInputData(data_);
-    data_->SetDimensions(size.width, size.height, 1);
-    data_->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  }
-
-  void add(const Image& image) override {
-    auto* out = static_cast<unsigned char*>(data_->GetScalarPointer());
-    for (int y = 0; y < size_.height; ++y) {
-      const Pixel* row = image.row(y);
-      unsigned char* dst = out + static_cast<std::size_t>(size_.height - 1 - y) * size_.width * 3;
-      for (int x = 0; x < size_.width; ++x) {
-        dst[3 * x] = row[x].r;
-        dst[3 * x + 1] = row[x].g;
-        dst[3 * x + 2] = row[x].b;
-      }
-    }
-    data_->Modified();
-    if (!started_) writer_->Start();
-    started_ = true;
-    writer_->Write();
-    if (writer_->GetError() != 0) throw VideoFileError("the Ogg Theora writer failed");
-  }
-
-  void finish() override {
-    if (started_) writer_->End();
-    started_ = false;
-    if (writer_->GetError() != 0) throw VideoFileError("the Ogg Theora writer failed");
-  }
-
- private:
-  VideoSize size_;
-  vtkSmartPointer<vtkOggTheoraWriter> writer_ = vtkSmartPointer<vtkOggTheoraWriter>::New();
-  vtkSmartPointer<vtkImageData> data_ = vtkSmartPointer<vtkImageData>::New();
-  bool started_ = false;
-};
-
 std::unique_ptr<VideoWriter::Encoder> make_encoder(VideoFormat format) {
   switch (format) {
-    case VideoFormat::kMp4: return std::make_unique<Mp4Encoder>();
+    case VideoFormat::kMp4: return std::make_unique<LibavEncoder>("mp4", mp4_encoder());
     case VideoFormat::kGif: return std::make_unique<GifEncoder>();
-    case VideoFormat::kOgv: return std::make_unique<OgvEncoder>();
+    case VideoFormat::kOgv:
+      return std::make_unique<LibavEncoder>("ogg", avcodec_find_encoder_by_name("libtheora"));
   }
   throw VideoFileError("unknown video format");
 }

@@ -1,6 +1,6 @@
-// Video files from rendered frames, for slides and web pages: MP4 (H.264 through Debian's
-// libavformat and libavcodec), animated GIF (giflib) and Ogg Theora (VTK's
-// vtkOggTheoraWriter). The format is chosen by the file's extension. Frames are core Images
+// Video files from rendered frames, for slides and web pages: MP4 (H.264) and Ogg Theora
+// through Debian's libavformat and libavcodec (encoders libx264 and libtheora), and
+// animated GIF through giflib. The format is chosen by the file's extension. Frames are core Images
 // (premultiplied RGBA8), shown over black: transparent pixels become black.
 #pragma once
 

@@ -1,5 +1,7 @@
 #include "video_decode.h"
 
+#include <algorithm>
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -7,6 +9,31 @@ extern "C" {
 }
 
 namespace oflab::testing {
+namespace {
+
+// A decoded frame as RGB24 rows, top to bottom, without padding. Converts into a padded
+// AVFrame first: swscale's vector code may write past the end of an unpadded row.
+std::vector<std::uint8_t> rgb_of(const AVFrame* frame) {
+  const int w = frame->width, h = frame->height;
+  AVFrame* rgb = av_frame_alloc();
+  rgb->format = AV_PIX_FMT_RGB24;
+  rgb->width = w;
+  rgb->height = h;
+  av_frame_get_buffer(rgb, 0);
+  SwsContext* sws = sws_getContext(w, h, AVPixelFormat(frame->format), w, h, AV_PIX_FMT_RGB24,
+                                   SWS_BICUBIC, nullptr, nullptr, nullptr);
+  sws_scale(sws, frame->data, frame->linesize, 0, h, rgb->data, rgb->linesize);
+  sws_freeContext(sws);
+  std::vector<std::uint8_t> out(static_cast<size_t>(w) * h * 3);
+  for (int y = 0; y < h; ++y) {
+    std::copy_n(rgb->data[0] + static_cast<size_t>(y) * rgb->linesize[0], 3 * w,
+                out.data() + static_cast<size_t>(y) * 3 * w);
+  }
+  av_frame_free(&rgb);
+  return out;
+}
+
+}  // namespace
 
 Decoded decode_with_libav(const std::string& path) {
   Decoded d;
@@ -29,19 +56,13 @@ Decoded decode_with_libav(const std::string& path) {
       if (d.frames++ > 0) continue;
       d.width = frame->width;
       d.height = frame->height;
-      d.first_rgb.resize(static_cast<size_t>(d.width) * d.height * 3);
-      SwsContext* sws = sws_getContext(d.width, d.height, AVPixelFormat(frame->format), d.width,
-                                       d.height, AV_PIX_FMT_RGB24, SWS_BICUBIC, nullptr, nullptr,
-                                       nullptr);
-      uint8_t* out[1] = {d.first_rgb.data()};
-      const int stride[1] = {3 * d.width};
-      sws_scale(sws, frame->data, frame->linesize, 0, d.height, out, stride);
-      sws_freeContext(sws);
+      d.first_rgb = rgb_of(frame);
     }
   };
   while (av_read_frame(format, packet) >= 0) {
     if (packet->stream_index == stream) {
-      avcodec_send_packet(context, packet);
+      // A full decoder refuses the packet (EAGAIN) until its frames are taken.
+      while (avcodec_send_packet(context, packet) == AVERROR(EAGAIN)) drain();
       drain();
     }
     av_packet_unref(packet);
