@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 build=$(cd "${1:-build}" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd "$build" && cpack -G DEB -B "$work" > "$work/cpack.log" 2>&1) || { cat "$work/cpack.log" >&2; exit 1; }
+(cd "$build" && cpack -G DEB -B "$work" -D CPACK_OUTPUT_FILE_PREFIX="$work" > "$work/cpack.log" 2>&1) || { cat "$work/cpack.log" >&2; exit 1; }
 version=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$build/CMakeCache.txt")
 deb="$work/oflab_${version}_amd64.deb"
 [[ -f "$deb" ]] || { echo "check-deb: no $deb (made: $(ls "$work"))" >&2; exit 1; }
