@@ -31,4 +31,8 @@ for f in frames.csv summary.json; do
 done
 rows=$(($(wc -l < "$work/report/frames.csv") - 1))
 [[ $rows -eq 40 ]] || { echo "check-install: frames.csv has $rows rows, expected 40" >&2; exit 1; }
+# A script that exists only in the install: found, so the installed datasets are the ones used.
+cp "$prefix/share/oflab/datasets/scripts/zoom.json" "$prefix/share/oflab/datasets/scripts/installed-only.json"
+(cd / && env -u OFLAB_DATASETS "$prefix/bin/oflab-cli" animate --script installed-only --frames 2 \
+   > /dev/null) || { echo "check-install: the installed oflab-cli does not use its installed datasets" >&2; exit 1; }
 echo "check-install: the consumer and the installed oflab-cli work from $prefix"
