@@ -25,7 +25,8 @@ std::string animate_usage() {
       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
-      "               [--epsilon PX] [--sampling, --frames, --out, --json, --quiet as above]\n"
+      "               [--epsilon PX]\n"
+      "               [--sampling, --frames, --out, --video, --json, --quiet as above]\n"
       "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
   return usage;
 }

@@ -39,7 +39,8 @@ ReportSection run_exp1(ExperimentContext& c) {
       run_experiment1(c.texture(), experiment1_spec(c.quick()), c.progress_for("exp1", ""));
   ReportSection section = experiment1_section(r, c);
   if (!c.video_format().empty()) {
-    const std::vector<std::string> videos = write_experiment1_videos(c, experiment1_spec(c.quick()));
+    const std::vector<std::string> videos =
+        write_experiment1_videos(c, experiment1_spec(c.quick()));
     std::string list;
     for (const std::string& v : videos) list += (list.empty() ? "" : ", ") + v;
     section.paragraph("Videos of the frames each mode showed (--videos " + c.video_format() +

@@ -204,7 +204,8 @@ class GifEncoder final : public VideoWriter::Encoder {
     size_ = size;
     int error = 0;
     gif_ = EGifOpenFileName(path.c_str(), false, &error);
-    if (!gif_) throw VideoFileError(std::string("cannot create the file: ") + GifErrorString(error));
+    if (!gif_)
+      throw VideoFileError(std::string("cannot create the file: ") + GifErrorString(error));
     EGifSetGifVersion(gif_, true);
     // Hundredths of a second per frame; at least 2, the smallest delay browsers honour.
     delay_cs_ = std::max(2, static_cast<int>(std::lround(100.0 / fps)));
@@ -237,10 +238,10 @@ class GifEncoder final : public VideoWriter::Encoder {
     std::unique_ptr<ColorMapObject, void (*)(ColorMapObject*)> palette(
         GifMakeMapObject(256, nullptr), GifFreeMapObject);
     int colours = 256;
-    if (!palette || GifQuantizeBuffer(static_cast<unsigned>(size_.width),
-                                      static_cast<unsigned>(size_.height), &colours, r.data(),
-                                      g.data(), b.data(), indices.data(),
-                                      palette->Colors) == GIF_ERROR) {
+    if (!palette ||
+        GifQuantizeBuffer(static_cast<unsigned>(size_.width), static_cast<unsigned>(size_.height),
+                          &colours, r.data(), g.data(), b.data(), indices.data(),
+                          palette->Colors) == GIF_ERROR) {
       throw VideoFileError("cannot reduce a frame to 256 colours");
     }
     GraphicsControlBlock control{DISPOSE_DO_NOT, false, delay_cs_, NO_TRANSPARENT_COLOR};
@@ -258,8 +259,8 @@ class GifEncoder final : public VideoWriter::Encoder {
     int error = 0;
     const int closed = EGifCloseFile(gif_, &error);
     gif_ = nullptr;
-    if (closed == GIF_ERROR) throw VideoFileError(std::string("cannot complete the GIF: ") +
-                                                  GifErrorString(error));
+    if (closed == GIF_ERROR)
+      throw VideoFileError(std::string("cannot complete the GIF: ") + GifErrorString(error));
   }
 
  private:
@@ -276,8 +277,10 @@ class GifEncoder final : public VideoWriter::Encoder {
 
 std::unique_ptr<VideoWriter::Encoder> make_encoder(VideoFormat format) {
   switch (format) {
-    case VideoFormat::kMp4: return std::make_unique<LibavEncoder>("mp4", mp4_encoder());
-    case VideoFormat::kGif: return std::make_unique<GifEncoder>();
+    case VideoFormat::kMp4:
+      return std::make_unique<LibavEncoder>("mp4", mp4_encoder());
+    case VideoFormat::kGif:
+      return std::make_unique<GifEncoder>();
     case VideoFormat::kOgv:
       return std::make_unique<LibavEncoder>("ogg", avcodec_find_encoder_by_name("libtheora"));
   }
@@ -297,9 +300,12 @@ VideoFormat video_format_of(const std::string& path) {
 
 const char* video_format_name(VideoFormat format) {
   switch (format) {
-    case VideoFormat::kMp4: return "mp4";
-    case VideoFormat::kGif: return "gif";
-    case VideoFormat::kOgv: return "ogv";
+    case VideoFormat::kMp4:
+      return "mp4";
+    case VideoFormat::kGif:
+      return "gif";
+    case VideoFormat::kOgv:
+      return "ogv";
   }
   return "?";
 }

@@ -81,7 +81,7 @@ class VideoWriter {
   VideoFormat format_;
   int fps_;
   int frames_ = 0;
-  int width_ = 0;   // of the first frame
+  int width_ = 0;  // of the first frame
   int height_ = 0;
   bool created_ = false;  // the file was (or may have been) created
   bool finished_ = false;

@@ -407,7 +407,8 @@ void MainWindow::create_export_menu(QMenu* file) {
     QString error;
     if (!dir.isEmpty() && !export_frames_png(this, dir, false, &error)) show_message(error);
   });
-  connect(exports->addAction(tr("Animation as video (MP4, GIF, Ogg Theora)...")), &QAction::triggered, this, [this] {
+  QAction* video = exports->addAction(tr("Animation as video (MP4, GIF, Ogg Theora)..."));
+  connect(video, &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Save video"), QStringLiteral("oflab.mp4"),
         tr("MP4 video (*.mp4);;Animated GIF (*.gif);;Ogg Theora video (*.ogv)"));

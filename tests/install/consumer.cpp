@@ -75,6 +75,6 @@ int main() {
   check_flow();
   check_warp();
   std::printf("%s\n", failures == 0 ? "oflab consumer: all checks passed"
-                                      : "oflab consumer: checks FAILED");
+                                    : "oflab consumer: checks FAILED");
   return failures == 0 ? 0 : 1;
 }

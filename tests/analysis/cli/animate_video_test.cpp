@@ -32,8 +32,8 @@ class AnimateVideo : public ::testing::Test {
 };
 
 TEST_F(AnimateVideo, PlaneRunAsMp4HasOneFramePerFrameAtTheCameraSize) {
-  const auto r = run_cli_captured(
-      {"animate", "--script", "loop", "--frames", "12", "--video", path("loop.mp4"), "--fps", "24"});
+  const auto r = run_cli_captured({"animate", "--script", "loop", "--frames", "12", "--video",
+                                   path("loop.mp4"), "--fps", "24"});
   ASSERT_EQ(r.code, 0) << r.err;
   const testing::Decoded d = testing::decode_with_libav(path("loop.mp4"));
   EXPECT_EQ(d.frames, 12);
@@ -52,10 +52,11 @@ TEST_F(AnimateVideo, SceneRunAsGifHasTheRequestedFrames) {
 
 TEST_F(AnimateVideo, ExistingFileNeedsForce) {
   std::ofstream(path("mine.mp4")) << "a user's file";
-  const auto r =
-      run_cli_captured({"animate", "--script", "zoom", "--frames", "3", "--video", path("mine.mp4")});
+  const auto r = run_cli_captured(
+      {"animate", "--script", "zoom", "--frames", "3", "--video", path("mine.mp4")});
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--video: '" + path("mine.mp4") + "' exists (add --force"), std::string::npos)
+  EXPECT_NE(r.err.find("--video: '" + path("mine.mp4") + "' exists (add --force"),
+            std::string::npos)
       << r.err;
   EXPECT_EQ(fs::file_size(path("mine.mp4")), 13u);
   const auto forced = run_cli_captured(
@@ -69,8 +70,10 @@ TEST_F(AnimateVideo, BadValuesAreOneLineErrorsNamingTheOption) {
     std::vector<std::string> args;
     std::string message;
   } cases[] = {
-      {{"--video", path("x.avi")}, "--video: '" + path("x.avi") + "': the video format is chosen "
-                                   "by the extension, one of mp4, gif, ogv"},
+      {{"--video", path("x.avi")},
+       "--video: '" + path("x.avi") +
+           "': the video format is chosen "
+           "by the extension, one of mp4, gif, ogv"},
       {{"--video", path("x.gif"), "--fps", "0"}, "--fps: 0 is outside 1..60"},
       {{"--fps", "25"}, "--fps: needs --video FILE"},
   };

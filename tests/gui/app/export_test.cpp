@@ -88,14 +88,17 @@ TEST_F(ExportTest, VideoIsAnOggFileAndAnExistingFileIsKept) {
   EXPECT_EQ(read_all(mine), "a user's file");
 }
 
-// MP4 and GIF go through the same encoder (decoded back in tests/analysis/formats/video_file_test.cpp).
+// MP4 and GIF go through the same encoder (decoded back in
+// tests/analysis/formats/video_file_test.cpp).
 TEST_F(ExportTest, VideoFormatFollowsTheExtension) {
   QTemporaryDir dir;
   play_short_script(window(), dir);
   QString error;
-  ASSERT_TRUE(export_video(&window(), dir.filePath("movie.mp4"), false, &error)) << error.toStdString();
+  ASSERT_TRUE(export_video(&window(), dir.filePath("movie.mp4"), false, &error))
+      << error.toStdString();
   EXPECT_EQ(read_all(dir.filePath("movie.mp4")).substr(4, 4), "ftyp");
-  ASSERT_TRUE(export_video(&window(), dir.filePath("movie.gif"), false, &error)) << error.toStdString();
+  ASSERT_TRUE(export_video(&window(), dir.filePath("movie.gif"), false, &error))
+      << error.toStdString();
   EXPECT_EQ(read_all(dir.filePath("movie.gif")).substr(0, 6), "GIF89a");
   EXPECT_FALSE(export_video(&window(), dir.filePath("movie.avi"), false, &error));
   EXPECT_TRUE(error.contains("mp4, gif, ogv")) << error.toStdString();
