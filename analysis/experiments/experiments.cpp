@@ -44,7 +44,8 @@ ReportSection run_exp1(ExperimentContext& c) {
     std::string list;
     for (const std::string& v : videos) list += (list.empty() ? "" : ", ") + v;
     section.paragraph("Videos of the frames each mode showed (--videos " + c.video_format() +
-                      ", 30 fps), one per script and mode: " + list + ".");
+                      ", " + std::to_string(kExperiment1VideoFps) +
+                      " fps), one per script and mode: " + list + ".");
   }
   return section;
 }

@@ -338,7 +338,6 @@ Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
 }
 
 std::vector<std::string> write_experiment1_videos(ExperimentContext& context, const RunSpec& spec) {
-  constexpr int kFps = 30;
   std::filesystem::create_directories(std::filesystem::path(context.out_dir()) / "videos");
   std::vector<std::string> written;
   RunSource source;
@@ -349,7 +348,8 @@ std::vector<std::string> write_experiment1_videos(ExperimentContext& context, co
       const std::string name =
           "videos/exp1-" + script + "-" + mode->name + "." + context.video_format();
       context.progress("exp1", "writing " + name);
-      VideoWriter video((std::filesystem::path(context.out_dir()) / name).string(), kFps, true);
+      VideoWriter video((std::filesystem::path(context.out_dir()) / name).string(),
+                        kExperiment1VideoFps, true);
       source.settings.engine = EngineSettings{};
       source.settings.engine.policy = mode;
       PlayOptions options;

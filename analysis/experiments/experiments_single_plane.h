@@ -40,9 +40,12 @@ RunSpec experiment1_spec(bool quick);
 Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
                                   const std::function<void(const std::string&)>& progress);
 
+// Frame rate of the videos of write_experiment1_videos, frames per second.
+constexpr int kExperiment1VideoFps = 30;
+
 // Plays every script of Experiment 1 once more in each of its modes (the spec's frames, no
 // timing) and writes the frames the engine showed as DIR/videos/exp1-SCRIPT-MODE.EXT at
-// 30 fps, in the context's video format (formats/video_file.h), overwriting earlier
+// kExperiment1VideoFps, in the context's video format (formats/video_file.h), overwriting earlier
 // videos of the same names. Returns the paths relative to DIR, in script and mode order.
 // Precondition: context.video_format() is not empty. Throws VideoFileError naming a file
 // that cannot be written.

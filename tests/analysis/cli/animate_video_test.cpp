@@ -3,6 +3,7 @@
 // option keeps the CLI's contract (a one-line error naming it, exit code 2, no file
 // overwritten without --force).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,9 +21,10 @@ using testing::run_cli_captured;
 class AnimateVideo : public ::testing::Test {
  protected:
   void SetUp() override {
+    // The process id keeps runs of several trees on one machine apart.
     dir_ = fs::temp_directory_path() /
-           ("oflab-animate-video-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("oflab-animate-video-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

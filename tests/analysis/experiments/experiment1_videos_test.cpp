@@ -1,6 +1,7 @@
 // `oflab-cli experiments --videos`: Experiment 1's runs as video files, one per script and
 // mode, each with the frames of the run (read back with giflib, video_decode.h).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 
@@ -15,7 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Experiment1Videos, OneGifPerScriptAndModeWithTheRunsFrames) {
-  const fs::path dir = fs::temp_directory_path() / "oflab-experiment1-videos-test";
+  const fs::path dir = fs::temp_directory_path() /
+                       ("oflab-experiment1-videos-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   ExperimentContext context(dir.string(), true, nullptr);

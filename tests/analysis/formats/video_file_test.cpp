@@ -4,6 +4,7 @@
 #include "formats/video_file.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -56,10 +57,10 @@ double mean_rgb_difference(const Decoded& d, const Image& image) {
 class VideoFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ =
-        fs::temp_directory_path() /
-        ("oflab-video-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-         "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    // The process id keeps runs of several trees on one machine apart.
+    dir_ = fs::temp_directory_path() /
+           ("oflab-video-test-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
