@@ -7,6 +7,8 @@ packages=(
   cmake g++ make pkg-config
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libqt5opengl5-dev mpi-default-dev libglm-dev
   nlohmann-json3-dev libstb-dev
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libgif-dev
+  help2man dpkg-dev file
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
   clang-14 clang libclang-rt-14-dev

@@ -78,6 +78,7 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const SourceKind& kind = source_kind("plane");
   const AnimationRun run = kind.play(source, options);
   const nlohmann::json summary = kind.summary_json(run);
+  output.finish();
   if (!output.dir.empty()) write_run_outputs(output.dir, kind, run, summary);
   const std::string name = source.script.name.empty() ? script_arg : source.script.name;
   if (a.has("--json")) {
@@ -109,6 +110,8 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--out", 1},
                            {"--force", 0},
                            {"--frames-png", 0},
+                           {"--video", 1},
+                           {"--fps", 1},
                            {"--json", 0},
                            {"--quiet", 0},
                            {"--scene", 1},

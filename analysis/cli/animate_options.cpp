@@ -19,6 +19,32 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr int kDefaultVideoFps = 30;
+
+// --video FILE at --fps N: the writer, checked before the run (format, frame rate, an
+// existing file without --force). Empty without --video.
+std::shared_ptr<VideoWriter> read_video_option(const CliArgs& a) {
+  if (!a.has("--video")) {
+    if (a.has("--fps")) throw UsageError("--fps: needs --video FILE");
+    return nullptr;
+  }
+  const int fps = a.has("--fps") ? a.integer("--fps") : kDefaultVideoFps;
+  if (fps < kMinVideoFps || fps > kMaxVideoFps) {
+    throw UsageError("--fps: " + std::to_string(fps) + " is outside " +
+                     std::to_string(kMinVideoFps) + ".." + std::to_string(kMaxVideoFps));
+  }
+  const std::string path = a.values("--video").at(0);
+  std::error_code ec;
+  if (fs::exists(path, ec) && !a.has("--force")) {
+    throw UsageError("--video: '" + path + "' exists (add --force to overwrite it)");
+  }
+  try {
+    return std::make_shared<VideoWriter>(path, fps, true);
+  } catch (const VideoFileError& e) {
+    throw UsageError(std::string("--video: ") + e.what());
+  }
+}
+
 bool is_obj_file(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -81,11 +107,21 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
   if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
   if (!out.dir.empty()) prepare_out_dir(out.dir, a.has("--force"));
-  if (a.has("--frames-png")) {
-    out.on_frame = [dir = out.dir](int i, const Image& frame) {
-      std::ostringstream name;
-      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
-      write_png((fs::path(dir) / name.str()).string(), frame);
+  out.video = read_video_option(a);
+  const bool png = a.has("--frames-png");
+  if (png || out.video) {
+    out.on_frame = [dir = out.dir, png, video = out.video](int i, const Image& frame) {
+      if (png) {
+        std::ostringstream name;
+        name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
+        write_png((fs::path(dir) / name.str()).string(), frame);
+      }
+      if (!video) return;
+      try {
+        video->add_frame(frame);
+      } catch (const VideoFileError& e) {
+        throw UsageError(std::string("--video: ") + e.what());
+      }
     };
   }
   const bool quiet = a.has("--quiet");
@@ -101,6 +137,15 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
     }
   };
   return out;
+}
+
+void RunOutput::finish() const {
+  if (!video) return;
+  try {
+    video->finish();
+  } catch (const VideoFileError& e) {
+    throw UsageError(std::string("--video: ") + e.what());
+  }
 }
 
 void write_run_outputs(const std::string& dir, const SourceKind& kind, const AnimationRun& run,

@@ -4,10 +4,12 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/cli_args.h"
+#include "formats/video_file.h"
 #include "runs/source_kinds.h"
 #include "engine/engine.h"
 #include "image/image.h"
@@ -27,18 +29,26 @@ Sampling read_sampling(const CliArgs& args);
 
 // What every form of `oflab-cli animate` does with its output and timing options: --frames N
 // (at most N frames; -1 for all), --repeat-timing N (timed passes after an untimed warm-up,
-// 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions; analysis/runs/run_driver.h), --out DIR (created, or an existing empty one; --force for a non-empty
-// one), --frames-png (each frame as DIR/frame_NNNNN.png; needs --out) and --quiet (no
-// progress lines; otherwise runs of 200 frames or more report every tenth on `err`).
-// Throws UsageError naming the option. `err` must outlive the returned callbacks.
+// 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions; analysis/runs/run_driver.h),
+// --out DIR (created, or an existing empty one; --force for a non-empty one), --frames-png
+// (each frame as DIR/frame_NNNNN.png; needs --out), --video FILE (the frames as an MP4, GIF
+// or Ogg Theora video by FILE's extension, formats/video_file.h; an existing FILE needs
+// --force) at --fps N (default 30) and --quiet (no progress lines; otherwise runs of 200
+// frames or more report every tenth on `err`). Throws UsageError naming the option. `err`
+// must outlive the returned callbacks.
 constexpr int kMaxTimingRepetitions = 1000;
 
 struct RunOutput {
   int max_frames = -1;
   int timing_repetitions = kDefaultTimingRepetitions;
   std::string dir;                                  // empty without --out
-  std::function<void(int, const Image&)> on_frame;  // empty without --frames-png
+  std::function<void(int, const Image&)> on_frame;  // empty without --frames-png and --video
   std::function<void(int, int)> progress;
+  std::shared_ptr<VideoWriter> video;               // empty without --video
+
+  // Completes the --video file after the run (nothing without --video). Throws UsageError
+  // naming --video when it cannot be completed.
+  void finish() const;
 
   // Sets max_frames, the timing (a warm-up, timing_repetitions timed passes), on_frame and
   // progress of a run's options (RunOptions, PlayOptions).

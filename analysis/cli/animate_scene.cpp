@@ -77,6 +77,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["mode"] = settings.engine.policy->name;
   j["thresholds"] = settings.engine.thresholds;
   j["skip_hidden"] = settings.skip_hidden;
+  output.finish();
   if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";

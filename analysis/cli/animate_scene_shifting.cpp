@@ -69,6 +69,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["mode"] = "scene-shifting";
   j["thresholds"] = {eps, eps, eps, eps};  // the one budget, epsilon, stands for every term
   j["skip_hidden"] = false;
+  output.finish();
   if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";

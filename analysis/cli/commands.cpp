@@ -24,12 +24,13 @@ std::string animate_usage() {
       std::to_string(kDefaultTimingRepetitions) + ")\n";
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
+      "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
-      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --out, --json,\n"
-      "               --quiet as above]\n"
+      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --out, --video,\n"
+      "               --json, --quiet as above]\n"
       "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
   return usage;
 }
@@ -39,7 +40,8 @@ std::string experiments_usage() {
   std::string only;
   for (const std::string& name : experiment_names()) only += (only.empty() ? "" : "|") + name;
   return "oflab-cli experiments [--out DIR] [--only " + only + " ...] [--quick]\n"
-         "               [--force]   (draws charts: needs an X display, e.g. xvfb-run -a)";
+         "               [--videos mp4|gif|ogv] [--force]\n"
+         "               (draws charts: needs an X display, e.g. xvfb-run -a)";
 }
 
 }  // namespace

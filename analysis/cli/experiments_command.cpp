@@ -8,6 +8,7 @@
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "experiments/experiments.h"
+#include "formats/video_file.h"
 
 namespace oflab {
 namespace {
@@ -48,6 +49,20 @@ std::vector<std::string> take_only(CommandArgs& args) {
   return names;
 }
 
+// --videos mp4|gif|ogv: the video format of Experiment 1's runs; empty without it. Throws
+// UsageError for another format or when --only leaves Experiment 1 out.
+std::string read_videos_option(const CliArgs& a, const std::vector<std::string>& only) {
+  if (!a.has("--videos")) return "";
+  const std::string format = a.values("--videos").at(0);
+  if (format != "mp4" && format != "gif" && format != "ogv") {
+    throw UsageError("--videos: '" + format + "' is not one of " + video_format_list());
+  }
+  if (!only.empty() && std::find(only.begin(), only.end(), "exp1") == only.end()) {
+    throw UsageError("--videos: the videos are of Experiment 1's runs; --only leaves out exp1");
+  }
+  return format;
+}
+
 std::string command_line(const CommandArgs& original) {
   std::string line = "oflab-cli experiments";
   for (const std::string& a : original) line += " " + a;
@@ -62,9 +77,10 @@ int run_experiments_command(const CommandArgs& original_args, std::ostream& out,
     CommandArgs args = original_args;
     ExperimentsOptions options;
     options.only = take_only(args);
-    const CliArgs a(args, {{"--out", 1}, {"--quick", 0}, {"--force", 0}});
+    const CliArgs a(args, {{"--out", 1}, {"--quick", 0}, {"--force", 0}, {"--videos", 1}});
     options.out_dir = a.text_or("--out", kDefaultOutDir);
     options.quick = a.has("--quick");
+    options.video_format = read_videos_option(a, options.only);
     options.command_line = command_line(original_args);
     if (const std::string problem = chart_display_problem(); !problem.empty()) {
       throw ChartError(problem);

@@ -37,7 +37,17 @@ struct Experiment {
 ReportSection run_exp1(ExperimentContext& c) {
   const Experiment1Result r =
       run_experiment1(c.texture(), experiment1_spec(c.quick()), c.progress_for("exp1", ""));
-  return experiment1_section(r, c);
+  ReportSection section = experiment1_section(r, c);
+  if (!c.video_format().empty()) {
+    const std::vector<std::string> videos =
+        write_experiment1_videos(c, experiment1_spec(c.quick()));
+    std::string list;
+    for (const std::string& v : videos) list += (list.empty() ? "" : ", ") + v;
+    section.paragraph("Videos of the frames each mode showed (--videos " + c.video_format() +
+                      ", " + std::to_string(kExperiment1VideoFps) +
+                      " fps), one per script and mode: " + list + ".");
+  }
+  return section;
 }
 
 ReportSection run_delta(ExperimentContext& c) {
@@ -165,6 +175,7 @@ ExperimentsOutcome run_experiments(const ExperimentsOptions& options, std::ostre
   for (const char* sub : {"charts", "data"})
     fs::create_directories(fs::path(options.out_dir) / sub);
   ExperimentContext context(options.out_dir, options.quick, &progress);
+  context.set_video_format(options.video_format);
   const MachineInfo machine = collect_machine_info();
   ExperimentsOutcome outcome;
   outcome.report.title = "oflab experiments: the dissertation's results beside oflab's";

@@ -43,6 +43,11 @@ class ExperimentContext {
   ReportFigure add_chart(const std::string& name, const Chart& chart, const std::string& caption);
   int charts_written() const { return charts_; }
 
+  // The format of the videos of Experiment 1's runs ("mp4", "gif", "ogv", by
+  // formats/video_file.h), written to DIR/videos; empty (the default) for none.
+  const std::string& video_format() const { return video_format_; }
+  void set_video_format(std::string format) { video_format_ = std::move(format); }
+
  private:
   std::string out_dir_;
   bool quick_ = false;
@@ -50,12 +55,14 @@ class ExperimentContext {
   std::chrono::steady_clock::time_point start_;
   mutable Layer texture_;
   int charts_ = 0;
+  std::string video_format_;
 };
 
 struct ExperimentsOptions {
   std::string out_dir;
   std::vector<std::string> only;  // experiment names; empty runs them all
   bool quick = false;
+  std::string video_format;  // --videos mp4|gif|ogv: Experiment 1's runs as videos; empty: none
   std::string command_line;  // as typed, for the report's "how to reproduce"
 };
 

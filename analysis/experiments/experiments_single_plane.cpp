@@ -6,9 +6,13 @@
 #include "experiments/experiments_single_plane.h"
 
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include "experiments/published_results.h"
+#include "formats/datasets.h"
+#include "formats/script_file.h"
+#include "formats/video_file.h"
 
 namespace oflab {
 namespace {
@@ -329,6 +333,33 @@ Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
     result.scripts.push_back(std::move(s));
   }
   return result;
+}
+
+std::vector<std::string> write_experiment1_videos(ExperimentContext& context, const RunSpec& spec) {
+  std::filesystem::create_directories(std::filesystem::path(context.out_dir()) / "videos");
+  std::vector<std::string> written;
+  RunSource source;
+  source.texture = context.texture().image;
+  for (const std::string& script : experiment1_scripts()) {
+    source.script = read_script_file(resolve_script_path(script));
+    for (const ReusePolicy* mode : experiment1_modes()) {
+      const std::string name =
+          "videos/exp1-" + script + "-" + mode->name + "." + context.video_format();
+      context.progress("exp1", "writing " + name);
+      VideoWriter video((std::filesystem::path(context.out_dir()) / name).string(),
+                        kExperiment1VideoFps, true);
+      source.settings.engine = EngineSettings{};
+      source.settings.engine.policy = mode;
+      PlayOptions options;
+      options.max_frames = spec.max_frames;
+      options.baseline = false;  // only the frames shown
+      options.on_frame = [&video](int, const Image& frame) { video.add_frame(frame); };
+      source_kind("plane").play(source, options);
+      video.finish();
+      written.push_back(name);
+    }
+  }
+  return written;
 }
 
 ReportSection experiment1_section(const Experiment1Result& result, ExperimentContext& context) {

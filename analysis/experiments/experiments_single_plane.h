@@ -40,6 +40,17 @@ RunSpec experiment1_spec(bool quick);
 Experiment1Result run_experiment1(const Layer& texture, const RunSpec& spec,
                                   const std::function<void(const std::string&)>& progress);
 
+// Frame rate of the videos of write_experiment1_videos, frames per second.
+constexpr int kExperiment1VideoFps = 30;
+
+// Plays every script of Experiment 1 once more in each of its modes (the spec's frames, no
+// timing) and writes the frames the engine showed as DIR/videos/exp1-SCRIPT-MODE.EXT at
+// kExperiment1VideoFps, in the context's video format (formats/video_file.h), overwriting earlier
+// videos of the same names. Returns the paths relative to DIR, in script and mode order.
+// Precondition: context.video_format() is not empty. Throws VideoFileError naming a file
+// that cannot be written.
+std::vector<std::string> write_experiment1_videos(ExperimentContext& context, const RunSpec& spec);
+
 // The report section: the comparison table with one reading per oflab row, the cost of
 // each level, and per script and mode a chart of frame time and level per frame.
 ReportSection experiment1_section(const Experiment1Result& result, ExperimentContext& context);

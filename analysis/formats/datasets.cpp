@@ -9,8 +9,18 @@ namespace oflab {
 
 namespace fs = std::filesystem;
 
+std::string installed_datasets_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  const fs::path dir = (exe.parent_path() / OFLAB_INSTALL_DATASETS_RELATIVE).lexically_normal();
+  return fs::is_directory(dir, ec) ? dir.string() : "";
+}
+
 std::string datasets_dir() {
   if (const char* env = std::getenv("OFLAB_DATASETS"); env && *env) return env;
+  static const std::string installed = installed_datasets_dir();
+  if (!installed.empty()) return installed;
   return OFLAB_SOURCE_DATASETS_DIR;
 }
 

@@ -1,5 +1,6 @@
-// Where the bundled data lives (datasets/ of the source tree, or $OFLAB_DATASETS), and
-// lookup of shipped scripts and textures by name.
+// Where the bundled data lives ($OFLAB_DATASETS, the installed share/oflab/datasets beside
+// the running program, or datasets/ of the source tree), and lookup of shipped scripts and
+// textures by name.
 #pragma once
 
 #include <string>
@@ -7,8 +8,16 @@
 
 namespace oflab {
 
-// The datasets directory: $OFLAB_DATASETS when set, else the source tree's datasets/.
+// The datasets directory, the first of: $OFLAB_DATASETS when set; the installed datasets
+// relative to the running executable (installed_datasets_dir) when that directory exists;
+// the source tree's datasets/ (a program run from its build tree).
 std::string datasets_dir();
+
+// The installed datasets of the running executable: its directory (from /proc/self/exe,
+// symbolic links resolved) joined with the install's relative path from bin to the
+// datasets (../share/oflab/datasets for the default layout), normalised. Empty when that
+// directory does not exist, e.g. in the build tree.
+std::string installed_datasets_dir();
 
 // Names (file stems) of the .json files in datasets/`folder`, sorted; empty if the folder
 // is missing.

@@ -434,9 +434,11 @@ void MainWindow::create_export_menu(QMenu* file) {
     if (!export_frames_png(this, dir, false, &error)) return show_message(error);
     statusBar()->showMessage(tr("Wrote the animation view's frames to %1").arg(dir), 15000);
   });
-  connect(exports->addAction(tr("Animation as Ogg Theora video...")), &QAction::triggered, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save video"), QStringLiteral("oflab.ogv"),
-                                                      tr("Ogg Theora video (*.ogv)"));
+  QAction* video = exports->addAction(tr("Animation as video (MP4, GIF, Ogg Theora)..."));
+  connect(video, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save video"), QStringLiteral("oflab.mp4"),
+        tr("MP4 video (*.mp4);;Animated GIF (*.gif);;Ogg Theora video (*.ogv)"));
     QString error;
     if (path.isEmpty()) return;
     if (!export_video(this, path, true, &error)) return show_message(error);

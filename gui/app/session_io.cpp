@@ -1,23 +1,20 @@
 #include "app/session_io.h"
 
-#include <vtkImageData.h>
-#include <vtkOggTheoraWriter.h>
-#include <vtkSmartPointer.h>
-
 #include <QDir>
 #include <QFile>
 #include <QProgressDialog>
 #include <QFileInfo>
-#include <cstring>
 #include <fstream>
 
 #include <sstream>
 
+#include "adapters/frame_images.h"
 #include "adapters/texture.h"
 #include "app/main_window.h"
 #include "app/screenshot.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
+#include "formats/video_file.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "views/animation_view.h"
@@ -205,43 +202,18 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
 }
 
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error) {
-  if (!overwrite && QFileInfo::exists(path)) {
-    *error = QStringLiteral("%1 exists; not overwritten").arg(path);
+  try {
+    VideoWriter video(path.toStdString(), 30, overwrite);
+    const bool ok = for_each_frame(window, error, [&](int, const QImage& frame) {
+      video.add_frame(image_from_qimage(frame));
+      return true;
+    });
+    if (ok) video.finish();
+    return ok;
+  } catch (const VideoFileError& e) {
+    *error = QString::fromStdString(e.what());
     return false;
   }
-  auto writer = vtkSmartPointer<vtkOggTheoraWriter>::New();
-  auto data = vtkSmartPointer<vtkImageData>::New();
-  writer->SetFileName(path.toLocal8Bit().constData());
-  writer->SetRate(30);
-  writer->SetInputData(data);
-  bool started = false;
-  const bool ok = for_each_frame(window, error, [&](int, const QImage& frame) {
-    // Theora needs even sizes; VTK's rows run bottom to top.
-    const QImage rgb = frame.convertToFormat(QImage::Format_RGB888)
-                           .copy(0, 0, frame.width() & ~1, frame.height() & ~1);
-    data->SetDimensions(rgb.width(), rgb.height(), 1);
-    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    auto* out = static_cast<unsigned char*>(data->GetScalarPointer());
-    for (int y = 0; y < rgb.height(); ++y) {
-      std::memcpy(out + size_t(rgb.height() - 1 - y) * rgb.width() * 3, rgb.constScanLine(y),
-                  size_t(rgb.width()) * 3);
-    }
-    data->Modified();
-    if (!started) writer->Start();
-    started = true;
-    writer->Write();
-    if (writer->GetError() == 0) return true;
-    *error = QStringLiteral("%1: the video could not be written").arg(path);
-    return false;
-  });
-  if (started) writer->End();
-  if (!ok && started) QFile::remove(path);  // no partial video is left behind
-  if (ok && !QFileInfo::exists(path)) {
-    *error = QStringLiteral("%1: the video could not be written").arg(path);
-    return false;
-  }
-  if (!ok) return false;
-  return true;
 }
 
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error) {

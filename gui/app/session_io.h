@@ -1,6 +1,6 @@
 // The window's session and exports: capture the session of a window, apply a loaded one
 // (checking every file it names before anything changes), and write the animation as
-// numbered PNGs, an Ogg Theora video or the per-frame CSV. File dialogs live in the
+// numbered PNGs, a video (MP4, GIF or Ogg Theora) or the per-frame CSV. File dialogs live in the
 // window; these functions never overwrite an existing file unless told to.
 #pragma once
 
@@ -22,10 +22,11 @@ bool apply_session(MainWindow* window, const Session& session, QString* error);
 // Plays the animation view's source from frame 0 to its last frame and writes the whole
 // view as on screen for each frame (every panel of its layout, grabbed with
 // app/screenshot.h's grab_with_vtk, so images are as wide as the view): `directory`/
-// frame-0000.png ... (PNG) or one .ogv file (video, vtkOggTheoraWriter at 30 fps). A
-// progress dialog counts the frames and can cancel. Refuses existing files unless
-// `overwrite`. Returns false with *error set on failure or cancel, and then removes what
-// it wrote (no partial set of frames, no partial video). The window's frame is restored.
+// frame-0000.png ... (PNG) or one video file at 30 fps, MP4, GIF or Ogg Theora by the
+// extension of `path` (analysis/formats/video_file.h). A progress dialog counts the frames
+// and can cancel. Refuses existing files unless `overwrite`. Returns false with *error set
+// on failure or cancel, and then removes what it wrote (no partial set of frames, no
+// partial video). The window's frame is restored.
 bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite, QString* error);
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error);
 

@@ -6,6 +6,7 @@
 #include "experiments/experiments.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -347,7 +348,9 @@ size_t occurrences(const std::string& text, const std::string& needle) {
 }
 
 TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
-  const fs::path dir = fs::temp_directory_path() / "oflab_experiments_quick";
+  // The process id keeps runs of several trees on one machine apart.
+  const fs::path dir =
+      fs::temp_directory_path() / ("oflab_experiments_quick_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const CliResult c = cli({"experiments", "--quick", "--out", dir.string()});
   ASSERT_EQ(c.code, 0) << c.err;
@@ -389,6 +392,7 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
   for (const fs::directory_entry& e : fs::directory_iterator(dir / "charts")) {
     EXPECT_GT(e.file_size(), 0u) << e.path();
   }
+  if (!::testing::Test::HasFailure()) fs::remove_all(dir);  // kept to look at when it fails
 }
 
 TEST(ExperimentsCommand, RefusesANonEmptyDirectoryWithoutForce) {

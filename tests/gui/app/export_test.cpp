@@ -3,6 +3,7 @@
 // each one frame per frame of the animation, none overwriting an existing file unless told to.
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QTemporaryDir>
 #include <fstream>
@@ -87,6 +88,23 @@ TEST_F(ExportTest, VideoIsAnOggFileAndAnExistingFileIsKept) {
   EXPECT_FALSE(export_video(&window(), mine, false, &error));
   EXPECT_TRUE(error.contains("exists")) << error.toStdString();
   EXPECT_EQ(read_all(mine), "a user's file");
+}
+
+// MP4 and GIF go through the same encoder (decoded back in
+// tests/analysis/formats/video_file_test.cpp).
+TEST_F(ExportTest, VideoFormatFollowsTheExtension) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir);
+  QString error;
+  ASSERT_TRUE(export_video(&window(), dir.filePath("movie.mp4"), false, &error))
+      << error.toStdString();
+  EXPECT_EQ(read_all(dir.filePath("movie.mp4")).substr(4, 4), "ftyp");
+  ASSERT_TRUE(export_video(&window(), dir.filePath("movie.gif"), false, &error))
+      << error.toStdString();
+  EXPECT_EQ(read_all(dir.filePath("movie.gif")).substr(0, 6), "GIF89a");
+  EXPECT_FALSE(export_video(&window(), dir.filePath("movie.avi"), false, &error));
+  EXPECT_TRUE(error.contains("mp4, gif, ogv")) << error.toStdString();
+  EXPECT_FALSE(QFileInfo::exists(dir.filePath("movie.avi")));
 }
 
 // The CSV's header line and the number of rows after it, each row starting with its frame.

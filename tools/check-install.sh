@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs a built tree into a temporary prefix and uses the install as a user would:
+# builds and runs the consumer project tests/install/ against find_package(oflab), and runs
+# the installed oflab-cli from / on the shipped `loop` script, writing its report into a
+# temporary directory. Usage: bash tools/check-install.sh [BUILD_DIR] (default build/).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=$(cd "${1:-build}" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix="$work/prefix"
+
+cmake --install "$build" --prefix "$prefix" > "$work/install.log" || { cat "$work/install.log" >&2; exit 1; }
+for f in bin/oflab bin/oflab-cli share/oflab/datasets/scripts/loop.json share/oflab/manual/install.md \
+         include/oflab/flow/flow_field.h lib/cmake/oflab/oflabConfig.cmake; do
+  [[ -e "$prefix/$f" ]] || { echo "check-install: $prefix/$f is missing" >&2; exit 1; }
+done
+
+# The consumer: configure, build and run against the installed package only.
+cmake -S tests/install -B "$work/consumer" -DCMAKE_PREFIX_PATH="$prefix" \
+  > "$work/consumer.log" 2>&1 || { cat "$work/consumer.log" >&2; exit 1; }
+cmake --build "$work/consumer" > "$work/consumer-build.log" 2>&1 ||
+  { cat "$work/consumer-build.log" >&2; exit 1; }
+"$work/consumer/oflab_consumer"
+
+# The installed CLI from /: it finds `loop` beside itself, not in the source tree.
+(cd / && env -u OFLAB_DATASETS "$prefix/bin/oflab-cli" animate --script loop --frames 40 \
+   --out "$work/report" --quiet)
+for f in frames.csv summary.json; do
+  [[ -s "$work/report/$f" ]] || { echo "check-install: the run wrote no $f" >&2; exit 1; }
+done
+rows=$(($(wc -l < "$work/report/frames.csv") - 1))
+[[ $rows -eq 40 ]] || { echo "check-install: frames.csv has $rows rows, expected 40" >&2; exit 1; }
+# A script that exists only in the install: found, so the installed datasets are the ones used.
+cp "$prefix/share/oflab/datasets/scripts/zoom.json" "$prefix/share/oflab/datasets/scripts/installed-only.json"
+(cd / && env -u OFLAB_DATASETS "$prefix/bin/oflab-cli" animate --script installed-only --frames 2 \
+   > /dev/null) || { echo "check-install: the installed oflab-cli does not use its installed datasets" >&2; exit 1; }
+echo "check-install: the consumer and the installed oflab-cli work from $prefix"
