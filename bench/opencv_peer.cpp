@@ -54,11 +54,8 @@ void register_opencv_cases(const std::vector<WarpCase>& cases, bool bilinear_too
                 benchmark::DoNotOptimize(output.data);
                 benchmark::ClobberMemory();
               }
-              state.counters["agree"] =
-                  agreement(c, result, bilinear ? Sampling::kBilinear : Sampling::kNearest);
-              state.counters["Mpx/s"] =
-                  benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
-                                     benchmark::Counter::kIsIterationInvariantRate);
+              set_peer_counters(state, c, result,
+                                bilinear ? Sampling::kBilinear : Sampling::kNearest);
             })
             ->Repetitions(repetitions)
             ->ReportAggregatesOnly(true)

@@ -68,11 +68,8 @@ void register_pixman_cases(const std::vector<WarpCase>& cases, bool bilinear_too
             }
             result.fill(Pixel{});  // one call onto a transparent frame, for the check
             composite(source.get(), output.get(), c);
-            state.counters["agree"] =
-                agreement(c, result, bilinear ? Sampling::kBilinear : Sampling::kNearest);
-            state.counters["Mpx/s"] =
-                benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
-                                   benchmark::Counter::kIsIterationInvariantRate);
+            set_peer_counters(state, c, result,
+                              bilinear ? Sampling::kBilinear : Sampling::kNearest);
           })
           ->Repetitions(repetitions)
           ->ReportAggregatesOnly(true)

@@ -78,6 +78,14 @@ WarpCase boxed_case(const std::string& size, const std::string& name, const Laye
 
 }  // namespace
 
+void set_peer_counters(benchmark::State& state, const WarpCase& c, const Image& peer_output,
+                       Sampling sampling) {
+  state.counters["agree"] = agreement(c, peer_output, sampling);
+  state.counters["Mpx/s"] =
+      benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
+                         benchmark::Counter::kIsIterationInvariantRate);
+}
+
 double agreement(const WarpCase& c, const Image& peer_output, Sampling sampling) {
   WarpOptions options;
   options.sampling = sampling;

@@ -3,6 +3,8 @@
 // coordinates -> destination pixel coordinates, pixel centres at +0.5) and an output.
 #pragma once
 
+#include <benchmark/benchmark.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -41,6 +43,11 @@ std::vector<WarpCase> appendix_a2_cases();
 // the same case. Peers round positions and weights differently (OpenCV to 1/1024 pixel and
 // 1/32, pixman to 1/65536 pixel and 1/128), so pixels on sampling boundaries may differ.
 double agreement(const WarpCase& c, const Image& peer_output, Sampling sampling);
+
+// Sets the counters every peer case reports: "agree" (agreement() of the peer's output of
+// one call onto a transparent frame) and "Mpx/s" (the case's polygon pixels per second).
+void set_peer_counters(benchmark::State& state, const WarpCase& c, const Image& peer_output,
+                       Sampling sampling);
 
 // 1024 x 768 and 1920 x 1080 sources warped into same-sized frames: "rotation" is 45
 // degrees about the frame centre, "tilt" a camera pitch of 20 degrees (focal length =
