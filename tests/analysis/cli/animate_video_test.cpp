@@ -3,13 +3,13 @@
 // option keeps the CLI's contract (a one-line error naming it, exit code 2, no file
 // overwritten without --force).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "cli_capture.h"
+#include "scratch_dir.h"
 #include "video_decode.h"
 
 namespace oflab {
@@ -20,14 +20,7 @@ using testing::run_cli_captured;
 
 class AnimateVideo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    // The process id keeps runs of several trees on one machine apart.
-    dir_ = fs::temp_directory_path() /
-           ("oflab-animate-video-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::fresh_test_dir("oflab-animate-video"); }
   void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   fs::path dir_;

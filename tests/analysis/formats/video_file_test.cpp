@@ -4,7 +4,6 @@
 #include "formats/video_file.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -17,6 +16,7 @@ extern "C" {
 #include <libavformat/avformat.h>
 }
 
+#include "scratch_dir.h"
 #include "video_decode.h"
 
 namespace oflab {
@@ -56,14 +56,7 @@ double mean_rgb_difference(const Decoded& d, const Image& image) {
 
 class VideoFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    // The process id keeps runs of several trees on one machine apart.
-    dir_ = fs::temp_directory_path() /
-           ("oflab-video-test-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::fresh_test_dir("oflab-video-test"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   std::string write(const std::string& name, int frames, int width, int height) {
