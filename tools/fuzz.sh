@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# A fuzz campaign: builds the readers' libFuzzer harnesses (fuzz/, clang, ASan + UBSan) in
-# build-fuzz/ and runs each for SECONDS (default 600), one after the other, growing the corpus
+# A fuzz campaign of SECONDS in all (default 600): builds the readers' libFuzzer harnesses
+# (fuzz/, clang, ASan + UBSan) in build-fuzz/ and runs them one after the other, each for an
+# equal share of SECONDS (at least one second), growing the corpus
 # in build-fuzz/fuzz/corpus/. Prints each harness's executions and what it found; crashing
 # inputs are written as build-fuzz/fuzz/crash-TARGET-*. Exit code 1 when any harness failed.
 #   bash tools/fuzz.sh [SECONDS]
@@ -11,9 +12,12 @@ if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
   echo "tools/fuzz.sh: SECONDS must be a whole number of seconds, got '$seconds'" >&2
   exit 2
 fi
+harnesses=$(grep -c '^set(fuzz_.*_seeds ' fuzz/CMakeLists.txt)
+per_harness=$(( seconds / harnesses > 0 ? seconds / harnesses : 1 ))
+echo "tools/fuzz.sh: $harnesses harnesses, $per_harness s each"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
   -DCMAKE_CXX_COMPILER=clang++ -DOFLAB_FUZZ=ON -DOFLAB_BUILD_TESTS=OFF \
-  -DOFLAB_FUZZ_SECONDS="$seconds" > build-fuzz-configure.log 2>&1 || {
+  -DOFLAB_FUZZ_SECONDS="$per_harness" > build-fuzz-configure.log 2>&1 || {
   cat build-fuzz-configure.log >&2
   exit 1
 }
