@@ -21,7 +21,7 @@ namespace oflab {
 class VtkSceneRenderer;
 
 // Timed passes of `oflab-cli animate` unless --repeat-timing says otherwise.
-constexpr int kDefaultTimingRepetitions = 3;
+constexpr int kDefaultTimingRepetitions = 15;
 
 struct RunOptions {
   int max_frames = -1;  // play at most this many frames (-1: all of the animator's)
