@@ -18,6 +18,8 @@
 #include <sstream>
 
 #include "report/charts.h"
+#include "cli/animate_options.h"
+#include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "formats/datasets.h"
 #include "experiments/experiments_delta.h"
@@ -149,6 +151,22 @@ TEST(Experiment1Published, AffineOnlyLoopDoesLessWorkThanThePerspectiveLoop) {
   const MeasuredRun& affine = loop.mode("affine");
   EXPECT_EQ(count_after_first(affine, Level::kPerspective), 0);
   EXPECT_LT(affine.summary.pixels, loop.mode("perspective").summary.pixels);
+}
+
+TEST(Experiment1Published, RunsWithTheCliDefaultsSoAnAnimateCommandReproducesARow) {
+  // The report's paragraph promises that `oflab-cli animate --script S --mode M` reproduces
+  // a row: the same engine settings (beyond the policy) and the same number of timed passes.
+  const CliArgs none({}, {});
+  const EngineSettings cli = read_engine_settings(none);
+  const EngineSettings report;  // what run_experiment1 gives each mode
+  EXPECT_EQ(cli.thresholds, report.thresholds);
+  EXPECT_EQ(cli.delta, report.delta);
+  EXPECT_EQ(cli.sampling, report.sampling);
+  EXPECT_EQ(cli.max_magnification, report.max_magnification);
+  EXPECT_EQ(cli.near, report.near);
+  EXPECT_EQ(cli.policy, &default_reuse_policy());
+  std::ostringstream err;
+  EXPECT_EQ(read_run_output(none, err).timing_repetitions, experiment1_spec(false).repetitions);
 }
 
 TEST(Experiment1Published, LevelPercentagesCoverEveryFrameAfterTheFirst) {
