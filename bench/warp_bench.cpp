@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "content_bench.h"
 #include "engine_bench.h"
 #include "image/warp.h"
 #include "warp_cases.h"
@@ -104,6 +105,7 @@ void register_all() {
   register_pixman_cases(frames, true, kRepetitions);
 #endif
   register_engine_cases(kRepetitions);
+  register_content_cases(kRepetitions);
 }
 
 }  // namespace

@@ -45,7 +45,12 @@ void print_summary(const nlohmann::json& j, const std::string& script, const Reu
       << "  max measured error " << number("max_measured_error_px") << " px, mean PSNR "
       << number("mean_psnr_db") << " dB\n"
       << "  max excess " << number("max_excess_px")
-      << " px (measured minus estimated error, worst frame)\n";
+      << " px (measured minus estimated error, worst frame)\n"
+      << "  model work saved " << 100.0 * number("model_work_saved")
+      << "% (cost model: perspective warp 1, affine 1/2.1, translation 1/35 per pixel, "
+         "re-render at its content's cost); content render "
+      << number("render_ms") << " ms; max photometric error " << number("max_photometric_error")
+      << " grey levels\n";
   const int invisible = j.at("invisible_frames");
   if (invisible) out << "  " << invisible << " frames not visible\n";
 }
@@ -87,6 +92,8 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
     j["mode"] = settings.policy->name;
     j["delta"] = delta_policy_name(settings.delta);
     j["thresholds"] = settings.thresholds;
+    j["content"] = content_name(settings.content.kind);
+    j["content_quality"] = settings.content.quality;
     out << j.dump(2) << "\n";
   } else {
     print_summary(summary, name, *settings.policy, out);
@@ -105,6 +112,8 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--thresholds", 4},
                            {"--delta", 1},
                            {"--sampling", 1},
+                           {"--content", 1},
+                           {"--quality", 1},
                            {"--frames", 1},
                            {"--repeat-timing", 1},
                            {"--out", 1},

@@ -80,6 +80,15 @@ EngineSettings read_engine_settings(const CliArgs& a) {
                      "' is not one of 1, det, sqrt, fourth-root, dissertation");
   }
   s.sampling = read_sampling(a);
+  const std::string content = a.text_or("--content", content_name(s.content.kind));
+  if (!parse_content(content, &s.content.kind)) {
+    throw UsageError("--content: '" + content + "' is not one of " + content_name_list());
+  }
+  s.content.quality = a.integer_or("--quality", s.content.quality);
+  if (s.content.quality < 1 || s.content.quality > kMaxContentQuality) {
+    throw UsageError("--quality: " + std::to_string(s.content.quality) + " is outside 1.." +
+                     std::to_string(kMaxContentQuality));
+  }
   return s;
 }
 
@@ -197,6 +206,9 @@ Scene read_scene_option(const CliArgs& a) {
   scene = read_scene_file(path);
   if (!replacement.empty()) {
     for (Image& t : scene.textures) t = replacement;
+  }
+  if (a.has("--content")) {
+    for (ScenePolygon& p : scene.polygons) p.content = read_engine_settings(a).content.kind;
   }
   return scene;
 }

@@ -19,8 +19,9 @@
 namespace oflab {
 
 // --mode (a reuse policy of core/engine/reuse_policy.h; "scene-shifting" is handled before),
-// --threshold / --thresholds, --delta, --sampling. Throws UsageError naming the option and
-// the accepted values for a bad value.
+// --threshold / --thresholds, --delta, --sampling, --content texture|shaded|impostor and
+// --quality N (its samples per pixel or detail, 1..kMaxContentQuality). Throws UsageError
+// naming the option and the accepted values for a bad value.
 EngineSettings read_engine_settings(const CliArgs& args);
 
 // --sampling nearest|bilinear (default nearest). Throws UsageError naming the option and the

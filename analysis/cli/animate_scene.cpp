@@ -64,6 +64,10 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   source.viewer = read_viewer_script_option(a);
   source.scene = std::make_shared<const Scene>(read_scene_option(a));
   source.settings = read_scene_settings(a);
+  // The scene's content quality unless --quality says otherwise.
+  if (!a.has("--quality") && source.scene->content_quality > 0) {
+    source.settings.engine.content.quality = source.scene->content_quality;
+  }
   const SceneSettings& settings = source.settings;
   PlayOptions options;
   options.conventional = a.has("--compare-conventional");

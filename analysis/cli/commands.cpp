@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "content/layer_content.h"
 #include "engine/reuse_policy.h"
 #include "experiments/experiments.h"
 #include "image/warp.h"
@@ -19,6 +20,7 @@ std::string animate_usage() {
       "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
+  usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
   usage +=
       "               [--repeat-timing N]   (timed passes after a warm-up, default " +
       std::to_string(kDefaultTimingRepetitions) + ")\n";

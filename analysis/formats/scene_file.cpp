@@ -53,6 +53,17 @@ int texture_index(const json& obj, const Where& w, const Scene& scene,
   return static_cast<int>(it - scene.texture_names.begin());
 }
 
+// The "content" of an object (core/content/layer_content.h), `fallback` when it has none.
+ContentKind content_kind(const json& obj, const Where& w, ContentKind fallback) {
+  if (!obj.contains("content")) return fallback;
+  const std::string name = text(obj, w, "content");
+  ContentKind kind = fallback;
+  if (!parse_content(name, &kind)) {
+    w.fail("content", "'" + name + "' is not one of " + content_name_list());
+  }
+  return kind;
+}
+
 ScenePolygon read_rectangle(const json& obj, const Where& w) {
   ScenePolygon p;
   p.centre = vec3(obj, w, "centre");
@@ -106,6 +117,13 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
   read_textures(root, top, base_dir, scene);
   const std::string default_texture = optional_text(root, top, "texture", "");
   if (!default_texture.empty()) (void)texture_index(root, top, scene, "");
+  const ContentKind default_content = content_kind(root, top, ContentKind::kTexture);
+  if (root.contains("content_quality")) {
+    scene.content_quality = positive_integer(root, top, "content_quality");
+    if (scene.content_quality > kMaxContentQuality) {
+      top.fail("content_quality", "must be at most " + std::to_string(kMaxContentQuality));
+    }
+  }
   const json& polygons = member(root, top, "polygons");
   if (!polygons.is_array() || polygons.empty()) top.fail("polygons", "must be a non-empty list");
   if (polygons.size() > size_t(kMaxScenePolygons)) {
@@ -125,6 +143,7 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
     ScenePolygon p = by_vertices ? read_vertices(obj, w) : read_rectangle(obj, w);
     p.name = name;
     p.texture = texture_index(obj, w, scene, default_texture);
+    p.content = content_kind(obj, w, default_content);
     const PolygonProblem problem = scene_polygon_problem(scene, p);
     if (!problem.field.empty()) w.fail(problem.field, problem.message);
     scene.polygons.push_back(std::move(p));
@@ -149,6 +168,7 @@ json scene_to_json(const Scene& scene, const std::vector<std::string>& texture_f
               {"up", {p.up.x, p.up.y, p.up.z}},
               {"size", {p.size.x, p.size.y}}};
     if (scene.texture_names.size() > 1) j["texture"] = scene.texture_names.at(p.texture);
+    if (p.content != ContentKind::kTexture) j["content"] = content_name(p.content);
     if (!p.outline.empty()) {
       json outline = json::array();
       for (const Vec2& uv : p.outline) outline.push_back({uv.x, uv.y});
@@ -162,6 +182,7 @@ json scene_to_json(const Scene& scene, const std::vector<std::string>& texture_f
                {"description", scene.description},
                {"textures", textures}};
   if (!scene.texture_names.empty()) root["texture"] = scene.texture_names[0];
+  if (scene.content_quality > 0) root["content_quality"] = scene.content_quality;
   root["polygons"] = polygons;
   return root;
 }

@@ -31,6 +31,9 @@ void summarise(AnimationRun& run) {
     s.clipped += f.clipped;
     s.hidden_area_px += f.hidden_area_px;
     s.pixels += f.pixels_written;
+    s.model_work += f.model_work;
+    s.render_ms += f.render_ms;
+    s.max_photometric_error = std::max(s.max_photometric_error, f.max_photometric_error);
     s.time_ms += f.time_ms;
     s.visibility_time_ms += f.visibility_ms;
     s.max_measured_error_px = std::max(s.max_measured_error_px, f.max_measured_error_px);
@@ -55,6 +58,8 @@ void summarise(AnimationRun& run) {
   s.work_saved = s.baseline_pixels > 0
                      ? 1.0 - static_cast<double>(s.pixels) / static_cast<double>(s.baseline_pixels)
                      : 0.0;
+  s.model_work_saved = s.baseline_model_work > 0.0 ? 1.0 - s.model_work / s.baseline_model_work
+                                                   : 0.0;
 }
 
 }  // namespace
@@ -80,8 +85,9 @@ namespace {
 
 // One frame's times in each timed pass, for the medians.
 struct TimeSamples {
-  std::vector<double> frame, update, composite, visibility, baseline, conventional;
-  std::vector<std::vector<double>> layers;  // per layer report
+  std::vector<double> frame, update, composite, visibility, render, baseline, conventional;
+  // Per layer report: its time, render and warp times.
+  std::vector<std::vector<double>> layers, layer_render, layer_warp;
 };
 
 // The passes of one run: the first records the frames (and PSNR, IoU, on_frame); the last
@@ -126,7 +132,10 @@ class RunLoop {
       if (baseline_) {
         const AnimationFrame b = i == 0 ? baseline_->start() : baseline_->advance();
         baseline_ms = b.time_ms;
-        if (record) run_.summary.baseline_pixels += b.pixels_written;
+        if (record) {
+          run_.summary.baseline_pixels += b.pixels_written;
+          run_.summary.baseline_model_work += b.model_work;
+        }
       }
       if (with_conventional) conventional_ms = conventional_->render(animator_.view());
       if (record) record_frame(i, f);
@@ -155,11 +164,17 @@ class RunLoop {
     t.update.push_back(f.update_ms);
     t.composite.push_back(f.composite_ms);
     t.visibility.push_back(f.visibility_ms);
+    t.render.push_back(f.render_ms);
     t.baseline.push_back(baseline_ms);
     t.conventional.push_back(conventional_ms);
-    t.layers.resize(std::max(t.layers.size(), f.layer_reports.size()));
+    const std::size_t n = std::max(t.layers.size(), f.layer_reports.size());
+    t.layers.resize(n);
+    t.layer_render.resize(n);
+    t.layer_warp.resize(n);
     for (std::size_t k = 0; k < f.layer_reports.size(); ++k) {
       t.layers[k].push_back(f.layer_reports[k].time_ms);
+      t.layer_render[k].push_back(f.layer_reports[k].render_ms);
+      t.layer_warp[k].push_back(f.layer_reports[k].warp_ms);
     }
   }
 
@@ -171,8 +186,11 @@ class RunLoop {
       f.update_ms = median_of(t.update);
       f.composite_ms = median_of(t.composite);
       f.visibility_ms = median_of(t.visibility);
+      f.render_ms = median_of(t.render);
       for (std::size_t k = 0; k < f.layer_reports.size() && k < t.layers.size(); ++k) {
         f.layer_reports[k].time_ms = median_of(t.layers[k]);
+        f.layer_reports[k].render_ms = median_of(t.layer_render[k]);
+        f.layer_reports[k].warp_ms = median_of(t.layer_warp[k]);
       }
       run_.baseline_ms.push_back(median_of(t.baseline));
       run_.conventional_ms.push_back(median_of(t.conventional));

@@ -64,6 +64,13 @@ struct RunSummary {
   double conventional_median_frame_ms = 0.0;
   double time_saved = 0.0;  // 1 - time / baseline time (0 without a baseline)
   double work_saved = 0.0;  // 1 - pixels / baseline pixels (0 without a baseline)
+  // The cost model's work (core/engine/engine.h: pixels of a perspective warp, a re-render
+  // at its content's cost), of the animator and of the baseline; deterministic.
+  double model_work = 0.0;
+  double baseline_model_work = 0.0;
+  double model_work_saved = 0.0;  // 1 - model_work / baseline_model_work (0 without one)
+  double render_ms = 0.0;         // of time_ms, rendering contents (re-renders)
+  double max_photometric_error = 0.0;  // grey levels (FrameReport::photometric_error)
   double max_measured_error_px = 0.0;
   // Measured minus estimated error (FrameReport) of the worst visible engine layer report
   // over the run, pixels: at most 0 when the estimates bound the truth; NaN when there was

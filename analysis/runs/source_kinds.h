@@ -64,8 +64,9 @@ const SourceKind& source_kind(const std::string& name);
 // notation with one decimal.
 void print_polygon_levels(const RunSummary& summary, std::ostream& out);
 // "  time saved ...% against the exact re-render, work saved ...% (pixels written ...)" and
-// "  max measured error ... px, mean PSNR against the exact frame ... dB", in the stream's
-// current notation.
+// "  max measured error ... px, mean PSNR against the exact frame ... dB" and
+// "  model work saved ...% (cost model ...); content render time ... ms; max photometric
+// error ... grey levels", in the stream's current notation.
 void print_savings_and_error(const RunSummary& summary, std::ostream& out);
 
 }  // namespace oflab

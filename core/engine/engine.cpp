@@ -127,8 +127,21 @@ PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose
   return {std::move(w.layer), w.offset_x, w.offset_y};
 }
 
+PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
+                                   const PlanePose& pose, const ConvexPolygon& texels,
+                                   const ViewPolygon& clipped, ContentStats* stats) {
+  WarpedLayer w;
+  const ContentStats s =
+      render_content(content, camera, pose, texels, project_to_pixels(camera, clipped), w);
+  if (stats) *stats = s;
+  return {std::move(w.layer), w.offset_x, w.offset_y};
+}
+
 PlaneAnimator::PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings)
-    : camera_(camera), texture_(std::move(texture)), settings_(settings) {}
+    : camera_(camera), texture_(std::move(texture)), settings_(settings) {
+  const std::string problem = content_problem(settings_.content);
+  if (!problem.empty()) throw std::invalid_argument("content: " + problem);
+}
 
 FrameReport PlaneAnimator::start(const PlanePose& pose) {
   frame_ = 0;
@@ -161,6 +174,7 @@ void PlaneAnimator::update(const PlanePose* previous, const RigidMotion* motion,
       render_fresh(current, report);
     }
     report.time_ms = elapsed_ms(t0);
+    report.warp_ms = report.time_ms - report.render_ms;
     finish_report(current, report);
   } catch (const std::exception& refused) {
     // Any refusal (a warp beyond its range, a singular map) becomes a fresh exact render of
@@ -170,6 +184,7 @@ void PlaneAnimator::update(const PlanePose* previous, const RigidMotion* motion,
     try {
       render_fresh(current, report);
       report.time_ms = elapsed_ms(t0);
+      report.warp_ms = report.time_ms - report.render_ms;
       finish_report(current, report);
       if (report.visible) {
         report.note = std::string("re-rendered after a refusal: ") + refused.what();
@@ -179,6 +194,7 @@ void PlaneAnimator::update(const PlanePose* previous, const RigidMotion* motion,
       report.frame = frame_;
       hide(std::string("not drawn: ") + again.what(), report);
       report.time_ms = elapsed_ms(t0);
+      report.warp_ms = report.time_ms - report.render_ms;
       finish_report(current, report);
     }
   }
@@ -263,9 +279,20 @@ void PlaneAnimator::show_clipped(const PlanePose& pose, const Framing& framing,
   cache_.valid = false;
   shown_ = false;  // the layer holds only part of the plane: the next frame starts afresh
   accumulated_.fill(0.0);
-  WarpStats stats;
-  display_ = render_clipped(camera_, texture_, pose, framing.clipped, settings_.sampling, &stats);
-  report.pixels_written += stats.pixels_written;
+  const auto t0 = Clock::now();
+  if (content_is_lit(settings_.content)) {
+    ContentStats stats;
+    display_ = render_clipped_content(camera_, settings_.content, sized_pose(pose),
+                                      texture_.polygon, framing.clipped, &stats);
+    report.pixels_written += stats.pixels_written;
+    report.model_work += stats.work_units * content_unit_cost(settings_.content.kind);
+  } else {
+    WarpStats stats;
+    display_ = render_clipped(camera_, texture_, pose, framing.clipped, settings_.sampling, &stats);
+    report.pixels_written += stats.pixels_written;
+    report.model_work += stats.pixels_written * kPerspectiveWarpCost;
+  }
+  report.render_ms += elapsed_ms(t0);
   clipped_outline_ = project_to_pixels(camera_, framing.clipped).vertices();
   clipped_ = true;
 }
@@ -276,9 +303,47 @@ void PlaneAnimator::rerender(const PlanePose& pose, FrameReport& report) {
   clipped_ = false;
   displayed_ = target_warp(pose);
   model_ = displayed_;
-  show(texture_, displayed_, displayed_, report);
+  const auto t0 = Clock::now();
+  if (content_is_lit(settings_.content)) {
+    rerender_content(pose, report);
+  } else {
+    // A texture's re-render is one perspective warp in the cost model, whichever kernel ran.
+    const double work = report.model_work;
+    const std::int64_t pixels = report.pixels_written;
+    show(texture_, displayed_, displayed_, report);
+    report.model_work =
+        work + kPerspectiveWarpCost * static_cast<double>(report.pixels_written - pixels);
+  }
+  report.render_ms += elapsed_ms(t0);
   shown_ = true;
   accumulated_.fill(0.0);
+}
+
+void PlaneAnimator::rerender_content(const PlanePose& pose, FrameReport& report) {
+  const PlanePose sized = sized_pose(pose);
+  const Mat3 exact = exact_texture_warp(camera_, sized);
+  // A whole frame lies beyond the near plane: the exact warp's denominator is positive.
+  const ContentStats stats = render_content(settings_.content, camera_, sized, texture_.polygon,
+                                            transform(texture_.polygon, exact), warped_);
+  report.pixels_written += stats.pixels_written;
+  report.model_work += stats.work_units * content_unit_cost(settings_.content.kind);
+  rendered_pose_ = sized;
+  const Mat3 origin = translation_matrix(warped_.offset_x, warped_.offset_y);
+  if (policy().allows_reuse()) {
+    rendered_ = warped_.layer;  // the perspective level's source (a copy into kept memory)
+    rendered_from_texel_ = glm::inverse(origin) * exact;
+  }
+  if (policy().initial_view != InitialView::kAffinePart) {
+    std::swap(display_.layer, warped_.layer);
+    display_.offset_x = warped_.offset_x;
+    display_.offset_y = warped_.offset_y;
+    layer_warp_ = exact;
+    layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
+    return;
+  }
+  // An affine initial view (section 6.5): the render is warped onto it.
+  const Layer render = warped_.layer;
+  show(render, displayed_ * glm::inverse(exact) * origin, displayed_, report);
 }
 
 Mat3 PlaneAnimator::target_warp(const PlanePose& pose) const {
@@ -357,6 +422,9 @@ void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameRep
   options.sampling = settings_.sampling;
   warp_layer_reusing(source, warp, warped_, options);
   report.pixels_written += warped_.stats.pixels_written;
+  const bool affine = warped_.stats.kernel_used == WarpKernel::kAffine;
+  report.model_work +=
+      warped_.stats.pixels_written * (affine ? kAffineWarpCost : kPerspectiveWarpCost);
 }
 
 void PlaneAnimator::cache_from_display() {
@@ -394,7 +462,19 @@ bool PlaneAnimator::apply_perspective(const Mat3& target, FrameReport& report) {
   // along any axis by more than the limit (its determinant alone would hide anisotropy).
   if (largest_singular_value(split.affine) > settings_.max_magnification) return false;
   const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
-  warp_reusing(texture_, texel_to_cache, report);
+  if (content_is_lit(settings_.content)) {
+    // A lit content is not rendered again: the new cache is its last render, warped. That
+    // warp must not magnify the render beyond the limit either (at the plane's centre).
+    const Mat3 render_to_cache = texel_to_cache * glm::inverse(rendered_from_texel_);
+    const Vec2 at = apply_homography(rendered_from_texel_, centre);
+    if (largest_singular_value(affine_part_at(split.affine * render_to_cache, at)) >
+        settings_.max_magnification) {
+      return false;
+    }
+    warp_reusing(rendered_, render_to_cache, report);
+  } else {
+    warp_reusing(texture_, texel_to_cache, report);
+  }
   std::swap(cache_.layer, warped_.layer);  // the old cache's memory serves the next warp
   cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
   cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
@@ -414,6 +494,9 @@ void PlaneAnimator::finish_report(const PlanePose& pose, FrameReport& report) co
   }
   report.measured_error_px = std::numeric_limits<double>::quiet_NaN();
   if (report.visible) report.measured_error_px = report.clipped ? 0.0 : shown_error(pose);
+  if (reused) {
+    report.photometric_error = shading_change(settings_.content, rendered_pose_, sized_pose(pose));
+  }
   if (policy().initial_view == InitialView::kAffinePart && report.visible && !report.clipped) {
     const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
     report.affine_view_error_px = corner_distance(target_warp(pose), exact);
@@ -502,6 +585,8 @@ void PlaneAnimator::apply_level(FrameReport& report, const Vec2& expansion_point
       break;
     case Level::kTranslate:
       apply_translation(translation_step(correction, point));
+      report.model_work += kTranslationCost * static_cast<double>(display_.layer.image.width()) *
+                           display_.layer.image.height();
       break;
     case Level::kAffine:
       within_limit = apply_affine(correction, point, report);

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "content/layer_content.h"
 #include "engine/decision.h"
 #include "engine/reuse_policy.h"
 #include "flow/camera.h"
@@ -60,7 +61,19 @@ struct EngineSettings {
   // project to be animated.
   double near = 0.05;
   double guard_band = 0.5;
+  // What a re-render draws (core/content/layer_content.h): the texture itself (default), or
+  // a lit content rendered for the pose, whose image the warps then reuse. The texture
+  // still gives the texel grid (its size) and the valid region (its polygon).
+  LayerContent content;
 };
+
+// The dissertation's cost model (section 6.4.4), in pixels of a perspective warp: a
+// perspective warp costs 1 per pixel written, an affine warp 1/2.1, a translation 1/35 of the
+// layer's area; a re-render costs what its content does (content_unit_cost per work unit,
+// the texture's being one perspective warp).
+constexpr double kPerspectiveWarpCost = 1.0;
+constexpr double kAffineWarpCost = 1.0 / 2.1;
+constexpr double kTranslationCost = 1.0 / 35.0;
 
 // What the engine did in one frame. Error estimates are the engine's own bookkeeping;
 // measured_error_px is the truth: the largest distance between where the shown layer's
@@ -92,7 +105,18 @@ struct FrameReport {
   // Wall time of the update: deciding the level, warping and placing the layer. The
   // diagnostics (measured and affine-view errors) are computed after it, untimed.
   double time_ms = 0.0;
-  std::int64_t pixels_written = 0;  // pixels the warp kernels wrote this frame
+  std::int64_t pixels_written = 0;  // pixels the warp kernels (or a content render) wrote
+  // Of time_ms: rendering the content (a re-render, or a clipped exact render), and the rest
+  // of the update (warps, placing, deciding).
+  double render_ms = 0.0;
+  double warp_ms = 0.0;
+  // Work of the frame in the cost model above (pixels of a perspective warp): deterministic.
+  double model_work = 0.0;
+  // Lit contents: how stale the shown shading is, the largest change of lit intensity in
+  // 8-bit grey levels since the content was rendered (shading_change in
+  // core/content/layer_content.h); 0 when re-rendered this frame, for texture content and
+  // when not visible. The warps follow the geometry; this is what they cannot follow.
+  double photometric_error = 0.0;
 };
 
 // The exact image of a textured plane: the texture warped by texture_to_image (in top-left
@@ -127,6 +151,14 @@ PlacedLayer render_exact(const Camera& camera, const Layer& texture, const Plane
 PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose& pose,
                            const ViewPolygon& clipped, Sampling sampling,
                            WarpStats* stats = nullptr);
+
+// The exact image of the clipped part of a plane (as render_clipped) drawn from a lit content:
+// texels inside `texels` (the valid region, texels of pose.texture_size) where the view
+// meets the plane in front of the eye. `stats` if non-null receives the render's counts.
+// Preconditions: content lit (content_is_lit), clipped not empty and at Z > 0.
+PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
+                                   const PlanePose& pose, const ConvexPolygon& texels,
+                                   const ViewPolygon& clipped, ContentStats* stats = nullptr);
 
 class PlaneAnimator {
  public:
@@ -181,6 +213,9 @@ class PlaneAnimator {
   Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point) const;
   void apply_level(FrameReport& report, const Vec2& expansion_point, const PlanePose& current);
   void rerender(const PlanePose& pose, FrameReport& report);
+  // rerender of a lit content: renders it for the pose (kept as the perspective level's
+  // source when the policy reuses) and shows it under displayed_.
+  void rerender_content(const PlanePose& pose, FrameReport& report);
   void apply_translation(const Vec2& step);
   // Warps `source` by source_to_image into the displayed layer (reusing memory) and places
   // it; texel_to_image is the warp the layer then shows (for the measured error).
@@ -212,6 +247,11 @@ class PlaneAnimator {
   Mat3 displayed_{1.0};
   Mat3 model_{1.0};
   Cache cache_;
+  // Lit content: its last render (kept only when the policy reuses) and the texel -> layer
+  // pixel warp it was rendered with; the pose it was lit at.
+  Layer rendered_;
+  Mat3 rendered_from_texel_{1.0};
+  PlanePose rendered_pose_;
   // Scratch of every warp: swapped with the displayed or the cache layer after a warp, so
   // that in a steady state the frames reuse the same few layer buffers.
   WarpedLayer warped_;

@@ -83,6 +83,9 @@ class PlaneScriptAnimator final : public Animator {
     f.time_ms = r.time_ms;
     f.update_ms = r.time_ms;
     f.pixels_written = r.pixels_written;
+    f.model_work = r.model_work;
+    f.render_ms = r.render_ms;
+    f.max_photometric_error = r.photometric_error;
     f.layer_reports.push_back(r);
     f.note = r.note;
     return f;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "content/layer_content.h"
 #include "image/image.h"
 #include "flow/plane.h"
 #include "scene/viewer_script.h"
@@ -31,6 +32,9 @@ struct ScenePolygon {
   Vec2 size{1.0, 1.0};        // rectangle width (along R) and height (along U), world units
   int texture = 0;            // index into Scene::textures
   std::vector<Vec2> outline;  // convex, normalised texture coordinates; empty = rectangle
+  // What a re-render of the polygon draws (core/content/layer_content.h); the scene
+  // settings' engine.content gives the quality and the light.
+  ContentKind content = ContentKind::kTexture;
 };
 
 struct Scene {
@@ -39,6 +43,9 @@ struct Scene {
   std::vector<Image> textures;             // premultiplied RGBA
   std::vector<std::string> texture_names;  // same length as textures (for reports)
   std::vector<ScenePolygon> polygons;
+  // Quality of the polygons' lit contents (samples per pixel, detail; LayerContent::quality),
+  // 0 when the scene does not say (then the run's settings decide).
+  int content_quality = 0;
 };
 
 // The outline actually used: polygon.outline, or the unit square when it is empty, as

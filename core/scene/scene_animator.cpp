@@ -225,12 +225,23 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationF
   PolygonState& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
   s.clipped_layer = PlacedLayer{};
+  const LayerContent content = polygon_content(index);
   try {
+    const PlanePose pose = polygon_pose(polygon, view, s.texture_size);
+    if (content_is_lit(content)) {
+      ContentStats stats;
+      s.clipped_layer = render_clipped_content(camera_, content, pose,
+                                               texel_polygon(s.uv, s.texture_size), s.clipped,
+                                               &stats);
+      report.pixels_written += stats.pixels_written;
+      report.model_work += stats.work_units * content_unit_cost(content.kind);
+      return;
+    }
     WarpStats stats;
-    s.clipped_layer = oflab::render_clipped(camera_, scratch_textures_[polygon.texture],
-                                            polygon_pose(polygon, view, s.texture_size), s.clipped,
-                                            settings_.engine.sampling, &stats);
+    s.clipped_layer = oflab::render_clipped(camera_, scratch_textures_[polygon.texture], pose,
+                                            s.clipped, settings_.engine.sampling, &stats);
     report.pixels_written += stats.pixels_written;
+    report.model_work += stats.pixels_written * kPerspectiveWarpCost;
   } catch (const std::invalid_argument&) {
     // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.
   }
@@ -254,8 +265,10 @@ void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const 
   }
   if (!s.animator) {
     const Image& texture = scene_.textures[polygon.texture];
+    EngineSettings engine = settings_.engine;
+    engine.content = polygon_content(index);
     s.animator = std::make_unique<PlaneAnimator>(
-        camera_, make_layer(texture, texel_polygon(s.uv, s.texture_size)), settings_.engine);
+        camera_, make_layer(texture, texel_polygon(s.uv, s.texture_size)), engine);
   }
   const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
   const FrameReport r =
@@ -267,10 +280,19 @@ void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const 
   levels_[index] = r.level;
   ++report.levels[static_cast<int>(r.level)];
   report.pixels_written += r.pixels_written;
+  report.model_work += r.model_work;
+  report.render_ms += r.render_ms;
+  report.max_photometric_error = std::max(report.max_photometric_error, r.photometric_error);
   s.report = r;
   if (r.visible)
     report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
   report.update_ms += ms_since(t0);
+}
+
+LayerContent SceneAnimator::polygon_content(int polygon) const {
+  LayerContent content = settings_.engine.content;
+  content.kind = scene_.polygons[polygon].content;
+  return content;
 }
 
 AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidMotion* motion,

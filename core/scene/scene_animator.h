@@ -113,6 +113,8 @@ class SceneAnimator {
   void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
   ConvexPolygon fragment_region(int fragment, const ViewerPose& view) const;
   ConvexPolygon exact_region(const ViewPolygon& clipped) const;
+  // The engine's content settings with the polygon's own kind of content.
+  LayerContent polygon_content(int polygon) const;
 
   const Scene& scene_;
   Camera camera_;

@@ -355,6 +355,30 @@ TEST(AnimateCommand, BadOptionsNameTheOption) {
   EXPECT_NE(cli({"animate", "--script", "zoom", "--threshold", "-1"}).err.find("--threshold"),
             std::string::npos);
   EXPECT_EQ(cli({"animate", "--script", "zoom", "--delta", "half"}).code, 2);
+  const Cli content = cli({"animate", "--script", "zoom", "--content", "brick"});
+  EXPECT_EQ(content.code, 2);
+  EXPECT_NE(content.err.find("--content: 'brick' is not one of texture, shaded, impostor"),
+            std::string::npos)
+      << content.err;
+  const Cli quality = cli({"animate", "--script", "zoom", "--content", "shaded", "--quality", "0"});
+  EXPECT_EQ(quality.code, 2);
+  EXPECT_NE(quality.err.find("--quality"), std::string::npos) << quality.err;
+}
+
+TEST(AnimateCommand, ContentChoosesWhatAReRenderDrawsAndTheSummaryCarriesItsCosts) {
+  const Cli c = cli({"animate", "--script", "rotation", "--frames", "12", "--content", "shaded",
+                     "--repeat-timing", "1", "--json"});
+  ASSERT_EQ(c.code, 0) << c.err;
+  const auto j = nlohmann::json::parse(c.out);
+  EXPECT_EQ(j["content"], "shaded");
+  EXPECT_EQ(j["content_quality"], 1);
+  EXPECT_GT(j["max_photometric_error"].get<double>(), 0.0);  // rotation turns the lit plane
+  EXPECT_GT(j["render_ms"].get<double>(), 0.0);
+  EXPECT_GT(j["model_work_saved"].get<double>(), 0.0);
+  const Cli t = cli({"animate", "--script", "rotation", "--frames", "12", "--repeat-timing", "1",
+                     "--json"});
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_EQ(nlohmann::json::parse(t.out)["max_photometric_error"], 0.0);
 }
 
 TEST(Butterfly, CommittedTextureIsTheGeneratorsOutput) {

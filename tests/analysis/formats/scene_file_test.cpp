@@ -109,6 +109,35 @@ std::string scene_text(const std::string& polygons, const std::string& textures 
 const char* kGood =
     R"({"name": "ok", "centre": [0,0,0], "normal": [0,0,1], "up": [0,1,0], "size": [1,1]})";
 
+TEST(SceneFiles, ContentIsReadPerPolygonWithTheScenesDefaultAndBadValuesAreNamed) {
+  const std::string good = kGood;
+  expect_scene_error(
+      scene_text(
+          R"({"name": "b", "centre": [0,0,0], "normal": [0,0,1], "up": [0,1,0], "size": [1,1], "content": "brick"})"),
+      {"polygon 0 ('b')", "'content'", "'brick' is not one of texture, shaded, impostor"});
+  const Scene street = read_scene_file(resolve_scene_path("street"));
+  EXPECT_EQ(street.content_quality, 3);
+  int impostors = 0, shaded = 0;
+  for (const ScenePolygon& p : street.polygons) {
+    impostors += p.content == ContentKind::kImpostor ? 1 : 0;
+    shaded += p.content == ContentKind::kShaded ? 1 : 0;
+  }
+  EXPECT_EQ(impostors, 7);
+  EXPECT_EQ(shaded, 6);
+  // Written back, the contents survive; a texture polygon writes none.
+  const Scene again = parse_scene(scene_to_json(street, {"../textures/tile.png"}).dump(),
+                                  resolve_scene_path("street"),
+                                  fs::path(resolve_scene_path("street")).parent_path().string());
+  ASSERT_EQ(again.polygons.size(), street.polygons.size());
+  for (std::size_t i = 0; i < again.polygons.size(); ++i) {
+    EXPECT_EQ(again.polygons[i].content, street.polygons[i].content);
+  }
+  EXPECT_EQ(again.content_quality, 3);
+  EXPECT_FALSE(scene_to_json(read_scene_file(resolve_scene_path("two")), {"t.png"})
+                   .dump()
+                   .find("content") != std::string::npos);
+}
+
 TEST(SceneFiles, MalformedScenesNameTheFileThePolygonAndTheField) {
   const std::string good = kGood;
   expect_scene_error(

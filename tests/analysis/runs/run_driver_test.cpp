@@ -236,16 +236,64 @@ TEST(SourceKinds, EachKindWritesItsOwnCsvHeader) {
   EXPECT_EQ(csv_header(source_kind("plane"), plane_source("zoom")),
             "frame,level,visible,flow_translate,flow_affine,flow_perspective,flow_higher,"
             "err_translate,err_affine,err_perspective,err_higher,estimated_error_px,"
-            "measured_error_px,affine_view_error_px,psnr_db,time_ms,pixels_written,note");
+            "measured_error_px,affine_view_error_px,psnr_db,time_ms,pixels_written,render_ms,"
+            "warp_ms,model_work,photometric_error,note");
   const std::string scene_header =
       "frame,polygons,drawn,none,translate,affine,perspective,rerender,back_facing,"
       "outside_frustum,hidden,clipped,time_ms,update_ms,composite_ms,visibility_ms,"
       "pixels_written,pixels_composited,hidden_area_px,max_measured_error_px,psnr_db,"
-      "rerender_time_ms,conventional_time_ms";
+      "rerender_time_ms,conventional_time_ms,render_ms,model_work,max_photometric_error";
   EXPECT_EQ(csv_header(source_kind("scene"), scene_source("two", "translate")), scene_header);
   EXPECT_EQ(
       csv_header(source_kind("scene-shifting"), scene_source("train-window", "train-sideways")),
       scene_header);
+}
+
+// A 96 x 64 texel plane one unit in front of a focal-100 camera, centred: one texel is one
+// pixel and the layer covers exactly 96 x 64 whole pixels. It slides 2 px a frame sideways.
+RunSource sliding_plane(int frames) {
+  RunSource source;
+  source.script.camera = make_camera(100.0, 320, 240);
+  PlanePose pose;
+  pose.size = Vec2(0.96, 0.64);
+  pose.texture_size = glm::ivec2(96, 64);
+  ScriptSegment slide;
+  slide.frames = frames;
+  slide.velocity = Vec3(0.02, 0.0, 0.0);
+  source.script.frames = expand_segments(pose, MotionModel::kScrew, {slide});
+  source.texture = Image(96, 64, Pixel{200, 100, 50, 255});
+  return source;
+}
+
+TEST(SourceKinds, ModelWorkSavedIsDeterministicAndMatchesAHandCount) {
+  PlayOptions options;
+  const RunSource source = sliding_plane(4);
+  const AnimationRun a = source_kind("plane").play(source, options);
+  const AnimationRun b = source_kind("plane").play(source, options);
+  // Frame 0 re-renders 96 x 64 pixels (one perspective warp each); frames 1-3 translate the
+  // 96 x 64 layer (1/35 of its area each). The baseline re-renders all four frames.
+  ASSERT_EQ(a.frames.size(), 4u);
+  for (int k = 1; k < 4; ++k) EXPECT_EQ(a.frames[k].layer_reports[0].level, Level::kTranslate);
+  const double area = 96.0 * 64.0;
+  EXPECT_DOUBLE_EQ(a.summary.model_work, area + 3.0 * area / 35.0);
+  EXPECT_DOUBLE_EQ(a.summary.baseline_model_work, 4.0 * area);
+  EXPECT_DOUBLE_EQ(a.summary.model_work_saved, 1.0 - (1.0 + 3.0 / 35.0) / 4.0);
+  EXPECT_EQ(a.summary.model_work_saved, b.summary.model_work_saved);
+  const nlohmann::json j = source_kind("plane").summary_json(a);
+  EXPECT_DOUBLE_EQ(j.at("model_work_saved").get<double>(), a.summary.model_work_saved);
+}
+
+TEST(SourceKinds, ALitContentRendersIdenticallyInTheEngineAndTheExactView) {
+  PlayOptions options;
+  RunSource source = sliding_plane(3);
+  for (ContentKind kind : {ContentKind::kShaded, ContentKind::kImpostor}) {
+    source.settings.engine.content.kind = kind;
+    const AnimationRun run = source_kind("plane").play(source, options);
+    EXPECT_EQ(run.psnr_db[0], kIdenticalPsnrDb) << content_name(kind);  // both re-render
+    // The baseline's re-render is the content's cost: more than a warp per pixel.
+    EXPECT_GT(run.summary.baseline_model_work, 4.0 * 3.0 * 96.0 * 64.0) << content_name(kind);
+    EXPECT_GT(run.summary.render_ms, 0.0);
+  }
 }
 
 TEST(SourceKinds, SummariesCarryWhatOnlyTheirKindReports) {
@@ -280,6 +328,9 @@ TEST(Scenes, DefaultPolicyBooksHoldOnEveryShippedScene) {
       source.viewer = read_viewer_script_file(resolve_viewer_script_path(script));
       PlayOptions o;
       o.baseline = false;
+      // The street's lit contents are dear to render (manual/costs.md): its first 30 frames
+      // of each script keep the test within the suite's time budget.
+      if (scene_name == "street") o.max_frames = 30;
       const AnimationRun run = source_kind("scene").play(source, o);
       int reused = 0;
       for (const AnimationFrame& f : run.frames) {

@@ -1,0 +1,466 @@
+// Layer contents: the procedural brick material and the facade impostor (see
+// core/content/layer_content.h).
+#include "content/layer_content.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "image/scan_conversion.h"
+
+namespace oflab {
+namespace {
+
+// content_unit_cost: one shaded sample and one impostor fragment in pixels of a perspective
+// warp, measured by oflab-bench (content/<kind>/cost-per-unit, median unit_cost of nine
+// repetitions: 109.5 and 15.6) on the development machine.
+constexpr double kShadedSampleCost = 110.0;
+constexpr double kImpostorFragmentCost = 15.5;
+
+struct Named {
+  ContentKind kind;
+  const char* name;
+};
+constexpr Named kNames[] = {{ContentKind::kTexture, "texture"},
+                            {ContentKind::kShaded, "shaded"},
+                            {ContentKind::kImpostor, "impostor"}};
+
+// A Blinn-Phong material: colour = albedo (ambient + diffuse (N.L)+) + specular (N.H)+^shininess.
+struct Material {
+  Vec3 albedo{1.0};
+  double specular = 0.0;
+  double shininess = 1.0;
+};
+constexpr double kAmbient = 0.25;
+constexpr double kDiffuse = 0.75;
+
+const Material kBrick{{0.62, 0.27, 0.18}, 0.15, 16.0};
+const Material kMortar{{0.66, 0.64, 0.60}, 0.05, 8.0};
+const Material kWall{{0.80, 0.68, 0.52}, 0.10, 16.0};
+const Material kFrame{{0.93, 0.93, 0.90}, 0.20, 32.0};
+const Material kGlass{{0.15, 0.22, 0.30}, 0.60, 64.0};
+const Material kStone{{0.70, 0.70, 0.68}, 0.10, 16.0};
+const Material kRail{{0.20, 0.20, 0.22}, 0.40, 32.0};
+
+// Linear colour (unclamped) of `m` at viewer-frame point x with unit normal n, light l (unit).
+Vec3 lit(const Material& m, const Vec3& n, const Vec3& x, const Vec3& l) {
+  const Vec3 v = glm::normalize(-x);
+  const Vec3 h = glm::normalize(l + v);
+  const double diffuse = std::max(0.0, glm::dot(n, l));
+  const double spec = diffuse > 0.0 ? std::pow(std::max(0.0, glm::dot(n, h)), m.shininess) : 0.0;
+  return m.albedo * (kAmbient + kDiffuse * diffuse) + Vec3(m.specular * spec);
+}
+
+std::uint8_t to_byte(double c) {
+  return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(c, 0.0, 1.0)));
+}
+
+// The plane's frame: texel <-> viewer-frame point, and the ray of a pixel.
+struct PlaneFrame {
+  PlaneFrame(const Camera& c, const PlanePose& pose) : camera(c) {
+    const PlaneAxes a = plane_axes(pose);
+    right = a.right;
+    up = a.up;
+    front = -a.normal;
+    centre = pose.point;
+    texel = Vec2(pose.size.x / pose.texture_size.x, pose.size.y / pose.texture_size.y);
+    half = 0.5 * Vec2(pose.texture_size);
+  }
+  // Viewer-frame point of plane coordinates (s right, t up, h towards the front).
+  Vec3 point(double s, double t, double h = 0.0) const {
+    return centre + s * right + t * up + h * front;
+  }
+  // The ray through pixel point p (top-left pixels), Z = 1.
+  Vec3 ray(const Vec2& p) const {
+    return Vec3((p.x - camera.cx) / camera.focal_px, (p.y - camera.cy) / camera.focal_px, 1.0);
+  }
+  const Camera& camera;
+  Vec3 right, up, front, centre;
+  Vec2 texel;  // world units per texel along u and v
+  Vec2 half;   // texture centre, texels
+};
+
+// The covered box of a region and the pixels of a layer over it.
+struct LayerBox {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+};
+
+LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out) {
+  LayerBox box;
+  if (!region.empty()) {
+    const BoundingBox b = region.bounds();
+    box.x0 = static_cast<int>(std::floor(b.x_min));
+    box.y0 = static_cast<int>(std::floor(b.y_min));
+    box.width = static_cast<int>(std::ceil(b.x_max)) - box.x0;
+    box.height = static_cast<int>(std::ceil(b.y_max)) - box.y0;
+  }
+  if (box.width > kMaxImageDimension || box.height > kMaxImageDimension) {
+    throw std::invalid_argument("the content's layer would exceed the largest image size");
+  }
+  out.layer.image.reshape(box.width, box.height);
+  out.layer.image.fill(Pixel{});
+  out.layer.polygon = translated(region, -box.x0, -box.y0);
+  out.offset_x = box.x0;
+  out.offset_y = box.y0;
+  out.stats = WarpStats{};
+  return box;
+}
+
+// Sample positions within a pixel: a Hammersley set of n points, the centre for n = 1.
+std::vector<Vec2> pixel_samples(int n) {
+  std::vector<Vec2> out;
+  for (int i = 0; i < n; ++i) {
+    double radical = 0.0, weight = 0.5;
+    for (unsigned k = static_cast<unsigned>(i); k; k >>= 1, weight *= 0.5) {
+      if (k & 1u) radical += weight;
+    }
+    out.emplace_back((i + 0.5) / n, std::fmod(radical + 0.5 / n, 1.0));
+  }
+  return out;
+}
+
+double unit_hash(int a, int b) {
+  std::uint32_t h =
+      static_cast<std::uint32_t>(a) * 73856093u ^ static_cast<std::uint32_t>(b) * 19349663u;
+  h ^= h >> 13;
+  h *= 0x5bd1e995u;
+  h ^= h >> 15;
+  return (h & 0xffffu) / 65535.0;
+}
+
+// The brick material at (x, y), world units right and down from the plane's top-left corner:
+// running bond of 0.2 x 0.07 bricks, 0.016 wide mortar joints, 0.02 wide bevels whose slope
+// tilts the normal towards the joint.
+struct BrickSample {
+  Material material;
+  Vec2 slope{0.0};  // surface slope along +u and +v
+};
+
+BrickSample brick_at(double u, double v) {
+  constexpr double kW = 0.2, kH = 0.07, kHalfJoint = 0.008, kBevel = 0.02;
+  const int row = static_cast<int>(std::floor(v / kH));
+  const double shifted = u + ((row & 1) ? 0.5 * kW : 0.0);
+  const int col = static_cast<int>(std::floor(shifted / kW));
+  const double lu = shifted - col * kW, lv = v - row * kH;
+  const double du = std::min(lu, kW - lu), dv = std::min(lv, kH - lv);
+  if (std::min(du, dv) < kHalfJoint) return {kMortar, Vec2(0.0)};
+  BrickSample s{kBrick, Vec2(0.0)};
+  const double tint = (0.8 + 0.4 * unit_hash(row, col)) *
+                      (0.92 + 0.16 * unit_hash(static_cast<int>(std::floor(200.0 * u)),
+                                               static_cast<int>(std::floor(200.0 * v))));
+  s.material.albedo *= tint;
+  if (du - kHalfJoint < kBevel)
+    s.slope.x = (lu < 0.5 * kW ? 1.0 : -1.0) * 0.8 * (1.0 - (du - kHalfJoint) / kBevel);
+  if (dv - kHalfJoint < kBevel)
+    s.slope.y = (lv < 0.5 * kH ? 1.0 : -1.0) * 0.8 * (1.0 - (dv - kHalfJoint) / kBevel);
+  return s;
+}
+
+// Straight colour of one shaded sample, or false when the ray misses the texel region.
+bool shade_sample(const PlaneFrame& f, const Vec3& plane_vector, const ConvexPolygon& texels,
+                  const Vec3& light, const Vec2& p, Vec3& colour) {
+  const Vec3 r = f.ray(p);
+  const double d = glm::dot(plane_vector, r);
+  if (!(d > 1e-12)) return false;
+  const Vec3 x = r / d;
+  const Vec3 rel = x - f.centre;
+  const Vec2 uv(glm::dot(rel, f.right) / f.texel.x + f.half.x,
+                f.half.y - glm::dot(rel, f.up) / f.texel.y);
+  if (!contains(texels, uv)) return false;
+  const BrickSample b = brick_at(uv.x * f.texel.x, uv.y * f.texel.y);
+  // The slope is along u (right) and v (down): the normal leans against it.
+  const Vec3 n = glm::normalize(f.front - b.slope.x * f.right + b.slope.y * f.up);
+  colour += lit(b.material, n, x, light);
+  return true;
+}
+
+ContentStats render_shaded(const LayerContent& content, const Camera& camera, const PlanePose& pose,
+                           const ConvexPolygon& texels, const ConvexPolygon& region,
+                           WarpedLayer& out) {
+  const LayerBox box = prepare_layer(region, out);
+  const PlaneFrame f(camera, pose);
+  const Vec3 plane_vec = plane_vector(pose);
+  const Vec3 light = glm::normalize(content.light);
+  const std::vector<Vec2> samples = pixel_samples(content.quality);
+  ContentStats stats;
+  ScanConverter scan(out.layer.polygon, box.width, box.height);
+  PixelSpan span;
+  while (scan.next(span)) {
+    Pixel* row = out.layer.image.row(span.y);
+    for (int x = span.x_begin; x < span.x_end; ++x) {
+      Vec3 colour(0.0);
+      int hits = 0;
+      for (const Vec2& s : samples) {
+        const Vec2 p(box.x0 + x + s.x, box.y0 + span.y + s.y);
+        hits += shade_sample(f, plane_vec, texels, light, p, colour) ? 1 : 0;
+      }
+      stats.work_units += static_cast<std::int64_t>(samples.size());
+      if (hits == 0) continue;
+      const double coverage = static_cast<double>(hits) / samples.size();
+      const Vec3 c = colour / static_cast<double>(samples.size());  // premultiplied
+      row[x] = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), to_byte(coverage)};
+      ++stats.pixels_written;
+    }
+  }
+  out.stats.pixels_written = stats.pixels_written;
+  return stats;
+}
+
+// ---- The facade impostor ----
+
+struct Face {
+  std::array<Vec3, 4> corners;  // plane coordinates (s, t, h), any winding
+  Vec3 normal;                  // plane coordinates, unit, outwards
+  const Material* material;
+};
+
+// The five visible faces of a box [s0, s1] x [t0, t1] x [0, depth] standing on the wall
+// (its back lies on the wall and is never seen), offset by h0 from the wall.
+void add_box(std::vector<Face>& faces, double s0, double t0, double s1, double t1, double h0,
+             double depth, const Material& m) {
+  const double h1 = h0 + depth;
+  faces.push_back({{Vec3(s0, t0, h1), Vec3(s1, t0, h1), Vec3(s1, t1, h1), Vec3(s0, t1, h1)},
+                   Vec3(0, 0, 1),
+                   &m});
+  faces.push_back({{Vec3(s0, t0, h0), Vec3(s0, t1, h0), Vec3(s0, t1, h1), Vec3(s0, t0, h1)},
+                   Vec3(-1, 0, 0),
+                   &m});
+  faces.push_back({{Vec3(s1, t0, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s1, t0, h1)},
+                   Vec3(1, 0, 0),
+                   &m});
+  faces.push_back({{Vec3(s0, t0, h0), Vec3(s1, t0, h0), Vec3(s1, t0, h1), Vec3(s0, t0, h1)},
+                   Vec3(0, -1, 0),
+                   &m});
+  faces.push_back({{Vec3(s0, t1, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s0, t1, h1)},
+                   Vec3(0, 1, 0),
+                   &m});
+}
+
+// One window of a facade cell centred at (cs, ct) with cell size (cw, ch): glass, a frame
+// of four bars, a sill, and with `balcony` a slab, a top rail and five posts.
+void add_window(std::vector<Face>& faces, double cs, double ct, double cw, double ch,
+                bool balcony) {
+  const double unit = std::min(cw, ch), ww = 0.25 * cw, wh = 0.3 * ch, bar = 0.06 * unit;
+  const double s0 = cs - ww, s1 = cs + ww, t0 = ct - wh, t1 = ct + wh, lift = 0.004 * unit;
+  faces.push_back({{Vec3(s0, t0, lift), Vec3(s1, t0, lift), Vec3(s1, t1, lift), Vec3(s0, t1, lift)},
+                   Vec3(0, 0, 1),
+                   &kGlass});
+  const double fd = 0.05 * unit;
+  add_box(faces, s0 - bar, t1, s1 + bar, t1 + bar, 0.0, fd, kFrame);
+  add_box(faces, s0 - bar, t0 - bar, s1 + bar, t0, 0.0, fd, kFrame);
+  add_box(faces, s0 - bar, t0, s0, t1, 0.0, fd, kFrame);
+  add_box(faces, s1, t0, s1 + bar, t1, 0.0, fd, kFrame);
+  add_box(faces, s0 - 2 * bar, t0 - 2 * bar, s1 + 2 * bar, t0 - bar, 0.0, 0.15 * unit, kStone);
+  if (!balcony) return;
+  const double b0 = cs - 0.4 * cw, b1 = cs + 0.4 * cw, base = ct - 0.5 * ch + 0.02 * ch;
+  const double out = 0.45 * unit, rail = 0.35 * unit;
+  add_box(faces, b0, base, b1, base + bar, 0.0, out, kStone);
+  add_box(faces, b0, base + rail, b1, base + rail + 0.5 * bar, out - bar, bar, kRail);
+  for (int k = 0; k < 5; ++k) {
+    const double s = b0 + (b1 - b0) * (k + 0.5) / 5.0;
+    add_box(faces, s - 0.25 * bar, base + bar, s + 0.25 * bar, base + rail, out - bar, bar, kRail);
+  }
+}
+
+std::vector<Face> facade_faces(const PlanePose& pose, int detail) {
+  const int storeys = 1 + detail, bays = 1 + 2 * detail;
+  const double w = pose.size.x, h = pose.size.y, cw = w / bays, ch = h / storeys;
+  std::vector<Face> faces;
+  faces.push_back({{Vec3(-0.5 * w, -0.5 * h, 0), Vec3(0.5 * w, -0.5 * h, 0),
+                    Vec3(0.5 * w, 0.5 * h, 0), Vec3(-0.5 * w, 0.5 * h, 0)},
+                   Vec3(0, 0, 1),
+                   &kWall});
+  for (int st = 0; st < storeys; ++st) {
+    for (int b = 0; b < bays; ++b) {
+      add_window(faces, -0.5 * w + (b + 0.5) * cw, -0.5 * h + (st + 0.5) * ch, cw, ch, st % 2 == 1);
+    }
+  }
+  return faces;
+}
+
+// Keeps the part of a viewer-frame polygon at Z >= z_min (Sutherland-Hodgman).
+std::vector<Vec3> clip_near(const std::vector<Vec3>& in, double z_min) {
+  std::vector<Vec3> out;
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    const Vec3& a = in[k];
+    const Vec3& b = in[(k + 1) % in.size()];
+    if (a.z >= z_min) out.push_back(a);
+    if ((a.z >= z_min) != (b.z >= z_min))
+      out.push_back(a + (b - a) * ((z_min - a.z) / (b.z - a.z)));
+  }
+  return out;
+}
+
+// The polygon clipped to the convex region (both in layer pixels).
+ConvexPolygon clip_to_region(ConvexPolygon polygon, const ConvexPolygon& region) {
+  const std::vector<Vec2>& v = region.vertices();
+  Vec2 inside(0.0);
+  for (const Vec2& p : v) inside += p / static_cast<double>(v.size());
+  for (std::size_t k = 0; k < v.size() && !polygon.empty(); ++k) {
+    const Vec2& a = v[k];
+    const Vec2& b = v[(k + 1) % v.size()];
+    Vec3 line(a.y - b.y, b.x - a.x, a.x * b.y - a.y * b.x);
+    if (line.x * inside.x + line.y * inside.y + line.z < 0.0) line = -line;
+    polygon = clip_to_half_plane(polygon, line);
+  }
+  return polygon;
+}
+
+// Rasterises one face into the layer with the depth buffer (1/Z, larger is nearer).
+void draw_face(const Face& face, const PlaneFrame& f, const Vec3& light, const LayerBox& box,
+               const ConvexPolygon& region, std::vector<float>& depth, WarpedLayer& out,
+               ContentStats& stats) {
+  std::vector<Vec3> world;
+  for (const Vec3& c : face.corners) world.push_back(f.point(c.x, c.y, c.z));
+  const Vec3 n =
+      glm::normalize(face.normal.x * f.right + face.normal.y * f.up + face.normal.z * f.front);
+  if (glm::dot(n, world[0]) >= 0.0) return;  // seen from behind
+  const std::vector<Vec3> front = clip_near(world, 1e-6);
+  if (front.size() < 3) return;
+  std::vector<Vec2> pixels;
+  for (const Vec3& p : front) {
+    pixels.emplace_back(f.camera.focal_px * p.x / p.z + f.camera.cx - box.x0,
+                        f.camera.focal_px * p.y / p.z + f.camera.cy - box.y0);
+  }
+  const ConvexPolygon shape = clip_to_region(make_polygon_unchecked(pixels), region);
+  if (shape.empty()) return;
+  Vec3 centre(0.0);
+  for (const Vec3& p : world) centre += 0.25 * p;
+  const Vec3 c = lit(*face.material, n, centre, light);
+  const Pixel colour{to_byte(c.r), to_byte(c.g), to_byte(c.b), 255};
+  // 1/Z along the ray (x, y, 1) of the face's plane n.X = e is n.(x, y, 1) / e: affine in pixels.
+  const double e = glm::dot(n, world[0]), k = 1.0 / (f.camera.focal_px * e);
+  const double a = n.x * k, b = n.y * k;
+  const double c0 = n.z / e + a * (box.x0 + 0.5 - f.camera.cx) + b * (box.y0 + 0.5 - f.camera.cy);
+  ScanConverter scan(shape, box.width, box.height);
+  PixelSpan span;
+  while (scan.next(span)) {
+    Pixel* row = out.layer.image.row(span.y);
+    float* z = depth.data() + static_cast<std::size_t>(span.y) * box.width;
+    for (int x = span.x_begin; x < span.x_end; ++x) {
+      const float inv_z = static_cast<float>(c0 + a * x + b * span.y);
+      ++stats.work_units;
+      if (inv_z <= z[x]) continue;
+      z[x] = inv_z;
+      row[x] = colour;
+    }
+  }
+}
+
+ContentStats render_impostor(const LayerContent& content, const Camera& camera,
+                             const PlanePose& pose, const ConvexPolygon& region, WarpedLayer& out) {
+  const LayerBox box = prepare_layer(region, out);
+  const PlaneFrame f(camera, pose);
+  const Vec3 light = glm::normalize(content.light);
+  std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
+  ContentStats stats;
+  for (const Face& face : facade_faces(pose, content.quality)) {
+    draw_face(face, f, light, box, out.layer.polygon, depth, out, stats);
+  }
+  for (const Pixel& p : out.layer.image.pixels()) stats.pixels_written += p.a ? 1 : 0;
+  out.stats.pixels_written = stats.pixels_written;
+  return stats;
+}
+
+}  // namespace
+
+const char* content_name(ContentKind kind) {
+  for (const Named& n : kNames) {
+    if (n.kind == kind) return n.name;
+  }
+  return "?";
+}
+
+bool parse_content(const std::string& text, ContentKind* kind) {
+  for (const Named& n : kNames) {
+    if (text == n.name) {
+      *kind = n.kind;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string content_name_list(const std::string& separator) {
+  std::string out;
+  for (const Named& n : kNames) out += (out.empty() ? "" : separator) + std::string(n.name);
+  return out;
+}
+
+std::string content_problem(const LayerContent& content) {
+  if (content.quality < 1 || content.quality > kMaxContentQuality) {
+    return "quality " + std::to_string(content.quality) + " is outside 1 .. " +
+           std::to_string(kMaxContentQuality);
+  }
+  const Vec3& l = content.light;
+  if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z) || glm::length(l) == 0.0) {
+    return "light must be a finite, non-zero direction";
+  }
+  return "";
+}
+
+bool content_is_lit(const LayerContent& content) { return content.kind != ContentKind::kTexture; }
+
+ContentStats render_content(const LayerContent& content, const Camera& camera,
+                            const PlanePose& pose, const ConvexPolygon& texel_region,
+                            const ConvexPolygon& image_region, WarpedLayer& out) {
+  switch (content.kind) {
+    case ContentKind::kShaded:
+      return render_shaded(content, camera, pose, texel_region, image_region, out);
+    case ContentKind::kImpostor:
+      return render_impostor(content, camera, pose, image_region, out);
+    case ContentKind::kTexture:
+      break;
+  }
+  throw std::invalid_argument("render_content: texture content is drawn by a warp");
+}
+
+double content_unit_cost(ContentKind kind) {
+  switch (kind) {
+    case ContentKind::kShaded:
+      return kShadedSampleCost;
+    case ContentKind::kImpostor:
+      return kImpostorFragmentCost;
+    case ContentKind::kTexture:
+      break;
+  }
+  return 1.0;
+}
+
+double shading_change(const LayerContent& content, const PlanePose& rendered,
+                      const PlanePose& now) {
+  if (!content_is_lit(content)) return 0.0;
+  const Camera unused;
+  const PlaneFrame a(unused, rendered), b(unused, now);
+  const Vec3 light = glm::normalize(content.light);
+  std::vector<Vec3> facings = {Vec3(0, 0, 1)};
+  std::vector<const Material*> materials = {&kBrick, &kMortar};
+  if (content.kind == ContentKind::kImpostor) {
+    facings = {Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)};
+    materials = {&kWall, &kFrame, &kGlass, &kStone, &kRail};
+  }
+  const auto grey = [&](const PlaneFrame& f, const Vec3& facing, const Material& m, double s,
+                        double t) {
+    const Vec3 n = facing.x * f.right + facing.y * f.up + facing.z * f.front;
+    Material white = m;
+    white.albedo = Vec3(1.0);
+    return 255.0 * std::clamp(lit(white, n, f.point(s, t), light).x, 0.0, 1.0);
+  };
+  double worst = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      const double s = (i / 4.0 - 0.5) * rendered.size.x, t = (j / 4.0 - 0.5) * rendered.size.y;
+      for (const Vec3& facing : facings) {
+        for (const Material* m : materials) {
+          worst = std::max(worst, std::abs(grey(a, facing, *m, s, t) - grey(b, facing, *m, s, t)));
+        }
+      }
+    }
+  }
+  return worst;
+}
+
+}  // namespace oflab

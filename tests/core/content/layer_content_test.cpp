@@ -1,0 +1,219 @@
+// Layer contents: a re-render through the engine draws exactly what render_content draws (the
+// exact view's renderer), the impostor's depth order and lighting on hand-checked pixels, and
+// the photometric error: zero for an unlit texture, growing as a lit plane turns.
+#include "content/layer_content.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/engine.h"
+#include "engine/reuse_policy.h"
+#include "engine/script.h"
+#include "flow/motion.h"
+
+namespace oflab {
+namespace {
+
+PlanePose facade_pose() {
+  PlanePose p;
+  p.point = Vec3(0.0, 0.0, 6.0);
+  p.size = Vec2(3.0, 2.0);
+  p.texture_size = glm::ivec2(300, 200);
+  return p;
+}
+
+Layer blank_texture(glm::ivec2 size) {
+  return make_layer(Image(size.x, size.y, Pixel{0, 0, 0, 255}));
+}
+
+// The engine's frame 0 (a re-render) against render_content called directly.
+void expect_engine_draws_content(const LayerContent& content, const char* policy) {
+  const Camera camera = make_camera(400.0, 640, 480);
+  PlanePose pose = facade_pose();
+  pose.normal = Vec3(0.3, -0.1, 1.0);
+  EngineSettings settings;
+  settings.content = content;
+  settings.policy = &reuse_policy(policy);
+  PlaneAnimator engine(camera, blank_texture(pose.texture_size), settings);
+  const FrameReport r = engine.start(pose);
+  ASSERT_EQ(r.level, Level::kRerender);
+  WarpedLayer direct;
+  const Layer texture = blank_texture(pose.texture_size);
+  const ContentStats stats =
+      render_content(content, camera, pose, texture.polygon,
+                     transform(texture.polygon, exact_texture_warp(camera, pose)), direct);
+  const PlacedLayer& shown = engine.displayed();
+  EXPECT_EQ(shown.offset_x, direct.offset_x);
+  EXPECT_EQ(shown.offset_y, direct.offset_y);
+  ASSERT_EQ(shown.layer.image.width(), direct.layer.image.width());
+  ASSERT_EQ(shown.layer.image.height(), direct.layer.image.height());
+  EXPECT_TRUE(shown.layer.image.pixels() == direct.layer.image.pixels());
+  EXPECT_EQ(r.pixels_written, stats.pixels_written);
+  EXPECT_GT(stats.pixels_written, 10000);
+  EXPECT_DOUBLE_EQ(r.model_work, stats.work_units * content_unit_cost(content.kind));
+}
+
+TEST(LayerContent, EngineRerenderDrawsWhatTheExactViewDraws) {
+  for (const char* policy : {"rerender", "perspective"}) {
+    expect_engine_draws_content({ContentKind::kShaded, 4, Vec3(-0.4, -0.6, -1.0)}, policy);
+    expect_engine_draws_content({ContentKind::kImpostor, 2, Vec3(-0.4, -0.6, -1.0)}, policy);
+  }
+}
+
+TEST(LayerContent, NamesParseAndBadSettingsAreNamed) {
+  ContentKind k = ContentKind::kTexture;
+  EXPECT_TRUE(parse_content("impostor", &k));
+  EXPECT_EQ(k, ContentKind::kImpostor);
+  EXPECT_FALSE(parse_content("brick", &k));
+  EXPECT_EQ(content_name_list(), "texture, shaded, impostor");
+  LayerContent c;
+  c.quality = 0;
+  EXPECT_NE(content_problem(c).find("quality"), std::string::npos);
+  c.quality = 1;
+  c.light = Vec3(0.0);
+  EXPECT_NE(content_problem(c).find("light"), std::string::npos);
+}
+
+// Pixel of plane point (s, t, h) of facade_pose seen head-on by make_camera(400, 640, 480).
+Pixel facade_pixel(const Image& frame, double s, double t, double h) {
+  const double z = 6.0 - h;
+  return frame.at(static_cast<int>(std::floor(320.0 + 400.0 * s / z)),
+                  static_cast<int>(std::floor(240.0 - 400.0 * t / z)));
+}
+
+Image render_facade(const Vec3& light) {
+  const Camera camera = make_camera(400.0, 640, 480);
+  const PlanePose pose = facade_pose();
+  const Layer texture = blank_texture(pose.texture_size);
+  WarpedLayer out;
+  render_content({ContentKind::kImpostor, 1, light}, camera, pose, texture.polygon,
+                 transform(texture.polygon, exact_texture_warp(camera, pose)), out);
+  Image frame(camera.width, camera.height);
+  for (int y = 0; y < out.layer.image.height(); ++y) {
+    for (int x = 0; x < out.layer.image.width(); ++x) {
+      frame.at(x + out.offset_x, y + out.offset_y) = out.layer.image.at(x, y);
+    }
+  }
+  return frame;
+}
+
+// A pixel lit as albedo (ambient 0.25 + diffuse 0.75 cos) plus a white specular highlight
+// of at most `specular`: the excess over the diffuse colour is the same grey on all channels.
+void expect_lit(const Pixel& p, const Vec3& albedo, double cosine, double specular) {
+  const double d = 0.25 + 0.75 * cosine;
+  const double er = p.r - 255.0 * albedo.r * d, eg = p.g - 255.0 * albedo.g * d,
+               eb = p.b - 255.0 * albedo.b * d;
+  EXPECT_NEAR(er, eg, 1.5);
+  EXPECT_NEAR(er, eb, 1.5);
+  EXPECT_GE(er, -1.0);
+  EXPECT_LE(er, 255.0 * specular + 1.0);
+  EXPECT_EQ(p.a, 255);
+}
+
+// Quality 1 on a 3 x 2 facade: storeys 2, bays 3, 1 x 1 cells. The middle window of the
+// ground storey has its glass over s in [-0.25, 0.25], t in [-0.8, -0.2] and its sill below;
+// the upper storey has a balcony whose middle rail post (s = 0, from t = 0.08 to 0.37, 0.39 to
+// 0.45 in front of the wall) stands in front of that storey's glass.
+TEST(LayerContent, ImpostorDepthOrderAndLightingOnHandCases) {
+  const Image head_on = render_facade(Vec3(0.0, 0.0, -1.0));
+  const Vec3 wall(0.80, 0.68, 0.52), glass(0.15, 0.22, 0.30), stone(0.70, 0.70, 0.68),
+      rail(0.20, 0.20, 0.22);
+  expect_lit(facade_pixel(head_on, -1.0, 0.9, 0.0), wall, 1.0, 0.10);     // wall, above all
+  expect_lit(facade_pixel(head_on, 0.1, -0.5, 0.0), glass, 1.0, 0.60);    // glass over wall
+  expect_lit(facade_pixel(head_on, 0.0, -0.89, 0.15), stone, 1.0, 0.10);  // sill
+  expect_lit(facade_pixel(head_on, 0.0, 0.3, 0.45), rail, 1.0, 0.40);     // post before glass
+  expect_lit(facade_pixel(head_on, 0.1, 0.3, 0.0), glass, 1.0, 0.60);     // glass beside it
+  // A light 60 degrees to the right: the front faces get half the diffuse light.
+  const Image side = render_facade(Vec3(std::sqrt(3.0), 0.0, -1.0));
+  expect_lit(facade_pixel(side, -1.0, 0.9, 0.0), wall, 0.5, 0.10);
+  expect_lit(facade_pixel(side, 0.1, -0.5, 0.0), glass, 0.5, 0.60);
+}
+
+TEST(LayerContent, ShadedEdgesAreAntiAliasedBySupersampling) {
+  const Camera camera = make_camera(400.0, 640, 480);
+  PlanePose pose = facade_pose();
+  pose.normal = Vec3(0.0, 0.0, 1.0);
+  pose.up = Vec3(0.3, -1.0, 0.0);  // tilted edges
+  const Layer texture = blank_texture(pose.texture_size);
+  const ConvexPolygon region = transform(texture.polygon, exact_texture_warp(camera, pose));
+  int partial_1 = 0, partial_16 = 0;
+  for (int q : {1, 16}) {
+    WarpedLayer out;
+    const ContentStats s = render_content({ContentKind::kShaded, q, Vec3(-0.4, -0.6, -1.0)}, camera,
+                                          pose, texture.polygon, region, out);
+    EXPECT_EQ(s.work_units % q, 0);
+    int& partial = q == 1 ? partial_1 : partial_16;
+    for (const Pixel& p : out.layer.image.pixels()) partial += (p.a > 0 && p.a < 255) ? 1 : 0;
+  }
+  EXPECT_EQ(partial_1, 0);
+  EXPECT_GT(partial_16, 100);
+}
+
+PlanePose turned(const PlanePose& p, double degrees) {
+  PlanePose q = p;
+  const Mat3 r = rotation_matrix(Vec3(0.0, degrees * M_PI / 180.0, 0.0));
+  q.normal = r * p.normal;
+  q.up = r * p.up;
+  return q;
+}
+
+TEST(LayerContent, ShadingChangeIsZeroUnlitAndGrowsAsALitPlaneTurns) {
+  const PlanePose p = facade_pose();
+  EXPECT_EQ(shading_change(LayerContent{}, p, turned(p, 30.0)), 0.0);
+  for (ContentKind kind : {ContentKind::kShaded, ContentKind::kImpostor}) {
+    LayerContent lit{kind, 1, Vec3(-0.4, -0.6, -1.0)};
+    EXPECT_EQ(shading_change(lit, p, p), 0.0);
+    double last = 0.0;
+    for (double deg : {2.0, 5.0, 10.0, 20.0}) {
+      const double e = shading_change(lit, p, turned(p, deg));
+      EXPECT_GT(e, last) << content_name(kind) << " at " << deg;
+      last = e;
+    }
+  }
+}
+
+// A plane turning about its vertical axis, 0.5 degrees a frame, animated by the perspective
+// policy: reused frames report the stale shading, which is 0 for the texture.
+std::vector<FrameReport> turning_run(ContentKind kind) {
+  const Camera camera = make_camera(400.0, 640, 480);
+  MotionScript script;
+  script.camera = camera;
+  ScriptSegment turn;
+  turn.frames = 20;
+  turn.omega = Vec3(0.0, 0.5 * M_PI / 180.0, 0.0);
+  PlanePose start = facade_pose();
+  start.texture_size = glm::ivec2(96, 64);
+  std::vector<ScriptFrame> frames = expand_segments(start, MotionModel::kSpinAboutCentre, {turn});
+  EngineSettings settings;
+  settings.content.kind = kind;
+  settings.thresholds = {4.0, 4.0, 4.0, 4.0};
+  PlaneAnimator engine(camera, blank_texture(start.texture_size), settings);
+  std::vector<FrameReport> out{engine.start(frames[0].pose)};
+  for (std::size_t k = 1; k < frames.size(); ++k) {
+    out.push_back(engine.advance(frames[k - 1].pose, frames[k - 1].motion, frames[k].pose));
+  }
+  return out;
+}
+
+TEST(LayerContent, EngineReportsStaleShadingOfReusedLitLayers) {
+  for (const FrameReport& r : turning_run(ContentKind::kTexture))
+    EXPECT_EQ(r.photometric_error, 0.0);
+  const std::vector<FrameReport> lit = turning_run(ContentKind::kShaded);
+  int reused = 0;
+  for (std::size_t k = 1; k < lit.size(); ++k) {
+    if (lit[k].level == Level::kRerender) {
+      EXPECT_EQ(lit[k].photometric_error, 0.0);
+      continue;
+    }
+    ++reused;
+    EXPECT_GT(lit[k].photometric_error, 0.0);
+    if (lit[k - 1].level != Level::kRerender) {
+      EXPECT_GT(lit[k].photometric_error, lit[k - 1].photometric_error);
+    }
+  }
+  EXPECT_GT(reused, 5);
+}
+
+}  // namespace
+}  // namespace oflab
