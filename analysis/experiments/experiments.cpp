@@ -12,6 +12,7 @@
 #include "experiments/experiments_scene_shifting.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
+#include "experiments/experiments_policies.h"
 #include "experiments/experiments_sweep.h"
 #include "experiments/experiments_warp.h"
 #include "formats/image_io.h"
@@ -74,6 +75,12 @@ ReportSection run_sweep(ExperimentContext& c) {
   return sweep_section(r, c);
 }
 
+ReportSection run_policies_comparison(ExperimentContext& c) {
+  const PoliciesResult r = run_policies_experiment(c.texture(), policies_spec(c.quick()),
+                                                   c.progress_for("policies", ""));
+  return policies_section(r, c);
+}
+
 const std::vector<Experiment>& experiments() {
   static const std::vector<Experiment> list = {
       {"exp1", "Experiment 1 (6.4, 6.5)", run_exp1},
@@ -81,6 +88,7 @@ const std::vector<Experiment>& experiments() {
       {"warp", "warp timing (A.2)", run_warp},
       {"exp2", "Experiment 2 (6.6, 6.7)", run_exp2},
       {"sweep", "threshold sweep", run_sweep},
+      {"policies", "rival reuse policies side by side", run_policies_comparison},
       {"scene-shifting", "scene shifting (chapter 3)", scene_shifting_section},
   };
   return list;

@@ -211,6 +211,8 @@ class PlaneAnimator {
   bool clipped_ = false;               // the last frame was a clipped render
   Mat3 displayed_{1.0};
   Mat3 model_{1.0};
+  Mat3 rendered_{1.0};  // displayed_ at the last re-render (Talisman's fit starts from it)
+  FitFiducials fit_;    // ModelUpdate::kAffineFit: this frame's fiducials
   Cache cache_;
   // Scratch of every warp: swapped with the displayed or the cache layer after a warp, so
   // that in a steady state the frames reuse the same few layer buffers.
