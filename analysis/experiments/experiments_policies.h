@@ -18,9 +18,10 @@ namespace oflab {
 
 struct PoliciesSpec {
   int max_frames = -1;  // per script and for the scene (-1: whole scripts)
-  int repetitions = 3;  // timed passes after a warm-up
+  int repetitions = kDefaultTimingRepetitions;  // timed passes after a warm-up
 };
-// Full: whole scripts, 3 repetitions; quick: 40 frames, 1 repetition.
+// Full: whole scripts, kDefaultTimingRepetitions (as `oflab-cli compare`, which therefore
+// reproduces a row up to noise); quick: 40 frames, 1 repetition.
 PoliciesSpec policies_spec(bool quick);
 
 struct PoliciesSource {
