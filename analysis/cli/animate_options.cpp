@@ -166,17 +166,18 @@ void write_run_outputs(const std::string& dir, const SourceKind& kind, const Ani
   if (!csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");
 }
 
-int report_scene_input_errors(const std::function<int()>& body, std::ostream& err) {
+int report_scene_input_errors(const std::function<int()>& body, std::ostream& err,
+                              const char* command) {
   try {
     return body();
   } catch (const SceneError& e) {
-    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+    err << "oflab-cli " << command << ": --scene: " << e.what() << "\n";
   } catch (const ViewerScriptError& e) {
-    err << "oflab-cli animate: --script: " << e.what() << "\n";
+    err << "oflab-cli " << command << ": --script: " << e.what() << "\n";
   } catch (const ImageFileError& e) {
-    err << "oflab-cli animate: " << e.what() << "\n";
+    err << "oflab-cli " << command << ": " << e.what() << "\n";
   } catch (const std::invalid_argument& e) {
-    err << "oflab-cli animate: --scene: " << e.what() << "\n";
+    err << "oflab-cli " << command << ": --scene: " << e.what() << "\n";
   }
   return 2;
 }

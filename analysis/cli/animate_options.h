@@ -74,8 +74,10 @@ void write_run_outputs(const std::string& dir, const SourceKind& kind, const Ani
 //
 // Runs `body`, the whole of a scene form, and turns the errors of reading its inputs (the
 // scene, the viewer script, image files, a scene the core rejects) into a message on `err`
-// naming the option, returning exit status 2. Other exceptions pass through.
-int report_scene_input_errors(const std::function<int()>& body, std::ostream& err);
+// naming the option, returning exit status 2. Other exceptions pass through. `command`
+// names the command in the message ("oflab-cli COMMAND: ...").
+int report_scene_input_errors(const std::function<int()>& body, std::ostream& err,
+                              const char* command = "animate");
 
 // The scene of --scene: a shipped scene name, a scene file or a Wavefront OBJ file (with
 // the tile texture, analysis/formats/obj_scene.h); --texture, when given, replaces every texture.

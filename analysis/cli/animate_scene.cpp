@@ -15,7 +15,6 @@
 #include "runs/statistics.h"
 
 namespace oflab {
-namespace {
 
 SceneSettings read_scene_settings(const CliArgs& a) {
   SceneSettings s;
@@ -29,6 +28,8 @@ SceneSettings read_scene_settings(const CliArgs& a) {
   s.skip_hidden = !a.has("--no-skip-hidden");
   return s;
 }
+
+namespace {
 
 void print_scene_summary(const AnimationRun& run, const std::string& scene,
                          const std::string& script, const ReusePolicy& policy, std::ostream& out) {

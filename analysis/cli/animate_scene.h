@@ -6,6 +6,7 @@
 #include <iosfwd>
 
 #include "cli/cli_args.h"
+#include "scene/scene_animator.h"
 
 namespace oflab {
 
@@ -13,5 +14,9 @@ namespace oflab {
 // `err` naming the option or the file, polygon and field), 1 when the VTK renderer cannot
 // start. Throws UsageError for bad options (the caller prints it).
 int animate_scene(const CliArgs& args, std::ostream& out, std::ostream& err);
+
+// The scene settings of the options: the engine's (read_engine_settings), --near,
+// --guard-band (0..16 image sizes) and --no-skip-hidden. Throws UsageError naming the option.
+SceneSettings read_scene_settings(const CliArgs& args);
 
 }  // namespace oflab

@@ -59,6 +59,14 @@ const std::vector<Command>& all_commands() {
        animate_usage(), run_animate_command},
       {"policies", "list the engine's reuse policies (the values of animate --mode)",
        "oflab-cli policies [--json]", run_policies_command},
+      {"compare", "play one script under several reuse policies, one row per policy",
+       "oflab-cli compare --script NAME|FILE [--scene NAME|FILE] --policies P1,P2,...\n"
+       "               [--texture FILE] [--threshold T | --thresholds T0 T1 T2 T3]\n"
+       "               [--delta ...] [--sampling ...] [--frames N] [--repeat-timing N]\n"
+       "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
+       "               [--json] [--out DIR [--force]] [--quiet]\n"
+       "  policies: the names of 'oflab-cli policies'",
+       run_compare_command},
       {"make-butterfly", "write the bundled butterfly texture as a PNG",
        "oflab-cli make-butterfly --out FILE [--force]", run_make_butterfly_command},
       {"make-scene", "write a grid-of-cubes scene, an OBJ file as a scene, or the tile texture",

@@ -40,6 +40,10 @@ int run_experiments_command(const CommandArgs& args, std::ostream& out, std::ost
 // (analysis/cli/policies_command.cpp, core/engine/reuse_policy.h).
 int run_policies_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
+// `oflab-cli compare`: one script under several reuse policies, a row each
+// (analysis/cli/compare_command.cpp, analysis/runs/policy_runs.h).
+int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
 // `oflab-cli make-scene`: writes a grid-of-cubes scene, an OBJ file as a scene, or the
 // scenes' tile texture (analysis/cli/make_scene_command.cpp, manual/scenes.md).
 int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostream& err);

@@ -13,6 +13,7 @@
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
 #include "experiments/experiments_costs.h"
+#include "experiments/experiments_policies.h"
 #include "experiments/experiments_sweep.h"
 #include "experiments/experiments_warp.h"
 #include "formats/image_io.h"
@@ -81,6 +82,12 @@ ReportSection run_costs(ExperimentContext& c) {
   return cost_sweep_section(r, c);
 }
 
+ReportSection run_policies_comparison(ExperimentContext& c) {
+  const PoliciesResult r = run_policies_experiment(c.texture(), policies_spec(c.quick()),
+                                                   c.progress_for("policies", ""));
+  return policies_section(r, c);
+}
+
 const std::vector<Experiment>& experiments() {
   static const std::vector<Experiment> list = {
       {"exp1", "Experiment 1 (6.4, 6.5)", run_exp1},
@@ -89,6 +96,7 @@ const std::vector<Experiment>& experiments() {
       {"exp2", "Experiment 2 (6.6, 6.7)", run_exp2},
       {"sweep", "threshold sweep", run_sweep},
       {"costs", "when reuse pays (re-render cost sweep)", run_costs},
+      {"policies", "rival reuse policies side by side", run_policies_comparison},
       {"scene-shifting", "scene shifting (chapter 3)", scene_shifting_section},
   };
   return list;

@@ -156,6 +156,7 @@ class RunLoop {
       iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
     run_.psnr_db.push_back(psnr);
     if (options_.on_frame) options_.on_frame(i, animator_.image());
+    if (options_.on_view) options_.on_view(i, animator_.view());
   }
 
   static void add_samples(TimeSamples& t, const AnimationFrame& f, double baseline_ms,

@@ -40,6 +40,9 @@ struct RunOptions {
   std::function<void(int, int)> progress;
   // Called with each frame's image (camera-sized, premultiplied), e.g. to save PNGs.
   std::function<void(int, const Image&)> on_frame;
+  // Called with each frame's view (Animator::view(): what the frame shows, as a viewer pose)
+  // in the first pass, e.g. to check that two runs played the same poses.
+  std::function<void(int, const ViewerPose&)> on_view;
 };
 
 // Totals over a run. Times in milliseconds of wall time; "baseline" is the exact re-render

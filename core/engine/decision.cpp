@@ -4,6 +4,7 @@
 #include "engine/decision.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "flow/homography.h"
 
@@ -57,6 +58,31 @@ FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const Rig
     m.flow[3] = std::max(m.flow[3], glm::length(residual));
   }
   return m;
+}
+
+TermArray measure_printed_flow(const Camera& camera, const PlanePose& pose,
+                               const RigidMotion& motion,
+                               const std::vector<Vec2>& corners_centred) {
+  const PlanarFlowCoefficients k = planar_flow_coefficients(camera, pose, motion);
+  Vec2 lo = corners_centred.front(), hi = lo;
+  for (const Vec2& c : corners_centred) {
+    lo = glm::min(lo, c);
+    hi = glm::max(hi, c);
+  }
+  const double size = std::max(hi.x - lo.x, hi.y - lo.y);
+  const double omega = glm::length(motion.omega);
+  return {std::max(std::abs(k.tx), std::abs(k.ty)),
+          std::max({std::abs(k.j11), std::abs(k.j12), std::abs(k.j21), std::abs(k.j22)}) * size,
+          std::max(std::abs(k.px), std::abs(k.py)) * size * size,
+          omega * omega * size * size};
+}
+
+Level printed_cascade(const TermArray& accumulated, const TermArray& flow,
+                      const TermArray& thresholds) {
+  for (int k = kTermCount - 1; k >= 0; --k) {
+    if (accumulated[k] + flow[k] > thresholds[k]) return static_cast<Level>(k + 1);
+  }
+  return Level::kNone;
 }
 
 double neglected_error(const TermArray& accumulated, const TermArray& flow, Level level) {

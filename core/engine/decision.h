@@ -56,6 +56,26 @@ struct FlowMeasures {
 FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const RigidMotion& motion,
                           const std::vector<Vec2>& corners_centred);
 
+// The flow measures of section 5.4.5 and Algorithm 1 as printed, with only the fixes
+// without which they cannot be computed (errata 22-24, manual/policies.md): absolute values,
+// and a_i taken as the derivative parts J_ij (a1 - 1, a2, a3, a4 - 1). The coefficients are
+// those of eq. 51 at the principal point (not re-expanded), t is one frame, and
+//   size   = max(width, height) of the axis-aligned bounding box of the corners, pixels;
+//   flow_0 = max(|tx|, |ty|);
+//   flow_1 = max(|J11|, |J12|, |J21|, |J22|) size;
+//   flow_2 = max(|px|, |py|) size^2 t;
+//   flow_3 = |Omega|^2 size^2 t   (Omega in radians per frame; its units are not pixels).
+// Preconditions as measure_flow (valid camera and pose; corners centred pixels, not empty).
+TermArray measure_printed_flow(const Camera& camera, const PlanePose& pose,
+                               const RigidMotion& motion,
+                               const std::vector<Vec2>& corners_centred);
+
+// Algorithm 1's cascade as printed: each term tested against its own threshold, the highest
+// term k with accumulated[k] + flow[k] > thresholds[k] picks level k + 1 (3: re-render,
+// 2: perspective, 1: affine, 0: translate); none when no term exceeds its threshold.
+Level printed_cascade(const TermArray& accumulated, const TermArray& flow,
+                      const TermArray& thresholds);
+
 // Chooses the update level from the accumulated errors and this frame's flow. A level is
 // acceptable when the sum, over the terms it neglects, of (accumulated + flow) stays within
 // that level's threshold; the lowest acceptable level wins and re-render is always

@@ -303,6 +303,7 @@ void PlaneAnimator::rerender(const PlanePose& pose, FrameReport& report) {
   clipped_ = false;
   displayed_ = target_warp(pose);
   model_ = displayed_;
+  rendered_warp_ = displayed_;
   const auto t0 = Clock::now();
   if (content_is_lit(settings_.content)) {
     rerender_content(pose, report);
@@ -518,6 +519,19 @@ void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
         exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
     return;
   }
+  if (policy().model == ModelUpdate::kAffineFit) {
+    // Talisman: the corners as last rendered, fitted onto their exact projections now.
+    const Mat3 exact = exact_texture_warp(camera_, sized_pose(current));
+    std::vector<Vec2> rendered, now;
+    for (const Vec2& t : texel_corners(texture_)) {
+      rendered.push_back(apply_homography(rendered_warp_, t));
+      now.push_back(apply_homography(exact, t));
+    }
+    const AffineFit fit = fit_rendered_polygon(rendered, now);
+    fit_ = fit.fiducials;
+    model_ = fit.warp * rendered_warp_;
+    return;
+  }
   PlanarFlowCoefficients step = flow;
   if (policy().model == ModelUpdate::kAffineTaylor) step.px = step.py = 0.0;  // affine flow model
   model_ = centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
@@ -547,6 +561,9 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
   const PlanarFlowCoefficients flow =
       reexpand(planar_flow_coefficients(camera_, previous, motion), m.expansion_point);
   report.flow = m.flow;
+  if (policy().books == FlowBooks::kPrinted) {
+    report.flow = measure_printed_flow(camera_, previous, motion, displayed_corners_centred());
+  }
   if (policy().model == ModelUpdate::kExact) report.flow[3] = 0.0;  // nothing of higher order
   advance_model(flow, current);
   // Pending errors are image displacements: this frame's motion stretches them by up to
@@ -564,14 +581,16 @@ void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMoti
     report.pending[l] =
         corner_distance(warp_after(static_cast<Level>(l), correction, point), target);
   }
-  report.level = policy().choose(
-      policy(), {report.flow, carried, settings_.thresholds, level_pixels(), report.pending});
+  report.level = policy().choose(policy(), {report.flow, carried, settings_.thresholds,
+                                            level_pixels(), report.pending, fit_});
   // Erratum 25, corrected: the terms the level neglects accumulate, the ones it handles are
   // caught up with. What the books cannot see (the sub-pixel remainder of a whole-pixel
   // translation, higher orders the first-order bookkeeping misses) is in report.pending.
   for (int k = 0; k < kTermCount; ++k) {
     accumulated_[k] = k >= static_cast<int>(report.level) ? carried[k] + report.flow[k] : 0.0;
   }
+  // Talisman's fit is checked against the exact projection each frame: nothing is carried.
+  if (policy().model == ModelUpdate::kAffineFit) accumulated_.fill(0.0);
   apply_level(report, m.expansion_point, current);
 }
 

@@ -246,6 +246,8 @@ class PlaneAnimator {
   bool clipped_ = false;               // the last frame was a clipped render
   Mat3 displayed_{1.0};
   Mat3 model_{1.0};
+  Mat3 rendered_warp_{1.0};  // displayed_ at the last re-render (Talisman's fit starts from it)
+  FitFiducials fit_;    // ModelUpdate::kAffineFit: this frame's fiducials
   Cache cache_;
   // Lit content: its last render (kept only when the policy reuses) and the texel -> layer
   // pixel warp it was rendered with; the pose it was lit at.

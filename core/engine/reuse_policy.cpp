@@ -8,6 +8,7 @@ namespace {
 
 constexpr LevelSet kNoPerspective{true, true, true, false, true};
 constexpr LevelSet kOnlyRerender{false, false, false, false, true};
+constexpr LevelSet kAffineOnly{false, false, true, false, true};
 
 Level always_rerender(const ReusePolicy&, const FrameInputs&) { return Level::kRerender; }
 
@@ -29,6 +30,19 @@ Level threshold_choice(const ReusePolicy& policy, const FrameInputs& inputs) {
                       inputs.pending);
 }
 
+Level printed_choice(const ReusePolicy&, const FrameInputs& inputs) {
+  return printed_cascade(inputs.carried, inputs.flow, inputs.thresholds);
+}
+
+Level talisman_choice(const ReusePolicy&, const FrameInputs& inputs) {
+  const FitFiducials& f = inputs.fit;
+  const bool geometric = f.geometric_px <= inputs.thresholds[static_cast<int>(Level::kAffine)];
+  const bool sampling = f.sigma_max <= kTalismanMaxMagnification &&
+                        f.sigma_min >= kTalismanMinMagnification &&
+                        f.sigma_max <= kTalismanMaxAnisotropy * f.sigma_min;
+  return geometric && sampling && !f.facing_changed ? Level::kAffine : Level::kRerender;
+}
+
 const std::vector<ReusePolicy>& reuse_policies() {
   static const std::vector<ReusePolicy> policies = {
       {"perspective", "Algorithm 1, corrected: every level, first-order Taylor flow model",
@@ -39,6 +53,11 @@ const std::vector<ReusePolicy>& reuse_policies() {
        InitialView::kExact, ModelUpdate::kExact, kAllLevels, threshold_choice},
       {"rerender", "the baseline: no reuse, every frame rendered exactly", InitialView::kExact,
        ModelUpdate::kExact, kOnlyRerender, always_rerender},
+      {"dissertation", "Algorithm 1 as printed: per-term cascade, bounding-box size, |Omega|^2",
+       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, printed_choice,
+       FlowBooks::kPrinted, false},
+      {"talisman", "Lengyel & Snyder 97: least-squares affine warp of the layer, fiducials",
+       InitialView::kExact, ModelUpdate::kAffineFit, kAffineOnly, talisman_choice},
   };
   return policies;
 }

@@ -10,6 +10,10 @@
 //   affine       section 6.5: no perspective level, affine initial view and flow model;
 //   exact        the perspective level uses the exact frame-to-frame homography;
 //   rerender     the baseline: no reuse, every frame rendered exactly.
+// The rivals and the printed rule, for comparison (manual/policies.md):
+//   dissertation Algorithm 1 as printed (section 5.4.5): per-term cascade, printed measures;
+//   talisman     Lengyel & Snyder 97: a least-squares affine warp of the layer as rendered,
+//                re-rendered when a fiducial (geometric, sampling, visibility) is over its limit.
 #pragma once
 
 #include <array>
@@ -17,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/affine_fit.h"
 #include "engine/decision.h"
 
 namespace oflab {
@@ -34,7 +39,26 @@ enum class ModelUpdate {
   kAffineTaylor,  // the same with the perspective terms px, py zeroed (an affine flow model)
   kExact,         // B <- the exact texture warp of the current pose: the model misses nothing
                   // of higher order, so the engine takes the higher-order term as zero
+  kAffineFit,     // Talisman: B <- A R, R the warp of the last render and A the least-squares
+                  // affine map of the texture corners as rendered (R) onto their exact
+                  // projections now (affine_fit.h); the fit is checked against the exact
+                  // projection every frame, so no error is carried in the books
 };
+
+// Which flow measures a policy's books and choice read (FrameInputs::flow, FrameReport::flow).
+enum class FlowBooks {
+  kCorners,  // measure_flow: per-corner bounds about the expansion point (corrected)
+  kPrinted,  // measure_printed_flow: section 5.4.5 as printed (bounding-box size, |Omega|^2)
+};
+
+// Talisman's sampling limits on the singular values of the fitted warp's 2x2 part
+// (FitFiducials): the layer may be magnified at most 2x (the engine's default sampling
+// limit, EngineSettings::max_magnification), minified at most 2x, and stretched at most 2x
+// more along one axis than along the other. Its geometric limit is the affine level's
+// threshold (thresholds[2]), so that it keeps the same pixel budget as the other policies.
+constexpr double kTalismanMaxMagnification = 2.0;
+constexpr double kTalismanMinMagnification = 0.5;
+constexpr double kTalismanMaxAnisotropy = 2.0;
 
 // Pixels each level would write, indexed by static_cast<int>(Level).
 using LevelPixels = std::array<std::int64_t, kLevelCount>;
@@ -50,6 +74,8 @@ struct FrameInputs {
   // current pose (the engine has the poses). Where the first-order books underestimate,
   // this is what bounds the shown error.
   TermArray pending{};
+  // ModelUpdate::kAffineFit only: the fiducials of this frame's fitted warp (affine_fit.h).
+  FitFiducials fit{};
 };
 
 // The cost estimate of FrameInputs::pixels, before any warp is run, from the layers the
@@ -71,6 +97,11 @@ struct ReusePolicy {
   LevelSet allowed;  // levels it may choose; re-render is always allowed
   // The level of this frame; must be one of `allowed` (re-render is always acceptable).
   Level (*choose)(const ReusePolicy& policy, const FrameInputs& inputs);
+  FlowBooks books = FlowBooks::kCorners;
+  // True when the rule keeps the measured error of every shown frame within the thresholds
+  // (up to resampling): the corrected rules and Talisman's geometric fiducial do; the
+  // printed rule does not (that is what it is compared for).
+  bool bounded = true;
 
   bool allows(Level level) const { return allowed[static_cast<int>(level)]; }
   // False when only re-render is allowed: the engine then re-renders without measuring.
@@ -81,6 +112,13 @@ struct ReusePolicy {
 // level being acceptable only when its exact pending error also stays within its
 // threshold; the choice of perspective, affine and exact.
 Level threshold_choice(const ReusePolicy& policy, const FrameInputs& inputs);
+
+// Algorithm 1's printed cascade (printed_cascade) over the books; the choice of dissertation.
+Level printed_choice(const ReusePolicy& policy, const FrameInputs& inputs);
+
+// Talisman's choice: affine when every fiducial of inputs.fit is within its limit (geometric
+// <= thresholds[2], the sampling limits above, no change of facing), else re-render.
+Level talisman_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 
 // Every policy, in the order help texts and the GUI list them (perspective first). The
 // entries live as long as the program; pointers to them may be kept and compared.

@@ -91,10 +91,32 @@ Lesson occlusion() {
 
 }  // namespace
 
+Lesson flow_vs_talisman() {
+  Lesson lesson;
+  lesson.name = "flow-vs-talisman";
+  lesson.title = "Optic flow against Talisman";
+  lesson.caption =
+      "Optic flow against Talisman. The butterfly loops through space; three panels play the "
+      "same frames: optic flow (perspective), Talisman (the layer as last rendered, moved by "
+      "the affine warp that best fits its corners) and the exact projection. Talisman warps "
+      "every frame and re-renders whenever its fit misses a corner by a pixel; optic flow "
+      "moves the layer for free while it can and pays for a perspective warp when it must. "
+      "Compare the costs under the panels.";
+  lesson.view = "animation";
+  lesson.scene = default_demo_scene();
+  lesson.animation_kind = "script";
+  lesson.animation_name = "loop";
+  lesson.mode = &reuse_policy("perspective");
+  lesson.display = PanelDisplay::kComparison;
+  lesson.compared = {&reuse_policy("perspective"), &reuse_policy("talisman")};
+  lesson.play_motion = true;
+  return lesson;
+}
+
 const std::vector<Lesson>& lessons() {
   static const std::vector<Lesson> all = {flow_of_a_plane(), basis_deformations(),
                                           affine_vs_perspective(), why_errors_accumulate(),
-                                          occlusion()};
+                                          occlusion(), flow_vs_talisman()};
   return all;
 }
 

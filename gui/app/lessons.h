@@ -33,6 +33,9 @@ struct Lesson {
   const ReusePolicy* mode = &default_reuse_policy();
   // How the animation view shows its panels (the comparison plays several policies at once).
   PanelDisplay display = PanelDisplay::kSideBySide;
+  // The policies the comparison layout plays (2 .. kMaxComparedPolicies of the registry).
+  std::vector<const ReusePolicy*> compared = {&reuse_policy("affine"),
+                                              &reuse_policy("perspective")};
 };
 
 // Every preset, in teaching order.

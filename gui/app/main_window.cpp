@@ -290,6 +290,7 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   animation_model_->set_settings(settings);
   animation_model_->set_source(
       {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
+  animation_view()->set_compared_policies(lesson.compared);
   animation_view()->set_display(lesson.display);
   show_view(QString::fromStdString(lesson.view));
   show_lesson_caption(QString::fromStdString(lesson.name));

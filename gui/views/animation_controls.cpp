@@ -1,11 +1,15 @@
 #include "views/animation_controls.h"
 
+#include <algorithm>
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMenu>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include "formats/viewer_script_file.h"
@@ -104,9 +108,9 @@ QWidget* AnimationControls::make_source_row() {
   display_box_->addItem(tr("Side by side"), int(PanelDisplay::kSideBySide));
   display_box_->addItem(tr("Difference heat map"), int(PanelDisplay::kDifference));
   display_box_->addItem(tr("Blink"), int(PanelDisplay::kBlink));
-  display_box_->addItem(tr("Affine, perspective and exact"), int(PanelDisplay::kComparison));
+  display_box_->addItem(tr("Compare policies"), int(PanelDisplay::kComparison));
   display_box_->setItemData(display_box_->count() - 1,
-                            tr("Plays the affine and the perspective policy at once beside the exact "
+                            tr("Plays the policies of the Policies menu at once beside the exact "
                                "projection, each with a difference heat map"),
                             Qt::ToolTipRole);
   layout->addWidget(new QLabel(tr("Play"), row));
@@ -115,6 +119,7 @@ QWidget* AnimationControls::make_source_row() {
   layout->addWidget(viewer_box_, 1);
   layout->addWidget(new QLabel(tr("Show"), row));
   layout->addWidget(display_box_, 1);
+  layout->addWidget(make_compare_button(row));
   for (QComboBox* box : {source_box_, viewer_box_, display_box_}) {
     // Long file names must not widen the window.
     box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -212,6 +217,53 @@ void AnimationControls::set_settings(const EngineSettings& s) {
   for (int k = 0; k < kTermCount; ++k) {
     const QSignalBlocker block(thresholds_[k]);
     thresholds_[k]->setValue(s.thresholds[size_t(k)]);
+  }
+}
+
+QToolButton* AnimationControls::make_compare_button(QWidget* parent) {
+  compare_button_ = new QToolButton(parent);
+  compare_button_->setObjectName(QStringLiteral("animation_compared"));
+  compare_button_->setText(tr("Policies"));
+  compare_button_->setPopupMode(QToolButton::InstantPopup);
+  compare_button_->setToolTip(tr("The reuse policies the comparison plays: 2 to %1 of them")
+                                  .arg(kMaxComparedPolicies));
+  auto* menu = new QMenu(compare_button_);
+  for (const ReusePolicy& p : reuse_policies()) {
+    QAction* action = menu->addAction(QString(p.name));
+    action->setCheckable(true);
+    action->setData(QString(p.name));
+    action->setToolTip(QString(p.summary));
+    compare_actions_.push_back(action);
+    connect(action, &QAction::triggered, this, [this, action] { compared_toggled(action); });
+  }
+  menu->setToolTipsVisible(true);
+  compare_button_->setMenu(menu);
+  return compare_button_;
+}
+
+void AnimationControls::compared_toggled(QAction* action) {
+  const int checked = static_cast<int>(compared().size());
+  if (checked < 2 || checked > kMaxComparedPolicies) {
+    const QSignalBlocker block(action);
+    action->setChecked(!action->isChecked());  // refused: the comparison keeps 2 .. 4
+    return;
+  }
+  emit compared_edited();
+}
+
+std::vector<const ReusePolicy*> AnimationControls::compared() const {
+  std::vector<const ReusePolicy*> out;
+  for (QAction* a : compare_actions_) {
+    if (a->isChecked()) out.push_back(find_reuse_policy(a->data().toString().toStdString()));
+  }
+  return out;
+}
+
+void AnimationControls::set_compared(const std::vector<const ReusePolicy*>& policies) {
+  for (QAction* a : compare_actions_) {
+    const QSignalBlocker block(a);
+    const ReusePolicy* p = find_reuse_policy(a->data().toString().toStdString());
+    a->setChecked(std::find(policies.begin(), policies.end(), p) != policies.end());
   }
 }
 

@@ -2,18 +2,24 @@
 // gui/models/animation_sources.h, with its shipped name and viewer script), the engine's
 // reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
 // affine/perspective switch), the per-level thresholds, the Delta
-// policy, the sampling, and how the two panels are shown. It only edits values; the view
+// policy, the sampling, how the two panels are shown, and the policies the comparison
+// layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only edits values; the view
 // applies them and puts them back when it refuses them.
 #pragma once
 
 #include <QWidget>
 
+#include <vector>
+
 #include "engine/engine.h"
 #include "models/animation_sources.h"
+#include "models/policy_comparison.h"
 
+class QAction;
 class QComboBox;
 class QDoubleSpinBox;
 class QPushButton;
+class QToolButton;
 
 namespace oflab {
 
@@ -39,15 +45,23 @@ class AnimationControls : public QWidget {
   SourceChoice source() const;
   // Selects the choice, adding a file entry when it is not a shipped one; emits nothing.
   void set_source(const SourceChoice& choice);
+  // The policies the comparison layout plays, in registry order (2 .. kMaxComparedPolicies
+  // of them once the user has picked; set_compared takes what PolicyComparison takes).
+  std::vector<const ReusePolicy*> compared() const;
+  void set_compared(const std::vector<const ReusePolicy*>& policies);  // emits nothing
 
  signals:
   void settings_edited();
   void display_edited();
   void source_edited();
+  void compared_edited();
 
  private:
   QWidget* make_source_row();
   QWidget* make_engine_row();
+  QToolButton* make_compare_button(QWidget* parent);
+  // A policy of the compare menu was toggled: keeps 2 .. kMaxComparedPolicies checked.
+  void compared_toggled(QAction* action);
   void explain_controls();  // a tooltip on every control
   void add_file_entry(QComboBox* box, const std::string& kind, const std::string& path);
   // Enables what applies to `kind`: the viewer script box, and the policy, threshold and
@@ -61,6 +75,8 @@ class AnimationControls : public QWidget {
   QComboBox* mode_box_ = nullptr;
   QPushButton* affine_switch_ = nullptr;
   QComboBox* display_box_ = nullptr;
+  QToolButton* compare_button_ = nullptr;
+  std::vector<QAction*> compare_actions_;  // one per registry policy, in registry order
   QDoubleSpinBox* thresholds_[kTermCount] = {};
   QComboBox* delta_box_ = nullptr;
   QComboBox* sampling_box_ = nullptr;

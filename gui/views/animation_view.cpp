@@ -120,6 +120,9 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
           [this] { set_display(controls_->display()); });
   connect(controls_, &AnimationControls::source_edited, this,
           [this] { model_->set_source(controls_->source()); });
+  connect(controls_, &AnimationControls::compared_edited, this,
+          [this] { set_compared_policies(controls_->compared()); });
+  controls_->set_compared(comparison_->policies());
 }
 
 AnimationView::~AnimationView() = default;
@@ -178,6 +181,12 @@ void AnimationView::set_zoom(double zoom) {
   zoom_ = std::clamp(zoom, kMinZoom, kMaxZoom);
   const QSignalBlocker block(zoom_box_);
   zoom_box_->setValue(zoom_);
+  refresh();
+}
+
+void AnimationView::set_compared_policies(const std::vector<const ReusePolicy*>& policies) {
+  comparison_->set_policies(policies);
+  controls_->set_compared(comparison_->policies());
   refresh();
 }
 

@@ -64,6 +64,9 @@ class AnimationView : public ViewPage {
 
   // The policies of the comparison layout (1 .. kMaxComparedPolicies of the registry).
   PolicyComparison& comparison() { return *comparison_; }
+  // Compares these policies (as PolicyComparison::set_policies) and shows them in the
+  // control bar's Policies menu.
+  void set_compared_policies(const std::vector<const ReusePolicy*>& policies);
 
   // The teacher's zoom on top of zoom-to-fit: 1 fits the plane's whole loop; clamped to
   // [kMinZoom, kMaxZoom]. The mouse wheel over the panels multiplies it by kWheelZoomStep

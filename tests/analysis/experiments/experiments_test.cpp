@@ -23,6 +23,7 @@
 #include "cli/commands.h"
 #include "formats/datasets.h"
 #include "experiments/experiments_delta.h"
+#include "experiments/experiments_policies.h"
 #include "experiments/experiments_runs.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
@@ -64,6 +65,20 @@ int count_after_first(const MeasuredRun& run, Level level) {
   int n = 0;
   for (size_t i = 1; i < run.reports.size(); ++i) n += run.reports[i].level == level;
   return n;
+}
+
+// The attribution of the policies section: distances written out level by level.
+TEST(PoliciesExperiment, GapAttributionIsTheShareOfTheDistanceThePrintedRuleRemoves) {
+  const std::array<double, kLevelCount> published{10, 20, 30, 40, 0};
+  const std::array<double, kLevelCount> corrected{30, 20, 30, 20, 0};  // 20 points away
+  const std::array<double, kLevelCount> printed{15, 20, 30, 35, 0};    // 5 points away
+  GapAttribution g = attribute_gap(published, corrected, printed);
+  EXPECT_DOUBLE_EQ(g.corrected_points, 20.0);
+  EXPECT_DOUBLE_EQ(g.printed_points, 5.0);
+  EXPECT_DOUBLE_EQ(g.explained, 0.75);
+  g = attribute_gap(published, printed, corrected);  // the printed rule further away
+  EXPECT_DOUBLE_EQ(g.explained, -3.0);
+  EXPECT_TRUE(std::isnan(attribute_gap(published, published, corrected).explained));
 }
 
 TEST(Experiment1Published, EveryShippedExperimentScriptHasAPublishedRow) {
@@ -387,7 +402,7 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
   EXPECT_EQ(occurrences(html, "<table>"), occurrences(md, "\n|---|"));
   for (const char* id :
        {"about", "experiment-1", "delta", "warp-timing", "experiment-2", "threshold-sweep",
-        "costs"}) {
+        "costs", "policies"}) {
     EXPECT_NE(html.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
   }
   // Every Markdown image is a chart file next to the report with its CSV, and every one
@@ -405,7 +420,8 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
     EXPECT_GT(fs::file_size(csv), 10u) << csv;
     ++images;
   }
-  EXPECT_GE(images, 21u + 2u + 1u + 2u);  // exp1 per script and mode, delta, warp, sweep
+  EXPECT_GE(images, 21u + 2u + 1u + 2u + 1u);  // exp1 per script and mode, delta, warp,
+                                               // sweep, policies
   EXPECT_EQ(occurrences(html, "<img "), images);
   EXPECT_EQ(occurrences(html, "src=\"data:image/png;base64,iVBORw0KGgo"), images);
   for (const fs::directory_entry& e : fs::directory_iterator(dir / "charts")) {

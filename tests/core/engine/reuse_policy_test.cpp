@@ -89,6 +89,12 @@ TEST(ReusePolicies, EachModeAllowsItsLevels) {
   EXPECT_EQ(reuse_policy("affine").model, ModelUpdate::kAffineTaylor);
   EXPECT_EQ(reuse_policy("perspective").model, ModelUpdate::kTaylor);
   EXPECT_EQ(reuse_policy("exact").model, ModelUpdate::kExact);
+  EXPECT_EQ(allowed("dissertation"), (LevelSet{true, true, true, true, true}));
+  EXPECT_EQ(allowed("talisman"), (LevelSet{false, false, true, false, true}));
+  EXPECT_EQ(reuse_policy("dissertation").books, FlowBooks::kPrinted);
+  EXPECT_FALSE(reuse_policy("dissertation").bounded);
+  EXPECT_EQ(reuse_policy("talisman").model, ModelUpdate::kAffineFit);
+  EXPECT_TRUE(reuse_policy("talisman").bounded);
 }
 
 TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
@@ -106,6 +112,7 @@ TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
     for (const ReusePolicy& p : reuse_policies()) {
       const Level chosen = p.choose(p, in);
       EXPECT_TRUE(p.allows(chosen)) << p.name;
+      if (p.choose != threshold_choice) continue;  // the rivals: reuse_rivals_test.cpp
       if (p.allows_reuse()) {
         EXPECT_EQ(chosen, reference_choice(in, p.allowed)) << p.name << " trial " << trial;
       } else {

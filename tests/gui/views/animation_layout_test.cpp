@@ -7,7 +7,10 @@
 // plane's rectangle at the script's pose (shoelace over the projected corners; the whole
 // plane is inside the shown frame, see ZoomToFit...), times the square of each panel's scale
 // (panel pixels per camera pixel).
+#include <QAction>
 #include <QApplication>
+#include <QMenu>
+#include <QToolButton>
 #include <QWidget>
 #include <cmath>
 #include <cstring>
@@ -18,6 +21,7 @@
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "scene/view_culling.h"
+#include "app/lessons.h"
 #include "views/animation_view.h"
 #include "image_checks.h"
 #include "window_fixture.h"
@@ -203,6 +207,66 @@ TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
                                             << " of " << animation().width() << " x " << animation().height();
     for (const ComparedRun& run : animation().comparison().runs()) EXPECT_EQ(run.animator->frame(), frame);
   }
+}
+
+// The control bar's Policies menu picks what the comparison plays: any 2 to 4 policies of
+// the registry; a fifth, or dropping below two, is refused and leaves the comparison as it was.
+TEST_F(AnimationLayoutTest, PoliciesMenuComparesTwoToFourPolicies) {
+  show_comparison();
+  auto* button = animation().findChild<QToolButton*>("animation_compared");
+  ASSERT_NE(button, nullptr);
+  const QList<QAction*> actions = button->menu()->actions();
+  ASSERT_EQ(actions.size(), int(reuse_policies().size()));
+  const auto action = [&](const char* name) {
+    for (QAction* a : actions) {
+      if (a->data().toString() == name) return a;
+    }
+    return static_cast<QAction*>(nullptr);
+  };
+  const auto names = [&] {
+    std::vector<std::string> out;
+    for (const ReusePolicy* p : animation().comparison().policies()) out.push_back(p->name);
+    return out;
+  };
+  EXPECT_TRUE(action("affine")->isChecked());
+  EXPECT_TRUE(action("perspective")->isChecked());
+  action("talisman")->trigger();
+  EXPECT_EQ(names(), (std::vector<std::string>{"perspective", "affine", "talisman"}));
+  action("dissertation")->trigger();
+  EXPECT_EQ(names().size(), 4u);
+  action("exact")->trigger();  // a fifth: refused
+  EXPECT_FALSE(action("exact")->isChecked());
+  EXPECT_EQ(names().size(), 4u);
+  action("affine")->trigger();
+  action("dissertation")->trigger();
+  EXPECT_EQ(names(), (std::vector<std::string>{"perspective", "talisman"}));
+  action("talisman")->trigger();  // below two: refused
+  EXPECT_TRUE(action("talisman")->isChecked());
+  window().play_frames(3);
+  animation().render_image();
+  ASSERT_EQ(animation().comparison().runs().size(), 2u);
+  EXPECT_STREQ(animation().comparison().runs()[1].policy->name, "talisman");
+  EXPECT_EQ(animation().panel_rects().size(), 5u);
+}
+
+// The lesson "optic flow against Talisman" plays optic flow and Talisman beside the exact
+// projection; another lesson puts the default comparison back.
+TEST_F(AnimationLayoutTest, FlowVsTalismanLessonComparesPerspectiveAndTalisman) {
+  window().apply_lesson(*find_lesson("flow-vs-talisman"));
+  window().set_external_clock(true);
+  ASSERT_EQ(animation().display(), PanelDisplay::kComparison);
+  window().play_frames(20);
+  animation().render_image();
+  const auto& runs = animation().comparison().runs();
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_STREQ(runs[0].policy->name, "perspective");
+  EXPECT_STREQ(runs[1].policy->name, "talisman");
+  for (const ComparedRun& run : runs) {
+    ASSERT_NE(run.animator, nullptr) << run.problem;
+    EXPECT_EQ(run.last.frame, 20);
+  }
+  window().apply_lesson(*find_lesson("affine-vs-perspective"));
+  EXPECT_STREQ(animation().comparison().policies()[0]->name, "affine");
 }
 
 }  // namespace

@@ -1,0 +1,132 @@
+// `oflab-cli compare`: one motion script (or a scene's viewer script) played under several
+// reuse policies, one row per policy (analysis/runs/policy_runs.h, manual/policies.md).
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/animate_options.h"
+#include "cli/animate_scene.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "formats/datasets.h"
+#include "formats/image_io.h"
+#include "formats/script_file.h"
+#include "runs/policy_runs.h"
+
+namespace oflab {
+namespace {
+
+// The source of the options: a scene and its viewer script with --scene, else a plane's
+// motion script and texture. Sets *kind to the source's kind.
+RunSource read_source(const CliArgs& a, const SourceKind** kind) {
+  RunSource source;
+  if (a.has("--scene")) {
+    source.viewer = read_viewer_script_option(a);
+    source.scene = std::make_shared<const Scene>(read_scene_option(a));
+    source.settings = read_scene_settings(a);
+    *kind = &source_kind("scene");
+    return source;
+  }
+  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden"}) {
+    if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
+  }
+  std::string path;
+  try {
+    path = resolve_script_path(a.values("--script").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--script: ") + e.what());
+  }
+  source.script = read_script_file(path);
+  source.texture = read_image(a.text_or("--texture", default_texture_path()));
+  source.settings.engine = read_engine_settings(a);
+  *kind = &source_kind("plane");
+  return source;
+}
+
+std::ofstream open_output(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw UsageError("--out: cannot write " + path);
+  return out;
+}
+
+// DIR/POLICY.csv per policy (the kind's per-frame CSV) and DIR/summary.csv, a row each.
+void write_outputs(const std::string& dir, const SourceKind& kind,
+                   const std::vector<PolicyRun>& runs, const std::vector<PolicyRow>& rows) {
+  for (const PolicyRun& r : runs) {
+    std::ofstream csv = open_output(dir + "/" + r.policy->name + ".csv");
+    kind.write_csv(csv, r.run);
+  }
+  std::ofstream summary = open_output(dir + "/summary.csv");
+  summary << "policy";
+  for (int l = 0; l < kLevelCount; ++l) summary << ",pct_" << level_name(static_cast<Level>(l));
+  summary << ",work_saved,time_saved,max_measured_error_px,mean_measured_error_px,"
+             "mean_psnr_db,layer_frames,frames\n";
+  for (const PolicyRow& row : rows) {
+    summary << row.name;
+    for (double share : row.level_share) summary << ',' << 100.0 * share;
+    summary << ',' << row.work_saved << ',' << row.time_saved << ','
+            << row.max_measured_error_px << ',' << row.mean_measured_error_px << ','
+            << row.mean_psnr_db << ',' << row.layer_frames << ',' << row.frames << "\n";
+  }
+}
+
+int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  if (!a.has("--policies")) throw UsageError("--policies: needs a list, e.g. perspective,talisman");
+  std::vector<const ReusePolicy*> policies;
+  try {
+    policies = parse_policy_list(a.values("--policies").at(0));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--policies: ") + e.what());
+  }
+  const SourceKind* kind = nullptr;
+  const RunSource source = read_source(a, &kind);
+  PlayOptions options;
+  const RunOutput output = read_run_output(a, err);
+  output.apply_to(options);
+  const std::vector<PolicyRun> runs = run_policies(*kind, source, policies, options);
+  std::vector<PolicyRow> rows;
+  for (const PolicyRun& r : runs) rows.push_back(policy_row(r));
+  if (!output.dir.empty()) write_outputs(output.dir, *kind, runs, rows);
+  const std::string script = source.scene ? source.viewer.name : source.script.name;
+  if (a.has("--json")) {
+    nlohmann::json j = {{"script", script}, {"policies", nlohmann::json::array()}};
+    if (source.scene) j["scene"] = source.scene->name;
+    j["thresholds"] = source.settings.engine.thresholds;
+    for (const PolicyRow& row : rows) j["policies"].push_back(policy_row_json(row));
+    out << j.dump(2) << "\n";
+    return 0;
+  }
+  out << (source.scene ? "scene " + source.scene->name + ", viewer script " : "script ") << script
+      << ", " << (rows.empty() ? 0 : rows.front().frames) << " frames, "
+      << policies.size() << " policies (times measured in the same run as each policy's "
+      << "exact re-render)\n";
+  print_policy_table(rows, out);
+  return 0;
+}
+
+}  // namespace
+
+int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
+  try {
+    const CliArgs a(args, {{"--script", 1},     {"--scene", 1},      {"--policies", 1},
+                           {"--texture", 1},    {"--threshold", 1},  {"--thresholds", 4},
+                           {"--delta", 1},      {"--sampling", 1},   {"--frames", 1},
+                           {"--repeat-timing", 1}, {"--out", 1},     {"--force", 0},
+                           {"--json", 0},       {"--quiet", 0},      {"--near", 1},
+                           {"--guard-band", 1}, {"--no-skip-hidden", 0}});
+    if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
+    if (!a.has("--scene")) return compare(a, out, err);
+    return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");
+  } catch (const UsageError& e) {
+    err << "oflab-cli compare: " << e.what() << "\n";
+    return 2;
+  } catch (const ScriptError& e) {
+    err << "oflab-cli compare: " << e.what() << "\n";
+    return 2;
+  } catch (const ImageFileError& e) {
+    err << "oflab-cli compare: --texture: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace oflab

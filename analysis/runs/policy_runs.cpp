@@ -1,0 +1,118 @@
+// One source under several reuse policies (see analysis/runs/policy_runs.h).
+#include "runs/policy_runs.h"
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace oflab {
+namespace {
+
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+std::vector<PolicyRun> run_policies(const SourceKind& kind, const RunSource& source,
+                                    const std::vector<const ReusePolicy*>& policies,
+                                    const PlayOptions& options) {
+  std::vector<PolicyRun> runs;
+  for (const ReusePolicy* policy : policies) {
+    RunSource one = source;
+    one.settings.engine.policy = policy;
+    PolicyRun r;
+    r.policy = policy;
+    PlayOptions o = options;
+    o.on_view = [&r](int, const ViewerPose& view) { r.views.push_back(view); };
+    r.run = kind.play(one, o);
+    runs.push_back(std::move(r));
+  }
+  return runs;
+}
+
+std::vector<const ReusePolicy*> parse_policy_list(const std::string& text) {
+  std::vector<const ReusePolicy*> out;
+  std::set<std::string> seen;
+  std::stringstream in(text);
+  std::string name;
+  while (std::getline(in, name, ',')) {
+    const ReusePolicy* p = find_reuse_policy(name);
+    if (!p) {
+      throw std::invalid_argument("unknown policy '" + name + "' (one of " +
+                                  reuse_policy_names() + ")");
+    }
+    if (!seen.insert(name).second) throw std::invalid_argument("policy '" + name + "' twice");
+    out.push_back(p);
+  }
+  if (out.empty()) throw std::invalid_argument("no policy given (one of " + reuse_policy_names() + ")");
+  return out;
+}
+
+PolicyRow policy_row(const PolicyRun& r) {
+  PolicyRow row;
+  row.name = r.policy->name;
+  const RunSummary& s = r.run.summary;
+  row.frames = s.frames;
+  row.layer_frames = s.drawn();
+  for (int l = 0; l < kLevelCount; ++l) {
+    row.level_share[l] = row.layer_frames > 0 ? double(s.levels[l]) / row.layer_frames : 0.0;
+  }
+  row.work_saved = s.work_saved;
+  row.time_saved = s.time_saved;
+  row.mean_psnr_db = s.mean_psnr_db;
+  double sum = 0.0;
+  long count = 0;
+  for (const AnimationFrame& f : r.run.frames) {
+    for (const FrameReport& report : f.layer_reports) {
+      if (!report.visible || !std::isfinite(report.measured_error_px)) continue;
+      row.max_measured_error_px = std::max(row.max_measured_error_px, report.measured_error_px);
+      sum += report.measured_error_px;
+      ++count;
+    }
+  }
+  row.mean_measured_error_px = count > 0 ? sum / count : 0.0;
+  return row;
+}
+
+nlohmann::json policy_row_json(const PolicyRow& row) {
+  nlohmann::json levels;
+  for (int l = 0; l < kLevelCount; ++l) {
+    levels[level_name(static_cast<Level>(l))] = 100.0 * row.level_share[l];
+  }
+  return {{"name", row.name},
+          {"levels", levels},
+          {"rerender_share", row.level_share[static_cast<int>(Level::kRerender)]},
+          {"work_saved", row.work_saved},
+          {"time_saved", finite_or_null(row.time_saved)},
+          {"max_measured_error_px", row.max_measured_error_px},
+          {"mean_measured_error_px", row.mean_measured_error_px},
+          {"mean_psnr_db", finite_or_null(row.mean_psnr_db)},
+          {"layer_frames", row.layer_frames},
+          {"frames", row.frames}};
+}
+
+void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
+  out << std::left << std::setw(13) << "policy" << std::right;
+  for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << level_title(static_cast<Level>(l));
+  out << std::setw(8) << "work" << std::setw(8) << "time" << std::setw(10) << "max err"
+      << std::setw(10) << "mean err" << std::setw(8) << "PSNR" << "\n";
+  out << std::left << std::setw(13) << "" << std::right;
+  for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << "% layer-fr.";
+  out << std::setw(8) << "saved %" << std::setw(8) << "saved %" << std::setw(10) << "px"
+      << std::setw(10) << "px" << std::setw(8) << "dB" << "\n";
+  out << std::fixed;
+  for (const PolicyRow& r : rows) {
+    out << std::left << std::setw(13) << r.name << std::right << std::setprecision(1);
+    for (double share : r.level_share) out << std::setw(12) << 100.0 * share;
+    out << std::setw(8) << 100.0 * r.work_saved << std::setw(8) << 100.0 * r.time_saved
+        << std::setprecision(3) << std::setw(10) << r.max_measured_error_px << std::setw(10)
+        << r.mean_measured_error_px << std::setprecision(1) << std::setw(8) << r.mean_psnr_db
+        << "\n";
+  }
+}
+
+}  // namespace oflab

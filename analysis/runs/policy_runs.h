@@ -1,0 +1,63 @@
+// One source played under several reuse policies (core/engine/reuse_policy.h), each run
+// exactly as `oflab-cli animate` plays it (warm-up, timed passes interleaved with the exact
+// re-render, medians: analysis/runs/run_driver.h), so that the policies' rows compare like
+// with like. Used by `oflab-cli compare` and `oflab-cli experiments --only policies`; the
+// rows are documented in manual/policies.md.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/reuse_policy.h"
+#include "runs/source_kinds.h"
+
+namespace oflab {
+
+struct PolicyRun {
+  const ReusePolicy* policy = nullptr;
+  AnimationRun run;
+  std::vector<ViewerPose> views;  // per frame, what the frame showed (RunOptions::on_view)
+};
+
+// Plays `source` once per policy with the kind's play ("plane" or "scene": the policy goes
+// into source.settings.engine.policy, nothing else changes). `options` as for
+// SourceKind::play; its on_view is replaced. Throws what play throws.
+std::vector<PolicyRun> run_policies(const SourceKind& kind, const RunSource& source,
+                                    const std::vector<const ReusePolicy*>& policies,
+                                    const PlayOptions& options);
+
+// The policies of a comma-separated list of registry names ("perspective,talisman"), in the
+// order given. Throws std::invalid_argument naming the unknown or repeated entry and the
+// known names, or saying the list is empty.
+std::vector<const ReusePolicy*> parse_policy_list(const std::string& text);
+
+// The figures of one policy's row, over every layer-frame of the run (a layer-frame: one
+// drawn layer in one frame; a plane has one per visible frame):
+//   level_share[l]   fraction of the drawn layer-frames updated at level l;
+//   work_saved, time_saved   RunSummary's (against the exact re-render of the same run);
+//   max_measured_error_px, mean_measured_error_px   over the visible layer reports;
+//   mean_psnr_db     RunSummary's.
+struct PolicyRow {
+  std::string name;
+  std::array<double, kLevelCount> level_share{};
+  double work_saved = 0.0;
+  double time_saved = 0.0;
+  double max_measured_error_px = 0.0;
+  double mean_measured_error_px = 0.0;
+  double mean_psnr_db = 0.0;
+  long layer_frames = 0;
+  int frames = 0;
+};
+PolicyRow policy_row(const PolicyRun& run);
+
+// The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
+// "work_saved", "time_saved" (fractions), "max_measured_error_px",
+// "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames"}.
+nlohmann::json policy_row_json(const PolicyRow& row);
+
+// A text table, one row per policy: the level percents, re-render share, work and time
+// saved, max and mean measured error and mean PSNR.
+void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out);
+
+}  // namespace oflab

@@ -1,0 +1,146 @@
+// `oflab-cli compare` and the policy runs under it (analysis/runs/policy_runs.h): every policy
+// plays identical frames, the rows agree with `animate` run alone, the outputs, and
+// one-line errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/commands.h"
+#include "cli_capture.h"
+#include "formats/datasets.h"
+#include "formats/image_io.h"
+#include "formats/scene_file.h"
+#include "formats/script_file.h"
+#include "formats/viewer_script_file.h"
+#include "runs/policy_runs.h"
+#include "scratch_dir.h"
+
+namespace oflab {
+namespace {
+
+using testing::CliResult;
+
+CliResult run(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
+
+PlayOptions quick_options(int frames) {
+  PlayOptions o;
+  o.max_frames = frames;
+  o.timing_repetitions = 1;
+  return o;
+}
+
+void expect_same_views(const std::vector<PolicyRun>& runs, int frames) {
+  for (const PolicyRun& r : runs) {
+    ASSERT_EQ(static_cast<int>(r.run.frames.size()), frames) << r.policy->name;
+    ASSERT_EQ(r.views.size(), runs.front().views.size()) << r.policy->name;
+    for (size_t i = 0; i < r.views.size(); ++i) {
+      EXPECT_EQ(r.views[i].rotation, runs.front().views[i].rotation) << r.policy->name << " " << i;
+      EXPECT_EQ(r.views[i].translation, runs.front().views[i].translation)
+          << r.policy->name << " " << i;
+    }
+  }
+}
+
+TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAPlane) {
+  RunSource source;
+  source.script = read_script_file(resolve_script_path("zoom-rotation"));
+  source.texture = read_image(default_texture_path());
+  std::vector<const ReusePolicy*> all;
+  for (const ReusePolicy& p : reuse_policies()) all.push_back(&p);
+  const auto runs = run_policies(source_kind("plane"), source, all, quick_options(25));
+  ASSERT_EQ(runs.size(), all.size());
+  expect_same_views(runs, 25);
+  // The poses really move: the views are not all the same.
+  EXPECT_NE(runs.front().views.front().translation, runs.front().views.back().translation);
+}
+
+TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAScene) {
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("two")));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path("compound"));
+  const auto runs = run_policies(source_kind("scene"), source,
+                                 parse_policy_list("perspective,talisman,dissertation"),
+                                 quick_options(12));
+  expect_same_views(runs, 12);
+}
+
+TEST(PolicyRuns, PolicyListsAreCheckedAgainstTheRegistry) {
+  const auto list = parse_policy_list("talisman,rerender");
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[0], &reuse_policy("talisman"));
+  EXPECT_EQ(list[1], &reuse_policy("rerender"));
+  EXPECT_THROW(parse_policy_list("talisman,bogus"), std::invalid_argument);
+  EXPECT_THROW(parse_policy_list("talisman,talisman"), std::invalid_argument);
+  EXPECT_THROW(parse_policy_list(""), std::invalid_argument);
+}
+
+// The rows are the animate summaries of each policy run alone (levels, work, error).
+TEST(CompareCommand, JsonRowsAgreeWithAnimateRunAlone) {
+  const CliResult r = run({"compare", "--script", "rotation", "--policies", "talisman,perspective",
+                           "--frames", "30", "--repeat-timing", "1", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.at("policies").size(), 2u);
+  EXPECT_EQ(j["policies"][0]["name"], "talisman");
+  EXPECT_EQ(j["policies"][1]["name"], "perspective");
+  for (const auto& row : j["policies"]) {
+    const CliResult alone =
+        run({"animate", "--script", "rotation", "--mode", row["name"].get<std::string>(),
+             "--frames", "30", "--repeat-timing", "1", "--json"});
+    ASSERT_EQ(alone.code, 0) << alone.err;
+    const auto a = nlohmann::json::parse(alone.out);
+    double sum = 0.0;
+    for (const auto& [level, count] : a.at("levels").items()) {
+      EXPECT_NEAR(row["levels"][level].get<double>(), 100.0 * count.get<double>() / 30.0, 1e-9)
+          << row["name"] << " " << level;
+      sum += row["levels"][level].get<double>();
+    }
+    EXPECT_NEAR(sum, 100.0, 1e-9);
+    EXPECT_DOUBLE_EQ(row["work_saved"].get<double>(), a["work_saved"].get<double>());
+    EXPECT_DOUBLE_EQ(row["max_measured_error_px"].get<double>(),
+                     a["max_measured_error_px"].get<double>());
+    EXPECT_EQ(row["frames"], 30);
+  }
+}
+
+TEST(CompareCommand, TextTableHasARowPerPolicyAndOutWritesTheCsvs) {
+  const std::filesystem::path dir = testing::fresh_test_dir("oflab-compare");
+  std::filesystem::remove(dir);
+  const CliResult r =
+      run({"compare", "--script", "translation-1", "--policies", "dissertation,talisman,rerender",
+           "--frames", "10", "--repeat-timing", "1", "--out", dir.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* name : {"dissertation", "talisman", "rerender"}) {
+    EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / (std::string(name) + ".csv"))) << name;
+  }
+  std::ifstream summary(dir / "summary.csv");
+  std::string line;
+  int lines = 0;
+  while (std::getline(summary, line)) ++lines;
+  EXPECT_EQ(lines, 4);  // header and three policies
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CompareCommand, BadInputIsOneLineWithExitCodeTwo) {
+  const auto expect_error = [](const std::vector<std::string>& args, const std::string& text) {
+    const CliResult r = run(args);
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  };
+  expect_error({"compare", "--script", "rotation", "--policies", "bogus"}, "--policies: unknown policy 'bogus'");
+  expect_error({"compare", "--script", "rotation"}, "--policies");
+  expect_error({"compare", "--policies", "talisman"}, "--script");
+  expect_error({"compare", "--script", "nope", "--policies", "talisman"}, "--script");
+  expect_error({"compare", "--script", "rotation", "--policies", "talisman", "--near", "1"},
+               "--near: needs --scene");
+  expect_error({"compare", "--script", "rotation", "--policies", "talisman", "--mode", "exact"},
+               "--mode");
+}
+
+}  // namespace
+}  // namespace oflab
