@@ -21,7 +21,8 @@ std::string animate_usage() {
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage +=
       "               [--repeat-timing N]   (timed passes after a warm-up, default " +
-      std::to_string(kDefaultTimingRepetitions) + ")\n";
+      std::to_string(kDefaultTimingRepetitions) + ")\n"
+      "               [--no-warm-up] [--repeat N]   (the script N times back to back)\n";
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
@@ -29,8 +30,8 @@ std::string animate_usage() {
       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
-      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --out, --video,\n"
-      "               --json, --quiet as above]\n"
+      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --no-warm-up,\n"
+      "               --out, --video, --json, --quiet as above]\n"
       "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
   return usage;
 }

@@ -278,6 +278,29 @@ TEST(AnimateCommand, RepeatTimingTakesAPositiveWholeNumber) {
   EXPECT_NE(scene.err.find("--repeat-timing"), std::string::npos) << scene.err;
 }
 
+TEST(AnimateCommand, RepeatPlaysTheScriptAgainAndTakesAWholeNumberInItsRange) {
+  const Cli once = cli({"animate", "--script", "zoom", "--json", "--quiet", "--repeat-timing", "1"});
+  ASSERT_EQ(once.code, 0) << once.err;
+  const int frames = nlohmann::json::parse(once.out).at("frames");
+  const Cli thrice = cli({"animate", "--script", "zoom", "--repeat", "3", "--no-warm-up",
+                          "--repeat-timing", "1", "--json", "--quiet"});
+  ASSERT_EQ(thrice.code, 0) << thrice.err;
+  const auto j = nlohmann::json::parse(thrice.out);
+  EXPECT_EQ(j.at("frames"), 3 * frames);
+  int counted = 0;
+  for (const auto& [level, n] : j.at("levels").items()) counted += n.get<int>();
+  EXPECT_EQ(counted, 3 * frames);
+  for (const char* n : {"0", "-1", "x", "2.5", "1000001"}) {
+    const Cli c = cli({"animate", "--script", "zoom", "--repeat", n});
+    EXPECT_EQ(c.code, 2) << n;
+    EXPECT_NE(c.err.find("--repeat"), std::string::npos) << c.err;
+    EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+  }
+  const Cli scene = cli({"animate", "--scene", "four-cubes", "--script", "circle", "--repeat", "2"});
+  EXPECT_EQ(scene.code, 2);
+  EXPECT_NE(scene.err.find("--repeat"), std::string::npos) << scene.err;
+}
+
 TEST(AnimateCommand, AllScriptsRunInAllModes) {
   for (const std::string& s : shipped_script_names()) {
     for (const char* mode : {"perspective", "affine", "rerender", "exact"}) {
