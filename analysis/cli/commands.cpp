@@ -1,6 +1,8 @@
 #include "cli/commands.h"
 
+#include <exception>
 #include <ostream>
+#include <string>
 
 #include "engine/reuse_policy.h"
 #include "experiments/experiments.h"
@@ -98,6 +100,19 @@ int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   }
   err << "oflab-cli: unknown command '" << args[0] << "' (try oflab-cli --help)\n";
   return 2;
+}
+
+int run_guarded(const char* program, const std::function<int()>& body, std::ostream& err) {
+  try {
+    return body();
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    for (char& c : what) c = c == '\n' ? ' ' : c;  // one line
+    err << program << ": internal error: " << what << "\n";
+  } catch (...) {
+    err << program << ": internal error: an unknown exception\n";
+  }
+  return kInternalErrorExitCode;
 }
 
 }  // namespace oflab
