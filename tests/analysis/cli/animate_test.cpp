@@ -18,6 +18,7 @@
 #include "formats/image_io.h"
 #include "formats/script_file.h"
 #include "runs/source_kinds.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -200,9 +201,7 @@ TEST(AnimateCommand, PlaneFlyingIntoTheEyePlaysToItsEndClippedThenNotVisible) {
 }
 
 TEST(AnimateCommand, PlaneLeavingTheImageIsNotVisibleInTheCsv) {
-  const fs::path dir = fs::temp_directory_path() / "oflab-leaving-plane";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::fresh_test_dir("oflab-leaving-plane");
   nlohmann::json script =
       nlohmann::json::parse(std::ifstream(resolve_script_path("translation-1")));
   script["segments"][0]["frames"] = 30;
@@ -311,8 +310,8 @@ TEST(AnimateCommand, AllScriptsRunInAllModes) {
 }
 
 TEST(AnimateCommand, WritesCsvAndRefusesToOverwriteWithoutForce) {
-  const fs::path dir = fs::temp_directory_path() / "oflab_animate_test_out";
-  fs::remove_all(dir);
+  const fs::path scratch = testing::fresh_test_dir("oflab-animate-out");
+  const fs::path dir = scratch / "out";
   Cli c = cli({"animate", "--script", "zoom", "--frames", "10", "--out", dir.string(),
                "--frames-png", "--quiet"});
   ASSERT_EQ(c.code, 0) << c.err;
@@ -329,20 +328,21 @@ TEST(AnimateCommand, WritesCsvAndRefusesToOverwriteWithoutForce) {
   EXPECT_NE(c.err.find("--force"), std::string::npos);
   c = cli({"animate", "--script", "zoom", "--frames", "10", "--out", dir.string(), "--force"});
   EXPECT_EQ(c.code, 0) << c.err;
-  fs::remove_all(dir);
+  fs::remove_all(scratch);
 }
 
 // A script file with one thing wrong must name the file, the frame or segment and the field.
 void expect_script_error(const std::string& text, const std::string& where,
                          const std::string& field) {
-  const fs::path file = fs::temp_directory_path() / "oflab_bad_script.json";
+  const fs::path dir = testing::fresh_test_dir("oflab-bad-script");
+  const fs::path file = dir / "bad_script.json";
   std::ofstream(file) << text;
   const Cli c = cli({"animate", "--script", file.string(), "--frames", "3"});
   EXPECT_EQ(c.code, 2) << text;
   EXPECT_NE(c.err.find(file.string()), std::string::npos) << c.err;
   EXPECT_NE(c.err.find(where), std::string::npos) << c.err;
   EXPECT_NE(c.err.find(field), std::string::npos) << c.err;
-  fs::remove(file);
+  fs::remove_all(dir);
 }
 
 const char* kHead =
@@ -381,8 +381,8 @@ TEST(AnimateCommand, BadOptionsNameTheOption) {
 }
 
 TEST(Butterfly, CommittedTextureIsTheGeneratorsOutput) {
-  const fs::path file = fs::temp_directory_path() / "oflab_butterfly_test.png";
-  fs::remove(file);
+  const fs::path dir = testing::fresh_test_dir("oflab-butterfly");
+  const fs::path file = dir / "butterfly.png";
   ASSERT_EQ(cli({"make-butterfly", "--out", file.string()}).code, 0);
   const Image fresh = read_image(file.string());
   const Image committed = read_image(default_texture_path());
@@ -391,7 +391,7 @@ TEST(Butterfly, CommittedTextureIsTheGeneratorsOutput) {
   EXPECT_EQ(fresh.pixels(), committed.pixels());
   EXPECT_EQ(committed.at(0, 0).a, 0);  // transparent background
   EXPECT_EQ(cli({"make-butterfly", "--out", file.string()}).code, 2);  // no silent overwrite
-  fs::remove(file);
+  fs::remove_all(dir);
 }
 
 }  // namespace
