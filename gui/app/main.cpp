@@ -33,8 +33,9 @@ int run_main(int argc, char** argv) {
 
 }  // namespace
 
-// An exception escaping the window (Qt passes it on out of its event loop) ends the
-// process with one line and kInternalErrorExitCode, not an abort.
+// An exception that reaches main (from the command line, the window's set-up, or one Qt's
+// event loop passes on) ends the process with one line and kInternalErrorExitCode, not an
+// abort.
 int main(int argc, char** argv) {
   return oflab::run_guarded("oflab", [&] { return run_main(argc, argv); }, std::cerr);
 }
