@@ -1,8 +1,10 @@
 // `oflab-cli animate`: plays a motion script through the engine and reports, per frame
 // (CSV) and in summary (text or JSON), what it did and what it cost.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -17,6 +19,9 @@
 
 namespace oflab {
 namespace {
+
+// --repeat N: the script played at most this many times back to back.
+constexpr int kMaxRepeat = 1000000;
 
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
                                              "--no-skip-hidden"};
@@ -55,7 +60,24 @@ void print_summary(const nlohmann::json& j, const std::string& script, const Reu
   if (invisible) out << "  " << invisible << " frames not visible\n";
 }
 
+// --repeat N (default 1): 1..kMaxRepeat, and N times the script's frames fits an int.
+// Throws UsageError naming --repeat and the limit.
+int read_repeat(const CliArgs& a, const MotionScript& script) {
+  const int repeat = a.integer_or("--repeat", 1);
+  const long frames = static_cast<long>(script.frames.size());
+  const long most = std::min<long>(kMaxRepeat, std::numeric_limits<int>::max() / frames);
+  if (repeat < 1 || repeat > most) {
+    throw UsageError("--repeat: " + std::to_string(repeat) + " is outside 1.." +
+                     std::to_string(most) + " (plays of the script's " + std::to_string(frames) +
+                     " frames)");
+  }
+  return repeat;
+}
+
 int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  if (a.has("--repeat") && a.has("--scene")) {
+    throw UsageError("--repeat: plays a motion script again and again; not with --scene");
+  }
   if (a.text_or("--mode", "") == "scene-shifting") {
     if (!a.has("--scene")) throw UsageError("--mode scene-shifting: needs --scene NAME|FILE");
     return animate_scene_shifting(a, out, err);
@@ -74,17 +96,18 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
   }
   RunSource source;
   source.script = read_script_file(script_path);
+  source.repeat = read_repeat(a, source.script);
   source.texture = read_image(a.text_or("--texture", default_texture_path()));
   source.settings.engine = read_engine_settings(a);
   const EngineSettings& settings = source.settings.engine;
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
-  output.apply_to(options);
   const SourceKind& kind = source_kind("plane");
+  output.apply_to(options, kind);
   const AnimationRun run = kind.play(source, options);
   const nlohmann::json summary = kind.summary_json(run);
   output.finish();
-  if (!output.dir.empty()) write_run_outputs(output.dir, kind, run, summary);
+  output.write_summary(summary);
   const std::string name = source.script.name.empty() ? script_arg : source.script.name;
   if (a.has("--json")) {
     nlohmann::json j = summary;
@@ -116,6 +139,8 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--quality", 1},
                            {"--frames", 1},
                            {"--repeat-timing", 1},
+                           {"--no-warm-up", 0},
+                           {"--repeat", 1},
                            {"--out", 1},
                            {"--force", 0},
                            {"--frames-png", 0},

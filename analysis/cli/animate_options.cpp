@@ -112,10 +112,14 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
     throw UsageError("--repeat-timing: " + std::to_string(out.timing_repetitions) +
                      " is outside 1.." + std::to_string(kMaxTimingRepetitions));
   }
+  out.warm_up = !a.has("--no-warm-up");
   out.dir = a.text_or("--out", "");
   if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
   if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
-  if (!out.dir.empty()) prepare_out_dir(out.dir, a.has("--force"));
+  if (!out.dir.empty()) {
+    prepare_out_dir(out.dir, a.has("--force"));
+    out.csv = std::make_shared<std::ofstream>();  // opened by apply_to, which knows the kind
+  }
   out.video = read_video_option(a);
   const bool png = a.has("--frames-png");
   if (png || out.video) {
@@ -134,18 +138,38 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
     };
   }
   const bool quiet = a.has("--quiet");
-  const int passes = out.timing_repetitions + 1;  // the warm-up and the timed passes
-  out.progress = [quiet, passes, &err](int done, int total) {
+  const int passes = out.timing_repetitions + (out.warm_up ? 1 : 0);
+  const char* what = out.warm_up ? " (a warm-up, then the timed passes)\n" : " (timed passes)\n";
+  out.progress = [quiet, passes, what, &err](int done, int total) {
     const int frames = total / passes;
     if (quiet || frames < 200) return;
     const int frame = (done - 1) % frames + 1;
     if (frame % std::max(1, frames / 10) == 0 || frame == frames) {
       err << "animate: frame " << frame << "/" << frames << " of pass " << (done - 1) / frames + 1
-          << "/" << passes << " (a warm-up, then the timed passes)\n"
-          << std::flush;
+          << "/" << passes << what << std::flush;
     }
   };
   return out;
+}
+
+void RunOutput::apply_timing_to(RunOptions& options) const {
+  options.max_frames = max_frames;
+  options.warm_up = warm_up;
+  options.timing_repetitions = timing_repetitions;
+  options.progress = progress;
+}
+
+void RunOutput::apply_to(RunOptions& options, const SourceKind& kind) const {
+  apply_timing_to(options);
+  options.on_frame = on_frame;
+  options.keep_frames = false;
+  if (!csv) return;
+  csv->open(fs::path(dir) / "frames.csv");
+  if (!*csv) throw UsageError("--out: cannot write into '" + dir + "'");
+  kind.write_csv_header(*csv);
+  options.on_record = [csv = csv, row = kind.write_csv_row](const FrameRecord& record) {
+    row(*csv, record);
+  };
 }
 
 void RunOutput::finish() const {
@@ -157,13 +181,12 @@ void RunOutput::finish() const {
   }
 }
 
-void write_run_outputs(const std::string& dir, const SourceKind& kind, const AnimationRun& run,
-                       const nlohmann::json& summary) {
-  std::ofstream csv(fs::path(dir) / "frames.csv");
-  kind.write_csv(csv, run);
+void RunOutput::write_summary(const nlohmann::json& summary) const {
+  if (dir.empty()) return;
+  csv->close();
   std::ofstream json(fs::path(dir) / "summary.json");
   json << summary.dump(2) << "\n";
-  if (!csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");
+  if (!*csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");
 }
 
 int report_scene_input_errors(const std::function<int()>& body, std::ostream& err,

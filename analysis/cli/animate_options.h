@@ -2,6 +2,7 @@
 // a scene, analysis/cli/animate_scene.cpp).
 #pragma once
 
+#include <fstream>
 #include <functional>
 #include <iosfwd>
 #include <memory>
@@ -31,7 +32,9 @@ Sampling read_sampling(const CliArgs& args);
 // What every form of `oflab-cli animate` does with its output and timing options: --frames N
 // (at most N frames; -1 for all), --repeat-timing N (timed passes after an untimed warm-up,
 // 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions; analysis/runs/run_driver.h),
-// --out DIR (created, or an existing empty one; --force for a non-empty one), --frames-png
+// --no-warm-up (the timed passes only), --out DIR (created, or an existing empty one;
+// --force for a non-empty one; DIR/frames.csv is written row by row as the run plays, so a
+// long run keeps no per-frame records, and DIR/summary.json after it), --frames-png
 // (each frame as DIR/frame_NNNNN.png; needs --out), --video FILE (the frames as an MP4, GIF
 // or Ogg Theora video by FILE's extension, formats/video_file.h; an existing FILE needs
 // --force) at --fps N (default 30) and --quiet (no progress lines; otherwise runs of 200
@@ -42,7 +45,9 @@ constexpr int kMaxTimingRepetitions = 1000;
 struct RunOutput {
   int max_frames = -1;
   int timing_repetitions = kDefaultTimingRepetitions;
+  bool warm_up = true;                              // false with --no-warm-up
   std::string dir;                                  // empty without --out
+  std::shared_ptr<std::ofstream> csv;               // DIR/frames.csv (opened by apply_to), empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png and --video
   std::function<void(int, int)> progress;
   std::shared_ptr<VideoWriter> video;               // empty without --video
@@ -51,23 +56,19 @@ struct RunOutput {
   // naming --video when it cannot be completed.
   void finish() const;
 
-  // Sets max_frames, the timing (a warm-up, timing_repetitions timed passes), on_frame and
-  // progress of a run's options (RunOptions, PlayOptions).
-  template <class Options>
-  void apply_to(Options& options) const {
-    options.max_frames = max_frames;
-    options.warm_up = true;
-    options.timing_repetitions = timing_repetitions;
-    options.on_frame = on_frame;
-    options.progress = progress;
-  }
+  // Sets max_frames, the timing (warm-up, timing_repetitions timed passes), on_frame,
+  // progress and the records of a run's options: the run keeps no frames, and with --out
+  // each frame's row of `kind`'s CSV goes into DIR/frames.csv as the run hands it on.
+  void apply_to(RunOptions& options, const SourceKind& kind) const;
+  // Only max_frames, the timing and progress (the run keeps its frames; no CSV, no images):
+  // for commands that write their own outputs from the returned run.
+  void apply_timing_to(RunOptions& options) const;
+
+  // Writes DIR/summary.json (`summary`) and completes DIR/frames.csv after the run (nothing
+  // without --out). Throws UsageError naming --out when either cannot be written.
+  void write_summary(const nlohmann::json& summary) const;
 };
 RunOutput read_run_output(const CliArgs& args, std::ostream& err);
-
-// Writes DIR/frames.csv (kind.write_csv of `run`) and DIR/summary.json (`summary`).
-// Throws UsageError naming --out when either cannot be written.
-void write_run_outputs(const std::string& dir, const SourceKind& kind, const AnimationRun& run,
-                       const nlohmann::json& summary);
 
 // The scene forms of `oflab-cli animate` (analysis/cli/animate_scene.cpp,
 // analysis/cli/animate_scene_shifting.cpp).

@@ -73,8 +73,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   PlayOptions options;
   options.conventional = a.has("--compare-conventional");
   const RunOutput output = read_run_output(a, err);
-  output.apply_to(options);
   const SourceKind& kind = source_kind("scene");
+  output.apply_to(options, kind);
   const AnimationRun result = kind.play(source, options);
   nlohmann::json j = kind.summary_json(result);
   j["scene"] = source.scene->name;
@@ -83,7 +83,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["thresholds"] = settings.engine.thresholds;
   j["skip_hidden"] = settings.skip_hidden;
   output.finish();
-  if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
+  output.write_summary(j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {

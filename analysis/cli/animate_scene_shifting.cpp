@@ -59,8 +59,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   settings.sampling = read_sampling(a);
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
-  output.apply_to(options);
   const SourceKind& kind = source_kind("scene-shifting");
+  output.apply_to(options, kind);
   const AnimationRun result = kind.play(source, options);
   const double eps = settings.epsilon_px;
   nlohmann::json j = kind.summary_json(result);
@@ -70,7 +70,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["thresholds"] = {eps, eps, eps, eps};  // the one budget, epsilon, stands for every term
   j["skip_hidden"] = false;
   output.finish();
-  if (!output.dir.empty()) write_run_outputs(output.dir, kind, result, j);
+  output.write_summary(j);
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {

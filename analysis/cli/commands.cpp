@@ -1,6 +1,8 @@
 #include "cli/commands.h"
 
+#include <exception>
 #include <ostream>
+#include <string>
 
 #include "content/layer_content.h"
 #include "engine/reuse_policy.h"
@@ -23,7 +25,8 @@ std::string animate_usage() {
   usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
   usage +=
       "               [--repeat-timing N]   (timed passes after a warm-up, default " +
-      std::to_string(kDefaultTimingRepetitions) + ")\n";
+      std::to_string(kDefaultTimingRepetitions) + ")\n"
+      "               [--no-warm-up] [--repeat N]   (the script N times back to back)\n";
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
@@ -31,8 +34,8 @@ std::string animate_usage() {
       "               [--compare-conventional] [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
-      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --out, --video,\n"
-      "               --json, --quiet as above]\n"
+      "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --no-warm-up,\n"
+      "               --out, --video, --json, --quiet as above]\n"
       "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
   return usage;
 }
@@ -107,6 +110,19 @@ int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   }
   err << "oflab-cli: unknown command '" << args[0] << "' (try oflab-cli --help)\n";
   return 2;
+}
+
+int run_guarded(const char* program, const std::function<int()>& body, std::ostream& err) {
+  try {
+    return body();
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    for (char& c : what) c = c == '\n' ? ' ' : c;  // one line
+    err << program << ": internal error: " << what << "\n";
+  } catch (...) {
+    err << program << ": internal error: an unknown exception\n";
+  }
+  return kInternalErrorExitCode;
 }
 
 }  // namespace oflab

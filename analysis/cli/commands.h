@@ -1,8 +1,10 @@
 // The subcommands of oflab-cli. Each takes its arguments (after the subcommand name) and
 // the output streams, and returns the process exit code: 0 on success, 2 on bad input
-// (one line on `err` naming the argument), 1 on a failure while running.
+// (one line on `err` naming the argument), 1 on a failure while running, and
+// kInternalErrorExitCode when an exception escapes every command (a bug, or memory run out).
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -50,5 +52,14 @@ int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostr
 
 // Dispatches argv[1..] to a subcommand; prints help for no arguments or --help.
 int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);
+
+// The exit code of oflab-cli and oflab when an exception escaped everything that turns
+// errors into messages.
+constexpr int kInternalErrorExitCode = 3;
+
+// A main's last resort: runs `body` and returns its exit code; any exception escaping it
+// (std::exception or not) becomes one line on `err`, "<program>: internal error: <what>",
+// and kInternalErrorExitCode instead of an abort.
+int run_guarded(const char* program, const std::function<int()>& body, std::ostream& err);
 
 }  // namespace oflab

@@ -82,7 +82,7 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const RunSource source = read_source(a, &kind);
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
-  output.apply_to(options);
+  output.apply_timing_to(options);
   const std::vector<PolicyRun> runs = run_policies(*kind, source, policies, options);
   std::vector<PolicyRow> rows;
   for (const PolicyRun& r : runs) rows.push_back(policy_row(r));

@@ -15,52 +15,73 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The summary's totals from the per-frame records (baseline pixels and the IoU are summed
-// in the loop, where the baseline's frames are at hand).
-void summarise(AnimationRun& run) {
-  RunSummary& s = run.summary;
-  std::vector<double> times;
-  double psnr_sum = 0.0;
-  int psnr_count = 0;
-  for (std::size_t i = 0; i < run.frames.size(); ++i) {
-    const AnimationFrame& f = run.frames[i];
-    for (int l = 0; l < kLevelCount; ++l) s.levels[l] += f.levels[l];
-    s.back_facing += f.back_facing;
-    s.outside_frustum += f.outside_frustum;
-    s.hidden += f.hidden;
-    s.clipped += f.clipped;
-    s.hidden_area_px += f.hidden_area_px;
-    s.pixels += f.pixels_written;
-    s.model_work += f.model_work;
-    s.render_ms += f.render_ms;
-    s.max_photometric_error = std::max(s.max_photometric_error, f.max_photometric_error);
-    s.time_ms += f.time_ms;
-    s.visibility_time_ms += f.visibility_ms;
-    s.max_measured_error_px = std::max(s.max_measured_error_px, f.max_measured_error_px);
-    for (const FrameReport& r : f.layer_reports) {
-      if (!r.visible || !std::isfinite(r.measured_error_px)) continue;
-      const double excess = r.measured_error_px - r.estimated_error_px;
-      s.max_excess_px = std::isnan(s.max_excess_px) ? excess : std::max(s.max_excess_px, excess);
+// The summary's totals, added frame by frame as the records come (baseline pixels and the
+// IoU are summed in the loop, where the baseline's frames are at hand). Keeps the finite
+// frame times (8 bytes each) for the exact medians.
+class SummaryTotals {
+ public:
+  explicit SummaryTotals(RunSummary& summary) : s_(summary) {}
+
+  void add(const FrameRecord& r) {
+    const AnimationFrame& f = r.frame;
+    if (first_) s_.layers = f.layers;
+    first_ = false;
+    for (int l = 0; l < kLevelCount; ++l) s_.levels[l] += f.levels[l];
+    s_.back_facing += f.back_facing;
+    s_.outside_frustum += f.outside_frustum;
+    s_.hidden += f.hidden;
+    s_.clipped += f.clipped;
+    s_.hidden_area_px += f.hidden_area_px;
+    s_.pixels += f.pixels_written;
+    s_.model_work += f.model_work;
+    s_.render_ms += f.render_ms;
+    s_.max_photometric_error = std::max(s_.max_photometric_error, f.max_photometric_error);
+    s_.time_ms += f.time_ms;
+    s_.visibility_time_ms += f.visibility_ms;
+    s_.max_measured_error_px = std::max(s_.max_measured_error_px, f.max_measured_error_px);
+    for (const FrameReport& l : f.layer_reports) {
+      if (!l.visible || !std::isfinite(l.measured_error_px)) continue;
+      const double excess = l.measured_error_px - l.estimated_error_px;
+      s_.max_excess_px = std::isnan(s_.max_excess_px) ? excess : std::max(s_.max_excess_px, excess);
     }
-    times.push_back(f.time_ms);
-    if (std::isfinite(run.baseline_ms[i])) s.baseline_time_ms += run.baseline_ms[i];
-    if (std::isfinite(run.conventional_ms[i])) s.conventional_time_ms += run.conventional_ms[i];
-    if (std::isfinite(run.psnr_db[i])) {
-      psnr_sum += run.psnr_db[i];
-      ++psnr_count;
+    keep_finite(times_, f.time_ms);
+    if (keep_finite(baseline_times_, r.baseline_ms)) s_.baseline_time_ms += r.baseline_ms;
+    if (keep_finite(conventional_times_, r.conventional_ms))
+      s_.conventional_time_ms += r.conventional_ms;
+    if (std::isfinite(r.psnr_db)) {
+      psnr_sum_ += r.psnr_db;
+      ++psnr_count_;
     }
   }
-  s.median_frame_ms = median_of(times);
-  s.baseline_median_frame_ms = median_of(run.baseline_ms);
-  s.conventional_median_frame_ms = median_of(run.conventional_ms);
-  s.mean_psnr_db = psnr_count ? psnr_sum / psnr_count : kNaN;
-  s.time_saved = s.baseline_time_ms > 0.0 ? 1.0 - s.time_ms / s.baseline_time_ms : 0.0;
-  s.work_saved = s.baseline_pixels > 0
-                     ? 1.0 - static_cast<double>(s.pixels) / static_cast<double>(s.baseline_pixels)
-                     : 0.0;
-  s.model_work_saved = s.baseline_model_work > 0.0 ? 1.0 - s.model_work / s.baseline_model_work
-                                                   : 0.0;
-}
+
+  // The medians, the mean PSNR and the savings, once every frame is added.
+  void finish() {
+    s_.median_frame_ms = median_of(std::move(times_));
+    s_.baseline_median_frame_ms = median_of(std::move(baseline_times_));
+    s_.conventional_median_frame_ms = median_of(std::move(conventional_times_));
+    s_.mean_psnr_db = psnr_count_ ? psnr_sum_ / psnr_count_ : kNaN;
+    s_.time_saved = s_.baseline_time_ms > 0.0 ? 1.0 - s_.time_ms / s_.baseline_time_ms : 0.0;
+    s_.work_saved =
+        s_.baseline_pixels > 0
+            ? 1.0 - static_cast<double>(s_.pixels) / static_cast<double>(s_.baseline_pixels)
+            : 0.0;
+    s_.model_work_saved =
+        s_.baseline_model_work > 0.0 ? 1.0 - s_.model_work / s_.baseline_model_work : 0.0;
+  }
+
+ private:
+  static bool keep_finite(std::vector<double>& v, double x) {
+    if (!std::isfinite(x)) return false;
+    v.push_back(x);
+    return true;
+  }
+
+  RunSummary& s_;
+  bool first_ = true;
+  std::vector<double> times_, baseline_times_, conventional_times_;
+  double psnr_sum_ = 0.0;
+  long psnr_count_ = 0;
+};
 
 }  // namespace
 
@@ -90,40 +111,47 @@ struct TimeSamples {
   std::vector<std::vector<double>> layers, layer_render, layer_warp;
 };
 
-// The passes of one run: the first records the frames (and PSNR, IoU, on_frame); the last
-// `timed` ones are timed.
+// The passes of one run. One pass records the frames (PSNR, IoU, on_frame, on_record): the
+// timed pass when there is one, so records stream out as they are played; otherwise the
+// first, whose records are held until the timed passes' medians are known.
 class RunLoop {
  public:
   RunLoop(Animator& animator, Animator* baseline, VtkSceneRenderer* conventional,
           const RunOptions& options)
-      : animator_(animator), baseline_(baseline), conventional_(conventional), options_(options) {
+      : animator_(animator),
+        baseline_(baseline),
+        conventional_(conventional),
+        options_(options),
+        single_timed_(options.timing_repetitions == 1),
+        totals_(run_.summary) {
     const int all = animator.frame_count();
     frames_ = options.max_frames < 0 ? all : std::min(all, options.max_frames);
     passes_ = options.timing_repetitions + (options.warm_up ? 1 : 0);
-    samples_.resize(static_cast<std::size_t>(std::max(frames_, 0)));
+    if (!single_timed_) samples_.resize(static_cast<std::size_t>(std::max(frames_, 0)));
   }
 
   AnimationRun run() {
     for (int pass = 0; pass < passes_; ++pass) play_pass(pass);
-    take_medians();
+    if (!single_timed_) emit_medians();
     run_.summary.frames = frames_;
-    run_.summary.layers = run_.frames.empty() ? 0 : run_.frames.front().layers;
     run_.summary.conventional_iou =
         conventional_ && baseline_ && frames_ > 0 ? iou_sum_ / frames_ : kNaN;
-    summarise(run_);
+    totals_.finish();
     return std::move(run_);
   }
 
  private:
+  int record_pass() const { return single_timed_ ? passes_ - 1 : 0; }
+
   bool conventional_in(int pass) const {
     if (!conventional_) return false;
-    if (pass == 0) return true;  // the recording pass, for the IoU
+    if (pass == 0 || pass == record_pass()) return true;  // warming up; the IoU
     const int timed_index = pass - (options_.warm_up ? 1 : 0);
     return options_.conventional_repetitions < 0 || timed_index < options_.conventional_repetitions;
   }
 
   void play_pass(int pass) {
-    const bool record = pass == 0;
+    const bool record = pass == record_pass();
     const bool timed = pass >= (options_.warm_up ? 1 : 0);
     const bool with_conventional = conventional_in(pass);
     for (int i = 0; i < frames_; ++i) {
@@ -138,25 +166,42 @@ class RunLoop {
         }
       }
       if (with_conventional) conventional_ms = conventional_->render(animator_.view());
-      if (record) record_frame(i, f);
-      if (timed)
+      if (record) record_frame(i, f, baseline_ms, conventional_ms);
+      if (timed && !single_timed_)
         add_samples(samples_[static_cast<std::size_t>(i)], f, baseline_ms, conventional_ms);
       if (options_.progress) options_.progress(pass * frames_ + i + 1, passes_ * frames_);
     }
   }
 
-  // The frame's deterministic facts, its PSNR and IoU against the baseline, on_frame.
-  void record_frame(int i, const AnimationFrame& f) {
-    run_.frames.push_back(f);
+  // The frame's deterministic facts, its PSNR and IoU against the baseline, on_frame; then
+  // the record itself, or with several timed passes the frame and PSNR until the medians.
+  void record_frame(int i, const AnimationFrame& f, double baseline_ms, double conventional_ms) {
     double psnr = kNaN;
     if (baseline_ && (options_.psnr_when_nothing_drawn || f.drawn() > 0)) {
       psnr = psnr_db(animator_.image(), baseline_->image());
     }
     if (conventional_ && baseline_)
       iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
-    run_.psnr_db.push_back(psnr);
     if (options_.on_frame) options_.on_frame(i, animator_.image());
     if (options_.on_view) options_.on_view(i, animator_.view());
+    if (single_timed_) {
+      emit({f, psnr, baseline_ms, conventional_ms}, options_.keep_frames);
+      return;
+    }
+    run_.frames.push_back(f);
+    run_.psnr_db.push_back(psnr);
+  }
+
+  // A record with its final times: into the totals, to on_record and, with `store`, into
+  // the run.
+  void emit(const FrameRecord& r, bool store) {
+    totals_.add(r);
+    if (options_.on_record) options_.on_record(r);
+    if (!store) return;
+    run_.frames.push_back(r.frame);
+    run_.psnr_db.push_back(r.psnr_db);
+    run_.baseline_ms.push_back(r.baseline_ms);
+    run_.conventional_ms.push_back(r.conventional_ms);
   }
 
   static void add_samples(TimeSamples& t, const AnimationFrame& f, double baseline_ms,
@@ -179,7 +224,8 @@ class RunLoop {
     }
   }
 
-  void take_medians() {
+  // Several timed passes: each held frame's times become their medians, then it is emitted.
+  void emit_medians() {
     for (std::size_t i = 0; i < run_.frames.size(); ++i) {
       AnimationFrame& f = run_.frames[i];
       const TimeSamples& t = samples_[i];
@@ -195,6 +241,13 @@ class RunLoop {
       }
       run_.baseline_ms.push_back(median_of(t.baseline));
       run_.conventional_ms.push_back(median_of(t.conventional));
+      emit({f, run_.psnr_db[i], run_.baseline_ms[i], run_.conventional_ms[i]}, false);
+    }
+    if (!options_.keep_frames) {
+      run_.frames = {};
+      run_.psnr_db = {};
+      run_.baseline_ms = {};
+      run_.conventional_ms = {};
     }
   }
 
@@ -202,11 +255,13 @@ class RunLoop {
   Animator* baseline_;
   VtkSceneRenderer* conventional_;
   const RunOptions& options_;
+  const bool single_timed_;
   int frames_ = 0;
   int passes_ = 0;
-  std::vector<TimeSamples> samples_;  // per frame
+  std::vector<TimeSamples> samples_;  // per frame, with several timed passes
   double iou_sum_ = 0.0;
   AnimationRun run_;
+  SummaryTotals totals_;
 };
 
 }  // namespace

@@ -23,6 +23,16 @@ class VtkSceneRenderer;
 // Timed passes of `oflab-cli animate` unless --repeat-timing says otherwise.
 constexpr int kDefaultTimingRepetitions = 15;
 
+// One frame of a run as the driver hands it on: the frame (its times, and its layer reports'
+// times, the medians over the timed passes), its PSNR against the baseline and the
+// baseline's and conventional renderer's times in milliseconds (NaN: not measured, not run).
+struct FrameRecord {
+  const AnimationFrame& frame;
+  double psnr_db;
+  double baseline_ms;
+  double conventional_ms;
+};
+
 struct RunOptions {
   int max_frames = -1;  // play at most this many frames (-1: all of the animator's)
   // A first pass whose times are thrown away (caches, allocator and branch predictors
@@ -31,7 +41,7 @@ struct RunOptions {
   // Timed passes (>= 1); per-frame times are medians over them.
   int timing_repetitions = 1;
   // Timed passes with the conventional renderer: the first this many (-1: all). It also
-  // renders in the first pass, warm-up or not, for the IoU.
+  // renders in the first pass, warm-up or not, and in the recording pass, for the IoU.
   int conventional_repetitions = -1;
   // PSNR of frames in which the animator drew nothing: measured (both images usually empty:
   // kIdenticalPsnrDb) when true, NaN when false (the single plane's "not visible" frames).
@@ -43,6 +53,15 @@ struct RunOptions {
   // Called with each frame's view (Animator::view(): what the frame shows, as a viewer pose)
   // in the first pass, e.g. to check that two runs played the same poses.
   std::function<void(int, const ViewerPose&)> on_view;
+  // Called with each frame's record, once per frame and in frame order: as the frames are
+  // played when there is one timed pass, after the last pass otherwise (the medians need
+  // them all). E.g. to write the per-frame CSV as a long run goes.
+  std::function<void(const FrameRecord&)> on_record;
+  // Keep every frame's record in the returned run (AnimationRun's per-frame vectors). With
+  // false they come back empty and, with one timed pass, a run's memory does not grow with
+  // its frames but for 8 bytes per frame per timed series (engine, baseline, conventional)
+  // kept for the exact median frame times: long runs read the records through on_record.
+  bool keep_frames = true;
 };
 
 // Totals over a run. Times in milliseconds of wall time; "baseline" is the exact re-render
@@ -86,6 +105,7 @@ struct RunSummary {
 };
 
 struct AnimationRun {
+  // Per frame, empty when RunOptions::keep_frames is false.
   std::vector<AnimationFrame> frames;
   std::vector<double> psnr_db;          // per frame, animator against baseline (NaN: not measured)
   std::vector<double> baseline_ms;      // per frame (NaN when not run)
@@ -99,10 +119,13 @@ struct AnimationRun {
 // options say (warm-up and timed passes, each restarting from start()). `baseline` (may be
 // null) must play the same frames from the same source; its image is the PSNR reference.
 // `conventional` (may be null) renders animator.scene() from animator.view() each frame;
-// its IoU is measured against the baseline's image. The frames returned are the first
-// pass's, with every time (the frame's, its parts, its layer reports', the baseline's and
-// the conventional renderer's) replaced by its median over the timed passes. Throws what
-// the animators throw, and std::invalid_argument for timing_repetitions < 1.
+// its IoU is measured against the baseline's image. The frames recorded (returned, and
+// handed to on_record and on_frame) are those of one pass: the first when there are several
+// timed passes, with every time (the frame's, its parts, its layer reports', the
+// baseline's and the conventional renderer's) replaced by its median over the timed passes;
+// the timed pass itself when there is one (the frames' facts are the same in every pass).
+// The summary is accumulated frame by frame. Throws what the animators throw, and
+// std::invalid_argument for timing_repetitions < 1.
 AnimationRun run_animator(Animator& animator, Animator* baseline, VtkSceneRenderer* conventional,
                           const RunOptions& options);
 

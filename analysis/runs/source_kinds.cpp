@@ -29,7 +29,16 @@ Settings with_baseline(Settings settings, bool baseline) {
 
 std::unique_ptr<Animator> make_plane(const RunSource& source, bool baseline) {
   return make_plane_animator(source.script, source.texture,
-                             with_baseline(source.settings.engine, baseline));
+                             with_baseline(source.settings.engine, baseline), source.repeat);
+}
+
+// A kind's CSV of a run that kept its frames: the header, then a row per frame.
+template <void (*Header)(std::ostream&), void (*Row)(std::ostream&, const FrameRecord&)>
+void write_csv_of(std::ostream& out, const AnimationRun& run) {
+  Header(out);
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    Row(out, {run.frames[i], run.psnr_db[i], run.baseline_ms[i], run.conventional_ms[i]});
+  }
 }
 
 AnimationRun play_plane(const RunSource& source, const PlayOptions& options) {
@@ -37,48 +46,51 @@ AnimationRun play_plane(const RunSource& source, const PlayOptions& options) {
   const std::unique_ptr<Animator> baseline = options.baseline ? make_plane(source, true) : nullptr;
   RunOptions run_options = options;
   run_options.psnr_when_nothing_drawn = false;  // NaN while the plane is not visible
-  return run_animator(*animator, baseline.get(), nullptr, run_options);
+  // Frames per level, the not visible ones at the level their engine reported, counted as
+  // the records come (a long run keeps no frames).
+  std::array<long, kLevelCount> frames_at{};
+  long invisible = 0;
+  run_options.on_record = [&](const FrameRecord& record) {
+    const FrameReport& r = record.frame.layer_reports.at(0);
+    ++frames_at[static_cast<int>(r.level)];
+    if (!r.visible) ++invisible;
+    if (options.on_record) options.on_record(record);
+  };
+  AnimationRun run = run_animator(*animator, baseline.get(), nullptr, run_options);
+  nlohmann::json levels;
+  for (int l = 0; l < kLevelCount; ++l) levels[level_name(static_cast<Level>(l))] = frames_at[l];
+  run.facts["frame_levels"] = levels;
+  run.facts["invisible_frames"] = invisible;
+  return run;
 }
 
-// The plane's engine report of frame i (exactly one per frame).
-const FrameReport& plane_report(const AnimationRun& run, std::size_t i) {
-  return run.frames.at(i).layer_reports.at(0);
-}
-
-void write_plane_csv(std::ostream& out, const AnimationRun& run) {
+void write_plane_csv_header(std::ostream& out) {
   out << "frame,level,visible,flow_translate,flow_affine,flow_perspective,flow_higher,"
          "err_translate,err_affine,err_perspective,err_higher,estimated_error_px,"
          "measured_error_px,affine_view_error_px,psnr_db,time_ms,pixels_written,render_ms,"
          "warp_ms,model_work,photometric_error,note\n";
-  for (std::size_t i = 0; i < run.frames.size(); ++i) {
-    const FrameReport& r = plane_report(run, i);
-    out << r.frame << ',' << level_name(r.level) << ',' << (r.visible ? 1 : 0);
-    for (double f : r.flow) out << ',' << f;
-    for (double e : r.accumulated) out << ',' << e;
-    out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ','
-        << r.affine_view_error_px << ',' << run.psnr_db[i] << ',' << r.time_ms << ','
-        << r.pixels_written << ',' << r.render_ms << ',' << r.warp_ms << ',' << r.model_work << ','
-        << r.photometric_error << ",\"";
-    for (char c : r.note) out << (c == '"' ? '\'' : c);
-    out << "\"\n";
-  }
 }
 
-// Levels count frames here, the not visible ones at the level their engine reported.
+// The plane's engine report of the frame (exactly one per frame).
+void write_plane_csv_row(std::ostream& out, const FrameRecord& record) {
+  const FrameReport& r = record.frame.layer_reports.at(0);
+  out << r.frame << ',' << level_name(r.level) << ',' << (r.visible ? 1 : 0);
+  for (double f : r.flow) out << ',' << f;
+  for (double e : r.accumulated) out << ',' << e;
+  out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ','
+      << r.affine_view_error_px << ',' << record.psnr_db << ',' << r.time_ms << ','
+      << r.pixels_written << ',' << r.render_ms << ',' << r.warp_ms << ',' << r.model_work << ','
+      << r.photometric_error << ",\"";
+  for (char c : r.note) out << (c == '"' ? '\'' : c);
+  out << "\"\n";
+}
+
+// Levels count frames here (the facts play_plane counted).
 nlohmann::json plane_summary_json(const AnimationRun& run) {
   const RunSummary& s = run.summary;
-  std::array<int, kLevelCount> frames_at{};
-  int invisible = 0;
-  for (std::size_t i = 0; i < run.frames.size(); ++i) {
-    const FrameReport& r = plane_report(run, i);
-    ++frames_at[static_cast<int>(r.level)];
-    if (!r.visible) ++invisible;
-  }
-  nlohmann::json levels;
-  for (int l = 0; l < kLevelCount; ++l) levels[level_name(static_cast<Level>(l))] = frames_at[l];
   return {{"frames", s.frames},
-          {"levels", levels},
-          {"invisible_frames", invisible},
+          {"levels", run.facts.at("frame_levels")},
+          {"invisible_frames", run.facts.at("invisible_frames")},
           {"time_saved", s.time_saved},
           {"work_saved", s.work_saved},
           {"max_measured_error_px", s.max_measured_error_px},
@@ -122,23 +134,24 @@ AnimationRun play_scene(const RunSource& source, const PlayOptions& options) {
   return run;
 }
 
-void write_scene_csv(std::ostream& out, const AnimationRun& run) {
+void write_scene_csv_header(std::ostream& out) {
   out << "frame,polygons,drawn,none,translate,affine,perspective,rerender,back_facing,"
          "outside_frustum,hidden,clipped,time_ms,update_ms,composite_ms,visibility_ms,"
          "pixels_written,"
          "pixels_composited,hidden_area_px,max_measured_error_px,psnr_db,rerender_time_ms,"
          "conventional_time_ms,render_ms,model_work,max_photometric_error\n";
-  for (std::size_t i = 0; i < run.frames.size(); ++i) {
-    const AnimationFrame& r = run.frames[i];
-    out << r.frame << ',' << r.layers << ',' << r.drawn();
-    for (int c : r.levels) out << ',' << c;
-    out << ',' << r.back_facing << ',' << r.outside_frustum << ',' << r.hidden << ',' << r.clipped
-        << ',' << r.time_ms << ',' << r.update_ms << ',' << r.composite_ms << ',' << r.visibility_ms
-        << ',' << r.pixels_written << ',' << r.pixels_composited << ',' << r.hidden_area_px << ','
-        << r.max_measured_error_px << ',' << run.psnr_db[i] << ',' << run.baseline_ms[i] << ','
-        << run.conventional_ms[i] << ',' << r.render_ms << ',' << r.model_work << ','
-        << r.max_photometric_error << '\n';
-  }
+}
+
+void write_scene_csv_row(std::ostream& out, const FrameRecord& record) {
+  const AnimationFrame& r = record.frame;
+  out << r.frame << ',' << r.layers << ',' << r.drawn();
+  for (int c : r.levels) out << ',' << c;
+  out << ',' << r.back_facing << ',' << r.outside_frustum << ',' << r.hidden << ',' << r.clipped
+      << ',' << r.time_ms << ',' << r.update_ms << ',' << r.composite_ms << ',' << r.visibility_ms
+      << ',' << r.pixels_written << ',' << r.pixels_composited << ',' << r.hidden_area_px << ','
+      << r.max_measured_error_px << ',' << record.psnr_db << ',' << record.baseline_ms << ','
+      << record.conventional_ms << ',' << r.render_ms << ',' << r.model_work << ','
+      << r.max_photometric_error << '\n';
 }
 
 nlohmann::json scene_levels_json(const RunSummary& s, bool as_percent) {
@@ -236,9 +249,15 @@ nlohmann::json shifting_summary_json(const AnimationRun& run) {
 
 const std::vector<SourceKind>& source_kinds() {
   static const std::vector<SourceKind> kinds = {
-      {"plane", make_plane, play_plane, write_plane_csv, plane_summary_json},
-      {"scene", make_scene, play_scene, write_scene_csv, scene_summary_json},
-      {"scene-shifting", make_shifting, play_shifting, write_scene_csv, shifting_summary_json},
+      {"plane", make_plane, play_plane,
+       write_csv_of<write_plane_csv_header, write_plane_csv_row>, write_plane_csv_header,
+       write_plane_csv_row, plane_summary_json},
+      {"scene", make_scene, play_scene,
+       write_csv_of<write_scene_csv_header, write_scene_csv_row>, write_scene_csv_header,
+       write_scene_csv_row, scene_summary_json},
+      {"scene-shifting", make_shifting, play_shifting,
+       write_csv_of<write_scene_csv_header, write_scene_csv_row>, write_scene_csv_header,
+       write_scene_csv_row, shifting_summary_json},
   };
   return kinds;
 }

@@ -27,6 +27,7 @@ namespace oflab {
 // settings.engine; the scene, viewer and settings; the scene, viewer and shifting.
 struct RunSource {
   MotionScript script;  // single plane
+  int repeat = 1;       // single plane: the script played this many times back to back
   Image texture;        // single plane, premultiplied RGBA
   std::shared_ptr<const Scene> scene;
   ViewerScript viewer;
@@ -48,9 +49,13 @@ struct SourceKind {
   // Plays the source; fills the run's facts. Throws as make, and std::runtime_error when
   // the conventional renderer cannot start.
   AnimationRun (*play)(const RunSource& source, const PlayOptions& options);
-  // One CSV row per frame, header first.
+  // One CSV row per frame, header first (write_csv_header, then write_csv_row per frame;
+  // a run without its frames, RunOptions::keep_frames false, writes the rows through
+  // on_record as it plays).
   void (*write_csv)(std::ostream& out, const AnimationRun& run);
-  // The run's JSON summary.
+  void (*write_csv_header)(std::ostream& out);
+  void (*write_csv_row)(std::ostream& out, const FrameRecord& record);
+  // The run's JSON summary (from its summary and facts: also of a run without its frames).
   nlohmann::json (*summary_json)(const AnimationRun& run);
 };
 

@@ -100,11 +100,15 @@ class Animator {
   virtual ViewerPose view() const = 0;
 };
 
-// Plays a motion script: frame k shows script.frames[k].pose. `texture` premultiplied RGBA.
-// image() is the engine's displayed layer composed into a camera-sized frame, transparent
-// (nothing) in frames where the plane is not visible; outlines() the displayed polygon.
-// Throws std::invalid_argument when the script has no frames.
+// Plays a motion script `repeat` times back to back (F = script.frames.size(), F * repeat
+// frames): frame k shows script.frames[k % F].pose, and the engine carries its state (the
+// displayed image, the accumulated error) from the last frame of one play to the first of
+// the next, as from any frame to the next. `texture` premultiplied RGBA. image() is the
+// engine's displayed layer composed into a camera-sized frame, transparent (nothing) in
+// frames where the plane is not visible; outlines() the displayed polygon. Throws
+// std::invalid_argument when the script has no frames, or repeat < 1 or F * repeat does not
+// fit an int.
 std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
-                                              const EngineSettings& settings);
+                                              const EngineSettings& settings, int repeat = 1);
 
 }  // namespace oflab

@@ -2,7 +2,9 @@
 // PlaneAnimator (core/engine/engine.h), its displayed layer composed into a camera-sized
 // frame, and the plane seen as a one-polygon scene (core/scene/scene.h plane_as_scene).
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "engine/animator.h"
 #include "image/composite.h"
@@ -14,14 +16,15 @@ namespace {
 class PlaneScriptAnimator final : public Animator {
  public:
   PlaneScriptAnimator(const MotionScript& script, const Image& texture,
-                      const EngineSettings& settings)
+                      const EngineSettings& settings, int repeat)
       : script_(script),
+        repeat_(repeat),
         texture_(make_layer(texture)),
         settings_(settings),
         scene_(plane_as_scene(script.frames.at(0).pose, texture)),
         image_(script.camera.width, script.camera.height) {}
 
-  int frame_count() const override { return static_cast<int>(script_.frames.size()); }
+  int frame_count() const override { return static_cast<int>(script_.frames.size()) * repeat_; }
   int frame() const override { return frame_; }
 
   AnimationFrame start() override {
@@ -31,10 +34,9 @@ class PlaneScriptAnimator final : public Animator {
   }
 
   AnimationFrame advance() override {
-    const ScriptFrame& previous = script_.frames.at(static_cast<size_t>(frame_));
+    const ScriptFrame& previous = script_frame(frame_);
     ++frame_;
-    return report(engine_->advance(previous.pose, previous.motion,
-                                   script_.frames.at(static_cast<size_t>(frame_)).pose));
+    return report(engine_->advance(previous.pose, previous.motion, script_frame(frame_).pose));
   }
 
   const Image& image() const override {
@@ -63,11 +65,15 @@ class PlaneScriptAnimator final : public Animator {
   const Scene& scene() const override { return scene_; }
 
   ViewerPose view() const override {
-    const size_t k = static_cast<size_t>(std::max(frame_, 0));
-    return viewer_for_pose(script_.frames[0].pose, script_.frames[k].pose);
+    return viewer_for_pose(script_.frames[0].pose, script_frame(std::max(frame_, 0)).pose);
   }
 
  private:
+  // The script frame shown at animation frame k (the script played over and over).
+  const ScriptFrame& script_frame(int k) const {
+    return script_.frames.at(static_cast<size_t>(k) % script_.frames.size());
+  }
+
   AnimationFrame report(const FrameReport& r) {
     visible_ = r.visible;
     level_ = r.level;
@@ -92,6 +98,7 @@ class PlaneScriptAnimator final : public Animator {
   }
 
   MotionScript script_;
+  int repeat_;
   Layer texture_;
   EngineSettings settings_;
   Scene scene_;
@@ -106,9 +113,16 @@ class PlaneScriptAnimator final : public Animator {
 }  // namespace
 
 std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
-                                              const EngineSettings& settings) {
+                                              const EngineSettings& settings, int repeat) {
   if (script.frames.empty()) throw std::invalid_argument("the motion script has no frames");
-  return std::make_unique<PlaneScriptAnimator>(script, texture, settings);
+  const long frames = static_cast<long>(script.frames.size());
+  if (repeat < 1 || frames * repeat > std::numeric_limits<int>::max()) {
+    throw std::invalid_argument("the motion script's " + std::to_string(frames) +
+                                " frames cannot be played " + std::to_string(repeat) +
+                                " times (1 .. " +
+                                std::to_string(std::numeric_limits<int>::max() / frames) + ")");
+  }
+  return std::make_unique<PlaneScriptAnimator>(script, texture, settings, repeat);
 }
 
 }  // namespace oflab

@@ -1,5 +1,6 @@
 // oflab: the teaching GUI. Parses the command line first (bad input exits 2 without
 // needing a display), then opens the window; all work happens in the oflab_gui library.
+// Its last resort is oflab-cli's (run_guarded, analysis/cli/commands.h).
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -8,8 +9,11 @@
 
 #include "app/app_runner.h"
 #include "app/launch_options.h"
+#include "cli/commands.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_main(int argc, char** argv) {
   oflab::LaunchOptions options;
   try {
     options = oflab::parse_launch_options(std::vector<std::string>(argv + 1, argv + argc));
@@ -25,4 +29,13 @@ int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
   return oflab::run_oflab(options, std::cout, std::cerr);
+}
+
+}  // namespace
+
+// An exception that reaches main (from the command line, the window's set-up, or one Qt's
+// event loop passes on) ends the process with one line and kInternalErrorExitCode, not an
+// abort.
+int main(int argc, char** argv) {
+  return oflab::run_guarded("oflab", [&] { return run_main(argc, argv); }, std::cerr);
 }

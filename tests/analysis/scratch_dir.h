@@ -9,16 +9,24 @@
 
 namespace oflab::testing {
 
-// A fresh, empty directory for the running test: <system temp>/<prefix>-<process id>-<test
-// name>, emptied first if it exists. The process id keeps the suites of several trees on
-// one machine apart. The caller removes it when done.
-inline std::filesystem::path fresh_test_dir(const std::string& prefix) {
+// The running test's directory, <system temp>/<prefix>-<process id>-<test name>, created
+// when missing but not emptied: for helpers that put several files into it during one
+// test. The process id keeps the suites of several trees on one machine apart.
+inline std::filesystem::path test_dir(const std::string& prefix) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() /
                        (prefix + "-" + std::to_string(::getpid()) + "-" +
                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::remove_all(dir);
   fs::create_directories(dir);
+  return dir;
+}
+
+// The same directory, fresh and empty (emptied first if it exists). The caller removes it
+// when done.
+inline std::filesystem::path fresh_test_dir(const std::string& prefix) {
+  const std::filesystem::path dir = test_dir(prefix);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
   return dir;
 }
 

@@ -18,6 +18,7 @@
 #include "formats/image_io.h"
 #include "formats/script_file.h"
 #include "runs/source_kinds.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -201,9 +202,7 @@ TEST(AnimateCommand, PlaneFlyingIntoTheEyePlaysToItsEndClippedThenNotVisible) {
 }
 
 TEST(AnimateCommand, PlaneLeavingTheImageIsNotVisibleInTheCsv) {
-  const fs::path dir = fs::temp_directory_path() / "oflab-leaving-plane";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::fresh_test_dir("oflab-leaving-plane");
   nlohmann::json script =
       nlohmann::json::parse(std::ifstream(resolve_script_path("translation-1")));
   script["segments"][0]["frames"] = 30;
@@ -279,6 +278,29 @@ TEST(AnimateCommand, RepeatTimingTakesAPositiveWholeNumber) {
   EXPECT_NE(scene.err.find("--repeat-timing"), std::string::npos) << scene.err;
 }
 
+TEST(AnimateCommand, RepeatPlaysTheScriptAgainAndTakesAWholeNumberInItsRange) {
+  const Cli once = cli({"animate", "--script", "zoom", "--json", "--quiet", "--repeat-timing", "1"});
+  ASSERT_EQ(once.code, 0) << once.err;
+  const int frames = nlohmann::json::parse(once.out).at("frames");
+  const Cli thrice = cli({"animate", "--script", "zoom", "--repeat", "3", "--no-warm-up",
+                          "--repeat-timing", "1", "--json", "--quiet"});
+  ASSERT_EQ(thrice.code, 0) << thrice.err;
+  const auto j = nlohmann::json::parse(thrice.out);
+  EXPECT_EQ(j.at("frames"), 3 * frames);
+  int counted = 0;
+  for (const auto& [level, n] : j.at("levels").items()) counted += n.get<int>();
+  EXPECT_EQ(counted, 3 * frames);
+  for (const char* n : {"0", "-1", "x", "2.5", "1000001"}) {
+    const Cli c = cli({"animate", "--script", "zoom", "--repeat", n});
+    EXPECT_EQ(c.code, 2) << n;
+    EXPECT_NE(c.err.find("--repeat"), std::string::npos) << c.err;
+    EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+  }
+  const Cli scene = cli({"animate", "--scene", "four-cubes", "--script", "circle", "--repeat", "2"});
+  EXPECT_EQ(scene.code, 2);
+  EXPECT_NE(scene.err.find("--repeat"), std::string::npos) << scene.err;
+}
+
 TEST(AnimateCommand, AllScriptsRunInAllModes) {
   for (const std::string& s : shipped_script_names()) {
     for (const char* mode : {"perspective", "affine", "rerender", "exact"}) {
@@ -289,8 +311,8 @@ TEST(AnimateCommand, AllScriptsRunInAllModes) {
 }
 
 TEST(AnimateCommand, WritesCsvAndRefusesToOverwriteWithoutForce) {
-  const fs::path dir = fs::temp_directory_path() / "oflab_animate_test_out";
-  fs::remove_all(dir);
+  const fs::path scratch = testing::fresh_test_dir("oflab-animate-out");
+  const fs::path dir = scratch / "out";
   Cli c = cli({"animate", "--script", "zoom", "--frames", "10", "--out", dir.string(),
                "--frames-png", "--quiet"});
   ASSERT_EQ(c.code, 0) << c.err;
@@ -307,20 +329,21 @@ TEST(AnimateCommand, WritesCsvAndRefusesToOverwriteWithoutForce) {
   EXPECT_NE(c.err.find("--force"), std::string::npos);
   c = cli({"animate", "--script", "zoom", "--frames", "10", "--out", dir.string(), "--force"});
   EXPECT_EQ(c.code, 0) << c.err;
-  fs::remove_all(dir);
+  fs::remove_all(scratch);
 }
 
 // A script file with one thing wrong must name the file, the frame or segment and the field.
 void expect_script_error(const std::string& text, const std::string& where,
                          const std::string& field) {
-  const fs::path file = fs::temp_directory_path() / "oflab_bad_script.json";
+  const fs::path dir = testing::fresh_test_dir("oflab-bad-script");
+  const fs::path file = dir / "bad_script.json";
   std::ofstream(file) << text;
   const Cli c = cli({"animate", "--script", file.string(), "--frames", "3"});
   EXPECT_EQ(c.code, 2) << text;
   EXPECT_NE(c.err.find(file.string()), std::string::npos) << c.err;
   EXPECT_NE(c.err.find(where), std::string::npos) << c.err;
   EXPECT_NE(c.err.find(field), std::string::npos) << c.err;
-  fs::remove(file);
+  fs::remove_all(dir);
 }
 
 const char* kHead =
@@ -383,8 +406,8 @@ TEST(AnimateCommand, ContentChoosesWhatAReRenderDrawsAndTheSummaryCarriesItsCost
 }
 
 TEST(Butterfly, CommittedTextureIsTheGeneratorsOutput) {
-  const fs::path file = fs::temp_directory_path() / "oflab_butterfly_test.png";
-  fs::remove(file);
+  const fs::path dir = testing::fresh_test_dir("oflab-butterfly");
+  const fs::path file = dir / "butterfly.png";
   ASSERT_EQ(cli({"make-butterfly", "--out", file.string()}).code, 0);
   const Image fresh = read_image(file.string());
   const Image committed = read_image(default_texture_path());
@@ -393,7 +416,7 @@ TEST(Butterfly, CommittedTextureIsTheGeneratorsOutput) {
   EXPECT_EQ(fresh.pixels(), committed.pixels());
   EXPECT_EQ(committed.at(0, 0).a, 0);  // transparent background
   EXPECT_EQ(cli({"make-butterfly", "--out", file.string()}).code, 2);  // no silent overwrite
-  fs::remove(file);
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -32,6 +32,7 @@
 #include "experiments/published_results.h"
 #include "report/report.h"
 #include "cli_capture.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -345,8 +346,7 @@ TEST(Charts, CsvIsWideWhenSeriesShareXAndLongOtherwise) {
 }
 
 TEST(Charts, WritesAPngOrSaysWhyNot) {
-  const fs::path path = fs::temp_directory_path() / "oflab_chart_test.png";
-  fs::remove(path);
+  const fs::path path = testing::fresh_test_dir("oflab-chart") / "chart.png";
   Chart chart;
   chart.panels = {
       panel("levels", "frame", {series("l", {0, 1, 2}, {4, 0, 2}, SeriesStyle::kPoints)})};
@@ -381,10 +381,7 @@ size_t occurrences(const std::string& text, const std::string& needle) {
 }
 
 TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
-  // The process id keeps runs of several trees on one machine apart.
-  const fs::path dir =
-      fs::temp_directory_path() / ("oflab_experiments_quick_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const fs::path dir = testing::fresh_test_dir("oflab-experiments-quick") / "report";
   const CliResult c = cli({"experiments", "--quick", "--out", dir.string()});
   ASSERT_EQ(c.code, 0) << c.err;
   EXPECT_NE(c.err.find("exp1"), std::string::npos) << "progress goes to stderr";
@@ -427,13 +424,11 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
   for (const fs::directory_entry& e : fs::directory_iterator(dir / "charts")) {
     EXPECT_GT(e.file_size(), 0u) << e.path();
   }
-  if (!::testing::Test::HasFailure()) fs::remove_all(dir);  // kept to look at when it fails
+  if (!::testing::Test::HasFailure()) fs::remove_all(dir.parent_path());  // kept when it fails
 }
 
 TEST(ExperimentsCommand, RefusesANonEmptyDirectoryWithoutForce) {
-  const fs::path dir = fs::temp_directory_path() / "oflab_experiments_nonempty";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::fresh_test_dir("oflab-experiments-nonempty");
   std::ofstream(dir / "keep.txt") << "x";
   CliResult c = cli({"experiments", "--quick", "--only", "warp", "--out", dir.string()});
   EXPECT_EQ(c.code, 2);
@@ -464,8 +459,7 @@ TEST(ExperimentsCommand, WithoutADisplayFailsBeforeCreatingTheDirectory) {
   const char* display = std::getenv("DISPLAY");
   const std::string saved = display ? display : "";
   unsetenv("DISPLAY");
-  const fs::path dir = fs::temp_directory_path() / "oflab_experiments_nodisplay";
-  fs::remove_all(dir);
+  const fs::path dir = testing::fresh_test_dir("oflab-experiments-nodisplay") / "out";
   const CliResult c = cli({"experiments", "--quick", "--only", "warp", "--out", dir.string()});
   if (!saved.empty()) setenv("DISPLAY", saved.c_str(), 1);
   EXPECT_EQ(c.code, 1);

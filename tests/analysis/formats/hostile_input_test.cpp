@@ -19,6 +19,7 @@
 #include "formats/script_file.h"
 #include "formats/session_file.h"
 #include "formats/viewer_script_file.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -27,7 +28,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 fs::path temp_file(const std::string& name, const std::string& bytes) {
-  const fs::path file = fs::temp_directory_path() / ("oflab_hostile_" + name);
+  const fs::path file = testing::test_dir("oflab-hostile") / name;
   std::ofstream(file, std::ios::binary) << bytes;
   return file;
 }
@@ -122,7 +123,7 @@ TEST(HostileInput, ObjIndicesAndCoordinatesAreCheckedBeforeUse) {
             "m.obj: line 1: '1e150' is not a finite number of magnitude at most 1e6");
   EXPECT_EQ(obj_error(square + "f -4 -3 -2 -1\n").size(), 0u) << "relative indices are valid";
   const fs::path file = temp_file("bad.obj", square + "f 1 2 100000\n");
-  const fs::path out = fs::temp_directory_path() / "oflab_hostile_bad_scene.json";
+  const fs::path out = testing::fresh_test_dir("oflab-hostile-out") / "bad_scene.json";
   fs::remove(out);
   expect_usage_error({"animate", "--scene", file.string(), "--script", "circle", "--frames", "2"},
                      "vertex index 100000 is out of range");

@@ -20,6 +20,7 @@
 #include "formats/viewer_script_file.h"
 #include "cli_capture.h"
 #include "scene/scene_animator.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -31,7 +32,7 @@ using Cli = testing::CliResult;
 Cli cli(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
 
 fs::path temp_file(const std::string& name, const std::string& text) {
-  const fs::path file = fs::temp_directory_path() / name;
+  const fs::path file = testing::test_dir("oflab-scene-file") / name;
   std::ofstream(file) << text;
   return file;
 }
@@ -242,8 +243,7 @@ TEST(SceneFiles, CubeGridOfFourIsTheFourCubesSceneAndGridsLoad) {
   }
   for (int cubes : {4, 40, 400}) {
     const fs::path file =
-        fs::temp_directory_path() / ("oflab_grid_" + std::to_string(cubes) + ".json");
-    fs::remove(file);
+        testing::fresh_test_dir("oflab-grid") / ("grid_" + std::to_string(cubes) + ".json");
     const Cli c = cli({"make-scene", "--cubes", std::to_string(cubes), "--out", file.string()});
     ASSERT_EQ(c.code, 0) << c.err;
     const Scene s = read_scene_file(file.string());
@@ -251,7 +251,10 @@ TEST(SceneFiles, CubeGridOfFourIsTheFourCubesSceneAndGridsLoad) {
     EXPECT_EQ(cli({"make-scene", "--cubes", "4", "--out", file.string()}).code, 2);  // no overwrite
     fs::remove(file);
   }
-  EXPECT_EQ(cli({"make-scene", "--cubes", "0", "--out", "/tmp/x.json"}).code, 2);
+  EXPECT_EQ(cli({"make-scene", "--cubes", "0", "--out",
+                 (testing::fresh_test_dir("oflab-grid") / "x.json").string()})
+                .code,
+            2);
 }
 
 TEST(SceneFiles, SceneJsonRoundTrips) {
@@ -299,8 +302,7 @@ TEST(ObjImport, PlanarFacesBecomePolygonsFacingOutwards) {
   const Cli c =
       cli({"animate", "--scene", file.string(), "--script", "circle", "--frames", "5", "--json"});
   EXPECT_EQ(c.code, 0) << c.err;
-  const fs::path out = fs::temp_directory_path() / "oflab_cube_scene.json";
-  fs::remove(out);
+  const fs::path out = testing::fresh_test_dir("oflab-cube-scene") / "cube_scene.json";
   EXPECT_EQ(cli({"make-scene", "--from-obj", file.string(), "--out", out.string()}).code, 0);
   EXPECT_EQ(read_scene_file(out.string()).polygons.size(), 6u);
   fs::remove(out);

@@ -1,6 +1,7 @@
 // Session files: what is written reads back unchanged, and every malformed session gives a
 // SessionError naming the file, the part and the field, never a crash.
 #include "formats/session_file.h"
+#include "scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -59,8 +60,7 @@ std::string error_after(Edit edit) {
 
 TEST(SessionFile, WrittenSessionReadsBackUnchanged) {
   const Session s = sample_session();
-  const fs::path file = fs::temp_directory_path() / "oflab_session_round_trip.json";
-  fs::remove(file);
+  const fs::path file = testing::fresh_test_dir("oflab-session") / "round_trip.json";
   write_session_file(file.string(), s, false);
   const Session back = read_session_file(file.string());
   EXPECT_EQ(back.plane.camera.focal_px, s.plane.camera.focal_px);
@@ -112,7 +112,7 @@ TEST(SessionFile, ASessionWithoutWindowStateReadsWithTheDefaults) {
 }
 
 TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {
-  const fs::path file = fs::temp_directory_path() / "oflab_session_exists.json";
+  const fs::path file = testing::fresh_test_dir("oflab-session") / "exists.json";
   std::ofstream(file) << "keep";
   EXPECT_THROW(write_session_file(file.string(), sample_session(), false), SessionError);
   std::ifstream kept(file);
@@ -125,8 +125,8 @@ TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {
 }
 
 TEST(SessionFile, UnreadableEmptyAndTruncatedFilesAreNamed) {
-  const fs::path missing = fs::temp_directory_path() / "oflab_no_such_session.json";
-  fs::remove(missing);
+  const fs::path missing =
+      testing::fresh_test_dir("oflab-session") / "oflab_no_such_session.json";
   try {
     read_session_file(missing.string());
     FAIL() << "a missing file was read";

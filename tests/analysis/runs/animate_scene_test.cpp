@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli_capture.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -110,8 +111,8 @@ TEST(AnimateScene, EveryShippedSceneRunsWithEveryShippedViewerScript) {
 }
 
 TEST(AnimateScene, WritesOneCsvRowPerFrame) {
-  const fs::path dir = fs::temp_directory_path() / "oflab_animate_scene_out";
-  fs::remove_all(dir);
+  const fs::path scratch = testing::fresh_test_dir("oflab-animate-scene");
+  const fs::path dir = scratch / "out";
   const Cli c = cli({"animate", "--scene", "two-cubes", "--script", "zoom", "--frames", "12",
                      "--out", dir.string(), "--frames-png", "--quiet"});
   ASSERT_EQ(c.code, 0) << c.err;
@@ -128,7 +129,7 @@ TEST(AnimateScene, WritesOneCsvRowPerFrame) {
   EXPECT_EQ(rows, 12);
   EXPECT_TRUE(fs::exists(dir / "frame_00011.png"));
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
-  fs::remove_all(dir);
+  fs::remove_all(scratch);
 }
 
 TEST(AnimateScene, BadOptionsNameTheOption) {

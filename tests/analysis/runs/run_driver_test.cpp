@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -22,6 +23,7 @@
 #include "image/composite.h"
 #include "image/image_compare.h"
 #include "runs/source_kinds.h"
+#include "runs/statistics.h"
 
 namespace oflab {
 namespace {
@@ -230,6 +232,85 @@ std::string csv_header(const SourceKind& kind, const RunSource& source) {
   std::ostringstream csv;
   kind.write_csv(csv, kind.play(source, options));
   return csv.str().substr(0, csv.str().find('\n'));
+}
+
+// The CSV of a run written row by row through on_record, as `oflab-cli animate --out` does.
+std::string streamed_csv(const SourceKind& kind, const RunSource& source, PlayOptions options,
+                         AnimationRun* run) {
+  std::ostringstream csv;
+  kind.write_csv_header(csv);
+  options.on_record = [&](const FrameRecord& r) { kind.write_csv_row(csv, r); };
+  *run = kind.play(source, options);
+  return csv.str();
+}
+
+// One timed pass streams its records: the run kept or not, on_record sees the frames the
+// run would keep, in order, and the summary is the one of the kept frames. Several timed
+// passes hand the records on after the medians, the same rows as the kept run's CSV.
+TEST(RunDriver, RecordsStreamOutAndAStreamedRunSummarisesAsAKeptOne) {
+  const RunSource source = plane_source("loop");
+  const SourceKind& plane = source_kind("plane");
+  for (int passes : {1, 2}) {
+    PlayOptions options;
+    options.max_frames = 200;
+    options.timing_repetitions = passes;
+    AnimationRun kept, streamed;
+    const std::string kept_rows = streamed_csv(plane, source, options, &kept);
+    std::ostringstream kept_csv;
+    plane.write_csv(kept_csv, kept);
+    EXPECT_EQ(kept_rows, kept_csv.str()) << passes;  // the same run: times and all
+    options.keep_frames = false;
+    const std::string rows = streamed_csv(plane, source, options, &streamed);
+    EXPECT_TRUE(streamed.frames.empty() && streamed.psnr_db.empty() &&
+                streamed.baseline_ms.empty() && streamed.conventional_ms.empty());
+    EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 201) << passes;
+    const RunSummary& a = kept.summary;
+    const RunSummary& b = streamed.summary;
+    EXPECT_EQ(b.frames, 200);
+    EXPECT_EQ(a.levels, b.levels);
+    EXPECT_EQ(a.pixels, b.pixels);
+    EXPECT_EQ(a.baseline_pixels, b.baseline_pixels);
+    EXPECT_EQ(a.max_measured_error_px, b.max_measured_error_px);
+    EXPECT_EQ(a.max_excess_px, b.max_excess_px);
+    EXPECT_EQ(a.mean_psnr_db, b.mean_psnr_db);
+    const nlohmann::json ja = plane.summary_json(kept), jb = plane.summary_json(streamed);
+    EXPECT_EQ(ja.at("levels"), jb.at("levels"));
+    EXPECT_EQ(ja.at("invisible_frames"), jb.at("invisible_frames"));
+    // The summary's medians and sums are those of the kept records.
+    std::vector<double> times;
+    double total = 0.0;
+    for (const AnimationFrame& f : kept.frames) {
+      times.push_back(f.time_ms);
+      total += f.time_ms;
+    }
+    EXPECT_EQ(a.median_frame_ms, median_of(times));
+    EXPECT_DOUBLE_EQ(a.time_ms, total);
+  }
+}
+
+// --repeat: the script again from its first pose, the engine's state carried over (no
+// fresh exact render at the seam, the frame count going on).
+TEST(RunDriver, ARepeatedScriptPlaysOnWithTheEnginesState) {
+  RunSource source = plane_source("loop");
+  const int f = static_cast<int>(source.script.frames.size());
+  source.repeat = 3;
+  const std::unique_ptr<Animator> a = source_kind("plane").make(source, false);
+  EXPECT_EQ(a->frame_count(), 3 * f);
+  const FrameReport start = a->start().layer_reports.at(0);
+  EXPECT_EQ(start.flow[0], 0.0);  // a fresh start measures no flow
+  const ViewerPose first = a->view();
+  AnimationFrame seam;
+  while (a->frame() < f) seam = a->advance();
+  EXPECT_EQ(seam.frame, f);
+  EXPECT_EQ(seam.layer_reports.at(0).frame, f);
+  // The engine went on from the script's last pose to its first: it measured that step.
+  EXPECT_GT(seam.layer_reports.at(0).flow[0], 1.0);
+  const ViewerPose again = a->view();
+  EXPECT_EQ(again.translation, first.translation);
+  EXPECT_EQ(again.rotation, first.rotation);
+  while (a->frame() < 3 * f - 1) a->advance();  // plays to its last frame
+  source.repeat = 0;
+  EXPECT_THROW(source_kind("plane").make(source, false), std::invalid_argument);
 }
 
 TEST(SourceKinds, EachKindWritesItsOwnCsvHeader) {
