@@ -75,6 +75,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
   addDockWidget(Qt::LeftDockWidgetArea, scene_dock_);
   fit_scene_panel();
+  connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::update_scene_panel);
+  connect(animation_model_, &AnimationModel::source_changed, this, &MainWindow::update_scene_panel);
 
   create_actions();
   create_menus();
@@ -125,6 +127,11 @@ void MainWindow::fit_scene_panel() {
   controls_->ensurePolished();
   const int wanted = controls_->sizeHint().width() + 20;
   scene_dock_->widget()->setMinimumWidth(std::min(wanted, 430));
+}
+
+void MainWindow::update_scene_panel() {
+  const ViewPage* page = current_view();
+  controls_->set_note(page ? page->scene_panel_note() : QString());
 }
 
 void MainWindow::create_actions() {

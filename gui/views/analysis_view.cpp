@@ -383,6 +383,8 @@ void AnalysisView::refresh() {
   charts_->update();
 }
 
+QString AnalysisView::scene_panel_note() const { return oflab::scene_panel_note(*model_); }
+
 QImage AnalysisView::render_image() {
   read_model();
   QImage image(charts_->size().expandedTo(QSize(800, 500)), QImage::Format_RGB32);

@@ -209,6 +209,8 @@ void AnimationView::set_blink_phase(bool exact) {
   refresh();
 }
 
+QString AnimationView::scene_panel_note() const { return oflab::scene_panel_note(*model_); }
+
 void AnimationView::set_external_clock(bool on) {
   external_clock_ = on;
   set_display(display_);

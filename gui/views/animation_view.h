@@ -54,6 +54,7 @@ class AnimationView : public ViewPage {
   QImage render_image() override;
   void set_external_clock(bool on) override;
   void set_theme(const ViewTheme& theme) override;
+  QString scene_panel_note() const override;
 
   AnimationModel* model() const { return model_; }
   PanelDisplay display() const { return display_; }

@@ -74,6 +74,19 @@ QString hidden_layer_note(const AnimationFrame& f) {
 
 }  // namespace
 
+QString scene_panel_note(const AnimationModel& model) {
+  const AnimationSourceKind& kind = model.source_kind();
+  if (kind.follows_scene_panel) return QString();
+  const SourceChoice& source = model.source();
+  QString playing = QString::fromStdString(fill_pattern(kind.label, source.name));
+  if (kind.uses_viewer && !source.viewer.empty()) {
+    playing += QObject::tr(" (viewer script %1)").arg(QString::fromStdString(source.viewer));
+  }
+  return QObject::tr("This view plays %1, not the plane of this panel: the plane, motion and "
+                     "camera below apply to the flow and basis views.")
+      .arg(playing);
+}
+
 QString not_drawn_reason(const AnimationFrame& frame) {
   if (frame.drawn() > 0) return QString();
   const QString note = hidden_layer_note(frame);

@@ -9,6 +9,8 @@
 
 namespace oflab {
 
+class AnimationModel;
+
 // Rich text. A frame that updated exactly one layer (a single plane, or a scene with one
 // animated polygon): what the frame shows (a re-render is the policy's initial view, the
 // exact projection or its affine part of section 6.5, with the measured distance to the
@@ -30,6 +32,10 @@ constexpr double kExactTolerancePx = 0.01;
 // part of the exact warp about the texture centre): 6.20 px off the exact projection".
 // Precondition: report.visible.
 QString describe_shown_view(const FrameReport& report, const ReusePolicy& policy);
+
+// Empty when the model's source follows the scene panel (its plane and motion); otherwise
+// what the animation and analysis views play instead, for the scene panel's note.
+QString scene_panel_note(const AnimationModel& model);
 
 // Why nothing of `frame` is on screen, empty when a layer is drawn: the note of a layer
 // that is not visible (e.g. "not visible: a corner is at or behind the eye"), "outside the

@@ -326,6 +326,11 @@ void SlicesView::resizeEvent(QResizeEvent* event) {
   refresh();
 }
 
+QString SlicesView::scene_panel_note() const {
+  return tr("This view plays its own train-window scene, not the plane of this panel: the "
+            "plane, motion and camera below apply to the flow and basis views.");
+}
+
 double SlicesView::smallest_text_px() const { return QFontInfo(diagram_font(theme_)).pixelSize(); }
 
 void SlicesView::set_theme(const ViewTheme& theme) {

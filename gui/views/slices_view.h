@@ -50,6 +50,7 @@ class SlicesView : public ViewPage {
   void step_animation() override;
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
+  QString scene_panel_note() const override;
 
   // The slicing in force (for tests): epsilon in pixels per frame, speed in world units
   // per frame.
