@@ -170,9 +170,10 @@ QString pixel_readout(const Animator& animator, const Vec2& pixel, const Image& 
   for (const LayerOutline& outline : animator.outlines()) {  // back to front: the last wins
     if (holds(outline, pixel)) level = QStringLiteral("level %1").arg(level_name(outline.level));
   }
-  return QStringLiteral("pixel (%1, %2): %3, engine %4, exact %5")
-      .arg(x)
-      .arg(y)
+  const Vec2 centred = pixel_to_centred(animator.camera(), Vec2(x + 0.5, y + 0.5));
+  return QStringLiteral("pixel (%1, %2) px from the principal point: %3, engine %4, exact %5")
+      .arg(centred.x, 0, 'f', 1)
+      .arg(centred.y, 0, 'f', 1)
       .arg(level, colour(shown, x, y), colour(exact, x, y));
 }
 

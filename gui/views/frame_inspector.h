@@ -44,8 +44,10 @@ QString scene_panel_note(const AnimationModel& model);
 QString not_drawn_reason(const AnimationFrame& frame);
 
 // One line about image pixel `pixel` (top-left pixels) of the animator's current frame: the
-// level of the topmost drawn layer there (none when no outline holds it), and the engine's
-// and the exact colour there (premultiplied RGBA).
+// position of that pixel's centre in centred pixels (the principal point at (0, 0), Y down,
+// as the flow view and the coefficients use), the level of the topmost drawn layer there
+// (none when no outline holds it), and the engine's and the exact colour there
+// (premultiplied RGBA). Empty outside the frame.
 QString pixel_readout(const Animator& animator, const Vec2& pixel, const Image& exact);
 
 }  // namespace oflab
