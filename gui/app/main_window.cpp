@@ -440,7 +440,13 @@ void MainWindow::create_export_menu(QMenu* file) {
     QString error;
     if (dir.isEmpty()) return;
     if (!export_frames_png(this, dir, false, &error)) return show_message(error);
-    statusBar()->showMessage(tr("Wrote the animation view's frames to %1").arg(dir), 15000);
+    const int frames = animation_model_->animator() ? animation_model_->animator()->frame_count() : 0;
+    statusBar()->showMessage(tr("Wrote %1 frames of the animation view (frame-0000.png to "
+                                "frame-%2.png) to %3")
+                                 .arg(frames)
+                                 .arg(std::max(0, frames - 1), 4, 10, QChar('0'))
+                                 .arg(dir),
+                             15000);
   });
   QAction* video = exports->addAction(tr("Animation as video (MP4, GIF, Ogg Theora)..."));
   connect(video, &QAction::triggered, this, [this] {

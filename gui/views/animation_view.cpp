@@ -102,7 +102,7 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
   layout->addWidget(make_panels(), 1);
   show_model_state();
   blink_timer_ = new QTimer(this);
-  blink_timer_->setInterval(500);
+  blink_timer_->setInterval(kBlinkIntervalMs);
   connect(blink_timer_, &QTimer::timeout, this, [this] { set_blink_phase(!blink_phase_); });
   connect(model_, &AnimationModel::frame_changed, this, &AnimationView::refresh);
   connect(model_, &AnimationModel::source_changed, this, [this] {
@@ -210,6 +210,11 @@ void AnimationView::set_blink_phase(bool exact) {
 }
 
 QString AnimationView::scene_panel_note() const { return oflab::scene_panel_note(*model_); }
+
+bool AnimationView::blink_phase_at(int frame, int fps) {
+  const int frames_per_phase = std::max(1, int(std::lround(kBlinkIntervalMs * 1e-3 * fps)));
+  return (frame / frames_per_phase) % 2 == 1;
+}
 
 void AnimationView::set_external_clock(bool on) {
   external_clock_ = on;
