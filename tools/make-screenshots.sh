@@ -53,4 +53,13 @@ screen=1920x1200 shot lesson-flow-vs-talisman --lesson flow-vs-talisman --size 1
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
 shot slices --view slices --frames 10
+# The window as a projector shows it, normal and presentation mode, at 1920 x 1080.
+for look in normal presentation; do
+  flag=$([[ $look == presentation ]] && echo --presentation || true)
+  screen=1920x1200 shot window-1080-$look --size 1920 1080 --frames 30 $flag
+  screen=1920x1200 shot flow-1080-$look --view flow --size 1920 1080 --frames 30 \
+    --flow-draw arrows,streamlines,texture,zoom $flag
+  screen=1920x1200 shot basis-1080-$look --view basis --size 1920 1080 --frames 30 $flag
+  screen=1920x1200 shot slices-1080-$look --view slices --size 1920 1080 --frames 10 $flag
+done
 echo "make-screenshots: wrote $(ls "$out"/*.png | wc -l) images to $out"

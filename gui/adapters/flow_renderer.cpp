@@ -1,69 +1,25 @@
 #include "adapters/flow_renderer.h"
 
-#include <vtkCallbackCommand.h>
-#include <vtkCamera.h>
-#include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
-#include <vtkGlyph3D.h>
-#include <vtkGlyphSource2D.h>
-#include <vtkImageData.h>
-#include <vtkImageMapper3D.h>
-#include <vtkImageProperty.h>
-#include <vtkPointData.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
-#include <vtkRenderWindow.h>
-#include <vtkTextProperty.h>
-
+#include <QFontMetricsF>
+#include <QPainter>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
-#include <QPainter>
-
+#include "adapters/frame_images.h"
+#include "engine/engine.h"
 #include "flow/homography.h"
+#include "image/warp.h"
 #include "scene/view_culling.h"
-#include "adapters/vtk_adapters.h"
+#include "views/paint_helpers.h"
+#include "views/palette.h"
 
 namespace oflab {
 namespace {
 
-constexpr double kDegreesPerRadian = 57.29577951308232;
-constexpr double kWheelStepPx = 3.0;
-constexpr double kNearPlane = 1e-3;  // world units: nearer than this counts as not seen  // wheel image resolution, image pixels per cell
-
-vtkSmartPointer<vtkActor> line_actor() {
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(vtkSmartPointer<vtkPolyDataMapper>::New());
-  return actor;
-}
-
-void set_input(vtkActor* actor, vtkPolyData* data) {
-  vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->SetInputData(data);
-}
-
-// A camera at the eye looking along +Z with image rows growing downwards (Y down).
-void look_from_eye(vtkCamera* camera) {
-  camera->SetPosition(0.0, 0.0, 0.0);
-  camera->SetFocalPoint(0.0, 0.0, 1.0);
-  camera->SetViewUp(0.0, -1.0, 0.0);
-}
-
-// The plane's quad in 3D with texture coordinates, top-left texel corner at (0, 1).
-vtkSmartPointer<vtkPolyData> textured_quad(const PlanePose& pose) {
-  const std::array<Vec3, 4> corners = plane_corners(pose);
-  auto data = closed_outline({corners.begin(), corners.end()});
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  const vtkIdType quad[4] = {0, 1, 2, 3};
-  polys->InsertNextCell(4, quad);
-  data->SetPolys(polys);
-  data->SetLines(nullptr);
-  auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
-  tcoords->SetNumberOfComponents(2);
-  const float uv[5][2] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}, {0, 1}};
-  for (const auto& t : uv) tcoords->InsertNextTuple(t);
-  data->GetPointData()->SetTCoords(tcoords);
-  return data;
-}
+constexpr double kWheelStepPx = 3.0;  // wheel image resolution, image pixels per cell
+constexpr double kNearPlane = 1e-3;   // world units: nearer than this counts as not seen
+constexpr double kViewMargin = 1.12;  // the chosen region plus room for captions
 
 // The display's spacing, or one that puts about 14 arrows across the plane's image.
 double arrow_spacing(const FlowContext& context, const FlowDisplay& display) {
@@ -97,192 +53,63 @@ bool centre_in_image(const Camera& camera, const PlanePose& pose) {
   return std::abs(p.x) <= 0.5 * camera.width && std::abs(p.y) <= 0.5 * camera.height;
 }
 
+// Colour of magnitude `m` on a bar over [0, bar_max] that uses magnitude_colour up to `top`.
+QColor magnitude_qcolor(double m, double bar_max, double top) {
+  return to_qcolor(magnitude_colour(top * std::clamp(m / bar_max, 0.0, 1.0)));
+}
+
+// The bar uses the palest yellows only on a dark background.
+double magnitude_top(const ViewTheme& theme) { return theme.presentation ? 0.8 : 1.0; }
+
+QPointF qpoint(const Vec2& p) { return QPointF(p.x, p.y); }
+
 }  // namespace
 
-FlowRenderer::FlowRenderer(vtkRenderWindow* window) : window_(window), theme_(view_theme(false)) {
-  scene_ = vtkSmartPointer<vtkRenderer>::New();
-  overlay_ = vtkSmartPointer<vtkRenderer>::New();
-  overlay_->SetLayer(1);
-  overlay_->InteractiveOff();
-  // The colour-wheel legend: a unit disc in a small square viewport of its own, so it
-  // stays round and in view at any zoom.
-  legend_ = vtkSmartPointer<vtkRenderer>::New();
-  legend_->SetLayer(1);
-  legend_->InteractiveOff();
-  legend_->GetActiveCamera()->ParallelProjectionOn();
-  legend_->GetActiveCamera()->SetPosition(0.0, 0.0, -5.0);
-  legend_->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
-  legend_->GetActiveCamera()->SetViewUp(0.0, -1.0, 0.0);  // y down, as in the image
-  legend_->GetActiveCamera()->SetParallelScale(1.05);
-  legend_->GetActiveCamera()->SetClippingRange(1.0, 10.0);
-  // The legend strip on the right: the scalar bar above, the wheel legend below, so
-  // neither covers the flow.
-  side_ = vtkSmartPointer<vtkRenderer>::New();
-  side_->InteractiveOff();
-  window_->SetNumberOfLayers(2);
-  window_->AddRenderer(side_);
-  window_->AddRenderer(scene_);
-  window_->AddRenderer(overlay_);
-  window_->AddRenderer(legend_);
-  look_from_eye(scene_->GetActiveCamera());
-  look_from_eye(overlay_->GetActiveCamera());
-  overlay_->GetActiveCamera()->SetClippingRange(0.5, 2.0);
-  fit_callback_ = vtkSmartPointer<vtkCallbackCommand>::New();
-  fit_callback_->SetCallback(&FlowRenderer::on_render_start);
-  fit_callback_->SetClientData(this);
-  window_->AddObserver(vtkCommand::StartEvent, fit_callback_);
-  create_actors();
-  set_theme(theme_);
-}
-
-FlowRenderer::~FlowRenderer() {
-  window_->RemoveObserver(fit_callback_);
-  window_->RemoveRenderer(scene_);
-  window_->RemoveRenderer(overlay_);
-  window_->RemoveRenderer(legend_);
-  window_->RemoveRenderer(side_);
-}
-
-void FlowRenderer::create_actors() {
-  plane_ = line_actor();
-  texture_ = vtkSmartPointer<vtkTexture>::New();
-  texture_->InterpolateOn();
-  plane_->SetTexture(texture_);
-  plane_->GetProperty()->LightingOff();
-  scene_->AddActor(plane_);
-  frame_ = line_actor();
-  outline_ = line_actor();
-  centre_mark_ = line_actor();
-  streamlines_ = line_actor();
-  wheel_legend_ = line_actor();
-  wheel_legend_->GetProperty()->LightingOff();
-  wheel_image_ = vtkSmartPointer<vtkImageActor>::New();
-  wheel_image_->GetProperty()->SetInterpolationTypeToLinear();
-  wheel_data_ = vtkSmartPointer<vtkImageData>::New();
-  wheel_image_->GetMapper()->SetInputData(wheel_data_);
-  wheel_image_->VisibilityOff();
-  create_arrow_pipeline();
-  create_legend_and_text();
-  for (vtkProp* prop :
-       std::initializer_list<vtkProp*>{wheel_image_, frame_, outline_, centre_mark_, streamlines_,
-                                       arrows_, caption_, wheel_caption_}) {
-    overlay_->AddViewProp(prop);
-  }
-  wheel_legend_->GetMapper()->SetInputDataObject(
-      coloured_disc(1.0, [](const Vec2& offset) { return flow_wheel_colour(offset, 1.0); }));
-  legend_->AddActor(wheel_legend_);
-  side_->AddViewProp(scalar_bar_);
-  side_->AddViewProp(scalar_title_);
-}
-
-// Arrow glyphs: each input point carries its flow vector (world units, already scaled)
-// and its magnitude (px/s, coloured through the lookup table).
-void FlowRenderer::create_arrow_pipeline() {
-  auto glyph = vtkSmartPointer<vtkGlyphSource2D>::New();
-  glyph->SetGlyphTypeToArrow();
-  glyph->FilledOn();
-  glyph->SetCenter(0.5, 0.0, 0.0);  // the arrow starts at the sample point
-  arrow_input_ = vtkSmartPointer<vtkPolyData>::New();
-  auto glyphs = vtkSmartPointer<vtkGlyph3D>::New();
-  glyphs->SetSourceConnection(glyph->GetOutputPort());
-  glyphs->SetInputData(arrow_input_);
-  glyphs->SetVectorModeToUseVector();
-  glyphs->SetScaleModeToScaleByVector();
-  glyphs->SetColorModeToColorByScalar();
-  glyphs->OrientOn();
-  auto arrow_mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  arrow_mapper->SetInputConnection(glyphs->GetOutputPort());
-  arrows_ = vtkSmartPointer<vtkActor>::New();
-  arrows_->SetMapper(arrow_mapper);
-  arrows_->GetProperty()->LightingOff();
-}
-
-void FlowRenderer::create_legend_and_text() {
-  scalar_bar_ = vtkSmartPointer<vtkScalarBarActor>::New();
-  scalar_bar_->SetTitle("");  // the title sits in scalar_title_, clear of the labels
-  scalar_bar_->SetLookupTable(magnitude_lookup_table(1.0));
-  scalar_bar_->SetLabelFormat("%.3g");
-  scalar_bar_->SetVerticalTitleSeparation(8);
-  scalar_bar_->SetNumberOfLabels(5);
-  scalar_bar_->SetPosition(0.08, 0.30);
-  scalar_bar_->SetWidth(0.9);
-  scalar_bar_->SetHeight(0.58);
-  scalar_bar_->SetBarRatio(0.3);
-  scalar_bar_->UnconstrainedFontSizeOn();
-  caption_ = vtkSmartPointer<vtkTextActor>::New();
-  caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  caption_->SetPosition(0.01, 0.99);
-  caption_->GetTextProperty()->SetVerticalJustificationToTop();
-  scalar_title_ = vtkSmartPointer<vtkTextActor>::New();
-  scalar_title_->SetInput("|v| px/s");
-  scalar_title_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  scalar_title_->SetPosition(0.04, 0.90);
-  wheel_caption_ = vtkSmartPointer<vtkTextActor>::New();
-  wheel_caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  wheel_caption_->SetPosition(0.01, 0.015);
-}
+FlowRenderer::FlowRenderer() : theme_(view_theme(false)) {}
 
 void FlowRenderer::set_texture(const QImage& texture) {
   texture_image_ = texture;
   update_faded_texture();
 }
 
-// The texture faded towards the background, drawn opaque: the same picture as a
-// translucent plane, without VTK's translucent pass (several full-window passes on a
-// software renderer).
+// The texture faded towards the background, opaque: the picture of a translucent plane
+// without blending every frame.
 void FlowRenderer::update_faded_texture() {
-  if (texture_image_.isNull()) return;
+  if (texture_image_.isNull()) {
+    faded_texture_ = Layer();
+    return;
+  }
   QImage faded(texture_image_.size(), QImage::Format_RGB32);
-  faded.fill(QColor::fromRgbF(theme_.background[0], theme_.background[1], theme_.background[2]));
+  faded.fill(to_qcolor(theme_.background));
   QPainter painter(&faded);
   painter.setOpacity(theme_.presentation ? 0.6 : 0.45);
   painter.drawImage(0, 0, texture_image_);
   painter.end();
-  texture_->SetInputData(image_data_from_qimage(faded));
+  faded_texture_ = make_layer(image_from_qimage(faded));
 }
 
 void FlowRenderer::set_theme(const ViewTheme& theme) {
   theme_ = theme;
-  for (vtkRenderer* r : {scene_.Get(), side_.Get()}) {
-    r->SetBackground(theme.background[0], theme.background[1], theme.background[2]);
-  }
-  set_line_style(frame_->GetProperty(), theme.muted, theme.line_width);
-  set_line_style(outline_->GetProperty(), theme.outline, theme.line_width + 1.0);
-  set_line_style(centre_mark_->GetProperty(), theme.outline, theme.line_width);
-  set_line_style(streamlines_->GetProperty(), theme.streamline, theme.line_width);
-  arrows_->GetProperty()->SetLineWidth(static_cast<float>(theme.line_width));
-  set_text_style(caption_->GetTextProperty(), theme.text, theme.font_size);
-  set_text_style(wheel_caption_->GetTextProperty(), theme.text, theme.label_size);
-  set_text_style(scalar_title_->GetTextProperty(), theme.text, theme.label_size);
-  for (vtkTextProperty* p :
-       {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty()}) {
-    set_text_style(p, theme.text, theme.label_size);
-    p->BoldOff();
-    p->ItalicOff();
-    p->ShadowOff();
-  }
   update_faded_texture();
+  wheel_legend_ = QImage();
 }
 
 double FlowRenderer::smallest_text_px() const {
-  int points = caption_->GetTextProperty()->GetFontSize();
-  for (vtkTextProperty* p : {wheel_caption_->GetTextProperty(), scalar_title_->GetTextProperty(),
-                             scalar_bar_->GetLabelTextProperty()}) {
-    points = std::min(points, p->GetFontSize());
-  }
-  return font_points_to_px(points, window_);
+  return std::min(theme_.font_size, theme_.label_size);
 }
 
 void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display,
                           const QString& frame_caption) {
   camera_ = context.camera;
+  display_ = display;
   plane_in_image_ = plane_meets_image(context.camera, context.pose, kNearPlane) ||
                     centre_in_image(context.camera, context.pose);
   // With the plane out of the picture, the whole image is shown (there is nothing to zoom to).
   FlowDisplay framing = display;
   if (!plane_in_image_) framing.zoom_to_plane = false;
   choose_view_region(context, framing);
-  update_plane(context, display);
+  outline_.clear();
+  for (const Vec2& c : projected_corners(context.camera, context.pose)) outline_ << qpoint(c);
   const double spacing = arrow_spacing(context, display);
   const std::vector<FlowSample> full = sample_flow_grid(context, FlowPart::kFull, spacing);
   const std::vector<FlowSample> shown =
@@ -299,146 +126,112 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   // A plane that has left the picture has no flow to show: no arrows, lines, wheel or
   // colour bar, and the caption says so (the side table's terms are those of the plane
   // extended beyond the image).
-  FlowDisplay drawn = display;
-  if (!plane_in_image_) drawn.arrows = drawn.streamlines = drawn.colour_wheel = false;
-  update_arrows(shown, arrow_seconds, drawn);
-  update_streamlines(context, drawn, arrow_seconds);
-  update_wheel(context, drawn);
+  if (!plane_in_image_) display_.arrows = display_.streamlines = display_.colour_wheel = false;
+  update_arrows(shown, arrow_seconds, display_.arrows);
+  update_streamlines(context, display_, arrow_seconds);
+  update_wheel(context, display_);
+  // The wheel is opaque over the plane: the texture under it would not be seen.
+  update_plane_image(context, display.texture && !display_.colour_wheel);
   update_caption(display, frame_caption);
 }
 
-void FlowRenderer::update_plane(const FlowContext& context, const FlowDisplay& display) {
-  const std::array<Vec2, 4> corners = projected_corners(context.camera, context.pose);
-  std::vector<Vec3> outline;
-  for (const Vec2& c : corners) outline.push_back(image_plane_point(context.camera, c));
-  set_input(outline_, closed_outline(outline));
-  const double hw = 0.5 * context.camera.width, hh = 0.5 * context.camera.height;
-  std::vector<Vec3> frame;
-  for (const Vec2& c : {Vec2(-hw, -hh), Vec2(hw, -hh), Vec2(hw, hh), Vec2(-hw, hh)}) {
-    frame.push_back(image_plane_point(context.camera, c));
+// The faded texture warped exactly into a camera-sized image of the background, kept from
+// frame to frame. A plane that cannot be warped (partly behind the eye, a sliver) keeps
+// its outline only.
+void FlowRenderer::update_plane_image(const FlowContext& context, bool wanted) {
+  plane_drawn_ = false;
+  if (!wanted || !plane_in_image_ || faded_texture_.empty() ||
+      !plane_visibility_problem(context.pose).empty()) {
+    return;
   }
-  set_input(frame_, closed_outline(frame));
-  // The principal point, where the coefficients of the side table are taken.
-  const double r = 8.0;
-  set_input(centre_mark_, polylines({{image_plane_point(context.camera, Vec2(-r, 0.0)),
-                                      image_plane_point(context.camera, Vec2(r, 0.0))},
-                                     {image_plane_point(context.camera, Vec2(0.0, -r)),
-                                      image_plane_point(context.camera, Vec2(0.0, r))}}));
-  set_input(plane_, textured_quad(context.pose));
-  plane_->SetVisibility(display.texture);
-  double near = 1e300, far = 0.0;
-  for (const Vec3& c : plane_corners(context.pose)) {
-    near = std::min(near, c.z);
-    far = std::max(far, c.z);
+  plane_image_.reshape(context.camera.width, context.camera.height);
+  const QColor bg = to_qcolor(theme_.background);
+  plane_image_.fill(Pixel{std::uint8_t(bg.red()), std::uint8_t(bg.green()),
+                          std::uint8_t(bg.blue()), 255});
+  PlanePose sized = context.pose;
+  sized.texture_size = glm::ivec2(faded_texture_.image.width(), faded_texture_.image.height());
+  WarpOptions options;
+  options.sampling = Sampling::kBilinear;
+  try {
+    warp_layer_into(faded_texture_, exact_texture_warp(context.camera, sized), plane_image_, 0, 0,
+                    options);
+  } catch (const std::invalid_argument&) {
+    return;
   }
-  scene_->GetActiveCamera()->SetClippingRange(0.5 * near, 2.0 * far + 1.0);
+  const QPointF shift(context.camera.cx, context.camera.cy);
+  plane_box_ = outline_.boundingRect().translated(shift).toAlignedRect().adjusted(-1, -1, 1, 1) &
+               QRect(0, 0, context.camera.width, context.camera.height);
+  plane_drawn_ = !plane_box_.isEmpty();
 }
 
 void FlowRenderer::update_arrows(const std::vector<FlowSample>& samples, double arrow_seconds,
-                                 const FlowDisplay& display) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  auto vectors = vtkSmartPointer<vtkDoubleArray>::New();
-  vectors->SetNumberOfComponents(3);
-  auto magnitudes = vtkSmartPointer<vtkDoubleArray>::New();
-  const double to_world = arrow_seconds / camera_.focal_px;
+                                 bool shown) {
+  arrows_.clear();
+  bar_max_ = round_up_to_nice(shown_max_);
+  if (!shown) return;
+  const double top = magnitude_top(theme_);
   for (const FlowSample& s : samples) {
-    const Vec3 p = image_plane_point(camera_, s.position);
-    points->InsertNextPoint(p.x, p.y, p.z);
-    vectors->InsertNextTuple3(s.flow.x * to_world, s.flow.y * to_world, 0.0);
-    magnitudes->InsertNextValue(glm::length(s.flow));
+    arrows_.push_back({qpoint(s.position), qpoint(s.position + arrow_seconds * s.flow),
+                       magnitude_qcolor(glm::length(s.flow), bar_max_, top)});
   }
-  arrow_input_->SetPoints(points);
-  arrow_input_->GetPointData()->SetVectors(vectors);
-  arrow_input_->GetPointData()->SetScalars(magnitudes);
-  arrow_input_->Modified();
-  // A new table only when the bar's rounded range changes: rebuilding the scalar bar is
-  // a large part of a frame.
-  const double bar_max = round_up_to_nice(shown_max_);
-  if (bar_max != bar_max_ || bar_presentation_ != theme_.presentation) {
-    bar_max_ = bar_max;
-    bar_presentation_ = theme_.presentation;
-    auto table = magnitude_lookup_table(bar_max, theme_.presentation ? 0.8 : 1.0);
-    auto* mapper = arrows_->GetMapper();
-    mapper->SetLookupTable(table);
-    mapper->SetScalarRange(table->GetRange());
-    scalar_bar_->SetLookupTable(table);
-  }
-  arrows_->SetVisibility(display.arrows);
-  scalar_bar_->SetVisibility(display.arrows);
-  scalar_title_->SetVisibility(display.arrows);
 }
 
 void FlowRenderer::update_streamlines(const FlowContext& context, const FlowDisplay& display,
                                       double arrow_seconds) {
-  std::vector<std::vector<Vec3>> lines;
-  if (display.streamlines && arrow_seconds > 0.0) {
-    const double seed_spacing = 2.0 * arrow_spacing(context, display);
-    for (const FlowSample& seed : sample_flow_grid(context, FlowPart::kTranslation, seed_spacing)) {
-      const std::vector<Vec2> path =
-          trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16);
-      // The line, then an arrow head at its end so the direction reads.
-      for (const std::vector<Vec2>& part : {path, streamline_arrow_head(path, 0.3 * seed_spacing)}) {
-        if (part.size() < 2) continue;
-        std::vector<Vec3> line;
-        for (const Vec2& p : part) line.push_back(image_plane_point(context.camera, p));
-        lines.push_back(line);
-      }
+  streamlines_.clear();
+  if (!display.streamlines || arrow_seconds <= 0.0) return;
+  const double seed_spacing = 2.0 * arrow_spacing(context, display);
+  for (const FlowSample& seed : sample_flow_grid(context, FlowPart::kTranslation, seed_spacing)) {
+    const std::vector<Vec2> path =
+        trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16);
+    // The line, then an arrow head at its end so the direction reads.
+    for (const std::vector<Vec2>& part : {path, streamline_arrow_head(path, 0.3 * seed_spacing)}) {
+      if (part.size() < 2) continue;
+      QPolygonF line;
+      for (const Vec2& p : part) line << qpoint(p);
+      streamlines_.push_back(line);
     }
   }
-  set_input(streamlines_, polylines(lines));
-  streamlines_->SetVisibility(display.streamlines);
 }
 
+// The wheel's colours over the part of the image the plane covers, one cell per
+// kWheelStepPx pixels, the background where the plane is not seen.
 void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& display) {
-  wheel_image_->SetVisibility(display.colour_wheel);
-  wheel_legend_->SetVisibility(display.colour_wheel);
-  wheel_caption_->SetVisibility(display.colour_wheel);
   if (!display.colour_wheel) return;
-  const int nx = static_cast<int>(std::ceil(context.camera.width / kWheelStepPx));
-  const int ny = static_cast<int>(std::ceil(context.camera.height / kWheelStepPx));
-  std::vector<Vec2> flows(static_cast<size_t>(nx) * ny);
-  std::vector<bool> inside(flows.size());
-  double largest = 0.0;
+  const Vec2 half(0.5 * context.camera.width, 0.5 * context.camera.height);
+  const QRectF box = outline_.boundingRect() & QRectF(-half.x, -half.y, 2 * half.x, 2 * half.y);
+  const int i0 = int(std::floor((box.left() + half.x) / kWheelStepPx));
+  const int j0 = int(std::floor((box.top() + half.y) / kWheelStepPx));
+  const int nx = std::max(1, int(std::ceil((box.right() + half.x) / kWheelStepPx)) - i0);
+  const int ny = std::max(1, int(std::ceil((box.bottom() + half.y) / kWheelStepPx)) - j0);
+  if (wheel_.width() != nx || wheel_.height() != ny) wheel_ = QImage(nx, ny, QImage::Format_RGB32);
+  wheel_rect_ = QRectF(-half.x + i0 * kWheelStepPx, -half.y + j0 * kWheelStepPx,
+                       nx * kWheelStepPx, ny * kWheelStepPx);
   auto centre_of = [&](int i, int j) {
-    return Vec2(-0.5 * context.camera.width + (i + 0.5) * kWheelStepPx,
-                -0.5 * context.camera.height + (j + 0.5) * kWheelStepPx);
+    return Vec2(wheel_rect_.left() + (i + 0.5) * kWheelStepPx,
+                wheel_rect_.top() + (j + 0.5) * kWheelStepPx);
   };
+  std::vector<Vec2> flows(size_t(nx) * ny, Vec2(std::nan("")));
+  double largest = 0.0;
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
-      const size_t k = static_cast<size_t>(j) * nx + i;
-      inside[k] = sees_plane(context, centre_of(i, j));
-      if (!inside[k]) continue;
-      flows[k] = flow_part_at(context, display.part, centre_of(i, j));
-      largest = std::max(largest, glm::length(flows[k]));
+      if (!sees_plane(context, centre_of(i, j))) continue;
+      Vec2& f = flows[size_t(j) * nx + i];
+      f = flow_part_at(context, display.part, centre_of(i, j));
+      largest = std::max(largest, glm::length(f));
     }
   }
-  // One image kept from frame to frame, opaque (RGB, the background where the plane is
-  // not seen): a translucent image would cost VTK's translucent pass every frame.
-  vtkImageData* image = wheel_data_;
-  if (image->GetDimensions()[0] != nx || image->GetDimensions()[1] != ny) {
-    image->SetDimensions(nx, ny, 1);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  const QRgb background = to_qcolor(theme_.background).rgb();
+  for (int j = 0; j < ny; ++j) {
+    auto* line = reinterpret_cast<QRgb*>(wheel_.scanLine(j));
+    for (int i = 0; i < nx; ++i) {
+      const Vec2& f = flows[size_t(j) * nx + i];
+      line[i] = std::isnan(f.x) ? background : to_qcolor(flow_wheel_colour(f, largest)).rgb();
+    }
   }
-  // Slightly behind the image plane (same projection), so arrows and lines draw on top.
-  constexpr double kBehind = 1.002;
-  const Vec3 origin = kBehind * image_plane_point(context.camera, centre_of(0, 0));
-  image->SetOrigin(origin.x, origin.y, origin.z);
-  const double step = kBehind * kWheelStepPx / context.camera.focal_px;
-  image->SetSpacing(step, step, 1.0);
-  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
-  const Rgb8 background{static_cast<unsigned char>(std::lround(255.0 * theme_.background[0])),
-                        static_cast<unsigned char>(std::lround(255.0 * theme_.background[1])),
-                        static_cast<unsigned char>(std::lround(255.0 * theme_.background[2]))};
-  for (size_t k = 0; k < flows.size(); ++k) {
-    const Rgb8 c = inside[k] ? flow_wheel_colour(flows[k], largest) : background;
-    rgb[3 * k] = c.r, rgb[3 * k + 1] = c.g, rgb[3 * k + 2] = c.b;
-  }
-  image->Modified();
-  wheel_caption_->SetInput(QStringLiteral("Colour wheel (bottom right): hue = direction, "
-                                          "white to full colour = 0 to %1 px/s")
-                               .arg(largest, 0, 'g', 3)
-                               .toUtf8()
-                               .constData());
+  wheel_caption_ = QStringLiteral("Colour wheel (bottom right): hue = direction, "
+                                  "white to full colour = 0 to %1 px/s")
+                       .arg(largest, 0, 'g', 3);
 }
 
 void FlowRenderer::update_caption(const FlowDisplay& display, const QString& frame_caption) {
@@ -451,7 +244,6 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
                               .arg(QString::fromUtf8(flow_part_title(display.part)))
                         : QStringLiteral("The plane is outside the image: no flow to show");
     if (!frame_caption.isEmpty()) caption_text_ += QStringLiteral("\n") + frame_caption;
-    caption_->SetInput(caption_text_.toUtf8().constData());
     return;
   }
   const bool residual =
@@ -462,7 +254,6 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
   if (residual && shown_max_ < 1e-6) text += QStringLiteral(" (zero up to rounding)");
   if (!frame_caption.isEmpty()) text += QStringLiteral("\n") + frame_caption;
   caption_text_ = text;
-  caption_->SetInput(text.toUtf8().constData());
 }
 
 void FlowRenderer::choose_view_region(const FlowContext& context, const FlowDisplay& display) {
@@ -483,46 +274,158 @@ void FlowRenderer::choose_view_region(const FlowContext& context, const FlowDisp
   view_half_size_ = glm::max(0.5 * (high - low), Vec2(40.0));
 }
 
-void FlowRenderer::fit_view_angle() {
-  const int* size = window_->GetSize();
-  if (size[0] < 1 || size[1] < 1 || camera_.focal_px <= 0.0) return;
-  const double aspect = scene_fraction() * size[0] / size[1];
-  // Half-height of the view in image pixels, with a margin for captions and the legend.
-  const double half_h = 1.12 * std::max(view_half_size_.y, view_half_size_.x / aspect);
-  const double angle = 2.0 * std::atan(half_h / camera_.focal_px) * kDegreesPerRadian;
-  // Off-axis window centre, in units of the view's half extent: screen x follows X, screen
-  // y is -Y (image rows grow downwards).
-  const double wx = view_centre_.x / (half_h * aspect), wy = -view_centre_.y / half_h;
-  for (vtkRenderer* r : {scene_.Get(), overlay_.Get()}) {
-    r->GetActiveCamera()->SetViewAngle(angle);
-    r->GetActiveCamera()->SetWindowCenter(wx, wy);
+double FlowRenderer::side_width_px(int view_width) const {
+  const double wanted = theme_.presentation ? 150.0 : 130.0;
+  return std::clamp(0.14 * view_width, 80.0, wanted);
+}
+
+// Centred image pixels -> view pixels: the chosen region, with a margin, centred in the
+// part of the view left of the legend strip.
+QTransform FlowRenderer::image_to_view(const QSize& size) const {
+  const double width = size.width() - side_width_px(size.width());
+  const double aspect = width / size.height();
+  const double half_h = kViewMargin * std::max(view_half_size_.y, view_half_size_.x / aspect);
+  const double scale = 0.5 * size.height() / half_h;
+  QTransform t;
+  t.translate(0.5 * width, 0.5 * size.height());
+  t.scale(scale, scale);
+  t.translate(-view_centre_.x, -view_centre_.y);
+  return t;
+}
+
+const QImage& FlowRenderer::paint(const QSize& wanted) {
+  const QSize size = wanted.expandedTo(QSize(1, 1));
+  QImage& image = buffers_[next_buffer_];
+  next_buffer_ = 1 - next_buffer_;
+  if (image.size() != size) image = QImage(size, QImage::Format_RGB32);
+  image.fill(to_qcolor(theme_.background));
+  QPainter painter(&image);
+  const double side = side_width_px(size.width());
+  painter.setClipRect(QRectF(0, 0, size.width() - side, size.height()));
+  paint_scene(painter, image_to_view(size));
+  painter.setClipping(false);
+  QFont font = painter.font();
+  font.setPixelSize(theme_.font_size);
+  painter.setFont(font);
+  painter.setPen(to_qcolor(theme_.text));
+  const double pad = 0.01 * size.width();
+  painter.drawText(QRectF(pad, pad, size.width() - side - 2 * pad, size.height()),
+                   Qt::AlignLeft | Qt::AlignTop, caption_text_);
+  if (display_.colour_wheel) {
+    font.setPixelSize(theme_.label_size);
+    painter.setFont(font);
+    painter.drawText(QRectF(pad, 0, size.width() - side - 2 * pad, size.height() - pad),
+                     Qt::AlignLeft | Qt::AlignBottom, wheel_caption_);
+  }
+  paint_side(painter, QRectF(size.width() - side, 0, side, size.height()));
+  return image;
+}
+
+void FlowRenderer::paint_scene(QPainter& painter, const QTransform& to_view) {
+  const QPointF shift(camera_.cx, camera_.cy);
+  painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
+  if (plane_drawn_) {
+    const QImage plane(reinterpret_cast<const uchar*>(plane_image_.row(0)), plane_image_.width(),
+                       plane_image_.height(), plane_image_.width() * 4, QImage::Format_RGBX8888);
+    painter.drawImage(to_view.mapRect(QRectF(plane_box_).translated(-shift)), plane, plane_box_);
+  }
+  if (display_.colour_wheel) painter.drawImage(to_view.mapRect(wheel_rect_), wheel_);
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  painter.setBrush(Qt::NoBrush);
+  const double w = theme_.line_width;
+  const QRectF frame(-0.5 * camera_.width, -0.5 * camera_.height, camera_.width, camera_.height);
+  painter.setPen(QPen(to_qcolor(theme_.muted), w));
+  painter.drawPolygon(to_view.map(QPolygonF(frame)));
+  painter.setPen(QPen(to_qcolor(theme_.outline), w + 1.0));
+  painter.drawPolygon(to_view.map(outline_));
+  // The principal point, where the coefficients of the side table are taken.
+  const QPointF centre = to_view.map(QPointF(0, 0));
+  const double r = 8.0 * to_view.m11();
+  painter.setPen(QPen(to_qcolor(theme_.outline), w));
+  painter.drawLine(centre - QPointF(r, 0), centre + QPointF(r, 0));
+  painter.drawLine(centre - QPointF(0, r), centre + QPointF(0, r));
+  painter.setPen(QPen(to_qcolor(theme_.streamline), w));
+  for (const QPolygonF& line : streamlines_) painter.drawPolyline(to_view.map(line));
+  paint_arrows(painter, to_view);
+}
+
+// Each arrow: a shaft from the sample point and a filled head at least a few line widths
+// long (so short arrows still show their direction from afar), half as wide as long.
+void FlowRenderer::paint_arrows(QPainter& painter, const QTransform& to_view) {
+  const double width = theme_.line_width + 0.5;
+  for (const Arrow& arrow : arrows_) {
+    const QPointF from = to_view.map(arrow.from), to = to_view.map(arrow.to);
+    const QPointF along = to - from;
+    const double length = std::hypot(along.x(), along.y());
+    if (length < 0.5) continue;
+    const double head = std::min(0.6 * length, std::max(0.3 * length, 4.0 * width));
+    const QPointF unit = along / length, across(-unit.y(), unit.x());
+    const QPointF base = to - head * unit;
+    painter.setPen(QPen(arrow.colour, width, Qt::SolidLine, Qt::FlatCap));
+    painter.drawLine(from, base);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(arrow.colour);
+    const QPointF tip[3] = {base + 0.5 * head * across, to, base - 0.5 * head * across};
+    painter.drawConvexPolygon(tip, 3);
+  }
+  painter.setBrush(Qt::NoBrush);
+}
+
+void FlowRenderer::paint_side(QPainter& painter, const QRectF& side) {
+  if (display_.arrows) paint_colour_bar(painter, side);
+  if (!display_.colour_wheel) return;
+  const double edge = std::min(side.width() - 8.0, 0.28 * side.height());
+  paint_wheel_legend(painter, QRectF(side.right() - 4.0 - edge,
+                                     side.bottom() - 0.03 * side.height() - edge, edge, edge));
+}
+
+// The magnitude colour bar: its title, the ramp from 0 (bottom) to the rounded largest
+// magnitude (top) and five labels beside it.
+void FlowRenderer::paint_colour_bar(QPainter& painter, const QRectF& side) {
+  QFont font = painter.font();
+  font.setPixelSize(theme_.label_size);
+  painter.setFont(font);
+  painter.setPen(to_qcolor(theme_.text));
+  const double top = side.top() + 0.12 * side.height(), bottom = side.top() + 0.68 * side.height();
+  painter.drawText(QRectF(side.left() + 4, top - 2.2 * theme_.label_size, side.width() - 8,
+                          1.8 * theme_.label_size),
+                   Qt::AlignLeft | Qt::AlignBottom, QStringLiteral("|v| px/s"));
+  const QRectF bar(side.left() + 6, top, std::max(10.0, 0.22 * side.width()), bottom - top);
+  const double ramp_top = magnitude_top(theme_);
+  for (int y = 0; y < int(bar.height()); ++y) {
+    const double t = 1.0 - (y + 0.5) / bar.height();
+    painter.fillRect(QRectF(bar.left(), bar.top() + y, bar.width(), 1.0),
+                     to_qcolor(magnitude_colour(ramp_top * t)));
+  }
+  const int labels = 5;
+  for (int k = 0; k < labels; ++k) {
+    const double t = double(k) / (labels - 1);
+    const double y = bar.bottom() - t * bar.height();
+    painter.drawLine(QPointF(bar.right(), y), QPointF(bar.right() + 4, y));
+    painter.drawText(QRectF(bar.right() + 6, y - theme_.label_size, side.right() - bar.right() - 6,
+                            2.0 * theme_.label_size),
+                     Qt::AlignLeft | Qt::AlignVCenter,
+                     QString::asprintf("%.3g", t * bar_max_));
   }
 }
 
-double FlowRenderer::side_width_px() const {
-  return std::clamp(0.14 * window_->GetSize()[0], 80.0, 130.0);
-}
-
-double FlowRenderer::scene_fraction() const {
-  const int width = window_->GetSize()[0];
-  return width > 0 ? 1.0 - side_width_px() / width : 1.0;
-}
-
-void FlowRenderer::place_legend() {
-  const int* size = window_->GetSize();
-  if (size[0] < 1 || size[1] < 1) return;
-  const double split = scene_fraction();
-  scene_->SetViewport(0.0, 0.0, split, 1.0);
-  overlay_->SetViewport(0.0, 0.0, split, 1.0);
-  side_->SetViewport(split, 0.0, 1.0, 1.0);
-  const double side = std::min(side_width_px() - 8.0, 0.28 * size[1]);
-  legend_->SetViewport(1.0 - (side + 4.0) / size[0], 0.03, 1.0 - 4.0 / size[0],
-                       0.03 + side / size[1]);
-}
-
-void FlowRenderer::on_render_start(vtkObject*, unsigned long, void* self, void*) {
-  static_cast<FlowRenderer*>(self)->place_legend();
-  static_cast<FlowRenderer*>(self)->fit_view_angle();
+// The colour-wheel legend: the coding of every direction and magnitude up to the largest
+// (the disc's rim), y down as in the image. Made again only when its size changes.
+void FlowRenderer::paint_wheel_legend(QPainter& painter, const QRectF& square) {
+  const int edge = std::max(8, int(square.width()));
+  if (wheel_legend_.width() != edge) {
+    wheel_legend_ = QImage(edge, edge, QImage::Format_ARGB32_Premultiplied);
+    wheel_legend_.fill(Qt::transparent);
+    const double radius = 0.5 * edge / 1.05;
+    for (int y = 0; y < edge; ++y) {
+      auto* line = reinterpret_cast<QRgb*>(wheel_legend_.scanLine(y));
+      for (int x = 0; x < edge; ++x) {
+        const Vec2 offset((x + 0.5 - 0.5 * edge) / radius, (y + 0.5 - 0.5 * edge) / radius);
+        if (glm::length(offset) <= 1.0) line[x] = to_qcolor(flow_wheel_colour(offset, 1.0)).rgb();
+      }
+    }
+  }
+  painter.drawImage(square.topLeft(), wheel_legend_);
 }
 
 }  // namespace oflab

@@ -1,54 +1,54 @@
-// The VTK scene of the flow view: the image frame, the plane's projected outline and faint
-// texture, the chosen part of the flow as arrows (coloured by magnitude, with a scalar
-// bar), streamlines, and the colour-wheel coding with its legend.
+// The picture of the flow view, painted with Qt into one reused image: the image frame, the
+// plane's projected outline and faint texture, the chosen part of the flow as arrows
+// (coloured by magnitude, with a colour bar), streamlines, and the colour-wheel coding with
+// its legend.
 //
-// Two renderer layers share one viewpoint, the eye of core's pinhole camera: layer 0 draws
-// the textured plane in 3D (so the texture is projected exactly, perspective-correct),
-// layer 1 draws the overlays on the image plane Z = 1 (see gui/adapters/vtk_adapters.h). Before
-// every render the view angle (and, zoomed to the plane, the off-axis window centre) is
-// refitted so the chosen region of the image shows whole at any window aspect.
+// Everything is drawn in centred image pixels (core/flow/camera.h) mapped onto the view by
+// one scale and shift, refitted at every paint so the chosen region of the image shows
+// whole at any view aspect. The texture is core's exact perspective warp of the plane
+// (core/engine/engine.h's exact_texture_warp), the same projection the animation engine
+// uses. Drawing on the CPU into a reused image keeps a frame to a few milliseconds on a
+// software-rendered display: no OpenGL widget, no per-frame scene rebuild.
 #pragma once
 
-#include <vtkActor.h>
-#include <vtkImageActor.h>
-#include <vtkImageData.h>
-#include <vtkPolyData.h>
-#include <vtkRenderer.h>
-#include <vtkScalarBarActor.h>
-#include <vtkSmartPointer.h>
-#include <vtkTextActor.h>
-#include <vtkTexture.h>
-
+#include <QColor>
 #include <QImage>
+#include <QPointF>
+#include <QPolygonF>
+#include <QRectF>
 #include <QString>
+#include <QTransform>
+#include <vector>
 
 #include "adapters/flow_display.h"
+#include "image/image.h"
+#include "image/layer.h"
 #include "views/view_theme.h"
 
-class vtkRenderWindow;
-class vtkCallbackCommand;
+class QPainter;
 
 namespace oflab {
 
 class FlowRenderer {
  public:
-  // Adds the renderers to `window` (which must outlive this object) and sets its layers.
-  explicit FlowRenderer(vtkRenderWindow* window);
-  ~FlowRenderer();
+  FlowRenderer();
   FlowRenderer(const FlowRenderer&) = delete;
   FlowRenderer& operator=(const FlowRenderer&) = delete;
 
   void set_texture(const QImage& texture);
   void set_theme(const ViewTheme& theme);
 
-  // Rebuilds every actor for the context and options; `frame_caption` is appended to the
-  // caption line. The caller renders the window afterwards.
+  // Recomputes what is drawn (plane image, arrows, streamlines, wheel, captions) for the
+  // context and options; `frame_caption` is appended to the caption line. Paint shows it.
   void update(const FlowContext& context, const FlowDisplay& display, const QString& frame_caption);
+
+  // Paints the last update at `size` (view pixels; at least 1 x 1) into one of two reused
+  // images and returns it. Precondition: update has been called.
+  const QImage& paint(const QSize& size);
 
   // Largest magnitude of the shown part on the arrow grid after the last update (px/s).
   double shown_max_magnitude() const { return shown_max_; }
-  // The smallest font of its captions, colour-bar title and labels, screen pixels (VTK
-  // font points at the window's DPI).
+  // The smallest font of its captions, colour-bar title and labels, screen pixels.
   double smallest_text_px() const;
   // False when no part of the plane is seen inside the image (scene/view_culling.h's
   // plane_meets_image) and its centre is not in the image either (a plane seen edge-on in
@@ -58,46 +58,49 @@ class FlowRenderer {
   const QString& caption() const { return caption_text_; }
 
  private:
+  struct Arrow {
+    QPointF from, to;  // centred pixels
+    QColor colour;
+  };
   void update_faded_texture();
-  void create_actors();
-  void create_arrow_pipeline();
-  void create_legend_and_text();
-  void update_plane(const FlowContext& context, const FlowDisplay& display);
-  void update_arrows(const std::vector<FlowSample>& samples, double arrow_seconds,
-                     const FlowDisplay& display);
+  void update_plane_image(const FlowContext& context, bool wanted);
+  void update_arrows(const std::vector<FlowSample>& samples, double arrow_seconds, bool shown);
   void update_streamlines(const FlowContext& context, const FlowDisplay& display,
                           double arrow_seconds);
   void update_wheel(const FlowContext& context, const FlowDisplay& display);
   void update_caption(const FlowDisplay& display, const QString& frame_caption);
   void choose_view_region(const FlowContext& context, const FlowDisplay& display);
-  void fit_view_angle();
-  void place_legend();
-  double side_width_px() const;   // width of the legend strip on the right
-  double scene_fraction() const;  // fraction of the window width left for the image
-  static void on_render_start(vtkObject* caller, unsigned long event, void* self, void* data);
+  QTransform image_to_view(const QSize& size) const;
+  void paint_scene(QPainter& painter, const QTransform& to_view);
+  void paint_arrows(QPainter& painter, const QTransform& to_view);
+  void paint_side(QPainter& painter, const QRectF& side);
+  void paint_colour_bar(QPainter& painter, const QRectF& side);
+  void paint_wheel_legend(QPainter& painter, const QRectF& square);
+  double side_width_px(int view_width) const;  // width of the legend strip on the right
 
-  vtkRenderWindow* window_;
+  ViewTheme theme_;
   Camera camera_;
+  FlowDisplay display_;                // what the last update drew
   Vec2 view_centre_{0.0, 0.0};         // centred pixels shown at the middle of the view
   Vec2 view_half_size_{400.0, 300.0};  // half the image region that must stay visible, px
-  ViewTheme theme_;
   double shown_max_ = 0.0;
+  double bar_max_ = 1.0;  // colour bar's upper end (px/s), a 1-2-5 step
   bool plane_in_image_ = true;
   int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
-  QString caption_text_;
-  double bar_max_ = -1.0;           // colour bar's upper end (px/s), a 1-2-5 step
-  bool bar_presentation_ = false;   // theme the bar's table was made for
-  QImage texture_image_;            // the plane's texture as given
-  vtkSmartPointer<vtkRenderer> scene_, overlay_, legend_, side_;
-  vtkSmartPointer<vtkCallbackCommand> fit_callback_;
-  vtkSmartPointer<vtkActor> plane_, frame_, outline_, centre_mark_, arrows_, streamlines_,
-      wheel_legend_;
-  vtkSmartPointer<vtkTexture> texture_;
-  vtkSmartPointer<vtkPolyData> arrow_input_;
-  vtkSmartPointer<vtkImageActor> wheel_image_;
-  vtkSmartPointer<vtkImageData> wheel_data_;  // the wheel's colours, reused
-  vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
-  vtkSmartPointer<vtkTextActor> caption_, wheel_caption_, scalar_title_;
+  QString caption_text_, wheel_caption_;
+  QPolygonF outline_;           // the plane's projected corners, centred pixels
+  QImage texture_image_;        // the plane's texture as given
+  Layer faded_texture_;         // the texture faded towards the background, opaque
+  Image plane_image_;           // camera-sized: the background with the faded plane warped in
+  QRect plane_box_;             // the part of plane_image_ worth drawing (top-left pixels)
+  bool plane_drawn_ = false;
+  std::vector<Arrow> arrows_;
+  std::vector<QPolygonF> streamlines_;  // lines and their arrow heads, centred pixels
+  QImage wheel_;                // the wheel's colours, one texel per cell
+  QRectF wheel_rect_;           // where wheel_ lies, centred pixels
+  QImage wheel_legend_;         // the legend disc at its last drawn size
+  QImage buffers_[2];           // painted views, used in turn so the shown one is not copied
+  int next_buffer_ = 0;
 };
 
 }  // namespace oflab

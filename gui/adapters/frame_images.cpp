@@ -18,13 +18,14 @@ QColor qcolor(const Rgb8& c) { return QColor(c.r, c.g, c.b); }
 
 QColor level_qcolor(Level level) { return qcolor(level_colour(level)); }
 
+}  // namespace
+
 // Premultiplied RGBA8 rows are exactly QImage's Format_RGBA8888_Premultiplied.
-QImage wrap(const Image& image) {
+QImage image_view(const Image& image) {
+  if (image.empty()) return QImage();
   return QImage(reinterpret_cast<const uchar*>(image.row(0)), image.width(), image.height(),
                 image.width() * 4, QImage::Format_RGBA8888_Premultiplied);
 }
-
-}  // namespace
 
 Image image_from_qimage(const QImage& qimage) {
   const QImage rgba = qimage.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
@@ -40,7 +41,7 @@ QImage flatten_image(const Image& image, const QColor& background) {
   out.fill(background);
   if (image.empty()) return out;
   QPainter painter(&out);
-  painter.drawImage(0, 0, wrap(image));
+  painter.drawImage(0, 0, image_view(image));
   return out;
 }
 

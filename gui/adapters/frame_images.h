@@ -20,6 +20,10 @@ namespace oflab {
 // core image: rows are Format_RGBA8888_Premultiplied).
 Image image_from_qimage(const QImage& qimage);
 
+// A QImage sharing the pixels of a premultiplied core image (Format_RGBA8888_Premultiplied,
+// no copy): valid while `image` lives and is neither written nor reshaped.
+QImage image_view(const Image& image);
+
 // A premultiplied core image as an opaque QImage over `background`.
 QImage flatten_image(const Image& image, const QColor& background);
 

@@ -75,6 +75,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
   addDockWidget(Qt::LeftDockWidgetArea, scene_dock_);
   fit_scene_panel();
+  connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::update_scene_panel);
+  connect(animation_model_, &AnimationModel::source_changed, this, &MainWindow::update_scene_panel);
 
   create_actions();
   create_menus();
@@ -125,6 +127,11 @@ void MainWindow::fit_scene_panel() {
   controls_->ensurePolished();
   const int wanted = controls_->sizeHint().width() + 20;
   scene_dock_->widget()->setMinimumWidth(std::min(wanted, 430));
+}
+
+void MainWindow::update_scene_panel() {
+  const ViewPage* page = current_view();
+  controls_->set_note(page ? page->scene_panel_note() : QString());
 }
 
 void MainWindow::create_actions() {
@@ -433,7 +440,13 @@ void MainWindow::create_export_menu(QMenu* file) {
     QString error;
     if (dir.isEmpty()) return;
     if (!export_frames_png(this, dir, false, &error)) return show_message(error);
-    statusBar()->showMessage(tr("Wrote the animation view's frames to %1").arg(dir), 15000);
+    const int frames = animation_model_->animator() ? animation_model_->animator()->frame_count() : 0;
+    statusBar()->showMessage(tr("Wrote %1 frames of the animation view (frame-0000.png to "
+                                "frame-%2.png) to %3")
+                                 .arg(frames)
+                                 .arg(std::max(0, frames - 1), 4, 10, QChar('0'))
+                                 .arg(dir),
+                             15000);
   });
   QAction* video = exports->addAction(tr("Animation as video (MP4, GIF, Ogg Theora)..."));
   connect(video, &QAction::triggered, this, [this] {

@@ -132,6 +132,9 @@ class MainWindow : public QMainWindow {
   QWidget* create_banners();
   void style_banners();
   void fit_scene_panel();
+  // Disables the scene panel's controls, with the view's note, when the view in front does
+  // not draw the panel's plane (ViewPage::scene_panel_note).
+  void update_scene_panel();
   void show_message(const QString& text);
   void clear_message();
   void update_frame_label();

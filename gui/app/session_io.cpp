@@ -62,6 +62,11 @@ bool for_each_frame(MainWindow* window, QString* error,
                            QStringLiteral("Cancel"), 0, frames, window);
   progress.setWindowModality(Qt::WindowModal);
   progress.setMinimumDuration(500);
+  // The view's own clock (the blink timer) stops during the export: each frame's phase is
+  // that of its time in the exported animation.
+  const bool was_external = view->external_clock();
+  const bool blink = view->display() == PanelDisplay::kBlink;
+  view->set_external_clock(true);
   bool ok = true;
   for (int k = 0; k < frames && ok; ++k) {
     progress.setValue(k);
@@ -72,10 +77,12 @@ bool for_each_frame(MainWindow* window, QString* error,
       break;
     }
     window->model()->set_frame(k);
+    if (blink) view->set_blink_phase(AnimationView::blink_phase_at(k, kExportFps));
     view->render_image();  // brings every panel up to this frame
     ok = write(k, grab_with_vtk(view));
   }
   progress.setValue(frames);
+  view->set_external_clock(was_external);  // blink restarts from the engine's frame
   window->model()->set_frame(saved);
   return ok;
 }
@@ -203,7 +210,7 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
 
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error) {
   try {
-    VideoWriter video(path.toStdString(), 30, overwrite);
+    VideoWriter video(path.toStdString(), kExportFps, overwrite);
     const bool ok = for_each_frame(window, error, [&](int, const QImage& frame) {
       video.add_frame(image_from_qimage(frame));
       return true;

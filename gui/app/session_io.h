@@ -22,11 +22,14 @@ bool apply_session(MainWindow* window, const Session& session, QString* error);
 // Plays the animation view's source from frame 0 to its last frame and writes the whole
 // view as on screen for each frame (every panel of its layout, grabbed with
 // app/screenshot.h's grab_with_vtk, so images are as wide as the view): `directory`/
-// frame-0000.png ... (PNG) or one video file at 30 fps, MP4, GIF or Ogg Theora by the
-// extension of `path` (analysis/formats/video_file.h). A progress dialog counts the frames
+// frame-0000.png ... (PNG) or one video file at kExportFps, MP4, GIF or Ogg Theora by the
+// extension of `path` (analysis/formats/video_file.h). In the blink layout the frames
+// blink as the screen does (AnimationView::blink_phase_at at kExportFps): the engine's
+// frame, then the exact one, in turn. A progress dialog counts the frames
 // and can cancel. Refuses existing files unless `overwrite`. Returns false with *error set
 // on failure or cancel, and then removes what it wrote (no partial set of frames, no
 // partial video). The window's frame is restored.
+constexpr int kExportFps = 30;
 bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite, QString* error);
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error);
 

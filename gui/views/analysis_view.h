@@ -39,6 +39,7 @@ class AnalysisView : public ViewPage {
   explicit AnalysisView(AnimationModel* model, QWidget* parent = nullptr);
 
   QImage render_image() override;
+  QString scene_panel_note() const override;
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
 

@@ -21,7 +21,8 @@
 
 namespace oflab {
 
-// One panel: a camera-sized picture, the level outlines drawn on it, and the lines under it.
+// One panel: a camera-sized picture (premultiplied; painted over the view's background),
+// the level outlines drawn on it, and the lines under it.
 struct PanelContent {
   QString title;
   QImage image;
@@ -101,7 +102,7 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
   layout->addWidget(make_panels(), 1);
   show_model_state();
   blink_timer_ = new QTimer(this);
-  blink_timer_->setInterval(500);
+  blink_timer_->setInterval(kBlinkIntervalMs);
   connect(blink_timer_, &QTimer::timeout, this, [this] { set_blink_phase(!blink_phase_); });
   connect(model_, &AnimationModel::frame_changed, this, &AnimationView::refresh);
   connect(model_, &AnimationModel::source_changed, this, [this] {
@@ -208,6 +209,13 @@ void AnimationView::set_blink_phase(bool exact) {
   refresh();
 }
 
+QString AnimationView::scene_panel_note() const { return oflab::scene_panel_note(*model_); }
+
+bool AnimationView::blink_phase_at(int frame, int fps) {
+  const int frames_per_phase = std::max(1, int(std::lround(kBlinkIntervalMs * 1e-3 * fps)));
+  return (frame / frames_per_phase) % 2 == 1;
+}
+
 void AnimationView::set_external_clock(bool on) {
   external_clock_ = on;
   set_display(display_);
@@ -252,13 +260,13 @@ PanelContent AnimationView::engine_panel() {
   }
   const std::string title =
       fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
-  return {QString::fromStdString(title), flatten_image(engine_image(), qcolor(theme_.background)),
+  return {QString::fromStdString(title), image_view(engine_image()),
           model_->animator()->outlines(), run_caption(model_->current(), pixels, ms)};
 }
 
 PanelContent AnimationView::exact_panel() {
   const Animator* animator = model_->animator();
-  return {tr("exact projection (VTK)"), flatten_image(exact_image(), qcolor(theme_.background)), {},
+  return {tr("exact projection (VTK)"), image_view(exact_image()), {},
           {tr("frame %1 of %2").arg(animator->frame()).arg(animator->frame_count())}};
 }
 
@@ -272,7 +280,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
       continue;
     }
     const Image& image = run.animator->image();
-    shown.push_back({tr("%1 policy").arg(name), flatten_image(image, qcolor(theme_.background)),
+    shown.push_back({tr("%1 policy").arg(name), image_view(image),
                      run.animator->outlines(),
                      run_caption(run.last, double(run.pixels_written), run.time_ms)});
     heat.push_back({tr("%1 - exact").arg(name), difference_map(image, exact, kDifferenceScale), {},
@@ -325,13 +333,15 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   painter.setClipRect(target);
   // Outside the camera image: a shade apart from the image's own background.
   painter.fillRect(target, background.lightness() > 128 ? background.darker(112) : background.lighter(160));
+  const QRectF image_rect = to_panel.mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size())));
+  painter.fillRect(image_rect, background);
   painter.setTransform(to_panel);
   painter.drawImage(QPointF(0, 0), panel.image);
   painter.resetTransform();
   painter.setRenderHint(QPainter::Antialiasing, true);
   painter.setBrush(Qt::NoBrush);
   painter.setPen(QPen(outline, 1.0, Qt::DotLine));
-  painter.drawRect(to_panel.mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size()))));
+  painter.drawRect(image_rect);
   painter.setPen(QPen(outline, theme_.line_width, Qt::DashLine));
   for (const std::vector<Vec2>& points : outlines) {
     QPolygonF polygon;

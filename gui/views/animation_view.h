@@ -54,13 +54,21 @@ class AnimationView : public ViewPage {
   QImage render_image() override;
   void set_external_clock(bool on) override;
   void set_theme(const ViewTheme& theme) override;
+  QString scene_panel_note() const override;
 
   AnimationModel* model() const { return model_; }
   PanelDisplay display() const { return display_; }
   void set_display(PanelDisplay display);
-  // Blink shows the engine's frame (phase false) or the exact one (true).
+  // Blink shows the engine's frame (phase false) or the exact one (true), each for
+  // kBlinkIntervalMs while it plays on its own clock.
   bool blink_phase() const { return blink_phase_; }
   void set_blink_phase(bool exact);
+  static constexpr int kBlinkIntervalMs = 500;
+  // The blink phase of frame `frame` of an export at `fps` frames per second, so the
+  // exported animation blinks as the screen does: the engine's frame first, then
+  // kBlinkIntervalMs of each in turn. Preconditions: frame >= 0, fps > 0.
+  static bool blink_phase_at(int frame, int fps);
+  bool external_clock() const { return external_clock_; }
 
   // The policies of the comparison layout (1 .. kMaxComparedPolicies of the registry).
   PolicyComparison& comparison() { return *comparison_; }

@@ -1,30 +1,27 @@
-// The VTK side of the basis gallery: one render window split into 12 tiles (one renderer
-// each), laid out as in the dissertation's figures: the 2 translation terms on top, the 4
-// first-order terms below, the 6 second-order terms at the bottom. Each tile draws a
-// square grid deformed by its term alone (core's taylor_flow_at of the term's Taylor
-// terms, used as a displacement), over the faint undeformed square.
+// The basis gallery's picture: 12 tiles painted with Qt into one reused image, laid out as
+// in the dissertation's figures: the 2 translation terms on top, the 4 first-order terms
+// below, the 6 second-order terms at the bottom. Each tile draws a square grid deformed by
+// its term alone (core's taylor_flow_at of the term's Taylor terms, used as a
+// displacement), over the faint undeformed square, with the term's symbol and the current
+// flow's coefficient.
 #pragma once
 
-#include <vtkActor.h>
-#include <vtkRenderer.h>
-#include <vtkSmartPointer.h>
-#include <vtkTextActor.h>
-
+#include <QImage>
+#include <QPolygonF>
+#include <QSize>
+#include <string>
 #include <vector>
 
 #include "views/basis_catalog.h"
 #include "views/view_theme.h"
 
-class vtkCallbackCommand;
-class vtkRenderWindow;
+class QPainter;
 
 namespace oflab {
 
 class BasisTiles {
  public:
-  // Adds 12 renderers to `window`, which must outlive this object.
-  explicit BasisTiles(vtkRenderWindow* window);
-  ~BasisTiles();
+  BasisTiles();
   BasisTiles(const BasisTiles&) = delete;
   BasisTiles& operator=(const BasisTiles&) = delete;
 
@@ -35,6 +32,10 @@ class BasisTiles {
   // is the displacement of the grid as a fraction of half the tile (0 = undeformed). A
   // tile deforms in the direction of its coefficient's sign (positive when zero).
   void update(BasisKind kind, const TaylorTerms& flow, double radius_px, double amount);
+
+  // Paints the last update at `size` (pixels; at least 1 x 1) into one of two reused images
+  // and returns it.
+  const QImage& paint(const QSize& size);
 
   // Number of tiles whose coefficient is not zero after the last update.
   int active_tile_count() const { return active_count_; }
@@ -48,23 +49,18 @@ class BasisTiles {
 
  private:
   struct Tile {
-    vtkSmartPointer<vtkRenderer> renderer;
-    vtkSmartPointer<vtkActor> grid, square;
-    vtkSmartPointer<vtkTextActor> title, value;
+    std::vector<QPolygonF> grid;  // the deformed grid lines, half-tile units
+    std::string title, value;
     bool active = true;
     int order = 0;
   };
-  void create_tile(int index);
-  void style_tile(Tile& tile);
-  void fit_cameras();
-  static void on_render_start(vtkObject* caller, unsigned long event, void* self, void* data);
+  void paint_tile(QPainter& painter, const Tile& tile, const QRectF& cell) const;
 
-  vtkRenderWindow* window_;
   ViewTheme theme_;
-  vtkSmartPointer<vtkRenderer> background_;  // whole window, behind the tiles
   std::vector<Tile> tiles_;
-  vtkSmartPointer<vtkCallbackCommand> fit_callback_;
   int active_count_ = 0;
+  QImage buffers_[2];  // painted galleries, used in turn so the shown one is not copied
+  int next_buffer_ = 0;
 };
 
 }  // namespace oflab

@@ -1,9 +1,5 @@
 #include "views/basis_view.h"
 
-#include <QVTKOpenGLNativeWidget.h>
-#include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkRenderWindowInteractor.h>
-
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -15,6 +11,8 @@
 
 #include "views/basis_tiles.h"
 #include "views/flow_parts.h"
+#include "views/image_canvas.h"
+#include "views/paint_helpers.h"
 #include "models/scene_model.h"
 #include "scene/view_culling.h"
 
@@ -28,13 +26,9 @@ constexpr int kTimerMs = 40;
 
 BasisView::BasisView(SceneModel* model, QWidget* parent) : ViewPage(parent), model_(model) {
   setObjectName(QStringLiteral("basis_view"));
-  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
-  vtk_widget_->setObjectName(QStringLiteral("basis_vtk"));
-  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
-  window->SetMultiSamples(0);  // MSAA costs most of the frame on software OpenGL
-  vtk_widget_->setRenderWindow(window);
-  window->GetInteractor()->SetInteractorStyle(nullptr);
-  tiles_ = std::make_unique<BasisTiles>(window);
+  canvas_ = new ImageCanvas(this);
+  canvas_->setObjectName(QStringLiteral("basis_canvas"));
+  tiles_ = std::make_unique<BasisTiles>();
   timer_ = new QTimer(this);
   timer_->setInterval(kTimerMs);
   connect(timer_, &QTimer::timeout, this, &BasisView::step_animation);
@@ -44,9 +38,12 @@ BasisView::BasisView(SceneModel* model, QWidget* parent) : ViewPage(parent), mod
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(make_option_bar());
-  layout->addWidget(vtk_widget_, 1);
+  layout->addWidget(canvas_, 1);
   layout->addWidget(summary_);
   connect(model_, &SceneModel::scene_changed, this, &BasisView::refresh);
+  connect(canvas_, &ImageCanvas::resized, this, [this] {
+    if (isVisible()) paint_canvas();
+  });
 }
 
 BasisView::~BasisView() = default;
@@ -157,11 +154,13 @@ void BasisView::update_tiles() {
   dirty_ = false;
 }
 
+void BasisView::paint_canvas() { canvas_->set_image(tiles_->paint(canvas_->size())); }
+
 void BasisView::refresh() {
   dirty_ = true;
   if (!isVisible()) return;
   update_tiles();
-  vtk_widget_->renderWindow()->Render();
+  paint_canvas();
 }
 
 void BasisView::showEvent(QShowEvent* event) {
@@ -171,14 +170,15 @@ void BasisView::showEvent(QShowEvent* event) {
 
 QImage BasisView::render_image() {
   if (dirty_) update_tiles();
-  vtk_widget_->renderWindow()->Render();
-  return vtk_widget_->grabFramebuffer();
+  paint_canvas();
+  return canvas_->image();
 }
 
 double BasisView::smallest_text_px() const { return tiles_->smallest_text_px(); }
 
 void BasisView::set_theme(const ViewTheme& theme) {
   tiles_->set_theme(theme);
+  canvas_->set_background(to_qcolor(theme.background));
   refresh();
 }
 

@@ -13,11 +13,11 @@ class QComboBox;
 class QLabel;
 class QSlider;
 class QTimer;
-class QVTKOpenGLNativeWidget;
 
 namespace oflab {
 
 class BasisTiles;
+class ImageCanvas;
 class SceneModel;
 
 class BasisView : public ViewPage {
@@ -50,7 +50,8 @@ class BasisView : public ViewPage {
   double animated_amount() const;
   // Font size of the tiles' value labels, pixels.
   int value_font_size() const;
-  QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
+  // The widget that shows the painted gallery.
+  ImageCanvas* canvas() const { return canvas_; }
 
   void refresh();
 
@@ -60,9 +61,10 @@ class BasisView : public ViewPage {
  private:
   QWidget* make_option_bar();
   void update_tiles();
+  void paint_canvas();
 
   SceneModel* model_;
-  QVTKOpenGLNativeWidget* vtk_widget_;
+  ImageCanvas* canvas_;
   std::unique_ptr<BasisTiles> tiles_;
   QComboBox* basis_box_ = nullptr;
   QSlider* amount_slider_ = nullptr;

@@ -1,9 +1,5 @@
 #include "views/flow_view.h"
 
-#include <QVTKOpenGLNativeWidget.h>
-#include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkRenderWindowInteractor.h>
-
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
@@ -13,20 +9,17 @@
 #include <cmath>
 
 #include "views/coefficient_table.h"
+#include "views/image_canvas.h"
+#include "views/paint_helpers.h"
 #include "models/scene_model.h"
 
 namespace oflab {
 
 FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model_(model) {
   setObjectName(QStringLiteral("flow_view"));
-  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
-  vtk_widget_->setObjectName(QStringLiteral("flow_vtk"));
-  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
-  window->SetMultiSamples(0);  // MSAA costs most of the frame on software OpenGL
-  vtk_widget_->setRenderWindow(window);
-  // The flow view is a fixed camera: no mouse rotation of the image plane.
-  window->GetInteractor()->SetInteractorStyle(nullptr);
-  renderer_ = std::make_unique<FlowRenderer>(window);
+  canvas_ = new ImageCanvas(this);
+  canvas_->setObjectName(QStringLiteral("flow_canvas"));
+  renderer_ = std::make_unique<FlowRenderer>();
   renderer_->set_texture(model_->texture());
   table_ = new CoefficientTable(this);
 
@@ -48,7 +41,7 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   side_layout->addWidget(outside_note_);
   side_layout->addWidget(table_, 1);
   auto* splitter = new QSplitter(Qt::Horizontal, this);
-  splitter->addWidget(vtk_widget_);
+  splitter->addWidget(canvas_);
   splitter->addWidget(side);
   splitter->setStretchFactor(0, 1);
   splitter->setStretchFactor(1, 0);
@@ -57,8 +50,13 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   layout->addWidget(splitter, 1);
 
   connect(model_, &SceneModel::scene_changed, this, &FlowView::refresh);
-  connect(model_, &SceneModel::texture_changed, this,
-          [this] { renderer_->set_texture(model_->texture()); });
+  connect(model_, &SceneModel::texture_changed, this, [this] {
+    renderer_->set_texture(model_->texture());
+    refresh();
+  });
+  connect(canvas_, &ImageCanvas::resized, this, [this] {
+    if (isVisible()) paint_canvas();
+  });
 }
 
 FlowView::~FlowView() = default;
@@ -148,11 +146,13 @@ void FlowView::update_scene() {
   dirty_ = false;
 }
 
+void FlowView::paint_canvas() { canvas_->set_image(renderer_->paint(canvas_->size())); }
+
 void FlowView::refresh() {
   dirty_ = true;
   if (!isVisible()) return;
   update_scene();
-  vtk_widget_->renderWindow()->Render();
+  paint_canvas();
 }
 
 void FlowView::showEvent(QShowEvent* event) {
@@ -162,14 +162,15 @@ void FlowView::showEvent(QShowEvent* event) {
 
 QImage FlowView::render_image() {
   if (dirty_) update_scene();
-  vtk_widget_->renderWindow()->Render();
-  return vtk_widget_->grabFramebuffer();
+  paint_canvas();
+  return canvas_->image();
 }
 
 double FlowView::smallest_text_px() const { return renderer_->smallest_text_px(); }
 
 void FlowView::set_theme(const ViewTheme& theme) {
   renderer_->set_theme(theme);
+  canvas_->set_background(to_qcolor(theme.background));
   refresh();
 }
 

@@ -11,11 +11,11 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QVTKOpenGLNativeWidget;
 
 namespace oflab {
 
 class CoefficientTable;
+class ImageCanvas;
 class SceneModel;
 
 class FlowView : public ViewPage {
@@ -33,7 +33,8 @@ class FlowView : public ViewPage {
   FlowDisplay display() const;
   void set_display(const FlowDisplay& display);
   CoefficientTable* coefficient_table() const { return table_; }
-  QVTKOpenGLNativeWidget* vtk_widget() const { return vtk_widget_; }
+  // The widget that shows the painted flow picture.
+  ImageCanvas* canvas() const { return canvas_; }
   // Largest magnitude of the shown part after the last update, px/s.
   double shown_max_magnitude() const { return renderer_->shown_max_magnitude(); }
   // False when the plane is outside the image after the last update; the view then draws
@@ -41,8 +42,8 @@ class FlowView : public ViewPage {
   bool plane_in_image() const { return renderer_->plane_in_image(); }
   QString caption() const { return renderer_->caption(); }
 
-  // Updates the VTK scene from the model and renders when the view is visible (otherwise
-  // it renders when shown).
+  // Updates the picture from the model and paints it when the view is visible (otherwise
+  // it paints when shown).
   void refresh();
 
  protected:
@@ -51,9 +52,10 @@ class FlowView : public ViewPage {
  private:
   QWidget* make_option_bar();
   void update_scene();
+  void paint_canvas();
 
   SceneModel* model_;
-  QVTKOpenGLNativeWidget* vtk_widget_;
+  ImageCanvas* canvas_;
   std::unique_ptr<FlowRenderer> renderer_;
   CoefficientTable* table_;
   QLabel* outside_note_ = nullptr;

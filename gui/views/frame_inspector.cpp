@@ -74,6 +74,19 @@ QString hidden_layer_note(const AnimationFrame& f) {
 
 }  // namespace
 
+QString scene_panel_note(const AnimationModel& model) {
+  const AnimationSourceKind& kind = model.source_kind();
+  if (kind.follows_scene_panel) return QString();
+  const SourceChoice& source = model.source();
+  QString playing = QString::fromStdString(fill_pattern(kind.label, source.name));
+  if (kind.uses_viewer && !source.viewer.empty()) {
+    playing += QObject::tr(" (viewer script %1)").arg(QString::fromStdString(source.viewer));
+  }
+  return QObject::tr("This view plays %1, not the plane of this panel: the plane, motion and "
+                     "camera below apply to the flow and basis views.")
+      .arg(playing);
+}
+
 QString not_drawn_reason(const AnimationFrame& frame) {
   if (frame.drawn() > 0) return QString();
   const QString note = hidden_layer_note(frame);
@@ -157,9 +170,10 @@ QString pixel_readout(const Animator& animator, const Vec2& pixel, const Image& 
   for (const LayerOutline& outline : animator.outlines()) {  // back to front: the last wins
     if (holds(outline, pixel)) level = QStringLiteral("level %1").arg(level_name(outline.level));
   }
-  return QStringLiteral("pixel (%1, %2): %3, engine %4, exact %5")
-      .arg(x)
-      .arg(y)
+  const Vec2 centred = pixel_to_centred(animator.camera(), Vec2(x + 0.5, y + 0.5));
+  return QStringLiteral("pixel (%1, %2) px from the principal point: %3, engine %4, exact %5")
+      .arg(centred.x, 0, 'f', 1)
+      .arg(centred.y, 0, 'f', 1)
       .arg(level, colour(shown, x, y), colour(exact, x, y));
 }
 

@@ -9,6 +9,8 @@
 
 namespace oflab {
 
+class AnimationModel;
+
 // Rich text. A frame that updated exactly one layer (a single plane, or a scene with one
 // animated polygon): what the frame shows (a re-render is the policy's initial view, the
 // exact projection or its affine part of section 6.5, with the measured distance to the
@@ -31,6 +33,10 @@ constexpr double kExactTolerancePx = 0.01;
 // Precondition: report.visible.
 QString describe_shown_view(const FrameReport& report, const ReusePolicy& policy);
 
+// Empty when the model's source follows the scene panel (its plane and motion); otherwise
+// what the animation and analysis views play instead, for the scene panel's note.
+QString scene_panel_note(const AnimationModel& model);
+
 // Why nothing of `frame` is on screen, empty when a layer is drawn: the note of a layer
 // that is not visible (e.g. "not visible: a corner is at or behind the eye"), "outside the
 // image" when every layer was culled outside the view, "seen from behind or edge-on" when
@@ -38,8 +44,10 @@ QString describe_shown_view(const FrameReport& report, const ReusePolicy& policy
 QString not_drawn_reason(const AnimationFrame& frame);
 
 // One line about image pixel `pixel` (top-left pixels) of the animator's current frame: the
-// level of the topmost drawn layer there (none when no outline holds it), and the engine's
-// and the exact colour there (premultiplied RGBA).
+// position of that pixel's centre in centred pixels (the principal point at (0, 0), Y down,
+// as the flow view and the coefficients use), the level of the topmost drawn layer there
+// (none when no outline holds it), and the engine's and the exact colour there
+// (premultiplied RGBA). Empty outside the frame.
 QString pixel_readout(const Animator& animator, const Vec2& pixel, const Image& exact);
 
 }  // namespace oflab

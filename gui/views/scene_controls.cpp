@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QGroupBox>
+#include <QLabel>
 #include <QVBoxLayout>
 
 #include "models/scene_model.h"
@@ -13,9 +14,14 @@ namespace oflab {
 SceneControls::SceneControls(SceneModel* model, QWidget* parent) : QWidget(parent), model_(model) {
   setObjectName(QStringLiteral("scene_controls"));
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(make_motion_group());
-  layout->addWidget(make_plane_group());
-  layout->addWidget(make_camera_group());
+  note_ = new QLabel(this);
+  note_->setObjectName(QStringLiteral("scene_panel_note"));
+  note_->setWordWrap(true);
+  note_->setStyleSheet(QStringLiteral("QLabel { color: white; background: #0072B2; padding: 4px; }"));
+  note_->hide();
+  layout->addWidget(note_);
+  groups_ = {make_motion_group(), make_plane_group(), make_camera_group()};
+  for (QWidget* group : groups_) layout->addWidget(group);
   layout->addStretch(1);
   // The scene at time 0 changes with its source only, not with the frame: syncing on every
   // frame would rewrite a number the user is typing while the motion plays.
@@ -23,6 +29,14 @@ SceneControls::SceneControls(SceneModel* model, QWidget* parent) : QWidget(paren
   connect(model_, &SceneModel::scene_rejected, this, &SceneControls::sync_from_model);
   sync_from_model();
 }
+
+void SceneControls::set_note(const QString& note) {
+  note_->setText(note);
+  note_->setVisible(!note.isEmpty());
+  for (QWidget* group : groups_) group->setEnabled(note.isEmpty());
+}
+
+QString SceneControls::note() const { return note_->text(); }
 
 SliderSpin* SceneControls::add_control(QWidget* group, const QString& name, const QString& label,
                                        const QString& what, const Range& range,

@@ -12,6 +12,7 @@
 #include "flow/plane_scene.h"
 
 class QComboBox;
+class QLabel;
 
 namespace oflab {
 
@@ -31,6 +32,11 @@ class SceneControls : public QWidget {
 
   // Shows the model's scene in every control (without emitting edits).
   void sync_from_model();
+
+  // Empty: the controls apply to the view in front and are enabled. Otherwise `note` (what
+  // that view plays instead) is shown above the controls, which are disabled.
+  void set_note(const QString& note);
+  QString note() const;
 
  private:
   struct Binding {
@@ -57,6 +63,8 @@ class SceneControls : public QWidget {
   SceneModel* model_;
   std::vector<Binding> bindings_;
   QComboBox* model_box_ = nullptr;
+  QLabel* note_ = nullptr;
+  std::vector<QWidget*> groups_;  // motion, plane, camera
 };
 
 }  // namespace oflab

@@ -1,13 +1,16 @@
 #include "views/slices_view.h"
 
 #include <QHBoxLayout>
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QVBoxLayout>
 #include <cmath>
+#include <functional>
 
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
 #include "adapters/frame_images.h"
+#include "runs/vtk_scene_renderer.h"
 #include "views/slider_spin.h"
 
 namespace oflab {
@@ -26,8 +29,102 @@ QFont diagram_font(const ViewTheme& theme) {
 
 // Lateral extent of the diagram, world units either side of the axis.
 constexpr double kHalfWidth = 12.0;
+constexpr double kNear = 0.05;  // near plane of the exact render, world units
+
+const QColor kBandA(90, 170, 120, 60), kBandB(90, 120, 170, 60);
+const QColor kAsymptote(213, 94, 0);   // Okabe-Ito vermillion
+const QColor kPlane(230, 159, 0);      // Okabe-Ito orange
+
+// The depth axis under the diagram: a tick and label at each depth_ticks value, the eye's
+// 0 at the left, and the axis title at the right.
+void draw_depth_axis(QPainter& p, const std::function<double(double)>& x_of, double left,
+                     double right, double bottom, double max_depth, const QColor& text) {
+  const QFontMetricsF fm(p.font());
+  p.setPen(QPen(text, 1));
+  p.drawLine(QPointF(left, bottom), QPointF(right, bottom));
+  double last_right = -1e9;
+  for (double z : depth_ticks(max_depth)) {
+    const double x = x_of(z);
+    p.drawLine(QPointF(x, bottom), QPointF(x, bottom + 5));
+    const QString label = QString::number(z);
+    const double w = fm.horizontalAdvance(label);
+    if (x - w / 2 < last_right + 6) continue;  // too close to the previous label
+    p.drawText(QPointF(x - w / 2, bottom + 5 + fm.ascent()), label);
+    last_right = x + w / 2;
+  }
+  p.drawText(QRectF(left, bottom + 6 + fm.height(), right - left, fm.height()), Qt::AlignRight,
+             QStringLiteral("depth Z, world units (square-root scale)"));
+}
+
+// The legend from `area`'s top left: a swatch of each mark and its meaning, in as many
+// rows as the width needs. Returns the y below its last row.
+double draw_diagram_legend(QPainter& p, const QRectF& area, const ViewTheme& theme) {
+  const QFontMetricsF fm(p.font());
+  const double h = fm.height(), swatch = 1.6 * h;
+  double x = area.left(), y = area.top();
+  auto entry = [&](const QString& name, const std::function<void(const QRectF&)>& mark) {
+    const double width = swatch + 4 + fm.horizontalAdvance(name);
+    if (x > area.left() && x + width > area.right()) x = area.left(), y += 1.2 * h;
+    const QRectF box(x, y + 0.15 * h, swatch, 0.7 * h);
+    mark(box);
+    p.setPen(qcolor(theme.text));
+    p.drawText(QPointF(box.right() + 4, y + fm.ascent()), name);
+    x += width + h;
+  };
+  entry(QStringLiteral("slices"), [&](const QRectF& b) {
+    p.fillRect(QRectF(b.left(), b.top(), b.width() / 2, b.height()), kBandA);
+    p.fillRect(QRectF(b.center().x(), b.top(), b.width() / 2, b.height()), kBandB);
+  });
+  entry(QStringLiteral("slice boundary"), [&](const QRectF& b) {
+    p.setPen(QPen(qcolor(theme.outline), 1));
+    p.drawLine(QPointF(b.center().x(), b.top()), QPointF(b.center().x(), b.bottom()));
+  });
+  entry(QStringLiteral("asymptote k|V|/epsilon"), [&](const QRectF& b) {
+    p.setPen(QPen(kAsymptote, 2, Qt::DashLine));
+    p.drawLine(QPointF(b.center().x(), b.top()), QPointF(b.center().x(), b.bottom()));
+  });
+  entry(QStringLiteral("scene plane (seen from above)"), [&](const QRectF& b) {
+    p.setPen(QPen(kPlane, 4));
+    p.drawLine(QPointF(b.center().x(), b.top()), QPointF(b.center().x(), b.bottom()));
+  });
+  return y + 1.2 * h;
+}
+
+// A camera frame scaled to fit under its title in an image of `area`.
+QPixmap titled_picture(const QImage& frame, const QString& title, const QSize& area,
+                       const ViewTheme& theme) {
+  QImage image(area, QImage::Format_RGB32);
+  image.fill(qcolor(theme.background));
+  QPainter p(&image);
+  QFont font = diagram_font(theme);
+  font.setBold(true);
+  p.setFont(font);
+  p.setPen(qcolor(theme.text));
+  const double title_h = 1.6 * theme.font_size;
+  p.drawText(QRectF(0, 0, area.width(), title_h), Qt::AlignCenter, title);
+  if (!frame.isNull()) {
+    const QSize fitted = frame.size().scaled(area - QSize(0, int(title_h)), Qt::KeepAspectRatio);
+    const QRectF target(0.5 * (area.width() - fitted.width()), title_h, fitted.width(),
+                        fitted.height());
+    p.setRenderHint(QPainter::SmoothPixmapTransform, true);
+    p.drawImage(target, frame);
+    p.setPen(QPen(qcolor(theme.muted), 1));
+    p.drawRect(target);
+  }
+  return QPixmap::fromImage(image);
+}
 
 }  // namespace
+
+std::vector<double> depth_ticks(double max_depth) {
+  std::vector<double> ticks;
+  for (double decade = 1.0; decade <= max_depth; decade *= 10.0) {
+    for (double step : {1.0, 2.0, 5.0}) {
+      if (step * decade <= max_depth) ticks.push_back(step * decade);
+    }
+  }
+  return ticks;
+}
 
 QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, double asymptote,
                      const std::vector<DiagramPlane>& planes, double max_depth,
@@ -36,31 +133,37 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   image.fill(qcolor(theme.background));
   QPainter p(&image);
   p.setRenderHint(QPainter::Antialiasing);
-  const double left = 40, right = width - 20, top = 30, bottom = height - 30;
-  auto x_of = [&](double z) {
+  p.setFont(diagram_font(theme));
+  const double line = QFontMetricsF(p.font()).height();
+  const double left = 40, right = width - 20, bottom = height - 2.4 * line - 10;
+  p.setPen(qcolor(theme.text));
+  p.drawText(QPointF(left, line), QString("%1 slices (%2 finite + background)")
+                                       .arg(slices.size())
+                                       .arg(slices.empty() ? 0 : slices.size() - 1));
+  const double top = draw_diagram_legend(p, QRectF(left, 1.3 * line, right - left, line), theme) + 8;
+  std::function<double(double)> x_of = [&](double z) {
     return left + (right - left) * std::sqrt(std::min(z, max_depth) / max_depth);
   };
   auto y_of = [&](double x) { return top + (bottom - top) * (0.5 - x / (2.0 * kHalfWidth)); };
-  p.setFont(diagram_font(theme));
   const QColor text = qcolor(theme.text);
   // Alternate slice bands, boundaries, and the background slice.
   for (size_t i = 0; i < slices.size(); ++i) {
     const double far = std::isfinite(slices[i].far) ? slices[i].far : max_depth;
     const QRectF band(QPointF(x_of(slices[i].near), top), QPointF(x_of(far), bottom));
-    p.fillRect(band, i % 2 ? QColor(90, 120, 170, 60) : QColor(90, 170, 120, 60));
+    p.fillRect(band, i % 2 ? kBandB : kBandA);
     p.setPen(QPen(qcolor(theme.outline), 1));
     p.drawLine(QPointF(band.left(), top), QPointF(band.left(), bottom));
   }
   // The asymptote k|V|/epsilon.
   if (std::isfinite(asymptote)) {
-    p.setPen(QPen(QColor(213, 94, 0), 2, Qt::DashLine));
+    p.setPen(QPen(kAsymptote, 2, Qt::DashLine));
     p.drawLine(QPointF(x_of(asymptote), top), QPointF(x_of(asymptote), bottom));
     p.setPen(text);
     p.drawText(QPointF(x_of(asymptote) + 4, top + theme.font_size),
                QString("asymptote Z = %1").arg(asymptote, 0, 'f', 2));
   }
   // The scene's planes, seen from above.
-  p.setPen(QPen(QColor(230, 159, 0), 4));
+  p.setPen(QPen(kPlane, 4));
   for (const DiagramPlane& pl : planes) {
     if (pl.depth <= 0) continue;
     p.drawLine(QPointF(x_of(pl.depth), y_of(std::clamp(pl.left, -kHalfWidth, kHalfWidth))),
@@ -71,13 +174,8 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   p.setBrush(text);
   p.drawEllipse(QPointF(left, y_of(0.0)), 5, 5);
   p.setPen(text);
-  p.drawText(QPointF(left - 30, bottom + 20), "eye");
-  // Right-aligned to the diagram's edge, whatever the font size.
-  p.drawText(QRectF(left, bottom + 4, right - left, p.fontMetrics().height()), Qt::AlignRight,
-             QString("depth (sqrt scale) to %1").arg(max_depth, 0, 'f', 0));
-  p.drawText(QPointF(left, top - 10), QString("%1 slices (%2 finite + background)")
-                                          .arg(slices.size())
-                                          .arg(slices.empty() ? 0 : slices.size() - 1));
+  p.drawText(QPointF(left - 30, y_of(0.0) - 8), "eye");
+  draw_depth_axis(p, x_of, left, right, bottom, max_depth, text);
   return image;
 }
 
@@ -89,10 +187,11 @@ SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(fa
   speed_->set_description(tr("Speed |V| of the viewer moving sideways"));
   diagram_ = new QLabel(this);
   frame_label_ = new QLabel(this);
+  exact_label_ = new QLabel(this);
   caption_ = new QLabel(this);
   caption_->setWordWrap(true);
   // The pictures follow the tab's size instead of setting the window's minimum width.
-  for (QLabel* picture : {diagram_, frame_label_}) {
+  for (QLabel* picture : {diagram_, frame_label_, exact_label_}) {
     picture->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
     picture->setMinimumSize(160, 120);
     picture->setAlignment(Qt::AlignCenter);
@@ -101,8 +200,11 @@ SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(fa
   controls->addWidget(epsilon_);
   controls->addWidget(speed_);
   auto* pictures = new QHBoxLayout;
-  pictures->addWidget(diagram_);
-  pictures->addWidget(frame_label_);
+  auto* frames = new QVBoxLayout;  // wide camera frames: one above the other
+  frames->addWidget(frame_label_, 1);
+  frames->addWidget(exact_label_, 1);
+  pictures->addWidget(diagram_, 1);
+  pictures->addLayout(frames, 1);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(controls);
   layout->addLayout(pictures, 1);
@@ -112,6 +214,13 @@ SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(fa
     script_ = read_viewer_script_file(resolve_viewer_script_path("train-sideways"));
   } catch (const std::exception& e) {
     problem_ = QString::fromStdString(e.what());
+  }
+  if (problem_.isEmpty()) {
+    try {
+      exact_ = std::make_unique<VtkSceneRenderer>(scene_, script_.camera, kNear);
+    } catch (const std::exception& e) {  // no display for VTK: the slices alone
+      exact_problem_ = QString::fromStdString(e.what());
+    }
   }
   epsilon_->set_value(1.0);
   speed_->set_value(0.05);
@@ -123,6 +232,19 @@ SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(fa
 SlicesView::~SlicesView() = default;
 
 double SlicesView::epsilon_px() const { return epsilon_->value(); }
+
+const Image& SlicesView::shifted_image() const {
+  static const Image kEmpty;
+  return renderer_ ? renderer_->frame() : kEmpty;
+}
+
+// The exact projection of the script's current frame (VTK), beside the slices' frame.
+void SlicesView::render_exact() {
+  exact_frame_ = Image();
+  if (!exact_ || frame_ >= static_cast<int>(script_.frames.size())) return;
+  exact_->render(script_.frames[size_t(frame_)].pose);
+  exact_frame_ = exact_->image();
+}
 double SlicesView::speed() const { return speed_->value(); }
 
 void SlicesView::restart() {
@@ -176,11 +298,15 @@ void SlicesView::refresh() {
   diagram_->setPixmap(QPixmap::fromImage(slice_diagram(area.width(), area.height(), slices_,
                                                        asymptote, planes, max_depth, theme_)));
   if (renderer_) {
-    const QImage frame = flatten_image(renderer_->frame(), qcolor(theme_.background));
-    frame_label_->setPixmap(QPixmap::fromImage(
-        frame.scaled(frame_label_->size().expandedTo(QSize(160, 120)), Qt::KeepAspectRatio,
-                     Qt::SmoothTransformation)));
+    frame_label_->setPixmap(titled_picture(
+        flatten_image(renderer_->frame(), qcolor(theme_.background)), tr("scene shifting (slices)"),
+        frame_label_->size().expandedTo(QSize(160, 120)), theme_));
   }
+  render_exact();
+  exact_label_->setPixmap(titled_picture(
+      exact_frame_.empty() ? QImage() : flatten_image(exact_frame_, qcolor(theme_.background)),
+      exact_problem_.isEmpty() ? tr("exact projection (VTK)") : exact_problem_,
+      exact_label_->size().expandedTo(QSize(160, 120)), theme_));
   caption_->setText(QString("Frame %1: a viewer moving sideways at %2 units/frame, slices "
                             "cut so every point of a slice moves within %3 px of the others "
                             "(eq. 9, asymptote k|V|/epsilon = %4).")
@@ -198,6 +324,11 @@ QImage SlicesView::render_image() {
 void SlicesView::resizeEvent(QResizeEvent* event) {
   ViewPage::resizeEvent(event);
   refresh();
+}
+
+QString SlicesView::scene_panel_note() const {
+  return tr("This view plays its own train-window scene, not the plane of this panel: the "
+            "plane, motion and camera below apply to the flow and basis views.");
 }
 
 double SlicesView::smallest_text_px() const { return QFontInfo(diagram_font(theme_)).pixelSize(); }

@@ -1,8 +1,9 @@
 // The "Scene shifting" view (dissertation chapter 3, manual/scene-shifting.md): a top-down
 // diagram of Hofmann's slices for the train-window scene (depth against lateral position:
-// the eye, the slice boundaries, the asymptote k|V|/epsilon, the scene's planes) beside the
-// scene-shifting renderer's layered animation, with epsilon and the viewer's speed on
-// sliders. Everything shown comes from core/scene_shifting/scene_shifting.h and
+// the eye, the slice boundaries, the asymptote k|V|/epsilon, the scene's planes, with depth
+// ticks and a legend) beside the scene-shifting renderer's layered animation and the exact
+// projection of the same frame (VTK, analysis/runs/vtk_scene_renderer.h), with epsilon and
+// the viewer's speed on sliders. Everything shown comes from core/scene_shifting/scene_shifting.h and
 // core/scene_shifting/scene_shifting_renderer.h; this file only draws it.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <QImage>
 #include <QLabel>
 
+#include "image/image.h"
 #include "scene/scene.h"
 #include "scene_shifting/scene_shifting_renderer.h"
 #include "scene/viewer_script.h"
@@ -20,6 +22,11 @@
 namespace oflab {
 
 class SliderSpin;
+class VtkSceneRenderer;
+
+// The depths the diagram's axis marks: 1, 2 and 5 times powers of ten from 1 up to
+// `max_depth` (world units), increasing. Precondition: max_depth > 0.
+std::vector<double> depth_ticks(double max_depth);
 
 // Paints the top-down slice diagram into a width x height image: depth runs left to right
 // on a square-root scale from the eye to `max_depth` (world units), lateral position
@@ -43,12 +50,17 @@ class SlicesView : public ViewPage {
   void step_animation() override;
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
+  QString scene_panel_note() const override;
 
   // The slicing in force (for tests): epsilon in pixels per frame, speed in world units
   // per frame.
   double epsilon_px() const;
   double speed() const;
   int slice_count() const { return static_cast<int>(slices_.size()); }
+  // The current frame as scene shifting draws it and as VTK projects it exactly
+  // (camera-sized, premultiplied; the exact one is empty when VTK cannot render).
+  const Image& shifted_image() const;
+  const Image& exact_image() const { return exact_frame_; }
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
@@ -56,10 +68,14 @@ class SlicesView : public ViewPage {
  private:
   void restart();
   void refresh();
+  void render_exact();
 
   Scene scene_;
   ViewerScript script_;
   std::unique_ptr<SceneShiftingRenderer> renderer_;
+  std::unique_ptr<VtkSceneRenderer> exact_;
+  Image exact_frame_;
+  QString exact_problem_;  // why the exact frame cannot be shown, if it cannot
   std::vector<Slice> slices_;
   int frame_ = 0;
   QString problem_;
@@ -68,6 +84,7 @@ class SlicesView : public ViewPage {
   SliderSpin* speed_ = nullptr;
   QLabel* diagram_ = nullptr;
   QLabel* frame_label_ = nullptr;
+  QLabel* exact_label_ = nullptr;
   QLabel* caption_ = nullptr;
 };
 

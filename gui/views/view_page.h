@@ -29,6 +29,10 @@ class ViewPage : public QWidget {
   // legends, colour-bar and chart labels), screen pixels, as its drawing objects hold it
   // now; 0 for a view that draws no text of its own (its Qt controls use the app font).
   virtual double smallest_text_px() const { return 0.0; }
+  // Empty when the scene panel's plane, motion and camera are what this view draws;
+  // otherwise one sentence saying what the view plays instead (the window then disables
+  // the panel's controls and shows the sentence on it).
+  virtual QString scene_panel_note() const { return QString(); }
 };
 
 }  // namespace oflab

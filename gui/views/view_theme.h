@@ -1,4 +1,4 @@
-// Colours and sizes of the VTK views for the two looks of the application: the normal
+// Colours and sizes of the painted views for the two looks of the application: the normal
 // dark look and presentation mode (light backgrounds, large text, thick lines, for a
 // projector). Qt widgets get the matching palette and font from MainWindow.
 #pragma once

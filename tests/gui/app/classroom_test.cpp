@@ -17,6 +17,7 @@
 #include <QTabBar>
 #include <QTableWidget>
 
+#include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "views/coefficient_table.h"
 #include "views/flow_view.h"
@@ -217,6 +218,36 @@ TEST_F(ClassroomTest, ValuesTypedWhilePlayingApply) {
   EXPECT_DOUBLE_EQ(window().model()->scene().motion.velocity.y, 0.7);
   EXPECT_TRUE(window().motion_playing());
   window().set_motion_playing(false);
+}
+
+// With a multi-plane scene playing, the scene panel's single-plane controls do nothing for
+// the animation and analysis views (nor for the scene-shifting view's own scene): they are
+// disabled there, with a note saying what plays; on the flow and basis views they apply.
+TEST_F(ClassroomTest, ScenePanelControlsAreDisabledWhereTheyDoNotApply) {
+  SceneControls* panel = window().scene_controls();
+  QLabel* note = panel->findChild<QLabel*>("scene_panel_note");
+  ASSERT_NE(note, nullptr);
+  window().show_view("animation");
+  EXPECT_TRUE(panel->control("turn")->isEnabled());  // the demo plays the panel's plane
+  EXPECT_FALSE(note->isVisibleTo(panel));
+  ASSERT_TRUE(window().animation_model()->set_source({"scene", "four-cubes", "circle"}));
+  for (const char* view : {"animation", "analysis", "slices"}) {
+    window().show_view(view);
+    EXPECT_FALSE(panel->control("turn")->isEnabled()) << view;
+    EXPECT_FALSE(panel->control("velocity_x")->isEnabled()) << view;
+    EXPECT_FALSE(panel->control("focal")->isEnabled()) << view;
+    EXPECT_TRUE(note->isVisibleTo(panel)) << view;
+  }
+  window().show_view("animation");
+  EXPECT_TRUE(panel->note().contains("four-cubes")) << panel->note().toStdString();
+  for (const char* view : {"flow", "basis"}) {
+    window().show_view(view);
+    EXPECT_TRUE(panel->control("turn")->isEnabled()) << view;
+    EXPECT_FALSE(note->isVisibleTo(panel)) << view;
+  }
+  window().show_view("animation");
+  ASSERT_TRUE(window().animation_model()->set_source({"plane", "", ""}));
+  EXPECT_TRUE(panel->control("turn")->isEnabled());
 }
 
 }  // namespace

@@ -13,7 +13,9 @@
 #include "models/animation_model.h"
 #include "views/animation_view.h"
 #include "models/scene_model.h"
+#include "app/screenshot.h"
 #include "app/session_io.h"
+#include "image_checks.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -23,18 +25,18 @@ using ExportTest = WindowTest;
 
 constexpr int kFrames = 8;
 
-// Loads a short rotation script of kFrames frames; the animation view plays it.
-void play_short_script(MainWindow& window, const QTemporaryDir& dir) {
+// Loads a short rotation script of `frames` frames; the animation view plays it.
+void play_short_script(MainWindow& window, const QTemporaryDir& dir, int frames = kFrames) {
   const QString path = dir.filePath("short.json");
   std::ofstream(path.toStdString()) << R"({"format": "oflab-script", "version": 1,
     "name": "short", "camera": {"focal_px": 256, "image": [320, 240]},
     "plane": {"point": [0, 0, 1], "normal": [0, 0, 1], "up": [0, -1, 0],
               "size": [0.949, 0.773]},
     "motion_model": "centre",
-    "segments": [{"frames": 8, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
+    "segments": [{"frames": )" << frames << R"(, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
   ASSERT_TRUE(window.load_script(path)) << window.message().toStdString();
   ASSERT_NE(window.animation_model()->animator(), nullptr);
-  ASSERT_EQ(window.animation_model()->animator()->frame_count(), kFrames);
+  ASSERT_EQ(window.animation_model()->animator()->frame_count(), frames);
 }
 
 std::string read_all(const QString& path) {
@@ -70,6 +72,46 @@ TEST_F(ExportTest, PngFramesAreOnePerFrameDifferAndAreNotOverwritten) {
   EXPECT_TRUE(error.contains("exists")) << error.toStdString();
   EXPECT_EQ(read_all(QDir(out).filePath(files.front())), before);
   EXPECT_TRUE(export_frames_png(&window(), out, true, &error)) << error.toStdString();
+}
+
+// In the blink layout the exported frames blink as the screen does: half a second (15
+// frames at 30 fps) of the engine's frame, then half a second of the exact one. Each
+// exported frame's panel is the view's panel at that frame in that phase (the panel's
+// picture only: its captions carry measured times, which differ from run to run).
+TEST_F(ExportTest, BlinkExportAlternatesEngineAndExactAsOnScreen) {
+  QTemporaryDir dir;
+  constexpr int kLong = 32;
+  play_short_script(window(), dir, kLong);
+  AnimationView* view = window().animation_view();
+  view->set_display(PanelDisplay::kBlink);
+  const QString out = dir.filePath("blink");
+  QString error;
+  ASSERT_TRUE(export_frames_png(&window(), out, false, &error)) << error.toStdString();
+  const QStringList files = QDir(out).entryList({"frame-*.png"}, QDir::Files, QDir::Name);
+  ASSERT_EQ(files.size(), kLong);
+  EXPECT_FALSE(view->blink_phase());  // blinking starts again from the engine's frame
+  const QWidget* canvas = view->findChild<QWidget*>("animation_canvas");
+  ASSERT_NE(canvas, nullptr);
+  QImage previous;
+  for (int k : {0, 14, 15, 29, 30}) {
+    const bool exact = k >= 15 && k < 30;
+    EXPECT_EQ(AnimationView::blink_phase_at(k, kExportFps), exact) << k;
+    window().model()->set_frame(k);
+    view->set_blink_phase(exact);
+    view->render_image();
+    ASSERT_EQ(view->panel_rects().size(), 1u);
+    const QRect panel =
+        view->panel_rects().front().toAlignedRect().translated(canvas->mapTo(view, QPoint(0, 0)));
+    const QImage on_screen = grab_with_vtk(view).convertToFormat(QImage::Format_RGB32).copy(panel);
+    const QImage exported =
+        QImage(QDir(out).filePath(files[k])).convertToFormat(QImage::Format_RGB32).copy(panel);
+    EXPECT_EQ(exported, on_screen) << "frame " << k << (exact ? " (exact)" : " (engine)");
+    if (k == 15 || k == 30) {  // the phase changed: engine and exact differ
+      EXPECT_GT(changed_fraction(previous, exported), 0.01) << k;
+    }
+    previous = exported;
+  }
+  view->set_blink_phase(false);
 }
 
 TEST_F(ExportTest, VideoIsAnOggFileAndAnExistingFileIsKept) {

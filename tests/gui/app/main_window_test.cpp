@@ -10,6 +10,7 @@
 #include "views/basis_view.h"
 #include "views/coefficient_table.h"
 #include "views/flow_view.h"
+#include "views/image_canvas.h"
 #include "views/scene_controls.h"
 #include "models/scene_model.h"
 #include "views/slider_spin.h"
@@ -78,7 +79,7 @@ TEST_F(MainWindowTest, EachViewRendersANonEmptyImage) {
 TEST_F(MainWindowTest, WindowScreenshotContainsTheRenderedViews) {
   const QImage image = window().grab_window_image();
   ASSERT_EQ(image.size(), window().size());
-  const QWidget* vtk = reinterpret_cast<QWidget*>(window().flow_view()->vtk_widget());
+  const QWidget* vtk = window().flow_view()->canvas();
   const QRect area(vtk->mapTo(&window(), QPoint(0, 0)), vtk->size());
   EXPECT_GT(distinct_colours(image.copy(area)), 50);
 }

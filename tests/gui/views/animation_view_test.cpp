@@ -11,12 +11,14 @@
 #include "views/animation_view.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QTemporaryDir>
 #include <fstream>
 
 #include "views/analysis_view.h"
 #include "models/animation_model.h"
 #include "views/frame_inspector.h"
+#include "views/image_canvas.h"
 #include "adapters/frame_images.h"
 #include "formats/session_file.h"
 #include "views/palette.h"
@@ -311,6 +313,39 @@ TEST(SessionFile, PolicyAndSamplingRoundTripByNameAndUnknownNamesAreRefused) {
   EXPECT_THROW(
       parse_session(replaced("\"sampling\": \"bilinear\"", "\"sampling\": \"cubic\""), "test"),
       SessionError);
+}
+
+// The cursor readout speaks centred pixels, as the flow view and the coefficients do: the
+// pixel whose top-left corner is the principal point (cx, cy) has its centre at (0.5, 0.5),
+// the image's top-left pixel at (0.5 - cx, 0.5 - cy); the readout under the mouse says so.
+TEST_F(AnimationViewTest, CursorReadoutUsesCentredPixels) {
+  window().show_view("animation");
+  window().play_frames(3);
+  const Animator* animator = model().animator();
+  ASSERT_NE(animator, nullptr);
+  const Camera& camera = animator->camera();
+  const Image& exact = animation().exact_image();
+  const QString at_centre =
+      pixel_readout(*animator, Vec2(camera.cx + 0.25, camera.cy + 0.25), exact);
+  EXPECT_TRUE(at_centre.startsWith("pixel (0.5, 0.5) px from the principal point"))
+      << at_centre.toStdString();
+  const QString corner = pixel_readout(*animator, Vec2(0.2, 0.7), exact);
+  const QString expected = QStringLiteral("pixel (%1, %2)")
+                               .arg(0.5 - camera.cx, 0, 'f', 1)
+                               .arg(0.5 - camera.cy, 0, 'f', 1);
+  EXPECT_TRUE(corner.startsWith(expected)) << corner.toStdString();
+  EXPECT_TRUE(pixel_readout(*animator, Vec2(-1.0, 5.0), exact).isEmpty());
+  // Through the view: the mouse over the first panel where it shows the principal point.
+  animation().render_image();
+  const QRectF panel = animation().panel_rects().front();
+  const QRectF frame = animation().shown_frame();
+  const QPointF mouse(panel.left() + (camera.cx + 0.25 - frame.left()) / frame.width() * panel.width(),
+                      panel.top() + (camera.cy + 0.25 - frame.top()) / frame.height() * panel.height());
+  auto* canvas = animation().findChild<ImageCanvas*>("animation_canvas");
+  ASSERT_NE(canvas, nullptr);
+  emit canvas->hovered(mouse);
+  const QString shown = animation().findChild<QLabel*>("pixel_readout")->text();
+  EXPECT_TRUE(shown.startsWith("pixel (0.5, 0.5) px from the principal point")) << shown.toStdString();
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 
+#include "adapters/frame_images.h"
 #include "views/slices_view.h"
 #include "views/slider_spin.h"
 #include "image_checks.h"
@@ -36,6 +37,30 @@ TEST_F(SlicesViewTest, LargerEpsilonGivesFewerSlices) {
   QApplication::processEvents();
   EXPECT_DOUBLE_EQ(view->epsilon_px(), 4.0);
   EXPECT_LT(view->slice_count(), before);
+}
+
+TEST(SlicesDiagram, DepthTicksAreOneTwoFiveStepsUpToTheLargestDepth) {
+  EXPECT_EQ(depth_ticks(50.0), (std::vector<double>{1, 2, 5, 10, 20, 50}));
+  EXPECT_EQ(depth_ticks(7.0), (std::vector<double>{1, 2, 5}));
+  EXPECT_EQ(depth_ticks(0.5), std::vector<double>{});
+}
+
+// The exact panel is VTK's projection of the same viewer frame: where scene shifting drew
+// the scene, so did VTK (two independent renderers of one frame).
+TEST_F(SlicesViewTest, ShowsTheExactProjectionOfTheSameFrame) {
+  auto* view = dynamic_cast<SlicesView*>(window().view("slices"));
+  ASSERT_NE(view, nullptr);
+  ASSERT_TRUE(window().show_view("slices"));
+  for (int i = 0; i < 4; ++i) view->step_animation();
+  view->render_image();
+  const Image& exact = view->exact_image();
+  const Image& shifted = view->shifted_image();
+  ASSERT_FALSE(exact.empty());
+  ASSERT_EQ(exact.width(), shifted.width());
+  ASSERT_EQ(exact.height(), shifted.height());
+  const FrameAgreement agreement = frame_agreement(shifted, exact);
+  EXPECT_GT(agreement.mask_iou, 0.9);
+  EXPECT_GT(agreement.psnr_db, 15.0);
 }
 
 }  // namespace
