@@ -58,6 +58,7 @@ void print_summary(const nlohmann::json& j, const std::string& script, const Reu
       << " grey levels\n";
   const int invisible = j.at("invisible_frames");
   if (invisible) out << "  " << invisible << " frames not visible\n";
+  if (j.contains("budget")) print_budget(j.at("budget"), out);
 }
 
 // --repeat N (default 1): 1..kMaxRepeat, and N times the script's frames fits an int.
@@ -137,6 +138,8 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--sampling", 1},
                            {"--content", 1},
                            {"--quality", 1},
+                           {"--budget-pixels", 1},
+                           {"--budget-ms", 1},
                            {"--frames", 1},
                            {"--repeat-timing", 1},
                            {"--no-warm-up", 0},

@@ -53,6 +53,27 @@ bool is_obj_file(const std::string& path) {
 
 }  // namespace
 
+FrameBudget read_frame_budget(const CliArgs& a) {
+  if (a.has("--budget-pixels") && a.has("--budget-ms")) {
+    throw UsageError("--budget-ms: give either --budget-pixels or --budget-ms, not both");
+  }
+  FrameBudget budget;
+  const std::pair<const char*, FrameBudget::Unit> options[] = {
+      {"--budget-pixels", FrameBudget::Unit::kPixels},
+      {"--budget-ms", FrameBudget::Unit::kMilliseconds}};
+  for (const auto& [name, unit] : options) {
+    if (!a.has(name)) continue;
+    const double amount = a.number(name);
+    const bool pixels = unit == FrameBudget::Unit::kPixels;
+    if (amount < 0.0 || amount > kMaxFrameBudget) {
+      throw UsageError(std::string(name) + ": '" + a.values(name).at(0) + "' is outside 0.." +
+                       (pixels ? "1e9 pixels written per frame" : "1e9 milliseconds per frame"));
+    }
+    budget = {unit, amount};
+  }
+  return budget;
+}
+
 EngineSettings read_engine_settings(const CliArgs& a) {
   EngineSettings s;
   const std::string mode = a.text_or("--mode", default_reuse_policy().name);
@@ -88,6 +109,14 @@ EngineSettings read_engine_settings(const CliArgs& a) {
   if (s.content.quality < 1 || s.content.quality > kMaxContentQuality) {
     throw UsageError("--quality: " + std::to_string(s.content.quality) + " is outside 1.." +
                      std::to_string(kMaxContentQuality));
+  }
+  s.budget = read_frame_budget(a);
+  // compare checks its --policies list itself (analysis/cli/compare_command.cpp).
+  if (s.budget.unit != FrameBudget::Unit::kNone && !s.policy->shares_budget &&
+      !a.has("--policies")) {
+    throw UsageError(std::string(a.has("--budget-ms") ? "--budget-ms" : "--budget-pixels") +
+                     ": needs --mode budget (the only policy with a frame budget), not '" +
+                     mode + "'");
   }
   return s;
 }

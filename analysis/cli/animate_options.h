@@ -20,10 +20,20 @@
 namespace oflab {
 
 // --mode (a reuse policy of core/engine/reuse_policy.h; "scene-shifting" is handled before),
-// --threshold / --thresholds, --delta, --sampling, --content texture|shaded|impostor and
-// --quality N (its samples per pixel or detail, 1..kMaxContentQuality). Throws UsageError
-// naming the option and the accepted values for a bad value.
+// --threshold / --thresholds, --delta, --sampling, --content texture|shaded|impostor,
+// --quality N (its samples per pixel or detail, 1..kMaxContentQuality) and the frame budget
+// (read_frame_budget), which needs --mode budget unless the command takes --policies.
+// Throws UsageError naming the option and the accepted values for a bad value.
 EngineSettings read_engine_settings(const CliArgs& args);
+
+// The largest frame budget the CLI accepts, in pixels or milliseconds per frame.
+constexpr double kMaxFrameBudget = 1e9;
+
+// --budget-pixels N (pixels written per frame) or --budget-ms T (milliseconds per frame,
+// converted with the run's measured cost per pixel of each level, core/engine/budget.h), at
+// most one of them, 0..kMaxFrameBudget; FrameBudget::Unit::kNone with neither. Throws
+// UsageError naming the option for a bad value or when both are given.
+FrameBudget read_frame_budget(const CliArgs& args);
 
 // --sampling nearest|bilinear (default nearest). Throws UsageError naming the option and the
 // accepted values for any other word.

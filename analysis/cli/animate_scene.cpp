@@ -54,6 +54,7 @@ void print_scene_summary(const AnimationRun& run, const std::string& scene,
   }
   out << "\n";
   print_savings_and_error(s, out);
+  print_budget(budget_json(s), out);
   if (std::isfinite(s.conventional_iou)) {
     out << "  conventional frames cover the exact frames' pixels with mean IoU "
         << s.conventional_iou << "\n";

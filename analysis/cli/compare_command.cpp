@@ -1,5 +1,7 @@
 // `oflab-cli compare`: one motion script (or a scene's viewer script) played under several
 // reuse policies, one row per policy (analysis/runs/policy_runs.h, manual/policies.md).
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -59,14 +61,24 @@ void write_outputs(const std::string& dir, const SourceKind& kind,
   std::ofstream summary = open_output(dir + "/summary.csv");
   summary << "policy";
   for (int l = 0; l < kLevelCount; ++l) summary << ",pct_" << level_name(static_cast<Level>(l));
-  summary << ",work_saved,time_saved,max_measured_error_px,mean_measured_error_px,"
-             "mean_psnr_db,layer_frames,frames\n";
+  summary << ",work_saved,time_saved,model_work_saved,max_measured_error_px,"
+             "mean_measured_error_px,mean_psnr_db,layer_frames,frames,frames_over_budget,"
+             "starved_layer_frames,mean_optimality_gap\n";
   for (const PolicyRow& row : rows) {
     summary << row.name;
     for (double share : row.level_share) summary << ',' << 100.0 * share;
-    summary << ',' << row.work_saved << ',' << row.time_saved << ','
-            << row.max_measured_error_px << ',' << row.mean_measured_error_px << ','
-            << row.mean_psnr_db << ',' << row.layer_frames << ',' << row.frames << "\n";
+    summary << ',' << row.work_saved << ',' << row.time_saved << ',' << row.model_work_saved
+            << ',' << row.max_measured_error_px << ',' << row.mean_measured_error_px << ','
+            << row.mean_psnr_db << ',' << row.layer_frames << ',' << row.frames;
+    // The budget columns are empty for policies without a frame budget (and the gap when
+    // no frame was checked by exhaustive search).
+    if (row.budgeted) {
+      summary << ',' << row.frames_over_budget << ',' << row.starved_layer_frames << ',';
+      if (std::isfinite(row.mean_optimality_gap)) summary << row.mean_optimality_gap;
+      summary << "\n";
+    } else {
+      summary << ",,,\n";
+    }
   }
 }
 
@@ -80,6 +92,12 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   }
   const SourceKind* kind = nullptr;
   const RunSource source = read_source(a, &kind);
+  const bool budgeted = std::any_of(policies.begin(), policies.end(),
+                                    [](const ReusePolicy* p) { return p->shares_budget; });
+  if (source.settings.engine.budget.unit != FrameBudget::Unit::kNone && !budgeted) {
+    throw UsageError(std::string(a.has("--budget-ms") ? "--budget-ms" : "--budget-pixels") +
+                     ": needs budget in --policies (the only policy with a frame budget)");
+  }
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
   output.apply_timing_to(options);
@@ -113,7 +131,9 @@ int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--delta", 1},      {"--sampling", 1},   {"--frames", 1},
                            {"--repeat-timing", 1}, {"--out", 1},     {"--force", 0},
                            {"--json", 0},       {"--quiet", 0},      {"--near", 1},
-                           {"--guard-band", 1}, {"--no-skip-hidden", 0}});
+                           {"--guard-band", 1}, {"--no-skip-hidden", 0},
+                           {"--content", 1},    {"--quality", 1},    {"--budget-pixels", 1},
+                           {"--budget-ms", 1}});
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");

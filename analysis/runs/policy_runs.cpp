@@ -63,7 +63,13 @@ PolicyRow policy_row(const PolicyRun& r) {
   }
   row.work_saved = s.work_saved;
   row.time_saved = s.time_saved;
+  row.model_work_saved = s.model_work_saved;
   row.mean_psnr_db = s.mean_psnr_db;
+  row.budgeted = r.policy->shares_budget;
+  row.frames_over_budget = s.frames_over_budget;
+  row.starved_layer_frames = s.starved_layer_frames;
+  row.gap_frames = s.gap_frames;
+  row.mean_optimality_gap = s.mean_optimality_gap;
   double sum = 0.0;
   long count = 0;
   for (const AnimationFrame& f : r.run.frames) {
@@ -83,35 +89,56 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
   for (int l = 0; l < kLevelCount; ++l) {
     levels[level_name(static_cast<Level>(l))] = 100.0 * row.level_share[l];
   }
-  return {{"name", row.name},
-          {"levels", levels},
-          {"rerender_share", row.level_share[static_cast<int>(Level::kRerender)]},
-          {"work_saved", row.work_saved},
-          {"time_saved", finite_or_null(row.time_saved)},
-          {"max_measured_error_px", row.max_measured_error_px},
-          {"mean_measured_error_px", row.mean_measured_error_px},
-          {"mean_psnr_db", finite_or_null(row.mean_psnr_db)},
-          {"layer_frames", row.layer_frames},
-          {"frames", row.frames}};
+  nlohmann::json j = {{"name", row.name},
+                      {"levels", levels},
+                      {"rerender_share", row.level_share[static_cast<int>(Level::kRerender)]},
+                      {"work_saved", row.work_saved},
+                      {"time_saved", finite_or_null(row.time_saved)},
+                      {"model_work_saved", row.model_work_saved},
+                      {"max_measured_error_px", row.max_measured_error_px},
+                      {"mean_measured_error_px", row.mean_measured_error_px},
+                      {"mean_psnr_db", finite_or_null(row.mean_psnr_db)},
+                      {"layer_frames", row.layer_frames},
+                      {"frames", row.frames}};
+  if (row.budgeted) {
+    j["budget"] = {{"frames_over_budget", row.frames_over_budget},
+                   {"starved_layer_frames", row.starved_layer_frames},
+                   {"gap_frames", row.gap_frames},
+                   {"mean_optimality_gap", finite_or_null(row.mean_optimality_gap)}};
+  }
+  return j;
 }
 
 void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
   out << std::left << std::setw(13) << "policy" << std::right;
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << level_title(static_cast<Level>(l));
-  out << std::setw(8) << "work" << std::setw(8) << "time" << std::setw(10) << "max err"
-      << std::setw(10) << "mean err" << std::setw(8) << "PSNR" << "\n";
+  out << std::setw(8) << "work" << std::setw(8) << "time" << std::setw(8) << "model"
+      << std::setw(10) << "max err" << std::setw(10) << "mean err" << std::setw(8) << "PSNR"
+      << "\n";
   out << std::left << std::setw(13) << "" << std::right;
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << "% layer-fr.";
-  out << std::setw(8) << "saved %" << std::setw(8) << "saved %" << std::setw(10) << "px"
-      << std::setw(10) << "px" << std::setw(8) << "dB" << "\n";
+  out << std::setw(8) << "saved %" << std::setw(8) << "saved %" << std::setw(8) << "saved %"
+      << std::setw(10) << "px" << std::setw(10) << "px" << std::setw(8) << "dB" << "\n";
   out << std::fixed;
   for (const PolicyRow& r : rows) {
     out << std::left << std::setw(13) << r.name << std::right << std::setprecision(1);
     for (double share : r.level_share) out << std::setw(12) << 100.0 * share;
     out << std::setw(8) << 100.0 * r.work_saved << std::setw(8) << 100.0 * r.time_saved
-        << std::setprecision(3) << std::setw(10) << r.max_measured_error_px << std::setw(10)
+        << std::setw(8) << 100.0 * r.model_work_saved << std::setprecision(3) << std::setw(10) << r.max_measured_error_px << std::setw(10)
         << r.mean_measured_error_px << std::setprecision(1) << std::setw(8) << r.mean_psnr_db
         << "\n";
+  }
+  for (const PolicyRow& r : rows) {
+    if (!r.budgeted) continue;
+    out << r.name << ": " << r.frames_over_budget << " frames over budget, "
+        << r.starved_layer_frames << " starved layer-frames, mean optimality gap ";
+    if (std::isfinite(r.mean_optimality_gap)) {
+      out << std::setprecision(2) << 100.0 * r.mean_optimality_gap << "% over " << r.gap_frames
+          << " frames checked by exhaustive search\n";
+    } else {
+      out << "not checked (no frame with at most " << kExhaustiveMaxLayers
+          << " layers competing)\n";
+    }
   }
 }
 

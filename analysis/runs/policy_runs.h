@@ -5,6 +5,7 @@
 // rows are documented in manual/policies.md.
 #pragma once
 
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -37,12 +38,22 @@ std::vector<const ReusePolicy*> parse_policy_list(const std::string& text);
 //   level_share[l]   fraction of the drawn layer-frames updated at level l;
 //   work_saved, time_saved   RunSummary's (against the exact re-render of the same run);
 //   max_measured_error_px, mean_measured_error_px   over the visible layer reports;
-//   mean_psnr_db     RunSummary's.
+//   mean_psnr_db     RunSummary's;
+//   model_work_saved RunSummary's: the deterministic cost model's (core/engine/engine.h), as
+//                    `animate` reports it for the same policy;
+//   budget           a policy sharing a per-frame budget only: RunSummary's budget figures
+//                    (frames over budget, starved layer-frames, mean optimality gap).
 struct PolicyRow {
   std::string name;
   std::array<double, kLevelCount> level_share{};
   double work_saved = 0.0;
   double time_saved = 0.0;
+  double model_work_saved = 0.0;
+  bool budgeted = false;  // the policy shares a per-frame budget
+  long frames_over_budget = 0;
+  long starved_layer_frames = 0;
+  long gap_frames = 0;
+  double mean_optimality_gap = std::numeric_limits<double>::quiet_NaN();
   double max_measured_error_px = 0.0;
   double mean_measured_error_px = 0.0;
   double mean_psnr_db = 0.0;
@@ -52,12 +63,15 @@ struct PolicyRow {
 PolicyRow policy_row(const PolicyRun& run);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
-// "work_saved", "time_saved" (fractions), "max_measured_error_px",
-// "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames"}.
+// "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
+// "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames"}, and
+// for a budgeted row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames",
+// "mean_optimality_gap" (fraction, null when no frame was checked)}.
 nlohmann::json policy_row_json(const PolicyRow& row);
 
-// A text table, one row per policy: the level percents, re-render share, work and time
-// saved, max and mean measured error and mean PSNR.
+// A text table, one row per policy: the level percents, work, time and model work saved,
+// max and mean measured error and mean PSNR; then a line per budgeted row with its frames
+// over budget, starved layer-frames and mean optimality gap.
 void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out);
 
 }  // namespace oflab

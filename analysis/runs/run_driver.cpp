@@ -44,6 +44,7 @@ class SummaryTotals {
       const double excess = l.measured_error_px - l.estimated_error_px;
       s_.max_excess_px = std::isnan(s_.max_excess_px) ? excess : std::max(s_.max_excess_px, excess);
     }
+    add_budget(f.budget);
     keep_finite(times_, f.time_ms);
     if (keep_finite(baseline_times_, r.baseline_ms)) s_.baseline_time_ms += r.baseline_ms;
     if (keep_finite(conventional_times_, r.conventional_ms))
@@ -67,6 +68,7 @@ class SummaryTotals {
             : 0.0;
     s_.model_work_saved =
         s_.baseline_model_work > 0.0 ? 1.0 - s_.model_work / s_.baseline_model_work : 0.0;
+    if (s_.gap_frames > 0) s_.mean_optimality_gap = gap_sum_ / s_.gap_frames;
   }
 
  private:
@@ -76,7 +78,19 @@ class SummaryTotals {
     return true;
   }
 
+  void add_budget(const BudgetReport& b) {
+    if (!b.active) return;
+    ++s_.budget_frames;
+    s_.frames_over_budget += b.over() ? 1 : 0;
+    s_.starved_layer_frames += b.starved;
+    if (std::isfinite(b.optimality_gap)) {
+      gap_sum_ += b.optimality_gap;
+      ++s_.gap_frames;
+    }
+  }
+
   RunSummary& s_;
+  double gap_sum_ = 0.0;
   bool first_ = true;
   std::vector<double> times_, baseline_times_, conventional_times_;
   double psnr_sum_ = 0.0;

@@ -99,6 +99,16 @@ struct RunSummary {
   // no such report (scene shifting keeps no per-layer books).
   double max_excess_px = std::numeric_limits<double>::quiet_NaN();
   double mean_psnr_db = 0.0;      // over the finite per-frame PSNRs (NaN when none)
+  // A policy that shares a per-frame budget (AnimationFrame::budget, core/engine/budget.h):
+  // frames with the budget active (all but the first), frames whose layers spent more than
+  // the budget (the rule keeps this 0), starved layer-frames, and the mean optimality gap
+  // over the gap_frames in which exhaustive search checked the greedy allocation (NaN when
+  // none did).
+  long budget_frames = 0;
+  long frames_over_budget = 0;
+  long starved_layer_frames = 0;
+  long gap_frames = 0;
+  double mean_optimality_gap = std::numeric_limits<double>::quiet_NaN();
   double conventional_iou = 0.0;  // mean alpha-mask IoU of VTK against the baseline (or NaN)
   long culled() const { return back_facing + outside_frustum; }
   long drawn() const;  // sum of levels

@@ -86,7 +86,14 @@ void write_plane_csv_row(std::ostream& out, const FrameRecord& record) {
 }
 
 // Levels count frames here (the facts play_plane counted).
-nlohmann::json plane_summary_json(const AnimationRun& run) {
+// `summary` with the "budget" block of a policy that shares a per-frame budget.
+nlohmann::json with_budget(nlohmann::json summary, const RunSummary& s) {
+  const nlohmann::json budget = budget_json(s);
+  if (!budget.is_null()) summary["budget"] = budget;
+  return summary;
+}
+
+nlohmann::json plane_summary_fields(const AnimationRun& run) {
   const RunSummary& s = run.summary;
   return {{"frames", s.frames},
           {"levels", run.facts.at("frame_levels")},
@@ -107,6 +114,10 @@ nlohmann::json plane_summary_json(const AnimationRun& run) {
           {"model_work_saved", s.model_work_saved},
           {"render_ms", s.render_ms},
           {"max_photometric_error", s.max_photometric_error}};
+}
+
+nlohmann::json plane_summary_json(const AnimationRun& run) {
+  return with_budget(plane_summary_fields(run), run.summary);
 }
 
 // ---- Scenes (the scene animator and scene shifting share the CSV and most of the JSON) ----
@@ -164,7 +175,7 @@ nlohmann::json scene_levels_json(const RunSummary& s, bool as_percent) {
   return levels;
 }
 
-nlohmann::json scene_summary_json(const AnimationRun& run) {
+nlohmann::json scene_summary_fields(const AnimationRun& run) {
   const RunSummary& s = run.summary;
   const nlohmann::json no_bsp = {{"nodes", 0}, {"fragments", 0}, {"splits", 0}, {"depth", 0}};
   return {{"frames", s.frames},
@@ -201,6 +212,10 @@ nlohmann::json scene_summary_json(const AnimationRun& run) {
           {"max_excess_px", finite_or_null(s.max_excess_px)},
           {"mean_psnr_db", finite_or_null(s.mean_psnr_db)},
           {"conventional_iou", finite_or_null(s.conventional_iou)}};
+}
+
+nlohmann::json scene_summary_json(const AnimationRun& run) {
+  return with_budget(scene_summary_fields(run), run.summary);
 }
 
 // ---- Scene shifting ----
@@ -277,6 +292,29 @@ void print_polygon_levels(const RunSummary& s, std::ostream& out) {
     out << "    " << std::setw(12) << std::left << level_name(static_cast<Level>(l)) << std::right
         << std::setw(8) << s.levels[l] << " (" << percent(s.levels[l], drawn) << "%)\n";
   }
+}
+
+nlohmann::json budget_json(const RunSummary& s) {
+  if (s.budget_frames == 0) return nullptr;
+  return {{"frames", s.budget_frames},
+          {"frames_over_budget", s.frames_over_budget},
+          {"starved_layer_frames", s.starved_layer_frames},
+          {"gap_frames", s.gap_frames},
+          {"mean_optimality_gap", finite_or_null(s.mean_optimality_gap)}};
+}
+
+void print_budget(const nlohmann::json& b, std::ostream& out) {
+  if (b.is_null()) return;
+  out << "  budget: " << b.at("frames_over_budget").get<long>() << " frames over budget (of "
+      << b.at("frames").get<long>() << "), " << b.at("starved_layer_frames").get<long>()
+      << " starved layer-frames, mean optimality gap ";
+  if (b.at("mean_optimality_gap").is_null()) {
+    out << "not checked (no frame with at most " << kExhaustiveMaxLayers
+        << " layers competing)\n";
+    return;
+  }
+  out << 100.0 * b.at("mean_optimality_gap").get<double>() << "% over "
+      << b.at("gap_frames").get<long>() << " frames checked by exhaustive search\n";
 }
 
 void print_savings_and_error(const RunSummary& s, std::ostream& out) {

@@ -74,4 +74,14 @@ void print_polygon_levels(const RunSummary& summary, std::ostream& out);
 // error ... grey levels", in the stream's current notation.
 void print_savings_and_error(const RunSummary& summary, std::ostream& out);
 
+// The "budget" block of a run's JSON summary, for a policy that shares a per-frame budget
+// (summary.budget_frames > 0): {"frames" (with the budget active), "frames_over_budget",
+// "starved_layer_frames", "gap_frames", "mean_optimality_gap" (a fraction; null when no
+// frame was checked by exhaustive search)}; null for other policies, whose summaries then
+// have no "budget" key.
+nlohmann::json budget_json(const RunSummary& summary);
+// "  budget: F frames over budget (of N), S starved layer-frames, mean optimality gap G% over
+// K frames checked by exhaustive search" for a block of budget_json; nothing for null.
+void print_budget(const nlohmann::json& budget, std::ostream& out);
+
 }  // namespace oflab

@@ -61,6 +61,9 @@ struct AnimationFrame {
   // single plane (also when it is not visible), one per animated polygon for a scene, none
   // for scene shifting (its slices keep no per-term books).
   std::vector<FrameReport> layer_reports;
+  // A policy that shares a per-frame budget (core/engine/budget.h): the budget, what the
+  // frame spent, starved layers and the optimality gap; inactive otherwise and in frame 0.
+  BudgetReport budget;
   std::string note;  // why the frame is special, empty when it is not
 
   int culled() const { return back_facing + outside_frustum; }

@@ -141,63 +141,148 @@ PlaneAnimator::PlaneAnimator(const Camera& camera, Layer texture, const EngineSe
     : camera_(camera), texture_(std::move(texture)), settings_(settings) {
   const std::string problem = content_problem(settings_.content);
   if (!problem.empty()) throw std::invalid_argument("content: " + problem);
+  const std::string budget = frame_budget_problem(settings_.budget);
+  if (!budget.empty()) throw std::invalid_argument("budget: " + budget);
 }
 
 FrameReport PlaneAnimator::start(const PlanePose& pose) {
-  frame_ = 0;
-  shown_ = false;
-  FrameReport report;
-  update(nullptr, nullptr, pose, report);
-  return report;
+  return apply(measure_start(pose).choice);
 }
 
 FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion& motion,
                                    const PlanePose& current) {
-  ++frame_;
-  FrameReport report;
-  update(&previous, &motion, current, report);
-  return report;
+  return apply(measure_advance(previous, motion, current).choice);
 }
 
-void PlaneAnimator::update(const PlanePose* previous, const RigidMotion* motion,
-                           const PlanePose& current, FrameReport& report) {
-  // time_ms covers deciding, warping and placing; the diagnostics of finish_report (the
-  // measured error) run after the clock is read.
+LayerCandidates PlaneAnimator::measure_start(const PlanePose& pose) {
+  measure(true, nullptr, nullptr, pose);
+  return measured_.candidates;
+}
+
+LayerCandidates PlaneAnimator::measure_advance(const PlanePose& previous,
+                                               const RigidMotion& motion,
+                                               const PlanePose& current) {
+  measure(false, &previous, &motion, current);
+  return measured_.candidates;
+}
+
+void PlaneAnimator::measure(bool start, const PlanePose* previous, const RigidMotion* motion,
+                            const PlanePose& current) {
   const auto t0 = Clock::now();
-  report.frame = frame_;
+  measured_ = Measured{};
+  measured_.start = start;
+  if (previous) measured_.previous = *previous;
+  if (motion) measured_.motion = *motion;
+  measured_.current = current;
   try {
     // The flow is measured at the previous pose: it must be a whole, drawable plane.
-    const bool flow_usable = previous && shown_ && plane_visibility_problem(*previous).empty();
+    const bool flow_usable =
+        !start && shown_ && plane_visibility_problem(measured_.previous).empty();
     if (flow_usable && policy().allows_reuse() && frame_pose(current).kind == Framing::kWhole) {
-      decide_and_update(*previous, *motion, current, report);
+      measure_choice();
     } else {
-      render_fresh(current, report);
+      measure_fresh(current);
     }
-    report.time_ms = elapsed_ms(t0);
-    report.warp_ms = report.time_ms - report.render_ms;
-    finish_report(current, report);
   } catch (const std::exception& refused) {
-    // Any refusal (a warp beyond its range, a singular map) becomes a fresh exact render of
-    // the frame, or an invisible frame when even that is refused.
-    report = FrameReport{};
-    report.frame = frame_;
+    // The frame re-renders (apply_after_refusal); its cost is that of a fresh render.
+    const std::string refusal = refused.what();
+    measured_.candidates = LayerCandidates{};
     try {
-      render_fresh(current, report);
-      report.time_ms = elapsed_ms(t0);
-      report.warp_ms = report.time_ms - report.render_ms;
-      finish_report(current, report);
-      if (report.visible) {
-        report.note = std::string("re-rendered after a refusal: ") + refused.what();
-      }
-    } catch (const std::exception& again) {
-      report = FrameReport{};
+      measure_fresh(current);
+    } catch (const std::exception&) {
+      measured_.candidates = LayerCandidates{};
+    }
+    measured_.refusal = refusal;
+  }
+  measured_.ms = elapsed_ms(t0);
+}
+
+void PlaneAnimator::measure_fresh(const PlanePose& pose) {
+  LayerCandidates& c = measured_.candidates;
+  c.choice = Level::kRerender;
+  const Framing framing = frame_pose(pose);
+  if (framing.kind == Framing::kNotShown) {
+    c.kind = LayerCandidates::Kind::kNotShown;
+    return;
+  }
+  c.kind = LayerCandidates::Kind::kFresh;
+  if (!policy().shares_budget) return;
+  const ConvexPolygon region = framing.kind == Framing::kClipped
+                                   ? project_to_pixels(camera_, framing.clipped)
+                                   : transform(texture_.polygon, target_warp(pose));
+  c.pixels[static_cast<int>(Level::kRerender)] = box_pixels(region);
+  if (!region.empty()) {
+    const BoundingBox b = region.bounds();
+    c.extent_px = std::hypot(b.x_max - b.x_min, b.y_max - b.y_min);
+  }
+}
+
+FrameReport PlaneAnimator::apply(Level level, bool shown) {
+  const auto t0 = Clock::now();
+  if (measured_.start) {
+    frame_ = 0;
+    shown_ = false;
+  } else {
+    ++frame_;
+  }
+  std::string refusal = measured_.refusal;
+  if (refusal.empty()) {
+    try {
+      // time_ms covers measuring, deciding, warping and placing; the diagnostics of
+      // finish_report (the measured error) run after the clock is read.
+      FrameReport report;
       report.frame = frame_;
-      hide(std::string("not drawn: ") + again.what(), report);
-      report.time_ms = elapsed_ms(t0);
+      apply_measured(level, shown, report);
+      report.time_ms = measured_.ms + elapsed_ms(t0);
       report.warp_ms = report.time_ms - report.render_ms;
-      finish_report(current, report);
+      finish_report(measured_.current, report);
+      return report;
+    } catch (const std::exception& refused) {
+      refusal = refused.what();
     }
   }
+  return apply_after_refusal(refusal, measured_.ms + elapsed_ms(t0));
+}
+
+void PlaneAnimator::apply_measured(Level level, bool shown, FrameReport& report) {
+  switch (measured_.candidates.kind) {
+    case LayerCandidates::Kind::kChoice:
+      apply_choice(level, report);
+      return;
+    case LayerCandidates::Kind::kFresh:
+      if (!shown) {
+        hide("starved: the frame budget could not afford this layer's render", report);
+        return;
+      }
+      break;
+    case LayerCandidates::Kind::kNotShown:
+      break;
+  }
+  render_fresh(measured_.current, report);
+}
+
+FrameReport PlaneAnimator::apply_after_refusal(const std::string& refusal, double spent_ms) {
+  // Any refusal (a warp beyond its range, a singular map) becomes a fresh exact render of
+  // the frame, or an invisible frame when even that is refused.
+  const auto t0 = Clock::now();
+  const PlanePose& current = measured_.current;
+  FrameReport report;
+  report.frame = frame_;
+  try {
+    render_fresh(current, report);
+    report.time_ms = spent_ms + elapsed_ms(t0);
+    report.warp_ms = report.time_ms - report.render_ms;
+    finish_report(current, report);
+    if (report.visible) report.note = "re-rendered after a refusal: " + refusal;
+  } catch (const std::exception& again) {
+    report = FrameReport{};
+    report.frame = frame_;
+    hide(std::string("not drawn: ") + again.what(), report);
+    report.time_ms = spent_ms + elapsed_ms(t0);
+    report.warp_ms = report.time_ms - report.render_ms;
+    finish_report(current, report);
+  }
+  return report;
 }
 
 PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const {
@@ -512,12 +597,11 @@ LevelPixels PlaneAnimator::level_pixels() const {
   return estimate_level_pixels(displayed, cache_.valid ? area(cache_.layer) : displayed);
 }
 
-void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
-                                  const PlanePose& current) {
+Mat3 PlaneAnimator::next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
+                               FitFiducials& fit) const {
+  fit = fit_;
   if (policy().model == ModelUpdate::kExact) {
-    model_ =
-        exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
-    return;
+    return exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
   }
   if (policy().model == ModelUpdate::kAffineFit) {
     // Talisman: the corners as last rendered, fitted onto their exact projections now.
@@ -527,17 +611,17 @@ void PlaneAnimator::advance_model(const PlanarFlowCoefficients& flow,
       rendered.push_back(apply_homography(rendered_warp_, t));
       now.push_back(apply_homography(exact, t));
     }
-    const AffineFit fit = fit_rendered_polygon(rendered, now);
-    fit_ = fit.fiducials;
-    model_ = fit.warp * rendered_warp_;
-    return;
+    const AffineFit fitted = fit_rendered_polygon(rendered, now);
+    fit = fitted.fiducials;
+    return fitted.warp * rendered_warp_;
   }
   PlanarFlowCoefficients step = flow;
   if (policy().model == ModelUpdate::kAffineTaylor) step.px = step.py = 0.0;  // affine flow model
-  model_ = centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
+  return centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
 }
 
-Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& point) const {
+Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& point,
+                               const Mat3& model) const {
   switch (level) {
     case Level::kNone:
       return displayed_;
@@ -548,50 +632,91 @@ Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& 
     case Level::kAffine:
       return affine_part_at(correction, point) * displayed_;
     case Level::kPerspective:
-      return model_;
+      return model;
     case Level::kRerender:
       break;
   }
   return displayed_;
 }
 
-void PlaneAnimator::decide_and_update(const PlanePose& previous, const RigidMotion& motion,
-                                      const PlanePose& current, FrameReport& report) {
-  const FlowMeasures m = measure_flow(camera_, previous, motion, displayed_corners_centred());
-  const PlanarFlowCoefficients flow =
-      reexpand(planar_flow_coefficients(camera_, previous, motion), m.expansion_point);
-  report.flow = m.flow;
+void PlaneAnimator::measure_choice() {
+  Measured& m = measured_;
+  const std::vector<Vec2> corners = displayed_corners_centred();
+  m.measures = measure_flow(camera_, m.previous, m.motion, corners);
+  const PlanarFlowCoefficients flow = reexpand(
+      planar_flow_coefficients(camera_, m.previous, m.motion), m.measures.expansion_point);
+  m.flow = m.measures.flow;
   if (policy().books == FlowBooks::kPrinted) {
-    report.flow = measure_printed_flow(camera_, previous, motion, displayed_corners_centred());
+    m.flow = measure_printed_flow(camera_, m.previous, m.motion, corners);
   }
-  if (policy().model == ModelUpdate::kExact) report.flow[3] = 0.0;  // nothing of higher order
-  advance_model(flow, current);
+  if (policy().model == ModelUpdate::kExact) m.flow[3] = 0.0;  // nothing of higher order
+  m.model = next_model(flow, m.current, m.fit);
   // Pending errors are image displacements: this frame's motion stretches them by up to
   // the largest singular value of its Jacobian, so they are carried forward scaled by it.
   const Mat3 stretch = mat3_from_rows({1.0 + flow.j11, flow.j12, 0.0},
                                       {flow.j21, 1.0 + flow.j22, 0.0}, {0.0, 0.0, 1.0});
-  TermArray carried = accumulated_;
-  for (double& e : carried) e *= std::max(1.0, largest_singular_value(stretch));
-  report.carried = carried;
+  m.carried = accumulated_;
+  for (double& e : m.carried) e *= std::max(1.0, largest_singular_value(stretch));
   // The exact error each level would leave, against the policy's view of the current pose.
-  const Mat3 correction = model_ * glm::inverse(displayed_);
-  const Vec2 point = centred_to_pixel(camera_, m.expansion_point);
-  const Mat3 target = target_warp(current);
+  const Mat3 correction = m.model * glm::inverse(displayed_);
+  const Vec2 point = centred_to_pixel(camera_, m.measures.expansion_point);
+  const Mat3 target = target_warp(m.current);
   for (int l = 0; l < kTermCount; ++l) {
-    report.pending[l] =
-        corner_distance(warp_after(static_cast<Level>(l), correction, point), target);
+    m.pending[l] =
+        corner_distance(warp_after(static_cast<Level>(l), correction, point, m.model), target);
   }
-  report.level = policy().choose(policy(), {report.flow, carried, settings_.thresholds,
-                                            level_pixels(), report.pending, fit_});
+  LayerCandidates& c = m.candidates;
+  c.kind = LayerCandidates::Kind::kChoice;
+  c.pixels = level_pixels();
+  c.choice = policy().choose(policy(), {m.flow, m.carried, settings_.thresholds, c.pixels,
+                                        m.pending, m.fit});
+  c.feasible = policy().allowed;
+  for (int l = 0; l < kTermCount; ++l) {
+    c.error[l] = std::max(neglected_error(m.carried, m.flow, static_cast<Level>(l)), m.pending[l]);
+  }
+  if (policy().shares_budget) measure_level_costs(correction, point);
+}
+
+void PlaneAnimator::measure_level_costs(const Mat3& correction, const Vec2& point) {
+  // Upper bounds of the pixels each level writes (the boxes of the polygons it warps), and
+  // the levels the sampling limit would refuse, as apply_affine and apply_perspective do.
+  LayerCandidates& c = measured_.candidates;
+  const ConvexPolygon& cache_polygon = cache_.valid ? cache_.layer.polygon : display_.layer.polygon;
+  const Mat3 cache_to_display = cache_.valid ? cache_.to_display
+                                             : translation_matrix(display_.offset_x,
+                                                                  display_.offset_y);
+  const Mat3 affine = affine_part_at(correction, point) * cache_to_display;
+  const int a = static_cast<int>(Level::kAffine), p = static_cast<int>(Level::kPerspective);
+  c.feasible[a] = c.feasible[a] && largest_singular_value(affine) <= settings_.max_magnification;
+  c.pixels[a] = box_pixels(transform(cache_polygon, affine));
+  const Vec2 centre = 0.5 * texel_corners(texture_)[2];
+  const AffinePerspectiveSplit split = split_affine_perspective(
+      measured_.model * translation_matrix(centre.x, centre.y), settings_.delta);
+  c.feasible[p] = c.feasible[p] && largest_singular_value(split.affine) <= settings_.max_magnification;
+  const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
+  c.pixels[p] = box_pixels(transform(texture_.polygon, texel_to_cache)) +
+                box_pixels(transform(texture_.polygon, measured_.model));
+  c.pixels[static_cast<int>(Level::kRerender)] =
+      box_pixels(transform(texture_.polygon, target_warp(measured_.current)));
+}
+
+void PlaneAnimator::apply_choice(Level level, FrameReport& report) {
+  const Measured& m = measured_;
+  report.flow = m.flow;
+  report.carried = m.carried;
+  report.pending = m.pending;
+  model_ = m.model;
+  fit_ = m.fit;
+  report.level = level;
   // Erratum 25, corrected: the terms the level neglects accumulate, the ones it handles are
   // caught up with. What the books cannot see (the sub-pixel remainder of a whole-pixel
   // translation, higher orders the first-order bookkeeping misses) is in report.pending.
   for (int k = 0; k < kTermCount; ++k) {
-    accumulated_[k] = k >= static_cast<int>(report.level) ? carried[k] + report.flow[k] : 0.0;
+    accumulated_[k] = k >= static_cast<int>(level) ? m.carried[k] + m.flow[k] : 0.0;
   }
   // Talisman's fit is checked against the exact projection each frame: nothing is carried.
   if (policy().model == ModelUpdate::kAffineFit) accumulated_.fill(0.0);
-  apply_level(report, m.expansion_point, current);
+  apply_level(report, m.measures.expansion_point, m.current);
 }
 
 void PlaneAnimator::apply_level(FrameReport& report, const Vec2& expansion_point,

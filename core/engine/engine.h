@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "content/layer_content.h"
+#include "engine/budget.h"
 #include "engine/decision.h"
 #include "engine/reuse_policy.h"
 #include "flow/camera.h"
@@ -65,6 +66,10 @@ struct EngineSettings {
   // a lit content rendered for the pose, whose image the warps then reuse. The texture
   // still gives the texel grid (its size) and the valid region (its polygon).
   LayerContent content;
+  // The per-frame budget of a policy that shares one (ReusePolicy::shares_budget, the
+  // `budget` policy; core/engine/budget.h): kNone takes budget_or_default's. Other
+  // policies ignore it (the CLI and GUI refuse a budget without the budget policy).
+  FrameBudget budget;
 };
 
 // The dissertation's cost model (section 6.4.4), in pixels of a perspective warp: a
@@ -167,12 +172,29 @@ class PlaneAnimator {
   PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings);
 
   // Frame 0: renders `pose` in the policy's initial view (exactly, or its affine part).
+  // The same as measure_start then apply at the candidates' choice.
   FrameReport start(const PlanePose& pose);
 
   // The next frame: `previous` is the frame shown so far (pose and its motion towards the
-  // next frame, velocities per frame), `current` the pose to show now.
+  // next frame, velocities per frame), `current` the pose to show now. The same as
+  // measure_advance then apply at the candidates' choice.
   FrameReport advance(const PlanePose& previous, const RigidMotion& motion,
                       const PlanePose& current);
+
+  // The phases of a frame (core/engine/budget.h). measure_start and measure_advance say what
+  // the frame start() or advance() would show could be, changing nothing the display shows:
+  // a fresh render, a choice of levels, or nothing to draw. The pixel costs of the levels
+  // (LayerCandidates::pixels, feasible, extent_px) are computed only for a policy that
+  // shares a budget; other policies get the estimate of estimate_level_pixels.
+  LayerCandidates measure_start(const PlanePose& pose);
+  LayerCandidates measure_advance(const PlanePose& previous, const RigidMotion& motion,
+                                  const PlanePose& current);
+  // Shows the frame measured last: a kChoice frame at `level` (any level; one outside
+  // `feasible` may be refused and re-render, as the policy's own choice may), a kFresh frame
+  // rendered, or, with shown false, not drawn at all (FrameReport::visible false, note
+  // "starved: ..."), which leaves the next frame to start afresh. time_ms includes the
+  // measure. Precondition: a measure since the last apply, start or advance.
+  FrameReport apply(Level level, bool shown = true);
 
   const PlacedLayer& displayed() const { return display_; }
   // Texel -> image pixel warp of the shown layer (the whole texture rectangle; meaningless
@@ -200,17 +222,38 @@ class PlaneAnimator {
   };
   Framing frame_pose(const PlanePose& pose) const;
 
-  void update(const PlanePose* previous, const RigidMotion* motion, const PlanePose& current,
-              FrameReport& report);
+  // The frame measured last (measure_start, measure_advance) and what apply needs of it.
+  struct Measured {
+    bool start = false;
+    PlanePose previous;
+    RigidMotion motion;
+    PlanePose current;
+    LayerCandidates candidates;
+    std::string refusal;  // what a refused measure said: the frame re-renders
+    double ms = 0.0;      // time spent measuring
+    FlowMeasures measures;
+    TermArray flow{}, carried{}, pending{};
+    Mat3 model{1.0};  // the model warp after this frame
+    FitFiducials fit;
+  };
+
+  void measure(bool start, const PlanePose* previous, const RigidMotion* motion,
+               const PlanePose& current);
+  void measure_fresh(const PlanePose& pose);
+  void measure_choice();
+  void measure_level_costs(const Mat3& correction, const Vec2& point);
+  void apply_measured(Level level, bool shown, FrameReport& report);
+  void apply_choice(Level level, FrameReport& report);
+  FrameReport apply_after_refusal(const std::string& refusal, double spent_ms);
   void render_fresh(const PlanePose& pose, FrameReport& report);
   void hide(const std::string& note, FrameReport& report);
   void show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report);
-  void decide_and_update(const PlanePose& previous, const RigidMotion& motion,
-                         const PlanePose& current, FrameReport& report);
-  void advance_model(const PlanarFlowCoefficients& flow, const PlanePose& current);
+  Mat3 next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
+                  FitFiducials& fit) const;
   Mat3 target_warp(const PlanePose& pose) const;
   Vec2 translation_step(const Mat3& correction, const Vec2& point) const;
-  Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point) const;
+  Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point,
+                  const Mat3& model) const;
   void apply_level(FrameReport& report, const Vec2& expansion_point, const PlanePose& current);
   void rerender(const PlanePose& pose, FrameReport& report);
   // rerender of a lit content: renders it for the pose (kept as the perspective level's
@@ -262,6 +305,7 @@ class PlaneAnimator {
   // render and after a frame that was clipped or not visible.
   bool shown_ = false;
   int frame_ = 0;
+  Measured measured_;
 };
 
 }  // namespace oflab

@@ -29,14 +29,16 @@ class PlaneScriptAnimator final : public Animator {
 
   AnimationFrame start() override {
     engine_ = std::make_unique<PlaneAnimator>(script_.camera, texture_, settings_);
+    ledger_ = std::make_unique<BudgetLedger>(*settings_.policy, settings_.budget,
+                                             script_.camera.width, script_.camera.height);
     frame_ = 0;
-    return report(engine_->start(script_.frames[0].pose));
+    return play(engine_->measure_start(script_.frames[0].pose));
   }
 
   AnimationFrame advance() override {
     const ScriptFrame& previous = script_frame(frame_);
     ++frame_;
-    return report(engine_->advance(previous.pose, previous.motion, script_frame(frame_).pose));
+    return play(engine_->measure_advance(previous.pose, previous.motion, script_frame(frame_).pose));
   }
 
   const Image& image() const override {
@@ -74,6 +76,17 @@ class PlaneScriptAnimator final : public Animator {
     return script_.frames.at(static_cast<size_t>(k) % script_.frames.size());
   }
 
+  // The allocate and apply phases of the frame measured as `candidates` (the plane is the
+  // frame's one layer).
+  AnimationFrame play(const LayerCandidates& candidates) {
+    const FrameAllocation a = ledger_->allocate(frame_, {candidates});
+    const FrameReport r = engine_->apply(a.levels[0], a.shown[0] != 0);
+    ledger_->applied(r.level, r.time_ms, r.pixels_written, a.starved[0] != 0);
+    AnimationFrame f = report(r);
+    f.budget = ledger_->finish();
+    return f;
+  }
+
   AnimationFrame report(const FrameReport& r) {
     visible_ = r.visible;
     level_ = r.level;
@@ -103,6 +116,7 @@ class PlaneScriptAnimator final : public Animator {
   EngineSettings settings_;
   Scene scene_;
   std::unique_ptr<PlaneAnimator> engine_;
+  std::unique_ptr<BudgetLedger> ledger_;
   int frame_ = -1;
   bool visible_ = false;
   Level level_ = Level::kNone;

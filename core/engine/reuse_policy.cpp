@@ -58,6 +58,9 @@ const std::vector<ReusePolicy>& reuse_policies() {
        FlowBooks::kPrinted, false},
       {"talisman", "Lengyel & Snyder 97: least-squares affine warp of the layer, fiducials",
        InitialView::kExact, ModelUpdate::kAffineFit, kAffineOnly, talisman_choice},
+      {"budget", "section 7.5.2: a per-frame pixel or time budget allocated over the layers",
+       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice,
+       FlowBooks::kCorners, false, true},
   };
   return policies;
 }

@@ -14,6 +14,10 @@
 //   dissertation Algorithm 1 as printed (section 5.4.5): per-term cascade, printed measures;
 //   talisman     Lengyel & Snyder 97: a least-squares affine warp of the layer as rendered,
 //                re-rendered when a fiducial (geometric, sampling, visibility) is over its limit.
+// A policy over all the layers of a frame:
+//   budget       section 7.5.2 and Horvitz & Lengyel 97: a per-frame budget (pixels or
+//                milliseconds, EngineSettings::budget) allocated over the layers by cost and
+//                benefit (core/engine/budget.h).
 #pragma once
 
 #include <array>
@@ -102,6 +106,10 @@ struct ReusePolicy {
   // (up to resampling): the corrected rules and Talisman's geometric fiducial do; the
   // printed rule does not (that is what it is compared for).
   bool bounded = true;
+  // True when the levels of a frame are allocated over all its layers within a per-frame
+  // budget (core/engine/budget.h allocate_frame); `choose` is then what a layer would take
+  // were the budget unlimited.
+  bool shares_budget = false;
 
   bool allows(Level level) const { return allowed[static_cast<int>(level)]; }
   // False when only re-render is allowed: the engine then re-renders without measuring.

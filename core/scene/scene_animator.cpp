@@ -45,6 +45,8 @@ const char* polygon_status_name(PolygonStatus status) {
       return "animated";
     case PolygonStatus::kClipped:
       return "clipped";
+    case PolygonStatus::kStarved:
+      return "starved";
   }
   return "animated";
 }
@@ -65,18 +67,30 @@ struct SceneAnimator::PolygonState {
   bool updated = false;
   PlacedLayer clipped_layer;  // the clipped exact render (status kClipped)
   FrameReport report;         // the animator's report (status kAnimated)
+  // The measure and allocate phases: what it could do, and what it was given.
+  LayerCandidates candidates;
+  Level allocated = Level::kRerender;
+  bool allocated_shown = true;
+  bool starved = false;
 
   const PlacedLayer* shown(PolygonStatus status) const {
     if (status == PolygonStatus::kClipped) return &clipped_layer;
+    if (status == PolygonStatus::kStarved) return nullptr;
     return animator ? &animator->displayed() : nullptr;
   }
 };
 
 SceneAnimator::SceneAnimator(const Scene& scene, const Camera& camera,
                              const SceneSettings& settings)
-    : scene_(scene), camera_(camera), settings_(settings) {
+    : scene_(scene),
+      camera_(camera),
+      settings_(settings),
+      ledger_(*settings.engine.policy, settings.engine.budget, camera.width, camera.height) {
   if (const char* problem = camera_problem(camera); problem && *problem) {
     throw std::invalid_argument(std::string("camera: ") + problem);
+  }
+  if (const std::string problem = frame_budget_problem(settings.engine.budget); !problem.empty()) {
+    throw std::invalid_argument("budget: " + problem);
   }
   if (!(settings.near > 0.0 && std::isfinite(settings.near))) {
     throw std::invalid_argument("near plane distance must be positive");
@@ -247,34 +261,111 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationF
   }
 }
 
-void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const RigidMotion* motion,
-                                   const ViewerPose& current, AnimationFrame& report) {
+PlaneAnimator& SceneAnimator::polygon_animator(int index) {
   PolygonState& s = *states_[index];
-  const ScenePolygon& polygon = scene_.polygons[index];
+  if (!s.animator) {
+    const ScenePolygon& polygon = scene_.polygons[index];
+    EngineSettings engine = settings_.engine;
+    engine.content = polygon_content(index);
+    s.animator = std::make_unique<PlaneAnimator>(
+        camera_, make_layer(scene_.textures[polygon.texture], texel_polygon(s.uv, s.texture_size)),
+        engine);
+  }
+  return *s.animator;
+}
+
+LayerCandidates SceneAnimator::clipped_candidates(int index) {
+  LayerCandidates c;
+  c.kind = LayerCandidates::Kind::kFresh;
+  if (!settings_.engine.policy->shares_budget) return c;
+  const ConvexPolygon& region = polygon_region(index);
+  c.pixels[static_cast<int>(Level::kRerender)] = box_pixels(region);
+  if (!region.empty()) {
+    const BoundingBox b = region.bounds();
+    c.extent_px = std::hypot(b.x_max - b.x_min, b.y_max - b.y_min);
+  }
+  return c;
+}
+
+void SceneAnimator::measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
+                                     const ViewerPose& current, AnimationFrame& report) {
+  const auto t0 = Clock::now();
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    if (statuses_[i] == PolygonStatus::kBackFacing ||
+        statuses_[i] == PolygonStatus::kOutsideFrustum) {
+      continue;
+    }
+    PolygonState& s = *states_[i];
+    const int index = static_cast<int>(i);
+    if (s.needs_clipping) {
+      s.candidates = clipped_candidates(index);
+      continue;
+    }
+    const ScenePolygon& polygon = scene_.polygons[i];
+    PlaneAnimator& animator = polygon_animator(index);
+    const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
+    s.candidates = s.live && previous && motion
+                       ? animator.measure_advance(
+                             polygon_pose(polygon, *previous, s.texture_size), *motion, pose)
+                       : animator.measure_start(pose);
+  }
+  report.update_ms += ms_since(t0);
+}
+
+void SceneAnimator::allocate_polygons(AnimationFrame& report) {
+  std::vector<int> measured;
+  std::vector<LayerCandidates> candidates;
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    if (statuses_[i] == PolygonStatus::kBackFacing ||
+        statuses_[i] == PolygonStatus::kOutsideFrustum) {
+      continue;
+    }
+    measured.push_back(static_cast<int>(i));
+    candidates.push_back(states_[i]->candidates);
+  }
+  const FrameAllocation a = ledger_.allocate(report.frame, candidates);
+  for (std::size_t k = 0; k < measured.size(); ++k) {
+    PolygonState& s = *states_[measured[k]];
+    s.allocated = a.levels[k];
+    s.allocated_shown = a.shown[k] != 0;
+    s.starved = a.starved[k] != 0;
+  }
+}
+
+void SceneAnimator::starve(int index) {
+  statuses_[index] = PolygonStatus::kStarved;
+  states_[index]->live = false;
+  ledger_.applied(Level::kRerender, 0.0, 0, true);
+}
+
+void SceneAnimator::update_polygon(int index, const ViewerPose& current, AnimationFrame& report) {
+  PolygonState& s = *states_[index];
   const auto t0 = Clock::now();
   s.updated = true;
   if (s.needs_clipping) {
+    if (!s.allocated_shown) {
+      s.clipped_layer = PlacedLayer{};
+      starve(index);
+      report.update_ms += ms_since(t0);
+      return;
+    }
+    const std::int64_t before = report.pixels_written;
     render_clipped(index, current, report);
     statuses_[index] = PolygonStatus::kClipped;
     levels_[index] = Level::kRerender;
     ++report.levels[static_cast<int>(Level::kRerender)];
     ++report.clipped;
     s.live = false;
+    ledger_.applied(Level::kRerender, ms_since(t0), report.pixels_written - before, s.starved);
     report.update_ms += ms_since(t0);
     return;
   }
-  if (!s.animator) {
-    const Image& texture = scene_.textures[polygon.texture];
-    EngineSettings engine = settings_.engine;
-    engine.content = polygon_content(index);
-    s.animator = std::make_unique<PlaneAnimator>(
-        camera_, make_layer(texture, texel_polygon(s.uv, s.texture_size)), engine);
+  const FrameReport r = s.animator->apply(s.allocated, s.allocated_shown);
+  if (!s.allocated_shown && s.candidates.kind == LayerCandidates::Kind::kFresh) {
+    starve(index);
+    report.update_ms += ms_since(t0);
+    return;
   }
-  const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
-  const FrameReport r =
-      s.live && previous && motion
-          ? s.animator->advance(polygon_pose(polygon, *previous, s.texture_size), *motion, pose)
-          : s.animator->start(pose);
   s.live = true;
   statuses_[index] = PolygonStatus::kAnimated;
   levels_[index] = r.level;
@@ -283,6 +374,7 @@ void SceneAnimator::update_polygon(int index, const ViewerPose* previous, const 
   report.model_work += r.model_work;
   report.render_ms += r.render_ms;
   report.max_photometric_error = std::max(report.max_photometric_error, r.photometric_error);
+  ledger_.applied(r.level, r.time_ms, r.pixels_written, s.starved);
   s.report = r;
   if (r.visible)
     report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
@@ -303,8 +395,11 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
   report.layers = static_cast<int>(scene_.polygons.size());
   classify(current, report);
   bsp_.back_to_front(eye_position(current), order_);
-  update_front_to_back(previous, motion, current, report);
+  measure_polygons(previous, motion, current, report);
+  allocate_polygons(report);
+  update_front_to_back(current, report);
   tally_hidden_and_stale(report);
+  report.budget = ledger_.finish();
   const auto t1 = Clock::now();
   compose(report);
   report.composite_ms = ms_since(t1);
@@ -312,8 +407,7 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
   return report;
 }
 
-void SceneAnimator::update_front_to_back(const ViewerPose* previous, const RigidMotion* motion,
-                                         const ViewerPose& current, AnimationFrame& report) {
+void SceneAnimator::update_front_to_back(const ViewerPose& current, AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   fragment_drawn_.assign(fragments.size(), 0);
   fragment_regions_.resize(fragments.size());
@@ -335,7 +429,7 @@ void SceneAnimator::update_front_to_back(const ViewerPose* previous, const Rigid
         report.visibility_ms += ms_since(tv);
         if (hidden) continue;
       }
-      update_polygon(p, previous, motion, current, report);
+      update_polygon(p, current, report);
     }
     const PlacedLayer* shown = s.shown(statuses_[p]);
     if (!shown || shown->layer.empty()) continue;

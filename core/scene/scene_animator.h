@@ -11,7 +11,12 @@
 //     polygon whose every fragment's image is covered by opaque polygons already drawn in
 //     front of it is "hidden" and not updated at all (core/scene/occlusion.h);
 //  4. update: every other polygon gets its engine update for this frame (or a fresh start
-//     when it was culled or hidden the frame before, since its layer is then stale);
+//     when it was culled or hidden the frame before, since its layer is then stale), in
+//     three phases (core/engine/budget.h): every polygon that passed culling is measured
+//     (its candidate levels and their costs), the levels are allocated over all of them
+//     (each its own choice, or the `budget` policy's share of a per-frame budget), and the
+//     walk of step 3 applies them; a polygon found hidden then leaves its share unspent,
+//     and one the budget could not afford a render is "starved": not drawn this frame;
 //  5. composite the layers back to front into the frame (premultiplied, transparent where
 //     nothing is drawn).
 //
@@ -54,7 +59,9 @@ struct SceneSettings {
 };
 
 // What happened to one polygon in a frame.
-enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped };
+// kStarved: visible, but the frame budget afforded it no render (core/engine/budget.h): not
+// drawn this frame.
+enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped, kStarved };
 const char* polygon_status_name(PolygonStatus status);
 
 class SceneAnimator {
@@ -100,16 +107,21 @@ class SceneAnimator {
                            const ViewerPose& current);
   // The steps of run_frame: visibility and updates front to back, the hidden polygons'
   // tally, compositing back to front.
-  void update_front_to_back(const ViewerPose* previous, const RigidMotion* motion,
-                            const ViewerPose& current, AnimationFrame& report);
+  void update_front_to_back(const ViewerPose& current, AnimationFrame& report);
   void add_occluder(int fragment, const PlacedLayer& shown);
   void tally_hidden_and_stale(AnimationFrame& report);
+  // The measure and allocate phases (step 4) of the polygons that passed culling.
+  void measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
+                        const ViewerPose& current, AnimationFrame& report);
+  void allocate_polygons(AnimationFrame& report);
+  LayerCandidates clipped_candidates(int polygon);
+  void starve(int polygon);
+  PlaneAnimator& polygon_animator(int polygon);
   void compose(AnimationFrame& report);
   void classify(const ViewerPose& view, AnimationFrame& report);
   bool fragment_hidden(int fragment, const ViewerPose& view);
   const ConvexPolygon& polygon_region(int polygon);
-  void update_polygon(int polygon, const ViewerPose* previous, const RigidMotion* motion,
-                      const ViewerPose& current, AnimationFrame& report);
+  void update_polygon(int polygon, const ViewerPose& current, AnimationFrame& report);
   void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
   ConvexPolygon fragment_region(int fragment, const ViewerPose& view) const;
   ConvexPolygon exact_region(const ViewPolygon& clipped) const;
@@ -129,6 +141,7 @@ class SceneAnimator {
   std::vector<char> fragment_drawn_;
   std::vector<ConvexPolygon> fragment_regions_;
   OcclusionTest occlusion_;
+  BudgetLedger ledger_;
   Image frame_;
   int frame_index_ = 0;
 };
