@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QSignalBlocker>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -152,10 +153,21 @@ QWidget* AnimationControls::make_engine_row() {
     mode_box_->addItem(p.name, QString(p.name));
     mode_box_->setItemData(mode_box_->count() - 1, QString(p.summary), Qt::ToolTipRole);
   }
+  budget_box_ = new QSpinBox(row);
+  budget_box_->setObjectName(QStringLiteral("animation_budget"));
+  budget_box_->setRange(-1, 100000000);
+  budget_box_->setSingleStep(1000);
+  budget_box_->setSuffix(tr(" px/frame"));
+  budget_box_->setSpecialValueText(tr("auto (a quarter of the frame)"));
+  budget_box_->setKeyboardTracking(false);
+  budget_box_->setToolTip(tr("The budget policy's pixels written per frame, shared by all layers"));
+  connect(budget_box_, QOverload<int>::of(&QSpinBox::valueChanged), this,
+          [this] { emit settings_edited(); });
   affine_switch_ = new QPushButton(tr("Affine/persp."), row);
   affine_switch_->setToolTip(tr("Switches between the affine and the perspective mode"));
   layout->addWidget(new QLabel(tr("Mode"), row));
   layout->addWidget(mode_box_);
+  layout->addWidget(budget_box_);
   layout->addWidget(affine_switch_);
   delta_box_ = new QComboBox(row);
   for (DeltaPolicy d : kDeltas) delta_box_->addItem(delta_policy_name(d), int(d));
@@ -187,11 +199,15 @@ QWidget* AnimationControls::make_engine_row() {
             [this] { emit settings_edited(); });
   }
   for (QComboBox* box : {mode_box_, delta_box_, sampling_box_}) {
-    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { emit settings_edited(); });
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] {
+      show_budget();
+      emit settings_edited();
+    });
   }
   connect(affine_switch_, &QPushButton::clicked, this, [this] {
     const bool affine = mode_box_->currentData().toString() == QStringLiteral("affine");
     select_data(mode_box_, affine ? QStringLiteral("perspective") : QStringLiteral("affine"));
+    show_budget();
     emit settings_edited();
   });
   thresholds->addStretch(1);
@@ -206,7 +222,15 @@ EngineSettings AnimationControls::settings() const {
   for (int k = 0; k < kTermCount; ++k) s.thresholds[size_t(k)] = thresholds_[k]->value();
   s.delta = static_cast<DeltaPolicy>(delta_box_->currentData().toInt());
   s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
+  if (s.policy->shares_budget && budget_box_->value() >= 0) {
+    s.budget = {FrameBudget::Unit::kPixels, double(budget_box_->value())};
+  }
   return s;
+}
+
+void AnimationControls::show_budget() {
+  const ReusePolicy* p = find_reuse_policy(mode_box_->currentData().toString().toStdString());
+  budget_box_->setVisible(p && p->shares_budget);
 }
 
 void AnimationControls::set_settings(const EngineSettings& s) {
@@ -218,6 +242,11 @@ void AnimationControls::set_settings(const EngineSettings& s) {
     const QSignalBlocker block(thresholds_[k]);
     thresholds_[k]->setValue(s.thresholds[size_t(k)]);
   }
+  // A time budget has no box here: the GUI edits pixel budgets (auto for none).
+  const QSignalBlocker block(budget_box_);
+  const bool pixels = s.budget.unit == FrameBudget::Unit::kPixels;
+  budget_box_->setValue(pixels ? static_cast<int>(std::min(s.budget.amount, 1e8)) : -1);
+  show_budget();
 }
 
 QToolButton* AnimationControls::make_compare_button(QWidget* parent) {

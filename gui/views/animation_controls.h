@@ -1,7 +1,8 @@
 // The animation view's control bar: what plays (an entry of the source-kind table,
 // gui/models/animation_sources.h, with its shipped name and viewer script), the engine's
 // reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
-// affine/perspective switch), the per-level thresholds, the Delta
+// affine/perspective switch; with the budget policy, a spin box of its pixel budget per
+// frame), the per-level thresholds, the Delta
 // policy, the sampling, how the two panels are shown, and the policies the comparison
 // layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only edits values; the view
 // applies them and puts them back when it refuses them.
@@ -19,6 +20,7 @@ class QAction;
 class QComboBox;
 class QDoubleSpinBox;
 class QPushButton;
+class QSpinBox;
 class QToolButton;
 
 namespace oflab {
@@ -69,11 +71,16 @@ class AnimationControls : public QWidget {
   void show_kind(const AnimationSourceKind& kind);
   // The source kind of the picker's current entry.
   const AnimationSourceKind& current_kind() const;
+  // Shows the budget spin box only while the mode box holds a policy that shares a budget.
+  void show_budget();
 
   QComboBox* source_box_ = nullptr;
   QComboBox* viewer_box_ = nullptr;
   QComboBox* mode_box_ = nullptr;
   QPushButton* affine_switch_ = nullptr;
+  // The budget policy's pixels written per frame; its minimum (-1) reads "auto": no budget
+  // given, the engine's default (core/engine/budget.h budget_or_default).
+  QSpinBox* budget_box_ = nullptr;
   QComboBox* display_box_ = nullptr;
   QToolButton* compare_button_ = nullptr;
   std::vector<QAction*> compare_actions_;  // one per registry policy, in registry order

@@ -3,6 +3,7 @@
 // one-line errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -106,6 +107,38 @@ TEST(CompareCommand, JsonRowsAgreeWithAnimateRunAlone) {
   }
 }
 
+// The seam with layer contents: compare takes --content and --quality as animate does, and
+// its model_work_saved is animate's for the same policy and content.
+TEST(CompareCommand, ContentAndQualityReachEveryPolicyAndModelWorkMatchesAnimate) {
+  const std::vector<std::string> common = {"--script", "rotation", "--content", "shaded",
+                                           "--quality", "2", "--frames", "12",
+                                           "--repeat-timing", "1", "--json"};
+  std::vector<std::string> compare = {"compare", "--policies", "perspective,rerender"};
+  compare.insert(compare.end(), common.begin(), common.end());
+  const CliResult r = run(compare);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out).at("policies");
+  ASSERT_EQ(rows.size(), 2u);
+  std::vector<std::string> texture = compare;
+  texture[std::find(texture.begin(), texture.end(), "shaded") - texture.begin()] = "texture";
+  const auto texture_rows = nlohmann::json::parse(run(texture).out).at("policies");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<std::string> animate = {"animate", "--mode", rows[i]["name"].get<std::string>()};
+    animate.insert(animate.end(), common.begin(), common.end());
+    const CliResult alone = run(animate);
+    ASSERT_EQ(alone.code, 0) << alone.err;
+    const auto a = nlohmann::json::parse(alone.out);
+    EXPECT_DOUBLE_EQ(rows[i]["model_work_saved"].get<double>(),
+                     a["model_work_saved"].get<double>())
+        << rows[i]["name"];
+  }
+  // The content reached the runs: a shaded re-render costs more than the texture's, so the
+  // perspective policy saves more of the model's work with it.
+  EXPECT_GT(rows[0]["model_work_saved"].get<double>(),
+            texture_rows[0]["model_work_saved"].get<double>());
+  EXPECT_DOUBLE_EQ(rows[1]["model_work_saved"].get<double>(), 0.0);  // re-render saves nothing
+}
+
 TEST(CompareCommand, TextTableHasARowPerPolicyAndOutWritesTheCsvs) {
   const std::filesystem::path dir = testing::fresh_test_dir("oflab-compare");
   std::filesystem::remove(dir);
@@ -120,7 +153,15 @@ TEST(CompareCommand, TextTableHasARowPerPolicyAndOutWritesTheCsvs) {
   std::ifstream summary(dir / "summary.csv");
   std::string line;
   int lines = 0;
-  while (std::getline(summary, line)) ++lines;
+  while (std::getline(summary, line)) {
+    if (lines == 0) {
+      EXPECT_NE(line.find(",model_work_saved,"), std::string::npos) << line;
+      EXPECT_NE(line.find(",frames_over_budget,starved_layer_frames,mean_optimality_gap"),
+                std::string::npos)
+          << line;
+    }
+    ++lines;
+  }
   EXPECT_EQ(lines, 4);  // header and three policies
   std::filesystem::remove_all(dir);
 }
