@@ -30,9 +30,19 @@ struct PoliciesSource {
   std::vector<PolicyRun> runs;  // one per registry policy, in registry order
 };
 
+// The budget policy on the four cubes at one pixel budget per frame.
+struct BudgetRun {
+  double budget_pixels = 0.0;
+  PolicyRun run;
+};
+// The pixel budgets per frame of the four cubes' budget runs: about 1 %, 4 % and 16 % of
+// the 640 x 480 frame's pixels.
+constexpr double kFourCubesBudgets[] = {3000.0, 12000.0, 48000.0};
+
 struct PoliciesResult {
   PoliciesSpec spec;
   std::vector<PoliciesSource> sources;  // the Experiment 1 scripts, then four-cubes
+  std::vector<BudgetRun> budgets;       // four-cubes under `budget`, one per kFourCubesBudgets
 };
 
 PoliciesResult run_policies_experiment(const Layer& texture, const PoliciesSpec& spec,

@@ -131,14 +131,8 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
   for (const PolicyRow& r : rows) {
     if (!r.budgeted) continue;
     out << r.name << ": " << r.frames_over_budget << " frames over budget, "
-        << r.starved_layer_frames << " starved layer-frames, mean optimality gap ";
-    if (std::isfinite(r.mean_optimality_gap)) {
-      out << std::setprecision(2) << 100.0 * r.mean_optimality_gap << "% over " << r.gap_frames
-          << " frames checked by exhaustive search\n";
-    } else {
-      out << "not checked (no frame with at most " << kExhaustiveMaxLayers
-          << " layers competing)\n";
-    }
+        << r.starved_layer_frames << " starved layer-frames, mean optimality gap "
+        << optimality_gap_text(r.mean_optimality_gap, r.gap_frames) << "\n";
   }
 }
 

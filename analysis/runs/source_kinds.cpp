@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
@@ -305,16 +306,24 @@ nlohmann::json budget_json(const RunSummary& s) {
 
 void print_budget(const nlohmann::json& b, std::ostream& out) {
   if (b.is_null()) return;
+  const nlohmann::json& gap = b.at("mean_optimality_gap");
   out << "  budget: " << b.at("frames_over_budget").get<long>() << " frames over budget (of "
       << b.at("frames").get<long>() << "), " << b.at("starved_layer_frames").get<long>()
-      << " starved layer-frames, mean optimality gap ";
-  if (b.at("mean_optimality_gap").is_null()) {
-    out << "not checked (no frame with at most " << kExhaustiveMaxLayers
-        << " layers competing)\n";
-    return;
+      << " starved layer-frames, mean optimality gap "
+      << optimality_gap_text(gap.is_null() ? std::nan("") : gap.get<double>(),
+                             b.at("gap_frames").get<long>())
+      << "\n";
+}
+
+std::string optimality_gap_text(double mean_gap, long gap_frames) {
+  if (!std::isfinite(mean_gap)) {
+    return "not checked (a time budget with more than " +
+           std::to_string(kExhaustiveMaxLayers) + " layers competing in every frame)";
   }
-  out << 100.0 * b.at("mean_optimality_gap").get<double>() << "% over "
-      << b.at("gap_frames").get<long>() << " frames checked by exhaustive search\n";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(2) << 100.0 * mean_gap << "% over " << gap_frames
+       << " frames checked against the optimum";
+  return text.str();
 }
 
 void print_savings_and_error(const RunSummary& s, std::ostream& out) {

@@ -80,8 +80,11 @@ void print_savings_and_error(const RunSummary& summary, std::ostream& out);
 // frame was checked by exhaustive search)}; null for other policies, whose summaries then
 // have no "budget" key.
 nlohmann::json budget_json(const RunSummary& summary);
-// "  budget: F frames over budget (of N), S starved layer-frames, mean optimality gap G% over
-// K frames checked by exhaustive search" for a block of budget_json; nothing for null.
+// "  budget: F frames over budget (of N), S starved layer-frames, mean optimality gap ..."
+// (optimality_gap_text) for a block of budget_json; nothing for null.
 void print_budget(const nlohmann::json& budget, std::ostream& out);
+// A budgeted run's mean optimality gap (a fraction, NaN when no frame was checked) over its
+// checked frames: "G% over K frames checked against the optimum", or "not checked (...)".
+std::string optimality_gap_text(double mean_gap, long gap_frames);
 
 }  // namespace oflab

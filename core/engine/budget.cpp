@@ -2,6 +2,7 @@
 #include "engine/budget.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -178,6 +179,39 @@ BudgetSolution exhaustive_allocation(const std::vector<BudgetLayer>& layers, dou
   return totals(layers, best);
 }
 
+double optimal_benefit(const std::vector<BudgetLayer>& layers, double budget) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double dearest = 0.0, best_each = 0.0;
+  for (const BudgetLayer& layer : layers) {
+    double cost = 0.0, benefit = -std::numeric_limits<double>::infinity();
+    for (const BudgetOption& o : layer) {
+      if (o.cost != std::floor(o.cost)) return nan;
+      if (o.cost <= budget && o.benefit > benefit) {
+        benefit = o.benefit;
+        cost = o.cost;
+      }
+    }
+    dearest += cost;
+    best_each += benefit;
+  }
+  if (dearest <= budget) return best_each;  // every layer's best option fits at once
+  const double cells = double(layers.size()) * (std::floor(budget) + 1.0);
+  if (!(cells <= kMaxOptimalTableCells)) return nan;
+  // best[c]: the largest benefit of the layers so far within a whole budget c.
+  const std::size_t width = static_cast<std::size_t>(budget) + 1;
+  std::vector<double> best(width, 0.0), next(width);
+  for (const BudgetLayer& layer : layers) {
+    std::fill(next.begin(), next.end(), -std::numeric_limits<double>::infinity());
+    for (const BudgetOption& o : layer) {
+      if (o.cost > budget) continue;
+      const std::size_t k = static_cast<std::size_t>(o.cost);
+      for (std::size_t c = k; c < width; ++c) next[c] = std::max(next[c], best[c - k] + o.benefit);
+    }
+    best.swap(next);
+  }
+  return best.back();
+}
+
 double optimality_gap(double best_benefit, double greedy_benefit) {
   return best_benefit > 0.0 ? (best_benefit - greedy_benefit) / best_benefit : 0.0;
 }
@@ -238,10 +272,16 @@ FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& bud
     a.starved[i] = wants_pixels(layers[i]) && !got_pixels ? 1 : 0;
   }
   a.planned = greedy.cost;
-  if (competing_layers(options, budget.amount) <= kExhaustiveMaxLayers) {
-    a.optimality_gap =
-        optimality_gap(exhaustive_allocation(options, budget.amount).benefit, greedy.benefit);
+  const auto t0 = std::chrono::steady_clock::now();
+  double best = budget.unit == FrameBudget::Unit::kPixels
+                    ? optimal_benefit(options, budget.amount)
+                    : std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(best) && competing_layers(options, budget.amount) <= kExhaustiveMaxLayers) {
+    best = exhaustive_allocation(options, budget.amount).benefit;
   }
+  if (!std::isnan(best)) a.optimality_gap = optimality_gap(best, greedy.benefit);
+  a.check_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                   .count();
   return a;
 }
 
@@ -259,6 +299,7 @@ FrameAllocation BudgetLedger::allocate(int frame, const std::vector<LayerCandida
     frame_.amount = budget_.amount;
     frame_.planned = a.planned;
     frame_.optimality_gap = a.optimality_gap;
+    frame_.check_ms = a.check_ms;
   }
   return a;
 }

@@ -403,7 +403,8 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
   const auto t1 = Clock::now();
   compose(report);
   report.composite_ms = ms_since(t1);
-  report.time_ms = ms_since(t0);
+  // The budget's optimality check is a diagnostic, left out as the measured errors are.
+  report.time_ms = ms_since(t0) - report.budget.check_ms;
   return report;
 }
 

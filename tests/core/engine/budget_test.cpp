@@ -99,15 +99,6 @@ TEST(BudgetAllocation, GreedyIsWithinTheDocumentedGapOnRandomSmallInstances) {
   EXPECT_LT(worst, 0.5);
 }
 
-TEST(BudgetAllocation, ExhaustiveSearchRefusesTooManyCompetingLayers) {
-  std::vector<BudgetLayer> layers(kExhaustiveMaxLayers + 1, layer({{0, 0}, {1, 1}}));
-  EXPECT_EQ(competing_layers(layers, 10.0), kExhaustiveMaxLayers + 1);
-  EXPECT_THROW(exhaustive_allocation(layers, 10.0), std::invalid_argument);
-  // Options beyond the budget do not compete.
-  EXPECT_EQ(competing_layers(layers, 0.5), 0);
-  EXPECT_NO_THROW(exhaustive_allocation(layers, 0.5));
-}
-
 LayerCandidates choice(Level own, std::int64_t affine_pixels, double stale_error) {
   LayerCandidates c;
   c.kind = LayerCandidates::Kind::kChoice;
@@ -116,6 +107,41 @@ LayerCandidates choice(Level own, std::int64_t affine_pixels, double stale_error
   c.pixels = {0, 0, affine_pixels, 3 * affine_pixels, affine_pixels};
   c.error = {stale_error, stale_error, 0.1, 0.05};
   return c;
+}
+
+TEST(BudgetAllocation, DynamicProgrammingFindsTheExhaustiveOptimumForWholeCosts) {
+  std::mt19937 rng(16);
+  std::uniform_int_distribution<int> cost(0, 60), benefit(0, 20), extra(1, 4);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<BudgetLayer> layers;
+    for (int l = 0; l < 1 + trial % kExhaustiveMaxLayers; ++l) {
+      std::vector<std::pair<double, double>> options = {{0.0, 0.0}};
+      for (int o = extra(rng); o > 0; --o) options.push_back({double(cost(rng)), double(benefit(rng))});
+      layers.push_back(layer(options));
+    }
+    const double budget = double(cost(rng) * 2);
+    EXPECT_DOUBLE_EQ(optimal_benefit(layers, budget), exhaustive_allocation(layers, budget).benefit)
+        << trial;
+  }
+  // The hand-made case where greedy is suboptimal, and costs that are not whole numbers.
+  const std::vector<BudgetLayer> suboptimal = {layer({{0, 0}, {6, 7}}), layer({{0, 0}, {5, 5}}),
+                                               layer({{0, 0}, {5, 5}})};
+  EXPECT_DOUBLE_EQ(optimal_benefit(suboptimal, 10.0), 10.0);
+  EXPECT_TRUE(std::isnan(optimal_benefit({layer({{0, 0}, {0.5, 1}})}, 10.0)));
+  // More layers than exhaustive search takes: the frame's gap is still checked.
+  const std::vector<LayerCandidates> many(12, choice(Level::kAffine, 1000, 3.0));
+  const FrameAllocation a = allocate_frame(reuse_policy("budget"),
+                                           {FrameBudget::Unit::kPixels, 4500.0}, LevelRates(), many);
+  EXPECT_DOUBLE_EQ(a.optimality_gap, 0.0);
+}
+
+TEST(BudgetAllocation, ExhaustiveSearchRefusesTooManyCompetingLayers) {
+  std::vector<BudgetLayer> layers(kExhaustiveMaxLayers + 1, layer({{0, 0}, {1, 1}}));
+  EXPECT_EQ(competing_layers(layers, 10.0), kExhaustiveMaxLayers + 1);
+  EXPECT_THROW(exhaustive_allocation(layers, 10.0), std::invalid_argument);
+  // Options beyond the budget do not compete.
+  EXPECT_EQ(competing_layers(layers, 0.5), 0);
+  EXPECT_NO_THROW(exhaustive_allocation(layers, 0.5));
 }
 
 TEST(BudgetAllocation, StarvedLayersAreThoseTheRuleWouldSpendPixelsOnThatGetNone) {
