@@ -241,21 +241,48 @@ std::vector<LegendEntry> policy_legend(const std::vector<ComparedRun>& runs) {
   return entries;
 }
 
-// One line per compared policy of `field` of its history (gaps where its plane is not drawn
-// when `drawn_only`), scaled to the largest value charted (at least `floor`), with the key.
-void draw_compared(QPainter& p, const ChartFrame& f, const std::vector<ComparedRun>& runs,
-                   const QString& title, const QString& unit, double floor,
-                   double (*field)(const ComparedFrame&), bool drawn_only, const QColor& text) {
-  std::vector<FrameValue> values;
-  double top = floor * 1.1;
-  for (const ComparedRun& run : runs) {
-    values.push_back(of_run(run, field, drawn_only));
-    top = std::max(top, series_top(f, values.back(), floor));
+// A chart of one line per compared policy: its title and unit, the field of the history it
+// draws, whether frames whose plane is not drawn are gaps, and its scale: the `quantile` of
+// the values charted (1: the largest; less clips the rarest spikes at the top), at least
+// `floor`.
+struct ComparedChart {
+  QString title, unit;
+  double (*field)(const ComparedFrame&);
+  bool drawn_only = true;
+  double floor = 1.0;
+  double quantile = 1.0;
+};
+
+// 1.1 times the chart's quantile of every policy's values over the charted frames.
+double compared_top(const ChartFrame& f, const std::vector<FrameValue>& values,
+                    const ComparedChart& chart) {
+  std::vector<double> all;
+  for (const FrameValue& value : values) {
+    for (int k = f.first; k <= f.current; ++k) {
+      if (std::isfinite(value(k))) all.push_back(value(k));
+    }
   }
-  draw_frame_box(p, f, title, top, text, unit);
+  double top = chart.floor;
+  if (!all.empty()) {
+    const size_t at = size_t(chart.quantile * double(all.size() - 1));
+    std::nth_element(all.begin(), all.begin() + long(at), all.end());
+    top = std::max(top, all[at]);
+  }
+  return 1.1 * top;
+}
+
+// The chart's lines, in panel order, each narrower than the one before, so a line that
+// another covers (two policies doing the same) still shows as its border; with the key.
+void draw_compared(QPainter& p, const ChartFrame& f, const std::vector<ComparedRun>& runs,
+                   const ComparedChart& chart, const QColor& text) {
+  std::vector<FrameValue> values;
+  for (const ComparedRun& run : runs) values.push_back(of_run(run, chart.field, chart.drawn_only));
+  const double top = compared_top(f, values, chart);
+  draw_frame_box(p, f, chart.title, top, text, chart.unit);
   draw_legend(p, f.area, policy_legend(runs), text);
   for (size_t i = 0; i < runs.size(); ++i) {
-    draw_series(p, f, top, QPen(policy_qcolor(int(i)), 2.0), values[i]);
+    const double width = 2.0 + double(runs.size() - 1 - i);
+    draw_series(p, f, top, QPen(policy_qcolor(int(i)), width), values[i]);
   }
 }
 
@@ -465,12 +492,20 @@ void AnalysisView::Charts::paint_comparison(QPainter& p, const QRect& rect,
     return ChartFrame{records, view_->first_, view_->last_, view_->current_, a[size_t(i)]};
   };
   const std::vector<ComparedRun>& runs = *compared;
-  draw_compared(p, chart(0), runs, tr("largest measured error, per policy"), QStringLiteral(" px"),
-                0.1, [](const ComparedFrame& f) { return f.max_measured_error_px; }, true, text);
-  draw_compared(p, chart(1), runs, tr("frame time, per policy"), QStringLiteral(" ms"), 1.0,
-                [](const ComparedFrame& f) { return f.time_ms; }, false, text);
-  draw_compared(p, chart(2), runs, tr("work in the cost model (perspective-warp pixels), per policy"),
-                QString(), 1.0, [](const ComparedFrame& f) { return f.model_work; }, false, text);
+  draw_compared(p, chart(0), runs,
+                {tr("largest measured error, per policy"), QStringLiteral(" px"),
+                 [](const ComparedFrame& f) { return f.max_measured_error_px; }, true, 0.1, 1.0},
+                text);
+  // Wall times: a frame the machine was busy elsewhere would flatten every other frame.
+  draw_compared(p, chart(1), runs,
+                {tr("frame time, per policy (the slowest 2% of frames clipped at the top)"),
+                 QStringLiteral(" ms"), [](const ComparedFrame& f) { return f.time_ms; }, false,
+                 0.1, 0.98},
+                text);
+  draw_compared(p, chart(2), runs,
+                {tr("work in the cost model (perspective-warp pixels), per policy"), QString(),
+                 [](const ComparedFrame& f) { return f.model_work; }, false, 1.0, 1.0},
+                text);
   draw_level_bands(p, chart(3), runs, text);
   draw_level_shares(p, share_panel(rect, a[3]), chart(3), runs, text);
 }
