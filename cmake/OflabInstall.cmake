@@ -19,7 +19,8 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/oflabConfig.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/oflabConfigVersion.cmake
         DESTINATION ${OFLAB_INSTALL_CMAKEDIR})
 
-if(OFLAB_CORE_ONLY)
+# The core-only and headless builds are test builds: they install the core library only.
+if(OFLAB_CORE_ONLY OR OFLAB_HEADLESS)
   return()
 endif()
 

@@ -49,6 +49,10 @@ screen=1920x1200 shot animation-comparison --lesson affine-vs-perspective --view
   --size 1920 1080 --frames 40
 screen=1920x1200 shot animation-comparison-presentation --lesson affine-vs-perspective \
   --view animation --presentation --size 1920 1080 --frames 40
+# The analysis view overlaying four compared policies' histories, at 1920 x 1080.
+screen=1920x1200 shot analysis-comparison --script loop --animation-show comparison \
+  --compare perspective,dissertation,talisman,rerender --view analysis --size 1920 1080 \
+  --frames 150
 screen=1920x1200 shot lesson-flow-vs-talisman --lesson flow-vs-talisman --size 1920 1080 --frames 40
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20

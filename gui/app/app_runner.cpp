@@ -14,6 +14,7 @@
 #include "app/main_window.h"
 #include "models/scene_model.h"
 #include "app/screenshot.h"
+#include "app/session_io.h"
 
 namespace oflab {
 namespace {
@@ -53,6 +54,7 @@ bool prepare_window(MainWindow* window, const LaunchOptions& options, std::strin
     settings.policy = options.mode;
     animation->set_settings(settings);
   }
+  if (!options.compared.empty()) window->animation_view()->set_compared_policies(options.compared);
   PanelDisplay display = PanelDisplay::kSideBySide;
   if (parse_panel_display(options.animation_show, &display)) {
     window->animation_view()->set_display(display);
@@ -113,6 +115,13 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
 
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
   MainWindow window;
+  if (options.session) {  // first: the other options change what it set
+    QString problem;
+    if (!apply_session(&window, *options.session, &problem)) {
+      err << "oflab: --session: " << problem.simplified().toStdString() << "\n";
+      return 2;
+    }
+  }
   std::string error;
   if (!prepare_window(&window, options, &error)) {
     err << "oflab: " << error << "\n";

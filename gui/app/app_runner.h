@@ -26,7 +26,9 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
 // `out`. Returns 0.
 int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out);
 
-// The whole program after parsing: needs a QApplication. Returns the exit code.
+// The whole program after parsing: needs a QApplication. Applies the session first, if one
+// is given; a file it names that cannot be used ends the program with one line on `err`
+// and exit code 2, as bad input on the command line does. Returns the exit code.
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace oflab

@@ -6,12 +6,15 @@
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
+#include "formats/session_file.h"
 #include "formats/viewer_script_file.h"
 #include "engine/engine.h"
 #include "engine/reuse_policy.h"
 #include "app/lessons.h"
 #include "app/view_table.h"
 #include "models/animation_sources.h"
+#include "models/policy_comparison.h"
+#include "runs/policy_runs.h"
 
 namespace oflab {
 namespace {
@@ -78,6 +81,28 @@ void read_mode(const CliArgs& cli, LaunchOptions* options) {
   options->mode = find_reuse_policy(text);
   if (!options->mode) {
     throw UsageError("--mode: unknown mode '" + text + "' (known: " + reuse_policy_names() + ")");
+  }
+}
+
+void read_compared(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--compare")) return;
+  try {
+    options->compared = parse_policy_list(cli.values("--compare").at(0));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--compare: " + std::string(e.what()));
+  }
+  if (int(options->compared.size()) > kMaxComparedPolicies) {
+    throw UsageError("--compare: at most " + std::to_string(kMaxComparedPolicies) +
+                     " policies, not " + std::to_string(options->compared.size()));
+  }
+}
+
+void read_session(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--session")) return;
+  try {
+    options->session = read_session_file(cli.values("--session").at(0));
+  } catch (const SessionError& e) {
+    throw UsageError("--session: " + std::string(e.what()));
   }
 }
 
@@ -191,12 +216,14 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(args, {{"--lesson", 1},
+  const CliArgs cli(args, {{"--session", 1},
+                           {"--lesson", 1},
                            {"--scene", 1},
                            {"--script", 1},
                            {"--source", 1},
                            {"--mode", 1},
                            {"--animation-show", 1},
+                           {"--compare", 1},
                            {"--view", 1},
                            {"--screenshot", 1},
                            {"--whole-window", 0},
@@ -215,11 +242,13 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
     throw UsageError("--lesson: unknown lesson '" + options.lesson + "' (known: " + lesson_names() +
                      ")");
   }
+  read_session(cli, &options);
   read_script(cli, &options);
   read_source(cli, &options);
   read_scene(cli, &options);
   read_mode(cli, &options);
   read_animation_show(cli, &options);
+  read_compared(cli, &options);
   options.view = cli.text_or("--view", "");
   const auto& views = screenshot_view_names();
   if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
@@ -247,10 +276,12 @@ FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
 std::string launch_usage() {
   std::vector<std::string> titled;
   for (const ViewEntry& view : view_table()) titled.push_back(view.name + " (" + view.title + ")");
-  return "usage: oflab [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
+  return "usage: oflab [--session FILE] [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
          "             [--source " + joined(scene_source_kinds(), "|") + "]\n"
          "             [--mode " + reuse_policy_names("|") + "]\n"
          "             [--animation-show side-by-side|difference|blink|comparison]\n"
+         "             [--compare P1,P2,... (up to " + std::to_string(kMaxComparedPolicies) +
+         " policies)]\n"
          "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
          "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "

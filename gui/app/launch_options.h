@@ -1,5 +1,6 @@
 // The command line of oflab:
-//   oflab [--lesson NAME] [--scene S] [--script T] [--source KIND] [--mode M] [--view NAME]
+//   oflab [--session FILE] [--lesson NAME] [--scene S] [--script T] [--source KIND] [--mode M]
+//         [--compare P1,P2,...] [--view NAME]
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
 //         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation] [--help]
 // Plain C++ over analysis/cli/cli_args.h, so it is checked before any window opens and bad
@@ -13,12 +14,16 @@
 #include "cli/cli_args.h"
 #include "engine/engine.h"
 #include "engine/script.h"
+#include "formats/session_file.h"
 #include "views/basis_catalog.h"
 #include "adapters/flow_display.h"
 
 namespace oflab {
 
 struct LaunchOptions {
+  // --session FILE: a saved session (analysis/formats/session_file.h), read and checked here;
+  // the files it names are checked when the window applies it, before the other options.
+  std::optional<Session> session;
   std::string lesson;      // a lesson preset name (gui/app/lessons.h), empty for the demo
   std::string view;        // view in front and the one captured; "window" = whole window
   std::string screenshot;  // PNG path; when set, play `frames` frames, save, exit
@@ -48,6 +53,9 @@ struct LaunchOptions {
   const ReusePolicy* mode = nullptr;
   // --animation-show side-by-side|difference|blink|comparison: how the animation view shows its panels.
   std::string animation_show;
+  // --compare P1,P2,...: the policies of the comparison layout (1 .. kMaxComparedPolicies
+  // distinct names of the registry); empty when not given.
+  std::vector<const ReusePolicy*> compared;
   bool presentation = false;  // start in presentation mode
   bool help = false;          // --help: print the usage and exit 0
 };
@@ -62,7 +70,9 @@ const std::vector<std::string>& screenshot_view_names();
 // count, a non-positive benchmark count, a script that is neither a file nor a shipped name
 // or that analysis/formats/script_file.h rejects (the message names the file and field), a scene
 // or viewer script that is neither a file nor a shipped name or that its reader rejects,
-// an unknown --mode, and a --source that is not a kind with a viewer script or comes
+// a session file that analysis/formats/session_file.h rejects, an unknown --mode, a
+// --compare list that is empty, longer than kMaxComparedPolicies, repeats a policy or names
+// an unknown one, and a --source that is not a kind with a viewer script or comes
 // without --scene.
 LaunchOptions parse_launch_options(const std::vector<std::string>& args);
 

@@ -29,6 +29,7 @@
 #include "app/session_io.h"
 #include "app/view_table.h"
 #include "models/animation_model.h"
+#include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "views/analysis_view.h"
 #include "views/animation_view.h"
@@ -62,6 +63,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   animation_model_ = new AnimationModel(model_, this);
   for (const ViewEntry& entry : view_table()) add_view(entry);
+  // The analysis view overlays the compared policies while the animation view compares.
+  AnimationView* animation = animation_view();
+  analysis_view()->set_comparison_source([animation]() -> PolicyComparison* {
+    return animation->display() == PanelDisplay::kComparison ? &animation->comparison() : nullptr;
+  });
   connect(animation_model_, &AnimationModel::input_rejected, this, &MainWindow::show_message);
 
   controls_ = new SceneControls(model_);

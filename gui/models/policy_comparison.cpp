@@ -1,13 +1,46 @@
 #include "models/policy_comparison.h"
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 #include "models/animation_model.h"
 
 namespace oflab {
 
-PolicyComparison::PolicyComparison(AnimationModel* model)
-    : model_(model), policies_{&reuse_policy("affine"), &reuse_policy("perspective")} {}
+ComparedFrame ComparedFrame::of(const AnimationFrame& record) {
+  ComparedFrame f;
+  f.frame = record.frame;
+  f.levels = record.levels;
+  f.max_measured_error_px = record.max_measured_error_px;
+  f.time_ms = record.time_ms;
+  f.model_work = record.model_work;
+  f.pixels_written = record.pixels_written;
+  return f;
+}
+
+int ComparedFrame::drawn() const { return std::accumulate(levels.begin(), levels.end(), 0); }
+
+const ComparedFrame* ComparedRun::at(int frame) const {
+  if (history.empty()) return nullptr;
+  const long index = long(frame) - history.front().frame;
+  return index >= 0 && index < long(history.size()) ? &history[size_t(index)] : nullptr;
+}
+
+std::array<std::int64_t, kLevelCount> ComparedRun::level_totals(int first, int last) const {
+  std::array<std::int64_t, kLevelCount> totals{};
+  for (int k = first; k <= last; ++k) {
+    const ComparedFrame* f = at(k);
+    if (!f) continue;
+    for (int level = 0; level < kLevelCount; ++level) totals[size_t(level)] += f->levels[size_t(level)];
+  }
+  return totals;
+}
+
+PolicyComparison::PolicyComparison(AnimationModel* model, int history_frames)
+    : model_(model),
+      history_frames_(std::max(1, history_frames)),
+      policies_{&reuse_policy("affine"), &reuse_policy("perspective")} {}
 
 PolicyComparison::~PolicyComparison() = default;
 
@@ -50,19 +83,27 @@ void PolicyComparison::build() {
   }
 }
 
-void PolicyComparison::restart(ComparedRun& run) {
+void PolicyComparison::restart(ComparedRun& run) const {
   run.last = run.animator->start();
   run.pixels_written = run.last.pixels_written;
   run.time_ms = run.last.time_ms;
+  run.history.clear();
+  record(run);
 }
 
-void PolicyComparison::seek(ComparedRun& run, int frame) {
+void PolicyComparison::record(ComparedRun& run) const {
+  run.history.push_back(ComparedFrame::of(run.last));
+  if (int(run.history.size()) > history_frames_) run.history.pop_front();
+}
+
+void PolicyComparison::seek(ComparedRun& run, int frame) const {
   if (!run.animator) return;
   if (frame < run.animator->frame()) restart(run);
   while (run.animator->frame() < frame) {
     run.last = run.animator->advance();
     run.pixels_written += run.last.pixels_written;
     run.time_ms += run.last.time_ms;
+    record(run);
   }
 }
 

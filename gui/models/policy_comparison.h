@@ -8,9 +8,15 @@
 // affine and perspective. The runs follow the model's frame on demand (forward frame by
 // frame, backward by a restart, like the model) and restart when the model's source or
 // settings change.
+//
+// Each run also keeps its per-frame history (ComparedFrame: levels, measured error, time and
+// work) over the current pass, for the analysis view's overlays (gui/views/analysis_view.h):
+// at most kComparedHistoryFrames frames, the oldest dropped first, 56 bytes a frame.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +29,23 @@ namespace oflab {
 class AnimationModel;
 
 constexpr int kMaxComparedPolicies = 4;
+// Frames of history kept per compared run: 5.6 MB per run at most, whatever the script's
+// length (a script may have up to a million frames).
+constexpr int kComparedHistoryFrames = 100000;
+
+// What a compared policy did at one frame: the fields of its AnimationFrame that the
+// analysis view charts, without the per-layer books.
+struct ComparedFrame {
+  int frame = 0;
+  std::array<int, kLevelCount> levels{};  // drawn layers per update level
+  double max_measured_error_px = 0.0;     // largest measured error of a drawn layer, pixels
+  double time_ms = 0.0;                   // wall time of the frame, milliseconds
+  double model_work = 0.0;                // the engine's cost model (AnimationFrame::model_work)
+  std::int64_t pixels_written = 0;        // by the warp kernels
+
+  static ComparedFrame of(const AnimationFrame& record);
+  int drawn() const;  // sum of levels
+};
 
 // One compared policy: its animator and what it did, this frame and over the run so far.
 struct ComparedRun {
@@ -32,12 +55,23 @@ struct ComparedRun {
   AnimationFrame last;                 // the record of animator->frame()
   std::int64_t pixels_written = 0;     // by the warp kernels over frames 0 .. frame()
   double time_ms = 0.0;                // wall time of frames 0 .. frame()
+  // Frames of the current pass, consecutive and oldest first, ending at animator->frame():
+  // frames 0 .. frame() while they number at most the comparison's limit
+  // (kComparedHistoryFrames by default), else the last that many.
+  std::deque<ComparedFrame> history;
+
+  // The history's record of frame `frame`; nullptr when it is not kept (not played yet in
+  // this pass, or dropped).
+  const ComparedFrame* at(int frame) const;
+  // Drawn layer-frames per level over the kept frames among first .. last (inclusive).
+  std::array<std::int64_t, kLevelCount> level_totals(int first, int last) const;
 };
 
 class PolicyComparison {
  public:
-  // The model must outlive the comparison.
-  explicit PolicyComparison(AnimationModel* model);
+  // The model must outlive the comparison. Each run keeps at most `history_frames` (>= 1)
+  // frames of history.
+  explicit PolicyComparison(AnimationModel* model, int history_frames = kComparedHistoryFrames);
   ~PolicyComparison();
 
   // The policies compared, in panel order. Throws std::invalid_argument unless there are
@@ -54,10 +88,12 @@ class PolicyComparison {
 
  private:
   void build();
-  static void restart(ComparedRun& run);
-  static void seek(ComparedRun& run, int frame);
+  void restart(ComparedRun& run) const;
+  void seek(ComparedRun& run, int frame) const;
+  void record(ComparedRun& run) const;
 
   AnimationModel* model_;
+  int history_frames_;
   std::vector<const ReusePolicy*> policies_;
   std::vector<ComparedRun> runs_;
   bool stale_ = true;

@@ -12,9 +12,17 @@
 // through its own rectangle. The x axis moves only when the current frame leaves it
 // (playing on past its end, or looping back), never because of a click, so the history
 // stays still under the pointer. Painted with Qt; reads the animation model only.
+//
+// While the animation view compares policies (its comparison layout,
+// gui/models/policy_comparison.h), the charts overlay the compared policies' histories
+// instead, one line per policy in its colour (views/palette.h policy_colour) with a key:
+// the largest measured error, the frame time and the work in the cost model; then one band
+// per policy with its levels per frame, and beside the bands each policy's share of
+// layer-frames per level over the charted frames. So a class sees where each one pays.
 #pragma once
 
 #include <QRect>
+#include <functional>
 #include <vector>
 
 #include "views/view_page.h"
@@ -25,6 +33,7 @@ class QLabel;
 namespace oflab {
 
 class AnimationModel;
+class PolicyComparison;
 
 class AnalysisView : public ViewPage {
   Q_OBJECT
@@ -34,6 +43,9 @@ class AnalysisView : public ViewPage {
   // Charts: 0 frame time, 1 layers per level, 2 percent approximated, 3..6 the budgets of
   // levels none, translate, affine and perspective.
   static constexpr int kChartCount = 7;
+  // Comparing: 0 measured error, 1 frame time, 2 work, 3 levels per frame (one band per
+  // policy).
+  static constexpr int kComparisonChartCount = 4;
 
   // The model must outlive the view.
   explicit AnalysisView(AnimationModel* model, QWidget* parent = nullptr);
@@ -43,13 +55,24 @@ class AnalysisView : public ViewPage {
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
 
+  // Where the compared runs come from: called at every refresh, it returns the comparison
+  // to overlay, or nullptr to chart the model's own engine. The main window passes the
+  // animation view's comparison while its comparison layout is shown. The comparison must
+  // outlive the view, or the source must stop returning it first.
+  using ComparisonSource = std::function<PolicyComparison*()>;
+  void set_comparison_source(ComparisonSource source);
+  // True when the charts overlay compared policies (a comparison is given and plays).
+  bool comparing() const;
+  // Charts laid out now: kComparisonChartCount when comparing, else kChartCount.
+  int chart_count() const;
+
   bool whole_run() const;
   void set_whole_run(bool on);
   // The frame a click at `point` (charts widget pixels) jumps to: the frame under x in the
   // chart whose plot rectangle holds the point; -1 outside every chart.
   int frame_at(const QPoint& point) const;
-  // Plot rectangle of chart `index` (0 .. kChartCount - 1) in charts widget pixels, as last
-  // laid out for the widget's size and the theme's font.
+  // Plot rectangle of chart `index` (0 .. chart_count() - 1) in charts widget pixels, as last
+  // laid out for the widget's size and the theme's font; empty for another index.
   QRect chart_area(int index) const;
   // The x axis: frames [first, last]. The run is charted up to current_frame() <= last.
   int first_frame() const { return first_; }
@@ -58,7 +81,8 @@ class AnalysisView : public ViewPage {
   // Frames that get a labelled tick on a chart `width_px` wide, for labels of `label_px`
   // pixel font: multiples of 1, 2 or 5 x 10^k, far enough apart for their labels.
   static std::vector<int> frame_ticks(int first, int last, int width_px, int label_px);
-  // The status line: the current frame's level and error, or why its plane is not drawn.
+  // The status line: the current frame's level and error, or why its plane is not drawn;
+  // comparing, each policy's measured error at the current frame.
   QString status_text() const;
 
  protected:
@@ -69,11 +93,13 @@ class AnalysisView : public ViewPage {
   void refresh();
   void read_model();
   void follow_current_frame(int current, int loop_frames);
+  QString comparison_status() const;
 
   AnimationModel* model_;
   Charts* charts_;
   QCheckBox* whole_run_box_;
   QLabel* key_;
+  ComparisonSource comparison_source_;
   ViewTheme theme_;
   int first_ = 0;
   int last_ = 0;

@@ -40,6 +40,12 @@ Rgb8 level_colour(Level level) {
   return okabe_ito::kBlack;
 }
 
+Rgb8 policy_colour(int index) {
+  static constexpr std::array<Rgb8, 4> kBright{
+      {{68, 119, 170}, {238, 102, 119}, {34, 136, 51}, {170, 51, 119}}};
+  return kBright[size_t(((index % 4) + 4) % 4)];
+}
+
 Rgb8 order_colour(int order) {
   switch (order) {
     case 0:

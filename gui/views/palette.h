@@ -32,6 +32,11 @@ constexpr Rgb8 kReddishPurple{204, 121, 167};
 // green, perspective orange, re-render vermillion.
 Rgb8 level_colour(Level level);
 
+// The colour of the `index`-th compared policy (0 .. 3, in the comparison's panel order;
+// taken modulo 4 beyond), for its lines and legend in the analysis view: Paul Tol's
+// "bright" scheme, colour-blind safe, in the order blue, red, green, purple.
+Rgb8 policy_colour(int index);
+
 // The colour of a basis order in the gallery: 0 sky blue, 1 bluish green, 2 orange
 // (the colours of the levels that carry that order).
 Rgb8 order_colour(int order);

@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 
 namespace oflab {
 namespace {
@@ -120,6 +121,40 @@ TEST(LaunchOptions, BrokenScriptFileIsRejectedNamingTheFile) {
   std::remove(path.c_str());
   EXPECT_NE(error.find("--script"), std::string::npos);
   EXPECT_NE(error.find("oflab_broken_script"), std::string::npos);
+}
+
+TEST(LaunchOptions, ComparedPoliciesAreOneToFourDistinctNamesOfTheRegistry) {
+  const LaunchOptions o = parse_launch_options({"--compare", "talisman,perspective"});
+  ASSERT_EQ(o.compared.size(), 2u);
+  EXPECT_STREQ(o.compared[0]->name, "talisman");
+  EXPECT_STREQ(o.compared[1]->name, "perspective");
+  EXPECT_TRUE(parse_launch_options({}).compared.empty());
+  for (const char* bad : {"", "bogus", "affine,affine",
+                                 "affine,perspective,talisman,rerender,exact"}) {
+    const std::string error = usage_error({"--compare", bad});
+    EXPECT_EQ(error.rfind("--compare: ", 0), 0u) << bad << ": " << error;
+  }
+  EXPECT_NE(usage_error({"--compare", "bogus"}).find("perspective"), std::string::npos);
+}
+
+TEST(LaunchOptions, SessionFileIsReadAndABrokenOneRejectedNamingTheFileAndField) {
+  const std::string path = ::testing::TempDir() + "oflab_session_width.json";
+  std::ifstream seed(OFLAB_FUZZ_SEEDS_DIR "/session/session.json");
+  std::string text((std::istreambuf_iterator<char>(seed)), std::istreambuf_iterator<char>());
+  std::ofstream(path) << text;
+  const LaunchOptions o = parse_launch_options({"--session", path});
+  ASSERT_TRUE(o.session.has_value());
+  EXPECT_EQ(o.session->frame, 7);
+  EXPECT_EQ(o.session->script, "zoom");
+  const std::string width = "\"width\": 800";
+  const auto at = text.find(width);
+  ASSERT_NE(at, std::string::npos);
+  std::ofstream(path) << text.replace(at, width.size(), "\"width\": 1e300");
+  const std::string error = usage_error({"--session", path});
+  std::remove(path.c_str());
+  EXPECT_EQ(error.rfind("--session: oflab_session_width.json", 0), 0u) << error;
+  EXPECT_NE(error.find("'width'"), std::string::npos) << error;
+  EXPECT_EQ(usage_error({"--session", path}).rfind("--session: ", 0), 0u);  // gone
 }
 
 // The usage names every view of the view table, the scene-shifting view "slices" too.

@@ -8,8 +8,11 @@
 
 #include "engine/engine.h"
 #include "flow/geometry.h"
+#include "engine/reuse_policy.h"
 #include "models/animation_model.h"
+#include "models/policy_comparison.h"
 #include "models/scene_model.h"
+#include "views/animation_view.h"
 #include "views/frame_inspector.h"
 #include "views/palette.h"
 #include "window_fixture.h"
@@ -142,6 +145,109 @@ TEST_F(AnalysisViewTest, LevelsChartHasALegendAndEveryChartAFrameAxis) {
     const QRect axis(area.left(), area.bottom() + 2, area.width(), 20);
     const int marks = axis.width() * axis.height() - count_colour(image, axis, background);
     EXPECT_GT(marks, 30) << "no ticks or labels under chart " << chart;
+  }
+}
+
+// ---- The comparison overlaid ----
+
+class AnalysisComparisonTest : public AnalysisViewTest {
+ protected:
+  // The animation view compares `names` (its comparison layout), the analysis view in front.
+  void compare(const std::vector<std::string>& names) {
+    std::vector<const ReusePolicy*> policies;
+    for (const std::string& name : names) policies.push_back(&reuse_policy(name));
+    window().animation_view()->set_compared_policies(policies);
+    window().animation_view()->set_display(PanelDisplay::kComparison);
+    window().show_view("analysis");
+  }
+  static QColor policy_qcolor(int index) {
+    const Rgb8 c = policy_colour(index);
+    return QColor(c.r, c.g, c.b);
+  }
+};
+
+TEST(PolicyColours, FourDistinctColoursRepeatingAfterTheFourth) {
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < i; ++j) {
+      const Rgb8 a = policy_colour(i), b = policy_colour(j);
+      EXPECT_GT(std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b), 100) << i << j;
+    }
+    EXPECT_EQ(policy_colour(i + 4).r, policy_colour(i).r);
+  }
+}
+
+TEST_F(AnalysisComparisonTest, EachComparedPolicyHasItsLineKeyAndLevelBand) {
+  window().resize(1600, 1000);
+  compare({"perspective", "affine", "rerender"});
+  window().play_frames(30);
+  QApplication::processEvents();
+  ASSERT_TRUE(analysis().comparing());
+  ASSERT_EQ(analysis().chart_count(), AnalysisView::kComparisonChartCount);
+  const QImage image = analysis().render_image();
+  const int line = QFontMetrics(QFont()).height() + 40;
+  for (int i = 0; i < 3; ++i) {
+    int on_lines = 0;
+    for (int chart = 0; chart < 3; ++chart) {
+      const QRect area = analysis().chart_area(chart);
+      on_lines += count_colour(image, area, policy_qcolor(i));
+      const QRect key(area.left(), area.top() - line, area.width(), line);
+      EXPECT_GT(count_colour(image, key, policy_qcolor(i)), 20) << "no key of policy " << i;
+    }
+    EXPECT_GT(on_lines, 100) << "no line of policy " << i;
+  }
+  for (int chart = 0; chart < 3; ++chart) {  // no fourth series
+    EXPECT_EQ(count_colour(image, analysis().chart_area(chart), policy_qcolor(3)), 0) << chart;
+  }
+  // The bands, top to bottom in panel order, marked in the margin by the policy's colour;
+  // the re-render policy's band (the third) is all re-render up to the current frame.
+  const QRect bands = analysis().chart_area(3);
+  const int band = bands.height() / 3;
+  for (int i = 0; i < 3; ++i) {
+    const QRect mark(bands.left() - 10, bands.top() + i * band + 2, 6, band - 4);
+    EXPECT_GT(count_colour(image, mark, policy_qcolor(i)), mark.width() * mark.height() / 2) << i;
+  }
+  const Rgb8 r = level_colour(Level::kRerender);
+  const double played = (analysis().current_frame() - analysis().first_frame() + 1.0) /
+                        (analysis().last_frame() - analysis().first_frame() + 1.0);
+  const QRect third(bands.left() + 1, bands.top() + 2 * band + 2, bands.width() - 2, band - 4);
+  EXPECT_GT(count_colour(image, third, QColor(r.r, r.g, r.b)),
+            0.8 * played * third.width() * third.height());
+}
+
+TEST_F(AnalysisComparisonTest, WithoutTheComparisonLayoutTheModelsEngineIsCharted) {
+  compare({"perspective", "talisman"});
+  window().play_frames(10);
+  ASSERT_TRUE(analysis().comparing());
+  window().animation_view()->set_display(PanelDisplay::kSideBySide);
+  window().play_frames(1);
+  EXPECT_FALSE(analysis().comparing());
+  EXPECT_EQ(analysis().chart_count(), AnalysisView::kChartCount);
+  const QImage image = analysis().render_image();
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(count_colour(image, analysis().chart_area(0), policy_qcolor(i)), 0) << i;
+  }
+  EXPECT_TRUE(analysis().status_text().contains(QStringLiteral("layers drawn")));
+}
+
+TEST_F(AnalysisComparisonTest, ClickOnEveryChartLandsOnTheFrameUnderThePointer) {
+  window().resize(1920, 1080);
+  compare({"perspective", "affine", "talisman", "rerender"});
+  window().play_frames(40);
+  ASSERT_TRUE(analysis().comparing());
+  EXPECT_TRUE(analysis().chart_area(AnalysisView::kComparisonChartCount).isEmpty());
+  for (int chart = 0; chart < AnalysisView::kComparisonChartCount; ++chart) {
+    const QRect area = analysis().chart_area(chart);
+    ASSERT_TRUE(charts()->rect().contains(area)) << chart;
+    for (int frame : {3, 17, 38}) {
+      QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, column_centre(chart, frame));
+      EXPECT_EQ(window().model()->frame(), frame) << "chart " << chart;
+      EXPECT_TRUE(analysis().status_text().startsWith(QStringLiteral("Frame %1,").arg(frame)))
+          << analysis().status_text().toStdString();
+    }
+  }
+  // The runs followed the jumps: their histories end at the frame shown.
+  for (const ComparedRun& run : window().animation_view()->comparison().runs()) {
+    EXPECT_EQ(run.history.back().frame, 38);
   }
 }
 

@@ -1,0 +1,99 @@
+#include "child_process.h"
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "formats/datasets.h"
+
+namespace oflab::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+ChildResult run_child(const std::string& binary, const std::vector<std::string>& args,
+                      const fs::path& dir, long address_space, double limit_s) {
+  const fs::path out = dir / "child.out", err = dir / "child.err";
+  std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (address_space > 0) {
+      const rlimit limit{static_cast<rlim_t>(address_space), static_cast<rlim_t>(address_space)};
+      ::setrlimit(RLIMIT_AS, &limit);
+    }
+    ::dup2(::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
+    ::dup2(::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
+    ::execv(binary.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ChildResult r;
+  int status = 0;
+  rusage usage{};
+  while (::wait4(pid, &status, WNOHANG, &usage) == 0) {
+    const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+    if (t.count() > limit_s && !r.timed_out) {
+      r.timed_out = true;
+      ::kill(pid, SIGKILL);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.exited = WIFEXITED(status);
+  r.code = r.exited ? WEXITSTATUS(status) : -1;
+  r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  r.peak_rss_kb = usage.ru_maxrss;
+  r.out = read_text(out);
+  r.err = read_text(err);
+  return r;
+}
+
+void expect_ends_cleanly(const std::string& binary, const std::vector<std::string>& args,
+                         const fs::path& dir, const std::string& what) {
+  const ChildResult r =
+      run_child(binary, args, dir, kHostileAddressSpace, kHostileTimeLimitSeconds);
+  EXPECT_FALSE(r.timed_out) << what;
+  EXPECT_LT(r.seconds, kHostileTimeLimitSeconds) << what;
+  ASSERT_TRUE(r.exited) << what << ": signal " << r.signal << "\n" << r.err;
+  EXPECT_TRUE(r.code == 0 || r.code == 2) << what << ": exit " << r.code << "\n" << r.err;
+  if (r.code == 2) {
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << what << ": " << r.err;
+  }
+}
+
+std::vector<fs::path> write_degenerate_plane_scripts(const fs::path& dir) {
+  const nlohmann::json base = nlohmann::json::parse(std::ifstream(resolve_script_path("zoom")));
+  std::vector<nlohmann::json> scripts(4, base);
+  scripts[0]["plane"]["point"] = {0, 0, 1e-6};
+  scripts[1]["plane"]["size"] = {1e-300, 1e-300};
+  scripts[2]["camera"]["focal_px"] = 1e6;
+  scripts[3]["camera"]["focal_px"] = 1e-300;
+  std::vector<fs::path> files;
+  for (std::size_t i = 0; i < scripts.size(); ++i) {
+    files.push_back(dir / ("degenerate-" + std::to_string(i) + ".json"));
+    std::ofstream(files.back()) << scripts[i].dump();
+  }
+  return files;
+}
+
+}  // namespace oflab::testing

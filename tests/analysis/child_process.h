@@ -1,0 +1,43 @@
+// A program in a child process, where a test can see what a user sees: its exit status (a
+// signal, an abort), its wall time and its peak memory. Shared by the CLI's process tests
+// (tests/analysis/cli/cli_process_test.cpp) and the GUI's (tests/gui/app/hostile_gui_test.cpp).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace oflab::testing {
+
+// The limits for a hostile input: 2 GB of address space, 60 s of wall time.
+constexpr long kHostileAddressSpace = 2L << 30;  // bytes
+constexpr double kHostileTimeLimitSeconds = 60.0;
+
+struct ChildResult {
+  bool exited = false;  // false: killed by a signal (or by the time limit)
+  int code = -1;        // exit status when exited
+  int signal = 0;
+  bool timed_out = false;
+  double seconds = 0.0;   // wall time
+  long peak_rss_kb = 0;   // getrusage ru_maxrss of the child
+  std::string out, err;   // what it wrote
+};
+
+// Runs `binary` with `args` in a child (stdout and stderr into files of `dir`), its address
+// space limited to `address_space` bytes (0: no limit), killed after `limit_s` seconds of
+// wall time. The child inherits the environment (DISPLAY included).
+ChildResult run_child(const std::string& binary, const std::vector<std::string>& args,
+                      const std::filesystem::path& dir, long address_space, double limit_s);
+
+// Runs `binary` with `args` under the hostile-input limits and expects it to end in time
+// with exit status 0 or 2 and, on 2, a message of exactly one line; `what` names the case
+// in failures.
+void expect_ends_cleanly(const std::string& binary, const std::vector<std::string>& args,
+                         const std::filesystem::path& dir, const std::string& what);
+
+// The hand-made motion scripts that are not fuzz inputs, written into `dir` from
+// the shipped zoom script: a plane 1e-6 in front of the eye (closer than the warp can
+// take), a plane of size 1e-300, focal lengths of 1e6 and 1e-300. Returns their paths.
+std::vector<std::filesystem::path> write_degenerate_plane_scripts(const std::filesystem::path& dir);
+
+}  // namespace oflab::testing

@@ -1,0 +1,104 @@
+// The real oflab (the GUI) in a child process on every committed fuzz regression input it
+// reads, and on the degenerate planes and cameras: under a 2 GB address-space
+// limit each must end within 60 s with exit status 0 or 2 and at most a one-line message,
+// never a signal (manual/robustness.md, "Time and memory of a hostile input"). Inputs the
+// window accepts are played for a few frames in the view that reads them and captured
+// (--screenshot), so the run ends by itself; refused ones end before or right after the
+// window is made.
+//
+// What oflab reads, and so what is fed to it: motion scripts (--script), viewer scripts
+// (--scene four-cubes --script), scenes (--scene), sessions (--session) and images (as the
+// texture of a session). It reads no OBJ file and has no command line of oflab-cli's
+// commands, so the `obj` and `command-line` inputs are oflab-cli's alone
+// (cli.hostile_inputs_within_limits).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "child_process.h"
+#include "scratch_dir.h"
+
+namespace oflab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A session (the fuzz seed's) whose texture is `image`, written into `dir`.
+fs::path session_with_texture(const fs::path& image, const fs::path& dir) {
+  nlohmann::json session =
+      nlohmann::json::parse(std::ifstream(OFLAB_FUZZ_SEEDS_DIR "/session/session.json"));
+  session["texture"] = image.string();
+  const fs::path file = dir / ("texture-" + image.filename().string() + ".json");
+  std::ofstream(file) << session.dump();
+  return file;
+}
+
+// The arguments that feed a regression input of fuzz target `target` (the folder under
+// fuzz/regressions/) to oflab, before the screenshot options; empty for a target oflab
+// does not read.
+std::vector<std::string> reading(const std::string& target, const fs::path& input,
+                                 const fs::path& dir) {
+  const std::string file = input.string();
+  if (target == "motion-script") return {"--script", file, "--view", "animation"};
+  if (target == "viewer-script") {
+    return {"--scene", "four-cubes", "--script", file, "--view", "animation"};
+  }
+  if (target == "scene") return {"--scene", file, "--view", "animation"};
+  if (target == "session") return {"--session", file};
+  if (target == "image") return {"--session", session_with_texture(input, dir).string()};
+  return {};
+}
+
+// Qt warns on stderr when XDG_RUNTIME_DIR is not set (as under ctest and xvfb-run), a line
+// that is the environment's, not oflab's: the children get a private runtime directory.
+void give_children_a_runtime_dir(const fs::path& dir) {
+  const fs::path runtime = dir / "runtime";
+  fs::create_directories(runtime);
+  fs::permissions(runtime, fs::perms::owner_all, fs::perm_options::replace);
+  ::setenv("XDG_RUNTIME_DIR", runtime.c_str(), 1);
+}
+
+// oflab with `args`, playing 5 frames and saving a screenshot when the input is accepted.
+void expect_gui_ends_cleanly(std::vector<std::string> args, const fs::path& dir,
+                             const std::string& what) {
+  give_children_a_runtime_dir(dir);
+  for (const char* a : {"--screenshot", "", "--frames", "5", "--size", "640", "480"}) {
+    args.emplace_back(a);
+  }
+  args[args.size() - 6] = (dir / "shot.png").string();
+  testing::expect_ends_cleanly(OFLAB_GUI_BINARY, args, dir, what);
+}
+
+TEST(HostileGuiInputs, EveryRegressionInputOflabReadsEndsWithin60sAnd2GB) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui");
+  int run = 0;
+  for (const auto& target : fs::directory_iterator(OFLAB_FUZZ_REGRESSIONS_DIR)) {
+    for (const auto& input : fs::directory_iterator(target.path())) {
+      const auto args = reading(target.path().filename().string(), input.path(), dir);
+      if (args.empty()) continue;
+      expect_gui_ends_cleanly(args, dir, input.path().string());
+      ++run;
+    }
+  }
+  EXPECT_GE(run, 13);  // 5 motion scripts, 2 viewer scripts, 1 scene, 2 sessions, 3 images
+  fs::remove_all(dir);
+}
+
+// The single-plane engine in the animation view on a plane closer to the eye than the warp
+// can take, a plane of size 1e-300 and focal lengths of 1e6 and 1e-300.
+TEST(HostileGuiInputs, DegeneratePlanesAndCamerasEndWithin60sAnd2GB) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui-planes");
+  for (const fs::path& file : testing::write_degenerate_plane_scripts(dir)) {
+    expect_gui_ends_cleanly({"--script", file.string(), "--view", "animation"}, dir,
+                            file.filename().string());
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace oflab
