@@ -115,8 +115,8 @@ EngineSettings read_engine_settings(const CliArgs& a) {
   if (s.budget.unit != FrameBudget::Unit::kNone && !s.policy->shares_budget &&
       !a.has("--policies")) {
     throw UsageError(std::string(a.has("--budget-ms") ? "--budget-ms" : "--budget-pixels") +
-                     ": needs --mode budget (the only policy with a frame budget), not '" +
-                     mode + "'");
+                     ": needs --mode budget (the only policy with a frame budget), not '" + mode +
+                     "'");
   }
   return s;
 }

@@ -23,6 +23,7 @@ std::string animate_usage() {
       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
+  usage += "               [--budget-pixels N | --budget-ms T]   (--mode budget only)\n";
   usage +=
       "               [--repeat-timing N]   (timed passes after a warm-up, default " +
       std::to_string(kDefaultTimingRepetitions) + ")\n"
@@ -66,6 +67,8 @@ const std::vector<Command>& all_commands() {
        "oflab-cli compare --script NAME|FILE [--scene NAME|FILE] --policies P1,P2,...\n"
        "               [--texture FILE] [--threshold T | --thresholds T0 T1 T2 T3]\n"
        "               [--delta ...] [--sampling ...] [--frames N] [--repeat-timing N]\n"
+       "               [--content texture|shaded|impostor] [--quality N]\n"
+       "               [--budget-pixels N | --budget-ms T]   (with budget in the list)\n"
        "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
        "               [--json] [--out DIR [--force]] [--quiet]\n"
        "  policies: the names of 'oflab-cli policies'",

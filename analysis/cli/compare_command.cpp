@@ -67,8 +67,8 @@ void write_outputs(const std::string& dir, const SourceKind& kind,
   for (const PolicyRow& row : rows) {
     summary << row.name;
     for (double share : row.level_share) summary << ',' << 100.0 * share;
-    summary << ',' << row.work_saved << ',' << row.time_saved << ',' << row.model_work_saved
-            << ',' << row.max_measured_error_px << ',' << row.mean_measured_error_px << ','
+    summary << ',' << row.work_saved << ',' << row.time_saved << ',' << row.model_work_saved << ','
+            << row.max_measured_error_px << ',' << row.mean_measured_error_px << ','
             << row.mean_psnr_db << ',' << row.layer_frames << ',' << row.frames;
     // The budget columns are empty for policies without a frame budget (and the gap when
     // no frame was checked by exhaustive search).
@@ -126,14 +126,14 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(args, {{"--script", 1},     {"--scene", 1},      {"--policies", 1},
-                           {"--texture", 1},    {"--threshold", 1},  {"--thresholds", 4},
-                           {"--delta", 1},      {"--sampling", 1},   {"--frames", 1},
-                           {"--repeat-timing", 1}, {"--out", 1},     {"--force", 0},
-                           {"--json", 0},       {"--quiet", 0},      {"--near", 1},
-                           {"--guard-band", 1}, {"--no-skip-hidden", 0},
-                           {"--content", 1},    {"--quality", 1},    {"--budget-pixels", 1},
-                           {"--budget-ms", 1}});
+    const CliArgs a(
+        args,
+        {{"--script", 1},         {"--scene", 1},         {"--policies", 1}, {"--texture", 1},
+         {"--threshold", 1},      {"--thresholds", 4},    {"--delta", 1},    {"--sampling", 1},
+         {"--frames", 1},         {"--repeat-timing", 1}, {"--out", 1},      {"--force", 0},
+         {"--json", 0},           {"--quiet", 0},         {"--near", 1},     {"--guard-band", 1},
+         {"--no-skip-hidden", 0}, {"--content", 1},       {"--quality", 1},  {"--budget-pixels", 1},
+         {"--budget-ms", 1}});
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");

@@ -104,14 +104,15 @@ ReportTable attribution_table(const PoliciesResult& r) {
 
 ReportTable budget_table(const PoliciesResult& r) {
   ReportTable t;
-  t.caption = "The budget policy on the four cubes (compound viewer script) at three pixel "
-              "budgets per frame: frames over budget (the rule keeps none), starved "
-              "layer-frames (the rule would have spent pixels on them and got none), the mean "
-              "optimality gap of the greedy allocation against the optimum (dynamic "
-              "programming over the whole-pixel budget, core/engine/budget.h) over the frames "
-              "checked, and the quality bought";
-  t.header = {"budget px/frame", "frames over budget", "starved layer-frames",
-              "mean gap %", "frames checked", "work saved", "max error px", "mean PSNR dB"};
+  t.caption =
+      "The budget policy on the four cubes (compound viewer script) at three pixel "
+      "budgets per frame: frames over budget (the rule keeps none), starved "
+      "layer-frames (the rule would have spent pixels on them and got none), the mean "
+      "optimality gap of the greedy allocation against the optimum (dynamic "
+      "programming over the whole-pixel budget, core/engine/budget.h) over the frames "
+      "checked, and the quality bought";
+  t.header = {"budget px/frame", "frames over budget", "starved layer-frames", "mean gap %",
+              "frames checked",  "work saved",         "max error px",         "mean PSNR dB"};
   for (const BudgetRun& b : r.budgets) {
     const PolicyRow row = policy_row(b.run);
     t.rows.push_back({fixed(b.budget_pixels, 0), std::to_string(row.frames_over_budget),
@@ -182,8 +183,8 @@ PoliciesResult run_policies_experiment(const Layer& texture, const PoliciesSpec&
     if (progress) progress("four-cubes under budget, " + fixed(pixels, 0) + " px per frame");
     scene.settings.engine.budget = {FrameBudget::Unit::kPixels, pixels};
     result.budgets.push_back(
-        {pixels, run_policies(source_kind("scene"), scene, {&reuse_policy("budget")}, options)
-                     .at(0)});
+        {pixels,
+         run_policies(source_kind("scene"), scene, {&reuse_policy("budget")}, options).at(0)});
   }
   return result;
 }

@@ -118,15 +118,16 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
   out << std::left << std::setw(13) << "" << std::right;
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << "% layer-fr.";
   out << std::setw(8) << "saved %" << std::setw(8) << "saved %" << std::setw(8) << "saved %"
-      << std::setw(10) << "px" << std::setw(10) << "px" << std::setw(8) << "dB" << "\n";
+      << std::setw(10) << "px" << std::setw(10) << "px" << std::setw(8) << "dB"
+      << "\n";
   out << std::fixed;
   for (const PolicyRow& r : rows) {
     out << std::left << std::setw(13) << r.name << std::right << std::setprecision(1);
     for (double share : r.level_share) out << std::setw(12) << 100.0 * share;
     out << std::setw(8) << 100.0 * r.work_saved << std::setw(8) << 100.0 * r.time_saved
-        << std::setw(8) << 100.0 * r.model_work_saved << std::setprecision(3) << std::setw(10) << r.max_measured_error_px << std::setw(10)
-        << r.mean_measured_error_px << std::setprecision(1) << std::setw(8) << r.mean_psnr_db
-        << "\n";
+        << std::setw(8) << 100.0 * r.model_work_saved << std::setprecision(3) << std::setw(10)
+        << r.max_measured_error_px << std::setw(10) << r.mean_measured_error_px
+        << std::setprecision(1) << std::setw(8) << r.mean_psnr_db << "\n";
   }
   for (const PolicyRow& r : rows) {
     if (!r.budgeted) continue;

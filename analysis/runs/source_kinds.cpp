@@ -2,13 +2,13 @@
 
 #include <cmath>
 #include <iomanip>
-#include <sstream>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
-#include "runs/statistics.h"
 #include "engine/reuse_policy.h"
+#include "runs/statistics.h"
 #include "runs/vtk_scene_renderer.h"
 
 namespace oflab {
@@ -317,8 +317,8 @@ void print_budget(const nlohmann::json& b, std::ostream& out) {
 
 std::string optimality_gap_text(double mean_gap, long gap_frames) {
   if (!std::isfinite(mean_gap)) {
-    return "not checked (a time budget with more than " +
-           std::to_string(kExhaustiveMaxLayers) + " layers competing in every frame)";
+    return "not checked (a time budget with more than " + std::to_string(kExhaustiveMaxLayers) +
+           " layers competing in every frame)";
   }
   std::ostringstream text;
   text << std::fixed << std::setprecision(2) << 100.0 * mean_gap << "% over " << gap_frames

@@ -154,13 +154,12 @@ int competing_layers(const std::vector<BudgetLayer>& layers, double budget) {
 BudgetSolution exhaustive_allocation(const std::vector<BudgetLayer>& layers, double budget) {
   if (competing_layers(layers, budget) > kExhaustiveMaxLayers) {
     throw std::invalid_argument("exhaustive allocation: more than " +
-                                std::to_string(kExhaustiveMaxLayers) +
-                                " layers offer a choice");
+                                std::to_string(kExhaustiveMaxLayers) + " layers offer a choice");
   }
   std::vector<int> chosen(layers.size(), 0), best = chosen;
   double best_benefit = -1.0;
   std::function<void(std::size_t, double, double)> visit = [&](std::size_t l, double cost,
-                                                                double benefit) {
+                                                               double benefit) {
     if (l == layers.size()) {
       if (benefit > best_benefit) {
         best_benefit = benefit;
@@ -227,7 +226,9 @@ namespace {
 // A layer's options for the allocator (kNotShown: the single free option of nothing).
 BudgetLayer budget_layer(const LayerCandidates& c, const FrameBudget& budget,
                          const LevelRates& rates) {
-  const auto cost = [&](Level l) { return budget_cost(budget, rates, l, c.pixels[static_cast<int>(l)]); };
+  const auto cost = [&](Level l) {
+    return budget_cost(budget, rates, l, c.pixels[static_cast<int>(l)]);
+  };
   if (c.kind == LayerCandidates::Kind::kNotShown) return {{Level::kRerender, 0.0, 0.0, false}};
   if (c.kind == LayerCandidates::Kind::kFresh) {
     return {{Level::kRerender, 0.0, 0.0, false},
@@ -280,20 +281,21 @@ FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& bud
     best = exhaustive_allocation(options, budget.amount).benefit;
   }
   if (!std::isnan(best)) a.optimality_gap = optimality_gap(best, greedy.benefit);
-  a.check_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                   .count();
+  a.check_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return a;
 }
 
-BudgetLedger::BudgetLedger(const ReusePolicy& policy, const FrameBudget& budget,
-                           int camera_width, int camera_height)
+BudgetLedger::BudgetLedger(const ReusePolicy& policy, const FrameBudget& budget, int camera_width,
+                           int camera_height)
     : policy_(&policy), budget_(budget_or_default(budget, camera_width, camera_height)) {}
 
 FrameAllocation BudgetLedger::allocate(int frame, const std::vector<LayerCandidates>& layers) {
   frame_ = BudgetReport{};
   updates_.clear();
   const bool active = policy_->shares_budget && frame > 0;
-  const FrameAllocation a = allocate_frame(*policy_, active ? budget_ : FrameBudget{}, rates_, layers);
+  const FrameAllocation a =
+      allocate_frame(*policy_, active ? budget_ : FrameBudget{}, rates_, layers);
   if (active) {
     frame_.active = true;
     frame_.amount = budget_.amount;

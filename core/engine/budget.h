@@ -148,8 +148,7 @@ struct FrameAllocation {
   double check_ms = 0.0;
 };
 FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& budget,
-                               const LevelRates& rates,
-                               const std::vector<LayerCandidates>& layers);
+                               const LevelRates& rates, const std::vector<LayerCandidates>& layers);
 
 // The cost of writing `pixels` at `level` in `budget`'s unit: the pixels themselves, or
 // pixels x rates.ms_per_pixel(level) for a time budget.

@@ -159,8 +159,7 @@ LayerCandidates PlaneAnimator::measure_start(const PlanePose& pose) {
   return measured_.candidates;
 }
 
-LayerCandidates PlaneAnimator::measure_advance(const PlanePose& previous,
-                                               const RigidMotion& motion,
+LayerCandidates PlaneAnimator::measure_advance(const PlanePose& previous, const RigidMotion& motion,
                                                const PlanePose& current) {
   measure(false, &previous, &motion, current);
   return measured_.candidates;
@@ -643,8 +642,8 @@ void PlaneAnimator::measure_choice() {
   Measured& m = measured_;
   const std::vector<Vec2> corners = displayed_corners_centred();
   m.measures = measure_flow(camera_, m.previous, m.motion, corners);
-  const PlanarFlowCoefficients flow = reexpand(
-      planar_flow_coefficients(camera_, m.previous, m.motion), m.measures.expansion_point);
+  const PlanarFlowCoefficients flow =
+      reexpand(planar_flow_coefficients(camera_, m.previous, m.motion), m.measures.expansion_point);
   m.flow = m.measures.flow;
   if (policy().books == FlowBooks::kPrinted) {
     m.flow = measure_printed_flow(camera_, m.previous, m.motion, corners);
@@ -668,8 +667,8 @@ void PlaneAnimator::measure_choice() {
   LayerCandidates& c = m.candidates;
   c.kind = LayerCandidates::Kind::kChoice;
   c.pixels = level_pixels();
-  c.choice = policy().choose(policy(), {m.flow, m.carried, settings_.thresholds, c.pixels,
-                                        m.pending, m.fit});
+  c.choice = policy().choose(policy(),
+                             {m.flow, m.carried, settings_.thresholds, c.pixels, m.pending, m.fit});
   c.feasible = policy().allowed;
   for (int l = 0; l < kTermCount; ++l) {
     c.error[l] = std::max(neglected_error(m.carried, m.flow, static_cast<Level>(l)), m.pending[l]);
@@ -682,9 +681,8 @@ void PlaneAnimator::measure_level_costs(const Mat3& correction, const Vec2& poin
   // the levels the sampling limit would refuse, as apply_affine and apply_perspective do.
   LayerCandidates& c = measured_.candidates;
   const ConvexPolygon& cache_polygon = cache_.valid ? cache_.layer.polygon : display_.layer.polygon;
-  const Mat3 cache_to_display = cache_.valid ? cache_.to_display
-                                             : translation_matrix(display_.offset_x,
-                                                                  display_.offset_y);
+  const Mat3 cache_to_display =
+      cache_.valid ? cache_.to_display : translation_matrix(display_.offset_x, display_.offset_y);
   const Mat3 affine = affine_part_at(correction, point) * cache_to_display;
   const int a = static_cast<int>(Level::kAffine), p = static_cast<int>(Level::kPerspective);
   c.feasible[a] = c.feasible[a] && largest_singular_value(affine) <= settings_.max_magnification;
@@ -692,7 +690,8 @@ void PlaneAnimator::measure_level_costs(const Mat3& correction, const Vec2& poin
   const Vec2 centre = 0.5 * texel_corners(texture_)[2];
   const AffinePerspectiveSplit split = split_affine_perspective(
       measured_.model * translation_matrix(centre.x, centre.y), settings_.delta);
-  c.feasible[p] = c.feasible[p] && largest_singular_value(split.affine) <= settings_.max_magnification;
+  c.feasible[p] =
+      c.feasible[p] && largest_singular_value(split.affine) <= settings_.max_magnification;
   const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
   c.pixels[p] = box_pixels(transform(texture_.polygon, texel_to_cache)) +
                 box_pixels(transform(texture_.polygon, measured_.model));

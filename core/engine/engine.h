@@ -252,8 +252,7 @@ class PlaneAnimator {
                   FitFiducials& fit) const;
   Mat3 target_warp(const PlanePose& pose) const;
   Vec2 translation_step(const Mat3& correction, const Vec2& point) const;
-  Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point,
-                  const Mat3& model) const;
+  Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point, const Mat3& model) const;
   void apply_level(FrameReport& report, const Vec2& expansion_point, const PlanePose& current);
   void rerender(const PlanePose& pose, FrameReport& report);
   // rerender of a lit content: renders it for the pose (kept as the perspective level's

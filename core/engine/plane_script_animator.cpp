@@ -38,7 +38,8 @@ class PlaneScriptAnimator final : public Animator {
   AnimationFrame advance() override {
     const ScriptFrame& previous = script_frame(frame_);
     ++frame_;
-    return play(engine_->measure_advance(previous.pose, previous.motion, script_frame(frame_).pose));
+    return play(
+        engine_->measure_advance(previous.pose, previous.motion, script_frame(frame_).pose));
   }
 
   const Image& image() const override {

@@ -54,13 +54,13 @@ const std::vector<ReusePolicy>& reuse_policies() {
       {"rerender", "the baseline: no reuse, every frame rendered exactly", InitialView::kExact,
        ModelUpdate::kExact, kOnlyRerender, always_rerender},
       {"dissertation", "Algorithm 1 as printed: per-term cascade, bounding-box size, |Omega|^2",
-       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, printed_choice,
-       FlowBooks::kPrinted, false},
+       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, printed_choice, FlowBooks::kPrinted,
+       false},
       {"talisman", "Lengyel & Snyder 97: least-squares affine warp of the layer, fiducials",
        InitialView::kExact, ModelUpdate::kAffineFit, kAffineOnly, talisman_choice},
       {"budget", "section 7.5.2: a per-frame pixel or time budget allocated over the layers",
-       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice,
-       FlowBooks::kCorners, false, true},
+       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice, FlowBooks::kCorners,
+       false, true},
   };
   return policies;
 }

@@ -305,8 +305,8 @@ void SceneAnimator::measure_polygons(const ViewerPose* previous, const RigidMoti
     PlaneAnimator& animator = polygon_animator(index);
     const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
     s.candidates = s.live && previous && motion
-                       ? animator.measure_advance(
-                             polygon_pose(polygon, *previous, s.texture_size), *motion, pose)
+                       ? animator.measure_advance(polygon_pose(polygon, *previous, s.texture_size),
+                                                  *motion, pose)
                        : animator.measure_start(pose);
   }
   report.update_ms += ms_since(t0);

@@ -4,8 +4,8 @@
 // affine/perspective switch; with the budget policy, a spin box of its pixel budget per
 // frame), the per-level thresholds, the Delta
 // policy, the sampling, how the two panels are shown, and the policies the comparison
-// layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only edits values; the view
-// applies them and puts them back when it refuses them.
+// layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only edits values;
+// the view applies them and puts them back when it refuses them.
 #pragma once
 
 #include <QWidget>

@@ -55,17 +55,17 @@ TEST(BudgetPolicy, TheStreetNeverExceedsTheBudgetAfterTheFirstFrame) {
 }
 
 TEST(BudgetCommand, AnimateAndCompareReportTheBudgetFigures) {
-  const CliResult a = run({"animate", "--scene", "four-cubes", "--script", "compound", "--mode",
-                           "budget", "--budget-pixels", "8000", "--frames", "30",
-                           "--repeat-timing", "1", "--json"});
+  const CliResult a =
+      run({"animate", "--scene", "four-cubes", "--script", "compound", "--mode", "budget",
+           "--budget-pixels", "8000", "--frames", "30", "--repeat-timing", "1", "--json"});
   ASSERT_EQ(a.code, 0) << a.err;
   const auto j = nlohmann::json::parse(a.out);
   ASSERT_TRUE(j.contains("budget")) << a.out;
   EXPECT_EQ(j["budget"]["frames"], 29);
   EXPECT_EQ(j["budget"]["frames_over_budget"], 0);
-  const CliResult c = run({"compare", "--scene", "four-cubes", "--script", "compound",
-                           "--policies", "perspective,budget", "--budget-pixels", "8000",
-                           "--frames", "30", "--repeat-timing", "1", "--json"});
+  const CliResult c = run({"compare", "--scene", "four-cubes", "--script", "compound", "--policies",
+                           "perspective,budget", "--budget-pixels", "8000", "--frames", "30",
+                           "--repeat-timing", "1", "--json"});
   ASSERT_EQ(c.code, 0) << c.err;
   const auto rows = nlohmann::json::parse(c.out).at("policies");
   EXPECT_FALSE(rows[0].contains("budget"));
@@ -97,8 +97,7 @@ TEST(BudgetCommand, BadBudgetOptionsAreOneLineErrorsWithExitCodeTwo) {
                "--budget-pixels: '-5' is outside 0..");
   expect_error(with({"--mode", "budget", "--budget-ms", "-0.5"}), "--budget-ms: '-0.5' is outside");
   expect_error(with({"--mode", "budget", "--budget-ms", "x"}), "--budget-ms: 'x' is not");
-  expect_error(with({"--mode", "budget", "--budget-pixels", "10", "--budget-ms", "2"}),
-               "not both");
+  expect_error(with({"--mode", "budget", "--budget-pixels", "10", "--budget-ms", "2"}), "not both");
   expect_error(with({"--budget-pixels", "1000"}), "--budget-pixels: needs --mode budget");
   expect_error(with({"--mode", "affine", "--budget-ms", "3"}), "--budget-ms: needs --mode budget");
   expect_error({"compare", "--script", "rotation", "--policies", "perspective,talisman",

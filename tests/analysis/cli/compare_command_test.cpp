@@ -110,9 +110,9 @@ TEST(CompareCommand, JsonRowsAgreeWithAnimateRunAlone) {
 // The seam with layer contents: compare takes --content and --quality as animate does, and
 // its model_work_saved is animate's for the same policy and content.
 TEST(CompareCommand, ContentAndQualityReachEveryPolicyAndModelWorkMatchesAnimate) {
-  const std::vector<std::string> common = {"--script", "rotation", "--content", "shaded",
-                                           "--quality", "2", "--frames", "12",
-                                           "--repeat-timing", "1", "--json"};
+  const std::vector<std::string> common = {"--script",        "rotation", "--content", "shaded",
+                                           "--quality",       "2",        "--frames",  "12",
+                                           "--repeat-timing", "1",        "--json"};
   std::vector<std::string> compare = {"compare", "--policies", "perspective,rerender"};
   compare.insert(compare.end(), common.begin(), common.end());
   const CliResult r = run(compare);
@@ -128,8 +128,7 @@ TEST(CompareCommand, ContentAndQualityReachEveryPolicyAndModelWorkMatchesAnimate
     const CliResult alone = run(animate);
     ASSERT_EQ(alone.code, 0) << alone.err;
     const auto a = nlohmann::json::parse(alone.out);
-    EXPECT_DOUBLE_EQ(rows[i]["model_work_saved"].get<double>(),
-                     a["model_work_saved"].get<double>())
+    EXPECT_DOUBLE_EQ(rows[i]["model_work_saved"].get<double>(), a["model_work_saved"].get<double>())
         << rows[i]["name"];
   }
   // The content reached the runs: a shaded re-render costs more than the texture's, so the

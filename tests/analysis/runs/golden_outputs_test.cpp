@@ -104,6 +104,10 @@ std::vector<GoldenCase> golden_cases() {
     }
   }
   cases.push_back({"four-cubes-compound", {"--scene", "four-cubes", "--script", "compound"}});
+  // The budget policy's allocation is deterministic with a pixel budget.
+  cases.push_back({"four-cubes-budget",
+                   {"--scene", "four-cubes", "--script", "compound", "--mode", "budget",
+                    "--budget-pixels", "12000"}});
   cases.push_back({"train-window-scene-shifting",
                    {"--scene", "train-window", "--script", "train-sideways", "--mode",
                     "scene-shifting"}});

@@ -116,7 +116,8 @@ TEST(BudgetAllocation, DynamicProgrammingFindsTheExhaustiveOptimumForWholeCosts)
     std::vector<BudgetLayer> layers;
     for (int l = 0; l < 1 + trial % kExhaustiveMaxLayers; ++l) {
       std::vector<std::pair<double, double>> options = {{0.0, 0.0}};
-      for (int o = extra(rng); o > 0; --o) options.push_back({double(cost(rng)), double(benefit(rng))});
+      for (int o = extra(rng); o > 0; --o)
+        options.push_back({double(cost(rng)), double(benefit(rng))});
       layers.push_back(layer(options));
     }
     const double budget = double(cost(rng) * 2);
@@ -130,8 +131,8 @@ TEST(BudgetAllocation, DynamicProgrammingFindsTheExhaustiveOptimumForWholeCosts)
   EXPECT_TRUE(std::isnan(optimal_benefit({layer({{0, 0}, {0.5, 1}})}, 10.0)));
   // More layers than exhaustive search takes: the frame's gap is still checked.
   const std::vector<LayerCandidates> many(12, choice(Level::kAffine, 1000, 3.0));
-  const FrameAllocation a = allocate_frame(reuse_policy("budget"),
-                                           {FrameBudget::Unit::kPixels, 4500.0}, LevelRates(), many);
+  const FrameAllocation a = allocate_frame(
+      reuse_policy("budget"), {FrameBudget::Unit::kPixels, 4500.0}, LevelRates(), many);
   EXPECT_DOUBLE_EQ(a.optimality_gap, 0.0);
 }
 
@@ -171,8 +172,7 @@ TEST(BudgetAllocation, StarvedLayersAreThoseTheRuleWouldSpendPixelsOnThatGetNone
   a = allocate_frame(budget, {FrameBudget::Unit::kPixels, 1500.0}, rates, layers);
   EXPECT_EQ(a.starved, (std::vector<char>{0, 0, 0, 0}));
   // Other policies take each layer's own choice and starve nobody.
-  a = allocate_frame(reuse_policy("perspective"), {FrameBudget::Unit::kPixels, 0.0}, rates,
-                     layers);
+  a = allocate_frame(reuse_policy("perspective"), {FrameBudget::Unit::kPixels, 0.0}, rates, layers);
   EXPECT_EQ(a.levels[0], Level::kAffine);
   EXPECT_EQ(a.starved, (std::vector<char>{0, 0, 0, 0}));
 }
@@ -180,7 +180,7 @@ TEST(BudgetAllocation, StarvedLayersAreThoseTheRuleWouldSpendPixelsOnThatGetNone
 TEST(BudgetAllocation, MillisecondBudgetsUseTheMeasuredRatePerLevel) {
   LevelRates rates;
   EXPECT_DOUBLE_EQ(rates.ms_per_pixel(Level::kAffine), 0.0);
-  rates.record(Level::kRerender, 2.0, 1000);  // 2 us per pixel
+  rates.record(Level::kRerender, 2.0, 1000);                    // 2 us per pixel
   EXPECT_DOUBLE_EQ(rates.ms_per_pixel(Level::kAffine), 0.002);  // not seen yet: re-render's
   rates.record(Level::kAffine, 0.5, 1000);
   rates.record(Level::kAffine, 0.5, 1000);
