@@ -31,7 +31,7 @@ cmake --build build-sanitize -j"$(nproc 2>/dev/null || echo 2)"
 # The analysis tests draw charts and render with VTK, so they run under the virtual screen.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   xvfb-run -a -s "-screen 0 1600x1000x24" \
-  ctest --test-dir build-sanitize --output-on-failure --timeout 900 -LE 'soak|address-space-limit'
+  ctest --test-dir build-sanitize --output-on-failure --timeout 1200 -LE 'soak|address-space-limit'
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
   -DCMAKE_CXX_COMPILER=clang++ -DOFLAB_FUZZ=ON -DOFLAB_BUILD_TESTS=OFF \
