@@ -19,7 +19,17 @@ std::string chart_display_problem() {
 
 void* shared_x_display() {
   struct Closer {
-    void operator()(Display* d) const { XCloseDisplay(d); }
+    void operator()(Display* d) const {
+#ifndef __SANITIZE_ADDRESS__
+      XCloseDisplay(d);
+#else
+      // Under AddressSanitizer the connection stays open at exit (the system closes it):
+      // closing it unloads Mesa's software driver (swrast_dri.so), and two blocks of 56
+      // bytes the driver still holds then count as leaked, against no library (found with a
+      // calloc wrapper printing glibc backtraces). Left loaded, they stay reachable.
+      static_cast<void>(d);
+#endif
+    }
   };
   static std::unique_ptr<Display, Closer> display;
   if (display) return display.get();

@@ -43,6 +43,7 @@ struct ComparedFrame {
   double model_work = 0.0;                // the engine's cost model (AnimationFrame::model_work)
   std::int64_t pixels_written = 0;        // by the warp kernels
 
+  // The charted fields of `record`, copied as they are (same units).
   static ComparedFrame of(const AnimationFrame& record);
   int drawn() const;  // sum of levels
 };

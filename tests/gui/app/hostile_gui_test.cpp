@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "child_process.h"
-#include "scratch_dir.h"
+#include "../../analysis/child_process.h"
+#include "../../analysis/scratch_dir.h"
 
 namespace oflab {
 namespace {
