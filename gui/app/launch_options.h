@@ -1,5 +1,6 @@
 // The command line of oflab:
 //   oflab [--lesson NAME] [--scene S] [--script T] [--source KIND] [--mode M] [--view NAME]
+//         [--animation-show LAYOUT] [--animation-exact RENDERER]
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
 //         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation] [--help]
 // Plain C++ over analysis/cli/cli_args.h, so it is checked before any window opens and bad
@@ -48,6 +49,9 @@ struct LaunchOptions {
   const ReusePolicy* mode = nullptr;
   // --animation-show side-by-side|difference|blink|comparison: how the animation view shows its panels.
   std::string animation_show;
+  // --animation-exact NAME: who draws the animation view's exact panel, an entry of
+  // gui/adapters/exact_frames.h exact_renderers() ("core" or "vtk"); empty when not given.
+  std::string animation_exact;
   bool presentation = false;  // start in presentation mode
   bool help = false;          // --help: print the usage and exit 0
 };
@@ -62,7 +66,7 @@ const std::vector<std::string>& screenshot_view_names();
 // count, a non-positive benchmark count, a script that is neither a file nor a shipped name
 // or that analysis/formats/script_file.h rejects (the message names the file and field), a scene
 // or viewer script that is neither a file nor a shipped name or that its reader rejects,
-// an unknown --mode, and a --source that is not a kind with a viewer script or comes
+// an unknown --mode or --animation-exact, and a --source that is not a kind with a viewer script or comes
 // without --scene.
 LaunchOptions parse_launch_options(const std::vector<std::string>& args);
 

@@ -2,8 +2,9 @@
 // render, the session round-trips through its JSON file, and bad input changes nothing.
 //
 // Agreement in re-render mode. Both panels then show the exact projection: the engine's
-// from core's perspective warp, the other from VTK's textured polygons, both with nearest
-// texel sampling. Their alpha masks must overlap with IoU >= 0.95 (edges may differ by a
+// from core's perspective warp, the other, with the exact panel set to VTK
+// (gui/adapters/exact_frames.h), from VTK's textured polygons, both with nearest texel
+// sampling. Their alpha masks must overlap with IoU >= 0.95 (edges may differ by a
 // pixel), and over the pixels both cover the PSNR must be >= kRerenderPsnrDb: texel
 // choices at pixel-centre ties differ between the two rasterisers, which on the
 // high-contrast butterfly costs a few dB, while a wrong camera, mirrored texture or shifted
@@ -19,6 +20,7 @@
 #include "models/animation_model.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
+#include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "formats/session_file.h"
 #include "views/palette.h"
@@ -160,6 +162,7 @@ TEST_F(AnimationViewTest, AnalysisViewRendersCharts) {
 
 TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
   window().show_view("animation");
+  animation().set_exact_renderer(*find_exact_renderer("vtk"));
   set_mode("rerender");
   window().play_frames(8);
   expect_panels_agree("rerender-plane");
@@ -167,6 +170,7 @@ TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
 
 TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
   window().show_view("animation");
+  animation().set_exact_renderer(*find_exact_renderer("vtk"));
   set_mode("rerender");
   ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
   window().play_frames(8);
