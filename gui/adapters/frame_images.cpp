@@ -115,10 +115,14 @@ void difference_map_into(const Image& a, const Image& b, int full_scale, QImage&
   for (int y = 0; y < a.height(); ++y) {
     const auto* pa = reinterpret_cast<const std::uint8_t*>(a.row(y));
     const auto* pb = reinterpret_cast<const std::uint8_t*>(b.row(y));
+    auto* line = reinterpret_cast<QRgb*>(out.scanLine(y));
+    if (std::memcmp(pa, pb, channels.size()) == 0) {  // most rows miss the plane in both
+      std::fill(line, line + a.width(), colours[0]);
+      continue;
+    }
     for (size_t i = 0; i < channels.size(); ++i) {
       channels[i] = std::uint8_t(pa[i] > pb[i] ? pa[i] - pb[i] : pb[i] - pa[i]);
     }
-    auto* line = reinterpret_cast<QRgb*>(out.scanLine(y));
     for (int x = 0; x < a.width(); ++x) {
       const std::uint8_t* c = &channels[size_t(x) * 4];
       line[x] = colours[std::max(std::max(c[0], c[1]), std::max(c[2], c[3]))];

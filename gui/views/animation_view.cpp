@@ -163,6 +163,8 @@ QWidget* AnimationView::make_panels() {
   auto* bottom = new QHBoxLayout;
   readout_ = new QLabel(tr("Move the mouse over the frames for a readout."), box);
   readout_->setObjectName(QStringLiteral("pixel_readout"));
+  // The readout gives way to the controls beside it: it never sets the window's width.
+  readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   zoom_box_ = new QDoubleSpinBox(box);
   zoom_box_->setObjectName(QStringLiteral("animation_zoom"));
   zoom_box_->setRange(kMinZoom, kMaxZoom);

@@ -49,6 +49,7 @@ class SlicesView : public ViewPage {
   QImage render_image() override;
   void step_animation() override;
   void set_theme(const ViewTheme& theme) override;
+  bool plays_own_scene() const override { return true; }
   double smallest_text_px() const override;
   QString scene_panel_note() const override;
 
