@@ -4,10 +4,10 @@
 // drawn in the exact panel as the engine's re-render draws it.
 //
 // Agreement of the two renderers. Both sample the nearest texel at pixel centres but round
-// edges and texel boundaries differently, so the comparison is the animation view tests':
-// alpha masks (silhouettes) overlap with IoU >= kSilhouetteIou, and over the pixels both
-// cover the PSNR is >= kPsnrDb. The negative control shows the measure fails for frames
-// that are not the same (the plane a few frames apart).
+// edges and texel boundaries differently: alpha masks (silhouettes) overlap with IoU >=
+// kExactAgreementIou, and over the pixels both cover the PSNR is >= kExactAgreementPsnrDb
+// (tests/gui/image_checks.h, where the choice is explained). The negative control shows
+// the measure fails for frames that are not the same (the plane a few frames apart).
 #include <QComboBox>
 #include <QTemporaryDir>
 #include <fstream>
@@ -27,14 +27,8 @@
 namespace oflab::test {
 namespace {
 
-constexpr double kSilhouetteIou = 0.95;
-constexpr double kPsnrDb = 18.0;
-
-class ExactFramesTest : public WindowTest {
+class ExactFramesTest : public AnimationWindowTest {
  protected:
-  AnimationView& animation() { return *window().animation_view(); }
-  AnimationModel& model() { return *window().animation_model(); }
-
   // The current frame drawn by the renderer named `name`.
   Image exact_frame(const std::string& name) {
     const Animator& a = *model().animator();
@@ -45,17 +39,15 @@ class ExactFramesTest : public WindowTest {
   void expect_renderers_agree(const std::string& what) {
     const Image core = exact_frame("core"), vtk = exact_frame("vtk");
     ASSERT_EQ(core.width(), vtk.width());
-    const FrameAgreement a = frame_agreement(core, vtk);
-    if (a.mask_iou < kSilhouetteIou || a.psnr_db < kPsnrDb) {
-      flatten_image(core, Qt::black).save(output_dir() + "/" + QString::fromStdString(what) + "-core.png");
-      flatten_image(vtk, Qt::black).save(output_dir() + "/" + QString::fromStdString(what) + "-vtk.png");
-    }
+    const FrameAgreement a =
+        agreement_writing_failures(core, vtk, kExactAgreementIou, kExactAgreementPsnrDb,
+                                   QString::fromStdString(what), "core", "vtk");
     EXPECT_GT(std::count_if(core.pixels().begin(), core.pixels().end(),
                             [](const Pixel& p) { return p.a != 0; }),
               1000)
         << what;
-    EXPECT_GE(a.mask_iou, kSilhouetteIou) << what;
-    EXPECT_GE(a.psnr_db, kPsnrDb) << what;
+    EXPECT_GE(a.mask_iou, kExactAgreementIou) << what;
+    EXPECT_GE(a.psnr_db, kExactAgreementPsnrDb) << what;
   }
 };
 
@@ -82,7 +74,7 @@ TEST_F(ExactFramesTest, TheAgreementMeasureFailsForDifferentFrames) {
   const Image vtk = exact_frame("vtk");
   window().model()->set_frame(16);
   const FrameAgreement a = frame_agreement(exact_frame("core"), vtk);
-  EXPECT_TRUE(a.mask_iou < kSilhouetteIou || a.psnr_db < kPsnrDb);
+  EXPECT_TRUE(a.mask_iou < kExactAgreementIou || a.psnr_db < kExactAgreementPsnrDb);
 }
 
 TEST_F(ExactFramesTest, TheViewDrawsCoresExactFrameByDefaultAndVtksWhenChosen) {
