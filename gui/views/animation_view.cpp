@@ -175,17 +175,9 @@ QWidget* AnimationView::make_panels() {
                            "over the panels)"));
   auto* fit = new QPushButton(tr("Fit"), box);
   fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
-  exact_box_ = new QComboBox(box);
-  exact_box_->setObjectName(QStringLiteral("exact_renderer"));
-  for (const ExactRendererKind& kind : exact_renderers()) {
-    exact_box_->addItem(QString::fromStdString(kind.label));
-  }
-  exact_box_->setToolTip(tr("Who draws the exact panel: core's exact warp of the scene (the "
-                            "engine's own re-render, with its content) or VTK's OpenGL "
-                            "pipeline, an independent renderer that draws textures only"));
   bottom->addWidget(readout_, 1);
   bottom->addWidget(new QLabel(tr("Exact"), box));
-  bottom->addWidget(exact_box_);
+  bottom->addWidget(make_exact_box(box));
   bottom->addWidget(new QLabel(tr("Zoom"), box));
   bottom->addWidget(zoom_box_);
   bottom->addWidget(fit);
@@ -197,9 +189,21 @@ QWidget* AnimationView::make_panels() {
   connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
           [this](double zoom) { set_zoom(zoom); });
   connect(fit, &QPushButton::clicked, this, [this] { set_zoom(1.0); });
+  return box;
+}
+
+QComboBox* AnimationView::make_exact_box(QWidget* parent) {
+  exact_box_ = new QComboBox(parent);
+  exact_box_->setObjectName(QStringLiteral("exact_renderer"));
+  for (const ExactRendererKind& kind : exact_renderers()) {
+    exact_box_->addItem(QString::fromStdString(kind.label));
+  }
+  exact_box_->setToolTip(tr("Who draws the exact panel: core's exact warp of the scene (the "
+                            "engine's own re-render, with its content) or VTK's OpenGL "
+                            "pipeline, an independent renderer that draws textures only"));
   connect(exact_box_, QOverload<int>::of(&QComboBox::activated), this,
           [this](int index) { set_exact_renderer(exact_renderers().at(size_t(index))); });
-  return box;
+  return exact_box_;
 }
 
 void AnimationView::set_zoom(double zoom) {

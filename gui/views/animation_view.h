@@ -114,6 +114,7 @@ class AnimationView : public ViewPage {
 
  private:
   QWidget* make_panels();
+  QComboBox* make_exact_box(QWidget* parent);  // the Exact picker, wired to set_exact_renderer
   void show_model_state();
   QImage compose(const QSize& size);
   std::vector<PanelContent> panels();

@@ -8,20 +8,21 @@
 // kExactAgreementIou, and over the pixels both cover the PSNR is >= kExactAgreementPsnrDb
 // (tests/gui/image_checks.h, where the choice is explained). The negative control shows
 // the measure fails for frames that are not the same (the plane a few frames apart).
+#include "adapters/exact_frames.h"
+
 #include <QComboBox>
 #include <QTemporaryDir>
 #include <fstream>
 
-#include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "app/launch_options.h"
 #include "formats/session_file.h"
 #include "image/image_compare.h"
+#include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "runs/vtk_scene_renderer.h"
 #include "views/animation_view.h"
-#include "image_checks.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
