@@ -125,7 +125,8 @@ std::string session_to_json(const Session& s) {
                                   s.settings.thresholds[2], s.settings.thresholds[3]})},
       {"delta", delta_policy_name(s.settings.delta)},
       {"sampling", sampling_name(s.settings.sampling)},
-      {"display", s.display}};
+      {"display", s.display},
+      {"exact_renderer", s.exact_renderer}};
   j["frame"] = s.frame;
   j["view"] = s.view;
   json draw = json::array();
@@ -155,6 +156,9 @@ Session parse_session(const std::string& json_text, const std::string& origin) {
   s.viewer_script = text(source, in_source, "viewer");
   s.settings = read_settings(animation, in_animation);
   s.display = text(animation, in_animation, "display");
+  if (animation.contains("exact_renderer")) {  // a renderer's name, checked when applied
+    s.exact_renderer = text(animation, in_animation, "exact_renderer");
+  }
   const double frame = number_field(root, top, "frame");
   if (frame < 0 || frame != std::floor(frame)) top.fail("frame", "must be a whole number >= 0");
   s.frame = int(frame);

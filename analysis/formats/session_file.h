@@ -1,6 +1,6 @@
 // Saving and loading the whole session of the window as JSON ("oflab-session", version 1):
 // the plane scene (camera, pose, motion), the motion script, the texture file, the
-// animation view's source, engine settings and display, the frame and the view in front,
+// animation view's source, engine settings, display and exact renderer, the frame and the view in front,
 // and the window's state (flow view options, basis, presentation mode, lesson, play rate).
 // A file format like the scripts and scenes, read with formats/json_fields.h; the GUI
 // captures and applies sessions (gui/app/session_io.h).
@@ -32,6 +32,9 @@ struct Session {
   std::string viewer_script;  // kinds with a viewer script only
   EngineSettings settings;
   std::string display = "side-by-side";  // gui/views/animation_controls.h panel_display_name
+  // Who draws the animation view's exact panel, by name in gui/adapters/exact_frames.h
+  // ("animation.exact_renderer"; files without it get the default, core's exact render).
+  std::string exact_renderer = "core";
   int frame = 0;
   std::string view = "flow";
   // What the window shows beyond the scene ("window" object; files without it get these

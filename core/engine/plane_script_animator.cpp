@@ -22,7 +22,10 @@ class PlaneScriptAnimator final : public Animator {
         texture_(make_layer(texture)),
         settings_(settings),
         scene_(plane_as_scene(script.frames.at(0).pose, texture)),
-        image_(script.camera.width, script.camera.height) {}
+        image_(script.camera.width, script.camera.height) {
+    // The polygon draws what the engine's re-renders draw (a lit content, or the texture).
+    scene_.polygons.front().content = settings.content.kind;
+  }
 
   int frame_count() const override { return static_cast<int>(script_.frames.size()) * repeat_; }
   int frame() const override { return frame_; }

@@ -193,11 +193,18 @@ void SceneShiftingRenderer::build(int slice, const ViewerPose& view,
   s.origin_x = bx0;
   s.origin_y = by0;
   Image image(bx1 - bx0, by1 - by0);
+  WarpOptions options;
+  options.sampling = settings_.sampling;
+  if (drawn.size() == 1) {  // over a transparent image a warp is its own composite
+    report.pixels_written +=
+        warp_layer_into(textures_[drawn[0].polygon], drawn[0].warp, image, bx0, by0, options)
+            .pixels_written;
+    s.layer = make_layer(std::move(image));
+    return;
+  }
   if (scratch_.image.width() != image.width() || scratch_.image.height() != image.height()) {
     scratch_ = make_layer(Image(image.width(), image.height()));
   }
-  WarpOptions options;
-  options.sampling = settings_.sampling;
   for (const Drawn& d : drawn) {
     scratch_.image.fill(Pixel{});
     const WarpStats stats =

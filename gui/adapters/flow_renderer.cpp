@@ -2,6 +2,7 @@
 
 #include <QFontMetricsF>
 #include <QPainter>
+#include <QPainterPath>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -63,6 +64,21 @@ double magnitude_top(const ViewTheme& theme) { return theme.presentation ? 0.8 :
 
 QPointF qpoint(const Vec2& p) { return QPointF(p.x, p.y); }
 
+// Gives every NaN cell of the nx x ny grid `cells` (row-major) next to a finite one that
+// neighbour's value (the first of its eight neighbours, read before any cell is changed).
+void extend_by_one_cell(std::vector<Vec2>& cells, int nx, int ny) {
+  const std::vector<Vec2> inside = cells;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      Vec2& cell = cells[size_t(j) * nx + i];
+      for (int k = 0; k < 9 && std::isnan(cell.x); ++k) {
+        const int x = i + k % 3 - 1, y = j + k / 3 - 1;
+        if (x >= 0 && y >= 0 && x < nx && y < ny) cell = inside[size_t(y) * nx + x];
+      }
+    }
+  }
+}
+
 }  // namespace
 
 FlowRenderer::FlowRenderer() : theme_(view_theme(false)) {}
@@ -110,6 +126,7 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   choose_view_region(context, framing);
   outline_.clear();
   for (const Vec2& c : projected_corners(context.camera, context.pose)) outline_ << qpoint(c);
+  outline_in_front_ = plane_visibility_problem(context.pose).empty();
   const double spacing = arrow_spacing(context, display);
   const std::vector<FlowSample> full = sample_flow_grid(context, FlowPart::kFull, spacing);
   const std::vector<FlowSample> shown =
@@ -195,7 +212,9 @@ void FlowRenderer::update_streamlines(const FlowContext& context, const FlowDisp
 }
 
 // The wheel's colours over the part of the image the plane covers, one cell per
-// kWheelStepPx pixels, the background where the plane is not seen.
+// kWheelStepPx pixels, the cells along the edge coloured as their neighbour inside (the
+// wheel is painted clipped to the plane's outline, so the background never shows as a
+// ragged band inside it), the background elsewhere.
 void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& display) {
   if (!display.colour_wheel) return;
   const Vec2 half(0.5 * context.camera.width, 0.5 * context.camera.height);
@@ -221,6 +240,7 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
       largest = std::max(largest, glm::length(f));
     }
   }
+  extend_by_one_cell(flows, nx, ny);
   const QRgb background = to_qcolor(theme_.background).rgb();
   for (int j = 0; j < ny; ++j) {
     auto* line = reinterpret_cast<QRgb*>(wheel_.scanLine(j));
@@ -329,7 +349,16 @@ void FlowRenderer::paint_scene(QPainter& painter, const QTransform& to_view) {
                        plane_image_.height(), plane_image_.width() * 4, QImage::Format_RGBX8888);
     painter.drawImage(to_view.mapRect(QRectF(plane_box_).translated(-shift)), plane, plane_box_);
   }
-  if (display_.colour_wheel) painter.drawImage(to_view.mapRect(wheel_rect_), wheel_);
+  if (display_.colour_wheel) {
+    painter.save();
+    if (outline_in_front_) {
+      QPainterPath plane;
+      plane.addPolygon(to_view.map(outline_));
+      painter.setClipPath(plane, Qt::IntersectClip);
+    }
+    painter.drawImage(to_view.mapRect(wheel_rect_), wheel_);
+    painter.restore();
+  }
   painter.setRenderHint(QPainter::Antialiasing, true);
   painter.setBrush(Qt::NoBrush);
   const double w = theme_.line_width;

@@ -89,6 +89,7 @@ class FlowRenderer {
   int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
   QString caption_text_, wheel_caption_;
   QPolygonF outline_;           // the plane's projected corners, centred pixels
+  bool outline_in_front_ = true;  // every corner in front of the eye: outline_ bounds the plane
   QImage texture_image_;        // the plane's texture as given
   Layer faded_texture_;         // the texture faded towards the background, opaque
   Image plane_image_;           // camera-sized: the background with the faded plane warped in

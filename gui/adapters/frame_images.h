@@ -40,6 +40,9 @@ void draw_level_legend(QPainter& painter, const QRectF& area, const QColor& text
 // channel difference (RGB and alpha, 0..255) coloured by the viridis map over
 // [0, full_scale]. Precondition: a and b have the same size; full_scale > 0.
 QImage difference_map(const Image& a, const Image& b, int full_scale);
+// The same into `out` (Format_RGB32), reusing its pixels when it has a's size already and
+// is not shared, so a view drawing a heat map every frame allocates nothing.
+void difference_map_into(const Image& a, const Image& b, int full_scale, QImage& out);
 
 // The colour bar of difference_map inside `area`: the viridis ramp from 0 (left) to
 // full_scale (right), five ticks labelled in grey levels ("128+" at the top) and a caption,

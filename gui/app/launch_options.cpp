@@ -10,6 +10,7 @@
 #include "formats/viewer_script_file.h"
 #include "engine/engine.h"
 #include "engine/reuse_policy.h"
+#include "adapters/exact_frames.h"
 #include "app/lessons.h"
 #include "app/view_table.h"
 #include "models/animation_sources.h"
@@ -115,6 +116,16 @@ void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
                      panel_display_names() + ")");
   }
   options->animation_show = text;
+}
+
+void read_animation_exact(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--animation-exact")) return;
+  const std::string text = cli.values("--animation-exact").at(0);
+  if (!find_exact_renderer(text)) {
+    throw UsageError("--animation-exact: unknown renderer '" + text + "' (known: " +
+                     exact_renderer_names() + ")");
+  }
+  options->animation_exact = text;
 }
 
 void read_size(const CliArgs& cli, LaunchOptions* options) {
@@ -224,6 +235,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                            {"--mode", 1},
                            {"--animation-show", 1},
                            {"--compare", 1},
+                           {"--animation-exact", 1},
                            {"--view", 1},
                            {"--screenshot", 1},
                            {"--whole-window", 0},
@@ -249,6 +261,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
   read_mode(cli, &options);
   read_animation_show(cli, &options);
   read_compared(cli, &options);
+  read_animation_exact(cli, &options);
   options.view = cli.text_or("--view", "");
   const auto& views = screenshot_view_names();
   if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
@@ -282,6 +295,7 @@ std::string launch_usage() {
          "             [--animation-show side-by-side|difference|blink|comparison]\n"
          "             [--compare P1,P2,... (up to " + std::to_string(kMaxComparedPolicies) +
          " policies)]\n"
+         "             [--animation-exact " + exact_renderer_names("|") + "]\n"
          "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
          "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"
          "             [--flow-show PART] [--flow-draw "

@@ -1,6 +1,7 @@
 // The command line of oflab:
 //   oflab [--session FILE] [--lesson NAME] [--scene S] [--script T] [--source KIND] [--mode M]
-//         [--compare P1,P2,...] [--view NAME]
+//         [--compare P1,P2,...] [--view NAME] [--animation-show LAYOUT]
+//         [--animation-exact RENDERER]
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
 //         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation] [--help]
 // Plain C++ over analysis/cli/cli_args.h, so it is checked before any window opens and bad
@@ -56,6 +57,9 @@ struct LaunchOptions {
   // --compare P1,P2,...: the policies of the comparison layout (1 .. kMaxComparedPolicies
   // distinct names of the registry); empty when not given.
   std::vector<const ReusePolicy*> compared;
+  // --animation-exact NAME: who draws the animation view's exact panel, an entry of
+  // gui/adapters/exact_frames.h exact_renderers() ("core" or "vtk"); empty when not given.
+  std::string animation_exact;
   bool presentation = false;  // start in presentation mode
   bool help = false;          // --help: print the usage and exit 0
 };
@@ -70,10 +74,10 @@ const std::vector<std::string>& screenshot_view_names();
 // count, a non-positive benchmark count, a script that is neither a file nor a shipped name
 // or that analysis/formats/script_file.h rejects (the message names the file and field), a scene
 // or viewer script that is neither a file nor a shipped name or that its reader rejects,
-// a session file that analysis/formats/session_file.h rejects, an unknown --mode, a
-// --compare list that is empty, longer than kMaxComparedPolicies, repeats a policy or names
-// an unknown one, and a --source that is not a kind with a viewer script or comes
-// without --scene.
+// a session file that analysis/formats/session_file.h rejects, an unknown --mode or
+// --animation-exact, a --compare list that is empty, longer than kMaxComparedPolicies,
+// repeats a policy or names an unknown one, and a --source that is not a kind with a viewer
+// script or comes without --scene.
 LaunchOptions parse_launch_options(const std::vector<std::string>& args);
 
 // The flow view's display with the options' overrides applied.

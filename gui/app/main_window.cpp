@@ -49,7 +49,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // so the motion keeps real speed when drawing is slower than the rate.
   connect(motion_timer_, &QTimer::timeout, this, [this] {
     const int due = pacer_.frames_due(play_clock_.elapsed());
-    if (due > 0) model_->advance(due);
+    if (due <= 0) return;
+    model_->advance(due);
+    // A view playing its own scene steps once per frame shown (it has no frames to skip).
+    if (ViewPage* page = current_view(); page && page->plays_own_scene()) page->step_animation();
   });
 
   auto* central = new QWidget(this);

@@ -8,6 +8,7 @@
 
 #include <sstream>
 
+#include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "adapters/texture.h"
 #include "app/main_window.h"
@@ -104,6 +105,7 @@ Session capture_session(MainWindow* window) {
   s.viewer_script = animation->source().viewer;
   s.settings = animation->settings();
   s.display = panel_display_name(window->animation_view()->display());
+  s.exact_renderer = window->animation_view()->exact_renderer().name;
   s.frame = model->frame();
   s.view = window->current_view_name().toStdString();
   const FlowDisplay flow = window->flow_view()->display();
@@ -151,6 +153,13 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
     *error = QStringLiteral("unknown display '%1'").arg(QString::fromStdString(s.display));
     return false;
   }
+  const ExactRendererKind* exact = find_exact_renderer(s.exact_renderer);
+  if (!exact) {
+    *error = QStringLiteral("animation.exact_renderer: unknown renderer '%1' (known: %2)")
+                 .arg(QString::fromStdString(s.exact_renderer),
+                      QString::fromStdString(exact_renderer_names()));
+    return false;
+  }
   if (!window->view(QString::fromStdString(s.view))) {
     *error = QStringLiteral("unknown view '%1'").arg(QString::fromStdString(s.view));
     return false;
@@ -170,6 +179,7 @@ bool apply_session(MainWindow* window, const Session& s, QString* error) {
   animation->set_settings(s.settings);
   animation->set_source({s.source_kind, s.source_name, s.viewer_script});
   window->animation_view()->set_display(display);
+  window->animation_view()->set_exact_renderer(*exact);
   model->set_frame(s.frame);
   window->flow_view()->set_display(flow);
   window->basis_view()->set_basis(basis);

@@ -1,20 +1,22 @@
 #include "views/animation_view.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShowEvent>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
+#include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
-#include "runs/vtk_scene_renderer.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_layout.h"
@@ -94,6 +96,7 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
     : ViewPage(parent),
       model_(model),
       comparison_(std::make_unique<PolicyComparison>(model)),
+      exact_kind_(&exact_renderers().front()),
       theme_(view_theme(false)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
@@ -145,13 +148,23 @@ QWidget* AnimationView::make_panels() {
   inspector_->setWordWrap(true);
   inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   inspector_->setTextFormat(Qt::RichText);
-  inspector_->setFixedWidth(260);
+  // In a scroll area of fixed width: the new text of every frame then lays out the label
+  // alone, not the whole window (a word-wrapped label's height changes with its text, and
+  // relaying the window out took a tenth of a frame).
+  inspector_area_ = new QScrollArea(box);
+  inspector_area_->setWidget(inspector_);
+  inspector_area_->setWidgetResizable(true);
+  inspector_area_->setFrameShape(QFrame::NoFrame);
+  inspector_area_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  inspector_area_->setFixedWidth(260);
   row->addWidget(canvas_, 1);
-  row->addWidget(inspector_);
+  row->addWidget(inspector_area_);
   layout->addLayout(row, 1);
   auto* bottom = new QHBoxLayout;
   readout_ = new QLabel(tr("Move the mouse over the frames for a readout."), box);
   readout_->setObjectName(QStringLiteral("pixel_readout"));
+  // The readout gives way to the controls beside it: it never sets the window's width.
+  readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   zoom_box_ = new QDoubleSpinBox(box);
   zoom_box_->setObjectName(QStringLiteral("animation_zoom"));
   zoom_box_->setRange(kMinZoom, kMaxZoom);
@@ -163,6 +176,8 @@ QWidget* AnimationView::make_panels() {
   auto* fit = new QPushButton(tr("Fit"), box);
   fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
   bottom->addWidget(readout_, 1);
+  bottom->addWidget(new QLabel(tr("Exact"), box));
+  bottom->addWidget(make_exact_box(box));
   bottom->addWidget(new QLabel(tr("Zoom"), box));
   bottom->addWidget(zoom_box_);
   bottom->addWidget(fit);
@@ -177,11 +192,34 @@ QWidget* AnimationView::make_panels() {
   return box;
 }
 
+QComboBox* AnimationView::make_exact_box(QWidget* parent) {
+  exact_box_ = new QComboBox(parent);
+  exact_box_->setObjectName(QStringLiteral("exact_renderer"));
+  for (const ExactRendererKind& kind : exact_renderers()) {
+    exact_box_->addItem(QString::fromStdString(kind.label));
+  }
+  exact_box_->setToolTip(tr("Who draws the exact panel: core's exact warp of the scene (the "
+                            "engine's own re-render, with its content) or VTK's OpenGL "
+                            "pipeline, an independent renderer that draws textures only"));
+  connect(exact_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this](int index) { set_exact_renderer(exact_renderers().at(size_t(index))); });
+  return exact_box_;
+}
+
 void AnimationView::set_zoom(double zoom) {
   if (!std::isfinite(zoom)) return;
   zoom_ = std::clamp(zoom, kMinZoom, kMaxZoom);
   const QSignalBlocker block(zoom_box_);
   zoom_box_->setValue(zoom_);
+  refresh();
+}
+
+void AnimationView::set_exact_renderer(const ExactRendererKind& kind) {
+  exact_kind_ = &kind;
+  exact_.reset();
+  exact_frame_index_ = -1;
+  const QSignalBlocker block(exact_box_);
+  exact_box_->setCurrentIndex(int(&kind - exact_renderers().data()));
   refresh();
 }
 
@@ -194,7 +232,7 @@ void AnimationView::set_compared_policies(const std::vector<const ReusePolicy*>&
 void AnimationView::set_display(PanelDisplay display) {
   display_ = display;
   controls_->set_display(display);
-  inspector_->setVisible(display != PanelDisplay::kComparison);
+  inspector_area_->setVisible(display != PanelDisplay::kComparison);
   blink_phase_ = false;
   if (display == PanelDisplay::kBlink && !external_clock_) {
     blink_timer_->start();
@@ -227,7 +265,7 @@ void AnimationView::set_theme(const ViewTheme& theme) {
   QFont font = inspector_->font();
   font.setPixelSize(theme.presentation ? theme.label_size : 12);
   inspector_->setFont(font);
-  inspector_->setFixedWidth(theme.presentation ? 380 : 260);
+  inspector_area_->setFixedWidth(theme.presentation ? 380 : 260);
   refresh();
 }
 
@@ -241,10 +279,9 @@ const Image& AnimationView::exact_image() {
   const Animator* animator = model_->animator();
   if (!animator || exact_frame_index_ == animator->frame()) return exact_frame_;
   try {
-    if (!exact_) exact_ = std::make_unique<VtkSceneRenderer>(animator->scene(), animator->camera(), kNear);
-    exact_->render(animator->view());
-    exact_frame_ = exact_->image();
-  } catch (const std::runtime_error& e) {  // no display for VTK: show the engine alone
+    if (!exact_) exact_ = exact_kind_->make(animator->scene(), animator->camera(), model_->settings());
+    exact_frame_ = exact_->render(animator->view());
+  } catch (const std::exception& e) {  // no display for VTK: show the engine alone
     exact_frame_ = Image(animator->camera().width, animator->camera().height);
     readout_->setText(QString::fromStdString(e.what()));
   }
@@ -266,14 +303,16 @@ PanelContent AnimationView::engine_panel() {
 
 PanelContent AnimationView::exact_panel() {
   const Animator* animator = model_->animator();
-  return {tr("exact projection (VTK)"), image_view(exact_image()), {},
+  return {QString::fromStdString(exact_kind_->title), image_view(exact_image()), {},
           {tr("frame %1 of %2").arg(animator->frame()).arg(animator->frame_count())}};
 }
 
 std::vector<PanelContent> AnimationView::comparison_panels() {
   std::vector<PanelContent> shown, heat;
   const Image& exact = exact_image();
-  for (const ComparedRun& run : comparison_->runs()) {
+  const std::vector<ComparedRun>& runs = comparison_->runs();
+  if (heat_images_.size() < runs.size()) heat_images_.resize(runs.size());
+  for (const ComparedRun& run : runs) {
     const QString name = QString::fromLatin1(run.policy->name);
     if (!run.animator) {
       shown.push_back({name, QImage(), {}, {QString::fromStdString(run.problem)}});
@@ -283,8 +322,9 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     shown.push_back({tr("%1 policy").arg(name), image_view(image),
                      run.animator->outlines(),
                      run_caption(run.last, double(run.pixels_written), run.time_ms)});
-    heat.push_back({tr("%1 - exact").arg(name), difference_map(image, exact, kDifferenceScale), {},
-                    agreement_caption(image, exact)});
+    QImage& map = heat_images_[heat.size()];
+    difference_map_into(image, exact, kDifferenceScale, map);
+    heat.push_back({tr("%1 - exact").arg(name), map, {}, agreement_caption(image, exact)});
   }
   shown.push_back(exact_panel());
   shown.insert(shown.end(), heat.begin(), heat.end());
@@ -297,8 +337,10 @@ std::vector<PanelContent> AnimationView::panels() {
       if (!comparison_->runs().empty()) return comparison_panels();
       break;
     case PanelDisplay::kDifference:
-      return {{tr("engine - exact"), difference_map(engine_image(), exact_image(), kDifferenceScale),
-               {}, agreement_caption(engine_image(), exact_image())}};
+      if (heat_images_.empty()) heat_images_.resize(1);
+      difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
+      return {{tr("engine - exact"), heat_images_[0], {},
+               agreement_caption(engine_image(), exact_image())}};
     case PanelDisplay::kBlink:
       return {blink_phase_ ? exact_panel() : engine_panel()};
     default:
@@ -400,7 +442,11 @@ void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool level
 }
 
 QImage AnimationView::compose(const QSize& size) {
-  QImage canvas(size, QImage::Format_RGB32);
+  // Two reused images in turn: the canvas still shows the other one, so painting this one
+  // neither copies nor allocates (a new image of the view's size each frame cost page faults).
+  QImage& canvas = buffers_[next_buffer_];
+  next_buffer_ = 1 - next_buffer_;
+  if (canvas.size() != size) canvas = QImage(size, QImage::Format_RGB32);
   canvas.fill(qcolor(theme_.background));
   panel_rects_.clear();
   const Animator* animator = model_->animator();
@@ -435,6 +481,7 @@ QImage AnimationView::compose(const QSize& size) {
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
   paint_band(painter, legends, levels, heat_row || display_ == PanelDisplay::kDifference);
+  painter.end();  // a QImage copied while a painter is active on it is copied deeply
   return canvas;
 }
 

@@ -1,6 +1,8 @@
 // View 3, "Animation, side by side": the animation model's frame beside the exact projection
-// of the same frame rendered by VTK as textured 3D polygons with the matching camera
-// (analysis/runs/vtk_scene_renderer.h). Made for a projector: the panels are painted at the
+// of the same frame, drawn by the chosen exact renderer (gui/adapters/exact_frames.h): by
+// default core's exact re-render of the scene with the engine's content (the picture the
+// engine's re-render level and the analysis's baseline draw), or independently by VTK as
+// textured 3D polygons with the matching camera. Made for a projector: the panels are painted at the
 // view's own size and fill it, every panel shows the same part of the camera image (zoom to
 // fit on the plane over its whole loop, times a zoom the teacher sets with the Zoom box or
 // the mouse wheel), every panel outlines the exact polygons, and titles, numbers and
@@ -29,17 +31,20 @@
 #include "views/panel_layout.h"
 #include "views/view_page.h"
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPainter;
+class QScrollArea;
 class QTimer;
 
 namespace oflab {
 
 class AnimationModel;
+class ExactFrameRenderer;
 class ImageCanvas;
 class PolicyComparison;
-class VtkSceneRenderer;
+struct ExactRendererKind;
 struct PanelContent;
 
 class AnimationView : public ViewPage {
@@ -91,6 +96,11 @@ class AnimationView : public ViewPage {
   QRectF shown_frame() const { return shown_frame_; }
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
 
+  // Who draws the exact panel, the difference heat maps' reference and the readout's exact
+  // pixel (an entry of exact_renderers(); the first, core's, by default). Setting it redraws.
+  const ExactRendererKind& exact_renderer() const { return *exact_kind_; }
+  void set_exact_renderer(const ExactRendererKind& kind);
+
   // The animator's frame and the exact frame at the current frame (camera-sized; empty
   // when nothing can be played).
   const Image& engine_image();
@@ -104,6 +114,7 @@ class AnimationView : public ViewPage {
 
  private:
   QWidget* make_panels();
+  QComboBox* make_exact_box(QWidget* parent);  // the Exact picker, wired to set_exact_renderer
   void show_model_state();
   QImage compose(const QSize& size);
   std::vector<PanelContent> panels();
@@ -124,10 +135,13 @@ class AnimationView : public ViewPage {
   std::unique_ptr<PolicyComparison> comparison_;
   ImageCanvas* canvas_ = nullptr;
   QLabel* inspector_ = nullptr;
+  QScrollArea* inspector_area_ = nullptr;
   QLabel* readout_ = nullptr;
   QDoubleSpinBox* zoom_box_ = nullptr;
+  QComboBox* exact_box_ = nullptr;
   QTimer* blink_timer_;
-  std::unique_ptr<VtkSceneRenderer> exact_;  // of the model's source; null after a change
+  const ExactRendererKind* exact_kind_;
+  std::unique_ptr<ExactFrameRenderer> exact_;  // of the model's source; null after a change
   Image exact_frame_;
   int exact_frame_index_ = -1;
   PanelDisplay display_ = PanelDisplay::kSideBySide;
@@ -139,6 +153,9 @@ class AnimationView : public ViewPage {
   QRectF fit_;              // the plane's image over its loop (empty: the whole image)
   QRectF shown_frame_;
   std::vector<QRectF> panel_rects_;
+  QImage buffers_[2];  // the composed view, painted into in turn (compose)
+  std::vector<QImage> heat_images_;  // the heat maps of the last frame, reused
+  int next_buffer_ = 0;
 };
 
 }  // namespace oflab

@@ -4,13 +4,14 @@
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
 #include "adapters/frame_images.h"
-#include "runs/vtk_scene_renderer.h"
+#include "adapters/exact_frames.h"
 #include "views/slider_spin.h"
 
 namespace oflab {
@@ -29,7 +30,6 @@ QFont diagram_font(const ViewTheme& theme) {
 
 // Lateral extent of the diagram, world units either side of the axis.
 constexpr double kHalfWidth = 12.0;
-constexpr double kNear = 0.05;  // near plane of the exact render, world units
 
 const QColor kBandA(90, 170, 120, 60), kBandB(90, 120, 170, 60);
 const QColor kAsymptote(213, 94, 0);   // Okabe-Ito vermillion
@@ -90,8 +90,9 @@ double draw_diagram_legend(QPainter& p, const QRectF& area, const ViewTheme& the
   return y + 1.2 * h;
 }
 
-// A camera frame scaled to fit under its title in an image of `area`.
-QPixmap titled_picture(const QImage& frame, const QString& title, const QSize& area,
+// A camera frame (premultiplied, painted over the background) scaled to fit under its title
+// in an image of `area`; an empty frame shows the title alone.
+QPixmap titled_picture(const Image& frame, const QString& title, const QSize& area,
                        const ViewTheme& theme) {
   QImage image(area, QImage::Format_RGB32);
   image.fill(qcolor(theme.background));
@@ -102,16 +103,18 @@ QPixmap titled_picture(const QImage& frame, const QString& title, const QSize& a
   p.setPen(qcolor(theme.text));
   const double title_h = 1.6 * theme.font_size;
   p.drawText(QRectF(0, 0, area.width(), title_h), Qt::AlignCenter, title);
-  if (!frame.isNull()) {
-    const QSize fitted = frame.size().scaled(area - QSize(0, int(title_h)), Qt::KeepAspectRatio);
+  if (!frame.empty()) {
+    const QSize fitted =
+        QSize(frame.width(), frame.height()).scaled(area - QSize(0, int(title_h)), Qt::KeepAspectRatio);
     const QRectF target(0.5 * (area.width() - fitted.width()), title_h, fitted.width(),
                         fitted.height());
     p.setRenderHint(QPainter::SmoothPixmapTransform, true);
-    p.drawImage(target, frame);
+    p.drawImage(target, image_view(frame));
     p.setPen(QPen(qcolor(theme.muted), 1));
     p.drawRect(target);
   }
-  return QPixmap::fromImage(image);
+  p.end();
+  return QPixmap::fromImage(std::move(image));  // moved: no copy of the pixels
 }
 
 }  // namespace
@@ -140,7 +143,10 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   p.drawText(QPointF(left, line), QString("%1 slices (%2 finite + background)")
                                        .arg(slices.size())
                                        .arg(slices.empty() ? 0 : slices.size() - 1));
-  const double top = draw_diagram_legend(p, QRectF(left, 1.3 * line, right - left, line), theme) + 8;
+  // Under the legend, a row of its own for the asymptote's label, so it never meets the
+  // legend, the plane marks or the bands' edges.
+  const double label_row = draw_diagram_legend(p, QRectF(left, 1.3 * line, right - left, line), theme);
+  const double top = label_row + 1.2 * line + 4;
   std::function<double(double)> x_of = [&](double z) {
     return left + (right - left) * std::sqrt(std::min(z, max_depth) / max_depth);
   };
@@ -158,9 +164,13 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   if (std::isfinite(asymptote)) {
     p.setPen(QPen(kAsymptote, 2, Qt::DashLine));
     p.drawLine(QPointF(x_of(asymptote), top), QPointF(x_of(asymptote), bottom));
+    p.drawLine(QPointF(x_of(asymptote), label_row + line), QPointF(x_of(asymptote), top));
     p.setPen(text);
-    p.drawText(QPointF(x_of(asymptote) + 4, top + theme.font_size),
-               QString("asymptote Z = %1").arg(asymptote, 0, 'f', 2));
+    const QString label = QString("asymptote Z = %1").arg(asymptote, 0, 'f', 2);
+    const double w = QFontMetricsF(p.font()).horizontalAdvance(label);
+    // Centred over its line, kept inside the diagram.
+    const double x = std::clamp(x_of(asymptote) - w / 2, left, std::max(left, right - w));
+    p.drawText(QRectF(x, label_row, w + 1, line), Qt::AlignLeft | Qt::AlignVCenter, label);
   }
   // The scene's planes, seen from above.
   p.setPen(QPen(kPlane, 4));
@@ -217,8 +227,8 @@ SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(fa
   }
   if (problem_.isEmpty()) {
     try {
-      exact_ = std::make_unique<VtkSceneRenderer>(scene_, script_.camera, kNear);
-    } catch (const std::exception& e) {  // no display for VTK: the slices alone
+      exact_ = exact_renderers().front().make(scene_, script_.camera, EngineSettings());
+    } catch (const std::exception& e) {  // a scene the renderer refuses: the slices alone
       exact_problem_ = QString::fromStdString(e.what());
     }
   }
@@ -238,12 +248,12 @@ const Image& SlicesView::shifted_image() const {
   return renderer_ ? renderer_->frame() : kEmpty;
 }
 
-// The exact projection of the script's current frame (VTK), beside the slices' frame.
+// The exact projection of the script's current frame (core's exact render), beside the
+// slices' frame.
 void SlicesView::render_exact() {
   exact_frame_ = Image();
   if (!exact_ || frame_ >= static_cast<int>(script_.frames.size())) return;
-  exact_->render(script_.frames[size_t(frame_)].pose);
-  exact_frame_ = exact_->image();
+  exact_frame_ = exact_->render(script_.frames[size_t(frame_)].pose);
 }
 double SlicesView::speed() const { return speed_->value(); }
 
@@ -251,6 +261,7 @@ void SlicesView::restart() {
   frame_ = 0;
   renderer_.reset();
   slices_.clear();
+  diagram_current_ = false;
   if (problem_.isEmpty() && !script_.frames.empty()) {
     SceneShiftingSettings s;
     s.epsilon_px = epsilon_->value();
@@ -294,18 +305,24 @@ void SlicesView::refresh() {
   const double k = script_.camera.focal_px;
   const double asymptote = k * speed_->value() / epsilon_->value();
   const double max_depth = std::max(50.0, 1.25 * asymptote);
+  // The diagram changes with the slices (a restart), the theme and the size, not per frame.
   const QSize area = diagram_->size().expandedTo(QSize(160, 120));
-  diagram_->setPixmap(QPixmap::fromImage(slice_diagram(area.width(), area.height(), slices_,
-                                                       asymptote, planes, max_depth, theme_)));
+  if (!diagram_current_ || area != diagram_size_) {
+    diagram_->setPixmap(QPixmap::fromImage(slice_diagram(area.width(), area.height(), slices_,
+                                                         asymptote, planes, max_depth, theme_)));
+    diagram_current_ = true;
+    diagram_size_ = area;
+  }
   if (renderer_) {
     frame_label_->setPixmap(titled_picture(
-        flatten_image(renderer_->frame(), qcolor(theme_.background)), tr("scene shifting (slices)"),
+        renderer_->frame(), tr("scene shifting (slices)"),
         frame_label_->size().expandedTo(QSize(160, 120)), theme_));
   }
   render_exact();
   exact_label_->setPixmap(titled_picture(
-      exact_frame_.empty() ? QImage() : flatten_image(exact_frame_, qcolor(theme_.background)),
-      exact_problem_.isEmpty() ? tr("exact projection (VTK)") : exact_problem_,
+      exact_frame_,
+      exact_problem_.isEmpty() ? QString::fromStdString(exact_renderers().front().title)
+                               : exact_problem_,
       exact_label_->size().expandedTo(QSize(160, 120)), theme_));
   caption_->setText(QString("Frame %1: a viewer moving sideways at %2 units/frame, slices "
                             "cut so every point of a slice moves within %3 px of the others "
@@ -335,6 +352,7 @@ double SlicesView::smallest_text_px() const { return QFontInfo(diagram_font(them
 
 void SlicesView::set_theme(const ViewTheme& theme) {
   theme_ = theme;
+  diagram_current_ = false;
   refresh();
 }
 

@@ -2,7 +2,7 @@
 // diagram of Hofmann's slices for the train-window scene (depth against lateral position:
 // the eye, the slice boundaries, the asymptote k|V|/epsilon, the scene's planes, with depth
 // ticks and a legend) beside the scene-shifting renderer's layered animation and the exact
-// projection of the same frame (VTK, analysis/runs/vtk_scene_renderer.h), with epsilon and
+// projection of the same frame (core's exact render, gui/adapters/exact_frames.h), with epsilon and
 // the viewer's speed on sliders. Everything shown comes from core/scene_shifting/scene_shifting.h and
 // core/scene_shifting/scene_shifting_renderer.h; this file only draws it.
 #pragma once
@@ -21,8 +21,8 @@
 
 namespace oflab {
 
+class ExactFrameRenderer;
 class SliderSpin;
-class VtkSceneRenderer;
 
 // The depths the diagram's axis marks: 1, 2 and 5 times powers of ten from 1 up to
 // `max_depth` (world units), increasing. Precondition: max_depth > 0.
@@ -49,6 +49,7 @@ class SlicesView : public ViewPage {
   QImage render_image() override;
   void step_animation() override;
   void set_theme(const ViewTheme& theme) override;
+  bool plays_own_scene() const override { return true; }
   double smallest_text_px() const override;
   QString scene_panel_note() const override;
 
@@ -57,8 +58,8 @@ class SlicesView : public ViewPage {
   double epsilon_px() const;
   double speed() const;
   int slice_count() const { return static_cast<int>(slices_.size()); }
-  // The current frame as scene shifting draws it and as VTK projects it exactly
-  // (camera-sized, premultiplied; the exact one is empty when VTK cannot render).
+  // The current frame as scene shifting draws it and as core's exact render projects it
+  // (camera-sized, premultiplied; the exact one is empty when it cannot be rendered).
   const Image& shifted_image() const;
   const Image& exact_image() const { return exact_frame_; }
 
@@ -73,7 +74,7 @@ class SlicesView : public ViewPage {
   Scene scene_;
   ViewerScript script_;
   std::unique_ptr<SceneShiftingRenderer> renderer_;
-  std::unique_ptr<VtkSceneRenderer> exact_;
+  std::unique_ptr<ExactFrameRenderer> exact_;
   Image exact_frame_;
   QString exact_problem_;  // why the exact frame cannot be shown, if it cannot
   std::vector<Slice> slices_;
@@ -83,6 +84,8 @@ class SlicesView : public ViewPage {
   SliderSpin* epsilon_ = nullptr;
   SliderSpin* speed_ = nullptr;
   QLabel* diagram_ = nullptr;
+  bool diagram_current_ = false;  // diagram_ shows the slices and theme at diagram_size_
+  QSize diagram_size_;
   QLabel* frame_label_ = nullptr;
   QLabel* exact_label_ = nullptr;
   QLabel* caption_ = nullptr;

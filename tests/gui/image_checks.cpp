@@ -66,4 +66,15 @@ QString output_dir() {
   return dir;
 }
 
+FrameAgreement agreement_writing_failures(const Image& a, const Image& b, double min_iou,
+                                          double min_psnr_db, const QString& name,
+                                          const QString& label_a, const QString& label_b) {
+  const FrameAgreement agreement = frame_agreement(a, b);
+  if (agreement.mask_iou < min_iou || agreement.psnr_db < min_psnr_db) {
+    flatten_image(a, Qt::black).save(output_dir() + "/" + name + "-" + label_a + ".png");
+    flatten_image(b, Qt::black).save(output_dir() + "/" + name + "-" + label_b + ".png");
+  }
+  return agreement;
+}
+
 }  // namespace oflab::test

@@ -10,9 +10,20 @@
 #include <QImage>
 #include <QString>
 
+#include "adapters/frame_images.h"
+
 namespace oflab::test {
 
 constexpr double kBaselinePsnrDb = 30.0;
+
+// Agreement of two exact renderings of one frame by different rasterisers (core's warp, VTK's
+// OpenGL): alpha masks overlap with IoU >= kExactAgreementIou (edges may differ by a pixel)
+// and, over the pixels both cover, PSNR >= kExactAgreementPsnrDb (texel choices at
+// pixel-centre ties differ, which on the high-contrast butterfly costs a few dB, while a
+// wrong camera, mirrored texture or shifted plane scores far below: a one-pixel shift of
+// the whole frame scores under 14 dB).
+constexpr double kExactAgreementIou = 0.95;
+constexpr double kExactAgreementPsnrDb = 18.0;
 
 // PSNR in dB of b against a (same size, RGB); infinity when they are equal.
 double psnr_db(const QImage& a, const QImage& b);
@@ -28,5 +39,12 @@ double changed_fraction(const QImage& a, const QImage& b, int threshold = 8);
 
 // Directory for images written by failing tests (created on demand).
 QString output_dir();
+
+// frame_agreement (gui/adapters/frame_images.h) of two camera frames. When the IoU is
+// below `min_iou` or the PSNR below `min_psnr_db`, writes both, flattened over black, to
+// output_dir() as NAME-LABEL_A.png and NAME-LABEL_B.png, so a failing test leaves them.
+FrameAgreement agreement_writing_failures(const Image& a, const Image& b, double min_iou,
+                                          double min_psnr_db, const QString& name,
+                                          const QString& label_a, const QString& label_b);
 
 }  // namespace oflab::test

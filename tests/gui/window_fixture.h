@@ -7,6 +7,8 @@
 #include <memory>
 
 #include "app/main_window.h"
+#include "models/animation_model.h"
+#include "views/animation_view.h"
 
 namespace oflab::test {
 
@@ -25,6 +27,13 @@ class WindowTest : public ::testing::Test {
 
  private:
   std::unique_ptr<MainWindow> window_;
+};
+
+// The window, with the animation view and its model at hand.
+class AnimationWindowTest : public WindowTest {
+ protected:
+  AnimationView& animation() { return *window().animation_view(); }
+  AnimationModel& model() { return *window().animation_model(); }
 };
 
 }  // namespace oflab::test

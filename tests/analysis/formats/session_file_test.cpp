@@ -32,6 +32,7 @@ Session sample_session() {
   s.settings.delta = DeltaPolicy::kOne;
   s.settings.sampling = Sampling::kBilinear;
   s.display = "difference";
+  s.exact_renderer = "vtk";
   s.frame = 7;
   s.view = "analysis";
   s.flow_part = "second-order";
@@ -83,6 +84,7 @@ TEST(SessionFile, WrittenSessionReadsBackUnchanged) {
   EXPECT_EQ(back.settings.delta, DeltaPolicy::kOne);
   EXPECT_EQ(back.settings.sampling, Sampling::kBilinear);
   EXPECT_EQ(back.display, s.display);
+  EXPECT_EQ(back.exact_renderer, "vtk");
   EXPECT_EQ(back.frame, 7);
   EXPECT_EQ(back.view, s.view);
   EXPECT_EQ(back.flow_part, "second-order");
@@ -109,6 +111,14 @@ TEST(SessionFile, ASessionWithoutWindowStateReadsWithTheDefaults) {
   EXPECT_TRUE(back.lesson.empty());
   EXPECT_EQ(back.play_rate, 30);
   EXPECT_EQ(back.view, "analysis");  // the rest is read as before
+}
+
+// Sessions saved before the exact panel's renderer was kept read with the default, core's.
+TEST(SessionFile, ASessionWithoutAnExactRendererReadsWithCores) {
+  json j = json::parse(session_to_json(sample_session()));
+  ASSERT_EQ(j["animation"]["exact_renderer"], "vtk");
+  j["animation"].erase("exact_renderer");
+  EXPECT_EQ(parse_session(j.dump(), "old.json").exact_renderer, "core");
 }
 
 TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {

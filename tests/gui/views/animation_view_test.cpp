@@ -2,12 +2,10 @@
 // render, the session round-trips through its JSON file, and bad input changes nothing.
 //
 // Agreement in re-render mode. Both panels then show the exact projection: the engine's
-// from core's perspective warp, the other from VTK's textured polygons, both with nearest
-// texel sampling. Their alpha masks must overlap with IoU >= 0.95 (edges may differ by a
-// pixel), and over the pixels both cover the PSNR must be >= kRerenderPsnrDb: texel
-// choices at pixel-centre ties differ between the two rasterisers, which on the
-// high-contrast butterfly costs a few dB, while a wrong camera, mirrored texture or shifted
-// plane scores far below (a one-pixel shift of the whole frame scores under 14 dB).
+// from core's perspective warp, the other, with the exact panel set to VTK
+// (gui/adapters/exact_frames.h), from VTK's textured polygons, both with nearest texel
+// sampling; they must agree as two rasterisers of one frame do (tests/gui/image_checks.h
+// kExactAgreementIou and kExactAgreementPsnrDb, where the tolerance is explained).
 #include "views/animation_view.h"
 
 #include <QComboBox>
@@ -19,6 +17,7 @@
 #include "models/animation_model.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
+#include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "formats/session_file.h"
 #include "views/palette.h"
@@ -29,14 +28,11 @@
 namespace oflab::test {
 namespace {
 
-constexpr double kRerenderIou = 0.95;
-constexpr double kRerenderPsnrDb = 18.0;
+constexpr double kRerenderIou = kExactAgreementIou;
+constexpr double kRerenderPsnrDb = kExactAgreementPsnrDb;
 
-class AnimationViewTest : public WindowTest {
+class AnimationViewTest : public AnimationWindowTest {
  protected:
-  AnimationView& animation() { return *window().animation_view(); }
-  AnimationModel& model() { return *window().animation_model(); }
-
   void set_mode(const std::string& policy) {
     EngineSettings settings = model().settings();
     settings.policy = &reuse_policy(policy);
@@ -48,11 +44,8 @@ class AnimationViewTest : public WindowTest {
     const Image& engine = animation().engine_image();
     const Image& exact = animation().exact_image();
     ASSERT_EQ(engine.width(), exact.width());
-    const FrameAgreement a = frame_agreement(engine, exact);
-    if (a.mask_iou < kRerenderIou || a.psnr_db < kRerenderPsnrDb) {
-      flatten_image(engine, Qt::black).save(output_dir() + "/" + name + "-engine.png");
-      flatten_image(exact, Qt::black).save(output_dir() + "/" + name + "-exact.png");
-    }
+    const FrameAgreement a = agreement_writing_failures(engine, exact, kRerenderIou,
+                                                        kRerenderPsnrDb, name, "engine", "exact");
     EXPECT_GE(a.mask_iou, kRerenderIou) << name.toStdString();
     EXPECT_GE(a.psnr_db, kRerenderPsnrDb) << name.toStdString();
   }
@@ -160,6 +153,7 @@ TEST_F(AnimationViewTest, AnalysisViewRendersCharts) {
 
 TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
   window().show_view("animation");
+  animation().set_exact_renderer(*find_exact_renderer("vtk"));
   set_mode("rerender");
   window().play_frames(8);
   expect_panels_agree("rerender-plane");
@@ -167,6 +161,7 @@ TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
 
 TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
   window().show_view("animation");
+  animation().set_exact_renderer(*find_exact_renderer("vtk"));
   set_mode("rerender");
   ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
   window().play_frames(8);

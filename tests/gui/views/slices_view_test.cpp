@@ -45,8 +45,9 @@ TEST(SlicesDiagram, DepthTicksAreOneTwoFiveStepsUpToTheLargestDepth) {
   EXPECT_EQ(depth_ticks(0.5), std::vector<double>{});
 }
 
-// The exact panel is VTK's projection of the same viewer frame: where scene shifting drew
-// the scene, so did VTK (two independent renderers of one frame).
+// The exact panel is core's exact projection of the same viewer frame: where scene shifting
+// drew the scene, so did the exact render (slices moved as layers against every polygon
+// warped exactly: two different renderings of one frame).
 TEST_F(SlicesViewTest, ShowsTheExactProjectionOfTheSameFrame) {
   auto* view = dynamic_cast<SlicesView*>(window().view("slices"));
   ASSERT_NE(view, nullptr);
