@@ -23,8 +23,8 @@ namespace {
 // --repeat N: the script played at most this many times back to back.
 constexpr int kMaxRepeat = 1000000;
 
-constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
-                                             "--no-skip-hidden"};
+constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--conventional-single-sample",
+                                             "--near", "--guard-band", "--no-skip-hidden"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
 void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,
@@ -150,6 +150,7 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--quiet", 0},
                            {"--scene", 1},
                            {"--compare-conventional", 0},
+                           {"--conventional-single-sample", 0},
                            {"--near", 1},
                            {"--guard-band", 1},
                            {"--no-skip-hidden", 0},

@@ -72,6 +72,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const SceneSettings& settings = source.settings;
   PlayOptions options;
   options.conventional = a.has("--compare-conventional");
+  options.conventional_multisample = !a.has("--conventional-single-sample");
   const RunOutput output = read_run_output(a, err);
   const SourceKind& kind = source_kind("scene");
   output.apply_to(options, kind);

@@ -124,7 +124,8 @@ AnimationRun play_scene(const RunSource& source, const PlayOptions& options) {
   if (options.conventional) {
     conventional = std::make_unique<VtkSceneRenderer>(*source.scene, source.viewer.camera,
                                                       source.settings.near,
-                                                      source.settings.engine.content, true);
+                                                      source.settings.engine.content,
+                                                      options.conventional_multisample);
   }
   AnimationRun run = run_animator(*animator, baseline.get(), conventional.get(), options);
   const BspStats bsp = animator->renderer().bsp().stats();

@@ -3,7 +3,6 @@
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -66,8 +65,8 @@ int add_facade(const ScenePolygon& polygon, int detail, std::map<FacadePart, Par
     for (int k = 0; k < 4; ++k) {
       const Vec3& p = c[reverse ? 3 - k : k];
       g.cells->InsertCellPoint(g.points->InsertNextPoint(p.x, p.y, p.z));
+      g.normals->InsertNextTuple3(n.x, n.y, n.z);
     }
-    g.normals->InsertNextTuple3(n.x, n.y, n.z);
     ++count;
   }
   return count;
@@ -77,14 +76,16 @@ void add_part_actor(FacadePart part, PartGeometry& g, vtkRenderer* renderer) {
   vtkNew<vtkPolyData> data;
   data->SetPoints(g.points);
   data->SetPolys(g.cells);
-  data->GetCellData()->SetNormals(g.normals);
+  // Point normals, the face's own at its four points: as flat as cell normals, without a
+  // per-fragment cell-normal lookup in the shader.
+  data->GetPointData()->SetNormals(g.normals);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(data);
   mapper->ScalarVisibilityOff();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   set_material(actor->GetProperty(), facade_material(part), false);
-  actor->GetProperty()->SetInterpolationToFlat();
+  actor->GetProperty()->SetInterpolationToGouraud();
   renderer->AddActor(actor);
 }
 

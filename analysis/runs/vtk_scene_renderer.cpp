@@ -69,6 +69,32 @@ std::vector<const ScenePolygon*> polygons_of_texture(const Scene& scene, int tex
   return out;
 }
 
+// One unlit, textured actor per texture with the texture-content polygons it carries; true
+// when a drawn texture has translucent texels.
+bool add_texture_actors(const Scene& scene, vtkRenderer* renderer) {
+  bool translucent = false;
+  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+    const std::vector<const ScenePolygon*> polygons = polygons_of_texture(scene, static_cast<int>(t));
+    if (polygons.empty()) continue;
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(outline_polydata(polygons));
+    vtkNew<vtkTexture> texture;
+    texture->SetInputData(texture_image(scene.textures[t]));
+    texture->InterpolateOff();  // nearest texel, as the engine's point sampling
+    texture->MipmapOff();
+    texture->RepeatOff();
+    texture->EdgeClampOn();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->SetTexture(texture);
+    actor->GetProperty()->LightingOff();  // the texture's colour, unshaded
+    actor->GetProperty()->BackfaceCullingOn();
+    renderer->AddActor(actor);
+    translucent = translucent || has_translucency(scene.textures[t]);
+  }
+  return translucent;
+}
+
 // Samples per pixel of the frame: the shaded contents' samples per pixel (0: none).
 int multisamples(const Scene& scene, const LayerContent& content) {
   bool shaded = false;
@@ -106,26 +132,7 @@ VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, dou
   Impl& m = *impl_;
   m.camera = camera;
   m.near = near;
-  bool translucent = false;
-  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
-    const std::vector<const ScenePolygon*> polygons = polygons_of_texture(scene, static_cast<int>(t));
-    if (polygons.empty()) continue;
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(outline_polydata(polygons));
-    vtkNew<vtkTexture> texture;
-    texture->SetInputData(texture_image(scene.textures[t]));
-    texture->InterpolateOff();  // nearest texel, as the engine's point sampling
-    texture->MipmapOff();
-    texture->RepeatOff();
-    texture->EdgeClampOn();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->SetTexture(texture);
-    actor->GetProperty()->LightingOff();  // the texture's colour, unshaded
-    actor->GetProperty()->BackfaceCullingOn();
-    m.renderer->AddActor(actor);
-    translucent = translucent || has_translucency(scene.textures[t]);
-  }
+  const bool translucent = add_texture_actors(scene, m.renderer);
   add_lit_contents(scene, content);
   // Bounding sphere of the scene for the far clipping plane.
   Vec3 lo(1e300), hi(-1e300);

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "experiments/experiments_runs.h"
 #include "experiments/published_results.h"
 
 namespace oflab {
