@@ -88,7 +88,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result, source.scene->name, source.viewer.name, *settings.engine.policy, out);
+    print_scene_summary(result, source.scene->name, source.viewer.name, *settings.engine.policy,
+                        out);
   }
   return 0;
 }

@@ -23,10 +23,10 @@ std::string animate_usage() {
       "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
-  usage +=
-      "               [--repeat-timing N]   (timed passes after a warm-up, default " +
-      std::to_string(kDefaultTimingRepetitions) + ")\n"
-      "               [--no-warm-up] [--repeat N]   (the script N times back to back)\n";
+  usage += "               [--repeat-timing N]   (timed passes after a warm-up, default " +
+           std::to_string(kDefaultTimingRepetitions) +
+           ")\n"
+           "               [--no-warm-up] [--repeat N]   (the script N times back to back)\n";
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
@@ -45,7 +45,8 @@ std::string animate_usage() {
 std::string experiments_usage() {
   std::string only;
   for (const std::string& name : experiment_names()) only += (only.empty() ? "" : "|") + name;
-  return "oflab-cli experiments [--out DIR] [--only " + only + " ...] [--quick]\n"
+  return "oflab-cli experiments [--out DIR] [--only " + only +
+         " ...] [--quick]\n"
          "               [--videos mp4|gif|ogv] [--force]\n"
          "               (draws charts: needs an X display, e.g. xvfb-run -a)";
 }

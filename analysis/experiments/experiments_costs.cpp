@@ -95,9 +95,9 @@ std::string published_reading(const CostScript& s, std::size_t k) {
 ReportTable cost_table(const CostSweepResult& r) {
   ReportTable t;
   t.caption = "Time saved against the re-render cost, per reuse policy";
-  t.header = {"script",           "policy",       "content",      "re-render cost",        "time saved",
-              "model work saved", "max error px", "max photometric error", "mean PSNR dB",
-              "beside published"};
+  t.header = {"script",       "policy",           "content",      "re-render cost",
+              "time saved",   "model work saved", "max error px", "max photometric error",
+              "mean PSNR dB", "beside published"};
   for (const CostScript& s : r.scripts) {
     for (std::size_t k = 0; k < s.points.size(); ++k) {
       const CostPoint& p = s.points[k];
@@ -232,8 +232,12 @@ ReportTable printed_choice_table(const CostSweepResult& r) {
   ReportTable t;
   t.caption = "The printed rule (" + std::string(kPrintedPolicy) + ") beside the corrected one (" +
               kCorrectedPolicy + ") at the first content of at least ten warps per pixel";
-  t.header = {"script",         "published time saved", "content",
-              "corrected: time saved", "corrected: max error px", "printed: time saved",
+  t.header = {"script",
+              "published time saved",
+              "content",
+              "corrected: time saved",
+              "corrected: max error px",
+              "printed: time saved",
               "printed: max error px"};
   for (const std::string& name : experiment1_scripts()) {
     const CostScript* corrected = find_cost_script(r, name, kCorrectedPolicy);
@@ -267,8 +271,9 @@ ReportSection cost_sweep_section(const CostSweepResult& result, ExperimentContex
       " frames, every polygon showing the same content) with each content in turn (" + contents +
       "): the texture (a re-render is one perspective warp), the facade impostor (lit, "
       "depth-tested boxes, at a detail) and the shaded brick (lit per sample, at a number of "
-      "samples per pixel), under each reuse policy (" + policies +
-      "), 1 px thresholds, a warm-up and " + count_of(result.spec.repetitions, "timed repetition") +
+      "samples per pixel), under each reuse policy (" +
+      policies + "), 1 px thresholds, a warm-up and " +
+      count_of(result.spec.repetitions, "timed repetition") +
       ". The re-render cost is the cost model's work of the run's re-render baseline per pixel "
       "it wrote (manual/costs.md), in perspective-warp pixels: one impostor fragment counts " +
       fixed(content_unit_cost(ContentKind::kImpostor), 1) + ", one shaded sample " +
@@ -295,8 +300,8 @@ ReportSection cost_sweep_section(const CostSweepResult& result, ExperimentContex
   s.figure(context.add_chart("costs-break-even", chart,
                              "Time saved (measured) against the re-render's cost, one panel per "
                              "reuse policy, and the cost model's work saved under " +
-                             result.spec.policies.front() +
-                             " (last panel); reuse pays above the zero line."));
+                                 result.spec.policies.front() +
+                                 " (last panel); reuse pays above the zero line."));
   return s;
 }
 

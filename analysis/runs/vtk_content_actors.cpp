@@ -57,7 +57,8 @@ int add_facade(const ScenePolygon& polygon, int detail, std::map<FacadePart, Par
   int count = 0;
   for (const FacadeFace& face : facade_faces(polygon.size, detail)) {
     PartGeometry& g = parts[face.part];
-    const Vec3 n = face.normal.x * right + face.normal.y * polygon.up + face.normal.z * polygon.front;
+    const Vec3 n =
+        face.normal.x * right + face.normal.y * polygon.up + face.normal.z * polygon.front;
     std::array<Vec3, 4> c;
     for (int k = 0; k < 4; ++k) c[k] = world(face.corners[k]);
     const bool reverse = glm::dot(glm::cross(c[1] - c[0], c[2] - c[0]), n) < 0.0;
@@ -112,8 +113,10 @@ vtkSmartPointer<vtkTexture> filtered_texture(vtkImageData* image) {
 // The normal map holds the tangent-space normal (R, U, F) = normalize(-slope.x, slope.y, 1)
 // as colour n / 2 + 1/2 (VTK's tangent frame: T = R, B = N x T = U).
 BrickTextures bake_brick(const Vec2& size) {
-  const int w = std::clamp(static_cast<int>(std::ceil(size.x * kBrickTexelsPerUnit)), 1, kMaxBakedTexels);
-  const int h = std::clamp(static_cast<int>(std::ceil(size.y * kBrickTexelsPerUnit)), 1, kMaxBakedTexels);
+  const int w =
+      std::clamp(static_cast<int>(std::ceil(size.x * kBrickTexelsPerUnit)), 1, kMaxBakedTexels);
+  const int h =
+      std::clamp(static_cast<int>(std::ceil(size.y * kBrickTexelsPerUnit)), 1, kMaxBakedTexels);
   vtkNew<vtkImageData> albedo, normal;
   for (vtkImageData* image : {albedo.Get(), normal.Get()}) {
     image->SetDimensions(w, h, 1);

@@ -74,7 +74,8 @@ std::vector<const ScenePolygon*> polygons_of_texture(const Scene& scene, int tex
 bool add_texture_actors(const Scene& scene, vtkRenderer* renderer) {
   bool translucent = false;
   for (std::size_t t = 0; t < scene.textures.size(); ++t) {
-    const std::vector<const ScenePolygon*> polygons = polygons_of_texture(scene, static_cast<int>(t));
+    const std::vector<const ScenePolygon*> polygons =
+        polygons_of_texture(scene, static_cast<int>(t));
     if (polygons.empty()) continue;
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(outline_polydata(polygons));
@@ -185,7 +186,6 @@ void VtkSceneRenderer::add_lit_contents(const Scene& scene, const LayerContent& 
   m.light->SetColor(1.0, 1.0, 1.0);
   m.renderer->AddLight(m.light);
 }
-
 
 double VtkSceneRenderer::render(const ViewerPose& view) {
   Impl& m = *impl_;

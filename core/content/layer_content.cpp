@@ -198,21 +198,18 @@ ContentStats render_shaded(const LayerContent& content, const Camera& camera, co
 void add_box(std::vector<FacadeFace>& faces, double s0, double t0, double s1, double t1, double h0,
              double depth, FacadePart m) {
   const double h1 = h0 + depth;
-  faces.push_back({{Vec3(s0, t0, h1), Vec3(s1, t0, h1), Vec3(s1, t1, h1), Vec3(s0, t1, h1)},
-                   Vec3(0, 0, 1),
-                   m});
+  faces.push_back(
+      {{Vec3(s0, t0, h1), Vec3(s1, t0, h1), Vec3(s1, t1, h1), Vec3(s0, t1, h1)}, Vec3(0, 0, 1), m});
   faces.push_back({{Vec3(s0, t0, h0), Vec3(s0, t1, h0), Vec3(s0, t1, h1), Vec3(s0, t0, h1)},
                    Vec3(-1, 0, 0),
                    m});
-  faces.push_back({{Vec3(s1, t0, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s1, t0, h1)},
-                   Vec3(1, 0, 0),
-                   m});
+  faces.push_back(
+      {{Vec3(s1, t0, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s1, t0, h1)}, Vec3(1, 0, 0), m});
   faces.push_back({{Vec3(s0, t0, h0), Vec3(s1, t0, h0), Vec3(s1, t0, h1), Vec3(s0, t0, h1)},
                    Vec3(0, -1, 0),
                    m});
-  faces.push_back({{Vec3(s0, t1, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s0, t1, h1)},
-                   Vec3(0, 1, 0),
-                   m});
+  faces.push_back(
+      {{Vec3(s0, t1, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s0, t1, h1)}, Vec3(0, 1, 0), m});
 }
 
 // One window of a facade cell centred at (cs, ct) with cell size (cw, ch): glass, a frame
@@ -229,7 +226,8 @@ void add_window(std::vector<FacadeFace>& faces, double cs, double ct, double cw,
   add_box(faces, s0 - bar, t0 - bar, s1 + bar, t0, 0.0, fd, FacadePart::kFrame);
   add_box(faces, s0 - bar, t0, s0, t1, 0.0, fd, FacadePart::kFrame);
   add_box(faces, s1, t0, s1 + bar, t1, 0.0, fd, FacadePart::kFrame);
-  add_box(faces, s0 - 2 * bar, t0 - 2 * bar, s1 + 2 * bar, t0 - bar, 0.0, 0.15 * unit, FacadePart::kStone);
+  add_box(faces, s0 - 2 * bar, t0 - 2 * bar, s1 + 2 * bar, t0 - bar, 0.0, 0.15 * unit,
+          FacadePart::kStone);
   if (!balcony) return;
   const double b0 = cs - 0.4 * cw, b1 = cs + 0.4 * cw, base = ct - 0.5 * ch + 0.02 * ch;
   const double out = 0.45 * unit, rail = 0.35 * unit;
@@ -237,7 +235,8 @@ void add_window(std::vector<FacadeFace>& faces, double cs, double ct, double cw,
   add_box(faces, b0, base + rail, b1, base + rail + 0.5 * bar, out - bar, bar, FacadePart::kRail);
   for (int k = 0; k < 5; ++k) {
     const double s = b0 + (b1 - b0) * (k + 0.5) / 5.0;
-    add_box(faces, s - 0.25 * bar, base + bar, s + 0.25 * bar, base + rail, out - bar, bar, FacadePart::kRail);
+    add_box(faces, s - 0.25 * bar, base + bar, s + 0.25 * bar, base + rail, out - bar, bar,
+            FacadePart::kRail);
   }
 }
 
@@ -445,8 +444,8 @@ double shading_change(const LayerContent& content, const PlanePose& rendered,
     materials.clear();
     for (FacadePart part : kFacadeParts) materials.push_back(facade_material(part));
   }
-  const auto grey = [&](const PlaneFrame& f, const Vec3& facing, const ContentMaterial& m,
-                        double s, double t) {
+  const auto grey = [&](const PlaneFrame& f, const Vec3& facing, const ContentMaterial& m, double s,
+                        double t) {
     const Vec3 n = facing.x * f.right + facing.y * f.up + facing.z * f.front;
     ContentMaterial white = m;
     white.albedo = Vec3(1.0);

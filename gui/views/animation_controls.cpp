@@ -174,6 +174,7 @@ QWidget* AnimationControls::make_engine_row() {
   layout->addWidget(new QLabel(tr("Delta"), row));
   layout->addWidget(delta_box_);
   layout->addWidget(sampling_box_);
+  add_content_controls(row, layout);
   layout->addStretch(1);
   // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
   auto* threshold_row = new QWidget(this);
@@ -202,7 +203,6 @@ QWidget* AnimationControls::make_engine_row() {
     select_data(mode_box_, affine ? QStringLiteral("perspective") : QStringLiteral("affine"));
     emit settings_edited();
   });
-  add_content_controls(threshold_row, thresholds);
   thresholds->addStretch(1);
   set_settings(EngineSettings{});
   return threshold_row;

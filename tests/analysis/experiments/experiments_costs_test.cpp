@@ -41,7 +41,8 @@ TEST(CostSweep, BreakEvenInterpolatesWhereTimeSavedCrossesZero) {
 }
 
 TEST(CostSweep, FirstPointCostingFindsTheFirstDearEnoughContent) {
-  const CostScript s = script("a", "p", {point(1, 0), point(9.9, 0), point(15.5, 0), point(110, 0)});
+  const CostScript s =
+      script("a", "p", {point(1, 0), point(9.9, 0), point(15.5, 0), point(110, 0)});
   EXPECT_EQ(first_point_costing(s, 10.0), 2);
   EXPECT_EQ(first_point_costing(s, 1.0), 0);
   EXPECT_EQ(first_point_costing(s, 200.0), -1);

@@ -11,8 +11,8 @@
 
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
-#include "runs/source_kinds.h"
 #include "formats/viewer_script_file.h"
+#include "runs/source_kinds.h"
 #include "scene/scene_animator.h"
 
 namespace oflab {
