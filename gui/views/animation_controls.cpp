@@ -174,7 +174,6 @@ QWidget* AnimationControls::make_engine_row() {
   layout->addWidget(new QLabel(tr("Delta"), row));
   layout->addWidget(delta_box_);
   layout->addWidget(sampling_box_);
-  add_content_controls(row, layout);
   layout->addStretch(1);
   // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
   auto* threshold_row = new QWidget(this);
@@ -203,6 +202,7 @@ QWidget* AnimationControls::make_engine_row() {
     select_data(mode_box_, affine ? QStringLiteral("perspective") : QStringLiteral("affine"));
     emit settings_edited();
   });
+  add_content_controls(threshold_row, thresholds);
   thresholds->addStretch(1);
   set_settings(EngineSettings{});
   return threshold_row;
@@ -218,9 +218,10 @@ void AnimationControls::add_content_controls(QWidget* row, QHBoxLayout* layout) 
   quality_box_->setObjectName(QStringLiteral("animation_quality"));
   quality_box_->setRange(1, kMaxContentQuality);
   quality_box_->setKeyboardTracking(false);
-  layout->addWidget(new QLabel(tr("Content"), row));
+  // No labels: the entries name the contents and the spin box says "quality", so the row
+  // still fits a 1024-pixel window.
+  quality_box_->setPrefix(tr("quality "));
   layout->addWidget(content_box_);
-  layout->addWidget(new QLabel(tr("quality"), row));
   layout->addWidget(quality_box_);
   connect(content_box_, QOverload<int>::of(&QComboBox::activated), this,
           [this] { emit settings_edited(); });
