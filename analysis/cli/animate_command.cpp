@@ -23,15 +23,15 @@ namespace {
 // --repeat N: the script played at most this many times back to back.
 constexpr int kMaxRepeat = 1000000;
 
-constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional", "--near", "--guard-band",
-                                             "--no-skip-hidden"};
+constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
+                                             "--conventional-single-sample", "--near",
+                                             "--guard-band", "--no-skip-hidden"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
 void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,
                    std::ostream& out) {
   const int frames = j.at("frames");
-  out << "script " << script << ", mode " << policy.name << ", " << frames
-      << " frames\n";
+  out << "script " << script << ", mode " << policy.name << ", " << frames << " frames\n";
   for (int l = 0; l < kLevelCount; ++l) {
     const char* name = level_name(static_cast<Level>(l));
     const int count = j.at("levels").at(name);
@@ -138,6 +138,7 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                      {"--out", 1},           {"--force", 0},      {"--frames-png", 0},
                      {"--video", 1},         {"--fps", 1},        {"--json", 0},
                      {"--quiet", 0},         {"--scene", 1},      {"--compare-conventional", 0},
+                     {"--conventional-single-sample", 0},
                      {"--near", 1},          {"--guard-band", 1}, {"--no-skip-hidden", 0},
                      {"--epsilon", 1}});
     return animate(a, out, err);

@@ -73,6 +73,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const SceneSettings& settings = source.settings;
   PlayOptions options;
   options.conventional = a.has("--compare-conventional");
+  options.conventional_multisample = !a.has("--conventional-single-sample");
   const RunOutput output = read_run_output(a, err);
   const SourceKind& kind = source_kind("scene");
   output.apply_to(options, kind);
@@ -88,7 +89,8 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (a.has("--json")) {
     out << j.dump(2) << "\n";
   } else {
-    print_scene_summary(result, source.scene->name, source.viewer.name, *settings.engine.policy, out);
+    print_scene_summary(result, source.scene->name, source.viewer.name, *settings.engine.policy,
+                        out);
   }
   return 0;
 }

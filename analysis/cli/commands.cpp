@@ -32,7 +32,8 @@ std::string animate_usage() {
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
-      "               [--compare-conventional] [--near Z] [--guard-band G]\n"
+      "               [--compare-conventional [--conventional-single-sample]]\n"
+      "               [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
       "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --no-warm-up,\n"
@@ -45,7 +46,8 @@ std::string animate_usage() {
 std::string experiments_usage() {
   std::string only;
   for (const std::string& name : experiment_names()) only += (only.empty() ? "" : "|") + name;
-  return "oflab-cli experiments [--out DIR] [--only " + only + " ...] [--quick]\n"
+  return "oflab-cli experiments [--out DIR] [--only " + only +
+         " ...] [--quick]\n"
          "               [--videos mp4|gif|ogv] [--force]\n"
          "               (draws charts: needs an X display, e.g. xvfb-run -a)";
 }

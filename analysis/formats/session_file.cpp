@@ -55,6 +55,22 @@ PlaneScene read_plane(const json& plane, const std::string& origin) {
   return s;
 }
 
+// The layer content ("content", "content_quality"; sessions without them keep the texture).
+void read_content(const json& j, const Where& w, LayerContent* content) {
+  if (j.contains("content")) {
+    if (!parse_content(text(j, w, "content"), &content->kind)) {
+      w.fail("content", "one of " + content_name_list());
+    }
+  }
+  if (j.contains("content_quality")) {
+    const double q = number_field(j, w, "content_quality");
+    if (q < 1 || q > kMaxContentQuality || q != std::floor(q)) {
+      w.fail("content_quality", "must be a whole number in 1.." + std::to_string(kMaxContentQuality));
+    }
+    content->quality = static_cast<int>(q);
+  }
+}
+
 EngineSettings read_settings(const json& j, const Where& w) {
   EngineSettings s;
   s.policy = find_reuse_policy(text(j, w, "mode"));
@@ -71,6 +87,7 @@ EngineSettings read_settings(const json& j, const Where& w) {
   if (!parse_sampling(text(j, w, "sampling"), &s.sampling)) {
     w.fail("sampling", "one of " + sampling_name_list());
   }
+  read_content(j, w, &s.content);
   return s;
 }
 
@@ -125,6 +142,8 @@ std::string session_to_json(const Session& s) {
                                   s.settings.thresholds[2], s.settings.thresholds[3]})},
       {"delta", delta_policy_name(s.settings.delta)},
       {"sampling", sampling_name(s.settings.sampling)},
+      {"content", content_name(s.settings.content.kind)},
+      {"content_quality", s.settings.content.quality},
       {"display", s.display},
       {"exact_renderer", s.exact_renderer}};
   j["frame"] = s.frame;

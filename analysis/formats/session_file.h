@@ -1,6 +1,7 @@
 // Saving and loading the whole session of the window as JSON ("oflab-session", version 1):
 // the plane scene (camera, pose, motion), the motion script, the texture file, the
-// animation view's source, engine settings, display and exact renderer, the frame and the view in front,
+// animation view's source, engine settings (with the layer content and its quality), display
+// and exact renderer, the frame and the view in front,
 // and the window's state (flow view options, basis, presentation mode, lesson, play rate).
 // A file format like the scripts and scenes, read with formats/json_fields.h; the GUI
 // captures and applies sessions (gui/app/session_io.h).
@@ -55,7 +56,8 @@ std::string session_to_json(const Session& session);
 
 // Parses session text; `origin` names the source in errors. Checks the format tag, the
 // version, types, finite numbers of magnitude at most 1e6, a drawable plane
-// (plane_scene_problem), non-negative thresholds and known names; the files it names and the
+// (plane_scene_problem), non-negative thresholds, a content quality in
+// 1..kMaxContentQuality (files without "content" or "content_quality" get the texture, 1) and known names; the files it names and the
 // source kind are checked when the session is applied.
 Session parse_session(const std::string& text, const std::string& origin);
 

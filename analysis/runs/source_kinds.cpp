@@ -135,7 +135,9 @@ AnimationRun play_scene(const RunSource& source, const PlayOptions& options) {
   std::unique_ptr<VtkSceneRenderer> conventional;
   if (options.conventional) {
     conventional = std::make_unique<VtkSceneRenderer>(*source.scene, source.viewer.camera,
-                                                      source.settings.near);
+                                                      source.settings.near,
+                                                      source.settings.engine.content,
+                                                      options.conventional_multisample);
   }
   AnimationRun run = run_animator(*animator, baseline.get(), conventional.get(), options);
   const BspStats bsp = animator->renderer().bsp().stats();

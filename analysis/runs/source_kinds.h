@@ -38,6 +38,9 @@ struct RunSource {
 struct PlayOptions : RunOptions {
   bool baseline = true;       // run the exact re-render in the same loop (time, work, PSNR)
   bool conventional = false;  // scenes: the VTK renderer too (needs an X display)
+  // The VTK renderer multisamples frames with shaded contents at their samples per pixel
+  // (analysis/runs/vtk_scene_renderer.h); false: one sample per pixel.
+  bool conventional_multisample = true;
 };
 
 struct SourceKind {

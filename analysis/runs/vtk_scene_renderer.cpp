@@ -6,6 +6,7 @@
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
+#include <vtkLight.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -24,6 +25,7 @@
 #include <stdexcept>
 
 #include "report/charts.h"
+#include "runs/vtk_content_actors.h"
 
 namespace oflab {
 namespace {
@@ -58,40 +60,48 @@ bool has_translucency(const Image& image) {
   return false;
 }
 
-// The polygons of one texture as polydata: world points, one cell per polygon, texture
-// coordinates (s, t) = (u, 1 - v).
-vtkSmartPointer<vtkPolyData> polygons_of_texture(const Scene& scene, int texture) {
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkFloatArray> tcoords;
-  tcoords->SetNumberOfComponents(2);
+// The texture-content polygons of one texture.
+std::vector<const ScenePolygon*> polygons_of_texture(const Scene& scene, int texture) {
+  std::vector<const ScenePolygon*> out;
   for (const ScenePolygon& p : scene.polygons) {
-    if (p.texture != texture) continue;
-    const std::vector<Vec2> outline = polygon_outline(p);
-    const std::vector<Vec3> vertices = polygon_vertices(p);
-    // VTK's polygons are counter-clockwise seen from their front; the outline's order in
-    // (u, v) with v down may be either way.
-    double turn = 0.0;
-    for (std::size_t k = 0; k < outline.size(); ++k) {
-      const Vec2& a = outline[k];
-      const Vec2& b = outline[(k + 1) % outline.size()];
-      turn += a.x * b.y - b.x * a.y;
-    }
-    // In (u, v-down) a positive shoelace sum is clockwise on the texture as seen from the
-    // front, so the order is reversed for VTK.
-    const bool reverse = turn > 0.0;
-    cells->InsertNextCell(static_cast<vtkIdType>(vertices.size()));
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      const std::size_t k = reverse ? vertices.size() - 1 - i : i;
-      cells->InsertCellPoint(points->InsertNextPoint(vertices[k].x, vertices[k].y, vertices[k].z));
-      tcoords->InsertNextTuple2(outline[k].x, 1.0 - outline[k].y);
-    }
+    if (p.texture == texture && p.content == ContentKind::kTexture) out.push_back(&p);
   }
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  data->SetPolys(cells);
-  data->GetPointData()->SetTCoords(tcoords);
-  return data;
+  return out;
+}
+
+// One unlit, textured actor per texture with the texture-content polygons it carries; true
+// when a drawn texture has translucent texels.
+bool add_texture_actors(const Scene& scene, vtkRenderer* renderer) {
+  bool translucent = false;
+  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+    const std::vector<const ScenePolygon*> polygons =
+        polygons_of_texture(scene, static_cast<int>(t));
+    if (polygons.empty()) continue;
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(outline_polydata(polygons));
+    vtkNew<vtkTexture> texture;
+    texture->SetInputData(texture_image(scene.textures[t]));
+    texture->InterpolateOff();  // nearest texel, as the engine's point sampling
+    texture->MipmapOff();
+    texture->RepeatOff();
+    texture->EdgeClampOn();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->SetTexture(texture);
+    actor->GetProperty()->LightingOff();  // the texture's colour, unshaded
+    actor->GetProperty()->BackfaceCullingOn();
+    renderer->AddActor(actor);
+    translucent = translucent || has_translucency(scene.textures[t]);
+  }
+  return translucent;
+}
+
+// Samples per pixel of the frame: the shaded contents' samples per pixel (0: none).
+int multisamples(const Scene& scene, const LayerContent& content) {
+  bool shaded = false;
+  for (const ScenePolygon& p : scene.polygons) shaded = shaded || p.content == ContentKind::kShaded;
+  const int samples = scene.content_quality > 0 ? scene.content_quality : content.quality;
+  return shaded && samples > 1 ? samples : 0;
 }
 
 }  // namespace
@@ -105,13 +115,16 @@ struct VtkSceneRenderer::Impl {
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkUnsignedCharArray> pixels;
+  vtkNew<vtkLight> light;
+  Vec3 towards_light{0.0, 0.0, -1.0};  // viewer frame, unit
   Camera camera;
   double near = 0.05;
   Vec3 scene_centre{0.0};
   double scene_radius = 1.0;
 };
 
-VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, double near)
+VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, double near,
+                                   const LayerContent& content, bool multisample)
     : impl_(std::make_unique<Impl>()) {
   if (!display_available()) {
     throw std::runtime_error(
@@ -120,24 +133,8 @@ VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, dou
   Impl& m = *impl_;
   m.camera = camera;
   m.near = near;
-  bool translucent = false;
-  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(polygons_of_texture(scene, static_cast<int>(t)));
-    vtkNew<vtkTexture> texture;
-    texture->SetInputData(texture_image(scene.textures[t]));
-    texture->InterpolateOff();  // nearest texel, as the engine's point sampling
-    texture->MipmapOff();
-    texture->RepeatOff();
-    texture->EdgeClampOn();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->SetTexture(texture);
-    actor->GetProperty()->LightingOff();  // the texture's colour, unshaded
-    actor->GetProperty()->BackfaceCullingOn();
-    m.renderer->AddActor(actor);
-    translucent = translucent || has_translucency(scene.textures[t]);
-  }
+  const bool translucent = add_texture_actors(scene, m.renderer);
+  add_lit_contents(scene, content);
   // Bounding sphere of the scene for the far clipping plane.
   Vec3 lo(1e300), hi(-1e300);
   for (const ScenePolygon& p : scene.polygons) {
@@ -162,7 +159,7 @@ VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, dou
   // would abort the process if a busy X server refused the connection.
   m.window->SetDisplayId(shared_x_display());
   m.window->SetOffScreenRendering(1);
-  m.window->SetMultiSamples(0);
+  m.window->SetMultiSamples(multisample ? multisamples(scene, content) : 0);
   m.window->SetAlphaBitPlanes(1);
   m.window->SetSize(camera.width, camera.height);
   m.window->AddRenderer(m.renderer);
@@ -172,6 +169,23 @@ VtkSceneRenderer::VtkSceneRenderer(const Scene& scene, const Camera& camera, dou
 }
 
 VtkSceneRenderer::~VtkSceneRenderer() = default;
+
+void VtkSceneRenderer::add_lit_contents(const Scene& scene, const LayerContent& content) {
+  Impl& m = *impl_;
+  m.renderer->AutomaticLightCreationOff();
+  if (!scene_has_lit_content(scene)) return;
+  const std::string problem = content_problem(content);
+  if (!problem.empty()) throw std::invalid_argument("VtkSceneRenderer: content " + problem);
+  LayerContent lit = content;
+  if (scene.content_quality > 0) lit.quality = scene.content_quality;
+  add_content_actors(scene, lit, m.renderer);
+  m.towards_light = glm::normalize(content.light);
+  m.light->SetLightTypeToSceneLight();
+  m.light->PositionalOff();
+  m.light->SetIntensity(1.0);
+  m.light->SetColor(1.0, 1.0, 1.0);
+  m.renderer->AddLight(m.light);
+}
 
 double VtkSceneRenderer::render(const ViewerPose& view) {
   Impl& m = *impl_;
@@ -184,6 +198,11 @@ double VtkSceneRenderer::render(const ViewerPose& view) {
   camera->SetPosition(eye.x, eye.y, eye.z);
   camera->SetFocalPoint(eye.x + forward.x, eye.y + forward.y, eye.z + forward.z);
   camera->SetViewUp(up.x, up.y, up.z);
+  // The light is fixed to the viewer (core/content/layer_content.h): it shines from
+  // towards_light, turned into the world with the viewer.
+  const Vec3 from = eye + to_world * m.towards_light;
+  m.light->SetPosition(from.x, from.y, from.z);
+  m.light->SetFocalPoint(eye.x, eye.y, eye.z);
   const double far = glm::length(eye - m.scene_centre) + m.scene_radius;
   camera->SetClippingRange(m.near, std::max(far, 2.0 * m.near));
   m.window->Render();

@@ -1,7 +1,8 @@
 // The conventional baseline of Experiment 2 (dissertation section 6.7.2): the same scene
 // rendered from scratch every frame by VTK's OpenGL pipeline (textured polygons, depth
-// buffer, backface culling, nearest-texel sampling), offscreen, with the camera of
-// core/flow/camera.h. VTK stays behind this interface.
+// buffer, backface culling, nearest-texel sampling; lit contents as their geometry and
+// materials), offscreen, with the camera of core/flow/camera.h. VTK stays behind this
+// interface.
 //
 // Camera. The VTK camera sits at the viewer's eye, looks along the viewer's +Z and has the
 // viewer's -Y as its view-up, so that image rows grow with Y as in core/flow/camera.h; its
@@ -26,10 +27,18 @@ namespace oflab {
 
 class VtkSceneRenderer {
  public:
-  // Builds one textured vtkPolyData actor per scene texture. `scene` is copied into VTK's
-  // structures and need not outlive the renderer. Throws std::runtime_error without a
-  // display or when VTK cannot create an OpenGL context.
-  VtkSceneRenderer(const Scene& scene, const Camera& camera, double near);
+  // Builds one textured vtkPolyData actor per scene texture for the polygons of texture
+  // content, and the actors of the lit contents (analysis/runs/vtk_content_actors.h: the
+  // impostors' facade geometry, the shaded brick) with `content`'s light and quality (the
+  // scene's content_quality when it gives one), lit by a directional light fixed to the
+  // viewer as the engine's. With `multisample`, a scene with shaded polygons at more than one
+  // sample per pixel is multisampled with that many samples (OpenGL rounds up to a supported
+  // count), as the engine supersamples them; otherwise one sample per pixel. `scene`
+  // is copied into VTK's structures and need not outlive the renderer. Throws
+  // std::runtime_error without a display or when VTK cannot create an OpenGL context, and
+  // std::invalid_argument for a lit scene with an invalid content (content_problem).
+  VtkSceneRenderer(const Scene& scene, const Camera& camera, double near,
+                   const LayerContent& content = LayerContent{}, bool multisample = false);
   ~VtkSceneRenderer();
   VtkSceneRenderer(const VtkSceneRenderer&) = delete;
   VtkSceneRenderer& operator=(const VtkSceneRenderer&) = delete;
@@ -43,6 +52,7 @@ class VtkSceneRenderer {
   const Image& image() const { return image_; }
 
  private:
+  void add_lit_contents(const Scene& scene, const LayerContent& content);
   struct Impl;
   std::unique_ptr<Impl> impl_;
   Image image_;

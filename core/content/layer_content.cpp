@@ -28,30 +28,16 @@ constexpr Named kNames[] = {{ContentKind::kTexture, "texture"},
                             {ContentKind::kShaded, "shaded"},
                             {ContentKind::kImpostor, "impostor"}};
 
-// A Blinn-Phong material: colour = albedo (ambient + diffuse (N.L)+) + specular (N.H)+^shininess.
-struct Material {
-  Vec3 albedo{1.0};
-  double specular = 0.0;
-  double shininess = 1.0;
-};
-constexpr double kAmbient = 0.25;
-constexpr double kDiffuse = 0.75;
-
-const Material kBrick{{0.62, 0.27, 0.18}, 0.15, 16.0};
-const Material kMortar{{0.66, 0.64, 0.60}, 0.05, 8.0};
-const Material kWall{{0.80, 0.68, 0.52}, 0.10, 16.0};
-const Material kFrame{{0.93, 0.93, 0.90}, 0.20, 32.0};
-const Material kGlass{{0.15, 0.22, 0.30}, 0.60, 64.0};
-const Material kStone{{0.70, 0.70, 0.68}, 0.10, 16.0};
-const Material kRail{{0.20, 0.20, 0.22}, 0.40, 32.0};
+const ContentMaterial kBrick{{0.62, 0.27, 0.18}, 0.15, 16.0};
+const ContentMaterial kMortar{{0.66, 0.64, 0.60}, 0.05, 8.0};
 
 // Linear colour (unclamped) of `m` at viewer-frame point x with unit normal n, light l (unit).
-Vec3 lit(const Material& m, const Vec3& n, const Vec3& x, const Vec3& l) {
+Vec3 lit(const ContentMaterial& m, const Vec3& n, const Vec3& x, const Vec3& l) {
   const Vec3 v = glm::normalize(-x);
   const Vec3 h = glm::normalize(l + v);
   const double diffuse = std::max(0.0, glm::dot(n, l));
   const double spec = diffuse > 0.0 ? std::pow(std::max(0.0, glm::dot(n, h)), m.shininess) : 0.0;
-  return m.albedo * (kAmbient + kDiffuse * diffuse) + Vec3(m.specular * spec);
+  return m.albedo * (kContentAmbient + kContentDiffuse * diffuse) + Vec3(m.specular * spec);
 }
 
 std::uint8_t to_byte(double c) {
@@ -131,26 +117,20 @@ double unit_hash(int a, int b) {
   return (h & 0xffffu) / 65535.0;
 }
 
-// The brick material at (x, y), world units right and down from the plane's top-left corner:
-// running bond of 0.2 x 0.07 bricks, 0.016 wide mortar joints, 0.02 wide bevels whose slope
-// tilts the normal towards the joint.
-struct BrickSample {
-  Material material;
-  Vec2 slope{0.0};  // surface slope along +u and +v
-};
+}  // namespace
 
-BrickSample brick_at(double u, double v) {
+BrickSample brick_at(double x, double y) {
   constexpr double kW = 0.2, kH = 0.07, kHalfJoint = 0.008, kBevel = 0.02;
-  const int row = static_cast<int>(std::floor(v / kH));
-  const double shifted = u + ((row & 1) ? 0.5 * kW : 0.0);
+  const int row = static_cast<int>(std::floor(y / kH));
+  const double shifted = x + ((row & 1) ? 0.5 * kW : 0.0);
   const int col = static_cast<int>(std::floor(shifted / kW));
-  const double lu = shifted - col * kW, lv = v - row * kH;
+  const double lu = shifted - col * kW, lv = y - row * kH;
   const double du = std::min(lu, kW - lu), dv = std::min(lv, kH - lv);
   if (std::min(du, dv) < kHalfJoint) return {kMortar, Vec2(0.0)};
   BrickSample s{kBrick, Vec2(0.0)};
   const double tint = (0.8 + 0.4 * unit_hash(row, col)) *
-                      (0.92 + 0.16 * unit_hash(static_cast<int>(std::floor(200.0 * u)),
-                                               static_cast<int>(std::floor(200.0 * v))));
+                      (0.92 + 0.16 * unit_hash(static_cast<int>(std::floor(200.0 * x)),
+                                               static_cast<int>(std::floor(200.0 * y))));
   s.material.albedo *= tint;
   if (du - kHalfJoint < kBevel)
     s.slope.x = (lu < 0.5 * kW ? 1.0 : -1.0) * 0.8 * (1.0 - (du - kHalfJoint) / kBevel);
@@ -158,6 +138,8 @@ BrickSample brick_at(double u, double v) {
     s.slope.y = (lv < 0.5 * kH ? 1.0 : -1.0) * 0.8 * (1.0 - (dv - kHalfJoint) / kBevel);
   return s;
 }
+
+namespace {
 
 // Straight colour of one shaded sample, or false when the ray misses the texel region.
 bool shade_sample(const PlaneFrame& f, const Vec3& plane_vector, const ConvexPolygon& texels,
@@ -211,68 +193,63 @@ ContentStats render_shaded(const LayerContent& content, const Camera& camera, co
 
 // ---- The facade impostor ----
 
-struct Face {
-  std::array<Vec3, 4> corners;  // plane coordinates (s, t, h), any winding
-  Vec3 normal;                  // plane coordinates, unit, outwards
-  const Material* material;
-};
-
 // The five visible faces of a box [s0, s1] x [t0, t1] x [0, depth] standing on the wall
 // (its back lies on the wall and is never seen), offset by h0 from the wall.
-void add_box(std::vector<Face>& faces, double s0, double t0, double s1, double t1, double h0,
-             double depth, const Material& m) {
+void add_box(std::vector<FacadeFace>& faces, double s0, double t0, double s1, double t1, double h0,
+             double depth, FacadePart m) {
   const double h1 = h0 + depth;
-  faces.push_back({{Vec3(s0, t0, h1), Vec3(s1, t0, h1), Vec3(s1, t1, h1), Vec3(s0, t1, h1)},
-                   Vec3(0, 0, 1),
-                   &m});
+  faces.push_back(
+      {{Vec3(s0, t0, h1), Vec3(s1, t0, h1), Vec3(s1, t1, h1), Vec3(s0, t1, h1)}, Vec3(0, 0, 1), m});
   faces.push_back({{Vec3(s0, t0, h0), Vec3(s0, t1, h0), Vec3(s0, t1, h1), Vec3(s0, t0, h1)},
                    Vec3(-1, 0, 0),
-                   &m});
-  faces.push_back({{Vec3(s1, t0, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s1, t0, h1)},
-                   Vec3(1, 0, 0),
-                   &m});
+                   m});
+  faces.push_back(
+      {{Vec3(s1, t0, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s1, t0, h1)}, Vec3(1, 0, 0), m});
   faces.push_back({{Vec3(s0, t0, h0), Vec3(s1, t0, h0), Vec3(s1, t0, h1), Vec3(s0, t0, h1)},
                    Vec3(0, -1, 0),
-                   &m});
-  faces.push_back({{Vec3(s0, t1, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s0, t1, h1)},
-                   Vec3(0, 1, 0),
-                   &m});
+                   m});
+  faces.push_back(
+      {{Vec3(s0, t1, h0), Vec3(s1, t1, h0), Vec3(s1, t1, h1), Vec3(s0, t1, h1)}, Vec3(0, 1, 0), m});
 }
 
 // One window of a facade cell centred at (cs, ct) with cell size (cw, ch): glass, a frame
 // of four bars, a sill, and with `balcony` a slab, a top rail and five posts.
-void add_window(std::vector<Face>& faces, double cs, double ct, double cw, double ch,
+void add_window(std::vector<FacadeFace>& faces, double cs, double ct, double cw, double ch,
                 bool balcony) {
   const double unit = std::min(cw, ch), ww = 0.25 * cw, wh = 0.3 * ch, bar = 0.06 * unit;
   const double s0 = cs - ww, s1 = cs + ww, t0 = ct - wh, t1 = ct + wh, lift = 0.004 * unit;
   faces.push_back({{Vec3(s0, t0, lift), Vec3(s1, t0, lift), Vec3(s1, t1, lift), Vec3(s0, t1, lift)},
                    Vec3(0, 0, 1),
-                   &kGlass});
+                   FacadePart::kGlass});
   const double fd = 0.05 * unit;
-  add_box(faces, s0 - bar, t1, s1 + bar, t1 + bar, 0.0, fd, kFrame);
-  add_box(faces, s0 - bar, t0 - bar, s1 + bar, t0, 0.0, fd, kFrame);
-  add_box(faces, s0 - bar, t0, s0, t1, 0.0, fd, kFrame);
-  add_box(faces, s1, t0, s1 + bar, t1, 0.0, fd, kFrame);
-  add_box(faces, s0 - 2 * bar, t0 - 2 * bar, s1 + 2 * bar, t0 - bar, 0.0, 0.15 * unit, kStone);
+  add_box(faces, s0 - bar, t1, s1 + bar, t1 + bar, 0.0, fd, FacadePart::kFrame);
+  add_box(faces, s0 - bar, t0 - bar, s1 + bar, t0, 0.0, fd, FacadePart::kFrame);
+  add_box(faces, s0 - bar, t0, s0, t1, 0.0, fd, FacadePart::kFrame);
+  add_box(faces, s1, t0, s1 + bar, t1, 0.0, fd, FacadePart::kFrame);
+  add_box(faces, s0 - 2 * bar, t0 - 2 * bar, s1 + 2 * bar, t0 - bar, 0.0, 0.15 * unit,
+          FacadePart::kStone);
   if (!balcony) return;
   const double b0 = cs - 0.4 * cw, b1 = cs + 0.4 * cw, base = ct - 0.5 * ch + 0.02 * ch;
   const double out = 0.45 * unit, rail = 0.35 * unit;
-  add_box(faces, b0, base, b1, base + bar, 0.0, out, kStone);
-  add_box(faces, b0, base + rail, b1, base + rail + 0.5 * bar, out - bar, bar, kRail);
+  add_box(faces, b0, base, b1, base + bar, 0.0, out, FacadePart::kStone);
+  add_box(faces, b0, base + rail, b1, base + rail + 0.5 * bar, out - bar, bar, FacadePart::kRail);
   for (int k = 0; k < 5; ++k) {
     const double s = b0 + (b1 - b0) * (k + 0.5) / 5.0;
-    add_box(faces, s - 0.25 * bar, base + bar, s + 0.25 * bar, base + rail, out - bar, bar, kRail);
+    add_box(faces, s - 0.25 * bar, base + bar, s + 0.25 * bar, base + rail, out - bar, bar,
+            FacadePart::kRail);
   }
 }
 
-std::vector<Face> facade_faces(const PlanePose& pose, int detail) {
+}  // namespace
+
+std::vector<FacadeFace> facade_faces(const Vec2& size, int detail) {
   const int storeys = 1 + detail, bays = 1 + 2 * detail;
-  const double w = pose.size.x, h = pose.size.y, cw = w / bays, ch = h / storeys;
-  std::vector<Face> faces;
+  const double w = size.x, h = size.y, cw = w / bays, ch = h / storeys;
+  std::vector<FacadeFace> faces;
   faces.push_back({{Vec3(-0.5 * w, -0.5 * h, 0), Vec3(0.5 * w, -0.5 * h, 0),
                     Vec3(0.5 * w, 0.5 * h, 0), Vec3(-0.5 * w, 0.5 * h, 0)},
                    Vec3(0, 0, 1),
-                   &kWall});
+                   FacadePart::kWall});
   for (int st = 0; st < storeys; ++st) {
     for (int b = 0; b < bays; ++b) {
       add_window(faces, -0.5 * w + (b + 0.5) * cw, -0.5 * h + (st + 0.5) * ch, cw, ch, st % 2 == 1);
@@ -280,6 +257,8 @@ std::vector<Face> facade_faces(const PlanePose& pose, int detail) {
   }
   return faces;
 }
+
+namespace {
 
 // Keeps the part of a viewer-frame polygon at Z >= z_min (Sutherland-Hodgman).
 std::vector<Vec3> clip_near(const std::vector<Vec3>& in, double z_min) {
@@ -310,7 +289,7 @@ ConvexPolygon clip_to_region(ConvexPolygon polygon, const ConvexPolygon& region)
 }
 
 // Rasterises one face into the layer with the depth buffer (1/Z, larger is nearer).
-void draw_face(const Face& face, const PlaneFrame& f, const Vec3& light, const LayerBox& box,
+void draw_face(const FacadeFace& face, const PlaneFrame& f, const Vec3& light, const LayerBox& box,
                const ConvexPolygon& region, std::vector<float>& depth, WarpedLayer& out,
                ContentStats& stats) {
   std::vector<Vec3> world;
@@ -329,7 +308,7 @@ void draw_face(const Face& face, const PlaneFrame& f, const Vec3& light, const L
   if (shape.empty()) return;
   Vec3 centre(0.0);
   for (const Vec3& p : world) centre += 0.25 * p;
-  const Vec3 c = lit(*face.material, n, centre, light);
+  const Vec3 c = lit(facade_material(face.part), n, centre, light);
   const Pixel colour{to_byte(c.r), to_byte(c.g), to_byte(c.b), 255};
   // 1/Z along the ray (x, y, 1) of the face's plane n.X = e is n.(x, y, 1) / e: affine in pixels.
   const double e = glm::dot(n, world[0]), k = 1.0 / (f.camera.focal_px * e);
@@ -357,7 +336,7 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   const Vec3 light = glm::normalize(content.light);
   std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
   ContentStats stats;
-  for (const Face& face : facade_faces(pose, content.quality)) {
+  for (const FacadeFace& face : facade_faces(pose.size, content.quality)) {
     draw_face(face, f, light, box, out.layer.polygon, depth, out, stats);
   }
   for (const Pixel& p : out.layer.image.pixels()) stats.pixels_written += p.a ? 1 : 0;
@@ -382,6 +361,12 @@ bool parse_content(const std::string& text, ContentKind* kind) {
     }
   }
   return false;
+}
+
+std::vector<ContentKind> content_kinds() {
+  std::vector<ContentKind> out;
+  for (const Named& n : kNames) out.push_back(n.kind);
+  return out;
 }
 
 std::string content_name_list(const std::string& separator) {
@@ -418,6 +403,22 @@ ContentStats render_content(const LayerContent& content, const Camera& camera,
   throw std::invalid_argument("render_content: texture content is drawn by a warp");
 }
 
+ContentMaterial facade_material(FacadePart part) {
+  switch (part) {
+    case FacadePart::kWall:
+      return {{0.80, 0.68, 0.52}, 0.10, 16.0};
+    case FacadePart::kGlass:
+      return {{0.15, 0.22, 0.30}, 0.60, 64.0};
+    case FacadePart::kFrame:
+      return {{0.93, 0.93, 0.90}, 0.20, 32.0};
+    case FacadePart::kStone:
+      return {{0.70, 0.70, 0.68}, 0.10, 16.0};
+    case FacadePart::kRail:
+      break;
+  }
+  return {{0.20, 0.20, 0.22}, 0.40, 32.0};
+}
+
 double content_unit_cost(ContentKind kind) {
   switch (kind) {
     case ContentKind::kShaded:
@@ -437,15 +438,16 @@ double shading_change(const LayerContent& content, const PlanePose& rendered,
   const PlaneFrame a(unused, rendered), b(unused, now);
   const Vec3 light = glm::normalize(content.light);
   std::vector<Vec3> facings = {Vec3(0, 0, 1)};
-  std::vector<const Material*> materials = {&kBrick, &kMortar};
+  std::vector<ContentMaterial> materials = {kBrick, kMortar};
   if (content.kind == ContentKind::kImpostor) {
     facings = {Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)};
-    materials = {&kWall, &kFrame, &kGlass, &kStone, &kRail};
+    materials.clear();
+    for (FacadePart part : kFacadeParts) materials.push_back(facade_material(part));
   }
-  const auto grey = [&](const PlaneFrame& f, const Vec3& facing, const Material& m, double s,
+  const auto grey = [&](const PlaneFrame& f, const Vec3& facing, const ContentMaterial& m, double s,
                         double t) {
     const Vec3 n = facing.x * f.right + facing.y * f.up + facing.z * f.front;
-    Material white = m;
+    ContentMaterial white = m;
     white.albedo = Vec3(1.0);
     return 255.0 * std::clamp(lit(white, n, f.point(s, t), light).x, 0.0, 1.0);
   };
@@ -454,8 +456,8 @@ double shading_change(const LayerContent& content, const PlanePose& rendered,
     for (int j = 0; j < 5; ++j) {
       const double s = (i / 4.0 - 0.5) * rendered.size.x, t = (j / 4.0 - 0.5) * rendered.size.y;
       for (const Vec3& facing : facings) {
-        for (const Material* m : materials) {
-          worst = std::max(worst, std::abs(grey(a, facing, *m, s, t) - grey(b, facing, *m, s, t)));
+        for (const ContentMaterial& m : materials) {
+          worst = std::max(worst, std::abs(grey(a, facing, m, s, t) - grey(b, facing, m, s, t)));
         }
       }
     }

@@ -20,8 +20,10 @@
 // patterns are laid out in world units (bricks 0.2 x 0.07; the facade divides the plane).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "flow/camera.h"
 #include "flow/plane.h"
@@ -36,6 +38,8 @@ enum class ContentKind { kTexture, kShaded, kImpostor };
 const char* content_name(ContentKind kind);
 // Parses a name above; false (and *kind untouched) for anything else.
 bool parse_content(const std::string& text, ContentKind* kind);
+// Every kind, in the order above (the registry the CLI, the GUI and help texts read).
+std::vector<ContentKind> content_kinds();
 // The names joined by `separator`, in the order above.
 std::string content_name_list(const std::string& separator = ", ");
 
@@ -50,6 +54,54 @@ struct LayerContent {
   // by default up, left and behind the viewer.
   Vec3 light{-0.4, -0.6, -1.0};
 };
+
+// A Blinn-Phong material of the lit contents. The linear colour of a surface point x
+// (viewer frame) with unit normal N, seen from the eye at the origin under the unit light
+// direction L, is albedo (kContentAmbient + kContentDiffuse (N.L)+) + specular (N.H)^shininess
+// with H = normalize(L - x / |x|), the specular term only where N.L > 0.
+struct ContentMaterial {
+  Vec3 albedo{1.0};  // linear RGB, 0 .. 1
+  double specular = 0.0;
+  double shininess = 1.0;
+};
+constexpr double kContentAmbient = 0.25;
+constexpr double kContentDiffuse = 0.75;
+
+// The shaded content's brick at (x, y), world units right and down from the plane's top-left
+// corner: a running bond of 0.2 x 0.07 bricks with 0.016 wide mortar joints, each brick's
+// albedo tinted by a hash of its row and column and a finer grain, and 0.02 wide bevels
+// whose slope tilts the normal towards the joint. `slope` is the surface's rise along +x and
+// +y (dimensionless, |slope| <= 0.8 per axis): the shading normal is
+// normalize(front - slope.x right + slope.y up) in the plane's axes.
+struct BrickSample {
+  ContentMaterial material;
+  Vec2 slope{0.0};
+};
+BrickSample brick_at(double x, double y);
+
+// The parts of the facade impostor, each with its material.
+enum class FacadePart { kWall, kGlass, kFrame, kStone, kRail };
+constexpr std::array<FacadePart, 5> kFacadeParts = {FacadePart::kWall, FacadePart::kGlass,
+                                                    FacadePart::kFrame, FacadePart::kStone,
+                                                    FacadePart::kRail};
+ContentMaterial facade_material(FacadePart part);
+
+// One quadrilateral face of the facade impostor, in plane coordinates (s, t, h): world
+// units right and up from the plane's centre and out of its front (h >= 0; the wall is
+// h = 0). Corners in order around the face, either winding; `normal` is unit and outward
+// (the face is seen only from the side it points to).
+struct FacadeFace {
+  std::array<Vec3, 4> corners;
+  Vec3 normal;
+  FacadePart part;
+};
+
+// The geometry the impostor content draws for a plane of `size` (world units, both > 0) at
+// detail `detail` (1 .. kMaxContentQuality): the wall, then per cell of 1 + detail storeys
+// and 1 + 2 detail bays a window (glass, four frame bars, a stone sill) and on every second
+// storey a balcony (a stone slab, a rail and five posts); boxes are five faces (their back
+// lies on the wall). The same faces render_content rasterises, for other renderers to draw.
+std::vector<FacadeFace> facade_faces(const Vec2& size, int detail);
 
 // Empty when the content can be rendered; else a one-line reason naming the field
 // ("quality" out of 1 .. kMaxContentQuality, "light" zero or not finite).

@@ -99,8 +99,9 @@ class Animator {
   // What is animated, as a scene seen by a viewer: the exact projection of the current
   // frame is `scene()` seen from `view()` with camera(). A single plane is the polygon of
   // its frame-0 pose with the viewer frame of frame 0 as the world (plane_as_scene), its
-  // content kind that of the engine settings (EngineSettings::content), so a scene animator
-  // re-rendering scene() with the same settings draws what the engine's re-renders draw.
+  // polygon showing the engine's content (EngineSettings::content kind and quality), so a
+  // scene animator re-rendering scene() with the same settings draws what the engine's
+  // re-renders draw.
   virtual const Scene& scene() const = 0;
   virtual ViewerPose view() const = 0;
 };

@@ -23,8 +23,10 @@ class PlaneScriptAnimator final : public Animator {
         settings_(settings),
         scene_(plane_as_scene(script.frames.at(0).pose, texture)),
         image_(script.camera.width, script.camera.height) {
-    // The polygon draws what the engine's re-renders draw (a lit content, or the texture).
-    scene_.polygons.front().content = settings.content.kind;
+    // The plane's polygon shows the engine's content, so that an exact renderer of scene()
+    // draws what a re-render draws.
+    scene_.polygons[0].content = settings.content.kind;
+    scene_.content_quality = settings.content.quality;
   }
 
   int frame_count() const override { return static_cast<int>(script_.frames.size()) * repeat_; }

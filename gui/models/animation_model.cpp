@@ -84,6 +84,11 @@ bool AnimationModel::set_settings(const EngineSettings& settings) {
       return false;
     }
   }
+  const std::string content = content_problem(settings.content);
+  if (!content.empty()) {
+    emit input_rejected(tr("content: %1").arg(QString::fromStdString(content)));
+    return false;
+  }
   if (!rebuild(source_, settings)) return false;
   emit source_changed();
   return true;

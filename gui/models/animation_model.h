@@ -44,8 +44,12 @@ class AnimationModel : public QObject {
   // read or played is refused with input_rejected and the current one keeps playing.
   bool set_source(const SourceChoice& choice);
   // Applies engine settings (re-running to the current frame). Refused with input_rejected,
-  // changing nothing, when a threshold is negative or not finite or the source cannot be
-  // played with them.
+  // changing nothing, when a threshold is negative or not finite, the content cannot be
+  // rendered (content_problem) or the source cannot be played with them. The content is what
+  // a single plane's re-render draws (a scene's polygons keep their own kinds and take its
+  // quality and light); the animator's scene() carries it, so an exact renderer built as
+  // VtkSceneRenderer(animator()->scene(), animator()->camera(), near, settings().content)
+  // draws the same content.
   bool set_settings(const EngineSettings& settings);
 
   // The animator at the scene model's frame (built and advanced on demand); nullptr only

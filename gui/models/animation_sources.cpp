@@ -27,12 +27,17 @@ RunSource plane_source(MotionScript script, const SceneModel& panel,
 
 // The run source of a scene kind: a scene and the viewer script walking through it. Scene
 // shifting keeps its own tolerance (SceneShiftingSettings::epsilon_px, as `oflab-cli
-// animate` does by default) and takes the sampling of the engine settings.
+// animate` does by default) and takes the sampling of the engine settings; its polygons show
+// the contents its file gives, at its quality when it gives one.
 RunSource scene_source(const SourceChoice& choice, const EngineSettings& settings) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(choice.name)));
   source.viewer = read_viewer_script_file(resolve_viewer_script_path(choice.viewer));
   source.settings.engine = settings;
+  // The polygons keep their own contents and the scene's quality, as `oflab-cli animate`.
+  if (source.scene->content_quality > 0) {
+    source.settings.engine.content.quality = source.scene->content_quality;
+  }
   source.shifting.sampling = settings.sampling;
   return source;
 }

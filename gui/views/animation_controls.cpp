@@ -83,6 +83,13 @@ void AnimationControls::explain_controls() {
   delta_box_->setToolTip(tr("Delta: how much of the scaling the perspective cache takes from "
                             "the affine warp (section 5.4.3)"));
   sampling_box_->setToolTip(tr("Nearest or bilinear sampling in the warps"));
+  content_box_->setToolTip(tr("What a re-render draws, and so what it costs: the texture (one "
+                              "warp), a shaded brick lit per sample, or a facade impostor of "
+                              "lit, depth-tested boxes (manual/costs.md). A scene's polygons "
+                              "show the contents its file gives"));
+  quality_box_->setToolTip(tr("The content's quality: samples per pixel of the shaded brick, "
+                              "detail of the impostor (1 + q storeys of 1 + 2q bays); a scene "
+                              "file's own quality wins. Dearer re-renders make reuse pay"));
 }
 
 QWidget* AnimationControls::make_source_row() {
@@ -209,9 +216,31 @@ QWidget* AnimationControls::make_engine_row() {
     show_budget();
     emit settings_edited();
   });
+  add_content_controls(threshold_row, thresholds);
   thresholds->addStretch(1);
   set_settings(EngineSettings{});
   return threshold_row;
+}
+
+void AnimationControls::add_content_controls(QWidget* row, QHBoxLayout* layout) {
+  content_box_ = new QComboBox(row);
+  content_box_->setObjectName(QStringLiteral("animation_content"));
+  for (ContentKind kind : content_kinds()) {
+    content_box_->addItem(content_name(kind), int(kind));
+  }
+  quality_box_ = new QSpinBox(row);
+  quality_box_->setObjectName(QStringLiteral("animation_quality"));
+  quality_box_->setRange(1, kMaxContentQuality);
+  quality_box_->setKeyboardTracking(false);
+  // No labels: the entries name the contents and the spin box says "quality", so the row
+  // still fits a 1024-pixel window.
+  quality_box_->setPrefix(tr("quality "));
+  layout->addWidget(content_box_);
+  layout->addWidget(quality_box_);
+  connect(content_box_, QOverload<int>::of(&QComboBox::activated), this,
+          [this] { emit settings_edited(); });
+  connect(quality_box_, QOverload<int>::of(&QSpinBox::valueChanged), this,
+          [this] { emit settings_edited(); });
 }
 
 EngineSettings AnimationControls::settings() const {
@@ -221,6 +250,8 @@ EngineSettings AnimationControls::settings() const {
   for (int k = 0; k < kTermCount; ++k) s.thresholds[size_t(k)] = thresholds_[k]->value();
   s.delta = static_cast<DeltaPolicy>(delta_box_->currentData().toInt());
   s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
+  s.content.kind = static_cast<ContentKind>(content_box_->currentData().toInt());
+  s.content.quality = quality_box_->value();
   if (s.policy->shares_budget && budget_box_->value() >= 0) {
     s.budget = {FrameBudget::Unit::kPixels, double(budget_box_->value())};
   }
@@ -233,10 +264,13 @@ void AnimationControls::show_budget() {
 }
 
 void AnimationControls::set_settings(const EngineSettings& s) {
-  const QSignalBlocker b0(mode_box_), b1(delta_box_), b2(sampling_box_);
+  const QSignalBlocker b0(mode_box_), b1(delta_box_), b2(sampling_box_), b3(content_box_),
+      b4(quality_box_);
   select_data(mode_box_, QString(s.policy->name));
   select_data(delta_box_, int(s.delta));
   select_data(sampling_box_, int(s.sampling));
+  select_data(content_box_, int(s.content.kind));
+  quality_box_->setValue(s.content.quality);
   for (int k = 0; k < kTermCount; ++k) {
     const QSignalBlocker block(thresholds_[k]);
     thresholds_[k]->setValue(s.thresholds[size_t(k)]);
@@ -351,6 +385,8 @@ void AnimationControls::show_kind(const AnimationSourceKind& kind) {
     w->setEnabled(kind.uses_reuse_policy);
   }
   for (QDoubleSpinBox* t : thresholds_) t->setEnabled(kind.uses_reuse_policy);
+  // A scene's polygons show the contents of its file; a single plane shows the chosen one.
+  content_box_->setEnabled(!kind.uses_viewer);
 }
 
 }  // namespace oflab

@@ -2,10 +2,11 @@
 // gui/models/animation_sources.h, with its shipped name and viewer script), the engine's
 // reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
 // affine/perspective switch; with the budget policy, a spin box of its pixel budget per
-// frame), the per-level thresholds, the Delta
-// policy, the sampling, how the two panels are shown, and the policies the comparison
-// layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only edits values;
-// the view applies them and puts them back when it refuses them.
+// frame), the per-level thresholds, the Delta policy, the sampling, the layer content and its
+// quality (core/content/layer_content.h: what a re-render draws; a single plane only, a
+// scene's polygons keep their own), how the two panels are shown, and the policies the
+// comparison layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only
+// edits values; the view applies them and puts them back when it refuses them.
 #pragma once
 
 #include <QWidget>
@@ -19,6 +20,7 @@
 class QAction;
 class QComboBox;
 class QDoubleSpinBox;
+class QHBoxLayout;
 class QPushButton;
 class QSpinBox;
 class QToolButton;
@@ -62,12 +64,14 @@ class AnimationControls : public QWidget {
   QWidget* make_source_row();
   QWidget* make_engine_row();
   QToolButton* make_compare_button(QWidget* parent);
+  // The content box (the content registry) and the quality spin box, added to `layout`.
+  void add_content_controls(QWidget* row, QHBoxLayout* layout);
   // A policy of the compare menu was toggled: keeps 2 .. kMaxComparedPolicies checked.
   void compared_toggled(QAction* action);
   void explain_controls();  // a tooltip on every control
   void add_file_entry(QComboBox* box, const std::string& kind, const std::string& path);
-  // Enables what applies to `kind`: the viewer script box, and the policy, threshold and
-  // Delta controls (not for scene shifting).
+  // Enables what applies to `kind`: the viewer script box, the policy, threshold and
+  // Delta controls (not for scene shifting), and the content box (single planes).
   void show_kind(const AnimationSourceKind& kind);
   // The source kind of the picker's current entry.
   const AnimationSourceKind& current_kind() const;
@@ -87,6 +91,8 @@ class AnimationControls : public QWidget {
   QDoubleSpinBox* thresholds_[kTermCount] = {};
   QComboBox* delta_box_ = nullptr;
   QComboBox* sampling_box_ = nullptr;
+  QComboBox* content_box_ = nullptr;
+  QSpinBox* quality_box_ = nullptr;
   std::string shown_kind_;  // the kind of the source last shown by set_source
 };
 

@@ -31,6 +31,8 @@ Session sample_session() {
   s.settings.thresholds = {0.5, 1.5, 2.0, 0.75};
   s.settings.delta = DeltaPolicy::kOne;
   s.settings.sampling = Sampling::kBilinear;
+  s.settings.content.kind = ContentKind::kImpostor;
+  s.settings.content.quality = 3;
   s.display = "difference";
   s.exact_renderer = "vtk";
   s.frame = 7;
@@ -83,6 +85,8 @@ TEST(SessionFile, WrittenSessionReadsBackUnchanged) {
   EXPECT_EQ(back.settings.thresholds, s.settings.thresholds);
   EXPECT_EQ(back.settings.delta, DeltaPolicy::kOne);
   EXPECT_EQ(back.settings.sampling, Sampling::kBilinear);
+  EXPECT_EQ(back.settings.content.kind, ContentKind::kImpostor);
+  EXPECT_EQ(back.settings.content.quality, 3);
   EXPECT_EQ(back.display, s.display);
   EXPECT_EQ(back.exact_renderer, "vtk");
   EXPECT_EQ(back.frame, 7);
@@ -119,6 +123,17 @@ TEST(SessionFile, ASessionWithoutAnExactRendererReadsWithCores) {
   ASSERT_EQ(j["animation"]["exact_renderer"], "vtk");
   j["animation"].erase("exact_renderer");
   EXPECT_EQ(parse_session(j.dump(), "old.json").exact_renderer, "core");
+}
+
+// Sessions saved before the layer content was kept play the texture at quality 1.
+TEST(SessionFile, ASessionWithoutContentPlaysTheTexture) {
+  json j = json::parse(session_to_json(sample_session()));
+  j["animation"].erase("content");
+  j["animation"].erase("content_quality");
+  const Session back = parse_session(j.dump(), "old.json");
+  EXPECT_EQ(back.settings.content.kind, ContentKind::kTexture);
+  EXPECT_EQ(back.settings.content.quality, 1);
+  EXPECT_EQ(back.settings.policy, &reuse_policy("affine"));  // the rest is read as before
 }
 
 TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {
@@ -208,6 +223,16 @@ TEST(SessionFile, EveryBadFieldIsNamedWithItsPart) {
       {[](json& j) { j["animation"]["thresholds"][2] = -1; },
        "s.json: animation: field 'thresholds': must not be negative"},
       {[](json& j) { j["animation"]["delta"] = "two"; }, "s.json: animation: field 'delta'"},
+      {[](json& j) { j["animation"]["content"] = "marble"; },
+       "s.json: animation: field 'content': one of texture, shaded, impostor"},
+      {[](json& j) { j["animation"]["content"] = 2; },
+       "s.json: animation: field 'content': must be a string"},
+      {[](json& j) { j["animation"]["content_quality"] = 0; },
+       "s.json: animation: field 'content_quality'"},
+      {[](json& j) { j["animation"]["content_quality"] = 257; },
+       "s.json: animation: field 'content_quality'"},
+      {[](json& j) { j["animation"]["content_quality"] = 2.5; },
+       "s.json: animation: field 'content_quality'"},
       {[](json& j) { j["animation"]["sampling"] = "cubic"; },
        "s.json: animation: field 'sampling'"},
       {[](json& j) { j["frame"] = 2.5; }, "s.json: field 'frame': must be a whole number"},

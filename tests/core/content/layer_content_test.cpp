@@ -215,5 +215,66 @@ TEST(LayerContent, EngineReportsStaleShadingOfReusedLitLayers) {
   EXPECT_GT(reused, 5);
 }
 
+// Hand count of the facade (layer_content.h): a window is glass (1 face), four frame bars
+// and a sill (5 boxes of 5 faces); a balcony a slab, a rail and five posts (7 boxes); the
+// wall is one face. Detail d: (1 + d) storeys of (1 + 2d) bays, balconies on the odd storeys.
+TEST(LayerContent, FacadeFacesMatchAHandCount) {
+  const auto expected = [](int d) {
+    const int storeys = 1 + d, bays = 1 + 2 * d, balcony_storeys = storeys / 2;
+    return 1 + storeys * bays * (1 + 5 * 5) + balcony_storeys * bays * (7 * 5);
+  };
+  EXPECT_EQ(facade_faces(Vec2(4.0, 3.0), 1).size(), 262u);  // 1 + 6 * 26 + 3 * 35
+  for (int d : {1, 2, 3, 4}) {
+    EXPECT_EQ(facade_faces(Vec2(10.0, 8.0), d).size(), static_cast<std::size_t>(expected(d))) << d;
+  }
+}
+
+// Every face is a planar quadrilateral with its unit normal across its edges, stands on or
+// in front of the wall and lies within the plane's rectangle.
+TEST(LayerContent, FacadeFacesArePlanarQuadsInFrontOfTheWall) {
+  const Vec2 size(10.0, 8.0);
+  for (const FacadeFace& f : facade_faces(size, 2)) {
+    EXPECT_NEAR(glm::length(f.normal), 1.0, 1e-12);
+    const Vec3 edge_normal = glm::cross(f.corners[1] - f.corners[0], f.corners[2] - f.corners[0]);
+    EXPECT_NEAR(std::abs(glm::dot(glm::normalize(edge_normal), f.normal)), 1.0, 1e-9);
+    for (const Vec3& c : f.corners) {
+      EXPECT_NEAR(glm::dot(c - f.corners[0], f.normal), 0.0, 1e-12);
+      EXPECT_GE(c.z, 0.0);
+      EXPECT_LE(std::abs(c.x), 0.5 * size.x + 1e-9);
+      EXPECT_LE(std::abs(c.y), 0.5 * size.y + 1e-9);
+    }
+  }
+}
+
+// The bond laid out by hand: joints at multiples of 0.07 down and of 0.2 across (shifted by
+// half a brick on odd rows), bevels sloping towards the nearest joint.
+TEST(LayerContent, BrickHasMortarAtTheJointsAndBevelsSlopingTowardsThem) {
+  const ContentMaterial mortar = brick_at(0.0, 0.0).material;
+  EXPECT_EQ(brick_at(0.2, 0.035).material.albedo, mortar.albedo);   // vertical joint, row 0
+  EXPECT_EQ(brick_at(0.1, 0.07).material.albedo, mortar.albedo);    // horizontal joint
+  EXPECT_EQ(brick_at(0.3, 0.105).material.albedo, mortar.albedo);   // row 1: joint at 0.3
+  EXPECT_NE(brick_at(0.2, 0.105).material.albedo, mortar.albedo);   // row 1: a brick's middle
+  const BrickSample middle = brick_at(0.1, 0.035);
+  EXPECT_NE(middle.material.albedo, mortar.albedo);
+  EXPECT_EQ(middle.slope, Vec2(0.0));
+  EXPECT_GT(brick_at(0.015, 0.035).slope.x, 0.0);  // left edge of a brick
+  EXPECT_LT(brick_at(0.185, 0.035).slope.x, 0.0);  // right edge
+  EXPECT_GT(brick_at(0.1, 0.015).slope.y, 0.0);    // top edge
+  EXPECT_LT(brick_at(0.1, 0.055).slope.y, 0.0);    // bottom edge
+}
+
+TEST(LayerContent, KindsListEveryNameOnce) {
+  const std::vector<ContentKind> kinds = content_kinds();
+  ASSERT_EQ(kinds.size(), 3u);
+  std::string joined;
+  for (ContentKind k : kinds) {
+    ContentKind parsed = ContentKind::kTexture;
+    EXPECT_TRUE(parse_content(content_name(k), &parsed));
+    EXPECT_EQ(parsed, k);
+    joined += (joined.empty() ? "" : ", ") + std::string(content_name(k));
+  }
+  EXPECT_EQ(joined, content_name_list());
+}
+
 }  // namespace
 }  // namespace oflab
