@@ -54,6 +54,8 @@ screen=1920x1200 shot analysis-comparison --script loop --animation-show compari
   --compare perspective,dissertation,talisman,rerender --view analysis --size 1920 1080 \
   --frames 150
 screen=1920x1200 shot lesson-flow-vs-talisman --lesson flow-vs-talisman --size 1920 1080 --frames 40
+screen=1920x1200 shot lesson-when-reuse-pays --lesson when-reuse-pays --presentation --size 1920 1080 \
+  --frames 90
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
 shot slices --view slices --frames 10
