@@ -11,7 +11,7 @@ namespace {
 class CoreExactRenderer final : public ExactFrameRenderer {
  public:
   CoreExactRenderer(const Scene& scene, const Camera& camera, const EngineSettings& settings)
-      : scene_(scene), animator_(scene_, camera, scene_settings(settings)) {}
+      : scene_(scene), animator_(scene_, camera, scene_settings(scene, settings)) {}
 
   const Image& render(const ViewerPose& view) override {
     animator_.start(view);
@@ -19,9 +19,12 @@ class CoreExactRenderer final : public ExactFrameRenderer {
   }
 
  private:
-  static SceneSettings scene_settings(const EngineSettings& engine) {
+  // The settings of a re-render of every polygon: the engine's, at the scene's content
+  // quality when its file gives one (as the animation's scene source and VTK's renderer).
+  static SceneSettings scene_settings(const Scene& scene, const EngineSettings& engine) {
     SceneSettings s;
     s.engine = engine;
+    if (scene.content_quality > 0) s.engine.content.quality = scene.content_quality;
     s.engine.policy = &reuse_policy("rerender");
     s.near = engine.near;
     s.guard_band = engine.guard_band;
@@ -32,10 +35,11 @@ class CoreExactRenderer final : public ExactFrameRenderer {
   SceneAnimator animator_;
 };
 
+// VTK's OpenGL pipeline, drawing the lit contents with the engine's light and quality.
 class VtkExactRenderer final : public ExactFrameRenderer {
  public:
   VtkExactRenderer(const Scene& scene, const Camera& camera, const EngineSettings& settings)
-      : vtk_(scene, camera, settings.near) {}
+      : vtk_(scene, camera, settings.near, settings.content) {}
 
   const Image& render(const ViewerPose& view) override {
     vtk_.render(view);

@@ -111,6 +111,22 @@ TEST_F(ExactFramesTest, TheExactPanelDrawsTheEnginesContent) {
   }
 }
 
+// A scene of lit contents (the street: facade impostors and shaded walls, at the scene's
+// quality): in re-render mode the engine's frame and core's exact frame are the same
+// picture, on a straight stretch and in the turn.
+TEST_F(ExactFramesTest, TheExactPanelDrawsASceneOfLitContentsAsTheEngineDoes) {
+  window().show_view("animation");
+  ASSERT_TRUE(model().set_source({"scene", "street", "walk"}));
+  EngineSettings settings = model().settings();
+  settings.policy = &reuse_policy("rerender");
+  ASSERT_TRUE(model().set_settings(settings));
+  for (int frame : {0, 90}) {
+    window().model()->set_frame(frame);
+    EXPECT_GT(psnr_db(animation().engine_image(), animation().exact_image()), 40.0)
+        << "street frame " << frame;
+  }
+}
+
 TEST_F(ExactFramesTest, ASessionKeepsTheExactRenderer) {
   QTemporaryDir dir;
   const QString path = dir.filePath("session.json");
