@@ -395,6 +395,25 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   paint_texts(painter, panel, cell);
 }
 
+int AnimationView::wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
+                                 double gap) const {
+  const bool heat_row = display_ == PanelDisplay::kComparison && contents.size() > 2;
+  const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
+  const double cell_width = (canvas_width - 2 * gap - (columns - 1) * gap) / std::max(1, columns);
+  QFont font;
+  font.setPixelSize(theme_.font_size);
+  const QFontMetrics metrics(font);
+  int lines = 2;
+  for (size_t i = 0; i < contents.size(); ++i) {
+    if (heat_row && int(i) >= columns) break;  // the heat maps' one-line captions stay as they are
+    QStringList wrapped;
+    for (const QString& line : contents[i].caption) wrapped += wrapped_caption(line, metrics, cell_width);
+    contents[i].caption = wrapped;
+    lines = std::max(lines, int(wrapped.size()));
+  }
+  return lines;
+}
+
 void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell) {
   const int text_px = theme_.font_size;
   QFont font = painter.font();
@@ -451,9 +470,10 @@ QImage AnimationView::compose(const QSize& size) {
   panel_rects_.clear();
   const Animator* animator = model_->animator();
   if (!animator) return canvas;
-  const std::vector<PanelContent> contents = panels();
+  std::vector<PanelContent> contents = panels();
   const int text_px = theme_.font_size;
-  const double gap = text_px, title = text_px * 1.8, caption = text_px * kCaptionLine * 2;
+  const double gap = text_px, title = text_px * 1.8;
+  const double caption = text_px * kCaptionLine * wrap_captions(contents, size.width(), gap);
   // The comparison puts the heat maps in a second row, each under its policy, and the
   // legends in the spare cell under the exact panel; the other layouts have one row and
   // the legends in a band below it.

@@ -125,6 +125,10 @@ class AnimationView : public ViewPage {
   void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
                    const std::vector<std::vector<Vec2>>& outlines);
   // The title above the panel's image and its caption lines below it.
+  // Breaks the captions of the panels' top row into lines that fit their cells on a canvas
+  // `canvas_width` pixels wide (cells `gap` apart) at the theme's text size, so no number is
+  // elided; returns the caption lines the band must hold (at least 2).
+  int wrap_captions(std::vector<PanelContent>& contents, int canvas_width, double gap) const;
   void paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell);
   void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
   QRectF fit_content();

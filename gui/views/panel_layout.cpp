@@ -22,6 +22,26 @@ std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, dou
   return cells;
 }
 
+QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, double width) {
+  if (metrics.horizontalAdvance(text) <= width) return {text};
+  struct Break {
+    QString separator;
+    int head_keeps;  // characters of the separator ending the first line
+    int tail_skips;  // characters of the separator not starting the next line
+  };
+  const Break breaks[] = {{QStringLiteral(" \u00b7 "), 0, 3}, {QStringLiteral(" ("), 0, 1},
+                          {QStringLiteral(", "), 1, 2}};
+  for (const Break& b : breaks) {
+    for (int at = text.lastIndexOf(b.separator); at > 0;
+         at = text.lastIndexOf(b.separator, at - 1)) {
+      const QString head = text.left(at + b.head_keeps);
+      if (metrics.horizontalAdvance(head) > width) continue;
+      return QStringList{head} + wrapped_caption(text.mid(at + b.tail_skips), metrics, width);
+    }
+  }
+  return {text};
+}
+
 QRectF panel_frame(const QRectF& content, const QSizeF& camera_size, double aspect, double zoom) {
   QRectF frame = content.isEmpty() ? QRectF(QPointF(0, 0), camera_size) : content;
   const double mx = kFitMargin * frame.width(), my = kFitMargin * frame.height();

@@ -8,7 +8,9 @@
 // canvas pixels for cells.
 #pragma once
 
+#include <QFontMetrics>
 #include <QRectF>
+#include <QStringList>
 #include <QTransform>
 #include <vector>
 
@@ -28,6 +30,12 @@ struct PanelCell {
 // `title_px` and a caption band `caption_px` high. Precondition: columns >= 1.
 std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, double title_px,
                                  double caption_px);
+
+// `text` broken into lines no wider than `width` canvas pixels in `metrics`: at " · " first,
+// then before " (", then after ", " (the separators of the panels' captions), each break as
+// far right as fits. A piece with no separator that fits stays whole (the painter elides
+// it). Never drops or reorders characters other than the separators' spaces and the dot.
+QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, double width);
 
 // Fraction of the content's size added on every side when fitting it.
 constexpr double kFitMargin = 0.04;

@@ -23,6 +23,7 @@
 #include "scene/view_culling.h"
 #include "app/lessons.h"
 #include "views/animation_view.h"
+#include "views/panel_layout.h"
 #include "image_checks.h"
 #include "window_fixture.h"
 
@@ -267,6 +268,34 @@ TEST_F(AnimationLayoutTest, FlowVsTalismanLessonComparesPerspectiveAndTalisman) 
   }
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
   EXPECT_STREQ(animation().comparison().policies()[0]->name, "affine");
+}
+
+// A caption too wide for its cell is broken at its separators, each line fitting, and
+// nothing but the separators' spaces and dot is lost; one that fits is left whole.
+TEST(WrappedCaption, BreaksAtTheSeparatorsSoEveryLineFitsAndNothingIsLost) {
+  QFont font;
+  font.setPixelSize(22);
+  const QFontMetrics metrics(font);
+  const QString caption = QString::fromUtf8(
+      "none 5, translate 2, affine 4, rerender 2 \u00b7 error 0.85 px");
+  EXPECT_EQ(wrapped_caption(caption, metrics, 5000), QStringList{caption});
+  const double width =
+      metrics.horizontalAdvance(QStringLiteral("none 5, translate 2, affine 4, rerender 2")) + 1;
+  const QStringList lines = wrapped_caption(caption, metrics, width);
+  ASSERT_EQ(lines.size(), 2);
+  EXPECT_EQ(lines[0], QStringLiteral("none 5, translate 2, affine 4, rerender 2"));
+  EXPECT_EQ(lines[1], QStringLiteral("error 0.85 px"));
+  const QString money = QStringLiteral("229 k px, 9.2 ms (run 33.0 M px, 792 ms)");
+  const QStringList parts = wrapped_caption(money, metrics, metrics.horizontalAdvance(money) - 1);
+  EXPECT_EQ(parts, (QStringList{QStringLiteral("229 k px, 9.2 ms"),
+                                QStringLiteral("(run 33.0 M px, 792 ms)")}));
+  // Narrower still: the list breaks after its commas, every line within the width.
+  const double narrow = metrics.horizontalAdvance(QStringLiteral("translate 2, affine 4,"));
+  const QStringList many = wrapped_caption(caption, metrics, narrow);
+  EXPECT_GT(many.size(), 2);
+  for (const QString& line : many) EXPECT_LE(metrics.horizontalAdvance(line), narrow) << line.toStdString();
+  EXPECT_EQ(many.join(QString()).remove(' '),
+            QString(caption).remove(' ').remove(QChar(0x00b7)));
 }
 
 }  // namespace
