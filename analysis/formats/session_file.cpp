@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "engine/budget.h"
 #include "engine/reuse_policy.h"
 #include "formats/json_fields.h"
 
@@ -71,6 +72,19 @@ void read_content(const json& j, const Where& w, LayerContent* content) {
   }
 }
 
+// The budget policy's frame budget ("budget_pixels" or "budget_ms", at most one; sessions
+// without either have none, so the policy takes its default).
+void read_budget(const json& j, const Where& w, FrameBudget* budget) {
+  const bool pixels = j.contains("budget_pixels"), ms = j.contains("budget_ms");
+  if (pixels && ms) w.fail("budget_ms", "give budget_pixels or budget_ms, not both");
+  if (!pixels && !ms) return;
+  const char* field = pixels ? "budget_pixels" : "budget_ms";
+  *budget = {pixels ? FrameBudget::Unit::kPixels : FrameBudget::Unit::kMilliseconds,
+             number_field(j, w, field)};
+  const std::string problem = frame_budget_problem(*budget);
+  if (!problem.empty()) w.fail(field, problem);
+}
+
 EngineSettings read_settings(const json& j, const Where& w) {
   EngineSettings s;
   s.policy = find_reuse_policy(text(j, w, "mode"));
@@ -88,6 +102,7 @@ EngineSettings read_settings(const json& j, const Where& w) {
     w.fail("sampling", "one of " + sampling_name_list());
   }
   read_content(j, w, &s.content);
+  read_budget(j, w, &s.budget);
   return s;
 }
 
@@ -146,6 +161,11 @@ std::string session_to_json(const Session& s) {
       {"content_quality", s.settings.content.quality},
       {"display", s.display},
       {"exact_renderer", s.exact_renderer}};
+  if (s.settings.budget.unit == FrameBudget::Unit::kPixels) {
+    j["animation"]["budget_pixels"] = s.settings.budget.amount;
+  } else if (s.settings.budget.unit == FrameBudget::Unit::kMilliseconds) {
+    j["animation"]["budget_ms"] = s.settings.budget.amount;
+  }
   j["frame"] = s.frame;
   j["view"] = s.view;
   json draw = json::array();

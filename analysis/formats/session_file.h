@@ -1,6 +1,7 @@
 // Saving and loading the whole session of the window as JSON ("oflab-session", version 1):
 // the plane scene (camera, pose, motion), the motion script, the texture file, the
-// animation view's source, engine settings (with the layer content and its quality), display
+// animation view's source, engine settings (with the layer content and its quality, and the
+// budget policy's frame budget when one is set), display
 // and exact renderer, the frame and the view in front,
 // and the window's state (flow view options, basis, presentation mode, lesson, play rate).
 // A file format like the scripts and scenes, read with formats/json_fields.h; the GUI

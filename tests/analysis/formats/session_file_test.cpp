@@ -2,6 +2,7 @@
 // SessionError naming the file, the part and the field, never a crash.
 #include "formats/session_file.h"
 #include "scratch_dir.h"
+#include "engine/budget.h"
 
 #include <gtest/gtest.h>
 
@@ -134,6 +135,35 @@ TEST(SessionFile, ASessionWithoutContentPlaysTheTexture) {
   EXPECT_EQ(back.settings.content.kind, ContentKind::kTexture);
   EXPECT_EQ(back.settings.content.quality, 1);
   EXPECT_EQ(back.settings.policy, &reuse_policy("affine"));  // the rest is read as before
+}
+
+// The budget policy's frame budget is kept (pixels or milliseconds); a session without one
+// has none, and a negative budget or both units are refused naming the field.
+TEST(SessionFile, TheFrameBudgetIsKeptAndABadOneRefused) {
+  Session s = sample_session();
+  s.settings.policy = &reuse_policy("budget");
+  s.settings.budget = {FrameBudget::Unit::kPixels, 12000};
+  Session back = parse_session(session_to_json(s), "budget.json");
+  EXPECT_EQ(back.settings.policy, &reuse_policy("budget"));
+  EXPECT_EQ(back.settings.budget.unit, FrameBudget::Unit::kPixels);
+  EXPECT_EQ(back.settings.budget.amount, 12000);
+  s.settings.budget = {FrameBudget::Unit::kMilliseconds, 2.5};
+  back = parse_session(session_to_json(s), "budget.json");
+  EXPECT_EQ(back.settings.budget.unit, FrameBudget::Unit::kMilliseconds);
+  EXPECT_EQ(back.settings.budget.amount, 2.5);
+  json j = json::parse(session_to_json(s));
+  j["animation"].erase("budget_ms");
+  EXPECT_EQ(parse_session(j.dump(), "old.json").settings.budget.unit, FrameBudget::Unit::kNone);
+  j["animation"]["budget_pixels"] = -5;
+  try {
+    parse_session(j.dump(), "bad.json");
+    ADD_FAILURE() << "a negative budget was accepted";
+  } catch (const SessionError& e) {
+    EXPECT_NE(std::string(e.what()).find("budget_pixels"), std::string::npos) << e.what();
+  }
+  j["animation"]["budget_pixels"] = 100;
+  j["animation"]["budget_ms"] = 2;
+  EXPECT_THROW(parse_session(j.dump(), "both.json"), SessionError);
 }
 
 TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {
