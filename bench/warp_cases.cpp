@@ -81,9 +81,8 @@ WarpCase boxed_case(const std::string& size, const std::string& name, const Laye
 void set_peer_counters(benchmark::State& state, const WarpCase& c, const Image& peer_output,
                        Sampling sampling) {
   state.counters["agree"] = agreement(c, peer_output, sampling);
-  state.counters["Mpx/s"] =
-      benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
-                         benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["Mpx/s"] = benchmark::Counter(static_cast<double>(c.polygon_pixels) * 1e-6,
+                                               benchmark::Counter::kIsIterationInvariantRate);
 }
 
 double agreement(const WarpCase& c, const Image& peer_output, Sampling sampling) {

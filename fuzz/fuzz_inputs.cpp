@@ -88,18 +88,21 @@ void command_line(const std::string& bytes) {
   args.push_back(current);
   std::ostringstream out, err;
   const CommandArgs rest(args.begin() + 1, args.end());
-  const int code = args[0] == "slices" ? run_slices_command(rest, out, err)
-                                       : run_flow_command(rest, out, err);
+  const int code =
+      args[0] == "slices" ? run_slices_command(rest, out, err) : run_flow_command(rest, out, err);
   if (code != 0 && code != 2) throw std::logic_error("unexpected exit code");
 }
 
 }  // namespace
 
 const std::map<std::string, Target>& targets() {
-  static const std::map<std::string, Target> all = {
-      {"motion-script", motion_script}, {"viewer-script", viewer_script}, {"scene", scene},
-      {"session", session},             {"obj", obj},                     {"image", image},
-      {"command-line", command_line}};
+  static const std::map<std::string, Target> all = {{"motion-script", motion_script},
+                                                    {"viewer-script", viewer_script},
+                                                    {"scene", scene},
+                                                    {"session", session},
+                                                    {"obj", obj},
+                                                    {"image", image},
+                                                    {"command-line", command_line}};
   return all;
 }
 

@@ -129,18 +129,35 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(args,
-                    {{"--script", 1},        {"--texture", 1},    {"--mode", 1},
-                     {"--threshold", 1},     {"--thresholds", 4}, {"--delta", 1},
-                     {"--sampling", 1},      {"--content", 1},    {"--quality", 1},
-                     {"--budget-pixels", 1}, {"--budget-ms", 1},  {"--frames", 1},
-                     {"--repeat-timing", 1}, {"--no-warm-up", 0}, {"--repeat", 1},
-                     {"--out", 1},           {"--force", 0},      {"--frames-png", 0},
-                     {"--video", 1},         {"--fps", 1},        {"--json", 0},
-                     {"--quiet", 0},         {"--scene", 1},      {"--compare-conventional", 0},
-                     {"--conventional-single-sample", 0},
-                     {"--near", 1},          {"--guard-band", 1}, {"--no-skip-hidden", 0},
-                     {"--epsilon", 1}});
+    const CliArgs a(args, {{"--script", 1},
+                           {"--texture", 1},
+                           {"--mode", 1},
+                           {"--threshold", 1},
+                           {"--thresholds", 4},
+                           {"--delta", 1},
+                           {"--sampling", 1},
+                           {"--content", 1},
+                           {"--quality", 1},
+                           {"--budget-pixels", 1},
+                           {"--budget-ms", 1},
+                           {"--frames", 1},
+                           {"--repeat-timing", 1},
+                           {"--no-warm-up", 0},
+                           {"--repeat", 1},
+                           {"--out", 1},
+                           {"--force", 0},
+                           {"--frames-png", 0},
+                           {"--video", 1},
+                           {"--fps", 1},
+                           {"--json", 0},
+                           {"--quiet", 0},
+                           {"--scene", 1},
+                           {"--compare-conventional", 0},
+                           {"--conventional-single-sample", 0},
+                           {"--near", 1},
+                           {"--guard-band", 1},
+                           {"--no-skip-hidden", 0},
+                           {"--epsilon", 1}});
     return animate(a, out, err);
   } catch (const UsageError& e) {
     err << "oflab-cli animate: " << e.what() << "\n";

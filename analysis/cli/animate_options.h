@@ -10,10 +10,10 @@
 #include <string>
 
 #include "cli/cli_args.h"
-#include "formats/video_file.h"
-#include "runs/source_kinds.h"
 #include "engine/engine.h"
+#include "formats/video_file.h"
 #include "image/image.h"
+#include "runs/source_kinds.h"
 #include "scene/scene.h"
 #include "scene/viewer_script.h"
 
@@ -55,12 +55,12 @@ constexpr int kMaxTimingRepetitions = 1000;
 struct RunOutput {
   int max_frames = -1;
   int timing_repetitions = kDefaultTimingRepetitions;
-  bool warm_up = true;                              // false with --no-warm-up
-  std::string dir;                                  // empty without --out
-  std::shared_ptr<std::ofstream> csv;               // DIR/frames.csv (opened by apply_to), empty without --out
+  bool warm_up = true;                 // false with --no-warm-up
+  std::string dir;                     // empty without --out
+  std::shared_ptr<std::ofstream> csv;  // DIR/frames.csv (opened by apply_to), empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png and --video
   std::function<void(int, int)> progress;
-  std::shared_ptr<VideoWriter> video;               // empty without --video
+  std::shared_ptr<VideoWriter> video;  // empty without --video
 
   // Completes the --video file after the run (nothing without --video). Throws UsageError
   // naming --video when it cannot be completed.

@@ -1,6 +1,6 @@
 // `oflab-cli animate --scene NAME|FILE --script NAME|FILE --mode scene-shifting
-// [--epsilon E]`: the scene-shifting renderer (core/scene_shifting/scene_shifting_renderer.h) with the same
-// summary, JSON and CSV as the other scene modes (manual/scene-shifting.md).
+// [--epsilon E]`: the scene-shifting renderer (core/scene_shifting/scene_shifting_renderer.h) with
+// the same summary, JSON and CSV as the other scene modes (manual/scene-shifting.md).
 #pragma once
 
 #include <iosfwd>

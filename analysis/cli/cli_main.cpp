@@ -7,6 +7,8 @@
 int main(int argc, char** argv) {
   return oflab::run_guarded(
       "oflab-cli",
-      [&] { return oflab::run_cli(oflab::CommandArgs(argv + 1, argv + argc), std::cout, std::cerr); },
+      [&] {
+        return oflab::run_cli(oflab::CommandArgs(argv + 1, argv + argc), std::cout, std::cerr);
+      },
       std::cerr);
 }

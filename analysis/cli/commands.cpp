@@ -24,10 +24,10 @@ std::string animate_usage() {
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
   usage += "               [--budget-pixels N | --budget-ms T]   (--mode budget only)\n";
-  usage +=
-      "               [--repeat-timing N]   (timed passes after a warm-up, default " +
-      std::to_string(kDefaultTimingRepetitions) + ")\n"
-      "               [--no-warm-up] [--repeat N]   (the script N times back to back)\n";
+  usage += "               [--repeat-timing N]   (timed passes after a warm-up, default " +
+           std::to_string(kDefaultTimingRepetitions) +
+           ")\n"
+           "               [--no-warm-up] [--repeat N]   (the script N times back to back)\n";
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"

@@ -115,8 +115,8 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
     return 0;
   }
   out << (source.scene ? "scene " + source.scene->name + ", viewer script " : "script ") << script
-      << ", " << (rows.empty() ? 0 : rows.front().frames) << " frames, "
-      << policies.size() << " policies (times measured in the same run as each policy's "
+      << ", " << (rows.empty() ? 0 : rows.front().frames) << " frames, " << policies.size()
+      << " policies (times measured in the same run as each policy's "
       << "exact re-render)\n";
   print_policy_table(rows, out);
   return 0;

@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <ostream>
 
-#include "report/charts.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "experiments/experiments.h"
 #include "formats/video_file.h"
+#include "report/charts.h"
 
 namespace oflab {
 namespace {

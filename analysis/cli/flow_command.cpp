@@ -1,9 +1,8 @@
 // `oflab-cli flow`: prints the planar flow coefficients, the planar basis and, with --dt,
 // the Taylor and exact homographies and the corner errors of each approximation level.
 #include <cmath>
-#include <ostream>
-
 #include <nlohmann/json.hpp>
+#include <ostream>
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -34,8 +33,8 @@ nlohmann::json flow_report(const CliArgs& a) {
       image.y != std::floor(image.y)) {
     throw UsageError("--image: width and height must be positive whole numbers");
   }
-  const Camera camera = make_camera(a.number("--focal"), static_cast<int>(image.x),
-                                    static_cast<int>(image.y));
+  const Camera camera =
+      make_camera(a.number("--focal"), static_cast<int>(image.x), static_cast<int>(image.y));
   if (*camera_problem(camera)) throw UsageError(std::string("--focal: ") + camera_problem(camera));
 
   PlanePose pose;
@@ -53,7 +52,8 @@ nlohmann::json flow_report(const CliArgs& a) {
     pose.up = Vec3(1.0, 0.0, 0.0);  // any up works for the flow; corners need a real one
   }
   const PoseProblem problem = plane_pose_problem(pose);
-  if (!problem.field.empty()) throw UsageError(option_for_field(problem.field) + ": " + problem.message);
+  if (!problem.field.empty())
+    throw UsageError(option_for_field(problem.field) + ": " + problem.message);
 
   RigidMotion motion;
   motion.velocity = a.vec3("--velocity");
@@ -120,10 +120,17 @@ void print_text(const nlohmann::json& j, std::ostream& out) {
 
 int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(args, {{"--focal", 1}, {"--image", 2}, {"--plane-point", 3},
-                           {"--plane-normal", 3}, {"--velocity", 3}, {"--omega", 3},
-                           {"--plane-up", 3}, {"--plane-size", 2}, {"--dt", 1},
-                           {"--motion", 1}, {"--json", 0}});
+    const CliArgs a(args, {{"--focal", 1},
+                           {"--image", 2},
+                           {"--plane-point", 3},
+                           {"--plane-normal", 3},
+                           {"--velocity", 3},
+                           {"--omega", 3},
+                           {"--plane-up", 3},
+                           {"--plane-size", 2},
+                           {"--dt", 1},
+                           {"--motion", 1},
+                           {"--json", 0}});
     const nlohmann::json j = flow_report(a);
     if (a.has("--json")) {
       out << j.dump(2) << "\n";

@@ -2,10 +2,10 @@
 #include <filesystem>
 #include <ostream>
 
-#include "generators/butterfly.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "formats/image_io.h"
+#include "generators/butterfly.h"
 
 namespace oflab {
 

@@ -7,10 +7,10 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "generators/cube_grid.h"
 #include "formats/image_io.h"
 #include "formats/obj_scene.h"
 #include "formats/scene_file.h"
+#include "generators/cube_grid.h"
 #include "generators/tile_texture.h"
 
 namespace oflab {

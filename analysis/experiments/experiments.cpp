@@ -7,15 +7,15 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "formats/datasets.h"
+#include "experiments/experiments_costs.h"
 #include "experiments/experiments_delta.h"
+#include "experiments/experiments_policies.h"
 #include "experiments/experiments_scene_shifting.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
-#include "experiments/experiments_costs.h"
-#include "experiments/experiments_policies.h"
 #include "experiments/experiments_sweep.h"
 #include "experiments/experiments_warp.h"
+#include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "report/report_machine.h"
 
@@ -45,8 +45,8 @@ ReportSection run_exp1(ExperimentContext& c) {
         write_experiment1_videos(c, experiment1_spec(c.quick()));
     std::string list;
     for (const std::string& v : videos) list += (list.empty() ? "" : ", ") + v;
-    section.paragraph("Videos of the frames each mode showed (--videos " + c.video_format() +
-                      ", " + std::to_string(kExperiment1VideoFps) +
+    section.paragraph("Videos of the frames each mode showed (--videos " + c.video_format() + ", " +
+                      std::to_string(kExperiment1VideoFps) +
                       " fps), one per script and mode: " + list + ".");
   }
   return section;

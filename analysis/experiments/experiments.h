@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "image/layer.h"
 #include "report/charts.h"
 #include "report/report.h"
-#include "image/layer.h"
 
 namespace oflab {
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "formats/datasets.h"
 #include "experiments/published_results.h"
+#include "formats/datasets.h"
 #include "formats/script_file.h"
 
 namespace oflab {
@@ -153,8 +153,8 @@ Chart psnr_chart(const DeltaResult& r) {
 
 const std::vector<DeltaPolicy>& delta_policies() {
   static const std::vector<DeltaPolicy> policies = {
-      DeltaPolicy::kOne, DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet, DeltaPolicy::kFourthRootAbsDet,
-      DeltaPolicy::kDissertation};
+      DeltaPolicy::kOne, DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
+      DeltaPolicy::kFourthRootAbsDet, DeltaPolicy::kDissertation};
   return policies;
 }
 
@@ -192,8 +192,8 @@ ReportSection delta_section(const DeltaResult& result, ExperimentContext& contex
   s.title = "Delta comparison (section 6.3, Fig. 20)";
   s.paragraph(
       "The loop script (" + std::to_string(result.baseline.reports.size()) +
-      " frames) in perspective mode under each Delta policy, thresholds 1 px, " +
-      "a warm-up and " + count_of(result.spec.repetitions, "timed repetition") +
+      " frames) in perspective mode under each Delta policy, thresholds 1 px, " + "a warm-up and " +
+      count_of(result.spec.repetitions, "timed repetition") +
       " (per-frame medians), each interleaved with the re-render baseline. The "
       "dissertation published this comparison as graphs and statements only, so the table "
       "sets its statement beside oflab's measurements. Delta = 1 keeps the perspective cache at "

@@ -7,9 +7,9 @@
 #include "experiments/experiments_runs.h"
 #include "experiments/experiments_single_plane.h"
 #include "experiments/published_results.h"
+#include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
-#include "formats/datasets.h"
 #include "formats/viewer_script_file.h"
 
 namespace oflab {
@@ -37,9 +37,10 @@ const std::array<double, kLevelCount>* published_levels(const PoliciesSource& s)
 
 ReportTable policies_table(const PoliciesResult& r) {
   ReportTable t;
-  t.caption = "Every policy on the same frames: percent of layer-frames per level (a plane's "
-              "frames after the first; the scene's drawn polygons), work and time saved "
-              "against the exact re-render of the same run, measured error, mean PSNR";
+  t.caption =
+      "Every policy on the same frames: percent of layer-frames per level (a plane's "
+      "frames after the first; the scene's drawn polygons), work and time saved "
+      "against the exact re-render of the same run, measured error, mean PSNR";
   t.header = level_header("source, policy", {"work saved", "time saved", "max error px",
                                              "mean error px", "mean PSNR dB"});
   for (const PoliciesSource& s : r.sources) {
@@ -77,9 +78,10 @@ std::string gap_reading(const GapAttribution& g) {
 
 ReportTable attribution_table(const PoliciesResult& r) {
   ReportTable t;
-  t.caption = "The printed rule (dissertation) and the corrected rule (perspective) beside the "
-              "published level mix; distance = half the sum over levels of |published - "
-              "measured|, percentage points";
+  t.caption =
+      "The printed rule (dissertation) and the corrected rule (perspective) beside the "
+      "published level mix; distance = half the sum over levels of |published - "
+      "measured|, percentage points";
   t.header = level_header("source", {"distance to published", "reading"});
   for (const PoliciesSource& s : r.sources) {
     const std::array<double, kLevelCount>* pub = published_levels(s);
@@ -165,7 +167,8 @@ PoliciesResult run_policies_experiment(const Layer& texture, const PoliciesSpec&
   options.warm_up = true;
   options.timing_repetitions = spec.repetitions;
   for (const std::string& name : experiment1_scripts()) {
-    if (progress) progress(name + " under " + std::to_string(reuse_policies().size()) + " policies");
+    if (progress)
+      progress(name + " under " + std::to_string(reuse_policies().size()) + " policies");
     RunSource source;
     source.script = read_script_file(resolve_script_path(name));
     source.texture = texture.image;
@@ -228,7 +231,8 @@ ReportSection policies_section(const PoliciesResult& result, ExperimentContext& 
       "Every Experiment 1 script and the four cubes (compound viewer script, every polygon in "
       "the frustum updated) under every policy of 'oflab-cli policies', each run as "
       "'oflab-cli compare' runs it: a warm-up and " +
-      count_of(result.spec.repetitions, "timed repetition") + " interleaved with the exact "
+      count_of(result.spec.repetitions, "timed repetition") +
+      " interleaved with the exact "
       "re-render, " +
       (result.spec.max_frames > 0 ? "at most " + std::to_string(result.spec.max_frames) + " frames"
                                   : std::string("whole scripts")) +

@@ -17,7 +17,7 @@
 namespace oflab {
 
 struct PoliciesSpec {
-  int max_frames = -1;  // per script and for the scene (-1: whole scripts)
+  int max_frames = -1;                          // per script and for the scene (-1: whole scripts)
   int repetitions = kDefaultTimingRepetitions;  // timed passes after a warm-up
 };
 // Full: whole scripts, kDefaultTimingRepetitions (as `oflab-cli compare`, which therefore

@@ -55,9 +55,9 @@ SceneShiftingComparison compare_scene_shifting(const Scene& scene, const ViewerS
   const nlohmann::json& facts = shifting.facts.at("scene_shifting");
   for (const nlohmann::json& s : facts.at("slices")) {
     const nlohmann::json& far = s.at("far");
-    c.slices.push_back(
-        {s.at("near").get<double>(),
-         far.is_null() ? std::numeric_limits<double>::infinity() : far.get<double>()});
+    c.slices.push_back({s.at("near").get<double>(), far.is_null()
+                                                        ? std::numeric_limits<double>::infinity()
+                                                        : far.get<double>()});
   }
   c.scene_shifting = figures_of(shifting.summary);
   c.turning_frames = facts.at("turning_frames");

@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "generators/cube_grid.h"
 #include "experiments/experiments_runs.h"
-#include "formats/image_io.h"
 #include "experiments/published_results.h"
+#include "formats/image_io.h"
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
+#include "generators/cube_grid.h"
 
 namespace oflab {
 namespace {

@@ -3,11 +3,11 @@
 #include <chrono>
 #include <cmath>
 
-#include "generators/butterfly.h"
-#include "formats/datasets.h"
 #include "experiments/experiments_runs.h"
-#include "formats/image_io.h"
 #include "experiments/published_results.h"
+#include "formats/datasets.h"
+#include "formats/image_io.h"
+#include "generators/butterfly.h"
 #include "image/warp.h"
 
 namespace oflab {

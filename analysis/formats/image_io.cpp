@@ -1,13 +1,13 @@
 #include "formats/image_io.h"
 
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-
-#include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 
 namespace oflab {
 namespace {

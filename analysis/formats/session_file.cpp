@@ -26,7 +26,8 @@ double number_field(const json& obj, const Where& w, const std::string& field) {
 // obj[field] as an image side: a whole number of pixels from 1 to 8192, as in motion scripts.
 int image_side(const json& obj, const Where& w, const std::string& field) {
   const double v = number_field(obj, w, field);
-  if (v < 1 || v > 8192 || v != std::floor(v)) w.fail(field, "must be a whole number from 1 to 8192");
+  if (v < 1 || v > 8192 || v != std::floor(v))
+    w.fail(field, "must be a whole number from 1 to 8192");
   return static_cast<int>(v);
 }
 
@@ -35,9 +36,9 @@ PlaneScene read_plane(const json& plane, const std::string& origin) {
   PlaneScene s;
   const json& camera = object(plane, in_plane, "camera");
   const Where in_camera{origin, "plane.camera"};
-  s.camera = make_camera(number_field(camera, in_camera, "focal_px"),
-                         image_side(camera, in_camera, "width"),
-                         image_side(camera, in_camera, "height"));
+  s.camera =
+      make_camera(number_field(camera, in_camera, "focal_px"),
+                  image_side(camera, in_camera, "width"), image_side(camera, in_camera, "height"));
   const json& pose = object(plane, in_plane, "pose");
   const Where in_pose{origin, "plane.pose"};
   s.pose.point = vec3(pose, in_pose, "point");
@@ -66,7 +67,8 @@ void read_content(const json& j, const Where& w, LayerContent* content) {
   if (j.contains("content_quality")) {
     const double q = number_field(j, w, "content_quality");
     if (q < 1 || q > kMaxContentQuality || q != std::floor(q)) {
-      w.fail("content_quality", "must be a whole number in 1.." + std::to_string(kMaxContentQuality));
+      w.fail("content_quality",
+             "must be a whole number in 1.." + std::to_string(kMaxContentQuality));
     }
     content->quality = static_cast<int>(q);
   }
@@ -140,14 +142,19 @@ std::string session_to_json(const Session& s) {
   json j;
   j["format"] = "oflab-session";
   j["version"] = 1;
-  j["plane"] = {{"camera", {{"focal_px", s.plane.camera.focal_px},
-                            {"width", s.plane.camera.width},
-                            {"height", s.plane.camera.height}}},
-                {"pose", {{"point", vec(s.plane.pose.point)}, {"normal", vec(s.plane.pose.normal)},
-                          {"up", vec(s.plane.pose.up)}, {"size", vec(s.plane.pose.size)}}},
-                {"motion", {{"velocity", vec(s.plane.motion.velocity)},
-                            {"omega", vec(s.plane.motion.omega)},
-                            {"model", motion_model_name(s.plane.motion.model)}}}};
+  j["plane"] = {{"camera",
+                 {{"focal_px", s.plane.camera.focal_px},
+                  {"width", s.plane.camera.width},
+                  {"height", s.plane.camera.height}}},
+                {"pose",
+                 {{"point", vec(s.plane.pose.point)},
+                  {"normal", vec(s.plane.pose.normal)},
+                  {"up", vec(s.plane.pose.up)},
+                  {"size", vec(s.plane.pose.size)}}},
+                {"motion",
+                 {{"velocity", vec(s.plane.motion.velocity)},
+                  {"omega", vec(s.plane.motion.omega)},
+                  {"model", motion_model_name(s.plane.motion.model)}}}};
   j["script"] = s.script;
   j["texture"] = s.texture;
   j["animation"] = {
@@ -170,9 +177,12 @@ std::string session_to_json(const Session& s) {
   j["view"] = s.view;
   json draw = json::array();
   for (bool on : s.flow_draw) draw.push_back(on);
-  j["window"] = {{"flow_part", s.flow_part},   {"flow_draw", draw},
-                 {"basis", s.basis},           {"basis_playing", s.basis_playing},
-                 {"presentation", s.presentation}, {"lesson", s.lesson},
+  j["window"] = {{"flow_part", s.flow_part},
+                 {"flow_draw", draw},
+                 {"basis", s.basis},
+                 {"basis_playing", s.basis_playing},
+                 {"presentation", s.presentation},
+                 {"lesson", s.lesson},
                  {"play_rate", s.play_rate}};
   return j.dump(2) + "\n";
 }
@@ -202,7 +212,8 @@ Session parse_session(const std::string& json_text, const std::string& origin) {
   if (frame < 0 || frame != std::floor(frame)) top.fail("frame", "must be a whole number >= 0");
   s.frame = int(frame);
   s.view = text(root, top, "view");
-  if (root.contains("window")) read_window(object(root, top, "window"), Where{origin, "window"}, &s);
+  if (root.contains("window"))
+    read_window(object(root, top, "window"), Where{origin, "window"}, &s);
   return s;
 }
 

@@ -25,9 +25,9 @@ class SessionError : public std::runtime_error {
 };
 
 struct Session {
-  PlaneScene plane;           // the scene panel's plane at frame 0
-  std::string script;         // shipped script name or file, empty when none plays
-  std::string texture;        // texture file, empty for the default texture
+  PlaneScene plane;     // the scene panel's plane at frame 0
+  std::string script;   // shipped script name or file, empty when none plays
+  std::string texture;  // texture file, empty for the default texture
   // The animation source's kind, by its name in gui/models/animation_sources.h.
   std::string source_kind = "plane";
   std::string source_name;    // script or scene name or file
@@ -48,8 +48,8 @@ struct Session {
   std::string basis = "planar";  // gui/views/basis_catalog.h basis_key
   bool basis_playing = false;
   bool presentation = false;
-  std::string lesson;            // the lesson whose caption shows, empty for none
-  int play_rate = 30;            // live play, frames per second (> 0)
+  std::string lesson;  // the lesson whose caption shows, empty for none
+  int play_rate = 30;  // live play, frames per second (> 0)
 };
 
 // The session as JSON text (pretty-printed).
@@ -58,8 +58,8 @@ std::string session_to_json(const Session& session);
 // Parses session text; `origin` names the source in errors. Checks the format tag, the
 // version, types, finite numbers of magnitude at most 1e6, a drawable plane
 // (plane_scene_problem), non-negative thresholds, a content quality in
-// 1..kMaxContentQuality (files without "content" or "content_quality" get the texture, 1) and known names; the files it names and the
-// source kind are checked when the session is applied.
+// 1..kMaxContentQuality (files without "content" or "content_quality" get the texture, 1) and known
+// names; the files it names and the source kind are checked when the session is applied.
 Session parse_session(const std::string& text, const std::string& origin);
 
 // Reads a session file (parse_session, with the file name as origin); throws SessionError

@@ -30,7 +30,8 @@ Rgba butterfly_colour(double x, double y) {
   }
   const double antenna = std::abs(ax - (0.05 + 0.35 * (-0.66 - y)));
   if (y < -0.66 && y > -0.98 && antenna < 0.018) return {0.12, 0.09, 0.08, 1.0};
-  if (y < -0.66 && ellipse(ax, y, 0.17, -0.97, 0.04, 0.04, 0.0) < 1.0) return {0.12, 0.09, 0.08, 1.0};
+  if (y < -0.66 && ellipse(ax, y, 0.17, -0.97, 0.04, 0.04, 0.0) < 1.0)
+    return {0.12, 0.09, 0.08, 1.0};
   // Wings: upper (fore) and lower (hind) wing as rotated ellipses.
   const double fore = ellipse(ax, y, 0.50, -0.28, 0.50, 0.36, -0.45);
   const double hind = ellipse(ax, y, 0.38, 0.42, 0.33, 0.40, 0.55);
@@ -70,7 +71,9 @@ Image make_butterfly(int width, int height) {
         }
       }
       const double n = kSub * kSub;
-      auto byte = [](double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+      auto byte = [](double v) {
+        return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+      };
       Pixel p;
       p.a = byte(sum.a / n);
       p.r = std::min(p.a, byte(sum.r / n));

@@ -42,13 +42,14 @@ std::vector<const ReusePolicy*> parse_policy_list(const std::string& text) {
   while (std::getline(in, name, ',')) {
     const ReusePolicy* p = find_reuse_policy(name);
     if (!p) {
-      throw std::invalid_argument("unknown policy '" + name + "' (one of " +
-                                  reuse_policy_names() + ")");
+      throw std::invalid_argument("unknown policy '" + name + "' (one of " + reuse_policy_names() +
+                                  ")");
     }
     if (!seen.insert(name).second) throw std::invalid_argument("policy '" + name + "' twice");
     out.push_back(p);
   }
-  if (out.empty()) throw std::invalid_argument("no policy given (one of " + reuse_policy_names() + ")");
+  if (out.empty())
+    throw std::invalid_argument("no policy given (one of " + reuse_policy_names() + ")");
   return out;
 }
 

@@ -62,10 +62,9 @@ class SummaryTotals {
     s_.conventional_median_frame_ms = median_of(std::move(conventional_times_));
     s_.mean_psnr_db = psnr_count_ ? psnr_sum_ / psnr_count_ : kNaN;
     s_.time_saved = s_.baseline_time_ms > 0.0 ? 1.0 - s_.time_ms / s_.baseline_time_ms : 0.0;
-    s_.work_saved =
-        s_.baseline_pixels > 0
-            ? 1.0 - static_cast<double>(s_.pixels) / static_cast<double>(s_.baseline_pixels)
-            : 0.0;
+    s_.work_saved = s_.baseline_pixels > 0 ? 1.0 - static_cast<double>(s_.pixels) /
+                                                       static_cast<double>(s_.baseline_pixels)
+                                           : 0.0;
     s_.model_work_saved =
         s_.baseline_model_work > 0.0 ? 1.0 - s_.model_work / s_.baseline_model_work : 0.0;
     if (s_.gap_frames > 0) s_.mean_optimality_gap = gap_sum_ / s_.gap_frames;

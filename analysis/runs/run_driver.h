@@ -90,15 +90,15 @@ struct RunSummary {
   // at its content's cost), of the animator and of the baseline; deterministic.
   double model_work = 0.0;
   double baseline_model_work = 0.0;
-  double model_work_saved = 0.0;  // 1 - model_work / baseline_model_work (0 without one)
-  double render_ms = 0.0;         // of time_ms, rendering contents (re-renders)
+  double model_work_saved = 0.0;       // 1 - model_work / baseline_model_work (0 without one)
+  double render_ms = 0.0;              // of time_ms, rendering contents (re-renders)
   double max_photometric_error = 0.0;  // grey levels (FrameReport::photometric_error)
   double max_measured_error_px = 0.0;
   // Measured minus estimated error (FrameReport) of the worst visible engine layer report
   // over the run, pixels: at most 0 when the estimates bound the truth; NaN when there was
   // no such report (scene shifting keeps no per-layer books).
   double max_excess_px = std::numeric_limits<double>::quiet_NaN();
-  double mean_psnr_db = 0.0;      // over the finite per-frame PSNRs (NaN when none)
+  double mean_psnr_db = 0.0;  // over the finite per-frame PSNRs (NaN when none)
   // A policy that shares a per-frame budget (AnimationFrame::budget, core/engine/budget.h):
   // frames with the budget active (all but the first), frames whose layers spent more than
   // the budget (the rule keeps this 0), starved layer-frames, and the mean optimality gap

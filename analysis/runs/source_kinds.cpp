@@ -78,10 +78,9 @@ void write_plane_csv_row(std::ostream& out, const FrameRecord& record) {
   out << r.frame << ',' << level_name(r.level) << ',' << (r.visible ? 1 : 0);
   for (double f : r.flow) out << ',' << f;
   for (double e : r.accumulated) out << ',' << e;
-  out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ','
-      << r.affine_view_error_px << ',' << record.psnr_db << ',' << r.time_ms << ','
-      << r.pixels_written << ',' << r.render_ms << ',' << r.warp_ms << ',' << r.model_work << ','
-      << r.photometric_error << ",\"";
+  out << ',' << r.estimated_error_px << ',' << r.measured_error_px << ',' << r.affine_view_error_px
+      << ',' << record.psnr_db << ',' << r.time_ms << ',' << r.pixels_written << ',' << r.render_ms
+      << ',' << r.warp_ms << ',' << r.model_work << ',' << r.photometric_error << ",\"";
   for (char c : r.note) out << (c == '"' ? '\'' : c);
   out << "\"\n";
 }
@@ -134,10 +133,9 @@ AnimationRun play_scene(const RunSource& source, const PlayOptions& options) {
   const std::unique_ptr<Animator> baseline = options.baseline ? make_scene(source, true) : nullptr;
   std::unique_ptr<VtkSceneRenderer> conventional;
   if (options.conventional) {
-    conventional = std::make_unique<VtkSceneRenderer>(*source.scene, source.viewer.camera,
-                                                      source.settings.near,
-                                                      source.settings.engine.content,
-                                                      options.conventional_multisample);
+    conventional = std::make_unique<VtkSceneRenderer>(
+        *source.scene, source.viewer.camera, source.settings.near, source.settings.engine.content,
+        options.conventional_multisample);
   }
   AnimationRun run = run_animator(*animator, baseline.get(), conventional.get(), options);
   const BspStats bsp = animator->renderer().bsp().stats();
@@ -246,8 +244,7 @@ nlohmann::json shifting_facts(const SceneShiftingRenderer& renderer) {
 }
 
 AnimationRun play_shifting(const RunSource& source, const PlayOptions& options) {
-  const auto animator =
-      make_scene_shifting_animator(source.scene, source.viewer, source.shifting);
+  const auto animator = make_scene_shifting_animator(source.scene, source.viewer, source.shifting);
   const std::unique_ptr<Animator> baseline =
       options.baseline ? make_shifting(source, true) : nullptr;
   AnimationRun run = run_animator(*animator, baseline.get(), nullptr, options);
@@ -267,12 +264,10 @@ nlohmann::json shifting_summary_json(const AnimationRun& run) {
 
 const std::vector<SourceKind>& source_kinds() {
   static const std::vector<SourceKind> kinds = {
-      {"plane", make_plane, play_plane,
-       write_csv_of<write_plane_csv_header, write_plane_csv_row>, write_plane_csv_header,
-       write_plane_csv_row, plane_summary_json},
-      {"scene", make_scene, play_scene,
-       write_csv_of<write_scene_csv_header, write_scene_csv_row>, write_scene_csv_header,
-       write_scene_csv_row, scene_summary_json},
+      {"plane", make_plane, play_plane, write_csv_of<write_plane_csv_header, write_plane_csv_row>,
+       write_plane_csv_header, write_plane_csv_row, plane_summary_json},
+      {"scene", make_scene, play_scene, write_csv_of<write_scene_csv_header, write_scene_csv_row>,
+       write_scene_csv_header, write_scene_csv_row, scene_summary_json},
       {"scene-shifting", make_shifting, play_shifting,
        write_csv_of<write_scene_csv_header, write_scene_csv_row>, write_scene_csv_header,
        write_scene_csv_row, shifting_summary_json},

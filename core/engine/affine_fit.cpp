@@ -34,7 +34,7 @@ Mat3 least_squares_affine(const std::vector<Vec2>& from, const std::vector<Vec2>
     throw std::invalid_argument("affine fit: needs as many targets as vertices, at least 3");
   }
   const Vec2 f = centroid(from), g = centroid(to);
-  double sxx = 0.0, sxy = 0.0, syy = 0.0;  // scatter of `from`
+  double sxx = 0.0, sxy = 0.0, syy = 0.0;         // scatter of `from`
   double ux = 0.0, uy = 0.0, vx = 0.0, vy = 0.0;  // cross scatter, rows of (to - g)(from - f)^T
   for (size_t i = 0; i < from.size(); ++i) {
     const Vec2 d = from[i] - f, e = to[i] - g;

@@ -42,8 +42,7 @@ struct AffineFit {
 // Fits A = least_squares_affine(rendered, current) and measures its fiducials. `rendered`:
 // the polygon's vertices in the image when its layer was rendered; `current`: the same
 // vertices' exact projections now (same order). Same preconditions as least_squares_affine.
-AffineFit fit_rendered_polygon(const std::vector<Vec2>& rendered,
-                               const std::vector<Vec2>& current);
+AffineFit fit_rendered_polygon(const std::vector<Vec2>& rendered, const std::vector<Vec2>& current);
 
 // Twice the signed area of a polygon (shoelace formula), units squared; its sign says the
 // vertices' turning direction.

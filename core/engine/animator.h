@@ -53,7 +53,7 @@ struct AnimationFrame {
   double model_work = 0.0;
   double render_ms = 0.0;
   double max_photometric_error = 0.0;
-  double hidden_area_px = 0.0;            // image area of the hidden layers
+  double hidden_area_px = 0.0;  // image area of the hidden layers
   // Largest measured error over the drawn layers, pixels (0 when none was drawn; see
   // each animator for what is measured).
   double max_measured_error_px = 0.0;

@@ -73,8 +73,7 @@ TermArray measure_printed_flow(const Camera& camera, const PlanePose& pose,
   const double omega = glm::length(motion.omega);
   return {std::max(std::abs(k.tx), std::abs(k.ty)),
           std::max({std::abs(k.j11), std::abs(k.j12), std::abs(k.j21), std::abs(k.j22)}) * size,
-          std::max(std::abs(k.px), std::abs(k.py)) * size * size,
-          omega * omega * size * size};
+          std::max(std::abs(k.px), std::abs(k.py)) * size * size, omega * omega * size * size};
 }
 
 Level printed_cascade(const TermArray& accumulated, const TermArray& flow,

@@ -67,8 +67,7 @@ FlowMeasures measure_flow(const Camera& camera, const PlanePose& pose, const Rig
 //   flow_3 = |Omega|^2 size^2 t   (Omega in radians per frame; its units are not pixels).
 // Preconditions as measure_flow (valid camera and pose; corners centred pixels, not empty).
 TermArray measure_printed_flow(const Camera& camera, const PlanePose& pose,
-                               const RigidMotion& motion,
-                               const std::vector<Vec2>& corners_centred);
+                               const RigidMotion& motion, const std::vector<Vec2>& corners_centred);
 
 // Algorithm 1's cascade as printed: each term tested against its own threshold, the highest
 // term k with accumulated[k] + flow[k] > thresholds[k] picks level k + 1 (3: re-render,

@@ -493,7 +493,7 @@ void PlaneAnimator::apply_translation(const Vec2& step) {
 }
 
 void PlaneAnimator::show(const Layer& source, const Mat3& source_to_image,
-                        const Mat3& texel_to_image, FrameReport& report) {
+                         const Mat3& texel_to_image, FrameReport& report) {
   warp_reusing(source, source_to_image, report);
   std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
   display_.offset_x = warped_.offset_x;
@@ -526,8 +526,7 @@ void PlaneAnimator::show_from_cache(FrameReport& report) {
   show(cache_.layer, cache_.to_display, cache_.to_display * cache_.from_texel, report);
 }
 
-bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point,
-                                 FrameReport& report) {
+bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report) {
   if (!cache_.valid) cache_from_display();
   const Mat3 step = affine_part_at(correction, point);
   const Mat3 to_display = step * cache_.to_display;

@@ -93,9 +93,9 @@ struct FrameReport {
   // Why a frame is special: "outside the image", "not visible: ...", "clipped: ...",
   // "sampling limit: ...", "re-rendered after a refusal: ...".
   std::string note;
-  TermArray flow{};           // this frame's flow measures, pixels
-  TermArray carried{};        // accumulated estimates carried into the decision, pixels
-  TermArray accumulated{};    // accumulated estimates after this frame, pixels
+  TermArray flow{};         // this frame's flow measures, pixels
+  TermArray carried{};      // accumulated estimates carried into the decision, pixels
+  TermArray accumulated{};  // accumulated estimates after this frame, pixels
   // Exact error each level none..perspective would have left (FrameInputs::pending).
   TermArray pending{};
   // Pending error the level left: the larger of the books (the sum of `accumulated`) and
@@ -289,7 +289,7 @@ class PlaneAnimator {
   Mat3 displayed_{1.0};
   Mat3 model_{1.0};
   Mat3 rendered_warp_{1.0};  // displayed_ at the last re-render (Talisman's fit starts from it)
-  FitFiducials fit_;    // ModelUpdate::kAffineFit: this frame's fiducials
+  FitFiducials fit_;         // ModelUpdate::kAffineFit: this frame's fiducials
   Cache cache_;
   // Lit content: its last render (kept only when the policy reuses) and the texel -> layer
   // pixel warp it was rendered with; the pose it was lit at.

@@ -10,10 +10,10 @@ namespace oflab {
 
 // Raw Taylor terms (Fig. 14): translation, 4 first-order and 6 second-order derivatives.
 struct TaylorTerms {
-  double v1 = 0.0, v2 = 0.0;                                  // translation (tx, ty)
-  double v1_x = 0.0, v1_y = 0.0, v2_x = 0.0, v2_y = 0.0;      // first order
-  double v1_xx = 0.0, v1_xy = 0.0, v1_yy = 0.0;               // second order of v_x
-  double v2_xx = 0.0, v2_xy = 0.0, v2_yy = 0.0;               // second order of v_y
+  double v1 = 0.0, v2 = 0.0;                              // translation (tx, ty)
+  double v1_x = 0.0, v1_y = 0.0, v2_x = 0.0, v2_y = 0.0;  // first order
+  double v1_xx = 0.0, v1_xy = 0.0, v1_yy = 0.0;           // second order of v_x
+  double v2_xx = 0.0, v2_xy = 0.0, v2_yy = 0.0;           // second order of v_y
 };
 
 // Waxman-Ullman terms (Fig. 15, eq. 28-30 corrected: symmetric part = rate of strain,

@@ -38,8 +38,7 @@ Vec2 pixel_to_centred(const Camera& camera, const Vec2& pixel) {
 }
 
 Mat3 centred_intrinsics(const Camera& camera) {
-  return mat3_from_rows({camera.focal_px, 0.0, 0.0}, {0.0, camera.focal_px, 0.0},
-                        {0.0, 0.0, 1.0});
+  return mat3_from_rows({camera.focal_px, 0.0, 0.0}, {0.0, camera.focal_px, 0.0}, {0.0, 0.0, 1.0});
 }
 
 Mat3 centred_to_pixel_homography(const Camera& camera, const Mat3& h_centred) {

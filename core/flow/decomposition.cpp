@@ -69,11 +69,16 @@ bool parse_delta_policy(const std::string& text, DeltaPolicy* policy) {
 
 const char* delta_policy_name(DeltaPolicy policy) {
   switch (policy) {
-    case DeltaPolicy::kOne: return "1";
-    case DeltaPolicy::kAbsDet: return "det";
-    case DeltaPolicy::kSqrtAbsDet: return "sqrt";
-    case DeltaPolicy::kFourthRootAbsDet: return "fourth-root";
-    case DeltaPolicy::kDissertation: return "dissertation";
+    case DeltaPolicy::kOne:
+      return "1";
+    case DeltaPolicy::kAbsDet:
+      return "det";
+    case DeltaPolicy::kSqrtAbsDet:
+      return "sqrt";
+    case DeltaPolicy::kFourthRootAbsDet:
+      return "fourth-root";
+    case DeltaPolicy::kDissertation:
+      return "dissertation";
   }
   return "1";
 }
@@ -82,11 +87,16 @@ double delta_for(DeltaPolicy policy, double det_a) {
   const double m = std::abs(det_a);
   if (!std::isfinite(m) || m == 0.0) return 1.0;
   switch (policy) {
-    case DeltaPolicy::kOne: return 1.0;
-    case DeltaPolicy::kAbsDet: return m;
-    case DeltaPolicy::kSqrtAbsDet: return std::sqrt(m);
-    case DeltaPolicy::kFourthRootAbsDet: return std::sqrt(std::sqrt(m));
-    case DeltaPolicy::kDissertation: return m < 1.0 ? std::sqrt(m) : 1.0;
+    case DeltaPolicy::kOne:
+      return 1.0;
+    case DeltaPolicy::kAbsDet:
+      return m;
+    case DeltaPolicy::kSqrtAbsDet:
+      return std::sqrt(m);
+    case DeltaPolicy::kFourthRootAbsDet:
+      return std::sqrt(std::sqrt(m));
+    case DeltaPolicy::kDissertation:
+      return m < 1.0 ? std::sqrt(m) : 1.0;
   }
   return 1.0;
 }

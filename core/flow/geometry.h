@@ -5,7 +5,6 @@
 #pragma once
 
 #include <array>
-
 #include <glm/glm.hpp>
 
 namespace oflab {

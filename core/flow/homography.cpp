@@ -6,9 +6,9 @@
 namespace oflab {
 
 Mat3 taylor_homography(const PlanarFlowCoefficients& c, double dt) {
-  const Mat3 h = mat3_from_rows({1.0 + c.j11 * dt, c.j12 * dt, c.tx * dt},
-                                {c.j21 * dt, 1.0 + c.j22 * dt, c.ty * dt},
-                                {-c.px * dt, -c.py * dt, 1.0});
+  const Mat3 h =
+      mat3_from_rows({1.0 + c.j11 * dt, c.j12 * dt, c.tx * dt},
+                     {c.j21 * dt, 1.0 + c.j22 * dt, c.ty * dt}, {-c.px * dt, -c.py * dt, 1.0});
   const Mat3 about_origin =
       translation_matrix(c.origin.x, c.origin.y) * h * translation_matrix(-c.origin.x, -c.origin.y);
   return normalise_homography(about_origin);
@@ -31,8 +31,7 @@ Mat3 texture_to_image(const Camera& camera, const PlanePose& pose) {
   const PlaneAxes a = plane_axes(pose);
   // Columns R, U, P: (s, r, 1) -> P + s R + r U in the camera frame.
   const Mat3 plane_to_camera(a.right, a.up, pose.point);
-  return normalise_homography(centred_intrinsics(camera) * plane_to_camera *
-                              texel_to_plane(pose));
+  return normalise_homography(centred_intrinsics(camera) * plane_to_camera * texel_to_plane(pose));
 }
 
 std::array<Vec2, 4> projected_corners(const Camera& camera, const PlanePose& pose) {

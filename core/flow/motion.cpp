@@ -43,9 +43,12 @@ bool parse_motion_model(const char* text, MotionModel* model) {
 
 const char* motion_model_name(MotionModel model) {
   switch (model) {
-    case MotionModel::kScrew: return "screw";
-    case MotionModel::kRotateThenTranslate: return "rt";
-    case MotionModel::kSpinAboutCentre: return "centre";
+    case MotionModel::kScrew:
+      return "screw";
+    case MotionModel::kRotateThenTranslate:
+      return "rt";
+    case MotionModel::kSpinAboutCentre:
+      return "centre";
   }
   return "screw";
 }
@@ -59,9 +62,11 @@ Vec3 eye_velocity(const RigidMotion& motion, const PlanePose& pose) {
 
 Vec3 acceleration_reference_velocity(const RigidMotion& motion, const PlanePose& /*pose*/) {
   switch (motion.model) {
-    case MotionModel::kScrew: return Vec3(0.0);
+    case MotionModel::kScrew:
+      return Vec3(0.0);
     case MotionModel::kRotateThenTranslate:
-    case MotionModel::kSpinAboutCentre: return motion.velocity;
+    case MotionModel::kSpinAboutCentre:
+      return motion.velocity;
   }
   return Vec3(0.0);
 }

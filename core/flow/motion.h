@@ -41,7 +41,7 @@ Vec3 acceleration_reference_velocity(const RigidMotion& motion, const PlanePose&
 
 // A finite rigid step R' = Q R + s of every body point over time dt.
 struct RigidStep {
-  Mat3 rotation{1.0};             // Q, a proper rotation
+  Mat3 rotation{1.0};               // Q, a proper rotation
   Vec3 translation{0.0, 0.0, 0.0};  // s, world units
 };
 RigidStep rigid_step(const RigidMotion& motion, const PlanePose& pose, double dt);

@@ -5,7 +5,9 @@
 namespace oflab {
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace
 
@@ -36,9 +38,7 @@ PoseProblem plane_pose_problem(const PlanePose& pose) {
   return {};
 }
 
-Vec3 plane_vector(const PlanePose& pose) {
-  return pose.normal / glm::dot(pose.normal, pose.point);
-}
+Vec3 plane_vector(const PlanePose& pose) { return pose.normal / glm::dot(pose.normal, pose.point); }
 
 PlaneAxes plane_axes(const PlanePose& pose) {
   PlaneAxes axes;
@@ -52,8 +52,8 @@ std::array<Vec3, 4> plane_corners(const PlanePose& pose) {
   const PlaneAxes a = plane_axes(pose);
   const Vec3 half_r = 0.5 * pose.size.x * a.right;
   const Vec3 half_u = 0.5 * pose.size.y * a.up;
-  return {pose.point - half_r + half_u, pose.point + half_r + half_u,
-          pose.point + half_r - half_u, pose.point - half_r - half_u};
+  return {pose.point - half_r + half_u, pose.point + half_r + half_u, pose.point + half_r - half_u,
+          pose.point - half_r - half_u};
 }
 
 Mat3 texel_to_plane(const PlanePose& pose) {

@@ -20,10 +20,10 @@
 namespace oflab {
 
 struct PlanePose {
-  Vec3 point{0.0, 0.0, 1.0};    // P, world units, viewer frame (centre of the texture)
-  Vec3 normal{0.0, 0.0, 1.0};   // N, any non-zero length
-  Vec3 up{0.0, -1.0, 0.0};      // U, texture up; need not be unit or exactly in the plane
-  Vec2 size{1.0, 1.0};          // plane extent along R and U, world units
+  Vec3 point{0.0, 0.0, 1.0};          // P, world units, viewer frame (centre of the texture)
+  Vec3 normal{0.0, 0.0, 1.0};         // N, any non-zero length
+  Vec3 up{0.0, -1.0, 0.0};            // U, texture up; need not be unit or exactly in the plane
+  Vec2 size{1.0, 1.0};                // plane extent along R and U, world units
   glm::ivec2 texture_size{256, 256};  // texels (width, height)
 };
 

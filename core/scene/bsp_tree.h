@@ -49,8 +49,7 @@ class BspTree {
   // Precondition: every polygon is valid (scene_polygon_problem is empty).
   // Throws std::invalid_argument naming the limit when more than `max_fragments` would be
   // needed (checked before each split, so memory stays bounded).
-  explicit BspTree(const std::vector<ScenePolygon>& polygons,
-                   int max_fragments = kMaxBspFragments);
+  explicit BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments = kMaxBspFragments);
 
   // Replaces `order` with the indices of every fragment, back to front as seen from `eye`
   // (world coordinates): a fragment never comes after one it can hide. Fragments in a

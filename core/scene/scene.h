@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "content/layer_content.h"
-#include "image/image.h"
 #include "flow/plane.h"
+#include "image/image.h"
 #include "scene/viewer_script.h"
 
 namespace oflab {

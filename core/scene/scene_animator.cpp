@@ -7,8 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "image/composite.h"
 #include "flow/homography.h"
+#include "image/composite.h"
 
 namespace oflab {
 namespace {
@@ -244,9 +244,8 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationF
     const PlanePose pose = polygon_pose(polygon, view, s.texture_size);
     if (content_is_lit(content)) {
       ContentStats stats;
-      s.clipped_layer = render_clipped_content(camera_, content, pose,
-                                               texel_polygon(s.uv, s.texture_size), s.clipped,
-                                               &stats);
+      s.clipped_layer = render_clipped_content(
+          camera_, content, pose, texel_polygon(s.uv, s.texture_size), s.clipped, &stats);
       report.pixels_written += stats.pixels_written;
       report.model_work += stats.work_units * content_unit_cost(content.kind);
       return;
@@ -451,8 +450,9 @@ void SceneAnimator::add_occluder(int fragment, const PlacedLayer& shown) {
     occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
                             Vec2(shown.offset_x, shown.offset_y));
   } else {
-    const ConvexPolygon drawn = intersection(
-        translated(shown.layer.polygon, shown.offset_x, shown.offset_y), fragment_regions_[fragment]);
+    const ConvexPolygon drawn =
+        intersection(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
+                     fragment_regions_[fragment]);
     occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
   }
 }

@@ -32,9 +32,9 @@
 #include <memory>
 #include <vector>
 
-#include "scene/bsp_tree.h"
 #include "engine/animator.h"
 #include "engine/engine.h"
+#include "scene/bsp_tree.h"
 #include "scene/occlusion.h"
 #include "scene/scene.h"
 #include "scene/view_culling.h"

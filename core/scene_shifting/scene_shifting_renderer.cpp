@@ -8,8 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "image/composite.h"
 #include "engine/engine.h"
+#include "image/composite.h"
 
 namespace oflab {
 namespace {

@@ -42,11 +42,11 @@
 #include "engine/animator.h"
 #include "engine/reuse_policy.h"
 #include "flow/camera.h"
+#include "image/warp.h"
 #include "scene/scene.h"
-#include "scene_shifting/scene_shifting.h"
 #include "scene/viewer_script.h"
 #include "scene/viewer_script_animator.h"
-#include "image/warp.h"
+#include "scene_shifting/scene_shifting.h"
 
 namespace oflab {
 
@@ -60,7 +60,7 @@ struct SceneShiftingSettings {
   // A policy that allows no reuse (rerender, core/engine/reuse_policy.h) is the exact
   // baseline: every slice rendered every frame. Any other policy shifts and scales layers.
   const ReusePolicy* policy = &default_reuse_policy();
-  int max_slices = 64;          // cap on the slice count (scene_slices throws beyond it)
+  int max_slices = 64;  // cap on the slice count (scene_slices throws beyond it)
 };
 
 // What a layer did in a frame.

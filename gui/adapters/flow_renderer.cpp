@@ -163,8 +163,8 @@ void FlowRenderer::update_plane_image(const FlowContext& context, bool wanted) {
   }
   plane_image_.reshape(context.camera.width, context.camera.height);
   const QColor bg = to_qcolor(theme_.background);
-  plane_image_.fill(Pixel{std::uint8_t(bg.red()), std::uint8_t(bg.green()),
-                          std::uint8_t(bg.blue()), 255});
+  plane_image_.fill(
+      Pixel{std::uint8_t(bg.red()), std::uint8_t(bg.green()), std::uint8_t(bg.blue()), 255});
   PlanePose sized = context.pose;
   sized.texture_size = glm::ivec2(faded_texture_.image.width(), faded_texture_.image.height());
   WarpOptions options;
@@ -224,8 +224,8 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
   const int nx = std::max(1, int(std::ceil((box.right() + half.x) / kWheelStepPx)) - i0);
   const int ny = std::max(1, int(std::ceil((box.bottom() + half.y) / kWheelStepPx)) - j0);
   if (wheel_.width() != nx || wheel_.height() != ny) wheel_ = QImage(nx, ny, QImage::Format_RGB32);
-  wheel_rect_ = QRectF(-half.x + i0 * kWheelStepPx, -half.y + j0 * kWheelStepPx,
-                       nx * kWheelStepPx, ny * kWheelStepPx);
+  wheel_rect_ = QRectF(-half.x + i0 * kWheelStepPx, -half.y + j0 * kWheelStepPx, nx * kWheelStepPx,
+                       ny * kWheelStepPx);
   auto centre_of = [&](int i, int j) {
     return Vec2(wheel_rect_.left() + (i + 0.5) * kWheelStepPx,
                 wheel_rect_.top() + (j + 0.5) * kWheelStepPx);
@@ -249,8 +249,9 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
       line[i] = std::isnan(f.x) ? background : to_qcolor(flow_wheel_colour(f, largest)).rgb();
     }
   }
-  wheel_caption_ = QStringLiteral("Colour wheel (bottom right): hue = direction, "
-                                  "white to full colour = 0 to %1 px/s")
+  wheel_caption_ = QStringLiteral(
+                       "Colour wheel (bottom right): hue = direction, "
+                       "white to full colour = 0 to %1 px/s")
                        .arg(largest, 0, 'g', 3);
 }
 
@@ -259,15 +260,16 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
     // Outside, or seen so nearly edge-on that no grid sample falls inside it: there is no
     // flow to show and no residual to call zero.
     caption_text_ = plane_in_image_
-                        ? QStringLiteral("%1: no grid sample falls inside the plane's image (seen "
-                                         "edge-on or too small), so there is nothing to compare")
+                        ? QStringLiteral(
+                              "%1: no grid sample falls inside the plane's image (seen "
+                              "edge-on or too small), so there is nothing to compare")
                               .arg(QString::fromUtf8(flow_part_title(display.part)))
                         : QStringLiteral("The plane is outside the image: no flow to show");
     if (!frame_caption.isEmpty()) caption_text_ += QStringLiteral("\n") + frame_caption;
     return;
   }
-  const bool residual =
-      display.part == FlowPart::kExactMinusHomography || display.part == FlowPart::kExactMinusAffine;
+  const bool residual = display.part == FlowPart::kExactMinusHomography ||
+                        display.part == FlowPart::kExactMinusAffine;
   QString text = QStringLiteral("%1   max |v| = %2 px/s")
                      .arg(QString::fromUtf8(flow_part_title(display.part)))
                      .arg(shown_max_, 0, 'g', 3);
@@ -433,8 +435,7 @@ void FlowRenderer::paint_colour_bar(QPainter& painter, const QRectF& side) {
     painter.drawLine(QPointF(bar.right(), y), QPointF(bar.right() + 4, y));
     painter.drawText(QRectF(bar.right() + 6, y - theme_.label_size, side.right() - bar.right() - 6,
                             2.0 * theme_.label_size),
-                     Qt::AlignLeft | Qt::AlignVCenter,
-                     QString::asprintf("%.3g", t * bar_max_));
+                     Qt::AlignLeft | Qt::AlignVCenter, QString::asprintf("%.3g", t * bar_max_));
   }
 }
 

@@ -88,19 +88,19 @@ class FlowRenderer {
   bool plane_in_image_ = true;
   int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
   QString caption_text_, wheel_caption_;
-  QPolygonF outline_;           // the plane's projected corners, centred pixels
+  QPolygonF outline_;             // the plane's projected corners, centred pixels
   bool outline_in_front_ = true;  // every corner in front of the eye: outline_ bounds the plane
-  QImage texture_image_;        // the plane's texture as given
-  Layer faded_texture_;         // the texture faded towards the background, opaque
-  Image plane_image_;           // camera-sized: the background with the faded plane warped in
-  QRect plane_box_;             // the part of plane_image_ worth drawing (top-left pixels)
+  QImage texture_image_;          // the plane's texture as given
+  Layer faded_texture_;           // the texture faded towards the background, opaque
+  Image plane_image_;             // camera-sized: the background with the faded plane warped in
+  QRect plane_box_;               // the part of plane_image_ worth drawing (top-left pixels)
   bool plane_drawn_ = false;
   std::vector<Arrow> arrows_;
   std::vector<QPolygonF> streamlines_;  // lines and their arrow heads, centred pixels
-  QImage wheel_;                // the wheel's colours, one texel per cell
-  QRectF wheel_rect_;           // where wheel_ lies, centred pixels
-  QImage wheel_legend_;         // the legend disc at its last drawn size
-  QImage buffers_[2];           // painted views, used in turn so the shown one is not copied
+  QImage wheel_;                        // the wheel's colours, one texel per cell
+  QRectF wheel_rect_;                   // where wheel_ lies, centred pixels
+  QImage wheel_legend_;                 // the legend disc at its last drawn size
+  QImage buffers_[2];  // painted views, used in turn so the shown one is not copied
   int next_buffer_ = 0;
 };
 

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <vector>
 #include <limits>
+#include <vector>
 
 #include "views/palette.h"
 
@@ -85,7 +85,8 @@ void draw_level_legend(QPainter& painter, const QRectF& area, const QColor& text
     }
     painter.fillRect(QRectF(x, y + (row - swatch) / 2, swatch, swatch), level_qcolor(level));
     painter.setPen(text);
-    painter.drawText(QRectF(x + swatch * 1.4, y, item, row), Qt::AlignLeft | Qt::AlignVCenter, name);
+    painter.drawText(QRectF(x + swatch * 1.4, y, item, row), Qt::AlignLeft | Qt::AlignVCenter,
+                     name);
     x += item;
   }
   painter.restore();
@@ -139,8 +140,8 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
   painter.setPen(text);
   // Caption row, ramp row, tick-label row.
   const double row = area.height() / 3;
-  painter.drawText(QRectF(area.left(), area.top(), area.width(), row), Qt::AlignLeft | Qt::AlignVCenter,
-                   QObject::tr("|shown - exact|, grey levels"));
+  painter.drawText(QRectF(area.left(), area.top(), area.width(), row),
+                   Qt::AlignLeft | Qt::AlignVCenter, QObject::tr("|shown - exact|, grey levels"));
   const double left = area.left() + text_px, width = area.width() - 3 * text_px;
   const QRectF ramp(left, area.top() + row, width, row * 0.8);
   for (int x = 0; x < int(width); ++x) {
@@ -150,9 +151,10 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
   for (int i = 0; i <= 4; ++i) {
     const double x = left + width * i / 4;
     painter.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + row * 0.2));
-    const QString label = QString::number(full_scale * i / 4) + (i == 4 ? QStringLiteral("+") : QString());
-    painter.drawText(QRectF(x - 3 * text_px, ramp.bottom(), 6 * text_px, row * 1.2), Qt::AlignCenter,
-                     label);
+    const QString label =
+        QString::number(full_scale * i / 4) + (i == 4 ? QStringLiteral("+") : QString());
+    painter.drawText(QRectF(x - 3 * text_px, ramp.bottom(), 6 * text_px, row * 1.2),
+                     Qt::AlignCenter, label);
   }
   painter.restore();
 }
@@ -174,8 +176,8 @@ FrameAgreement frame_agreement(const Image& a, const Image& b) {
   }
   result.mask_iou = either > 0 ? static_cast<double>(both) / either : 1.0;
   const double mse = both > 0 ? squared / (3.0 * both) : 0.0;
-  result.psnr_db = mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse)
-                           : std::numeric_limits<double>::infinity();
+  result.psnr_db =
+      mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
   return result;
 }
 

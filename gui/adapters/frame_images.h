@@ -7,12 +7,12 @@
 #include <QColor>
 #include <QImage>
 #include <QPainter>
-#include <QTransform>
 #include <QString>
+#include <QTransform>
 #include <vector>
 
-#include "image/image.h"
 #include "engine/animator.h"
+#include "image/image.h"
 
 namespace oflab {
 

@@ -8,14 +8,14 @@
 #include <ostream>
 
 #include "adapters/exact_frames.h"
+#include "app/main_window.h"
+#include "app/screenshot.h"
+#include "app/session_io.h"
 #include "models/animation_model.h"
+#include "models/scene_model.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"
 #include "views/flow_view.h"
-#include "app/main_window.h"
-#include "models/scene_model.h"
-#include "app/screenshot.h"
-#include "app/session_io.h"
 
 namespace oflab {
 namespace {
@@ -113,8 +113,7 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
   const double seconds = timer.nsecsElapsed() * 1e-9;
   const QSize size = window->current_view()->size();  // the view's area
   out << "oflab: " << name.toStdString() << " view, " << options.benchmark << " frames in "
-      << seconds
-      << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
+      << seconds << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
       << " frames per second (window " << options.width << " x " << options.height << ", view "
       << size.width() << " x " << size.height() << ")\n";
   return 0;

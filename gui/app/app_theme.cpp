@@ -42,8 +42,8 @@ QPalette light_palette() {
 // Widgets the platform gives a font of their own (smaller, often), which the application
 // font does not replace.
 constexpr const char* kOwnFontClasses[] = {"QHeaderView", "QDockWidget", "QStatusBar",
-                                           "QMenuBar", "QMenu", "QTabBar", "QToolButton",
-                                           "QTipLabel", "QMessageBox"};
+                                           "QMenuBar",    "QMenu",       "QTabBar",
+                                           "QToolButton", "QTipLabel",   "QMessageBox"};
 
 }  // namespace
 
@@ -63,7 +63,8 @@ void apply_app_theme(bool presentation) {
   if (theme.control_font_px > 0) font.setPixelSize(theme.control_font_px);
   QApplication::setFont(font);
   for (size_t i = 0; i < base_class_fonts.size(); ++i) {
-    QApplication::setFont(theme.control_font_px > 0 ? font : base_class_fonts[i], kOwnFontClasses[i]);
+    QApplication::setFont(theme.control_font_px > 0 ? font : base_class_fonts[i],
+                          kOwnFontClasses[i]);
   }
 }
 

@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <sstream>
 
+#include "adapters/exact_frames.h"
+#include "app/lessons.h"
+#include "app/view_table.h"
+#include "engine/engine.h"
+#include "engine/reuse_policy.h"
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
 #include "formats/session_file.h"
 #include "formats/viewer_script_file.h"
-#include "engine/engine.h"
-#include "engine/reuse_policy.h"
-#include "adapters/exact_frames.h"
-#include "app/lessons.h"
-#include "app/view_table.h"
 #include "models/animation_sources.h"
 #include "models/policy_comparison.h"
 #include "runs/policy_runs.h"
@@ -112,8 +112,8 @@ void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
   const std::string text = cli.values("--animation-show").at(0);
   PanelDisplay display;
   if (!parse_panel_display(text, &display)) {
-    throw UsageError("--animation-show: unknown display '" + text + "' (known: " +
-                     panel_display_names() + ")");
+    throw UsageError("--animation-show: unknown display '" + text +
+                     "' (known: " + panel_display_names() + ")");
   }
   options->animation_show = text;
 }
@@ -122,8 +122,8 @@ void read_animation_exact(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--animation-exact")) return;
   const std::string text = cli.values("--animation-exact").at(0);
   if (!find_exact_renderer(text)) {
-    throw UsageError("--animation-exact: unknown renderer '" + text + "' (known: " +
-                     exact_renderer_names() + ")");
+    throw UsageError("--animation-exact: unknown renderer '" + text +
+                     "' (known: " + exact_renderer_names() + ")");
   }
   options->animation_exact = text;
 }
@@ -227,26 +227,13 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(args, {{"--session", 1},
-                           {"--lesson", 1},
-                           {"--scene", 1},
-                           {"--script", 1},
-                           {"--source", 1},
-                           {"--mode", 1},
-                           {"--animation-show", 1},
-                           {"--compare", 1},
-                           {"--animation-exact", 1},
-                           {"--view", 1},
-                           {"--screenshot", 1},
-                           {"--whole-window", 0},
-                           {"--frames", 1},
-                           {"--benchmark", 1},
-                           {"--size", 2},
-                           {"--flow-show", 1},
-                           {"--flow-draw", 1},
-                           {"--basis", 1},
-                           {"--presentation", 0},
-                           {"--help", 0}});
+  const CliArgs cli(
+      args,
+      {{"--session", 1},         {"--lesson", 1},    {"--scene", 1},          {"--script", 1},
+       {"--source", 1},          {"--mode", 1},      {"--animation-show", 1}, {"--compare", 1},
+       {"--animation-exact", 1}, {"--view", 1},      {"--screenshot", 1},     {"--whole-window", 0},
+       {"--frames", 1},          {"--benchmark", 1}, {"--size", 2},           {"--flow-show", 1},
+       {"--flow-draw", 1},       {"--basis", 1},     {"--presentation", 0},   {"--help", 0}});
   LaunchOptions options;
   options.help = cli.has("--help");
   options.lesson = cli.text_or("--lesson", "");
@@ -290,18 +277,30 @@ std::string launch_usage() {
   std::vector<std::string> titled;
   for (const ViewEntry& view : view_table()) titled.push_back(view.name + " (" + view.title + ")");
   return "usage: oflab [--session FILE] [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
-         "             [--source " + joined(scene_source_kinds(), "|") + "]\n"
-         "             [--mode " + reuse_policy_names("|") + "]\n"
+         "             [--source " +
+         joined(scene_source_kinds(), "|") +
+         "]\n"
+         "             [--mode " +
+         reuse_policy_names("|") +
+         "]\n"
          "             [--animation-show side-by-side|difference|blink|comparison]\n"
-         "             [--compare P1,P2,... (up to " + std::to_string(kMaxComparedPolicies) +
+         "             [--compare P1,P2,... (up to " +
+         std::to_string(kMaxComparedPolicies) +
          " policies)]\n"
-         "             [--animation-exact " + exact_renderer_names("|") + "]\n"
-         "             [--view " + joined(screenshot_view_names(), "|") + "]\n"
-         "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size W H]\n"
+         "             [--animation-exact " +
+         exact_renderer_names("|") +
+         "]\n"
+         "             [--view " +
+         joined(screenshot_view_names(), "|") +
+         "]\n"
+         "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size "
+         "W H]\n"
          "             [--flow-show PART] [--flow-draw "
          "arrows,streamlines,wheel,texture,zoom,common-scale]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"
-         "  views: " + joined(titled) + "; window is the whole window\n"
+         "  views: " +
+         joined(titled) +
+         "; window is the whole window\n"
          "  lessons: " +
          lesson_names() + "\n  shipped scripts: " + joined(shipped_script_names()) +
          "\n  shipped scenes (--script then names a viewer script: " +

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "adapters/flow_display.h"
 #include "cli/cli_args.h"
 #include "engine/engine.h"
 #include "engine/script.h"
 #include "formats/session_file.h"
 #include "views/basis_catalog.h"
-#include "adapters/flow_display.h"
 
 namespace oflab {
 
@@ -31,8 +31,8 @@ struct LaunchOptions {
   int frames = 0;          // frames to play before the screenshot (>= 0)
   // --whole-window: the screenshot is of the whole window, with `view` in front.
   bool whole_window = false;
-  int benchmark = 0;       // frames of the flow view to render as fast as possible (> 0)
-  int width = 1280;        // window size in pixels
+  int benchmark = 0;  // frames of the flow view to render as fast as possible (> 0)
+  int width = 1280;   // window size in pixels
   int height = 800;
   // Overrides applied after the lesson: the flow part shown, what the flow view draws
   // (only the booleans of `flow_draw` are used), the gallery's basis.
@@ -52,7 +52,8 @@ struct LaunchOptions {
   // --mode NAME: the animation engine's reuse policy (core/engine/reuse_policy.h); null
   // when not given.
   const ReusePolicy* mode = nullptr;
-  // --animation-show side-by-side|difference|blink|comparison: how the animation view shows its panels.
+  // --animation-show side-by-side|difference|blink|comparison: how the animation view shows its
+  // panels.
   std::string animation_show;
   // --compare P1,P2,...: the policies of the comparison layout (1 .. kMaxComparedPolicies
   // distinct names of the registry); empty when not given.

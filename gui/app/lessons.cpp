@@ -138,9 +138,9 @@ Lesson when_reuse_pays() {
 }
 
 const std::vector<Lesson>& lessons() {
-  static const std::vector<Lesson> all = {flow_of_a_plane(), basis_deformations(),
-                                          affine_vs_perspective(), why_errors_accumulate(),
-                                          occlusion(), flow_vs_talisman(), when_reuse_pays()};
+  static const std::vector<Lesson> all = {
+      flow_of_a_plane(), basis_deformations(), affine_vs_perspective(), why_errors_accumulate(),
+      occlusion(),       flow_vs_talisman(),   when_reuse_pays()};
   return all;
 }
 

@@ -37,5 +37,6 @@ int run_main(int argc, char** argv) {
 // event loop passes on) ends the process with one line and kInternalErrorExitCode, not an
 // abort.
 int main(int argc, char** argv) {
-  return oflab::run_guarded("oflab", [&] { return run_main(argc, argv); }, std::cerr);
+  return oflab::run_guarded(
+      "oflab", [&] { return run_main(argc, argv); }, std::cerr);
 }

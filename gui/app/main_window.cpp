@@ -2,18 +2,18 @@
 
 #include <QAbstractSpinBox>
 #include <QAction>
-#include <QKeyEvent>
-#include <QLineEdit>
-#include <QComboBox>
-#include <QSlider>
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QScrollArea>
+#include <QSlider>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
@@ -21,13 +21,13 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
-#include "formats/datasets.h"
-#include "formats/script_file.h"
 #include "adapters/texture.h"
 #include "app/app_theme.h"
 #include "app/screenshot.h"
 #include "app/session_io.h"
 #include "app/view_table.h"
+#include "formats/datasets.h"
+#include "formats/script_file.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
@@ -436,27 +436,28 @@ void MainWindow::create_export_menu(QMenu* file) {
     if (!path.isEmpty()) load_session(path);
   });
   connect(file->addAction(tr("Save session...")), &QAction::triggered, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save session"),
-                                                      QStringLiteral("session.json"),
-                                                      tr("oflab sessions (*.json)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save session"), QStringLiteral("session.json"), tr("oflab sessions (*.json)"));
     if (!path.isEmpty()) save_session(path, true);
   });
   QMenu* exports = file->addMenu(tr("Export"));
   connect(exports->addAction(tr("View screenshot at a resolution...")), &QAction::triggered, this,
           &MainWindow::save_view_screenshot);
-  connect(exports->addAction(tr("Animation as numbered PNGs...")), &QAction::triggered, this, [this] {
-    const QString dir = QFileDialog::getExistingDirectory(this, tr("Directory for the frames"));
-    QString error;
-    if (dir.isEmpty()) return;
-    if (!export_frames_png(this, dir, false, &error)) return show_message(error);
-    const int frames = animation_model_->animator() ? animation_model_->animator()->frame_count() : 0;
-    statusBar()->showMessage(tr("Wrote %1 frames of the animation view (frame-0000.png to "
-                                "frame-%2.png) to %3")
-                                 .arg(frames)
-                                 .arg(std::max(0, frames - 1), 4, 10, QChar('0'))
-                                 .arg(dir),
-                             15000);
-  });
+  connect(
+      exports->addAction(tr("Animation as numbered PNGs...")), &QAction::triggered, this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Directory for the frames"));
+        QString error;
+        if (dir.isEmpty()) return;
+        if (!export_frames_png(this, dir, false, &error)) return show_message(error);
+        const int frames =
+            animation_model_->animator() ? animation_model_->animator()->frame_count() : 0;
+        statusBar()->showMessage(tr("Wrote %1 frames of the animation view (frame-0000.png to "
+                                    "frame-%2.png) to %3")
+                                     .arg(frames)
+                                     .arg(std::max(0, frames - 1), 4, 10, QChar('0'))
+                                     .arg(dir),
+                                 15000);
+      });
   QAction* video = exports->addAction(tr("Animation as video (MP4, GIF, Ogg Theora)..."));
   connect(video, &QAction::triggered, this, [this] {
     const QString path = QFileDialog::getSaveFileName(
@@ -468,8 +469,8 @@ void MainWindow::create_export_menu(QMenu* file) {
     statusBar()->showMessage(tr("Wrote the video to %1").arg(path), 15000);
   });
   connect(exports->addAction(tr("Per-frame CSV...")), &QAction::triggered, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save per-frame CSV"),
-                                                      QStringLiteral("frames.csv"), tr("CSV (*.csv)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save per-frame CSV"), QStringLiteral("frames.csv"), tr("CSV (*.csv)"));
     QString error;
     if (!path.isEmpty() && !export_frame_csv(this, path, true, &error)) show_message(error);
   });
@@ -483,7 +484,8 @@ void MainWindow::save_view_screenshot() {
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Save view screenshot"), QStringLiteral("view.png"), tr("PNG images (*.png)"));
   if (path.isEmpty()) return;
-  const QImage image = current_view()->render_image().scaledToWidth(width, Qt::SmoothTransformation);
+  const QImage image =
+      current_view()->render_image().scaledToWidth(width, Qt::SmoothTransformation);
   QString error;
   if (!save_png(image, path, &error)) show_message(error);
 }
@@ -509,12 +511,23 @@ bool MainWindow::handle_play_key(QWidget* target, int key) {
   if (field && field->isModified()) return false;
   QAction* action = nullptr;
   switch (key) {
-    case Qt::Key_Space: action = play_action_; break;
-    case Qt::Key_Left: action = back_action_; break;
-    case Qt::Key_Right: action = step_action_; break;
-    case Qt::Key_Home: action = reset_action_; break;
-    case Qt::Key_End: action = end_action_; break;
-    default: return false;
+    case Qt::Key_Space:
+      action = play_action_;
+      break;
+    case Qt::Key_Left:
+      action = back_action_;
+      break;
+    case Qt::Key_Right:
+      action = step_action_;
+      break;
+    case Qt::Key_Home:
+      action = reset_action_;
+      break;
+    case Qt::Key_End:
+      action = end_action_;
+      break;
+    default:
+      return false;
   }
   action->trigger();
   return true;
@@ -527,8 +540,8 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
   if (!widget || widget->window() != this || (key->modifiers() & ~Qt::KeypadModifier)) {
     return QMainWindow::eventFilter(watched, event);
   }
-  const bool in_number_field =
-      qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QAbstractSpinBox*>(widget->parentWidget());
+  const bool in_number_field = qobject_cast<QAbstractSpinBox*>(widget) ||
+                               qobject_cast<QAbstractSpinBox*>(widget->parentWidget());
   if (in_number_field && (key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter)) {
     // The field applies the value first; then the view gets the keys back.
     QTimer::singleShot(0, this, [this] {

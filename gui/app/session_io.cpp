@@ -2,10 +2,9 @@
 
 #include <QDir>
 #include <QFile>
-#include <QProgressDialog>
 #include <QFileInfo>
+#include <QProgressDialog>
 #include <fstream>
-
 #include <sstream>
 
 #include "adapters/exact_frames.h"

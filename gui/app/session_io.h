@@ -30,7 +30,8 @@ bool apply_session(MainWindow* window, const Session& session, QString* error);
 // on failure or cancel, and then removes what it wrote (no partial set of frames, no
 // partial video). The window's frame is restored.
 constexpr int kExportFps = 30;
-bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite, QString* error);
+bool export_frames_png(MainWindow* window, const QString& directory, bool overwrite,
+                       QString* error);
 bool export_video(MainWindow* window, const QString& path, bool overwrite, QString* error);
 
 // The per-frame CSV of the single-plane source (the plane kind of analysis/runs/source_kinds.h)

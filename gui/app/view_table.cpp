@@ -10,8 +10,10 @@ namespace oflab {
 
 const std::vector<ViewEntry>& view_table() {
   static const std::vector<ViewEntry> table = {
-      {"flow", "Flow field", [](const ViewModels& m) -> ViewPage* { return new FlowView(m.scene); }},
-      {"basis", "Basis deformations", [](const ViewModels& m) -> ViewPage* { return new BasisView(m.scene); }},
+      {"flow", "Flow field",
+       [](const ViewModels& m) -> ViewPage* { return new FlowView(m.scene); }},
+      {"basis", "Basis deformations",
+       [](const ViewModels& m) -> ViewPage* { return new BasisView(m.scene); }},
       {"animation", "Animation, side by side",
        [](const ViewModels& m) -> ViewPage* { return new AnimationView(m.animation); }},
       {"analysis", "Analysis",

@@ -34,7 +34,8 @@ std::string AnimationModel::start(const SourceChoice& choice, const EngineSettin
                                   AnimationFrame* first) const {
   const AnimationSourceKind* kind = find_animation_source_kind(choice.kind);
   if (!kind) {
-    return "unknown source kind '" + choice.kind + "' (known: " + animation_source_kind_names() + ")";
+    return "unknown source kind '" + choice.kind + "' (known: " + animation_source_kind_names() +
+           ")";
   }
   try {
     *animator = kind->make(choice, *scene_, settings);

@@ -50,9 +50,16 @@ AnimationSourceKind kind(std::string name, std::string label, std::string panel_
                          bool follows_scene_panel, std::string default_viewer,
                          std::function<std::vector<std::string>()> shipped_names,
                          const char* run_kind, ReadSource read) {
-  AnimationSourceKind k{std::move(name), std::move(label), std::move(panel_title),
-                        follows_scene_panel, !default_viewer.empty(), std::move(default_viewer),
-                        std::move(shipped_names), nullptr, nullptr, nullptr};
+  AnimationSourceKind k{std::move(name),
+                        std::move(label),
+                        std::move(panel_title),
+                        follows_scene_panel,
+                        !default_viewer.empty(),
+                        std::move(default_viewer),
+                        std::move(shipped_names),
+                        nullptr,
+                        nullptr,
+                        nullptr};
   const SourceKind& run = source_kind(run_kind);
   k.make = [&run, read](const SourceChoice& choice, const SceneModel& panel,
                         const EngineSettings& settings) {
@@ -72,14 +79,17 @@ std::vector<AnimationSourceKind> make_kinds() {
   const ReadSource panel = [](const SourceChoice&, const SceneModel& p, const EngineSettings& s) {
     return plane_source(p.as_script(), p, s);
   };
-  const ReadSource script = [](const SourceChoice& c, const SceneModel& p, const EngineSettings& s) {
+  const ReadSource script = [](const SourceChoice& c, const SceneModel& p,
+                               const EngineSettings& s) {
     return plane_source(read_script_file(resolve_script_path(c.name)), p, s);
   };
   const ReadSource scene = [](const SourceChoice& c, const SceneModel&, const EngineSettings& s) {
     return scene_source(c, s);
   };
   const auto plane_script = [](ReadSource read) {
-    return [read](const SourceChoice& c, const SceneModel& p) { return read(c, p, EngineSettings()).script; };
+    return [read](const SourceChoice& c, const SceneModel& p) {
+      return read(c, p, EngineSettings()).script;
+    };
   };
   AnimationSourceKind plane =
       kind("plane", "Plane of the scene panel", kOpticFlowTitle, true, "", none, "plane", panel);

@@ -32,7 +32,8 @@ std::array<std::int64_t, kLevelCount> ComparedRun::level_totals(int first, int l
   for (int k = first; k <= last; ++k) {
     const ComparedFrame* f = at(k);
     if (!f) continue;
-    for (int level = 0; level < kLevelCount; ++level) totals[size_t(level)] += f->levels[size_t(level)];
+    for (int level = 0; level < kLevelCount; ++level)
+      totals[size_t(level)] += f->levels[size_t(level)];
   }
   return totals;
 }

@@ -135,7 +135,10 @@ void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
       continue;
     }
     const QPointF point(f.x(k), f.area.bottom() - std::min(v / top, 1.0) * f.area.height());
-    if (started) path.lineTo(point); else path.moveTo(point);
+    if (started)
+      path.lineTo(point);
+    else
+      path.moveTo(point);
     started = true;
   }
   // Without antialiasing: stroking antialiased polylines took three quarters of a frame
@@ -212,12 +215,12 @@ void draw_budget(QPainter& p, const ChartFrame& f, int level, double threshold,
     const FrameReport& books = r.layer_reports.front();
     return neglected_error(books.carried, books.flow, Level(level));
   });
-  const Series measured = drawn_only([](const AnimationFrame& r) { return r.max_measured_error_px; });
+  const Series measured =
+      drawn_only([](const AnimationFrame& r) { return r.max_measured_error_px; });
   const FrameValue estimated = of_records(f, estimate), measured_at = of_records(f, measured);
-  const double top =
-      std::max(series_top(f, estimated, threshold), series_top(f, measured_at, 0.1));
-  draw_frame_box(p, f, QObject::tr("%1: error left").arg(level_name(Level(level))),
-                 top, text, QStringLiteral(" px"));
+  const double top = std::max(series_top(f, estimated, threshold), series_top(f, measured_at, 0.1));
+  draw_frame_box(p, f, QObject::tr("%1: error left").arg(level_name(Level(level))), top, text,
+                 QStringLiteral(" px"));
   QPen dashed(text, 1.0, Qt::DashLine);
   const double y = f.area.bottom() - std::min(threshold / top, 1.0) * f.area.height();
   p.setPen(dashed);
@@ -470,10 +473,12 @@ void AnalysisView::Charts::paint_engine(QPainter& p, const std::vector<QRect>& a
   };
   const FrameValue time = of_records(chart(0), [](const AnimationFrame& r) { return r.time_ms; });
   const double time_top = series_top(chart(0), time, 1.0);
-  draw_frame_box(p, chart(0), tr("frame time of the engine"), time_top, text, QStringLiteral(" ms"));
+  draw_frame_box(p, chart(0), tr("frame time of the engine"), time_top, text,
+                 QStringLiteral(" ms"));
   draw_series(p, chart(0), time_top, QPen(text, 1.5), time);
   draw_levels(p, chart(1), text);
-  draw_frame_box(p, chart(2), tr("approximated (not re-rendered)"), 100.0, text, QStringLiteral("%"));
+  draw_frame_box(p, chart(2), tr("approximated (not re-rendered)"), 100.0, text,
+                 QStringLiteral("%"));
   draw_series(p, chart(2), 100.0, QPen(level_qcolor(int(Level::kAffine)), 2.0),
               of_records(chart(2), drawn_only([](const AnimationFrame& r) {
                            return approximated_percent(r);
@@ -497,11 +502,11 @@ void AnalysisView::Charts::paint_comparison(QPainter& p, const QRect& rect,
                  [](const ComparedFrame& f) { return f.max_measured_error_px; }, true, 0.1, 1.0},
                 text);
   // Wall times: a frame the machine was busy elsewhere would flatten every other frame.
-  draw_compared(p, chart(1), runs,
-                {tr("frame time, per policy (the slowest 2% of frames clipped at the top)"),
-                 QStringLiteral(" ms"), [](const ComparedFrame& f) { return f.time_ms; }, false,
-                 0.1, 0.98},
-                text);
+  draw_compared(
+      p, chart(1), runs,
+      {tr("frame time, per policy (the slowest 2% of frames clipped at the top)"),
+       QStringLiteral(" ms"), [](const ComparedFrame& f) { return f.time_ms; }, false, 0.1, 0.98},
+      text);
   draw_compared(p, chart(2), runs,
                 {tr("work in the cost model (perspective-warp pixels), per policy"), QString(),
                  [](const ComparedFrame& f) { return f.model_work; }, false, 1.0, 1.0},
@@ -584,7 +589,9 @@ QString AnalysisView::status_text() const {
   if (comparing()) return comparison_status();
   const QString reason = not_drawn_reason(now);
   if (!reason.isEmpty()) {
-    return tr("Frame %1: nothing is drawn (%2); the charts leave a gap.").arg(now.frame).arg(reason);
+    return tr("Frame %1: nothing is drawn (%2); the charts leave a gap.")
+        .arg(now.frame)
+        .arg(reason);
   }
   return tr("Frame %1: %2 of %3 layers drawn, %4% approximated, largest measured error %5 px.")
       .arg(now.frame)
@@ -607,7 +614,9 @@ QString AnalysisView::comparison_status() const {
       errors << tr("%1 %2 px").arg(name).arg(now->max_measured_error_px, 0, 'f', 2);
     }
   }
-  return tr("Frame %1, largest measured error: %2.").arg(current_).arg(errors.join(QStringLiteral(", ")));
+  return tr("Frame %1, largest measured error: %2.")
+      .arg(current_)
+      .arg(errors.join(QStringLiteral(", ")));
 }
 
 void AnalysisView::follow_current_frame(int current, int loop_frames) {
@@ -660,9 +669,7 @@ QImage AnalysisView::render_image() {
   return image;
 }
 
-double AnalysisView::smallest_text_px() const {
-  return QFontInfo(chart_font(theme_)).pixelSize();
-}
+double AnalysisView::smallest_text_px() const { return QFontInfo(chart_font(theme_)).pixelSize(); }
 
 void AnalysisView::set_theme(const ViewTheme& theme) {
   theme_ = theme;

@@ -42,16 +42,21 @@ void select_data(QComboBox* box, const QVariant& data) {
 
 std::string panel_display_names(const std::string& separator) {
   std::string names;
-  for (PanelDisplay d : kDisplays) names += (names.empty() ? "" : separator) + panel_display_name(d);
+  for (PanelDisplay d : kDisplays)
+    names += (names.empty() ? "" : separator) + panel_display_name(d);
   return names;
 }
 
 const char* panel_display_name(PanelDisplay display) {
   switch (display) {
-    case PanelDisplay::kDifference: return "difference";
-    case PanelDisplay::kBlink: return "blink";
-    case PanelDisplay::kComparison: return "comparison";
-    default: return "side-by-side";
+    case PanelDisplay::kDifference:
+      return "difference";
+    case PanelDisplay::kBlink:
+      return "blink";
+    case PanelDisplay::kComparison:
+      return "comparison";
+    default:
+      return "side-by-side";
   }
 }
 
@@ -75,21 +80,25 @@ AnimationControls::AnimationControls(QWidget* parent) : QWidget(parent) {
 }
 
 void AnimationControls::explain_controls() {
-  source_box_->setToolTip(tr("What plays: the scene panel's plane, a shipped script, scene or "
-                             "scene-shifting run, or a file"));
+  source_box_->setToolTip(
+      tr("What plays: the scene panel's plane, a shipped script, scene or "
+         "scene-shifting run, or a file"));
   viewer_box_->setToolTip(tr("The viewer's path through a scene (a viewer script)"));
   display_box_->setToolTip(tr("How the engine's frame and the exact projection are shown"));
   mode_box_->setToolTip(tr("The reuse policy: which update levels the engine may use"));
-  delta_box_->setToolTip(tr("Delta: how much of the scaling the perspective cache takes from "
-                            "the affine warp (section 5.4.3)"));
+  delta_box_->setToolTip(
+      tr("Delta: how much of the scaling the perspective cache takes from "
+         "the affine warp (section 5.4.3)"));
   sampling_box_->setToolTip(tr("Nearest or bilinear sampling in the warps"));
-  content_box_->setToolTip(tr("What a re-render draws, and so what it costs: the texture (one "
-                              "warp), a shaded brick lit per sample, or a facade impostor of "
-                              "lit, depth-tested boxes (manual/costs.md). A scene's polygons "
-                              "show the contents its file gives"));
-  quality_box_->setToolTip(tr("The content's quality: samples per pixel of the shaded brick, "
-                              "detail of the impostor (1 + q storeys of 1 + 2q bays); a scene "
-                              "file's own quality wins. Dearer re-renders make reuse pay"));
+  content_box_->setToolTip(
+      tr("What a re-render draws, and so what it costs: the texture (one "
+         "warp), a shaded brick lit per sample, or a facade impostor of "
+         "lit, depth-tested boxes (manual/costs.md). A scene's polygons "
+         "show the contents its file gives"));
+  quality_box_->setToolTip(
+      tr("The content's quality: samples per pixel of the shaded brick, "
+         "detail of the impostor (1 + q storeys of 1 + 2q bays); a scene "
+         "file's own quality wins. Dearer re-renders make reuse pay"));
 }
 
 QWidget* AnimationControls::make_source_row() {
@@ -287,8 +296,8 @@ QToolButton* AnimationControls::make_compare_button(QWidget* parent) {
   compare_button_->setObjectName(QStringLiteral("animation_compared"));
   compare_button_->setText(tr("Policies"));
   compare_button_->setPopupMode(QToolButton::InstantPopup);
-  compare_button_->setToolTip(tr("The reuse policies the comparison plays: 2 to %1 of them")
-                                  .arg(kMaxComparedPolicies));
+  compare_button_->setToolTip(
+      tr("The reuse policies the comparison plays: 2 to %1 of them").arg(kMaxComparedPolicies));
   auto* menu = new QMenu(compare_button_);
   for (const ReusePolicy& p : reuse_policies()) {
     QAction* action = menu->addAction(QString(p.name));
@@ -357,7 +366,8 @@ void AnimationControls::add_file_entry(QComboBox* box, const std::string& kind,
                                        const std::string& path) {
   const QString file = tr("file %1").arg(QString::fromStdString(path));
   if (kind.empty()) {
-    if (box->findData(QString::fromStdString(path)) < 0) box->addItem(file, QString::fromStdString(path));
+    if (box->findData(QString::fromStdString(path)) < 0)
+      box->addItem(file, QString::fromStdString(path));
     return;
   }
   const AnimationSourceKind* entry = find_animation_source_kind(kind);

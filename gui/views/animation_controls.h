@@ -10,7 +10,6 @@
 #pragma once
 
 #include <QWidget>
-
 #include <vector>
 
 #include "engine/engine.h"

@@ -37,7 +37,8 @@ namespace {
 constexpr int kDifferenceScale = 128;  // grey levels at the top of the heat map's colour bar
 constexpr double kNear = 0.05;         // near plane of the exact render (SceneSettings::near)
 constexpr double kHeatRowShare = 0.34;
-constexpr double kCaptionLine = 1.4;  // caption line height, times the text size  // the comparison's heat-map row, of the panels' height
+constexpr double kCaptionLine = 1.4;  // caption line height, times the text size  // the
+                                      // comparison's heat-map row, of the panels' height
 // A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
 constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
@@ -62,7 +63,8 @@ QStringList run_caption(const AnimationFrame& frame, double run_pixels, double r
     levels << (frame.layers > 1 ? QStringLiteral("%1 %2").arg(name).arg(n) : name);
   }
   if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
-  return {QObject::tr("%1 · error %2 px").arg(levels.join(QStringLiteral(", ")))
+  return {QObject::tr("%1 · error %2 px")
+              .arg(levels.join(QStringLiteral(", ")))
               .arg(frame.max_measured_error_px, 0, 'f', 2),
           QObject::tr("%1 px, %2 ms (run %3 px, %4 ms)")
               .arg(count_text(double(frame.pixels_written)))
@@ -74,8 +76,9 @@ QStringList run_caption(const AnimationFrame& frame, double run_pixels, double r
 // The caption of a difference heat map: how far the two frames agree.
 QStringList agreement_caption(const Image& shown, const Image& exact) {
   const FrameAgreement a = frame_agreement(shown, exact);
-  const QString psnr = std::isfinite(a.psnr_db) ? QString::number(a.psnr_db, 'f', 1) + QStringLiteral(" dB")
-                                                : QObject::tr("equal");
+  const QString psnr = std::isfinite(a.psnr_db)
+                           ? QString::number(a.psnr_db, 'f', 1) + QStringLiteral(" dB")
+                           : QObject::tr("equal");
   return {QObject::tr("coverage IoU %1 · PSNR %2").arg(a.mask_iou, 0, 'f', 3).arg(psnr)};
 }
 
@@ -171,8 +174,9 @@ QWidget* AnimationView::make_panels() {
   zoom_box_->setSingleStep(0.25);
   zoom_box_->setValue(1.0);
   zoom_box_->setSuffix(QStringLiteral(" x"));
-  zoom_box_->setToolTip(tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
-                           "over the panels)"));
+  zoom_box_->setToolTip(
+      tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
+         "over the panels)"));
   auto* fit = new QPushButton(tr("Fit"), box);
   fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
   bottom->addWidget(readout_, 1);
@@ -198,9 +202,10 @@ QComboBox* AnimationView::make_exact_box(QWidget* parent) {
   for (const ExactRendererKind& kind : exact_renderers()) {
     exact_box_->addItem(QString::fromStdString(kind.label));
   }
-  exact_box_->setToolTip(tr("Who draws the exact panel: core's exact warp of the scene (the "
-                            "engine's own re-render, with its content) or VTK's OpenGL "
-                            "pipeline, an independent renderer that draws textures only"));
+  exact_box_->setToolTip(
+      tr("Who draws the exact panel: core's exact warp of the scene (the "
+         "engine's own re-render, with its content) or VTK's OpenGL "
+         "pipeline, an independent renderer that draws textures only"));
   connect(exact_box_, QOverload<int>::of(&QComboBox::activated), this,
           [this](int index) { set_exact_renderer(exact_renderers().at(size_t(index))); });
   return exact_box_;
@@ -279,7 +284,8 @@ const Image& AnimationView::exact_image() {
   const Animator* animator = model_->animator();
   if (!animator || exact_frame_index_ == animator->frame()) return exact_frame_;
   try {
-    if (!exact_) exact_ = exact_kind_->make(animator->scene(), animator->camera(), model_->settings());
+    if (!exact_)
+      exact_ = exact_kind_->make(animator->scene(), animator->camera(), model_->settings());
     exact_frame_ = exact_->render(animator->view());
   } catch (const std::exception& e) {  // no display for VTK: show the engine alone
     exact_frame_ = Image(animator->camera().width, animator->camera().height);
@@ -297,13 +303,15 @@ PanelContent AnimationView::engine_panel() {
   }
   const std::string title =
       fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
-  return {QString::fromStdString(title), image_view(engine_image()),
-          model_->animator()->outlines(), run_caption(model_->current(), pixels, ms)};
+  return {QString::fromStdString(title), image_view(engine_image()), model_->animator()->outlines(),
+          run_caption(model_->current(), pixels, ms)};
 }
 
 PanelContent AnimationView::exact_panel() {
   const Animator* animator = model_->animator();
-  return {QString::fromStdString(exact_kind_->title), image_view(exact_image()), {},
+  return {QString::fromStdString(exact_kind_->title),
+          image_view(exact_image()),
+          {},
           {tr("frame %1 of %2").arg(animator->frame()).arg(animator->frame_count())}};
 }
 
@@ -319,8 +327,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
       continue;
     }
     const Image& image = run.animator->image();
-    shown.push_back({tr("%1 policy").arg(name), image_view(image),
-                     run.animator->outlines(),
+    shown.push_back({tr("%1 policy").arg(name), image_view(image), run.animator->outlines(),
                      run_caption(run.last, double(run.pixels_written), run.time_ms)});
     QImage& map = heat_images_[heat.size()];
     difference_map_into(image, exact, kDifferenceScale, map);
@@ -339,7 +346,9 @@ std::vector<PanelContent> AnimationView::panels() {
     case PanelDisplay::kDifference:
       if (heat_images_.empty()) heat_images_.resize(1);
       difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
-      return {{tr("engine - exact"), heat_images_[0], {},
+      return {{tr("engine - exact"),
+               heat_images_[0],
+               {},
                agreement_caption(engine_image(), exact_image())}};
     case PanelDisplay::kBlink:
       return {blink_phase_ ? exact_panel() : engine_panel()};
@@ -355,7 +364,8 @@ QRectF AnimationView::fit_content() {
   const AnimationSourceKind& kind = model_->source_kind();
   if (kind.plane_script) {
     try {
-      fit_ = script_image_bounds(kind.plane_script(model_->source(), *model_->scene_model()), kNear);
+      fit_ =
+          script_image_bounds(kind.plane_script(model_->source(), *model_->scene_model()), kNear);
     } catch (const std::exception&) {  // the model refuses such sources with a message
       fit_ = QRectF();
     }
@@ -366,7 +376,8 @@ QRectF AnimationView::fit_content() {
 
 void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
                                 const std::vector<std::vector<Vec2>>& outlines) {
-  const QRectF target = centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height());
+  const QRectF target =
+      centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height());
   panel_rects_.push_back(target);
   const QTransform to_panel = frame_to_panel(shown_frame_, target);
   const QColor background = qcolor(theme_.background);
@@ -374,7 +385,8 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   painter.save();
   painter.setClipRect(target);
   // Outside the camera image: a shade apart from the image's own background.
-  painter.fillRect(target, background.lightness() > 128 ? background.darker(112) : background.lighter(160));
+  painter.fillRect(target,
+                   background.lightness() > 128 ? background.darker(112) : background.lighter(160));
   const QRectF image_rect = to_panel.mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size())));
   painter.fillRect(image_rect, background);
   painter.setTransform(to_panel);
@@ -407,31 +419,36 @@ int AnimationView::wrap_captions(std::vector<PanelContent>& contents, int canvas
   for (size_t i = 0; i < contents.size(); ++i) {
     if (heat_row && int(i) >= columns) break;  // the heat maps' one-line captions stay as they are
     QStringList wrapped;
-    for (const QString& line : contents[i].caption) wrapped += wrapped_caption(line, metrics, cell_width);
+    for (const QString& line : contents[i].caption)
+      wrapped += wrapped_caption(line, metrics, cell_width);
     contents[i].caption = wrapped;
     lines = std::max(lines, int(wrapped.size()));
   }
   return lines;
 }
 
-void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell) {
+void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
+                                const PanelCell& cell) {
   const int text_px = theme_.font_size;
   QFont font = painter.font();
   font.setBold(true);
   // The title a little larger than the text when it fits, else at the text size, elided.
   font.setPixelSize(int(text_px * 1.15));
-  if (QFontMetrics(font).horizontalAdvance(panel.title) > cell.title.width()) font.setPixelSize(text_px);
+  if (QFontMetrics(font).horizontalAdvance(panel.title) > cell.title.width())
+    font.setPixelSize(text_px);
   painter.setFont(font);
   painter.setPen(qcolor(theme_.text));
-  painter.drawText(cell.title, Qt::AlignCenter,
-                   QFontMetrics(font).elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
+  painter.drawText(
+      cell.title, Qt::AlignCenter,
+      QFontMetrics(font).elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
   font.setPixelSize(text_px);
   font.setBold(false);
   painter.setFont(font);
   const QFontMetrics metrics(font);
   const double line = text_px * kCaptionLine;
   for (int i = 0; i < panel.caption.size() && (i + 1) * line <= cell.caption.height() + 1; ++i) {
-    const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(), line);
+    const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(),
+                     line);
     painter.drawText(row, Qt::AlignCenter,
                      metrics.elidedText(panel.caption[i], Qt::ElideRight, int(row.width())));
   }
@@ -454,8 +471,9 @@ void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool level
   if (levels) draw_level_legend(painter, legend, text, text_px);
   if (heat) {
     bar.setWidth(std::min(bar.width(), 30.0 * text_px));
-    draw_difference_bar(painter, QRectF(bar.left(), bar.bottom() - std::min(bar.height(), bar_height),
-                                        bar.width(), std::min(bar.height(), bar_height)),
+    draw_difference_bar(painter,
+                        QRectF(bar.left(), bar.bottom() - std::min(bar.height(), bar_height),
+                               bar.width(), std::min(bar.height(), bar_height)),
                         kDifferenceScale, text, text_px);
   }
 }
@@ -486,8 +504,10 @@ QImage AnimationView::compose(const QSize& size) {
   std::vector<PanelCell> cells = panel_row(top, columns, gap, title, caption);
   QRectF legends(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
   if (heat_row) {
-    const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(), area.bottom() - top.bottom() - gap / 2);
-    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, caption / 2);  // one line
+    const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(),
+                        area.bottom() - top.bottom() - gap / 2);
+    const std::vector<PanelCell> more =
+        panel_row(bottom, columns, gap, title, caption / 2);  // one line
     cells.insert(cells.end(), more.begin(), more.end() - 1);
     legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
   }
@@ -497,7 +517,8 @@ QImage AnimationView::compose(const QSize& size) {
                              first.width() / first.height(), zoom_);
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
   QPainter painter(&canvas);
-  for (size_t i = 0; i < contents.size(); ++i) paint_panel(painter, contents[i], cells[i], outlines);
+  for (size_t i = 0; i < contents.size(); ++i)
+    paint_panel(painter, contents[i], cells[i], outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
   paint_band(painter, legends, levels, heat_row || display_ == PanelDisplay::kDifference);

@@ -2,11 +2,11 @@
 // of the same frame, drawn by the chosen exact renderer (gui/adapters/exact_frames.h): by
 // default core's exact re-render of the scene with the engine's content (the picture the
 // engine's re-render level and the analysis's baseline draw), or independently by VTK as
-// textured 3D polygons with the matching camera. Made for a projector: the panels are painted at the
-// view's own size and fill it, every panel shows the same part of the camera image (zoom to
-// fit on the plane over its whole loop, times a zoom the teacher sets with the Zoom box or
-// the mouse wheel), every panel outlines the exact polygons, and titles, numbers and
-// legends sit in bands around the images, never over them.
+// textured 3D polygons with the matching camera. Made for a projector: the panels are painted at
+// the view's own size and fill it, every panel shows the same part of the camera image (zoom to fit
+// on the plane over its whole loop, times a zoom the teacher sets with the Zoom box or the mouse
+// wheel), every panel outlines the exact polygons, and titles, numbers and legends sit in bands
+// around the images, never over them.
 //
 // Layouts (PanelDisplay): side by side (engine | exact); the difference heat map; blink
 // (engine and exact in turn); and the comparison, which plays several reuse policies at
@@ -157,7 +157,7 @@ class AnimationView : public ViewPage {
   QRectF fit_;              // the plane's image over its loop (empty: the whole image)
   QRectF shown_frame_;
   std::vector<QRectF> panel_rects_;
-  QImage buffers_[2];  // the composed view, painted into in turn (compose)
+  QImage buffers_[2];                // the composed view, painted into in turn (compose)
   std::vector<QImage> heat_images_;  // the heat maps of the last frame, reused
   int next_buffer_ = 0;
 };

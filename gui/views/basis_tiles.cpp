@@ -91,8 +91,9 @@ void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_p
         sign * std::clamp(amount, 0.0, 1.0) * kMaxShift * unit_normaliser(term.unit);
     tile.grid = deformed_grid(term.unit, scale);
     tile.title = term.symbol;
-    tile.value = tile.active ? QString::number(value, 'g', 3).toStdString() + " " + order_unit(term.order)
-                             : std::string("0 (zero)");
+    tile.value = tile.active
+                     ? QString::number(value, 'g', 3).toStdString() + " " + order_unit(term.order)
+                     : std::string("0 (zero)");
   }
 }
 

@@ -9,12 +9,12 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "models/scene_model.h"
+#include "scene/view_culling.h"
 #include "views/basis_tiles.h"
 #include "views/flow_parts.h"
 #include "views/image_canvas.h"
 #include "views/paint_helpers.h"
-#include "models/scene_model.h"
-#include "scene/view_culling.h"
 
 namespace oflab {
 namespace {
@@ -71,10 +71,12 @@ QWidget* BasisView::make_option_bar() {
   play_box_->setObjectName(QStringLiteral("gallery_play"));
   row->addWidget(play_box_);
   row->addStretch(1);
-  basis_box_->setToolTip(tr("The basis the flow's Taylor terms are shown in (dissertation "
-                            "Fig. 14-16)"));
-  amount_slider_->setToolTip(tr("How far each tile deforms its grid, as a fraction of half a "
-                                "tile"));
+  basis_box_->setToolTip(
+      tr("The basis the flow's Taylor terms are shown in (dissertation "
+         "Fig. 14-16)"));
+  amount_slider_->setToolTip(
+      tr("How far each tile deforms its grid, as a fraction of half a "
+         "tile"));
   play_box_->setToolTip(tr("Animate every tile from undeformed to the chosen amount and back"));
   connect(basis_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
           [this](int) { refresh(); });
@@ -143,10 +145,12 @@ void BasisView::update_tiles() {
   }
   QString outside;
   if (!plane_meets_image(scene.camera, context.pose, 1e-3)) {
-    outside = tr("The plane is outside the image: these are the terms of its plane extended "
-                 "beyond the picture, not of anything seen. ");
+    outside =
+        tr("The plane is outside the image: these are the terms of its plane extended "
+           "beyond the picture, not of anything seen. ");
   }
-  summary_->setText(outside + tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
+  summary_->setText(outside +
+                    tr("%1: %2 of 12 terms are non-zero for the current motion, %3 of the 6 "
                        "second-order ones. Grey tiles are terms this flow does not excite.")
                         .arg(QString::fromUtf8(basis_title(basis())))
                         .arg(tiles_->active_tile_count())

@@ -1,8 +1,8 @@
 #include "views/coefficient_table.h"
 
 #include <QComboBox>
-#include <QHeaderView>
 #include <QEvent>
+#include <QHeaderView>
 #include <QLabel>
 #include <QScrollBar>
 #include <QTableWidget>
@@ -67,8 +67,8 @@ void CoefficientTable::refill() {
                                  QString::fromUtf8(order_unit(term.order))};
       for (int col = 0; col < 3; ++col) {
         auto* item = new QTableWidgetItem(cells[col]);
-        item->setToolTip(tr("%1: %2, in %3")
-                             .arg(cells[0], QString::fromStdString(term.description), cells[2]));
+        item->setToolTip(
+            tr("%1: %2, in %3").arg(cells[0], QString::fromStdString(term.description), cells[2]));
         if (col == 1) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         table_->setItem(row, col, item);
       }

@@ -8,10 +8,10 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "models/scene_model.h"
 #include "views/coefficient_table.h"
 #include "views/image_canvas.h"
 #include "views/paint_helpers.h"
-#include "models/scene_model.h"
 
 namespace oflab {
 
@@ -29,14 +29,15 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   auto* side_layout = new QVBoxLayout(side);
   side_layout->setContentsMargins(4, 0, 0, 0);
   side_layout->addWidget(make_option_bar());
-  outside_note_ = new QLabel(
-      tr("The plane is outside the image. The terms below are those of its plane "
-         "extended beyond the picture, not of anything seen."),
-      side);
+  outside_note_ =
+      new QLabel(tr("The plane is outside the image. The terms below are those of its plane "
+                    "extended beyond the picture, not of anything seen."),
+                 side);
   outside_note_->setObjectName(QStringLiteral("flow_outside_note"));
   outside_note_->setWordWrap(true);
-  outside_note_->setStyleSheet(QStringLiteral("QLabel { color: white; background: #D55E00; "
-                                              "padding: 4px; }"));
+  outside_note_->setStyleSheet(
+      QStringLiteral("QLabel { color: white; background: #D55E00; "
+                     "padding: 4px; }"));
   outside_note_->hide();
   side_layout->addWidget(outside_note_);
   side_layout->addWidget(table_, 1);
@@ -84,11 +85,13 @@ QWidget* FlowView::make_option_bar() {
   common_scale_box_->setToolTip(
       tr("Draw every part at the full flow's arrow scale, so parts compare by length"));
   zoom_box_->setToolTip(tr("Fit the view to the plane's image instead of the whole image"));
-  arrows_box_->setToolTip(tr("Arrows of the chosen part of the flow, length in pixels per second "
-                             "times the arrow scale; colour is the magnitude, px/s"));
+  arrows_box_->setToolTip(
+      tr("Arrows of the chosen part of the flow, length in pixels per second "
+         "times the arrow scale; colour is the magnitude, px/s"));
   streamlines_box_->setToolTip(tr("Paths a point would follow in the instantaneous field"));
-  wheel_box_->setToolTip(tr("Colour the plane by the flow: hue is the direction, saturation "
-                            "the magnitude"));
+  wheel_box_->setToolTip(
+      tr("Colour the plane by the flow: hue is the direction, saturation "
+         "the magnitude"));
   texture_box_->setToolTip(tr("Show the plane's texture under the flow"));
   const FlowDisplay defaults;
   arrows_box_->setChecked(defaults.arrows);

@@ -28,10 +28,12 @@ QString layers_summary(const AnimationFrame& f, const ReusePolicy& policy) {
                      .arg(f.hidden);
   text += QStringLiteral("<br>The level of each layer is the colour of its outline.");
   const QString reason = not_drawn_reason(f);
-  if (!reason.isEmpty()) text += QStringLiteral("<br>Nothing is drawn: %1.").arg(reason.toHtmlEscaped());
+  if (!reason.isEmpty())
+    text += QStringLiteral("<br>Nothing is drawn: %1.").arg(reason.toHtmlEscaped());
   if (policy.initial_view == InitialView::kAffinePart && f.levels[size_t(Level::kRerender)] > 0) {
-    text += QStringLiteral("<br>Re-rendered layers show the %1 policy's affine initial view "
-                           "(section 6.5), not the exact projection.")
+    text += QStringLiteral(
+                "<br>Re-rendered layers show the %1 policy's affine initial view "
+                "(section 6.5), not the exact projection.")
                 .arg(QString::fromUtf8(policy.name));
   }
   if (!f.note.empty()) text += QStringLiteral("<br>Note: %1").arg(QString::fromStdString(f.note));
@@ -54,11 +56,16 @@ bool holds(const LayerOutline& outline, const Vec2& point) {
 // What a reuse level does to the previous image, in a few words.
 QString reuse_words(Level level) {
   switch (level) {
-    case Level::kNone: return QStringLiteral("the previous image, unchanged");
-    case Level::kTranslate: return QStringLiteral("the previous image moved by whole pixels");
-    case Level::kAffine: return QStringLiteral("an affine warp of the perspective cache");
-    case Level::kPerspective: return QStringLiteral("a new perspective cache, then its affine warp");
-    default: return QStringLiteral("a re-render");
+    case Level::kNone:
+      return QStringLiteral("the previous image, unchanged");
+    case Level::kTranslate:
+      return QStringLiteral("the previous image moved by whole pixels");
+    case Level::kAffine:
+      return QStringLiteral("an affine warp of the perspective cache");
+    case Level::kPerspective:
+      return QStringLiteral("a new perspective cache, then its affine warp");
+    default:
+      return QStringLiteral("a re-render");
   }
 }
 
@@ -82,8 +89,9 @@ QString scene_panel_note(const AnimationModel& model) {
   if (kind.uses_viewer && !source.viewer.empty()) {
     playing += QObject::tr(" (viewer script %1)").arg(QString::fromStdString(source.viewer));
   }
-  return QObject::tr("This view plays %1, not the plane of this panel: the plane, motion and "
-                     "camera below apply to the flow and basis views.")
+  return QObject::tr(
+             "This view plays %1, not the plane of this panel: the plane, motion and "
+             "camera below apply to the flow and basis views.")
       .arg(playing);
 }
 
@@ -105,9 +113,10 @@ QString describe_shown_view(const FrameReport& r, const ReusePolicy& policy) {
   if (r.level != Level::kRerender) return QStringLiteral("%1: %2").arg(reuse_words(r.level), off);
   const QString how = r.frame == 0 ? QStringLiteral("rendered") : QStringLiteral("re-rendered");
   if (policy.initial_view == InitialView::kAffinePart) {
-    return QStringLiteral("%1 as the %2 policy's affine initial view of section 6.5 (the affine "
-                          "part of the exact warp about the texture centre): %3; the affine view "
-                          "alone is %4 px off")
+    return QStringLiteral(
+               "%1 as the %2 policy's affine initial view of section 6.5 (the affine "
+               "part of the exact warp about the texture centre): %3; the affine view "
+               "alone is %4 px off")
         .arg(how, QString::fromUtf8(policy.name), off, px(r.affine_view_error_px));
   }
   return QStringLiteral("%1 from the texture with the exact projection: %2").arg(how, off);
@@ -126,8 +135,9 @@ QString explain_frame(const AnimationFrame& frame, const EngineSettings& setting
                      .arg(level_name(r.level))
                      .arg(describe_shown_view(r, *settings.policy).toHtmlEscaped());
   if (r.frame == 0) return text;
-  text += QStringLiteral("<br>The cheapest level whose neglected error stays within its "
-                         "threshold wins:<br>");
+  text += QStringLiteral(
+      "<br>The cheapest level whose neglected error stays within its "
+      "threshold wins:<br>");
   for (int level = 0; level < kTermCount; ++level) {
     const double error = neglected_error(r.carried, r.flow, Level(level));
     const double limit = settings.thresholds[size_t(level)];
@@ -143,15 +153,17 @@ QString explain_frame(const AnimationFrame& frame, const EngineSettings& setting
                 .arg(banned);
   }
   if (!r.note.empty()) text += QStringLiteral("Note: %1<br>").arg(QString::fromStdString(r.note));
-  text += QStringLiteral("Flow this frame (translation, affine, perspective, higher): "
-                         "%1, %2, %3, %4 px<br>")
+  text += QStringLiteral(
+              "Flow this frame (translation, affine, perspective, higher): "
+              "%1, %2, %3, %4 px<br>")
               .arg(px(r.flow[0]), px(r.flow[1]), px(r.flow[2]), px(r.flow[3]));
   text += QStringLiteral("Carried in: %1, %2, %3, %4 px; carried on: %5, %6, %7, %8 px<br>")
               .arg(px(r.carried[0]), px(r.carried[1]), px(r.carried[2]), px(r.carried[3]))
               .arg(px(r.accumulated[0]), px(r.accumulated[1]), px(r.accumulated[2]),
                    px(r.accumulated[3]));
-  text += QStringLiteral("Estimated error %1 px; measured (corners against the exact "
-                         "projection) %2 px; engine time %3 ms.")
+  text += QStringLiteral(
+              "Estimated error %1 px; measured (corners against the exact "
+              "projection) %2 px; engine time %3 ms.")
               .arg(px(r.estimated_error_px), px(r.measured_error_px))
               .arg(r.time_ms, 0, 'f', 2);
   return text;

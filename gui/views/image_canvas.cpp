@@ -43,7 +43,8 @@ void ImageCanvas::mouseMoveEvent(QMouseEvent* event) {
   const QRectF r = target_rect();
   if (r.isEmpty() || !r.contains(event->pos())) return;
   const double scale = image_.width() / r.width();
-  emit hovered(QPointF((event->pos().x() - r.left()) * scale, (event->pos().y() - r.top()) * scale));
+  emit hovered(
+      QPointF((event->pos().x() - r.left()) * scale, (event->pos().y() - r.top()) * scale));
 }
 
 void ImageCanvas::wheelEvent(QWheelEvent* event) {

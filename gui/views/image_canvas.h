@@ -1,6 +1,6 @@
 // A widget that shows one image scaled to fit (aspect kept, centred) and reports the image
-// pixel under the mouse, wheel turns and resizes. The animation view paints its panels into one image and shows it
-// here, so what the window shows is exactly what render_image returns.
+// pixel under the mouse, wheel turns and resizes. The animation view paints its panels into one
+// image and shows it here, so what the window shows is exactly what render_image returns.
 #pragma once
 
 #include <QImage>

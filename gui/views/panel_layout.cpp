@@ -29,7 +29,8 @@ QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, do
     int head_keeps;  // characters of the separator ending the first line
     int tail_skips;  // characters of the separator not starting the next line
   };
-  const Break breaks[] = {{QStringLiteral(" \u00b7 "), 0, 3}, {QStringLiteral(" ("), 0, 1},
+  const Break breaks[] = {{QStringLiteral(" \u00b7 "), 0, 3},
+                          {QStringLiteral(" ("), 0, 1},
                           {QStringLiteral(", "), 1, 2}};
   for (const Break& b : breaks) {
     for (int at = text.lastIndexOf(b.separator); at > 0;

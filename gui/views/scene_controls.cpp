@@ -17,7 +17,8 @@ SceneControls::SceneControls(SceneModel* model, QWidget* parent) : QWidget(paren
   note_ = new QLabel(this);
   note_->setObjectName(QStringLiteral("scene_panel_note"));
   note_->setWordWrap(true);
-  note_->setStyleSheet(QStringLiteral("QLabel { color: white; background: #0072B2; padding: 4px; }"));
+  note_->setStyleSheet(
+      QStringLiteral("QLabel { color: white; background: #0072B2; padding: 4px; }"));
   note_->hide();
   layout->addWidget(note_);
   groups_ = {make_motion_group(), make_plane_group(), make_camera_group()};
@@ -61,16 +62,14 @@ QWidget* SceneControls::make_motion_group() {
   for (int i = 0; i < 3; ++i) {
     add_control(
         group, QStringLiteral("velocity_%1").arg(axes[i]), QStringLiteral("V %1").arg(axes[i]),
-        tr("Velocity V of the plane along the camera's %1 axis")
-            .arg(directions[i]),
+        tr("Velocity V of the plane along the camera's %1 axis").arg(directions[i]),
         {-3.0, 3.0, 0.01, 2, tr(" u/s")}, [i](const PlaneScene& s) { return s.motion.velocity[i]; },
         [i](PlaneScene& s, double v) { s.motion.velocity[i] = v; });
   }
   for (int i = 0; i < 3; ++i) {
     add_control(
         group, QStringLiteral("omega_%1").arg(axes[i]), QStringLiteral("Omega %1").arg(axes[i]),
-        tr("Angular velocity Omega of the plane about the camera's %1 axis")
-            .arg(directions[i]),
+        tr("Angular velocity Omega of the plane about the camera's %1 axis").arg(directions[i]),
         {-3.0, 3.0, 0.01, 2, tr(" rad/s")}, [i](const PlaneScene& s) { return s.motion.omega[i]; },
         [i](PlaneScene& s, double v) { s.motion.omega[i] = v; });
   }
@@ -115,8 +114,7 @@ QWidget* SceneControls::make_plane_group() {
   add_control(
       group, QStringLiteral("distance"), tr("Distance"),
       tr("Depth Z of the plane's centre in front of the eye at frame 0"),
-      {-5.0, 30.0, 0.05, 2, tr(" u")},
-      [](const PlaneScene& s) { return s.pose.point.z; },
+      {-5.0, 30.0, 0.05, 2, tr(" u")}, [](const PlaneScene& s) { return s.pose.point.z; },
       [](PlaneScene& s, double v) { s.pose = with_centre_depth(s.pose, v); });
   return group;
 }

@@ -1,17 +1,17 @@
 #include "views/slices_view.h"
 
-#include <QHBoxLayout>
 #include <QFontMetricsF>
+#include <QHBoxLayout>
 #include <QPainter>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <functional>
 
+#include "adapters/exact_frames.h"
+#include "adapters/frame_images.h"
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
-#include "adapters/frame_images.h"
-#include "adapters/exact_frames.h"
 #include "views/slider_spin.h"
 
 namespace oflab {
@@ -32,8 +32,8 @@ QFont diagram_font(const ViewTheme& theme) {
 constexpr double kHalfWidth = 12.0;
 
 const QColor kBandA(90, 170, 120, 60), kBandB(90, 120, 170, 60);
-const QColor kAsymptote(213, 94, 0);   // Okabe-Ito vermillion
-const QColor kPlane(230, 159, 0);      // Okabe-Ito orange
+const QColor kAsymptote(213, 94, 0);  // Okabe-Ito vermillion
+const QColor kPlane(230, 159, 0);     // Okabe-Ito orange
 
 // The depth axis under the diagram: a tick and label at each depth_ticks value, the eye's
 // 0 at the left, and the axis title at the right.
@@ -104,8 +104,8 @@ QPixmap titled_picture(const Image& frame, const QString& title, const QSize& ar
   const double title_h = 1.6 * theme.font_size;
   p.drawText(QRectF(0, 0, area.width(), title_h), Qt::AlignCenter, title);
   if (!frame.empty()) {
-    const QSize fitted =
-        QSize(frame.width(), frame.height()).scaled(area - QSize(0, int(title_h)), Qt::KeepAspectRatio);
+    const QSize fitted = QSize(frame.width(), frame.height())
+                             .scaled(area - QSize(0, int(title_h)), Qt::KeepAspectRatio);
     const QRectF target(0.5 * (area.width() - fitted.width()), title_h, fitted.width(),
                         fitted.height());
     p.setRenderHint(QPainter::SmoothPixmapTransform, true);
@@ -141,11 +141,12 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   const double left = 40, right = width - 20, bottom = height - 2.4 * line - 10;
   p.setPen(qcolor(theme.text));
   p.drawText(QPointF(left, line), QString("%1 slices (%2 finite + background)")
-                                       .arg(slices.size())
-                                       .arg(slices.empty() ? 0 : slices.size() - 1));
+                                      .arg(slices.size())
+                                      .arg(slices.empty() ? 0 : slices.size() - 1));
   // Under the legend, a row of its own for the asymptote's label, so it never meets the
   // legend, the plane marks or the bands' edges.
-  const double label_row = draw_diagram_legend(p, QRectF(left, 1.3 * line, right - left, line), theme);
+  const double label_row =
+      draw_diagram_legend(p, QRectF(left, 1.3 * line, right - left, line), theme);
   const double top = label_row + 1.2 * line + 4;
   std::function<double(double)> x_of = [&](double z) {
     return left + (right - left) * std::sqrt(std::min(z, max_depth) / max_depth);
@@ -192,8 +193,9 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
 SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(false)) {
   epsilon_ = new SliderSpin("epsilon", 0.25, 8.0, 0.25, 2, " px/frame", this);
   speed_ = new SliderSpin("speed |V|", 0.01, 0.2, 0.01, 2, " units/frame", this);
-  epsilon_->set_description(tr("Tolerance epsilon: how far apart, at most, the points of one "
-                               "slice may move in a frame"));
+  epsilon_->set_description(
+      tr("Tolerance epsilon: how far apart, at most, the points of one "
+         "slice may move in a frame"));
   speed_->set_description(tr("Speed |V| of the viewer moving sideways"));
   diagram_ = new QLabel(this);
   frame_label_ = new QLabel(this);
@@ -308,15 +310,15 @@ void SlicesView::refresh() {
   // The diagram changes with the slices (a restart), the theme and the size, not per frame.
   const QSize area = diagram_->size().expandedTo(QSize(160, 120));
   if (!diagram_current_ || area != diagram_size_) {
-    diagram_->setPixmap(QPixmap::fromImage(slice_diagram(area.width(), area.height(), slices_,
-                                                         asymptote, planes, max_depth, theme_)));
+    diagram_->setPixmap(QPixmap::fromImage(
+        slice_diagram(area.width(), area.height(), slices_, asymptote, planes, max_depth, theme_)));
     diagram_current_ = true;
     diagram_size_ = area;
   }
   if (renderer_) {
-    frame_label_->setPixmap(titled_picture(
-        renderer_->frame(), tr("scene shifting (slices)"),
-        frame_label_->size().expandedTo(QSize(160, 120)), theme_));
+    frame_label_->setPixmap(titled_picture(renderer_->frame(), tr("scene shifting (slices)"),
+                                           frame_label_->size().expandedTo(QSize(160, 120)),
+                                           theme_));
   }
   render_exact();
   exact_label_->setPixmap(titled_picture(
@@ -344,8 +346,9 @@ void SlicesView::resizeEvent(QResizeEvent* event) {
 }
 
 QString SlicesView::scene_panel_note() const {
-  return tr("This view plays its own train-window scene, not the plane of this panel: the "
-            "plane, motion and camera below apply to the flow and basis views.");
+  return tr(
+      "This view plays its own train-window scene, not the plane of this panel: the "
+      "plane, motion and camera below apply to the flow and basis views.");
 }
 
 double SlicesView::smallest_text_px() const { return QFontInfo(diagram_font(theme_)).pixelSize(); }

@@ -3,20 +3,19 @@
 // the eye, the slice boundaries, the asymptote k|V|/epsilon, the scene's planes, with depth
 // ticks and a legend) beside the scene-shifting renderer's layered animation and the exact
 // projection of the same frame (core's exact render, gui/adapters/exact_frames.h), with epsilon and
-// the viewer's speed on sliders. Everything shown comes from core/scene_shifting/scene_shifting.h and
-// core/scene_shifting/scene_shifting_renderer.h; this file only draws it.
+// the viewer's speed on sliders. Everything shown comes from core/scene_shifting/scene_shifting.h
+// and core/scene_shifting/scene_shifting_renderer.h; this file only draws it.
 #pragma once
-
-#include <memory>
-#include <vector>
 
 #include <QImage>
 #include <QLabel>
+#include <memory>
+#include <vector>
 
 #include "image/image.h"
 #include "scene/scene.h"
-#include "scene_shifting/scene_shifting_renderer.h"
 #include "scene/viewer_script.h"
+#include "scene_shifting/scene_shifting_renderer.h"
 #include "views/view_page.h"
 
 namespace oflab {

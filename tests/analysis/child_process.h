@@ -18,9 +18,9 @@ struct ChildResult {
   int code = -1;        // exit status when exited
   int signal = 0;
   bool timed_out = false;
-  double seconds = 0.0;   // wall time
-  long peak_rss_kb = 0;   // getrusage ru_maxrss of the child
-  std::string out, err;   // what it wrote
+  double seconds = 0.0;  // wall time
+  long peak_rss_kb = 0;  // getrusage ru_maxrss of the child
+  std::string out, err;  // what it wrote
 };
 
 // Runs `binary` with `args` in a child (stdout and stderr into files of `dir`), its address

@@ -14,9 +14,9 @@ namespace oflab::testing {
 // test. The process id keeps the suites of several trees on one machine apart.
 inline std::filesystem::path test_dir(const std::string& prefix) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() /
-                       (prefix + "-" + std::to_string(::getpid()) + "-" +
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const fs::path dir =
+      fs::temp_directory_path() / (prefix + "-" + std::to_string(::getpid()) + "-" +
+                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
   fs::create_directories(dir);
   return dir;
 }

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -261,8 +260,8 @@ TEST(AnimateCommand, JsonSummaryHasTheContractedFields) {
 
 TEST(AnimateCommand, RepeatTimingTakesAPositiveWholeNumber) {
   for (const char* n : {"1", "2", "5"}) {
-    const Cli c = cli({"animate", "--script", "zoom", "--frames", "5", "--repeat-timing", n,
-                       "--json"});
+    const Cli c =
+        cli({"animate", "--script", "zoom", "--frames", "5", "--repeat-timing", n, "--json"});
     EXPECT_EQ(c.code, 0) << n << ": " << c.err;
   }
   for (const char* n : {"0", "-3", "2.5", "x", "1001"}) {
@@ -279,7 +278,8 @@ TEST(AnimateCommand, RepeatTimingTakesAPositiveWholeNumber) {
 }
 
 TEST(AnimateCommand, RepeatPlaysTheScriptAgainAndTakesAWholeNumberInItsRange) {
-  const Cli once = cli({"animate", "--script", "zoom", "--json", "--quiet", "--repeat-timing", "1"});
+  const Cli once =
+      cli({"animate", "--script", "zoom", "--json", "--quiet", "--repeat-timing", "1"});
   ASSERT_EQ(once.code, 0) << once.err;
   const int frames = nlohmann::json::parse(once.out).at("frames");
   const Cli thrice = cli({"animate", "--script", "zoom", "--repeat", "3", "--no-warm-up",
@@ -296,7 +296,8 @@ TEST(AnimateCommand, RepeatPlaysTheScriptAgainAndTakesAWholeNumberInItsRange) {
     EXPECT_NE(c.err.find("--repeat"), std::string::npos) << c.err;
     EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
   }
-  const Cli scene = cli({"animate", "--scene", "four-cubes", "--script", "circle", "--repeat", "2"});
+  const Cli scene =
+      cli({"animate", "--scene", "four-cubes", "--script", "circle", "--repeat", "2"});
   EXPECT_EQ(scene.code, 2);
   EXPECT_NE(scene.err.find("--repeat"), std::string::npos) << scene.err;
 }
@@ -353,20 +354,29 @@ const char* kHead =
 TEST(AnimateCommand, BadScriptsNameTheFileTheFrameAndTheField) {
   const std::string frame_ok =
       R"({"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,0,0], "omega": [0,0,0]})";
-  expect_script_error(std::string(kHead) + R"("frames": [)" + frame_ok +
-                          R"(, {"point": [0,0,2], "normal": [0,0,0], "up": [0,-1,0], "velocity": [0,0,0], "omega": [0,0,0]}]})",
-                      "frame 1", "normal");
-  expect_script_error(std::string(kHead) + R"("frames": [)" + frame_ok +
-                          R"(, {"point": [0,0,-2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,0,0], "omega": [0,0,0]}]})",
-                      "frame 1", "point");
-  expect_script_error(std::string(kHead) + R"("frames": [{"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,"x",0], "omega": [0,0,0]}]})",
-                      "frame 0", "velocity");
-  expect_script_error(std::string(kHead) + R"("frames": [{"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "omega": [0,0,0]}]})",
-                      "frame 0", "velocity");
-  expect_script_error(std::string(kHead) + R"("frames": [{"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,0,NaN], "omega": [0,0,0]}]})",
-                      "not valid JSON", "");
-  expect_script_error(R"({"camera": {"focal_px": 256, "image": [320, 240]}, "plane": {"size": [1, 0.8], "point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0]}, "segments": [{"frames": 0, "velocity": [0,0,0], "omega": [0,0,0]}]})",
-                      "segment 0", "frames");
+  expect_script_error(
+      std::string(kHead) + R"("frames": [)" + frame_ok +
+          R"(, {"point": [0,0,2], "normal": [0,0,0], "up": [0,-1,0], "velocity": [0,0,0], "omega": [0,0,0]}]})",
+      "frame 1", "normal");
+  expect_script_error(
+      std::string(kHead) + R"("frames": [)" + frame_ok +
+          R"(, {"point": [0,0,-2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,0,0], "omega": [0,0,0]}]})",
+      "frame 1", "point");
+  expect_script_error(
+      std::string(kHead) +
+          R"("frames": [{"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,"x",0], "omega": [0,0,0]}]})",
+      "frame 0", "velocity");
+  expect_script_error(
+      std::string(kHead) +
+          R"("frames": [{"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "omega": [0,0,0]}]})",
+      "frame 0", "velocity");
+  expect_script_error(
+      std::string(kHead) +
+          R"("frames": [{"point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0], "velocity": [0,0,NaN], "omega": [0,0,0]}]})",
+      "not valid JSON", "");
+  expect_script_error(
+      R"({"camera": {"focal_px": 256, "image": [320, 240]}, "plane": {"size": [1, 0.8], "point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0]}, "segments": [{"frames": 0, "velocity": [0,0,0], "omega": [0,0,0]}]})",
+      "segment 0", "frames");
   expect_script_error("{\"camera\": ", "not valid JSON", "");
 }
 
@@ -374,8 +384,9 @@ TEST(AnimateCommand, BadOptionsNameTheOption) {
   EXPECT_NE(cli({"animate", "--script", "no-such-script"}).err.find("--script"), std::string::npos);
   EXPECT_NE(cli({"animate", "--script", "zoom", "--mode", "fast"}).err.find("--mode"),
             std::string::npos);
-  EXPECT_NE(cli({"animate", "--script", "zoom", "--texture", "/nonexistent.png"}).err.find("--texture"),
-            std::string::npos);
+  EXPECT_NE(
+      cli({"animate", "--script", "zoom", "--texture", "/nonexistent.png"}).err.find("--texture"),
+      std::string::npos);
   EXPECT_NE(cli({"animate", "--script", "zoom", "--threshold", "-1"}).err.find("--threshold"),
             std::string::npos);
   EXPECT_EQ(cli({"animate", "--script", "zoom", "--delta", "half"}).code, 2);
@@ -399,8 +410,8 @@ TEST(AnimateCommand, ContentChoosesWhatAReRenderDrawsAndTheSummaryCarriesItsCost
   EXPECT_GT(j["max_photometric_error"].get<double>(), 0.0);  // rotation turns the lit plane
   EXPECT_GT(j["render_ms"].get<double>(), 0.0);
   EXPECT_GT(j["model_work_saved"].get<double>(), 0.0);
-  const Cli t = cli({"animate", "--script", "rotation", "--frames", "12", "--repeat-timing", "1",
-                     "--json"});
+  const Cli t =
+      cli({"animate", "--script", "rotation", "--frames", "12", "--repeat-timing", "1", "--json"});
   ASSERT_EQ(t.code, 0) << t.err;
   EXPECT_EQ(nlohmann::json::parse(t.out)["max_photometric_error"], 0.0);
 }
@@ -414,7 +425,7 @@ TEST(Butterfly, CommittedTextureIsTheGeneratorsOutput) {
   EXPECT_EQ(fresh.width(), 243);
   EXPECT_EQ(fresh.height(), 198);
   EXPECT_EQ(fresh.pixels(), committed.pixels());
-  EXPECT_EQ(committed.at(0, 0).a, 0);  // transparent background
+  EXPECT_EQ(committed.at(0, 0).a, 0);                                  // transparent background
   EXPECT_EQ(cli({"make-butterfly", "--out", file.string()}).code, 2);  // no silent overwrite
   fs::remove_all(dir);
 }

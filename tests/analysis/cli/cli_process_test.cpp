@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <new>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -51,11 +51,11 @@ fs::path small_loop(const fs::path& dir) {
 // the CSV written into dir/NAME as it goes.
 testing::ChildResult play_loop(const fs::path& dir, int frames, const std::string& name) {
   const int repeat = frames / 629 + 1;  // loop.json has 629 frames
-  return run_cli_child({"animate", "--script", small_loop(dir).string(), "--repeat",
-                        std::to_string(repeat), "--frames", std::to_string(frames),
-                        "--repeat-timing", "1", "--no-warm-up", "--quiet", "--json", "--out",
-                        (dir / name).string()},
-                       dir, 0, 600.0);
+  return run_cli_child(
+      {"animate", "--script", small_loop(dir).string(), "--repeat", std::to_string(repeat),
+       "--frames", std::to_string(frames), "--repeat-timing", "1", "--no-warm-up", "--quiet",
+       "--json", "--out", (dir / name).string()},
+      dir, 0, 600.0);
 }
 
 long csv_rows(const fs::path& file) {
@@ -75,8 +75,8 @@ TEST(LongRun, HundredThousandFramesPeakWithinTenPercentOfAThousand) {
   EXPECT_EQ(csv_rows(dir / "long" / "frames.csv"), 100000);
   EXPECT_EQ(csv_rows(dir / "short" / "frames.csv"), 1000);
   std::cout << "peak resident memory: 1000 frames " << short_run.peak_rss_kb
-            << " KB, 100000 frames " << long_run.peak_rss_kb << " KB ("
-            << long_run.seconds << " s)\n";
+            << " KB, 100000 frames " << long_run.peak_rss_kb << " KB (" << long_run.seconds
+            << " s)\n";
   EXPECT_LE(long_run.peak_rss_kb, short_run.peak_rss_kb * 1.10);
   fs::remove_all(dir);
 }
@@ -93,8 +93,8 @@ std::vector<std::string> command_for(const std::string& target, const fs::path& 
     return {"animate", "--scene", "four-cubes", "--script", file, "--frames", "5"};
   if (target == "scene") return {"animate", "--scene", file, "--script", "circle", "--frames", "5"};
   if (target == "image") return {"animate", "--script", "zoom", "--texture", file, "--frames", "5"};
-  if (target == "obj") return {"make-scene", "--from-obj", file, "--out", (dir / "o.json").string(),
-                               "--force"};
+  if (target == "obj")
+    return {"make-scene", "--from-obj", file, "--out", (dir / "o.json").string(), "--force"};
   if (target == "command-line") {
     std::vector<std::string> args;
     std::ifstream in(input);
@@ -116,9 +116,9 @@ TEST(HostileInputs, EveryRegressionInputEndsWithin60sAnd2GBWithACleanStatus) {
     for (const auto& input : fs::directory_iterator(target.path())) {
       fs::path file = input.path();
       if (target.path().filename() == "obj") {  // animate --scene knows OBJ by its extension
-        expect_ends_cleanly({"animate", "--scene", file.string(), "--script", "circle",
-                             "--frames", "5"},
-                            dir, file.string() + " as --scene");
+        expect_ends_cleanly(
+            {"animate", "--scene", file.string(), "--script", "circle", "--frames", "5"}, dir,
+            file.string() + " as --scene");
       }
       const auto args = command_for(target.path().filename().string(), file, dir);
       if (args.empty()) continue;
@@ -145,18 +145,26 @@ TEST(HostileInputs, DegeneratePlanesAndCamerasEndWithin60sAnd2GB) {
 
 TEST(LastResort, AnEscapedExceptionIsOneLineAndTheInternalErrorCode) {
   std::ostringstream err;
-  EXPECT_EQ(run_guarded("oflab-cli", [] { return 0; }, err), 0);
-  EXPECT_EQ(run_guarded("oflab-cli", [] { return 2; }, err), 2);
+  EXPECT_EQ(run_guarded(
+                "oflab-cli", [] { return 0; }, err),
+            0);
+  EXPECT_EQ(run_guarded(
+                "oflab-cli", [] { return 2; }, err),
+            2);
   EXPECT_EQ(err.str(), "");
-  EXPECT_EQ(run_guarded("oflab-cli", []() -> int { throw std::runtime_error("two\nlines"); }, err),
+  EXPECT_EQ(run_guarded(
+                "oflab-cli", []() -> int { throw std::runtime_error("two\nlines"); }, err),
             kInternalErrorExitCode);
   EXPECT_EQ(err.str(), "oflab-cli: internal error: two lines\n");
   err.str("");
-  EXPECT_EQ(run_guarded("oflab", []() -> int { throw std::bad_alloc(); }, err),
+  EXPECT_EQ(run_guarded(
+                "oflab", []() -> int { throw std::bad_alloc(); }, err),
             kInternalErrorExitCode);
   EXPECT_EQ(err.str(), "oflab: internal error: std::bad_alloc\n");
   err.str("");
-  EXPECT_EQ(run_guarded("oflab", []() -> int { throw 42; }, err), kInternalErrorExitCode);
+  EXPECT_EQ(run_guarded(
+                "oflab", []() -> int { throw 42; }, err),
+            kInternalErrorExitCode);
   EXPECT_EQ(err.str(), "oflab: internal error: an unknown exception\n");
   EXPECT_NE(kInternalErrorExitCode, 2);  // not the bad-input code
 }

@@ -62,9 +62,9 @@ TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAScene) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("two")));
   source.viewer = read_viewer_script_file(resolve_viewer_script_path("compound"));
-  const auto runs = run_policies(source_kind("scene"), source,
-                                 parse_policy_list("perspective,talisman,dissertation"),
-                                 quick_options(12));
+  const auto runs =
+      run_policies(source_kind("scene"), source,
+                   parse_policy_list("perspective,talisman,dissertation"), quick_options(12));
   expect_same_views(runs, 12);
 }
 
@@ -172,7 +172,8 @@ TEST(CompareCommand, BadInputIsOneLineWithExitCodeTwo) {
     EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
   };
-  expect_error({"compare", "--script", "rotation", "--policies", "bogus"}, "--policies: unknown policy 'bogus'");
+  expect_error({"compare", "--script", "rotation", "--policies", "bogus"},
+               "--policies: unknown policy 'bogus'");
   expect_error({"compare", "--script", "rotation"}, "--policies");
   expect_error({"compare", "--policies", "talisman"}, "--script");
   expect_error({"compare", "--script", "nope", "--policies", "talisman"}, "--script");

@@ -3,10 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "cli_capture.h"
@@ -33,13 +32,38 @@ struct Case {
 };
 
 std::vector<std::string> flow_args(const Case& c, double dt) {
-  return {"flow",          "--focal",        num(c.f),         "--image",      "800",
-          "600",           "--plane-point",  num(c.point.x),   num(c.point.y), num(c.point.z),
-          "--plane-normal", num(c.normal.x), num(c.normal.y),  num(c.normal.z), "--velocity",
-          num(c.velocity.x), num(c.velocity.y), num(c.velocity.z), "--omega",  num(c.omega.x),
-          num(c.omega.y),  num(c.omega.z),   "--plane-up",     num(c.up.x),    num(c.up.y),
-          num(c.up.z),     "--plane-size",   num(c.size.x),    num(c.size.y),  "--dt",
-          num(dt),         "--json"};
+  return {"flow",
+          "--focal",
+          num(c.f),
+          "--image",
+          "800",
+          "600",
+          "--plane-point",
+          num(c.point.x),
+          num(c.point.y),
+          num(c.point.z),
+          "--plane-normal",
+          num(c.normal.x),
+          num(c.normal.y),
+          num(c.normal.z),
+          "--velocity",
+          num(c.velocity.x),
+          num(c.velocity.y),
+          num(c.velocity.z),
+          "--omega",
+          num(c.omega.x),
+          num(c.omega.y),
+          num(c.omega.z),
+          "--plane-up",
+          num(c.up.x),
+          num(c.up.y),
+          num(c.up.z),
+          "--plane-size",
+          num(c.size.x),
+          num(c.size.y),
+          "--dt",
+          num(dt),
+          "--json"};
 }
 
 // Independent: position of the plane point seen at centred pixel p, moved rigidly by
@@ -112,7 +136,7 @@ TEST(FlowCommand, JsonMatchesIndependentComputationOnRandomCases) {
 }
 
 TEST(FlowCommand, BadInputGivesOneLineErrorNamingTheArgument) {
-  const Case ok{500.0, Vec3(0, 0, 2), Vec3(0, 0, 1), Vec3(0, -1, 0),
+  const Case ok{500.0,           Vec3(0, 0, 2),   Vec3(0, 0, 1), Vec3(0, -1, 0),
                 Vec3(0.1, 0, 0), Vec3(0, 0, 0.1), Vec2(1, 1)};
   struct Bad {
     int index;          // which argument to replace
@@ -123,10 +147,8 @@ TEST(FlowCommand, BadInputGivesOneLineErrorNamingTheArgument) {
   const Bad bad[] = {
       {11, "0", "--plane-normal"},  // with the following two zeroed below
       {9, "-2", "--plane-point"},   // plane behind the camera
-      {2, "abc", "--focal"},
-      {2, "-5", "--focal"},
-      {4, "nan", "--image"},
-      {15, "inf", "--velocity"},
+      {2, "abc", "--focal"},       {2, "-5", "--focal"},
+      {4, "nan", "--image"},       {15, "inf", "--velocity"},
   };
   for (const Bad& b : bad) {
     auto args = base;

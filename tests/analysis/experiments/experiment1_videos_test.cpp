@@ -16,8 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Experiment1Videos, OneGifPerScriptAndModeWithTheRunsFrames) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("oflab-experiment1-videos-test-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("oflab-experiment1-videos-test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   ExperimentContext context(dir.string(), true, nullptr);

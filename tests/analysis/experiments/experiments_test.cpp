@@ -17,21 +17,21 @@
 #include <regex>
 #include <sstream>
 
-#include "report/charts.h"
 #include "cli/animate_options.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "formats/datasets.h"
+#include "cli_capture.h"
 #include "experiments/experiments_delta.h"
 #include "experiments/experiments_policies.h"
 #include "experiments/experiments_runs.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
 #include "experiments/experiments_warp.h"
-#include "formats/image_io.h"
 #include "experiments/published_results.h"
+#include "formats/datasets.h"
+#include "formats/image_io.h"
+#include "report/charts.h"
 #include "report/report.h"
-#include "cli_capture.h"
 #include "scratch_dir.h"
 
 namespace oflab {
@@ -397,9 +397,8 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
   EXPECT_EQ(occurrences(html, "<section"), occurrences(html, "</section>"));
   // One HTML table per Markdown table (a Markdown table has one "|---|" separator row).
   EXPECT_EQ(occurrences(html, "<table>"), occurrences(md, "\n|---|"));
-  for (const char* id :
-       {"about", "experiment-1", "delta", "warp-timing", "experiment-2", "threshold-sweep",
-        "costs", "policies"}) {
+  for (const char* id : {"about", "experiment-1", "delta", "warp-timing", "experiment-2",
+                         "threshold-sweep", "costs", "policies"}) {
     EXPECT_NE(html.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
   }
   // Every Markdown image is a chart file next to the report with its CSV, and every one

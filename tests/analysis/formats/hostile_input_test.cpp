@@ -59,11 +59,10 @@ void expect_usage_error(const std::vector<std::string>& args, const std::string&
 // Finding 1: a number too large for a double in any JSON file.
 TEST(HostileInput, NumberTooLargeForADoubleIsNotValidJsonInEveryFormat) {
   const std::string big = R"({"name": "x", "camera": {"focal_px": 1e400}})";
-  for (const std::string& e :
-       {error_of([&] { parse_script(big, "m.json"); }),
-        error_of([&] { parse_scene(big, "s.json", "."); }),
-        error_of([&] { parse_viewer_script(big, "v.json"); }),
-        error_of([&] { parse_session(big, "g.json"); })}) {
+  for (const std::string& e : {error_of([&] { parse_script(big, "m.json"); }),
+                               error_of([&] { parse_scene(big, "s.json", "."); }),
+                               error_of([&] { parse_viewer_script(big, "v.json"); }),
+                               error_of([&] { parse_session(big, "g.json"); })}) {
     EXPECT_NE(e.find(".json: not valid JSON ("), std::string::npos) << e;
     EXPECT_NE(e.find("number overflow"), std::string::npos) << e;
   }
@@ -82,8 +81,9 @@ TEST(HostileInput, NonStringTextFieldsOfAMotionScriptAreNamed) {
   }
   json scene = json::parse(shipped("scenes", "two"));
   scene["texture"] = json::array();
-  EXPECT_NE(error_of([&] { parse_scene(scene.dump(), "two.json", datasets_dir() + "/scenes"); })
-                .find("field 'texture': must be a string"),
+  EXPECT_NE(error_of([&] {
+              parse_scene(scene.dump(), "two.json", datasets_dir() + "/scenes");
+            }).find("field 'texture': must be a string"),
             std::string::npos);
 }
 
@@ -154,8 +154,9 @@ TEST(HostileInput, ImagesAreCheckedBySignatureAndHeaderBeforeDecoding) {
                      "not a PNG or JPEG file");
   const fs::path huge = temp_file("huge.png", png_header(30000, 17000));
   EXPECT_EQ(error_of([&] { check_image_file(huge.string()); }),
-            huge.string() + ": image of 30000 x 17000 pixels is larger than the limit (16777216 "
-                            "pixels, 16384 on a side)");
+            huge.string() +
+                ": image of 30000 x 17000 pixels is larger than the limit (16777216 "
+                "pixels, 16384 on a side)");
   const fs::path square = temp_file("square.png", png_header(16000, 16000));
   EXPECT_NE(error_of([&] { read_image(square.string()); }).find("larger than the limit"),
             std::string::npos);
@@ -181,8 +182,9 @@ TEST(HostileInput, HugeSizesAndVectorsAreRefusedWithTheLimit) {
     const std::string e = error_of([&] { parse_session(j.dump(), "s.json"); });
     EXPECT_EQ(e.find("s.json: plane.camera: field 'width': must be "), 0u) << e;
   }
-  const std::vector<std::string> flow = {"flow", "--focal", "500", "--plane-point", "0", "0", "2",
-                                         "--velocity", "0", "0", "0", "--omega", "0", "0", "0"};
+  const std::vector<std::string> flow = {
+      "flow", "--focal", "500", "--plane-point", "0", "0", "2", "--velocity",
+      "0",    "0",       "0",   "--omega",       "0", "0", "0"};
   std::vector<std::string> image = flow;
   for (const char* a : {"--image", "1e10", "480", "--plane-normal", "0", "0", "1"}) {
     image.push_back(a);

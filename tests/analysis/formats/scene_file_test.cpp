@@ -13,12 +13,12 @@
 #include <sstream>
 
 #include "cli/commands.h"
-#include "generators/cube_grid.h"
+#include "cli_capture.h"
 #include "formats/image_io.h"
 #include "formats/obj_scene.h"
-#include "generators/tile_texture.h"
 #include "formats/viewer_script_file.h"
-#include "cli_capture.h"
+#include "generators/cube_grid.h"
+#include "generators/tile_texture.h"
 #include "scene/scene_animator.h"
 #include "scratch_dir.h"
 
@@ -134,9 +134,9 @@ TEST(SceneFiles, ContentIsReadPerPolygonWithTheScenesDefaultAndBadValuesAreNamed
     EXPECT_EQ(again.polygons[i].content, street.polygons[i].content);
   }
   EXPECT_EQ(again.content_quality, 3);
-  EXPECT_FALSE(scene_to_json(read_scene_file(resolve_scene_path("two")), {"t.png"})
-                   .dump()
-                   .find("content") != std::string::npos);
+  EXPECT_FALSE(
+      scene_to_json(read_scene_file(resolve_scene_path("two")), {"t.png"}).dump().find("content") !=
+      std::string::npos);
 }
 
 TEST(SceneFiles, MalformedScenesNameTheFileThePolygonAndTheField) {

@@ -1,8 +1,6 @@
 // Session files: what is written reads back unchanged, and every malformed session gives a
 // SessionError naming the file, the part and the field, never a crash.
 #include "formats/session_file.h"
-#include "scratch_dir.h"
-#include "engine/budget.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +9,9 @@
 #include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
+
+#include "engine/budget.h"
+#include "scratch_dir.h"
 
 namespace oflab {
 namespace {
@@ -180,8 +181,7 @@ TEST(SessionFile, ExistingFileIsOverwrittenOnlyWhenAsked) {
 }
 
 TEST(SessionFile, UnreadableEmptyAndTruncatedFilesAreNamed) {
-  const fs::path missing =
-      testing::fresh_test_dir("oflab-session") / "oflab_no_such_session.json";
+  const fs::path missing = testing::fresh_test_dir("oflab-session") / "oflab_no_such_session.json";
   try {
     read_session_file(missing.string());
     FAIL() << "a missing file was read";

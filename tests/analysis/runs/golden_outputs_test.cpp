@@ -7,16 +7,15 @@
 // A change of behaviour on purpose updates the fixtures in the same commit, saying why:
 //   OFLAB_UPDATE_GOLDEN=1 build/tests/analysis/oflab_analysis_tests --gtest_filter='Golden*'
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "cli_capture.h"
 
@@ -99,8 +98,7 @@ std::vector<GoldenCase> golden_cases() {
   std::vector<GoldenCase> cases;
   for (const char* script : {"loop", "rotation", "zoom"}) {
     for (const char* mode : {"perspective", "affine", "exact", "rerender"}) {
-      cases.push_back({std::string(script) + "-" + mode,
-                       {"--script", script, "--mode", mode}});
+      cases.push_back({std::string(script) + "-" + mode, {"--script", script, "--mode", mode}});
     }
   }
   cases.push_back({"four-cubes-compound", {"--scene", "four-cubes", "--script", "compound"}});
@@ -108,9 +106,9 @@ std::vector<GoldenCase> golden_cases() {
   cases.push_back({"four-cubes-budget",
                    {"--scene", "four-cubes", "--script", "compound", "--mode", "budget",
                     "--budget-pixels", "12000"}});
-  cases.push_back({"train-window-scene-shifting",
-                   {"--scene", "train-window", "--script", "train-sideways", "--mode",
-                    "scene-shifting"}});
+  cases.push_back(
+      {"train-window-scene-shifting",
+       {"--scene", "train-window", "--script", "train-sideways", "--mode", "scene-shifting"}});
   return cases;
 }
 
@@ -120,8 +118,8 @@ TEST_P(Golden, AnimateOutputsAreUnchanged) {
   const GoldenCase& c = GetParam();
   const fs::path fixtures = fs::path(OFLAB_GOLDEN_DIR) / c.name;
   // Per process, so parallel runs of the suite (several build trees) never share a folder.
-  const fs::path out_dir = fs::temp_directory_path() /
-                           ("oflab-golden-" + std::to_string(getpid()) + "-" + c.name);
+  const fs::path out_dir =
+      fs::temp_directory_path() / ("oflab-golden-" + std::to_string(getpid()) + "-" + c.name);
   fs::remove_all(out_dir);
   std::vector<std::string> args = {"animate"};
   args.insert(args.end(), c.args.begin(), c.args.end());

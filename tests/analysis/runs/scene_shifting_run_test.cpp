@@ -1,13 +1,12 @@
 // `oflab-cli animate --mode scene-shifting` on the train-window scene, and the runs behind it.
-#include "runs/source_kinds.h"
-
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include "cli_capture.h"
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
-#include "cli_capture.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 namespace {
@@ -49,8 +48,7 @@ TEST(AnimateSceneShifting, NeedsASceneAndRejectsEngineOptions) {
 
 TEST(SceneShiftingRun, TurningScriptRebuildsEveryOccupiedSliceEveryTurningFrame) {
   RunSource source;
-  source.scene =
-      std::make_shared<const Scene>(read_scene_file(resolve_scene_path("train-window")));
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("train-window")));
   source.viewer = read_viewer_script_file(resolve_viewer_script_path("train-turning"));
   PlayOptions options;
   options.max_frames = 8;

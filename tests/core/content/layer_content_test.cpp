@@ -250,10 +250,10 @@ TEST(LayerContent, FacadeFacesArePlanarQuadsInFrontOfTheWall) {
 // half a brick on odd rows), bevels sloping towards the nearest joint.
 TEST(LayerContent, BrickHasMortarAtTheJointsAndBevelsSlopingTowardsThem) {
   const ContentMaterial mortar = brick_at(0.0, 0.0).material;
-  EXPECT_EQ(brick_at(0.2, 0.035).material.albedo, mortar.albedo);   // vertical joint, row 0
-  EXPECT_EQ(brick_at(0.1, 0.07).material.albedo, mortar.albedo);    // horizontal joint
-  EXPECT_EQ(brick_at(0.3, 0.105).material.albedo, mortar.albedo);   // row 1: joint at 0.3
-  EXPECT_NE(brick_at(0.2, 0.105).material.albedo, mortar.albedo);   // row 1: a brick's middle
+  EXPECT_EQ(brick_at(0.2, 0.035).material.albedo, mortar.albedo);  // vertical joint, row 0
+  EXPECT_EQ(brick_at(0.1, 0.07).material.albedo, mortar.albedo);   // horizontal joint
+  EXPECT_EQ(brick_at(0.3, 0.105).material.albedo, mortar.albedo);  // row 1: joint at 0.3
+  EXPECT_NE(brick_at(0.2, 0.105).material.albedo, mortar.albedo);  // row 1: a brick's middle
   const BrickSample middle = brick_at(0.1, 0.035);
   EXPECT_NE(middle.material.albedo, mortar.albedo);
   EXPECT_EQ(middle.slope, Vec2(0.0));

@@ -160,9 +160,9 @@ TEST(Engine, RerenderModeEqualsADirectExactRenderPixelForPixel) {
                                       {{20, Vec3(0.01, 0.0, -0.02), Vec3(0.02, 0.03, 0.05)}});
   PlaneAnimator a(cam, tex, s);
   for (size_t i = 0; i < frames.size(); ++i) {
-    const FrameReport r = i == 0 ? a.start(frames[0].pose)
-                                 : a.advance(frames[i - 1].pose, frames[i - 1].motion,
-                                             frames[i].pose);
+    const FrameReport r = i == 0
+                              ? a.start(frames[0].pose)
+                              : a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
     EXPECT_EQ(r.level, Level::kRerender);
     const Image shown = frame_of(cam, a.displayed());
     const Image exact = frame_of(cam, render_exact(cam, tex, frames[i].pose, s.sampling));
@@ -238,7 +238,8 @@ TEST(Engine, EdgeOnFrameIsReportedAndTheNextVisibleFrameRerenders) {
   PlanePose p = facing_pose(2.0);
   p.point = Vec3(-0.12, 0.0, 2.0);
   p.normal = Vec3(1.0, 0.0, 0.0);
-  const auto frames = expand_segments(p, MotionModel::kScrew, {{9, Vec3(0.03, 0.0, 0.0), Vec3(0.0)}});
+  const auto frames =
+      expand_segments(p, MotionModel::kScrew, {{9, Vec3(0.03, 0.0, 0.0), Vec3(0.0)}});
   PlaneAnimator a(cam, checker_texture(96, 64), EngineSettings{});
   a.start(frames[0].pose);
   bool saw_edge_on = false;

@@ -82,7 +82,8 @@ TEST(TalismanFit, EqualsTheNormalEquationsOnRandomPolygons) {
     }
     // Its geometric fiducial is the largest distance of a fitted vertex from its target.
     double worst = 0.0;
-    for (int i = 0; i < n; ++i) worst = std::max(worst, glm::length(apply(reference, from[i]) - to[i]));
+    for (int i = 0; i < n; ++i)
+      worst = std::max(worst, glm::length(apply(reference, from[i]) - to[i]));
     EXPECT_NEAR(fit_rendered_polygon(from, to).fiducials.geometric_px, worst, 1e-7);
   }
 }
@@ -174,18 +175,17 @@ std::vector<Vec2> corners_through(const Mat3& warp) {
 // error, computed here from the normal equations.
 TEST(TalismanEngine, ShownErrorIsTheFitsCornerErrorAndStaysWithinTheThreshold) {
   const Camera cam = make_camera(300.0, 320, 240);
-  const auto frames =
-      expand_segments(facing_pose(2.0), MotionModel::kScrew,
-                      {{60, Vec3(0.004, 0.002, -0.01), Vec3(0.004, 0.006, 0.01)}});
+  const auto frames = expand_segments(facing_pose(2.0), MotionModel::kScrew,
+                                      {{60, Vec3(0.004, 0.002, -0.01), Vec3(0.004, 0.006, 0.01)}});
   EngineSettings s;
   s.policy = &reuse_policy("talisman");
   PlaneAnimator a(cam, checker_texture(96, 64), s);
   Mat3 rendered(1.0);
   int reused = 0, rerendered = 0;
   for (size_t i = 0; i < frames.size(); ++i) {
-    const FrameReport r = i == 0 ? a.start(frames[0].pose)
-                                 : a.advance(frames[i - 1].pose, frames[i - 1].motion,
-                                             frames[i].pose);
+    const FrameReport r = i == 0
+                              ? a.start(frames[0].pose)
+                              : a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
     const Mat3 exact = exact_texture_warp(cam, frames[i].pose);
     if (r.level == Level::kRerender) {
       rendered = exact;
@@ -197,7 +197,8 @@ TEST(TalismanEngine, ShownErrorIsTheFitsCornerErrorAndStaysWithinTheThreshold) {
     const std::vector<Vec2> from = corners_through(rendered), to = corners_through(exact);
     const Mat3 fit = normal_equations_fit(from, to);
     double worst = 0.0;
-    for (size_t c = 0; c < from.size(); ++c) worst = std::max(worst, glm::length(apply(fit, from[c]) - to[c]));
+    for (size_t c = 0; c < from.size(); ++c)
+      worst = std::max(worst, glm::length(apply(fit, from[c]) - to[c]));
     EXPECT_NEAR(r.measured_error_px, worst, 1e-6) << "frame " << i;
     EXPECT_NEAR(r.estimated_error_px, worst, 1e-6) << "frame " << i;
     EXPECT_LE(r.measured_error_px, s.thresholds[2] + 1e-9) << "frame " << i;

@@ -1,11 +1,12 @@
 // The three bases: conversions are exact inverses, and a plane excites only px, py at
 // second order. Derivatives are checked against finite differences of the flow itself.
+#include "flow/basis.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "flow/basis.h"
 #include "random_cases.h"
 
 namespace oflab {

@@ -1,13 +1,13 @@
 // Eq. 20 and the corrected eq. 55 multiply back to the original homography; each Delta
 // policy scales the cached step as documented (Jacobian of W_persp at the origin = D I).
+#include "flow/decomposition.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
 #include <stdexcept>
-
-#include "flow/decomposition.h"
 
 namespace oflab {
 namespace {
@@ -31,9 +31,9 @@ TEST(Decomposition, TranslateLinearPerspectiveMultipliesBack) {
   for (int i = 0; i < 200; ++i) {
     const Mat3 w = random_homography(rng);
     const TranslateLinearPerspective d = decompose_translate_linear_perspective(w);
-    EXPECT_LT(max_entry_difference(d.translation * d.linear * d.perspective,
-                                   normalise_homography(w)),
-              1e-12);
+    EXPECT_LT(
+        max_entry_difference(d.translation * d.linear * d.perspective, normalise_homography(w)),
+        1e-12);
   }
 }
 
@@ -55,8 +55,10 @@ TEST(Decomposition, AffinePerspectiveSplitMultipliesBackForEveryDeltaPolicy) {
 // Jacobian of a homography at a point, by central differences (independent of the split).
 glm::dmat2 numeric_jacobian(const Mat3& h, const Vec2& p) {
   const double e = 1e-6;
-  const Vec2 dx = (apply_homography(h, p + Vec2(e, 0)) - apply_homography(h, p - Vec2(e, 0))) / (2 * e);
-  const Vec2 dy = (apply_homography(h, p + Vec2(0, e)) - apply_homography(h, p - Vec2(0, e))) / (2 * e);
+  const Vec2 dx =
+      (apply_homography(h, p + Vec2(e, 0)) - apply_homography(h, p - Vec2(e, 0))) / (2 * e);
+  const Vec2 dy =
+      (apply_homography(h, p + Vec2(0, e)) - apply_homography(h, p - Vec2(0, e))) / (2 * e);
   return glm::dmat2(dx, dy);
 }
 
@@ -68,11 +70,12 @@ TEST(Decomposition, EachDeltaPolicyScalesTheCachedStepAsDocumented) {
     const struct {
       DeltaPolicy policy;
       double want;
-    } cases[] = {{DeltaPolicy::kOne, 1.0},
-                 {DeltaPolicy::kAbsDet, std::abs(det_a)},
-                 {DeltaPolicy::kSqrtAbsDet, std::sqrt(std::abs(det_a))},
-                 {DeltaPolicy::kFourthRootAbsDet, std::pow(std::abs(det_a), 0.25)},
-                 {DeltaPolicy::kDissertation, std::abs(det_a) < 1 ? std::sqrt(std::abs(det_a)) : 1}};
+    } cases[] = {
+        {DeltaPolicy::kOne, 1.0},
+        {DeltaPolicy::kAbsDet, std::abs(det_a)},
+        {DeltaPolicy::kSqrtAbsDet, std::sqrt(std::abs(det_a))},
+        {DeltaPolicy::kFourthRootAbsDet, std::pow(std::abs(det_a), 0.25)},
+        {DeltaPolicy::kDissertation, std::abs(det_a) < 1 ? std::sqrt(std::abs(det_a)) : 1}};
     for (const auto& c : cases) {
       const AffinePerspectiveSplit s = split_affine_perspective(w, c.policy);
       EXPECT_NEAR(s.delta, c.want, 1e-6);

@@ -26,19 +26,19 @@ TEST(Errata, Erratum03TaylorSecondOrderTermNeedsOneHalf) {
   const Vec2 exact = exact_flow_at(c.camera, c.pose, c.motion, p);
   EXPECT_LT(glm::length(taylor_flow_at(t, p) - exact), 1e-9);
   // As printed: the quadratic part without the factor 1/2.
-  const Vec2 printed = taylor_flow_at(t, p) +
-                       0.5 * Vec2(t.v1_xx * p.x * p.x + 2 * t.v1_xy * p.x * p.y + t.v1_yy * p.y * p.y,
-                                  t.v2_xx * p.x * p.x + 2 * t.v2_xy * p.x * p.y + t.v2_yy * p.y * p.y);
+  const Vec2 printed =
+      taylor_flow_at(t, p) +
+      0.5 * Vec2(t.v1_xx * p.x * p.x + 2 * t.v1_xy * p.x * p.y + t.v1_yy * p.y * p.y,
+                 t.v2_xx * p.x * p.x + 2 * t.v2_xy * p.x * p.y + t.v2_yy * p.y * p.y);
   EXPECT_GT(glm::length(printed - exact), 1.0);
 }
 
 TEST(Errata, Erratum06And09StrainAndSpinUseTheRightDerivatives) {
-  const WaxmanUllmanTerms w =
-      to_waxman_ullman(taylor_terms(coefficients(testing::default_case())));
+  const WaxmanUllmanTerms w = to_waxman_ullman(taylor_terms(coefficients(testing::default_case())));
   const PlanarFlowCoefficients k = coefficients(testing::default_case());
-  EXPECT_DOUBLE_EQ(w.e_yy, k.j22);                  // dv2/dy, not v2 itself
+  EXPECT_DOUBLE_EQ(w.e_yy, k.j22);  // dv2/dy, not v2 itself
   EXPECT_NE(w.e_yy, k.ty);
-  EXPECT_DOUBLE_EQ(w.omega, 0.5 * (k.j21 - k.j12));  // curl / 2
+  EXPECT_DOUBLE_EQ(w.omega, 0.5 * (k.j21 - k.j12));     // curl / 2
   const double printed_omega = 0.5 * (-k.j11 + k.j22);  // eq. 36 as printed: equals squash
   EXPECT_GT(std::abs(printed_omega - w.omega), 0.1);
 }
@@ -81,7 +81,8 @@ TEST(Errata, Erratum12RotationAboutTheAxisEntersV2WithPlusSign) {
   c.motion.omega = Vec3(0.0, 0.0, 0.7);
   const double h = 1.0;
   const Vec2 d = (exact_flow_at(c.camera, c.pose, c.motion, {h, 0}) -
-                  exact_flow_at(c.camera, c.pose, c.motion, {-h, 0})) / (2 * h);
+                  exact_flow_at(c.camera, c.pose, c.motion, {-h, 0})) /
+                 (2 * h);
   EXPECT_NEAR(d.y, +0.7, 1e-12);  // v2 = ... + x Omega3
 }
 
@@ -115,10 +116,10 @@ TEST(Errata, Erratum16And17PrintedPerspectiveSignMakesTheErrorFirstOrder) {
         projected_corners(c.camera, advance_pose(c.pose, rigid_step(c.motion, c.pose, dt))));
   };
   const double dt = 1.0 / 30.0;
-  const double corrected_ratio = error(taylor_homography(k, dt), dt) /
-                                 error(taylor_homography(k, dt / 2), dt / 2);
-  const double printed_ratio = error(printed_sign_homography(k, dt), dt) /
-                               error(printed_sign_homography(k, dt / 2), dt / 2);
+  const double corrected_ratio =
+      error(taylor_homography(k, dt), dt) / error(taylor_homography(k, dt / 2), dt / 2);
+  const double printed_ratio =
+      error(printed_sign_homography(k, dt), dt) / error(printed_sign_homography(k, dt / 2), dt / 2);
   EXPECT_NEAR(corrected_ratio, 4.0, 0.2);
   EXPECT_NEAR(printed_ratio, 2.0, 0.2);
   EXPECT_NEAR(error(printed_sign_homography(k, dt), dt), 0.976, 0.002);
@@ -159,9 +160,9 @@ TEST(Errata, Erratum20And21InitialHomographyUsesRightUpAndPosition) {
   // K [R U P] maps plane coordinates (s, r) to the projection of P + s R + r U.
   const Mat3 k_rup = centred_intrinsics(c.camera) * Mat3(a.right, a.up, c.pose.point);
   const Vec3 world = c.pose.point + 0.3 * a.right - 0.2 * a.up;
-  EXPECT_LT(glm::length(apply_homography(k_rup, Vec2(0.3, -0.2)) -
-                        project_centred(c.camera, world)),
-            1e-9);
+  EXPECT_LT(
+      glm::length(apply_homography(k_rup, Vec2(0.3, -0.2)) - project_centred(c.camera, world)),
+      1e-9);
 }
 
 }  // namespace

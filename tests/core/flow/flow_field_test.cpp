@@ -1,12 +1,13 @@
 // The planar flow coefficients against independent computations: central finite
 // differences of the exact projection of moving plane points, and the projected 3D
 // velocity.
+#include "flow/flow_field.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "flow/flow_field.h"
 #include "flow/homography.h"
 #include "random_cases.h"
 
@@ -119,8 +120,7 @@ TEST(PlanarFlow, ImageAccelerationMatchesSecondDifferenceForEveryMotionModel) {
     c.motion.model = static_cast<MotionModel>(i % 3);
     for (const Vec2& p : testing::sample_plane_pixels(c)) {
       const double h = 1e-3;
-      const Vec2 fd =
-          (moved_pixel(c, p, h) - 2.0 * p + moved_pixel(c, p, -h)) / (h * h);
+      const Vec2 fd = (moved_pixel(c, p, h) - 2.0 * p + moved_pixel(c, p, -h)) / (h * h);
       const Vec2 a = image_acceleration(c.camera, c.pose, c.motion, p);
       EXPECT_LT(glm::length(a - fd), 1e-4 * std::max(1.0, glm::length(fd)))
           << "model " << motion_model_name(c.motion.model) << " case " << i;

@@ -1,9 +1,10 @@
 // Homographies against independent computations: exact projections of moved corners.
+#include "flow/homography.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "flow/homography.h"
 #include "random_cases.h"
 
 namespace oflab {
@@ -86,8 +87,7 @@ TEST(Homography, TextureToImageSendsTexelCornersToProjectedCorners) {
 
 TEST(Homography, DefaultCaseCornerErrorsMatchTheWorkedExample) {
   const FlowCase c = testing::default_case();
-  const ApproximationErrors e =
-      approximation_corner_errors(c.camera, c.pose, c.motion, 1.0 / 30.0);
+  const ApproximationErrors e = approximation_corner_errors(c.camera, c.pose, c.motion, 1.0 / 30.0);
   EXPECT_NEAR(e.none, 11.80, 0.01);
   EXPECT_NEAR(e.translate, 3.50, 0.01);
   EXPECT_NEAR(e.affine, 0.458, 0.001);

@@ -87,8 +87,8 @@ TEST(PlaneScene, DefaultDemoShowsEveryFlowTerm) {
     px = std::max(px, std::abs(c.px));
     py = std::max(py, std::abs(c.py));
   }
-  EXPECT_GT(t, 50.0);  // px/s
-  EXPECT_GT(scale, 0.05);  // per second
+  EXPECT_GT(t, 50.0);         // px/s
+  EXPECT_GT(scale, 0.05);     // per second
   EXPECT_LT(min_scale, 0.0);  // it comes nearer and goes away again
   EXPECT_GT(max_scale, 0.0);
   EXPECT_GT(rotation, 0.5);

@@ -8,7 +8,6 @@
 #include <random>
 
 #include "flow/plane.h"
-
 #include "scene/scene.h"
 #include "scene/scene_animator.h"
 #include "scene_cases.h"
@@ -144,7 +143,8 @@ TEST(ViewCulling, PlaneImagePolygonCoversThePixelsThatSeeThePlane) {
     const int hits = pixels_seeing_plane(camera, pose, near);
     double perimeter = 0.0;
     const auto& v = shown.vertices();
-    for (std::size_t k = 0; k < v.size(); ++k) perimeter += glm::length(v[(k + 1) % v.size()] - v[k]);
+    for (std::size_t k = 0; k < v.size(); ++k)
+      perimeter += glm::length(v[(k + 1) % v.size()] - v[k]);
     // Pixel centres inside a convex polygon number its area, give or take its boundary.
     EXPECT_NEAR(shown.area(), hits, perimeter + 4.0) << "trial " << trial;
     EXPECT_EQ(plane_meets_image(camera, pose, near), !shown.empty());

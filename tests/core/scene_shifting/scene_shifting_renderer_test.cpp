@@ -15,7 +15,7 @@ namespace {
 using testing::scene_with;
 using testing::square;
 
-constexpr double kEpsilon = 1.0;          // px, the renderer's budget
+constexpr double kEpsilon = 1.0;  // px, the renderer's budget
 // px, the engine's translation budget: at least the 0.71 px a whole-pixel translation may
 // leave, or the engine's exact check rightly prefers a sub-pixel affine warp.
 constexpr double kEngineThreshold = 1.0;

@@ -1,5 +1,5 @@
-// Scene shifting (core/scene_shifting/scene_shifting.h) against independent computations: the epsilon
-// condition evaluated directly from image speeds k|V|/Z, exact projections of moved scene
+// Scene shifting (core/scene_shifting/scene_shifting.h) against independent computations: the
+// epsilon condition evaluated directly from image speeds k|V|/Z, exact projections of moved scene
 // points, and the planar flow of fronto-parallel planes from core/flow/flow_field.h.
 #include "scene_shifting/scene_shifting.h"
 

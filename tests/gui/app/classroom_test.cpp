@@ -6,14 +6,14 @@
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QHeaderView>
-#include <QMenuBar>
-#include <QStatusBar>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenuBar>
 #include <QScrollBar>
+#include <QStatusBar>
 #include <QTabBar>
 #include <QTableWidget>
 
@@ -38,7 +38,8 @@ std::vector<QWidget*> visible_controls(QWidget& window) {
     if (!w->isVisibleTo(&window) || qobject_cast<QScrollBar*>(w)) continue;
     // Parts Qt builds inside a control (a tab bar's scroll arrows, a dock's title buttons)
     // are that control's, not the window's.
-    if (qobject_cast<QTabBar*>(w->parentWidget()) || w->inherits("QDockWidgetTitleButton")) continue;
+    if (qobject_cast<QTabBar*>(w->parentWidget()) || w->inherits("QDockWidgetTitleButton"))
+      continue;
     if (qobject_cast<QAbstractButton*>(w) || qobject_cast<QAbstractSlider*>(w) ||
         qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QComboBox*>(w)) {
       controls.push_back(w);
@@ -51,9 +52,10 @@ std::vector<QWidget*> visible_controls(QWidget& window) {
 bool shows_text(QWidget* w) {
   return qobject_cast<QLabel*>(w) || qobject_cast<QAbstractButton*>(w) ||
          qobject_cast<QComboBox*>(w) || qobject_cast<QAbstractSpinBox*>(w) ||
-         qobject_cast<QTableWidget*>(w) || qobject_cast<QTabBar*>(w) || qobject_cast<QLineEdit*>(w) ||
-         qobject_cast<QHeaderView*>(w) || qobject_cast<QDockWidget*>(w) ||
-         qobject_cast<QStatusBar*>(w) || qobject_cast<QMenuBar*>(w);
+         qobject_cast<QTableWidget*>(w) || qobject_cast<QTabBar*>(w) ||
+         qobject_cast<QLineEdit*>(w) || qobject_cast<QHeaderView*>(w) ||
+         qobject_cast<QDockWidget*>(w) || qobject_cast<QStatusBar*>(w) ||
+         qobject_cast<QMenuBar*>(w);
 }
 
 void show_at_projector_size(MainWindow& window) {
@@ -95,7 +97,8 @@ TEST_F(ClassroomTest, CoefficientTableElidesNothingAtProjectorSize) {
   for (int frame : {0, 7, 20}) {
     window().model()->set_frame(frame);
     QApplication::processEvents();
-    auto* table = window().flow_view()->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
+    auto* table =
+        window().flow_view()->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
     ASSERT_NE(table, nullptr);
     const QFontMetrics fm(table->font());
     int columns = 0;

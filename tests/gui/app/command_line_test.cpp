@@ -79,8 +79,8 @@ TEST(CommandLine, ScreenshotsOfTheAnimationAndAnalysisViewsAfterFrames) {
   QTemporaryDir dir;
   for (const QString view : {"animation", "analysis"}) {
     const QString path = dir.filePath(view + ".png");
-    const ProcessResult run = run_oflab({"--screenshot", path, "--frames", "5", "--view", view,
-                                         "--mode", "affine"});
+    const ProcessResult run =
+        run_oflab({"--screenshot", path, "--frames", "5", "--view", view, "--mode", "affine"});
     ASSERT_EQ(run.exit_code, 0) << run.err.toStdString();
     const QImage image(path);
     ASSERT_FALSE(image.isNull()) << view.toStdString();

@@ -10,12 +10,12 @@
 #include <sstream>
 #include <string>
 
-#include "models/animation_model.h"
-#include "views/animation_view.h"
-#include "models/scene_model.h"
 #include "app/screenshot.h"
 #include "app/session_io.h"
 #include "image_checks.h"
+#include "models/animation_model.h"
+#include "models/scene_model.h"
+#include "views/animation_view.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -33,7 +33,8 @@ void play_short_script(MainWindow& window, const QTemporaryDir& dir, int frames 
     "plane": {"point": [0, 0, 1], "normal": [0, 0, 1], "up": [0, -1, 0],
               "size": [0.949, 0.773]},
     "motion_model": "centre",
-    "segments": [{"frames": )" << frames << R"(, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
+    "segments": [{"frames": )" << frames
+                                    << R"(, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
   ASSERT_TRUE(window.load_script(path)) << window.message().toStdString();
   ASSERT_NE(window.animation_model()->animator(), nullptr);
   ASSERT_EQ(window.animation_model()->animator()->frame_count(), frames);

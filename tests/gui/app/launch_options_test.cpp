@@ -1,13 +1,13 @@
 // oflab's command line: every bad input gives a UsageError naming the option.
 #include "app/launch_options.h"
 
-#include "app/view_table.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+
+#include "app/view_table.h"
 
 namespace oflab {
 namespace {
@@ -67,9 +67,8 @@ TEST(LaunchOptions, UnknownScenesAndModesAreRejectedSayingWhatIsKnown) {
 }
 
 TEST(LaunchOptions, ShippedSceneModeAndViewerScriptAreAccepted) {
-  const LaunchOptions o =
-      parse_launch_options({"--scene", "cube", "--script", "rotate", "--mode", "affine",
-                            "--view", "animation"});
+  const LaunchOptions o = parse_launch_options(
+      {"--scene", "cube", "--script", "rotate", "--mode", "affine", "--view", "animation"});
   EXPECT_EQ(o.scene, "cube");
   EXPECT_EQ(o.viewer_script, "rotate");
   EXPECT_FALSE(o.script.has_value());
@@ -129,8 +128,8 @@ TEST(LaunchOptions, ComparedPoliciesAreOneToFourDistinctNamesOfTheRegistry) {
   EXPECT_STREQ(o.compared[0]->name, "talisman");
   EXPECT_STREQ(o.compared[1]->name, "perspective");
   EXPECT_TRUE(parse_launch_options({}).compared.empty());
-  for (const char* bad : {"", "bogus", "affine,affine",
-                                 "affine,perspective,talisman,rerender,exact"}) {
+  for (const char* bad :
+       {"", "bogus", "affine,affine", "affine,perspective,talisman,rerender,exact"}) {
     const std::string error = usage_error({"--compare", bad});
     EXPECT_EQ(error.rfind("--compare: ", 0), 0u) << bad << ": " << error;
   }

@@ -1,21 +1,21 @@
 // The window for real: it opens on the demo, every view renders, the controls drive the
 // scene, impossible input is refused with a visible message, lessons set themselves up.
 #include <QDoubleSpinBox>
-#include <algorithm>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <fstream>
 
 #include "app/view_table.h"
+#include "flow/flow_field.h"
+#include "image_checks.h"
+#include "models/scene_model.h"
 #include "views/basis_view.h"
 #include "views/coefficient_table.h"
 #include "views/flow_view.h"
 #include "views/image_canvas.h"
 #include "views/scene_controls.h"
-#include "models/scene_model.h"
 #include "views/slider_spin.h"
-#include "image_checks.h"
-#include "flow/flow_field.h"
 #include "window_fixture.h"
 
 namespace oflab::test {

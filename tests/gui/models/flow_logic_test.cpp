@@ -7,10 +7,10 @@
 
 #include "flow/homography.h"
 #include "flow/plane_scene.h"
+#include "models/scene_parameters.h"
 #include "views/basis_catalog.h"
 #include "views/flow_parts.h"
 #include "views/palette.h"
-#include "models/scene_parameters.h"
 
 namespace oflab {
 namespace {

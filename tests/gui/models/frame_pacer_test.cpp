@@ -1,10 +1,10 @@
 // Live play follows the wall clock: the frames advanced after T seconds are floor(T * rate)
 // however the ticks fall (counted here by hand for given tick times).
+#include "models/frame_pacer.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
-
-#include "models/frame_pacer.h"
 
 namespace oflab {
 namespace {

@@ -78,8 +78,8 @@ TEST(PolicyComparisonHistory, LevelTotalsCountTheLayerFramesPerLevel) {
   scene.set_frame(12);
   const std::vector<ComparedRun>& runs = comparison.runs();
   ASSERT_EQ(runs.size(), 2u);
-  const std::vector<AnimationFrame> alone = single_run({"scene", "four-cubes", "circle"},
-                                                       reuse_policy("perspective"), 12);
+  const std::vector<AnimationFrame> alone =
+      single_run({"scene", "four-cubes", "circle"}, reuse_policy("perspective"), 12);
   std::array<std::int64_t, kLevelCount> expected{};
   for (int f = 3; f <= 9; ++f) {
     for (int level = 0; level < kLevelCount; ++level) {

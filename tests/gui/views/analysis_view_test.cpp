@@ -7,8 +7,8 @@
 #include <QPainter>
 
 #include "engine/engine.h"
-#include "flow/geometry.h"
 #include "engine/reuse_policy.h"
+#include "flow/geometry.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
@@ -306,9 +306,9 @@ TEST(FrameInspector, AffineInitialViewIsReportedOffByItsMeasuredDistance) {
   ASSERT_GT(worst, 1.0) << "the demo's first pose should show perspective";
   EXPECT_NEAR(r.measured_error_px, worst, 0.05);
   const std::string shown = describe_shown_view(r, *settings.policy).toStdString();
-  EXPECT_NE(shown.find(QString::number(r.measured_error_px, 'f', 2).toStdString() +
-                       " px off the exact"),
-            std::string::npos)
+  EXPECT_NE(
+      shown.find(QString::number(r.measured_error_px, 'f', 2).toStdString() + " px off the exact"),
+      std::string::npos)
       << shown;
   EXPECT_EQ(shown.find("exact:"), std::string::npos);
 }

@@ -15,16 +15,16 @@
 #include <cmath>
 #include <cstring>
 
+#include "app/lessons.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
+#include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "scene/view_culling.h"
-#include "app/lessons.h"
 #include "views/animation_view.h"
 #include "views/panel_layout.h"
-#include "image_checks.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -80,10 +80,13 @@ TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
   const Image& model_frame = model().animator()->image();
   const Image& compared = animation().comparison().runs()[0].animator->image();
   ASSERT_EQ(model_frame.width(), compared.width());
-  EXPECT_EQ(std::memcmp(model_frame.row(0), compared.row(0), size_t(compared.width()) * compared.height() * 4), 0);
+  EXPECT_EQ(std::memcmp(model_frame.row(0), compared.row(0),
+                        size_t(compared.width()) * compared.height() * 4),
+            0);
   // Stepping back restarts them on the same frame.
   window().model()->set_frame(5);
-  for (const ComparedRun& run : animation().comparison().runs()) EXPECT_EQ(run.animator->frame(), 5);
+  for (const ComparedRun& run : animation().comparison().runs())
+    EXPECT_EQ(run.animator->frame(), 5);
 }
 
 TEST_F(AnimationLayoutTest, ComparisonTakesOneToFourPoliciesOfTheRegistry) {
@@ -170,7 +173,8 @@ TEST(SwingScript, StaysInsideTheImage) {
     EXPECT_TRUE(plane_meets_image(script.camera, script.frames[k].pose, kNear)) << k;
     for (const Vec3& corner : plane_corners(script.frames[k].pose)) {
       const Vec2 p = centred_to_pixel(script.camera, project_centred(script.camera, corner));
-      EXPECT_TRUE(p.x > 0 && p.y > 0 && p.x < script.camera.width && p.y < script.camera.height) << k;
+      EXPECT_TRUE(p.x > 0 && p.y > 0 && p.x < script.camera.width && p.y < script.camera.height)
+          << k;
     }
   }
 }
@@ -203,10 +207,13 @@ TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
       const double scale = panels[size_t(i)].width() / frame_rect.width();
       plane_area += covered * scale * scale;
     }
-    RecordProperty("plane_share_frame_" + std::to_string(frame), std::to_string(plane_area / view_area));
-    EXPECT_GE(plane_area / view_area, 0.10) << "frame " << frame << ": " << plane_area / view_area
-                                            << " of " << animation().width() << " x " << animation().height();
-    for (const ComparedRun& run : animation().comparison().runs()) EXPECT_EQ(run.animator->frame(), frame);
+    RecordProperty("plane_share_frame_" + std::to_string(frame),
+                   std::to_string(plane_area / view_area));
+    EXPECT_GE(plane_area / view_area, 0.10)
+        << "frame " << frame << ": " << plane_area / view_area << " of " << animation().width()
+        << " x " << animation().height();
+    for (const ComparedRun& run : animation().comparison().runs())
+      EXPECT_EQ(run.animator->frame(), frame);
   }
 }
 
@@ -276,8 +283,8 @@ TEST(WrappedCaption, BreaksAtTheSeparatorsSoEveryLineFitsAndNothingIsLost) {
   QFont font;
   font.setPixelSize(22);
   const QFontMetrics metrics(font);
-  const QString caption = QString::fromUtf8(
-      "none 5, translate 2, affine 4, rerender 2 \u00b7 error 0.85 px");
+  const QString caption =
+      QString::fromUtf8("none 5, translate 2, affine 4, rerender 2 \u00b7 error 0.85 px");
   EXPECT_EQ(wrapped_caption(caption, metrics, 5000), QStringList{caption});
   const double width =
       metrics.horizontalAdvance(QStringLiteral("none 5, translate 2, affine 4, rerender 2")) + 1;
@@ -293,9 +300,9 @@ TEST(WrappedCaption, BreaksAtTheSeparatorsSoEveryLineFitsAndNothingIsLost) {
   const double narrow = metrics.horizontalAdvance(QStringLiteral("translate 2, affine 4,"));
   const QStringList many = wrapped_caption(caption, metrics, narrow);
   EXPECT_GT(many.size(), 2);
-  for (const QString& line : many) EXPECT_LE(metrics.horizontalAdvance(line), narrow) << line.toStdString();
-  EXPECT_EQ(many.join(QString()).remove(' '),
-            QString(caption).remove(' ').remove(QChar(0x00b7)));
+  for (const QString& line : many)
+    EXPECT_LE(metrics.horizontalAdvance(line), narrow) << line.toStdString();
+  EXPECT_EQ(many.join(QString()).remove(' '), QString(caption).remove(' ').remove(QChar(0x00b7)));
 }
 
 }  // namespace

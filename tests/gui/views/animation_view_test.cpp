@@ -13,16 +13,16 @@
 #include <QTemporaryDir>
 #include <fstream>
 
-#include "views/analysis_view.h"
-#include "models/animation_model.h"
-#include "views/frame_inspector.h"
-#include "views/image_canvas.h"
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "formats/session_file.h"
-#include "views/palette.h"
-#include "models/scene_model.h"
 #include "image_checks.h"
+#include "models/animation_model.h"
+#include "models/scene_model.h"
+#include "views/analysis_view.h"
+#include "views/frame_inspector.h"
+#include "views/image_canvas.h"
+#include "views/palette.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -81,13 +81,15 @@ TEST_F(AnimationViewTest, EachSourceKindPlaysInTheAnimationView) {
     const QImage engine = image.copy(animation().panel_rects().front().toAlignedRect());
     EXPECT_GT(distinct_colours(engine), 50) << source.kind;
     // The legend under the panels shows a swatch of every level.
-    const QImage legend = image.copy(0, int(animation().panel_rects().front().bottom()), image.width(),
-                                     image.height() - int(animation().panel_rects().front().bottom()));
+    const QImage legend =
+        image.copy(0, int(animation().panel_rects().front().bottom()), image.width(),
+                   image.height() - int(animation().panel_rects().front().bottom()));
     for (int k = 0; k < kLevelCount; ++k) {
       const Rgb8 c = level_colour(Level(k));
       bool found = false;
       for (int y = 0; y < legend.height() && !found; ++y) {
-        for (int x = 0; x < legend.width() && !found; ++x) found = legend.pixel(x, y) == qRgb(c.r, c.g, c.b);
+        for (int x = 0; x < legend.width() && !found; ++x)
+          found = legend.pixel(x, y) == qRgb(c.r, c.g, c.b);
       }
       EXPECT_TRUE(found) << source.kind << " level " << k;
     }
@@ -334,13 +336,15 @@ TEST_F(AnimationViewTest, CursorReadoutUsesCentredPixels) {
   animation().render_image();
   const QRectF panel = animation().panel_rects().front();
   const QRectF frame = animation().shown_frame();
-  const QPointF mouse(panel.left() + (camera.cx + 0.25 - frame.left()) / frame.width() * panel.width(),
-                      panel.top() + (camera.cy + 0.25 - frame.top()) / frame.height() * panel.height());
+  const QPointF mouse(
+      panel.left() + (camera.cx + 0.25 - frame.left()) / frame.width() * panel.width(),
+      panel.top() + (camera.cy + 0.25 - frame.top()) / frame.height() * panel.height());
   auto* canvas = animation().findChild<ImageCanvas*>("animation_canvas");
   ASSERT_NE(canvas, nullptr);
   emit canvas->hovered(mouse);
   const QString shown = animation().findChild<QLabel*>("pixel_readout")->text();
-  EXPECT_TRUE(shown.startsWith("pixel (0.5, 0.5) px from the principal point")) << shown.toStdString();
+  EXPECT_TRUE(shown.startsWith("pixel (0.5, 0.5) px from the principal point"))
+      << shown.toStdString();
 }
 
 }  // namespace

@@ -7,10 +7,10 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include "image_checks.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"
 #include "views/flow_view.h"
-#include "image_checks.h"
 #include "window_fixture.h"
 
 namespace oflab::test {

@@ -1,12 +1,13 @@
 // The scene-shifting view: it draws the train-window slices and the layered animation, and
 // its sliders re-cut the slices (a larger epsilon gives fewer, wider slices).
+#include "views/slices_view.h"
+
 #include <QApplication>
 #include <QDoubleSpinBox>
 
 #include "adapters/frame_images.h"
-#include "views/slices_view.h"
-#include "views/slider_spin.h"
 #include "image_checks.h"
+#include "views/slider_spin.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
