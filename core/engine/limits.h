@@ -1,0 +1,59 @@
+// One rule per value: every bounded number a person can give oflab (on the command line, in a
+// session, script or scene file, or in a control of the window) has its range stated here
+// once. The CLI, the file readers and the GUI's controls all check a value with its Limit, so
+// a value refused in one place is refused everywhere with the same words.
+// Plain C++17.
+#pragma once
+
+#include <string>
+
+namespace oflab {
+
+// A closed range [minimum, maximum] of one kind of value, with its unit.
+struct Limit {
+  const char* what;  // what the value is, for messages: "threshold"
+  const char* unit;  // its unit as printed after a number: "px", "u/s"; "" for none
+  double minimum;
+  double maximum;
+  bool whole = false;  // only whole numbers are allowed
+
+  // True when `value` is finite, inside [minimum, maximum] and, for a whole-number limit,
+  // whole.
+  bool allows(double value) const;
+  // "" when allows(value); otherwise one phrase naming the value and the allowed range,
+  // e.g. "1e+06 is outside 0..100 px" or "2.5 is not a whole number (1..256)".
+  std::string problem(double value) const;
+  // The range as printed: "0..100 px".
+  std::string range_text() const;
+};
+
+// The limits. Units: px are image pixels, u world units, s seconds.
+namespace limits {
+// Per-term error thresholds of the engine (core/engine/engine.h EngineSettings), px.
+inline constexpr Limit kThreshold{"threshold", "px", 0.0, 100.0};
+// Camera: focal length in pixels per unit of X/Z, and image size in pixels.
+inline constexpr Limit kFocalLength{"focal length", "px", 1.0, 100000.0};
+inline constexpr Limit kImageSize{"image size", "px", 2.0, 8192.0, true};
+// The plane's pose: the depth Z of its centre (the GUI's Distance), turn and tilt of its
+// normal (gui/models/scene_parameters.h), and its width and height.
+inline constexpr Limit kDistance{"distance", "u", 0.01, 10000.0};
+inline constexpr Limit kTurn{"turn", "deg", -180.0, 180.0};
+inline constexpr Limit kTilt{"tilt", "deg", -90.0, 90.0};
+inline constexpr Limit kPlaneSize{"plane size", "u", 1e-6, 10000.0};
+// Each component of the plane's velocity V and angular velocity Omega.
+inline constexpr Limit kVelocity{"velocity", "u/s", -1000.0, 1000.0};
+inline constexpr Limit kAngularVelocity{"angular velocity", "rad/s", -100.0, 100.0};
+// Frames to play or render in one run, and frames of a benchmark.
+inline constexpr Limit kFrameCount{"frame count", "frames", 0.0, 1000000.0, true};
+// The budget policy's frame budget (core/engine/budget.h): pixels or milliseconds per frame.
+inline constexpr Limit kBudgetPixels{"frame budget", "px", 0.0, 1e9};
+inline constexpr Limit kBudgetMs{"frame budget", "ms", 0.0, 1e9};
+// Layer content quality (core/content/layer_content.h kMaxContentQuality).
+inline constexpr Limit kContentQuality{"content quality", "", 1.0, 256.0, true};
+// The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
+inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};
+// Live play rate, frames per second.
+inline constexpr Limit kPlayRate{"play rate", "fps", 1.0, 240.0, true};
+}  // namespace limits
+
+}  // namespace oflab
