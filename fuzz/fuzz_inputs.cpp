@@ -10,8 +10,8 @@
 #include "formats/obj_scene.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
-#include "formats/session_file.h"
 #include "formats/viewer_script_file.h"
+#include "models/window_state_file.h"
 #include "scene/bsp_tree.h"
 
 namespace oflab::fuzz {

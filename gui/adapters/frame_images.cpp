@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-#include "views/palette.h"
+#include "adapters/palette.h"
 
 namespace oflab {
 namespace {

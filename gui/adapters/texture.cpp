@@ -4,9 +4,9 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include "adapters/palette.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
-#include "views/palette.h"
 
 namespace oflab {
 namespace {

@@ -7,15 +7,11 @@
 #include <QWindow>
 #include <ostream>
 
-#include "adapters/exact_frames.h"
 #include "app/main_window.h"
 #include "app/screenshot.h"
-#include "app/session_io.h"
-#include "models/animation_model.h"
 #include "models/scene_model.h"
-#include "views/animation_view.h"
-#include "views/basis_view.h"
-#include "views/flow_view.h"
+#include "models/window_model.h"
+#include "views/view_page.h"
 
 namespace oflab {
 namespace {
@@ -39,33 +35,6 @@ bool wait_until_exposed(QWidget* window, int timeout_ms) {
 bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error) {
   window->resize(options.width, options.height);
   if (!options.screenshot.empty() || options.benchmark > 0) window->set_external_clock(true);
-  if (!options.lesson.empty()) window->apply_lesson(*find_lesson(options.lesson));
-  if (options.script) {
-    window->model()->set_script(*options.script, QString::fromStdString(options.script_name));
-  }
-  window->flow_view()->set_display(with_overrides(window->flow_view()->display(), options));
-  if (options.basis) window->basis_view()->set_basis(*options.basis);
-  if (options.presentation) window->set_presentation(true);
-  AnimationModel* animation = window->animation_model();
-  if (!options.scene.empty()) {
-    animation->set_source({options.source_kind, options.scene, options.viewer_script});
-  }
-  if (options.mode) {
-    EngineSettings settings = animation->settings();
-    settings.policy = options.mode;
-    animation->set_settings(settings);
-  }
-  if (!options.compared.empty()) window->animation_view()->set_compared_policies(options.compared);
-  PanelDisplay display = PanelDisplay::kSideBySide;
-  if (parse_panel_display(options.animation_show, &display)) {
-    window->animation_view()->set_display(display);
-  }
-  if (const ExactRendererKind* exact = find_exact_renderer(options.animation_exact)) {
-    window->animation_view()->set_exact_renderer(*exact);
-  }
-  if (!options.view.empty() && options.view != "window") {
-    window->show_view(QString::fromStdString(options.view));
-  }
   window->show();
   if (!wait_until_exposed(window, 10000)) {
     *error = "the window did not appear on the display within 10 s";
@@ -100,7 +69,7 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
                            ? QStringLiteral("animation")
                            : QString::fromStdString(options.view);
   window->show_view(name);
-  SceneModel* model = window->model();
+  SceneModel* model = window->model()->scene();
   for (int i = 0; i < 3; ++i) window->play_frames(1);  // warm up caches and shaders
   QElapsedTimer timer;
   timer.start();
@@ -121,12 +90,10 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
 
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
   MainWindow window;
-  if (options.session) {  // first: the other options change what it set
-    QString problem;
-    if (!apply_session(&window, *options.session, &problem)) {
-      err << "oflab: --session: " << problem.simplified().toStdString() << "\n";
-      return 2;
-    }
+  QString problem;
+  if (!window.model()->apply(options.state, &problem)) {  // the files it names, the source
+    err << "oflab: " << problem.simplified().toStdString() << "\n";
+    return 2;
   }
   std::string error;
   if (!prepare_window(&window, options, &error)) {

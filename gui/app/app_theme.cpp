@@ -6,7 +6,7 @@
 #include <QStyle>
 #include <vector>
 
-#include "views/view_theme.h"
+#include "adapters/view_theme.h"
 
 namespace oflab {
 namespace {

@@ -4,17 +4,17 @@
 #include <sstream>
 
 #include "adapters/exact_frames.h"
-#include "app/lessons.h"
 #include "app/view_table.h"
 #include "engine/engine.h"
+#include "engine/limits.h"
 #include "engine/reuse_policy.h"
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
-#include "formats/session_file.h"
 #include "formats/viewer_script_file.h"
 #include "models/animation_sources.h"
-#include "models/policy_comparison.h"
+#include "models/lessons.h"
+#include "models/window_state_file.h"
 #include "runs/policy_runs.h"
 
 namespace oflab {
@@ -32,16 +32,18 @@ void read_script(const CliArgs& cli, LaunchOptions* options) {
   try {
     if (cli.has("--scene")) {  // a viewer script walks through the scene
       read_viewer_script_file(resolve_viewer_script_path(name));
-      options->viewer_script = name;
+      options->state.source.viewer = name;
       return;
     }
-    options->script = read_script_file(resolve_script_path(name));
-    options->script_name = name;
+    read_script_file(resolve_script_path(name));
+    options->state.script = name;
   } catch (const std::runtime_error& e) {  // reader errors and lookup failures
     throw UsageError("--script: " + std::string(e.what()));
   }
 }
 
+// --scene NAME [--source KIND] [--script VIEWER]: the scene plays, by default as "scene" with
+// the kind's default viewer script. Call after read_script.
 void read_scene(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--scene")) return;
   const std::string name = cli.values("--scene").at(0);
@@ -50,10 +52,11 @@ void read_scene(const CliArgs& cli, LaunchOptions* options) {
   } catch (const std::runtime_error& e) {  // SceneError and lookup failures
     throw UsageError("--scene: " + std::string(e.what()));
   }
-  options->scene = name;
-  if (options->viewer_script.empty()) {
-    options->viewer_script = find_animation_source_kind(options->source_kind)->default_viewer;
-  }
+  SourceChoice& source = options->state.source;
+  const std::string viewer = cli.has("--script") ? source.viewer : std::string();
+  source.kind = cli.has("--source") ? cli.values("--source").at(0) : "scene";
+  source.name = name;
+  source.viewer = viewer.empty() ? find_animation_source_kind(source.kind)->default_viewer : viewer;
 }
 
 // The kinds --source accepts: those a viewer script walks through (what --scene plays).
@@ -65,7 +68,7 @@ std::vector<std::string> scene_source_kinds() {
   return names;
 }
 
-void read_source(const CliArgs& cli, LaunchOptions* options) {
+void check_source(const CliArgs& cli) {
   if (!cli.has("--source")) return;
   const std::string text = cli.values("--source").at(0);
   const std::vector<std::string> kinds = scene_source_kinds();
@@ -73,49 +76,66 @@ void read_source(const CliArgs& cli, LaunchOptions* options) {
     throw UsageError("--source: unknown source '" + text + "' (known: " + joined(kinds) + ")");
   }
   if (!cli.has("--scene")) throw UsageError("--source: only used with --scene");
-  options->source_kind = text;
 }
 
 void read_mode(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--mode")) return;
   const std::string text = cli.values("--mode").at(0);
-  options->mode = find_reuse_policy(text);
-  if (!options->mode) {
+  const ReusePolicy* policy = find_reuse_policy(text);
+  if (!policy) {
     throw UsageError("--mode: unknown mode '" + text + "' (known: " + reuse_policy_names() + ")");
   }
+  options->state.settings.policy = policy;
 }
 
 void read_compared(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--compare")) return;
+  std::vector<const ReusePolicy*> policies;
   try {
-    options->compared = parse_policy_list(cli.values("--compare").at(0));
+    policies = parse_policy_list(cli.values("--compare").at(0));
   } catch (const std::invalid_argument& e) {
     throw UsageError("--compare: " + std::string(e.what()));
   }
-  if (int(options->compared.size()) > kMaxComparedPolicies) {
+  if (int(policies.size()) > kMaxComparedPolicies) {
     throw UsageError("--compare: at most " + std::to_string(kMaxComparedPolicies) +
-                     " policies, not " + std::to_string(options->compared.size()));
+                     " policies, not " + std::to_string(policies.size()));
   }
+  options->state.compared.clear();
+  for (const ReusePolicy* policy : policies) options->state.compared.push_back(policy->name);
 }
 
-void read_session(const CliArgs& cli, LaunchOptions* options) {
-  if (!cli.has("--session")) return;
-  try {
-    options->session = read_session_file(cli.values("--session").at(0));
-  } catch (const SessionError& e) {
-    throw UsageError("--session: " + std::string(e.what()));
+// The state the other options go over: --session's, --lesson's or the default window's.
+void read_base_state(const CliArgs& cli, LaunchOptions* options) {
+  if (cli.has("--session") && cli.has("--lesson")) {
+    throw UsageError("--lesson: give --session or --lesson, not both (a session keeps its lesson)");
   }
+  if (cli.has("--session")) {
+    try {
+      options->state = read_session_file(cli.values("--session").at(0));
+    } catch (const SessionError& e) {
+      throw UsageError("--session: " + std::string(e.what()));
+    }
+  }
+  if (!cli.has("--lesson")) return;
+  const std::string name = cli.values("--lesson").at(0);
+  try {
+    if (const Lesson* lesson = find_lesson(name)) {
+      options->state = lesson->state;
+      return;
+    }
+  } catch (const SessionError& e) {  // a shipped lesson file that cannot be used
+    throw UsageError("--lesson: " + std::string(e.what()));
+  }
+  throw UsageError("--lesson: unknown lesson '" + name + "' (known: " + lesson_names() + ")");
 }
 
 void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--animation-show")) return;
   const std::string text = cli.values("--animation-show").at(0);
-  PanelDisplay display;
-  if (!parse_panel_display(text, &display)) {
+  if (!parse_panel_display(text, &options->state.display)) {
     throw UsageError("--animation-show: unknown display '" + text +
                      "' (known: " + panel_display_names() + ")");
   }
-  options->animation_show = text;
 }
 
 void read_animation_exact(const CliArgs& cli, LaunchOptions* options) {
@@ -125,7 +145,7 @@ void read_animation_exact(const CliArgs& cli, LaunchOptions* options) {
     throw UsageError("--animation-exact: unknown renderer '" + text +
                      "' (known: " + exact_renderer_names() + ")");
   }
-  options->animation_exact = text;
+  options->state.exact_renderer = text;
 }
 
 void read_size(const CliArgs& cli, LaunchOptions* options) {
@@ -140,32 +160,29 @@ void read_size(const CliArgs& cli, LaunchOptions* options) {
   options->height = static_cast<int>(size.y);
 }
 
+// The --flow-draw names of every drawing option, and "none".
+std::string flow_draw_names(const std::string& separator) {
+  std::string names;
+  for (const FlowDrawOption& option : flow_draw_options()) names += option.cli_name + separator;
+  return names + "none";
+}
+
 // "--flow-draw arrows,wheel": the listed drawings on, the others off.
-FlowDisplay parse_flow_draw(const std::string& list) {
-  FlowDisplay d;
-  d.arrows = d.streamlines = d.colour_wheel = d.texture = d.zoom_to_plane = false;
-  d.common_scale = false;
+void parse_flow_draw(const std::string& list, FlowDisplay* d) {
+  for (const FlowDrawOption& option : flow_draw_options()) d->*option.member = false;
   std::stringstream items(list);
   std::string item;
   while (std::getline(items, item, ',')) {
-    if (item == "arrows")
-      d.arrows = true;
-    else if (item == "streamlines")
-      d.streamlines = true;
-    else if (item == "wheel")
-      d.colour_wheel = true;
-    else if (item == "texture")
-      d.texture = true;
-    else if (item == "zoom")
-      d.zoom_to_plane = true;
-    else if (item == "common-scale")
-      d.common_scale = true;
-    else if (item != "none") {
-      throw UsageError("--flow-draw: unknown item '" + item +
-                       "' (known: arrows, streamlines, wheel, texture, zoom, common-scale, none)");
+    if (item == "none") continue;
+    const auto& options = flow_draw_options();
+    const auto found = std::find_if(options.begin(), options.end(),
+                                    [&](const FlowDrawOption& o) { return item == o.cli_name; });
+    if (found == options.end()) {
+      throw UsageError("--flow-draw: unknown item '" + item + "' (known: " + flow_draw_names(", ") +
+                       ")");
     }
+    d->*found->member = true;
   }
-  return d;
 }
 
 void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
@@ -177,9 +194,10 @@ void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
       for (int k = 0; k < kFlowPartCount; ++k) keys.push_back(flow_part_key(FlowPart(k)));
       throw UsageError("--flow-show: unknown part '" + key + "' (known: " + joined(keys) + ")");
     }
-    options->flow_part = part;
+    options->state.flow.part = part;
   }
-  if (cli.has("--flow-draw")) options->flow_draw = parse_flow_draw(cli.values("--flow-draw").at(0));
+  if (cli.has("--flow-draw"))
+    parse_flow_draw(cli.values("--flow-draw").at(0), &options->state.flow);
   if (cli.has("--basis")) {
     BasisKind kind = BasisKind::kPlanar;
     const std::string key = cli.values("--basis").at(0);
@@ -187,9 +205,9 @@ void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
       throw UsageError("--basis: unknown basis '" + key +
                        "' (known: taylor, waxman-ullman, planar)");
     }
-    options->basis = kind;
+    options->state.basis = kind;
   }
-  options->presentation = cli.has("--presentation");
+  if (cli.has("--presentation")) options->state.presentation = true;
 }
 
 void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
@@ -205,11 +223,14 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
     throw UsageError("--frames: only used with --screenshot");
   }
   options->frames = cli.integer_or("--frames", 0);
-  if (options->frames < 0) throw UsageError("--frames: must be 0 or more");
+  const std::string frames_problem = limits::kFrameCount.problem(options->frames);
+  if (!frames_problem.empty()) throw UsageError("--frames: " + frames_problem);
   options->benchmark = cli.integer_or("--benchmark", 0);
   if (cli.has("--benchmark") && options->benchmark < 1) {
     throw UsageError("--benchmark: must be a positive number of frames");
   }
+  const std::string benchmark_problem = limits::kFrameCount.problem(options->benchmark);
+  if (!benchmark_problem.empty()) throw UsageError("--benchmark: " + benchmark_problem);
   if (options->benchmark > 0 && !options->screenshot.empty()) {
     throw UsageError("--benchmark: cannot be combined with --screenshot");
   }
@@ -236,14 +257,9 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
        {"--flow-draw", 1},       {"--basis", 1},     {"--presentation", 0},   {"--help", 0}});
   LaunchOptions options;
   options.help = cli.has("--help");
-  options.lesson = cli.text_or("--lesson", "");
-  if (!options.lesson.empty() && !find_lesson(options.lesson)) {
-    throw UsageError("--lesson: unknown lesson '" + options.lesson + "' (known: " + lesson_names() +
-                     ")");
-  }
-  read_session(cli, &options);
+  read_base_state(cli, &options);
   read_script(cli, &options);
-  read_source(cli, &options);
+  check_source(cli);
   read_scene(cli, &options);
   read_mode(cli, &options);
   read_animation_show(cli, &options);
@@ -254,29 +270,19 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
   if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
     throw UsageError("--view: unknown view '" + options.view + "' (known: " + joined(views) + ")");
   }
+  if (!options.view.empty() && options.view != "window") options.state.view = options.view;
   read_run_mode(cli, &options);
   read_size(cli, &options);
   read_view_overrides(cli, &options);
+  const std::string problem = window_state_problem(options.state);
+  if (!problem.empty()) throw UsageError(problem);
   return options;
-}
-
-FlowDisplay with_overrides(FlowDisplay display, const LaunchOptions& options) {
-  if (options.flow_part) display.part = *options.flow_part;
-  if (options.flow_draw) {
-    display.arrows = options.flow_draw->arrows;
-    display.streamlines = options.flow_draw->streamlines;
-    display.colour_wheel = options.flow_draw->colour_wheel;
-    display.texture = options.flow_draw->texture;
-    display.zoom_to_plane = options.flow_draw->zoom_to_plane;
-    display.common_scale = options.flow_draw->common_scale;
-  }
-  return display;
 }
 
 std::string launch_usage() {
   std::vector<std::string> titled;
   for (const ViewEntry& view : view_table()) titled.push_back(view.name + " (" + view.title + ")");
-  return "usage: oflab [--session FILE] [--lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
+  return "usage: oflab [--session FILE | --lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
          "             [--source " +
          joined(scene_source_kinds(), "|") +
          "]\n"
@@ -295,8 +301,9 @@ std::string launch_usage() {
          "]\n"
          "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size "
          "W H]\n"
-         "             [--flow-show PART] [--flow-draw "
-         "arrows,streamlines,wheel,texture,zoom,common-scale]\n"
+         "             [--flow-show PART] [--flow-draw " +
+         flow_draw_names(",") +
+         "]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"
          "  views: " +
          joined(titled) +

@@ -23,25 +23,24 @@
 
 #include "adapters/texture.h"
 #include "app/app_theme.h"
+#include "app/exports.h"
 #include "app/screenshot.h"
-#include "app/session_io.h"
 #include "app/view_table.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "models/animation_model.h"
-#include "models/policy_comparison.h"
 #include "models/scene_model.h"
-#include "views/analysis_view.h"
-#include "views/animation_view.h"
-#include "views/basis_view.h"
-#include "views/flow_view.h"
+#include "models/window_model.h"
+#include "models/window_state_file.h"
 #include "views/scene_controls.h"
+#include "views/view_page.h"
 
 namespace oflab {
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("oflab - Optic Flow Lab"));
-  model_ = new SceneModel(this);
+  model_ = new WindowModel(view_table_names(), this);
+  SceneModel* scene = model_->scene();
   motion_timer_ = new QTimer(this);
   motion_timer_->setTimerType(Qt::PreciseTimer);
   motion_timer_->setInterval(static_cast<int>(1000.0 * SceneModel::kSecondsPerFrame));
@@ -50,7 +49,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(motion_timer_, &QTimer::timeout, this, [this] {
     const int due = pacer_.frames_due(play_clock_.elapsed());
     if (due <= 0) return;
-    model_->advance(due);
+    model_->scene()->advance(due);
     // A view playing its own scene steps once per frame shown (it has no frames to skip).
     if (ViewPage* page = current_view(); page && page->plays_own_scene()) page->step_animation();
   });
@@ -64,16 +63,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   layout->addWidget(tabs_, 1);
   setCentralWidget(central);
 
-  animation_model_ = new AnimationModel(model_, this);
   for (const ViewEntry& entry : view_table()) add_view(entry);
-  // The analysis view overlays the compared policies while the animation view compares.
-  AnimationView* animation = animation_view();
-  analysis_view()->set_comparison_source([animation]() -> PolicyComparison* {
-    return animation->display() == PanelDisplay::kComparison ? &animation->comparison() : nullptr;
-  });
-  connect(animation_model_, &AnimationModel::input_rejected, this, &MainWindow::show_message);
+  connect(model_, &WindowModel::input_rejected, this, &MainWindow::show_message);
 
-  controls_ = new SceneControls(model_);
+  controls_ = new SceneControls(scene);
+  connect(controls_, &SceneControls::refused, model_, &WindowModel::reject);
   auto* scroll = new QScrollArea;
   scroll->setWidget(controls_);
   scroll->setWidgetResizable(true);
@@ -84,17 +78,24 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
   addDockWidget(Qt::LeftDockWidgetArea, scene_dock_);
   fit_scene_panel();
-  connect(tabs_, &QTabWidget::currentChanged, this, &MainWindow::update_scene_panel);
-  connect(animation_model_, &AnimationModel::source_changed, this, &MainWindow::update_scene_panel);
+  connect(tabs_, &QTabWidget::currentChanged, this, [this] {
+    model_->set_view(current_view_name().toStdString());
+    update_scene_panel();
+  });
+  connect(model_->animation(), &AnimationModel::source_changed, this,
+          &MainWindow::update_scene_panel);
 
   create_actions();
   create_menus();
   create_play_bar();
-  connect(model_, &SceneModel::scene_rejected, this, &MainWindow::show_message);
-  connect(model_, &SceneModel::scene_changed, this, [this] {
+  connect(scene, &SceneModel::scene_changed, this, [this] {
     clear_message();
     update_frame_label();
   });
+  connect(model_, &WindowModel::view_changed, this, &MainWindow::show_model_view);
+  connect(model_, &WindowModel::presentation_changed, this, &MainWindow::show_presentation);
+  connect(model_, &WindowModel::play_changed, this, &MainWindow::show_play);
+  connect(model_, &WindowModel::lesson_changed, this, &MainWindow::show_lesson);
   apply_app_theme(false);
   QApplication::instance()->installEventFilter(this);
   statusBar()->showMessage(tr("Default demo: a textured plane in a screw motion"));
@@ -125,7 +126,7 @@ void MainWindow::style_banners() {
   const QString style = QStringLiteral(
       "QLabel { background: %1; color: white; padding: 6px; border-radius: 3px; "
       "font-size: %2pt; }");
-  const int points = presentation_ ? 17 : 10;
+  const int points = model_->presentation() ? 17 : 10;
   caption_banner_->setStyleSheet(style.arg(QStringLiteral("#0072B2")).arg(points));
   message_banner_->setStyleSheet(style.arg(QStringLiteral("#D55E00")).arg(points));
 }
@@ -148,31 +149,31 @@ void MainWindow::create_actions() {
   play_action_->setCheckable(true);
   play_action_->setShortcut(Qt::Key_Space);
   play_action_->setToolTip(tr("Play or pause the scene's motion (Space)"));
-  connect(play_action_, &QAction::toggled, this, &MainWindow::set_motion_playing);
+  connect(play_action_, &QAction::toggled, model_, &WindowModel::set_playing);
   step_action_ = new QAction(tr("Step"), this);
   step_action_->setShortcut(Qt::Key_Right);
   step_action_->setToolTip(tr("One frame forward (Right arrow)"));
-  connect(step_action_, &QAction::triggered, this, [this] { model_->advance(1); });
+  connect(step_action_, &QAction::triggered, this, [this] { model_->scene()->advance(1); });
   back_action_ = new QAction(tr("Back"), this);
   back_action_->setShortcut(Qt::Key_Left);
   back_action_->setToolTip(tr("One frame back (Left arrow)"));
   connect(back_action_, &QAction::triggered, this,
-          [this] { model_->set_frame(std::max(0, model_->frame() - 1)); });
+          [this] { model_->scene()->set_frame(std::max(0, model_->scene()->frame() - 1)); });
   end_action_ = new QAction(tr("Last frame"), this);
   end_action_->setShortcut(Qt::Key_End);
   end_action_->setToolTip(tr("The last frame of the loop (End)"));
   connect(end_action_, &QAction::triggered, this,
-          [this] { model_->set_frame(model_->loop_frames() - 1); });
+          [this] { model_->scene()->set_frame(model_->scene()->loop_frames() - 1); });
   reset_action_ = new QAction(tr("First frame"), this);
   reset_action_->setShortcut(Qt::Key_Home);
   reset_action_->setToolTip(tr("Back to frame 0 (Home)"));
-  connect(reset_action_, &QAction::triggered, this, [this] { model_->set_frame(0); });
+  connect(reset_action_, &QAction::triggered, this, [this] { model_->scene()->set_frame(0); });
   presentation_action_ = new QAction(tr("Presentation mode"), this);
   presentation_action_->setCheckable(true);
   presentation_action_->setShortcut(Qt::Key_F11);
   presentation_action_->setToolTip(
       tr("Light backgrounds, large text and thick lines for a projector (F11)"));
-  connect(presentation_action_, &QAction::toggled, this, &MainWindow::set_presentation);
+  connect(presentation_action_, &QAction::toggled, model_, &WindowModel::set_presentation);
 }
 
 void MainWindow::create_menus() {
@@ -203,10 +204,14 @@ void MainWindow::create_menus() {
   }
   create_view_shortcuts(view);
   QMenu* lesson_menu = menuBar()->addMenu(tr("&Lessons"));
-  for (const Lesson& lesson : lessons()) {
-    const std::string name = lesson.name;
-    connect(lesson_menu->addAction(QString::fromStdString(lesson.title)), &QAction::triggered, this,
-            [this, name] { apply_lesson(*find_lesson(name)); });
+  try {
+    for (const Lesson& lesson : lessons()) {
+      const std::string name = lesson.name;
+      connect(lesson_menu->addAction(QString::fromStdString(lesson.title)), &QAction::triggered,
+              this, [this, name] { apply_lesson(*find_lesson(name)); });
+    }
+  } catch (const SessionError& e) {  // a broken lesson file: the window opens without lessons
+    show_message(QString::fromStdString(e.what()));
   }
 }
 
@@ -230,7 +235,8 @@ void MainWindow::add_scrub_controls(QToolBar* bar) {
   scrub_->setMinimumWidth(120);
   scrub_->setToolTip(tr("Scrub through the frames of the motion"));
   bar->addWidget(scrub_);
-  connect(scrub_, &QSlider::valueChanged, this, [this](int frame) { model_->set_frame(frame); });
+  connect(scrub_, &QSlider::valueChanged, this,
+          [this](int frame) { model_->scene()->set_frame(frame); });
   speed_box_ = new QComboBox(bar);
   speed_box_->setObjectName(QStringLiteral("speed_box"));
   speed_box_->setToolTip(tr("Playback rate, frames per second"));
@@ -238,30 +244,26 @@ void MainWindow::add_scrub_controls(QToolBar* bar) {
   speed_box_->setCurrentIndex(3);
   bar->addWidget(speed_box_);
   connect(speed_box_, QOverload<int>::of(&QComboBox::activated), this,
-          [this] { set_play_rate(speed_box_->currentData().toInt()); });
+          [this] { model_->set_play_rate(speed_box_->currentData().toInt()); });
 }
 
 void MainWindow::update_frame_label() {
+  const SceneModel* scene = model_->scene();
   frame_label_->setText(
-      tr("  frame %1 (t = %2 s)").arg(model_->frame()).arg(model_->time(), 0, 'f', 2));
+      tr("  frame %1 (t = %2 s)").arg(scene->frame()).arg(scene->time(), 0, 'f', 2));
   if (!scrub_) return;
   const QSignalBlocker block(scrub_);
-  scrub_->setRange(0, model_->loop_frames() - 1);
-  scrub_->setValue(model_->frame());
+  scrub_->setRange(0, scene->loop_frames() - 1);
+  scrub_->setValue(scene->frame());
 }
 
 void MainWindow::add_view(const ViewEntry& entry) {
-  ViewPage* page = entry.make(ViewModels{model_, animation_model_});
+  ViewPage* page = entry.make(model_);
   page->setFocusPolicy(Qt::StrongFocus);  // clicking a view takes the focus from a field
   views_.push_back({QString::fromStdString(entry.name), page});
   tabs_->addTab(page, tr(entry.title.c_str()));
-  page->set_theme(view_theme(presentation_));
+  page->set_theme(view_theme(model_->presentation()));
 }
-
-FlowView* MainWindow::flow_view() const { return find_view<FlowView>(); }
-BasisView* MainWindow::basis_view() const { return find_view<BasisView>(); }
-AnimationView* MainWindow::animation_view() const { return find_view<AnimationView>(); }
-AnalysisView* MainWindow::analysis_view() const { return find_view<AnalysisView>(); }
 
 ViewPage* MainWindow::view(const QString& name) const {
   for (const Tab& tab : views_) {
@@ -284,10 +286,12 @@ QString MainWindow::current_view_name() const {
 }
 
 bool MainWindow::show_view(const QString& name) {
-  ViewPage* v = view(name);
-  if (!v) return false;
-  tabs_->setCurrentWidget(v);
-  return true;
+  return view(name) && model_->set_view(name.toStdString());
+}
+
+void MainWindow::show_model_view() {
+  ViewPage* page = view(QString::fromStdString(model_->view()));
+  if (page && page != tabs_->currentWidget()) tabs_->setCurrentWidget(page);
 }
 
 ViewPage* MainWindow::current_view() const {
@@ -295,35 +299,22 @@ ViewPage* MainWindow::current_view() const {
 }
 
 void MainWindow::apply_lesson(const Lesson& lesson) {
-  set_motion_playing(lesson.play_motion);
-  model_->set_frame(0);
-  model_->set_scene(lesson.scene);
-  flow_view()->set_display(lesson.flow);
-  basis_view()->set_basis(lesson.basis);
-  basis_view()->set_playing(lesson.play_basis);
-  EngineSettings settings = animation_model_->settings();
-  settings.policy = lesson.mode;
-  animation_model_->set_settings(settings);
-  animation_model_->set_source(
-      {lesson.animation_kind, lesson.animation_name, lesson.animation_viewer});
-  animation_view()->set_compared_policies(lesson.compared);
-  animation_view()->set_display(lesson.display);
-  show_view(QString::fromStdString(lesson.view));
-  show_lesson_caption(QString::fromStdString(lesson.name));
+  QString error;
+  if (!model_->apply(lesson.state, &error)) {
+    show_message(tr("lesson %1: %2").arg(QString::fromStdString(lesson.name), error));
+    return;
+  }
   statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
 }
 
-QString MainWindow::caption() const { return caption_banner_->text(); }
-
-void MainWindow::show_lesson_caption(const QString& name) {
-  const Lesson* lesson = find_lesson(name.toStdString());
-  lesson_ = lesson ? name : QString();
-  set_caption(lesson ? QString::fromStdString(lesson->caption) : QString());
+QString MainWindow::caption() const {
+  return caption_banner_->isVisible() ? caption_banner_->text() : QString();
 }
 
-void MainWindow::set_caption(const QString& text) {
-  caption_banner_->setText(text);
-  caption_banner_->setVisible(!text.isEmpty());
+void MainWindow::show_lesson() {
+  const Lesson* lesson = find_lesson(model_->lesson());
+  caption_banner_->setText(lesson ? QString::fromStdString(lesson->narrative) : QString());
+  caption_banner_->setVisible(lesson != nullptr);
 }
 
 QString MainWindow::message() const {
@@ -338,8 +329,8 @@ void MainWindow::show_message(const QString& text) {
 
 void MainWindow::clear_message() { message_banner_->hide(); }
 
-void MainWindow::set_presentation(bool on) {
-  presentation_ = on;
+void MainWindow::show_presentation() {
+  const bool on = model_->presentation();
   const QSignalBlocker block(presentation_action_);
   presentation_action_->setChecked(on);
   apply_app_theme(on);
@@ -351,26 +342,17 @@ void MainWindow::set_presentation(bool on) {
   fit_scene_panel();
 }
 
-int MainWindow::play_rate() const { return speed_box_->currentData().toInt(); }
-
-void MainWindow::set_play_rate(int frames_per_second) {
-  const int rate = std::max(1, frames_per_second);
+void MainWindow::show_play() {
+  const int rate = model_->play_rate();
   if (speed_box_->findData(rate) < 0) speed_box_->addItem(tr("%1 fps").arg(rate), rate);
   speed_box_->setCurrentIndex(speed_box_->findData(rate));
-  motion_timer_->setInterval(1000 / play_rate());
-  play_clock_.start();
-  pacer_.start(0, play_rate());
-}
-
-bool MainWindow::motion_playing() const { return play_action_->isChecked(); }
-
-void MainWindow::set_motion_playing(bool playing) {
+  motion_timer_->setInterval(1000 / rate);
   const QSignalBlocker block(play_action_);
-  play_action_->setChecked(playing);
-  if (playing && !external_clock_) {
+  play_action_->setChecked(model_->playing());
+  if (model_->playing() && !external_clock_) {
     play_clock_.start();
-    pacer_.start(0, play_rate());
-    motion_timer_->start();
+    pacer_.start(0, rate);
+    if (!motion_timer_->isActive()) motion_timer_->start();
   } else {
     motion_timer_->stop();
   }
@@ -378,13 +360,13 @@ void MainWindow::set_motion_playing(bool playing) {
 
 void MainWindow::set_external_clock(bool on) {
   external_clock_ = on;
-  set_motion_playing(motion_playing());
+  show_play();
   for (const Tab& tab : views_) tab.page->set_external_clock(on);
 }
 
 void MainWindow::play_frames(int frames) {
   for (int i = 0; i < frames; ++i) {
-    model_->advance(1);
+    model_->scene()->advance(1);
     for (const Tab& tab : views_) tab.page->step_animation();
     QApplication::processEvents();
   }
@@ -402,13 +384,13 @@ void MainWindow::load_texture() {
     show_message(error);
     return;
   }
-  model_->set_texture(image, path);
+  model_->scene()->set_texture(image, path);
 }
 
 bool MainWindow::load_script(const QString& name_or_path) {
   try {
     const MotionScript script = read_script_file(resolve_script_path(name_or_path.toStdString()));
-    return model_->set_script(script, QFileInfo(name_or_path).completeBaseName());
+    return model_->scene()->set_script(script, QFileInfo(name_or_path).completeBaseName());
   } catch (const std::runtime_error& e) {  // unreadable or invalid: keep the session
     show_message(QString::fromStdString(e.what()));
     return false;
@@ -449,8 +431,8 @@ void MainWindow::create_export_menu(QMenu* file) {
         QString error;
         if (dir.isEmpty()) return;
         if (!export_frames_png(this, dir, false, &error)) return show_message(error);
-        const int frames =
-            animation_model_->animator() ? animation_model_->animator()->frame_count() : 0;
+        Animator* animator = model_->animation()->animator();
+        const int frames = animator ? animator->frame_count() : 0;
         statusBar()->showMessage(tr("Wrote %1 frames of the animation view (frame-0000.png to "
                                     "frame-%2.png) to %3")
                                      .arg(frames)
@@ -554,18 +536,23 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 
 bool MainWindow::save_session(const QString& path, bool overwrite) {
   try {
-    write_session_file(path.toStdString(), capture_session(this), overwrite);
-    return true;
+    write_session_file(path.toStdString(), model_->state(), overwrite);
   } catch (const SessionError& e) {
     show_message(QString::fromStdString(e.what()));
     return false;
   }
+  statusBar()->showMessage(tr("Saved the session to %1").arg(path), 15000);
+  return true;
 }
 
 bool MainWindow::load_session(const QString& path) {
   QString error;
   try {
-    if (apply_session(this, read_session_file(path.toStdString()), &error)) return true;
+    if (model_->apply(read_session_file(path.toStdString()), &error)) {
+      statusBar()->showMessage(tr("Opened the session %1").arg(path), 15000);
+      return true;
+    }
+    error = QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), error);
   } catch (const SessionError& e) {
     error = QString::fromStdString(e.what());
   }

@@ -1,15 +1,17 @@
-// The main window: the models (one SceneModel and one AnimationModel) shared by every view;
-// the views as tabs, one per entry of the view table (gui/app/view_table.h); the scene panel
-// as a dock; a caption banner for lessons and a message banner for rejected input; play
-// controls for the scene's motion; presentation mode.
+// The main window: the window model (gui/models/window_model.h), the one home of what the
+// window shows, shared by every view; the views as tabs, one per entry of the view table
+// (gui/app/view_table.h); the scene panel as a dock; a caption banner for lessons and a
+// message banner for rejected input; play controls for the scene's motion; presentation
+// mode. The window follows the model's signals (the view in front, the theme, the play
+// timer, the lesson's caption); its own controls edit the model.
 #pragma once
 
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <vector>
 
-#include "app/lessons.h"
 #include "models/frame_pacer.h"
+#include "models/lessons.h"
 
 class QAction;
 class QComboBox;
@@ -23,14 +25,9 @@ class QTimer;
 
 namespace oflab {
 
-class AnalysisView;
-class AnimationModel;
-class AnimationView;
-class BasisView;
-class FlowView;
 class SceneControls;
-class SceneModel;
 class ViewPage;
+class WindowModel;
 struct ViewEntry;
 
 class MainWindow : public QMainWindow {
@@ -46,54 +43,30 @@ class MainWindow : public QMainWindow {
   // Opens on the default demo with the flow view in front.
   explicit MainWindow(QWidget* parent = nullptr);
 
-  SceneModel* model() const { return model_; }
-  AnimationModel* animation_model() const { return animation_model_; }
+  // What the window shows: read and edit it here, never through a view.
+  WindowModel* model() const { return model_; }
   SceneControls* scene_controls() const { return controls_; }
-  // The view of type V among the tabs (nullptr when there is none). V must be complete
-  // where this is called.
-  template <class V>
-  V* find_view() const {
-    for (const Tab& tab : views_) {
-      if (auto* v = dynamic_cast<V*>(tab.page)) return v;
-    }
-    return nullptr;
-  }
-  FlowView* flow_view() const;
-  BasisView* basis_view() const;
-  AnimationView* animation_view() const;
-  AnalysisView* analysis_view() const;
 
   // The view with this command-line name, or nullptr; all names in tab order.
   ViewPage* view(const QString& name) const;
   QStringList view_names() const;
-  // Brings the named view to the front; false when there is no such view.
+  // Brings the named view to the front (through the model); false when there is no such
+  // view.
   bool show_view(const QString& name);
   ViewPage* current_view() const;
   QString current_view_name() const;
 
-  // Sets up a lesson: its scene, view, options and caption.
+  // Applies a lesson's state (WindowModel::apply); its narrative shows as the caption.
   void apply_lesson(const Lesson& lesson);
+  // The caption banner's text: the narrative of the model's lesson, "" for none.
   QString caption() const;
-  // The lesson whose caption shows ("" for none); show_lesson_caption sets it and its
-  // caption without touching the scene (a saved session carries the scene itself).
-  QString lesson() const { return lesson_; }
-  void show_lesson_caption(const QString& name);
-  void set_caption(const QString& text);  // empty hides the banner
 
   // The message shown for rejected input; empty when none is visible.
   QString message() const;
 
-  bool presentation() const { return presentation_; }
-  void set_presentation(bool on);
-
-  // Live play rate in frames per second (the speed box offers 5, 10, 15, 30 and 60; another
-  // rate is added to it, one below 1 is taken as 1). Frames follow the wall clock
-  // (models/frame_pacer.h).
-  int play_rate() const;
-  void set_play_rate(int frames_per_second);
-
-  bool motion_playing() const;
-  void set_motion_playing(bool playing);
+  // Presentation mode, the play rate (frames per second; frames follow the wall clock,
+  // models/frame_pacer.h) and playing are the model's: the window follows its play_changed
+  // and presentation_changed.
 
   // Advances the scene's motion and each view's own animation by `frames` steps, rendering
   // the visible view after each (used by --screenshot --frames N).
@@ -107,9 +80,10 @@ class MainWindow : public QMainWindow {
   // used shows a message and leaves the session as it was; returns false then.
   bool load_script(const QString& name_or_path);
 
-  // Saves the session as JSON; refuses an existing file unless `overwrite`. Loads one,
-  // changing nothing when it cannot be used. Both show a message and return false on
-  // failure.
+  // Saves the model's state as a session file (gui/models/window_state_file.h); refuses an
+  // existing file unless `overwrite`. Loads one and applies it, changing nothing when it
+  // cannot be read or used. Both show a message naming the file and return false on
+  // failure; both confirm success in the status bar.
   bool save_session(const QString& path, bool overwrite);
   bool load_session(const QString& path);
 
@@ -136,6 +110,11 @@ class MainWindow : public QMainWindow {
   // not draw the panel's plane (ViewPage::scene_panel_note).
   void update_scene_panel();
   void show_message(const QString& text);
+  // Follow the model: the view in front, the theme, the play timer and the caption.
+  void show_model_view();
+  void show_presentation();
+  void show_play();
+  void show_lesson();
   void clear_message();
   void update_frame_label();
   void add_scrub_controls(QToolBar* bar);
@@ -144,11 +123,10 @@ class MainWindow : public QMainWindow {
   void save_view_screenshot();
   void create_export_menu(QMenu* file);
 
-  SceneModel* model_;
+  WindowModel* model_;
   SceneControls* controls_;
   QTabWidget* tabs_;
   QDockWidget* scene_dock_ = nullptr;
-  AnimationModel* animation_model_;
   QSlider* scrub_ = nullptr;
   QComboBox* speed_box_ = nullptr;
   QAction* end_action_ = nullptr;
@@ -164,8 +142,6 @@ class MainWindow : public QMainWindow {
   QAction* back_action_ = nullptr;
   QAction* reset_action_ = nullptr;
   QAction* presentation_action_ = nullptr;
-  bool presentation_ = false;
-  QString lesson_;
   bool external_clock_ = false;
 };
 

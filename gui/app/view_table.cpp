@@ -10,15 +10,12 @@ namespace oflab {
 
 const std::vector<ViewEntry>& view_table() {
   static const std::vector<ViewEntry> table = {
-      {"flow", "Flow field",
-       [](const ViewModels& m) -> ViewPage* { return new FlowView(m.scene); }},
-      {"basis", "Basis deformations",
-       [](const ViewModels& m) -> ViewPage* { return new BasisView(m.scene); }},
+      {"flow", "Flow field", [](WindowModel* m) -> ViewPage* { return new FlowView(m); }},
+      {"basis", "Basis deformations", [](WindowModel* m) -> ViewPage* { return new BasisView(m); }},
       {"animation", "Animation, side by side",
-       [](const ViewModels& m) -> ViewPage* { return new AnimationView(m.animation); }},
-      {"analysis", "Analysis",
-       [](const ViewModels& m) -> ViewPage* { return new AnalysisView(m.animation); }},
-      {"slices", "Scene shifting", [](const ViewModels&) -> ViewPage* { return new SlicesView; }},
+       [](WindowModel* m) -> ViewPage* { return new AnimationView(m); }},
+      {"analysis", "Analysis", [](WindowModel* m) -> ViewPage* { return new AnalysisView(m); }},
+      {"slices", "Scene shifting", [](WindowModel*) -> ViewPage* { return new SlicesView; }},
   };
   return table;
 }

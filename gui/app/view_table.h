@@ -12,21 +12,15 @@ class QWidget;
 
 namespace oflab {
 
-class AnimationModel;
-class SceneModel;
 class ViewPage;
-
-// The models a view may read; both outlive every view.
-struct ViewModels {
-  SceneModel* scene = nullptr;
-  AnimationModel* animation = nullptr;
-};
+class WindowModel;
 
 struct ViewEntry {
   std::string name;   // command-line name, lower case: "flow"
   std::string title;  // tab title: "Flow field"
-  // Makes the view (parentless; the window takes ownership).
-  std::function<ViewPage*(const ViewModels&)> make;
+  // Makes the view (parentless; the window takes ownership) over the window's model, which
+  // outlives every view.
+  std::function<ViewPage*(WindowModel*)> make;
 };
 
 // Every view, in tab order.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "models/scene_model.h"
+#include "models/window_state.h"
 
 namespace oflab {
 
@@ -79,11 +80,10 @@ bool AnimationModel::set_source(const SourceChoice& choice) {
 }
 
 bool AnimationModel::set_settings(const EngineSettings& settings) {
-  for (double t : settings.thresholds) {
-    if (!std::isfinite(t) || t < 0.0) {
-      emit input_rejected(tr("thresholds must be finite and not negative"));
-      return false;
-    }
+  const std::string limits_problem = settings_state_problem(settings);
+  if (!limits_problem.empty()) {
+    emit input_rejected(QString::fromStdString(limits_problem));
+    return false;
   }
   const std::string content = content_problem(settings.content);
   if (!content.empty()) {

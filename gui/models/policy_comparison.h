@@ -23,12 +23,12 @@
 
 #include "engine/animator.h"
 #include "engine/reuse_policy.h"
+#include "models/window_state.h"
 
 namespace oflab {
 
 class AnimationModel;
 
-constexpr int kMaxComparedPolicies = 4;
 // Frames of history kept per compared run: 5.6 MB per run at most, whatever the script's
 // length (a script may have up to a million frames).
 constexpr int kComparedHistoryFrames = 100000;

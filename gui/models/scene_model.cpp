@@ -1,6 +1,7 @@
 #include "models/scene_model.h"
 
 #include "adapters/texture.h"
+#include "models/window_state.h"
 
 namespace oflab {
 namespace {
@@ -69,7 +70,7 @@ void SceneModel::set_loop_override(int frames) {
 }
 
 bool SceneModel::set_scene(const PlaneScene& scene) {
-  const std::string problem = plane_scene_problem(scene);
+  const std::string problem = plane_state_problem(scene);
   if (!problem.empty()) {
     emit scene_rejected(QString::fromStdString(problem));
     return false;

@@ -11,11 +11,12 @@
 #include <cmath>
 #include <functional>
 
+#include "adapters/palette.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
+#include "models/window_model.h"
 #include "views/frame_inspector.h"
-#include "views/palette.h"
 
 namespace oflab {
 namespace {
@@ -515,8 +516,8 @@ void AnalysisView::Charts::paint_comparison(QPainter& p, const QRect& rect,
   draw_level_shares(p, share_panel(rect, a[3]), chart(3), runs, text);
 }
 
-AnalysisView::AnalysisView(AnimationModel* model, QWidget* parent)
-    : ViewPage(parent), model_(model), theme_(view_theme(false)) {
+AnalysisView::AnalysisView(WindowModel* window, QWidget* parent)
+    : ViewPage(parent), window_(window), model_(window->animation()), theme_(view_theme(false)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   auto* bar = new QHBoxLayout;
@@ -534,11 +535,7 @@ AnalysisView::AnalysisView(AnimationModel* model, QWidget* parent)
   connect(whole_run_box_, &QCheckBox::toggled, this, [this] { refresh(); });
   connect(model_, &AnimationModel::frame_changed, this, &AnalysisView::refresh);
   connect(model_, &AnimationModel::source_changed, this, &AnalysisView::refresh);
-}
-
-void AnalysisView::set_comparison_source(ComparisonSource source) {
-  comparison_source_ = std::move(source);
-  refresh();
+  connect(window_, &WindowModel::panels_changed, this, &AnalysisView::refresh);
 }
 
 bool AnalysisView::comparing() const { return charts_->compared != nullptr; }
@@ -636,7 +633,8 @@ void AnalysisView::follow_current_frame(int current, int loop_frames) {
 void AnalysisView::read_model() {
   const std::vector<AnimationFrame>& history = model_->history();
   charts_->records = history.empty() ? nullptr : &history;
-  PolicyComparison* comparison = comparison_source_ ? comparison_source_() : nullptr;
+  PolicyComparison* comparison =
+      window_->panel_display() == PanelDisplay::kComparison ? &window_->comparison() : nullptr;
   const std::vector<ComparedRun>* runs = comparison ? &comparison->runs() : nullptr;
   charts_->compared = runs && !runs->empty() && charts_->records ? runs : nullptr;
   key_->setText(comparing()

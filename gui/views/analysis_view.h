@@ -33,6 +33,7 @@ class QLabel;
 namespace oflab {
 
 class AnimationModel;
+class WindowModel;
 class PolicyComparison;
 
 class AnalysisView : public ViewPage {
@@ -47,20 +48,15 @@ class AnalysisView : public ViewPage {
   // policy).
   static constexpr int kComparisonChartCount = 4;
 
-  // The model must outlive the view.
-  explicit AnalysisView(AnimationModel* model, QWidget* parent = nullptr);
+  // Charts the window model's animation model; while the window model's panel display is
+  // the comparison, the compared policies instead. The model must outlive the view.
+  explicit AnalysisView(WindowModel* window, QWidget* parent = nullptr);
 
   QImage render_image() override;
   QString scene_panel_note() const override;
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
 
-  // Where the compared runs come from: called at every refresh, it returns the comparison
-  // to overlay, or nullptr to chart the model's own engine. The main window passes the
-  // animation view's comparison while its comparison layout is shown. The comparison must
-  // outlive the view, or the source must stop returning it first.
-  using ComparisonSource = std::function<PolicyComparison*()>;
-  void set_comparison_source(ComparisonSource source);
   // True when the charts overlay compared policies (a comparison is given and plays).
   bool comparing() const;
   // Charts laid out now: kComparisonChartCount when comparing, else kChartCount.
@@ -95,11 +91,11 @@ class AnalysisView : public ViewPage {
   void follow_current_frame(int current, int loop_frames);
   QString comparison_status() const;
 
+  WindowModel* window_;
   AnimationModel* model_;
   Charts* charts_;
   QCheckBox* whole_run_box_;
   QLabel* key_;
-  ComparisonSource comparison_source_;
   ViewTheme theme_;
   int first_ = 0;
   int last_ = 0;

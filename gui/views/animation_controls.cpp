@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include "formats/viewer_script_file.h"
+#include "views/number_box.h"
 
 namespace oflab {
 namespace {
@@ -20,9 +21,6 @@ namespace {
 constexpr DeltaPolicy kDeltas[] = {DeltaPolicy::kDissertation, DeltaPolicy::kOne,
                                    DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
                                    DeltaPolicy::kFourthRootAbsDet};
-
-constexpr PanelDisplay kDisplays[] = {PanelDisplay::kSideBySide, PanelDisplay::kDifference,
-                                      PanelDisplay::kBlink, PanelDisplay::kComparison};
 
 QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
@@ -39,36 +37,6 @@ void select_data(QComboBox* box, const QVariant& data) {
 }
 
 }  // namespace
-
-std::string panel_display_names(const std::string& separator) {
-  std::string names;
-  for (PanelDisplay d : kDisplays)
-    names += (names.empty() ? "" : separator) + panel_display_name(d);
-  return names;
-}
-
-const char* panel_display_name(PanelDisplay display) {
-  switch (display) {
-    case PanelDisplay::kDifference:
-      return "difference";
-    case PanelDisplay::kBlink:
-      return "blink";
-    case PanelDisplay::kComparison:
-      return "comparison";
-    default:
-      return "side-by-side";
-  }
-}
-
-bool parse_panel_display(const std::string& text, PanelDisplay* display) {
-  for (PanelDisplay d : kDisplays) {
-    if (text == panel_display_name(d)) {
-      *display = d;
-      return true;
-    }
-  }
-  return false;
-}
 
 AnimationControls::AnimationControls(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
@@ -203,12 +171,12 @@ QWidget* AnimationControls::make_engine_row() {
   label->setToolTip(tr("Error budgets of the levels none, translate, affine and perspective"));
   thresholds->addWidget(label);
   for (int k = 0; k < kTermCount; ++k) {
-    thresholds_[k] = new QDoubleSpinBox(threshold_row);
-    thresholds_[k]->setRange(0.0, 100.0);
+    // Any number can be typed: the model refuses one outside limits::kThreshold.
+    thresholds_[k] = new NumberBox(0.0, 100.0, threshold_row);
+    thresholds_[k]->setObjectName(QStringLiteral("animation_threshold_%1").arg(k));
     thresholds_[k]->setDecimals(2);
     thresholds_[k]->setSingleStep(0.25);
     thresholds_[k]->setToolTip(tr("Threshold of level %1, pixels").arg(level_name(Level(k))));
-    thresholds_[k]->setKeyboardTracking(false);
     thresholds->addWidget(thresholds_[k]);
     connect(thresholds_[k], QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
             [this] { emit settings_edited(); });

@@ -15,6 +15,7 @@
 #include "engine/engine.h"
 #include "models/animation_sources.h"
 #include "models/policy_comparison.h"
+#include "models/window_state.h"
 
 class QAction;
 class QComboBox;
@@ -25,15 +26,6 @@ class QSpinBox;
 class QToolButton;
 
 namespace oflab {
-
-// How the animation view shows the engine's frame and the exact one; kComparison plays
-// several reuse policies at once beside the exact frame (gui/models/policy_comparison.h).
-enum class PanelDisplay { kSideBySide, kDifference, kBlink, kComparison };
-// "side-by-side", "difference", "blink", "comparison"
-const char* panel_display_name(PanelDisplay display);
-bool parse_panel_display(const std::string& text, PanelDisplay* display);
-// The names of every display joined by `separator`, for help texts and error messages.
-std::string panel_display_names(const std::string& separator = ", ");
 
 class AnimationControls : public QWidget {
   Q_OBJECT

@@ -15,8 +15,10 @@
 
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
+#include "engine/limits.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
+#include "models/window_model.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_layout.h"
@@ -95,11 +97,12 @@ QRectF centred_with_aspect(const QRectF& within, double aspect) {
 
 }  // namespace
 
-AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
+AnimationView::AnimationView(WindowModel* window, QWidget* parent)
     : ViewPage(parent),
-      model_(model),
-      comparison_(std::make_unique<PolicyComparison>(model)),
-      exact_kind_(&exact_renderers().front()),
+      window_(window),
+      model_(window->animation()),
+      comparison_(&window->comparison()),
+      exact_kind_(find_exact_renderer(window->exact_renderer())),
       theme_(view_theme(false)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
@@ -115,7 +118,6 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
     exact_.reset();
     exact_frame_index_ = -1;
     fit_known_ = false;
-    comparison_->reset();
     show_model_state();
     refresh();
   });
@@ -124,12 +126,16 @@ AnimationView::AnimationView(AnimationModel* model, QWidget* parent)
   connect(controls_, &AnimationControls::settings_edited, this,
           [this] { model_->set_settings(controls_->settings()); });
   connect(controls_, &AnimationControls::display_edited, this,
-          [this] { set_display(controls_->display()); });
+          [this] { window_->set_panel_display(controls_->display()); });
   connect(controls_, &AnimationControls::source_edited, this,
           [this] { model_->set_source(controls_->source()); });
-  connect(controls_, &AnimationControls::compared_edited, this,
-          [this] { set_compared_policies(controls_->compared()); });
-  controls_->set_compared(comparison_->policies());
+  connect(controls_, &AnimationControls::compared_edited, this, [this] {
+    std::vector<std::string> names;
+    for (const ReusePolicy* policy : controls_->compared()) names.push_back(policy->name);
+    if (!window_->set_compared(names)) show_panels();
+  });
+  connect(window_, &WindowModel::panels_changed, this, &AnimationView::show_panels);
+  show_panels();
 }
 
 AnimationView::~AnimationView() = default;
@@ -170,9 +176,12 @@ QWidget* AnimationView::make_panels() {
   readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   zoom_box_ = new QDoubleSpinBox(box);
   zoom_box_->setObjectName(QStringLiteral("animation_zoom"));
-  zoom_box_->setRange(kMinZoom, kMaxZoom);
+  // Wider than the zoom's limit, so a typed value out of range is refused by the model with a
+  // message, not cut silently; applied when typing ends.
+  zoom_box_->setRange(0.0, 1000.0);
+  zoom_box_->setKeyboardTracking(false);
   zoom_box_->setSingleStep(0.25);
-  zoom_box_->setValue(1.0);
+  zoom_box_->setValue(window_->zoom());
   zoom_box_->setSuffix(QStringLiteral(" x"));
   zoom_box_->setToolTip(
       tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
@@ -187,12 +196,16 @@ QWidget* AnimationView::make_panels() {
   bottom->addWidget(fit);
   layout->addLayout(bottom);
   connect(canvas_, &ImageCanvas::hovered, this, &AnimationView::show_readout);
-  connect(canvas_, &ImageCanvas::wheel_turned, this,
-          [this](double notches) { set_zoom(zoom_ * std::pow(kWheelZoomStep, notches)); });
+  connect(canvas_, &ImageCanvas::wheel_turned, this, [this](double notches) {
+    // The wheel stops at the ends of the range (a gesture, not a typed value).
+    const double zoom = window_->zoom() * std::pow(kWheelZoomStep, notches);
+    window_->set_zoom(std::clamp(zoom, limits::kZoom.minimum, limits::kZoom.maximum));
+  });
   connect(canvas_, &ImageCanvas::resized, this, &AnimationView::refresh);
-  connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-          [this](double zoom) { set_zoom(zoom); });
-  connect(fit, &QPushButton::clicked, this, [this] { set_zoom(1.0); });
+  connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double z) {
+    if (!window_->set_zoom(z)) show_panels();  // refused: the box shows the model's zoom
+  });
+  connect(fit, &QPushButton::clicked, this, [this] { window_->set_zoom(1.0); });
   return box;
 }
 
@@ -206,41 +219,34 @@ QComboBox* AnimationView::make_exact_box(QWidget* parent) {
       tr("Who draws the exact panel: core's exact warp of the scene (the "
          "engine's own re-render, with its content) or VTK's OpenGL "
          "pipeline, an independent renderer that draws textures only"));
-  connect(exact_box_, QOverload<int>::of(&QComboBox::activated), this,
-          [this](int index) { set_exact_renderer(exact_renderers().at(size_t(index))); });
+  connect(exact_box_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    window_->set_exact_renderer(exact_renderers().at(size_t(index)).name);
+  });
   return exact_box_;
 }
 
-void AnimationView::set_zoom(double zoom) {
-  if (!std::isfinite(zoom)) return;
-  zoom_ = std::clamp(zoom, kMinZoom, kMaxZoom);
-  const QSignalBlocker block(zoom_box_);
-  zoom_box_->setValue(zoom_);
-  refresh();
-}
+PanelDisplay AnimationView::display() const { return window_->panel_display(); }
 
-void AnimationView::set_exact_renderer(const ExactRendererKind& kind) {
-  exact_kind_ = &kind;
-  exact_.reset();
-  exact_frame_index_ = -1;
-  const QSignalBlocker block(exact_box_);
-  exact_box_->setCurrentIndex(int(&kind - exact_renderers().data()));
-  refresh();
-}
-
-void AnimationView::set_compared_policies(const std::vector<const ReusePolicy*>& policies) {
-  comparison_->set_policies(policies);
-  controls_->set_compared(comparison_->policies());
-  refresh();
-}
-
-void AnimationView::set_display(PanelDisplay display) {
-  display_ = display;
+void AnimationView::show_panels() {
+  const ExactRendererKind* kind = find_exact_renderer(window_->exact_renderer());
+  if (kind != exact_kind_) {
+    exact_kind_ = kind;
+    exact_.reset();
+    exact_frame_index_ = -1;
+  }
+  const PanelDisplay display = window_->panel_display();
+  if (display != shown_display_) blink_phase_ = false;
+  shown_display_ = display;
+  {
+    const QSignalBlocker block1(exact_box_), block2(zoom_box_);
+    exact_box_->setCurrentIndex(int(exact_kind_ - exact_renderers().data()));
+    zoom_box_->setValue(window_->zoom());
+  }
   controls_->set_display(display);
+  controls_->set_compared(comparison_->policies());
   inspector_area_->setVisible(display != PanelDisplay::kComparison);
-  blink_phase_ = false;
   if (display == PanelDisplay::kBlink && !external_clock_) {
-    blink_timer_->start();
+    if (!blink_timer_->isActive()) blink_timer_->start();
   } else {
     blink_timer_->stop();
   }
@@ -261,7 +267,8 @@ bool AnimationView::blink_phase_at(int frame, int fps) {
 
 void AnimationView::set_external_clock(bool on) {
   external_clock_ = on;
-  set_display(display_);
+  blink_phase_ = false;
+  show_panels();
 }
 
 void AnimationView::set_theme(const ViewTheme& theme) {
@@ -339,7 +346,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
 }
 
 std::vector<PanelContent> AnimationView::panels() {
-  switch (display_) {
+  switch (window_->panel_display()) {
     case PanelDisplay::kComparison:
       if (!comparison_->runs().empty()) return comparison_panels();
       break;
@@ -409,7 +416,8 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
 
 int AnimationView::wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
                                  double gap) const {
-  const bool heat_row = display_ == PanelDisplay::kComparison && contents.size() > 2;
+  const bool heat_row =
+      window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
   const double cell_width = (canvas_width - 2 * gap - (columns - 1) * gap) / std::max(1, columns);
   QFont font;
@@ -495,7 +503,8 @@ QImage AnimationView::compose(const QSize& size) {
   // The comparison puts the heat maps in a second row, each under its policy, and the
   // legends in the spare cell under the exact panel; the other layouts have one row and
   // the legends in a band below it.
-  const bool heat_row = display_ == PanelDisplay::kComparison && contents.size() > 2;
+  const bool heat_row =
+      window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
   const double band = heat_row ? 0.0 : text_px * 3.9;
   const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap - band);
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
@@ -514,14 +523,15 @@ QImage AnimationView::compose(const QSize& size) {
   const QRectF& first = cells.front().image;
   const Camera& camera = animator->camera();
   shown_frame_ = panel_frame(fit_content(), QSizeF(camera.width, camera.height),
-                             first.width() / first.height(), zoom_);
+                             first.width() / first.height(), window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
   QPainter painter(&canvas);
   for (size_t i = 0; i < contents.size(); ++i)
     paint_panel(painter, contents[i], cells[i], outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
-  paint_band(painter, legends, levels, heat_row || display_ == PanelDisplay::kDifference);
+  paint_band(painter, legends, levels,
+             heat_row || window_->panel_display() == PanelDisplay::kDifference);
   painter.end();  // a QImage copied while a painter is active on it is copied deeply
   return canvas;
 }
@@ -532,7 +542,7 @@ void AnimationView::refresh() {
 }
 
 QImage AnimationView::render_image() {
-  if (model_->animator() && display_ != PanelDisplay::kComparison) {
+  if (model_->animator() && window_->panel_display() != PanelDisplay::kComparison) {
     inspector_->setText(explain_frame(model_->current(), model_->settings()));
   }
   QSize size = canvas_->size();

@@ -44,6 +44,7 @@ class AnimationModel;
 class ExactFrameRenderer;
 class ImageCanvas;
 class PolicyComparison;
+class WindowModel;
 struct ExactRendererKind;
 struct PanelContent;
 
@@ -51,8 +52,9 @@ class AnimationView : public ViewPage {
   Q_OBJECT
 
  public:
-  // The model must outlive the view.
-  explicit AnimationView(AnimationModel* model, QWidget* parent = nullptr);
+  // Shows the window model's animation model and its layout, compared policies, exact
+  // renderer and zoom (edited there); the model must outlive the view.
+  explicit AnimationView(WindowModel* window, QWidget* parent = nullptr);
   ~AnimationView() override;
 
   // The panels as the canvas shows them, painted at the canvas's size.
@@ -62,8 +64,7 @@ class AnimationView : public ViewPage {
   QString scene_panel_note() const override;
 
   AnimationModel* model() const { return model_; }
-  PanelDisplay display() const { return display_; }
-  void set_display(PanelDisplay display);
+  PanelDisplay display() const;  // the window model's panel display
   // Blink shows the engine's frame (phase false) or the exact one (true), each for
   // kBlinkIntervalMs while it plays on its own clock.
   bool blink_phase() const { return blink_phase_; }
@@ -75,19 +76,9 @@ class AnimationView : public ViewPage {
   static bool blink_phase_at(int frame, int fps);
   bool external_clock() const { return external_clock_; }
 
-  // The policies of the comparison layout (1 .. kMaxComparedPolicies of the registry).
-  PolicyComparison& comparison() { return *comparison_; }
-  // Compares these policies (as PolicyComparison::set_policies) and shows them in the
-  // control bar's Policies menu.
-  void set_compared_policies(const std::vector<const ReusePolicy*>& policies);
-
-  // The teacher's zoom on top of zoom-to-fit: 1 fits the plane's whole loop; clamped to
-  // [kMinZoom, kMaxZoom]. The mouse wheel over the panels multiplies it by kWheelZoomStep
-  // per notch.
-  double zoom() const { return zoom_; }
-  void set_zoom(double zoom);
-  static constexpr double kMinZoom = 0.25;
-  static constexpr double kMaxZoom = 8.0;
+  // The teacher's zoom on top of zoom-to-fit (the window model's; limits::kZoom): 1 fits the
+  // plane's whole loop. The mouse wheel over the panels multiplies it by kWheelZoomStep per
+  // notch, stopping at the ends of the range.
   static constexpr double kWheelZoomStep = 1.25;
 
   // What the last render showed: the part of the camera image (camera pixels) every panel
@@ -97,9 +88,8 @@ class AnimationView : public ViewPage {
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
 
   // Who draws the exact panel, the difference heat maps' reference and the readout's exact
-  // pixel (an entry of exact_renderers(); the first, core's, by default). Setting it redraws.
+  // pixel: the entry of exact_renderers() the window model names.
   const ExactRendererKind& exact_renderer() const { return *exact_kind_; }
-  void set_exact_renderer(const ExactRendererKind& kind);
 
   // The animator's frame and the exact frame at the current frame (camera-sized; empty
   // when nothing can be played).
@@ -116,6 +106,9 @@ class AnimationView : public ViewPage {
   QWidget* make_panels();
   QComboBox* make_exact_box(QWidget* parent);  // the Exact picker, wired to set_exact_renderer
   void show_model_state();
+  // The controls show the window model's layout, compared policies, exact renderer and zoom;
+  // the blink timer follows the layout; redraws.
+  void show_panels();
   QImage compose(const QSize& size);
   std::vector<PanelContent> panels();
   std::vector<PanelContent> comparison_panels();
@@ -134,9 +127,10 @@ class AnimationView : public ViewPage {
   QRectF fit_content();
   void show_readout(QPointF pixel);
 
+  WindowModel* window_;
   AnimationModel* model_;
   AnimationControls* controls_;
-  std::unique_ptr<PolicyComparison> comparison_;
+  PolicyComparison* comparison_;  // the window model's
   ImageCanvas* canvas_ = nullptr;
   QLabel* inspector_ = nullptr;
   QScrollArea* inspector_area_ = nullptr;
@@ -148,11 +142,10 @@ class AnimationView : public ViewPage {
   std::unique_ptr<ExactFrameRenderer> exact_;  // of the model's source; null after a change
   Image exact_frame_;
   int exact_frame_index_ = -1;
-  PanelDisplay display_ = PanelDisplay::kSideBySide;
+  PanelDisplay shown_display_ = PanelDisplay::kSideBySide;  // the layout show_panels last showed
   ViewTheme theme_;
   bool blink_phase_ = false;
   bool external_clock_ = false;
-  double zoom_ = 1.0;
   bool fit_known_ = false;  // fit_ is up to date with the model's source
   QRectF fit_;              // the plane's image over its loop (empty: the whole image)
   QRectF shown_frame_;

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "views/paint_helpers.h"
-#include "views/palette.h"
+#include "adapters/paint_helpers.h"
+#include "adapters/palette.h"
 
 namespace oflab {
 namespace {

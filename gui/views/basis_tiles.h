@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "views/basis_catalog.h"
-#include "views/view_theme.h"
+#include "adapters/view_theme.h"
+#include "models/basis_catalog.h"
 
 class QPainter;
 

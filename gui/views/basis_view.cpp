@@ -9,12 +9,13 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "adapters/flow_parts.h"
+#include "adapters/paint_helpers.h"
 #include "models/scene_model.h"
+#include "models/window_model.h"
 #include "scene/view_culling.h"
 #include "views/basis_tiles.h"
-#include "views/flow_parts.h"
 #include "views/image_canvas.h"
-#include "views/paint_helpers.h"
 
 namespace oflab {
 namespace {
@@ -24,7 +25,8 @@ constexpr int kTimerMs = 40;
 
 }  // namespace
 
-BasisView::BasisView(SceneModel* model, QWidget* parent) : ViewPage(parent), model_(model) {
+BasisView::BasisView(WindowModel* window, QWidget* parent)
+    : ViewPage(parent), window_(window), model_(window->scene()) {
   setObjectName(QStringLiteral("basis_view"));
   canvas_ = new ImageCanvas(this);
   canvas_->setObjectName(QStringLiteral("basis_canvas"));
@@ -41,6 +43,8 @@ BasisView::BasisView(SceneModel* model, QWidget* parent) : ViewPage(parent), mod
   layout->addWidget(canvas_, 1);
   layout->addWidget(summary_);
   connect(model_, &SceneModel::scene_changed, this, &BasisView::refresh);
+  connect(window_, &WindowModel::basis_changed, this, &BasisView::show_basis);
+  show_basis();
   connect(canvas_, &ImageCanvas::resized, this, [this] {
     if (isVisible()) paint_canvas();
   });
@@ -79,40 +83,40 @@ QWidget* BasisView::make_option_bar() {
          "tile"));
   play_box_->setToolTip(tr("Animate every tile from undeformed to the chosen amount and back"));
   connect(basis_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-          [this](int) { refresh(); });
+          [this](int k) { window_->set_basis(static_cast<BasisKind>(k)); });
   connect(amount_slider_, &QSlider::valueChanged, this, [this](int) { refresh(); });
-  connect(play_box_, &QCheckBox::toggled, this, &BasisView::set_playing);
+  connect(play_box_, &QCheckBox::toggled, window_, &WindowModel::set_basis_playing);
   return bar;
 }
 
-BasisKind BasisView::basis() const { return static_cast<BasisKind>(basis_box_->currentIndex()); }
-void BasisView::set_basis(BasisKind kind) { basis_box_->setCurrentIndex(static_cast<int>(kind)); }
+BasisKind BasisView::basis() const { return window_->basis(); }
 double BasisView::amount() const { return amount_slider_->value() / 100.0; }
 void BasisView::set_amount(double amount) {
   amount_slider_->setValue(static_cast<int>(std::lround(amount * 100.0)));
 }
-bool BasisView::playing() const { return playing_; }
+bool BasisView::playing() const { return window_->basis_playing(); }
 int BasisView::active_tile_count() const { return tiles_->active_tile_count(); }
 QString BasisView::summary() const { return summary_->text(); }
 
-void BasisView::set_playing(bool playing) {
-  playing_ = playing;
-  const QSignalBlocker block(play_box_);
-  play_box_->setChecked(playing);
+void BasisView::show_basis() {
+  const bool playing = window_->basis_playing();
+  {
+    const QSignalBlocker block1(play_box_), block2(basis_box_);
+    play_box_->setChecked(playing);
+    basis_box_->setCurrentIndex(static_cast<int>(window_->basis()));
+  }
   if (playing && !external_clock_) {
     timer_->start();
   } else {
     timer_->stop();
   }
-  if (!playing) {
-    phase_ = 3.14159265358979323846;  // paused: show the full amount
-    refresh();
-  }
+  if (!playing) phase_ = 3.14159265358979323846;  // paused: show the full amount
+  refresh();
 }
 
 void BasisView::set_external_clock(bool on) {
   external_clock_ = on;
-  set_playing(playing_);
+  show_basis();
 }
 
 // Between kLowestShare and all of the amount, never zero: a tile passing through zero

@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "views/basis_catalog.h"
+#include "models/basis_catalog.h"
 #include "views/view_page.h"
 
 class QCheckBox;
@@ -19,13 +19,15 @@ namespace oflab {
 class BasisTiles;
 class ImageCanvas;
 class SceneModel;
+class WindowModel;
 
 class BasisView : public ViewPage {
   Q_OBJECT
 
  public:
-  // The model must outlive the view.
-  BasisView(SceneModel* model, QWidget* parent = nullptr);
+  // Shows and edits the window model's basis and its playing; the model must outlive the
+  // view.
+  BasisView(WindowModel* window, QWidget* parent = nullptr);
   ~BasisView() override;
 
   QImage render_image() override;
@@ -34,13 +36,11 @@ class BasisView : public ViewPage {
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
 
-  BasisKind basis() const;
-  void set_basis(BasisKind kind);
+  BasisKind basis() const;  // the window model's
   // Maximum amount of deformation, 0..1 (the slider).
   double amount() const;
   void set_amount(double amount);
-  bool playing() const;
-  void set_playing(bool playing);
+  bool playing() const;  // the window model's basis_playing
   // Tiles with a non-zero coefficient after the last update.
   int active_tile_count() const;
   // The line under the tiles; it starts by saying so when the plane is outside the image.
@@ -62,7 +62,10 @@ class BasisView : public ViewPage {
   QWidget* make_option_bar();
   void update_tiles();
   void paint_canvas();
+  // The controls show the model's basis and playing; the timer follows; redraws.
+  void show_basis();
 
+  WindowModel* window_;
   SceneModel* model_;
   ImageCanvas* canvas_;
   std::unique_ptr<BasisTiles> tiles_;
@@ -73,7 +76,6 @@ class BasisView : public ViewPage {
   QTimer* timer_;
   double phase_ = 3.14159265358979323846;  // 0.5 (1 - cos(phase)) = 1: full amount when paused
   bool dirty_ = true;
-  bool playing_ = false;
   bool external_clock_ = false;
 };
 

@@ -7,7 +7,7 @@
 
 #include <QWidget>
 
-#include "views/basis_catalog.h"
+#include "models/basis_catalog.h"
 
 class QComboBox;
 class QTableWidget;

@@ -8,14 +8,16 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "adapters/paint_helpers.h"
 #include "models/scene_model.h"
+#include "models/window_model.h"
 #include "views/coefficient_table.h"
 #include "views/image_canvas.h"
-#include "views/paint_helpers.h"
 
 namespace oflab {
 
-FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model_(model) {
+FlowView::FlowView(WindowModel* window, QWidget* parent)
+    : ViewPage(parent), window_(window), model_(window->scene()) {
   setObjectName(QStringLiteral("flow_view"));
   canvas_ = new ImageCanvas(this);
   canvas_->setObjectName(QStringLiteral("flow_canvas"));
@@ -51,6 +53,7 @@ FlowView::FlowView(SceneModel* model, QWidget* parent) : ViewPage(parent), model
   layout->addWidget(splitter, 1);
 
   connect(model_, &SceneModel::scene_changed, this, &FlowView::refresh);
+  connect(window_, &WindowModel::flow_display_changed, this, &FlowView::show_display);
   connect(model_, &SceneModel::texture_changed, this, [this] {
     renderer_->set_texture(model_->texture());
     refresh();
@@ -76,62 +79,41 @@ QWidget* FlowView::make_option_bar() {
       tr("Which part of the flow to draw: the exact flow, one order of its "
          "Taylor expansion, or a residual against an approximation"));
   grid->addWidget(part_box_, 1, 0, 1, 2);
-  arrows_box_ = new QCheckBox(tr("Arrows"), bar);
-  streamlines_box_ = new QCheckBox(tr("Streamlines"), bar);
-  wheel_box_ = new QCheckBox(tr("Colour wheel"), bar);
-  texture_box_ = new QCheckBox(tr("Texture"), bar);
-  zoom_box_ = new QCheckBox(tr("Zoom to plane"), bar);
-  common_scale_box_ = new QCheckBox(tr("Common scale"), bar);
-  common_scale_box_->setToolTip(
-      tr("Draw every part at the full flow's arrow scale, so parts compare by length"));
-  zoom_box_->setToolTip(tr("Fit the view to the plane's image instead of the whole image"));
-  arrows_box_->setToolTip(
-      tr("Arrows of the chosen part of the flow, length in pixels per second "
-         "times the arrow scale; colour is the magnitude, px/s"));
-  streamlines_box_->setToolTip(tr("Paths a point would follow in the instantaneous field"));
-  wheel_box_->setToolTip(
-      tr("Colour the plane by the flow: hue is the direction, saturation "
-         "the magnitude"));
-  texture_box_->setToolTip(tr("Show the plane's texture under the flow"));
-  const FlowDisplay defaults;
-  arrows_box_->setChecked(defaults.arrows);
-  texture_box_->setChecked(defaults.texture);
-  zoom_box_->setChecked(defaults.zoom_to_plane);
-  common_scale_box_->setChecked(defaults.common_scale);
   int cell = 0;
-  for (QCheckBox* box :
-       {arrows_box_, streamlines_box_, wheel_box_, texture_box_, zoom_box_, common_scale_box_}) {
+  for (const FlowDrawOption& option : flow_draw_options()) {
+    auto* box = new QCheckBox(tr(option.label), bar);
+    box->setObjectName(QStringLiteral("flow_draw_%1").arg(option.key));
+    box->setToolTip(tr(option.tooltip));
     grid->addWidget(box, 2 + cell / 2, cell % 2);
     ++cell;
-    connect(box, &QCheckBox::toggled, this, &FlowView::refresh);
+    draw_boxes_.push_back(box);
+    connect(box, &QCheckBox::toggled, this, [this, member = option.member](bool on) {
+      FlowDisplay d = window_->flow_display();
+      d.*member = on;
+      window_->set_flow_display(d);
+    });
   }
-  connect(part_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-          [this](int) { refresh(); });
+  connect(part_box_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int k) {
+    FlowDisplay d = window_->flow_display();
+    d.part = static_cast<FlowPart>(k);
+    window_->set_flow_display(d);
+  });
+  show_display();
   return bar;
 }
 
-FlowDisplay FlowView::display() const {
-  FlowDisplay d;
-  d.part = static_cast<FlowPart>(part_box_->currentIndex());
-  d.arrows = arrows_box_->isChecked();
-  d.streamlines = streamlines_box_->isChecked();
-  d.colour_wheel = wheel_box_->isChecked();
-  d.texture = texture_box_->isChecked();
-  d.zoom_to_plane = zoom_box_->isChecked();
-  d.common_scale = common_scale_box_->isChecked();
-  return d;
-}
+FlowDisplay FlowView::display() const { return window_->flow_display(); }
 
-void FlowView::set_display(const FlowDisplay& d) {
-  const QSignalBlocker b1(part_box_), b2(arrows_box_), b3(streamlines_box_), b4(wheel_box_),
-      b5(texture_box_), b6(zoom_box_), b7(common_scale_box_);
-  part_box_->setCurrentIndex(static_cast<int>(d.part));
-  arrows_box_->setChecked(d.arrows);
-  streamlines_box_->setChecked(d.streamlines);
-  wheel_box_->setChecked(d.colour_wheel);
-  texture_box_->setChecked(d.texture);
-  zoom_box_->setChecked(d.zoom_to_plane);
-  common_scale_box_->setChecked(d.common_scale);
+void FlowView::show_display() {
+  const FlowDisplay& d = window_->flow_display();
+  {
+    const QSignalBlocker block(part_box_);
+    part_box_->setCurrentIndex(static_cast<int>(d.part));
+  }
+  for (size_t k = 0; k < draw_boxes_.size(); ++k) {
+    const QSignalBlocker block(draw_boxes_[k]);
+    draw_boxes_[k]->setChecked(d.*flow_draw_options()[k].member);
+  }
   refresh();
 }
 

@@ -4,8 +4,9 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
-#include "adapters/flow_renderer.h"
+#include "views/flow_renderer.h"
 #include "views/view_page.h"
 
 class QCheckBox;
@@ -17,21 +18,22 @@ namespace oflab {
 class CoefficientTable;
 class ImageCanvas;
 class SceneModel;
+class WindowModel;
 
 class FlowView : public ViewPage {
   Q_OBJECT
 
  public:
-  // The model must outlive the view.
-  FlowView(SceneModel* model, QWidget* parent = nullptr);
+  // Shows and edits the window model's flow display; the model must outlive the view.
+  FlowView(WindowModel* window, QWidget* parent = nullptr);
   ~FlowView() override;
 
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
 
+  // What the view shows: the window model's flow display (edited there).
   FlowDisplay display() const;
-  void set_display(const FlowDisplay& display);
   CoefficientTable* coefficient_table() const { return table_; }
   // The widget that shows the painted flow picture.
   ImageCanvas* canvas() const { return canvas_; }
@@ -53,19 +55,16 @@ class FlowView : public ViewPage {
   QWidget* make_option_bar();
   void update_scene();
   void paint_canvas();
+  void show_display();  // the controls show the model's flow display; redraws
 
+  WindowModel* window_;
   SceneModel* model_;
   ImageCanvas* canvas_;
   std::unique_ptr<FlowRenderer> renderer_;
   CoefficientTable* table_;
   QLabel* outside_note_ = nullptr;
   QComboBox* part_box_ = nullptr;
-  QCheckBox* arrows_box_ = nullptr;
-  QCheckBox* streamlines_box_ = nullptr;
-  QCheckBox* wheel_box_ = nullptr;
-  QCheckBox* texture_box_ = nullptr;
-  QCheckBox* zoom_box_ = nullptr;
-  QCheckBox* common_scale_box_ = nullptr;
+  std::vector<QCheckBox*> draw_boxes_;  // one per flow_draw_options() entry, in order
   bool dirty_ = true;
 };
 

@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include "engine/limits.h"
 #include "models/scene_model.h"
 #include "models/scene_parameters.h"
 #include "views/slider_spin.h"
@@ -49,8 +50,15 @@ SliderSpin* SceneControls::add_control(QWidget* group, const QString& name, cons
   widget->set_description(what);
   group->layout()->addWidget(widget);
   bindings_.push_back({widget, get, set});
-  connect(widget, &SliderSpin::edited, this,
-          [this, set](double v) { propose([&](PlaneScene& s) { set(s, v); }); });
+  const Limit* limit = range.limit;
+  connect(widget, &SliderSpin::edited, this, [this, set, label, limit](double v) {
+    if (limit && !limit->allows(v)) {  // a value only this control has: its limit is here
+      emit refused(tr("%1: %2").arg(label, QString::fromStdString(limit->problem(v))));
+      sync_from_model();
+      return;
+    }
+    propose([&](PlaneScene& s) { set(s, v); });
+  });
   return widget;
 }
 
@@ -94,7 +102,7 @@ QWidget* SceneControls::make_plane_group() {
   add_control(
       group, QStringLiteral("turn"), tr("Turn"),
       tr("Turn of the plane's normal about the vertical axis at frame 0 (0 faces the eye)"),
-      {-180.0, 180.0, 0.5, 1, tr(" deg")},
+      {-180.0, 180.0, 0.5, 1, tr(" deg"), &limits::kTurn},
       [](const PlaneScene& s) { return orientation_of(s.pose.normal).turn_deg; },
       [](PlaneScene& s, double v) {
         PlaneOrientation o = orientation_of(s.pose.normal);
@@ -104,7 +112,7 @@ QWidget* SceneControls::make_plane_group() {
   add_control(
       group, QStringLiteral("tilt"), tr("Tilt"),
       tr("Tilt of the plane's normal up or down at frame 0 (0 faces the eye)"),
-      {-90.0, 90.0, 0.5, 1, tr(" deg")},
+      {-90.0, 90.0, 0.5, 1, tr(" deg"), &limits::kTilt},
       [](const PlaneScene& s) { return orientation_of(s.pose.normal).tilt_deg; },
       [](PlaneScene& s, double v) {
         PlaneOrientation o = orientation_of(s.pose.normal);
@@ -114,7 +122,7 @@ QWidget* SceneControls::make_plane_group() {
   add_control(
       group, QStringLiteral("distance"), tr("Distance"),
       tr("Depth Z of the plane's centre in front of the eye at frame 0"),
-      {-5.0, 30.0, 0.05, 2, tr(" u")}, [](const PlaneScene& s) { return s.pose.point.z; },
+      {0.05, 30.0, 0.05, 2, tr(" u")}, [](const PlaneScene& s) { return s.pose.point.z; },
       [](PlaneScene& s, double v) { s.pose = with_centre_depth(s.pose, v); });
   return group;
 }
@@ -124,7 +132,7 @@ QWidget* SceneControls::make_camera_group() {
   new QVBoxLayout(group);
   add_control(
       group, QStringLiteral("focal"), tr("Focal"),
-      tr("Focal length of the camera: larger zooms in"), {0.0, 3000.0, 10.0, 0, tr(" px")},
+      tr("Focal length of the camera: larger zooms in"), {10.0, 3000.0, 10.0, 0, tr(" px")},
       [](const PlaneScene& s) { return s.camera.focal_px; },
       [](PlaneScene& s, double v) { s.camera.focal_px = v; });
   return group;

@@ -17,6 +17,7 @@ class QLabel;
 namespace oflab {
 
 class SceneModel;
+struct Limit;
 class SliderSpin;
 
 class SceneControls : public QWidget {
@@ -38,6 +39,11 @@ class SceneControls : public QWidget {
   void set_note(const QString& note);
   QString note() const;
 
+ signals:
+  // A typed value was refused (one line naming the control, the value and its range); the
+  // controls show the scene's values again.
+  void refused(const QString& message);
+
  private:
   struct Binding {
     SliderSpin* widget;
@@ -47,11 +53,15 @@ class SceneControls : public QWidget {
   QWidget* make_motion_group();
   QWidget* make_plane_group();
   QWidget* make_camera_group();
-  // A control's values: from minimum to maximum in steps, shown with decimals and unit.
+  // A control's slider span: from minimum to maximum in steps, shown with decimals and
+  // unit. Its field takes any number: the scene model checks the plane's values against
+  // their limits (core/engine/limits.h); a value the scene does not hold (turn, tilt) is
+  // checked against `limit` here.
   struct Range {
     double minimum, maximum, step;
     int decimals;
     QString suffix;
+    const Limit* limit = nullptr;
   };
   // `what` is the control's tooltip: what it means (its unit is added).
   SliderSpin* add_control(QWidget* group, const QString& name, const QString& label,

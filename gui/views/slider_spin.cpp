@@ -6,6 +6,8 @@
 #include <QSlider>
 #include <cmath>
 
+#include "views/number_box.h"
+
 namespace oflab {
 
 SliderSpin::SliderSpin(const QString& label, double minimum, double maximum, double step,
@@ -18,12 +20,11 @@ SliderSpin::SliderSpin(const QString& label, double minimum, double maximum, dou
   slider_ = new QSlider(Qt::Horizontal, this);
   slider_->setRange(0, slider_position(maximum));
   slider_->setMinimumWidth(110);
-  spin_ = new QDoubleSpinBox(this);
-  spin_->setRange(minimum, maximum);
+  // Any number can be typed: the model refuses one outside its limit with a message.
+  spin_ = new NumberBox(minimum, maximum, this);
   spin_->setSingleStep(step);
   spin_->setDecimals(decimals);
   spin_->setSuffix(suffix);
-  spin_->setKeyboardTracking(false);  // act on Enter or focus change, not every keystroke
   spin_->setMinimumWidth(105);
   row->addWidget(name);
   row->addWidget(slider_, 1);
@@ -36,7 +37,7 @@ SliderSpin::SliderSpin(const QString& label, double minimum, double maximum, dou
   });
   connect(spin_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
     const QSignalBlocker block(slider_);
-    slider_->setValue(slider_position(v));
+    slider_->setValue(slider_position(v));  // a value beyond the slider's span pegs it at an end
     emit edited(v);
   });
 }

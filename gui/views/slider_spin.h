@@ -14,8 +14,10 @@ class SliderSpin : public QWidget {
   Q_OBJECT
 
  public:
-  // Values from `minimum` to `maximum` in steps of `step`, shown with `decimals` decimals
-  // and the unit `suffix` (e.g. " rad/s").
+  // The slider spans `minimum` to `maximum` in steps of `step`; the field shows the value
+  // with `decimals` decimals and the unit `suffix` (e.g. " rad/s") and takes any number typed
+  // (views/number_box.h): the model checks it against its limit, and a value beyond the
+  // slider's span is shown in the field with the slider at its end.
   SliderSpin(const QString& label, double minimum, double maximum, double step, int decimals,
              const QString& suffix, QWidget* parent = nullptr);
 

@@ -7,7 +7,7 @@
 #include <QString>
 #include <QWidget>
 
-#include "views/view_theme.h"
+#include "adapters/view_theme.h"
 
 namespace oflab {
 

@@ -8,9 +8,19 @@
 
 #include "app/main_window.h"
 #include "models/animation_model.h"
+#include "models/window_model.h"
 #include "views/animation_view.h"
 
 namespace oflab::test {
+
+// The window's view named `name` as a V, for what it paints (tests read and set the window's
+// state through window.model(), never through a view); fails the test when there is none.
+template <class V>
+V* view_page(MainWindow& window, const char* name) {
+  auto* view = qobject_cast<V*>(window.view(QString::fromLatin1(name)));
+  EXPECT_NE(view, nullptr) << name;
+  return view;
+}
 
 class WindowTest : public ::testing::Test {
  protected:
@@ -32,8 +42,8 @@ class WindowTest : public ::testing::Test {
 // The window, with the animation view and its model at hand.
 class AnimationWindowTest : public WindowTest {
  protected:
-  AnimationView& animation() { return *window().animation_view(); }
-  AnimationModel& model() { return *window().animation_model(); }
+  AnimationView& animation() { return *view_page<AnimationView>(window(), "animation"); }
+  AnimationModel& model() { return *window().model()->animation(); }
 };
 
 }  // namespace oflab::test

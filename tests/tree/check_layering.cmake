@@ -71,6 +71,37 @@ function(resolve_layer include dir rank extra out)
   set(${out} "-" PARENT_SCOPE)
 endfunction()
 
+# Inside gui/, the folders in dependency order, lowest first: a file may include headers of
+# its own folder and those before it. adapters (core data as Qt/VTK images, palettes, the flow
+# renderer) < models (the window's state and its models) < views (widgets showing the models)
+# < app (the window, the command line, the exports).
+set(gui_folders adapters models views app)
+
+# Appends a violation when `include` (from `file` in gui/`sub`) names a header of a gui folder
+# later than `sub`, or when a view's file (gui/views/*_view.*) includes another view's header.
+function(check_gui_include file line include sub)
+  if(NOT include MATCHES "^([a-z_]+)/")
+    return()
+  endif()
+  set(target "${CMAKE_MATCH_1}")
+  list(FIND gui_folders "${sub}" own)
+  list(FIND gui_folders "${target}" other)
+  if(own GREATER_EQUAL 0 AND other GREATER own)
+    add_violation("${file}" ${line} "\"${include}\""
+      "gui/${sub} must not include gui/${target} (inside gui, dependencies point "
+      "app -> views -> models -> adapters)")
+  endif()
+  get_filename_component(name "${file}" NAME_WE)
+  get_filename_component(included "${include}" NAME_WE)
+  if(sub STREQUAL "views" AND target STREQUAL "views" AND name MATCHES "_view$"
+     AND included MATCHES "_view$" AND NOT name STREQUAL included)
+    add_violation("${file}" ${line} "\"${include}\""
+      "a view must not include another view's header (views read the window model, never "
+      "each other)")
+  endif()
+  set(violations "${violations}" PARENT_SCOPE)
+endfunction()
+
 # Checks the files under `folder` (relative to ROOT), built with layer index `rank` and the
 # extra include root `extra`; appends to `violations` and `file_count` in the caller's scope.
 function(check_folder folder rank extra)
@@ -112,6 +143,8 @@ function(check_folder folder rank extra)
           add_violation("${file}" ${line} "\"${include}\""
             "resolves to ${found}/${include}, and ${who} must not include ${found} "
             "(dependencies point gui -> analysis -> core)")
+        elseif(file MATCHES "^gui/([a-z_]+)/")
+          check_gui_include("${file}" ${line} "${include}" "${CMAKE_MATCH_1}")
         endif()
       elseif(directive MATCHES "^#[ \t]*include[ \t]*<((Q|vtk)[^>]*)>")
         set(include "${CMAKE_MATCH_1}")

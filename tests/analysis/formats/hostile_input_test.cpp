@@ -17,7 +17,6 @@
 #include "formats/obj_scene.h"
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
-#include "formats/session_file.h"
 #include "formats/viewer_script_file.h"
 #include "scratch_dir.h"
 
@@ -61,8 +60,7 @@ TEST(HostileInput, NumberTooLargeForADoubleIsNotValidJsonInEveryFormat) {
   const std::string big = R"({"name": "x", "camera": {"focal_px": 1e400}})";
   for (const std::string& e : {error_of([&] { parse_script(big, "m.json"); }),
                                error_of([&] { parse_scene(big, "s.json", "."); }),
-                               error_of([&] { parse_viewer_script(big, "v.json"); }),
-                               error_of([&] { parse_session(big, "g.json"); })}) {
+                               error_of([&] { parse_viewer_script(big, "v.json"); })}) {
     EXPECT_NE(e.find(".json: not valid JSON ("), std::string::npos) << e;
     EXPECT_NE(e.find("number overflow"), std::string::npos) << e;
   }
@@ -173,15 +171,7 @@ TEST(HostileInput, ImagesAreCheckedBySignatureAndHeaderBeforeDecoding) {
 
 // Finding 9 and 11: sizes and vectors beyond the limits give messages, not undefined casts.
 TEST(HostileInput, HugeSizesAndVectorsAreRefusedWithTheLimit) {
-  Session s;
-  s.plane = default_demo_scene();
-  s.settings.policy = &default_reuse_policy();
-  for (const double width : {1e300, 1e6, 0.5}) {
-    json j = json::parse(session_to_json(s));
-    j["plane"]["camera"]["width"] = width;
-    const std::string e = error_of([&] { parse_session(j.dump(), "s.json"); });
-    EXPECT_EQ(e.find("s.json: plane.camera: field 'width': must be "), 0u) << e;
-  }
+  // Session files: tests/gui/models/window_state_file_test.cpp.
   const std::vector<std::string> flow = {
       "flow", "--focal", "500", "--plane-point", "0", "0", "2", "--velocity",
       "0",    "0",       "0",   "--omega",       "0", "0", "0"};

@@ -60,7 +60,7 @@ bool shows_text(QWidget* w) {
 
 void show_at_projector_size(MainWindow& window) {
   window.resize(1920, 1080);
-  window.set_presentation(true);
+  window.model()->set_presentation(true);
   QApplication::processEvents();
 }
 
@@ -81,12 +81,13 @@ TEST_F(ClassroomTest, PresentationTextIsAtLeastEighteenPixelsOnEveryView) {
           << w->objectName().toStdString();
     }
   }
-  window().set_presentation(false);  // the application's fonts are global: leave them normal
+  window().model()->set_presentation(
+      false);  // the application's fonts are global: leave them normal
 }
 
 TEST_F(ClassroomTest, NormalLookKeepsItsSmallerText) {
   // The scale is the theme's: the normal look is not presentation-sized.
-  EXPECT_LT(window().flow_view()->smallest_text_px(), kPresentationMinTextPx);
+  EXPECT_LT(view_page<FlowView>(window(), "flow")->smallest_text_px(), kPresentationMinTextPx);
   EXPECT_LT(window().view("analysis")->smallest_text_px(), kPresentationMinTextPx);
 }
 
@@ -95,10 +96,10 @@ TEST_F(ClassroomTest, CoefficientTableElidesNothingAtProjectorSize) {
   window().show_view("flow");
   // Frames where the planar terms take long values (negative, many digits).
   for (int frame : {0, 7, 20}) {
-    window().model()->set_frame(frame);
+    window().model()->scene()->set_frame(frame);
     QApplication::processEvents();
-    auto* table =
-        window().flow_view()->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
+    auto* table = view_page<FlowView>(window(), "flow")
+                      ->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
     ASSERT_NE(table, nullptr);
     const QFontMetrics fm(table->font());
     int columns = 0;
@@ -113,7 +114,7 @@ TEST_F(ClassroomTest, CoefficientTableElidesNothingAtProjectorSize) {
       }
     }
   }
-  window().set_presentation(false);
+  window().model()->set_presentation(false);
 }
 
 TEST_F(ClassroomTest, EveryVisibleControlHasATooltip) {
@@ -129,7 +130,8 @@ TEST_F(ClassroomTest, EveryVisibleControlHasATooltip) {
 }
 
 TEST_F(ClassroomTest, EveryCoefficientSaysWhatItIsAndItsUnit) {
-  auto* table = window().flow_view()->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
+  auto* table = view_page<FlowView>(window(), "flow")
+                    ->findChild<QTableWidget*>(QStringLiteral("coefficient_table"));
   ASSERT_NE(table, nullptr);
   for (int row = 0; row < table->rowCount(); ++row) {
     const QString tip = table->item(row, 1)->toolTip();
@@ -150,27 +152,28 @@ TEST_F(ClassroomTest, ControlNumberKeysShowTheViewsInTableOrder) {
 TEST_F(ClassroomTest, PlayKeysWorkWhateverHasFocus) {
   QApplication::setActiveWindow(&window());
   SliderSpin* turn = window().scene_controls()->control(QStringLiteral("turn"));
-  auto* part = window().flow_view()->findChild<QComboBox*>(QStringLiteral("flow_part"));
+  auto* part =
+      view_page<FlowView>(window(), "flow")->findChild<QComboBox*>(QStringLiteral("flow_part"));
   for (QWidget* focus : {static_cast<QWidget*>(turn->slider()), static_cast<QWidget*>(part),
                          static_cast<QWidget*>(turn->spin_box())}) {
     focus->setFocus();
     QApplication::processEvents();
     const double turn_before = turn->value();
     const int part_before = part->currentIndex();
-    window().model()->set_frame(5);
+    window().model()->scene()->set_frame(5);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Right);
-    EXPECT_EQ(window().model()->frame(), 6) << focus->metaObject()->className();
+    EXPECT_EQ(window().model()->scene()->frame(), 6) << focus->metaObject()->className();
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Left);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Left);
-    EXPECT_EQ(window().model()->frame(), 4);
+    EXPECT_EQ(window().model()->scene()->frame(), 4);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_End);
-    EXPECT_EQ(window().model()->frame(), window().model()->loop_frames() - 1);
+    EXPECT_EQ(window().model()->scene()->frame(), window().model()->scene()->loop_frames() - 1);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Home);
-    EXPECT_EQ(window().model()->frame(), 0);
+    EXPECT_EQ(window().model()->scene()->frame(), 0);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
-    EXPECT_TRUE(window().motion_playing());
+    EXPECT_TRUE(window().model()->playing());
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
-    EXPECT_FALSE(window().motion_playing());
+    EXPECT_FALSE(window().model()->playing());
     EXPECT_EQ(turn->value(), turn_before) << "the keys went to the control";
     EXPECT_EQ(part->currentIndex(), part_before);
   }
@@ -191,36 +194,36 @@ TEST_F(ClassroomTest, EnterAppliesTheValueAndSpaceThenPlays) {
   QApplication::setActiveWindow(&window());
   SliderSpin* vx = window().scene_controls()->control(QStringLiteral("velocity_x"));
   type_and_enter(vx->spin_box(), QStringLiteral("0.5"));
-  EXPECT_DOUBLE_EQ(window().model()->scene().motion.velocity.x, 0.5);
+  EXPECT_DOUBLE_EQ(window().model()->scene()->scene().motion.velocity.x, 0.5);
   QWidget* focus = QApplication::focusWidget();
   ASSERT_NE(focus, nullptr);
   EXPECT_TRUE(focus == window().current_view() || window().current_view()->isAncestorOf(focus))
       << focus->metaObject()->className();
   QTest::keyClick(focus, Qt::Key_Space);
-  EXPECT_TRUE(window().motion_playing());
+  EXPECT_TRUE(window().model()->playing());
   EXPECT_DOUBLE_EQ(vx->value(), 0.5);
   EXPECT_TRUE(vx->spin_box()->text().startsWith(QStringLiteral("0.50")))
       << vx->spin_box()->text().toStdString();
-  window().set_motion_playing(false);
+  window().model()->set_playing(false);
 }
 
 TEST_F(ClassroomTest, ValuesTypedWhilePlayingApply) {
   QApplication::setActiveWindow(&window());
-  window().set_motion_playing(true);
+  window().model()->set_playing(true);
   SliderSpin* vy = window().scene_controls()->control(QStringLiteral("velocity_y"));
   QDoubleSpinBox* field = vy->spin_box();
   field->setFocus();
   field->findChild<QLineEdit*>()->selectAll();
   QTest::keyClicks(QApplication::focusWidget(), QStringLiteral("0.7"));
   // Frames go by while the user types: the typed text must survive them.
-  for (int i = 0; i < 5; ++i) window().model()->advance(1);
+  for (int i = 0; i < 5; ++i) window().model()->scene()->advance(1);
   QApplication::processEvents();
   EXPECT_TRUE(field->text().startsWith(QStringLiteral("0.7"))) << field->text().toStdString();
   QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
   QApplication::processEvents();
-  EXPECT_DOUBLE_EQ(window().model()->scene().motion.velocity.y, 0.7);
-  EXPECT_TRUE(window().motion_playing());
-  window().set_motion_playing(false);
+  EXPECT_DOUBLE_EQ(window().model()->scene()->scene().motion.velocity.y, 0.7);
+  EXPECT_TRUE(window().model()->playing());
+  window().model()->set_playing(false);
 }
 
 // With a multi-plane scene playing, the scene panel's single-plane controls do nothing for
@@ -233,7 +236,7 @@ TEST_F(ClassroomTest, ScenePanelControlsAreDisabledWhereTheyDoNotApply) {
   window().show_view("animation");
   EXPECT_TRUE(panel->control("turn")->isEnabled());  // the demo plays the panel's plane
   EXPECT_FALSE(note->isVisibleTo(panel));
-  ASSERT_TRUE(window().animation_model()->set_source({"scene", "four-cubes", "circle"}));
+  ASSERT_TRUE(window().model()->animation()->set_source({"scene", "four-cubes", "circle"}));
   for (const char* view : {"animation", "analysis", "slices"}) {
     window().show_view(view);
     EXPECT_FALSE(panel->control("turn")->isEnabled()) << view;
@@ -249,7 +252,7 @@ TEST_F(ClassroomTest, ScenePanelControlsAreDisabledWhereTheyDoNotApply) {
     EXPECT_FALSE(note->isVisibleTo(panel)) << view;
   }
   window().show_view("animation");
-  ASSERT_TRUE(window().animation_model()->set_source({"plane", "", ""}));
+  ASSERT_TRUE(window().model()->animation()->set_source({"plane", "", ""}));
   EXPECT_TRUE(panel->control("turn")->isEnabled());
 }
 

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "app/exports.h"
 #include "app/screenshot.h"
-#include "app/session_io.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
@@ -36,8 +36,8 @@ void play_short_script(MainWindow& window, const QTemporaryDir& dir, int frames 
     "segments": [{"frames": )" << frames
                                     << R"(, "velocity": [0, 0, 0], "omega": [0, 0, 0.05]}]})";
   ASSERT_TRUE(window.load_script(path)) << window.message().toStdString();
-  ASSERT_NE(window.animation_model()->animator(), nullptr);
-  ASSERT_EQ(window.animation_model()->animator()->frame_count(), frames);
+  ASSERT_NE(window.model()->animation()->animator(), nullptr);
+  ASSERT_EQ(window.model()->animation()->animator()->frame_count(), frames);
 }
 
 std::string read_all(const QString& path) {
@@ -50,11 +50,11 @@ std::string read_all(const QString& path) {
 TEST_F(ExportTest, PngFramesAreOnePerFrameDifferAndAreNotOverwritten) {
   QTemporaryDir dir;
   play_short_script(window(), dir);
-  window().model()->set_frame(3);
+  window().model()->scene()->set_frame(3);
   const QString out = dir.filePath("frames");
   QString error;
   ASSERT_TRUE(export_frames_png(&window(), out, false, &error)) << error.toStdString();
-  EXPECT_EQ(window().model()->frame(), 3);  // restored
+  EXPECT_EQ(window().model()->scene()->frame(), 3);  // restored
   const QStringList files = QDir(out).entryList({"frame-*.png"}, QDir::Files, QDir::Name);
   ASSERT_EQ(files.size(), kFrames);
   EXPECT_EQ(files.front(), "frame-0000.png");
@@ -63,7 +63,7 @@ TEST_F(ExportTest, PngFramesAreOnePerFrameDifferAndAreNotOverwritten) {
   ASSERT_FALSE(first.isNull());
   EXPECT_GT(first.width(), 100);
   // The whole view as on screen (every panel), not one re-rendered panel.
-  EXPECT_EQ(first.size(), window().animation_view()->size());
+  EXPECT_EQ(first.size(), view_page<AnimationView>(window(), "animation")->size());
   EXPECT_EQ(first.size(), last.size());
   EXPECT_NE(first, last);  // the plane turned
 
@@ -83,8 +83,8 @@ TEST_F(ExportTest, BlinkExportAlternatesEngineAndExactAsOnScreen) {
   QTemporaryDir dir;
   constexpr int kLong = 32;
   play_short_script(window(), dir, kLong);
-  AnimationView* view = window().animation_view();
-  view->set_display(PanelDisplay::kBlink);
+  AnimationView* view = view_page<AnimationView>(window(), "animation");
+  window().model()->set_panel_display(PanelDisplay::kBlink);
   const QString out = dir.filePath("blink");
   QString error;
   ASSERT_TRUE(export_frames_png(&window(), out, false, &error)) << error.toStdString();
@@ -97,7 +97,7 @@ TEST_F(ExportTest, BlinkExportAlternatesEngineAndExactAsOnScreen) {
   for (int k : {0, 14, 15, 29, 30}) {
     const bool exact = k >= 15 && k < 30;
     EXPECT_EQ(AnimationView::blink_phase_at(k, kExportFps), exact) << k;
-    window().model()->set_frame(k);
+    window().model()->scene()->set_frame(k);
     view->set_blink_phase(exact);
     view->render_image();
     ASSERT_EQ(view->panel_rects().size(), 1u);
@@ -187,8 +187,9 @@ TEST_F(ExportTest, SceneAndSceneShiftingCsvsHaveTheSceneHeaderAndOneRowPerFrame)
   const SourceChoice sources[] = {{"scene", "two", "translate"},
                                   {"scene-shifting", "train-window", "train-sideways"}};
   for (const SourceChoice& source : sources) {
-    ASSERT_TRUE(window().animation_model()->set_source(source)) << window().message().toStdString();
-    const int frames = window().animation_model()->animator()->frame_count();
+    ASSERT_TRUE(window().model()->animation()->set_source(source))
+        << window().message().toStdString();
+    const int frames = window().model()->animation()->animator()->frame_count();
     const QString path = dir.filePath(QString::fromStdString(source.kind + ".csv"));
     QString error;
     ASSERT_TRUE(export_frame_csv(&window(), path, false, &error)) << error.toStdString();

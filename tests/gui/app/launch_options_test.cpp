@@ -69,12 +69,11 @@ TEST(LaunchOptions, UnknownScenesAndModesAreRejectedSayingWhatIsKnown) {
 TEST(LaunchOptions, ShippedSceneModeAndViewerScriptAreAccepted) {
   const LaunchOptions o = parse_launch_options(
       {"--scene", "cube", "--script", "rotate", "--mode", "affine", "--view", "animation"});
-  EXPECT_EQ(o.scene, "cube");
-  EXPECT_EQ(o.viewer_script, "rotate");
-  EXPECT_FALSE(o.script.has_value());
-  ASSERT_NE(o.mode, nullptr);
-  EXPECT_STREQ(o.mode->name, "affine");
-  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).viewer_script, "circle");
+  EXPECT_TRUE(o.state.source == (SourceChoice{"scene", "cube", "rotate"}));
+  EXPECT_TRUE(o.state.script.empty());
+  EXPECT_STREQ(o.state.settings.policy->name, "affine");
+  EXPECT_EQ(o.state.view, "animation");
+  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).state.source.viewer, "circle");
   EXPECT_EQ(parse_launch_options({"--view", "analysis"}).view, "analysis");
 }
 
@@ -95,9 +94,9 @@ TEST(LaunchOptions, ViewNamesComeFromTheViewTable) {
 TEST(LaunchOptions, SceneShiftingIsASourceOfTheSceneWithItsOwnViewerScript) {
   const LaunchOptions o =
       parse_launch_options({"--scene", "train-window", "--source", "scene-shifting"});
-  EXPECT_EQ(o.source_kind, "scene-shifting");
-  EXPECT_EQ(o.viewer_script, "train-sideways");
-  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).source_kind, "scene");
+  EXPECT_EQ(o.state.source.kind, "scene-shifting");
+  EXPECT_EQ(o.state.source.viewer, "train-sideways");
+  EXPECT_EQ(parse_launch_options({"--scene", "cube"}).state.source.kind, "scene");
   const std::string unknown = usage_error({"--scene", "cube", "--source", "plane"});
   EXPECT_EQ(unknown.rfind("--source", 0), 0u) << unknown;
   EXPECT_NE(unknown.find("scene-shifting"), std::string::npos) << unknown;
@@ -106,8 +105,7 @@ TEST(LaunchOptions, SceneShiftingIsASourceOfTheSceneWithItsOwnViewerScript) {
 
 TEST(LaunchOptions, ShippedScriptIsReadAndUnknownOneListsTheShippedNames) {
   const LaunchOptions o = parse_launch_options({"--script", "zoom"});
-  ASSERT_TRUE(o.script.has_value());
-  EXPECT_GT(o.script->frames.size(), 1u);
+  EXPECT_EQ(o.state.script, "zoom");
   const std::string error = usage_error({"--script", "no-such-script"});
   EXPECT_NE(error.find("--script"), std::string::npos);
   EXPECT_NE(error.find("zoom"), std::string::npos);
@@ -124,10 +122,8 @@ TEST(LaunchOptions, BrokenScriptFileIsRejectedNamingTheFile) {
 
 TEST(LaunchOptions, ComparedPoliciesAreOneToFourDistinctNamesOfTheRegistry) {
   const LaunchOptions o = parse_launch_options({"--compare", "talisman,perspective"});
-  ASSERT_EQ(o.compared.size(), 2u);
-  EXPECT_STREQ(o.compared[0]->name, "talisman");
-  EXPECT_STREQ(o.compared[1]->name, "perspective");
-  EXPECT_TRUE(parse_launch_options({}).compared.empty());
+  EXPECT_EQ(o.state.compared, (std::vector<std::string>{"talisman", "perspective"}));
+  EXPECT_EQ(parse_launch_options({}).state.compared, WindowState().compared);
   for (const char* bad :
        {"", "bogus", "affine,affine", "affine,perspective,talisman,rerender,exact"}) {
     const std::string error = usage_error({"--compare", bad});
@@ -142,17 +138,22 @@ TEST(LaunchOptions, SessionFileIsReadAndABrokenOneRejectedNamingTheFileAndField)
   std::string text((std::istreambuf_iterator<char>(seed)), std::istreambuf_iterator<char>());
   std::ofstream(path) << text;
   const LaunchOptions o = parse_launch_options({"--session", path});
-  ASSERT_TRUE(o.session.has_value());
-  EXPECT_EQ(o.session->frame, 7);
-  EXPECT_EQ(o.session->script, "zoom");
+  EXPECT_EQ(o.state.frame, 7);
+  EXPECT_EQ(o.state.script, "zoom");
+  // The other options go over the session's state.
+  EXPECT_EQ(parse_launch_options({"--session", path, "--view", "basis"}).state.view, "basis");
+  EXPECT_EQ(parse_launch_options({"--session", path, "--view", "basis"}).state.frame, 7);
   const std::string width = "\"width\": 800";
   const auto at = text.find(width);
   ASSERT_NE(at, std::string::npos);
   std::ofstream(path) << text.replace(at, width.size(), "\"width\": 1e300");
   const std::string error = usage_error({"--session", path});
-  std::remove(path.c_str());
   EXPECT_EQ(error.rfind("--session: oflab_session_width.json", 0), 0u) << error;
   EXPECT_NE(error.find("'width'"), std::string::npos) << error;
+  std::ofstream(path) << text.replace(text.find("1e300"), 5, "9000");
+  const std::string wide = usage_error({"--session", path});
+  EXPECT_NE(wide.find("'width': image size 9000 is outside 2..8192 px"), std::string::npos) << wide;
+  std::remove(path.c_str());
   EXPECT_EQ(usage_error({"--session", path}).rfind("--session: ", 0), 0u);  // gone
 }
 
@@ -165,19 +166,39 @@ TEST(LaunchOptions, UsageListsEveryViewIncludingSlices) {
   EXPECT_NE(usage.find("slices (Scene shifting)"), std::string::npos);
 }
 
-TEST(LaunchOptions, FlowOverridesApplyOnlyWhatWasGiven) {
+TEST(LaunchOptions, FlowOptionsGoOverTheLessonsStateOnlyWhereGiven) {
   const LaunchOptions o =
       parse_launch_options({"--flow-show", "second-order", "--flow-draw", "wheel,zoom"});
-  FlowDisplay d;
-  d.streamlines = true;
-  const FlowDisplay out = with_overrides(d, o);
-  EXPECT_EQ(out.part, FlowPart::kSecondOrder);
-  EXPECT_TRUE(out.colour_wheel);
-  EXPECT_TRUE(out.zoom_to_plane);
-  EXPECT_FALSE(out.arrows);
-  EXPECT_FALSE(out.streamlines);
-  const FlowDisplay untouched = with_overrides(d, parse_launch_options({}));
-  EXPECT_TRUE(untouched.streamlines);
+  EXPECT_EQ(o.state.flow.part, FlowPart::kSecondOrder);
+  EXPECT_TRUE(o.state.flow.colour_wheel);
+  EXPECT_TRUE(o.state.flow.zoom_to_plane);
+  EXPECT_FALSE(o.state.flow.arrows);
+  EXPECT_FALSE(o.state.flow.streamlines);
+  // The lesson draws streamlines; --flow-show alone keeps them.
+  const LaunchOptions lesson =
+      parse_launch_options({"--lesson", "flow-of-a-plane", "--flow-show", "first-order"});
+  EXPECT_TRUE(lesson.state.flow.streamlines);
+  EXPECT_EQ(lesson.state.flow.part, FlowPart::kFirstOrder);
+  EXPECT_EQ(lesson.state.lesson, "flow-of-a-plane");
+}
+
+// Every --flow-draw name is a row of flow_draw_options(), so a new drawing option is named
+// on the command line without touching the parser.
+TEST(LaunchOptions, FlowDrawNamesComeFromTheOptionTable) {
+  for (const FlowDrawOption& option : flow_draw_options()) {
+    const FlowDisplay d = parse_launch_options({"--flow-draw", option.cli_name}).state.flow;
+    for (const FlowDrawOption& other : flow_draw_options()) {
+      EXPECT_EQ(d.*other.member, &other == &option) << option.cli_name << " " << other.key;
+    }
+    EXPECT_NE(launch_usage().find(option.cli_name), std::string::npos) << option.cli_name;
+  }
+}
+
+TEST(LaunchOptions, OutOfRangeCountsAndSessionWithLessonAreRefused) {
+  const std::string frames = usage_error({"--screenshot", "a.png", "--frames", "2000000"});
+  EXPECT_EQ(frames.rfind("--frames: 2e+06 is outside 0..1e+06 frames", 0), 0u) << frames;
+  const std::string both = usage_error({"--session", "s.json", "--lesson", "occlusion"});
+  EXPECT_EQ(both.rfind("--lesson: give --session or --lesson", 0), 0u) << both;
 }
 
 }  // namespace

@@ -37,15 +37,16 @@ void type_value(SceneControls* controls, const char* name, double value) {
 
 TEST_F(MainWindowTest, StartsOnTheDefaultDemoWithTheFlowViewInFront) {
   const PlaneScene demo = default_demo_scene();
-  EXPECT_TRUE(same_pose(window().model()->scene().pose, demo.pose));
-  EXPECT_EQ(window().model()->scene().motion.velocity, demo.motion.velocity);
+  EXPECT_TRUE(same_pose(window().model()->scene()->scene().pose, demo.pose));
+  EXPECT_EQ(window().model()->scene()->scene().motion.velocity, demo.motion.velocity);
   EXPECT_EQ(window().current_view_name(), "flow");
   EXPECT_EQ(window().view_names(),
             QStringList({"flow", "basis", "animation", "analysis", "slices"}));
   EXPECT_TRUE(window().message().isEmpty());
   // The planar basis row "tx" shows core's coefficient (2.0022 px/s).
   const PlanarFlowCoefficients k = planar_flow_coefficients(demo.camera, demo.pose, demo.motion);
-  EXPECT_NEAR(window().flow_view()->coefficient_table()->value_text(0).toDouble(), k.tx, 1e-3);
+  EXPECT_NEAR(view_page<FlowView>(window(), "flow")->coefficient_table()->value_text(0).toDouble(),
+              k.tx, 1e-3);
   EXPECT_NEAR(k.tx, 2.0022, 1e-4);
 }
 
@@ -79,25 +80,25 @@ TEST_F(MainWindowTest, EachViewRendersANonEmptyImage) {
 TEST_F(MainWindowTest, WindowScreenshotContainsTheRenderedViews) {
   const QImage image = window().grab_window_image();
   ASSERT_EQ(image.size(), window().size());
-  const QWidget* vtk = window().flow_view()->canvas();
+  const QWidget* vtk = view_page<FlowView>(window(), "flow")->canvas();
   const QRect area(vtk->mapTo(&window(), QPoint(0, 0)), vtk->size());
   EXPECT_GT(distinct_colours(image.copy(area)), 50);
 }
 
 TEST_F(MainWindowTest, ChangingAMotionValueChangesTheFlowView) {
-  const QImage before = window().flow_view()->render_image();
+  const QImage before = view_page<FlowView>(window(), "flow")->render_image();
   type_value(window().scene_controls(), "omega_z", -1.5);
-  EXPECT_DOUBLE_EQ(window().model()->scene().motion.omega.z, -1.5);
-  const QImage after = window().flow_view()->render_image();
+  EXPECT_DOUBLE_EQ(window().model()->scene()->scene().motion.omega.z, -1.5);
+  const QImage after = view_page<FlowView>(window(), "flow")->render_image();
   EXPECT_GT(changed_fraction(before, after), 0.01);
 }
 
 TEST_F(MainWindowTest, PlaneBehindTheCameraIsRejectedAndLeavesTheSceneAsItWas) {
-  const PlaneScene kept = window().model()->scene();
-  CoefficientTable* table = window().flow_view()->coefficient_table();
+  const PlaneScene kept = window().model()->scene()->scene();
+  CoefficientTable* table = view_page<FlowView>(window(), "flow")->coefficient_table();
   const QString tx = table->value_text(0);
   type_value(window().scene_controls(), "distance", -1.0);
-  EXPECT_TRUE(same_pose(window().model()->scene().pose, kept.pose));
+  EXPECT_TRUE(same_pose(window().model()->scene()->scene().pose, kept.pose));
   EXPECT_TRUE(window().message().contains("behind")) << window().message().toStdString();
   EXPECT_DOUBLE_EQ(window().scene_controls()->control("distance")->value(), kept.pose.point.z);
   EXPECT_EQ(table->value_text(0), tx);  // the views still show the old scene
@@ -107,64 +108,65 @@ TEST_F(MainWindowTest, PlaneBehindTheCameraIsRejectedAndLeavesTheSceneAsItWas) {
 }
 
 TEST_F(MainWindowTest, PlaneThroughTheEyeAndZeroFocalLengthAreRejected) {
-  PlaneScene through_eye = window().model()->scene();
+  PlaneScene through_eye = window().model()->scene()->scene();
   through_eye.pose.normal = glm::cross(through_eye.pose.point, Vec3(0, 1, 0));
-  EXPECT_FALSE(window().model()->set_scene(through_eye));
+  EXPECT_FALSE(window().model()->scene()->set_scene(through_eye));
   EXPECT_TRUE(window().message().contains("eye"));
   type_value(window().scene_controls(), "focal", 0.0);
   EXPECT_TRUE(window().message().contains("focal"));
-  EXPECT_DOUBLE_EQ(window().model()->scene().camera.focal_px, 600.0);
+  EXPECT_DOUBLE_EQ(window().model()->scene()->scene().camera.focal_px, 600.0);
 }
 
 TEST_F(MainWindowTest, BrokenScriptFileShowsAnErrorAndKeepsTheSession) {
   QTemporaryDir dir;
   const QString path = dir.filePath("broken.json");
   std::ofstream(path.toStdString()) << "{ \"format\": \"oflab-script\", \"camera\": [1, 2";
-  const PlaneScene kept = window().model()->scene();
+  const PlaneScene kept = window().model()->scene()->scene();
   EXPECT_FALSE(window().load_script(path));
   EXPECT_FALSE(window().message().isEmpty());
-  EXPECT_TRUE(same_pose(window().model()->scene().pose, kept.pose));
-  EXPECT_TRUE(window().model()->script_name().isEmpty());
+  EXPECT_TRUE(same_pose(window().model()->scene()->scene().pose, kept.pose));
+  EXPECT_TRUE(window().model()->scene()->script_name().isEmpty());
 }
 
 TEST_F(MainWindowTest, ShippedScriptPlaysItsFrames) {
   ASSERT_TRUE(window().load_script("zoom"));
-  const PlanePose first = window().model()->current_pose();
+  const PlanePose first = window().model()->scene()->current_pose();
   window().play_frames(5);
-  EXPECT_EQ(window().model()->frame(), 5);
-  EXPECT_LT(window().model()->current_pose().point.z, first.point.z);  // approaching
+  EXPECT_EQ(window().model()->scene()->frame(), 5);
+  EXPECT_LT(window().model()->scene()->current_pose().point.z, first.point.z);  // approaching
 }
 
 TEST_F(MainWindowTest, PlayingAdvancesTheMotionAndLoops) {
   window().play_frames(3);
-  EXPECT_EQ(window().model()->frame(), 3);
-  EXPECT_FALSE(same_pose(window().model()->current_pose(), window().model()->scene().pose));
-  window().model()->set_frame(SceneModel::kLoopFrames);
-  EXPECT_EQ(window().model()->frame(), 0);
+  EXPECT_EQ(window().model()->scene()->frame(), 3);
+  EXPECT_FALSE(same_pose(window().model()->scene()->current_pose(),
+                         window().model()->scene()->scene().pose));
+  window().model()->scene()->set_frame(SceneModel::kLoopFrames);
+  EXPECT_EQ(window().model()->scene()->frame(), 0);
 }
 
 TEST_F(MainWindowTest, LessonsSetViewCaptionAndOptions) {
   window().apply_lesson(*find_lesson("basis-deformations"));
   EXPECT_EQ(window().current_view_name(), "basis");
   EXPECT_TRUE(window().caption().contains("px"));
-  EXPECT_TRUE(window().basis_view()->playing());
+  EXPECT_TRUE(view_page<BasisView>(window(), "basis")->playing());
   window().apply_lesson(*find_lesson("flow-of-a-plane"));
   EXPECT_EQ(window().current_view_name(), "flow");
-  EXPECT_TRUE(window().flow_view()->display().streamlines);
-  EXPECT_FALSE(window().basis_view()->playing());
+  EXPECT_TRUE(view_page<FlowView>(window(), "flow")->display().streamlines);
+  EXPECT_FALSE(view_page<BasisView>(window(), "basis")->playing());
 }
 
 TEST_F(MainWindowTest, GalleryGreysTheTermsAPlaneCannotExcite) {
   window().show_view("basis");
   QApplication::processEvents();
-  BasisView* gallery = window().basis_view();
-  gallery->set_basis(BasisKind::kPlanar);
+  BasisView* gallery = view_page<BasisView>(window(), "basis");
+  window().model()->set_basis(BasisKind::kPlanar);
   gallery->render_image();
   EXPECT_EQ(gallery->active_tile_count(), 8);  // 2 + 4 + px, py
-  gallery->set_basis(BasisKind::kTaylor);
+  window().model()->set_basis(BasisKind::kTaylor);
   gallery->render_image();
   EXPECT_EQ(gallery->active_tile_count(), 10);  // v1_yy and v2_xx stay zero
-  gallery->set_basis(BasisKind::kWaxmanUllman);
+  window().model()->set_basis(BasisKind::kWaxmanUllman);
   gallery->render_image();
   EXPECT_EQ(gallery->active_tile_count(), 12);
 }
@@ -172,15 +174,16 @@ TEST_F(MainWindowTest, GalleryGreysTheTermsAPlaneCannotExcite) {
 TEST_F(MainWindowTest, GalleryAnimationMovesTheGrids) {
   window().show_view("basis");
   QApplication::processEvents();
-  const QImage before = window().basis_view()->render_image();
-  for (int i = 0; i < 6; ++i) window().basis_view()->step_animation();
-  EXPECT_GT(changed_fraction(before, window().basis_view()->render_image()), 0.005);
+  const QImage before = view_page<BasisView>(window(), "basis")->render_image();
+  for (int i = 0; i < 6; ++i) view_page<BasisView>(window(), "basis")->step_animation();
+  EXPECT_GT(changed_fraction(before, view_page<BasisView>(window(), "basis")->render_image()),
+            0.005);
 }
 
 // Playing, the tiles swing between 35 % and all of the amount: over a whole loop no tile
 // passes through zero amplitude (where every tile would look undeformed).
 TEST_F(MainWindowTest, BasisTilesNeverPassThroughZeroAmplitude) {
-  BasisView* basis = window().basis_view();
+  BasisView* basis = view_page<BasisView>(window(), "basis");
   window().show_view("basis");
   basis->set_amount(0.6);
   double lowest = 1.0, highest = 0.0;
@@ -192,41 +195,44 @@ TEST_F(MainWindowTest, BasisTilesNeverPassThroughZeroAmplitude) {
   EXPECT_GT(lowest, 0.3 * 0.6);
   EXPECT_NEAR(highest, 0.6, 0.01);
   EXPECT_LT(lowest, 0.4 * 0.6);  // it does swing
-  window().set_presentation(true);
+  window().model()->set_presentation(true);
   EXPECT_GE(basis->value_font_size(), 18);
 }
 
 TEST_F(MainWindowTest, ResidualPartDrawsNoArrowsAndSaysZero) {
-  FlowDisplay d = window().flow_view()->display();
+  FlowDisplay d = view_page<FlowView>(window(), "flow")->display();
   d.part = FlowPart::kExactMinusHomography;
-  window().flow_view()->set_display(d);
-  window().flow_view()->render_image();
-  EXPECT_LT(window().flow_view()->shown_max_magnitude(), 1e-6);
+  window().model()->set_flow_display(d);
+  view_page<FlowView>(window(), "flow")->render_image();
+  EXPECT_LT(view_page<FlowView>(window(), "flow")->shown_max_magnitude(), 1e-6);
   d.part = FlowPart::kSecondOrder;
-  window().flow_view()->set_display(d);
-  window().flow_view()->render_image();
-  EXPECT_GT(window().flow_view()->shown_max_magnitude(), 1.0);
+  window().model()->set_flow_display(d);
+  view_page<FlowView>(window(), "flow")->render_image();
+  EXPECT_GT(view_page<FlowView>(window(), "flow")->shown_max_magnitude(), 1.0);
 }
 
 // A plane moved out of the picture: the flow view draws no flow and says why (no
 // "max |v| = 0" over a colour bar), the basis view says its terms describe nothing seen.
 TEST_F(MainWindowTest, APlaneOutsideTheImageIsSaidToBeOutside) {
-  window().flow_view()->render_image();
-  EXPECT_TRUE(window().flow_view()->plane_in_image());
-  EXPECT_FALSE(window().flow_view()->caption().contains("outside"));
+  view_page<FlowView>(window(), "flow")->render_image();
+  EXPECT_TRUE(view_page<FlowView>(window(), "flow")->plane_in_image());
+  EXPECT_FALSE(view_page<FlowView>(window(), "flow")->caption().contains("outside"));
   PlaneScene scene = default_demo_scene();
   scene.pose.point = Vec3(40.0, 0.0, scene.pose.point.z);  // far to the right of the image
-  ASSERT_TRUE(window().model()->set_scene(scene));
-  window().flow_view()->render_image();
-  EXPECT_FALSE(window().flow_view()->plane_in_image());
-  EXPECT_TRUE(window().flow_view()->caption().startsWith("The plane is outside the image"))
-      << window().flow_view()->caption().toStdString();
-  EXPECT_FALSE(window().flow_view()->caption().contains("max |v|"));
-  EXPECT_EQ(window().flow_view()->shown_max_magnitude(), 0.0);
-  EXPECT_FALSE(window().flow_view()->coefficient_table()->isEnabled());
+  ASSERT_TRUE(window().model()->scene()->set_scene(scene));
+  view_page<FlowView>(window(), "flow")->render_image();
+  EXPECT_FALSE(view_page<FlowView>(window(), "flow")->plane_in_image());
+  EXPECT_TRUE(
+      view_page<FlowView>(window(), "flow")->caption().startsWith("The plane is outside the image"))
+      << view_page<FlowView>(window(), "flow")->caption().toStdString();
+  EXPECT_FALSE(view_page<FlowView>(window(), "flow")->caption().contains("max |v|"));
+  EXPECT_EQ(view_page<FlowView>(window(), "flow")->shown_max_magnitude(), 0.0);
+  EXPECT_FALSE(view_page<FlowView>(window(), "flow")->coefficient_table()->isEnabled());
   window().show_view("basis");
   QApplication::processEvents();
-  EXPECT_TRUE(window().basis_view()->summary().startsWith("The plane is outside the image"));
+  EXPECT_TRUE(view_page<BasisView>(window(), "basis")
+                  ->summary()
+                  .startsWith("The plane is outside the image"));
 }
 
 // Nearly edge-on, the plane covers no grid sample: the residual is not called "zero up to
@@ -236,15 +242,15 @@ TEST_F(MainWindowTest, AnEdgeOnPlaneHasNothingToCompare) {
   scene.pose.point = Vec3(0.0031, 0.0, 5.0);
   scene.pose.normal = Vec3(1.0, 0.0, 1e-6);  // the view ray through the centre grazes it
   scene.pose.up = Vec3(0.0, -1.0, 0.0);
-  ASSERT_TRUE(window().model()->set_scene(scene));
-  FlowDisplay d = window().flow_view()->display();
+  ASSERT_TRUE(window().model()->scene()->set_scene(scene));
+  FlowDisplay d = view_page<FlowView>(window(), "flow")->display();
   d.part = FlowPart::kExactMinusAffine;
-  window().flow_view()->set_display(d);
-  window().flow_view()->render_image();
-  const QString caption = window().flow_view()->caption();
+  window().model()->set_flow_display(d);
+  view_page<FlowView>(window(), "flow")->render_image();
+  const QString caption = view_page<FlowView>(window(), "flow")->caption();
   EXPECT_TRUE(caption.contains("nothing to compare")) << caption.toStdString();
   EXPECT_FALSE(caption.contains("zero up to rounding")) << caption.toStdString();
-  EXPECT_TRUE(window().flow_view()->plane_in_image());  // edge-on is not outside
+  EXPECT_TRUE(view_page<FlowView>(window(), "flow")->plane_in_image());  // edge-on is not outside
 }
 
 // Everything the window shows beyond the scene comes back from a saved session: the flow
@@ -253,24 +259,24 @@ TEST_F(MainWindowTest, SessionRestoresTheWindowState) {
   QTemporaryDir dir;
   const QString path = dir.filePath("window.json");
   window().apply_lesson(*find_lesson("basis-deformations"));
-  FlowDisplay flow = window().flow_view()->display();
+  FlowDisplay flow = view_page<FlowView>(window(), "flow")->display();
   flow.part = FlowPart::kSecondOrder;
   flow.arrows = false, flow.streamlines = true, flow.colour_wheel = true;
   flow.texture = false, flow.zoom_to_plane = false, flow.common_scale = true;
-  window().flow_view()->set_display(flow);
-  window().basis_view()->set_basis(BasisKind::kWaxmanUllman);
-  window().set_presentation(true);
-  window().set_play_rate(10);
+  window().model()->set_flow_display(flow);
+  window().model()->set_basis(BasisKind::kWaxmanUllman);
+  window().model()->set_presentation(true);
+  window().model()->set_play_rate(10);
   window().show_view("flow");
   ASSERT_TRUE(window().save_session(path, false));
   // Change everything, then load.
   window().apply_lesson(*find_lesson("flow-of-a-plane"));
-  window().set_presentation(false);
-  window().set_play_rate(60);
-  window().basis_view()->set_basis(BasisKind::kPlanar);
+  window().model()->set_presentation(false);
+  window().model()->set_play_rate(60);
+  window().model()->set_basis(BasisKind::kPlanar);
   window().show_view("analysis");
   ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
-  const FlowDisplay back = window().flow_view()->display();
+  const FlowDisplay back = view_page<FlowView>(window(), "flow")->display();
   EXPECT_EQ(back.part, FlowPart::kSecondOrder);
   EXPECT_FALSE(back.arrows);
   EXPECT_TRUE(back.streamlines);
@@ -278,11 +284,11 @@ TEST_F(MainWindowTest, SessionRestoresTheWindowState) {
   EXPECT_FALSE(back.texture);
   EXPECT_FALSE(back.zoom_to_plane);
   EXPECT_TRUE(back.common_scale);
-  EXPECT_EQ(window().basis_view()->basis(), BasisKind::kWaxmanUllman);
-  EXPECT_TRUE(window().presentation());
-  EXPECT_EQ(window().lesson(), "basis-deformations");
-  EXPECT_EQ(window().caption().toStdString(), find_lesson("basis-deformations")->caption);
-  EXPECT_EQ(window().play_rate(), 10);
+  EXPECT_EQ(view_page<BasisView>(window(), "basis")->basis(), BasisKind::kWaxmanUllman);
+  EXPECT_TRUE(window().model()->presentation());
+  EXPECT_EQ(window().model()->lesson(), "basis-deformations");
+  EXPECT_EQ(window().caption().toStdString(), find_lesson("basis-deformations")->narrative);
+  EXPECT_EQ(window().model()->play_rate(), 10);
   EXPECT_EQ(window().current_view_name(), "flow");
 }
 
@@ -295,10 +301,11 @@ TEST_F(MainWindowTest, PresentationModeTurnsTheViewsLight) {
     }
     return sum / (32 * 32);
   };
-  EXPECT_LT(mean_grey(window().flow_view()->render_image()), 110.0);
-  window().set_presentation(true);
-  EXPECT_GT(mean_grey(window().flow_view()->render_image()), 150.0);
-  window().set_presentation(false);  // the application's fonts are global: leave them normal
+  EXPECT_LT(mean_grey(view_page<FlowView>(window(), "flow")->render_image()), 110.0);
+  window().model()->set_presentation(true);
+  EXPECT_GT(mean_grey(view_page<FlowView>(window(), "flow")->render_image()), 150.0);
+  window().model()->set_presentation(
+      false);  // the application's fonts are global: leave them normal
 }
 
 }  // namespace

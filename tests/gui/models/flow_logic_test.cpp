@@ -5,12 +5,12 @@
 
 #include <cmath>
 
+#include "adapters/flow_parts.h"
+#include "adapters/palette.h"
 #include "flow/homography.h"
 #include "flow/plane_scene.h"
+#include "models/basis_catalog.h"
 #include "models/scene_parameters.h"
-#include "views/basis_catalog.h"
-#include "views/flow_parts.h"
-#include "views/palette.h"
 
 namespace oflab {
 namespace {

@@ -6,6 +6,7 @@
 
 #include <QPainter>
 
+#include "adapters/palette.h"
 #include "engine/engine.h"
 #include "engine/reuse_policy.h"
 #include "flow/geometry.h"
@@ -14,7 +15,6 @@
 #include "models/scene_model.h"
 #include "views/animation_view.h"
 #include "views/frame_inspector.h"
-#include "views/palette.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -22,7 +22,7 @@ namespace {
 
 class AnalysisViewTest : public WindowTest {
  protected:
-  AnalysisView& analysis() { return *window().analysis_view(); }
+  AnalysisView& analysis() { return *view_page<AnalysisView>(window(), "analysis"); }
   QWidget* charts() { return analysis().findChild<QWidget*>(QStringLiteral("analysis_charts")); }
 
   // The centre of frame `frame`'s column in chart `index`: its rectangle split into one
@@ -46,7 +46,7 @@ TEST_F(AnalysisViewTest, ClickOnEveryChartLandsOnTheFrameUnderThePointer) {
     ASSERT_TRUE(charts()->rect().contains(area)) << chart;
     for (int frame : {3, 17, 29, 38}) {
       QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, column_centre(chart, frame));
-      EXPECT_EQ(window().model()->frame(), frame) << "chart " << chart;
+      EXPECT_EQ(window().model()->scene()->frame(), frame) << "chart " << chart;
     }
   }
 }
@@ -57,9 +57,9 @@ TEST_F(AnalysisViewTest, ClickBetweenChartsDoesNothing) {
   const QRect first = analysis().chart_area(0), second = analysis().chart_area(1);
   const QPoint gap(first.center().x(), (first.bottom() + second.top()) / 2);
   QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, gap);
-  EXPECT_EQ(window().model()->frame(), 12);
+  EXPECT_EQ(window().model()->scene()->frame(), 12);
   QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, QPoint(2, first.center().y()));
-  EXPECT_EQ(window().model()->frame(), 12);
+  EXPECT_EQ(window().model()->scene()->frame(), 12);
 }
 
 TEST_F(AnalysisViewTest, TheAxisStaysStillUnderThePointerAfterAJump) {
@@ -70,7 +70,7 @@ TEST_F(AnalysisViewTest, TheAxisStaysStillUnderThePointerAfterAJump) {
   ASSERT_EQ(first, 100 - AnalysisView::kRecentFrames + 1);
   const QPoint target = column_centre(0, 50);
   QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, target);
-  ASSERT_EQ(window().model()->frame(), 50);
+  ASSERT_EQ(window().model()->scene()->frame(), 50);
   EXPECT_EQ(analysis().first_frame(), first);
   EXPECT_EQ(analysis().last_frame(), last);
   EXPECT_EQ(analysis().frame_at(target), 50) << "the same place still means the same frame";
@@ -86,7 +86,7 @@ TEST_F(AnalysisViewTest, WholeLoopAxisSpansTheLoop) {
   analysis().set_whole_run(true);
   window().play_frames(5);
   EXPECT_EQ(analysis().first_frame(), 0);
-  EXPECT_EQ(analysis().last_frame(), window().animation_model()->animator()->frame_count() - 1);
+  EXPECT_EQ(analysis().last_frame(), window().model()->animation()->animator()->frame_count() - 1);
   EXPECT_EQ(analysis().current_frame(), 5);
 }
 
@@ -154,10 +154,8 @@ class AnalysisComparisonTest : public AnalysisViewTest {
  protected:
   // The animation view compares `names` (its comparison layout), the analysis view in front.
   void compare(const std::vector<std::string>& names) {
-    std::vector<const ReusePolicy*> policies;
-    for (const std::string& name : names) policies.push_back(&reuse_policy(name));
-    window().animation_view()->set_compared_policies(policies);
-    window().animation_view()->set_display(PanelDisplay::kComparison);
+    window().model()->set_compared(names);
+    window().model()->set_panel_display(PanelDisplay::kComparison);
     window().show_view("analysis");
   }
   static QColor policy_qcolor(int index) {
@@ -218,7 +216,7 @@ TEST_F(AnalysisComparisonTest, WithoutTheComparisonLayoutTheModelsEngineIsCharte
   compare({"perspective", "talisman"});
   window().play_frames(10);
   ASSERT_TRUE(analysis().comparing());
-  window().animation_view()->set_display(PanelDisplay::kSideBySide);
+  window().model()->set_panel_display(PanelDisplay::kSideBySide);
   window().play_frames(1);
   EXPECT_FALSE(analysis().comparing());
   EXPECT_EQ(analysis().chart_count(), AnalysisView::kChartCount);
@@ -240,13 +238,13 @@ TEST_F(AnalysisComparisonTest, ClickOnEveryChartLandsOnTheFrameUnderThePointer) 
     ASSERT_TRUE(charts()->rect().contains(area)) << chart;
     for (int frame : {3, 17, 38}) {
       QTest::mouseClick(charts(), Qt::LeftButton, Qt::NoModifier, column_centre(chart, frame));
-      EXPECT_EQ(window().model()->frame(), frame) << "chart " << chart;
+      EXPECT_EQ(window().model()->scene()->frame(), frame) << "chart " << chart;
       EXPECT_TRUE(analysis().status_text().startsWith(QStringLiteral("Frame %1,").arg(frame)))
           << analysis().status_text().toStdString();
     }
   }
   // The runs followed the jumps: their histories end at the frame shown.
-  for (const ComparedRun& run : window().animation_view()->comparison().runs()) {
+  for (const ComparedRun& run : window().model()->comparison().runs()) {
     EXPECT_EQ(run.history.back().frame, 38);
   }
 }

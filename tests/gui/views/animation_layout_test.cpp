@@ -15,11 +15,11 @@
 #include <cmath>
 #include <cstring>
 
-#include "app/lessons.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
+#include "models/lessons.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "scene/view_culling.h"
@@ -34,13 +34,13 @@ constexpr double kNear = 0.05;
 
 class AnimationLayoutTest : public WindowTest {
  protected:
-  AnimationView& animation() { return *window().animation_view(); }
-  AnimationModel& model() { return *window().animation_model(); }
+  AnimationView& animation() { return *view_page<AnimationView>(window(), "animation"); }
+  AnimationModel& model() { return *window().model()->animation(); }
 
   void show_comparison() {
     window().show_view("animation");
     window().set_external_clock(true);
-    animation().set_display(PanelDisplay::kComparison);
+    window().model()->set_panel_display(PanelDisplay::kComparison);
   }
 };
 
@@ -62,7 +62,7 @@ TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
   show_comparison();
   window().play_frames(12);
   animation().render_image();
-  const auto& runs = animation().comparison().runs();
+  const auto& runs = window().model()->comparison().runs();
   ASSERT_EQ(runs.size(), 2u);
   EXPECT_STREQ(runs[0].policy->name, "affine");
   EXPECT_STREQ(runs[1].policy->name, "perspective");
@@ -78,20 +78,20 @@ TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
   settings.policy = &reuse_policy("affine");
   ASSERT_TRUE(model().set_settings(settings));
   const Image& model_frame = model().animator()->image();
-  const Image& compared = animation().comparison().runs()[0].animator->image();
+  const Image& compared = window().model()->comparison().runs()[0].animator->image();
   ASSERT_EQ(model_frame.width(), compared.width());
   EXPECT_EQ(std::memcmp(model_frame.row(0), compared.row(0),
                         size_t(compared.width()) * compared.height() * 4),
             0);
   // Stepping back restarts them on the same frame.
-  window().model()->set_frame(5);
-  for (const ComparedRun& run : animation().comparison().runs())
+  window().model()->scene()->set_frame(5);
+  for (const ComparedRun& run : window().model()->comparison().runs())
     EXPECT_EQ(run.animator->frame(), 5);
 }
 
 TEST_F(AnimationLayoutTest, ComparisonTakesOneToFourPoliciesOfTheRegistry) {
   show_comparison();
-  PolicyComparison& comparison = animation().comparison();
+  PolicyComparison& comparison = window().model()->comparison();
   EXPECT_THROW(comparison.set_policies({}), std::invalid_argument);
   std::vector<const ReusePolicy*> all;
   for (const ReusePolicy& p : reuse_policies()) all.push_back(&p);
@@ -110,7 +110,7 @@ TEST_F(AnimationLayoutTest, ComparisonTakesOneToFourPoliciesOfTheRegistry) {
 TEST_F(AnimationLayoutTest, FramingIsIdenticalOnEveryPanel) {
   for (PanelDisplay display : {PanelDisplay::kSideBySide, PanelDisplay::kComparison}) {
     show_comparison();
-    animation().set_display(display);
+    window().model()->set_panel_display(display);
     window().play_frames(4);
     animation().render_image();
     const QRectF frame = animation().shown_frame();
@@ -133,21 +133,24 @@ TEST_F(AnimationLayoutTest, ZoomToFitHoldsTheLoopAndZoomScalesAboutItsCentre) {
   window().set_external_clock(true);
   animation().render_image();
   const QRectF fit = animation().shown_frame();
-  const MotionScript script = window().model()->as_script();
+  const MotionScript script = window().model()->scene()->as_script();
   for (const ScriptFrame& f : script.frames) {
     for (const Vec3& corner : plane_corners(f.pose)) {
       const Vec2 p = centred_to_pixel(script.camera, project_centred(script.camera, corner));
       EXPECT_TRUE(fit.contains(QPointF(p.x, p.y))) << p.x << " " << p.y;
     }
   }
-  animation().set_zoom(2.0);
+  window().model()->set_zoom(2.0);
   animation().render_image();
   const QRectF zoomed = animation().shown_frame();
   EXPECT_NEAR(zoomed.width(), fit.width() / 2, 1e-6);
   EXPECT_NEAR(zoomed.center().x(), fit.center().x(), 1e-6);
   EXPECT_NEAR(zoomed.center().y(), fit.center().y(), 1e-6);
-  animation().set_zoom(100.0);
-  EXPECT_EQ(animation().zoom(), AnimationView::kMaxZoom);
+  // Out of range: refused with a message naming the range, the zoom unchanged.
+  const double kept = window().model()->zoom();
+  EXPECT_FALSE(window().model()->set_zoom(100.0));
+  EXPECT_EQ(window().model()->zoom(), kept);
+  EXPECT_TRUE(window().message().contains("0.25..8")) << window().message().toStdString();
 }
 
 // What the window shows is what render_image returns: a grab of the canvas widget (the
@@ -185,14 +188,14 @@ TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
   window().resize(1920, 1080);
   QApplication::processEvents();
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
-  window().set_motion_playing(false);
+  window().model()->set_playing(false);
   window().set_external_clock(true);
   QApplication::processEvents();
   ASSERT_EQ(animation().display(), PanelDisplay::kComparison);
   const double view_area = double(animation().width()) * animation().height();
   const MotionScript script = read_script_file(resolve_script_path("swing"));
   for (int frame : {0, 20, 45, 75, 110}) {
-    window().model()->set_frame(frame);
+    window().model()->scene()->set_frame(frame);
     animation().render_image();
     const std::vector<QRectF>& panels = animation().panel_rects();
     ASSERT_EQ(panels.size(), 5u);
@@ -212,7 +215,7 @@ TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
     EXPECT_GE(plane_area / view_area, 0.10)
         << "frame " << frame << ": " << plane_area / view_area << " of " << animation().width()
         << " x " << animation().height();
-    for (const ComparedRun& run : animation().comparison().runs())
+    for (const ComparedRun& run : window().model()->comparison().runs())
       EXPECT_EQ(run.animator->frame(), frame);
   }
 }
@@ -233,7 +236,7 @@ TEST_F(AnimationLayoutTest, PoliciesMenuComparesTwoToFourPolicies) {
   };
   const auto names = [&] {
     std::vector<std::string> out;
-    for (const ReusePolicy* p : animation().comparison().policies()) out.push_back(p->name);
+    for (const ReusePolicy* p : window().model()->comparison().policies()) out.push_back(p->name);
     return out;
   };
   EXPECT_TRUE(action("affine")->isChecked());
@@ -252,8 +255,8 @@ TEST_F(AnimationLayoutTest, PoliciesMenuComparesTwoToFourPolicies) {
   EXPECT_TRUE(action("talisman")->isChecked());
   window().play_frames(3);
   animation().render_image();
-  ASSERT_EQ(animation().comparison().runs().size(), 2u);
-  EXPECT_STREQ(animation().comparison().runs()[1].policy->name, "talisman");
+  ASSERT_EQ(window().model()->comparison().runs().size(), 2u);
+  EXPECT_STREQ(window().model()->comparison().runs()[1].policy->name, "talisman");
   EXPECT_EQ(animation().panel_rects().size(), 5u);
 }
 
@@ -265,7 +268,7 @@ TEST_F(AnimationLayoutTest, FlowVsTalismanLessonComparesPerspectiveAndTalisman) 
   ASSERT_EQ(animation().display(), PanelDisplay::kComparison);
   window().play_frames(20);
   animation().render_image();
-  const auto& runs = animation().comparison().runs();
+  const auto& runs = window().model()->comparison().runs();
   ASSERT_EQ(runs.size(), 2u);
   EXPECT_STREQ(runs[0].policy->name, "perspective");
   EXPECT_STREQ(runs[1].policy->name, "talisman");
@@ -274,7 +277,7 @@ TEST_F(AnimationLayoutTest, FlowVsTalismanLessonComparesPerspectiveAndTalisman) 
     EXPECT_EQ(run.last.frame, 20);
   }
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
-  EXPECT_STREQ(animation().comparison().policies()[0]->name, "affine");
+  EXPECT_STREQ(window().model()->comparison().policies()[0]->name, "affine");
 }
 
 // A caption too wide for its cell is broken at its separators, each line fitting, and

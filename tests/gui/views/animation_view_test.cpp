@@ -15,14 +15,15 @@
 
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
-#include "formats/session_file.h"
+#include "adapters/palette.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
+#include "models/window_model.h"
+#include "models/window_state_file.h"
 #include "views/analysis_view.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
-#include "views/palette.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -119,11 +120,12 @@ TEST_F(AnimationViewTest, PolicyControlsAreOffOnlyForSceneShifting) {
   EXPECT_TRUE(mode->isEnabled());
 }
 
-// The analysis view reads the animation model alone: no window, no animation view.
+// The analysis view reads the window model alone: no window, no animation view.
 TEST(AnalysisViewAlone, ChartsTheAnimationModelsRun) {
-  SceneModel scene;
-  AnimationModel model(&scene);
-  AnalysisView analysis(&model);
+  WindowModel window({"analysis"});
+  SceneModel& scene = *window.scene();
+  AnimationModel& model = *window.animation();
+  AnalysisView analysis(&window);
   analysis.resize(900, 600);
   analysis.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&analysis, 10000));
@@ -138,9 +140,9 @@ TEST(AnalysisViewAlone, ChartsTheAnimationModelsRun) {
 
 TEST_F(AnimationViewTest, DifferenceAndBlinkRender) {
   window().show_view("animation");
-  animation().set_display(PanelDisplay::kDifference);
+  window().model()->set_panel_display(PanelDisplay::kDifference);
   EXPECT_GT(distinct_colours(animation().render_image()), 5);
-  animation().set_display(PanelDisplay::kBlink);
+  window().model()->set_panel_display(PanelDisplay::kBlink);
   const QImage engine = animation().render_image();
   animation().set_blink_phase(true);
   EXPECT_GT(changed_fraction(engine, animation().render_image()), 0.001);
@@ -149,13 +151,13 @@ TEST_F(AnimationViewTest, DifferenceAndBlinkRender) {
 TEST_F(AnimationViewTest, AnalysisViewRendersCharts) {
   window().show_view("analysis");
   window().play_frames(12);
-  EXPECT_GT(distinct_colours(window().analysis_view()->render_image()), 10);
-  EXPECT_EQ(window().analysis_view()->current_frame(), 12);
+  EXPECT_GT(distinct_colours(view_page<AnalysisView>(window(), "analysis")->render_image()), 10);
+  EXPECT_EQ(view_page<AnalysisView>(window(), "analysis")->current_frame(), 12);
 }
 
 TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
   window().show_view("animation");
-  animation().set_exact_renderer(*find_exact_renderer("vtk"));
+  window().model()->set_exact_renderer("vtk");
   set_mode("rerender");
   window().play_frames(8);
   expect_panels_agree("rerender-plane");
@@ -163,7 +165,7 @@ TEST_F(AnimationViewTest, InRerenderModeThePlanePanelsAgree) {
 
 TEST_F(AnimationViewTest, InRerenderModeTheScenePanelsAgree) {
   window().show_view("animation");
-  animation().set_exact_renderer(*find_exact_renderer("vtk"));
+  window().model()->set_exact_renderer("vtk");
   set_mode("rerender");
   ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
   window().play_frames(8);
@@ -175,7 +177,7 @@ TEST_F(AnimationViewTest, SteppingBackShowsTheSameFrameAsPlayingForward) {
   window().play_frames(6);
   const Image forward = animation().engine_image();
   window().play_frames(3);
-  window().model()->set_frame(6);
+  window().model()->scene()->set_frame(6);
   const FrameAgreement a = frame_agreement(forward, animation().engine_image());
   EXPECT_TRUE(std::isinf(a.psnr_db));
 }
@@ -188,8 +190,8 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
   settings.thresholds = {0.5, 1.5, 2.0, 0.75};
   ASSERT_TRUE(model().set_settings(settings));
   ASSERT_TRUE(model().set_source({"scene", "two", "translate"}));
-  animation().set_display(PanelDisplay::kDifference);
-  window().model()->set_frame(7);
+  window().model()->set_panel_display(PanelDisplay::kDifference);
+  window().model()->scene()->set_frame(7);
   window().show_view("analysis");
   ASSERT_TRUE(window().save_session(path, false));
   EXPECT_FALSE(window().save_session(path, false));  // never overwrites unasked
@@ -201,7 +203,7 @@ TEST_F(AnimationViewTest, SessionSaveThenLoadRestoresTheState) {
   EXPECT_EQ(model().source().name, "two");
   EXPECT_EQ(model().source().viewer, "translate");
   EXPECT_EQ(animation().display(), PanelDisplay::kDifference);
-  EXPECT_EQ(window().model()->frame(), 7);
+  EXPECT_EQ(window().model()->scene()->frame(), 7);
   EXPECT_EQ(window().current_view_name(), "analysis");
 }
 
@@ -221,9 +223,8 @@ TEST_F(AnimationViewTest, BrokenSessionAndSceneFilesChangeNothingAndShowAnError)
 TEST_F(AnimationViewTest, SessionWithAnUnknownSourceKindIsRefusedAndChangesNothing) {
   QTemporaryDir dir;
   const QString path = dir.filePath("movie.json");
-  Session session;
-  session.source_kind = "movie";
-  session.source_name = "loop";
+  WindowState session;
+  session.source = {"movie", "loop", ""};
   write_session_file(path.toStdString(), session, false);
   const SourceChoice before = model().source();
   EXPECT_FALSE(window().load_session(path));
@@ -286,12 +287,11 @@ TEST(FrameInspector, MarksTheLevelsThePolicyDoesNotAllow) {
 }
 
 TEST(SessionFile, PolicyAndSamplingRoundTripByNameAndUnknownNamesAreRefused) {
-  Session session;
-  session.plane = default_demo_scene();
+  WindowState session;
   session.settings.policy = &reuse_policy("exact");
   session.settings.sampling = Sampling::kBilinear;
-  const std::string text = session_to_json(session);
-  const Session back = parse_session(text, "test");
+  const std::string text = window_state_to_json(session);
+  const WindowState back = parse_session(text, "test");
   EXPECT_EQ(back.settings.policy, &reuse_policy("exact"));
   EXPECT_EQ(back.settings.sampling, Sampling::kBilinear);
   const auto replaced = [&](const std::string& from, const std::string& to) {

@@ -44,57 +44,62 @@ class BaselineTest : public WindowTest {
 };
 
 TEST_F(BaselineTest, FlowViewOfTheDemoMatchesItsBaseline) {
-  expect_matches_baseline(window().flow_view()->render_image(), "flow-demo");
+  expect_matches_baseline(view_page<FlowView>(window(), "flow")->render_image(), "flow-demo");
 }
 
 TEST_F(BaselineTest, ToleranceCatchesAFlowViewWithoutArrows) {
   // The tolerance must not be so loose that a lost arrow field passes.
   const QImage baseline(QStringLiteral(OFLAB_GUI_BASELINES "/flow-demo.png"));
   ASSERT_FALSE(baseline.isNull()) << "missing baseline flow-demo.png";
-  FlowDisplay d = window().flow_view()->display();
+  FlowDisplay d = view_page<FlowView>(window(), "flow")->display();
   d.arrows = false;
-  window().flow_view()->set_display(d);
-  const QImage rendered = scaled_rgb(window().flow_view()->render_image(), baseline.size());
+  window().model()->set_flow_display(d);
+  const QImage rendered =
+      scaled_rgb(view_page<FlowView>(window(), "flow")->render_image(), baseline.size());
   EXPECT_LT(psnr_db(baseline, rendered), kBaselinePsnrDb - 5.0);
 }
 
 TEST_F(BaselineTest, FlowViewSecondOrderWithColourWheelMatchesItsBaseline) {
-  FlowDisplay d = window().flow_view()->display();
+  FlowDisplay d = view_page<FlowView>(window(), "flow")->display();
   d.part = FlowPart::kSecondOrder;
   d.colour_wheel = true;
   d.streamlines = true;
-  window().flow_view()->set_display(d);
-  expect_matches_baseline(window().flow_view()->render_image(), "flow-second-order-wheel");
+  window().model()->set_flow_display(d);
+  expect_matches_baseline(view_page<FlowView>(window(), "flow")->render_image(),
+                          "flow-second-order-wheel");
 }
 
 TEST_F(BaselineTest, PlanarBasisGalleryMatchesItsBaseline) {
   window().show_view("basis");
   QApplication::processEvents();
-  window().basis_view()->set_basis(BasisKind::kPlanar);
-  expect_matches_baseline(window().basis_view()->render_image(), "basis-planar");
+  window().model()->set_basis(BasisKind::kPlanar);
+  expect_matches_baseline(view_page<BasisView>(window(), "basis")->render_image(), "basis-planar");
 }
 
 TEST_F(BaselineTest, AnimationViewOfTheDemoMatchesItsBaseline) {
   window().show_view("animation");
   window().set_external_clock(true);
   window().play_frames(10);
-  expect_matches_baseline(window().animation_view()->render_image(), "animation-demo");
+  expect_matches_baseline(view_page<AnimationView>(window(), "animation")->render_image(),
+                          "animation-demo");
 }
 
 TEST_F(BaselineTest, AnimationViewDifferenceMatchesItsBaseline) {
   window().show_view("animation");
   window().set_external_clock(true);
-  window().animation_view()->set_display(PanelDisplay::kDifference);
+  window().model()->set_panel_display(PanelDisplay::kDifference);
   window().play_frames(10);
-  expect_matches_baseline(window().animation_view()->render_image(), "animation-difference");
+  expect_matches_baseline(view_page<AnimationView>(window(), "animation")->render_image(),
+                          "animation-difference");
 }
 
 TEST_F(BaselineTest, AnimationViewComparisonMatchesItsBaseline) {
   window().show_view("animation");
   window().set_external_clock(true);
-  window().animation_view()->set_display(PanelDisplay::kComparison);
+  window().model()->set_panel_display(PanelDisplay::kComparison);
   window().play_frames(10);
-  expect_matches_baseline(window().animation_view()->render_image(), "animation-comparison");
+  expect_matches_baseline(view_page<AnimationView>(window(), "animation")->render_image(),
+                          "animation-comparison");
 }
 
 }  // namespace

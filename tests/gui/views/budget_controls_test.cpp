@@ -13,8 +13,8 @@ namespace {
 
 class BudgetControlsTest : public WindowTest {
  protected:
-  AnimationView& animation() { return *window().animation_view(); }
-  AnimationModel& model() { return *window().animation_model(); }
+  AnimationView& animation() { return *view_page<AnimationView>(window(), "animation"); }
+  AnimationModel& model() { return *window().model()->animation(); }
 
   // Picks `policy` in the mode box as a user does (the box's activated signal).
   void choose_mode(QComboBox* box, const QString& policy) {

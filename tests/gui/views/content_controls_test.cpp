@@ -6,9 +6,9 @@
 #include <QTemporaryDir>
 
 #include "adapters/frame_images.h"
-#include "app/lessons.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
+#include "models/lessons.h"
 #include "models/scene_model.h"
 #include "views/animation_view.h"
 #include "window_fixture.h"
@@ -18,8 +18,8 @@ namespace {
 
 class ContentControlsTest : public WindowTest {
  protected:
-  AnimationView& animation() { return *window().animation_view(); }
-  AnimationModel& model() { return *window().animation_model(); }
+  AnimationView& animation() { return *view_page<AnimationView>(window(), "animation"); }
+  AnimationModel& model() { return *window().model()->animation(); }
   QComboBox* content_box() { return animation().findChild<QComboBox*>("animation_content"); }
   QSpinBox* quality_box() { return animation().findChild<QSpinBox*>("animation_quality"); }
 
@@ -127,7 +127,7 @@ TEST_F(ContentControlsTest, TheReuseLessonWalksTheStreetAgainstReRendering) {
   EXPECT_STREQ(model().settings().policy->name, "perspective");
   EXPECT_EQ(animation().display(), PanelDisplay::kComparison);
   EXPECT_FALSE(window().caption().isEmpty());
-  window().set_motion_playing(false);
+  window().model()->set_playing(false);
 }
 
 }  // namespace

@@ -16,11 +16,11 @@
 
 #include "adapters/frame_images.h"
 #include "app/launch_options.h"
-#include "formats/session_file.h"
 #include "image/image_compare.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
+#include "models/window_state_file.h"
 #include "runs/vtk_scene_renderer.h"
 #include "views/animation_view.h"
 #include "window_fixture.h"
@@ -55,7 +55,7 @@ class ExactFramesTest : public AnimationWindowTest {
 TEST_F(ExactFramesTest, CoreAndVtkDrawThePlaneAlike) {
   if (!display_available()) GTEST_SKIP() << "needs an X display: run under xvfb-run -a";
   for (int frame : {0, 20, 40}) {
-    window().model()->set_frame(frame);
+    window().model()->scene()->set_frame(frame);
     expect_renderers_agree("plane-" + std::to_string(frame));
   }
 }
@@ -64,16 +64,16 @@ TEST_F(ExactFramesTest, CoreAndVtkDrawASceneAlike) {
   if (!display_available()) GTEST_SKIP() << "needs an X display: run under xvfb-run -a";
   ASSERT_TRUE(model().set_source({"scene", "four-cubes", "circle"}));
   for (int frame : {0, 30}) {
-    window().model()->set_frame(frame);
+    window().model()->scene()->set_frame(frame);
     expect_renderers_agree("four-cubes-" + std::to_string(frame));
   }
 }
 
 TEST_F(ExactFramesTest, TheAgreementMeasureFailsForDifferentFrames) {
   if (!display_available()) GTEST_SKIP() << "needs an X display: run under xvfb-run -a";
-  window().model()->set_frame(10);
+  window().model()->scene()->set_frame(10);
   const Image vtk = exact_frame("vtk");
-  window().model()->set_frame(16);
+  window().model()->scene()->set_frame(16);
   const FrameAgreement a = frame_agreement(exact_frame("core"), vtk);
   EXPECT_TRUE(a.mask_iou < kExactAgreementIou || a.psnr_db < kExactAgreementPsnrDb);
 }
@@ -92,7 +92,7 @@ TEST_F(ExactFramesTest, TheViewDrawsCoresExactFrameByDefaultAndVtksWhenChosen) {
   emit box->activated(1);
   EXPECT_EQ(animation().exact_renderer().name, "vtk");
   EXPECT_TRUE(std::isinf(frame_agreement(animation().exact_image(), exact_frame("vtk")).psnr_db));
-  animation().set_exact_renderer(exact_renderers().front());
+  window().model()->set_exact_renderer("core");
   EXPECT_EQ(box->currentIndex(), 0);
 }
 
@@ -105,7 +105,7 @@ TEST_F(ExactFramesTest, TheExactPanelDrawsTheEnginesContent) {
     settings.policy = &reuse_policy("rerender");
     settings.content.kind = kind;
     ASSERT_TRUE(model().set_settings(settings));
-    window().model()->set_frame(12);
+    window().model()->scene()->set_frame(12);
     const Image& engine = animation().engine_image();
     EXPECT_GT(psnr_db(engine, animation().exact_image()), 40.0) << content_name(kind);
   }
@@ -121,7 +121,7 @@ TEST_F(ExactFramesTest, TheExactPanelDrawsASceneOfLitContentsAsTheEngineDoes) {
   settings.policy = &reuse_policy("rerender");
   ASSERT_TRUE(model().set_settings(settings));
   for (int frame : {0, 90}) {
-    window().model()->set_frame(frame);
+    window().model()->scene()->set_frame(frame);
     EXPECT_GT(psnr_db(animation().engine_image(), animation().exact_image()), 40.0)
         << "street frame " << frame;
   }
@@ -130,9 +130,9 @@ TEST_F(ExactFramesTest, TheExactPanelDrawsASceneOfLitContentsAsTheEngineDoes) {
 TEST_F(ExactFramesTest, ASessionKeepsTheExactRenderer) {
   QTemporaryDir dir;
   const QString path = dir.filePath("session.json");
-  animation().set_exact_renderer(*find_exact_renderer("vtk"));
+  window().model()->set_exact_renderer("vtk");
   ASSERT_TRUE(window().save_session(path, false));
-  animation().set_exact_renderer(*find_exact_renderer("core"));
+  window().model()->set_exact_renderer("core");
   ASSERT_TRUE(window().load_session(path)) << window().message().toStdString();
   EXPECT_EQ(animation().exact_renderer().name, "vtk");
   EXPECT_EQ(read_session_file(path.toStdString()).exact_renderer, "vtk");
@@ -155,8 +155,8 @@ TEST_F(ExactFramesTest, ASessionWithAnUnknownRendererIsRefusedAndChangesNothing)
 }
 
 TEST(ExactRendererOption, TheCommandLineChoosesARendererAndRefusesUnknownOnes) {
-  EXPECT_TRUE(parse_launch_options({}).animation_exact.empty());
-  EXPECT_EQ(parse_launch_options({"--animation-exact", "vtk"}).animation_exact, "vtk");
+  EXPECT_EQ(parse_launch_options({}).state.exact_renderer, "core");
+  EXPECT_EQ(parse_launch_options({"--animation-exact", "vtk"}).state.exact_renderer, "vtk");
   try {
     parse_launch_options({"--animation-exact", "povray"});
     ADD_FAILURE() << "an unknown renderer was accepted";

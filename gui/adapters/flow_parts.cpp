@@ -1,4 +1,4 @@
-#include "views/flow_parts.h"
+#include "adapters/flow_parts.h"
 
 #include <cmath>
 

@@ -1,23 +1,14 @@
-// The window's session and exports: capture the session of a window, apply a loaded one
-// (checking every file it names before anything changes), and write the animation as
-// numbered PNGs, a video (MP4, GIF or Ogg Theora) or the per-frame CSV. File dialogs live in the
-// window; these functions never overwrite an existing file unless told to.
+// The window's exports: the animation view as numbered PNGs, a video (MP4, GIF or Ogg
+// Theora) or the per-frame CSV. File dialogs live in the window; these functions never
+// overwrite an existing file unless told to. (Sessions are the window model's state:
+// gui/models/window_state_file.h.)
 #pragma once
 
 #include <QString>
 
-#include "formats/session_file.h"
-
 namespace oflab {
 
 class MainWindow;
-
-// The window's current session.
-Session capture_session(MainWindow* window);
-
-// Applies a session. Returns false with *error set, changing nothing, when a file it names
-// (texture, script, scene, viewer script) cannot be read or a value is unknown.
-bool apply_session(MainWindow* window, const Session& session, QString* error);
 
 // Plays the animation view's source from frame 0 to its last frame and writes the whole
 // view as on screen for each frame (every panel of its layout, grabbed with

@@ -1,4 +1,4 @@
-#include "adapters/flow_renderer.h"
+#include "views/flow_renderer.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -8,12 +8,12 @@
 #include <stdexcept>
 
 #include "adapters/frame_images.h"
+#include "adapters/paint_helpers.h"
+#include "adapters/palette.h"
 #include "engine/engine.h"
 #include "flow/homography.h"
 #include "image/warp.h"
 #include "scene/view_culling.h"
-#include "views/paint_helpers.h"
-#include "views/palette.h"
 
 namespace oflab {
 namespace {

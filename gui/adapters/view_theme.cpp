@@ -1,4 +1,4 @@
-#include "views/view_theme.h"
+#include "adapters/view_theme.h"
 
 namespace oflab {
 

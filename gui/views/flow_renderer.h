@@ -20,10 +20,10 @@
 #include <QTransform>
 #include <vector>
 
-#include "adapters/flow_display.h"
+#include "adapters/view_theme.h"
 #include "image/image.h"
 #include "image/layer.h"
-#include "views/view_theme.h"
+#include "models/flow_display.h"
 
 class QPainter;
 

@@ -3,8 +3,8 @@
 
 #include <QColor>
 
-#include "views/palette.h"
-#include "views/view_theme.h"
+#include "adapters/palette.h"
+#include "adapters/view_theme.h"
 
 namespace oflab {
 

@@ -1,4 +1,4 @@
-#include "views/basis_catalog.h"
+#include "models/basis_catalog.h"
 
 #include <cmath>
 

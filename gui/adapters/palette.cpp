@@ -1,4 +1,4 @@
-#include "views/palette.h"
+#include "adapters/palette.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,118 @@
+// The one home of the window's state (gui/models/window_state.h): the scene model (the
+// plane, its motion or script, the texture and the frame), the animation model (what plays
+// and the engine's settings), the policy comparison, and everything else the window shows
+// (the view in front, each view's options, presentation mode, play rate and playing, the
+// lesson). Views read and edit the state through this model and redraw on its signals;
+// they never read each other. The window applies a whole state with apply() (a lesson, the
+// command line, a session) and captures one with state().
+//
+// Every setter checks its value with the same rule as the files and the command line
+// (core/engine/limits.h, window_state_problem): a refused value changes nothing and is
+// reported with input_rejected, naming the field, the value and the allowed range.
+#pragma once
+
+#include <QObject>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "models/window_state.h"
+
+namespace oflab {
+
+class AnimationModel;
+class PolicyComparison;
+class SceneModel;
+
+class WindowModel : public QObject {
+  Q_OBJECT
+
+ public:
+  // The default window (WindowState{}). `view_names` are the views the window has (the view
+  // table's names, gui/app/view_table.h), in order; the first is in front.
+  explicit WindowModel(std::vector<std::string> view_names, QObject* parent = nullptr);
+  ~WindowModel() override;
+
+  SceneModel* scene() const { return scene_; }
+  AnimationModel* animation() const { return animation_; }
+  // The policies the animation view's comparison layout plays, kept on the scene's frame.
+  PolicyComparison& comparison() const { return *comparison_; }
+
+  // The whole state as the window shows it now.
+  WindowState state() const;
+  // Applies a whole state: checks everything first (window_state_problem, the view, the
+  // source kind and its files, the exact renderer, the lesson, the texture and script files)
+  // and changes nothing, returning false with *error set ("field: problem"), when any check
+  // fails. Emits every signal below on success.
+  bool apply(const WindowState& state, QString* error);
+
+  const std::vector<std::string>& view_names() const { return view_names_; }
+  const std::string& view() const { return view_; }
+  bool set_view(const std::string& name);  // false (and input_rejected) for an unknown view
+
+  const FlowDisplay& flow_display() const { return flow_; }
+  void set_flow_display(const FlowDisplay& display);
+  BasisKind basis() const { return basis_; }
+  void set_basis(BasisKind basis);
+  bool basis_playing() const { return basis_playing_; }
+  void set_basis_playing(bool playing);
+
+  PanelDisplay panel_display() const { return display_; }
+  void set_panel_display(PanelDisplay display);
+  // The compared policies by registry name; refused unless 1 .. kMaxComparedPolicies
+  // distinct known names.
+  std::vector<std::string> compared() const;
+  bool set_compared(const std::vector<std::string>& names);
+  const std::string& exact_renderer() const { return exact_renderer_; }
+  bool set_exact_renderer(const std::string& name);
+  double zoom() const { return zoom_; }
+  bool set_zoom(double zoom);  // refused outside limits::kZoom
+
+  bool presentation() const { return presentation_; }
+  void set_presentation(bool on);
+  int play_rate() const { return play_rate_; }
+  bool set_play_rate(int frames_per_second);  // refused outside limits::kPlayRate
+  bool playing() const { return playing_; }
+  void set_playing(bool playing);
+
+  // The lesson whose narrative shows; empty for none. Set by apply() only.
+  const std::string& lesson() const { return lesson_; }
+
+  // Reports a refused value from a control (the control keeps the model's value): the same
+  // signal as the model's own refusals.
+  void reject(const QString& message) { emit input_rejected(message); }
+
+ signals:
+  void view_changed();
+  void flow_display_changed();
+  void basis_changed();  // the basis or its playing
+  // The animation view's layout, compared policies, exact renderer or zoom.
+  void panels_changed();
+  void presentation_changed();
+  void play_changed();  // the play rate or playing
+  void lesson_changed();
+  void input_rejected(const QString& message);
+
+ private:
+  // The checks of apply() that need the window's tables and the file system; "" when none
+  // fails.
+  std::string problem(const WindowState& state) const;
+
+  std::vector<std::string> view_names_;
+  SceneModel* scene_;
+  AnimationModel* animation_;
+  std::unique_ptr<PolicyComparison> comparison_;
+  std::string view_;
+  FlowDisplay flow_;
+  BasisKind basis_ = BasisKind::kPlanar;
+  bool basis_playing_ = false;
+  PanelDisplay display_ = PanelDisplay::kSideBySide;
+  std::string exact_renderer_ = "core";
+  double zoom_ = 1.0;
+  bool presentation_ = false;
+  int play_rate_ = 30;
+  bool playing_ = false;
+  std::string lesson_;
+};
+
+}  // namespace oflab

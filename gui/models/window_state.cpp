@@ -1,0 +1,168 @@
+#include "models/window_state.h"
+
+#include <algorithm>
+
+#include "engine/limits.h"
+#include "engine/reuse_policy.h"
+
+namespace oflab {
+namespace {
+
+constexpr PanelDisplay kDisplays[] = {PanelDisplay::kSideBySide, PanelDisplay::kDifference,
+                                      PanelDisplay::kBlink, PanelDisplay::kComparison};
+
+bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
+
+bool same(const PlaneScene& a, const PlaneScene& b) {
+  const Camera &ca = a.camera, &cb = b.camera;
+  const PlanePose &pa = a.pose, &pb = b.pose;
+  return ca.focal_px == cb.focal_px && ca.cx == cb.cx && ca.cy == cb.cy && ca.width == cb.width &&
+         ca.height == cb.height && same(pa.point, pb.point) && same(pa.normal, pb.normal) &&
+         same(pa.up, pb.up) && same(pa.size, pb.size) && pa.texture_size == pb.texture_size &&
+         same(a.motion.velocity, b.motion.velocity) && same(a.motion.omega, b.motion.omega) &&
+         a.motion.model == b.motion.model;
+}
+
+bool same(const EngineSettings& a, const EngineSettings& b) {
+  return a.policy == b.policy && a.thresholds == b.thresholds && a.delta == b.delta &&
+         a.sampling == b.sampling && a.max_magnification == b.max_magnification &&
+         a.near == b.near && a.guard_band == b.guard_band && a.content.kind == b.content.kind &&
+         a.content.quality == b.content.quality && same(a.content.light, b.content.light) &&
+         a.budget.unit == b.budget.unit && a.budget.amount == b.budget.amount;
+}
+
+bool same(const FlowDisplay& a, const FlowDisplay& b) {
+  for (const FlowDrawOption& option : flow_draw_options()) {
+    if (a.*option.member != b.*option.member) return false;
+  }
+  return a.part == b.part && a.spacing_px == b.spacing_px;
+}
+
+// "field: what problem" when `limit` refuses `value`, else "".
+std::string check(const char* field, const Limit& limit, double value) {
+  const std::string problem = limit.problem(value);
+  return problem.empty() ? problem : std::string(field) + ": " + limit.what + " " + problem;
+}
+
+// The first non-empty phrase of `problems`, or "".
+std::string first_of(std::initializer_list<std::string> problems) {
+  for (const std::string& p : problems) {
+    if (!p.empty()) return p;
+  }
+  return "";
+}
+
+std::string check_each(const char* field, const Limit& limit, const Vec3& v) {
+  return first_of({check(field, limit, v.x), check(field, limit, v.y), check(field, limit, v.z)});
+}
+
+}  // namespace
+
+std::string plane_state_problem(const PlaneScene& p) {
+  using namespace limits;
+  // What makes the plane undrawable first (behind the eye, seen edge on): the clearer reason.
+  const std::string drawable = plane_scene_problem(p);
+  if (!drawable.empty()) return "plane: " + drawable;
+  return first_of({
+      check("plane.camera.focal_px", kFocalLength, p.camera.focal_px),
+      check("plane.camera.width", kImageSize, p.camera.width),
+      check("plane.camera.height", kImageSize, p.camera.height),
+      check("plane.pose.point", kDistance, p.pose.point.z),
+      check("plane.pose.size", kPlaneSize, p.pose.size.x),
+      check("plane.pose.size", kPlaneSize, p.pose.size.y),
+      check_each("plane.motion.velocity", kVelocity, p.motion.velocity),
+      check_each("plane.motion.omega", kAngularVelocity, p.motion.omega),
+  });
+}
+
+std::string settings_state_problem(const EngineSettings& s) {
+  using namespace limits;
+  for (double t : s.thresholds) {
+    const std::string p = check("animation.thresholds", kThreshold, t);
+    if (!p.empty()) return p;
+  }
+  if (s.budget.unit == FrameBudget::Unit::kPixels) {
+    return check("animation.budget_pixels", kBudgetPixels, s.budget.amount);
+  }
+  if (s.budget.unit == FrameBudget::Unit::kMilliseconds) {
+    return check("animation.budget_ms", kBudgetMs, s.budget.amount);
+  }
+  return check("animation.content_quality", kContentQuality, s.content.quality);
+}
+
+namespace {
+
+std::string compared_problem(const std::vector<std::string>& compared) {
+  if (compared.empty() || int(compared.size()) > kMaxComparedPolicies) {
+    return "animation.compared: " + std::to_string(compared.size()) + " policies; give 1.." +
+           std::to_string(kMaxComparedPolicies);
+  }
+  for (size_t i = 0; i < compared.size(); ++i) {
+    if (!find_reuse_policy(compared[i])) {
+      return "animation.compared: unknown policy '" + compared[i] + "' (one of " +
+             reuse_policy_names() + ")";
+    }
+    if (std::find(compared.begin(), compared.begin() + long(i), compared[i]) !=
+        compared.begin() + long(i)) {
+      return "animation.compared: '" + compared[i] + "' is named twice";
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string panel_display_names(const std::string& separator) {
+  std::string names;
+  for (PanelDisplay d : kDisplays)
+    names += (names.empty() ? "" : separator) + panel_display_name(d);
+  return names;
+}
+
+const char* panel_display_name(PanelDisplay display) {
+  switch (display) {
+    case PanelDisplay::kDifference:
+      return "difference";
+    case PanelDisplay::kBlink:
+      return "blink";
+    case PanelDisplay::kComparison:
+      return "comparison";
+    default:
+      return "side-by-side";
+  }
+}
+
+bool parse_panel_display(const std::string& text, PanelDisplay* display) {
+  for (PanelDisplay d : kDisplays) {
+    if (text == panel_display_name(d)) {
+      *display = d;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool operator==(const WindowState& a, const WindowState& b) {
+  return a.view == b.view && same(a.flow, b.flow) && a.basis == b.basis &&
+         a.basis_playing == b.basis_playing && same(a.plane, b.plane) && a.script == b.script &&
+         a.texture == b.texture && a.source == b.source && same(a.settings, b.settings) &&
+         a.display == b.display && a.compared == b.compared &&
+         a.exact_renderer == b.exact_renderer && a.zoom == b.zoom &&
+         a.presentation == b.presentation && a.play_rate == b.play_rate && a.playing == b.playing &&
+         a.frame == b.frame && a.lesson == b.lesson;
+}
+
+std::string window_state_problem(const WindowState& s) {
+  using namespace limits;
+  if (!s.settings.policy) return "animation.mode: no reuse policy";
+  if (!(s.flow.spacing_px == 0.0 || (s.flow.spacing_px >= 4.0 && s.flow.spacing_px <= 1000.0))) {
+    return "flow.spacing_px: must be 0 (automatic) or 4..1000 px";
+  }
+  return first_of({plane_state_problem(s.plane), settings_state_problem(s.settings),
+                   compared_problem(s.compared), check("animation.zoom", kZoom, s.zoom),
+                   check("play_rate", kPlayRate, s.play_rate),
+                   check("frame", kFrameCount, s.frame)});
+}
+
+}  // namespace oflab
