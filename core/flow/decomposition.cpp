@@ -1,4 +1,4 @@
-// Eq. 20 and corrected eq. 55 (planar-flow-math.md section 5).
+// Eq. 20 and corrected eq. 55 (manual/flow-math.md section 5).
 #include "flow/decomposition.h"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Decompositions of a homography W (dissertation eq. 20 and eq. 55, corrected as in
-// manual/theory.md#errata, items 18, 19, 26, 27; planar-flow-math.md section 5).
+// manual/theory.md#errata, items 18, 19, 26, 27; manual/flow-math.md section 5).
 //
 // W is first normalised to W33 = 1 and written [[a,b,c],[d,e,f],[g,h,1]]; A is its
 // Jacobian at the source origin, A = [[a - c g, b - c h], [d - f g, e - f h]].

@@ -1,4 +1,4 @@
-// Planar flow coefficients from the velocity gradient B (planar-flow-math.md section 2).
+// Planar flow coefficients from the velocity gradient B (manual/flow-math.md section 2).
 #include "flow/flow_field.h"
 
 namespace oflab {

@@ -30,7 +30,7 @@ struct PlanarFlowCoefficients {
 Mat3 velocity_gradient(const PlanePose& pose, const RigidMotion& motion);
 
 // The 8 coefficients at the principal point, in centred pixels (table of
-// planar-flow-math.md section 2). Preconditions: valid camera and pose.
+// manual/flow-math.md section 2). Preconditions: valid camera and pose.
 PlanarFlowCoefficients planar_flow_coefficients(const Camera& camera, const PlanePose& pose,
                                                 const RigidMotion& motion);
 
@@ -48,7 +48,7 @@ Vec2 exact_flow_at(const Camera& camera, const PlanePose& pose, const RigidMotio
 
 // Image acceleration (second time derivative of the image position) at time 0 of the plane
 // point seen at centred pixel p, pixels per unit time squared, for the given motion model
-// (planar-flow-math.md section 2; it replaces the dissertation's eq. 48).
+// (manual/flow-math.md section 2; it replaces the dissertation's eq. 48).
 Vec2 image_acceleration(const Camera& camera, const PlanePose& pose, const RigidMotion& motion,
                         const Vec2& p);
 

@@ -1,4 +1,4 @@
-// Taylor and exact homographies of a moving plane (planar-flow-math.md section 4).
+// Taylor and exact homographies of a moving plane (manual/flow-math.md section 4).
 #include "flow/homography.h"
 
 #include <algorithm>

@@ -42,7 +42,7 @@ double max_corner_distance(const Mat3& h, const std::array<Vec2, 4>& from,
 namespace oflab {
 
 // Largest corner error, pixels, of each level of approximation of the plane's image after
-// time dt, against the exact corners (planar-flow-math.md section 4.2, default case):
+// time dt, against the exact corners (manual/flow-math.md section 4.2, default case):
 //  none: the corners do not move; translate: by (tx, ty) dt; affine: by the first-order
 //  (affine) part of the Taylor homography; taylor: by the full Taylor homography.
 // Coefficients are taken about the principal point. Precondition: valid camera and pose,

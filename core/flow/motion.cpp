@@ -1,4 +1,4 @@
-// Finite rigid steps for the three motion models (planar-flow-math.md section 4.2).
+// Finite rigid steps for the three motion models (manual/flow-math.md section 4.2).
 #include "flow/motion.h"
 
 #include <cmath>

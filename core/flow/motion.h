@@ -1,5 +1,5 @@
 // Rigid motion of a plane relative to the viewer (dissertation eq. 21 and section 4.2;
-// reference planar-flow-math.md section 4.2).
+// manual/flow-math.md section 4.2).
 //
 // Velocities are in world units per unit time and radians per unit time, in the viewer
 // frame. The unit of time is the caller's (the scripts use frames); every result scales
@@ -36,7 +36,7 @@ const char* motion_model_name(MotionModel model);
 Vec3 eye_velocity(const RigidMotion& motion, const PlanePose& pose);
 
 // The reference velocity V_ref of the image-acceleration formula: 0 for Screw, V for
-// RotateThenTranslate, V_c for SpinAboutCentre (planar-flow-math.md section 2).
+// RotateThenTranslate, V_c for SpinAboutCentre (manual/flow-math.md section 2).
 Vec3 acceleration_reference_velocity(const RigidMotion& motion, const PlanePose& pose);
 
 // A finite rigid step R' = Q R + s of every body point over time dt.

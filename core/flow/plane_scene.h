@@ -1,6 +1,6 @@
 // The "current scene" every view draws: one camera, one textured plane and its rigid
-// motion (core types only; no Qt, no VTK). The default demo is the reference default
-// case of planar-flow-math.md section 4.2.
+// motion (core types only; no Qt, no VTK). The default demo is the default case of
+// manual/flow-math.md section 4.2.
 #pragma once
 
 #include <string>

@@ -5,7 +5,7 @@
 //
 // Projective maps send convex polygons to convex polygons only when the homography's
 // denominator g*x + h*y + i keeps one sign over the polygon (erratum 30 of
-// planar-flow-math.md). clip_near_horizon() enforces that before transform() is applied.
+// manual/theory.md#errata). clip_near_horizon() enforces that before transform() is applied.
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 // Scan conversion of a convex polygon into pixel spans, one per row, with two active
-// edges (dissertation appendix A.1, fig. 27; errata 28-30 of planar-flow-math.md: the
+// edges (dissertation appendix A.1, fig. 27; errata 28-30 of manual/theory.md#errata: the
 // right gap runs from s2 to the right end, and a polygon has exactly two crossings per
 // scanline only because it is convex, which the horizon clip guarantees).
 //

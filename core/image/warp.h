@@ -1,5 +1,5 @@
 // Affine and perspective warps of layer images (dissertation appendix A.1, with errata
-// 28-30 of planar-flow-math.md fixed). The project's hot path; see manual/warping.md.
+// 28-30 of manual/theory.md#errata fixed). The project's hot path; see manual/warping.md.
 //
 // Frames and units. A warp matrix M maps continuous pixel coordinates of the source
 // layer (x right, y down, origin at the top-left corner of pixel (0, 0)) to continuous

@@ -1,5 +1,5 @@
 // The instantaneous flow of the current scene, split into the parts the flow view can
-// show (dissertation section 4.4; planar-flow-math.md section 2). Plain C++ over core:
+// show (dissertation section 4.4; manual/flow-math.md section 2). Plain C++ over core:
 // every value comes from core's planar_flow_coefficients, taylor_terms, taylor_flow_at,
 // flow_at and exact_flow_at; nothing here re-derives the flow.
 //

@@ -35,7 +35,7 @@ inline FlowCase random_flow_case(std::mt19937& rng, int index) {
   return c;
 }
 
-// The worked example of planar-flow-math.md section 4.2 ("Default case"): a tilted
+// The worked example of manual/flow-math.md section 4.2 ("Default case"): a tilted
 // 1.0 x 0.8 plane at depth 3 with a general screw motion, f = 600 px, 800 x 600 image.
 inline FlowCase default_case() {
   FlowCase c;

@@ -128,7 +128,7 @@ TEST(PlanarFlow, ImageAccelerationMatchesSecondDifferenceForEveryMotionModel) {
   }
 }
 
-// The worked example of the reference (planar-flow-math.md section 4.2, "Default case").
+// The worked example of manual/flow-math.md section 4.2 ("Default case").
 TEST(PlanarFlow, DefaultCaseMatchesPublishedWorkedExample) {
   const FlowCase c = testing::default_case();
   const PlanarFlowCoefficients k = planar_flow_coefficients(c.camera, c.pose, c.motion);
