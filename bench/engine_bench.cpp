@@ -38,7 +38,7 @@ struct Samples {
 // right after the engine's frame. Returns the engine's timed milliseconds of the pass.
 double play_pass(const MotionScript& script, const Layer& texture, const EngineSettings& settings,
                  Image& frame, Samples* samples) {
-  PlaneAnimator engine(script.camera, texture, settings);
+  PlaneEngine engine(script.camera, texture, settings);
   double total_ms = engine.start(script.frames[0].pose).time_ms;
   WarpOptions options;
   options.sampling = settings.sampling;

@@ -73,7 +73,8 @@ void image(const std::string& bytes) {
 
 // The arguments: the input split at NUL bytes or newlines. The first argument chooses the
 // headless command (flow or slices, whose option readers are the CLI's), the rest are its
-// options; usage errors are exit code 2, never an exception.
+// options; a usage error is the UsageError that run_cli turns into exit code 2, and any
+// other exception or exit code is a finding.
 void command_line(const std::string& bytes) {
   std::vector<std::string> args;
   std::string current;
@@ -88,9 +89,12 @@ void command_line(const std::string& bytes) {
   args.push_back(current);
   std::ostringstream out, err;
   const CommandArgs rest(args.begin() + 1, args.end());
-  const int code =
-      args[0] == "slices" ? run_slices_command(rest, out, err) : run_flow_command(rest, out, err);
-  if (code != 0 && code != 2) throw std::logic_error("unexpected exit code");
+  try {
+    const int code =
+        args[0] == "slices" ? run_slices_command(rest, out, err) : run_flow_command(rest, out, err);
+    if (code != 0 && code != 2) throw std::logic_error("unexpected exit code");
+  } catch (const UsageError&) {  // what run_cli reports as exit code 2
+  }
 }
 
 }  // namespace

@@ -7,13 +7,13 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "cli/animate_options.h"
 #include "cli/animate_scene.h"
 #include "cli/animate_scene_shifting.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/script_file.h"
 
@@ -75,31 +75,14 @@ int read_repeat(const CliArgs& a, const MotionScript& script) {
   return repeat;
 }
 
-int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  if (a.has("--repeat") && a.has("--scene")) {
-    throw UsageError("--repeat: plays a motion script again and again; not with --scene");
-  }
-  if (a.text_or("--mode", "") == "scene-shifting") {
-    if (!a.has("--scene")) throw UsageError("--mode scene-shifting: needs --scene NAME|FILE");
-    return animate_scene_shifting(a, out, err);
-  }
-  if (a.has("--epsilon")) throw UsageError("--epsilon: needs --mode scene-shifting");
-  if (a.has("--scene")) return animate_scene(a, out, err);
+// The single-plane form: a motion script and a texture.
+int animate_plane(const CliArgs& a, std::ostream& out, std::ostream& err) {
   for (const char* option : kSceneOnlyOptions) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
   }
   const std::string script_arg = a.values("--script").at(0);
-  std::string script_path;
-  try {
-    script_path = resolve_script_path(script_arg);
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--script: ") + e.what());
-  }
-  RunSource source;
-  source.script = read_script_file(script_path);
+  RunSource source = read_plane_source(a);
   source.repeat = read_repeat(a, source.script);
-  source.texture = read_image(a.text_or("--texture", default_texture_path()));
-  source.settings.engine = read_engine_settings(a);
   const EngineSettings& settings = source.settings.engine;
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
@@ -123,6 +106,37 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
     print_summary(summary, name, *settings.policy, out);
   }
   return 0;
+}
+
+// The form of `animate` for each kind of source (analysis/runs/source_kinds.h).
+struct AnimateForm {
+  const char* kind;
+  int (*run)(const CliArgs& args, std::ostream& out, std::ostream& err);
+};
+constexpr AnimateForm kAnimateForms[] = {
+    {"plane", animate_plane}, {"scene", animate_scene}, {"scene-shifting", animate_scene_shifting}};
+
+// The kind --mode selects (a mode of source_kind_modes, which needs --scene), else the
+// scene with --scene, else the plane. Throws UsageError naming the option.
+const SourceKind& animate_kind(const CliArgs& a) {
+  const std::string mode = a.text_or("--mode", "");
+  if (const SourceKind* kind = source_kind_for_mode(mode)) {
+    if (!a.has("--scene")) throw UsageError("--mode " + mode + ": needs --scene NAME|FILE");
+    return *kind;
+  }
+  if (a.has("--epsilon")) throw UsageError("--epsilon: needs --mode scene-shifting");
+  return source_kind(a.has("--scene") ? "scene" : "plane");
+}
+
+int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  if (a.has("--repeat") && a.has("--scene")) {
+    throw UsageError("--repeat: plays a motion script again and again; not with --scene");
+  }
+  const std::string kind = animate_kind(a).name;
+  for (const AnimateForm& form : kAnimateForms) {
+    if (kind == form.kind) return form.run(a, out, err);
+  }
+  throw std::logic_error("oflab-cli animate: no form for the source kind '" + kind + "'");
 }
 
 }  // namespace
@@ -159,9 +173,6 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--no-skip-hidden", 0},
                            {"--epsilon", 1}});
     return animate(a, out, err);
-  } catch (const UsageError& e) {
-    err << "oflab-cli animate: " << e.what() << "\n";
-    return 2;
   } catch (const ScriptError& e) {
     err << "oflab-cli animate: " << e.what() << "\n";
     return 2;

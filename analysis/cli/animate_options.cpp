@@ -7,10 +7,13 @@
 #include <iomanip>
 #include <ostream>
 #include <sstream>
+#include <tuple>
 
+#include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/obj_scene.h"
 #include "formats/scene_file.h"
+#include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
 
 namespace oflab {
@@ -58,18 +61,11 @@ FrameBudget read_frame_budget(const CliArgs& a) {
     throw UsageError("--budget-ms: give either --budget-pixels or --budget-ms, not both");
   }
   FrameBudget budget;
-  const std::pair<const char*, FrameBudget::Unit> options[] = {
-      {"--budget-pixels", FrameBudget::Unit::kPixels},
-      {"--budget-ms", FrameBudget::Unit::kMilliseconds}};
-  for (const auto& [name, unit] : options) {
-    if (!a.has(name)) continue;
-    const double amount = a.number(name);
-    const bool pixels = unit == FrameBudget::Unit::kPixels;
-    if (amount < 0.0 || amount > kMaxFrameBudget) {
-      throw UsageError(std::string(name) + ": '" + a.values(name).at(0) + "' is outside 0.." +
-                       (pixels ? "1e9 pixels written per frame" : "1e9 milliseconds per frame"));
-    }
-    budget = {unit, amount};
+  const std::tuple<const char*, FrameBudget::Unit, const Limit&> options[] = {
+      {"--budget-pixels", FrameBudget::Unit::kPixels, limits::kBudgetPixels},
+      {"--budget-ms", FrameBudget::Unit::kMilliseconds, limits::kBudgetMs}};
+  for (const auto& [name, unit, limit] : options) {
+    if (a.has(name)) budget = {unit, a.number_in(name, limit)};
   }
   return budget;
 }
@@ -79,37 +75,27 @@ EngineSettings read_engine_settings(const CliArgs& a) {
   const std::string mode = a.text_or("--mode", default_reuse_policy().name);
   s.policy = find_reuse_policy(mode);
   if (!s.policy) {
-    throw UsageError("--mode: '" + mode + "' is not one of " + reuse_policy_names() +
-                     ", scene-shifting");
+    throw UsageError("--mode: '" + mode + "' is not one of " + reuse_policy_names() + ", " +
+                     source_kind_modes());
   }
   if (a.has("--threshold") && a.has("--thresholds")) {
     throw UsageError("--thresholds: give either --threshold or --thresholds, not both");
   }
-  if (a.has("--threshold")) s.thresholds.fill(a.number("--threshold"));
+  if (a.has("--threshold")) s.thresholds.fill(a.number_in("--threshold", limits::kThreshold));
   if (a.has("--thresholds")) {
-    const auto& v = a.values("--thresholds");
-    for (int i = 0; i < kTermCount; ++i) {
-      s.thresholds[i] = CliArgs({"--t", v[i]}, {{"--t", 1}}).number("--t");
-    }
+    const std::vector<double> t = a.numbers_in("--thresholds", limits::kThreshold);
+    std::copy(t.begin(), t.end(), s.thresholds.begin());  // kTermCount values (the arity)
   }
-  for (double t : s.thresholds) {
-    if (!(t >= 0.0)) throw UsageError("--threshold: thresholds must be zero or positive pixels");
-  }
-  const std::string delta = a.text_or("--delta", "dissertation");
+  const std::string delta = a.text_or("--delta", delta_policy_name(s.delta));
   if (!parse_delta_policy(delta, &s.delta)) {
-    throw UsageError("--delta: '" + delta +
-                     "' is not one of 1, det, sqrt, fourth-root, dissertation");
+    throw UsageError("--delta: '" + delta + "' is not one of " + delta_policy_name_list());
   }
   s.sampling = read_sampling(a);
   const std::string content = a.text_or("--content", content_name(s.content.kind));
   if (!parse_content(content, &s.content.kind)) {
     throw UsageError("--content: '" + content + "' is not one of " + content_name_list());
   }
-  s.content.quality = a.integer_or("--quality", s.content.quality);
-  if (s.content.quality < 1 || s.content.quality > kMaxContentQuality) {
-    throw UsageError("--quality: " + std::to_string(s.content.quality) + " is outside 1.." +
-                     std::to_string(kMaxContentQuality));
-  }
+  if (a.has("--quality")) s.content.quality = a.integer_in("--quality", limits::kContentQuality);
   s.budget = read_frame_budget(a);
   // compare checks its --policies list itself (analysis/cli/compare_command.cpp).
   if (s.budget.unit != FrameBudget::Unit::kNone && !s.policy->shares_budget &&
@@ -119,6 +105,20 @@ EngineSettings read_engine_settings(const CliArgs& a) {
                      "'");
   }
   return s;
+}
+
+RunSource read_plane_source(const CliArgs& a) {
+  std::string path;
+  try {
+    path = resolve_script_path(a.values("--script").at(0));
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--script: ") + e.what());
+  }
+  RunSource source;
+  source.script = read_script_file(path);
+  source.texture = read_image(a.text_or("--texture", default_texture_path()));
+  source.settings.engine = read_engine_settings(a);
+  return source;
 }
 
 Sampling read_sampling(const CliArgs& a) {
@@ -132,10 +132,7 @@ Sampling read_sampling(const CliArgs& a) {
 
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   RunOutput out;
-  if (a.has("--frames")) {
-    out.max_frames = a.integer("--frames");
-    if (out.max_frames < 1) throw UsageError("--frames: must be at least 1");
-  }
+  if (a.has("--frames")) out.max_frames = a.integer_in("--frames", limits::kPlayedFrames);
   out.timing_repetitions = a.integer_or("--repeat-timing", kDefaultTimingRepetitions);
   if (out.timing_repetitions < 1 || out.timing_repetitions > kMaxTimingRepetitions) {
     throw UsageError("--repeat-timing: " + std::to_string(out.timing_repetitions) +

@@ -19,20 +19,27 @@
 
 namespace oflab {
 
-// --mode (a reuse policy of core/engine/reuse_policy.h; "scene-shifting" is handled before),
-// --threshold / --thresholds, --delta, --sampling, --content texture|shaded|impostor,
-// --quality N (its samples per pixel or detail, 1..kMaxContentQuality) and the frame budget
-// (read_frame_budget), which needs --mode budget unless the command takes --policies.
-// Throws UsageError naming the option and the accepted values for a bad value.
+// --mode (a reuse policy of core/engine/reuse_policy.h; a mode that selects a source kind,
+// analysis/runs/source_kinds.h, is handled before),
+// --threshold / --thresholds (pixels, limits::kThreshold), --delta, --sampling, --content
+// texture|shaded|impostor, --quality N (its samples per pixel or detail,
+// limits::kContentQuality) and the frame budget (read_frame_budget), which needs --mode
+// budget unless the command takes --policies. Throws UsageError naming the option and the
+// accepted values or range for a bad value.
 EngineSettings read_engine_settings(const CliArgs& args);
 
-// The largest frame budget the CLI accepts, in pixels or milliseconds per frame.
-constexpr double kMaxFrameBudget = 1e9;
+// The single-plane source of the options: the motion script of --script (a shipped name or
+// a file; required), the texture of --texture (default: the shipped butterfly) and the
+// engine settings (read_engine_settings); plays the script once. Throws UsageError naming
+// the option for an unknown --script name or a bad option, ScriptError for a broken script
+// file and ImageFileError for an unreadable texture.
+RunSource read_plane_source(const CliArgs& args);
 
-// --budget-pixels N (pixels written per frame) or --budget-ms T (milliseconds per frame,
-// converted with the run's measured cost per pixel of each level, core/engine/budget.h), at
-// most one of them, 0..kMaxFrameBudget; FrameBudget::Unit::kNone with neither. Throws
-// UsageError naming the option for a bad value or when both are given.
+// --budget-pixels N (pixels written per frame, limits::kBudgetPixels) or --budget-ms T
+// (milliseconds per frame, limits::kBudgetMs, converted with the run's measured cost per
+// pixel of each level, core/engine/budget.h), at most one of them;
+// FrameBudget::Unit::kNone with neither. Throws UsageError naming the option for a bad
+// value or when both are given.
 FrameBudget read_frame_budget(const CliArgs& args);
 
 // --sampling nearest|bilinear (default nearest). Throws UsageError naming the option and the
@@ -40,8 +47,9 @@ FrameBudget read_frame_budget(const CliArgs& args);
 Sampling read_sampling(const CliArgs& args);
 
 // What every form of `oflab-cli animate` does with its output and timing options: --frames N
-// (at most N frames; -1 for all), --repeat-timing N (timed passes after an untimed warm-up,
-// 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions; analysis/runs/run_driver.h),
+// (at most N frames, limits::kPlayedFrames; -1 for all when not given), --repeat-timing N (timed
+// passes after an untimed warm-up, 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions;
+// analysis/runs/run_driver.h),
 // --no-warm-up (the timed passes only), --out DIR (created, or an existing empty one;
 // --force for a non-empty one; DIR/frames.csv is written row by row as the run plays, so a
 // long run keeps no per-frame records, and DIR/summary.json after it), --frames-png

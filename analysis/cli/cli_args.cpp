@@ -93,6 +93,34 @@ std::string CliArgs::text_or(const std::string& name, const std::string& fallbac
   return has(name) ? values(name).at(0) : fallback;
 }
 
+std::vector<double> CliArgs::numbers_in(const std::string& name, const Limit& limit) const {
+  std::vector<double> numbers;
+  for (const std::string& text : values(name)) {
+    const double v = parse_number(name, text);
+    if (!limit.allows(v)) throw UsageError(name + ": " + limit.problem(v));
+    numbers.push_back(v);
+  }
+  return numbers;
+}
+
+double CliArgs::number_in(const std::string& name, const Limit& limit) const {
+  return numbers_in(name, limit).at(0);
+}
+
+int CliArgs::integer_in(const std::string& name, const Limit& limit) const {
+  return static_cast<int>(number_in(name, limit));
+}
+
+Vec2 CliArgs::vec2_in(const std::string& name, const Limit& limit) const {
+  const std::vector<double> v = numbers_in(name, limit);
+  return Vec2(v.at(0), v.at(1));
+}
+
+Vec3 CliArgs::vec3_in(const std::string& name, const Limit& limit) const {
+  const std::vector<double> v = numbers_in(name, limit);
+  return Vec3(v.at(0), v.at(1), v.at(2));
+}
+
 void prepare_out_dir(const std::string& dir, bool force) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/limits.h"
 #include "flow/geometry.h"
 
 namespace oflab {
@@ -41,6 +42,18 @@ class CliArgs {
   Vec2 vec2(const std::string& name) const;
   Vec3 vec3(const std::string& name) const;
   std::string text_or(const std::string& name, const std::string& fallback) const;
+
+  // The values of option `name` (required) checked against `limit` (core/engine/limits.h,
+  // the one rule for each kind of value): throws UsageError naming the option, the value and
+  // the range, "--threshold: 1e+06 is outside 0..100 px", or "--focal: 'x' is not a finite
+  // number" for text that is not a number. number_in reads the first value; integer_in
+  // needs a whole-number limit whose range fits an int; vec2_in and vec3_in check each
+  // component.
+  std::vector<double> numbers_in(const std::string& name, const Limit& limit) const;
+  double number_in(const std::string& name, const Limit& limit) const;
+  int integer_in(const std::string& name, const Limit& limit) const;
+  Vec2 vec2_in(const std::string& name, const Limit& limit) const;
+  Vec3 vec3_in(const std::string& name, const Limit& limit) const;
 
  private:
   double parse_number(const std::string& name, const std::string& text) const;

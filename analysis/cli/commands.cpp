@@ -4,11 +4,15 @@
 #include <ostream>
 #include <string>
 
+#include "cli/cli_args.h"
 #include "content/layer_content.h"
 #include "engine/reuse_policy.h"
 #include "experiments/experiments.h"
+#include "flow/decomposition.h"
+#include "flow/motion.h"
 #include "image/warp.h"
 #include "runs/run_driver.h"
+#include "runs/source_kinds.h"
 
 namespace oflab {
 
@@ -18,9 +22,8 @@ namespace {
 std::string animate_usage() {
   std::string usage = "oflab-cli animate --script NAME|FILE [--texture FILE]\n";
   usage += "               [--mode " + reuse_policy_names("|") + "]\n";
-  usage +=
-      "               [--threshold PX | --thresholds T0 T1 T2 T3]\n"
-      "               [--delta 1|det|sqrt|fourth-root|dissertation]\n";
+  usage += "               [--threshold PX | --thresholds T0 T1 T2 T3]\n";
+  usage += "               [--delta " + delta_policy_name_list("|") + "]\n";
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
   usage += "               [--budget-pixels N | --budget-ms T]   (--mode budget only)\n";
@@ -35,11 +38,22 @@ std::string animate_usage() {
       "               [--compare-conventional [--conventional-single-sample]]\n"
       "               [--near Z] [--guard-band G]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
-      "       oflab-cli animate --mode scene-shifting --scene NAME|FILE --script NAME|FILE\n"
+      "       oflab-cli animate --mode " +
+      source_kind_modes("|") +
+      " --scene NAME|FILE --script NAME|FILE\n"
       "               [--epsilon PX] [--sampling, --frames, --repeat-timing, --no-warm-up,\n"
       "               --out, --video, --json, --quiet as above]\n"
-      "  modes: the reuse policies of 'oflab-cli policies', or scene-shifting";
+      "  modes: the reuse policies of 'oflab-cli policies', or " +
+      source_kind_modes(", ");
   return usage;
+}
+
+// `flow --help`: the --motion values come from core/flow/motion.h.
+std::string flow_usage() {
+  return "oflab-cli flow --focal F --image W H --plane-point X Y Z --plane-normal NX NY NZ\n"
+         "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
+         "               --plane-size SW SH] [--dt T] [--motion " +
+         motion_model_name_list("|") + "] [--json]";
 }
 
 // `experiments --help`: the --only values come from the experiments table.
@@ -57,10 +71,7 @@ std::string experiments_usage() {
 const std::vector<Command>& all_commands() {
   static const std::vector<Command> commands = {
       {"flow", "instantaneous optic flow of a moving plane: coefficients, bases, homographies",
-       "oflab-cli flow --focal F --image W H --plane-point X Y Z --plane-normal NX NY NZ\n"
-       "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
-       "               --plane-size SW SH] [--dt T] [--motion screw|rt|centre] [--json]",
-       run_flow_command},
+       flow_usage(), run_flow_command},
       {"animate", "play a motion script through the engine: levels, errors, savings",
        animate_usage(), run_animate_command},
       {"policies", "list the engine's reuse policies (the values of animate --mode)",
@@ -111,7 +122,12 @@ int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
       out << "usage: " << c.usage << "\n";
       return 0;
     }
-    return c.run(rest, out, err);
+    try {
+      return c.run(rest, out, err);
+    } catch (const UsageError& e) {  // bad input, in any command: one line naming the option
+      err << "oflab-cli " << c.name << ": " << e.what() << "\n";
+      return 2;
+    }
   }
   err << "oflab-cli: unknown command '" << args[0] << "' (try oflab-cli --help)\n";
   return 2;

@@ -1,7 +1,8 @@
 // The subcommands of oflab-cli. Each takes its arguments (after the subcommand name) and
 // the output streams, and returns the process exit code: 0 on success, 2 on bad input
-// (one line on `err` naming the argument), 1 on a failure while running, and
-// kInternalErrorExitCode when an exception escapes every command (a bug, or memory run out).
+// (one line on `err` naming the argument; a subcommand throws UsageError for a bad option
+// and run_cli prints it), 1 on a failure while running, and kInternalErrorExitCode when an
+// exception escapes every command (a bug, or memory run out).
 #pragma once
 
 #include <functional>
@@ -50,7 +51,9 @@ int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream
 // scenes' tile texture (analysis/cli/make_scene_command.cpp, manual/scenes.md).
 int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
-// Dispatches argv[1..] to a subcommand; prints help for no arguments or --help.
+// Dispatches argv[1..] to a subcommand; prints help for no arguments or --help. A
+// UsageError (analysis/cli/cli_args.h) escaping a subcommand is reported here, for every
+// subcommand alike: "oflab-cli COMMAND: WHAT" on `err` and exit code 2.
 int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
 // The exit code of oflab-cli and oflab when an exception escaped everything that turns

@@ -10,7 +10,6 @@
 #include "cli/animate_scene.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/script_file.h"
 #include "runs/policy_runs.h"
@@ -32,17 +31,8 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
   for (const char* option : {"--near", "--guard-band", "--no-skip-hidden"}) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
   }
-  std::string path;
-  try {
-    path = resolve_script_path(a.values("--script").at(0));
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string("--script: ") + e.what());
-  }
-  source.script = read_script_file(path);
-  source.texture = read_image(a.text_or("--texture", default_texture_path()));
-  source.settings.engine = read_engine_settings(a);
   *kind = &source_kind("plane");
-  return source;
+  return read_plane_source(a);
 }
 
 std::ofstream open_output(const std::string& path) {
@@ -137,9 +127,6 @@ int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");
-  } catch (const UsageError& e) {
-    err << "oflab-cli compare: " << e.what() << "\n";
-    return 2;
   } catch (const ScriptError& e) {
     err << "oflab-cli compare: " << e.what() << "\n";
     return 2;

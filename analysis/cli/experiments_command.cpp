@@ -90,9 +90,8 @@ int run_experiments_command(const CommandArgs& original_args, std::ostream& out,
     out << "wrote " << (fs::path(options.out_dir) / "report.html").string() << " and report.md ("
         << outcome.charts << " charts) in " << static_cast<int>(outcome.seconds + 0.5) << " s\n";
     return 0;
-  } catch (const UsageError& e) {
-    err << "oflab-cli experiments: " << e.what() << "\n";
-    return 2;
+  } catch (const UsageError&) {
+    throw;  // run_cli reports it (exit code 2); not a failure while running
   } catch (const ChartError& e) {
     err << "oflab-cli experiments: " << e.what() << "\n";
     return 1;

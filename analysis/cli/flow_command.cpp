@@ -28,14 +28,9 @@ std::string option_for_field(const std::string& field) {
 }
 
 nlohmann::json flow_report(const CliArgs& a) {
-  const Vec2 image = a.vec2("--image");
-  if (image.x < 1 || image.y < 1 || image.x != std::floor(image.x) ||
-      image.y != std::floor(image.y)) {
-    throw UsageError("--image: width and height must be positive whole numbers");
-  }
-  const Camera camera =
-      make_camera(a.number("--focal"), static_cast<int>(image.x), static_cast<int>(image.y));
-  if (*camera_problem(camera)) throw UsageError(std::string("--focal: ") + camera_problem(camera));
+  const Vec2 image = a.vec2_in("--image", limits::kImageSize);
+  const Camera camera = make_camera(a.number_in("--focal", limits::kFocalLength),
+                                    static_cast<int>(image.x), static_cast<int>(image.y));
 
   PlanePose pose;
   pose.point = a.vec3("--plane-point");
@@ -47,7 +42,7 @@ nlohmann::json flow_report(const CliArgs& a) {
   }
   if (a.has("--plane-up")) {
     pose.up = a.vec3("--plane-up");
-    pose.size = a.vec2("--plane-size");
+    pose.size = a.vec2_in("--plane-size", limits::kPlaneSize);
   } else if (glm::length(glm::cross(pose.normal, pose.up)) < 1e-9 * glm::length(pose.normal)) {
     pose.up = Vec3(1.0, 0.0, 0.0);  // any up works for the flow; corners need a real one
   }
@@ -56,11 +51,11 @@ nlohmann::json flow_report(const CliArgs& a) {
     throw UsageError(option_for_field(problem.field) + ": " + problem.message);
 
   RigidMotion motion;
-  motion.velocity = a.vec3("--velocity");
-  motion.omega = a.vec3("--omega");
-  const std::string model = a.text_or("--motion", "screw");
+  motion.velocity = a.vec3_in("--velocity", limits::kVelocity);
+  motion.omega = a.vec3_in("--omega", limits::kAngularVelocity);
+  const std::string model = a.text_or("--motion", motion_model_name(motion.model));
   if (!parse_motion_model(model.c_str(), &motion.model)) {
-    throw UsageError("--motion: '" + model + "' is not one of screw, rt, centre");
+    throw UsageError("--motion: '" + model + "' is not one of " + motion_model_name_list());
   }
 
   const PlanarFlowCoefficients c = planar_flow_coefficients(camera, pose, motion);
@@ -118,30 +113,26 @@ void print_text(const nlohmann::json& j, std::ostream& out) {
 
 }  // namespace
 
-int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
-  try {
-    const CliArgs a(args, {{"--focal", 1},
-                           {"--image", 2},
-                           {"--plane-point", 3},
-                           {"--plane-normal", 3},
-                           {"--velocity", 3},
-                           {"--omega", 3},
-                           {"--plane-up", 3},
-                           {"--plane-size", 2},
-                           {"--dt", 1},
-                           {"--motion", 1},
-                           {"--json", 0}});
-    const nlohmann::json j = flow_report(a);
-    if (a.has("--json")) {
-      out << j.dump(2) << "\n";
-    } else {
-      print_text(j, out);
-    }
-    return 0;
-  } catch (const UsageError& e) {
-    err << "oflab-cli flow: " << e.what() << "\n";
-    return 2;
+// Bad options are UsageErrors, which run_cli reports; nothing else goes to `err`.
+int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& /*err*/) {
+  const CliArgs a(args, {{"--focal", 1},
+                         {"--image", 2},
+                         {"--plane-point", 3},
+                         {"--plane-normal", 3},
+                         {"--velocity", 3},
+                         {"--omega", 3},
+                         {"--plane-up", 3},
+                         {"--plane-size", 2},
+                         {"--dt", 1},
+                         {"--motion", 1},
+                         {"--json", 0}});
+  const nlohmann::json j = flow_report(a);
+  if (a.has("--json")) {
+    out << j.dump(2) << "\n";
+  } else {
+    print_text(j, out);
   }
+  return 0;
 }
 
 }  // namespace oflab

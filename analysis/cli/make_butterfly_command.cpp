@@ -20,9 +20,6 @@ int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::
     write_png(path, make_butterfly());
     out << "wrote " << path << " (243 x 198 RGBA)\n";
     return 0;
-  } catch (const UsageError& e) {
-    err << "oflab-cli make-butterfly: " << e.what() << "\n";
-    return 2;
   } catch (const ImageFileError& e) {
     err << "oflab-cli make-butterfly: --out: " << e.what() << "\n";
     return 1;

@@ -60,9 +60,6 @@ int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostr
                            {"--out", 1},
                            {"--force", 0}});
     return make_scene(a, out);
-  } catch (const UsageError& e) {
-    err << "oflab-cli make-scene: " << e.what() << "\n";
-    return 2;
   } catch (const SceneError& e) {
     err << "oflab-cli make-scene: --from-obj: " << e.what() << "\n";
     return 2;

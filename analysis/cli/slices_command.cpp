@@ -23,7 +23,7 @@ std::string option_for_field(const std::string& field) {
 SliceParameters read_parameters(const CliArgs& a) {
   SliceParameters p;
   p.speed = a.number("--speed");
-  p.focal_px = a.number("--focal");
+  p.focal_px = a.number_in("--focal", limits::kFocalLength);
   p.epsilon_px = a.number("--epsilon");
   p.near = a.number_or("--near", 1.0);
   const SliceProblem problem = slice_parameters_problem(p);
@@ -77,21 +77,17 @@ void print_text(const SliceParameters& p, std::ostream& stream) {
 
 }  // namespace
 
-int run_slices_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
-  try {
-    const CliArgs a(
-        args, {{"--speed", 1}, {"--focal", 1}, {"--epsilon", 1}, {"--near", 1}, {"--json", 0}});
-    const SliceParameters p = read_parameters(a);
-    if (a.has("--json")) {
-      out << slices_report(p).dump(2) << "\n";
-    } else {
-      print_text(p, out);
-    }
-    return 0;
-  } catch (const UsageError& e) {
-    err << "oflab-cli slices: " << e.what() << "\n";
-    return 2;
+// Bad options are UsageErrors, which run_cli reports; nothing else goes to `err`.
+int run_slices_command(const CommandArgs& args, std::ostream& out, std::ostream& /*err*/) {
+  const CliArgs a(args,
+                  {{"--speed", 1}, {"--focal", 1}, {"--epsilon", 1}, {"--near", 1}, {"--json", 0}});
+  const SliceParameters p = read_parameters(a);
+  if (a.has("--json")) {
+    out << slices_report(p).dump(2) << "\n";
+  } else {
+    print_text(p, out);
   }
+  return 0;
 }
 
 }  // namespace oflab

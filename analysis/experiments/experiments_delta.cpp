@@ -29,7 +29,7 @@ int time_rank(const DeltaResult& r, const MeasuredRun& run) {
 
 std::string published_statement(DeltaPolicy p) {
   for (const PublishedDeltaStatement& s : published_delta_statements()) {
-    if (s.policy == delta_policy_name(p)) return s.statement;
+    if (s.policy == p) return s.statement;
   }
   return "not in the dissertation";
 }
@@ -150,13 +150,6 @@ Chart psnr_chart(const DeltaResult& r) {
 }
 
 }  // namespace
-
-const std::vector<DeltaPolicy>& delta_policies() {
-  static const std::vector<DeltaPolicy> policies = {
-      DeltaPolicy::kOne, DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
-      DeltaPolicy::kFourthRootAbsDet, DeltaPolicy::kDissertation};
-  return policies;
-}
 
 RunSpec delta_spec(bool quick) {
   RunSpec spec;

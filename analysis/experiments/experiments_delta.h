@@ -11,12 +11,9 @@
 
 #include "experiments/experiments.h"
 #include "experiments/experiments_runs.h"
+#include "flow/decomposition.h"
 
 namespace oflab {
-
-// All five policies, the three the dissertation tried first: 1, det, sqrt, fourth-root,
-// dissertation.
-const std::vector<DeltaPolicy>& delta_policies();
 
 struct DeltaResult {
   RunSpec spec;

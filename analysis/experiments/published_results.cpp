@@ -33,15 +33,16 @@ const PublishedAffineLoop& published_affine_loop() {
 
 const std::vector<PublishedDeltaStatement>& published_delta_statements() {
   static const std::vector<PublishedDeltaStatement> statements = {
-      {"1",
+      {DeltaPolicy::kOne,
        "slowest: peaks near the edge-on frames (~120, ~190) and a near-constant cost "
        "afterwards, since the cached perspective warp stays at texture size"},
-      {"det",
+      {DeltaPolicy::kAbsDet,
        "fastest in every frame, at the cost of image quality (the cache is at output "
        "resolution or below)"},
-      {"sqrt", "the published choice: only marginally slower than det in expensive frames"},
-      {"fourth-root", "not tried in the dissertation"},
-      {"dissertation",
+      {DeltaPolicy::kSqrtAbsDet,
+       "the published choice: only marginally slower than det in expensive frames"},
+      {DeltaPolicy::kFourthRootAbsDet, "not tried in the dissertation"},
+      {DeltaPolicy::kDissertation,
        "the rule of section 5.4.3 as re-read in manual/theory.md: sqrt|det A| "
        "when |det A| < 1, else 1 (oflab's default)"},
   };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/decision.h"
+#include "flow/decomposition.h"
 
 namespace oflab {
 
@@ -33,7 +34,7 @@ const PublishedAffineLoop& published_affine_loop();
 // Section 6.3 (Fig. 20): the Delta comparison was published as graphs and statements, not
 // numbers; these are the statements, one per DeltaPolicy (fourth-root was not tried).
 struct PublishedDeltaStatement {
-  std::string policy;  // delta_policy_name: "1", "det", "sqrt", "fourth-root", "dissertation"
+  DeltaPolicy policy;
   std::string statement;
 };
 const std::vector<PublishedDeltaStatement>& published_delta_statements();

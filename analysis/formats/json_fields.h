@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "engine/limits.h"
 #include "flow/camera.h"
 #include "flow/geometry.h"
 
@@ -17,9 +18,12 @@ namespace oflab::json_fields {
 
 using nlohmann::json;
 
-// Largest magnitude of any number in a data file, and most frames or items of a list.
+// Largest magnitude of any number in a data file that no Limit of core/engine/limits.h
+// covers (positions, directions).
 constexpr double kMaxMagnitude = 1e6;
-constexpr int kMaxCount = 1000000;
+// Most frames of a whole script (summed over its segments, or listed): the maximum of
+// limits::kFrameCount.
+constexpr int kMaxScriptFrames = static_cast<int>(limits::kFrameCount.maximum);
 
 // Where a value sits: the file (or a description of the text) and the part of it ("",
 // "segment 1", "polygon 3 ('a-top')").
@@ -134,29 +138,76 @@ Vec2 vec2(const json& obj, const Place<Error>& w, const std::string& field) {
   return vec2_value(member(obj, w, field), w, field);
 }
 
-// obj[field] as a whole number from 1 to kMaxCount (a frame count).
+// The value `j` of `field` as a number `limit` allows (core/engine/limits.h, the one rule
+// for each kind of value); otherwise fails with the limit's words:
+// "field 'camera.focal_px': 0.5 is outside 1..100000 px".
 template <class Error>
-int positive_integer(const json& obj, const Place<Error>& w, const std::string& field) {
-  const double v = number(member(obj, w, field), w, field);
-  if (v != std::floor(v) || v < 1 || v > kMaxCount) {
-    w.fail(field, "must be a whole number from 1 to 1000000");
-  }
-  return static_cast<int>(v);
+double limited_value(const json& j, const Place<Error>& w, const std::string& field,
+                     const Limit& limit) {
+  if (!j.is_number()) w.fail(field, "must be a number");
+  const double v = j.get<double>();
+  if (!limit.allows(v)) w.fail(field, limit.problem(v));
+  return v;
 }
 
-// The "camera" object of `root`: {"focal_px": f > 0, "image": [width, height]} with whole
-// sizes from 1 to 8192 pixels.
+// obj[field] as a number `limit` allows; for a whole-number limit whose range fits an int,
+// limited_integer returns it as an int.
+template <class Error>
+double limited(const json& obj, const Place<Error>& w, const std::string& field,
+               const Limit& limit) {
+  return limited_value(member(obj, w, field), w, field, limit);
+}
+
+template <class Error>
+int limited_integer(const json& obj, const Place<Error>& w, const std::string& field,
+                    const Limit& limit) {
+  return static_cast<int>(limited(obj, w, field, limit));
+}
+
+// The value `j` of `field` as a list of `N` numbers, each of which `limit` allows.
+template <int N, class Error>
+glm::vec<N, double> limited_vector(const json& j, const Place<Error>& w, const std::string& field,
+                                   const Limit& limit) {
+  if (!j.is_array() || j.size() != N) {
+    w.fail(field, "must be a list of " + std::to_string(N) + " numbers");
+  }
+  glm::vec<N, double> v;
+  for (int i = 0; i < N; ++i) v[i] = limited_value(j[i], w, field, limit);
+  return v;
+}
+
+// obj[field] as a list of 3 (2) numbers, each of which `limit` allows.
+template <class Error>
+Vec3 limited_vec3(const json& obj, const Place<Error>& w, const std::string& field,
+                  const Limit& limit) {
+  return limited_vector<3>(member(obj, w, field), w, field, limit);
+}
+
+template <class Error>
+Vec2 limited_vec2(const json& obj, const Place<Error>& w, const std::string& field,
+                  const Limit& limit) {
+  return limited_vector<2>(member(obj, w, field), w, field, limit);
+}
+
+// Adds a segment's `frames` to `*total`, the frames of the script so far; fails naming the
+// segment's field when the script then has more than kMaxScriptFrames.
+template <class Error>
+void add_script_frames(long* total, int frames, const Place<Error>& w) {
+  *total += frames;
+  if (*total > kMaxScriptFrames) {
+    w.fail("frames", "the script has more than " + std::to_string(kMaxScriptFrames) + " frames");
+  }
+}
+
+// The "camera" object of `root`: {"focal_px": f, "image": [width, height]}, f within
+// limits::kFocalLength and the sizes within limits::kImageSize (pixels).
 template <class Error>
 Camera read_camera(const json& root, const Place<Error>& w) {
   const json& c = member(root, w, "camera");
   if (!c.is_object()) w.fail("camera", "must be an object");
-  const double f = number(member(c, w, "focal_px"), w, "camera.focal_px");
-  const Vec2 size = vec2_value(member(c, w, "image"), w, "camera.image");
-  if (!(f > 0.0)) w.fail("camera.focal_px", "must be positive");
-  if (size.x < 1 || size.y < 1 || size.x > 8192 || size.y > 8192 || size.x != std::floor(size.x) ||
-      size.y != std::floor(size.y)) {
-    w.fail("camera.image", "must be two whole numbers from 1 to 8192");
-  }
+  const double f =
+      limited_value(member(c, w, "focal_px"), w, "camera.focal_px", limits::kFocalLength);
+  const Vec2 size = limited_vector<2>(member(c, w, "image"), w, "camera.image", limits::kImageSize);
   return make_camera(f, static_cast<int>(size.x), static_cast<int>(size.y));
 }
 

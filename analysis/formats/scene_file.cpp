@@ -69,7 +69,7 @@ ScenePolygon read_rectangle(const json& obj, const Where& w) {
   p.centre = vec3(obj, w, "centre");
   const Vec3 normal = vec3(obj, w, "normal");
   const Vec3 up = vec3(obj, w, "up");
-  p.size = vec2(obj, w, "size");
+  p.size = limited_vec2(obj, w, "size", limits::kPlaneSize);
   if (glm::length(normal) < 1e-12) w.fail("normal", "must not be zero");
   p.front = glm::normalize(normal);
   const Vec3 in_plane = up - glm::dot(up, p.front) * p.front;
@@ -77,7 +77,6 @@ ScenePolygon read_rectangle(const json& obj, const Where& w) {
     w.fail("up", "must be non-zero and not parallel to the normal");
   }
   p.up = glm::normalize(in_plane);
-  if (!(p.size.x > 0.0 && p.size.y > 0.0)) w.fail("size", "must be two positive numbers");
   if (obj.contains("outline")) {
     const json& outline = obj.at("outline");
     if (!outline.is_array() || outline.size() < 3) {
@@ -119,10 +118,7 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
   if (!default_texture.empty()) (void)texture_index(root, top, scene, "");
   const ContentKind default_content = content_kind(root, top, ContentKind::kTexture);
   if (root.contains("content_quality")) {
-    scene.content_quality = positive_integer(root, top, "content_quality");
-    if (scene.content_quality > kMaxContentQuality) {
-      top.fail("content_quality", "must be at most " + std::to_string(kMaxContentQuality));
-    }
+    scene.content_quality = limited_integer(root, top, "content_quality", limits::kContentQuality);
   }
   const json& polygons = member(root, top, "polygons");
   if (!polygons.is_array() || polygons.empty()) top.fail("polygons", "must be a non-empty list");

@@ -30,8 +30,8 @@ PlanePose read_pose(const json& obj, const Where& w, const PlanePose& base) {
 
 RigidMotion read_motion(const json& obj, const Where& w, MotionModel model) {
   RigidMotion m;
-  m.velocity = vec3(obj, w, "velocity");
-  m.omega = vec3(obj, w, "omega");
+  m.velocity = limited_vec3(obj, w, "velocity", limits::kVelocity);
+  m.omega = limited_vec3(obj, w, "omega", limits::kAngularVelocity);
   m.model = model;
   return m;
 }
@@ -48,12 +48,11 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
   const json& plane = member(root, top, "plane");
   if (!plane.is_object()) top.fail("plane", "must be an object");
   PlanePose base;
-  base.size = vec2(plane, top, "size");
-  if (!(base.size.x > 0 && base.size.y > 0)) top.fail("size", "must be two positive numbers");
+  base.size = limited_vec2(plane, top, "size", limits::kPlaneSize);
   MotionModel model = MotionModel::kScrew;
   const std::string model_name = optional_text(root, top, "motion_model", "screw");
   if (!parse_motion_model(model_name.c_str(), &model)) {
-    top.fail("motion_model", "must be one of screw, rt, centre");
+    top.fail("motion_model", "must be one of " + motion_model_name_list());
   }
   const bool has_segments = root.contains("segments"), has_frames = root.contains("frames");
   if (has_segments == has_frames) top.fail("", "needs exactly one of 'segments' or 'frames'");
@@ -67,9 +66,8 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
       const Where w{origin, "segment " + std::to_string(i)};
       if (!segs[i].is_object()) w.fail("", "must be an object");
       ScriptSegment seg;
-      seg.frames = positive_integer(segs[i], w, "frames");
-      total += seg.frames;
-      if (total > kMaxCount) w.fail("frames", "the script has more than 1000000 frames");
+      seg.frames = limited_integer(segs[i], w, "frames", limits::kPlayedFrames);
+      add_script_frames(&total, seg.frames, w);
       const RigidMotion m = read_motion(segs[i], w, model);
       seg.velocity = m.velocity;
       seg.omega = m.omega;
@@ -79,7 +77,9 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
   } else {
     const json& frames = root.at("frames");
     if (!frames.is_array() || frames.empty()) top.fail("frames", "must be a non-empty list");
-    if (frames.size() > size_t(kMaxCount)) top.fail("frames", "more than 1000000 frames");
+    if (frames.size() > size_t(kMaxScriptFrames)) {
+      top.fail("frames", "more than " + std::to_string(kMaxScriptFrames) + " frames");
+    }
     for (size_t i = 0; i < frames.size(); ++i) {
       const Where w{origin, "frame " + std::to_string(i)};
       if (!frames[i].is_object()) w.fail("", "must be an object");

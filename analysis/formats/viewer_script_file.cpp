@@ -41,11 +41,10 @@ ViewerScript parse_viewer_script(const std::string& text, const std::string& ori
     const Where w{origin, "segment " + std::to_string(i)};
     if (!segs[i].is_object()) w.fail("", "must be an object");
     ViewerSegment s;
-    s.frames = positive_integer(segs[i], w, "frames");
-    s.camera_velocity = vec3(segs[i], w, "velocity");
-    s.camera_omega = vec3(segs[i], w, "omega");
-    total += s.frames;
-    if (total > kMaxCount) w.fail("frames", "the script has more than 1000000 frames");
+    s.frames = limited_integer(segs[i], w, "frames", limits::kPlayedFrames);
+    s.camera_velocity = limited_vec3(segs[i], w, "velocity", limits::kVelocity);
+    s.camera_omega = limited_vec3(segs[i], w, "omega", limits::kAngularVelocity);
+    add_script_frames(&total, s.frames, w);
     segments.push_back(s);
   }
   script.frames = expand_viewer_segments(look_at(position, target, up), segments);

@@ -270,9 +270,24 @@ const std::vector<SourceKind>& source_kinds() {
        write_scene_csv_header, write_scene_csv_row, scene_summary_json},
       {"scene-shifting", make_shifting, play_shifting,
        write_csv_of<write_scene_csv_header, write_scene_csv_row>, write_scene_csv_header,
-       write_scene_csv_row, shifting_summary_json},
+       write_scene_csv_row, shifting_summary_json, true},
   };
   return kinds;
+}
+
+const SourceKind* source_kind_for_mode(const std::string& mode) {
+  for (const SourceKind& kind : source_kinds()) {
+    if (kind.selected_by_mode && mode == kind.name) return &kind;
+  }
+  return nullptr;
+}
+
+std::string source_kind_modes(const std::string& separator) {
+  std::string list;
+  for (const SourceKind& kind : source_kinds()) {
+    if (kind.selected_by_mode) list += (list.empty() ? "" : separator) + std::string(kind.name);
+  }
+  return list;
 }
 
 const SourceKind& source_kind(const std::string& name) {

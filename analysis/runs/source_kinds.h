@@ -60,12 +60,21 @@ struct SourceKind {
   void (*write_csv_row)(std::ostream& out, const FrameRecord& record);
   // The run's JSON summary (from its summary and facts: also of a run without its frames).
   nlohmann::json (*summary_json)(const AnimationRun& run);
+  // True when a mode named `name` selects the kind in place of a reuse policy (`oflab-cli
+  // animate --mode scene-shifting`); false when the inputs choose it (a motion script: the
+  // plane; a scene: the scene animator under the policy of the mode).
+  bool selected_by_mode = false;
 };
 
 // The kinds, in the order above.
 const std::vector<SourceKind>& source_kinds();
 // The kind named `name`; throws std::invalid_argument for an unknown name.
 const SourceKind& source_kind(const std::string& name);
+// The kind that the mode `mode` selects (selected_by_mode); nullptr for any other word (a
+// reuse policy, or nothing).
+const SourceKind* source_kind_for_mode(const std::string& mode);
+// The names of the kinds selected by a mode, joined by `separator`: "scene-shifting".
+std::string source_kind_modes(const std::string& separator = ", ");
 
 // Lines of the text summary shared by the scene kinds: "  polygons per level (N drawn
 // polygon-frames):" and a line per level with its count and percent; leaves `out` in fixed

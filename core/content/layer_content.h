@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/limits.h"
 #include "flow/camera.h"
 #include "flow/plane.h"
 #include "image/polygon.h"
@@ -43,8 +44,9 @@ std::vector<ContentKind> content_kinds();
 // The names joined by `separator`, in the order above.
 std::string content_name_list(const std::string& separator = ", ");
 
-// Largest quality accepted (samples per pixel of shaded, detail of impostor).
-constexpr int kMaxContentQuality = 256;
+// Largest quality accepted (samples per pixel of shaded, detail of impostor): the maximum of
+// limits::kContentQuality (core/engine/limits.h), where the range is stated.
+constexpr int kMaxContentQuality = static_cast<int>(limits::kContentQuality.maximum);
 
 struct LayerContent {
   ContentKind kind = ContentKind::kTexture;

@@ -5,7 +5,7 @@
 // rule, the conversion of milliseconds and the optimality gap.
 //
 // Phases. Every animator plays a frame in three phases: measure (each layer says what it
-// could do: LayerCandidates, from PlaneAnimator::measure_*), allocate (allocate_frame, over
+// could do: LayerCandidates, from PlaneEngine::measure_*), allocate (allocate_frame, over
 // all the layers of the frame) and apply (each layer shows its allocated level). Every
 // policy but `budget` allocates each layer its own choice, so only `budget` sees the others.
 //

@@ -137,7 +137,7 @@ PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& con
   return {std::move(w.layer), w.offset_x, w.offset_y};
 }
 
-PlaneAnimator::PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings)
+PlaneEngine::PlaneEngine(const Camera& camera, Layer texture, const EngineSettings& settings)
     : camera_(camera), texture_(std::move(texture)), settings_(settings) {
   const std::string problem = content_problem(settings_.content);
   if (!problem.empty()) throw std::invalid_argument("content: " + problem);
@@ -145,28 +145,26 @@ PlaneAnimator::PlaneAnimator(const Camera& camera, Layer texture, const EngineSe
   if (!budget.empty()) throw std::invalid_argument("budget: " + budget);
 }
 
-FrameReport PlaneAnimator::start(const PlanePose& pose) {
-  return apply(measure_start(pose).choice);
-}
+FrameReport PlaneEngine::start(const PlanePose& pose) { return apply(measure_start(pose).choice); }
 
-FrameReport PlaneAnimator::advance(const PlanePose& previous, const RigidMotion& motion,
-                                   const PlanePose& current) {
+FrameReport PlaneEngine::advance(const PlanePose& previous, const RigidMotion& motion,
+                                 const PlanePose& current) {
   return apply(measure_advance(previous, motion, current).choice);
 }
 
-LayerCandidates PlaneAnimator::measure_start(const PlanePose& pose) {
+LayerCandidates PlaneEngine::measure_start(const PlanePose& pose) {
   measure(true, nullptr, nullptr, pose);
   return measured_.candidates;
 }
 
-LayerCandidates PlaneAnimator::measure_advance(const PlanePose& previous, const RigidMotion& motion,
-                                               const PlanePose& current) {
+LayerCandidates PlaneEngine::measure_advance(const PlanePose& previous, const RigidMotion& motion,
+                                             const PlanePose& current) {
   measure(false, &previous, &motion, current);
   return measured_.candidates;
 }
 
-void PlaneAnimator::measure(bool start, const PlanePose* previous, const RigidMotion* motion,
-                            const PlanePose& current) {
+void PlaneEngine::measure(bool start, const PlanePose* previous, const RigidMotion* motion,
+                          const PlanePose& current) {
   const auto t0 = Clock::now();
   measured_ = Measured{};
   measured_.start = start;
@@ -196,7 +194,7 @@ void PlaneAnimator::measure(bool start, const PlanePose* previous, const RigidMo
   measured_.ms = elapsed_ms(t0);
 }
 
-void PlaneAnimator::measure_fresh(const PlanePose& pose) {
+void PlaneEngine::measure_fresh(const PlanePose& pose) {
   LayerCandidates& c = measured_.candidates;
   c.choice = Level::kRerender;
   const Framing framing = frame_pose(pose);
@@ -216,7 +214,7 @@ void PlaneAnimator::measure_fresh(const PlanePose& pose) {
   }
 }
 
-FrameReport PlaneAnimator::apply(Level level, bool shown) {
+FrameReport PlaneEngine::apply(Level level, bool shown) {
   const auto t0 = Clock::now();
   if (measured_.start) {
     frame_ = 0;
@@ -243,7 +241,7 @@ FrameReport PlaneAnimator::apply(Level level, bool shown) {
   return apply_after_refusal(refusal, measured_.ms + elapsed_ms(t0));
 }
 
-void PlaneAnimator::apply_measured(Level level, bool shown, FrameReport& report) {
+void PlaneEngine::apply_measured(Level level, bool shown, FrameReport& report) {
   switch (measured_.candidates.kind) {
     case LayerCandidates::Kind::kChoice:
       apply_choice(level, report);
@@ -260,7 +258,7 @@ void PlaneAnimator::apply_measured(Level level, bool shown, FrameReport& report)
   render_fresh(measured_.current, report);
 }
 
-FrameReport PlaneAnimator::apply_after_refusal(const std::string& refusal, double spent_ms) {
+FrameReport PlaneEngine::apply_after_refusal(const std::string& refusal, double spent_ms) {
   // Any refusal (a warp beyond its range, a singular map) becomes a fresh exact render of
   // the frame, or an invisible frame when even that is refused.
   const auto t0 = Clock::now();
@@ -284,7 +282,7 @@ FrameReport PlaneAnimator::apply_after_refusal(const std::string& refusal, doubl
   return report;
 }
 
-PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const {
+PlaneEngine::Framing PlaneEngine::frame_pose(const PlanePose& pose_in) const {
   const PlanePose pose = sized_pose(pose_in);
   if (texture_.empty()) return {Framing::kNotShown, "not visible: the texture is empty", {}};
   const PoseProblem p = plane_pose_problem(pose);
@@ -328,7 +326,7 @@ PlaneAnimator::Framing PlaneAnimator::frame_pose(const PlanePose& pose_in) const
   return f;
 }
 
-void PlaneAnimator::render_fresh(const PlanePose& pose, FrameReport& report) {
+void PlaneEngine::render_fresh(const PlanePose& pose, FrameReport& report) {
   const Framing framing = frame_pose(pose);
   switch (framing.kind) {
     case Framing::kNotShown:
@@ -343,7 +341,7 @@ void PlaneAnimator::render_fresh(const PlanePose& pose, FrameReport& report) {
   }
 }
 
-void PlaneAnimator::hide(const std::string& note, FrameReport& report) {
+void PlaneEngine::hide(const std::string& note, FrameReport& report) {
   report.level = Level::kRerender;
   report.visible = false;
   report.note = note;
@@ -355,8 +353,7 @@ void PlaneAnimator::hide(const std::string& note, FrameReport& report) {
   accumulated_.fill(0.0);
 }
 
-void PlaneAnimator::show_clipped(const PlanePose& pose, const Framing& framing,
-                                 FrameReport& report) {
+void PlaneEngine::show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report) {
   report.level = Level::kRerender;
   report.clipped = true;
   report.note = framing.note;
@@ -381,7 +378,7 @@ void PlaneAnimator::show_clipped(const PlanePose& pose, const Framing& framing,
   clipped_ = true;
 }
 
-void PlaneAnimator::rerender(const PlanePose& pose, FrameReport& report) {
+void PlaneEngine::rerender(const PlanePose& pose, FrameReport& report) {
   report.level = Level::kRerender;
   cache_.valid = false;
   clipped_ = false;
@@ -404,7 +401,7 @@ void PlaneAnimator::rerender(const PlanePose& pose, FrameReport& report) {
   accumulated_.fill(0.0);
 }
 
-void PlaneAnimator::rerender_content(const PlanePose& pose, FrameReport& report) {
+void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
   const PlanePose sized = sized_pose(pose);
   const Mat3 exact = exact_texture_warp(camera_, sized);
   // A whole frame lies beyond the near plane: the exact warp's denominator is positive.
@@ -431,7 +428,7 @@ void PlaneAnimator::rerender_content(const PlanePose& pose, FrameReport& report)
   show(render, displayed_ * glm::inverse(exact) * origin, displayed_, report);
 }
 
-Mat3 PlaneAnimator::target_warp(const PlanePose& pose) const {
+Mat3 PlaneEngine::target_warp(const PlanePose& pose) const {
   const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
   // Section 6.5: the initial view is affine too, and the flow model follows it.
   if (policy().initial_view == InitialView::kAffinePart) {
@@ -440,7 +437,7 @@ Mat3 PlaneAnimator::target_warp(const PlanePose& pose) const {
   return exact;
 }
 
-std::vector<Vec2> PlaneAnimator::displayed_outline() const {
+std::vector<Vec2> PlaneEngine::displayed_outline() const {
   if (display_.layer.empty()) return {};
   if (clipped_) return clipped_outline_;
   std::vector<Vec2> out;
@@ -448,7 +445,7 @@ std::vector<Vec2> PlaneAnimator::displayed_outline() const {
   return out;
 }
 
-std::vector<Vec2> PlaneAnimator::displayed_corners_centred() const {
+std::vector<Vec2> PlaneEngine::displayed_corners_centred() const {
   std::vector<Vec2> out;
   for (const Vec2& t : texel_corners(texture_)) {
     out.push_back(pixel_to_centred(camera_, apply_homography(displayed_, t)));
@@ -456,13 +453,13 @@ std::vector<Vec2> PlaneAnimator::displayed_corners_centred() const {
   return out;
 }
 
-PlanePose PlaneAnimator::sized_pose(const PlanePose& pose) const {
+PlanePose PlaneEngine::sized_pose(const PlanePose& pose) const {
   PlanePose sized = pose;
   sized.texture_size = glm::ivec2(texture_.image.width(), texture_.image.height());
   return sized;
 }
 
-double PlaneAnimator::corner_distance(const Mat3& a, const Mat3& b) const {
+double PlaneEngine::corner_distance(const Mat3& a, const Mat3& b) const {
   double worst = 0.0;
   for (const Vec2& t : texel_corners(texture_)) {
     worst = std::max(worst, glm::length(apply_homography(a, t) - apply_homography(b, t)));
@@ -470,7 +467,7 @@ double PlaneAnimator::corner_distance(const Mat3& a, const Mat3& b) const {
   return worst;
 }
 
-double PlaneAnimator::shown_error(const PlanePose& pose) const {
+double PlaneEngine::shown_error(const PlanePose& pose) const {
   // Where the pixels are: the warp that made the layer, moved by the whole pixels the layer
   // was shifted since.
   const glm::ivec2 moved = glm::ivec2(display_.offset_x, display_.offset_y) - layer_origin_;
@@ -478,12 +475,12 @@ double PlaneAnimator::shown_error(const PlanePose& pose) const {
   return corner_distance(shown, exact_texture_warp(camera_, sized_pose(pose)));
 }
 
-Vec2 PlaneAnimator::translation_step(const Mat3& correction, const Vec2& point) const {
+Vec2 PlaneEngine::translation_step(const Mat3& correction, const Vec2& point) const {
   const Vec2 motion = apply_homography(correction, point) - point;
   return Vec2(std::round(motion.x), std::round(motion.y));
 }
 
-void PlaneAnimator::apply_translation(const Vec2& step) {
+void PlaneEngine::apply_translation(const Vec2& step) {
   // The layer is reused as it is, moved by whole pixels; the remainder stays pending.
   const Mat3 shift = translation_matrix(step.x, step.y);
   displayed_ = shift * displayed_;
@@ -492,8 +489,8 @@ void PlaneAnimator::apply_translation(const Vec2& step) {
   display_.offset_y += static_cast<int>(step.y);
 }
 
-void PlaneAnimator::show(const Layer& source, const Mat3& source_to_image,
-                         const Mat3& texel_to_image, FrameReport& report) {
+void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
+                       FrameReport& report) {
   warp_reusing(source, source_to_image, report);
   std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
   display_.offset_x = warped_.offset_x;
@@ -502,7 +499,7 @@ void PlaneAnimator::show(const Layer& source, const Mat3& source_to_image,
   layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
 }
 
-void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
+void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
   WarpOptions options;
   options.sampling = settings_.sampling;
   warp_layer_reusing(source, warp, warped_, options);
@@ -512,7 +509,7 @@ void PlaneAnimator::warp_reusing(const Layer& source, const Mat3& warp, FrameRep
       warped_.stats.pixels_written * (affine ? kAffineWarpCost : kPerspectiveWarpCost);
 }
 
-void PlaneAnimator::cache_from_display() {
+void PlaneEngine::cache_from_display() {
   // The displayed layer is an exact image of the texture under displayed_, so it can serve
   // as the cache without another warp (its resolution is the output's).
   const Mat3 origin = translation_matrix(display_.offset_x, display_.offset_y);
@@ -522,11 +519,11 @@ void PlaneAnimator::cache_from_display() {
   cache_.valid = true;
 }
 
-void PlaneAnimator::show_from_cache(FrameReport& report) {
+void PlaneEngine::show_from_cache(FrameReport& report) {
   show(cache_.layer, cache_.to_display, cache_.to_display * cache_.from_texel, report);
 }
 
-bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report) {
+bool PlaneEngine::apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report) {
   if (!cache_.valid) cache_from_display();
   const Mat3 step = affine_part_at(correction, point);
   const Mat3 to_display = step * cache_.to_display;
@@ -537,7 +534,7 @@ bool PlaneAnimator::apply_affine(const Mat3& correction, const Vec2& point, Fram
   return true;
 }
 
-bool PlaneAnimator::apply_perspective(const Mat3& target, FrameReport& report) {
+bool PlaneEngine::apply_perspective(const Mat3& target, FrameReport& report) {
   const Vec2 centre = 0.5 * texel_corners(texture_)[2];
   const Mat3 to_centre = translation_matrix(centre.x, centre.y);
   const AffinePerspectiveSplit split =
@@ -568,7 +565,7 @@ bool PlaneAnimator::apply_perspective(const Mat3& target, FrameReport& report) {
   return true;
 }
 
-void PlaneAnimator::finish_report(const PlanePose& pose, FrameReport& report) const {
+void PlaneEngine::finish_report(const PlanePose& pose, FrameReport& report) const {
   report.accumulated = accumulated_;
   const bool reused = report.visible && !report.clipped && report.level != Level::kRerender;
   report.estimated_error_px = 0.0;
@@ -587,7 +584,7 @@ void PlaneAnimator::finish_report(const PlanePose& pose, FrameReport& report) co
   }
 }
 
-LevelPixels PlaneAnimator::level_pixels() const {
+LevelPixels PlaneEngine::level_pixels() const {
   const auto area = [](const Layer& l) {
     return static_cast<std::int64_t>(l.image.width()) * l.image.height();
   };
@@ -595,8 +592,8 @@ LevelPixels PlaneAnimator::level_pixels() const {
   return estimate_level_pixels(displayed, cache_.valid ? area(cache_.layer) : displayed);
 }
 
-Mat3 PlaneAnimator::next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
-                               FitFiducials& fit) const {
+Mat3 PlaneEngine::next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
+                             FitFiducials& fit) const {
   fit = fit_;
   if (policy().model == ModelUpdate::kExact) {
     return exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
@@ -618,8 +615,8 @@ Mat3 PlaneAnimator::next_model(const PlanarFlowCoefficients& flow, const PlanePo
   return centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
 }
 
-Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& point,
-                               const Mat3& model) const {
+Mat3 PlaneEngine::warp_after(Level level, const Mat3& correction, const Vec2& point,
+                             const Mat3& model) const {
   switch (level) {
     case Level::kNone:
       return displayed_;
@@ -637,7 +634,7 @@ Mat3 PlaneAnimator::warp_after(Level level, const Mat3& correction, const Vec2& 
   return displayed_;
 }
 
-void PlaneAnimator::measure_choice() {
+void PlaneEngine::measure_choice() {
   Measured& m = measured_;
   const std::vector<Vec2> corners = displayed_corners_centred();
   m.measures = measure_flow(camera_, m.previous, m.motion, corners);
@@ -675,7 +672,7 @@ void PlaneAnimator::measure_choice() {
   if (policy().shares_budget) measure_level_costs(correction, point);
 }
 
-void PlaneAnimator::measure_level_costs(const Mat3& correction, const Vec2& point) {
+void PlaneEngine::measure_level_costs(const Mat3& correction, const Vec2& point) {
   // Upper bounds of the pixels each level writes (the boxes of the polygons it warps), and
   // the levels the sampling limit would refuse, as apply_affine and apply_perspective do.
   LayerCandidates& c = measured_.candidates;
@@ -698,7 +695,7 @@ void PlaneAnimator::measure_level_costs(const Mat3& correction, const Vec2& poin
       box_pixels(transform(texture_.polygon, target_warp(measured_.current)));
 }
 
-void PlaneAnimator::apply_choice(Level level, FrameReport& report) {
+void PlaneEngine::apply_choice(Level level, FrameReport& report) {
   const Measured& m = measured_;
   report.flow = m.flow;
   report.carried = m.carried;
@@ -717,8 +714,8 @@ void PlaneAnimator::apply_choice(Level level, FrameReport& report) {
   apply_level(report, m.measures.expansion_point, m.current);
 }
 
-void PlaneAnimator::apply_level(FrameReport& report, const Vec2& expansion_point,
-                                const PlanePose& current) {
+void PlaneEngine::apply_level(FrameReport& report, const Vec2& expansion_point,
+                              const PlanePose& current) {
   const Mat3 correction = model_ * glm::inverse(displayed_);
   const Vec2 point = centred_to_pixel(camera_, expansion_point);
   bool within_limit = true;

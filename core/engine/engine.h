@@ -165,11 +165,15 @@ PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& con
                                    const PlanePose& pose, const ConvexPolygon& texels,
                                    const ViewPolygon& clipped, ContentStats* stats = nullptr);
 
-class PlaneAnimator {
+// The engine of one plane, driven pose by pose by its caller. Not an Animator
+// (core/engine/animator.h), which owns its script: make_plane_animator plays a motion script
+// through one PlaneEngine, and the scene engine (core/scene/scene_animator.h) keeps one per
+// polygon.
+class PlaneEngine {
  public:
   // `texture` is premultiplied RGBA (any size; an empty texture draws nothing). The
   // texture's texel size is taken from the image, overriding pose.texture_size.
-  PlaneAnimator(const Camera& camera, Layer texture, const EngineSettings& settings);
+  PlaneEngine(const Camera& camera, Layer texture, const EngineSettings& settings);
 
   // Frame 0: renders `pose` in the policy's initial view (exactly, or its affine part).
   // The same as measure_start then apply at the candidates' choice.

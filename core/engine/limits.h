@@ -45,10 +45,14 @@ inline constexpr Limit kVelocity{"velocity", "u/s", -1000.0, 1000.0};
 inline constexpr Limit kAngularVelocity{"angular velocity", "rad/s", -100.0, 100.0};
 // Frames to play or render in one run, and frames of a benchmark.
 inline constexpr Limit kFrameCount{"frame count", "frames", 0.0, 1000000.0, true};
+// Frames of what must play at least one (`oflab-cli animate --frames N`, a segment of a
+// motion or viewer script): kFrameCount's maximum, which also caps a whole script.
+inline constexpr Limit kPlayedFrames{"frame count", "frames", 1.0, kFrameCount.maximum, true};
 // The budget policy's frame budget (core/engine/budget.h): pixels or milliseconds per frame.
 inline constexpr Limit kBudgetPixels{"frame budget", "px", 0.0, 1e9};
 inline constexpr Limit kBudgetMs{"frame budget", "ms", 0.0, 1e9};
-// Layer content quality (core/content/layer_content.h kMaxContentQuality).
+// Layer content quality: samples per pixel of shaded content, detail of impostors
+// (core/content/layer_content.h, whose kMaxContentQuality is this maximum).
 inline constexpr Limit kContentQuality{"content quality", "", 1.0, 256.0, true};
 // The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
 inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};

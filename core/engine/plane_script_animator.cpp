@@ -1,5 +1,5 @@
 // The single-plane animator of core/engine/animator.h: a motion script played through one
-// PlaneAnimator (core/engine/engine.h), its displayed layer composed into a camera-sized
+// PlaneEngine (core/engine/engine.h), its displayed layer composed into a camera-sized
 // frame, and the plane seen as a one-polygon scene (core/scene/scene.h plane_as_scene).
 #include <algorithm>
 #include <limits>
@@ -33,7 +33,7 @@ class PlaneScriptAnimator final : public Animator {
   int frame() const override { return frame_; }
 
   AnimationFrame start() override {
-    engine_ = std::make_unique<PlaneAnimator>(script_.camera, texture_, settings_);
+    engine_ = std::make_unique<PlaneEngine>(script_.camera, texture_, settings_);
     ledger_ = std::make_unique<BudgetLedger>(*settings_.policy, settings_.budget,
                                              script_.camera.width, script_.camera.height);
     frame_ = 0;
@@ -121,7 +121,7 @@ class PlaneScriptAnimator final : public Animator {
   Layer texture_;
   EngineSettings settings_;
   Scene scene_;
-  std::unique_ptr<PlaneAnimator> engine_;
+  std::unique_ptr<PlaneEngine> engine_;
   std::unique_ptr<BudgetLedger> ledger_;
   int frame_ = -1;
   bool visible_ = false;

@@ -50,37 +50,55 @@ TranslateLinearPerspective decompose_translate_linear_perspective(const Mat3& w)
 
 glm::dmat2 origin_jacobian(const Mat3& w) { return jacobian_of(normalised_entries(w)); }
 
+namespace {
+
+struct DeltaName {
+  DeltaPolicy policy;
+  const char* name;
+};
+
+// Every policy with its name, in the order of the enum.
+constexpr DeltaName kDeltaNames[] = {{DeltaPolicy::kOne, "1"},
+                                     {DeltaPolicy::kAbsDet, "det"},
+                                     {DeltaPolicy::kSqrtAbsDet, "sqrt"},
+                                     {DeltaPolicy::kFourthRootAbsDet, "fourth-root"},
+                                     {DeltaPolicy::kDissertation, "dissertation"}};
+
+}  // namespace
+
 bool parse_delta_policy(const std::string& text, DeltaPolicy* policy) {
-  if (text == "1" || text == "one") {
+  if (text == "one") {
     *policy = DeltaPolicy::kOne;
-  } else if (text == "det") {
-    *policy = DeltaPolicy::kAbsDet;
-  } else if (text == "sqrt") {
-    *policy = DeltaPolicy::kSqrtAbsDet;
-  } else if (text == "fourth-root") {
-    *policy = DeltaPolicy::kFourthRootAbsDet;
-  } else if (text == "dissertation") {
-    *policy = DeltaPolicy::kDissertation;
-  } else {
-    return false;
+    return true;
   }
-  return true;
+  for (const DeltaName& d : kDeltaNames) {
+    if (text != d.name) continue;
+    *policy = d.policy;
+    return true;
+  }
+  return false;
 }
 
 const char* delta_policy_name(DeltaPolicy policy) {
-  switch (policy) {
-    case DeltaPolicy::kOne:
-      return "1";
-    case DeltaPolicy::kAbsDet:
-      return "det";
-    case DeltaPolicy::kSqrtAbsDet:
-      return "sqrt";
-    case DeltaPolicy::kFourthRootAbsDet:
-      return "fourth-root";
-    case DeltaPolicy::kDissertation:
-      return "dissertation";
+  for (const DeltaName& d : kDeltaNames) {
+    if (d.policy == policy) return d.name;
   }
   return "1";
+}
+
+std::string delta_policy_name_list(const std::string& separator) {
+  std::string list;
+  for (const DeltaName& d : kDeltaNames) list += (list.empty() ? "" : separator) + d.name;
+  return list;
+}
+
+const std::vector<DeltaPolicy>& delta_policies() {
+  static const std::vector<DeltaPolicy> policies = [] {
+    std::vector<DeltaPolicy> all;
+    for (const DeltaName& d : kDeltaNames) all.push_back(d.policy);
+    return all;
+  }();
+  return policies;
 }
 
 double delta_for(DeltaPolicy policy, double det_a) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "flow/geometry.h"
 
@@ -35,9 +36,17 @@ enum class DeltaPolicy {
   kDissertation,      // D = sqrt|det A| when |det A| < 1, else 1 (never magnify the cache)
 };
 
-// Parses "1", "det", "sqrt", "fourth-root", "dissertation"; false for anything else.
+// The one vocabulary of Delta policies, in the order of the enum: delta_policy_name gives
+// "1", "det", "sqrt", "fourth-root" or "dissertation" (the words of options, session and
+// script files and JSON); parse_delta_policy accepts those (and "one" for "1") and returns
+// false, leaving *policy unchanged, for anything else; delta_policy_name_list joins the
+// names with `separator`: "1, det, sqrt, fourth-root, dissertation" for error messages,
+// "1|det|sqrt|fourth-root|dissertation" for usage lines.
 bool parse_delta_policy(const std::string& text, DeltaPolicy* policy);
 const char* delta_policy_name(DeltaPolicy policy);
+std::string delta_policy_name_list(const std::string& separator = ", ");
+// Every policy, in the order of the enum (and of delta_policy_name_list).
+const std::vector<DeltaPolicy>& delta_policies();
 
 // D for a given |det A|; returns 1 when det A is 0 or not finite.
 double delta_for(DeltaPolicy policy, double det_a);

@@ -28,29 +28,44 @@ ScrewCoefficients screw_coefficients(double w, double t) {
 
 }  // namespace
 
+namespace {
+
+struct ModelName {
+  MotionModel model;
+  const char* name;
+};
+
+// Every model with its name, in the order of the enum.
+constexpr ModelName kModelNames[] = {{MotionModel::kScrew, "screw"},
+                                     {MotionModel::kRotateThenTranslate, "rt"},
+                                     {MotionModel::kSpinAboutCentre, "centre"}};
+
+}  // namespace
+
 bool parse_motion_model(const char* text, MotionModel* model) {
-  if (std::strcmp(text, "screw") == 0) {
-    *model = MotionModel::kScrew;
-  } else if (std::strcmp(text, "rt") == 0) {
-    *model = MotionModel::kRotateThenTranslate;
-  } else if (std::strcmp(text, "centre") == 0 || std::strcmp(text, "center") == 0) {
+  if (std::strcmp(text, "center") == 0) {
     *model = MotionModel::kSpinAboutCentre;
-  } else {
-    return false;
+    return true;
   }
-  return true;
+  for (const ModelName& m : kModelNames) {
+    if (std::strcmp(text, m.name) != 0) continue;
+    *model = m.model;
+    return true;
+  }
+  return false;
 }
 
 const char* motion_model_name(MotionModel model) {
-  switch (model) {
-    case MotionModel::kScrew:
-      return "screw";
-    case MotionModel::kRotateThenTranslate:
-      return "rt";
-    case MotionModel::kSpinAboutCentre:
-      return "centre";
+  for (const ModelName& m : kModelNames) {
+    if (m.model == model) return m.name;
   }
   return "screw";
+}
+
+std::string motion_model_name_list(const std::string& separator) {
+  std::string list;
+  for (const ModelName& m : kModelNames) list += (list.empty() ? "" : separator) + m.name;
+  return list;
 }
 
 Vec3 eye_velocity(const RigidMotion& motion, const PlanePose& pose) {

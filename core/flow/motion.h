@@ -15,6 +15,8 @@
 //    V = V_c - Omega x P (plugging V_c in directly is wrong whenever Omega x P != 0).
 #pragma once
 
+#include <string>
+
 #include "flow/geometry.h"
 #include "flow/plane.h"
 
@@ -28,9 +30,14 @@ struct RigidMotion {
   MotionModel model = MotionModel::kScrew;
 };
 
-// Parses "screw", "rt", "centre" (also "center"); returns false for anything else.
+// The one vocabulary of motion models, in the order of the enum: motion_model_name gives
+// "screw", "rt" or "centre" (the words of options, script and session files and JSON);
+// parse_motion_model accepts those (and "center" for "centre") and returns false, leaving
+// *model unchanged, for anything else; motion_model_name_list joins the names with
+// `separator`: "screw, rt, centre" for error messages, "screw|rt|centre" for usage lines.
 bool parse_motion_model(const char* text, MotionModel* model);
 const char* motion_model_name(MotionModel model);
+std::string motion_model_name_list(const std::string& separator = ", ");
 
 // V of eq. 21 (velocity of the body point at the eye) for the given pose.
 Vec3 eye_velocity(const RigidMotion& motion, const PlanePose& pose);

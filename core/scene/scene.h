@@ -7,7 +7,7 @@
 // size (width along the right axis R = U x F, height along U), in world units. The polygon
 // itself is a convex outline inside that rectangle, given in normalised texture coordinates
 // (u right, v down, both in [0, 1]); an empty outline is the whole rectangle. So one
-// polygon maps onto one PlaneAnimator: its texture layer's valid region is the outline.
+// polygon maps onto one PlaneEngine: its texture layer's valid region is the outline.
 //
 // Faces are one-sided. The front normal F points to the side the polygon is seen from;
 // from there the texture appears unmirrored (texel u grows along R, v grows along -U).

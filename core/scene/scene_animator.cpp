@@ -51,13 +51,13 @@ const char* polygon_status_name(PolygonStatus status) {
   return "animated";
 }
 
-struct SceneAnimator::PolygonState {
+struct SceneEngine::PolygonState {
   std::vector<Vec3> world_vertices;  // the outline in world coordinates
   std::vector<Vec2> uv;              // the outline, normalised texture coordinates
   glm::ivec2 texture_size{0, 0};
   bool opaque = false;
   bool whole = true;  // one unsplit fragment in the BSP tree
-  std::unique_ptr<PlaneAnimator> animator;
+  std::unique_ptr<PlaneEngine> animator;
   bool live = false;  // the animator shows the previous frame
   // This frame:
   ViewPolygon clipped;         // the outline clipped to the view frustum
@@ -80,8 +80,7 @@ struct SceneAnimator::PolygonState {
   }
 };
 
-SceneAnimator::SceneAnimator(const Scene& scene, const Camera& camera,
-                             const SceneSettings& settings)
+SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings)
     : scene_(scene),
       camera_(camera),
       settings_(settings),
@@ -137,21 +136,21 @@ SceneAnimator::SceneAnimator(const Scene& scene, const Camera& camera,
   frame_ = Image(camera_.width, camera_.height);
 }
 
-SceneAnimator::~SceneAnimator() = default;
+SceneEngine::~SceneEngine() = default;
 
-AnimationFrame SceneAnimator::start(const ViewerPose& view) {
+AnimationFrame SceneEngine::start(const ViewerPose& view) {
   frame_index_ = 0;
   for (auto& s : states_) s->live = false;
   return run_frame(nullptr, nullptr, view);
 }
 
-AnimationFrame SceneAnimator::advance(const ViewerPose& previous, const RigidMotion& motion,
-                                      const ViewerPose& current) {
+AnimationFrame SceneEngine::advance(const ViewerPose& previous, const RigidMotion& motion,
+                                    const ViewerPose& current) {
   ++frame_index_;
   return run_frame(&previous, &motion, current);
 }
 
-void SceneAnimator::classify(const ViewerPose& view, AnimationFrame& report) {
+void SceneEngine::classify(const ViewerPose& view, AnimationFrame& report) {
   const double gw = settings_.guard_band * camera_.width;
   const double gh = settings_.guard_band * camera_.height;
   for (std::size_t i = 0; i < states_.size(); ++i) {
@@ -193,12 +192,12 @@ void SceneAnimator::classify(const ViewerPose& view, AnimationFrame& report) {
   }
 }
 
-ConvexPolygon SceneAnimator::exact_region(const ViewPolygon& clipped) const {
+ConvexPolygon SceneEngine::exact_region(const ViewPolygon& clipped) const {
   if (clipped.empty()) return ConvexPolygon();
   return project_to_pixels(camera_, clipped);
 }
 
-ConvexPolygon SceneAnimator::fragment_region(int fragment, const ViewerPose& view) const {
+ConvexPolygon SceneEngine::fragment_region(int fragment, const ViewerPose& view) const {
   const BspFragment& f = bsp_.fragments()[fragment];
   const PolygonState& s = *states_[f.polygon];
   if (statuses_[f.polygon] == PolygonStatus::kAnimated && s.animator) {
@@ -215,7 +214,7 @@ ConvexPolygon SceneAnimator::fragment_region(int fragment, const ViewerPose& vie
   return exact_region(clip_to_frustum(piece, frustum_));
 }
 
-const ConvexPolygon& SceneAnimator::polygon_region(int polygon) {
+const ConvexPolygon& SceneEngine::polygon_region(int polygon) {
   PolygonState& s = *states_[polygon];
   if (!s.region_known) {
     s.exact_region = exact_region(s.clipped);
@@ -224,7 +223,7 @@ const ConvexPolygon& SceneAnimator::polygon_region(int polygon) {
   return s.exact_region;
 }
 
-bool SceneAnimator::fragment_hidden(int fragment, const ViewerPose& view) {
+bool SceneEngine::fragment_hidden(int fragment, const ViewerPose& view) {
   const BspFragment& f = bsp_.fragments()[fragment];
   const PolygonState& s = *states_[f.polygon];
   if (s.whole) return occlusion_.covers(polygon_region(f.polygon), settings_.candidate_margin_px);
@@ -235,7 +234,7 @@ bool SceneAnimator::fragment_hidden(int fragment, const ViewerPose& view) {
                            settings_.candidate_margin_px);
 }
 
-void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationFrame& report) {
+void SceneEngine::render_clipped(int index, const ViewerPose& view, AnimationFrame& report) {
   PolygonState& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
   s.clipped_layer = PlacedLayer{};
@@ -260,20 +259,20 @@ void SceneAnimator::render_clipped(int index, const ViewerPose& view, AnimationF
   }
 }
 
-PlaneAnimator& SceneAnimator::polygon_animator(int index) {
+PlaneEngine& SceneEngine::polygon_engine(int index) {
   PolygonState& s = *states_[index];
   if (!s.animator) {
     const ScenePolygon& polygon = scene_.polygons[index];
     EngineSettings engine = settings_.engine;
     engine.content = polygon_content(index);
-    s.animator = std::make_unique<PlaneAnimator>(
+    s.animator = std::make_unique<PlaneEngine>(
         camera_, make_layer(scene_.textures[polygon.texture], texel_polygon(s.uv, s.texture_size)),
         engine);
   }
   return *s.animator;
 }
 
-LayerCandidates SceneAnimator::clipped_candidates(int index) {
+LayerCandidates SceneEngine::clipped_candidates(int index) {
   LayerCandidates c;
   c.kind = LayerCandidates::Kind::kFresh;
   if (!settings_.engine.policy->shares_budget) return c;
@@ -286,8 +285,8 @@ LayerCandidates SceneAnimator::clipped_candidates(int index) {
   return c;
 }
 
-void SceneAnimator::measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
-                                     const ViewerPose& current, AnimationFrame& report) {
+void SceneEngine::measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
+                                   const ViewerPose& current, AnimationFrame& report) {
   const auto t0 = Clock::now();
   for (std::size_t i = 0; i < states_.size(); ++i) {
     if (statuses_[i] == PolygonStatus::kBackFacing ||
@@ -301,7 +300,7 @@ void SceneAnimator::measure_polygons(const ViewerPose* previous, const RigidMoti
       continue;
     }
     const ScenePolygon& polygon = scene_.polygons[i];
-    PlaneAnimator& animator = polygon_animator(index);
+    PlaneEngine& animator = polygon_engine(index);
     const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
     s.candidates = s.live && previous && motion
                        ? animator.measure_advance(polygon_pose(polygon, *previous, s.texture_size),
@@ -311,7 +310,7 @@ void SceneAnimator::measure_polygons(const ViewerPose* previous, const RigidMoti
   report.update_ms += ms_since(t0);
 }
 
-void SceneAnimator::allocate_polygons(AnimationFrame& report) {
+void SceneEngine::allocate_polygons(AnimationFrame& report) {
   std::vector<int> measured;
   std::vector<LayerCandidates> candidates;
   for (std::size_t i = 0; i < states_.size(); ++i) {
@@ -331,13 +330,13 @@ void SceneAnimator::allocate_polygons(AnimationFrame& report) {
   }
 }
 
-void SceneAnimator::starve(int index) {
+void SceneEngine::starve(int index) {
   statuses_[index] = PolygonStatus::kStarved;
   states_[index]->live = false;
   ledger_.applied(Level::kRerender, 0.0, 0, true);
 }
 
-void SceneAnimator::update_polygon(int index, const ViewerPose& current, AnimationFrame& report) {
+void SceneEngine::update_polygon(int index, const ViewerPose& current, AnimationFrame& report) {
   PolygonState& s = *states_[index];
   const auto t0 = Clock::now();
   s.updated = true;
@@ -380,14 +379,14 @@ void SceneAnimator::update_polygon(int index, const ViewerPose& current, Animati
   report.update_ms += ms_since(t0);
 }
 
-LayerContent SceneAnimator::polygon_content(int polygon) const {
+LayerContent SceneEngine::polygon_content(int polygon) const {
   LayerContent content = settings_.engine.content;
   content.kind = scene_.polygons[polygon].content;
   return content;
 }
 
-AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidMotion* motion,
-                                        const ViewerPose& current) {
+AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMotion* motion,
+                                      const ViewerPose& current) {
   const auto t0 = Clock::now();
   AnimationFrame report;
   report.frame = frame_index_;
@@ -407,7 +406,7 @@ AnimationFrame SceneAnimator::run_frame(const ViewerPose* previous, const RigidM
   return report;
 }
 
-void SceneAnimator::update_front_to_back(const ViewerPose& current, AnimationFrame& report) {
+void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   fragment_drawn_.assign(fragments.size(), 0);
   fragment_regions_.resize(fragments.size());
@@ -443,7 +442,7 @@ void SceneAnimator::update_front_to_back(const ViewerPose& current, AnimationFra
   }
 }
 
-void SceneAnimator::add_occluder(int fragment, const PlacedLayer& shown) {
+void SceneEngine::add_occluder(int fragment, const PlacedLayer& shown) {
   // What this fragment certainly paints opaque hides whatever is tested after it.
   const PolygonState& s = *states_[bsp_.fragments()[fragment].polygon];
   if (s.whole) {
@@ -457,7 +456,7 @@ void SceneAnimator::add_occluder(int fragment, const PlacedLayer& shown) {
   }
 }
 
-void SceneAnimator::tally_hidden_and_stale(AnimationFrame& report) {
+void SceneEngine::tally_hidden_and_stale(AnimationFrame& report) {
   const BoundingBox frame_box{0.0, 0.0, static_cast<double>(camera_.width),
                               static_cast<double>(camera_.height)};
   for (std::size_t i = 0; i < states_.size(); ++i) {
@@ -471,7 +470,7 @@ void SceneAnimator::tally_hidden_and_stale(AnimationFrame& report) {
   }
 }
 
-void SceneAnimator::compose(AnimationFrame& report) {
+void SceneEngine::compose(AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   frame_.fill(Pixel{});
   for (int f : order_) {
@@ -485,7 +484,7 @@ void SceneAnimator::compose(AnimationFrame& report) {
   }
 }
 
-std::vector<LayerOutline> SceneAnimator::outlines(const ViewerPose& view) const {
+std::vector<LayerOutline> SceneEngine::outlines(const ViewerPose& view) const {
   std::vector<LayerOutline> result;
   std::vector<char> listed(states_.size(), 0);
   for (int f : order_) {

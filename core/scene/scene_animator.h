@@ -1,7 +1,7 @@
 // Animation of a static scene of textured polygons seen by a moving viewer: Algorithm 1
 // extended to many planes (dissertation sections 5.5 and 5.6.2).
 //
-// Every polygon is one layer driven by its own PlaneAnimator (core/engine/engine.h, any mode); the
+// Every polygon is one layer driven by its own PlaneEngine (core/engine/engine.h, any mode); the
 // camera's motion is the same rigid motion for all of them (core/scene/viewer_script.h). Each
 // frame:
 //  1. cull: polygons seen from behind or edge-on (backface culling) and polygons with no
@@ -64,15 +64,18 @@ struct SceneSettings {
 enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped, kStarved };
 const char* polygon_status_name(PolygonStatus status);
 
-class SceneAnimator {
+// The engine of a scene, driven view by view by its caller. Not an Animator
+// (core/engine/animator.h), which owns its script: make_scene_animator plays a viewer script
+// through one SceneEngine (core/scene/viewer_script_animator.h).
+class SceneEngine {
  public:
   // `scene` must outlive the animator. Builds the BSP tree. Throws std::invalid_argument
   // when a polygon has a problem (scene_polygon_problem), the camera is invalid, a
   // setting is out of range, or the BSP tree would exceed BspTree::kMaxBspFragments.
-  SceneAnimator(const Scene& scene, const Camera& camera, const SceneSettings& settings);
-  ~SceneAnimator();
-  SceneAnimator(const SceneAnimator&) = delete;
-  SceneAnimator& operator=(const SceneAnimator&) = delete;
+  SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings);
+  ~SceneEngine();
+  SceneEngine(const SceneEngine&) = delete;
+  SceneEngine& operator=(const SceneEngine&) = delete;
 
   // Frame 0 seen from `view`: every visible polygon is rendered. The report's layers are
   // the scene's polygons; time_ms covers cull, order, visibility, updates and composite;
@@ -116,7 +119,7 @@ class SceneAnimator {
   void allocate_polygons(AnimationFrame& report);
   LayerCandidates clipped_candidates(int polygon);
   void starve(int polygon);
-  PlaneAnimator& polygon_animator(int polygon);
+  PlaneEngine& polygon_engine(int polygon);
   void compose(AnimationFrame& report);
   void classify(const ViewerPose& view, AnimationFrame& report);
   bool fragment_hidden(int fragment, const ViewerPose& view);
@@ -147,9 +150,9 @@ class SceneAnimator {
 };
 
 // The scene animator playing a viewer script: frame k is seen from script.frames[k].pose.
-using SceneScriptAnimator = ViewerScriptAnimator<SceneAnimator, SceneSettings>;
+using SceneScriptAnimator = ViewerScriptAnimator<SceneEngine, SceneSettings>;
 
-// Throws std::invalid_argument as SceneAnimator, or when the script has no frames or the
+// Throws std::invalid_argument as SceneEngine, or when the script has no frames or the
 // scene is null.
 std::unique_ptr<SceneScriptAnimator> make_scene_animator(std::shared_ptr<const Scene> scene,
                                                          ViewerScript script,

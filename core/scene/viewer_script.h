@@ -9,7 +9,7 @@
 // Motion. The camera moves with velocity V_cam and angular velocity Omega_cam, both in its
 // own (viewer) frame, per frame. Seen from the viewer, every scene point then moves with the
 // screw motion V = -V_cam, Omega = -Omega_cam (manual/flow-math.md section 1):
-// the same RigidMotion drives every polygon's PlaneAnimator.
+// the same RigidMotion drives every polygon's PlaneEngine.
 #pragma once
 
 #include <string>

@@ -32,7 +32,7 @@ class CoreExactRenderer final : public ExactFrameRenderer {
   }
 
   Scene scene_;  // the animator keeps a reference: declared first, so it outlives it
-  SceneAnimator animator_;
+  SceneEngine animator_;
 };
 
 // VTK's OpenGL pipeline, drawing the lit contents with the engine's light and quality.

@@ -1,25 +1,12 @@
 #include "app/screenshot.h"
 
-#include <QVTKOpenGLNativeWidget.h>
-#include <vtkRenderWindow.h>
-
 #include <QImageWriter>
-#include <QPainter>
+#include <QWidget>
 
 namespace oflab {
 
 QImage grab_with_vtk(QWidget* root) {
-  QImage image = root->grab().toImage().convertToFormat(QImage::Format_RGB32);
-  QPainter painter(&image);
-  for (QVTKOpenGLNativeWidget* view : root->findChildren<QVTKOpenGLNativeWidget*>()) {
-    if (!view->isVisible()) continue;
-    view->renderWindow()->Render();
-    const QImage frame = view->grabFramebuffer();
-    const QPoint at = view->mapTo(root, QPoint(0, 0));
-    painter.drawImage(QRect(at, view->size()), frame);
-  }
-  painter.end();
-  return image;
+  return root->grab().toImage().convertToFormat(QImage::Format_RGB32);
 }
 
 bool save_png(const QImage& image, const QString& path, QString* error) {

@@ -1,4 +1,4 @@
-// Capturing what the window shows, VTK content included, and saving it.
+// Capturing what the window shows and saving it.
 #pragma once
 
 #include <QImage>
@@ -8,9 +8,9 @@ class QWidget;
 
 namespace oflab {
 
-// The widget as drawn on screen: QWidget::grab for the Qt parts, with the framebuffer of
-// every visible QVTKOpenGLNativeWidget inside it painted over its place (so the result
-// never shows a black hole where a VTK view is, whatever the Qt version grabs).
+// The widget as drawn on screen: QWidget::grab, as RGB32. The window holds no
+// QVTKOpenGLNativeWidget any more (whose framebuffer a grab could miss), so the grab is the
+// whole picture; the name is kept for its callers.
 QImage grab_with_vtk(QWidget* root);
 
 // Writes the image as PNG. Returns false and sets *error to one line naming the file when

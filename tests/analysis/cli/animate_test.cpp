@@ -400,6 +400,32 @@ TEST(AnimateCommand, BadOptionsNameTheOption) {
   EXPECT_NE(quality.err.find("--quality"), std::string::npos) << quality.err;
 }
 
+// The limits of core/engine/limits.h, in the words of Limit::problem after the option.
+TEST(AnimateCommand, OutOfRangeValuesAreRefusedNamingTheOptionTheValueAndTheRange) {
+  const auto expect_refused = [](const std::vector<std::string>& more, const std::string& line) {
+    std::vector<std::string> args = {"animate", "--script", "zoom", "--frames", "2"};
+    args.insert(args.end(), more.begin(), more.end());
+    const Cli c = cli(args);
+    EXPECT_EQ(c.code, 2) << line;
+    EXPECT_EQ(c.err, "oflab-cli animate: " + line + "\n");
+  };
+  expect_refused({"--threshold", "1e6"}, "--threshold: 1e+06 is outside 0..100 px");
+  expect_refused({"--threshold", "-1"}, "--threshold: -1 is outside 0..100 px");
+  expect_refused({"--thresholds", "1", "2", "3", "101"}, "--thresholds: 101 is outside 0..100 px");
+  expect_refused({"--thresholds", "1", "2", "3", "nan"},
+                 "--thresholds: 'nan' is not a finite number");
+  expect_refused({"--content", "shaded", "--quality", "257"}, "--quality: 257 is outside 1..256");
+  expect_refused({"--mode", "budget", "--budget-pixels", "2e9"},
+                 "--budget-pixels: 2e+09 is outside 0..1e+09 px");
+  const Cli frames = cli({"animate", "--script", "zoom", "--frames", "0"});
+  EXPECT_EQ(frames.err, "oflab-cli animate: --frames: 0 is outside 1..1e+06 frames\n");
+  // The ends of the threshold range are allowed.
+  EXPECT_EQ(
+      cli({"animate", "--script", "zoom", "--frames", "2", "--thresholds", "0", "100", "0.5", "1"})
+          .code,
+      0);
+}
+
 TEST(AnimateCommand, ContentChoosesWhatAReRenderDrawsAndTheSummaryCarriesItsCosts) {
   const Cli c = cli({"animate", "--script", "rotation", "--frames", "12", "--content", "shaded",
                      "--repeat-timing", "1", "--json"});

@@ -94,8 +94,9 @@ TEST(BudgetCommand, BadBudgetOptionsAreOneLineErrorsWithExitCodeTwo) {
   };
   expect_error(with({"--mode", "budget", "--budget-pixels"}), "--budget-pixels");
   expect_error(with({"--mode", "budget", "--budget-pixels", "-5"}),
-               "--budget-pixels: '-5' is outside 0..");
-  expect_error(with({"--mode", "budget", "--budget-ms", "-0.5"}), "--budget-ms: '-0.5' is outside");
+               "--budget-pixels: -5 is outside 0..1e+09 px");
+  expect_error(with({"--mode", "budget", "--budget-ms", "-0.5"}),
+               "--budget-ms: -0.5 is outside 0..1e+09 ms");
   expect_error(with({"--mode", "budget", "--budget-ms", "x"}), "--budget-ms: 'x' is not");
   expect_error(with({"--mode", "budget", "--budget-pixels", "10", "--budget-ms", "2"}), "not both");
   expect_error(with({"--budget-pixels", "1000"}), "--budget-pixels: needs --mode budget");

@@ -172,6 +172,21 @@ TEST(FlowCommand, BadInputGivesOneLineErrorNamingTheArgument) {
   const CliResult m = run(missing);
   EXPECT_EQ(m.code, 2);
   EXPECT_NE(m.err.find("--image"), std::string::npos);
+  // Values outside their limits (core/engine/limits.h): the option, the value, the range.
+  const std::pair<std::pair<int, std::string>, std::string> refused[] = {
+      {{2, "0.5"}, "--focal: 0.5 is outside 1..100000 px"},
+      {{2, "1e6"}, "--focal: 1e+06 is outside 1..100000 px"},
+      {{15, "2000"}, "--velocity: 2000 is outside -1000..1000 u/s"},
+      {{19, "-101"}, "--omega: -101 is outside -100..100 rad/s"},
+      {{4, "1"}, "--image: 1 is outside 2..8192 px"},
+  };
+  for (const auto& [change, line] : refused) {
+    auto args = base;
+    args[change.first] = change.second;
+    const CliResult r = run(args);
+    EXPECT_EQ(r.code, 2) << line;
+    EXPECT_EQ(r.err, "oflab-cli flow: " + line + "\n");
+  }
   // A missing required option.
   EXPECT_NE(run({"flow", "--focal", "500"}).err.find("required"), std::string::npos);
 }

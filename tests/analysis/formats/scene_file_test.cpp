@@ -48,7 +48,7 @@ TEST(SceneFiles, EveryShippedSceneOfFig25LoadsWithItsPolygonCount) {
   }
   for (const std::string& name : names) {
     const Scene scene = read_scene_file(resolve_scene_path(name));
-    EXPECT_NO_THROW(SceneAnimator(scene, make_camera(256, 64, 48), SceneSettings{})) << name;
+    EXPECT_NO_THROW(SceneEngine(scene, make_camera(256, 64, 48), SceneSettings{})) << name;
     if (!expected.count(name)) continue;
     EXPECT_EQ(static_cast<int>(scene.polygons.size()), expected.at(name)) << name;
     EXPECT_EQ(scene.textures.size(), 1u) << name << ": Fig. 25's scenes share one texture";

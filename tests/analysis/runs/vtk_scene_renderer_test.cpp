@@ -52,7 +52,7 @@ void compare_with_exact(const std::string& scene_name, const std::string& script
   const ViewerScript script = read_viewer_script_file(resolve_viewer_script_path(script_name));
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("rerender");
-  SceneAnimator exact(scene, script.camera, settings);
+  SceneEngine exact(scene, script.camera, settings);
   VtkSceneRenderer vtk(scene, script.camera, settings.near);
   for (int f : frames) {
     exact.start(script.frames[f].pose);
@@ -110,7 +110,7 @@ LitAgreement street_agreement(int f, const Vec3& light, bool write) {
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("rerender");
   settings.engine.content.quality = scene.content_quality;
-  SceneAnimator exact(scene, script.camera, settings);
+  SceneEngine exact(scene, script.camera, settings);
   LayerContent content = settings.engine.content;
   content.light = light;
   VtkSceneRenderer vtk(scene, script.camera, settings.near, content);

@@ -35,7 +35,7 @@ void expect_engine_draws_content(const LayerContent& content, const char* policy
   EngineSettings settings;
   settings.content = content;
   settings.policy = &reuse_policy(policy);
-  PlaneAnimator engine(camera, blank_texture(pose.texture_size), settings);
+  PlaneEngine engine(camera, blank_texture(pose.texture_size), settings);
   const FrameReport r = engine.start(pose);
   ASSERT_EQ(r.level, Level::kRerender);
   WarpedLayer direct;
@@ -188,7 +188,7 @@ std::vector<FrameReport> turning_run(ContentKind kind) {
   EngineSettings settings;
   settings.content.kind = kind;
   settings.thresholds = {4.0, 4.0, 4.0, 4.0};
-  PlaneAnimator engine(camera, blank_texture(start.texture_size), settings);
+  PlaneEngine engine(camera, blank_texture(start.texture_size), settings);
   std::vector<FrameReport> out{engine.start(frames[0].pose)};
   for (std::size_t k = 1; k < frames.size(); ++k) {
     out.push_back(engine.advance(frames[k - 1].pose, frames[k - 1].motion, frames[k].pose));

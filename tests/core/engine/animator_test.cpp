@@ -150,7 +150,7 @@ TEST(Animator, PlaneSeenAsASceneDrawsTheEnginesContent) {
     ASSERT_EQ(a->scene().polygons.at(0).content, kind);
     SceneSettings scene_settings;
     scene_settings.engine = settings;
-    SceneAnimator exact(a->scene(), a->camera(), scene_settings);
+    SceneEngine exact(a->scene(), a->camera(), scene_settings);
     exact.start(a->view());
     // Equal up to the last bits of the pose rebuilt from the view (a texel choice at a tie).
     EXPECT_GT(psnr_db(a->image(), exact.frame()), 40.0) << content_name(kind);

@@ -218,7 +218,7 @@ void expect_scene_within_budget(int count, double budget_pixels, unsigned seed) 
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("budget");
   settings.engine.budget = {FrameBudget::Unit::kPixels, budget_pixels};
-  SceneAnimator animator(scene, camera, settings);
+  SceneEngine animator(scene, camera, settings);
   const ViewerPose start = look_at(Vec3(0, 1, 14), Vec3(0, 0, 0), Vec3(0, 1, 0));
   const auto frames = expand_viewer_segments(
       start, {{20, Vec3(0.06, 0, -0.05), Vec3(0, 0.004, 0)}, {15, Vec3(0), Vec3(0, 0, 0.02)}});

@@ -109,7 +109,7 @@ TEST(Engine, APolicyOutsideTheRegistryDrivesTheEngineAndSeesLevelCosts) {
   recording.choose = recording_choice;
   EngineSettings spy;
   spy.policy = &recording;
-  PlaneAnimator a(cam, checker_texture(96, 64), spy), b(cam, checker_texture(96, 64), {});
+  PlaneEngine a(cam, checker_texture(96, 64), spy), b(cam, checker_texture(96, 64), {});
   a.start(frames[0].pose);
   b.start(frames[0].pose);
   g_seen_inputs.clear();
@@ -140,7 +140,7 @@ TEST(Engine, SteadyFramesReuseTheLayerBuffers) {
   for (const ReusePolicy& policy : reuse_policies()) {
     EngineSettings settings;
     settings.policy = &policy;
-    PlaneAnimator a(cam, checker_texture(96, 96), settings);
+    PlaneEngine a(cam, checker_texture(96, 96), settings);
     a.start(frames[0].pose);
     std::set<const Pixel*> buffers;
     for (size_t i = 1; i < frames.size(); ++i) {
@@ -158,7 +158,7 @@ TEST(Engine, RerenderModeEqualsADirectExactRenderPixelForPixel) {
   s.policy = &reuse_policy("rerender");
   const auto frames = expand_segments(facing_pose(2.0), MotionModel::kSpinAboutCentre,
                                       {{20, Vec3(0.01, 0.0, -0.02), Vec3(0.02, 0.03, 0.05)}});
-  PlaneAnimator a(cam, tex, s);
+  PlaneEngine a(cam, tex, s);
   for (size_t i = 0; i < frames.size(); ++i) {
     const FrameReport r = i == 0
                               ? a.start(frames[0].pose)
@@ -174,7 +174,7 @@ TEST(Engine, PureSidewaysTranslationOnlyTranslatesAndKeepsTheErrorBudget) {
   const Camera cam = make_camera(256.0, 320, 240);
   const auto frames = expand_segments(facing_pose(1.0), MotionModel::kScrew,
                                       {{60, Vec3(0.003, 0.0, 0.0), Vec3(0.0)}});
-  PlaneAnimator a(cam, checker_texture(96, 64), EngineSettings{});
+  PlaneEngine a(cam, checker_texture(96, 64), EngineSettings{});
   a.start(frames[0].pose);
   int translates = 0;
   for (size_t i = 1; i < frames.size(); ++i) {
@@ -195,7 +195,7 @@ TEST(Engine, ExactModeHasNoModelErrorAndRerendersOnlyForSampling) {
                                       {{80, Vec3(0.005, 0.0, -0.01), Vec3(0.01, 0.03, 0.02)}});
   EngineSettings s;
   s.policy = &reuse_policy("exact");
-  PlaneAnimator a(cam, checker_texture(96, 64), s);
+  PlaneEngine a(cam, checker_texture(96, 64), s);
   a.start(frames[0].pose);
   for (size_t i = 1; i < frames.size(); ++i) {
     const FrameReport r = a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
@@ -214,7 +214,7 @@ TEST(Engine, PlaneBehindTheCameraAndEmptyTextureAreReportedNotFatal) {
   // Approaches and passes through the eye plane.
   const auto frames = expand_segments(facing_pose(0.5), MotionModel::kScrew,
                                       {{12, Vec3(0.0, 0.0, -0.1), Vec3(0.0)}});
-  PlaneAnimator a(cam, checker_texture(96, 64), EngineSettings{});
+  PlaneEngine a(cam, checker_texture(96, 64), EngineSettings{});
   a.start(frames[0].pose);
   int hidden = 0;
   for (size_t i = 1; i < frames.size(); ++i) {
@@ -227,7 +227,7 @@ TEST(Engine, PlaneBehindTheCameraAndEmptyTextureAreReportedNotFatal) {
     }
   }
   EXPECT_GT(hidden, 3);
-  PlaneAnimator empty(cam, make_layer(Image()), EngineSettings{});
+  PlaneEngine empty(cam, make_layer(Image()), EngineSettings{});
   const FrameReport r = empty.start(facing_pose(2.0));
   EXPECT_FALSE(r.visible);
   EXPECT_NE(r.note.find("texture is empty"), std::string::npos);
@@ -240,7 +240,7 @@ TEST(Engine, EdgeOnFrameIsReportedAndTheNextVisibleFrameRerenders) {
   p.normal = Vec3(1.0, 0.0, 0.0);
   const auto frames =
       expand_segments(p, MotionModel::kScrew, {{9, Vec3(0.03, 0.0, 0.0), Vec3(0.0)}});
-  PlaneAnimator a(cam, checker_texture(96, 64), EngineSettings{});
+  PlaneEngine a(cam, checker_texture(96, 64), EngineSettings{});
   a.start(frames[0].pose);
   bool saw_edge_on = false;
   for (size_t i = 1; i < frames.size(); ++i) {
@@ -253,7 +253,7 @@ TEST(Engine, EdgeOnFrameIsReportedAndTheNextVisibleFrameRerenders) {
 // Plays `frames` through one engine; every report comes back (start() then advance()).
 std::vector<FrameReport> play(const Camera& cam, const std::vector<ScriptFrame>& frames,
                               const EngineSettings& settings = {}) {
-  PlaneAnimator a(cam, checker_texture(96, 64), settings);
+  PlaneEngine a(cam, checker_texture(96, 64), settings);
   std::vector<FrameReport> out{a.start(frames[0].pose)};
   for (size_t i = 1; i < frames.size(); ++i) {
     out.push_back(a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose));
@@ -402,7 +402,7 @@ TEST(EngineBooks, PerspectiveUpdatesRespectTheSamplingLimitAlongEveryAxis) {
   s.thresholds = {0.2, 0.2, 0.2, 50.0};  // perspective whenever it is within the limit
   const auto frames = expand_segments(facing_pose(1.5), MotionModel::kSpinAboutCentre,
                                       {{70, Vec3(0.0), Vec3(0.0, 0.022, 0.0)}});
-  PlaneAnimator a(cam, checker_texture(96, 64), s);
+  PlaneEngine a(cam, checker_texture(96, 64), s);
   a.start(frames[0].pose);
   int limited = 0, perspective = 0;
   const Mat3 to_centre = translation_matrix(48.0, 32.0);

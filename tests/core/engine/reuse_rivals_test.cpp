@@ -179,7 +179,7 @@ TEST(TalismanEngine, ShownErrorIsTheFitsCornerErrorAndStaysWithinTheThreshold) {
                                       {{60, Vec3(0.004, 0.002, -0.01), Vec3(0.004, 0.006, 0.01)}});
   EngineSettings s;
   s.policy = &reuse_policy("talisman");
-  PlaneAnimator a(cam, checker_texture(96, 64), s);
+  PlaneEngine a(cam, checker_texture(96, 64), s);
   Mat3 rendered(1.0);
   int reused = 0, rerendered = 0;
   for (size_t i = 0; i < frames.size(); ++i) {
@@ -259,7 +259,7 @@ TEST(DissertationEngine, BooksAreThePrintedMeasuresAndLevelsTheCascade) {
                                       {{40, Vec3(0.003, 0.001, -0.004), Vec3(0.0, 0.0, 0.0015)}});
   EngineSettings s;
   s.policy = &reuse_policy("dissertation");
-  PlaneAnimator a(cam, checker_texture(96, 64), s);
+  PlaneEngine a(cam, checker_texture(96, 64), s);
   a.start(frames[0].pose);
   int reused = 0;
   for (size_t i = 1; i < frames.size(); ++i) {

@@ -116,5 +116,16 @@ TEST(Decomposition, DeltaPolicyNamesParseBack) {
   EXPECT_FALSE(parse_delta_policy("half", &q));
 }
 
+TEST(Decomposition, DeltaPolicyNameListJoinsEveryPolicyInOrder) {
+  EXPECT_EQ(delta_policy_name_list(), "1, det, sqrt, fourth-root, dissertation");
+  EXPECT_EQ(delta_policy_name_list("|"), "1|det|sqrt|fourth-root|dissertation");
+  ASSERT_EQ(delta_policies().size(), 5u);
+  EXPECT_EQ(delta_policies().front(), DeltaPolicy::kOne);
+  EXPECT_EQ(delta_policies().back(), DeltaPolicy::kDissertation);
+  DeltaPolicy q = DeltaPolicy::kDissertation;
+  EXPECT_TRUE(parse_delta_policy("one", &q));
+  EXPECT_EQ(q, DeltaPolicy::kOne);
+}
+
 }  // namespace
 }  // namespace oflab

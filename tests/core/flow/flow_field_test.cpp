@@ -142,5 +142,20 @@ TEST(PlanarFlow, DefaultCaseMatchesPublishedWorkedExample) {
   EXPECT_NEAR(k.py, -6.2572e-4, 1e-8);
 }
 
+TEST(MotionModels, NamesParseBackAndJoinInOrder) {
+  for (MotionModel m :
+       {MotionModel::kScrew, MotionModel::kRotateThenTranslate, MotionModel::kSpinAboutCentre}) {
+    MotionModel q = MotionModel::kScrew;
+    ASSERT_TRUE(parse_motion_model(motion_model_name(m), &q));
+    EXPECT_EQ(q, m);
+  }
+  MotionModel q = MotionModel::kScrew;
+  EXPECT_TRUE(parse_motion_model("center", &q));
+  EXPECT_EQ(q, MotionModel::kSpinAboutCentre);
+  EXPECT_FALSE(parse_motion_model("twist", &q));
+  EXPECT_EQ(motion_model_name_list(), "screw, rt, centre");
+  EXPECT_EQ(motion_model_name_list("|"), "screw|rt|centre");
+}
+
 }  // namespace
 }  // namespace oflab

@@ -48,7 +48,7 @@ std::vector<ViewerFrame> path(const ViewerPose& start, const Vec3& velocity, con
 
 // Plays `frames`; calls check(frame index, report, animator) after each.
 template <typename Check>
-void play(SceneAnimator& animator, const std::vector<ViewerFrame>& frames, Check check) {
+void play(SceneEngine& animator, const std::vector<ViewerFrame>& frames, Check check) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const AnimationFrame r =
         i == 0 ? animator.start(frames[0].pose)
@@ -86,7 +86,7 @@ TEST(ViewerScript, StepsMoveThePlanesExactlyAsTheirPosesSay) {
   EXPECT_GT(glm::dot(eye_position(frames[1].pose) - eye_position(start), right_world), 0.04);
 }
 
-TEST(SceneAnimator, RerenderModeMatchesTheRayCastReference) {
+TEST(SceneEngine, RerenderModeMatchesTheRayCastReference) {
   std::vector<ScenePolygon> polygons = open_cube("a", Vec3(-0.8, 0, 0), 1.0);
   for (ScenePolygon& p : open_cube("b", Vec3(0.9, 0.2, -1.2), 1.0)) polygons.push_back(p);
   polygons.push_back(square("wall", Vec3(0, 0.3, -3), Vec3(0, 0, 1), Vec3(0, 1, 0), 4.0));
@@ -94,7 +94,7 @@ TEST(SceneAnimator, RerenderModeMatchesTheRayCastReference) {
   const Camera camera = make_camera(200.0, 200, 150);
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("rerender");
-  SceneAnimator animator(scene, camera, settings);
+  SceneEngine animator(scene, camera, settings);
   for (const Vec3& eye : {Vec3(0, 1.5, 5), Vec3(-4, 2, 2), Vec3(3, 3.5, 3), Vec3(1, -0.2, 4)}) {
     const ViewerPose view = look_at(eye, Vec3(0, 0, -0.5), Vec3(0, 1, 0));
     const AnimationFrame r = animator.start(view);
@@ -104,7 +104,7 @@ TEST(SceneAnimator, RerenderModeMatchesTheRayCastReference) {
   }
 }
 
-TEST(SceneAnimator, SplitPolygonsAreCompositedPieceByPiece) {
+TEST(SceneEngine, SplitPolygonsAreCompositedPieceByPiece) {
   // Each polygon's plane cuts the other, so the BSP tree splits one; seen from where the
   // pieces straddle the other polygon in the image, the order differs piece by piece.
   std::vector<ScenePolygon> polygons = {
@@ -115,7 +115,7 @@ TEST(SceneAnimator, SplitPolygonsAreCompositedPieceByPiece) {
   const Camera camera = make_camera(220.0, 200, 150);
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("rerender");
-  SceneAnimator animator(scene, camera, settings);
+  SceneEngine animator(scene, camera, settings);
   ASSERT_EQ(animator.bsp().stats().splits, 1);
   for (const Vec3& eye : {Vec3(3, 3, 4), Vec3(2, 4, 2), Vec3(4, 2.5, -0.5)}) {
     const ViewerPose view = look_at(eye, Vec3(0, 0.6, 0), Vec3(0, 1, 0));
@@ -125,7 +125,7 @@ TEST(SceneAnimator, SplitPolygonsAreCompositedPieceByPiece) {
   }
 }
 
-TEST(SceneAnimator, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
+TEST(SceneEngine, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
   // The viewer flies straight through a large square and past a cube's corner.
   std::vector<ScenePolygon> polygons = open_cube("c", Vec3(0.9, -0.3, -2.0), 1.0);
   polygons.push_back(square("gate", Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), 1.6));
@@ -137,10 +137,10 @@ TEST(SceneAnimator, PolygonsCrossingTheNearPlaneAreClippedNeverSmeared) {
   for (const std::string mode : {"rerender", "perspective", "affine", "exact"}) {
     SceneSettings settings;
     settings.engine.policy = &reuse_policy(mode);
-    SceneAnimator animator(scene, camera, settings);
+    SceneEngine animator(scene, camera, settings);
     int clipped = 0;
     ASSERT_NO_THROW(
-        play(animator, frames, [&](int i, const AnimationFrame& r, const SceneAnimator& a) {
+        play(animator, frames, [&](int i, const AnimationFrame& r, const SceneEngine& a) {
           clipped += r.clipped;
           if (i % 5 != 0) return;
           const Image reference = ray_cast_scene(scene, camera, frames[i].pose, settings.near);
@@ -167,18 +167,18 @@ Scene parallel_scene() {
   return scene_with(polygons);
 }
 
-TEST(SceneAnimator, FullyHiddenPolygonsAreSkippedAndTheSavingIsReported) {
+TEST(SceneEngine, FullyHiddenPolygonsAreSkippedAndTheSavingIsReported) {
   const Scene scene = parallel_scene();
   const Camera camera = make_camera(240.0, 200, 150);
   const ViewerPose view = look_at(Vec3(0, 0, 4), Vec3(0, 0, 0), Vec3(0, 1, 0));
   SceneSettings settings;
-  SceneAnimator animator(scene, camera, settings);
+  SceneEngine animator(scene, camera, settings);
   const AnimationFrame r = animator.start(view);
   EXPECT_EQ(r.hidden, 4);
   EXPECT_EQ(r.drawn(), 1);
   EXPECT_GT(r.hidden_area_px, 4 * 0.5 * 60.0 * 60.0);  // each hidden square is > 40 px wide
   settings.skip_hidden = false;
-  SceneAnimator all(scene, camera, settings);
+  SceneEngine all(scene, camera, settings);
   const AnimationFrame r_all = all.start(view);
   EXPECT_EQ(r_all.hidden, 0);
   EXPECT_EQ(r_all.drawn(), 5);
@@ -186,7 +186,7 @@ TEST(SceneAnimator, FullyHiddenPolygonsAreSkippedAndTheSavingIsReported) {
   EXPECT_EQ(animator.frame().pixels(), all.frame().pixels());
 }
 
-TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
+TEST(SceneEngine, SkippingHiddenPolygonsNeverChangesTheFrame) {
   // Sideways past the parallel squares: they come out one by one.
   const Scene scene = parallel_scene();
   const Camera camera = make_camera(240.0, 200, 150);
@@ -196,13 +196,13 @@ TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
     SceneSettings skip, keep;
     skip.engine.policy = keep.engine.policy = &reuse_policy(mode);
     keep.skip_hidden = false;
-    SceneAnimator a(scene, camera, skip), b(scene, camera, keep);
+    SceneEngine a(scene, camera, skip), b(scene, camera, keep);
     int hidden = 0;
     std::vector<Image> kept_frames;
-    play(b, frames, [&](int, const AnimationFrame&, const SceneAnimator& x) {
+    play(b, frames, [&](int, const AnimationFrame&, const SceneEngine& x) {
       kept_frames.push_back(x.frame());
     });
-    play(a, frames, [&](int i, const AnimationFrame& r, const SceneAnimator& x) {
+    play(a, frames, [&](int i, const AnimationFrame& r, const SceneEngine& x) {
       hidden += r.hidden;
       if (mode == "rerender") {
         EXPECT_EQ(x.frame().pixels(), kept_frames[i].pixels()) << "frame " << i;
@@ -219,7 +219,7 @@ TEST(SceneAnimator, SkippingHiddenPolygonsNeverChangesTheFrame) {
 
 // The compound motion of section 6.7.1, shortened, around two open cubes: every mode runs,
 // and the measured error stays within the budget in the modes that promise it.
-TEST(SceneAnimator, EveryModeAnimatesCubesWithinItsBudget) {
+TEST(SceneEngine, EveryModeAnimatesCubesWithinItsBudget) {
   std::vector<ScenePolygon> polygons = open_cube("a", Vec3(-1, 0, 0), 1.0);
   for (ScenePolygon& p : open_cube("b", Vec3(1, 0, -0.5), 1.0)) polygons.push_back(p);
   const Scene scene = scene_with(polygons);
@@ -235,9 +235,9 @@ TEST(SceneAnimator, EveryModeAnimatesCubesWithinItsBudget) {
   for (const std::string mode : {"perspective", "affine", "exact", "rerender"}) {
     SceneSettings settings;
     settings.engine.policy = &reuse_policy(mode);
-    SceneAnimator animator(scene, camera, settings);
+    SceneEngine animator(scene, camera, settings);
     std::array<int, kLevelCount> levels{};
-    play(animator, frames, [&](int i, const AnimationFrame& r, const SceneAnimator&) {
+    play(animator, frames, [&](int i, const AnimationFrame& r, const SceneEngine&) {
       for (int l = 0; l < kLevelCount; ++l) levels[l] += r.levels[l];
       EXPECT_EQ(r.drawn() + r.culled() + r.hidden, r.layers);
       if (mode != "affine") {
@@ -287,7 +287,7 @@ int widest_interior_gap(const Image& shown, const Image& exact) {
   return widest;
 }
 
-TEST(SceneAnimator, JoinedFacesShowGapsInAffineModeOnly) {
+TEST(SceneEngine, JoinedFacesShowGapsInAffineModeOnly) {
   // Fig. 22: affine approximations of neighbouring faces do not share their edges.
   const Scene scene = scene_with(open_cube("c", Vec3(0, 0, 0), 1.0));
   const Camera camera = make_camera(300.0, 240, 180);
@@ -298,8 +298,8 @@ TEST(SceneAnimator, JoinedFacesShowGapsInAffineModeOnly) {
     SceneSettings settings, exact;
     settings.engine.policy = &reuse_policy(mode);
     exact.engine.policy = &reuse_policy("rerender");
-    SceneAnimator animator(scene, camera, settings), reference(scene, camera, exact);
-    play(animator, frames, [&](int i, const AnimationFrame&, const SceneAnimator& a) {
+    SceneEngine animator(scene, camera, settings), reference(scene, camera, exact);
+    play(animator, frames, [&](int i, const AnimationFrame&, const SceneEngine& a) {
       i == 0 ? reference.start(frames[0].pose)
              : reference.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
       gaps[mode] = std::max(gaps[mode], widest_interior_gap(a.frame(), reference.frame()));

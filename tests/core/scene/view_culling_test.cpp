@@ -75,7 +75,7 @@ TEST(ViewCulling, CullingRemovesExactlyThePolygonsThatDrawNothing) {
     const ViewerPose view = look_at(eye, target, Vec3(0.1, 1, 0));
     SceneSettings settings;
     settings.skip_hidden = false;
-    SceneAnimator animator(scene, camera, settings);
+    SceneEngine animator(scene, camera, settings);
     animator.start(view);
     for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
       const Scene alone = scene_with({scene.polygons[i]});

@@ -45,7 +45,7 @@ SceneShiftingSettings settings_for(double speed) {
   return s;
 }
 
-std::vector<Vec2> engine_corners(const PlaneAnimator& engine, const PlanePose& pose,
+std::vector<Vec2> engine_corners(const PlaneEngine& engine, const PlanePose& pose,
                                  const Camera& camera) {
   const double tw = pose.texture_size.x, th = pose.texture_size.y;
   std::vector<Vec2> corners;
@@ -64,7 +64,7 @@ TEST(SceneShiftingRenderer, SidewaysViewerMatchesTheEnginesTranslationLevelPlane
   EngineSettings engine_settings;
   engine_settings.thresholds.fill(kEngineThreshold);
   const glm::ivec2 size(scene.textures[0].width(), scene.textures[0].height());
-  std::vector<PlaneAnimator> engines;
+  std::vector<PlaneEngine> engines;
   for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
     engines.emplace_back(camera, make_layer(scene.textures[0]), engine_settings);
   }
