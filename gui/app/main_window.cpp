@@ -315,6 +315,7 @@ void MainWindow::show_lesson() {
   const Lesson* lesson = find_lesson(model_->lesson());
   caption_banner_->setText(lesson ? QString::fromStdString(lesson->narrative) : QString());
   caption_banner_->setVisible(lesson != nullptr);
+  if (lesson) statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson->title)));
 }
 
 QString MainWindow::message() const {

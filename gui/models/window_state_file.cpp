@@ -84,7 +84,7 @@ PlaneScene read_plane(const json& plane, const std::string& origin) {
   s.motion.velocity = vec3(motion, in_motion, "velocity");
   s.motion.omega = vec3(motion, in_motion, "omega");
   if (!parse_motion_model(text(motion, in_motion, "model").c_str(), &s.motion.model)) {
-    in_motion.fail("model", "unknown motion model");
+    in_motion.fail("model", "one of " + motion_model_name_list());
   }
   return s;
 }
@@ -122,7 +122,7 @@ void read_settings(const json& j, const Where& w, EngineSettings* s) {
   }
   if (j.contains("thresholds")) read_thresholds(j, w, s);
   if (j.contains("delta") && !parse_delta_policy(text(j, w, "delta"), &s->delta)) {
-    w.fail("delta", "unknown Delta policy");
+    w.fail("delta", "one of " + delta_policy_name_list());
   }
   if (j.contains("sampling") && !parse_sampling(text(j, w, "sampling"), &s->sampling)) {
     w.fail("sampling", "one of " + sampling_name_list());

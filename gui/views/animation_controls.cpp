@@ -18,10 +18,6 @@
 namespace oflab {
 namespace {
 
-constexpr DeltaPolicy kDeltas[] = {DeltaPolicy::kDissertation, DeltaPolicy::kOne,
-                                   DeltaPolicy::kAbsDet, DeltaPolicy::kSqrtAbsDet,
-                                   DeltaPolicy::kFourthRootAbsDet};
-
 QString source_key(const std::string& kind, const std::string& name) {
   return QString::fromStdString(kind + "|" + name);
 }
@@ -153,7 +149,7 @@ QWidget* AnimationControls::make_engine_row() {
   layout->addWidget(budget_box_);
   layout->addWidget(affine_switch_);
   delta_box_ = new QComboBox(row);
-  for (DeltaPolicy d : kDeltas) delta_box_->addItem(delta_policy_name(d), int(d));
+  for (DeltaPolicy d : delta_policies()) delta_box_->addItem(delta_policy_name(d), int(d));
   sampling_box_ = new QComboBox(row);
   for (int i = 0; i < kSamplingCount; ++i) {
     sampling_box_->addItem(sampling_name(Sampling(i)), i);
