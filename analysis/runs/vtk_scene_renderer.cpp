@@ -19,6 +19,7 @@
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -89,7 +90,11 @@ bool add_texture_actors(const Scene& scene, vtkRenderer* renderer) {
     actor->SetMapper(mapper);
     actor->SetTexture(texture);
     actor->GetProperty()->LightingOff();  // the texture's colour, unshaded
-    actor->GetProperty()->BackfaceCullingOn();
+    // One-sided polygons cull their backs; a two-sided sheet (ScenePolygon::two_sided) shows
+    // both, so an actor carrying one draws both sides of all its polygons.
+    const bool two_sided = std::any_of(polygons.begin(), polygons.end(),
+                                       [](const ScenePolygon* p) { return p->two_sided; });
+    actor->GetProperty()->SetBackfaceCulling(!two_sided);
     renderer->AddActor(actor);
     translucent = translucent || has_translucency(scene.textures[t]);
   }

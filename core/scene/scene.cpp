@@ -64,6 +64,7 @@ Scene plane_as_scene(const PlanePose& pose, const Image& texture) {
   polygon.front = -axes.normal;  // the pose's normal N is -F (see the header)
   polygon.up = axes.up;
   polygon.size = pose.size;
+  polygon.two_sided = true;  // a textured sheet: its back is seen too, as the engine draws it
   Scene scene;
   scene.name = "plane";
   scene.textures.push_back(texture);

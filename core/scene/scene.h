@@ -35,6 +35,10 @@ struct ScenePolygon {
   // What a re-render of the polygon draws (core/content/layer_content.h); the scene
   // settings' engine.content gives the quality and the light.
   ContentKind content = ContentKind::kTexture;
+  // A sheet seen from both sides (the single textured plane of the plane and script sources):
+  // never culled as back-facing, only edge-on; its back shows the texture mirrored. Scene
+  // files' polygons are one-sided (the faces of closed solids), so their backs are culled.
+  bool two_sided = false;
 };
 
 struct Scene {

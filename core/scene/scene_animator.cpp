@@ -159,7 +159,10 @@ void SceneEngine::classify(const ViewerPose& view, AnimationFrame& report) {
     s.updated = false;
     s.exact_region = ConvexPolygon();
     s.region_known = false;
-    if (is_back_facing(direction_to_view(view, polygon.front), to_view(view, polygon.centre))) {
+    const Vec3 front = direction_to_view(view, polygon.front);
+    const Vec3 centre = to_view(view, polygon.centre);
+    // A two-sided sheet is culled only edge-on: when both of its sides face away.
+    if (is_back_facing(front, centre) && (!polygon.two_sided || is_back_facing(-front, centre))) {
       statuses_[i] = PolygonStatus::kBackFacing;
       ++report.back_facing;
       continue;

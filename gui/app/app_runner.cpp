@@ -7,6 +7,7 @@
 #include <QWindow>
 #include <ostream>
 
+#include "app/lesson_check.h"
 #include "app/main_window.h"
 #include "app/screenshot.h"
 #include "models/scene_model.h"
@@ -34,7 +35,9 @@ bool wait_until_exposed(QWidget* window, int timeout_ms) {
 
 bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error) {
   window->resize(options.width, options.height);
-  if (!options.screenshot.empty() || options.benchmark > 0) window->set_external_clock(true);
+  if (!options.screenshot.empty() || options.benchmark > 0 || !options.check_lessons.empty()) {
+    window->set_external_clock(true);
+  }
   window->show();
   if (!wait_until_exposed(window, 10000)) {
     *error = "the window did not appear on the display within 10 s";
@@ -88,6 +91,23 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
   return 0;
 }
 
+int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream& out) {
+  int claims = 0, false_claims = 0;
+  for (const std::string& name : options.check_lessons) {
+    const Lesson& lesson = *find_lesson(name);
+    for (const ClaimCheck& check : check_lesson(window, lesson)) {
+      out << describe(lesson, check) << "\n";
+      ++claims;
+      false_claims += !check.holds;
+    }
+  }
+  out << "oflab: " << claims << " claims of " << options.check_lessons.size() << " lessons at "
+      << options.width << " x " << options.height << ": "
+      << (false_claims == 0 ? std::string("all hold") : std::to_string(false_claims) + " false")
+      << "\n";
+  return false_claims == 0 ? 0 : 1;
+}
+
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
   MainWindow window;
   QString problem;
@@ -100,6 +120,7 @@ int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err
     err << "oflab: " << error << "\n";
     return 1;
   }
+  if (!options.check_lessons.empty()) return check_lessons(&window, options, out);
   if (!options.screenshot.empty()) return take_screenshot(&window, options, out, err);
   if (options.benchmark > 0) return run_benchmark(&window, options, out);
   return QApplication::exec();

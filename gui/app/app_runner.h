@@ -26,6 +26,11 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
 // `out`. Returns 0.
 int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out);
 
+// Checks the claims of options.check_lessons in the shown window (external clock) and prints
+// one line per claim (gui/app/lesson_check.h describe) and a summary; 0 when every claim
+// holds, 1 otherwise.
+int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream& out);
+
 // The whole program after parsing: needs a QApplication. Applies the session first, if one
 // is given; a file it names that cannot be used ends the program with one line on `err`
 // and exit code 2, as bad input on the command line does. Returns the exit code.

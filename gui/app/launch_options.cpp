@@ -1,6 +1,7 @@
 #include "app/launch_options.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 
 #include "adapters/exact_frames.h"
@@ -104,6 +105,21 @@ void read_compared(const CliArgs& cli, LaunchOptions* options) {
   for (const ReusePolicy* policy : policies) options->state.compared.push_back(policy->name);
 }
 
+// The lesson `name_or_file` for `option`: a shipped lesson, or a lesson file (added for the
+// run, gui/models/lessons.h add_lesson).
+const Lesson& lesson_named(const std::string& option, const std::string& name_or_file) {
+  try {
+    if (const Lesson* lesson = find_lesson(name_or_file)) return *lesson;
+    if (std::filesystem::is_regular_file(name_or_file)) {
+      return add_lesson(read_lesson_file(name_or_file));
+    }
+  } catch (const SessionError& e) {  // a lesson file that cannot be used
+    throw UsageError(option + ": " + std::string(e.what()));
+  }
+  throw UsageError(option + ": unknown lesson '" + name_or_file + "' (known: " + lesson_names() +
+                   ", or a lesson file)");
+}
+
 // The state the other options go over: --session's, --lesson's or the default window's.
 void read_base_state(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--session") && cli.has("--lesson")) {
@@ -117,16 +133,22 @@ void read_base_state(const CliArgs& cli, LaunchOptions* options) {
     }
   }
   if (!cli.has("--lesson")) return;
-  const std::string name = cli.values("--lesson").at(0);
+  options->state = lesson_named("--lesson", cli.values("--lesson").at(0)).state;
+}
+
+// --check-lesson NAME|FILE|all: the lessons whose claims are checked.
+void read_check_lessons(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--check-lesson")) return;
+  const std::string name = cli.values("--check-lesson").at(0);
   try {
-    if (const Lesson* lesson = find_lesson(name)) {
-      options->state = lesson->state;
+    if (name == "all") {
+      for (const Lesson& lesson : lessons()) options->check_lessons.push_back(lesson.name);
       return;
     }
-  } catch (const SessionError& e) {  // a shipped lesson file that cannot be used
-    throw UsageError("--lesson: " + std::string(e.what()));
+  } catch (const SessionError& e) {
+    throw UsageError("--check-lesson: " + std::string(e.what()));
   }
-  throw UsageError("--lesson: unknown lesson '" + name + "' (known: " + lesson_names() + ")");
+  options->check_lessons.push_back(lesson_named("--check-lesson", name).name);
 }
 
 void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
@@ -248,16 +270,17 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(
-      args,
-      {{"--session", 1},         {"--lesson", 1},    {"--scene", 1},          {"--script", 1},
-       {"--source", 1},          {"--mode", 1},      {"--animation-show", 1}, {"--compare", 1},
-       {"--animation-exact", 1}, {"--view", 1},      {"--screenshot", 1},     {"--whole-window", 0},
-       {"--frames", 1},          {"--benchmark", 1}, {"--size", 2},           {"--flow-show", 1},
-       {"--flow-draw", 1},       {"--basis", 1},     {"--presentation", 0},   {"--help", 0}});
+  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
+                           {"--script", 1},         {"--source", 1},     {"--mode", 1},
+                           {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
+                           {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
+                           {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
+                           {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
+                           {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
+  read_check_lessons(cli, &options);
   read_script(cli, &options);
   check_source(cli);
   read_scene(cli, &options);
@@ -304,7 +327,8 @@ std::string launch_usage() {
          "             [--flow-show PART] [--flow-draw " +
          flow_draw_names(",") +
          "]\n"
-         "             [--basis taylor|waxman-ullman|planar] [--presentation] [--help]\n"
+         "             [--basis taylor|waxman-ullman|planar] [--presentation]\n"
+         "             [--check-lesson NAME|FILE|all] [--help]\n"
          "  views: " +
          joined(titled) +
          "; window is the whole window\n"

@@ -3,7 +3,8 @@
 //         [--compare P1,P2,...] [--view NAME] [--animation-show LAYOUT]
 //         [--animation-exact RENDERER]
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
-//         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation] [--help]
+//         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation]
+//         [--check-lesson NAME|FILE|all] [--help]
 // The options that say what the window shows are one WindowState (gui/models/
 // window_state.h): the session's or the lesson's state (or the default window), with each
 // such option set over it; the window applies it whole (WindowModel::apply). The others
@@ -36,6 +37,9 @@ struct LaunchOptions {
   int width = 1280;   // window size in pixels
   int height = 800;
   bool help = false;  // --help: print the usage and exit 0
+  // --check-lesson NAME|FILE|all: check the claims of these lessons (gui/app/lesson_check.h)
+  // in the window at the --size, print one line per claim and exit 0 when all hold, else 1.
+  std::vector<std::string> check_lessons;
 };
 
 // The view names a screenshot can capture, in order: the view table's
@@ -43,7 +47,9 @@ struct LaunchOptions {
 const std::vector<std::string>& screenshot_view_names();
 
 // Parses the arguments after the program name. Throws UsageError with one line naming
-// the option for: unknown options or values, a missing value, --session with --lesson,
+// the option for: unknown options or values, a missing value, --session with --lesson, a
+// --lesson or --check-lesson that is neither a shipped lesson nor a lesson file
+// (gui/models/lessons.h; a file's lesson is added for the run),
 // --frames without --screenshot, --screenshot with --benchmark, a size outside 320..8192, a
 // frame or benchmark count outside limits::kFrameCount (a benchmark must be positive), a
 // script that is neither a file nor a shipped name or that analysis/formats/script_file.h

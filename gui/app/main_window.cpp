@@ -213,6 +213,13 @@ void MainWindow::create_menus() {
   } catch (const SessionError& e) {  // a broken lesson file: the window opens without lessons
     show_message(QString::fromStdString(e.what()));
   }
+  lesson_menu->addSeparator();
+  QAction* next = lesson_menu->addAction(tr("Next step"));
+  next->setShortcut(Qt::Key_PageDown);
+  connect(next, &QAction::triggered, this, [this] { step_lesson(+1); });
+  QAction* previous = lesson_menu->addAction(tr("Previous step"));
+  previous->setShortcut(Qt::Key_PageUp);
+  connect(previous, &QAction::triggered, this, [this] { step_lesson(-1); });
 }
 
 void MainWindow::create_play_bar() {
@@ -300,7 +307,9 @@ ViewPage* MainWindow::current_view() const {
 
 void MainWindow::apply_lesson(const Lesson& lesson) {
   QString error;
-  if (!model_->apply(lesson.state, &error)) {
+  WindowState state = lesson.state;
+  state.presentation = model_->presentation();  // the teacher's look stays as it is
+  if (!model_->apply(state, &error)) {
     show_message(tr("lesson %1: %2").arg(QString::fromStdString(lesson.name), error));
     return;
   }
@@ -311,9 +320,70 @@ QString MainWindow::caption() const {
   return caption_banner_->isVisible() ? caption_banner_->text() : QString();
 }
 
+bool MainWindow::perform_lesson_step(const Lesson& lesson, int step) {
+  if (step < 1 || step > int(lesson.steps.size())) return false;
+  const LessonStep& s = lesson.steps[size_t(step - 1)];
+  if (s.has_state) {
+    WindowState state = s.state;
+    state.frame = model_->scene()->frame();
+    state.playing = false;
+    state.presentation = model_->presentation();
+    QString error;
+    if (!model_->apply(state, &error)) {
+      show_message(tr("lesson %1, step %2: %3")
+                       .arg(QString::fromStdString(lesson.name))
+                       .arg(step)
+                       .arg(error));
+      return false;
+    }
+  }
+  model_->set_playing(false);
+  if (s.frame >= 0) model_->scene()->set_frame(s.frame);
+  play_frames(s.play);
+  return model_->set_lesson_step(step);
+}
+
+bool MainWindow::go_to_lesson_step(const Lesson& lesson, int step) {
+  if (step < 0 || step > int(lesson.steps.size())) return false;
+  WindowState state = lesson.state;
+  state.playing = step == 0 && lesson.state.playing && !external_clock_;
+  state.presentation = model_->presentation();  // the teacher's look stays as it is
+  QString error;
+  if (!model_->apply(state, &error)) {
+    show_message(tr("lesson %1: %2").arg(QString::fromStdString(lesson.name), error));
+    return false;
+  }
+  if (!state.playing) play_frames(lesson.play);
+  for (int k = 1; k <= step; ++k) {
+    if (!perform_lesson_step(lesson, k)) return false;
+  }
+  return true;
+}
+
+void MainWindow::step_lesson(int delta) {
+  const Lesson* lesson = find_lesson(model_->lesson());
+  if (!lesson) return;
+  const int step = model_->lesson_step() + delta;
+  if (step < 0 || step > int(lesson->steps.size())) return;
+  if (delta == 1) {
+    perform_lesson_step(*lesson, step);
+  } else {
+    go_to_lesson_step(*lesson, step);
+  }
+}
+
 void MainWindow::show_lesson() {
   const Lesson* lesson = find_lesson(model_->lesson());
-  caption_banner_->setText(lesson ? QString::fromStdString(lesson->narrative) : QString());
+  const int step = model_->lesson_step();
+  QString text;
+  if (lesson && step == 0) text = QString::fromStdString(lesson->narrative);
+  if (lesson && step > 0 && step <= int(lesson->steps.size())) {
+    text = tr("Step %1 of %2. %3")
+               .arg(step)
+               .arg(lesson->steps.size())
+               .arg(QString::fromStdString(lesson->steps[size_t(step - 1)].say));
+  }
+  caption_banner_->setText(text);
   caption_banner_->setVisible(lesson != nullptr);
   if (lesson) statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson->title)));
 }

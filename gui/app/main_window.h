@@ -58,6 +58,13 @@ class MainWindow : public QMainWindow {
 
   // Applies a lesson's state (WindowModel::apply); its narrative shows as the caption.
   void apply_lesson(const Lesson& lesson);
+  // A lesson's steps, as the teacher takes them. perform_lesson_step does step `step` (1-based)
+  // of `lesson`: its state (over the one on screen), then its frame, then its frames played,
+  // and shows its text. go_to_lesson_step starts the lesson paused, plays its frames, and
+  // performs steps 1 .. `step` in turn (0: the narrative). Both return false, changing
+  // nothing, for a step the lesson does not have or a state the window refuses.
+  bool perform_lesson_step(const Lesson& lesson, int step);
+  bool go_to_lesson_step(const Lesson& lesson, int step);
   // The caption banner's text: the narrative of the model's lesson, "" for none.
   QString caption() const;
 
@@ -115,6 +122,8 @@ class MainWindow : public QMainWindow {
   void show_presentation();
   void show_play();
   void show_lesson();
+  // The lesson's next (+1) or previous (-1) step, if it has one (PageDown, PageUp).
+  void step_lesson(int delta);
   void clear_message();
   void update_frame_label();
   void add_scrub_controls(QToolBar* bar);

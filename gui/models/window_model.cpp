@@ -67,6 +67,7 @@ WindowState WindowModel::state() const {
   s.playing = playing_;
   s.frame = scene_->frame();
   s.lesson = lesson_;
+  s.lesson_step = lesson_step_;
   return s;
 }
 
@@ -80,8 +81,13 @@ std::string WindowModel::problem(const WindowState& s) const {
     return "animation.exact_renderer: unknown renderer '" + s.exact_renderer + "' (one of " +
            exact_renderer_names() + ")";
   }
-  if (!s.lesson.empty() && !find_lesson(s.lesson)) {
+  const Lesson* lesson = s.lesson.empty() ? nullptr : find_lesson(s.lesson);
+  if (!s.lesson.empty() && !lesson) {
     return "lesson: unknown lesson '" + s.lesson + "' (one of " + lesson_names() + ")";
+  }
+  if (lesson && s.lesson_step > int(lesson->steps.size())) {
+    return "lesson_step: " + std::to_string(s.lesson_step) + " is beyond the " +
+           std::to_string(lesson->steps.size()) + " steps of " + s.lesson;
   }
   if (!find_animation_source_kind(s.source.kind)) {
     return "animation.source.kind: unknown kind '" + s.source.kind + "' (one of " +
@@ -134,6 +140,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   playing_ = s.playing;
   view_ = s.view;
   lesson_ = s.lesson;
+  lesson_step_ = s.lesson_step;
   emit flow_display_changed();
   emit basis_changed();
   emit panels_changed();
@@ -230,6 +237,17 @@ bool WindowModel::set_play_rate(int frames_per_second) {
   }
   play_rate_ = frames_per_second;
   emit play_changed();
+  return true;
+}
+
+bool WindowModel::set_lesson_step(int step) {
+  const Lesson* lesson = lesson_.empty() ? nullptr : find_lesson(lesson_);
+  if (step < 0 || (!lesson && step != 0) || (lesson && step > int(lesson->steps.size()))) {
+    emit input_rejected(QStringLiteral("lesson step %1 does not exist").arg(step));
+    return false;
+  }
+  lesson_step_ = step;
+  emit lesson_changed();
   return true;
 }
 

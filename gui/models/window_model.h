@@ -77,6 +77,10 @@ class WindowModel : public QObject {
 
   // The lesson whose narrative shows; empty for none. Set by apply() only.
   const std::string& lesson() const { return lesson_; }
+  // The lesson's step on screen (0: its narrative). The window performs a step's actions and
+  // then sets it (app/main_window.h perform_lesson_step); refused beyond the lesson's steps.
+  int lesson_step() const { return lesson_step_; }
+  bool set_lesson_step(int step);
 
   // Reports a refused value from a control (the control keeps the model's value): the same
   // signal as the model's own refusals.
@@ -113,6 +117,7 @@ class WindowModel : public QObject {
   int play_rate_ = 30;
   bool playing_ = false;
   std::string lesson_;
+  int lesson_step_ = 0;
 };
 
 }  // namespace oflab

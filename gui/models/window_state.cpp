@@ -61,10 +61,7 @@ std::string check_each(const char* field, const Limit& limit, const Vec3& v) {
 
 std::string plane_state_problem(const PlaneScene& p) {
   using namespace limits;
-  // What makes the plane undrawable first (behind the eye, seen edge on): the clearer reason.
-  const std::string drawable = plane_scene_problem(p);
-  if (!drawable.empty()) return "plane: " + drawable;
-  return first_of({
+  const std::string limits_problem = first_of({
       check("plane.camera.focal_px", kFocalLength, p.camera.focal_px),
       check("plane.camera.width", kImageSize, p.camera.width),
       check("plane.camera.height", kImageSize, p.camera.height),
@@ -74,6 +71,10 @@ std::string plane_state_problem(const PlaneScene& p) {
       check_each("plane.motion.velocity", kVelocity, p.motion.velocity),
       check_each("plane.motion.omega", kAngularVelocity, p.motion.omega),
   });
+  if (!limits_problem.empty()) return limits_problem;
+  // Within every limit, the plane may still not be drawable (seen edge on, through the eye).
+  const std::string drawable = plane_scene_problem(p);
+  return drawable.empty() ? drawable : "plane: " + drawable;
 }
 
 std::string settings_state_problem(const EngineSettings& s) {
@@ -161,8 +162,10 @@ std::string window_state_problem(const WindowState& s) {
   }
   return first_of({plane_state_problem(s.plane), settings_state_problem(s.settings),
                    compared_problem(s.compared), check("animation.zoom", kZoom, s.zoom),
-                   check("play_rate", kPlayRate, s.play_rate),
-                   check("frame", kFrameCount, s.frame)});
+                   check("play_rate", kPlayRate, s.play_rate), check("frame", kFrameCount, s.frame),
+                   s.lesson_step >= 0 && (s.lesson_step == 0 || !s.lesson.empty())
+                       ? ""
+                       : "lesson_step: must be 0 without a lesson, and not negative"});
 }
 
 }  // namespace oflab

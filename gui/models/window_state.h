@@ -59,6 +59,9 @@ struct WindowState {
   int frame = 0;              // the frame shown (limits::kFrameCount)
   // The lesson whose narrative shows above the views (gui/models/lessons.h); empty for none.
   std::string lesson;
+  // The lesson's step on screen: 0 for its narrative, k for its k-th step (whose text is the
+  // caption then); 0 without a lesson.
+  int lesson_step = 0;
 };
 
 // Field by field, numbers exactly (a saved state reads back bit for bit).

@@ -308,6 +308,7 @@ json window_state_object(const WindowState& s) {
       {"play_rate", s.play_rate},
       {"presentation", s.presentation},
       {"lesson", s.lesson},
+      {"lesson_step", s.lesson_step},
       {"flow", flow_object(s.flow)},
       {"basis", {{"kind", basis_key(s.basis)}, {"playing", s.basis_playing}}},
       {"plane", plane_object(s.plane)},
@@ -339,8 +340,8 @@ WindowState read_window_state_object(const json& j, const std::string& origin,
                                      const std::string& part, WindowState s) {
   const Where w{origin, part};
   only_fields(j, w,
-              {"view", "frame", "playing", "play_rate", "presentation", "lesson", "flow", "basis",
-               "plane", "script", "texture", "animation"});
+              {"view", "frame", "playing", "play_rate", "presentation", "lesson", "lesson_step",
+               "flow", "basis", "plane", "script", "texture", "animation"});
   const auto name = [&](const char* f) { return text(j, w, f); };
   const auto flag = [&](const char* f) { return boolean(j, w, f); };
   optional(j, "view", &s.view, name);
@@ -349,6 +350,7 @@ WindowState read_window_state_object(const json& j, const std::string& origin,
   optional(j, "play_rate", &s.play_rate, [&](const char* f) { return whole(j, w, f); });
   optional(j, "presentation", &s.presentation, flag);
   optional(j, "lesson", &s.lesson, name);
+  optional(j, "lesson_step", &s.lesson_step, [&](const char* f) { return whole(j, w, f); });
   if (j.contains("flow")) s.flow = read_flow(object(j, w, "flow"), origin, s.flow);
   if (j.contains("basis")) read_basis(object(j, w, "basis"), origin, &s);
   if (j.contains("plane")) s.plane = read_plane(object(j, w, "plane"), origin);

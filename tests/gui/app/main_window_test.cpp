@@ -99,7 +99,9 @@ TEST_F(MainWindowTest, PlaneBehindTheCameraIsRejectedAndLeavesTheSceneAsItWas) {
   const QString tx = table->value_text(0);
   type_value(window().scene_controls(), "distance", -1.0);
   EXPECT_TRUE(same_pose(window().model()->scene()->scene().pose, kept.pose));
-  EXPECT_TRUE(window().message().contains("behind")) << window().message().toStdString();
+  // The one rule for the distance names the value and its range.
+  EXPECT_TRUE(window().message().contains("distance -1 is outside 0.01..10000 u"))
+      << window().message().toStdString();
   EXPECT_DOUBLE_EQ(window().scene_controls()->control("distance")->value(), kept.pose.point.z);
   EXPECT_EQ(table->value_text(0), tx);  // the views still show the old scene
   // The next accepted edit clears the message.

@@ -19,6 +19,7 @@
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "models/window_state_file.h"
+#include "views/animation_view.h"
 #include "views/scene_controls.h"
 #include "views/slider_spin.h"
 
@@ -175,6 +176,47 @@ TEST(WindowState, ViewsFollowTheModelAndEditIt) {
   EXPECT_FALSE(window->model()->flow_display().colour_wheel);
   window->model()->set_view("basis");
   EXPECT_EQ(window->current_view_name(), "basis");
+}
+
+}  // namespace
+}  // namespace oflab
+
+namespace oflab {
+namespace {
+
+// One exact projection: on every frame of the loop the engine reports visible (the same
+// record the CLI prints) and draws, front side and back side alike, the exact panel draws
+// the plane too (a plane seen almost edge-on covers no pixel centre in either).
+TEST(ExactPanel, IsDrawnOnEveryVisibleFrameOfTheLoop) {
+  auto window = shown_window();
+  WindowState state;
+  state.view = "animation";
+  state.source = {"script", "loop", ""};
+  QString error;
+  ASSERT_TRUE(window->model()->apply(state, &error)) << error.toStdString();
+  auto* view = qobject_cast<AnimationView*>(window->view(QStringLiteral("animation")));
+  ASSERT_NE(view, nullptr);
+  AnimationModel* animation = window->model()->animation();
+  const int frames = animation->animator()->frame_count();
+  int visible = 0;
+  for (int k = 0; k < frames; k += 3) {
+    window->model()->scene()->set_frame(k);
+    ASSERT_NE(animation->animator(), nullptr);
+    const AnimationFrame& record = animation->current();
+    ASSERT_EQ(record.layer_reports.size(), 1u);
+    if (!record.layer_reports[0].visible) continue;
+    const auto covered = [](const Image& image) {
+      std::size_t n = 0;
+      for (const Pixel& p : image.pixels()) n += p.a > 0;
+      return n;
+    };
+    const std::size_t engine = covered(view->engine_image());
+    if (engine < 10) continue;
+    ++visible;
+    EXPECT_GT(covered(view->exact_image()), engine / 2)
+        << "frame " << k << ": the engine draws " << engine << " pixels, the exact panel fewer";
+  }
+  EXPECT_GT(visible, frames / 6);  // the loop is visible on most of its frames
 }
 
 }  // namespace

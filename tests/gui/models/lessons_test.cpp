@@ -79,8 +79,8 @@ TEST(Lessons, ABrokenLessonFileIsRefusedNamingTheFileAndField) {
             "ok");
   EXPECT_NE(error_of(write("a.json", head + R"("name": "b", "state": {}})")).find("field 'name'"),
             std::string::npos);
-  EXPECT_NE(error_of(write("c.json", head + R"("name": "c", "state": {}, "steps": []})"))
-                .find("field 'steps': unknown field"),
+  EXPECT_NE(error_of(write("c.json", head + R"("name": "c", "state": {}, "quiz": []})"))
+                .find("field 'quiz': unknown field"),
             std::string::npos);
   const std::string bad_view = error_of(write(
       "d.json", head + R"("name": "d", "state": {"animation": {"thresholds": [1, 1, 1, -1]}}})"));

@@ -1,0 +1,179 @@
+#include "app/lesson_check.h"
+
+#include <QApplication>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "adapters/flow_parts.h"
+#include "app/main_window.h"
+#include "models/animation_model.h"
+#include "models/policy_comparison.h"
+#include "models/scene_model.h"
+#include "models/window_model.h"
+#include "views/animation_view.h"
+#include "views/basis_view.h"
+
+namespace oflab {
+namespace {
+
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
+double coefficient(const SceneModel& scene, const std::string& term) {
+  const PlanarFlowCoefficients c =
+      planar_flow_coefficients(scene.scene().camera, scene.current_pose(), scene.current_motion());
+  const std::pair<const char*, double> terms[] = {{"tx", c.tx},   {"ty", c.ty},   {"j11", c.j11},
+                                                  {"j12", c.j12}, {"j21", c.j21}, {"j22", c.j22},
+                                                  {"px", c.px},   {"py", c.py}};
+  for (const auto& [name, value] : terms) {
+    if (term == name) return std::abs(value);
+  }
+  return kUnknown;
+}
+
+// The largest |flow| of a part over the plane's image (8-pixel grid), px/s.
+double largest_flow(const SceneModel& scene, const std::string& key) {
+  FlowPart part;
+  if (!parse_flow_part(key, &part)) return kUnknown;
+  const FlowContext context =
+      make_flow_context(scene.scene().camera, scene.current_pose(), scene.current_motion());
+  double largest = 0.0;
+  for (const FlowSample& s : sample_flow_grid(context, part, 8.0)) {
+    largest = std::max(largest, double(glm::length(s.flow)));
+  }
+  return largest;
+}
+
+// Levels and errors of frames 1 .. now of the engine or of a compared policy: calls
+// `each(levels, error)` per frame; false when `of` names no such run.
+template <class Each>
+bool for_each_played(WindowModel& model, const std::string& of, Each each) {
+  if (of == "engine") {
+    for (const AnimationFrame& f : model.animation()->history()) {
+      if (f.frame > 0) each(f.levels, f.max_measured_error_px);
+    }
+    return true;
+  }
+  for (const ComparedRun& run : model.comparison().runs()) {
+    if (run.policy->name != of) continue;
+    for (const ComparedFrame& f : run.history) {
+      if (f.frame > 0) each(f.levels, f.max_measured_error_px);
+    }
+    return true;
+  }
+  return false;
+}
+
+double level_share(WindowModel& model, const LessonClaim& claim) {
+  Level level;
+  if (!parse_level(claim.level, &level)) return kUnknown;
+  double at_level = 0.0, drawn = 0.0;
+  const bool found = for_each_played(model, claim.of, [&](const auto& levels, double) {
+    for (int k = 0; k < kLevelCount; ++k) drawn += levels[size_t(k)];
+    at_level += levels[size_t(level)];
+  });
+  return found && drawn > 0 ? at_level / drawn : kUnknown;
+}
+
+double max_error(WindowModel& model, const std::string& of) {
+  double largest = 0.0;
+  const bool found = for_each_played(
+      model, of, [&](const auto&, double error) { largest = std::max(largest, error); });
+  return found ? largest : kUnknown;
+}
+
+// The share of the exact frame's pixels that something covers (alpha > 0).
+double exact_drawn(AnimationView* view) {
+  view->render_image();
+  const Image& exact = view->exact_image();
+  if (exact.empty()) return 0.0;
+  std::size_t covered = 0;
+  for (const Pixel& p : exact.pixels()) covered += p.a > 0;
+  return double(covered) / double(exact.pixel_count());
+}
+
+double heat_map_width(MainWindow* window, AnimationView* view) {
+  view->render_image();
+  const int policies = int(window->model()->comparison().policies().size());
+  const std::vector<QRectF>& rects = view->panel_rects();
+  if (window->model()->panel_display() != PanelDisplay::kComparison ||
+      int(rects.size()) < 2 * policies + 1) {
+    return 0.0;
+  }
+  double narrowest = 1e300;
+  for (size_t k = rects.size() - size_t(policies); k < rects.size(); ++k) {
+    narrowest = std::min(narrowest, rects[k].width());
+  }
+  return narrowest;
+}
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+
+}  // namespace
+
+double measure_claim(MainWindow* window, const LessonClaim& claim) {
+  if (ViewPage* page = window->current_view()) page->render_image();
+  QApplication::processEvents();
+  WindowModel& model = *window->model();
+  auto* animation = qobject_cast<AnimationView*>(window->view(QStringLiteral("animation")));
+  const std::string& kind = claim.claim;
+  if (kind == "coefficient") return coefficient(*model.scene(), claim.of);
+  if (kind == "flow_ratio") {
+    const double over = largest_flow(*model.scene(), claim.over);
+    return over > 0 ? largest_flow(*model.scene(), claim.of) / over : kUnknown;
+  }
+  if (kind == "level_share") return level_share(model, claim);
+  if (kind == "max_error") return max_error(model, claim.of);
+  if (kind == "exact_drawn") return animation ? exact_drawn(animation) : kUnknown;
+  if (kind == "heat_map_width") return animation ? heat_map_width(window, animation) : kUnknown;
+  if (kind == "active_tiles") {
+    auto* basis = qobject_cast<BasisView*>(window->view(QStringLiteral("basis")));
+    if (!basis) return kUnknown;
+    basis->render_image();
+    return basis->active_tile_count();
+  }
+  if (kind == "view") return window->current_view_name().toStdString() == claim.of ? 1.0 : 0.0;
+  return kUnknown;
+}
+
+std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson) {
+  std::vector<ClaimCheck> checks;
+  const auto check_all = [&](int step, const std::vector<LessonClaim>& claims) {
+    for (const LessonClaim& claim : claims) {
+      const double measured = measure_claim(window, claim);
+      const bool holds = measured >= claim.at_least && measured <= claim.at_most;
+      checks.push_back({step, claim, measured, holds});
+    }
+  };
+  window->go_to_lesson_step(lesson, 0);
+  check_all(0, lesson.claims);
+  for (size_t k = 0; k < lesson.steps.size(); ++k) {
+    window->perform_lesson_step(lesson, int(k) + 1);
+    check_all(int(k) + 1, lesson.steps[k].claims);
+  }
+  return checks;
+}
+
+std::string describe(const Lesson& lesson, const ClaimCheck& check) {
+  const LessonClaim& c = check.claim;
+  std::string what = c.claim;
+  if (!c.of.empty()) what += " " + c.of + (c.over.empty() ? "" : "/" + c.over);
+  if (!c.level.empty()) what += " at " + c.level;
+  std::string claimed;
+  if (c.at_least > -1e300) claimed += "at least " + number_text(c.at_least);
+  if (c.at_most < 1e300) {
+    claimed += std::string(claimed.empty() ? "" : " and ") + "at most " + number_text(c.at_most);
+  }
+  return lesson.name + ", " +
+         (check.step == 0 ? std::string("narrative") : "step " + std::to_string(check.step)) +
+         ": \"" + c.says + "\" (" + what + ") measured " + number_text(check.measured) +
+         ", claimed " + claimed + ": " + (check.holds ? "holds" : "FALSE");
+}
+
+}  // namespace oflab
