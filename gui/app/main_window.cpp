@@ -75,7 +75,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   scene_dock_ = new QDockWidget(tr("Scene"), this);
   scene_dock_->setObjectName(QStringLiteral("scene_dock"));
   scene_dock_->setWidget(scroll);
-  scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  scene_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
+                           QDockWidget::DockWidgetClosable);
   addDockWidget(Qt::LeftDockWidgetArea, scene_dock_);
   fit_scene_panel();
   connect(tabs_, &QTabWidget::currentChanged, this, [this] {
@@ -96,6 +97,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(model_, &WindowModel::presentation_changed, this, &MainWindow::show_presentation);
   connect(model_, &WindowModel::play_changed, this, &MainWindow::show_play);
   connect(model_, &WindowModel::lesson_changed, this, &MainWindow::show_lesson);
+  connect(model_, &WindowModel::scene_panel_changed, this,
+          [this] { scene_dock_->setVisible(model_->scene_panel()); });
+  // Closed with its title bar's button (not hidden by a minimised window): the model hears.
+  connect(scene_dock_->toggleViewAction(), &QAction::toggled, model_,
+          &WindowModel::set_scene_panel);
   apply_app_theme(false);
   QApplication::instance()->installEventFilter(this);
   statusBar()->showMessage(tr("Default demo: a textured plane in a screw motion"));
@@ -199,6 +205,11 @@ void MainWindow::create_menus() {
   connect(quit, &QAction::triggered, this, &QWidget::close);
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(presentation_action_);
+  QAction* panel = scene_dock_->toggleViewAction();
+  panel->setText(tr("Scene panel"));
+  panel->setShortcut(Qt::Key_F9);
+  panel->setToolTip(tr("Show or hide the scene panel (F9)"));
+  view->addAction(panel);
   for (QAction* a : {play_action_, step_action_, back_action_, reset_action_, end_action_}) {
     view->addAction(a);
   }

@@ -63,6 +63,7 @@ WindowState WindowModel::state() const {
   s.exact_renderer = exact_renderer_;
   s.zoom = zoom_;
   s.presentation = presentation_;
+  s.scene_panel = scene_panel_;
   s.play_rate = play_rate_;
   s.playing = playing_;
   s.frame = scene_->frame();
@@ -136,6 +137,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   exact_renderer_ = s.exact_renderer;
   zoom_ = s.zoom;
   presentation_ = s.presentation;
+  scene_panel_ = s.scene_panel;
   play_rate_ = s.play_rate;
   playing_ = s.playing;
   view_ = s.view;
@@ -145,6 +147,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   emit basis_changed();
   emit panels_changed();
   emit presentation_changed();
+  emit scene_panel_changed();
   emit play_changed();
   emit lesson_changed();
   emit view_changed();
@@ -227,6 +230,12 @@ bool WindowModel::set_zoom(double zoom) {
 void WindowModel::set_presentation(bool on) {
   presentation_ = on;
   emit presentation_changed();
+}
+
+void WindowModel::set_scene_panel(bool shown) {
+  if (shown == scene_panel_) return;
+  scene_panel_ = shown;
+  emit scene_panel_changed();
 }
 
 bool WindowModel::set_play_rate(int frames_per_second) {

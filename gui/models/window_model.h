@@ -70,6 +70,8 @@ class WindowModel : public QObject {
 
   bool presentation() const { return presentation_; }
   void set_presentation(bool on);
+  bool scene_panel() const { return scene_panel_; }
+  void set_scene_panel(bool shown);
   int play_rate() const { return play_rate_; }
   bool set_play_rate(int frames_per_second);  // refused outside limits::kPlayRate
   bool playing() const { return playing_; }
@@ -93,6 +95,7 @@ class WindowModel : public QObject {
   // The animation view's layout, compared policies, exact renderer or zoom.
   void panels_changed();
   void presentation_changed();
+  void scene_panel_changed();
   void play_changed();  // the play rate or playing
   void lesson_changed();
   void input_rejected(const QString& message);
@@ -114,6 +117,7 @@ class WindowModel : public QObject {
   std::string exact_renderer_ = "core";
   double zoom_ = 1.0;
   bool presentation_ = false;
+  bool scene_panel_ = true;
   int play_rate_ = 30;
   bool playing_ = false;
   std::string lesson_;

@@ -150,8 +150,9 @@ bool operator==(const WindowState& a, const WindowState& b) {
          a.texture == b.texture && a.source == b.source && same(a.settings, b.settings) &&
          a.display == b.display && a.compared == b.compared &&
          a.exact_renderer == b.exact_renderer && a.zoom == b.zoom &&
-         a.presentation == b.presentation && a.play_rate == b.play_rate && a.playing == b.playing &&
-         a.frame == b.frame && a.lesson == b.lesson;
+         a.presentation == b.presentation && a.scene_panel == b.scene_panel &&
+         a.play_rate == b.play_rate && a.playing == b.playing && a.frame == b.frame &&
+         a.lesson == b.lesson;
 }
 
 std::string window_state_problem(const WindowState& s) {

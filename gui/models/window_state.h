@@ -54,6 +54,7 @@ struct WindowState {
   double zoom = 1.0;
 
   bool presentation = false;  // large text and thick lines for a projector
+  bool scene_panel = true;    // the scene panel (plane, motion, camera) is shown
   int play_rate = 30;         // live play, frames per second (limits::kPlayRate)
   bool playing = false;       // the scene's motion plays
   int frame = 0;              // the frame shown (limits::kFrameCount)

@@ -307,6 +307,7 @@ json window_state_object(const WindowState& s) {
       {"playing", s.playing},
       {"play_rate", s.play_rate},
       {"presentation", s.presentation},
+      {"scene_panel", s.scene_panel},
       {"lesson", s.lesson},
       {"lesson_step", s.lesson_step},
       {"flow", flow_object(s.flow)},
@@ -340,8 +341,8 @@ WindowState read_window_state_object(const json& j, const std::string& origin,
                                      const std::string& part, WindowState s) {
   const Where w{origin, part};
   only_fields(j, w,
-              {"view", "frame", "playing", "play_rate", "presentation", "lesson", "lesson_step",
-               "flow", "basis", "plane", "script", "texture", "animation"});
+              {"view", "frame", "playing", "play_rate", "presentation", "scene_panel", "lesson",
+               "lesson_step", "flow", "basis", "plane", "script", "texture", "animation"});
   const auto name = [&](const char* f) { return text(j, w, f); };
   const auto flag = [&](const char* f) { return boolean(j, w, f); };
   optional(j, "view", &s.view, name);
@@ -349,6 +350,7 @@ WindowState read_window_state_object(const json& j, const std::string& origin,
   optional(j, "playing", &s.playing, flag);
   optional(j, "play_rate", &s.play_rate, [&](const char* f) { return whole(j, w, f); });
   optional(j, "presentation", &s.presentation, flag);
+  optional(j, "scene_panel", &s.scene_panel, flag);
   optional(j, "lesson", &s.lesson, name);
   optional(j, "lesson_step", &s.lesson_step, [&](const char* f) { return whole(j, w, f); });
   if (j.contains("flow")) s.flow = read_flow(object(j, w, "flow"), origin, s.flow);

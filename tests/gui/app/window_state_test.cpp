@@ -4,8 +4,10 @@
 // names the field, the value and the range, changing nothing.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -217,6 +219,31 @@ TEST(ExactPanel, IsDrawnOnEveryVisibleFrameOfTheLoop) {
         << "frame " << k << ": the engine draws " << engine << " pixels, the exact panel fewer";
   }
   EXPECT_GT(visible, frames / 6);  // the loop is visible on most of its frames
+}
+
+}  // namespace
+}  // namespace oflab
+
+namespace oflab {
+namespace {
+
+// The scene panel hides where a lesson does not use it, and comes back with F9 (View menu).
+TEST(ScenePanel, HidesWhereALessonDoesNotUseItAndComesBackFromTheViewMenu) {
+  auto window = shown_window();
+  auto* dock = window->findChild<QDockWidget*>(QStringLiteral("scene_dock"));
+  ASSERT_NE(dock, nullptr);
+  EXPECT_TRUE(dock->isVisible());
+  window->apply_lesson(*find_lesson("flow-vs-talisman"));
+  QApplication::processEvents();
+  EXPECT_FALSE(dock->isVisible());
+  EXPECT_FALSE(window->model()->scene_panel());
+  dock->toggleViewAction()->trigger();  // View > Scene panel (F9)
+  QApplication::processEvents();
+  EXPECT_TRUE(dock->isVisible());
+  EXPECT_TRUE(window->model()->scene_panel());
+  window->apply_lesson(*find_lesson("flow-of-a-plane"));
+  QApplication::processEvents();
+  EXPECT_TRUE(dock->isVisible());
 }
 
 }  // namespace
