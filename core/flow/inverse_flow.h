@@ -68,9 +68,9 @@ struct PlanarMotionSolution {
 
 struct InverseFlowSolutions {
   InverseFlowCase kind = InverseFlowCase::kGeneral;
-  // Two solutions in the general case, one otherwise, each with its plane in front of the
-  // eye at the check pixel. In the general case solutions[0] is the one whose V/d points
-  // along the larger-eigenvalue side (a fixed, not a physical, order).
+  // Two solutions in the general case, one otherwise (one fewer for a candidate seen
+  // edge-on at the check pixel, see dropped_behind), each with its plane in front of the eye
+  // at the check pixel. Their order carries no meaning.
   std::vector<PlanarMotionSolution> solutions;
   // Candidates left out because their plane is behind the eye (or seen exactly edge-on) at
   // the check pixel: each solution's mirror image through the eye, (-N, -V/d, Omega), makes

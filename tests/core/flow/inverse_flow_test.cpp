@@ -12,6 +12,7 @@
 #include <random>
 #include <sstream>
 
+#include "flow/basis.h"
 #include "random_cases.h"
 
 namespace oflab {
@@ -149,9 +150,50 @@ TEST(InverseFlow, TheMirrorImageThroughTheEyeMakesTheSameFlowButLiesBehind) {
     EXPECT_GT(s.normal.z, 0.0);
     EXPECT_NEAR(s.depth_over_d, 1.0 / s.normal.z, 1e-12);
   }
+  // The roles of N and the direction of V/d swap between the two, |V/d| is shared, and so is
+  // the diagonal of B: V1 N1/d, V2 N2/d and V3 N3/d = V3/Z0 (manual/theory.md section 10.3).
+  const PlanarMotionSolution& one = r.solutions[0];
+  const PlanarMotionSolution& two = r.solutions[1];
+  EXPECT_NEAR(glm::length(one.v_over_d), glm::length(two.v_over_d), 1e-15);
+  EXPECT_NEAR(std::abs(glm::dot(glm::normalize(one.v_over_d), two.normal)), 1.0, 1e-14);
+  EXPECT_NEAR(std::abs(glm::dot(glm::normalize(two.v_over_d), one.normal)), 1.0, 1e-14);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(one.v_over_d[i] * one.normal[i], two.v_over_d[i] * two.normal[i], 1e-15);
+  }
   // The two solutions are different worlds: different normals and different motions.
   EXPECT_GT(glm::length(r.solutions[0].normal - r.solutions[1].normal), 0.1);
   EXPECT_GT(glm::length(r.solutions[0].omega - r.solutions[1].omega), 0.01);
+}
+
+// The table of manual/theory.md section 10.1 (the dissertation's table of section 4.8.1,
+// redone): each planar basis term from V/Z0, Omega and the slopes dZ/dX, dZ/dY.
+TEST(InverseFlow, BasisTermsFromMotionAndSlopesAsInTheTheoryTable) {
+  std::mt19937 rng(41);
+  for (int i = 0; i < 200; ++i) {
+    FlowCase c = testing::random_flow_case(rng, 3 * i);  // N3 != 0
+    c.motion.model = MotionModel::kScrew;
+    if (i % 4 == 1) c.motion.velocity = Vec3(0.0, 0.0, c.motion.velocity.z);  // along Z only
+    const PlanarBasisTerms b =
+        to_planar_basis(taylor_terms(planar_flow_coefficients(c.camera, c.pose, c.motion)));
+    const double f = c.camera.focal_px;
+    const Vec3 n = c.pose.normal;
+    const double z0 = glm::dot(n, c.pose.point) / n.z;  // where the plane meets the Z axis
+    const double sx = -n.x / n.z, sy = -n.y / n.z;      // dZ/dX, dZ/dY (eq. 38)
+    const Vec3 v = c.motion.velocity / z0;
+    const Vec3 w = c.motion.omega;
+    EXPECT_NEAR(b.tx, f * (v.x + w.y), 1e-10);
+    EXPECT_NEAR(b.ty, f * (v.y - w.x), 1e-10);
+    EXPECT_NEAR(b.scale, -v.z - 0.5 * (sx * v.x + sy * v.y), 1e-13);
+    EXPECT_NEAR(b.squash, 0.5 * (sx * v.x - sy * v.y), 1e-13);
+    EXPECT_NEAR(b.shear, -0.5 * (sy * v.x + sx * v.y), 1e-13);
+    EXPECT_NEAR(b.rotation, w.z + 0.5 * (sy * v.x - sx * v.y), 1e-13);
+    EXPECT_NEAR(b.px, (w.y + sx * v.z) / f, 1e-15);
+    EXPECT_NEAR(b.py, (-w.x + sy * v.z) / f, 1e-15);
+    if (i % 4 == 1) {  // moving only along the line of sight: no squash, no shear
+      EXPECT_NEAR(b.squash, 0.0, 1e-15);
+      EXPECT_NEAR(b.shear, 0.0, 1e-15);
+    }
+  }
 }
 
 TEST(InverseFlow, PureRotationLeavesThePlaneUnobservable) {
