@@ -53,7 +53,7 @@ std::string flow_usage() {
   return "oflab-cli flow --focal F --image W H --plane-point X Y Z --plane-normal NX NY NZ\n"
          "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
          "               --plane-size SW SH] [--dt T] [--motion " +
-         motion_model_name_list("|") + "] [--json]";
+         motion_model_name_list("|") + "] [--explain] [--json]";
 }
 
 // `experiments --help`: the --only values come from the experiments table.
@@ -72,6 +72,12 @@ const std::vector<Command>& all_commands() {
   static const std::vector<Command> commands = {
       {"flow", "instantaneous optic flow of a moving plane: coefficients, bases, homographies",
        flow_usage(), run_flow_command},
+      {"explain",
+       "the planes and motions that make a planar flow: the eight coefficients back to 3D",
+       "oflab-cli explain --coefficients TX TY J11 J12 J21 J22 PX PY --focal F [--at X Y]\n"
+       "               [--json]   (coefficients in centred pixels per unit time; --at: the\n"
+       "               centred pixel where the plane must be in front, default 0 0)",
+       run_explain_command},
       {"animate", "play a motion script through the engine: levels, errors, savings",
        animate_usage(), run_animate_command},
       {"policies", "list the engine's reuse policies (the values of animate --mode)",

@@ -26,6 +26,9 @@ const std::vector<Command>& all_commands();
 
 // `oflab-cli flow`: the instantaneous flow of one moving plane (analysis/cli/flow_command.cpp).
 int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
+// `oflab-cli explain`: the planes and motions behind eight planar flow coefficients
+// (analysis/cli/explain_command.cpp, core/flow/inverse_flow.h).
+int run_explain_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 // `oflab-cli slices`: Hofmann's scene-shifting slices (analysis/cli/slices_command.cpp).
 int run_slices_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 

@@ -1,11 +1,16 @@
 // `oflab-cli flow`: prints the planar flow coefficients, the planar basis and, with --dt,
-// the Taylor and exact homographies and the corner errors of each approximation level.
+// the Taylor and exact homographies and the corner errors of each approximation level; with
+// --explain, the round trip of the coefficients back to planes and motions.
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
+#include <stdexcept>
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "cli/explain_report.h"
 #include "flow/basis.h"
 #include "flow/homography.h"
 
@@ -25,6 +30,97 @@ std::string option_for_field(const std::string& field) {
   if (field == "up") return "--plane-up";
   if (field == "size") return "--plane-size";
   return "--" + field;
+}
+
+// Frames `flow --explain` plays the two solutions forward, and the separation it reports.
+constexpr int kExplainFrames = 1000;
+constexpr double kExplainApartPx = 1.0;
+
+// `flow --explain`: the coefficients `c` of the given pose and motion back to planes and
+// motions (planes in front of the eye at the image of the plane's centre), which solution is
+// the given one, how closely each maps forward to `c` again, and, with dt and the plane's
+// corners, the frame at which the two solutions' corner images first differ by more than
+// kExplainApartPx.
+nlohmann::json explain_round_trip(const Camera& camera, const PlanePose& pose,
+                                  const RigidMotion& motion, const PlanarFlowCoefficients& c,
+                                  std::optional<double> dt, bool has_extent) {
+  const Vec2 centre = project_centred(camera, pose.point);
+  const InverseFlowSolutions r = solve_inverse_flow(c, camera.focal_px, centre);
+  nlohmann::json e = explain_json(r, centre);
+  // The given plane and motion as a solution: unit N with d = N.P > 0, V/d, Omega.
+  Vec3 normal = glm::normalize(pose.normal);
+  if (glm::dot(normal, pose.point) < 0.0) normal = -normal;
+  const Vec3 v_over_d = eye_velocity(motion, pose) / glm::dot(normal, pose.point);
+  nlohmann::json given = nullptr;
+  double worst = 0.0;
+  for (size_t i = 0; i < r.solutions.size(); ++i) {
+    const PlanarMotionSolution& s = r.solutions[i];
+    const SolutionScene scene = solution_scene(s, camera.focal_px, centre, motion.model);
+    worst = std::max(
+        worst, relative_coefficient_difference(
+                   planar_flow_coefficients(camera, scene.pose, scene.motion), c, camera.focal_px));
+    const double scale = std::max({glm::length(v_over_d), glm::length(motion.omega), 1e-300});
+    const bool same_normal = !s.normal_known || glm::length(s.normal - normal) < 1e-6;
+    if (same_normal && glm::length(s.v_over_d - v_over_d) < 1e-6 * scale &&
+        glm::length(s.omega - motion.omega) < 1e-6 * scale) {
+      given = static_cast<int>(i + 1);
+    }
+  }
+  e["given_solution"] = given;
+  e["round_trip_relative_error"] = worst;
+  if (dt && has_extent && r.solutions.size() == 2) {
+    std::array<Vec2, 4> corners;
+    const auto world = plane_corners(pose);
+    for (int i = 0; i < 4; ++i) corners[i] = project_centred(camera, world[i]);
+    try {
+      const FutureSeparation f =
+          compare_futures(r.solutions[0], r.solutions[1], camera.focal_px, centre, corners,
+                          motion.model, *dt, kExplainFrames, kExplainApartPx);
+      e["futures"] = {
+          {"dt", *dt},
+          {"threshold_px", kExplainApartPx},
+          {"max_frames", kExplainFrames},
+          {"frames_played", f.frames_played},
+          {"first_frame_apart",
+           f.first_frame_apart < 0 ? nlohmann::json(nullptr) : nlohmann::json(f.first_frame_apart)},
+          {"distance_px_at_frame_1", f.corner_distance_px.size() > 1
+                                         ? nlohmann::json(f.corner_distance_px[1])
+                                         : nlohmann::json(nullptr)}};
+    } catch (const std::invalid_argument&) {
+      e["futures"] = {{"dt", *dt},
+                      {"not_played",
+                       "the other solution's plane is behind the eye at a corner "
+                       "of the plane's image"}};
+    }
+  }
+  return e;
+}
+
+void print_explain_round_trip(const nlohmann::json& e, std::ostream& out) {
+  out << "Explain: the coefficients back to planes and motions\n";
+  print_explain_text(e, out);
+  if (e["given_solution"].is_null()) {
+    out << "None of the solutions is the given plane and motion (a bug: please report it)\n";
+  } else {
+    out << "Solution " << e["given_solution"].get<int>() << " is the given plane and motion\n";
+  }
+  out << "Each solution maps forward to the coefficients within "
+      << e["round_trip_relative_error"].get<double>() << " (relative)\n";
+  if (!e.contains("futures")) return;
+  const auto& f = e["futures"];
+  if (f.contains("not_played")) {
+    out << "Not played forward: " << f["not_played"].get<std::string>() << "\n";
+    return;
+  }
+  out << "Played forward (dt = " << f["dt"].get<double>() << "), the corner images of the two "
+      << "solutions differ by " << f["distance_px_at_frame_1"].get<double>() << " px at frame 1";
+  if (f["first_frame_apart"].is_null()) {
+    out << " and by at most " << f["threshold_px"].get<double>() << " px in "
+        << f["frames_played"].get<int>() << " frames\n";
+  } else {
+    out << " and first by more than " << f["threshold_px"].get<double>() << " px at frame "
+        << f["first_frame_apart"].get<int>() << "\n";
+  }
 }
 
 nlohmann::json flow_report(const CliArgs& a) {
@@ -86,6 +182,10 @@ nlohmann::json flow_report(const CliArgs& a) {
           {"none", e.none}, {"translate", e.translate}, {"affine", e.affine}, {"taylor", e.taylor}};
     }
   }
+  if (a.has("--explain")) {
+    j["explain"] =
+        explain_round_trip(camera, pose, motion, c, a.optional_number("--dt"), has_extent);
+  }
   return j;
 }
 
@@ -109,6 +209,7 @@ void print_text(const nlohmann::json& j, std::ostream& out) {
       out << "  " << k << " = " << j["corner_error_px"][k].get<double>() << "\n";
     }
   }
+  if (j.contains("explain")) print_explain_round_trip(j["explain"], out);
 }
 
 }  // namespace
@@ -125,6 +226,7 @@ int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& /
                          {"--plane-size", 2},
                          {"--dt", 1},
                          {"--motion", 1},
+                         {"--explain", 0},
                          {"--json", 0}});
   const nlohmann::json j = flow_report(a);
   if (a.has("--json")) {

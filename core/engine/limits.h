@@ -43,6 +43,9 @@ inline constexpr Limit kPlaneSize{"plane size", "u", 1e-6, 10000.0};
 // Each component of the plane's velocity V and angular velocity Omega.
 inline constexpr Limit kVelocity{"velocity", "u/s", -1000.0, 1000.0};
 inline constexpr Limit kAngularVelocity{"angular velocity", "rad/s", -100.0, 100.0};
+// Each of the eight planar flow coefficients typed in (`oflab-cli explain`): tx, ty in px/s,
+// J in 1/s, px, py in 1/(px s), so no one unit.
+inline constexpr Limit kFlowCoefficient{"flow coefficient", "", -1e6, 1e6};
 // Frames to play or render in one run, and frames of a benchmark.
 inline constexpr Limit kFrameCount{"frame count", "frames", 0.0, 1000000.0, true};
 // Frames of what must play at least one (`oflab-cli animate --frames N`, a segment of a

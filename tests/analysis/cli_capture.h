@@ -20,4 +20,13 @@ inline CliResult run_cli_captured(const std::vector<std::string>& args) {
   return {code, out.str(), err.str()};
 }
 
+// A number as a command-line argument with all 17 significant digits, so that it reads back
+// as the same double.
+inline std::string exact_text(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
 }  // namespace oflab::testing

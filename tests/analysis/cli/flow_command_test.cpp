@@ -15,15 +15,9 @@ namespace oflab {
 namespace {
 
 using testing::CliResult;
+using testing::exact_text;
 
 CliResult run(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
 
 struct Case {
   double f;
@@ -34,35 +28,35 @@ struct Case {
 std::vector<std::string> flow_args(const Case& c, double dt) {
   return {"flow",
           "--focal",
-          num(c.f),
+          exact_text(c.f),
           "--image",
           "800",
           "600",
           "--plane-point",
-          num(c.point.x),
-          num(c.point.y),
-          num(c.point.z),
+          exact_text(c.point.x),
+          exact_text(c.point.y),
+          exact_text(c.point.z),
           "--plane-normal",
-          num(c.normal.x),
-          num(c.normal.y),
-          num(c.normal.z),
+          exact_text(c.normal.x),
+          exact_text(c.normal.y),
+          exact_text(c.normal.z),
           "--velocity",
-          num(c.velocity.x),
-          num(c.velocity.y),
-          num(c.velocity.z),
+          exact_text(c.velocity.x),
+          exact_text(c.velocity.y),
+          exact_text(c.velocity.z),
           "--omega",
-          num(c.omega.x),
-          num(c.omega.y),
-          num(c.omega.z),
+          exact_text(c.omega.x),
+          exact_text(c.omega.y),
+          exact_text(c.omega.z),
           "--plane-up",
-          num(c.up.x),
-          num(c.up.y),
-          num(c.up.z),
+          exact_text(c.up.x),
+          exact_text(c.up.y),
+          exact_text(c.up.z),
           "--plane-size",
-          num(c.size.x),
-          num(c.size.y),
+          exact_text(c.size.x),
+          exact_text(c.size.y),
           "--dt",
-          num(dt),
+          exact_text(dt),
           "--json"};
 }
 

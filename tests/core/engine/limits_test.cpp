@@ -48,8 +48,9 @@ TEST(Limits, EveryRangeIsOrderedAndNamed) {
   for (const Limit& l :
        {limits::kThreshold, limits::kFocalLength, limits::kImageSize, limits::kDistance,
         limits::kTurn, limits::kTilt, limits::kPlaneSize, limits::kVelocity,
-        limits::kAngularVelocity, limits::kFrameCount, limits::kPlayedFrames, limits::kBudgetPixels,
-        limits::kBudgetMs, limits::kContentQuality, limits::kZoom, limits::kPlayRate}) {
+        limits::kAngularVelocity, limits::kFlowCoefficient, limits::kFrameCount,
+        limits::kPlayedFrames, limits::kBudgetPixels, limits::kBudgetMs, limits::kContentQuality,
+        limits::kZoom, limits::kPlayRate}) {
     EXPECT_LT(l.minimum, l.maximum) << l.what;
     EXPECT_STRNE(l.what, "");
   }
