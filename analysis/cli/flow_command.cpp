@@ -189,14 +189,18 @@ nlohmann::json flow_report(const CliArgs& a) {
   return j;
 }
 
+// `value` as a reader expects it: a zero is printed "0", never "-0" (adding +0.0 turns a
+// negative zero into a positive one and changes no other number).
+double shown(double value) { return value + 0.0; }
+
 void print_text(const nlohmann::json& j, std::ostream& out) {
   out << "Planar flow coefficients (" << j["units"].get<std::string>() << ")\n";
   for (const char* k : {"tx", "ty", "j11", "j12", "j21", "j22", "px", "py"}) {
-    out << "  " << k << " = " << j["coefficients"][k].get<double>() << "\n";
+    out << "  " << k << " = " << shown(j["coefficients"][k].get<double>()) << "\n";
   }
   out << "Planar basis\n";
   for (const char* k : {"scale", "squash", "shear", "rotation", "px", "py"}) {
-    out << "  " << k << " = " << j["basis"][k].get<double>() << "\n";
+    out << "  " << k << " = " << shown(j["basis"][k].get<double>()) << "\n";
   }
   for (const char* key : {"homography_taylor", "homography_exact"}) {
     if (!j.contains(key)) continue;

@@ -281,6 +281,10 @@ void AnimationControls::compared_toggled(QAction* action) {
   if (checked < 2 || checked > kMaxComparedPolicies) {
     const QSignalBlocker block(action);
     action->setChecked(!action->isChecked());  // refused: the comparison keeps 2 .. 4
+    emit refused(tr("Policies: the comparison plays 2 to %1 policies; %2")
+                     .arg(kMaxComparedPolicies)
+                     .arg(checked < 2 ? tr("check another before unchecking this one")
+                                      : tr("uncheck one before checking another")));
     return;
   }
   emit compared_edited();

@@ -50,6 +50,8 @@ class AnimationControls : public QWidget {
   void display_edited();
   void source_edited();
   void compared_edited();
+  // An edit the controls refused themselves (one line saying why); nothing changed.
+  void refused(const QString& message);
 
  private:
   QWidget* make_source_row();

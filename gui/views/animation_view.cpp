@@ -134,6 +134,7 @@ AnimationView::AnimationView(WindowModel* window, QWidget* parent)
     for (const ReusePolicy* policy : controls_->compared()) names.push_back(policy->name);
     if (!window_->set_compared(names)) show_panels();
   });
+  connect(controls_, &AnimationControls::refused, window_, &WindowModel::reject);
   connect(window_, &WindowModel::panels_changed, this, &AnimationView::show_panels);
   show_panels();
 }

@@ -129,6 +129,35 @@ TEST(FlowCommand, JsonMatchesIndependentComputationOnRandomCases) {
   }
 }
 
+// A plane translating sideways has px = py = 0 computed as -0: the text says "0".
+TEST(FlowCommand, TextNeverPrintsANegativeZero) {
+  const CliResult r = run({"flow",
+                           "--focal",
+                           "600",
+                           "--image",
+                           "800",
+                           "600",
+                           "--plane-point",
+                           "0",
+                           "0",
+                           "3",
+                           "--plane-normal",
+                           "0",
+                           "0",
+                           "1",
+                           "--velocity",
+                           "0.3",
+                           "0",
+                           "0",
+                           "--omega",
+                           "0",
+                           "0",
+                           "0"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("  px = 0\n"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("-0\n"), std::string::npos) << r.out;
+}
+
 TEST(FlowCommand, BadInputGivesOneLineErrorNamingTheArgument) {
   const Case ok{500.0,           Vec3(0, 0, 2),   Vec3(0, 0, 1), Vec3(0, -1, 0),
                 Vec3(0.1, 0, 0), Vec3(0, 0, 0.1), Vec2(1, 1)};

@@ -245,9 +245,10 @@ TEST_F(AnimationLayoutTest, PoliciesMenuComparesTwoToFourPolicies) {
   EXPECT_EQ(names(), (std::vector<std::string>{"perspective", "affine", "talisman"}));
   action("dissertation")->trigger();
   EXPECT_EQ(names().size(), 4u);
-  action("exact")->trigger();  // a fifth: refused
+  action("exact")->trigger();  // a fifth: refused, with a word
   EXPECT_FALSE(action("exact")->isChecked());
   EXPECT_EQ(names().size(), 4u);
+  EXPECT_TRUE(window().message().contains("2 to 4 policies")) << window().message().toStdString();
   action("affine")->trigger();
   action("dissertation")->trigger();
   EXPECT_EQ(names(), (std::vector<std::string>{"perspective", "talisman"}));
