@@ -24,8 +24,11 @@ namespace {
 constexpr int kMaxRepeat = 1000000;
 
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
-                                             "--conventional-single-sample", "--near",
-                                             "--guard-band", "--no-skip-hidden"};
+                                             "--conventional-single-sample",
+                                             "--near",
+                                             "--guard-band",
+                                             "--no-skip-hidden",
+                                             "--hole-fill"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
 void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,
@@ -101,6 +104,10 @@ int animate_plane(const CliArgs& a, std::ostream& out, std::ostream& err) {
     j["thresholds"] = settings.thresholds;
     j["content"] = content_name(settings.content.kind);
     j["content_quality"] = settings.content.quality;
+    if (reports_holes(*settings.policy)) {
+      j["cadence"] = settings.cadence;
+      j["latency_frames"] = settings.policy->latency_frames;
+    }
     out << j.dump(2) << "\n";
   } else {
     print_summary(summary, name, *settings.policy, out);
@@ -154,6 +161,9 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--quality", 1},
                            {"--budget-pixels", 1},
                            {"--budget-ms", 1},
+                           {"--cadence", 1},
+                           {"--stabilization-plane", 6},
+                           {"--hole-fill", 1},
                            {"--frames", 1},
                            {"--repeat-timing", 1},
                            {"--no-warm-up", 0},

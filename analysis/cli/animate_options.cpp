@@ -97,6 +97,25 @@ EngineSettings read_engine_settings(const CliArgs& a) {
   }
   if (a.has("--quality")) s.content.quality = a.integer_in("--quality", limits::kContentQuality);
   s.budget = read_frame_budget(a);
+  if (a.has("--cadence")) {
+    s.cadence = a.integer_in("--cadence", limits::kCadence);
+    if (s.policy->schedule != Schedule::kCadence && !a.has("--policies")) {
+      throw UsageError(
+          "--cadence: needs a policy on a fixed cadence (timewarp, "
+          "stabilized-plane, depth-reprojection, cadence), not '" +
+          mode + "'");
+    }
+  }
+  if (a.has("--stabilization-plane")) {
+    const std::vector<double> v =
+        a.numbers_in("--stabilization-plane", limits::kStabilizationPlane);
+    s.stabilization.automatic = false;
+    s.stabilization.point = Vec3(v[0], v[1], v[2]);
+    s.stabilization.normal = Vec3(v[3], v[4], v[5]);
+    if (!(glm::length(s.stabilization.normal) > 0.0)) {
+      throw UsageError("--stabilization-plane: the normal NX NY NZ must not be zero");
+    }
+  }
   // compare checks its --policies list itself (analysis/cli/compare_command.cpp).
   if (s.budget.unit != FrameBudget::Unit::kNone && !s.policy->shares_budget &&
       !a.has("--policies")) {
@@ -192,8 +211,11 @@ void RunOutput::apply_to(RunOptions& options, const SourceKind& kind) const {
   if (!csv) return;
   csv->open(fs::path(dir) / "frames.csv");
   if (!*csv) throw UsageError("--out: cannot write into '" + dir + "'");
-  kind.write_csv_header(*csv);
-  options.on_record = [csv = csv, row = kind.write_csv_row](const FrameRecord& record) {
+  // The header waits for the first frame, which says whether the rows carry hole pixels.
+  options.on_record = [csv = csv, header = kind.write_csv_header, row = kind.write_csv_row,
+                       first = true](const FrameRecord& record) mutable {
+    if (first) write_csv_header_for(*csv, header, record.frame.reports_holes);
+    first = false;
     row(*csv, record);
   };
 }

@@ -26,6 +26,10 @@ SceneSettings read_scene_settings(const CliArgs& a) {
     throw UsageError("--guard-band: must be from 0 to 16 image sizes");
   }
   s.skip_hidden = !a.has("--no-skip-hidden");
+  const std::string fill = a.text_or("--hole-fill", hole_fill_name(s.hole_fill));
+  if (!parse_hole_fill(fill, s.hole_fill)) {
+    throw UsageError("--hole-fill: '" + fill + "' is not one of " + hole_fill_name_list());
+  }
   return s;
 }
 
@@ -84,6 +88,11 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   j["mode"] = settings.engine.policy->name;
   j["thresholds"] = settings.engine.thresholds;
   j["skip_hidden"] = settings.skip_hidden;
+  if (reports_holes(*settings.engine.policy)) {
+    j["cadence"] = settings.engine.cadence;
+    j["latency_frames"] = settings.engine.policy->latency_frames;
+    j["hole_fill"] = hole_fill_name(settings.hole_fill);
+  }
   output.finish();
   output.write_summary(j);
   if (a.has("--json")) {

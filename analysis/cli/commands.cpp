@@ -27,6 +27,9 @@ std::string animate_usage() {
   usage += "               [--sampling " + sampling_name_list("|") + "] [--frames N]\n";
   usage += "               [--content " + content_name_list("|") + "] [--quality N]\n";
   usage += "               [--budget-pixels N | --budget-ms T]   (--mode budget only)\n";
+  usage +=
+      "               [--cadence N] [--stabilization-plane X Y Z NX NY NZ]\n"
+      "                 (a policy on a fixed cadence: render every N-th frame, 1..8)\n";
   usage += "               [--repeat-timing N]   (timed passes after a warm-up, default " +
            std::to_string(kDefaultTimingRepetitions) +
            ")\n"
@@ -36,7 +39,7 @@ std::string animate_usage() {
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
       "               [--compare-conventional [--conventional-single-sample]]\n"
-      "               [--near Z] [--guard-band G]\n"
+      "               [--near Z] [--guard-band G] [--hole-fill none|stretch|background]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode " +
       source_kind_modes("|") +
@@ -88,7 +91,9 @@ const std::vector<Command>& all_commands() {
        "               [--delta ...] [--sampling ...] [--frames N] [--repeat-timing N]\n"
        "               [--content texture|shaded|impostor] [--quality N]\n"
        "               [--budget-pixels N | --budget-ms T]   (with budget in the list)\n"
+       "               [--cadence N] [--stabilization-plane X Y Z NX NY NZ]\n"
        "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
+       "               [--hole-fill none|stretch|background]\n"
        "               [--json] [--out DIR [--force]] [--quiet]\n"
        "  policies: the names of 'oflab-cli policies'",
        run_compare_command},

@@ -28,7 +28,7 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
     *kind = &source_kind("scene");
     return source;
   }
-  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden"}) {
+  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill"}) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
   }
   *kind = &source_kind("plane");
@@ -53,7 +53,7 @@ void write_outputs(const std::string& dir, const SourceKind& kind,
   for (int l = 0; l < kLevelCount; ++l) summary << ",pct_" << level_name(static_cast<Level>(l));
   summary << ",work_saved,time_saved,model_work_saved,max_measured_error_px,"
              "mean_measured_error_px,mean_psnr_db,layer_frames,frames,frames_over_budget,"
-             "starved_layer_frames,mean_optimality_gap\n";
+             "starved_layer_frames,mean_optimality_gap,hole_pixels,latency_frames\n";
   for (const PolicyRow& row : rows) {
     summary << row.name;
     for (double share : row.level_share) summary << ',' << 100.0 * share;
@@ -65,10 +65,10 @@ void write_outputs(const std::string& dir, const SourceKind& kind,
     if (row.budgeted) {
       summary << ',' << row.frames_over_budget << ',' << row.starved_layer_frames << ',';
       if (std::isfinite(row.mean_optimality_gap)) summary << row.mean_optimality_gap;
-      summary << "\n";
     } else {
-      summary << ",,,\n";
+      summary << ",,,";
     }
+    summary << ',' << row.hole_pixels << ',' << row.latency_frames << "\n";
   }
 }
 
@@ -116,14 +116,30 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(
-        args,
-        {{"--script", 1},         {"--scene", 1},         {"--policies", 1}, {"--texture", 1},
-         {"--threshold", 1},      {"--thresholds", 4},    {"--delta", 1},    {"--sampling", 1},
-         {"--frames", 1},         {"--repeat-timing", 1}, {"--out", 1},      {"--force", 0},
-         {"--json", 0},           {"--quiet", 0},         {"--near", 1},     {"--guard-band", 1},
-         {"--no-skip-hidden", 0}, {"--content", 1},       {"--quality", 1},  {"--budget-pixels", 1},
-         {"--budget-ms", 1}});
+    const CliArgs a(args, {{"--script", 1},
+                           {"--scene", 1},
+                           {"--policies", 1},
+                           {"--texture", 1},
+                           {"--threshold", 1},
+                           {"--thresholds", 4},
+                           {"--delta", 1},
+                           {"--sampling", 1},
+                           {"--frames", 1},
+                           {"--repeat-timing", 1},
+                           {"--out", 1},
+                           {"--force", 0},
+                           {"--json", 0},
+                           {"--quiet", 0},
+                           {"--near", 1},
+                           {"--guard-band", 1},
+                           {"--no-skip-hidden", 0},
+                           {"--content", 1},
+                           {"--quality", 1},
+                           {"--budget-pixels", 1},
+                           {"--budget-ms", 1},
+                           {"--cadence", 1},
+                           {"--stabilization-plane", 6},
+                           {"--hole-fill", 1}});
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");

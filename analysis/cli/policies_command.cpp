@@ -1,6 +1,10 @@
 // `oflab-cli policies`: the engine's reuse policies (core/engine/reuse_policy.h), the values
-// of `oflab-cli animate --mode`, one per line as "name  summary", or as JSON:
-//   {"policies": [{"name": ..., "summary": ...}, ...]} in registry order.
+// of `oflab-cli animate --mode`, one per line as "name  summary" followed by indented lines
+// saying which system each models and where it breaks, or as JSON:
+//   {"policies": [{"name", "summary", "models", "breaks", "schedule" ("threshold" or
+//   "cadence"), "warp" ("per-layer" or "per-pixel-depth"), "latency_frames"}, ...],
+//   "interpolation_latency_frames": 1} in registry order; the last is what frame
+//   generation's interpolation between two renders would score, for comparison.
 #include <algorithm>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -15,16 +19,26 @@
 namespace oflab {
 namespace {
 
+// Frame generation (DLSS 3, FSR 3) interpolates between two rendered frames, so it can show
+// a frame only once the next one is rendered: one frame late.
+constexpr int kInterpolationLatencyFrames = 1;
+
 nlohmann::ordered_json policies_json() {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const ReusePolicy& p : reuse_policies()) {
     nlohmann::ordered_json entry;
     entry["name"] = p.name;
     entry["summary"] = p.summary;
+    entry["models"] = p.models;
+    entry["breaks"] = p.breaks;
+    entry["schedule"] = p.schedule == Schedule::kCadence ? "cadence" : "threshold";
+    entry["warp"] = p.frame_warp == FrameWarp::kPerPixelDepth ? "per-pixel-depth" : "per-layer";
+    entry["latency_frames"] = p.latency_frames;
     list.push_back(entry);
   }
   nlohmann::ordered_json report;
   report["policies"] = list;
+  report["interpolation_latency_frames"] = kInterpolationLatencyFrames;
   return report;
 }
 
@@ -33,8 +47,13 @@ void print_text(std::ostream& stream) {
   for (const ReusePolicy& p : reuse_policies()) width = std::max(width, std::string(p.name).size());
   std::ostringstream out;  // keeps the caller's stream formatting untouched
   for (const ReusePolicy& p : reuse_policies()) {
-    out << std::left << std::setw(static_cast<int>(width)) << p.name << "  " << p.summary << "\n";
+    out << std::left << std::setw(static_cast<int>(width)) << p.name << "  " << p.summary << "\n"
+        << std::string(width + 2, ' ') << "models: " << p.models << "\n"
+        << std::string(width + 2, ' ') << "breaks: " << p.breaks << "\n";
   }
+  out << "Latency: every policy extrapolates from the last render (0 frames of delay); frame\n"
+         "generation's interpolation between two renders would show each frame "
+      << kInterpolationLatencyFrames << " frame late.\n";
   stream << out.str();
 }
 

@@ -10,6 +10,7 @@
 #include "experiments/experiments_costs.h"
 #include "experiments/experiments_delta.h"
 #include "experiments/experiments_policies.h"
+#include "experiments/experiments_reprojection.h"
 #include "experiments/experiments_scene_shifting.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
@@ -82,6 +83,12 @@ ReportSection run_costs(ExperimentContext& c) {
   return cost_sweep_section(r, c);
 }
 
+ReportSection run_reprojection(ExperimentContext& c) {
+  const ReprojectionResult r =
+      run_reprojection_experiment(reprojection_spec(c.quick()), c.progress_for("reprojection", ""));
+  return reprojection_section(r, c);
+}
+
 ReportSection run_policies_comparison(ExperimentContext& c) {
   const PoliciesResult r = run_policies_experiment(c.texture(), policies_spec(c.quick()),
                                                    c.progress_for("policies", ""));
@@ -98,6 +105,7 @@ const std::vector<Experiment>& experiments() {
       {"costs", "when reuse pays (re-render cost sweep)", run_costs},
       {"policies", "rival reuse policies side by side", run_policies_comparison},
       {"scene-shifting", "scene shifting (chapter 3)", scene_shifting_section},
+      {"reprojection", "today's reprojection beside optic flow", run_reprojection},
   };
   return list;
 }

@@ -71,6 +71,8 @@ PolicyRow policy_row(const PolicyRun& r) {
   row.starved_layer_frames = s.starved_layer_frames;
   row.gap_frames = s.gap_frames;
   row.mean_optimality_gap = s.mean_optimality_gap;
+  row.hole_pixels = s.hole_pixels;
+  row.latency_frames = r.policy->latency_frames;
   double sum = 0.0;
   long count = 0;
   for (const AnimationFrame& f : r.run.frames) {
@@ -100,7 +102,9 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
                       {"mean_measured_error_px", row.mean_measured_error_px},
                       {"mean_psnr_db", finite_or_null(row.mean_psnr_db)},
                       {"layer_frames", row.layer_frames},
-                      {"frames", row.frames}};
+                      {"frames", row.frames},
+                      {"hole_pixels", row.hole_pixels},
+                      {"latency_frames", row.latency_frames}};
   if (row.budgeted) {
     j["budget"] = {{"frames_over_budget", row.frames_over_budget},
                    {"starved_layer_frames", row.starved_layer_frames},

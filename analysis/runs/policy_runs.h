@@ -5,6 +5,8 @@
 // rows are documented in manual/policies.md.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -59,12 +61,15 @@ struct PolicyRow {
   double mean_psnr_db = 0.0;
   long layer_frames = 0;
   int frames = 0;
+  std::int64_t hole_pixels = 0;  // RunSummary's total (0 for a policy without holes)
+  int latency_frames = 0;        // the policy's (ReusePolicy::latency_frames)
 };
 PolicyRow policy_row(const PolicyRun& run);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
-// "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames"}, and
+// "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames",
+// "hole_pixels" (the total over the frames), "latency_frames"}, and
 // for a budgeted row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames",
 // "mean_optimality_gap" (fraction, null when no frame was checked)}.
 nlohmann::json policy_row_json(const PolicyRow& row);

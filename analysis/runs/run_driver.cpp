@@ -39,6 +39,8 @@ class SummaryTotals {
     s_.time_ms += f.time_ms;
     s_.visibility_time_ms += f.visibility_ms;
     s_.max_measured_error_px = std::max(s_.max_measured_error_px, f.max_measured_error_px);
+    s_.hole_pixels += f.hole_pixels;
+    s_.reports_holes = s_.reports_holes || f.reports_holes;
     for (const FrameReport& l : f.layer_reports) {
       if (!l.visible || !std::isfinite(l.measured_error_px)) continue;
       const double excess = l.measured_error_px - l.estimated_error_px;

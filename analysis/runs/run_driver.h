@@ -94,6 +94,10 @@ struct RunSummary {
   double render_ms = 0.0;              // of time_ms, rendering contents (re-renders)
   double max_photometric_error = 0.0;  // grey levels (FrameReport::photometric_error)
   double max_measured_error_px = 0.0;
+  // Hole pixels over the frames (AnimationFrame::hole_pixels), and whether the policy
+  // reports them (AnimationFrame::reports_holes: the summaries then carry the total).
+  std::int64_t hole_pixels = 0;
+  bool reports_holes = false;
   // Measured minus estimated error (FrameReport) of the worst visible engine layer report
   // over the run, pixels: at most 0 when the estimates bound the truth; NaN when there was
   // no such report (scene shifting keeps no per-layer books).

@@ -36,7 +36,7 @@ std::unique_ptr<Animator> make_plane(const RunSource& source, bool baseline) {
 // A kind's CSV of a run that kept its frames: the header, then a row per frame.
 template <void (*Header)(std::ostream&), void (*Row)(std::ostream&, const FrameRecord&)>
 void write_csv_of(std::ostream& out, const AnimationRun& run) {
-  Header(out);
+  write_csv_header_for(out, Header, !run.frames.empty() && run.frames.front().reports_holes);
   for (std::size_t i = 0; i < run.frames.size(); ++i) {
     Row(out, {run.frames[i], run.psnr_db[i], run.baseline_ms[i], run.conventional_ms[i]});
   }
@@ -82,7 +82,9 @@ void write_plane_csv_row(std::ostream& out, const FrameRecord& record) {
       << ',' << record.psnr_db << ',' << r.time_ms << ',' << r.pixels_written << ',' << r.render_ms
       << ',' << r.warp_ms << ',' << r.model_work << ',' << r.photometric_error << ",\"";
   for (char c : r.note) out << (c == '"' ? '\'' : c);
-  out << "\"\n";
+  out << '"';
+  if (record.frame.reports_holes) out << ',' << record.frame.hole_pixels;
+  out << '\n';
 }
 
 // Levels count frames here (the facts play_plane counted).
@@ -90,6 +92,7 @@ void write_plane_csv_row(std::ostream& out, const FrameRecord& record) {
 nlohmann::json with_budget(nlohmann::json summary, const RunSummary& s) {
   const nlohmann::json budget = budget_json(s);
   if (!budget.is_null()) summary["budget"] = budget;
+  if (s.reports_holes) summary["hole_pixels"] = s.hole_pixels;
   return summary;
 }
 
@@ -163,7 +166,9 @@ void write_scene_csv_row(std::ostream& out, const FrameRecord& record) {
       << ',' << r.pixels_written << ',' << r.pixels_composited << ',' << r.hidden_area_px << ','
       << r.max_measured_error_px << ',' << record.psnr_db << ',' << record.baseline_ms << ','
       << record.conventional_ms << ',' << r.render_ms << ',' << r.model_work << ','
-      << r.max_photometric_error << '\n';
+      << r.max_photometric_error;
+  if (r.reports_holes) out << ',' << r.hole_pixels;
+  out << '\n';
 }
 
 nlohmann::json scene_levels_json(const RunSummary& s, bool as_percent) {
@@ -349,6 +354,18 @@ void print_savings_and_error(const RunSummary& s, std::ostream& out) {
       << "affine 1/2.1, translation 1/35 per pixel, re-render at its content's cost); content "
       << "render time " << s.render_ms << " ms; max photometric error " << s.max_photometric_error
       << " grey levels\n";
+}
+
+void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool holes) {
+  if (!holes) {
+    header(out);
+    return;
+  }
+  std::ostringstream line;
+  header(line);
+  std::string text = line.str();
+  if (!text.empty() && text.back() == '\n') text.pop_back();
+  out << text << ",hole_pixels\n";
 }
 
 }  // namespace oflab

@@ -66,6 +66,11 @@ struct SourceKind {
   bool selected_by_mode = false;
 };
 
+// Writes a kind's CSV header (`header`, one of SourceKind::write_csv_header); with `holes`
+// (AnimationFrame::reports_holes) the line gets a last column, hole_pixels, which the kinds'
+// rows then fill. Without holes the header is the kind's own, byte for byte.
+void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool holes);
+
 // The kinds, in the order above.
 const std::vector<SourceKind>& source_kinds();
 // The kind named `name`; throws std::invalid_argument for an unknown name.

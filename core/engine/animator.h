@@ -57,6 +57,13 @@ struct AnimationFrame {
   // Largest measured error over the drawn layers, pixels (0 when none was drawn; see
   // each animator for what is measured).
   double max_measured_error_px = 0.0;
+  // Pixels of the frame no warped pixel reached (core/scene/depth_reprojection.h: a
+  // disocclusion or a part of the view outside the rendered frame); only a per-pixel depth
+  // warp has any, a layer warp shows every layer whole.
+  std::int64_t hole_pixels = 0;
+  // True under a policy whose reports carry hole pixels (core/engine/reuse_policy.h
+  // reports_holes): the per-frame CSV and the summaries then add them.
+  bool reports_holes = false;
   // The engine report of each layer updated this frame, in layer order: exactly one for a
   // single plane (also when it is not visible), one per animated polygon for a scene, none
   // for scene shifting (its slices keep no per-term books).

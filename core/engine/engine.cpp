@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "flow/homography.h"
+#include "flow/reprojection.h"
 
 namespace oflab {
 namespace {
@@ -385,6 +386,13 @@ void PlaneEngine::rerender(const PlanePose& pose, FrameReport& report) {
   displayed_ = target_warp(pose);
   model_ = displayed_;
   rendered_warp_ = displayed_;
+  render_pose_ = sized_pose(pose);
+  if (!origin_set_) {
+    origin_pose_ = render_pose_;
+    origin_set_ = true;
+  }
+  render_plane_ = render_plane_vector(render_pose_);
+  since_render_ = 0;
   const auto t0 = Clock::now();
   if (content_is_lit(settings_.content)) {
     rerender_content(pose, report);
@@ -592,9 +600,30 @@ LevelPixels PlaneEngine::level_pixels() const {
   return estimate_level_pixels(displayed, cache_.valid ? area(cache_.layer) : displayed);
 }
 
+void PlaneEngine::set_frame_plane(const Vec3& m) {
+  frame_plane_ = m;
+  frame_plane_set_ = true;
+}
+
+Vec3 PlaneEngine::render_plane_vector(const PlanePose& sized) const {
+  if (policy().frame_plane == FramePlane::kInfinity) return Vec3(0.0);
+  if (frame_plane_set_) return frame_plane_;
+  const StabilizationPlane& given = settings_.stabilization;
+  if (given.automatic || !origin_set_) return plane_vector(sized);
+  // The given plane moves with the single plane from its first pose.
+  return plane_vector_after(plane_vector_of(given.point, given.normal),
+                            rigid_step_between(origin_pose_, sized));
+}
+
 Mat3 PlaneEngine::next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
                              FitFiducials& fit) const {
   fit = fit_;
+  if (policy().model == ModelUpdate::kFrameHomography) {
+    // One homography for the whole frame since the render: the viewer's rigid step since
+    // then and the frame plane kept at the render.
+    const RigidStep3 step = rigid_step_between(render_pose_, sized_pose(current));
+    return plane_induced_homography(camera_, step, render_plane_) * rendered_warp_;
+  }
   if (policy().model == ModelUpdate::kExact) {
     return exact_texture_warp(camera_, sized_pose(current));  // the exact frame-to-frame homography
   }
@@ -663,8 +692,9 @@ void PlaneEngine::measure_choice() {
   LayerCandidates& c = m.candidates;
   c.kind = LayerCandidates::Kind::kChoice;
   c.pixels = level_pixels();
-  c.choice = policy().choose(policy(),
-                             {m.flow, m.carried, settings_.thresholds, c.pixels, m.pending, m.fit});
+  m.since_render = since_render_ + 1;
+  c.choice = policy().choose(policy(), {m.flow, m.carried, settings_.thresholds, c.pixels,
+                                        m.pending, m.fit, m.since_render, settings_.cadence});
   c.feasible = policy().allowed;
   for (int l = 0; l < kTermCount; ++l) {
     c.error[l] = std::max(neglected_error(m.carried, m.flow, static_cast<Level>(l)), m.pending[l]);
@@ -711,6 +741,7 @@ void PlaneEngine::apply_choice(Level level, FrameReport& report) {
   }
   // Talisman's fit is checked against the exact projection each frame: nothing is carried.
   if (policy().model == ModelUpdate::kAffineFit) accumulated_.fill(0.0);
+  since_render_ = m.since_render;  // a re-render below resets it
   apply_level(report, m.measures.expansion_point, m.current);
 }
 

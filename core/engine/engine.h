@@ -46,6 +46,19 @@
 
 namespace oflab {
 
+// The stabilization plane of the `stabilized-plane` policy (core/engine/reuse_policy.h
+// FramePlane::kStabilization), one plane for the whole frame. Automatic: the plane whose
+// inverse depth best fits the visible layers' (the scene engine fits it at every render,
+// core/scene/depth_reprojection.h fit_inverse_depth_plane; a single plane is its own plane).
+// Given: the plane through `point` with normal `normal` in world coordinates (a scene's; for
+// a single plane, the viewer frame of frame 0, moving with the plane), as an application
+// sets it. Precondition when given: finite, normal non-zero, the plane not through the eye.
+struct StabilizationPlane {
+  bool automatic = true;
+  Vec3 point{0.0, 0.0, 1.0};
+  Vec3 normal{0.0, 0.0, 1.0};
+};
+
 struct EngineSettings {
   // What may be reused and how levels are chosen (core/engine/reuse_policy.h); never null.
   const ReusePolicy* policy = &default_reuse_policy();
@@ -70,6 +83,11 @@ struct EngineSettings {
   // `budget` policy; core/engine/budget.h): kNone takes budget_or_default's. Other
   // policies ignore it (the CLI and GUI refuse a budget without the budget policy).
   FrameBudget budget;
+  // A fixed cadence's period (Schedule::kCadence policies): render every N-th frame since a
+  // layer's last render, warp between; limits::kCadence (1..8). Others ignore it.
+  int cadence = 2;
+  // The plane of FramePlane::kStabilization policies; others ignore it.
+  StabilizationPlane stabilization;
 };
 
 // The dissertation's cost model (section 6.4.4), in pixels of a perspective warp: a
@@ -210,6 +228,13 @@ class PlaneEngine {
   const EngineSettings& settings() const { return settings_; }
   const ReusePolicy& policy() const { return *settings_.policy; }
 
+  // The frame's stabilization plane as a plane vector m in the current viewer frame
+  // (core/flow/reprojection.h; m = 0 the plane at infinity), set by a scene before each
+  // frame's measure; a re-render keeps the plane set then for the warps until the next one.
+  // Without a call, FramePlane::kStabilization uses EngineSettings::stabilization (automatic:
+  // the layer's own plane).
+  void set_frame_plane(const Vec3& m);
+
  private:
   struct Cache {
     bool valid = false;
@@ -239,6 +264,7 @@ class PlaneEngine {
     TermArray flow{}, carried{}, pending{};
     Mat3 model{1.0};  // the model warp after this frame
     FitFiducials fit;
+    int since_render = 1;
   };
 
   void measure(bool start, const PlanePose* previous, const RigidMotion* motion,
@@ -254,6 +280,7 @@ class PlaneEngine {
   void show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report);
   Mat3 next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
                   FitFiducials& fit) const;
+  Vec3 render_plane_vector(const PlanePose& sized) const;
   Mat3 target_warp(const PlanePose& pose) const;
   Vec2 translation_step(const Mat3& correction, const Vec2& point) const;
   Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point, const Mat3& model) const;
@@ -304,6 +331,16 @@ class PlaneEngine {
   // that in a steady state the frames reuse the same few layer buffers.
   WarpedLayer warped_;
   TermArray accumulated_{};
+  // Today's reprojection: the pose at the last render, the frame plane kept then, the plane
+  // set for this frame (set_frame_plane), the first pose shown (a given stabilization
+  // plane's world for a single plane) and the frames since the last render.
+  PlanePose render_pose_;
+  Vec3 render_plane_{0.0};
+  Vec3 frame_plane_{0.0};
+  bool frame_plane_set_ = false;
+  PlanePose origin_pose_;
+  bool origin_set_ = false;
+  int since_render_ = 0;
   // True while the shown layer is the whole plane and may be reused: false before the first
   // render and after a frame that was clipped or not visible.
   bool shown_ = false;

@@ -54,6 +54,13 @@ inline constexpr Limit kPlayedFrames{"frame count", "frames", 1.0, kFrameCount.m
 // The budget policy's frame budget (core/engine/budget.h): pixels or milliseconds per frame.
 inline constexpr Limit kBudgetPixels{"frame budget", "px", 0.0, 1e9};
 inline constexpr Limit kBudgetMs{"frame budget", "ms", 0.0, 1e9};
+// A fixed cadence (core/engine/reuse_policy.h Schedule::kCadence): render every N-th frame and
+// warp the frames between (`--cadence N`); 1 renders every frame, 8 is one render in eight.
+inline constexpr Limit kCadence{"cadence", "frames", 1.0, 8.0, true};
+// Each coordinate of a given stabilization plane's point and normal (EngineSettings::
+// stabilization), world units.
+inline constexpr Limit kStabilizationPlane{"stabilization plane coordinate", "u", -10000.0,
+                                           10000.0};
 // Layer content quality: samples per pixel of shaded content, detail of impostors
 // (core/content/layer_content.h, whose kMaxContentQuality is this maximum).
 inline constexpr Limit kContentQuality{"content quality", "", 1.0, 256.0, true};

@@ -100,6 +100,7 @@ class PlaneScriptAnimator final : public Animator {
     AnimationFrame f;
     f.frame = r.frame;
     f.layers = 1;
+    f.reports_holes = reports_holes(*settings_.policy);
     if (r.visible) {
       f.levels[static_cast<int>(r.level)] = 1;
       f.max_measured_error_px = r.measured_error_px;

@@ -10,7 +10,26 @@ constexpr LevelSet kNoPerspective{true, true, true, false, true};
 constexpr LevelSet kOnlyRerender{false, false, false, false, true};
 constexpr LevelSet kAffineOnly{false, false, true, false, true};
 
+constexpr LevelSet kWarpOrRerender{false, false, false, true, true};
+
 Level always_rerender(const ReusePolicy&, const FrameInputs&) { return Level::kRerender; }
+
+ReusePolicy described(ReusePolicy p, const char* models, const char* breaks) {
+  p.models = models;
+  p.breaks = breaks;
+  return p;
+}
+
+// A policy of today's reprojection: a fixed cadence, the perspective level showing its model.
+ReusePolicy on_cadence(const char* name, const char* summary, ModelUpdate model, FramePlane plane,
+                       FrameWarp warp, const char* models, const char* breaks) {
+  ReusePolicy p{name, summary, InitialView::kExact, model, kWarpOrRerender, cadence_choice};
+  p.bounded = false;  // a cadence shows its warp whatever the error
+  p.schedule = Schedule::kCadence;
+  p.frame_plane = plane;
+  p.frame_warp = warp;
+  return described(p, models, breaks);
+}
 
 }  // namespace
 
@@ -43,24 +62,73 @@ Level talisman_choice(const ReusePolicy&, const FrameInputs& inputs) {
   return geometric && sampling && !f.facing_changed ? Level::kAffine : Level::kRerender;
 }
 
+Level cadence_choice(const ReusePolicy&, const FrameInputs& inputs) {
+  return inputs.since_render >= inputs.cadence ? Level::kRerender : Level::kPerspective;
+}
+
+bool reports_holes(const ReusePolicy& policy) {
+  return policy.frame_warp == FrameWarp::kPerPixelDepth || policy.schedule == Schedule::kCadence;
+}
+
 const std::vector<ReusePolicy>& reuse_policies() {
   static const std::vector<ReusePolicy> policies = {
-      {"perspective", "Algorithm 1, corrected: every level, first-order Taylor flow model",
-       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice},
-      {"affine", "section 6.5: affine initial view and flow model, no perspective level",
-       InitialView::kAffinePart, ModelUpdate::kAffineTaylor, kNoPerspective, threshold_choice},
-      {"exact", "every level, but the model follows the exact warp of each pose",
-       InitialView::kExact, ModelUpdate::kExact, kAllLevels, threshold_choice},
-      {"rerender", "the baseline: no reuse, every frame rendered exactly", InitialView::kExact,
-       ModelUpdate::kExact, kOnlyRerender, always_rerender},
-      {"dissertation", "Algorithm 1 as printed: per-term cascade, bounding-box size, |Omega|^2",
-       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, printed_choice, FlowBooks::kPrinted,
-       false},
-      {"talisman", "Lengyel & Snyder 97: least-squares affine warp of the layer, fiducials",
-       InitialView::kExact, ModelUpdate::kAffineFit, kAffineOnly, talisman_choice},
-      {"budget", "section 7.5.2: a per-frame pixel or time budget allocated over the layers",
-       InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice, FlowBooks::kCorners,
-       false, true},
+      described(
+          {"perspective", "Algorithm 1, corrected: every level, first-order Taylor flow model",
+           InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice},
+          "the dissertation's optic-flow reuse (section 5.6.1, corrected): a plane per layer",
+          "keeps every layer within its thresholds; pays re-renders where the flow is not "
+          "first-order"),
+      described(
+          {"affine", "section 6.5: affine initial view and flow model, no perspective level",
+           InitialView::kAffinePart, ModelUpdate::kAffineTaylor, kNoPerspective, threshold_choice},
+          "the dissertation's affine mode (section 6.5)",
+          "its affine view misses the plane's perspective, which no level removes"),
+      described({"exact", "every level, but the model follows the exact warp of each pose",
+                 InitialView::kExact, ModelUpdate::kExact, kAllLevels, threshold_choice},
+                "optic-flow reuse with an exact model (oflab)",
+                "needs the exact pose of every layer each frame"),
+      described({"rerender", "the baseline: no reuse, every frame rendered exactly",
+                 InitialView::kExact, ModelUpdate::kExact, kOnlyRerender, always_rerender},
+                "conventional rendering", "never: it saves nothing"),
+      described(
+          {"dissertation", "Algorithm 1 as printed: per-term cascade, bounding-box size, |Omega|^2",
+           InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, printed_choice,
+           FlowBooks::kPrinted, false},
+          "Algorithm 1 as printed (section 5.4.5)",
+          "does not bound the error; |Omega|^2 re-renders whatever rotates"),
+      described(
+          {"talisman", "Lengyel & Snyder 97: least-squares affine warp of the layer, fiducials",
+           InitialView::kExact, ModelUpdate::kAffineFit, kAffineOnly, talisman_choice},
+          "Talisman's layer compositor (Torborg & Kajiya 96, Lengyel & Snyder 97)",
+          "perspective motion that no affine warp fits: it re-renders"),
+      described(
+          {"budget", "section 7.5.2: a per-frame pixel or time budget allocated over the layers",
+           InitialView::kExact, ModelUpdate::kTaylor, kAllLevels, threshold_choice,
+           FlowBooks::kCorners, false, true},
+          "a per-frame budget (section 7.5.2; Horvitz & Lengyel 97)",
+          "a budget too small for the motion starves layers and lets the error grow"),
+      on_cadence("timewarp",
+                 "asynchronous timewarp: rotation-only homography K R K^-1, fixed cadence",
+                 ModelUpdate::kFrameHomography, FramePlane::kInfinity, FrameWarp::kPerLayer,
+                 "asynchronous timewarp (Oculus/Meta ATW, SteamVR): the plane at infinity",
+                 "translation: blind to it and to parallax, error grows with inverse depth"),
+      on_cadence(
+          "stabilized-plane",
+          "late-stage reprojection: one stabilization plane's homography for the frame",
+          ModelUpdate::kFrameHomography, FramePlane::kStabilization, FrameWarp::kPerLayer,
+          "late-stage reprojection with a stabilization plane (HoloLens; OpenXR planar "
+          "reprojection)",
+          "content away from the plane: error grows with distance from it under translation"),
+      on_cadence("depth-reprojection",
+                 "post-rendering 3D warping: the frame forward-warped by per-pixel depth",
+                 ModelUpdate::kExact, FramePlane::kInfinity, FrameWarp::kPerPixelDepth,
+                 "post-rendering 3D warping (Mark, McMillan & Bishop 97), positional timewarp",
+                 "disocclusion: what was hidden at the render is a hole (marked, never filled "
+                 "silently)"),
+      on_cadence("cadence", "each layer by its own plane's exact homography, fixed cadence",
+                 ModelUpdate::kExact, FramePlane::kInfinity, FrameWarp::kPerLayer,
+                 "oflab's plane per layer on a fixed cadence (asynchronous spacewarp's schedule)",
+                 "only resampling and the sampling limit: the fair comparison for the three"),
   };
   return policies;
 }

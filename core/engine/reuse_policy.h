@@ -18,6 +18,15 @@
 //   budget       section 7.5.2 and Horvitz & Lengyel 97: a per-frame budget (pixels or
 //                milliseconds, EngineSettings::budget) allocated over the layers by cost and
 //                benefit (core/engine/budget.h).
+// Today's reprojection, on a fixed cadence (render every N-th frame, warp the frames between;
+// EngineSettings::cadence; manual/policies.md "Today's reprojection"):
+//   timewarp            asynchronous timewarp: every layer by the rotation-only homography
+//                       K R K^-1 (the plane at infinity);
+//   stabilized-plane    late-stage reprojection: every layer by the homography of one
+//                       stabilization plane for the whole frame (EngineSettings::stabilization);
+//   depth-reprojection  post-rendering 3D warping: the composited frame forward-warped by each
+//                       pixel's depth (core/scene/depth_reprojection.h), holes marked;
+//   cadence             each layer by its own plane's exact homography: the fair comparison.
 #pragma once
 
 #include <array>
@@ -39,14 +48,19 @@ enum class InitialView {
 
 // How the engine's model warp B (engine.h) follows the plane from frame to frame.
 enum class ModelUpdate {
-  kTaylor,        // B <- H1 B, H1 the first-order Taylor homography of the frame's flow
-  kAffineTaylor,  // the same with the perspective terms px, py zeroed (an affine flow model)
-  kExact,         // B <- the exact texture warp of the current pose: the model misses nothing
-                  // of higher order, so the engine takes the higher-order term as zero
-  kAffineFit,     // Talisman: B <- A R, R the warp of the last render and A the least-squares
-                  // affine map of the texture corners as rendered (R) onto their exact
-                  // projections now (affine_fit.h); the fit is checked against the exact
-                  // projection every frame, so no error is carried in the books
+  kTaylor,           // B <- H1 B, H1 the first-order Taylor homography of the frame's flow
+  kAffineTaylor,     // the same with the perspective terms px, py zeroed (an affine flow model)
+  kExact,            // B <- the exact texture warp of the current pose: the model misses nothing
+                     // of higher order, so the engine takes the higher-order term as zero
+  kFrameHomography,  // one homography for every layer of the frame, from the last render:
+                     // B <- P(R + t m^T)P^-1 B_render with (R, t) the rigid motion of the
+                     // viewer frame since the render and m the plane vector (1/Z =
+                     // m.(x/f, y/f, 1)) of the policy's FramePlane at the render; exact for
+                     // points on that plane, wrong by the parallax of every other depth
+  kAffineFit,        // Talisman: B <- A R, R the warp of the last render and A the least-squares
+                     // affine map of the texture corners as rendered (R) onto their exact
+                     // projections now (affine_fit.h); the fit is checked against the exact
+                     // projection every frame, so no error is carried in the books
 };
 
 // Which flow measures a policy's books and choice read (FrameInputs::flow, FrameReport::flow).
@@ -54,6 +68,21 @@ enum class FlowBooks {
   kCorners,  // measure_flow: per-corner bounds about the expansion point (corrected)
   kPrinted,  // measure_printed_flow: section 5.4.5 as printed (bounding-box size, |Omega|^2)
 };
+
+// When a policy renders: the threshold rule of Algorithm 1 (every policy's `choose` reads the
+// error books and thresholds), or a fixed cadence (render every N-th frame, warp between:
+// cadence_choice; asynchronous spacewarp renders every 2nd).
+enum class Schedule { kThreshold, kCadence };
+
+// The plane whose homography ModelUpdate::kFrameHomography applies to every layer.
+enum class FramePlane {
+  kInfinity,       // the plane at infinity: K R K^-1, rotation only (timewarp)
+  kStabilization,  // EngineSettings::stabilization: a given plane, or the automatic fit
+};
+
+// What a frame warp moves: each layer by its own warp (the engine), or the composited
+// frame pixel by pixel by its depth (the scene engine, core/scene/depth_reprojection.h).
+enum class FrameWarp { kPerLayer, kPerPixelDepth };
 
 // Talisman's sampling limits on the singular values of the fitted warp's 2x2 part
 // (FitFiducials): the layer may be magnified at most 2x (the engine's default sampling
@@ -80,6 +109,10 @@ struct FrameInputs {
   TermArray pending{};
   // ModelUpdate::kAffineFit only: the fiducials of this frame's fitted warp (affine_fit.h).
   FitFiducials fit{};
+  // Frames since the layer was last rendered, this one included (>= 1), and the fixed
+  // cadence of EngineSettings::cadence (1..8): what cadence_choice reads.
+  int since_render = 1;
+  int cadence = 2;
 };
 
 // The cost estimate of FrameInputs::pixels, before any warp is run, from the layers the
@@ -110,6 +143,16 @@ struct ReusePolicy {
   // budget (core/engine/budget.h allocate_frame); `choose` is then what a layer would take
   // were the budget unlimited.
   bool shares_budget = false;
+  // Today's reprojection (manual/policies.md): the schedule, the plane of a kFrameHomography
+  // model, what the frame warp moves, and the delay it adds in frames (0 for every
+  // extrapolating policy; frame generation's interpolation between two renders would be 1).
+  Schedule schedule = Schedule::kThreshold;
+  FramePlane frame_plane = FramePlane::kInfinity;
+  FrameWarp frame_warp = FrameWarp::kPerLayer;
+  int latency_frames = 0;
+  // For `oflab-cli policies`: the system it models (with its source) and where it breaks.
+  const char* models = "";
+  const char* breaks = "";
 
   bool allows(Level level) const { return allowed[static_cast<int>(level)]; }
   // False when only re-render is allowed: the engine then re-renders without measuring.
@@ -127,6 +170,16 @@ Level printed_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 // Talisman's choice: affine when every fiducial of inputs.fit is within its limit (geometric
 // <= thresholds[2], the sampling limits above, no change of facing), else re-render.
 Level talisman_choice(const ReusePolicy& policy, const FrameInputs& inputs);
+
+// The fixed cadence: re-render when inputs.since_render >= inputs.cadence (frame 0 and every
+// cadence-th frame after a render), else perspective (the policy's model warp, whatever
+// the error); the choice of timewarp, stabilized-plane, depth-reprojection and cadence.
+Level cadence_choice(const ReusePolicy& policy, const FrameInputs& inputs);
+
+// True when the policy's frames can have holes (FrameWarp::kPerPixelDepth) and its reports
+// therefore carry hole pixels; every policy on a fixed cadence reports them too (0 for the
+// per-layer warps, which show every layer whole).
+bool reports_holes(const ReusePolicy& policy);
 
 // Every policy, in the order help texts and the GUI list them (perspective first). The
 // entries live as long as the program; pointers to them may be kept and compared.

@@ -140,6 +140,9 @@ SceneEngine::~SceneEngine() = default;
 
 AnimationFrame SceneEngine::start(const ViewerPose& view) {
   frame_index_ = 0;
+  plane_known_ = false;
+  has_render_ = false;
+  source_of_.clear();
   for (auto& s : states_) s->live = false;
   return run_frame(nullptr, nullptr, view);
 }
@@ -304,6 +307,7 @@ void SceneEngine::measure_polygons(const ViewerPose* previous, const RigidMotion
     }
     const ScenePolygon& polygon = scene_.polygons[i];
     PlaneEngine& animator = polygon_engine(index);
+    if (uses_frame_plane_) animator.set_frame_plane(frame_plane_);
     const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
     s.candidates = s.live && previous && motion
                        ? animator.measure_advance(polygon_pose(polygon, *previous, s.texture_size),
@@ -388,12 +392,95 @@ LayerContent SceneEngine::polygon_content(int polygon) const {
   return content;
 }
 
+bool SceneEngine::cadence_frame() const {
+  return frame_index_ % std::max(1, settings_.engine.cadence) == 0;
+}
+
+void SceneEngine::update_frame_plane(const ViewerPose& current) {
+  const StabilizationPlane& given = settings_.engine.stabilization;
+  if (!given.automatic) {
+    plane_point_ = given.point;
+    plane_normal_ = given.normal;
+    plane_at_infinity_ = false;
+  } else if (cadence_frame() || !plane_known_) {
+    // The plane of least parallax of what is seen now, kept in world coordinates.
+    Vec3 m(0.0);
+    const bool fitted =
+        fit_inverse_depth_plane(render_depth(scene_, camera_, current, settings_.near), camera_, m);
+    plane_at_infinity_ = !fitted || glm::length(m) < 1e-12;
+    if (!plane_at_infinity_) {
+      const Mat3 to_world = glm::transpose(current.rotation);
+      plane_point_ = to_world * (m / glm::dot(m, m) - current.translation);
+      plane_normal_ = to_world * m;
+    }
+  }
+  plane_known_ = true;
+  frame_plane_ = plane_at_infinity_ ? Vec3(0.0)
+                                    : plane_vector_of(to_view(current, plane_point_),
+                                                      direction_to_view(current, plane_normal_));
+}
+
+void SceneEngine::keep_render(const ViewerPose& current) {
+  rendered_frame_ = frame_;
+  rendered_depth_ = render_depth(scene_, camera_, current, settings_.near);
+  rendered_view_ = current;
+  has_render_ = true;
+  source_of_.clear();
+}
+
+void SceneEngine::reproject_frame(const ViewerPose& current, AnimationFrame& report) {
+  const auto t0 = Clock::now();
+  Reprojection r =
+      reproject_by_depth(rendered_frame_, rendered_depth_, camera_,
+                         viewer_step(rendered_view_, current), settings_.hole_fill, settings_.near);
+  report.update_ms = ms_since(t0);
+  // Which unreached pixels are holes: the depth of the view now, a diagnostic (untimed).
+  const DepthFrame now = render_depth(scene_, camera_, current, settings_.near);
+  r.hole_pixels = 0;
+  for (std::size_t k = 0; k < r.unreached.size(); ++k) {
+    r.hole_pixels += r.unreached[k] && now.polygon[k] >= 0;
+  }
+  frame_ = std::move(r.image);
+  source_of_ = std::move(r.source);
+  report.pixels_written = r.pixels_written;
+  report.model_work = static_cast<double>(r.source_pixels) * kPerspectiveWarpCost;
+  report.hole_pixels = r.hole_pixels;
+  report.max_measured_error_px = r.max_error_px;
+  bsp_.back_to_front(eye_position(current), order_);
+  for (std::size_t i = 0; i < states_.size(); ++i) {
+    states_[i]->live = false;  // the layers start afresh at the next render
+    states_[i]->updated = false;
+    if (statuses_[i] == PolygonStatus::kBackFacing ||
+        statuses_[i] == PolygonStatus::kOutsideFrustum) {
+      continue;
+    }
+    statuses_[i] = PolygonStatus::kAnimated;
+    levels_[i] = Level::kPerspective;
+    ++report.levels[static_cast<int>(Level::kPerspective)];
+  }
+}
+
 AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMotion* motion,
                                       const ViewerPose& current) {
   const auto t0 = Clock::now();
   AnimationFrame report;
   report.frame = frame_index_;
   report.layers = static_cast<int>(scene_.polygons.size());
+  const ReusePolicy& policy = *settings_.engine.policy;
+  report.reports_holes = reports_holes(policy);
+  const bool per_pixel = policy.frame_warp == FrameWarp::kPerPixelDepth;
+  if (per_pixel && has_render_ && !cadence_frame()) {
+    classify(current, report);
+    reproject_frame(current, report);
+    report.time_ms = ms_since(t0);
+    return report;
+  }
+  if (per_pixel) {
+    for (auto& s : states_) s->live = false;  // a render frame renders every polygon
+  }
+  uses_frame_plane_ = policy.model == ModelUpdate::kFrameHomography &&
+                      policy.frame_plane == FramePlane::kStabilization;
+  if (uses_frame_plane_) update_frame_plane(current);
   classify(current, report);
   bsp_.back_to_front(eye_position(current), order_);
   measure_polygons(previous, motion, current, report);
@@ -404,6 +491,7 @@ AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMot
   const auto t1 = Clock::now();
   compose(report);
   report.composite_ms = ms_since(t1);
+  if (per_pixel) keep_render(current);
   // The budget's optimality check is a diagnostic, left out as the measured errors are.
   report.time_ms = ms_since(t0) - report.budget.check_ms;
   return report;

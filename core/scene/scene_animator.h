@@ -20,6 +20,18 @@
 //  5. composite the layers back to front into the frame (premultiplied, transparent where
 //     nothing is drawn).
 //
+// Today's reprojection (core/engine/reuse_policy.h). A policy with a FramePlane of
+// kStabilization gets the frame's plane before each measure: the given plane
+// (EngineSettings::stabilization, world coordinates), or the automatic one, fitted to the
+// frame's depth (fit_inverse_depth_plane) at every cadence frame (frame index a multiple of
+// EngineSettings::cadence) and kept in world coordinates until the next. The
+// depth-reprojection policy (FrameWarp::kPerPixelDepth) renders every polygon at each cadence
+// frame, keeps the frame and its depth (render_depth), and shows every other frame as that
+// frame forward-warped by its depth (reproject_by_depth): each polygon not culled counts as
+// one layer at level perspective, the pixels written are the splats', the work one
+// perspective-warp unit per source pixel, the measured error the largest per-pixel
+// displacement, and AnimationFrame::hole_pixels the holes.
+//
 // Near plane. A polygon whose texture rectangle reaches in front of the near plane
 // (Z < near) or projects beyond the guard band (see SceneSettings) is not animated: its
 // part inside the frustum is clipped in 3D and rendered exactly that frame, so a polygon
@@ -35,6 +47,7 @@
 #include "engine/animator.h"
 #include "engine/engine.h"
 #include "scene/bsp_tree.h"
+#include "scene/depth_reprojection.h"
 #include "scene/occlusion.h"
 #include "scene/scene.h"
 #include "scene/view_culling.h"
@@ -56,6 +69,9 @@ struct SceneSettings {
   // the candidate's exact image is grown by candidate_margin_px (pixel rounding).
   double occluder_inset_px = 1.5;
   double candidate_margin_px = 1.0;
+  // What fills the holes of the depth-reprojection policy's warped frames (they are
+  // counted whatever fills them; core/scene/depth_reprojection.h).
+  HoleFill hole_fill = HoleFill::kNone;
 };
 
 // What happened to one polygon in a frame.
@@ -102,6 +118,13 @@ class SceneEngine {
   // the polygons drawn in the last frame with their levels, back to front in the BSP order;
   // a polygon with a vertex within 1e-3 of the eye plane or behind it has none.
   std::vector<LayerOutline> outlines(const ViewerPose& view) const;
+  // The depth-reprojection policy: the frame and depth of the last render, the viewer it was
+  // seen from, and for the last frame shown the source pixel of every pixel (-1: a hole;
+  // empty after a rendered frame). Meaningless for other policies.
+  const Image& rendered_frame() const { return rendered_frame_; }
+  const DepthFrame& rendered_depth() const { return rendered_depth_; }
+  const ViewerPose& rendered_view() const { return rendered_view_; }
+  const std::vector<int>& reprojection_sources() const { return source_of_; }
 
  private:
   struct PolygonState;
@@ -130,6 +153,11 @@ class SceneEngine {
   ConvexPolygon exact_region(const ViewPolygon& clipped) const;
   // The engine's content settings with the polygon's own kind of content.
   LayerContent polygon_content(int polygon) const;
+  // Today's reprojection (see above).
+  bool cadence_frame() const;
+  void update_frame_plane(const ViewerPose& current);
+  void keep_render(const ViewerPose& current);
+  void reproject_frame(const ViewerPose& current, AnimationFrame& report);
 
   const Scene& scene_;
   Camera camera_;
@@ -147,6 +175,19 @@ class SceneEngine {
   BudgetLedger ledger_;
   Image frame_;
   int frame_index_ = 0;
+  // Today's reprojection: the stabilization plane in world coordinates (at_infinity: m = 0),
+  // and the last render of the depth-reprojection policy with its depth and viewer.
+  bool uses_frame_plane_ = false;
+  Vec3 frame_plane_{0.0};  // the plane vector this frame, viewer frame
+  bool plane_known_ = false;
+  bool plane_at_infinity_ = false;
+  Vec3 plane_point_{0.0};
+  Vec3 plane_normal_{0.0, 0.0, 1.0};
+  bool has_render_ = false;
+  Image rendered_frame_;
+  DepthFrame rendered_depth_;
+  ViewerPose rendered_view_;
+  std::vector<int> source_of_;  // the last reprojection's source pixel per pixel
 };
 
 // The scene animator playing a viewer script: frame k is seen from script.frames[k].pose.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -17,12 +18,13 @@ using testing::CliResult;
 
 CliResult run(const std::vector<std::string>& args) { return testing::run_cli_captured(args); }
 
-TEST(PoliciesCommand, JsonListsEveryPolicyWithNameAndSummaryInRegistryOrder) {
+TEST(PoliciesCommand, JsonListsEveryPolicyWithWhatItModelsInRegistryOrder) {
   const CliResult r = run({"policies", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_TRUE(j.is_object());
-  ASSERT_EQ(j.size(), 1u);
+  ASSERT_EQ(j.size(), 2u);
+  EXPECT_EQ(j.at("interpolation_latency_frames"), 1);  // frame generation, for comparison
   const auto& list = j.at("policies");
   ASSERT_TRUE(list.is_array());
   ASSERT_EQ(list.size(), reuse_policies().size());
@@ -31,10 +33,46 @@ TEST(PoliciesCommand, JsonListsEveryPolicyWithNameAndSummaryInRegistryOrder) {
   EXPECT_EQ(list[2]["name"], "exact");
   EXPECT_EQ(list[3]["name"], "rerender");
   for (size_t i = 0; i < list.size(); ++i) {
-    ASSERT_EQ(list[i].size(), 2u) << list[i];
-    EXPECT_EQ(list[i]["name"], reuse_policies()[i].name);
-    EXPECT_EQ(list[i]["summary"], reuse_policies()[i].summary);
+    const ReusePolicy& p = reuse_policies()[i];
+    ASSERT_EQ(list[i].size(), 7u) << list[i];
+    EXPECT_EQ(list[i]["name"], p.name);
+    EXPECT_EQ(list[i]["summary"], p.summary);
+    EXPECT_EQ(list[i]["models"], p.models);
+    EXPECT_EQ(list[i]["breaks"], p.breaks);
+    EXPECT_NE(list[i]["models"], "");
+    EXPECT_NE(list[i]["breaks"], "");
+    EXPECT_EQ(list[i]["latency_frames"], 0);
+    EXPECT_EQ(list[i]["schedule"], p.schedule == Schedule::kCadence ? "cadence" : "threshold");
   }
+  std::set<std::string> names;
+  for (const auto& e : list) names.insert(e["name"].get<std::string>());
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence"}) {
+    EXPECT_EQ(names.count(name), 1u) << name;
+  }
+}
+
+TEST(PoliciesCommand, CadenceIsAcceptedByTheCadencePoliciesOnly) {
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence"}) {
+    const CliResult r = run({"animate", "--script", "rotation", "--frames", "7", "--mode", name,
+                             "--cadence", "3", "--json", "--repeat-timing", "1", "--no-warm-up"});
+    ASSERT_EQ(r.code, 0) << name << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["cadence"], 3) << name;
+    EXPECT_EQ(j["latency_frames"], 0) << name;
+    EXPECT_EQ(j["hole_pixels"], 0) << name;  // one plane: nothing to disocclude
+    // Frames 0, 3 and 6 rendered, the four others warped.
+    EXPECT_EQ(j["levels"]["rerender"], 3) << name;
+    EXPECT_EQ(j["levels"]["perspective"], 4) << name;
+  }
+  for (const char* bad : {"0", "9", "2.5"}) {
+    const CliResult r =
+        run({"animate", "--script", "rotation", "--mode", "cadence", "--cadence", bad});
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--cadence"), std::string::npos) << r.err;
+  }
+  const CliResult r = run({"animate", "--script", "rotation", "--cadence", "2"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--cadence: needs a policy on a fixed cadence"), std::string::npos) << r.err;
 }
 
 TEST(PoliciesCommand, TextHasOneLinePerPolicyStartingWithItsName) {
@@ -43,13 +81,19 @@ TEST(PoliciesCommand, TextHasOneLinePerPolicyStartingWithItsName) {
   std::istringstream lines(r.out);
   std::string line;
   size_t i = 0;
-  while (std::getline(lines, line)) {
-    ASSERT_LT(i, reuse_policies().size()) << r.out;
+  // Per policy: its name and summary, then indented "models:" and "breaks:" lines; then the
+  // latency note.
+  while (std::getline(lines, line) && i < reuse_policies().size()) {
     const ReusePolicy& p = reuse_policies()[i++];
     EXPECT_EQ(line.rfind(std::string(p.name) + " ", 0), 0u) << line;
     EXPECT_NE(line.find(p.summary), std::string::npos) << line;
+    ASSERT_TRUE(std::getline(lines, line));
+    EXPECT_NE(line.find(std::string("models: ") + p.models), std::string::npos) << line;
+    ASSERT_TRUE(std::getline(lines, line));
+    EXPECT_NE(line.find(std::string("breaks: ") + p.breaks), std::string::npos) << line;
   }
   EXPECT_EQ(i, reuse_policies().size());
+  EXPECT_EQ(line.rfind("Latency: ", 0), 0u) << line;
 }
 
 TEST(PoliciesCommand, EveryListedNameIsAnAnimateMode) {

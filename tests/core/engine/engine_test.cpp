@@ -132,7 +132,9 @@ TEST(Engine, APolicyOutsideTheRegistryDrivesTheEngineAndSeesLevelCosts) {
 
 // Steady state: a plane spinning in its own plane keeps its layer size, so after the first
 // frames every warp reuses the same few layer buffers (the displayed layer and the warp
-// scratch swap; the cache is copied into its own memory), in every policy.
+// scratch swap; the cache is copied into its own memory), in every policy. A fixed cadence
+// alternates re-renders and perspective updates, which rotate the cache's buffer through the
+// swap too: one buffer more, still a fixed set.
 TEST(Engine, SteadyFramesReuseTheLayerBuffers) {
   const Camera cam = make_camera(256.0, 320, 240);
   const auto frames = expand_segments(facing_pose(2.0), MotionModel::kSpinAboutCentre,
@@ -147,7 +149,7 @@ TEST(Engine, SteadyFramesReuseTheLayerBuffers) {
       a.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
       if (i >= 20) buffers.insert(a.displayed().layer.image.pixels().data());
     }
-    EXPECT_LE(buffers.size(), 3u) << policy.name;
+    EXPECT_LE(buffers.size(), policy.schedule == Schedule::kCadence ? 4u : 3u) << policy.name;
   }
 }
 

@@ -124,6 +124,36 @@ TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
   EXPECT_EQ(seen.size(), static_cast<size_t>(kLevelCount));  // every level was exercised
 }
 
+TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
+  // Frame k after a render at frame 0 is rendered exactly when k is a multiple of N.
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence"}) {
+    const ReusePolicy& p = reuse_policy(name);
+    EXPECT_EQ(p.schedule, Schedule::kCadence) << name;
+    EXPECT_EQ(p.latency_frames, 0) << name;
+    EXPECT_TRUE(reports_holes(p)) << name;
+    EXPECT_NE(std::string(p.models), "") << name;
+    EXPECT_NE(std::string(p.breaks), "") << name;
+    for (int cadence = 1; cadence <= 8; ++cadence) {
+      int last_render = 0;
+      for (int frame = 1; frame <= 24; ++frame) {
+        FrameInputs in;
+        in.cadence = cadence;
+        in.since_render = frame - last_render;
+        const Level chosen = p.choose(p, in);
+        const bool render = frame % cadence == 0;
+        EXPECT_EQ(chosen, render ? Level::kRerender : Level::kPerspective)
+            << name << " cadence " << cadence << " frame " << frame;
+        if (chosen == Level::kRerender) last_render = frame;
+      }
+    }
+  }
+  EXPECT_EQ(reuse_policy("timewarp").frame_plane, FramePlane::kInfinity);
+  EXPECT_EQ(reuse_policy("stabilized-plane").frame_plane, FramePlane::kStabilization);
+  EXPECT_EQ(reuse_policy("depth-reprojection").frame_warp, FrameWarp::kPerPixelDepth);
+  EXPECT_EQ(reuse_policy("cadence").model, ModelUpdate::kExact);
+  EXPECT_FALSE(reports_holes(reuse_policy("perspective")));
+}
+
 TEST(ReusePolicies, LevelCostsCountTheWarpsEachLevelRuns) {
   const LevelPixels p = estimate_level_pixels(5000, 3000);
   EXPECT_EQ(p[static_cast<int>(Level::kNone)], 0);

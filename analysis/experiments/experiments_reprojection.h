@@ -1,0 +1,46 @@
+// Today's reprojection beside optic flow (beyond the dissertation; manual/policies.md
+// "Today's reprojection"): timewarp, one stabilization plane, per-pixel depth and the plane
+// per layer on a fixed cadence, with optic flow's threshold rule (`perspective`) for
+// reference, on every Experiment 2 scene under each of its viewer scripts (translate, zoom,
+// rotate) and on the street: measured error, hole pixels, work, latency; a chart of error
+// against work; the vendors' published figures quoted as theirs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "experiments/experiments.h"
+#include "runs/policy_runs.h"
+
+namespace oflab {
+
+struct ReprojectionSpec {
+  int max_frames = 40;  // per source (the first frames of each viewer script)
+  int cadence = 2;      // EngineSettings::cadence: spacewarp's half rate
+};
+// Full: 40 frames per source; quick: 12. Both at cadence 2, one timed pass without warm-up
+// (the figures reported are deterministic), so the whole section takes seconds.
+ReprojectionSpec reprojection_spec(bool quick);
+
+struct ReprojectionSource {
+  std::string scene;
+  std::string script;
+  std::vector<PolicyRun> runs;  // one per policy of reprojection_policies(), in that order
+};
+
+struct ReprojectionResult {
+  ReprojectionSpec spec;
+  std::vector<ReprojectionSource> sources;
+};
+
+// The policies compared: timewarp, stabilized-plane, depth-reprojection, cadence, perspective.
+std::vector<const ReusePolicy*> reprojection_policies();
+
+// The Experiment 2 scenes (single-1, two, five-collinear, four-cubes) under translate, zoom
+// and rotate, then the street under walk. Throws what the readers and runs throw.
+ReprojectionResult run_reprojection_experiment(
+    const ReprojectionSpec& spec, const std::function<void(const std::string&)>& progress);
+
+ReportSection reprojection_section(const ReprojectionResult& result, ExperimentContext& context);
+
+}  // namespace oflab

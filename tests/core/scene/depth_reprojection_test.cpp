@@ -1,0 +1,174 @@
+// Per-pixel depth reprojection and the automatic stabilization plane
+// (core/scene/depth_reprojection.h) against independent computations: rays intersected with
+// the polygons in world coordinates, a brute-force least-squares check, and the exact
+// projection of every source pixel's surface point.
+#include "scene/depth_reprojection.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene_cases.h"
+
+namespace oflab {
+namespace {
+
+using testing::scene_with;
+using testing::square;
+
+const Camera kCamera = make_camera(300.0, 160, 120);
+constexpr double kNear = 0.05;
+
+// Two squares, the near one partly in front of the far one.
+Scene two_squares() {
+  return scene_with({square("far", Vec3(0.0, 0.0, -2.0), Vec3(0, 0, 1), Vec3(0, 1, 0), 2.0),
+                     square("near", Vec3(0.3, 0.1, 0.0), Vec3(0, 0, 1), Vec3(0, 1, 0), 0.6)});
+}
+
+// The world point seen at top-left pixel (u, v) on `polygon`'s plane, found in world
+// coordinates: the eye, the ray's world direction, the plane's world centre and normal.
+Vec3 world_point_at(const ScenePolygon& polygon, const ViewerPose& view, double u, double v) {
+  const Vec3 eye = eye_position(view);
+  const Vec3 ray = glm::transpose(view.rotation) * Vec3((u - kCamera.cx) / kCamera.focal_px,
+                                                        (v - kCamera.cy) / kCamera.focal_px, 1.0);
+  const double s = glm::dot(polygon.front, polygon.centre - eye) / glm::dot(polygon.front, ray);
+  return eye + s * ray;
+}
+
+TEST(DepthReprojection, DepthIsTheRaysHitOfTheNearestPolygon) {
+  const Scene scene = two_squares();
+  const ViewerPose view = look_at(Vec3(0.2, 0.3, 3.0), Vec3(0, 0, -1), Vec3(0, 1, 0));
+  const DepthFrame depth = render_depth(scene, kCamera, view, kNear);
+  int both = 0, near = 0;
+  for (int y = 0; y < kCamera.height; ++y) {
+    for (int x = 0; x < kCamera.width; ++x) {
+      const int k = y * kCamera.width + x;
+      const int p = depth.polygon[k];
+      if (p < 0) continue;
+      const Vec3 hit = world_point_at(scene.polygons[p], view, x + 0.5, y + 0.5);
+      EXPECT_NEAR(depth.inverse_depth[k], 1.0 / to_view(view, hit).z, 1e-9);
+      near += p == 1;
+      ++both;
+    }
+  }
+  EXPECT_GT(near, 100);
+  EXPECT_GT(both, near + 100);
+}
+
+TEST(DepthReprojection, AutomaticPlaneOfOnePlaneIsThePlane) {
+  const Scene scene = scene_with(
+      {square("tilted", Vec3(0, 0, 0), glm::normalize(Vec3(0.3, 0.2, 1.0)), Vec3(0, 1, 0), 2.0)});
+  const ViewerPose view = look_at(Vec3(0.5, 0.2, 3.0), Vec3(0, 0, 0), Vec3(0, 1, 0));
+  Vec3 m(0.0);
+  ASSERT_TRUE(fit_inverse_depth_plane(render_depth(scene, kCamera, view, kNear), kCamera, m));
+  const Vec3 expected = plane_vector_of(to_view(view, scene.polygons[0].centre),
+                                        direction_to_view(view, scene.polygons[0].front));
+  EXPECT_LT(glm::length(m - expected), 1e-9 * glm::length(expected));
+}
+
+double squared_residual(const DepthFrame& depth, const Vec3& m) {
+  double sum = 0.0;
+  for (int y = 0; y < depth.height; ++y) {
+    for (int x = 0; x < depth.width; ++x) {
+      const int k = y * depth.width + x;
+      if (depth.polygon[k] < 0) continue;
+      const Vec3 d((x + 0.5 - kCamera.cx) / kCamera.focal_px,
+                   (y + 0.5 - kCamera.cy) / kCamera.focal_px, 1.0);
+      const double r = depth.inverse_depth[k] - glm::dot(m, d);
+      sum += r * r;
+    }
+  }
+  return sum;
+}
+
+TEST(DepthReprojection, AutomaticPlaneIsTheLeastSquaresFitOfInverseDepth) {
+  const DepthFrame depth = render_depth(
+      two_squares(), kCamera, look_at(Vec3(0.2, 0.3, 3.0), Vec3(0, 0, -1), Vec3(0, 1, 0)), kNear);
+  Vec3 m(0.0);
+  ASSERT_TRUE(fit_inverse_depth_plane(depth, kCamera, m));
+  const double best = squared_residual(depth, m);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double step : {-1e-3, 1e-3}) {
+      Vec3 other = m;
+      other[axis] += step;
+      EXPECT_GT(squared_residual(depth, other), best);
+    }
+  }
+}
+
+TEST(DepthReprojection, PerPixelErrorIsTheDistanceToTheIndependentProjection) {
+  const Scene scene = two_squares();
+  const ViewerPose then = look_at(Vec3(0.2, 0.3, 3.0), Vec3(0, 0, -1), Vec3(0, 1, 0));
+  const ViewerPose now = look_at(Vec3(0.35, 0.25, 2.8), Vec3(0.05, 0, -1), Vec3(0, 1, 0));
+  const DepthFrame depth = render_depth(scene, kCamera, then, kNear);
+  const Image rendered = testing::ray_cast_scene(scene, kCamera, then, kNear);
+  const DepthFrame seen_now = render_depth(scene, kCamera, now, kNear);
+  const Reprojection r = reproject_by_depth(rendered, depth, kCamera, viewer_step(then, now),
+                                            HoleFill::kNone, kNear, &seen_now);
+  double largest = 0.0;
+  int checked = 0;
+  for (int d = 0; d < kCamera.width * kCamera.height; ++d) {
+    const int s = r.source[d];
+    if (s < 0 || depth.polygon[s] < 0) continue;
+    const Vec3 hit = world_point_at(scene.polygons[depth.polygon[s]], then, s % kCamera.width + 0.5,
+                                    s / kCamera.width + 0.5);
+    const Vec2 exact = centred_to_pixel(kCamera, project_centred(kCamera, to_view(now, hit)));
+    const double e = glm::length(Vec2(d % kCamera.width + 0.5, d / kCamera.width + 0.5) - exact);
+    largest = std::max(largest, e);
+    // Nearest-neighbour resampling of a splat grown by kSplatMargin: within the grown
+    // footprint's half-diagonal at this step's small magnification (below 1.3).
+    EXPECT_LT(e, (0.5 + kSplatMargin) * std::sqrt(2.0) * 1.3);
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+  EXPECT_NEAR(r.max_error_px, largest, 1e-9);
+  // The near square moved against the far one: what it hid is now a hole.
+  EXPECT_GT(r.hole_pixels, 0);
+}
+
+TEST(DepthReprojection, AZoomingPlaneHasNoHoles) {
+  const Scene scene =
+      scene_with({square("plane", Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), 1.0)});
+  const ViewerPose then = look_at(Vec3(0.0, 0.0, 3.0), Vec3(0, 0, 0), Vec3(0, 1, 0));
+  for (double z : {2.0, 2.5, 3.5, 4.0}) {  // magnified up to 1.5x, and minified
+    const ViewerPose now = look_at(Vec3(0.05, 0.0, z), Vec3(0.05, 0, 0), Vec3(0, 1, 0));
+    const DepthFrame seen_now = render_depth(scene, kCamera, now, kNear);
+    const Reprojection r =
+        reproject_by_depth(testing::ray_cast_scene(scene, kCamera, then, kNear),
+                           render_depth(scene, kCamera, then, kNear), kCamera,
+                           viewer_step(then, now), HoleFill::kNone, kNear, &seen_now);
+    EXPECT_EQ(r.hole_pixels, 0) << "viewer at z = " << z;
+  }
+}
+
+TEST(DepthReprojection, FillModesPaintOnlyTheUnreachedPixels) {
+  const Scene scene = two_squares();
+  const ViewerPose then = look_at(Vec3(0.2, 0.3, 3.0), Vec3(0, 0, -1), Vec3(0, 1, 0));
+  const ViewerPose now = look_at(Vec3(0.5, 0.3, 3.0), Vec3(0.3, 0, -1), Vec3(0, 1, 0));
+  const Image rendered = testing::ray_cast_scene(scene, kCamera, then, kNear);
+  const DepthFrame depth = render_depth(scene, kCamera, then, kNear);
+  const RigidStep3 step = viewer_step(then, now);
+  const Reprojection none =
+      reproject_by_depth(rendered, depth, kCamera, step, HoleFill::kNone, kNear);
+  ASSERT_GT(none.hole_pixels, 0);
+  for (HoleFill fill : {HoleFill::kStretch, HoleFill::kBackground}) {
+    const Reprojection filled = reproject_by_depth(rendered, depth, kCamera, step, fill, kNear);
+    EXPECT_EQ(filled.hole, none.hole) << hole_fill_name(fill);
+    EXPECT_EQ(filled.hole_pixels, none.hole_pixels);
+    for (std::size_t k = 0; k < none.unreached.size(); ++k) {
+      if (!none.unreached[k]) {
+        ASSERT_EQ(filled.image.pixels()[k], none.image.pixels()[k]);
+      } else {
+        EXPECT_EQ(none.image.pixels()[k], Pixel{});
+        if (fill == HoleFill::kBackground) EXPECT_EQ(filled.image.pixels()[k], kHoleBackground);
+      }
+    }
+  }
+  HoleFill parsed = HoleFill::kNone;
+  EXPECT_TRUE(parse_hole_fill("stretch", parsed));
+  EXPECT_EQ(parsed, HoleFill::kStretch);
+  EXPECT_FALSE(parse_hole_fill("blur", parsed));
+}
+
+}  // namespace
+}  // namespace oflab
