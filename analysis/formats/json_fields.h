@@ -4,11 +4,13 @@
 //     "datasets/scripts/zoom.json: segment 1: field 'omega': must be a list of 3 numbers".
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "engine/limits.h"
 #include "flow/camera.h"
@@ -71,6 +73,17 @@ json parse_object(const std::string& text, const Place<Error>& top) {
   }
   if (!root.is_object()) top.fail("", "must be a JSON object");
   return root;
+}
+
+// Refuses (Error naming the field and the known ones) any member of `obj` not in `known`.
+template <class Error>
+void only_fields(const json& obj, const Place<Error>& w, const std::vector<std::string>& known) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    std::string names;
+    for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
+    w.fail(it.key(), "unknown field (known: " + names + ")");
+  }
 }
 
 // obj[field], which must be present.

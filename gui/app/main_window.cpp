@@ -50,8 +50,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     const int due = pacer_.frames_due(play_clock_.elapsed());
     if (due <= 0) return;
     model_->scene()->advance(due);
-    // A view playing its own scene steps once per frame shown (it has no frames to skip).
-    if (ViewPage* page = current_view(); page && page->plays_own_scene()) page->step_animation();
   });
 
   auto* central = new QWidget(this);

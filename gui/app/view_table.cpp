@@ -15,7 +15,7 @@ const std::vector<ViewEntry>& view_table() {
       {"animation", "Animation, side by side",
        [](WindowModel* m) -> ViewPage* { return new AnimationView(m); }},
       {"analysis", "Analysis", [](WindowModel* m) -> ViewPage* { return new AnalysisView(m); }},
-      {"slices", "Scene shifting", [](WindowModel*) -> ViewPage* { return new SlicesView; }},
+      {"slices", "Scene shifting", [](WindowModel* m) -> ViewPage* { return new SlicesView(m); }},
   };
   return table;
 }

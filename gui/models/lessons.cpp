@@ -15,16 +15,6 @@ namespace {
 using namespace json_fields;
 using Where = Place<SessionError>;
 
-// Refuses any member of `obj` not in `known`.
-void only_fields(const json& obj, const Where& w, const std::vector<std::string>& known) {
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
-    std::string names;
-    for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
-    w.fail(it.key(), "unknown field (known: " + names + ")");
-  }
-}
-
 // obj[field] as a whole number in first..last.
 int whole_in(const json& obj, const Where& w, const std::string& field, int first, int last) {
   const double v = number(member(obj, w, field), w, field);

@@ -21,16 +21,6 @@ using Where = Place<SessionError>;
 json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 json vec(const Vec2& v) { return json::array({v.x, v.y}); }
 
-// Refuses any member of `obj` not in `known`, naming it and the known ones.
-void only_fields(const json& obj, const Where& w, const std::vector<std::string>& known) {
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
-    std::string names;
-    for (const std::string& k : known) names += (names.empty() ? "" : ", ") + k;
-    w.fail(it.key(), "unknown field (known: " + names + ")");
-  }
-}
-
 double number_field(const json& obj, const Where& w, const std::string& field) {
   return number(member(obj, w, field), w, field);
 }

@@ -12,6 +12,8 @@
 #include "adapters/frame_images.h"
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
+#include "models/scene_model.h"
+#include "models/window_model.h"
 #include "views/slider_spin.h"
 
 namespace oflab {
@@ -190,7 +192,8 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   return image;
 }
 
-SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(false)) {
+SlicesView::SlicesView(WindowModel* window, QWidget* parent)
+    : ViewPage(parent), window_(window), theme_(view_theme(false)) {
   epsilon_ = new SliderSpin("epsilon", 0.25, 8.0, 0.25, 2, " px/frame", this);
   speed_ = new SliderSpin("speed |V|", 0.01, 0.2, 0.01, 2, " units/frame", this);
   epsilon_->set_description(
@@ -238,6 +241,7 @@ SlicesView::SlicesView(QWidget* parent) : ViewPage(parent), theme_(view_theme(fa
   speed_->set_value(0.05);
   connect(epsilon_, &SliderSpin::edited, this, [this](double) { restart(); });
   connect(speed_, &SliderSpin::edited, this, [this](double) { restart(); });
+  connect(window_->scene(), &SceneModel::scene_changed, this, &SlicesView::follow_frame);
   restart();
 }
 
@@ -280,15 +284,22 @@ void SlicesView::restart() {
   refresh();
 }
 
-void SlicesView::step_animation() {
+void SlicesView::follow_frame() {
   if (!renderer_ || script_.frames.size() < 2) return;
-  if (frame_ + 1 >= static_cast<int>(script_.frames.size())) {
+  const int target = window_->scene()->frame() % static_cast<int>(script_.frames.size());
+  if (target == frame_) return;
+  // Scene shifting keeps no undo state: going back restarts from frame 0 (as the animation
+  // model does), so every frame shown is what an uninterrupted run shows.
+  if (target < frame_) {
+    const int kept = target;
     restart();
-    return;
+    if (kept == 0) return;
   }
-  const ViewerFrame& previous = script_.frames[frame_];
-  ++frame_;
-  renderer_->advance(previous.pose, previous.motion, script_.frames[frame_].pose);
+  while (frame_ < target) {
+    const ViewerFrame& previous = script_.frames[size_t(frame_)];
+    ++frame_;
+    renderer_->advance(previous.pose, previous.motion, script_.frames[size_t(frame_)].pose);
+  }
   refresh();
 }
 

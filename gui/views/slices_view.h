@@ -20,6 +20,8 @@
 
 namespace oflab {
 
+class WindowModel;
+
 class ExactFrameRenderer;
 class SliderSpin;
 
@@ -41,14 +43,17 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
 class SlicesView : public ViewPage {
  public:
   // Loads the shipped train-window scene and train-sideways viewer script; if they cannot
-  // be read the view shows the reason instead of a diagram.
-  explicit SlicesView(QWidget* parent = nullptr);
+  // be read the view shows the reason instead of a diagram. It shows the frame of the window
+  // model's one frame counter (the scene model's frame, modulo the script's length), so
+  // play, step, back, home, end and the scrub bar move it like every other view. The model
+  // must outlive the view.
+  explicit SlicesView(WindowModel* window, QWidget* parent = nullptr);
   ~SlicesView() override;
 
   QImage render_image() override;
-  void step_animation() override;
   void set_theme(const ViewTheme& theme) override;
-  bool plays_own_scene() const override { return true; }
+  // The script's frame shown now (the window's frame modulo the script's length).
+  int frame() const { return frame_; }
   double smallest_text_px() const override;
   QString scene_panel_note() const override;
 
@@ -68,6 +73,8 @@ class SlicesView : public ViewPage {
  private:
   void restart();
   void refresh();
+  // Brings the slices to the window's frame (forward frame by frame, backward by a restart).
+  void follow_frame();
   void render_exact();
 
   Scene scene_;
@@ -78,6 +85,7 @@ class SlicesView : public ViewPage {
   QString exact_problem_;  // why the exact frame cannot be shown, if it cannot
   std::vector<Slice> slices_;
   int frame_ = 0;
+  WindowModel* window_;
   QString problem_;
   ViewTheme theme_;
   SliderSpin* epsilon_ = nullptr;

@@ -21,10 +21,6 @@ class ViewPage : public QWidget {
   // Advances the view's own animation by one step (the basis gallery's amount); the
   // scene's frame is advanced by the window, not here.
   virtual void step_animation() {}
-  // True for a view that plays a scene of its own instead of the scene model's frame (the
-  // scene-shifting view): the window's play and the benchmark then step it once per frame
-  // they show, since the model's frame does not move it.
-  virtual bool plays_own_scene() const { return false; }
   // When on, the view's own timers stay stopped and only step_animation advances it
   // (reproducible screenshots and benchmarks); its playing state is kept.
   virtual void set_external_clock(bool on) { (void)on; }
