@@ -31,11 +31,7 @@ std::shared_ptr<VideoWriter> read_video_option(const CliArgs& a) {
     if (a.has("--fps")) throw UsageError("--fps: needs --video FILE");
     return nullptr;
   }
-  const int fps = a.has("--fps") ? a.integer("--fps") : kDefaultVideoFps;
-  if (fps < kMinVideoFps || fps > kMaxVideoFps) {
-    throw UsageError("--fps: " + std::to_string(fps) + " is outside " +
-                     std::to_string(kMinVideoFps) + ".." + std::to_string(kMaxVideoFps));
-  }
+  const int fps = a.has("--fps") ? a.integer_in("--fps", limits::kVideoFps) : kDefaultVideoFps;
   const std::string path = a.values("--video").at(0);
   try {
     video_format_of(path);
@@ -135,10 +131,8 @@ Sampling read_sampling(const CliArgs& a) {
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   RunOutput out;
   if (a.has("--frames")) out.max_frames = a.integer_in("--frames", limits::kPlayedFrames);
-  out.timing_repetitions = a.integer_or("--repeat-timing", kDefaultTimingRepetitions);
-  if (out.timing_repetitions < 1 || out.timing_repetitions > kMaxTimingRepetitions) {
-    throw UsageError("--repeat-timing: " + std::to_string(out.timing_repetitions) +
-                     " is outside 1.." + std::to_string(kMaxTimingRepetitions));
+  if (a.has("--repeat-timing")) {
+    out.timing_repetitions = a.integer_in("--repeat-timing", limits::kTimingPasses);
   }
   out.warm_up = !a.has("--no-warm-up");
   out.dir = a.text_or("--out", "");

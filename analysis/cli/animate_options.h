@@ -49,7 +49,7 @@ Sampling read_sampling(const CliArgs& args);
 
 // What every form of `oflab-cli animate` does with its output and timing options: --frames N
 // (at most N frames, limits::kPlayedFrames; -1 for all when not given), --repeat-timing N (timed
-// passes after an untimed warm-up, 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions;
+// passes after an untimed warm-up, limits::kTimingPasses, default kDefaultTimingRepetitions;
 // analysis/runs/run_driver.h),
 // --no-warm-up (the timed passes only), --out DIR (a new or empty DIR; --force for a
 // non-empty one, which is then replaced whole; written whole or not at all: the files go
@@ -63,7 +63,7 @@ Sampling read_sampling(const CliArgs& args);
 // every tenth on `err`). Every refusal of these options comes before anything is created.
 // Throws UsageError naming the option; a write that fails during the run throws
 // FileWriteError naming the file. `err` must outlive the returned callbacks.
-constexpr int kMaxTimingRepetitions = 1000;
+constexpr int kMaxTimingRepetitions = static_cast<int>(limits::kTimingPasses.maximum);
 
 struct RunOutput {
   int max_frames = -1;

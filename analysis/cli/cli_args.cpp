@@ -60,8 +60,11 @@ std::optional<double> CliArgs::optional_number(const std::string& name) const {
 
 int CliArgs::integer(const std::string& name) const {
   const double v = number(name);
-  if (v != std::floor(v) || std::abs(v) > 1e9) {
+  if (v != std::floor(v)) {
     throw UsageError(name + ": '" + values(name).at(0) + "' is not a whole number");
+  }
+  if (std::abs(v) > 1e9) {
+    throw UsageError(name + ": '" + values(name).at(0) + "' is larger than 1e9 in magnitude");
   }
   return static_cast<int>(v);
 }

@@ -28,9 +28,7 @@ int make_scene(const CliArgs& a, std::ostream& out) {
   }
   Scene scene;
   if (a.has("--cubes")) {
-    const int cubes = a.integer("--cubes");
-    if (cubes < 1 || cubes > 20000) throw UsageError("--cubes: must be from 1 to 20000");
-    scene = make_cube_grid(cubes);
+    scene = make_cube_grid(a.integer_in("--cubes", limits::kSceneCubes));
     scene.texture_names = {"tile"};
   } else {
     scene = read_obj_scene(a.values("--from-obj").at(0), Image(1, 1), "tile");

@@ -167,10 +167,9 @@ void check_output_file(const std::string& path, Overwrite overwrite) {
 AtomicFile::AtomicFile(const std::string& target, Overwrite overwrite)
     : target_(follow_link(target)), shown_(target), overwrite_(overwrite) {
   check_output_file(target, overwrite);
-  create_folder_of(target_, shown_);
   std::vector<char> name = temp_template(target_);
   fd_ = ::mkostemp(name.data(), O_CLOEXEC);
-  if (fd_ < 0) fail(shown_, "cannot create a file in " + in_quotes(folder_of(target_)), errno);
+  if (fd_ < 0) fail(shown_, "cannot write a file in " + in_quotes(folder_of(target_)), errno);
   temp_ = name.data();
   if (::fchmod(fd_, 0666 & ~process_umask()) != 0) {
     const int error = errno;

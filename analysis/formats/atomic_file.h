@@ -25,16 +25,18 @@ class FileWriteError : public std::runtime_error {
 enum class Overwrite { kRefuse, kReplace };
 
 // Checks, before any work, that the file `path` may be written: it is not a directory, a
-// device, a FIFO or a socket (after following links), its folder exists or can be created, and
+// device, a FIFO or a socket (after following links), its folder is not a file, and
 // with Overwrite::kRefuse nothing exists at `path`. Throws FileWriteError naming the path and
-// the reason ("'x.gif' exists (add --force to overwrite it)"). Creates nothing.
+// the reason ("'x.gif' exists (add --force to overwrite it)"). Creates nothing. A missing
+// folder is found when the file is created: "cannot write a file in 'DIR' (No such file or
+// directory)".
 void check_output_file(const std::string& path, Overwrite overwrite);
 
 // One file written through a temporary beside `target`.
 class AtomicFile {
  public:
-  // Runs check_output_file, creates the target's missing parent folders and the temporary
-  // file ".NAME.tmp-XXXXXX" in the target's folder with mode 0666 less the umask. A symbolic
+  // Runs check_output_file and creates the temporary file ".NAME.tmp-XXXXXX" in the target's
+  // folder (which must exist) with mode 0666 less the umask. A symbolic
   // link at `target` is followed: the file it names is replaced and the link kept. Throws
   // FileWriteError naming the path.
   AtomicFile(const std::string& target, Overwrite overwrite);

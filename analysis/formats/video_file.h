@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/limits.h"
 #include "formats/atomic_file.h"
 #include "image/image.h"
 
@@ -31,8 +32,9 @@ const char* video_format_name(VideoFormat format);
 std::string video_format_list();
 
 // Lowest and highest frame rate a VideoWriter accepts, in frames per second.
-constexpr int kMinVideoFps = 1;
-constexpr int kMaxVideoFps = 60;
+// (limits::kVideoFps).
+constexpr int kMinVideoFps = static_cast<int>(limits::kVideoFps.minimum);
+constexpr int kMaxVideoFps = static_cast<int>(limits::kVideoFps.maximum);
 
 // The size in pixels a format stores for a width x height frame: MP4 and Ogg Theora need
 // even sizes, so an odd last column or row is dropped; GIF keeps the frame's size.
