@@ -25,12 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::file_contents;
 
 struct Child {
   pid_t pid = -1;
@@ -67,7 +62,7 @@ Child start(const std::vector<std::string>& args, const fs::path& dir, const std
 std::pair<int, std::string> finish(const Child& c) {
   int status = 0;
   ::waitpid(c.pid, &status, 0);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, contents(c.err)};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, file_contents(c.err)};
 }
 
 std::pair<int, std::string> run(const std::vector<std::string>& args, const fs::path& dir,
@@ -108,7 +103,7 @@ TEST(FailedWrites, AFullDiskLeavesTheOldFileAndNoPartialOne) {
   EXPECT_EQ(code, 1);
   EXPECT_TRUE(one_line(err)) << err;
   EXPECT_NE(err.find("cannot write"), std::string::npos) << err;
-  EXPECT_EQ(contents(dir / "b.png"), "the user's file");
+  EXPECT_EQ(file_contents(dir / "b.png"), "the user's file");
   EXPECT_EQ(names(dir), std::vector<std::string>{"b.png"});
   // The same for a scene file and a new file: nothing is left.
   const auto [code2, err2] =
@@ -124,10 +119,10 @@ TEST(FailedWrites, AFailedVideoRunKeepsTheOldVideoAndAFailedOutDirTheOldDir) {
   std::ofstream(dir / "keep.gif") << "the user's GIF";
   const auto [code, err] = run({"animate", "--script", "zoom", "--frames", "40", "--repeat-timing",
                                 "1", "--quiet", "--video", (dir / "keep.gif").string(), "--force"},
-                               dir, 100000);
+                               dir, 30000);
   EXPECT_EQ(code, 1);
   EXPECT_TRUE(one_line(err)) << err;
-  EXPECT_EQ(contents(dir / "keep.gif"), "the user's GIF");
+  EXPECT_TRUE(file_contents(dir / "keep.gif") == "the user's GIF");  // (no GIF bytes printed)
   fs::create_directories(dir / "out");
   std::ofstream(dir / "out" / "frames.csv") << "an earlier run";
   const auto [code2, err2] =
@@ -137,7 +132,7 @@ TEST(FailedWrites, AFailedVideoRunKeepsTheOldVideoAndAFailedOutDirTheOldDir) {
   EXPECT_EQ(code2, 1);
   EXPECT_TRUE(one_line(err2)) << err2;
   EXPECT_NE(err2.find("frames.csv"), std::string::npos) << err2;
-  EXPECT_EQ(contents(dir / "out" / "frames.csv"), "an earlier run");
+  EXPECT_EQ(file_contents(dir / "out" / "frames.csv"), "an earlier run");
   EXPECT_EQ(names(dir), (std::vector<std::string>{"keep.gif", "out"}));
   fs::remove_all(dir);
 }

@@ -12,6 +12,7 @@
 
 #include "cli_capture.h"
 #include "formats/datasets.h"
+#include "formats/viewer_script_file.h"
 #include "scratch_dir.h"
 
 namespace oflab {
@@ -43,7 +44,7 @@ TEST(Messages, LargeWholeNumbersNameTheOptionAndItsRange) {
             "oflab-cli animate: --thresholds: 'nan' is not a finite number\n");
   EXPECT_EQ(refusal({"animate", "--script", "zoom", "--repeat", "2147483647"}),
             "oflab-cli animate: --repeat: 2147483647 is outside 1..1000000 (plays of the "
-            "script's 136 frames)\n");
+            "script's 90 frames)\n");
   EXPECT_EQ(refusal(with({"--repeat-timing", "1e12"})),
             "oflab-cli animate: --repeat-timing: 1e+12 is outside 1..1000 passes\n");
   EXPECT_EQ(refusal(with({"--video", "x.gif", "--fps", "2147483647"})),

@@ -21,12 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::file_contents;
 
 // The names in `dir`, temporaries included.
 int entries(const fs::path& dir) {
@@ -40,7 +35,7 @@ TEST(AtomicFile, WritesWholeWithTheUmasksMode) {
   const mode_t old = ::umask(022);
   write_file_atomically((dir / "a.txt").string(), "hello", Overwrite::kRefuse);
   ::umask(old);
-  EXPECT_EQ(contents(dir / "a.txt"), "hello");
+  EXPECT_EQ(file_contents(dir / "a.txt"), "hello");
   struct stat st;
   ASSERT_EQ(::stat((dir / "a.txt").c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0644u);
@@ -56,7 +51,7 @@ TEST(AtomicFile, AnUncommittedFileLeavesTheOldOneAndNoTemporary) {
     file.write("new, but the run fails");
     EXPECT_EQ(entries(dir), 2);  // the temporary, beside the target
   }
-  EXPECT_EQ(contents(dir / "keep.txt"), "old");
+  EXPECT_EQ(file_contents(dir / "keep.txt"), "old");
   EXPECT_EQ(entries(dir), 1);
   fs::remove_all(dir);
 }
@@ -73,7 +68,7 @@ TEST(AtomicFile, RefusesToOverwriteWithoutReplaceAndNonRegularTargets) {
   late.write("mine");
   std::ofstream(dir / "late.txt") << "theirs";
   EXPECT_THROW(late.commit(), FileWriteError);
-  EXPECT_EQ(contents(dir / "late.txt"), "theirs");
+  EXPECT_EQ(file_contents(dir / "late.txt"), "theirs");
   EXPECT_EQ(entries(dir), 2);
   fs::remove_all(dir);
 }
@@ -84,7 +79,7 @@ TEST(AtomicFile, FollowsALinkAndKeepsIt) {
   fs::create_symlink("real.txt", dir / "link.txt");
   write_file_atomically((dir / "link.txt").string(), "new", Overwrite::kReplace);
   EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
-  EXPECT_EQ(contents(dir / "real.txt"), "new");
+  EXPECT_EQ(file_contents(dir / "real.txt"), "new");
   fs::remove_all(dir);
 }
 
