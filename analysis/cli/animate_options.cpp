@@ -131,6 +131,9 @@ Sampling read_sampling(const CliArgs& a) {
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   RunOutput out;
   if (a.has("--frames")) out.max_frames = a.integer_in("--frames", limits::kPlayedFrames);
+  // A long run (--repeat) is timed in one pass unless --repeat-timing asks for more: its
+  // records are then streamed, and its memory does not grow with its length.
+  if (a.has("--repeat")) out.timing_repetitions = 1;
   if (a.has("--repeat-timing")) {
     out.timing_repetitions = a.integer_in("--repeat-timing", limits::kTimingPasses);
   }

@@ -49,7 +49,8 @@ Sampling read_sampling(const CliArgs& args);
 
 // What every form of `oflab-cli animate` does with its output and timing options: --frames N
 // (at most N frames, limits::kPlayedFrames; -1 for all when not given), --repeat-timing N (timed
-// passes after an untimed warm-up, limits::kTimingPasses, default kDefaultTimingRepetitions;
+// passes after an untimed warm-up, limits::kTimingPasses, default kDefaultTimingRepetitions,
+// or 1 when --repeat is given, so that a long run streams its records;
 // analysis/runs/run_driver.h),
 // --no-warm-up (the timed passes only), --out DIR (a new or empty DIR; --force for a
 // non-empty one, which is then replaced whole; written whole or not at all: the files go
