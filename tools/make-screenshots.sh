@@ -15,7 +15,7 @@ mkdir -p "$out"
 shot() {  # shot NAME ARGS...: one screenshot into manual/images/NAME.png
   local name=$1
   shift
-  xvfb-run -a -s "-screen 0 ${screen:-1600x1000}x24" "$oflab" --screenshot "$out/$name.png" "$@" \
+  xvfb-run -a -s "-screen 0 ${screen:-1600x1000}x24" "$oflab" --screenshot "$out/$name.png" --force "$@" \
     2> >(grep -v 'XDG_RUNTIME_DIR' >&2)
 }
 

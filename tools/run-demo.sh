@@ -12,5 +12,5 @@ fi
 # window shows, so the demo still proves itself.
 mkdir -p out
 echo "oflab: no display found; running on a virtual screen and saving out/demo.png" >&2
-exec xvfb-run -a -s "-screen 0 1600x1000x24" ./build/gui/oflab --screenshot out/demo.png \
+exec xvfb-run -a -s "-screen 0 1600x1000x24" ./build/gui/oflab --screenshot out/demo.png --force \
   --frames 30 "$@"

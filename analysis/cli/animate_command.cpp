@@ -20,9 +20,6 @@
 namespace oflab {
 namespace {
 
-// --repeat N: the script played at most this many times back to back.
-constexpr int kMaxRepeat = 1000000;
-
 constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
                                              "--conventional-single-sample",
                                              "--near",
@@ -64,18 +61,22 @@ void print_summary(const nlohmann::json& j, const std::string& script, const Reu
   if (j.contains("budget")) print_budget(j.at("budget"), out);
 }
 
-// --repeat N (default 1): 1..kMaxRepeat, and N times the script's frames fits an int.
-// Throws UsageError naming --repeat and the limit.
+// --repeat N (default 1): within limits::kRepeat, and N times the script's frames fits an
+// int. Throws UsageError naming --repeat, the value as typed and the limit.
 int read_repeat(const CliArgs& a, const MotionScript& script) {
-  const int repeat = a.integer_or("--repeat", 1);
+  if (!a.has("--repeat")) return 1;
+  const double repeat = a.number("--repeat");
   const long frames = static_cast<long>(script.frames.size());
-  const long most = std::min<long>(kMaxRepeat, std::numeric_limits<int>::max() / frames);
-  if (repeat < 1 || repeat > most) {
-    throw UsageError("--repeat: " + std::to_string(repeat) + " is outside 1.." +
-                     std::to_string(most) + " (plays of the script's " + std::to_string(frames) +
-                     " frames)");
+  const long most = std::min<long>(static_cast<long>(limits::kRepeat.maximum),
+                                   std::numeric_limits<int>::max() / frames);
+  const std::string range = "1.." + std::to_string(most) + " (plays of the script's " +
+                            std::to_string(frames) + " frames)";
+  const std::string& text = a.values("--repeat").at(0);
+  if (repeat != std::floor(repeat)) {
+    throw UsageError("--repeat: " + text + " is not a whole number, " + range);
   }
-  return repeat;
+  if (repeat < 1 || repeat > most) throw UsageError("--repeat: " + text + " is outside " + range);
+  return static_cast<int>(repeat);
 }
 
 // The single-plane form: a motion script and a texture.

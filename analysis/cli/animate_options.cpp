@@ -31,18 +31,16 @@ std::shared_ptr<VideoWriter> read_video_option(const CliArgs& a) {
     if (a.has("--fps")) throw UsageError("--fps: needs --video FILE");
     return nullptr;
   }
-  const int fps = a.has("--fps") ? a.integer("--fps") : kDefaultVideoFps;
-  if (fps < kMinVideoFps || fps > kMaxVideoFps) {
-    throw UsageError("--fps: " + std::to_string(fps) + " is outside " +
-                     std::to_string(kMinVideoFps) + ".." + std::to_string(kMaxVideoFps));
-  }
+  const int fps = a.has("--fps") ? a.integer_in("--fps", limits::kVideoFps) : kDefaultVideoFps;
   const std::string path = a.values("--video").at(0);
-  std::error_code ec;
-  if (fs::exists(path, ec) && !a.has("--force")) {
-    throw UsageError("--video: '" + path + "' exists (add --force to overwrite it)");
-  }
   try {
-    return std::make_shared<VideoWriter>(path, fps, true);
+    video_format_of(path);
+  } catch (const VideoFileError& e) {
+    throw UsageError(std::string("--video: ") + e.what());
+  }
+  const Overwrite overwrite = check_out_file("--video", path, a.has("--force"));
+  try {
+    return std::make_shared<VideoWriter>(path, fps, overwrite == Overwrite::kReplace);
   } catch (const VideoFileError& e) {
     throw UsageError(std::string("--video: ") + e.what());
   }
@@ -152,27 +150,30 @@ Sampling read_sampling(const CliArgs& a) {
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   RunOutput out;
   if (a.has("--frames")) out.max_frames = a.integer_in("--frames", limits::kPlayedFrames);
-  out.timing_repetitions = a.integer_or("--repeat-timing", kDefaultTimingRepetitions);
-  if (out.timing_repetitions < 1 || out.timing_repetitions > kMaxTimingRepetitions) {
-    throw UsageError("--repeat-timing: " + std::to_string(out.timing_repetitions) +
-                     " is outside 1.." + std::to_string(kMaxTimingRepetitions));
+  // A long run (--repeat) is timed in one pass unless --repeat-timing asks for more: its
+  // records are then streamed, and its memory does not grow with its length.
+  if (a.has("--repeat")) out.timing_repetitions = 1;
+  if (a.has("--repeat-timing")) {
+    out.timing_repetitions = a.integer_in("--repeat-timing", limits::kTimingPasses);
   }
   out.warm_up = !a.has("--no-warm-up");
   out.dir = a.text_or("--out", "");
   if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
   if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
+  out.video = read_video_option(a);  // checked before --out DIR's temporary is created
   if (!out.dir.empty()) {
-    prepare_out_dir(out.dir, a.has("--force"));
+    out.out = open_out_dir(out.dir, a.has("--force"));
     out.csv = std::make_shared<std::ofstream>();  // opened by apply_to, which knows the kind
   }
-  out.video = read_video_option(a);
   const bool png = a.has("--frames-png");
   if (png || out.video) {
-    out.on_frame = [dir = out.dir, png, video = out.video](int i, const Image& frame) {
+    out.on_frame = [dir = out.dir, into = out.out, png, video = out.video](int i,
+                                                                           const Image& frame) {
       if (png) {
         std::ostringstream name;
         name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
-        write_png((fs::path(dir) / name.str()).string(), frame);
+        write_file_inside((fs::path(into->path()) / name.str()).string(), encode_png(frame),
+                          (fs::path(dir) / name.str()).string());
       }
       if (!video) return;
       try {
@@ -209,14 +210,17 @@ void RunOutput::apply_to(RunOptions& options, const SourceKind& kind) const {
   options.on_frame = on_frame;
   options.keep_frames = false;
   if (!csv) return;
-  csv->open(fs::path(dir) / "frames.csv");
-  if (!*csv) throw UsageError("--out: cannot write into '" + dir + "'");
+  const std::string shown = (fs::path(dir) / "frames.csv").string();
+  csv->open(fs::path(out->path()) / "frames.csv");
+  if (!*csv) throw FileWriteError("'" + shown + "': cannot create the file");
   // The header waits for the first frame, which says whether the rows carry hole pixels.
-  options.on_record = [csv = csv, header = kind.write_csv_header, row = kind.write_csv_row,
+  options.on_record = [csv = csv, shown, header = kind.write_csv_header, row = kind.write_csv_row,
                        first = true](const FrameRecord& record) mutable {
     if (first) write_csv_header_for(*csv, header, record.frame.reports_holes);
     first = false;
     row(*csv, record);
+    // A full disk shows when the stream's buffer is written: the run stops there.
+    if (!*csv) throw FileWriteError("'" + shown + "': cannot write the file");
   };
 }
 
@@ -232,9 +236,12 @@ void RunOutput::finish() const {
 void RunOutput::write_summary(const nlohmann::json& summary) const {
   if (dir.empty()) return;
   csv->close();
-  std::ofstream json(fs::path(dir) / "summary.json");
-  json << summary.dump(2) << "\n";
-  if (!*csv || !json) throw UsageError("--out: cannot write into '" + dir + "'");
+  if (!*csv)
+    throw FileWriteError("'" + (fs::path(dir) / "frames.csv").string() +
+                         "': cannot write the file");
+  write_file_inside((fs::path(out->path()) / "summary.json").string(), summary.dump(2) + "\n",
+                    (fs::path(dir) / "summary.json").string());
+  out->commit();
 }
 
 int report_scene_input_errors(const std::function<int()>& body, std::ostream& err,

@@ -11,6 +11,7 @@
 
 #include "cli/cli_args.h"
 #include "engine/engine.h"
+#include "formats/atomic_file.h"
 #include "formats/video_file.h"
 #include "image/image.h"
 #include "runs/source_kinds.h"
@@ -48,23 +49,29 @@ Sampling read_sampling(const CliArgs& args);
 
 // What every form of `oflab-cli animate` does with its output and timing options: --frames N
 // (at most N frames, limits::kPlayedFrames; -1 for all when not given), --repeat-timing N (timed
-// passes after an untimed warm-up, 1..kMaxTimingRepetitions, default kDefaultTimingRepetitions;
+// passes after an untimed warm-up, limits::kTimingPasses, default kDefaultTimingRepetitions,
+// or 1 when --repeat is given, so that a long run streams its records;
 // analysis/runs/run_driver.h),
-// --no-warm-up (the timed passes only), --out DIR (created, or an existing empty one;
-// --force for a non-empty one; DIR/frames.csv is written row by row as the run plays, so a
-// long run keeps no per-frame records, and DIR/summary.json after it), --frames-png
+// --no-warm-up (the timed passes only), --out DIR (a new or empty DIR; --force for a
+// non-empty one, which is then replaced whole; written whole or not at all: the files go
+// into a temporary directory beside DIR, formats/atomic_file.h, renamed into place by
+// write_summary; DIR/frames.csv is written row by row as the run plays, so a long run keeps
+// no per-frame records, and DIR/summary.json after it), --frames-png
 // (each frame as DIR/frame_NNNNN.png; needs --out), --video FILE (the frames as an MP4, GIF
-// or Ogg Theora video by FILE's extension, formats/video_file.h; an existing FILE needs
-// --force) at --fps N (default 30) and --quiet (no progress lines; otherwise runs of 200
-// frames or more report every tenth on `err`). Throws UsageError naming the option. `err`
-// must outlive the returned callbacks.
-constexpr int kMaxTimingRepetitions = 1000;
+// or Ogg Theora video by FILE's extension, formats/video_file.h, written through a
+// temporary file renamed over FILE by finish(); an existing FILE needs --force) at --fps N
+// (default 30) and --quiet (no progress lines; otherwise runs of 200 frames or more report
+// every tenth on `err`). Every refusal of these options comes before anything is created.
+// Throws UsageError naming the option; a write that fails during the run throws
+// FileWriteError naming the file. `err` must outlive the returned callbacks.
+constexpr int kMaxTimingRepetitions = static_cast<int>(limits::kTimingPasses.maximum);
 
 struct RunOutput {
   int max_frames = -1;
   int timing_repetitions = kDefaultTimingRepetitions;
   bool warm_up = true;                 // false with --no-warm-up
-  std::string dir;                     // empty without --out
+  std::string dir;                     // --out DIR as given; empty without --out
+  std::shared_ptr<AtomicDir> out;      // where DIR's files go until write_summary
   std::shared_ptr<std::ofstream> csv;  // DIR/frames.csv (opened by apply_to), empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png and --video
   std::function<void(int, int)> progress;
@@ -82,8 +89,9 @@ struct RunOutput {
   // for commands that write their own outputs from the returned run.
   void apply_timing_to(RunOptions& options) const;
 
-  // Writes DIR/summary.json (`summary`) and completes DIR/frames.csv after the run (nothing
-  // without --out). Throws UsageError naming --out when either cannot be written.
+  // Writes DIR/summary.json (`summary`), completes DIR/frames.csv and renames the directory
+  // into place after the run (nothing without --out). Throws FileWriteError naming the file
+  // when any of them cannot be written; DIR is then as it was.
   void write_summary(const nlohmann::json& summary) const;
 };
 RunOutput read_run_output(const CliArgs& args, std::ostream& err);

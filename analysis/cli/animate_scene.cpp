@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli/animate_options.h"
+#include "formats/atomic_file.h"
 #include "formats/image_io.h"
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
@@ -111,6 +112,8 @@ int animate_scene(const CliArgs& a, std::ostream& out, std::ostream& err) {
     return report_scene_input_errors([&] { return run(a, out, err); }, err);
   } catch (const UsageError&) {
     throw;
+  } catch (const FileWriteError&) {
+    throw;  // run_cli names the file
   } catch (const std::runtime_error& e) {
     err << "oflab-cli animate: --compare-conventional: " << e.what() << "\n";
     return 1;

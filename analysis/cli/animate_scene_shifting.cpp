@@ -52,6 +52,25 @@ void print_summary(const AnimationRun& run, const std::string& scene, const std:
   print_savings_and_error(s, out);
 }
 
+// Plays the run; the slicing's refusal of --epsilon ("scene slices: max_slices: ..." or
+// "scene slices: epsilon_px: ...", core/scene_shifting/scene_shifting.h) becomes a UsageError
+// naming --epsilon. Other errors pass through.
+AnimationRun play_slices(const SourceKind& kind, const RunSource& source,
+                         const PlayOptions& options) {
+  try {
+    return kind.play(source, options);
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    for (const char* field : {"max_slices: ", "epsilon_px: "}) {
+      const std::string prefix = std::string("scene slices: ") + field;
+      if (message.rfind(prefix, 0) == 0) {
+        throw UsageError("--epsilon: " + message.substr(prefix.size()));
+      }
+    }
+    throw;
+  }
+}
+
 int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   for (const char* option : kEngineOnlyOptions) {
     if (a.has(option))
@@ -70,7 +89,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const RunOutput output = read_run_output(a, err);
   const SourceKind& kind = source_kind("scene-shifting");
   output.apply_to(options, kind);
-  const AnimationRun result = kind.play(source, options);
+  const AnimationRun result = play_slices(kind, source, options);
   const double eps = settings.epsilon_px;
   nlohmann::json j = kind.summary_json(result);
   j["scene"] = source.scene->name;

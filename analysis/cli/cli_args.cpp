@@ -3,7 +3,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 
 namespace oflab {
 
@@ -61,8 +60,11 @@ std::optional<double> CliArgs::optional_number(const std::string& name) const {
 
 int CliArgs::integer(const std::string& name) const {
   const double v = number(name);
-  if (v != std::floor(v) || std::abs(v) > 1e9) {
+  if (v != std::floor(v)) {
     throw UsageError(name + ": '" + values(name).at(0) + "' is not a whole number");
+  }
+  if (std::abs(v) > 1e9) {
+    throw UsageError(name + ": '" + values(name).at(0) + "' is larger than 1e9 in magnitude");
   }
   return static_cast<int>(v);
 }
@@ -121,17 +123,24 @@ Vec3 CliArgs::vec3_in(const std::string& name, const Limit& limit) const {
   return Vec3(v.at(0), v.at(1), v.at(2));
 }
 
-void prepare_out_dir(const std::string& dir, bool force) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw UsageError("--out: '" + dir + "' is not a directory");
-    if (!fs::is_empty(dir, ec) && !force) {
-      throw UsageError("--out: '" + dir + "' is not empty (add --force to overwrite its files)");
-    }
-  } else if (!fs::create_directories(dir, ec)) {
-    throw UsageError("--out: cannot create '" + dir + "': " + ec.message());
+std::shared_ptr<AtomicDir> open_out_dir(const std::string& dir, bool force) {
+  const Overwrite overwrite = force ? Overwrite::kReplace : Overwrite::kRefuse;
+  try {
+    check_output_dir(dir, overwrite);
+  } catch (const FileWriteError& e) {
+    throw UsageError(std::string("--out: ") + e.what());
   }
+  return std::make_shared<AtomicDir>(dir, overwrite);
+}
+
+Overwrite check_out_file(const char* option, const std::string& path, bool force) {
+  const Overwrite overwrite = force ? Overwrite::kReplace : Overwrite::kRefuse;
+  try {
+    check_output_file(path, overwrite);
+  } catch (const FileWriteError& e) {
+    throw UsageError(std::string(option) + ": " + e.what());
+  }
+  return overwrite;
 }
 
 }  // namespace oflab

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "engine/limits.h"
 #include "flow/geometry.h"
+#include "formats/atomic_file.h"
 
 namespace oflab {
 
@@ -61,8 +63,16 @@ class CliArgs {
   std::map<std::string, std::vector<std::string>> values_;
 };
 
-// Creates DIR, or accepts an existing empty one; a non-empty DIR needs `force`. Throws
-// UsageError naming --out.
-void prepare_out_dir(const std::string& dir, bool force);
+// The output directory of --out DIR, written whole (formats/atomic_file.h): checked at once
+// (a non-empty DIR needs `force`, which then replaces it whole when the run succeeds; nothing
+// but a directory may be there), then a temporary directory beside DIR receives the outputs
+// (AtomicDir::path) until AtomicDir::commit renames it into place. Throws UsageError naming
+// --out for a refusal known up front, FileWriteError when the temporary cannot be created.
+std::shared_ptr<AtomicDir> open_out_dir(const std::string& dir, bool force);
+
+// The file of an output option (`option`: "--out", "--video", ...) checked before any work:
+// refused when it exists without `force`, or is a directory, device or FIFO. Returns how it
+// may be written. Throws UsageError naming the option.
+Overwrite check_out_file(const char* option, const std::string& path, bool force);
 
 }  // namespace oflab

@@ -1,10 +1,14 @@
 // oflab-cli: the headless command-line tool. All work happens in analysis/ and core/; an
 // exception escaping it ends the run with one line and kInternalErrorExitCode, never an abort.
+#include <csignal>
 #include <iostream>
 
 #include "cli/commands.h"
 
 int main(int argc, char** argv) {
+  // A write past the file size limit (ulimit -f) fails with EFBIG like a full disk, and is
+  // reported and cleaned up as one (formats/atomic_file.h), instead of killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   return oflab::run_guarded(
       "oflab-cli",
       [&] {

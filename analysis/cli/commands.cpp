@@ -10,6 +10,7 @@
 #include "experiments/experiments.h"
 #include "flow/decomposition.h"
 #include "flow/motion.h"
+#include "formats/atomic_file.h"
 #include "image/warp.h"
 #include "runs/run_driver.h"
 #include "runs/source_kinds.h"
@@ -138,6 +139,9 @@ int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
     } catch (const UsageError& e) {  // bad input, in any command: one line naming the option
       err << "oflab-cli " << c.name << ": " << e.what() << "\n";
       return 2;
+    } catch (const FileWriteError& e) {  // an output that could not be written: one line
+      err << "oflab-cli " << c.name << ": " << e.what() << "\n";
+      return 1;
     }
   }
   err << "oflab-cli: unknown command '" << args[0] << "' (try oflab-cli --help)\n";

@@ -56,7 +56,9 @@ int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostr
 
 // Dispatches argv[1..] to a subcommand; prints help for no arguments or --help. A
 // UsageError (analysis/cli/cli_args.h) escaping a subcommand is reported here, for every
-// subcommand alike: "oflab-cli COMMAND: WHAT" on `err` and exit code 2.
+// subcommand alike: "oflab-cli COMMAND: WHAT" on `err` and exit code 2; so is a
+// FileWriteError (an output that could not be written, formats/atomic_file.h), with exit
+// code 1.
 int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
 // The exit code of oflab-cli and oflab when an exception escaped everything that turns

@@ -2,9 +2,9 @@
 // reuse policies, one row per policy (analysis/runs/policy_runs.h, manual/policies.md).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli/animate_options.h"
 #include "cli/animate_scene.h"
@@ -35,20 +35,22 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
   return read_plane_source(a);
 }
 
-std::ofstream open_output(const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw UsageError("--out: cannot write " + path);
-  return out;
+// Writes `text` as NAME in --out DIR (into its temporary directory, `out`), checked.
+void write_output(const AtomicDir& out, const std::string& dir, const std::string& name,
+                  const std::string& text) {
+  write_file_inside(out.path() + "/" + name, text, dir + "/" + name);
 }
 
-// DIR/POLICY.csv per policy (the kind's per-frame CSV) and DIR/summary.csv, a row each.
-void write_outputs(const std::string& dir, const SourceKind& kind,
+// DIR/POLICY.csv per policy (the kind's per-frame CSV) and DIR/summary.csv, a row each, then
+// DIR renamed into place.
+void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kind,
                    const std::vector<PolicyRun>& runs, const std::vector<PolicyRow>& rows) {
   for (const PolicyRun& r : runs) {
-    std::ofstream csv = open_output(dir + "/" + r.policy->name + ".csv");
+    std::ostringstream csv;
     kind.write_csv(csv, r.run);
+    write_output(out, dir, std::string(r.policy->name) + ".csv", csv.str());
   }
-  std::ofstream summary = open_output(dir + "/summary.csv");
+  std::ostringstream summary;
   summary << "policy";
   for (int l = 0; l < kLevelCount; ++l) summary << ",pct_" << level_name(static_cast<Level>(l));
   summary << ",work_saved,time_saved,model_work_saved,max_measured_error_px,"
@@ -70,6 +72,8 @@ void write_outputs(const std::string& dir, const SourceKind& kind,
     }
     summary << ',' << row.hole_pixels << ',' << row.latency_frames << "\n";
   }
+  write_output(out, dir, "summary.csv", summary.str());
+  out.commit();
 }
 
 int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
@@ -94,7 +98,7 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const std::vector<PolicyRun> runs = run_policies(*kind, source, policies, options);
   std::vector<PolicyRow> rows;
   for (const PolicyRun& r : runs) rows.push_back(policy_row(r));
-  if (!output.dir.empty()) write_outputs(output.dir, *kind, runs, rows);
+  if (!output.dir.empty()) write_outputs(*output.out, output.dir, *kind, runs, rows);
   const std::string script = source.scene ? source.viewer.name : source.script.name;
   if (a.has("--json")) {
     nlohmann::json j = {{"script", script}, {"policies", nlohmann::json::array()}};

@@ -85,8 +85,11 @@ int run_experiments_command(const CommandArgs& original_args, std::ostream& out,
     if (const std::string problem = chart_display_problem(); !problem.empty()) {
       throw ChartError(problem);
     }
-    prepare_out_dir(options.out_dir, a.has("--force"));
-    const ExperimentsOutcome outcome = run_experiments(options, err);
+    const std::shared_ptr<AtomicDir> dir = open_out_dir(options.out_dir, a.has("--force"));
+    ExperimentsOptions into = options;
+    into.out_dir = dir->path();  // the report is written whole, then renamed into place
+    const ExperimentsOutcome outcome = run_experiments(into, err);
+    dir->commit();
     out << "wrote " << (fs::path(options.out_dir) / "report.html").string() << " and report.md ("
         << outcome.charts << " charts) in " << static_cast<int>(outcome.seconds + 0.5) << " s\n";
     return 0;

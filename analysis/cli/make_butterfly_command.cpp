@@ -1,5 +1,4 @@
 // `oflab-cli make-butterfly`: writes the bundled demo texture (analysis/generators/butterfly.h).
-#include <filesystem>
 #include <ostream>
 
 #include "cli/cli_args.h"
@@ -13,13 +12,13 @@ int run_make_butterfly_command(const CommandArgs& args, std::ostream& out, std::
   try {
     const CliArgs a(args, {{"--out", 1}, {"--force", 0}});
     const std::string path = a.values("--out").at(0);
-    std::error_code ec;
-    if (std::filesystem::exists(path, ec) && !a.has("--force")) {
-      throw UsageError("--out: '" + path + "' exists (add --force to overwrite it)");
-    }
-    write_png(path, make_butterfly());
+    const Overwrite overwrite = check_out_file("--out", path, a.has("--force"));
+    write_png(path, make_butterfly(), overwrite);
     out << "wrote " << path << " (243 x 198 RGBA)\n";
     return 0;
+  } catch (const FileWriteError& e) {
+    err << "oflab-cli make-butterfly: --out: " << e.what() << "\n";
+    return 1;
   } catch (const ImageFileError& e) {
     err << "oflab-cli make-butterfly: --out: " << e.what() << "\n";
     return 1;

@@ -1,7 +1,5 @@
 // `oflab-cli make-scene`: writes scene files (a grid of cubes for the scale experiment, or an
 // OBJ file converted to the scene format) and the scenes' shared tile texture.
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -22,28 +20,21 @@ int make_scene(const CliArgs& a, std::ostream& out) {
     throw UsageError("--cubes: give exactly one of --cubes N, --from-obj FILE, --tile-texture");
   }
   const std::string path = a.values("--out").at(0);
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !a.has("--force")) {
-    throw UsageError("--out: '" + path + "' exists (add --force to overwrite it)");
-  }
+  const Overwrite overwrite = check_out_file("--out", path, a.has("--force"));
   if (a.has("--tile-texture")) {
-    write_png(path, make_tile_texture());
+    write_png(path, make_tile_texture(), overwrite);
     out << "wrote " << path << " (128 x 128 RGBA, opaque)\n";
     return 0;
   }
   Scene scene;
   if (a.has("--cubes")) {
-    const int cubes = a.integer("--cubes");
-    if (cubes < 1 || cubes > 20000) throw UsageError("--cubes: must be from 1 to 20000");
-    scene = make_cube_grid(cubes);
+    scene = make_cube_grid(a.integer_in("--cubes", limits::kSceneCubes));
     scene.texture_names = {"tile"};
   } else {
     scene = read_obj_scene(a.values("--from-obj").at(0), Image(1, 1), "tile");
   }
   const std::string texture = a.text_or("--texture", "datasets:textures/tile.png");
-  std::ofstream file(path);
-  file << scene_to_json(scene, {texture}).dump(1) << "\n";
-  if (!file) throw UsageError("--out: cannot write '" + path + "'");
+  write_file_atomically(path, scene_to_json(scene, {texture}).dump(1) + "\n", overwrite);
   out << "wrote " << path << " (" << scene.polygons.size() << " polygons, texture " << texture
       << ")\n";
   return 0;
@@ -63,6 +54,9 @@ int run_make_scene_command(const CommandArgs& args, std::ostream& out, std::ostr
   } catch (const SceneError& e) {
     err << "oflab-cli make-scene: --from-obj: " << e.what() << "\n";
     return 2;
+  } catch (const FileWriteError& e) {
+    err << "oflab-cli make-scene: --out: " << e.what() << "\n";
+    return 1;
   } catch (const ImageFileError& e) {
     err << "oflab-cli make-scene: --out: " << e.what() << "\n";
     return 1;

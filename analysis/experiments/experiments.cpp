@@ -16,6 +16,7 @@
 #include "experiments/experiments_single_plane.h"
 #include "experiments/experiments_sweep.h"
 #include "experiments/experiments_warp.h"
+#include "formats/atomic_file.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "report/report_machine.h"
@@ -185,9 +186,9 @@ ReportFigure ExperimentContext::add_chart(const std::string& name, const Chart& 
   const std::string png = "charts/" + name + ".png";
   const std::string csv = "data/" + name + ".csv";
   write_chart_png(chart, (fs::path(out_dir_) / png).string());
-  std::ofstream out(fs::path(out_dir_) / csv);
+  std::ostringstream out;
   write_chart_csv(chart, out);
-  if (!out) throw std::runtime_error("cannot write '" + (fs::path(out_dir_) / csv).string() + "'");
+  write_file_inside((fs::path(out_dir_) / csv).string(), out.str(), csv);
   ++charts_;
   return {png, csv, caption};
 }
@@ -215,7 +216,7 @@ ExperimentsOutcome run_experiments(const ExperimentsOptions& options, std::ostre
                                  about_section(options, machine, ran, outcome.seconds));
   write_report(outcome.report, options.out_dir);
   outcome.charts = context.charts_written();
-  context.progress("report", "wrote " + (fs::path(options.out_dir) / "report.html").string());
+  context.progress("report", "wrote report.html and report.md");
   return outcome;
 }
 

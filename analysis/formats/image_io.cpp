@@ -5,32 +5,32 @@
 
 #include <algorithm>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <memory>
+#include <utility>
+
+#include "formats/input_file.h"
 
 namespace oflab {
 namespace {
 
-// The contents of `path`, refused above kMaxImageFileBytes before anything is read.
+// The contents of `path`, refused above kMaxImageFileBytes (formats/input_file.h: a regular
+// file only, its size checked while it is read).
 std::string read_bytes(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw ImageFileError(path + ": cannot read image (it is a directory)");
-  }
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw ImageFileError(path + ": cannot read image (cannot open the file)");
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw ImageFileError(path + ": cannot read image (not a regular file)");
-  if (size > kMaxImageFileBytes) {
+  InputFile file = read_input_file(path, kMaxImageFileBytes);
+  if (file.problem == InputProblem::kTooLarge) {
     throw ImageFileError(path + ": image file is larger than " +
                          std::to_string(kMaxImageFileBytes >> 20) + " MiB");
   }
-  std::string bytes(static_cast<size_t>(size), '\0');
-  in.seekg(0);
-  in.read(bytes.data(), size);
-  if (!in) throw ImageFileError(path + ": cannot read image (read error)");
-  return bytes;
+  if (file.problem != InputProblem::kNone) {
+    throw ImageFileError(path + ": cannot read image (" + input_problem_text(file) + ")");
+  }
+  return std::move(file.bytes);
+}
+
+// Appends what stbi_write_png_to_func hands on to a std::string.
+void append_bytes(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                             static_cast<std::size_t>(size));
 }
 
 bool starts_with(const std::string& bytes, const char* signature, size_t length) {
@@ -100,13 +100,21 @@ Image decode_image(const std::string& bytes, const std::string& origin) {
 
 Image read_image(const std::string& path) { return decode_image(read_bytes(path), path); }
 
-void write_png(const std::string& path, const Image& image) {
-  if (image.empty()) throw ImageFileError(path + ": refusing to write an empty image");
-  const std::vector<std::uint8_t> bytes = straight_rgba_from_image(image);
-  if (!stbi_write_png(path.c_str(), image.width(), image.height(), 4, bytes.data(),
-                      image.width() * 4)) {
-    throw ImageFileError(path + ": cannot write PNG");
+std::string encode_png(const Image& image) {
+  if (image.empty()) throw ImageFileError("refusing to encode an empty image");
+  const std::vector<std::uint8_t> pixels = straight_rgba_from_image(image);
+  std::string png;
+  if (!stbi_write_png_to_func(append_bytes, &png, image.width(), image.height(), 4, pixels.data(),
+                              image.width() * 4)) {
+    throw ImageFileError("cannot encode a PNG of " + std::to_string(image.width()) + " x " +
+                         std::to_string(image.height()) + " pixels");
   }
+  return png;
+}
+
+void write_png(const std::string& path, const Image& image, Overwrite overwrite) {
+  if (image.empty()) throw ImageFileError(path + ": refusing to write an empty image");
+  write_file_atomically(path, encode_png(image), overwrite);
 }
 
 }  // namespace oflab

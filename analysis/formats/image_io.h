@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "formats/atomic_file.h"
 #include "image/image.h"
 
 namespace oflab {
@@ -42,8 +43,15 @@ Image read_image(const std::string& path);
 // source in errors.
 Image decode_image(const std::string& bytes, const std::string& origin);
 
-// Writes `image` as an 8-bit RGBA PNG (straight alpha). Throws ImageFileError on failure.
-// Overwrites `path`: callers decide whether that is allowed.
-void write_png(const std::string& path, const Image& image);
+// `image` as the bytes of an 8-bit RGBA PNG (straight alpha). Throws ImageFileError for an
+// empty image.
+std::string encode_png(const Image& image);
+
+// Writes `image` as an 8-bit RGBA PNG (straight alpha) through a temporary file renamed over
+// `path` (formats/atomic_file.h): a failed write leaves what was at `path`. With
+// Overwrite::kRefuse an existing `path` is refused. Throws ImageFileError for an empty image,
+// FileWriteError naming the path when the file cannot be written.
+void write_png(const std::string& path, const Image& image,
+               Overwrite overwrite = Overwrite::kReplace);
 
 }  // namespace oflab

@@ -6,15 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/limits.h"
 #include "flow/camera.h"
 #include "flow/geometry.h"
+#include "formats/input_file.h"
 
 namespace oflab::json_fields {
 
@@ -45,20 +45,18 @@ struct Place {
 // Largest data file read (JSON or OBJ), in bytes: parsed JSON takes about ten times its size.
 constexpr long long kMaxFileBytes = 64LL << 20;
 
-// The contents of the file at `path`; Error "PATH: cannot open the file" if it cannot be read,
-// "PATH: larger than 64 MiB" above kMaxFileBytes (checked before reading).
+// The contents of the file at `path`; Error "PATH: cannot open the file (REASON)" if it cannot
+// be opened, "PATH: is a directory", "PATH: is not a regular file (...)" for a FIFO, device or
+// socket (never opened, so never waited on), "PATH: larger than 64 MiB" above kMaxFileBytes
+// (by its size, and by what was read: formats/input_file.h).
 template <class Error>
 std::string read_file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(path + ": cannot open the file");
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw Error(path + ": cannot read the file (not a regular file)");
-  if (size > kMaxFileBytes) throw Error(path + ": larger than 64 MiB, the limit for data files");
-  in.seekg(0);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw Error(path + ": cannot read the file");
-  return text.str();
+  InputFile file = read_input_file(path, kMaxFileBytes);
+  if (file.problem == InputProblem::kTooLarge) {
+    throw Error(path + ": larger than 64 MiB, the limit for data files");
+  }
+  if (file.problem != InputProblem::kNone) throw Error(path + ": " + input_problem_text(file));
+  return std::move(file.bytes);
 }
 
 // `text` parsed; it must be a JSON object. Every exception of the JSON library (a syntax

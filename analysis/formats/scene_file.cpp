@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "formats/datasets.h"
@@ -30,14 +31,25 @@ void read_textures(const json& root, const Where& top, const std::string& base_d
   if (!textures.is_object() || textures.empty()) {
     top.fail("textures", "must be an object naming at least one texture file");
   }
+  // Each file is read and decoded once: entries naming the same file (by its path after
+  // links) copy the first one's image instead of decoding it again.
+  std::map<std::string, std::size_t> decoded;
   for (const auto& [name, file] : textures.items()) {
     const Where w{top.origin, "texture '" + name + "'"};
     if (!file.is_string()) w.fail("", "the file name must be a string");
     const std::string path = resolve_texture(file.get<std::string>(), base_dir);
-    try {
-      scene.textures.push_back(read_image(path));
-    } catch (const ImageFileError& e) {
-      w.fail("", e.what());
+    std::error_code ec;
+    const fs::path real = fs::canonical(path, ec);
+    const std::string key = ec ? path : real.string();
+    if (const auto it = decoded.find(key); it != decoded.end()) {
+      scene.textures.push_back(scene.textures[it->second]);
+    } else {
+      try {
+        scene.textures.push_back(read_image(path));
+      } catch (const ImageFileError& e) {
+        w.fail("", e.what());
+      }
+      decoded[key] = scene.textures.size() - 1;
     }
     if (scene.textures.back().empty()) w.fail("", "the image '" + path + "' is empty");
     scene.texture_names.push_back(name);

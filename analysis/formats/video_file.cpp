@@ -19,14 +19,15 @@ namespace oflab {
 
 namespace fs = std::filesystem;
 
-// One format's encoder: opened with the stored size (creating the file), fed frames of at
-// least that size (the top-left width x height pixels are stored), then finished. The
-// destructor releases everything, also after a failed open. Errors throw VideoFileError
-// with a message that does not name the path (the writer adds it).
+// One format's encoder: opened with the stored size on the writer's temporary file (which
+// the writer renames into place), fed frames of at least that size (the top-left width x
+// height pixels are stored), then finished. The destructor releases everything, also after a
+// failed open. Errors throw VideoFileError with a message that does not name the path (the
+// writer adds it), or the file's FileWriteError.
 class VideoWriter::Encoder {
  public:
   virtual ~Encoder() = default;
-  virtual void open(const std::string& path, VideoSize size, int fps) = 0;
+  virtual void open(AtomicFile& file, VideoSize size, int fps) = 0;
   virtual void add(const Image& frame) = 0;
   virtual void finish() = 0;
 };
@@ -78,11 +79,14 @@ class LibavEncoder final : public VideoWriter::Encoder {
   // `muxer`: libavformat's name ("mp4", "ogg"); `codec`: the encoder (may be null).
   LibavEncoder(const char* muxer, const AVCodec* codec) : muxer_(muxer), codec_(codec) {}
 
-  void open(const std::string& path, VideoSize size, int fps) override {
+  void open(AtomicFile& file, VideoSize size, int fps) override {
     size_ = size;
+    const std::string& path = file.temp_path();
     const AVCodec* codec = codec_;
     if (!codec) throw VideoFileError(std::string("this libavcodec has no encoder for ") + muxer_);
-    av_log_set_level(AV_LOG_ERROR);  // the encoders' banners are not for the terminal
+    // The encoders' banners and complaints are not for the terminal: a failure becomes one
+    // line, the writer's.
+    av_log_set_level(AV_LOG_QUIET);
     av_check(avformat_alloc_output_context2(&format_, nullptr, muxer_, path.c_str()),
              "cannot set up the container");
     stream_ = avformat_new_stream(format_, nullptr);
@@ -199,10 +203,11 @@ class LibavEncoder final : public VideoWriter::Encoder {
 
 class GifEncoder final : public VideoWriter::Encoder {
  public:
-  void open(const std::string& path, VideoSize size, int fps) override {
+  void open(AtomicFile& file, VideoSize size, int fps) override {
     size_ = size;
+    file_ = &file;
     int error = 0;
-    gif_ = EGifOpenFileName(path.c_str(), false, &error);
+    gif_ = EGifOpen(this, write_to_file, &error);
     if (!gif_)
       throw VideoFileError(std::string("cannot create the file: ") + GifErrorString(error));
     EGifSetGifVersion(gif_, true);
@@ -258,12 +263,27 @@ class GifEncoder final : public VideoWriter::Encoder {
     int error = 0;
     const int closed = EGifCloseFile(gif_, &error);
     gif_ = nullptr;
+    if (!write_error_.empty()) throw FileWriteError(write_error_);
     if (closed == GIF_ERROR)
       throw VideoFileError(std::string("cannot complete the GIF: ") + GifErrorString(error));
   }
 
  private:
+  // giflib's output function: the bytes go to the temporary file, every write checked. A
+  // failure is kept for check() to throw (no exception may cross giflib's C code).
+  static int write_to_file(GifFileType* gif, const GifByteType* data, int length) {
+    auto* self = static_cast<GifEncoder*>(gif->UserData);
+    try {
+      self->file_->write(data, static_cast<std::size_t>(length));
+      return length;
+    } catch (const FileWriteError& e) {
+      self->write_error_ = e.what();
+      return 0;
+    }
+  }
+
   void check(int status) const {
+    if (!write_error_.empty()) throw FileWriteError(write_error_);
     if (status == GIF_ERROR) {
       throw VideoFileError(std::string("cannot write the GIF: ") + GifErrorString(gif_->Error));
     }
@@ -271,6 +291,8 @@ class GifEncoder final : public VideoWriter::Encoder {
 
   VideoSize size_;
   GifFileType* gif_ = nullptr;
+  AtomicFile* file_ = nullptr;
+  std::string write_error_;  // the FileWriteError of a failed write
   int delay_cs_ = 3;
 };
 
@@ -322,7 +344,7 @@ std::string mp4_encoder_name() {
 }
 
 VideoWriter::VideoWriter(const std::string& path, int fps, bool overwrite)
-    : path_(path), format_(video_format_of(path)), fps_(fps) {
+    : path_(path), format_(video_format_of(path)), fps_(fps), overwrite_(overwrite) {
   if (fps < kMinVideoFps || fps > kMaxVideoFps) {
     throw VideoFileError("'" + path + "': frame rate " + std::to_string(fps) + " is outside " +
                          std::to_string(kMinVideoFps) + ".." + std::to_string(kMaxVideoFps));
@@ -334,10 +356,8 @@ VideoWriter::VideoWriter(const std::string& path, int fps, bool overwrite)
 }
 
 VideoWriter::~VideoWriter() {
-  if (!created_ || finished_) return;
-  encoder_.reset();
-  std::error_code ec;
-  fs::remove(path_, ec);  // incomplete: no half-written video is left behind
+  encoder_.reset();  // closes the temporary file, which file_ then removes unless committed
+  file_.reset();
 }
 
 void VideoWriter::add_frame(const Image& frame) {
@@ -352,8 +372,9 @@ void VideoWriter::add_frame(const Image& frame) {
       width_ = frame.width();
       height_ = frame.height();
       std::unique_ptr<Encoder> encoder = make_encoder(format_);
-      created_ = true;
-      encoder->open(path_, size, fps_);
+      file_ = std::make_unique<AtomicFile>(path_,
+                                           overwrite_ ? Overwrite::kReplace : Overwrite::kRefuse);
+      encoder->open(*file_, size, fps_);
       encoder_ = std::move(encoder);
     }
     if (frame.width() != width_ || frame.height() != height_) {
@@ -377,6 +398,7 @@ void VideoWriter::finish() {
   } catch (const VideoFileError& e) {
     throw VideoFileError("'" + path_ + "': " + e.what());
   }
+  file_->commit();
   finished_ = true;
 }
 

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/limits.h"
+#include "formats/atomic_file.h"
 #include "image/image.h"
 
 namespace oflab {
@@ -30,8 +32,9 @@ const char* video_format_name(VideoFormat format);
 std::string video_format_list();
 
 // Lowest and highest frame rate a VideoWriter accepts, in frames per second.
-constexpr int kMinVideoFps = 1;
-constexpr int kMaxVideoFps = 60;
+// (limits::kVideoFps).
+constexpr int kMinVideoFps = static_cast<int>(limits::kVideoFps.minimum);
+constexpr int kMaxVideoFps = static_cast<int>(limits::kVideoFps.maximum);
 
 // The size in pixels a format stores for a width x height frame: MP4 and Ogg Theora need
 // even sizes, so an odd last column or row is dropped; GIF keeps the frame's size.
@@ -46,8 +49,10 @@ VideoSize stored_video_size(VideoFormat format, int width, int height);
 // every libavcodec has). Empty if none of these exists.
 std::string mp4_encoder_name();
 
-// Writes one video file, frame by frame. Not copyable. The file is created by the first
-// frame; a writer destroyed before finish() removes the incomplete file it created.
+// Writes one video file, frame by frame, through a temporary file beside it
+// (formats/atomic_file.h) that finish() renames over the path: a writer destroyed before
+// finish() (a failed run) removes its temporary and leaves what was at the path. Not
+// copyable. The temporary is created by the first frame, with the mode the umask gives.
 class VideoWriter {
  public:
   // Prepares to write `path` (format by its extension) at `fps` frames per second. Throws
@@ -61,12 +66,14 @@ class VideoWriter {
 
   // Appends one frame. The first frame fixes the size (stored_video_size of it, at least
   // 2 x 2 pixels); every later frame must have the first one's width and height. Throws
-  // VideoFileError naming the path on a size mismatch, an empty or too small frame, or
-  // when the file cannot be written.
+  // VideoFileError naming the path on a size mismatch, an empty or too small frame, or an
+  // encoder failure; FileWriteError naming the path when the file cannot be written.
   void add_frame(const Image& frame);
 
-  // Flushes the encoder and closes the file. Throws VideoFileError naming the path when no
-  // frame was added or the file cannot be completed. Calling it again does nothing.
+  // Flushes the encoder, closes the file and renames it over the path. Throws
+  // VideoFileError naming the path when no frame was added or the encoder fails,
+  // FileWriteError when the file cannot be completed (or, without `overwrite`, when a file
+  // appeared at the path meanwhile). Calling it again does nothing.
   void finish();
 
   VideoFormat format() const { return format_; }
@@ -83,8 +90,9 @@ class VideoWriter {
   int frames_ = 0;
   int width_ = 0;  // of the first frame
   int height_ = 0;
-  bool created_ = false;  // the file was (or may have been) created
+  bool overwrite_ = false;
   bool finished_ = false;
+  std::unique_ptr<AtomicFile> file_;  // the temporary file, from the first frame on
   std::unique_ptr<Encoder> encoder_;
 };
 

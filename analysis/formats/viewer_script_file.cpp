@@ -32,7 +32,8 @@ ViewerScript parse_viewer_script(const std::string& text, const std::string& ori
   const Vec3 target = vec3(viewer, vw, "look_at");
   const Vec3 up = vec3(viewer, vw, "up");
   const std::string problem = look_at_problem(position, target, up);
-  if (!problem.empty()) vw.fail("look_at", problem);
+  // A problem of `up` (zero, or parallel to the view direction) names up, not look_at.
+  if (!problem.empty()) vw.fail(problem.rfind("up ", 0) == 0 ? "up" : "look_at", problem);
   const json& segs = member(root, top, "segments");
   if (!segs.is_array() || segs.empty()) top.fail("segments", "must be a non-empty list");
   std::vector<ViewerSegment> segments;

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "formats/atomic_file.h"
+
 namespace oflab {
 namespace {
 
@@ -56,10 +58,10 @@ std::string read_binary(const fs::path& path) {
   return bytes.str();
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+// Writes `text` as the file NAME of `dir`, every write checked (formats/atomic_file.h: the
+// report's directory is renamed into place as a whole).
+void write_text(const std::string& dir, const std::string& name, const std::string& text) {
+  write_file_inside((fs::path(dir) / name).string(), text, name);
 }
 
 void markdown_block(std::ostream& out, const ReportBlock& block) {
@@ -181,8 +183,8 @@ std::string render_html(const Report& report, const std::string& dir) {
 }
 
 void write_report(const Report& report, const std::string& dir) {
-  write_text(fs::path(dir) / "report.md", render_markdown(report));
-  write_text(fs::path(dir) / "report.html", render_html(report, dir));
+  write_text(dir, "report.md", render_markdown(report));
+  write_text(dir, "report.html", render_html(report, dir));
 }
 
 }  // namespace oflab

@@ -64,6 +64,15 @@ inline constexpr Limit kStabilizationPlane{"stabilization plane coordinate", "u"
 // Layer content quality: samples per pixel of shaded content, detail of impostors
 // (core/content/layer_content.h, whose kMaxContentQuality is this maximum).
 inline constexpr Limit kContentQuality{"content quality", "", 1.0, 256.0, true};
+// Plays of a motion script back to back (`oflab-cli animate --repeat N`); the run's frames
+// must also stay within an int.
+inline constexpr Limit kRepeat{"repeat count", "plays", 1.0, 1000000.0, true};
+// Timed passes of a run after its warm-up (`--repeat-timing N`).
+inline constexpr Limit kTimingPasses{"timed passes", "passes", 1.0, 1000.0, true};
+// Frame rate of a video file (`--fps N`).
+inline constexpr Limit kVideoFps{"frame rate", "fps", 1.0, 60.0, true};
+// Cubes of a generated grid-of-cubes scene (`oflab-cli make-scene --cubes N`).
+inline constexpr Limit kSceneCubes{"cube count", "cubes", 1.0, 20000.0, true};
 // The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
 inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};
 // Live play rate, frames per second.

@@ -3,6 +3,8 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
+#include <QBuffer>
+#include <QByteArray>
 #include <QElapsedTimer>
 #include <QWindow>
 #include <ostream>
@@ -10,6 +12,7 @@
 #include "app/lesson_check.h"
 #include "app/main_window.h"
 #include "app/screenshot.h"
+#include "formats/atomic_file.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "views/view_page.h"
@@ -52,10 +55,20 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
   const QString view = QString::fromStdString(options.view);
   ViewPage* page = view.isEmpty() || options.whole_window ? nullptr : window->view(view);
   const QImage image = page ? page->render_image() : window->grab_window_image();
-  QString error;
-  const QString path = QString::fromStdString(options.screenshot);
-  if (!save_png(image, path, &error)) {
-    err << "oflab: " << error.toStdString() << "\n";
+  // Written whole through a temporary file beside it (formats/atomic_file.h); whether it may
+  // replace an existing file was decided with --force before the window opened.
+  QByteArray png;
+  QBuffer buffer(&png);
+  buffer.open(QIODevice::WriteOnly);
+  if (image.isNull() || !image.save(&buffer, "PNG")) {
+    err << "oflab: --screenshot: cannot encode the " << image.width() << " x " << image.height()
+        << " image as PNG\n";
+    return 1;
+  }
+  try {
+    write_file_atomically(options.screenshot, png.toStdString(), Overwrite::kReplace);
+  } catch (const FileWriteError& e) {
+    err << "oflab: --screenshot: " << e.what() << "\n";
     return 1;
   }
   out << "oflab: wrote " << options.screenshot << " (" << image.width() << " x " << image.height()

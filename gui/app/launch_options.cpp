@@ -1,11 +1,13 @@
 #include "app/launch_options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
 #include "adapters/exact_frames.h"
 #include "app/view_table.h"
+#include "cli/cli_args.h"
 #include "engine/engine.h"
 #include "engine/limits.h"
 #include "engine/reuse_policy.h"
@@ -237,6 +239,20 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--screenshot") && options->screenshot.empty()) {
     throw UsageError("--screenshot: the file name is empty");
   }
+  if (cli.has("--force") && options->screenshot.empty()) {
+    throw UsageError("--force: only used with --screenshot");
+  }
+  if (!options->screenshot.empty()) {
+    // As oflab-cli's outputs: PNG by its extension, no overwrite without --force, never a
+    // directory or a device (the file is then written whole, app/app_runner.cpp).
+    std::string ext = std::filesystem::path(options->screenshot).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png") {
+      throw UsageError("--screenshot: '" + options->screenshot +
+                       "': a screenshot is a PNG file; give a name ending in .png");
+    }
+    check_out_file("--screenshot", options->screenshot, cli.has("--force"));
+  }
   options->whole_window = cli.has("--whole-window");
   if (options->whole_window && options->screenshot.empty()) {
     throw UsageError("--whole-window: only used with --screenshot");
@@ -270,13 +286,14 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
-                           {"--script", 1},         {"--source", 1},     {"--mode", 1},
-                           {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
-                           {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
-                           {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
-                           {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
-                           {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1}});
+  const CliArgs cli(
+      args,
+      {{"--session", 1},         {"--lesson", 1},    {"--scene", 1},          {"--script", 1},
+       {"--source", 1},          {"--mode", 1},      {"--animation-show", 1}, {"--compare", 1},
+       {"--animation-exact", 1}, {"--view", 1},      {"--screenshot", 1},     {"--whole-window", 0},
+       {"--frames", 1},          {"--benchmark", 1}, {"--size", 2},           {"--flow-show", 1},
+       {"--flow-draw", 1},       {"--basis", 1},     {"--presentation", 0},   {"--help", 0},
+       {"--check-lesson", 1},    {"--force", 0}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
@@ -322,7 +339,8 @@ std::string launch_usage() {
          "             [--view " +
          joined(screenshot_view_names(), "|") +
          "]\n"
-         "             [--screenshot FILE.png --frames N [--whole-window]] [--benchmark N] [--size "
+         "             [--screenshot FILE.png [--force] --frames N [--whole-window]] [--benchmark "
+         "N] [--size "
          "W H]\n"
          "             [--flow-show PART] [--flow-draw " +
          flow_draw_names(",") +

@@ -69,7 +69,7 @@ TEST_F(AnimateVideo, BadValuesAreOneLineErrorsNamingTheOption) {
        "--video: '" + path("x.avi") +
            "': the video format is chosen "
            "by the extension, one of mp4, gif, ogv"},
-      {{"--video", path("x.gif"), "--fps", "0"}, "--fps: 0 is outside 1..60"},
+      {{"--video", path("x.gif"), "--fps", "0"}, "--fps: 0 is outside 1..60 fps"},
       {{"--fps", "25"}, "--fps: needs --video FILE"},
   };
   for (const auto& c : cases) {

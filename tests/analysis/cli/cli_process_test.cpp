@@ -2,7 +2,8 @@
 // exit status (a signal, an abort), its wall time and its peak memory.
 //
 // - Long runs (ctest label `soak`): 100 000 frames of the loop script keep the peak
-//   resident memory within 10 % of a 1000-frame run (manual/robustness.md, "Long runs").
+//   resident memory within 10 % of a 1000-frame run, and `--repeat 40` within 10 % of
+//   `--repeat 2` (manual/robustness.md, "Long runs").
 // - Hostile inputs: every committed fuzz regression input and the hand-made files
 //   end, under a 2 GB address-space limit, within 60 s with exit status 0 or 2 and at most a
 //   one-line message (manual/robustness.md, "Limits").
@@ -78,6 +79,23 @@ TEST(LongRun, HundredThousandFramesPeakWithinTenPercentOfAThousand) {
             << " KB, 100000 frames " << long_run.peak_rss_kb << " KB (" << long_run.seconds
             << " s)\n";
   EXPECT_LE(long_run.peak_rss_kb, short_run.peak_rss_kb * 1.10);
+  fs::remove_all(dir);
+}
+
+// The shape: `animate --script loop --repeat 40` (25 160 frames, the default timing,
+// which is one timed pass with --repeat) peaks within 10 % of `--repeat 2`.
+TEST(LongRun, RepeatFortyPeaksWithinTenPercentOfRepeatTwo) {
+  const fs::path dir = testing::fresh_test_dir("oflab-long-run");
+  std::vector<testing::ChildResult> runs;
+  for (const char* repeat : {"2", "40"}) {
+    runs.push_back(run_cli_child(
+        {"animate", "--script", "loop", "--repeat", repeat, "--quiet", "--json"}, dir, 0, 300.0));
+    ASSERT_EQ(runs.back().code, 0) << runs.back().err;
+  }
+  EXPECT_EQ(nlohmann::json::parse(runs[1].out).at("frames"), 40 * 629);
+  std::cout << "peak resident memory: --repeat 2 " << runs[0].peak_rss_kb << " KB, --repeat 40 "
+            << runs[1].peak_rss_kb << " KB (" << runs[1].seconds << " s)\n";
+  EXPECT_LE(runs[1].peak_rss_kb, runs[0].peak_rss_kb * 1.10);
   fs::remove_all(dir);
 }
 

@@ -436,7 +436,7 @@ TEST(ExperimentsCommand, RefusesANonEmptyDirectoryWithoutForce) {
   c = cli({"experiments", "--quick", "--only", "warp", "--out", dir.string(), "--force"});
   EXPECT_EQ(c.code, 0) << c.err;
   EXPECT_TRUE(fs::exists(dir / "report.md"));
-  EXPECT_TRUE(fs::exists(dir / "keep.txt"));
+  EXPECT_FALSE(fs::exists(dir / "keep.txt"));  // --force replaces DIR whole: no stale file
   const std::string md = read_text(dir / "report.md");
   EXPECT_EQ(md.find("Experiment 1"), std::string::npos) << "--only runs only what it names";
 }

@@ -67,10 +67,10 @@ void give_children_a_runtime_dir(const fs::path& dir) {
 void expect_gui_ends_cleanly(std::vector<std::string> args, const fs::path& dir,
                              const std::string& what) {
   give_children_a_runtime_dir(dir);
-  for (const char* a : {"--screenshot", "", "--frames", "5", "--size", "640", "480"}) {
+  for (const char* a : {"--screenshot", "", "--force", "--frames", "5", "--size", "640", "480"}) {
     args.emplace_back(a);
   }
-  args[args.size() - 6] = (dir / "shot.png").string();
+  args[args.size() - 7] = (dir / "shot.png").string();  // replaced by each run: --force
   testing::expect_ends_cleanly(OFLAB_GUI_BINARY, args, dir, what);
 }
 
