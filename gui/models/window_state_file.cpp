@@ -1,7 +1,5 @@
 #include "models/window_state_file.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +8,7 @@
 #include <vector>
 
 #include "engine/reuse_policy.h"
+#include "formats/atomic_file.h"
 #include "formats/json_fields.h"
 
 namespace oflab {
@@ -375,24 +374,11 @@ WindowState read_session_file(const std::string& path) {
 }
 
 void write_session_file(const std::string& path, const WindowState& state, bool overwrite) {
-  if (!overwrite && std::filesystem::exists(path)) {
-    throw SessionError(path + ": exists; not overwritten");
-  }
-  const std::string temporary = path + ".partial-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << window_state_to_json(state);
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw SessionError(path + ": cannot be written");
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::remove(temporary.c_str());
-    throw SessionError(path + ": cannot be written (" + error.message() + ")");
+  try {
+    write_file_atomically(path, window_state_to_json(state),
+                          overwrite ? Overwrite::kReplace : Overwrite::kRefuse);
+  } catch (const FileWriteError& e) {
+    throw SessionError(e.what());
   }
 }
 

@@ -48,9 +48,9 @@ WindowState parse_session(const std::string& text, const std::string& origin);
 // when it cannot be read.
 WindowState read_session_file(const std::string& path);
 
-// Writes a session file: the whole text to a temporary file beside it, then renamed over
-// `path`, so a failed write leaves what was there. Throws SessionError when the file exists
-// and `overwrite` is false, or when it cannot be written.
+// Writes a session file whole (analysis/formats/atomic_file.h: a temporary beside it, renamed
+// over `path`), so a failed write leaves what was there. Throws SessionError naming the file
+// when it exists and `overwrite` is false, or when it cannot be written.
 void write_session_file(const std::string& path, const WindowState& state, bool overwrite);
 
 }  // namespace oflab
