@@ -11,8 +11,10 @@ bash tools/build.sh
 
 jobs=$(nproc 2>/dev/null || echo 2)
 
+# As many tests at a time as the machine has cores: every GUI test opens its own window on the
+# one virtual screen, and no two tests share a scratch folder.
 xvfb-run -a -s "-screen 0 1600x1000x24" \
-  ctest --test-dir build --output-on-failure --timeout 600
+  ctest --test-dir build --output-on-failure --timeout 600 -j"$jobs"
 
 # The sanitized tree: OFLAB_HEADLESS (core, analysis, oflab-cli and their tests; no Qt, GUI
 # or benchmarks), Debug (assertions on) compiled at -O1 with line tables only (-g1): the
