@@ -23,12 +23,6 @@
 namespace oflab {
 namespace {
 
-std::string joined(const std::vector<std::string>& names, const std::string& separator = ", ") {
-  std::string text;
-  for (const std::string& n : names) text += (text.empty() ? "" : separator) + n;
-  return text;
-}
-
 void read_script(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--script")) return;
   const std::string name = cli.values("--script").at(0);
@@ -76,7 +70,8 @@ void check_source(const CliArgs& cli) {
   const std::string text = cli.values("--source").at(0);
   const std::vector<std::string> kinds = scene_source_kinds();
   if (std::find(kinds.begin(), kinds.end(), text) == kinds.end()) {
-    throw UsageError("--source: unknown source '" + text + "' (known: " + joined(kinds) + ")");
+    throw UsageError("--source: unknown source '" + text + "' (known: " + joined_names(kinds) +
+                     ")");
   }
   if (!cli.has("--scene")) throw UsageError("--source: only used with --scene");
 }
@@ -216,7 +211,8 @@ void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
     if (!parse_flow_part(key, &part)) {
       std::vector<std::string> keys;
       for (int k = 0; k < kFlowPartCount; ++k) keys.push_back(flow_part_key(FlowPart(k)));
-      throw UsageError("--flow-show: unknown part '" + key + "' (known: " + joined(keys) + ")");
+      throw UsageError("--flow-show: unknown part '" + key + "' (known: " + joined_names(keys) +
+                       ")");
     }
     options->state.flow.part = part;
   }
@@ -308,7 +304,8 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
   options.view = cli.text_or("--view", "");
   const auto& views = screenshot_view_names();
   if (!options.view.empty() && std::find(views.begin(), views.end(), options.view) == views.end()) {
-    throw UsageError("--view: unknown view '" + options.view + "' (known: " + joined(views) + ")");
+    throw UsageError("--view: unknown view '" + options.view + "' (known: " + joined_names(views) +
+                     ")");
   }
   if (!options.view.empty() && options.view != "window") options.state.view = options.view;
   read_run_mode(cli, &options);
@@ -324,7 +321,7 @@ std::string launch_usage() {
   for (const ViewEntry& view : view_table()) titled.push_back(view.name + " (" + view.title + ")");
   return "usage: oflab [--session FILE | --lesson NAME] [--script NAME|FILE] [--scene NAME|FILE]\n"
          "             [--source " +
-         joined(scene_source_kinds(), "|") +
+         joined_names(scene_source_kinds(), "|") +
          "]\n"
          "             [--mode " +
          reuse_policy_names("|") +
@@ -337,7 +334,7 @@ std::string launch_usage() {
          exact_renderer_names("|") +
          "]\n"
          "             [--view " +
-         joined(screenshot_view_names(), "|") +
+         joined_names(screenshot_view_names(), "|") +
          "]\n"
          "             [--screenshot FILE.png [--force] --frames N [--whole-window]] [--benchmark "
          "N] [--size "
@@ -348,12 +345,13 @@ std::string launch_usage() {
          "             [--basis taylor|waxman-ullman|planar] [--presentation]\n"
          "             [--check-lesson NAME|FILE|all] [--help]\n"
          "  views: " +
-         joined(titled) +
+         joined_names(titled) +
          "; window is the whole window\n"
          "  lessons: " +
-         lesson_names() + "\n  shipped scripts: " + joined(shipped_script_names()) +
+         lesson_names() + "\n  shipped scripts: " + joined_names(shipped_script_names()) +
          "\n  shipped scenes (--script then names a viewer script: " +
-         joined(shipped_viewer_script_names()) + "): " + joined(shipped_scene_names()) + "\n";
+         joined_names(shipped_viewer_script_names()) + "): " + joined_names(shipped_scene_names()) +
+         "\n";
 }
 
 }  // namespace oflab

@@ -33,9 +33,7 @@ LessonClaim read_claim(const json& j, const Where& w) {
   c.claim = text(j, w, "claim");
   const auto& kinds = lesson_claim_kinds();
   if (std::find(kinds.begin(), kinds.end(), c.claim) == kinds.end()) {
-    std::string names;
-    for (const std::string& k : kinds) names += (names.empty() ? "" : ", ") + k;
-    w.fail("claim", "'" + c.claim + "' is not one of " + names);
+    w.fail("claim", "'" + c.claim + "' is not one of " + joined_names(kinds));
   }
   c.of = optional_text(j, w, "of", "");
   c.over = optional_text(j, w, "over", "");

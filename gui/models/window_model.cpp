@@ -23,12 +23,6 @@ std::vector<const ReusePolicy*> policies_of(const std::vector<std::string>& name
   return policies;
 }
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 }  // namespace
 
 WindowModel::WindowModel(std::vector<std::string> view_names, QObject* parent)
@@ -76,7 +70,7 @@ std::string WindowModel::problem(const WindowState& s) const {
   const std::string limits_problem = window_state_problem(s);
   if (!limits_problem.empty()) return limits_problem;
   if (std::find(view_names_.begin(), view_names_.end(), s.view) == view_names_.end()) {
-    return "view: unknown view '" + s.view + "' (one of " + joined(view_names_) + ")";
+    return "view: unknown view '" + s.view + "' (one of " + joined_names(view_names_) + ")";
   }
   if (!find_exact_renderer(s.exact_renderer)) {
     return "animation.exact_renderer: unknown renderer '" + s.exact_renderer + "' (one of " +
@@ -157,7 +151,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
 bool WindowModel::set_view(const std::string& name) {
   if (std::find(view_names_.begin(), view_names_.end(), name) == view_names_.end()) {
     emit input_rejected(QString::fromStdString("view: unknown view '" + name + "' (one of " +
-                                               joined(view_names_) + ")"));
+                                               joined_names(view_names_) + ")"));
     return false;
   }
   if (name == view_) return true;

@@ -65,6 +65,14 @@ struct WindowState {
   int lesson_step = 0;
 };
 
+// `names` joined by `separator`, for messages and help texts: "flow, basis, animation".
+inline std::string joined_names(const std::vector<std::string>& names,
+                                const std::string& separator = ", ") {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : separator) + name;
+  return text;
+}
+
 // Field by field, numbers exactly (a saved state reads back bit for bit).
 bool operator==(const WindowState& a, const WindowState& b);
 inline bool operator!=(const WindowState& a, const WindowState& b) { return !(a == b); }
