@@ -68,4 +68,13 @@ for look in normal presentation; do
   screen=1920x1200 shot basis-1080-$look --view basis --size 1920 1080 --frames 30 $flag
   screen=1920x1200 shot slices-1080-$look --view slices --size 1920 1080 --frames 10 $flag
 done
+# Each step of each lesson, as the lesson-claims check leaves the window after measuring
+# that step's claims (manual/lessons.md shows them).
+steps=$(mktemp -d)
+trap 'rm -rf "$steps"' EXIT
+xvfb-run -a -s "-screen 0 1920x1200x24" "$oflab" --check-lesson all --size 1920 1080 \
+  --step-shots "$steps" 2> >(grep -v 'XDG_RUNTIME_DIR' >&2) | grep -v '^oflab: wrote' |
+  tail -n 1
+cp "$steps"/lesson-*-step-*.png "$out"/
+python3 tools/lesson-steps.py
 echo "make-screenshots: wrote $(ls "$out"/*.png | wc -l) images to $out"

@@ -59,15 +59,35 @@ std::string read_file_text(const std::string& path) {
   return std::move(file.bytes);
 }
 
+// What the JSON library says, in a reader's words: "line 3, column 7: unexpected '}';
+// expected string literal" for a syntax error (where it stopped, both from 1), "number
+// overflow parsing '1e400'" for the rest; never the library's "[json.exception...]" codes.
+inline std::string json_problem(const json::exception& e) {
+  std::string words = e.what();
+  const std::size_t code = words.find("] ");  // "[json.exception.parse_error.101] "
+  if (words.rfind("[json.exception.", 0) == 0 && code != std::string::npos) {
+    words.erase(0, code + 2);
+  }
+  const std::string at = "parse error at ";
+  if (words.rfind(at, 0) == 0) words.erase(0, at.size());
+  const std::size_t syntax = words.find(": syntax error while parsing ");
+  const std::size_t dash = words.find(" - ", syntax == std::string::npos ? 0 : syntax);
+  if (syntax != std::string::npos && dash != std::string::npos) {
+    words.erase(syntax + 2, dash + 3 - (syntax + 2));
+  }
+  return words;
+}
+
 // `text` parsed; it must be a JSON object. Every exception of the JSON library (a syntax
-// error, a number too large for a double such as 1e400, ...) becomes an Error naming the file.
+// error, a number too large for a double such as 1e400, ...) becomes an Error naming the file:
+// "FILE: not valid JSON (json_problem)".
 template <class Error>
 json parse_object(const std::string& text, const Place<Error>& top) {
   json root;
   try {
     root = json::parse(text);
   } catch (const json::exception& e) {
-    top.fail("", std::string("not valid JSON (") + e.what() + ")");
+    top.fail("", "not valid JSON (" + json_problem(e) + ")");
   }
   if (!root.is_object()) top.fail("", "must be a JSON object");
   return root;

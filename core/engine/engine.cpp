@@ -475,12 +475,12 @@ double PlaneEngine::corner_distance(const Mat3& a, const Mat3& b) const {
   return worst;
 }
 
-double PlaneEngine::shown_error(const PlanePose& pose) const {
+double PlaneEngine::shown_error(const Mat3& reference) const {
   // Where the pixels are: the warp that made the layer, moved by the whole pixels the layer
   // was shifted since.
   const glm::ivec2 moved = glm::ivec2(display_.offset_x, display_.offset_y) - layer_origin_;
   const Mat3 shown = translation_matrix(moved.x, moved.y) * layer_warp_;
-  return corner_distance(shown, exact_texture_warp(camera_, sized_pose(pose)));
+  return corner_distance(shown, reference);
 }
 
 Vec2 PlaneEngine::translation_step(const Mat3& correction, const Vec2& point) const {
@@ -582,7 +582,12 @@ void PlaneEngine::finish_report(const PlanePose& pose, FrameReport& report) cons
                                          report.pending[static_cast<int>(report.level)]);
   }
   report.measured_error_px = std::numeric_limits<double>::quiet_NaN();
-  if (report.visible) report.measured_error_px = report.clipped ? 0.0 : shown_error(pose);
+  report.reuse_error_px = std::numeric_limits<double>::quiet_NaN();
+  if (report.visible) {
+    report.measured_error_px =
+        report.clipped ? 0.0 : shown_error(exact_texture_warp(camera_, sized_pose(pose)));
+    report.reuse_error_px = report.clipped ? 0.0 : shown_error(target_warp(pose));
+  }
   if (reused) {
     report.photometric_error = shading_change(settings_.content, rendered_pose_, sized_pose(pose));
   }

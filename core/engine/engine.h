@@ -125,6 +125,11 @@ struct FrameReport {
   // has by itself (its missing perspective), part of measured_error_px that no update level
   // can remove.
   double affine_view_error_px = 0.0;
+  // What reuse adds: the largest corner distance, pixels, between where the shown layer's
+  // pixels put the texture's corners and the policy's own view of the pose (the exact
+  // projection, or its affine part); 0 on a re-render, NaN when the plane is not visible.
+  // For a policy with an exact initial view this equals measured_error_px.
+  double reuse_error_px = 0.0;
   // Wall time of the update: deciding the level, warping and placing the layer. The
   // diagnostics (measured and affine-view errors) are computed after it, untimed.
   double time_ms = 0.0;
@@ -304,7 +309,9 @@ class PlaneEngine {
   void show_from_cache(FrameReport& report);
   std::vector<Vec2> displayed_corners_centred() const;
   double corner_distance(const Mat3& a, const Mat3& b) const;
-  double shown_error(const PlanePose& pose) const;
+  // The largest corner distance, pixels, between the shown layer and `reference` (a texel to
+  // display warp).
+  double shown_error(const Mat3& reference) const;
   PlanePose sized_pose(const PlanePose& pose) const;
 
   Camera camera_;

@@ -9,6 +9,7 @@ ViewTheme view_theme(bool presentation) {
     t.background = {0.97, 0.97, 0.95};
     t.text = {0.05, 0.05, 0.05};
     t.outline = {0.0, 0.0, 0.0};
+    t.image_background = t.background;
     t.streamline = {0.25, 0.25, 0.25};
     t.tile_background = {1.0, 1.0, 1.0};
     t.muted_background = {0.86, 0.86, 0.86};
@@ -21,6 +22,7 @@ ViewTheme view_theme(bool presentation) {
     t.background = {0.09, 0.10, 0.12};
     t.text = {0.92, 0.92, 0.92};
     t.outline = {1.0, 1.0, 1.0};
+    t.image_background = {0.46, 0.48, 0.51};
     t.streamline = {0.80, 0.80, 0.80};
     t.tile_background = {0.13, 0.15, 0.18};
     t.muted_background = {0.20, 0.20, 0.20};

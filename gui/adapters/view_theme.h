@@ -11,9 +11,12 @@ using RgbF = std::array<double, 3>;  // linear 0..1 components, VTK style
 
 struct ViewTheme {
   bool presentation = false;
-  RgbF background;        // view background
-  RgbF text;              // captions and legends
-  RgbF outline;           // the plane's outline and the image frame
+  RgbF background;  // view background
+  RgbF text;        // captions and legends
+  RgbF outline;     // the plane's outline and the image frame
+  // The camera image's area under a frame where nothing is drawn: light enough that a black
+  // texel (the butterfly's body) stands apart from it (contrast ratio at least 3 to 1).
+  RgbF image_background;
   RgbF streamline;        // streamline colour
   RgbF tile_background;   // gallery tile with a non-zero coefficient
   RgbF muted_background;  // gallery tile whose coefficient is zero

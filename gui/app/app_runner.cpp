@@ -49,28 +49,35 @@ bool prepare_window(MainWindow* window, const LaunchOptions& options, std::strin
   return true;
 }
 
+// `image` as PNG into `path`, written whole through a temporary file beside it
+// (formats/atomic_file.h); whether it may replace an existing file was decided with --force
+// before the window opened. False, with one line on `err` naming `option`, when it fails.
+bool write_png(const QImage& image, const std::string& path, const char* option,
+               std::ostream& err) {
+  QByteArray png;
+  QBuffer buffer(&png);
+  buffer.open(QIODevice::WriteOnly);
+  if (image.isNull() || !image.save(&buffer, "PNG")) {
+    err << "oflab: " << option << ": cannot encode the " << image.width() << " x " << image.height()
+        << " image as PNG\n";
+    return false;
+  }
+  try {
+    write_file_atomically(path, png.toStdString(), Overwrite::kReplace);
+  } catch (const FileWriteError& e) {
+    err << "oflab: " << option << ": " << e.what() << "\n";
+    return false;
+  }
+  return true;
+}
+
 int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostream& out,
                     std::ostream& err) {
   window->play_frames(options.frames);
   const QString view = QString::fromStdString(options.view);
   ViewPage* page = view.isEmpty() || options.whole_window ? nullptr : window->view(view);
   const QImage image = page ? page->render_image() : window->grab_window_image();
-  // Written whole through a temporary file beside it (formats/atomic_file.h); whether it may
-  // replace an existing file was decided with --force before the window opened.
-  QByteArray png;
-  QBuffer buffer(&png);
-  buffer.open(QIODevice::WriteOnly);
-  if (image.isNull() || !image.save(&buffer, "PNG")) {
-    err << "oflab: --screenshot: cannot encode the " << image.width() << " x " << image.height()
-        << " image as PNG\n";
-    return 1;
-  }
-  try {
-    write_file_atomically(options.screenshot, png.toStdString(), Overwrite::kReplace);
-  } catch (const FileWriteError& e) {
-    err << "oflab: --screenshot: " << e.what() << "\n";
-    return 1;
-  }
+  if (!write_png(image, options.screenshot, "--screenshot", err)) return 1;
   out << "oflab: wrote " << options.screenshot << " (" << image.width() << " x " << image.height()
       << ", " << (page ? options.view : std::string("window")) << " after " << options.frames
       << " frames)\n";
@@ -103,11 +110,20 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
   return 0;
 }
 
-int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream& out) {
+int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream& out,
+                  std::ostream& err) {
   int claims = 0, false_claims = 0;
+  bool shots_written = true;
   for (const std::string& name : options.check_lessons) {
     const Lesson& lesson = *find_lesson(name);
-    for (const ClaimCheck& check : check_lesson(window, lesson)) {
+    // --step-shots: the window as each part of the lesson leaves it, claims measured.
+    const auto shoot = [&](int step) {
+      if (options.step_shots.empty() || !shots_written) return;
+      const std::string path = step_shot_path(options.step_shots, lesson.name, step);
+      shots_written = write_png(window->grab_window_image(), path, "--step-shots", err);
+      if (shots_written) out << "oflab: wrote " << path << "\n";
+    };
+    for (const ClaimCheck& check : check_lesson(window, lesson, shoot)) {
       out << describe(lesson, check) << "\n";
       ++claims;
       false_claims += !check.holds;
@@ -117,6 +133,7 @@ int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream
       << options.width << " x " << options.height << ": "
       << (false_claims == 0 ? std::string("all hold") : std::to_string(false_claims) + " false")
       << "\n";
+  if (!shots_written) return 1;
   return false_claims == 0 ? 0 : 1;
 }
 
@@ -132,7 +149,7 @@ int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err
     err << "oflab: " << error << "\n";
     return 1;
   }
-  if (!options.check_lessons.empty()) return check_lessons(&window, options, out);
+  if (!options.check_lessons.empty()) return check_lessons(&window, options, out, err);
   if (!options.screenshot.empty()) return take_screenshot(&window, options, out, err);
   if (options.benchmark > 0) return run_benchmark(&window, options, out);
   return QApplication::exec();

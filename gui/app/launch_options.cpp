@@ -148,6 +148,26 @@ void read_check_lessons(const CliArgs& cli, LaunchOptions* options) {
   options->check_lessons.push_back(lesson_named("--check-lesson", name).name);
 }
 
+// --step-shots DIR: with --check-lesson; DIR an existing directory; every picture it would
+// write checked now as --screenshot's file is (no overwrite without --force).
+void read_step_shots(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--step-shots")) return;
+  const std::string dir = cli.values("--step-shots").at(0);
+  if (options->check_lessons.empty()) {
+    throw UsageError("--step-shots: only used with --check-lesson");
+  }
+  if (!std::filesystem::is_directory(dir)) {
+    throw UsageError("--step-shots: '" + dir + "' is not a directory");
+  }
+  for (const std::string& name : options->check_lessons) {
+    const Lesson* lesson = find_lesson(name);
+    for (size_t part = 0; lesson && part <= lesson->steps.size(); ++part) {
+      check_out_file("--step-shots", step_shot_path(dir, name, int(part)), cli.has("--force"));
+    }
+  }
+  options->step_shots = dir;
+}
+
 void read_animation_show(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--animation-show")) return;
   const std::string text = cli.values("--animation-show").at(0);
@@ -235,8 +255,8 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--screenshot") && options->screenshot.empty()) {
     throw UsageError("--screenshot: the file name is empty");
   }
-  if (cli.has("--force") && options->screenshot.empty()) {
-    throw UsageError("--force: only used with --screenshot");
+  if (cli.has("--force") && options->screenshot.empty() && !cli.has("--step-shots")) {
+    throw UsageError("--force: only used with --screenshot or --step-shots");
   }
   if (!options->screenshot.empty()) {
     // As oflab-cli's outputs: PNG by its extension, no overwrite without --force, never a
@@ -272,6 +292,12 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
 
 }  // namespace
 
+std::string step_shot_path(const std::string& dir, const std::string& lesson, int part) {
+  const std::string name =
+      "lesson-" + lesson + (part == 0 ? std::string() : "-step-" + std::to_string(part)) + ".png";
+  return (std::filesystem::path(dir) / name).string();
+}
+
 const std::vector<std::string>& screenshot_view_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> all = view_table_names();
@@ -282,18 +308,19 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(
-      args,
-      {{"--session", 1},         {"--lesson", 1},    {"--scene", 1},          {"--script", 1},
-       {"--source", 1},          {"--mode", 1},      {"--animation-show", 1}, {"--compare", 1},
-       {"--animation-exact", 1}, {"--view", 1},      {"--screenshot", 1},     {"--whole-window", 0},
-       {"--frames", 1},          {"--benchmark", 1}, {"--size", 2},           {"--flow-show", 1},
-       {"--flow-draw", 1},       {"--basis", 1},     {"--presentation", 0},   {"--help", 0},
-       {"--check-lesson", 1},    {"--force", 0}});
+  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
+                           {"--script", 1},         {"--source", 1},     {"--mode", 1},
+                           {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
+                           {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
+                           {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
+                           {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
+                           {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
+                           {"--step-shots", 1},     {"--force", 0}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
   read_check_lessons(cli, &options);
+  read_step_shots(cli, &options);
   read_script(cli, &options);
   check_source(cli);
   read_scene(cli, &options);
@@ -343,7 +370,7 @@ std::string launch_usage() {
          flow_draw_names(",") +
          "]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation]\n"
-         "             [--check-lesson NAME|FILE|all] [--help]\n"
+         "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]]] [--help]\n"
          "  views: " +
          joined_names(titled) +
          "; window is the whole window\n"

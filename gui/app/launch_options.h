@@ -40,7 +40,15 @@ struct LaunchOptions {
   // --check-lesson NAME|FILE|all: check the claims of these lessons (gui/app/lesson_check.h)
   // in the window at the --size, print one line per claim and exit 0 when all hold, else 1.
   std::vector<std::string> check_lessons;
+  // --step-shots DIR (with --check-lesson): a picture of the window after each part of each
+  // lesson, at step_shot_path(DIR, lesson, part); an existing picture is replaced only with
+  // --force.
+  std::string step_shots;
 };
+
+// DIR/lesson-NAME.png for the narrative (part 0), DIR/lesson-NAME-step-K.png for step K: the
+// names manual/lessons.md shows.
+std::string step_shot_path(const std::string& dir, const std::string& lesson, int part);
 
 // The view names a screenshot can capture, in order: the view table's
 // (gui/app/view_table.h), then "window".

@@ -108,6 +108,12 @@ double heat_map_width(MainWindow* window, AnimationView* view) {
   return narrowest;
 }
 
+// Texts of the animation view that are elided, leave its canvas or overlap another.
+double cut_texts(AnimationView* view) {
+  view->render_image();
+  return double(view->text_problems().size());
+}
+
 std::string number_text(double v) {
   std::ostringstream out;
   out.precision(4);
@@ -132,6 +138,7 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
   if (kind == "max_error") return max_error(model, claim.of);
   if (kind == "exact_drawn") return animation ? exact_drawn(animation) : kUnknown;
   if (kind == "heat_map_width") return animation ? heat_map_width(window, animation) : kUnknown;
+  if (kind == "cut_texts") return animation ? cut_texts(animation) : kUnknown;
   if (kind == "active_tiles") {
     auto* basis = qobject_cast<BasisView*>(window->view(QStringLiteral("basis")));
     if (!basis) return kUnknown;
@@ -142,7 +149,8 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
   return kUnknown;
 }
 
-std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson) {
+std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
+                                     const std::function<void(int)>& after_part) {
   std::vector<ClaimCheck> checks;
   const auto check_all = [&](int step, const std::vector<LessonClaim>& claims) {
     for (const LessonClaim& claim : claims) {
@@ -153,9 +161,11 @@ std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson) {
   };
   window->go_to_lesson_step(lesson, 0);
   check_all(0, lesson.claims);
+  if (after_part) after_part(0);
   for (size_t k = 0; k < lesson.steps.size(); ++k) {
     window->perform_lesson_step(lesson, int(k) + 1);
     check_all(int(k) + 1, lesson.steps[k].claims);
+    if (after_part) after_part(int(k) + 1);
   }
   return checks;
 }

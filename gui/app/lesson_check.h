@@ -6,6 +6,7 @@
 // shipped lesson at 1920 x 1080, and on a lesson with a false claim, which it must reject.
 #pragma once
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -29,8 +30,11 @@ struct ClaimCheck {
 double measure_claim(MainWindow* window, const LessonClaim& claim);
 
 // Plays `lesson` in `window` (which must run on an external clock: set_external_clock(true))
-// and checks every claim of its narrative and steps, in order.
-std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson);
+// and checks every claim of its narrative and steps, in order; after the claims of each part
+// calls `after_part(k)` (0: the narrative, k: the k-th step) when given, with the window as
+// that part left it (for a picture of each step).
+std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
+                                     const std::function<void(int)>& after_part = {});
 
 // One line: the lesson, the step, the claim's words, what was measured against what was
 // claimed, and whether it holds: 'flow-of-a-plane, step 2: "translation is small"

@@ -250,6 +250,14 @@ void MainWindow::add_scrub_controls(QToolBar* bar) {
   scrub_->setObjectName(QStringLiteral("scrub_slider"));
   scrub_->setMinimumWidth(120);
   scrub_->setToolTip(tr("Scrub through the frames of the motion"));
+  // Fusion draws the groove a shade off the window's colour, which vanishes on the dark look:
+  // a mid-grey groove shows on both looks, the played part in the highlight blue.
+  scrub_->setStyleSheet(QStringLiteral(
+      "QSlider::groove:horizontal { height: 6px; background: rgb(128, 132, 140);"
+      " border-radius: 3px; }"
+      "QSlider::sub-page:horizontal { background: rgb(0, 114, 178); border-radius: 3px; }"
+      "QSlider::handle:horizontal { background: rgb(235, 235, 235); border: 1px solid"
+      " rgb(90, 90, 90); width: 14px; margin: -5px 0; border-radius: 7px; }"));
   bar->addWidget(scrub_);
   connect(scrub_, &QSlider::valueChanged, this,
           [this](int frame) { model_->scene()->set_frame(frame); });

@@ -59,6 +59,7 @@ AnimationSourceKind kind(std::string name, std::string label, std::string panel_
                         std::move(shipped_names),
                         nullptr,
                         nullptr,
+                        nullptr,
                         nullptr};
   const SourceKind& run = source_kind(run_kind);
   k.make = [&run, read](const SourceChoice& choice, const SceneModel& panel,
@@ -101,10 +102,14 @@ std::vector<AnimationSourceKind> make_kinds() {
       kind("scene-shifting", "Scene shifting: %1", "scene shifting (slices)", false,
            "train-sideways", shipped_scene_names, "scene-shifting", scene);
   shifting.uses_reuse_policy = false;  // its slices follow epsilon (core/scene_shifting)
-  return {plane, plane_file,
-          kind("scene", "Scene: %1", kOpticFlowTitle, false, "circle", shipped_scene_names, "scene",
-               scene),
-          shifting};
+  AnimationSourceKind scenes = kind("scene", "Scene: %1", kOpticFlowTitle, false, "circle",
+                                    shipped_scene_names, "scene", scene);
+  const auto viewer_script = [](const SourceChoice& c) {
+    return read_viewer_script_file(resolve_viewer_script_path(c.viewer));
+  };
+  scenes.viewer_script = viewer_script;
+  shifting.viewer_script = viewer_script;
+  return {plane, plane_file, scenes, shifting};
 }
 
 }  // namespace

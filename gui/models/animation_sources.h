@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/animator.h"
+#include "scene/viewer_script.h"
 
 namespace oflab {
 
@@ -60,6 +61,9 @@ struct AnimationSourceKind {
   // The motion script of a single-plane kind (what zoom-to-fit frames); null for kinds
   // that play a scene. Throws like make.
   std::function<MotionScript(const SourceChoice& choice, const SceneModel& panel)> plane_script;
+  // The viewer script of a kind that plays a scene (what zoom-to-fit frames: the polygons
+  // over the whole walk); null for single-plane kinds. Throws like make.
+  std::function<ViewerScript(const SourceChoice& choice)> viewer_script;
   // The engine's reuse policy, thresholds and Delta policy drive it (scene shifting keeps
   // its own tolerance instead, so the controls for them do not apply).
   bool uses_reuse_policy = true;

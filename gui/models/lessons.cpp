@@ -101,7 +101,7 @@ std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
 const std::vector<std::string>& lesson_claim_kinds() {
   static const std::vector<std::string> kinds = {"coefficient",    "flow_ratio",  "level_share",
                                                  "max_error",      "exact_drawn", "active_tiles",
-                                                 "heat_map_width", "view"};
+                                                 "heat_map_width", "cut_texts",   "view"};
   return kinds;
 }
 

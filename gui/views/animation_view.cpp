@@ -15,6 +15,7 @@
 
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
+#include "adapters/painted_text.h"
 #include "engine/limits.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
@@ -38,9 +39,7 @@ namespace {
 
 constexpr int kDifferenceScale = 128;  // grey levels at the top of the heat map's colour bar
 constexpr double kNear = 0.05;         // near plane of the exact render (SceneSettings::near)
-constexpr double kHeatRowShare = 0.34;
-constexpr double kCaptionLine = 1.4;  // caption line height, times the text size  // the
-                                      // comparison's heat-map row, of the panels' height
+constexpr double kCaptionLine = 1.4;   // caption line height, times the text size
 // A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
 constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
@@ -54,9 +53,31 @@ QString count_text(double n) {
   return QString::number(n, 'f', 0);
 }
 
-// The two caption lines of an engine panel: the levels of this frame and the measured error,
-// then the cost of this frame and of the run so far.
-QStringList run_caption(const AnimationFrame& frame, double run_pixels, double run_ms) {
+// Under a policy whose initial view is the affine part of the exact warp (section 6.5), the
+// measured error has two parts: the affine view's own (its missing perspective, which no
+// update removes) and what reuse adds against that view. Empty for other policies and when
+// no layer was drawn.
+QString affine_view_line(const AnimationFrame& frame, const ReusePolicy& policy) {
+  if (policy.initial_view != InitialView::kAffinePart) return {};
+  double view = 0.0, reuse = 0.0;
+  bool drawn = false;
+  for (const FrameReport& r : frame.layer_reports) {
+    if (!r.visible) continue;
+    drawn = true;
+    view = std::max(view, r.affine_view_error_px);
+    if (std::isfinite(r.reuse_error_px)) reuse = std::max(reuse, r.reuse_error_px);
+  }
+  if (!drawn) return {};
+  return QObject::tr("affine view %1 px off · reuse adds %2 px")
+      .arg(view, 0, 'f', 2)
+      .arg(reuse, 0, 'f', 2);
+}
+
+// The caption lines of an engine panel: the levels of this frame and the measured error,
+// the affine view's part of it (affine_view_line), then the cost of this frame and of the
+// run so far.
+QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy, double run_pixels,
+                        double run_ms) {
   QStringList levels;
   for (int k = 0; k < kLevelCount; ++k) {
     const int n = frame.levels[size_t(k)];
@@ -65,14 +86,17 @@ QStringList run_caption(const AnimationFrame& frame, double run_pixels, double r
     levels << (frame.layers > 1 ? QStringLiteral("%1 %2").arg(name).arg(n) : name);
   }
   if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
-  return {QObject::tr("%1 · error %2 px")
-              .arg(levels.join(QStringLiteral(", ")))
-              .arg(frame.max_measured_error_px, 0, 'f', 2),
-          QObject::tr("%1 px, %2 ms (run %3 px, %4 ms)")
-              .arg(count_text(double(frame.pixels_written)))
-              .arg(frame.time_ms, 0, 'f', 1)
-              .arg(count_text(run_pixels))
-              .arg(run_ms, 0, 'f', 0)};
+  QStringList lines{QObject::tr("%1 · error %2 px")
+                        .arg(levels.join(QStringLiteral(", ")))
+                        .arg(frame.max_measured_error_px, 0, 'f', 2)};
+  const QString view = affine_view_line(frame, policy);
+  if (!view.isEmpty()) lines << view;
+  lines << QObject::tr("%1 px, %2 ms (run %3 px, %4 ms)")
+               .arg(count_text(double(frame.pixels_written)))
+               .arg(frame.time_ms, 0, 'f', 1)
+               .arg(count_text(run_pixels))
+               .arg(run_ms, 0, 'f', 0);
+  return lines;
 }
 
 // The caption of a difference heat map: how far the two frames agree.
@@ -173,8 +197,10 @@ QWidget* AnimationView::make_panels() {
   auto* bottom = new QHBoxLayout;
   readout_ = new QLabel(tr("Move the mouse over the frames for a readout."), box);
   readout_->setObjectName(QStringLiteral("pixel_readout"));
-  // The readout gives way to the controls beside it: it never sets the window's width.
-  readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  // The readout has a row of its own, wrapped, so no control beside it cuts it; it never
+  // sets the window's width.
+  readout_->setWordWrap(true);
+  readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Minimum);
   zoom_box_ = new QDoubleSpinBox(box);
   zoom_box_->setObjectName(QStringLiteral("animation_zoom"));
   // Wider than the zoom's limit, so a typed value out of range is refused by the model with a
@@ -189,7 +215,8 @@ QWidget* AnimationView::make_panels() {
          "over the panels)"));
   auto* fit = new QPushButton(tr("Fit"), box);
   fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
-  bottom->addWidget(readout_, 1);
+  layout->addWidget(readout_);
+  bottom->addStretch(1);
   bottom->addWidget(new QLabel(tr("Exact"), box));
   bottom->addWidget(make_exact_box(box));
   bottom->addWidget(new QLabel(tr("Zoom"), box));
@@ -312,7 +339,7 @@ PanelContent AnimationView::engine_panel() {
   const std::string title =
       fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
   return {QString::fromStdString(title), image_view(engine_image()), model_->animator()->outlines(),
-          run_caption(model_->current(), pixels, ms)};
+          run_caption(model_->current(), *model_->settings().policy, pixels, ms)};
 }
 
 PanelContent AnimationView::exact_panel() {
@@ -336,7 +363,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     }
     const Image& image = run.animator->image();
     shown.push_back({tr("%1 policy").arg(name), image_view(image), run.animator->outlines(),
-                     run_caption(run.last, double(run.pixels_written), run.time_ms)});
+                     run_caption(run.last, *run.policy, double(run.pixels_written), run.time_ms)});
     QImage& map = heat_images_[heat.size()];
     difference_map_into(image, exact, kDifferenceScale, map);
     heat.push_back({tr("%1 - exact").arg(name), map, {}, agreement_caption(image, exact)});
@@ -351,13 +378,14 @@ std::vector<PanelContent> AnimationView::panels() {
     case PanelDisplay::kComparison:
       if (!comparison_->runs().empty()) return comparison_panels();
       break;
-    case PanelDisplay::kDifference:
+    case PanelDisplay::kDifference: {
       if (heat_images_.empty()) heat_images_.resize(1);
       difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
-      return {{tr("engine - exact"),
-               heat_images_[0],
-               {},
-               agreement_caption(engine_image(), exact_image())}};
+      QStringList caption = agreement_caption(engine_image(), exact_image());
+      const QString view = affine_view_line(model_->current(), *model_->settings().policy);
+      if (!view.isEmpty()) caption << view;
+      return {{tr("engine - exact"), heat_images_[0], {}, caption}};
+    }
     case PanelDisplay::kBlink:
       return {blink_phase_ ? exact_panel() : engine_panel()};
     default:
@@ -370,13 +398,16 @@ QRectF AnimationView::fit_content() {
   if (fit_known_) return fit_;
   fit_ = QRectF();
   const AnimationSourceKind& kind = model_->source_kind();
-  if (kind.plane_script) {
-    try {
+  try {
+    if (kind.plane_script) {
       fit_ =
           script_image_bounds(kind.plane_script(model_->source(), *model_->scene_model()), kNear);
-    } catch (const std::exception&) {  // the model refuses such sources with a message
-      fit_ = QRectF();
+    } else if (kind.viewer_script && model_->animator()) {
+      fit_ = scene_image_bounds(model_->animator()->scene(), kind.viewer_script(model_->source()),
+                                kNear);
     }
+  } catch (const std::exception&) {  // the model refuses such sources with a message
+    fit_ = QRectF();
   }
   fit_known_ = true;
   return fit_;
@@ -396,7 +427,7 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   painter.fillRect(target,
                    background.lightness() > 128 ? background.darker(112) : background.lighter(160));
   const QRectF image_rect = to_panel.mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size())));
-  painter.fillRect(image_rect, background);
+  painter.fillRect(image_rect, qcolor(theme_.image_background));
   painter.setTransform(to_panel);
   painter.drawImage(QPointF(0, 0), panel.image);
   painter.resetTransform();
@@ -415,8 +446,8 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   paint_texts(painter, panel, cell);
 }
 
-int AnimationView::wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
-                                 double gap) const {
+AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelContent>& contents,
+                                                         int canvas_width, double gap) const {
   const bool heat_row =
       window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
@@ -424,14 +455,14 @@ int AnimationView::wrap_captions(std::vector<PanelContent>& contents, int canvas
   QFont font;
   font.setPixelSize(theme_.font_size);
   const QFontMetrics metrics(font);
-  int lines = 2;
+  CaptionLines lines{2, 1};
   for (size_t i = 0; i < contents.size(); ++i) {
-    if (heat_row && int(i) >= columns) break;  // the heat maps' one-line captions stay as they are
     QStringList wrapped;
     for (const QString& line : contents[i].caption)
       wrapped += wrapped_caption(line, metrics, cell_width);
     contents[i].caption = wrapped;
-    lines = std::max(lines, int(wrapped.size()));
+    int& row = heat_row && int(i) >= columns ? lines.heat : lines.top;
+    row = std::max(row, int(wrapped.size()));
   }
   return lines;
 }
@@ -494,30 +525,55 @@ QImage AnimationView::compose(const QSize& size) {
   next_buffer_ = 1 - next_buffer_;
   if (canvas.size() != size) canvas = QImage(size, QImage::Format_RGB32);
   canvas.fill(qcolor(theme_.background));
+  QPainter painter(&canvas);
+  paint_canvas(painter, size);
+  painter.end();  // a QImage copied while a painter is active on it is copied deeply
+  return canvas;
+}
+
+QSize AnimationView::canvas_size() const {
+  const QSize size = canvas_->size();
+  return size.width() < kMinCanvasWidth || size.height() < kMinCanvasHeight ? kDefaultCanvas : size;
+}
+
+std::vector<PaintedText> AnimationView::painted_texts() {
+  const QSize size = canvas_size();
+  return record_painted_text(size, [&](QPainter& painter) { paint_canvas(painter, size); });
+}
+
+std::vector<QString> AnimationView::text_problems() {
+  return oflab::text_problems(painted_texts(), canvas_size());
+}
+
+void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
   panel_rects_.clear();
   const Animator* animator = model_->animator();
-  if (!animator) return canvas;
+  if (!animator) return;
   std::vector<PanelContent> contents = panels();
   const int text_px = theme_.font_size;
   const double gap = text_px, title = text_px * 1.8;
-  const double caption = text_px * kCaptionLine * wrap_captions(contents, size.width(), gap);
-  // The comparison puts the heat maps in a second row, each under its policy, and the
-  // legends in the spare cell under the exact panel; the other layouts have one row and
-  // the legends in a band below it.
+  const CaptionLines lines = wrap_captions(contents, size.width(), gap);
+  const double caption = text_px * kCaptionLine * lines.top;
+  const double heat_caption = text_px * kCaptionLine * lines.heat;
+  // The comparison puts the heat maps in a second row, each under its policy, as large as
+  // the frames above them, and the legends in the spare cell under the exact panel; the
+  // other layouts have one row and the legends in a band below it.
   const bool heat_row =
       window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
   const double band = heat_row ? 0.0 : text_px * 3.9;
   const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap - band);
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
   QRectF top = area;
-  if (heat_row) top.setHeight(area.height() * (1.0 - kHeatRowShare));
+  if (heat_row) {
+    const double image = (area.height() - gap / 2 - 2 * title - caption - heat_caption) / 2;
+    top.setHeight(title + caption + std::max(0.0, image));
+  }
   std::vector<PanelCell> cells = panel_row(top, columns, gap, title, caption);
   QRectF legends(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
   if (heat_row) {
     const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(),
                         area.bottom() - top.bottom() - gap / 2);
-    const std::vector<PanelCell> more =
-        panel_row(bottom, columns, gap, title, caption / 2);  // one line
+    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, heat_caption);
     cells.insert(cells.end(), more.begin(), more.end() - 1);
     legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
   }
@@ -526,15 +582,12 @@ QImage AnimationView::compose(const QSize& size) {
   shown_frame_ = panel_frame(fit_content(), QSizeF(camera.width, camera.height),
                              first.width() / first.height(), window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
-  QPainter painter(&canvas);
   for (size_t i = 0; i < contents.size(); ++i)
     paint_panel(painter, contents[i], cells[i], outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
   paint_band(painter, legends, levels,
              heat_row || window_->panel_display() == PanelDisplay::kDifference);
-  painter.end();  // a QImage copied while a painter is active on it is copied deeply
-  return canvas;
 }
 
 void AnimationView::refresh() {
@@ -546,9 +599,7 @@ QImage AnimationView::render_image() {
   if (model_->animator() && window_->panel_display() != PanelDisplay::kComparison) {
     inspector_->setText(explain_frame(model_->current(), model_->settings()));
   }
-  QSize size = canvas_->size();
-  if (size.width() < kMinCanvasWidth || size.height() < kMinCanvasHeight) size = kDefaultCanvas;
-  const QImage image = compose(size);
+  const QImage image = compose(canvas_size());
   canvas_->set_image(image);
   return image;
 }

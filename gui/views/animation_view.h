@@ -26,6 +26,7 @@
 #include <memory>
 #include <vector>
 
+#include "adapters/painted_text.h"
 #include "image/image.h"
 #include "views/animation_controls.h"
 #include "views/panel_layout.h"
@@ -86,6 +87,12 @@ class AnimationView : public ViewPage {
   // comparison: the policies, the exact panel, then the heat maps).
   QRectF shown_frame() const { return shown_frame_; }
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
+  // Every text the view paints now, at its canvas's size, with its box in canvas pixels
+  // (titles, captions, legends, colour-bar labels); for checks of legibility.
+  std::vector<PaintedText> painted_texts();
+  // What is wrong with those texts (adapters/painted_text.h text_problems): elided, off the
+  // canvas or overlapping; empty when every text is legible.
+  std::vector<QString> text_problems();
 
   // Who draws the exact panel, the difference heat maps' reference and the readout's exact
   // pixel: the entry of exact_renderers() the window model names.
@@ -109,7 +116,11 @@ class AnimationView : public ViewPage {
   // The controls show the window model's layout, compared policies, exact renderer and zoom;
   // the blink timer follows the layout; redraws.
   void show_panels();
+  // The canvas's size, or kDefaultCanvas for a view never shown (too small to paint).
+  QSize canvas_size() const;
   QImage compose(const QSize& size);
+  // Paints the panels, their texts and the legends for a canvas of `size` (already cleared).
+  void paint_canvas(QPainter& painter, const QSize& size);
   std::vector<PanelContent> panels();
   std::vector<PanelContent> comparison_panels();
   PanelContent engine_panel();
@@ -118,10 +129,15 @@ class AnimationView : public ViewPage {
   void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
                    const std::vector<std::vector<Vec2>>& outlines);
   // The title above the panel's image and its caption lines below it.
-  // Breaks the captions of the panels' top row into lines that fit their cells on a canvas
-  // `canvas_width` pixels wide (cells `gap` apart) at the theme's text size, so no number is
-  // elided; returns the caption lines the band must hold (at least 2).
-  int wrap_captions(std::vector<PanelContent>& contents, int canvas_width, double gap) const;
+  // Caption lines the bands under the frames (top) and under the heat maps must hold.
+  struct CaptionLines {
+    int top = 2;
+    int heat = 1;
+  };
+  // Breaks the panels' captions into lines that fit their cells on a canvas `canvas_width`
+  // pixels wide (cells `gap` apart) at the theme's text size, so no number is elided.
+  CaptionLines wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
+                             double gap) const;
   void paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell);
   void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
   QRectF fit_content();

@@ -76,6 +76,18 @@ QRectF script_image_bounds(const MotionScript& script, double near) {
   return bounds;
 }
 
+QRectF scene_image_bounds(const Scene& scene, const ViewerScript& walk, double near) {
+  QRectF bounds;
+  for (const ViewerFrame& frame : walk.frames) {
+    for (const std::vector<Vec2>& outline : exact_outlines(scene, frame.pose, walk.camera, near)) {
+      for (const Vec2& p : outline) {
+        bounds |= QRectF(QPointF(p.x, p.y), QSizeF(1e-9, 1e-9));
+      }
+    }
+  }
+  return bounds;
+}
+
 std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,
                                               const Camera& camera, double near) {
   std::vector<std::vector<Vec2>> outlines;

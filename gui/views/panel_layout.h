@@ -16,6 +16,7 @@
 
 #include "engine/animator.h"
 #include "engine/script.h"
+#include "scene/viewer_script.h"
 
 namespace oflab {
 
@@ -54,6 +55,11 @@ QTransform frame_to_panel(const QRectF& frame, const QRectF& target);
 // The bounding box of the plane's part inside the image (plane_image_polygon with `near`)
 // over every frame of `script`: what zoom-to-fit frames. Empty when the plane is never seen.
 QRectF script_image_bounds(const MotionScript& script, double near);
+
+// The bounding box (camera pixels) of the exact outlines (exact_outlines below) of `scene`'s
+// polygons over every frame of the viewer script `walk`, seen with its camera: what
+// zoom-to-fit frames for a scene. Empty when no polygon is ever seen.
+QRectF scene_image_bounds(const Scene& scene, const ViewerScript& walk, double near);
 
 // The exact image outlines (camera pixels) of the polygons of `scene` seen from `view` with
 // `camera`: each polygon's outline clipped to the near plane `near` and the image border,

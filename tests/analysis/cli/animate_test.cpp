@@ -134,6 +134,33 @@ TEST(Experiment1, MeasuredErrorStaysWithinTheBudgetInEveryModeAndScript) {
   }
 }
 
+TEST(Experiment1, ReuseErrorSeparatesWhatReuseAddsFromTheAffineView) {
+  // reuse_error_px measures the shown layer against the policy's own view: zero on a
+  // re-render, equal to the measured error under an exact initial view, and with the affine
+  // view's own error it bounds the measured error (triangle inequality at each corner).
+  for (const char* mode : {"affine", "perspective"}) {
+    int reused = 0;
+    for (const char* script : {"swing", "loop"}) {
+      const ScriptRun r = run_script(script, mode);
+      for (const FrameReport& f : r.reports) {
+        if (!f.visible) continue;
+        if (f.level == Level::kRerender) {
+          EXPECT_LT(f.reuse_error_px, kTolerancePx) << mode << " frame " << f.frame;
+        } else {
+          ++reused;
+        }
+        if (std::string(mode) == "perspective") {
+          EXPECT_DOUBLE_EQ(f.reuse_error_px, f.measured_error_px) << "frame " << f.frame;
+        } else {
+          EXPECT_LE(f.measured_error_px, f.affine_view_error_px + f.reuse_error_px + kTolerancePx)
+              << "frame " << f.frame;
+        }
+      }
+    }
+    EXPECT_GT(reused, 0) << mode;  // the bound was tested on reused frames too
+  }
+}
+
 // Alpha-weighted centroid of an image (premultiplied: alpha is the weight), top-left pixels.
 Vec2 alpha_centroid(const Image& image) {
   double sum = 0.0;

@@ -63,7 +63,13 @@ TEST(HostileInput, NumberTooLargeForADoubleIsNotValidJsonInEveryFormat) {
                                error_of([&] { parse_viewer_script(big, "v.json"); })}) {
     EXPECT_NE(e.find(".json: not valid JSON ("), std::string::npos) << e;
     EXPECT_NE(e.find("number overflow"), std::string::npos) << e;
+    EXPECT_EQ(e.find("json.exception"), std::string::npos) << "no library codes: " << e;
   }
+  // A syntax error says where, in a reader's words.
+  const std::string cut = error_of([] { parse_script("{\n  \"name\": \"x\",\n}", "c.json"); });
+  EXPECT_NE(cut.find("c.json: not valid JSON (line 3, column 1: unexpected '}'"), std::string::npos)
+      << cut;
+  EXPECT_EQ(cut.find("syntax error while parsing"), std::string::npos) << cut;
   const fs::path file = temp_file("big.json", big);
   expect_usage_error({"animate", "--script", file.string()}, "not valid JSON");
   fs::remove(file);

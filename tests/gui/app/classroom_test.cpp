@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QScrollBar>
+#include <QSlider>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTableWidget>
@@ -83,6 +84,29 @@ TEST_F(ClassroomTest, PresentationTextIsAtLeastEighteenPixelsOnEveryView) {
   }
   window().model()->set_presentation(
       false);  // the application's fonts are global: leave them normal
+}
+
+// The scrub bar's groove shows in both looks: beyond the handle (at the first frame, the
+// whole groove is the unplayed part) some pixel of the bar's middle line stands at least 40
+// lightness levels apart from the window's colour.
+TEST_F(ClassroomTest, ScrubGrooveShowsInBothLooks) {
+  window().resize(1600, 900);
+  for (bool presentation : {false, true}) {
+    window().model()->set_presentation(presentation);
+    window().model()->scene()->set_frame(0);
+    QApplication::processEvents();
+    auto* scrub = window().findChild<QSlider*>(QStringLiteral("scrub_slider"));
+    ASSERT_NE(scrub, nullptr);
+    const QImage bar = scrub->grab().toImage();
+    const int window_lightness = scrub->palette().color(QPalette::Window).lightness();
+    int apart = 0;
+    for (int x = bar.width() / 2; x < bar.width() - 4; ++x) {
+      apart = std::max(
+          apart, std::abs(QColor(bar.pixel(x, bar.height() / 2)).lightness() - window_lightness));
+    }
+    EXPECT_GE(apart, 40) << (presentation ? "presentation" : "normal");
+  }
+  window().model()->set_presentation(false);
 }
 
 TEST_F(ClassroomTest, NormalLookKeepsItsSmallerText) {

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <set>
 
@@ -63,6 +65,24 @@ TEST(Lessons, TheManualListsExactlyTheLessonFiles) {
   for (const Lesson& lesson : lessons()) {
     EXPECT_EQ(in_manual.count(lesson.name), 1u) << "manual/lessons.md has no section \"## "
                                                 << lesson.title << " (`" << lesson.name << "`)\"";
+  }
+}
+
+// manual/lessons.md shows every step of every lesson with its picture, made by
+// `oflab --check-lesson --step-shots` (tools/make-screenshots.sh), and the picture exists.
+TEST(Lessons, TheManualShowsAPictureOfEveryStep) {
+  std::ifstream in(OFLAB_SOURCE_DIR "/manual/lessons.md");
+  ASSERT_TRUE(in) << "manual/lessons.md";
+  const std::string manual((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const Lesson& lesson : lessons()) {
+    for (size_t k = 1; k <= lesson.steps.size(); ++k) {
+      const std::string image =
+          "images/lesson-" + lesson.name + "-step-" + std::to_string(k) + ".png";
+      EXPECT_NE(manual.find("(" + image + ")"), std::string::npos)
+          << "manual/lessons.md does not show " << image;
+      EXPECT_TRUE(std::filesystem::is_regular_file(OFLAB_SOURCE_DIR "/manual/" + image))
+          << "manual/" << image << " is missing: run tools/make-screenshots.sh";
+    }
   }
 }
 

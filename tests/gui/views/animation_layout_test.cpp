@@ -17,6 +17,7 @@
 
 #include "formats/datasets.h"
 #include "formats/script_file.h"
+#include "formats/viewer_script_file.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/lessons.h"
@@ -153,6 +154,37 @@ TEST_F(AnimationLayoutTest, ZoomToFitHoldsTheLoopAndZoomScalesAboutItsCentre) {
   EXPECT_TRUE(window().message().contains("0.25..8")) << window().message().toStdString();
 }
 
+// A scene is framed by its polygons over the whole walk, not by the whole camera image: the
+// occlusion lesson's squares (five-semi-occluded seen from a sideways walk) fill a band a
+// third of the image high, and the shown frame holds every polygon centre the viewer sees in
+// front of it, at every frame of the walk.
+TEST_F(AnimationLayoutTest, ZoomToFitFramesASceneByItsPolygons) {
+  window().show_view("animation");
+  window().set_external_clock(true);
+  ASSERT_TRUE(
+      window().model()->animation()->set_source({"scene", "five-semi-occluded", "translate"}));
+  animation().render_image();
+  const QRectF fit = animation().shown_frame();
+  const ViewerScript walk = read_viewer_script_file(resolve_viewer_script_path("translate"));
+  const Scene& scene = model().animator()->scene();
+  const QRectF bounds = scene_image_bounds(scene, walk, kNear);
+  EXPECT_LT(bounds.height(), 0.5 * walk.camera.height) << bounds.height();
+  EXPECT_TRUE(fit.contains(bounds));
+  int seen = 0;
+  for (const ViewerFrame& f : walk.frames) {
+    for (const ScenePolygon& polygon : scene.polygons) {
+      const Vec3 centre = to_view(f.pose, polygon.centre);
+      if (centre.z < kNear) continue;  // behind the eye
+      const Vec2 p = centred_to_pixel(walk.camera, project_centred(walk.camera, centre));
+      if (p.x < 0 || p.y < 0 || p.x > walk.camera.width || p.y > walk.camera.height) continue;
+      if (is_back_facing(direction_to_view(f.pose, polygon.front), centre)) continue;
+      ++seen;
+      EXPECT_TRUE(fit.contains(QPointF(p.x, p.y))) << "frame centre " << p.x << " " << p.y;
+    }
+  }
+  EXPECT_GT(seen, 0);
+}
+
 // What the window shows is what render_image returns: a grab of the canvas widget (the
 // path of exports that take what is on screen) has every panel of the comparison.
 TEST_F(AnimationLayoutTest, ACanvasGrabShowsEveryPanelOfTheLayout) {
@@ -279,6 +311,70 @@ TEST_F(AnimationLayoutTest, FlowVsTalismanLessonComparesPerspectiveAndTalisman) 
   }
   window().apply_lesson(*find_lesson("affine-vs-perspective"));
   EXPECT_STREQ(window().model()->comparison().policies()[0]->name, "affine");
+}
+
+// The comparison on a projector: at 1920 x 1080 in presentation mode, with two, three and
+// four compared policies, no text the view paints is elided, off the canvas or overlapping
+// another, and every heat map is at least 300 pixels wide beside two policies and 200
+// beside three or four.
+TEST_F(AnimationLayoutTest, ComparisonIsLegibleInPresentationAtProjectorSize) {
+  window().resize(1920, 1080);
+  QApplication::processEvents();
+  window().apply_lesson(*find_lesson("affine-vs-perspective"));
+  window().model()->set_playing(false);
+  window().model()->set_presentation(true);
+  window().set_external_clock(true);
+  QApplication::processEvents();
+  const std::vector<std::vector<std::string>> sets = {
+      {"affine", "perspective"},
+      {"affine", "perspective", "talisman"},
+      {"affine", "perspective", "talisman", "rerender"}};
+  for (const std::vector<std::string>& names : sets) {
+    ASSERT_TRUE(window().model()->set_compared(names));
+    window().play_frames(40);
+    animation().render_image();
+    const std::vector<QString> problems = animation().text_problems();
+    for (const QString& p : problems)
+      ADD_FAILURE() << names.size() << " policies: " << p.toStdString();
+    const std::vector<QRectF>& rects = animation().panel_rects();
+    ASSERT_EQ(rects.size(), 2 * names.size() + 1);
+    const double least = names.size() == 2 ? 300.0 : 200.0;
+    for (size_t k = names.size() + 1; k < rects.size(); ++k) {
+      EXPECT_GE(rects[k].width(), least) << names.size() << " policies, heat map " << k;
+    }
+    RecordProperty("heat_map_width_" + std::to_string(names.size()),
+                   std::to_string(rects.back().width()));
+  }
+}
+
+// Under the affine policy (an affine initial view, section 6.5) every layout says on its
+// panel how much of the error is the affine view's own and how much reuse adds.
+TEST_F(AnimationLayoutTest, AffineViewErrorIsLabelledInEveryLayout) {
+  window().resize(1920, 1080);
+  QApplication::processEvents();
+  window().apply_lesson(*find_lesson("affine-vs-perspective"));
+  window().model()->set_playing(false);
+  window().set_external_clock(true);
+  window().play_frames(10);
+  const auto says = [&](const QString& words) {
+    animation().render_image();
+    for (const PaintedText& t : animation().painted_texts()) {
+      if (t.text.contains(words)) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(says(QStringLiteral("affine view "))) << "comparison";
+  EXPECT_TRUE(says(QStringLiteral("reuse adds "))) << "comparison";
+  for (PanelDisplay display : {PanelDisplay::kSideBySide, PanelDisplay::kDifference}) {
+    window().model()->set_panel_display(display);
+    EXPECT_TRUE(says(QStringLiteral("affine view "))) << int(display);
+  }
+  // The perspective policy's view is exact: no such line.
+  EngineSettings settings = model().settings();
+  settings.policy = &reuse_policy("perspective");
+  ASSERT_TRUE(model().set_settings(settings));
+  window().model()->set_panel_display(PanelDisplay::kSideBySide);
+  EXPECT_FALSE(says(QStringLiteral("affine view ")));
 }
 
 // A caption too wide for its cell is broken at its separators, each line fitting, and

@@ -8,14 +8,18 @@
 // kExactAgreementIou and kExactAgreementPsnrDb, where the tolerance is explained).
 #include "views/animation_view.h"
 
+#include <QApplication>
 #include <QComboBox>
+#include <QFontMetrics>
 #include <QLabel>
 #include <QTemporaryDir>
+#include <cmath>
 #include <fstream>
 
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
 #include "adapters/palette.h"
+#include "adapters/view_theme.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
@@ -64,6 +68,45 @@ TEST_F(AnimationViewTest, AnimationViewRendersBothPanels) {
 
 // Every source kind plays through the same model: frames advance one record each, the
 // engine panel shows something, and the level legend under the panels names every level.
+// WCAG relative luminance of an sRGB colour (components 0..1).
+double relative_luminance(const QColor& c) {
+  const auto linear = [](double v) {
+    return v <= 0.03928 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  return 0.2126 * linear(c.redF()) + 0.7152 * linear(c.greenF()) + 0.0722 * linear(c.blueF());
+}
+
+// A black texel (the butterfly's body) stands apart from the camera image's background in
+// both looks (contrast ratio at least 3 to 1), and the panels paint that background where
+// the exact frame draws nothing.
+TEST_F(AnimationViewTest, BlackTexelsStandApartFromTheImageBackgroundInBothLooks) {
+  window().show_view("animation");
+  for (bool presentation : {false, true}) {
+    window().model()->set_presentation(presentation);
+    const ViewTheme theme = view_theme(presentation);
+    const QColor image = QColor::fromRgbF(theme.image_background[0], theme.image_background[1],
+                                          theme.image_background[2]);
+    EXPECT_GE((relative_luminance(image) + 0.05) / 0.05, 3.0) << presentation;
+    const QImage canvas = animation().render_image();
+    const QRectF panel = animation().panel_rects().back();  // the exact panel
+    const QRectF frame = animation().shown_frame();
+    const Image& exact = animation().exact_image();
+    int checked = 0;
+    for (int y = int(frame.top()) + 1; y < int(frame.bottom()) - 1 && checked < 20; y += 7) {
+      for (int x = int(frame.left()) + 1; x < int(frame.right()) - 1 && checked < 20; x += 7) {
+        if (x < 0 || y < 0 || x >= exact.width() || y >= exact.height()) continue;
+        if (exact.row(y)[x].a != 0) continue;
+        const QPoint at((panel.left() + (x + 0.5 - frame.left()) / frame.width() * panel.width()),
+                        (panel.top() + (y + 0.5 - frame.top()) / frame.height() * panel.height()));
+        EXPECT_LE(std::abs(QColor(canvas.pixel(at)).lightness() - image.lightness()), 3)
+            << presentation << " at " << x << ", " << y;
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 0) << presentation;
+  }
+}
+
 TEST_F(AnimationViewTest, EachSourceKindPlaysInTheAnimationView) {
   window().show_view("animation");
   const SourceChoice sources[] = {{"plane", "", ""},
@@ -345,6 +388,25 @@ TEST_F(AnimationViewTest, CursorReadoutUsesCentredPixels) {
   const QString shown = animation().findChild<QLabel*>("pixel_readout")->text();
   EXPECT_TRUE(shown.startsWith("pixel (0.5, 0.5) px from the principal point"))
       << shown.toStdString();
+  // The whole readout shows at 1920 x 1080, in presentation mode too: no control beside it
+  // covers it, and it is as wide as its text (or wraps).
+  window().resize(1920, 1080);
+  window().model()->set_presentation(true);
+  QApplication::processEvents();
+  auto* readout = animation().findChild<QLabel*>("pixel_readout");
+  readout->setText(shown);
+  QApplication::processEvents();
+  const QRect label = readout->geometry();
+  for (const char* name : {"exact_renderer", "animation_zoom"}) {
+    const QWidget* control = animation().findChild<QWidget*>(name);
+    ASSERT_NE(control, nullptr) << name;
+    const QRect other(control->mapTo(readout->parentWidget(), QPoint(0, 0)), control->size());
+    EXPECT_FALSE(label.intersects(other)) << name;
+  }
+  const QFontMetrics metrics(readout->font());
+  const QRect needed =
+      metrics.boundingRect(QRect(0, 0, label.width(), 10000), Qt::TextWordWrap, shown);
+  EXPECT_LE(needed.height(), label.height() + 1) << label.width() << " x " << label.height();
 }
 
 }  // namespace
