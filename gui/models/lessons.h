@@ -52,6 +52,8 @@ struct LessonClaim {
 //   "exact_drawn": the share (0..1) of the exact panel's pixels the exact frame covers now;
 //   "active_tiles": tiles of the basis gallery with a non-zero coefficient;
 //   "heat_map_width": the narrowest heat map of the comparison layout, screen pixels;
+//   "threshold_crossings": how often the analysis view's budget chart of `level` (none ..
+//     perspective) crosses its dashed threshold upwards over the frames it charts;
 //   "view": 1 when the view in front is `of`, else 0.
 const std::vector<std::string>& lesson_claim_kinds();
 
