@@ -49,7 +49,7 @@ double round_up_to_nice(double value) {
 // The largest magnitude of `part` at the plane's projected corners that lie in the image and
 // on the plane (each nudged a millionth towards the others' centre, so it is inside), px/s.
 double largest_at_corners(const FlowContext& context, FlowPart part) {
-  const std::vector<Vec2> corners = projected_corners(context.camera, context.pose);
+  const auto corners = projected_corners(context.camera, context.pose);
   Vec2 centre(0.0);
   for (const Vec2& c : corners) centre += c / double(corners.size());
   const Vec2 half(0.5 * context.camera.width, 0.5 * context.camera.height);
@@ -502,11 +502,11 @@ void FlowRenderer::paint_rounding_note(QPainter& painter, const QRectF& side) {
   font.setPixelSize(theme_.label_size);
   painter.setFont(font);
   painter.setPen(to_qcolor(theme_.text));
-  painter.drawText(QRectF(side.left() + 4, side.top() + 0.12 * side.height(), side.width() - 8,
-                          0.56 * side.height()),
-                   Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
-                   QStringLiteral("|v| px/s\nzero up to rounding: at most %1, no colour bar")
-                       .arg(shown_max_, 0, 'g', 2));
+  painter.drawText(
+      QRectF(side.left() + 4, side.top() + 0.12 * side.height(), side.width() - 8,
+             0.56 * side.height()),
+      Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+      QStringLiteral("|v| px/s\nzero up to rounding\n(at most %1)").arg(shown_max_, 0, 'g', 2));
 }
 
 // The colour-wheel legend: the coding of every direction and magnitude up to the largest

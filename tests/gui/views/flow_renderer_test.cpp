@@ -44,7 +44,7 @@ TEST(FlowRenderer, StreamlineHeadsSitOnTheirShaftsAtTheCommonScale) {
     if (s.head.isEmpty()) continue;
     ASSERT_EQ(s.head.size(), 3);
     // Each arm of the head runs from the line's end (the middle point) backwards.
-    const double arm = length_of(QPolygonF({s.head[0], s.head[1]}));
+    const double arm = std::hypot(s.head[0].x() - s.head[1].x(), s.head[0].y() - s.head[1].y());
     EXPECT_LE(arm, 0.5 * line + 1e-9) << "a head longer than half its line floats";
     EXPECT_EQ(s.head[1], s.line.back());
   }
