@@ -685,7 +685,7 @@ void AnalysisView::read_model() {
                     : tr("Dashed: threshold. Coloured: error the level would leave. "
                          "Thin: measured error. Click a chart to jump to that frame."));
   key_->setToolTip(comparing() ? tr("How to read the comparison's charts")
-                               : tr("How to read the four budget charts of the bottom row"));
+                               : tr("How to read the four budget charts of the bottom two rows"));
   charts_->settings = model_->settings();
   charts_->theme = theme_;
   const int loop = model_->animator() ? model_->animator()->frame_count() : 1;
