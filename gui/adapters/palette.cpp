@@ -41,9 +41,11 @@ Rgb8 level_colour(Level level) {
 }
 
 Rgb8 policy_colour(int index) {
-  static constexpr std::array<Rgb8, 4> kBright{
-      {{68, 119, 170}, {238, 102, 119}, {34, 136, 51}, {170, 51, 119}}};
-  return kBright[size_t(((index % 4) + 4) % 4)];
+  // Hues 251, 340, 100 and 294 degrees: at least 40 degrees from every level's hue (sky
+  // blue 202, bluish green 164, orange 41, vermillion 26) and from each other.
+  static constexpr std::array<Rgb8, 4> kPolicies{
+      {{100, 70, 235}, {235, 70, 125}, {95, 205, 40}, {205, 60, 220}}};
+  return kPolicies[size_t(((index % 4) + 4) % 4)];
 }
 
 Rgb8 order_colour(int order) {

@@ -33,8 +33,11 @@ constexpr Rgb8 kReddishPurple{204, 121, 167};
 Rgb8 level_colour(Level level);
 
 // The colour of the `index`-th compared policy (0 .. 3, in the comparison's panel order;
-// taken modulo 4 beyond), for its lines and legend in the analysis view: Paul Tol's
-// "bright" scheme, colour-blind safe, in the order blue, red, green, purple.
+// taken modulo 4 beyond), for its lines and legend in the analysis view, in the order
+// violet-blue, rose, lime, purple. Charts show policies and levels side by side, so no
+// policy colour is near a level's colour: each hue is at least 40 degrees from every
+// level's hue (a policy named like a level, "rerender", is not mistaken for that level's
+// frames) and from the other policies'.
 Rgb8 policy_colour(int index);
 
 // The colour of a basis order in the gallery: 0 sky blue, 1 bluish green, 2 orange

@@ -12,6 +12,7 @@
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
+#include "views/analysis_view.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"
 
@@ -114,6 +115,17 @@ double cut_texts(AnimationView* view) {
   return double(view->text_problems().size());
 }
 
+// How often the analysis view's budget chart of `claim.level` crosses its threshold upwards
+// over the frames it charts (AnalysisView::threshold_crossings).
+double threshold_crossings(MainWindow* window, const LessonClaim& claim) {
+  auto* analysis = qobject_cast<AnalysisView*>(window->view(QStringLiteral("analysis")));
+  Level level;
+  if (!analysis || !parse_level(claim.level, &level)) return kUnknown;
+  analysis->render_image();
+  const int crossings = analysis->threshold_crossings(int(level));
+  return crossings < 0 ? kUnknown : crossings;
+}
+
 std::string number_text(double v) {
   std::ostringstream out;
   out.precision(4);
@@ -145,6 +157,7 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
     basis->render_image();
     return basis->active_tile_count();
   }
+  if (kind == "threshold_crossings") return threshold_crossings(window, claim);
   if (kind == "view") return window->current_view_name().toStdString() == claim.of ? 1.0 : 0.0;
   return kUnknown;
 }

@@ -54,6 +54,8 @@ struct LessonClaim {
 //   "heat_map_width": the narrowest heat map of the comparison layout, screen pixels;
 //   "cut_texts": texts the animation view paints elided, off its canvas or overlapping
 //     another text (a count; claim at_most 0);
+//   "threshold_crossings": how often the analysis view's budget chart of `level` (none ..
+//     perspective) crosses its dashed threshold upwards over the frames it charts;
 //   "view": 1 when the view in front is `of`, else 0.
 const std::vector<std::string>& lesson_claim_kinds();
 

@@ -208,17 +208,26 @@ void draw_levels(QPainter& p, const ChartFrame& f, const QColor& text) {
   }
 }
 
-// Level L's budget: the error it would leave against its threshold, and the measured error.
-void draw_budget(QPainter& p, const ChartFrame& f, int level, double threshold,
-                 const QColor& text) {
-  const Series estimate = drawn_only([level](const AnimationFrame& r) {
+// Level L's budget: the error the level would leave at each frame (the carried books plus
+// this frame's flow over the terms it neglects, core/engine/decision.h neglected_error, the
+// quantity choose_level tests against thresholds[L]); NaN for frame 0 and for frames that
+// did not update exactly one layer or drew nothing.
+Series level_budget(int level) {
+  return drawn_only([level](const AnimationFrame& r) {
     if (r.layer_reports.size() != 1 || r.frame == 0) return std::nan("");
     const FrameReport& books = r.layer_reports.front();
     return neglected_error(books.carried, books.flow, Level(level));
   });
+}
+
+// Level L's budget chart: the error it would leave against its threshold, and the measured
+// error.
+void draw_budget(QPainter& p, const ChartFrame& f, int level, double threshold,
+                 const QColor& text) {
   const Series measured =
       drawn_only([](const AnimationFrame& r) { return r.max_measured_error_px; });
-  const FrameValue estimated = of_records(f, estimate), measured_at = of_records(f, measured);
+  const FrameValue estimated = of_records(f, level_budget(level));
+  const FrameValue measured_at = of_records(f, measured);
   const double top = std::max(series_top(f, estimated, threshold), series_top(f, measured_at, 0.1));
   draw_frame_box(p, f, QObject::tr("%1: error left").arg(level_name(Level(level))), top, text,
                  QStringLiteral(" px"));
@@ -366,28 +375,43 @@ void draw_current(QPainter& p, const ChartFrame& f, const QColor& text) {
   p.drawLine(QPointF(f.x(f.current), f.area.top()), QPointF(f.x(f.current), f.area.bottom()));
 }
 
-// Chart rectangles for a widget `rect` and font: a status line, three full-width rows and a
-// fourth row; a title strip above and a frame axis below each chart. The fourth row holds
-// the four budget charts, or, comparing, the level bands, leaving at their right the column
-// of the level shares (share_panel).
+// Chart rectangles for a widget `rect` and font, below a status line, with a title strip
+// above and a frame axis below each chart.
+// The engine's charts: a first row of the frame time and the percent approximated side by
+// side, the levels across the whole width, then the four budget charts two by two, each
+// kBudgetRows times as tall as a chart of the first two rows: the saw-tooth of each
+// level's budget is what the view is for.
+// Comparing: four rows of one width, the last the level bands with the column of the level
+// shares at their right (share_panel); the line charts above end where the bands end, so
+// all four share one frame axis (one x for each frame).
+constexpr double kBudgetRows = 2.6;
 std::vector<QRect> chart_areas(const QRect& rect, const QFontMetrics& fm, bool comparing) {
   const int line = fm.height(), margin = left_margin(fm), right = 16;
   const int title = line + 4, axis = line + 8, status = line + 8;
-  const int row = std::max(20, (rect.height() - status) / 4 - title - axis);
   const int width = rect.width() - margin - right;
-  std::vector<QRect> result;
-  const auto top_of = [&](int i) { return status + title + i * (row + title + axis); };
-  for (int i = 0; i < 3; ++i) result.emplace_back(margin, top_of(i), width, row);
   if (comparing) {
+    std::vector<QRect> result;
+    const int row = std::max(20, (rect.height() - status) / 4 - title - axis);
     const int shares = std::clamp(rect.width() / 5, 160, 420);
-    result.emplace_back(margin, top_of(3), width - shares - margin / 2, row);
+    for (int i = 0; i < 4; ++i) {
+      result.emplace_back(margin, status + title + i * (row + title + axis),
+                          width - shares - margin / 2, row);
+    }
     return result;
   }
-  const int quarter = (rect.width() - right) / 4;
-  for (int i = 0; i < 4; ++i) {
-    result.emplace_back(i * quarter + margin, top_of(3), quarter - margin - right / 2, row);
-  }
-  return result;
+  const int free = rect.height() - status - 4 * (title + axis);
+  const int small = std::max(20, int(free / (2.0 + 2.0 * kBudgetRows)));
+  const int big = std::max(20, int(small * kBudgetRows));
+  const int half = (rect.width() - right) / 2;
+  const auto in_column = [&](int column, int top, int height) {
+    return QRect(column * half + margin, top, half - margin - right / 2, height);
+  };
+  const int row_1 = status + title, row_2 = row_1 + small + axis + title;
+  const int row_3 = row_2 + small + axis + title, row_4 = row_3 + big + axis + title;
+  return {in_column(0, row_1, small), QRect(margin, row_2, width, small),
+          in_column(1, row_1, small), in_column(0, row_3, big),
+          in_column(1, row_3, big),   in_column(0, row_4, big),
+          in_column(1, row_4, big)};
 }
 
 // The column of the level shares right of the level bands `bands` in a widget `rect`.
@@ -579,6 +603,23 @@ std::vector<int> AnalysisView::frame_ticks(int first, int last, int width_px, in
   return ticks;
 }
 
+int AnalysisView::threshold_crossings(int level) const {
+  const std::vector<AnimationFrame>* records = charts_->records;
+  if (comparing() || !records || level < 0 || level >= kTermCount) return -1;
+  const double threshold = charts_->settings.thresholds[size_t(level)];
+  const Series budget = level_budget(level);
+  int crossings = 0;
+  bool below = false, seen = false;  // the last charted value, gaps skipped
+  for (int k = first_; k <= std::min(current_, int(records->size()) - 1); ++k) {
+    const double v = budget((*records)[size_t(k)]);
+    if (!std::isfinite(v)) continue;
+    crossings += seen && below && v > threshold;
+    below = v <= threshold;
+    seen = true;
+  }
+  return crossings;
+}
+
 QString AnalysisView::status_text() const {
   const std::vector<AnimationFrame>* records = charts_->records;
   if (!records || records->empty()) return QString();
@@ -644,7 +685,7 @@ void AnalysisView::read_model() {
                     : tr("Dashed: threshold. Coloured: error the level would leave. "
                          "Thin: measured error. Click a chart to jump to that frame."));
   key_->setToolTip(comparing() ? tr("How to read the comparison's charts")
-                               : tr("How to read the four budget charts of the bottom row"));
+                               : tr("How to read the four budget charts of the bottom two rows"));
   charts_->settings = model_->settings();
   charts_->theme = theme_;
   const int loop = model_->animator() ? model_->animator()->frame_count() : 1;

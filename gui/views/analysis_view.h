@@ -1,7 +1,8 @@
 // View 4, "Analysis": the dissertation's analysis window, modernised. Over the last 80
-// frames (or the whole loop) of the animation model's run: the frame time, the layers per
-// level (stacked, in the level colours, with their legend), the percentage approximated,
-// and for each cheaper level the error it would have left (the carried estimate plus this
+// frames (or the whole loop) of the animation model's run: the frame time and the
+// percentage approximated (side by side), the layers per level (stacked, in the level
+// colours, with their legend), and, the largest charts, for each cheaper level the error
+// it would have left (the carried estimate plus this
 // frame's flow over its neglected terms, core/engine/decision.h; drawn for frames that
 // updated exactly one layer, the only ones whose books are one engine's) against its
 // threshold, beside the measured true error. Every chart has a frame axis with ticks; a
@@ -9,7 +10,8 @@
 // plane is not visible leaves a gap in the charts, never zeros).
 //
 // Clicking a chart moves the scene model to the frame under the pointer: each chart maps x
-// through its own rectangle. The x axis moves only when the current frame leaves it
+// through its own rectangle (comparing, the four charts share one x range, so one frame
+// has one x in all of them). The x axis moves only when the current frame leaves it
 // (playing on past its end, or looping back), never because of a click, so the history
 // stays still under the pointer. Painted with Qt; reads the animation model only.
 //
@@ -42,7 +44,7 @@ class AnalysisView : public ViewPage {
  public:
   static constexpr int kRecentFrames = 80;
   // Charts: 0 frame time, 1 layers per level, 2 percent approximated, 3..6 the budgets of
-  // levels none, translate, affine and perspective.
+  // levels none, translate, affine and perspective (the largest four, two by two).
   static constexpr int kChartCount = 7;
   // Comparing: 0 measured error, 1 frame time, 2 work, 3 levels per frame (one band per
   // policy).
@@ -77,6 +79,11 @@ class AnalysisView : public ViewPage {
   // Frames that get a labelled tick on a chart `width_px` wide, for labels of `label_px`
   // pixel font: multiples of 1, 2 or 5 x 10^k, far enough apart for their labels.
   static std::vector<int> frame_ticks(int first, int last, int width_px, int label_px);
+  // How often level `level`'s budget chart (0 none .. 3 perspective) crosses its dashed
+  // threshold upwards over the charted frames: frames whose error the level would leave
+  // exceeds thresholds[level] while the last charted frame before it (gaps skipped) was
+  // within it. -1 when comparing, with nothing charted or for another level.
+  int threshold_crossings(int level) const;
   // The status line: the current frame's level and error, or why its plane is not drawn;
   // comparing, each policy's measured error at the current frame.
   QString status_text() const;

@@ -46,6 +46,30 @@ double round_up_to_nice(double value) {
   return 10.0 * decade;
 }
 
+// The largest magnitude of `part` at the plane's projected corners that lie in the image and
+// on the plane (each nudged a millionth towards the others' centre, so it is inside), px/s.
+double largest_at_corners(const FlowContext& context, FlowPart part) {
+  const auto corners = projected_corners(context.camera, context.pose);
+  Vec2 centre(0.0);
+  for (const Vec2& c : corners) centre += c / double(corners.size());
+  const Vec2 half(0.5 * context.camera.width, 0.5 * context.camera.height);
+  double largest = 0.0;
+  for (const Vec2& c : corners) {
+    const Vec2 p = c + 1e-6 * (centre - c);
+    if (std::abs(p.x) > half.x || std::abs(p.y) > half.y || !sees_plane(context, p)) continue;
+    const double m = glm::length(flow_part_at(context, part, p));
+    if (std::isfinite(m)) largest = std::max(largest, m);
+  }
+  return largest;
+}
+
+// The length of a polyline, in its own units.
+double path_length(const std::vector<Vec2>& path) {
+  double length = 0.0;
+  for (size_t k = 1; k < path.size(); ++k) length += glm::length(path[k] - path[k - 1]);
+  return length;
+}
+
 // The plane's centre is in front of the camera and projects inside the image: a plane
 // seen edge-on there covers no pixel but is not outside the picture.
 bool centre_in_image(const Camera& camera, const PlanePose& pose) {
@@ -131,14 +155,18 @@ void FlowRenderer::update(const FlowContext& context, const FlowDisplay& display
   const std::vector<FlowSample> full = sample_flow_grid(context, FlowPart::kFull, spacing);
   const std::vector<FlowSample> shown =
       display.part == FlowPart::kFull ? full : sample_flow_grid(context, display.part, spacing);
-  shown_max_ = max_flow_magnitude(shown);
   shown_samples_ = static_cast<int>(shown.size());
+  shown_max_ = shown_samples_ == 0
+                   ? 0.0
+                   : std::max(max_flow_magnitude(shown), largest_at_corners(context, display.part));
   // Each part fills the grid unless the common scale is asked for, or the part is zero up
   // to rounding (a residual): then the full flow sets the scale, so parts compare by length
   // and rounding noise is never blown up into arrows.
-  const double full_max = max_flow_magnitude(full);
-  const bool rounding_only = shown_max_ <= 1e-9 * full_max;
-  const double scale_max = display.common_scale || rounding_only ? full_max : shown_max_;
+  const double full_max =
+      std::max(max_flow_magnitude(full),
+               shown_samples_ == 0 ? 0.0 : largest_at_corners(context, FlowPart::kFull));
+  rounding_only_ = shown_samples_ > 0 && shown_max_ <= 1e-9 * full_max;
+  const double scale_max = display.common_scale || rounding_only_ ? full_max : shown_max_;
   const double arrow_seconds = scale_max > 0.0 ? 0.9 * spacing / scale_max : 0.0;
   // A plane that has left the picture has no flow to show: no arrows, lines, wheel or
   // colour bar, and the caption says so (the side table's terms are those of the plane
@@ -201,13 +229,14 @@ void FlowRenderer::update_streamlines(const FlowContext& context, const FlowDisp
   for (const FlowSample& seed : sample_flow_grid(context, FlowPart::kTranslation, seed_spacing)) {
     const std::vector<Vec2> path =
         trace_streamline(context, display.part, seed.position, 2.5 * arrow_seconds, 16);
-    // The line, then an arrow head at its end so the direction reads.
-    for (const std::vector<Vec2>& part : {path, streamline_arrow_head(path, 0.3 * seed_spacing)}) {
-      if (part.size() < 2) continue;
-      QPolygonF line;
-      for (const Vec2& p : part) line << qpoint(p);
-      streamlines_.push_back(line);
-    }
+    if (path.size() < 2) continue;
+    // The line, then an arrow head at its end so the direction reads: at most half the
+    // line's length, so a short line (a small part at the common scale) keeps its shaft.
+    Streamline streamline;
+    for (const Vec2& p : path) streamline.line << qpoint(p);
+    const double head = std::min(0.3 * seed_spacing, 0.5 * path_length(path));
+    for (const Vec2& p : streamline_arrow_head(path, head)) streamline.head << qpoint(p);
+    streamlines_.push_back(streamline);
   }
 }
 
@@ -216,6 +245,7 @@ void FlowRenderer::update_streamlines(const FlowContext& context, const FlowDisp
 // wheel is painted clipped to the plane's outline, so the background never shows as a
 // ragged band inside it), the background elsewhere.
 void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& display) {
+  wheel_caption_.clear();
   if (!display.colour_wheel) return;
   const Vec2 half(0.5 * context.camera.width, 0.5 * context.camera.height);
   const QRectF box = outline_.boundingRect() & QRectF(-half.x, -half.y, 2 * half.x, 2 * half.y);
@@ -231,13 +261,10 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
                 wheel_rect_.top() + (j + 0.5) * kWheelStepPx);
   };
   std::vector<Vec2> flows(size_t(nx) * ny, Vec2(std::nan("")));
-  double largest = 0.0;
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
       if (!sees_plane(context, centre_of(i, j))) continue;
-      Vec2& f = flows[size_t(j) * nx + i];
-      f = flow_part_at(context, display.part, centre_of(i, j));
-      largest = std::max(largest, glm::length(f));
+      flows[size_t(j) * nx + i] = flow_part_at(context, display.part, centre_of(i, j));
     }
   }
   extend_by_one_cell(flows, nx, ny);
@@ -246,13 +273,13 @@ void FlowRenderer::update_wheel(const FlowContext& context, const FlowDisplay& d
     auto* line = reinterpret_cast<QRgb*>(wheel_.scanLine(j));
     for (int i = 0; i < nx; ++i) {
       const Vec2& f = flows[size_t(j) * nx + i];
-      line[i] = std::isnan(f.x) ? background : to_qcolor(flow_wheel_colour(f, largest)).rgb();
+      line[i] = std::isnan(f.x) ? background : to_qcolor(flow_wheel_colour(f, shown_max_)).rgb();
     }
   }
   wheel_caption_ = QStringLiteral(
                        "Colour wheel (bottom right): hue = direction, "
                        "white to full colour = 0 to %1 px/s")
-                       .arg(largest, 0, 'g', 3);
+                       .arg(shown_max_, 0, 'g', 3);
 }
 
 void FlowRenderer::update_caption(const FlowDisplay& display, const QString& frame_caption) {
@@ -268,12 +295,10 @@ void FlowRenderer::update_caption(const FlowDisplay& display, const QString& fra
     if (!frame_caption.isEmpty()) caption_text_ += QStringLiteral("\n") + frame_caption;
     return;
   }
-  const bool residual = display.part == FlowPart::kExactMinusHomography ||
-                        display.part == FlowPart::kExactMinusAffine;
   QString text = QStringLiteral("%1   max |v| = %2 px/s")
                      .arg(QString::fromUtf8(flow_part_title(display.part)))
                      .arg(shown_max_, 0, 'g', 3);
-  if (residual && shown_max_ < 1e-6) text += QStringLiteral(" (zero up to rounding)");
+  if (rounding_only_) text += QStringLiteral(" (zero up to rounding)");
   if (!frame_caption.isEmpty()) text += QStringLiteral("\n") + frame_caption;
   caption_text_ = text;
 }
@@ -301,15 +326,39 @@ double FlowRenderer::side_width_px(int view_width) const {
   return std::clamp(0.14 * view_width, 80.0, wanted);
 }
 
+QRectF FlowRenderer::caption_rect(const QSize& size) const {
+  QFont font;
+  font.setPixelSize(theme_.font_size);
+  const double pad = 0.01 * size.width();
+  const int lines = int(caption_text_.count(QLatin1Char('\n'))) + 1;
+  return QRectF(pad, pad, size.width() - side_width_px(size.width()) - 2 * pad,
+                lines * QFontMetricsF(font).lineSpacing());
+}
+
+double FlowRenderer::wheel_caption_height() const {
+  if (!display_.colour_wheel) return 0.0;
+  QFont font;
+  font.setPixelSize(theme_.label_size);
+  return QFontMetricsF(font).lineSpacing();
+}
+
+QRectF FlowRenderer::outline_rect(const QSize& size) const {
+  return image_to_view(size).map(outline_).boundingRect();
+}
+
 // Centred image pixels -> view pixels: the chosen region, with a margin, centred in the
-// part of the view left of the legend strip.
+// part of the view left of the legend strip, below the caption and above the wheel's
+// caption, so the scene never runs through their text.
 QTransform FlowRenderer::image_to_view(const QSize& size) const {
   const double width = size.width() - side_width_px(size.width());
-  const double aspect = width / size.height();
+  const double pad = 0.01 * size.width();
+  const double top = caption_rect(size).bottom() + pad;
+  const double height = std::max(1.0, size.height() - top - wheel_caption_height() - pad);
+  const double aspect = width / height;
   const double half_h = kViewMargin * std::max(view_half_size_.y, view_half_size_.x / aspect);
-  const double scale = 0.5 * size.height() / half_h;
+  const double scale = 0.5 * height / half_h;
   QTransform t;
-  t.translate(0.5 * width, 0.5 * size.height());
+  t.translate(0.5 * width, top + 0.5 * height);
   t.scale(scale, scale);
   t.translate(-view_centre_.x, -view_centre_.y);
   return t;
@@ -376,7 +425,10 @@ void FlowRenderer::paint_scene(QPainter& painter, const QTransform& to_view) {
   painter.drawLine(centre - QPointF(r, 0), centre + QPointF(r, 0));
   painter.drawLine(centre - QPointF(0, r), centre + QPointF(0, r));
   painter.setPen(QPen(to_qcolor(theme_.streamline), w));
-  for (const QPolygonF& line : streamlines_) painter.drawPolyline(to_view.map(line));
+  for (const Streamline& line : streamlines_) {
+    painter.drawPolyline(to_view.map(line.line));
+    if (!line.head.isEmpty()) painter.drawPolyline(to_view.map(line.head));
+  }
   paint_arrows(painter, to_view);
 }
 
@@ -403,7 +455,11 @@ void FlowRenderer::paint_arrows(QPainter& painter, const QTransform& to_view) {
 }
 
 void FlowRenderer::paint_side(QPainter& painter, const QRectF& side) {
-  if (display_.arrows) paint_colour_bar(painter, side);
+  if (display_.arrows && rounding_only_) {
+    paint_rounding_note(painter, side);
+  } else if (display_.arrows) {
+    paint_colour_bar(painter, side);
+  }
   if (!display_.colour_wheel) return;
   const double edge = std::min(side.width() - 8.0, 0.28 * side.height());
   paint_wheel_legend(painter, QRectF(side.right() - 4.0 - edge,
@@ -437,6 +493,20 @@ void FlowRenderer::paint_colour_bar(QPainter& painter, const QRectF& side) {
                             2.0 * theme_.label_size),
                      Qt::AlignLeft | Qt::AlignVCenter, QString::asprintf("%.3g", t * bar_max_));
   }
+}
+
+// In place of the colour bar of a part that is zero up to rounding: that, in words, with
+// the largest magnitude found (a colour bar from 0 to 1e-13 would only chart rounding).
+void FlowRenderer::paint_rounding_note(QPainter& painter, const QRectF& side) {
+  QFont font = painter.font();
+  font.setPixelSize(theme_.label_size);
+  painter.setFont(font);
+  painter.setPen(to_qcolor(theme_.text));
+  painter.drawText(
+      QRectF(side.left() + 4, side.top() + 0.12 * side.height(), side.width() - 8,
+             0.56 * side.height()),
+      Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+      QStringLiteral("|v| px/s\nzero up to rounding\n(at most %1)").arg(shown_max_, 0, 'g', 2));
 }
 
 // The colour-wheel legend: the coding of every direction and magnitude up to the largest

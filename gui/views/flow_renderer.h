@@ -46,7 +46,8 @@ class FlowRenderer {
   // images and returns it. Precondition: update has been called.
   const QImage& paint(const QSize& size);
 
-  // Largest magnitude of the shown part on the arrow grid after the last update (px/s).
+  // Largest magnitude of the shown part after the last update (px/s): over the arrow grid
+  // and the plane's corners inside the image; the caption and the wheel both print it.
   double shown_max_magnitude() const { return shown_max_; }
   // The smallest font of its captions, colour-bar title and labels, screen pixels.
   double smallest_text_px() const;
@@ -56,6 +57,25 @@ class FlowRenderer {
   bool plane_in_image() const { return plane_in_image_; }
   // The caption line(s) drawn at the top left after the last update.
   const QString& caption() const { return caption_text_; }
+  // The colour wheel's caption (bottom left; empty without the wheel) after the last update.
+  const QString& wheel_caption() const { return wheel_caption_; }
+  // True when the shown part is zero up to rounding after the last update: its largest
+  // magnitude is at most 1e-9 of the full flow's (a residual such as exact - homography).
+  // The side strip then says so in words instead of drawing a colour bar over that noise.
+  bool rounding_only() const { return rounding_only_; }
+
+  // One streamline of the last update, centred pixels: the path and the arrow head at its
+  // end (empty when the path is too short to carry one). The head is never longer than
+  // half the path, so it always sits on a shaft.
+  struct Streamline {
+    QPolygonF line, head;
+  };
+  const std::vector<Streamline>& streamlines() const { return streamlines_; }
+
+  // Where `paint` at `size` puts the caption (view pixels): the strip at the top that the
+  // scene is kept out of, and where it maps the plane's projected outline.
+  QRectF caption_rect(const QSize& size) const;
+  QRectF outline_rect(const QSize& size) const;
 
  private:
   struct Arrow {
@@ -71,10 +91,12 @@ class FlowRenderer {
   void update_caption(const FlowDisplay& display, const QString& frame_caption);
   void choose_view_region(const FlowContext& context, const FlowDisplay& display);
   QTransform image_to_view(const QSize& size) const;
+  double wheel_caption_height() const;  // view pixels at the bottom, 0 without the wheel
   void paint_scene(QPainter& painter, const QTransform& to_view);
   void paint_arrows(QPainter& painter, const QTransform& to_view);
   void paint_side(QPainter& painter, const QRectF& side);
   void paint_colour_bar(QPainter& painter, const QRectF& side);
+  void paint_rounding_note(QPainter& painter, const QRectF& side);
   void paint_wheel_legend(QPainter& painter, const QRectF& square);
   double side_width_px(int view_width) const;  // width of the legend strip on the right
 
@@ -83,7 +105,10 @@ class FlowRenderer {
   FlowDisplay display_;                // what the last update drew
   Vec2 view_centre_{0.0, 0.0};         // centred pixels shown at the middle of the view
   Vec2 view_half_size_{400.0, 300.0};  // half the image region that must stay visible, px
+  // Largest magnitude of the shown part (px/s): over the arrow grid and the plane's corners
+  // in the image. The caption, the colour bar and the colour wheel all use this one value.
   double shown_max_ = 0.0;
+  bool rounding_only_ = false;
   double bar_max_ = 1.0;  // colour bar's upper end (px/s), a 1-2-5 step
   bool plane_in_image_ = true;
   int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
@@ -96,11 +121,11 @@ class FlowRenderer {
   QRect plane_box_;               // the part of plane_image_ worth drawing (top-left pixels)
   bool plane_drawn_ = false;
   std::vector<Arrow> arrows_;
-  std::vector<QPolygonF> streamlines_;  // lines and their arrow heads, centred pixels
-  QImage wheel_;                        // the wheel's colours, one texel per cell
-  QRectF wheel_rect_;                   // where wheel_ lies, centred pixels
-  QImage wheel_legend_;                 // the legend disc at its last drawn size
-  QImage buffers_[2];  // painted views, used in turn so the shown one is not copied
+  std::vector<Streamline> streamlines_;
+  QImage wheel_;         // the wheel's colours, one texel per cell
+  QRectF wheel_rect_;    // where wheel_ lies, centred pixels
+  QImage wheel_legend_;  // the legend disc at its last drawn size
+  QImage buffers_[2];    // painted views, used in turn so the shown one is not copied
   int next_buffer_ = 0;
 };
 

@@ -1,15 +1,17 @@
-// The analysis view's charts: a click on any chart (the four small budget charts included)
+// The analysis view's charts: a click on any chart (the four budget charts included)
 // lands on the frame under the pointer, computed here from the chart's own rectangle; the
 // axis stays still after a jump; every chart has a frame axis and the levels chart a
 // legend. And the inspector's words for each policy's frames.
 #include "views/analysis_view.h"
 
 #include <QPainter>
+#include <cmath>
 
 #include "adapters/palette.h"
 #include "engine/engine.h"
 #include "engine/reuse_policy.h"
 #include "flow/geometry.h"
+#include "flow/plane_scene.h"
 #include "models/animation_model.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
@@ -148,6 +150,60 @@ TEST_F(AnalysisViewTest, LevelsChartHasALegendAndEveryChartAFrameAxis) {
   }
 }
 
+TEST_F(AnalysisViewTest, BudgetChartsAreTheLargestAndTheFrameTimeChartSmaller) {
+  window().resize(1920, 1080);
+  window().show_view("analysis");
+  window().play_frames(5);
+  const auto area = [&](int chart) {
+    const QRect r = analysis().chart_area(chart);
+    return r.width() * r.height();
+  };
+  for (int budget = 3; budget < AnalysisView::kChartCount; ++budget) {
+    for (int other = 0; other < 3; ++other) {
+      EXPECT_GT(area(budget), area(other)) << "budget chart " << budget << ", chart " << other;
+    }
+    EXPECT_GT(analysis().chart_area(budget).height(), 2 * analysis().chart_area(0).height());
+  }
+  // No two charts overlap.
+  for (int a = 0; a < AnalysisView::kChartCount; ++a) {
+    for (int b = 0; b < a; ++b) {
+      EXPECT_FALSE(analysis().chart_area(a).intersects(analysis().chart_area(b))) << a << b;
+    }
+  }
+}
+
+// The engine's choice (core/engine/decision.h choose_level): a level whose neglected error
+// exceeds its threshold is never chosen, so every frame a budget chart shows above its
+// dashed line chose a higher level: there are never more crossings than such frames.
+TEST_F(AnalysisViewTest, ThresholdCrossingsAreFramesWhereTheEngineHadToGoHigher) {
+  PlaneScene slow = default_demo_scene();
+  slow.motion.velocity *= 0.04;
+  slow.motion.omega *= 0.04;
+  window().model()->scene()->set_scene(slow);
+  window().show_view("analysis");
+  window().play_frames(79);
+  analysis().render_image();
+  const std::vector<AnimationFrame>& history = window().model()->animation()->history();
+  const EngineSettings& settings = window().model()->animation()->settings();
+  for (int level = 0; level < kTermCount; ++level) {
+    int went_higher = 0;
+    for (size_t k = 1; k < history.size(); ++k) {
+      if (history[k].layer_reports.size() != 1) continue;
+      const FrameReport& now = history[k].layer_reports.front();
+      went_higher += k > 1 && int(now.level) > level;
+      if (neglected_error(now.carried, now.flow, Level(level)) >
+          settings.thresholds[size_t(level)]) {
+        EXPECT_GT(int(now.level), level) << "frame " << k;
+      }
+    }
+    EXPECT_LE(analysis().threshold_crossings(level), went_higher) << level;
+  }
+  // At this speed none and translate take turns with dearer levels: saw-teeth.
+  EXPECT_GE(analysis().threshold_crossings(int(Level::kNone)), 3);
+  EXPECT_GE(analysis().threshold_crossings(int(Level::kTranslate)), 3);
+  EXPECT_EQ(analysis().threshold_crossings(kTermCount), -1);  // no such chart
+}
+
 // ---- The comparison overlaid ----
 
 class AnalysisComparisonTest : public AnalysisViewTest {
@@ -172,6 +228,28 @@ TEST(PolicyColours, FourDistinctColoursRepeatingAfterTheFourth) {
     }
     EXPECT_EQ(policy_colour(i + 4).r, policy_colour(i).r);
   }
+}
+
+// The hue of an 8-bit colour in degrees, and the angle between two hues.
+double hue_of(const Rgb8& c) { return QColor(c.r, c.g, c.b).hsvHueF() * 360.0; }
+double hue_apart(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 360.0);
+  return std::min(d, 360.0 - d);
+}
+
+TEST(PolicyColours, KeepClearOfEveryLevelColour) {
+  for (int i = 0; i < 4; ++i) {
+    const Rgb8 p = policy_colour(i);
+    EXPECT_GT(QColor(p.r, p.g, p.b).hsvSaturationF(), 0.5) << "policy " << i << " is greyish";
+    for (int level = int(Level::kTranslate); level < kLevelCount; ++level) {
+      EXPECT_GE(hue_apart(hue_of(p), hue_of(level_colour(Level(level)))), 40.0)
+          << "policy " << i << " near level " << level_name(Level(level));
+    }
+    for (int j = 0; j < i; ++j) EXPECT_GE(hue_apart(hue_of(p), hue_of(policy_colour(j))), 40.0);
+  }
+  // Negative control: the red the comparison used before is within 40 degrees of the
+  // re-render level's vermillion.
+  EXPECT_LT(hue_apart(hue_of(Rgb8{238, 102, 119}), hue_of(level_colour(Level::kRerender))), 40.0);
 }
 
 TEST_F(AnalysisComparisonTest, EachComparedPolicyHasItsLineKeyAndLevelBand) {
@@ -210,6 +288,26 @@ TEST_F(AnalysisComparisonTest, EachComparedPolicyHasItsLineKeyAndLevelBand) {
   const QRect third(bands.left() + 1, bands.top() + 2 * band + 2, bands.width() - 2, band - 4);
   EXPECT_GT(count_colour(image, third, QColor(r.r, r.g, r.b)),
             0.8 * played * third.width() * third.height());
+}
+
+TEST_F(AnalysisComparisonTest, TheLevelBandsShareTheFrameAxisOfTheLineCharts) {
+  window().resize(1920, 1080);
+  compare({"perspective", "affine", "rerender"});
+  window().play_frames(40);
+  ASSERT_TRUE(analysis().comparing());
+  const QRect bands = analysis().chart_area(3);
+  for (int chart = 0; chart < 3; ++chart) {
+    const QRect area = analysis().chart_area(chart);
+    EXPECT_EQ(area.left(), bands.left()) << chart;
+    EXPECT_EQ(area.right(), bands.right()) << chart;
+    // The same x is the same frame in the chart and in the bands.
+    for (int x = bands.left(); x <= bands.right(); x += 37) {
+      EXPECT_EQ(analysis().frame_at(QPoint(x, area.center().y())),
+                analysis().frame_at(QPoint(x, bands.center().y())))
+          << "chart " << chart << ", x " << x;
+    }
+  }
+  EXPECT_EQ(analysis().threshold_crossings(0), -1);  // no budget charts while comparing
 }
 
 TEST_F(AnalysisComparisonTest, WithoutTheComparisonLayoutTheModelsEngineIsCharted) {

@@ -1,0 +1,136 @@
+// The flow view's picture (gui/views/flow_renderer.h): streamline heads on their shafts at
+// the common scale, the scene kept out of the caption, a residual that is zero up to
+// rounding said in words instead of a colour bar, and one largest magnitude printed by the
+// caption and by the colour wheel.
+#include "views/flow_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <QRegularExpression>
+#include <cmath>
+
+#include "adapters/flow_parts.h"
+#include "adapters/palette.h"
+#include "flow/plane_scene.h"
+
+namespace oflab::test {
+namespace {
+
+FlowContext demo_context() {
+  const PlaneScene demo = default_demo_scene();
+  return make_flow_context(demo.camera, demo.pose, demo.motion);
+}
+
+double length_of(const QPolygonF& line) {
+  double length = 0.0;
+  for (int k = 1; k < line.size(); ++k) {
+    length += std::hypot(line[k].x() - line[k - 1].x(), line[k].y() - line[k - 1].y());
+  }
+  return length;
+}
+
+TEST(FlowRenderer, StreamlineHeadsSitOnTheirShaftsAtTheCommonScale) {
+  FlowRenderer renderer;
+  FlowDisplay display;
+  display.part = FlowPart::kTranslation;  // small next to the full flow that sets the scale
+  display.common_scale = true;
+  display.streamlines = true;
+  renderer.update(demo_context(), display, QString());
+  ASSERT_FALSE(renderer.streamlines().empty());
+  double shortest = 1e300;
+  for (const FlowRenderer::Streamline& s : renderer.streamlines()) {
+    const double line = length_of(s.line);
+    shortest = std::min(shortest, line);
+    if (s.head.isEmpty()) continue;
+    ASSERT_EQ(s.head.size(), 3);
+    // Each arm of the head runs from the line's end (the middle point) backwards.
+    const double arm = std::hypot(s.head[0].x() - s.head[1].x(), s.head[0].y() - s.head[1].y());
+    EXPECT_LE(arm, 0.5 * line + 1e-9) << "a head longer than half its line floats";
+    EXPECT_EQ(s.head[1], s.line.back());
+  }
+  // The case that matters: lines far shorter than a head of fixed size (0.3 of the seed
+  // spacing, several pixels) would be.
+  EXPECT_LT(shortest, 5.0);
+}
+
+TEST(FlowRenderer, ZoomToPlaneKeepsTheSceneOutOfTheCaption) {
+  for (bool presentation : {false, true}) {
+    FlowRenderer renderer;
+    renderer.set_theme(view_theme(presentation));
+    FlowDisplay display;
+    display.zoom_to_plane = true;
+    display.colour_wheel = true;
+    renderer.update(demo_context(), display, QStringLiteral("frame 0, t = 0.00 s"));
+    for (const QSize size : {QSize(1400, 900), QSize(900, 500), QSize(1600, 700)}) {
+      const QRectF caption = renderer.caption_rect(size), outline = renderer.outline_rect(size);
+      ASSERT_FALSE(caption.isEmpty());
+      ASSERT_GT(outline.width(), 0.3 * size.width() - 200) << "the plane fills the view";
+      EXPECT_GT(outline.top(), caption.bottom())
+          << "outline through the caption at " << size.width() << " x " << size.height();
+      EXPECT_LT(outline.bottom(), size.height()) << presentation;
+    }
+  }
+}
+
+// Pixels of `image` inside `rect` whose colour is the colour bar's lowest (viridis at 0).
+int bar_bottom_pixels(const QImage& image, const QRect& rect) {
+  const Rgb8 c = magnitude_colour(0.0);
+  int n = 0;
+  for (int y = rect.top(); y <= rect.bottom(); ++y) {
+    for (int x = rect.left(); x <= rect.right(); ++x) {
+      const QColor p = image.pixelColor(x, y);
+      n += std::abs(p.red() - c.r) + std::abs(p.green() - c.g) + std::abs(p.blue() - c.b) < 12;
+    }
+  }
+  return n;
+}
+
+TEST(FlowRenderer, ExactMinusHomographySaysZeroInsteadOfAColourBar) {
+  const QSize size(1200, 800);
+  const QRect side(size.width() - 130, 0, 130, size.height());
+  FlowRenderer renderer;
+  FlowDisplay display;
+  display.texture = false;
+  renderer.update(demo_context(), display, QString());
+  EXPECT_FALSE(renderer.rounding_only());
+  EXPECT_GT(bar_bottom_pixels(renderer.paint(size), side), 50) << "negative control: a bar";
+  display.part = FlowPart::kExactMinusHomography;
+  renderer.update(demo_context(), display, QString());
+  EXPECT_TRUE(renderer.rounding_only());
+  EXPECT_LT(renderer.shown_max_magnitude(), 1e-6);
+  EXPECT_TRUE(renderer.caption().contains(QStringLiteral("zero up to rounding")));
+  EXPECT_EQ(bar_bottom_pixels(renderer.paint(size), side), 0) << "a colour bar of rounding";
+  display.part = FlowPart::kExactMinusAffine;  // a true residual keeps its bar
+  renderer.update(demo_context(), display, QString());
+  EXPECT_FALSE(renderer.rounding_only());
+  EXPECT_FALSE(renderer.caption().contains(QStringLiteral("rounding")));
+}
+
+// The number after `before` in `text`.
+double number_after(const QString& text, const QString& before) {
+  const QRegularExpression re(QRegularExpression::escape(before) + QStringLiteral("([0-9.eE+-]+)"));
+  const QRegularExpressionMatch m = re.match(text);
+  return m.hasMatch() ? m.captured(1).toDouble() : std::nan("");
+}
+
+TEST(FlowRenderer, CaptionAndWheelPrintOneLargestMagnitude) {
+  for (FlowPart part : {FlowPart::kFull, FlowPart::kFirstOrder, FlowPart::kSecondOrder}) {
+    FlowRenderer renderer;
+    FlowDisplay display;
+    display.part = part;
+    display.colour_wheel = true;
+    const FlowContext context = demo_context();
+    renderer.update(context, display, QString());
+    const double caption = number_after(renderer.caption(), QStringLiteral("max |v| = "));
+    const double wheel = number_after(renderer.wheel_caption(), QStringLiteral("0 to "));
+    ASSERT_TRUE(std::isfinite(caption)) << renderer.caption().toStdString();
+    EXPECT_EQ(caption, wheel) << renderer.wheel_caption().toStdString();
+    // The largest magnitude is at least that of a dense grid over the plane's corners'
+    // neighbourhood and of the arrow grid (independent samples of the same part).
+    const double dense = max_flow_magnitude(sample_flow_grid(context, part, 4.0));
+    EXPECT_GE(renderer.shown_max_magnitude(), 0.97 * dense) << flow_part_key(part);
+  }
+}
+
+}  // namespace
+}  // namespace oflab::test
