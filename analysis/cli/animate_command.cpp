@@ -174,6 +174,7 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--frames-png", 0},
                            {"--video", 1},
                            {"--fps", 1},
+                           {"--vtk-series", 1},
                            {"--json", 0},
                            {"--quiet", 0},
                            {"--scene", 1},

@@ -160,10 +160,25 @@ RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   out.dir = a.text_or("--out", "");
   if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
   if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
+  out.vtk_series_dir = a.text_or("--vtk-series", "");
+  if (a.has("--vtk-series") && out.vtk_series_dir.empty()) {
+    throw UsageError("--vtk-series: needs a directory name");
+  }
+  if (!out.vtk_series_dir.empty()) {
+    if (!out.dir.empty() &&
+        fs::weakly_canonical(out.dir) == fs::weakly_canonical(out.vtk_series_dir))
+      throw UsageError("--vtk-series: '" + out.vtk_series_dir + "' is also --out");
+    check_out_dir("--vtk-series", out.vtk_series_dir, a.has("--force"));
+  }
   out.video = read_video_option(a);  // checked before --out DIR's temporary is created
   if (!out.dir.empty()) {
     out.out = open_out_dir(out.dir, a.has("--force"));
     out.csv = std::make_shared<std::ofstream>();  // opened by apply_to, which knows the kind
+  }
+  if (!out.vtk_series_dir.empty()) {
+    out.vtk_series_out = open_out_dir(out.vtk_series_dir, a.has("--force"), "--vtk-series");
+    out.vtk_series =
+        std::make_shared<VtkSeriesWriter>(out.vtk_series_out->path(), out.vtk_series_dir);
   }
   const bool png = a.has("--frames-png");
   if (png || out.video) {
@@ -209,6 +224,13 @@ void RunOutput::apply_to(RunOptions& options, const SourceKind& kind) const {
   apply_timing_to(options);
   options.on_frame = on_frame;
   options.keep_frames = false;
+  if (vtk_series) {
+    options.on_animators = [series = vtk_series](int i, const Animator& shown,
+                                                 const Animator* exact) {
+      if (!exact) throw std::logic_error("--vtk-series: the run has no exact baseline");
+      series->add_frame({i, &shown.camera(), &shown.image(), &exact->image(), shown.outlines()});
+    };
+  }
   if (!csv) return;
   const std::string shown = (fs::path(dir) / "frames.csv").string();
   csv->open(fs::path(out->path()) / "frames.csv");
@@ -225,6 +247,10 @@ void RunOutput::apply_to(RunOptions& options, const SourceKind& kind) const {
 }
 
 void RunOutput::finish() const {
+  if (vtk_series) {
+    vtk_series->finish();
+    vtk_series_out->commit();
+  }
   if (!video) return;
   try {
     video->finish();

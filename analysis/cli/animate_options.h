@@ -13,6 +13,7 @@
 #include "engine/engine.h"
 #include "formats/atomic_file.h"
 #include "formats/video_file.h"
+#include "formats/vtk_export.h"
 #include "image/image.h"
 #include "runs/source_kinds.h"
 #include "scene/scene.h"
@@ -60,7 +61,10 @@ Sampling read_sampling(const CliArgs& args);
 // (each frame as DIR/frame_NNNNN.png; needs --out), --video FILE (the frames as an MP4, GIF
 // or Ogg Theora video by FILE's extension, formats/video_file.h, written through a
 // temporary file renamed over FILE by finish(); an existing FILE needs --force) at --fps N
-// (default 30) and --quiet (no progress lines; otherwise runs of 200 frames or more report
+// (default 30), --vtk-series DIR (each frame's shown, exact and difference images and its
+// layers' outlines as ParaView data with a .pvd series of each, formats/vtk_export.h; DIR
+// written whole like --out's, replacing a non-empty one only with --force, completed by
+// finish()) and --quiet (no progress lines; otherwise runs of 200 frames or more report
 // every tenth on `err`). Every refusal of these options comes before anything is created.
 // Throws UsageError naming the option; a write that fails during the run throws
 // FileWriteError naming the file. `err` must outlive the returned callbacks.
@@ -75,10 +79,14 @@ struct RunOutput {
   std::shared_ptr<std::ofstream> csv;  // DIR/frames.csv (opened by apply_to), empty without --out
   std::function<void(int, const Image&)> on_frame;  // empty without --frames-png and --video
   std::function<void(int, int)> progress;
-  std::shared_ptr<VideoWriter> video;  // empty without --video
+  std::shared_ptr<VideoWriter> video;           // empty without --video
+  std::string vtk_series_dir;                   // --vtk-series DIR as given; empty without it
+  std::shared_ptr<AtomicDir> vtk_series_out;    // where its files go until finish()
+  std::shared_ptr<VtkSeriesWriter> vtk_series;  // empty without --vtk-series
 
-  // Completes the --video file after the run (nothing without --video). Throws UsageError
-  // naming --video when it cannot be completed.
+  // Completes the --video file and the --vtk-series directory after the run (nothing
+  // without them). Throws UsageError naming --video when the video cannot be completed,
+  // FileWriteError naming the file of the series that cannot be written.
   void finish() const;
 
   // Sets max_frames, the timing (warm-up, timing_repetitions timed passes), on_frame,

@@ -123,14 +123,18 @@ Vec3 CliArgs::vec3_in(const std::string& name, const Limit& limit) const {
   return Vec3(v.at(0), v.at(1), v.at(2));
 }
 
-std::shared_ptr<AtomicDir> open_out_dir(const std::string& dir, bool force) {
+std::shared_ptr<AtomicDir> open_out_dir(const std::string& dir, bool force, const char* option) {
+  return std::make_shared<AtomicDir>(dir, check_out_dir(option, dir, force));
+}
+
+Overwrite check_out_dir(const char* option, const std::string& dir, bool force) {
   const Overwrite overwrite = force ? Overwrite::kReplace : Overwrite::kRefuse;
   try {
     check_output_dir(dir, overwrite);
   } catch (const FileWriteError& e) {
-    throw UsageError(std::string("--out: ") + e.what());
+    throw UsageError(std::string(option) + ": " + e.what());
   }
-  return std::make_shared<AtomicDir>(dir, overwrite);
+  return overwrite;
 }
 
 Overwrite check_out_file(const char* option, const std::string& path, bool force) {

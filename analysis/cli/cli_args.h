@@ -63,12 +63,17 @@ class CliArgs {
   std::map<std::string, std::vector<std::string>> values_;
 };
 
-// The output directory of --out DIR, written whole (formats/atomic_file.h): checked at once
-// (a non-empty DIR needs `force`, which then replaces it whole when the run succeeds; nothing
-// but a directory may be there), then a temporary directory beside DIR receives the outputs
-// (AtomicDir::path) until AtomicDir::commit renames it into place. Throws UsageError naming
-// --out for a refusal known up front, FileWriteError when the temporary cannot be created.
-std::shared_ptr<AtomicDir> open_out_dir(const std::string& dir, bool force);
+// The output directory of --out DIR (or of `option`), written whole
+// (formats/atomic_file.h): checked at once (a non-empty DIR needs `force`, which then
+// replaces it whole when the run succeeds; nothing but a directory may be there), then a
+// temporary directory beside DIR receives the outputs (AtomicDir::path) until
+// AtomicDir::commit renames it into place. Throws UsageError naming the option for a
+// refusal known up front, FileWriteError when the temporary cannot be created.
+std::shared_ptr<AtomicDir> open_out_dir(const std::string& dir, bool force,
+                                        const char* option = "--out");
+// The check of open_out_dir alone, creating nothing: how DIR may be written. Throws
+// UsageError naming the option.
+Overwrite check_out_dir(const char* option, const std::string& dir, bool force);
 
 // The file of an output option (`option`: "--out", "--video", ...) checked before any work:
 // refused when it exists without `force`, or is a directory, device or FIFO. Returns how it

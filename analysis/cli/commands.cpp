@@ -11,6 +11,7 @@
 #include "flow/decomposition.h"
 #include "flow/motion.h"
 #include "formats/atomic_file.h"
+#include "formats/vtk_export.h"
 #include "image/warp.h"
 #include "runs/run_driver.h"
 #include "runs/source_kinds.h"
@@ -38,6 +39,7 @@ std::string animate_usage() {
   usage +=
       "               [--out DIR [--force] [--frames-png]] [--json] [--quiet]\n"
       "               [--video FILE.mp4|FILE.gif|FILE.ogv [--fps N] [--force]]\n"
+      "               [--vtk-series DIR [--force]]   (each frame as ParaView data)\n"
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
       "               [--compare-conventional [--conventional-single-sample]]\n"
       "               [--near Z] [--guard-band G] [--hole-fill none|stretch|background]\n"
@@ -57,7 +59,11 @@ std::string flow_usage() {
   return "oflab-cli flow --focal F --image W H --plane-point X Y Z --plane-normal NX NY NZ\n"
          "               --velocity V1 V2 V3 --omega O1 O2 O3 [--plane-up UX UY UZ\n"
          "               --plane-size SW SH] [--dt T] [--motion " +
-         motion_model_name_list("|") + "] [--explain] [--json]";
+         motion_model_name_list("|") +
+         "] [--explain] [--json]\n"
+         "               [--vtk FILE.vti [--vtk-step N] [--force]]\n"
+         "  --vtk: the flow field for ParaView, on a grid every N px (default " +
+         std::to_string(kDefaultVtkGridStep) + ")";
 }
 
 // `experiments --help`: the --only values come from the experiments table.

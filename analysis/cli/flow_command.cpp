@@ -13,6 +13,8 @@
 #include "cli/explain_report.h"
 #include "flow/basis.h"
 #include "flow/homography.h"
+#include "formats/atomic_file.h"
+#include "formats/vtk_export.h"
 
 namespace oflab {
 namespace {
@@ -123,10 +125,47 @@ void print_explain_round_trip(const nlohmann::json& e, std::ostream& out) {
   }
 }
 
+// --vtk FILE.vti with --vtk-step N (default kDefaultVtkGridStep) and --force: the file's
+// name and step, checked before any work (the extension, the grid's limits, whether FILE
+// may be written). Throws UsageError naming the option; empty without --vtk.
+struct VtkOutput {
+  std::string path;
+  int step = kDefaultVtkGridStep;
+};
+VtkOutput read_vtk_output(const CliArgs& a, const Camera& camera) {
+  VtkOutput v;
+  if (!a.has("--vtk")) {
+    if (a.has("--vtk-step")) throw UsageError("--vtk-step: needs --vtk FILE.vti");
+    return v;
+  }
+  v.path = a.values("--vtk").at(0);
+  const std::string ext = ".vti";
+  if (v.path.size() <= ext.size() || v.path.compare(v.path.size() - ext.size(), ext.size(), ext)) {
+    throw UsageError("--vtk: '" + v.path + "' does not end in .vti (VTK XML image data)");
+  }
+  if (a.has("--vtk-step")) {
+    const double step = a.number("--vtk-step");
+    const std::string problem = flow_grid_problem(camera, step);
+    if (!problem.empty()) throw UsageError("--vtk-step: " + problem);
+    v.step = static_cast<int>(step);
+  }
+  const std::string problem = flow_grid_problem(camera, v.step);
+  if (!problem.empty()) throw UsageError("--vtk: the default --vtk-step " + problem);
+  try {
+    check_output_file(v.path, a.has("--force") ? Overwrite::kReplace : Overwrite::kRefuse);
+  } catch (const FileWriteError& e) {
+    throw UsageError(std::string("--vtk: ") + e.what());
+  }
+  return v;
+}
+
+// The report and, with --vtk, the flow field written for ParaView.
 nlohmann::json flow_report(const CliArgs& a) {
   const Vec2 image = a.vec2_in("--image", limits::kImageSize);
   const Camera camera = make_camera(a.number_in("--focal", limits::kFocalLength),
                                     static_cast<int>(image.x), static_cast<int>(image.y));
+  if (a.has("--force") && !a.has("--vtk")) throw UsageError("--force: needs --vtk FILE.vti");
+  const VtkOutput vtk = read_vtk_output(a, camera);
 
   PlanePose pose;
   pose.point = a.vec3("--plane-point");
@@ -186,6 +225,10 @@ nlohmann::json flow_report(const CliArgs& a) {
     j["explain"] =
         explain_round_trip(camera, pose, motion, c, a.optional_number("--dt"), has_extent);
   }
+  if (!vtk.path.empty()) {
+    write_file_atomically(vtk.path, flow_field_vti(camera, c, vtk.step),
+                          a.has("--force") ? Overwrite::kReplace : Overwrite::kRefuse);
+  }
   return j;
 }
 
@@ -231,6 +274,9 @@ int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& /
                          {"--dt", 1},
                          {"--motion", 1},
                          {"--explain", 0},
+                         {"--vtk", 1},
+                         {"--vtk-step", 1},
+                         {"--force", 0},
                          {"--json", 0}});
   const nlohmann::json j = flow_report(a);
   if (a.has("--json")) {

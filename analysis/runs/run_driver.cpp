@@ -198,6 +198,7 @@ class RunLoop {
     if (conventional_ && baseline_)
       iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
     if (options_.on_frame) options_.on_frame(i, animator_.image());
+    if (options_.on_animators) options_.on_animators(i, animator_, baseline_);
     if (options_.on_view) options_.on_view(i, animator_.view());
     if (single_timed_) {
       emit({f, psnr, baseline_ms, conventional_ms}, options_.keep_frames);

@@ -50,6 +50,10 @@ struct RunOptions {
   std::function<void(int, int)> progress;
   // Called with each frame's image (camera-sized, premultiplied), e.g. to save PNGs.
   std::function<void(int, const Image&)> on_frame;
+  // Called with each recorded frame's animator and baseline (null without one) right after
+  // the frame, in frame order, e.g. to save the shown and the exact image and the layers'
+  // outlines (Animator::image(), outlines()).
+  std::function<void(int, const Animator&, const Animator*)> on_animators;
   // Called with each frame's view (Animator::view(): what the frame shows, as a viewer pose)
   // in the first pass, e.g. to check that two runs played the same poses.
   std::function<void(int, const ViewerPose&)> on_view;

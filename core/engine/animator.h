@@ -77,10 +77,16 @@ struct AnimationFrame {
   int drawn() const;  // sum of levels
 };
 
-// A layer's outline in top-left image pixels and the level it was updated at.
+// A layer's outline in top-left image pixels, the level it was updated at, the scene polygon
+// it shows and the error its update left.
 struct LayerOutline {
   std::vector<Vec2> points;
   Level level = Level::kNone;
+  int polygon = 0;  // index into Animator::scene().polygons (0 for a single plane)
+  // The measured error of the layer this frame (FrameReport::measured_error_px), pixels; 0
+  // for a layer rendered exactly (re-render, clipped); NaN where the animator keeps no
+  // per-layer books (scene shifting).
+  double error_px = std::numeric_limits<double>::quiet_NaN();
 };
 
 class Animator {

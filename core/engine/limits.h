@@ -73,6 +73,15 @@ inline constexpr Limit kTimingPasses{"timed passes", "passes", 1.0, 1000.0, true
 inline constexpr Limit kVideoFps{"frame rate", "fps", 1.0, 60.0, true};
 // Cubes of a generated grid-of-cubes scene (`oflab-cli make-scene --cubes N`).
 inline constexpr Limit kSceneCubes{"cube count", "cubes", 1.0, 20000.0, true};
+// The flow field written for ParaView (`oflab-cli flow --vtk`, analysis/formats/vtk_export.h):
+// the spacing of its grid, and the grid points one file may hold (13 doubles a point, so
+// at most 109 MB of arrays; an 8192 x 8192 image needs a step of 9 or more).
+inline constexpr Limit kVtkGridStep{"grid step", "px", 1.0, 1024.0, true};
+inline constexpr Limit kVtkGridPoints{"grid points", "points", 1.0, 1048576.0, true};
+// What one scene engine may hold (core/scene/scene_animator.h scene_memory_bytes: its layers and
+// texture copies with every polygon visible), MiB. A run holds two (the animator and its exact
+// baseline), so a scene within it plays within the 2 GB promise (manual/robustness.md).
+inline constexpr Limit kSceneEngineMemory{"scene engine memory", "MiB", 0.0, 768.0};
 // The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
 inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};
 // Live play rate, frames per second.

@@ -65,6 +65,7 @@ class PlaneScriptAnimator final : public Animator {
     if (!visible_) return {};
     LayerOutline outline;
     outline.level = level_;
+    outline.error_px = error_px_;
     outline.points = engine_->displayed_outline();
     if (outline.points.empty()) return {};
     return {outline};
@@ -96,6 +97,7 @@ class PlaneScriptAnimator final : public Animator {
   AnimationFrame report(const FrameReport& r) {
     visible_ = r.visible;
     level_ = r.level;
+    error_px_ = r.measured_error_px;
     image_current_ = false;
     AnimationFrame f;
     f.frame = r.frame;
@@ -127,7 +129,8 @@ class PlaneScriptAnimator final : public Animator {
   int frame_ = -1;
   bool visible_ = false;
   Level level_ = Level::kNone;
-  mutable Image image_;  // composed on demand from the engine's displayed layer
+  double error_px_ = 0.0;  // the shown layer's measured error, pixels
+  mutable Image image_;    // composed on demand from the engine's displayed layer
   mutable bool image_current_ = false;
 };
 

@@ -2,6 +2,9 @@
 // corrected: see manual/theory.md#errata, items 5, 6, 8, 9).
 #include "flow/basis.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace oflab {
 
 TaylorTerms taylor_terms(const PlanarFlowCoefficients& c) {
@@ -110,6 +113,29 @@ Vec2 taylor_flow_at(const TaylorTerms& t, const Vec2& p) {
                   0.5 * (t.v1_xx * x * x + 2.0 * t.v1_xy * x * y + t.v1_yy * y * y),
               t.v2 + t.v2_x * x + t.v2_y * y +
                   0.5 * (t.v2_xx * x * x + 2.0 * t.v2_xy * x * y + t.v2_yy * y * y));
+}
+
+TaylorTerms taylor_order_terms(const TaylorTerms& t, int order) {
+  TaylorTerms only;
+  switch (order) {
+    case 0:
+      only.v1 = t.v1;
+      only.v2 = t.v2;
+      return only;
+    case 1:
+      only.v1_x = t.v1_x;
+      only.v1_y = t.v1_y;
+      only.v2_x = t.v2_x;
+      only.v2_y = t.v2_y;
+      return only;
+    case 2:
+      only = t;
+      only.v1 = only.v2 = 0.0;
+      only.v1_x = only.v1_y = only.v2_x = only.v2_y = 0.0;
+      return only;
+  }
+  throw std::invalid_argument("taylor_order_terms: order " + std::to_string(order) +
+                              " is not 0, 1 or 2");
 }
 
 }  // namespace oflab

@@ -53,4 +53,9 @@ PlanarFlowCoefficients planar_coefficients(const PlanarBasisTerms& p);
 // The flow of arbitrary Taylor terms (quadratic polynomial) at centred offset p.
 Vec2 taylor_flow_at(const TaylorTerms& t, const Vec2& p);
 
+// The terms of one order alone, the others zero: order 0 the translation (v1, v2), 1 the
+// first-order (affine) derivatives, 2 the second-order (perspective) ones; their flows add
+// up to the flow of `t`. Throws std::invalid_argument for any other order.
+TaylorTerms taylor_order_terms(const TaylorTerms& t, int order);
+
 }  // namespace oflab

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
+#include "engine/limits.h"
 #include "flow/homography.h"
 #include "image/composite.h"
 
@@ -80,6 +83,31 @@ struct SceneEngine::PolygonState {
   }
 };
 
+double scene_memory_bytes(const Scene& scene, const Camera& camera) {
+  const auto pixels = [](int width, int height) { return static_cast<double>(width) * height; };
+  double bytes = 0.0;
+  for (const Image& t : scene.textures) bytes += 2.0 * 4.0 * pixels(t.width(), t.height());
+  const double layers = kLayerImagesPerPolygon * 4.0 * pixels(camera.width, camera.height);
+  for (const ScenePolygon& p : scene.polygons) {
+    const bool known = p.texture >= 0 && p.texture < static_cast<int>(scene.textures.size());
+    const Image* t = known ? &scene.textures[static_cast<std::size_t>(p.texture)] : nullptr;
+    bytes += layers + (t ? 4.0 * pixels(t->width(), t->height()) : 0.0);
+  }
+  return bytes;
+}
+
+std::string scene_memory_problem(const Scene& scene, const Camera& camera) {
+  const double mib = scene_memory_bytes(scene, camera) / (1024.0 * 1024.0);
+  const Limit& limit = limits::kSceneEngineMemory;
+  if (limit.allows(mib)) return "";
+  std::ostringstream text;
+  text << "the scene's " << scene.polygons.size() << " polygons at " << camera.width << " x "
+       << camera.height << " px may hold " << static_cast<long>(std::ceil(mib))
+       << " MiB of layers and textures, more than " << limit.maximum << " MiB (the " << limit.what
+       << " limit)";
+  return text.str();
+}
+
 SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings)
     : scene_(scene),
       camera_(camera),
@@ -106,6 +134,9 @@ SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSe
       throw std::invalid_argument("polygon " + std::to_string(i) + " ('" + scene.polygons[i].name +
                                   "'): " + p.field + ": " + p.message);
     }
+  }
+  if (const std::string problem = scene_memory_problem(scene, camera); !problem.empty()) {
+    throw std::invalid_argument(problem);
   }
   frustum_ = view_frustum(camera_, settings_.near, 1.0);
   bsp_ = BspTree(scene.polygons);
@@ -587,6 +618,9 @@ std::vector<LayerOutline> SceneEngine::outlines(const ViewerPose& view) const {
     listed[p] = 1;
     LayerOutline outline;
     outline.level = levels_[p];
+    outline.polygon = p;
+    outline.error_px =
+        status == PolygonStatus::kAnimated ? states_[p]->report.measured_error_px : 0.0;
     bool in_front = true;
     for (const Vec3& v : states_[p]->world_vertices) {
       const Vec3 r = to_view(view, v);

@@ -42,6 +42,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "engine/animator.h"
@@ -80,6 +81,18 @@ struct SceneSettings {
 enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped, kStarved };
 const char* polygon_status_name(PolygonStatus status);
 
+// The bytes a scene engine may hold for `scene` seen through `camera` when every polygon is
+// visible, estimated from the inputs alone before anything is allocated: per polygon its
+// engine's copy of its texture and kLayerImagesPerPolygon camera-sized layer images (the
+// rendered and the displayed layer), and per texture the scene's image and the engine's
+// scratch copy, 4 bytes a pixel.
+constexpr int kLayerImagesPerPolygon = 2;
+double scene_memory_bytes(const Scene& scene, const Camera& camera);
+// "" when scene_memory_bytes is within limits::kSceneEngineMemory; otherwise one phrase
+// naming the figure and the limit: "the scene's 1000 polygons at 1280 x 720 px may hold
+// 10240 MiB of layers and textures, more than 768 MiB (the scene engine memory limit)".
+std::string scene_memory_problem(const Scene& scene, const Camera& camera);
+
 // The engine of a scene, driven view by view by its caller. Not an Animator
 // (core/engine/animator.h), which owns its script: make_scene_animator plays a viewer script
 // through one SceneEngine (core/scene/viewer_script_animator.h).
@@ -87,7 +100,8 @@ class SceneEngine {
  public:
   // `scene` must outlive the animator. Builds the BSP tree. Throws std::invalid_argument
   // when a polygon has a problem (scene_polygon_problem), the camera is invalid, a
-  // setting is out of range, or the BSP tree would exceed BspTree::kMaxBspFragments.
+  // setting is out of range, the scene is over its memory (scene_memory_problem, checked
+  // before anything is allocated) or the BSP tree would exceed BspTree::kMaxBspFragments.
   SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings);
   ~SceneEngine();
   SceneEngine(const SceneEngine&) = delete;

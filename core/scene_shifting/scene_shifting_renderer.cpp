@@ -390,6 +390,7 @@ std::vector<LayerOutline> SceneShiftingRenderer::outlines(const ViewerPose& /*vi
     for (int p : layers_[slice].polygons) {
       LayerOutline outline;
       outline.level = layer_level(slice_report_.updates.at(slice));
+      outline.polygon = p;
       for (const Vec2& c : shown_corners(p)) outline.points.push_back(centred_to_pixel(camera_, c));
       if (!outline.points.empty()) result.push_back(std::move(outline));
     }

@@ -5,32 +5,9 @@
 namespace oflab {
 namespace {
 
-TaylorTerms translation_terms(const TaylorTerms& t) {
-  TaylorTerms only;
-  only.v1 = t.v1;
-  only.v2 = t.v2;
-  return only;
-}
-
-TaylorTerms first_order_terms(const TaylorTerms& t) {
-  TaylorTerms only;
-  only.v1_x = t.v1_x;
-  only.v1_y = t.v1_y;
-  only.v2_x = t.v2_x;
-  only.v2_y = t.v2_y;
-  return only;
-}
-
-TaylorTerms second_order_terms(const TaylorTerms& t) {
-  TaylorTerms only = t;
-  only.v1 = only.v2 = 0.0;
-  only.v1_x = only.v1_y = only.v2_x = only.v2_y = 0.0;
-  return only;
-}
-
 // Translation plus first order: the flow an affine warp reproduces.
 TaylorTerms affine_terms(const TaylorTerms& t) {
-  TaylorTerms only = first_order_terms(t);
+  TaylorTerms only = taylor_order_terms(t, 1);
   only.v1 = t.v1;
   only.v2 = t.v2;
   return only;
@@ -107,11 +84,11 @@ Vec2 flow_part_at(const FlowContext& context, FlowPart part, const Vec2& p) {
     case FlowPart::kFull:
       return exact_flow_at(context.camera, context.pose, context.motion, p);
     case FlowPart::kTranslation:
-      return taylor_flow_at(translation_terms(context.terms), p);
+      return taylor_flow_at(taylor_order_terms(context.terms, 0), p);
     case FlowPart::kFirstOrder:
-      return taylor_flow_at(first_order_terms(context.terms), p);
+      return taylor_flow_at(taylor_order_terms(context.terms, 1), p);
     case FlowPart::kSecondOrder:
-      return taylor_flow_at(second_order_terms(context.terms), p);
+      return taylor_flow_at(taylor_order_terms(context.terms, 2), p);
     case FlowPart::kExactMinusHomography:
       // The Taylor homography's flow d/dt H1(t) p at t = 0 is the quadratic flow_at
       // (core/flow/homography.h); for a plane the difference is rounding only.

@@ -4,13 +4,16 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QProgressDialog>
-#include <fstream>
+#include <filesystem>
 #include <sstream>
 
 #include "adapters/frame_images.h"
 #include "app/main_window.h"
 #include "app/screenshot.h"
+#include "formats/atomic_file.h"
+#include "formats/image_io.h"
 #include "formats/video_file.h"
+#include "formats/vtk_export.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
@@ -73,15 +76,14 @@ bool export_frames_png(MainWindow* window, const QString& directory, bool overwr
     return false;
   }
   QStringList written;  // removed again when the export stops early: no partial set
+  const Overwrite mode = overwrite ? Overwrite::kReplace : Overwrite::kRefuse;
   const bool ok = for_each_frame(window, error, [&](int k, const QImage& image) {
     const QString path =
         QDir(directory).filePath(QStringLiteral("frame-%1.png").arg(k, 4, 10, QChar('0')));
-    if (!overwrite && QFileInfo::exists(path)) {
-      *error = QStringLiteral("%1 exists; not overwritten").arg(path);
-      return false;
-    }
-    if (!image.save(path, "PNG")) {
-      *error = QStringLiteral("%1: cannot be written").arg(path);
+    try {
+      write_file_atomically(path.toStdString(), encode_png(image_from_qimage(image)), mode);
+    } catch (const FileWriteError& e) {
+      *error = QString::fromStdString(e.what());
       return false;
     }
     written << path;
@@ -109,21 +111,43 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
 }
 
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error) {
-  if (!overwrite && QFileInfo::exists(path)) {
-    *error = QStringLiteral("%1 exists; not overwritten").arg(path);
-    return false;
-  }
-  std::ostringstream csv;
+  const Overwrite mode = overwrite ? Overwrite::kReplace : Overwrite::kRefuse;
   try {
+    check_output_file(path.toStdString(), mode);
+    std::ostringstream csv;
     window->model()->animation()->write_csv(csv);
-  } catch (const std::exception& e) {  // a source that cannot be played
+    write_file_atomically(path.toStdString(), csv.str(), mode);
+  } catch (const std::exception& e) {  // a source that cannot be played, a failed write
     *error = QString::fromStdString(e.what());
     return false;
   }
-  std::ofstream out(path.toStdString());
-  out << csv.str();
-  if (!out) {
-    *error = QStringLiteral("%1: cannot be written").arg(path);
+  return true;
+}
+
+bool export_paraview_data(MainWindow* window, const QString& directory, bool overwrite,
+                          QString* error) {
+  namespace fs = std::filesystem;
+  try {
+    const std::string target = directory.toStdString();
+    AtomicDir out(target, overwrite ? Overwrite::kReplace : Overwrite::kRefuse);
+    const PlaneScene& scene = window->model()->scene()->scene();
+    write_file_inside(
+        (fs::path(out.path()) / "flow.vti").string(),
+        flow_field_vti(scene.camera,
+                       planar_flow_coefficients(scene.camera, scene.pose, scene.motion),
+                       kDefaultVtkGridStep),
+        (fs::path(target) / "flow.vti").string());
+    Animator* animator = window->model()->animation()->animator();
+    auto* view = qobject_cast<AnimationView*>(window->view(QStringLiteral("animation")));
+    if (animator && view && animator->frame() >= 0) {
+      VtkSeriesWriter series(out.path(), target);
+      series.add_frame({animator->frame(), &animator->camera(), &view->engine_image(),
+                        &view->exact_image(), animator->outlines()});
+      series.finish();
+    }
+    out.commit();
+  } catch (const std::exception& e) {  // a refused directory, a failed write
+    *error = QString::fromStdString(e.what());
     return false;
   }
   return true;

@@ -1,7 +1,8 @@
 // The window's exports: the animation view as numbered PNGs, a video (MP4, GIF or Ogg
-// Theora) or the per-frame CSV. File dialogs live in the window; these functions never
-// overwrite an existing file unless told to. (Sessions are the window model's state:
-// gui/models/window_state_file.h.)
+// Theora), the per-frame CSV or the current frame as ParaView data. File dialogs live in the
+// window; these functions never overwrite an existing file unless told to, and write each
+// file whole (analysis/formats/atomic_file.h: a temporary beside it, renamed into place). (Sessions
+// are the window model's state: gui/models/window_state_file.h.)
 #pragma once
 
 #include <QString>
@@ -29,5 +30,17 @@ bool export_video(MainWindow* window, const QString& path, bool overwrite, QStri
 // over its whole script, the exact re-render run alongside for the PSNR column. False with
 // *error for a scene source, an existing file or one that cannot be written.
 bool export_frame_csv(MainWindow* window, const QString& path, bool overwrite, QString* error);
+
+// The window's current frame as ParaView data (analysis/formats/vtk_export.h) in the
+// directory `directory`, written whole (a temporary directory beside it renamed into place;
+// a non-empty one is replaced whole only when `overwrite`): flow.vti, the flow field of the
+// scene model's current pose (camera, plane and motion as the flow view shows them; px/s on
+// a grid every kDefaultVtkGridStep px, centred pixels) and, when the animation view has a
+// source, its current frame as a one-step series: frame_NNNNN_shown.vti (the engine's
+// frame), _exact.vti (the exact panel's), _difference.vti, _layers.vtp and shown.pvd,
+// exact.pvd, difference.pvd, layers.pvd. False with *error naming the path and the reason
+// on any failure; the directory is then as it was.
+bool export_paraview_data(MainWindow* window, const QString& directory, bool overwrite,
+                          QString* error);
 
 }  // namespace oflab

@@ -544,6 +544,16 @@ void MainWindow::create_export_menu(QMenu* file) {
     QString error;
     if (!path.isEmpty() && !export_frame_csv(this, path, true, &error)) show_message(error);
   });
+  connect(exports->addAction(tr("ParaView data of this frame...")), &QAction::triggered, this,
+          [this] {
+            // A new (or empty) directory: an existing one is never replaced from the menu.
+            const QString dir = QFileDialog::getSaveFileName(
+                this, tr("New directory for the ParaView data"), QStringLiteral("oflab-paraview"));
+            QString error;
+            if (dir.isEmpty()) return;
+            if (!export_paraview_data(this, dir, false, &error)) return show_message(error);
+            statusBar()->showMessage(tr("Wrote the frame as ParaView data to %1").arg(dir), 15000);
+          });
 }
 
 void MainWindow::save_view_screenshot() {

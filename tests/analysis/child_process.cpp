@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "formats/datasets.h"
+#include "formats/scene_file.h"
 
 namespace oflab::testing {
 namespace {
@@ -94,6 +95,19 @@ std::vector<fs::path> write_degenerate_plane_scripts(const fs::path& dir) {
     std::ofstream(files.back()) << scripts[i].dump();
   }
   return files;
+}
+
+fs::path write_repeated_polygon_scene(const fs::path& dir) {
+  const fs::path shipped = resolve_scene_path("single-1");  // the shipped file
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(shipped));
+  scene["textures"]["tile"] =
+      fs::absolute(shipped.parent_path() / scene["textures"]["tile"].get<std::string>()).string();
+  const nlohmann::json square = scene["polygons"][0];
+  scene["polygons"] = nlohmann::json::array();
+  for (int i = 0; i < 1000; ++i) scene["polygons"].push_back(square);
+  const fs::path file = dir / "repeated-polygon.json";
+  std::ofstream(file) << scene.dump(2);
+  return file;
 }
 
 }  // namespace oflab::testing

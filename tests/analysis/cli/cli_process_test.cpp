@@ -161,6 +161,25 @@ TEST(HostileInputs, DegeneratePlanesAndCamerasEndWithin60sAnd2GB) {
 
 // ---- The last resort of main (oflab-cli's and oflab's) ----
 
+// The 93 KB scene of one polygon repeated 1000 times, played with the walk viewer
+// (1280 x 720): refused at once by the scene engine's memory limit, naming the figure and
+// the limit, instead of ending in bad_alloc at 2.8 GB. The figure: per polygon two layers of
+// 1280 x 720 x 4 bytes and its copy of the 128 x 128 tile, and two copies of the tile:
+// (7372800 + 65536) x 1000 + 131072 bytes = 7093.9 MiB.
+TEST(HostileInputs, ARepeatedPolygonSceneIsRefusedByTheMemoryLimitWithin60sAnd2GB) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-memory");
+  const fs::path scene = testing::write_repeated_polygon_scene(dir);
+  const std::vector<std::string> args = {"animate",  "--scene", scene.string(), "--script", "walk",
+                                         "--frames", "3",       "--quiet"};
+  expect_ends_cleanly(args, dir, "repeated polygon");
+  const testing::ChildResult r = testing::run_child(OFLAB_CLI_BINARY, args, dir, 2L << 30, 60.0);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err,
+            "oflab-cli animate: --scene: the scene's 1000 polygons at 1280 x 720 px may hold 7094 "
+            "MiB of layers and textures, more than 768 MiB (the scene engine memory limit)\n");
+  fs::remove_all(dir);
+}
+
 TEST(LastResort, AnEscapedExceptionIsOneLineAndTheInternalErrorCode) {
   std::ostringstream err;
   EXPECT_EQ(run_guarded(

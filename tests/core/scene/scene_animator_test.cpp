@@ -313,5 +313,42 @@ TEST(SceneEngine, JoinedFacesShowGapsInAffineModeOnly) {
   EXPECT_GE(gaps["affine"], 3);
 }
 
+// The memory estimate counted by hand: per polygon two 4-byte layers of the camera's size
+// and a copy of its 64 x 64 texture; two copies of the texture.
+TEST(SceneMemory, EstimateCountsLayersAndTextureCopiesPerPolygon) {
+  const Camera camera = make_camera(300.0, 320, 240);
+  std::vector<ScenePolygon> polygons;
+  for (int i = 0; i < 7; ++i)
+    polygons.push_back(square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
+  const Scene scene = scene_with(polygons);
+  EXPECT_DOUBLE_EQ(scene_memory_bytes(scene, camera),
+                   7.0 * (2 * 320 * 240 * 4 + 64 * 64 * 4) + 2.0 * 64 * 64 * 4);
+  EXPECT_EQ(scene_memory_problem(scene, camera), "");
+}
+
+// Over the limit the engine refuses before it allocates, naming the figure and the limit;
+// one polygon fewer than the limit allows is accepted (the control).
+TEST(SceneMemory, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
+  const Camera camera = make_camera(700.0, 1280, 720);
+  const double per_polygon = 2.0 * 1280 * 720 * 4 + 64 * 64 * 4;
+  const int fits = static_cast<int>((768.0 * 1024 * 1024 - 2.0 * 64 * 64 * 4) / per_polygon);
+  std::vector<ScenePolygon> polygons(
+      fits, square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
+  const Scene within = scene_with(polygons);
+  EXPECT_EQ(scene_memory_problem(within, camera), "");
+  EXPECT_NO_THROW(SceneEngine(within, camera, SceneSettings{}));
+  polygons.push_back(polygons.back());
+  const Scene over = scene_with(polygons);
+  try {
+    SceneEngine engine(over, camera, SceneSettings{});
+    FAIL() << "a scene over the memory limit was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the scene's " + std::to_string(fits + 1) +
+                  " polygons at 1280 x 720 px may hold 769 MiB of layers and textures, more "
+                  "than 768 MiB (the scene engine memory limit)");
+  }
+}
+
 }  // namespace
 }  // namespace oflab

@@ -1,17 +1,25 @@
 // The window's exports, as the File > Export menu runs them (the dialogs only choose the
 // path): numbered PNGs, the Ogg Theora video and the per-frame CSV of every source kind,
 // each one frame per frame of the animation, none overwriting an existing file unless told to.
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkXMLImageDataReader.h>
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "app/exports.h"
 #include "app/screenshot.h"
+#include "flow/flow_field.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
@@ -198,6 +206,69 @@ TEST_F(ExportTest, SceneAndSceneShiftingCsvsHaveTheSceneHeaderAndOneRowPerFrame)
               0u)
         << source.kind << ": " << header;
     EXPECT_EQ(rows, frames) << source.kind;
+  }
+}
+
+// File > Export > ParaView data: the flow of the scene model's pose and the current frame of
+// the animation view, read back with VTK's readers; an existing directory is kept.
+TEST_F(ExportTest, ParaViewDataHasTheFlowAndTheCurrentFrameAndKeepsAnExistingDirectory) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir);
+  window().model()->scene()->set_frame(3);
+  const QString out = dir.filePath("paraview");
+  QString error;
+  ASSERT_TRUE(export_paraview_data(&window(), out, false, &error)) << error.toStdString();
+
+  vtkNew<vtkXMLImageDataReader> flow;
+  flow->SetFileName((out + "/flow.vti").toStdString().c_str());
+  flow->Update();
+  vtkImageData* grid = flow->GetOutput();
+  ASSERT_GT(grid->GetNumberOfPoints(), 0);
+  // Against the projection of the 3D velocity of the plane point seen at the grid point
+  // nearest the principal point (on the plane: it faces the eye on the line of sight).
+  const PlaneScene& scene = window().model()->scene()->scene();
+  const vtkIdType k = grid->FindPoint(0.0, 0.0, 0.0);
+  double xyz[3];
+  grid->GetPoint(k, xyz);
+  const Vec2 want = exact_flow_at(scene.camera, scene.pose, scene.motion, Vec2(xyz[0], xyz[1]));
+  vtkDataArray* vectors = grid->GetPointData()->GetArray("flow");
+  EXPECT_NEAR(vectors->GetComponent(k, 0), want.x, 1e-9 * std::max(1.0, glm::length(want)));
+  EXPECT_NEAR(vectors->GetComponent(k, 1), want.y, 1e-9 * std::max(1.0, glm::length(want)));
+
+  vtkNew<vtkXMLImageDataReader> shown;
+  shown->SetFileName((out + "/frame_00003_shown.vti").toStdString().c_str());
+  shown->Update();
+  int dims[3];
+  shown->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 320);
+  EXPECT_EQ(dims[1], 240);
+  for (const char* name : {"exact", "difference", "layers"}) {
+    const QString pvd = read_all(out + "/" + name + ".pvd").c_str();
+    EXPECT_TRUE(pvd.contains("timestep=\"3\"")) << name;
+  }
+  const std::string before = read_all(out + "/flow.vti");
+  window().model()->scene()->set_frame(5);
+  EXPECT_FALSE(export_paraview_data(&window(), out, false, &error));
+  EXPECT_TRUE(error.contains("not empty")) << error.toStdString();
+  EXPECT_EQ(read_all(out + "/flow.vti"), before);
+  EXPECT_FALSE(QFileInfo::exists(out + "/frame_00005_shown.vti"));
+}
+
+// The CSV and the PNG frames go through the atomic writer: a device is never written (a plain
+// stream would write into /dev/full), and a successful export leaves no temporary file.
+TEST_F(ExportTest, CsvAndPngExportsAreWrittenWholeAndNeverIntoADevice) {
+  QTemporaryDir dir;
+  play_short_script(window(), dir, 3);
+  QString error;
+  EXPECT_FALSE(export_frame_csv(&window(), QStringLiteral("/dev/full"), true, &error));
+  EXPECT_TRUE(error.contains("not a regular file")) << error.toStdString();
+  const QString path = dir.filePath("frames.csv");
+  ASSERT_TRUE(export_frame_csv(&window(), path, false, &error)) << error.toStdString();
+  ASSERT_TRUE(export_frames_png(&window(), dir.filePath("png"), false, &error))
+      << error.toStdString();
+  for (const QString& folder : {dir.path(), dir.filePath("png")}) {
+    const QStringList left = QDir(folder).entryList({".*.tmp-*"}, QDir::Files | QDir::Hidden);
+    EXPECT_TRUE(left.isEmpty()) << left.join(", ").toStdString();
   }
 }
 

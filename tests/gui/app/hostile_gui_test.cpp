@@ -13,6 +13,7 @@
 // (cli.hostile_inputs_within_limits).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -97,6 +98,30 @@ TEST(HostileGuiInputs, DegeneratePlanesAndCamerasEndWithin60sAnd2GB) {
     expect_gui_ends_cleanly({"--script", file.string(), "--view", "animation"}, dir,
                             file.filename().string());
   }
+  fs::remove_all(dir);
+}
+
+// A scene the CLI refuses is refused by the window with exit status 2 and the CLI's message
+// (the 1000 repeated polygons, over the scene engine's memory limit at the walk
+// viewer's 1280 x 720): the same reader and the same check, not a screenshot of the default
+// scene with exit 0.
+TEST(HostileGuiInputs, ASceneTheCliRefusesIsExitTwoWithTheCliMessage) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui-memory");
+  give_children_a_runtime_dir(dir);
+  const fs::path scene = testing::write_repeated_polygon_scene(dir);
+  const std::string why =
+      "the scene's 1000 polygons at 1280 x 720 px may hold 7094 MiB of layers and textures, "
+      "more than 768 MiB (the scene engine memory limit)\n";
+  const testing::ChildResult gui = testing::run_child(
+      OFLAB_GUI_BINARY,
+      {"--scene", scene.string(), "--script", "walk", "--view", "animation", "--screenshot",
+       (dir / "shot.png").string(), "--frames", "2", "--size", "640", "480"},
+      dir, 2L << 30, testing::kHostileTimeLimitSeconds);
+  EXPECT_EQ(gui.code, 2) << gui.err;
+  EXPECT_FALSE(fs::exists(dir / "shot.png"));
+  ASSERT_GE(gui.err.size(), why.size()) << gui.err;
+  EXPECT_EQ(gui.err.substr(gui.err.size() - why.size()), why) << gui.err;
+  EXPECT_EQ(std::count(gui.err.begin(), gui.err.end(), '\n'), 1) << gui.err;
   fs::remove_all(dir);
 }
 
