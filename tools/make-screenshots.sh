@@ -68,7 +68,6 @@ for look in normal presentation; do
   screen=1920x1200 shot basis-1080-$look --view basis --size 1920 1080 --frames 30 $flag
   screen=1920x1200 shot slices-1080-$look --view slices --size 1920 1080 --frames 10 $flag
 done
-echo "make-screenshots: wrote $(ls "$out"/*.png | wc -l) images to $out"
 # The world view (the cause) at 1920 x 1080, normal and presentation, the cause-and-effect
 # layout and its lesson.
 screen=1920x1200 shot world-demo --view world --size 1920 1080 --frames 10
@@ -79,3 +78,4 @@ screen=1920x1200 shot world-scene --view world --scene four-cubes --script circl
 screen=1920x1200 shot cause-and-effect --cause-and-effect --size 1920 1080 --frames 10
 screen=1920x1200 shot lesson-where-the-flow-comes-from --lesson where-the-flow-comes-from \
   --size 1920 1080 --frames 0
+echo "make-screenshots: wrote $(ls "$out"/*.png | wc -l) images to $out"

@@ -69,9 +69,9 @@ std::array<unsigned char, 4> polygon_colour(PolygonStatus status, Level level) {
     }
     case PolygonStatus::kBackFacing:
     case PolygonStatus::kOutsideFrustum:
-      return {200, 200, 200, 60};
+      return {215, 215, 215, 255};
     case PolygonStatus::kHidden:
-      return {70, 70, 70, 220};
+      return {70, 70, 70, 255};
     case PolygonStatus::kStarved:
       return {0, 0, 0, 255};
   }
@@ -83,8 +83,8 @@ std::array<unsigned char, 4> polygon_colour(PolygonStatus status, Level level) {
 struct WorldView::Impl {
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
-  // The paths, drawn over everything else with the same camera: the plane covers most of
-  // its own path.
+  // The paths and the labels, drawn over everything else with the same camera: the plane
+  // covers most of its own path and the labels at its centre.
   vtkNew<vtkRenderer> overlay;
   // The viewer's frame in the world: identity for the plane, the viewer's pose in a scene.
   vtkNew<vtkMatrix4x4> viewer_matrix;
@@ -160,18 +160,15 @@ struct WorldView::Impl {
 WorldView::WorldView(WindowModel* window, QWidget* parent)
     : ViewPage(parent), window_(window), impl_(std::make_unique<Impl>()) {
   setObjectName(QStringLiteral("world_view"));
-  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
-  vtk_widget_->setObjectName(QStringLiteral("world_vtk"));
-  vtk_widget_->setRenderWindow(impl_->window);
   Impl& m = *impl_;
+  // No multisampling: on software OpenGL (llvmpipe) it costs most of the frame.
+  m.window->SetMultiSamples(0);
   m.window->SetNumberOfLayers(2);
   m.window->AddRenderer(m.renderer);
   m.overlay->SetLayer(1);
   m.overlay->InteractiveOff();
   m.overlay->SetActiveCamera(m.renderer->GetActiveCamera());
   m.window->AddRenderer(m.overlay);
-  vtkNew<vtkInteractorStyleTrackballCamera> style;
-  m.window->GetInteractor()->SetInteractorStyle(style);
 
   const ViewTheme& t = m.theme;
   vtkNew<vtkSphereSource> sphere;
@@ -190,8 +187,10 @@ WorldView::WorldView(WindowModel* window, QWidget* parent)
   m.plane = add_poly_actor(m.renderer, {1.0, 1.0, 1.0});
   m.plane_texture->SetInputData(m.texture_pixels);
   m.plane_texture->InterpolateOn();
+  // Opaque: translucent geometry would send every frame through VTK's order-independent
+  // transparency passes, full-window float buffers that software OpenGL fills slowly.
+  m.plane.actor->ForceOpaqueOn();
   m.plane.actor->SetTexture(m.plane_texture);
-  m.plane.actor->GetProperty()->SetOpacity(0.85);
   for (PolyActor* p : {&m.frustum, &m.image_plane}) p->actor->SetUserMatrix(m.viewer_matrix);
   m.plane_outline = add_poly_actor(m.renderer, t.outline);
   m.rays = add_poly_actor(m.renderer, rgbf(okabe_ito::kYellow));
@@ -203,6 +202,7 @@ WorldView::WorldView(WindowModel* window, QWidget* parent)
   m.polygons.actor->GetMapper()->ScalarVisibilityOn();
   m.polygons.actor->GetMapper()->SetScalarModeToUseCellData();
   m.polygons.actor->GetMapper()->SetColorModeToDirectScalars();
+  m.polygons.actor->ForceOpaqueOn();
   m.polygon_edges = add_poly_actor(m.renderer, t.outline);
   m.polygon_edges.actor->GetMapper()->SetInputDataObject(m.polygons.data);
   m.polygon_edges.actor->GetProperty()->SetRepresentationToWireframe();
@@ -210,12 +210,12 @@ WorldView::WorldView(WindowModel* window, QWidget* parent)
   m.omega = m.add_arrow(okabe_ito::kReddishPurple);
   m.normal = m.add_arrow(okabe_ito::kBlue);
   m.up = m.add_arrow(okabe_ito::kBluishGreen);
-  m.eye_label = add_label(m.renderer, "eye", t.text);
-  m.image_label = add_label(m.renderer, "image plane", t.text);
-  m.velocity_label = add_label(m.renderer, "V", rgbf(okabe_ito::kVermillion));
-  m.omega_label = add_label(m.renderer, "Omega", rgbf(okabe_ito::kReddishPurple));
-  m.normal_label = add_label(m.renderer, "N", rgbf(okabe_ito::kBlue));
-  m.up_label = add_label(m.renderer, "U", rgbf(okabe_ito::kBluishGreen));
+  m.eye_label = add_label(m.overlay, "eye", t.text);
+  m.image_label = add_label(m.overlay, "image plane", t.text);
+  m.velocity_label = add_label(m.overlay, "V", rgbf(okabe_ito::kVermillion));
+  m.omega_label = add_label(m.overlay, "Omega", rgbf(okabe_ito::kReddishPurple));
+  m.normal_label = add_label(m.overlay, "N", rgbf(okabe_ito::kBlue));
+  m.up_label = add_label(m.overlay, "U", rgbf(okabe_ito::kBluishGreen));
   m.caption->SetPosition(10, 10);
   m.caption->GetTextProperty()->SetVerticalJustificationToBottom();
   m.renderer->AddViewProp(m.caption);
@@ -227,7 +227,7 @@ WorldView::WorldView(WindowModel* window, QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(make_button_bar());
-  layout->addWidget(vtk_widget_, 1);
+  layout_ = layout;
 
   SceneModel* scene = window_->scene();
   connect(scene, &SceneModel::scene_changed, this, &WorldView::refresh);
@@ -267,11 +267,11 @@ QWidget* WorldView::make_button_bar() {
   row->addWidget(note_, 1);
   connect(reset, &QPushButton::clicked, this, [this] {
     reset_camera();
-    vtk_widget_->renderWindow()->Render();
+    if (vtk_widget_) vtk_widget_->renderWindow()->Render();
   });
   connect(eye, &QPushButton::clicked, this, [this] {
     view_from_camera();
-    vtk_widget_->renderWindow()->Render();
+    if (vtk_widget_) vtk_widget_->renderWindow()->Render();
   });
   return bar;
 }
@@ -286,19 +286,36 @@ void WorldView::set_part_shown(WorldPart part, bool shown) {
   refresh();
 }
 
+void WorldView::ensure_widget() {
+  // Made when first shown: a window holding an OpenGL widget is composed through OpenGL on
+  // every repaint, which slows every other view on software OpenGL, so a window whose world
+  // view was never opened keeps the plain composition.
+  if (vtk_widget_) return;
+  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
+  vtk_widget_->setObjectName(QStringLiteral("world_vtk"));
+  vtk_widget_->setRenderWindow(impl_->window);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  impl_->window->GetInteractor()->SetInteractorStyle(style);
+  layout_->addWidget(vtk_widget_, 1);
+  vtk_widget_->show();
+}
+
 void WorldView::refresh() {
   dirty_ = true;
   if (!isVisible()) return;
+  ensure_widget();
   update_now();
-  vtk_widget_->renderWindow()->Render();
+  vtk_widget_->renderWindow()->Render();  // the widget shows it when it next paints
 }
 
 void WorldView::showEvent(QShowEvent* event) {
   ViewPage::showEvent(event);
+  ensure_widget();
   if (dirty_) refresh();
 }
 
 QImage WorldView::render_image() {
+  ensure_widget();
   if (dirty_) update_now();
   vtk_widget_->renderWindow()->Render();
   return vtk_widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
@@ -349,7 +366,8 @@ void WorldView::reset_camera() {
   camera->SetViewUp(up.x, up.y, up.z);
   camera->SetViewAngle(30.0);
   m.renderer->ResetCamera();
-  camera->Zoom(1.25);
+  // Closer in a wide view; a narrow one (the cause-and-effect layout) keeps the whole width.
+  camera->Zoom(1.6 * std::clamp(m.renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0));
   m.renderer->ResetCameraClippingRange();
 }
 
@@ -529,14 +547,14 @@ void WorldView::Impl::update_plane(const SceneModel& scene) {
   if (exact) copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels);
   char text[400];
   std::snprintf(text, sizeof text,
-                "Frame %d, t = %.2f s. The eye looks along +Z; the image plane is drawn at "
+                "The eye looks along +Z; the image plane is drawn at "
                 "depth %.2f (f = %.0f px scaled to the scene).\n"
                 "Omega turns about the eye, the viewer's origin (the theory's convention); "
                 "V is the velocity of the body point at the eye.\n"
                 "Path of the plane's centre: past thick, future thin. Rays: eye to the plane's "
                 "corners through their images.",
-                scene.frame(), scene.time(), depth, camera.focal_px);
-  caption->SetInput(text);
+                depth, camera.focal_px);
+  if (text != std::string(caption->GetInput() ? caption->GetInput() : "")) caption->SetInput(text);
 }
 
 void WorldView::Impl::update_scene(AnimationModel& animation) {
@@ -567,14 +585,13 @@ void WorldView::Impl::update_scene(AnimationModel& animation) {
   copy_frame_pixels(animator->image(), frame_pixels);
   char text[400];
   std::snprintf(text, sizeof text,
-                "Frame %d. The viewer walks through the scene; its image plane shows the "
+                "The viewer walks through the scene; its image plane shows the "
                 "engine's frame.\n"
                 "Polygons in their level's colour (translate sky blue, affine green, "
                 "perspective orange, re-render vermillion); culled pale, hidden dark.\n"
                 "V and Omega: the scene's motion seen by the viewer (Omega about the eye). "
-                "Viewer's path: past thick, future thin.",
-                frame);
-  caption->SetInput(text);
+                "Viewer's path: past thick, future thin.");
+  if (text != std::string(caption->GetInput() ? caption->GetInput() : "")) caption->SetInput(text);
 }
 
 void WorldView::Impl::show_parts() {
@@ -613,7 +630,6 @@ void WorldView::Impl::apply_theme() {
     p->actor->GetProperty()->SetColor(t.outline[0], t.outline[1], t.outline[2]);
     p->actor->GetProperty()->SetLineWidth(thin);
   }
-  frustum.actor->GetProperty()->SetOpacity(0.8);
   path_future.actor->GetProperty()->SetColor(t.muted[0], t.muted[1], t.muted[2]);
   path_future.actor->GetProperty()->SetLineWidth(1.5 * thin);
   path_past.actor->GetProperty()->SetLineWidth(thick);

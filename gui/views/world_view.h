@@ -30,6 +30,7 @@
 #include "views/view_page.h"
 
 class QLabel;
+class QBoxLayout;
 class QVTKOpenGLNativeWidget;
 class vtkRenderer;
 
@@ -83,7 +84,10 @@ class WorldView : public ViewPage {
   void update_now();
 
   WindowModel* window_;
-  QVTKOpenGLNativeWidget* vtk_widget_;
+  void ensure_widget();
+
+  QVTKOpenGLNativeWidget* vtk_widget_ = nullptr;  // made when first shown (ensure_widget)
+  QBoxLayout* layout_ = nullptr;
   QLabel* note_ = nullptr;
   std::unique_ptr<Impl> impl_;
   bool dirty_ = true;

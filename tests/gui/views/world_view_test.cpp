@@ -76,7 +76,7 @@ TEST(WorldGeometry, ArrowLengthsStayReadableAndOrdered) {
   EXPECT_DOUBLE_EQ(arrow_length(5.0, 2.0, 1.0), 1.0);  // beyond the largest: clamped
 }
 
-Vec3 apply(const std::array<double, 16>& m, const Vec3& p) {
+Vec3 transform_point(const std::array<double, 16>& m, const Vec3& p) {
   Vec3 out;
   for (int r = 0; r < 3; ++r) {
     out[r] = m[size_t(4 * r)] * p.x + m[size_t(4 * r + 1)] * p.y + m[size_t(4 * r + 2)] * p.z +
@@ -88,16 +88,17 @@ Vec3 apply(const std::array<double, 16>& m, const Vec3& p) {
 TEST(WorldGeometry, ArrowMatrixMapsTheUnitArrowOntoTheVector) {
   const Vec3 origin(0.2, -0.1, 2.0), direction(-0.7, 0.7, 0.1);
   const std::array<double, 16> m = arrow_matrix(origin, direction, 0.4);
-  const Vec3 tail = apply(m, Vec3(0.0)), tip = apply(m, Vec3(1, 0, 0));
+  const Vec3 tail = transform_point(m, Vec3(0.0)), tip = transform_point(m, Vec3(1, 0, 0));
   EXPECT_NEAR(glm::length(tail - origin), 0.0, 1e-15);
   EXPECT_NEAR(glm::length(tip - (origin + 0.4 * glm::normalize(direction))), 0.0, 1e-12);
-  const Vec3 y = apply(m, Vec3(0, 1, 0)) - origin, z = apply(m, Vec3(0, 0, 1)) - origin;
+  const Vec3 y = transform_point(m, Vec3(0, 1, 0)) - origin,
+             z = transform_point(m, Vec3(0, 0, 1)) - origin;
   EXPECT_NEAR(glm::dot(y, tip - origin), 0.0, 1e-12);  // round: a uniform, rigid scale
   EXPECT_NEAR(glm::dot(z, y), 0.0, 1e-12);
   EXPECT_NEAR(glm::length(y), 0.4, 1e-12);
   EXPECT_NEAR(glm::dot(glm::cross(tip - origin, y), z), 0.4 * 0.4 * 0.4, 1e-12);  // proper
   const std::array<double, 16> none = arrow_matrix(origin, Vec3(0.0), 0.4);
-  EXPECT_NEAR(glm::length(apply(none, Vec3(1, 1, 1)) - origin), 0.0, 1e-15);
+  EXPECT_NEAR(glm::length(transform_point(none, Vec3(1, 1, 1)) - origin), 0.0, 1e-15);
 }
 
 TEST(WorldGeometry, ViewerToWorldUndoesTheViewerPose) {
@@ -105,7 +106,8 @@ TEST(WorldGeometry, ViewerToWorldUndoesTheViewerPose) {
   const Vec3 world(0.3, -1.2, 4.5);
   const Vec3 viewer = pose.rotation * world + pose.translation;
   EXPECT_NEAR(glm::length(viewer_to_world(pose, viewer) - world), 0.0, 1e-12);
-  EXPECT_NEAR(glm::length(apply(viewer_to_world_matrix(pose), viewer) - world), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(transform_point(viewer_to_world_matrix(pose), viewer) - world), 0.0,
+              1e-12);
   EXPECT_NEAR(glm::length(viewer_to_world(pose, Vec3(0.0)) - Vec3(1.0, 2.0, -3.0)), 0.0, 1e-12);
 }
 
@@ -127,26 +129,9 @@ class WorldViewTest : public WindowTest {
     while (vtkProp* p = collection->GetNextProp()) all.insert(p);
     return all;
   }
-  // The rendered view compared with baselines/<name>.png at kWorldBaselineWidth.
+  // The rendered view compared with baselines/<name>.png (image_checks.h).
   void expect_matches_baseline(const QImage& rendered, const QString& name) {
-    ASSERT_FALSE(rendered.isNull());
-    const QString path = QStringLiteral(OFLAB_GUI_BASELINES "/%1.png").arg(name);
-    const QSize size(kWorldBaselineWidth,
-                     kWorldBaselineWidth * rendered.height() / rendered.width());
-    if (qEnvironmentVariableIsSet("OFLAB_UPDATE_BASELINES")) {
-      ASSERT_TRUE(scaled_rgb(rendered, size).save(path, "PNG"));
-      GTEST_SKIP() << "baseline rewritten: " << path.toStdString();
-    }
-    const QString actual_path = output_dir() + "/" + name + "-actual.png";
-    const QImage baseline(path);
-    if (baseline.isNull()) {
-      scaled_rgb(rendered, size).save(actual_path, "PNG");
-      FAIL() << "missing baseline " << path.toStdString();
-    }
-    const double psnr = psnr_db(baseline, scaled_rgb(rendered, baseline.size()));
-    if (psnr < kBaselinePsnrDb) scaled_rgb(rendered, baseline.size()).save(actual_path, "PNG");
-    EXPECT_GE(psnr, kBaselinePsnrDb) << name.toStdString() << " differs from its baseline; "
-                                     << "rendered image written to " << actual_path.toStdString();
+    test::expect_matches_baseline(rendered, name, kWorldBaselineWidth);
   }
   // The world view's baselines keep the thin lines and arrows of a 1920-pixel view visible.
   static constexpr int kWorldBaselineWidth = 640;
@@ -191,8 +176,9 @@ TEST_F(WorldViewTest, FrustumPlaneBothArrowsAndPathAreEachDrawn) {
       world().set_part_shown(part, false);
       const QImage without = world().render_image();
       world().set_part_shown(part, true);
-      // At least 1500 pixels of a 1920 x 1080 window belong to each part.
-      EXPECT_GT(changed_fraction(full, without) * full.width() * full.height(), 1500.0)
+      // At least 800 pixels of a 1920 x 1080 window belong to each part (the thinnest, the
+      // path, has over 1000; a part not drawn changes none).
+      EXPECT_GT(changed_fraction(full, without) * full.width() * full.height(), 800.0)
           << "part " << int(part) << (presentation ? " in presentation mode" : "");
     }
   }
