@@ -68,6 +68,16 @@ for look in normal presentation; do
   screen=1920x1200 shot basis-1080-$look --view basis --size 1920 1080 --frames 30 $flag
   screen=1920x1200 shot slices-1080-$look --view slices --size 1920 1080 --frames 10 $flag
 done
+# The world view (the cause) at 1920 x 1080, normal and presentation, the cause-and-effect
+# layout and its lesson.
+screen=1920x1200 shot world-demo --view world --size 1920 1080 --frames 10
+screen=1920x1200 shot world-demo-presentation --view world --presentation --size 1920 1080 \
+  --frames 10
+screen=1920x1200 shot world-scene --view world --scene four-cubes --script circle \
+  --size 1920 1080 --frames 40
+screen=1920x1200 shot cause-and-effect --cause-and-effect --size 1920 1080 --frames 10
+screen=1920x1200 shot lesson-where-the-flow-comes-from --lesson where-the-flow-comes-from \
+  --size 1920 1080 --frames 0
 # Each step of each lesson, as the lesson-claims check leaves the window after measuring
 # that step's claims (manual/lessons.md shows them).
 steps=$(mktemp -d)

@@ -7,6 +7,7 @@
 #include <QByteArray>
 #include <QElapsedTimer>
 #include <QWindow>
+#include <algorithm>
 #include <ostream>
 
 #include "app/lesson_check.h"
@@ -87,24 +88,31 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
 int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out) {
   // The animation view unless another view is asked for: it runs the engine, renders the
   // exact frame (core's exact render, or VTK's with --animation-exact vtk) and paints both
-  // panels every frame.
-  const QString name = options.view.empty() || options.view == "window"
+  // panels every frame. With --cause-and-effect, the layout's two views draw every frame.
+  const bool layout = window->model()->cause_and_effect();
+  const QString name = layout ? QStringLiteral("cause-and-effect layout (world + flow)")
+                       : options.view.empty() || options.view == "window"
                            ? QStringLiteral("animation")
                            : QString::fromStdString(options.view);
-  window->show_view(name);
+  if (!layout) window->show_view(name);
   SceneModel* model = window->model()->scene();
   for (int i = 0; i < 3; ++i) window->play_frames(1);  // warm up caches and shaders
   QElapsedTimer timer;
   timer.start();
-  ViewPage* page = window->current_view();
   for (int i = 0; i < options.benchmark; ++i) {
     model->advance(1);  // the visible view refreshes on scene_changed
     QApplication::processEvents();
   }
   const double seconds = timer.nsecsElapsed() * 1e-9;
-  const QSize size = window->current_view()->size();  // the view's area
-  out << "oflab: " << name.toStdString() << " view, " << options.benchmark << " frames in "
-      << seconds << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
+  QSize size = window->current_view()->size();  // the view's area
+  if (layout) {
+    size = QSize(0, 0);
+    for (const ViewPage* page : window->layout_views()) {
+      size = QSize(size.width() + page->width(), std::max(size.height(), page->height()));
+    }
+  }
+  out << "oflab: " << name.toStdString() << (layout ? ", " : " view, ") << options.benchmark
+      << " frames in " << seconds << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
       << " frames per second (window " << options.width << " x " << options.height << ", view "
       << size.width() << " x " << size.height() << ")\n";
   return 0;

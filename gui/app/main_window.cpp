@@ -14,6 +14,8 @@
 #include <QMenuBar>
 #include <QScrollArea>
 #include <QSlider>
+#include <QSplitter>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
@@ -56,9 +58,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* layout = new QVBoxLayout(central);
   layout->setContentsMargins(4, 4, 4, 4);
   layout->addWidget(create_banners());
-  tabs_ = new QTabWidget(central);
+  stack_ = new QStackedWidget(central);
+  tabs_ = new QTabWidget(stack_);
   tabs_->setObjectName(QStringLiteral("view_tabs"));
-  layout->addWidget(tabs_, 1);
+  stack_->addWidget(tabs_);
+  layout->addWidget(stack_, 1);
   setCentralWidget(central);
 
   for (const ViewEntry& entry : view_table()) add_view(entry);
@@ -95,6 +99,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(model_, &WindowModel::presentation_changed, this, &MainWindow::show_presentation);
   connect(model_, &WindowModel::play_changed, this, &MainWindow::show_play);
   connect(model_, &WindowModel::lesson_changed, this, &MainWindow::show_lesson);
+  connect(model_, &WindowModel::layout_changed, this, &MainWindow::show_layout);
   connect(model_, &WindowModel::scene_panel_changed, this,
           [this] { scene_dock_->setVisible(model_->scene_panel()); });
   // Closed with its title bar's button (not hidden by a minimised window): the model hears.
@@ -178,6 +183,13 @@ void MainWindow::create_actions() {
   presentation_action_->setToolTip(
       tr("Light backgrounds, large text and thick lines for a projector (F11)"));
   connect(presentation_action_, &QAction::toggled, model_, &WindowModel::set_presentation);
+  layout_action_ = new QAction(tr("Cause and effect"), this);
+  layout_action_->setCheckable(true);
+  layout_action_->setShortcut(Qt::Key_F8);
+  layout_action_->setToolTip(
+      tr("The world view (the cause) beside the flow view (the effect), instead of the tabs "
+         "(F8)"));
+  connect(layout_action_, &QAction::toggled, model_, &WindowModel::set_cause_and_effect);
 }
 
 void MainWindow::create_menus() {
@@ -203,6 +215,7 @@ void MainWindow::create_menus() {
   connect(quit, &QAction::triggered, this, &QWidget::close);
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(presentation_action_);
+  view->addAction(layout_action_);
   QAction* panel = scene_dock_->toggleViewAction();
   panel->setText(tr("Scene panel"));
   panel->setShortcut(Qt::Key_F9);
@@ -426,6 +439,7 @@ void MainWindow::show_presentation() {
   scene_dock_->setFont(QApplication::font());
   style_banners();
   for (const Tab& tab : views_) tab.page->set_theme(view_theme(on));
+  for (ViewPage* page : layout_views_) page->set_theme(view_theme(on));
   // Let the scene panel grow with the fonts instead of clipping its controls.
   fit_scene_panel();
 }
@@ -450,14 +464,36 @@ void MainWindow::set_external_clock(bool on) {
   external_clock_ = on;
   show_play();
   for (const Tab& tab : views_) tab.page->set_external_clock(on);
+  for (ViewPage* page : layout_views_) page->set_external_clock(on);
 }
 
 void MainWindow::play_frames(int frames) {
   for (int i = 0; i < frames; ++i) {
     model_->scene()->advance(1);
     for (const Tab& tab : views_) tab.page->step_animation();
+    for (ViewPage* page : layout_views_) page->step_animation();
     QApplication::processEvents();
   }
+}
+
+void MainWindow::show_layout() {
+  const bool on = model_->cause_and_effect();
+  if (on && !cause_effect_) {  // made on first use, from the view table
+    cause_effect_ = new QSplitter(Qt::Horizontal, stack_);
+    cause_effect_->setObjectName(QStringLiteral("cause_and_effect"));
+    for (const char* name : {"world", "flow"}) {
+      ViewPage* page = find_view_entry(name)->make(model_);
+      page->setFocusPolicy(Qt::StrongFocus);
+      page->set_theme(view_theme(model_->presentation()));
+      page->set_external_clock(external_clock_);
+      cause_effect_->addWidget(page);
+      layout_views_.push_back(page);
+    }
+    stack_->addWidget(cause_effect_);
+  }
+  if (cause_effect_) stack_->setCurrentWidget(on ? static_cast<QWidget*>(cause_effect_) : tabs_);
+  const QSignalBlocker block(layout_action_);
+  layout_action_->setChecked(on);
 }
 
 QImage MainWindow::grab_window_image() { return grab_with_vtk(this); }

@@ -20,6 +20,8 @@ class QToolBar;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QSplitter;
+class QStackedWidget;
 class QTabWidget;
 class QTimer;
 
@@ -55,6 +57,10 @@ class MainWindow : public QMainWindow {
   bool show_view(const QString& name);
   ViewPage* current_view() const;
   QString current_view_name() const;
+  // The views of the cause-and-effect layout (the flow view and the world view, made from the
+  // view table beside each other), empty while the layout was never shown. The layout shows
+  // instead of the tabs while the model's cause_and_effect() is on (View menu, F8).
+  const std::vector<ViewPage*>& layout_views() const { return layout_views_; }
 
   // Applies a lesson's state (WindowModel::apply); its narrative shows as the caption.
   void apply_lesson(const Lesson& lesson);
@@ -122,6 +128,7 @@ class MainWindow : public QMainWindow {
   void show_presentation();
   void show_play();
   void show_lesson();
+  void show_layout();
   // The lesson's next (+1) or previous (-1) step, if it has one (PageDown, PageUp).
   void step_lesson(int delta);
   void clear_message();
@@ -135,6 +142,10 @@ class MainWindow : public QMainWindow {
   WindowModel* model_;
   SceneControls* controls_;
   QTabWidget* tabs_;
+  QStackedWidget* stack_ = nullptr;  // the tabs, or the cause-and-effect layout
+  QSplitter* cause_effect_ = nullptr;
+  std::vector<ViewPage*> layout_views_;
+  QAction* layout_action_ = nullptr;
   QDockWidget* scene_dock_ = nullptr;
   QSlider* scrub_ = nullptr;
   QComboBox* speed_box_ = nullptr;

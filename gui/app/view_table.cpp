@@ -5,12 +5,14 @@
 #include "views/basis_view.h"
 #include "views/flow_view.h"
 #include "views/slices_view.h"
+#include "views/world_view.h"
 
 namespace oflab {
 
 const std::vector<ViewEntry>& view_table() {
   static const std::vector<ViewEntry> table = {
       {"flow", "Flow field", [](WindowModel* m) -> ViewPage* { return new FlowView(m); }},
+      {"world", "World (the cause)", [](WindowModel* m) -> ViewPage* { return new WorldView(m); }},
       {"basis", "Basis deformations", [](WindowModel* m) -> ViewPage* { return new BasisView(m); }},
       {"animation", "Animation, side by side",
        [](WindowModel* m) -> ViewPage* { return new AnimationView(m); }},

@@ -58,6 +58,7 @@ WindowState WindowModel::state() const {
   s.zoom = zoom_;
   s.presentation = presentation_;
   s.scene_panel = scene_panel_;
+  s.cause_and_effect = cause_and_effect_;
   s.play_rate = play_rate_;
   s.playing = playing_;
   s.frame = scene_->frame();
@@ -132,6 +133,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   zoom_ = s.zoom;
   presentation_ = s.presentation;
   scene_panel_ = s.scene_panel;
+  cause_and_effect_ = s.cause_and_effect;
   play_rate_ = s.play_rate;
   playing_ = s.playing;
   view_ = s.view;
@@ -142,6 +144,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   emit panels_changed();
   emit presentation_changed();
   emit scene_panel_changed();
+  emit layout_changed();
   emit play_changed();
   emit lesson_changed();
   emit view_changed();
@@ -230,6 +233,12 @@ void WindowModel::set_scene_panel(bool shown) {
   if (shown == scene_panel_) return;
   scene_panel_ = shown;
   emit scene_panel_changed();
+}
+
+void WindowModel::set_cause_and_effect(bool shown) {
+  if (shown == cause_and_effect_) return;
+  cause_and_effect_ = shown;
+  emit layout_changed();
 }
 
 bool WindowModel::set_play_rate(int frames_per_second) {

@@ -72,6 +72,9 @@ class WindowModel : public QObject {
   void set_presentation(bool on);
   bool scene_panel() const { return scene_panel_; }
   void set_scene_panel(bool shown);
+  // The cause-and-effect layout (WindowState::cause_and_effect) is shown.
+  bool cause_and_effect() const { return cause_and_effect_; }
+  void set_cause_and_effect(bool shown);
   int play_rate() const { return play_rate_; }
   bool set_play_rate(int frames_per_second);  // refused outside limits::kPlayRate
   bool playing() const { return playing_; }
@@ -96,7 +99,8 @@ class WindowModel : public QObject {
   void panels_changed();
   void presentation_changed();
   void scene_panel_changed();
-  void play_changed();  // the play rate or playing
+  void layout_changed();  // the cause-and-effect layout was shown or hidden
+  void play_changed();    // the play rate or playing
   void lesson_changed();
   void input_rejected(const QString& message);
 
@@ -118,6 +122,7 @@ class WindowModel : public QObject {
   double zoom_ = 1.0;
   bool presentation_ = false;
   bool scene_panel_ = true;
+  bool cause_and_effect_ = false;
   int play_rate_ = 30;
   bool playing_ = false;
   std::string lesson_;

@@ -151,8 +151,8 @@ bool operator==(const WindowState& a, const WindowState& b) {
          a.display == b.display && a.compared == b.compared &&
          a.exact_renderer == b.exact_renderer && a.zoom == b.zoom &&
          a.presentation == b.presentation && a.scene_panel == b.scene_panel &&
-         a.play_rate == b.play_rate && a.playing == b.playing && a.frame == b.frame &&
-         a.lesson == b.lesson;
+         a.cause_and_effect == b.cause_and_effect && a.play_rate == b.play_rate &&
+         a.playing == b.playing && a.frame == b.frame && a.lesson == b.lesson;
 }
 
 std::string window_state_problem(const WindowState& s) {

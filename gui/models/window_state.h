@@ -55,9 +55,12 @@ struct WindowState {
 
   bool presentation = false;  // large text and thick lines for a projector
   bool scene_panel = true;    // the scene panel (plane, motion, camera) is shown
-  int play_rate = 30;         // live play, frames per second (limits::kPlayRate)
-  bool playing = false;       // the scene's motion plays
-  int frame = 0;              // the frame shown (limits::kFrameCount)
+  // The cause-and-effect layout: the world view (the cause) beside the flow view (the
+  // effect) instead of the tabs.
+  bool cause_and_effect = false;
+  int play_rate = 30;    // live play, frames per second (limits::kPlayRate)
+  bool playing = false;  // the scene's motion plays
+  int frame = 0;         // the frame shown (limits::kFrameCount)
   // The lesson whose narrative shows above the views (gui/models/lessons.h); empty for none.
   std::string lesson;
   // The lesson's step on screen: 0 for its narrative, k for its k-th step (whose text is the

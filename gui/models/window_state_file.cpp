@@ -297,6 +297,7 @@ json window_state_object(const WindowState& s) {
       {"play_rate", s.play_rate},
       {"presentation", s.presentation},
       {"scene_panel", s.scene_panel},
+      {"cause_and_effect", s.cause_and_effect},
       {"lesson", s.lesson},
       {"lesson_step", s.lesson_step},
       {"flow", flow_object(s.flow)},
@@ -329,9 +330,10 @@ std::string window_state_to_json(const WindowState& state) {
 WindowState read_window_state_object(const json& j, const std::string& origin,
                                      const std::string& part, WindowState s) {
   const Where w{origin, part};
-  only_fields(j, w,
-              {"view", "frame", "playing", "play_rate", "presentation", "scene_panel", "lesson",
-               "lesson_step", "flow", "basis", "plane", "script", "texture", "animation"});
+  only_fields(
+      j, w,
+      {"view", "frame", "playing", "play_rate", "presentation", "scene_panel", "cause_and_effect",
+       "lesson", "lesson_step", "flow", "basis", "plane", "script", "texture", "animation"});
   const auto name = [&](const char* f) { return text(j, w, f); };
   const auto flag = [&](const char* f) { return boolean(j, w, f); };
   optional(j, "view", &s.view, name);
@@ -340,6 +342,7 @@ WindowState read_window_state_object(const json& j, const std::string& origin,
   optional(j, "play_rate", &s.play_rate, [&](const char* f) { return whole(j, w, f); });
   optional(j, "presentation", &s.presentation, flag);
   optional(j, "scene_panel", &s.scene_panel, flag);
+  optional(j, "cause_and_effect", &s.cause_and_effect, flag);
   optional(j, "lesson", &s.lesson, name);
   optional(j, "lesson_step", &s.lesson_step, [&](const char* f) { return whole(j, w, f); });
   if (j.contains("flow")) s.flow = read_flow(object(j, w, "flow"), origin, s.flow);

@@ -40,6 +40,13 @@ double changed_fraction(const QImage& a, const QImage& b, int threshold = 8);
 // Directory for images written by failing tests (created on demand).
 QString output_dir();
 
+// Compares `rendered` with baselines/<name>.png (tests/gui/baselines) at the baseline's size
+// with kBaselinePsnrDb, failing the test below it or when the baseline is missing; either way
+// writes the rendered image, scaled, to output_dir() as NAME-actual.png. With
+// OFLAB_UPDATE_BASELINES set, rewrites the baseline `width` pixels wide instead and reports
+// the test as skipped, never as passed.
+void expect_matches_baseline(const QImage& rendered, const QString& name, int width);
+
 // frame_agreement (gui/adapters/frame_images.h) of two camera frames. When the IoU is
 // below `min_iou` or the PSNR below `min_psnr_db`, writes both, flattened over black, to
 // output_dir() as NAME-LABEL_A.png and NAME-LABEL_B.png, so a failing test leaves them.

@@ -84,7 +84,7 @@ TEST(LaunchOptions, ViewNamesComeFromTheViewTable) {
     EXPECT_NE(launch_usage().find(entry.name + " (" + entry.title + ")"), std::string::npos)
         << entry.name;
   }
-  EXPECT_EQ(view_table().size(), 5u);
+  EXPECT_EQ(view_table().size(), 6u);
   EXPECT_EQ(screenshot_view_names().back(), "window");
   EXPECT_EQ(screenshot_view_names().size(), view_table().size() + 1);
   const std::string error = usage_error({"--view", "nowhere"});

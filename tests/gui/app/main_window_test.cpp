@@ -41,7 +41,7 @@ TEST_F(MainWindowTest, StartsOnTheDefaultDemoWithTheFlowViewInFront) {
   EXPECT_EQ(window().model()->scene()->scene().motion.velocity, demo.motion.velocity);
   EXPECT_EQ(window().current_view_name(), "flow");
   EXPECT_EQ(window().view_names(),
-            QStringList({"flow", "basis", "animation", "analysis", "slices"}));
+            QStringList({"flow", "world", "basis", "animation", "analysis", "slices"}));
   EXPECT_TRUE(window().message().isEmpty());
   // The planar basis row "tx" shows core's coefficient (2.0022 px/s).
   const PlanarFlowCoefficients k = planar_flow_coefficients(demo.camera, demo.pose, demo.motion);

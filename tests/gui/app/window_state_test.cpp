@@ -9,6 +9,7 @@
 #include <QCheckBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include "views/animation_view.h"
 #include "views/scene_controls.h"
 #include "views/slider_spin.h"
+#include "views/view_page.h"
 
 namespace oflab {
 namespace {
@@ -244,6 +246,48 @@ TEST(ScenePanel, HidesWhereALessonDoesNotUseItAndComesBackFromTheViewMenu) {
   window->apply_lesson(*find_lesson("flow-of-a-plane"));
   QApplication::processEvents();
   EXPECT_TRUE(dock->isVisible());
+}
+
+}  // namespace
+}  // namespace oflab
+
+namespace oflab {
+namespace {
+
+// F8 (View > Cause and effect) shows the world view beside the flow view instead of the tabs,
+// through the model, so a session keeps it; F8 again brings the tabs back.
+TEST(CauseAndEffect, F8ShowsTheWorldBesideTheFlowAndASessionKeepsIt) {
+  auto window = shown_window();
+  auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("view_tabs"));
+  ASSERT_NE(tabs, nullptr);
+  EXPECT_TRUE(window->layout_views().empty());
+  QAction* layout = nullptr;
+  for (QAction* a : window->findChildren<QAction*>()) {
+    if (a->text() == QStringLiteral("Cause and effect")) layout = a;
+  }
+  ASSERT_NE(layout, nullptr);
+  EXPECT_EQ(layout->shortcut(), QKeySequence(Qt::Key_F8));
+  layout->trigger();
+  QApplication::processEvents();
+  EXPECT_TRUE(window->model()->cause_and_effect());
+  ASSERT_EQ(window->layout_views().size(), 2u);
+  EXPECT_EQ(window->layout_views()[0]->objectName(), QStringLiteral("world_view"));
+  EXPECT_EQ(window->layout_views()[1]->objectName(), QStringLiteral("flow_view"));
+  for (const ViewPage* page : window->layout_views()) EXPECT_TRUE(page->isVisible());
+  EXPECT_FALSE(tabs->isVisible());
+  EXPECT_LT(window->layout_views()[0]->geometry().right(),
+            window->layout_views()[1]->geometry().left());  // the cause on the left
+  const WindowState state = window->model()->state();
+  EXPECT_TRUE(parse_session(window_state_to_json(state), "s.json").cause_and_effect);
+  layout->trigger();
+  QApplication::processEvents();
+  EXPECT_FALSE(window->model()->cause_and_effect());
+  EXPECT_TRUE(tabs->isVisible());
+  QString error;
+  ASSERT_TRUE(window->model()->apply(state, &error)) << error.toStdString();  // the session
+  QApplication::processEvents();
+  EXPECT_FALSE(tabs->isVisible());
+  EXPECT_TRUE(window->layout_views()[0]->isVisible());
 }
 
 }  // namespace

@@ -63,6 +63,7 @@ WindowState random_state(std::mt19937& rng) {
   s.exact_renderer = coin() ? "core" : "vtk";
   s.zoom = in(0.25, 8.0);
   s.presentation = coin();
+  s.cause_and_effect = coin();
   s.play_rate = 1 + pick(240);
   s.playing = coin();
   s.frame = pick(1000000);
@@ -112,6 +113,19 @@ TEST(WindowStateFile, StatesDifferingInOneFieldAreNotEqual) {
   t = s;
   t.compared.push_back(t.compared.front() == "exact" ? "affine" : "exact");
   EXPECT_FALSE(t == s);
+  t = s;
+  t.cause_and_effect = !t.cause_and_effect;
+  EXPECT_FALSE(t == s);
+}
+
+TEST(WindowStateFile, TheCauseAndEffectLayoutIsAFlagOfTheFile) {
+  WindowState s;
+  s.cause_and_effect = true;
+  EXPECT_TRUE(parse_session(window_state_to_json(s), "s.json").cause_and_effect);
+  const std::string error =
+      error_after([](json& j) { j["cause_and_effect"] = "yes"; });  // not a boolean
+  EXPECT_NE(error.find("s.json"), std::string::npos) << error;
+  EXPECT_NE(error.find("cause_and_effect"), std::string::npos) << error;
 }
 
 TEST(WindowStateFile, WrittenFileReadsBackAndIsReplacedOnlyWhenAsked) {

@@ -20,26 +20,9 @@ constexpr int kBaselineWidth = 320;
 
 class BaselineTest : public WindowTest {
  protected:
-  // Compares `rendered` with baselines/<name>.png.
+  // Compares `rendered` with baselines/<name>.png (image_checks.h).
   void expect_matches_baseline(const QImage& rendered, const QString& name) {
-    ASSERT_FALSE(rendered.isNull());
-    const QString path = QStringLiteral(OFLAB_GUI_BASELINES "/%1.png").arg(name);
-    const QSize size(kBaselineWidth, kBaselineWidth * rendered.height() / rendered.width());
-    if (qEnvironmentVariableIsSet("OFLAB_UPDATE_BASELINES")) {
-      ASSERT_TRUE(scaled_rgb(rendered, size).save(path, "PNG"));
-      GTEST_SKIP() << "baseline rewritten: " << path.toStdString();
-    }
-    const QString actual_path = output_dir() + "/" + name + "-actual.png";
-    const QImage baseline(path);
-    if (baseline.isNull()) {
-      scaled_rgb(rendered, size).save(actual_path, "PNG");
-      FAIL() << "missing baseline " << path.toStdString() << "; rendered image written to "
-             << actual_path.toStdString();
-    }
-    const double psnr = psnr_db(baseline, scaled_rgb(rendered, baseline.size()));
-    if (psnr < kBaselinePsnrDb) scaled_rgb(rendered, baseline.size()).save(actual_path, "PNG");
-    EXPECT_GE(psnr, kBaselinePsnrDb) << name.toStdString() << " differs from its baseline; "
-                                     << "rendered image written to " << actual_path.toStdString();
+    test::expect_matches_baseline(rendered, name, kBaselineWidth);
   }
 };
 

@@ -1,0 +1,184 @@
+#include "adapters/world_actors.h"
+
+#include <vtkActor.h>
+#include <vtkBillboardTextActor3D.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cstring>
+
+namespace oflab {
+namespace {
+
+// The points of `data` as `points`, reusing the existing vtkPoints.
+void set_points(vtkPolyData* data, const std::vector<Vec3>& points) {
+  vtkPoints* stored = data->GetPoints();
+  if (!stored) {
+    data->SetPoints(vtkSmartPointer<vtkPoints>::New());
+    stored = data->GetPoints();
+  }
+  stored->SetNumberOfPoints(vtkIdType(points.size()));
+  for (size_t k = 0; k < points.size(); ++k) {
+    stored->SetPoint(vtkIdType(k), points[k].x, points[k].y, points[k].z);
+  }
+  stored->Modified();
+}
+
+vtkCellArray* reset_cells(vtkPolyData* data, bool lines) {
+  vtkCellArray* cells = lines ? data->GetLines() : data->GetPolys();
+  if (!cells || cells == data->GetVerts()) {  // an empty poly data shares a dummy array
+    auto fresh = vtkSmartPointer<vtkCellArray>::New();
+    lines ? data->SetLines(fresh) : data->SetPolys(fresh);
+    cells = fresh;
+  }
+  cells->Reset();
+  return cells;
+}
+
+}  // namespace
+
+PolyActor add_poly_actor(vtkRenderer* renderer, const RgbF& colour) {
+  PolyActor p{vtkSmartPointer<vtkPolyData>::New(), vtkSmartPointer<vtkActor>::New()};
+  p.data->SetPoints(vtkSmartPointer<vtkPoints>::New());
+  p.data->SetLines(vtkSmartPointer<vtkCellArray>::New());
+  p.data->SetPolys(vtkSmartPointer<vtkCellArray>::New());
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(p.data);
+  mapper->ScalarVisibilityOff();
+  p.actor->SetMapper(mapper);
+  p.actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  p.actor->GetProperty()->LightingOff();
+  renderer->AddActor(p.actor);
+  return p;
+}
+
+void set_polyline(vtkPolyData* data, const std::vector<Vec3>& points, bool closed) {
+  set_points(data, points);
+  vtkCellArray* cells = reset_cells(data, true);
+  if (points.size() >= 2) {
+    cells->InsertNextCell(vtkIdType(points.size() + (closed ? 1 : 0)));
+    for (size_t k = 0; k < points.size(); ++k) cells->InsertCellPoint(vtkIdType(k));
+    if (closed) cells->InsertCellPoint(0);
+  }
+  cells->Modified();
+  data->Modified();
+}
+
+void set_segments(vtkPolyData* data, const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
+  std::vector<Vec3> points;
+  for (size_t k = 0; k < from.size() && k < to.size(); ++k) {
+    points.push_back(from[k]);
+    points.push_back(to[k]);
+  }
+  set_points(data, points);
+  vtkCellArray* cells = reset_cells(data, true);
+  for (vtkIdType k = 0; k + 1 < vtkIdType(points.size()); k += 2) {
+    const vtkIdType ends[2] = {k, k + 1};
+    cells->InsertNextCell(2, ends);
+  }
+  cells->Modified();
+  data->Modified();
+}
+
+void set_textured_quad(vtkPolyData* data, const std::array<Vec3, 4>& corners) {
+  const bool built = data->GetNumberOfPolys() == 1;
+  set_points(data, std::vector<Vec3>(corners.begin(), corners.end()));
+  if (built) {
+    data->Modified();
+    return;
+  }
+  vtkCellArray* cells = reset_cells(data, false);
+  const vtkIdType quad[4] = {0, 1, 2, 3};
+  cells->InsertNextCell(4, quad);
+  auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+  tcoords->SetNumberOfComponents(2);
+  const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const auto& t : uv) tcoords->InsertNextTuple2(t[0], t[1]);
+  data->GetPointData()->SetTCoords(tcoords);
+  data->Modified();
+}
+
+void set_coloured_polygons(vtkPolyData* data, const std::vector<std::vector<Vec3>>& polygons,
+                           const std::vector<std::array<unsigned char, 4>>& colours) {
+  std::vector<Vec3> points;
+  for (const auto& polygon : polygons) points.insert(points.end(), polygon.begin(), polygon.end());
+  set_points(data, points);
+  vtkCellArray* cells = reset_cells(data, false);
+  vtkIdType next = 0;
+  for (const auto& polygon : polygons) {
+    cells->InsertNextCell(vtkIdType(polygon.size()));
+    for (size_t k = 0; k < polygon.size(); ++k) cells->InsertCellPoint(next++);
+  }
+  cells->Modified();
+  auto scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  scalars->SetNumberOfComponents(4);
+  data->GetCellData()->SetScalars(scalars);
+  set_cell_colours(data, colours);
+}
+
+void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned char, 4>>& colours) {
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(data->GetCellData()->GetScalars());
+  if (!scalars) return;
+  scalars->SetNumberOfTuples(vtkIdType(colours.size()));
+  for (size_t k = 0; k < colours.size(); ++k) {
+    scalars->SetTypedTuple(vtkIdType(k), colours[k].data());
+  }
+  scalars->Modified();
+  data->Modified();
+}
+
+void copy_frame_pixels(const Image& image, vtkImageData* pixels) {
+  int* dims = pixels->GetDimensions();
+  if (dims[0] != image.width() || dims[1] != image.height() ||
+      pixels->GetNumberOfScalarComponents() != 3 || !pixels->GetPointData()->GetScalars()) {
+    pixels->SetDimensions(image.width(), image.height(), 1);
+    pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  }
+  auto* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
+  for (int y = 0; y < image.height(); ++y) {
+    const Pixel* row = image.row(y);
+    for (int x = 0; x < image.width(); ++x, out += 3) {
+      out[0] = row[x].r;  // premultiplied: the colour over black
+      out[1] = row[x].g;
+      out[2] = row[x].b;
+    }
+  }
+  pixels->Modified();
+}
+
+void copy_texture_pixels(const QImage& image, vtkImageData* pixels) {
+  const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888);
+  pixels->SetDimensions(rgba.width(), rgba.height(), 1);
+  pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  auto* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
+  for (int y = 0; y < rgba.height(); ++y) {
+    std::memcpy(out + size_t(y) * size_t(rgba.width()) * 4, rgba.constScanLine(y),
+                size_t(rgba.width()) * 4);
+  }
+  pixels->Modified();
+}
+
+vtkSmartPointer<vtkBillboardTextActor3D> add_label(vtkRenderer* renderer, const std::string& text,
+                                                   const RgbF& colour) {
+  auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
+  label->SetInput(text.c_str());
+  label->GetTextProperty()->SetColor(colour[0], colour[1], colour[2]);
+  label->GetTextProperty()->SetJustificationToLeft();
+  label->GetTextProperty()->SetVerticalJustificationToBottom();
+  label->GetTextProperty()->BoldOn();
+  renderer->AddActor(label);
+  return label;
+}
+
+}  // namespace oflab

@@ -1,0 +1,97 @@
+// The world view, "World (the cause)": the 3D scene whose motion makes the flow the other
+// views show, drawn by VTK in a QVTKOpenGLNativeWidget.
+//
+// For the scene panel's plane (and any single-plane source) the world is the viewer frame
+// (gui/adapters/world_geometry.h): the eye at the origin and the camera's frustum out to the
+// image plane (drawn at half the plane's nearest depth, d / f world units per pixel) showing
+// the exact frame (the window model's exact renderer, gui/adapters/exact_frames.h); the
+// textured plane at its pose with its up U and normal N; V (the velocity of the body point at
+// the eye, eq. 21) and Omega (the rotation about the eye, the theory's convention, said on
+// screen) as labelled arrows at the plane's centre, each scaled between 0.35 and 1 of 0.6
+// plane diagonals by its size over the loop; the rays from the eye through the plane's
+// corners and where they cross the image plane; and the path of the plane's centre over the
+// whole loop, past solid and thick, future thin and muted. It follows the scene model, as the
+// flow view does.
+//
+// For a scene source (a viewer script walking through polygons) the world is the scene's:
+// every polygon in its layer's current level colour (gui/adapters/palette.h), culled polygons
+// pale and hidden ones dark, the viewer's path past and future, the viewer's frustum and
+// image plane (the engine's frame) at its pose, and the scene's motion seen by the viewer as
+// the V and Omega arrows at the eye. It follows the animation model.
+//
+// Mouse: orbit (left), pan (middle or Shift+left), zoom (wheel or right), VTK's trackball
+// camera. "Reset view" frames the whole world; "View from the camera" looks through the eye.
+// Every actor is made once: frames replace points, transforms and pixels in place.
+#pragma once
+
+#include <memory>
+
+#include "flow/geometry.h"
+#include "views/view_page.h"
+
+class QLabel;
+class QBoxLayout;
+class QVTKOpenGLNativeWidget;
+class vtkRenderer;
+
+namespace oflab {
+
+class WindowModel;
+
+// What the world view draws, part by part (set_part_shown; all shown by default).
+enum class WorldPart { kFrustum, kImagePlane, kPlane, kVelocity, kOmega, kRays, kPath, kScene };
+constexpr int kWorldPartCount = 8;
+
+class WorldView : public ViewPage {
+  Q_OBJECT
+
+ public:
+  // Shows the window model's scene; the model must outlive the view.
+  explicit WorldView(WindowModel* window, QWidget* parent = nullptr);
+  ~WorldView() override;
+
+  QImage render_image() override;
+  void set_theme(const ViewTheme& theme) override;
+  double smallest_text_px() const override;
+
+  // The VTK camera framing everything drawn, seen from behind, above and left of the eye.
+  void reset_camera();
+  // The VTK camera at the eye (the viewer's in a scene) with the camera's field of view.
+  void view_from_camera();
+
+  // Hides or shows a part (screenshots that leave a part out; the image tests' controls).
+  void set_part_shown(WorldPart part, bool shown);
+
+  // The renderer holding every actor (tests count its actors and check they stay the same).
+  vtkRenderer* renderer() const;
+  // True when a scene source plays (the scene's world), false for the plane's viewer frame.
+  bool scene_mode() const;
+  // The drawn plane's centre (plane mode) or the viewer's eye (scene mode), world units, as
+  // of the last update.
+  Vec3 drawn_centre() const;
+  // The depth of the image plane, world units, as of the last update.
+  double image_depth() const;
+
+  // Brings the drawing up to date with the model and renders when the view is visible.
+  void refresh();
+
+ protected:
+  void showEvent(QShowEvent* event) override;
+
+ private:
+  struct Impl;
+  QWidget* make_button_bar();
+  void update_now();
+
+  WindowModel* window_;
+  void ensure_widget();
+
+  QVTKOpenGLNativeWidget* vtk_widget_ = nullptr;  // made when first shown (ensure_widget)
+  QBoxLayout* layout_ = nullptr;
+  QLabel* note_ = nullptr;
+  std::unique_ptr<Impl> impl_;
+  bool dirty_ = true;
+  bool camera_placed_ = false;
+};
+
+}  // namespace oflab
