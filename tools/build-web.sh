@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the browser page (manual/web.md): core/ compiled to WebAssembly by Debian's
+# emscripten through the CMake preset `web`, assembled into one self-contained
+# build-web/oflab-web.html. Installs emscripten and chromium (for tests/web) when they are
+# missing, and nothing when they are present. Idempotent; prints the page's size.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(emscripten chromium node-acorn libglm-dev nlohmann-json3-dev libstb-dev cmake)
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [[ ${#missing[@]} -gt 0 ]]; then
+  echo "oflab: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq \
+    --no-install-recommends "${missing[@]}" > /dev/null
+fi
+
+# Debian's emscripten runs its JavaScript optimiser with the machine's node, which finds
+# Debian's acorn module only through NODE_PATH.
+export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+# Debian's package ships emscripten's system libraries compiled (a frozen cache), so the
+# first build compiles only oflab.
+emcmake cmake --preset web > build-web-configure.log 2>&1 || {
+  cat build-web-configure.log >&2
+  exit 1
+}
+cmake --build build-web -j"$(nproc 2>/dev/null || echo 2)"
+
+page=build-web/oflab-web.html
+size=$(stat -c %s "$page")
+limit=$((8 * 1024 * 1024))
+echo "oflab: $page, $size bytes"
+if [[ $size -gt $limit ]]; then
+  echo "oflab: $page is larger than the 8 MB limit ($size > $limit bytes)" >&2
+  exit 1
+fi
