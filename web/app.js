@@ -19,6 +19,15 @@ const app = {
 
 function $(id) { return document.getElementById(id); }
 
+// Sets an element's HTML only when it changed, so a view redrawn every frame does not make
+// the browser lay the page out again for the same table.
+function setHtml(element, html) {
+  if (element.dataset.html !== html) {
+    element.innerHTML = html;
+    element.dataset.html = html;
+  }
+}
+
 // Shows `text` in the message bar (and keeps the page working); empty text hides it.
 function showMessage(text) {
   const bar = $('message');

@@ -29,9 +29,10 @@ const basisView = {
       if (!term.negligible) ++active;
       this.drawTile(ctx, term, x, y, tile, style);
     });
-    $('basis-note').textContent = problem
+    const note = problem
       ? `No flow now: ${problem}`
       : `${active} of 12 terms are active (non-zero within ${kBasisRadiusPx} px of the expansion point).`;
+    setHtml($('basis-note'), escapeHtml(note));
   },
 
   drawTile(ctx, term, x, y, size, style) {
@@ -49,10 +50,12 @@ const basisView = {
     const cx = x + size / 2;
     const cy = y + size / 2 + 6 * style.scale;
     ctx.strokeStyle = term.negligible ? '#4a4f57' : '#e6c35a';
+    ctx.beginPath();
     for (let i = 0; i < g.length; i += 4) {
-      drawArrow(ctx, cx + k * g[i], cy + k * g[i + 1], cx + k * (g[i] + s * g[i + 2]),
+      addArrow(ctx, cx + k * g[i], cy + k * g[i + 1], cx + k * (g[i] + s * g[i + 2]),
         cy + k * (g[i + 1] + s * g[i + 3]), 3 * style.line);
     }
+    ctx.stroke();
     ctx.fillStyle = term.negligible ? '#6a7079' : '#e6e6e6';
     ctx.font = style.font(13);
     ctx.fillText(term.symbol, x + 6, y + 16 * style.scale);

@@ -63,7 +63,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("streamlines", &oflab::streamlines)
       .function("basisJson", &WebSession::basis_json)
       .function("comparisonProblem", &WebSession::comparison_problem)
-      .function("comparisonJson", &WebSession::comparison_json)
+      .function("updateComparison", &WebSession::update_comparison)
       .function("runCount", &WebSession::run_count)
       .function("frameWidth", &WebSession::frame_width)
       .function("frameHeight", &WebSession::frame_height)

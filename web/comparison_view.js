@@ -3,7 +3,7 @@
 // and the exact projection play the same frames of the source, side by side; each panel
 // shows its frame with the shown layer's outline in the colour of the engine's level, and
 // under each policy the difference from the exact frame as a heat map. The frames, levels,
-// errors and heat maps come from core (Session.runPixels, .runHeat, .comparisonJson).
+// errors and heat maps come from core (Session.updateComparison, .runPixels, .runHeat).
 
 const kLevelColours = {
   none: '#9aa0a6', translate: '#5aa9e6', affine: '#6cc070', perspective: '#e6c35a', rerender: '#e0645a',
@@ -34,26 +34,30 @@ const comparisonView = {
   },
 
   draw(ctx, w, h, style) {
-    const info = JSON.parse(app.session.comparisonJson());
-    if (info.problem) {
-      drawCentredText(ctx, w, h, info.problem, style);
-      $('runs').innerHTML = '';
+    const problem = app.session.comparisonProblem();
+    if (problem) {
+      drawCentredText(ctx, w, h, problem, style);
+      setHtml($('runs'), '');
       return;
     }
-    const n = info.runs.length;
+    // Panels fitted side by side, frames above and heat maps below; core samples the
+    // frames at the panels' size, so each is copied to the canvas pixel for pixel.
+    const n = app.session.runCount();
+    const [fw, fh] = [app.session.frameWidth(), app.session.frameHeight()];
     const pad = 8;
     const label = 20 * style.scale;
     const panelW = (w - pad * (n + 1)) / n;
-    const k = Math.min(panelW / info.width, (h / 2 - label - pad * 2) / info.height);
-    const pw = k * info.width;
-    const ph = k * info.height;
+    const k = Math.min(panelW / fw, (h / 2 - label - pad * 2) / fh);
+    const pw = Math.max(1, Math.floor(k * fw));
+    const ph = Math.max(1, Math.floor(k * fh));
+    const info = JSON.parse(app.session.updateComparison(pw, ph));
     info.runs.forEach((run, i) => {
-      const x = pad + i * (panelW + pad) + (panelW - pw) / 2;
-      const y = pad + label;
+      const x = Math.round(pad + i * (panelW + pad) + (panelW - pw) / 2);
+      const y = Math.round(pad + label);
       const exact = i === n - 1;
-      ctx.drawImage(this.blit(2 * i, app.session.runPixels(i), info.width, info.height), x, y, pw, ph);
+      ctx.drawImage(this.blit(2 * i, app.session.runPixels(i), pw, ph), x, y);
       for (const outline of run.outlines) {
-        tracePolygon(ctx, outline.points.map(([px, py]) => [x + k * px, y + k * py]));
+        tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
         ctx.strokeStyle = kLevelColours[outline.level];
         ctx.lineWidth = 2 * style.line;
         ctx.stroke();
@@ -63,8 +67,8 @@ const comparisonView = {
       ctx.fillText(exact ? 'exact projection' : `${run.policy}: ${run.level}, ${run.measured_error_px.toFixed(2)} px`,
         x, pad + 14 * style.scale, pw);
       if (exact) return;
-      const hy = y + ph + label + pad;
-      ctx.drawImage(this.blit(2 * i + 1, app.session.runHeat(i), info.width, info.height), x, hy, pw, ph);
+      const hy = Math.round(y + ph + label + pad);
+      ctx.drawImage(this.blit(2 * i + 1, app.session.runHeat(i), pw, ph), x, hy);
       ctx.fillText(`difference from exact: largest ${run.heat_max} grey levels, PSNR ${run.psnr_db.toFixed(1)} dB`,
         x, hy - 6, pw);
     });
@@ -85,14 +89,26 @@ const comparisonView = {
     }
     ly += 10;
     const barW = Math.min(width, 256);
-    for (let i = 0; i < barW; ++i) {
-      const [r, g, b] = Module.heatColour(i / (barW - 1));
-      ctx.fillStyle = `rgb(${r},${g},${b})`;
-      ctx.fillRect(x + i, ly, 1, 14);
-    }
+    ctx.drawImage(this.colourBar(), x, ly, barW, 14);
     ctx.fillStyle = '#e6e6e6';
     ctx.fillText('0', x, ly + 30 * style.scale);
     ctx.fillText(`${info.heat_full_scale}+ grey levels`, x + barW - 110 * style.scale, ly + 30 * style.scale);
+  },
+
+  // The heat map's ramp from core, 256 x 1 pixels, made once.
+  colourBar() {
+    if (!this.bar) {
+      this.bar = document.createElement('canvas');
+      this.bar.width = 256;
+      this.bar.height = 1;
+      const bctx = this.bar.getContext('2d');
+      for (let i = 0; i < 256; ++i) {
+        const [r, g, b] = Module.heatColour(i / 255);
+        bctx.fillStyle = `rgb(${r},${g},${b})`;
+        bctx.fillRect(i, 0, 1, 1);
+      }
+    }
+    return this.bar;
   },
 
   fillTable(info) {
@@ -106,7 +122,7 @@ const comparisonView = {
     for (const level of levels) {
       html += `<tr><td>${level}</td>${runs.map((r) => `<td>${(100 * r.level_shares[level]).toFixed(0)}%</td>`).join('')}</tr>`;
     }
-    $('runs').innerHTML = html;
+    setHtml($('runs'), html);
   },
 };
 app.views.animation = comparisonView;

@@ -99,13 +99,19 @@ const flowView = {
     if (!(largest > 0)) return;
     const s = 0.9 * spacing / largest;
     ctx.lineWidth = 1.2 * style.line;
+    // One path per colour: the magnitude in kArrowColours steps.
+    const kArrowColours = 12;
+    const paths = Array.from({ length: kArrowColours }, () => new Path2D());
     for (let i = 0; i < a.length; i += 4) {
-      const m = Math.hypot(a[i + 2], a[i + 3]) / largest;
-      ctx.strokeStyle = `hsl(${200 - 160 * Math.min(1, m)}, 80%, 60%)`;
+      const m = Math.min(1, Math.hypot(a[i + 2], a[i + 3]) / largest);
       const [x0, y0] = fit.map(a[i], a[i + 1]);
       const [x1, y1] = fit.map(a[i] + s * a[i + 2], a[i + 1] + s * a[i + 3]);
-      drawArrow(ctx, x0, y0, x1, y1, 4 * style.line);
+      addArrow(paths[Math.min(kArrowColours - 1, Math.floor(m * kArrowColours))], x0, y0, x1, y1, 4 * style.line);
     }
+    paths.forEach((path, c) => {
+      ctx.strokeStyle = `hsl(${200 - 160 * (c + 0.5) / kArrowColours}, 80%, 60%)`;
+      ctx.stroke(path);
+    });
   },
 
   drawStreamlines(ctx, fit, part, spacing, style) {
@@ -154,10 +160,10 @@ const flowView = {
       ['shear', b.shear, '1/s'], ['rotation', b.rotation, '1/s'], ['px', b.px, '1/(px s)'], ['py', b.py, '1/(px s)'],
       ['Coefficients', '', '']];
     for (const key of ['j11', 'j12', 'j21', 'j22']) rows.push([key, c[key], flow.units[key]]);
-    $('coefficients').innerHTML = rows.map(([name, value, unit]) => (unit === ''
+    setHtml($('coefficients'), rows.map(([name, value, unit]) => (unit === ''
       ? `<tr><th colspan="3">${name}</th></tr>`
       : `<tr><td>${name}</td><td class="${Math.abs(value) < 1e-12 ? 'zero' : ''}">${formatNumber(value)}</td>` +
-        `<td class="unit">${unit}</td></tr>`)).join('');
+        `<td class="unit">${unit}</td></tr>`)).join(''));
   },
 };
 app.views.flow = flowView;
@@ -180,20 +186,20 @@ function tracePolygon(ctx, points) {
   ctx.closePath();
 }
 
-function drawArrow(ctx, x0, y0, x1, y1, head) {
+// An arrow from (x0, y0) to (x1, y1) with a head of `head` pixels (at most 0.4 of its
+// length) added to `path` (a Path2D or the context's current path).
+function addArrow(path, x0, y0, x1, y1, head) {
   const len = Math.hypot(x1 - x0, y1 - y0);
-  ctx.beginPath();
-  ctx.moveTo(x0, y0);
-  ctx.lineTo(x1, y1);
+  path.moveTo(x0, y0);
+  path.lineTo(x1, y1);
   if (len > 2) {
     const ux = (x1 - x0) / len;
     const uy = (y1 - y0) / len;
     const hl = Math.min(head, 0.4 * len);
-    ctx.moveTo(x1 - hl * (ux - 0.5 * uy), y1 - hl * (uy + 0.5 * ux));
-    ctx.lineTo(x1, y1);
-    ctx.lineTo(x1 - hl * (ux + 0.5 * uy), y1 - hl * (uy - 0.5 * ux));
+    path.moveTo(x1 - hl * (ux - 0.5 * uy), y1 - hl * (uy + 0.5 * ux));
+    path.lineTo(x1, y1);
+    path.lineTo(x1 - hl * (ux + 0.5 * uy), y1 - hl * (uy - 0.5 * ux));
   }
-  ctx.stroke();
 }
 
 function drawCentredText(ctx, w, h, text, style) {

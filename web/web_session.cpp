@@ -30,6 +30,8 @@ using json = nlohmann::json;
 
 // The page's background behind transparent frame pixels (the style sheet's panel colour).
 constexpr std::uint8_t kBackground[3] = {24, 27, 31};
+// Largest side of a comparison panel, display pixels.
+constexpr int kMaxPanelSide = 4096;
 // Grey levels of difference at the top of the heat map's ramp.
 constexpr int kHeatFullScale = 64;
 // The policy whose runs draw the exact projection: every frame rendered exactly.
@@ -165,7 +167,6 @@ int WebSession::frame_count() const {
 void WebSession::seek(int frame) {
   const int n = frame_count();
   state_.frame = ((frame % n) + n) % n;
-  advance_runs_to(state_.frame);
 }
 
 PlaneScene WebSession::scene() const {
@@ -318,7 +319,7 @@ void WebSession::rebuild_comparison() {
       run.last = run.animator->start();
       runs_.push_back(std::move(run));
     }
-    finish_runs_frame();
+    sampled_frame_ = -1;
   } catch (const std::exception& e) {
     runs_.clear();
     comparison_problem_ = e.what();
@@ -343,15 +344,28 @@ void WebSession::advance_runs_to(int frame) {
       run.max_error_px = std::max(run.max_error_px, run.last.max_measured_error_px);
     }
   }
-  finish_runs_frame();
 }
 
-void WebSession::finish_runs_frame() {
+void WebSession::finish_runs_frame(int panel_width, int panel_height) {
   const Image& exact = runs_.back().animator->image();
+  const DisplaySampling sampling =
+      display_sampling(exact.width(), exact.height(), panel_width, panel_height);
   for (WebRun& run : runs_) {
-    flatten_into(run.animator->image(), kBackground[0], kBackground[1], kBackground[2], run.pixels);
-    run.heat_max = difference_heat_map_into(run.animator->image(), exact, kHeatFullScale, run.heat);
+    const Image& image = run.animator->image();
+    flatten_into(image, sampling, kBackground, run.pixels);
+    if (&run == &runs_.back()) {
+      // The exact run against itself: no heat map is shown, and the figures are known.
+      run.heat.clear();
+      run.heat_max = 0;
+      run.psnr_db = kIdenticalPsnrDb;
+      continue;
+    }
+    difference_heat_map_into(image, exact, kHeatFullScale, sampling, run.heat);
+    run.heat_max = largest_difference(image, exact);
+    run.psnr_db = psnr_db(image, exact);
   }
+  sampled_frame_ = runs_.front().animator->frame();
+  sampled_size_ = {panel_width, panel_height};
 }
 
 int WebSession::frame_width() const {
@@ -361,16 +375,25 @@ int WebSession::frame_height() const {
   return runs_.empty() ? 0 : runs_.front().animator->camera().height;
 }
 
-std::string WebSession::comparison_json() const {
+std::string WebSession::update_comparison(int panel_width, int panel_height) {
+  panel_width = std::clamp(panel_width, 1, kMaxPanelSide);
+  panel_height = std::clamp(panel_height, 1, kMaxPanelSide);
+  if (!runs_.empty()) {
+    advance_runs_to(state_.frame);
+    if (sampled_frame_ != runs_.front().animator->frame() ||
+        sampled_size_ != glm::ivec2(panel_width, panel_height)) {
+      finish_runs_frame(panel_width, panel_height);
+    }
+  }
   json out;
   out["problem"] = comparison_problem_;
   out["frame"] = state_.frame;
   out["frames"] = frame_count();
   out["width"] = frame_width();
   out["height"] = frame_height();
+  out["panel"] = {panel_width, panel_height};
   out["heat_full_scale"] = kHeatFullScale;
   json runs = json::array();
-  const Image* exact = runs_.empty() ? nullptr : &runs_.back().animator->image();
   for (const WebRun& run : runs_) {
     const ReusePolicy& policy = reuse_policy(run.policy);
     json levels = json::object();
@@ -393,7 +416,7 @@ std::string WebSession::comparison_json() const {
                     {"measured_error_px", run.last.max_measured_error_px},
                     {"max_error_px", run.max_error_px},
                     {"level_shares", levels},
-                    {"psnr_db", psnr_db(run.animator->image(), *exact)},
+                    {"psnr_db", run.psnr_db},
                     {"heat_max", run.heat_max},
                     {"outlines", outlines}});
   }

@@ -37,9 +37,10 @@ struct WebRun {
   AnimationFrame last;
   std::array<int, kLevelCount> level_frames{};  // frames 1 .. now per level
   double max_error_px = 0.0;                    // largest measured error, frames 1 .. now
-  std::vector<std::uint8_t> pixels;             // the frame flattened (frame_pixels.h)
-  std::vector<std::uint8_t> heat;               // difference to the exact frame
+  std::vector<std::uint8_t> pixels;             // the frame at panel size (frame_pixels.h)
+  std::vector<std::uint8_t> heat;               // difference to the exact frame, panel size
   int heat_max = 0;                             // its largest difference, grey levels
+  double psnr_db = 0.0;                         // against the exact frame (image_compare.h)
 };
 
 class WebSession {
@@ -89,9 +90,13 @@ class WebSession {
   // The comparison: the state's compared policies and the exact projection playing the
   // state's source at the frame shown. Returns "" or why the source cannot be played.
   std::string comparison_problem() const { return comparison_problem_; }
-  // Per run: policy, level of the frame, measured error, largest error so far, level shares
-  // over frames 1 .. now, the heat map's largest difference, the outline of the shown layer.
-  std::string comparison_json() const;
+  // Brings the runs to the frame shown (forward frame by frame, backward by a restart; the
+  // runs stand still while the page shows another view) and samples their frames and heat
+  // maps at panel_width x panel_height display pixels (run_pixels, run_heat). Returns per
+  // run: policy, level of the frame, measured error, largest error so far, level shares over
+  // frames 1 .. now, the largest difference from the exact frame and the PSNR against it,
+  // the outlines of the shown layers (frame pixels). Panel sizes are clamped to 1 .. 4096.
+  std::string update_comparison(int panel_width, int panel_height);
   int run_count() const { return static_cast<int>(runs_.size()); }
   const WebRun& run(int index) const { return runs_.at(static_cast<std::size_t>(index)); }
   int frame_width() const;
@@ -115,13 +120,16 @@ class WebSession {
   const MotionScript* script() const;
   void rebuild_comparison();
   void advance_runs_to(int frame);
-  void finish_runs_frame();
+  // Per run of the frame reached: the pixels at the panel size, heat map, PSNR.
+  void finish_runs_frame(int panel_width, int panel_height);
 
   Image texture_;
   WindowState state_;
   std::map<std::string, MotionScript> scripts_;  // shipped (read on demand) and added
   std::vector<WebRun> runs_;                     // compared policies, then the exact run
   std::string comparison_problem_;
+  int sampled_frame_ = -1;  // the frame whose pixels the runs hold, at sampled_size_
+  glm::ivec2 sampled_size_{0, 0};
 };
 
 }  // namespace oflab

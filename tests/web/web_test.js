@@ -18,6 +18,10 @@
 // - --bench: the flow view and the comparison played frame by frame for 300 frames; prints
 //   the frames per second of requestAnimationFrame (speed is reported, not tested).
 if (typeof WebSocket === 'undefined') {
+  if (process.execArgv.includes('--experimental-websocket')) {
+    console.error(`web_test.js needs Node 20.10 or later (a WebSocket client); this is ${process.version}`);
+    process.exit(2);
+  }
   // Node 20 has its WebSocket client behind a flag: run again with it.
   const { spawnSync } = require('child_process');
   const r = spawnSync(process.execPath, ['--experimental-websocket', '--no-warnings', __filename, ...process.argv.slice(2)], { stdio: 'inherit' });
