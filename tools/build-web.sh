@@ -6,21 +6,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(emscripten chromium node-acorn libglm-dev nlohmann-json3-dev libstb-dev cmake)
-missing=()
-for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-if [[ ${#missing[@]} -gt 0 ]]; then
-  echo "oflab: installing ${missing[*]}" >&2
-  sudo_cmd=()
-  if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq \
-    --no-install-recommends "${missing[@]}" > /dev/null
-fi
+# emscripten and the header-only libraries for the module, chromium and node's acorn for
+# the tests and emscripten's optimiser.
+bash tools/install-deps.sh --only emscripten chromium node-acorn libglm-dev nlohmann-json3-dev \
+  libstb-dev cmake
 
 # Debian's emscripten runs its JavaScript optimiser with the machine's node, which finds
 # Debian's acorn module only through NODE_PATH.

@@ -35,8 +35,13 @@ DisplaySampling display_sampling(int frame_width, int frame_height, int out_widt
   return {nearest_indices(frame_width, out_width), nearest_indices(frame_height, out_height)};
 }
 
-void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
-                  std::vector<std::uint8_t>& out) {
+namespace {
+
+// Writes out[4 * i ...] for every display pixel i, row after row, from `colour(frame row,
+// frame column)`, which returns 4 bytes. Empty frames give transparent black.
+template <class Colour>
+void sample_into(const Image& frame, const DisplaySampling& sampling, Colour colour,
+                 std::vector<std::uint8_t>& out) {
   out.resize(sampling.columns.size() * sampling.rows.size() * 4);
   if (frame.empty()) {
     std::fill(out.begin(), out.end(), 0);
@@ -44,18 +49,28 @@ void flatten_into(const Image& frame, const DisplaySampling& sampling, const std
   }
   std::uint8_t* o = out.data();
   for (const int y : sampling.rows) {
-    const Pixel* row = frame.row(y);
     for (const int x : sampling.columns) {
-      // Premultiplied "over": colour + background * (1 - alpha), rounded.
-      const Pixel p = row[x];
-      const int rest = 255 - p.a;
-      o[0] = static_cast<std::uint8_t>(p.r + (rgb[0] * rest + 127) / 255);
-      o[1] = static_cast<std::uint8_t>(p.g + (rgb[1] * rest + 127) / 255);
-      o[2] = static_cast<std::uint8_t>(p.b + (rgb[2] * rest + 127) / 255);
-      o[3] = 255;
+      const std::array<std::uint8_t, 4> c = colour(y, x);
+      std::copy(c.begin(), c.end(), o);
       o += 4;
     }
   }
+}
+
+}  // namespace
+
+void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
+                  std::vector<std::uint8_t>& out) {
+  // Premultiplied "over": colour + background * (1 - alpha), rounded.
+  const auto over = [&](int y, int x) {
+    const Pixel p = frame.at(x, y);
+    const int rest = 255 - p.a;
+    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(p.r + (rgb[0] * rest + 127) / 255),
+                                       static_cast<std::uint8_t>(p.g + (rgb[1] * rest + 127) / 255),
+                                       static_cast<std::uint8_t>(p.b + (rgb[2] * rest + 127) / 255),
+                                       255};
+  };
+  sample_into(frame, sampling, over, out);
 }
 
 int largest_difference(const Image& a, const Image& b) {
@@ -103,21 +118,8 @@ void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
     viridis(static_cast<double>(d) / full_scale, rgb);
     ramp[d] = {rgb[0], rgb[1], rgb[2], 255};
   }
-  out.resize(sampling.columns.size() * sampling.rows.size() * 4);
-  if (a.empty()) {
-    std::fill(out.begin(), out.end(), 0);
-    return;
-  }
-  std::uint8_t* o = out.data();
-  for (const int y : sampling.rows) {
-    const Pixel* ra = a.row(y);
-    const Pixel* rb = b.row(y);
-    for (const int x : sampling.columns) {
-      const auto& colour = ramp[channel_difference(ra[x], rb[x])];
-      std::copy(colour.begin(), colour.end(), o);
-      o += 4;
-    }
-  }
+  const auto heat = [&](int y, int x) { return ramp[channel_difference(a.at(x, y), b.at(x, y))]; };
+  sample_into(a, sampling, heat, out);
 }
 
 }  // namespace oflab
