@@ -220,7 +220,8 @@ function draw() {
   const w = Math.max(1, Math.floor(canvas.clientWidth));
   const h = Math.max(1, Math.floor(canvas.clientHeight));
   if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
-  const ctx = canvas.getContext('2d');
+  // Opaque: the browser composites the canvas without blending it over the page.
+  const ctx = canvas.getContext('2d', { alpha: false });
   ctx.setTransform(1, 0, 0, 1, 0, 0);
   ctx.fillStyle = '#111315';
   ctx.fillRect(0, 0, w, h);

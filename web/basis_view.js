@@ -44,11 +44,11 @@ const basisView = {
     const g = term.grid;
     let largest = 0;
     for (let i = 0; i < g.length; i += 4) largest = Math.max(largest, Math.hypot(g[i + 2], g[i + 3]));
-    const cell = size * 0.7 / (2 * kBasisGrid);
-    const k = size * 0.7 / (2 * kBasisRadiusPx);
+    const cell = size * 0.6 / (2 * kBasisGrid);
+    const k = size * 0.6 / (2 * kBasisRadiusPx);
     const s = largest > 0 ? 0.9 * cell / (k * largest) : 0;
     const cx = x + size / 2;
-    const cy = y + size / 2 + 6 * style.scale;
+    const cy = y + size / 2 + 2 * style.scale;
     ctx.strokeStyle = term.negligible ? '#4a4f57' : '#e6c35a';
     ctx.beginPath();
     for (let i = 0; i < g.length; i += 4) {

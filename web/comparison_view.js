@@ -11,26 +11,18 @@ const kLevelColours = {
 
 const comparisonView = {
   title: 'Comparison',
-  surfaces: [],  // per run: an offscreen canvas and its ImageData, reused frame to frame
+  images: [],  // per panel: its ImageData, reused frame to frame
 
-  surface(index, width, height) {
-    let s = this.surfaces[index];
-    if (!s || s.canvas.width !== width || s.canvas.height !== height) {
-      const canvas = document.createElement('canvas');
-      canvas.width = width;
-      canvas.height = height;
-      s = { canvas, ctx: canvas.getContext('2d'), image: new ImageData(width, height) };
-      this.surfaces[index] = s;
+  // Copies core's pixels (a view into the module's memory, valid until the next call into
+  // it) to the canvas at (x, y), pixel for pixel.
+  put(ctx, index, pixels, width, height, x, y) {
+    let image = this.images[index];
+    if (!image || image.width !== width || image.height !== height) {
+      image = new ImageData(width, height);
+      this.images[index] = image;
     }
-    return s;
-  },
-
-  // Copies core's pixels (a view into the module's memory) into surface `index`.
-  blit(index, pixels, width, height) {
-    const s = this.surface(index, width, height);
-    s.image.data.set(pixels);
-    s.ctx.putImageData(s.image, 0, 0);
-    return s.canvas;
+    image.data.set(pixels);
+    ctx.putImageData(image, x, y);
   },
 
   draw(ctx, w, h, style) {
@@ -55,7 +47,7 @@ const comparisonView = {
       const x = Math.round(pad + i * (panelW + pad) + (panelW - pw) / 2);
       const y = Math.round(pad + label);
       const exact = i === n - 1;
-      ctx.drawImage(this.blit(2 * i, app.session.runPixels(i), pw, ph), x, y);
+      this.put(ctx, 2 * i, app.session.runPixels(i), pw, ph, x, y);
       for (const outline of run.outlines) {
         tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
         ctx.strokeStyle = kLevelColours[outline.level];
@@ -68,7 +60,7 @@ const comparisonView = {
         x, pad + 14 * style.scale, pw);
       if (exact) return;
       const hy = Math.round(y + ph + label + pad);
-      ctx.drawImage(this.blit(2 * i + 1, app.session.runHeat(i), pw, ph), x, hy);
+      this.put(ctx, 2 * i + 1, app.session.runHeat(i), pw, ph, x, hy);
       ctx.fillText(`difference from exact: largest ${run.heat_max} grey levels, PSNR ${run.psnr_db.toFixed(1)} dB`,
         x, hy - 6, pw);
     });

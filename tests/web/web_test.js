@@ -244,7 +244,9 @@ async function bench(browser) {
     const query = view === 'animation' ? '?bench=animation&script=swing' : '?bench=flow';
     await open(browser, query, doneMarker('bench'), 300);
     const r = JSON.parse(await evaluate(browser, "document.getElementById('bench').textContent"));
-    console.log(`bench ${view}: ${r.fps.toFixed(1)} fps over ${r.frames} frames (median ${r.median_ms.toFixed(2)} ms, 95th percentile ${r.p95_ms.toFixed(2)} ms) at ${r.width} x ${r.height}`);
+    console.log(`bench ${view}: ${r.fps.toFixed(1)} fps over ${r.frames} frames (frame time median ${r.median_ms.toFixed(1)} ms, ` +
+      `95th percentile ${r.p95_ms.toFixed(1)} ms; the page's work median ${r.median_work_ms.toFixed(1)} ms, ` +
+      `95th percentile ${r.p95_work_ms.toFixed(1)} ms) at ${r.width} x ${r.height}, load average ${os.loadavg()[0].toFixed(1)}`);
   }
 }
 
