@@ -228,6 +228,12 @@ function draw() {
   const view = app.views[app.state.view] || app.views.flow;
   try {
     view.draw(ctx, w, h, drawStyle());
+    if (!(app.state.view in app.views)) {
+      // A state (a lesson's) may name a view of the desktop window that the page lacks.
+      ctx.fillStyle = '#e6c35a';
+      ctx.font = drawStyle().font(14);
+      ctx.fillText(`The ${app.state.view} view is in the desktop window only; this is the flow view.`, 12, 22);
+    }
   } catch (error) {
     showMessage(`The ${app.state.view} view could not draw: ${error.message || error}`);
   }

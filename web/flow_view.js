@@ -202,10 +202,24 @@ function addArrow(path, x0, y0, x1, y1, head) {
   }
 }
 
+// `text` centred in the canvas, wrapped into lines at most 80 % of its width.
 function drawCentredText(ctx, w, h, text, style) {
   ctx.fillStyle = '#e6e6e6';
   ctx.font = style.font(16);
   ctx.textAlign = 'center';
-  ctx.fillText(text, w / 2, h / 2);
+  const lines = [];
+  let line = '';
+  for (const word of text.split(' ')) {
+    const longer = line ? `${line} ${word}` : word;
+    if (line && ctx.measureText(longer).width > 0.8 * w) {
+      lines.push(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+  }
+  lines.push(line);
+  const step = 22 * style.scale;
+  lines.forEach((l, i) => ctx.fillText(l, w / 2, h / 2 + (i - (lines.length - 1) / 2) * step));
   ctx.textAlign = 'start';
 }

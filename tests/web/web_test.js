@@ -172,6 +172,8 @@ const shots = [
   ['basis', '?view=basis&frame=20'],
   ['comparison', '?view=animation&script=swing&frame=40'],
   ['lesson', '?lesson=affine-vs-perspective'],
+  // A lesson on a scene, which the page cannot play: its narrative and the reason, not a blank.
+  ['lesson-on-a-scene', '?lesson=occlusion'],
 ];
 
 function psnr(a, b) {
