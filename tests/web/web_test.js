@@ -240,6 +240,48 @@ async function testScreenshots(browser) {
   check('AnUnknownScriptGivesAMessageOnThePage', /no-such-script/.test(message), message);
 }
 
+// --- Controls ----------------------------------------------------------------------------
+const kKeys = {
+  ' ': ['Space', 32], ArrowRight: ['ArrowRight', 39], ArrowLeft: ['ArrowLeft', 37], ArrowUp: ['ArrowUp', 38],
+  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], p: ['KeyP', 80], 2: ['Digit2', 50],
+};
+
+async function press(browser, key) {
+  const [code, keyCode] = kKeys[key];
+  for (const type of ['keyDown', 'keyUp']) {
+    await browser.tab('Input.dispatchKeyEvent', { type, key, code, windowsVirtualKeyCode: keyCode, text: type === 'keyDown' && key.length === 1 ? key : undefined });
+  }
+}
+
+async function testControls(browser) {
+  await open(browser, '?view=animation&script=swing', drawnMarker);
+  const frame = () => evaluate(browser, 'app.state.frame');
+  const steps = [];
+  for (const [key, expect] of [['End', 119], ['Home', 0], ['ArrowRight', 1], ['ArrowUp', 11], ['ArrowLeft', 10]]) {
+    await press(browser, key);
+    steps.push(`${key} -> ${await frame()} (expected ${expect})`);
+    if (await frame() !== expect) { check('KeysStepAndJump', false, steps.join(', ')); return; }
+  }
+  check('KeysStepAndJump', true, steps.join(', '));
+  await press(browser, ' ');
+  const playing = await evaluate(browser, 'app.playing');
+  await new Promise((r) => setTimeout(r, 1500));
+  const played = await frame();
+  await press(browser, ' ');
+  check('SpacePlaysAndPauses', playing && played > 10 && !(await evaluate(browser, 'app.playing')), `frame 10 -> ${played} in 1.5 s`);
+  await press(browser, 'p');
+  const presentation = await evaluate(browser, "app.state.presentation && document.body.classList.contains('presentation')");
+  await press(browser, '2');
+  check('KeysSetPresentationAndView', presentation && (await evaluate(browser, 'app.state.view')) === 'basis');
+  // A lesson's step applies its state: the basis-deformations lesson's second step shows
+  // Waxman-Ullman's basis, and Page Down goes no further than the last step.
+  await open(browser, '?lesson=basis-deformations&step=1', drawnMarker);
+  await press(browser, 'PageDown');
+  await press(browser, 'PageDown');
+  const lesson = await evaluate(browser, "[app.lessonStep, app.state.basis.kind, document.getElementById('lesson-caption').textContent]");
+  check('LessonStepsApplyTheirState', lesson[0] === 2 && lesson[1] === 'waxman-ullman', lesson.join(' | '));
+}
+
 // --- Speed -------------------------------------------------------------------------------
 async function bench(browser) {
   for (const view of ['flow', 'animation']) {
@@ -266,6 +308,7 @@ async function bench(browser) {
     } else {
       await testSelftest(browser);
       await testScreenshots(browser);
+      await testControls(browser);
     }
   } catch (error) {
     check('TheTestsRan', false, error.message);
