@@ -172,6 +172,8 @@ const shots = [
   ['basis', '?view=basis&frame=20'],
   ['comparison', '?view=animation&script=swing&frame=40'],
   ['lesson', '?lesson=affine-vs-perspective'],
+  // Streamlines of the first-order part (the flow-of-a-plane lesson's first step).
+  ['lesson-step', '?lesson=flow-of-a-plane&step=1'],
   // A lesson on a scene, which the page cannot play: its narrative and the reason, not a blank.
   ['lesson-on-a-scene', '?lesson=occlusion'],
 ];
@@ -273,6 +275,19 @@ async function testControls(browser) {
   const presentation = await evaluate(browser, "app.state.presentation && document.body.classList.contains('presentation')");
   await press(browser, '2');
   check('KeysSetPresentationAndView', presentation && (await evaluate(browser, 'app.state.view')) === 'basis');
+  // Pose and motion: an accepted edit moves the plane; a refused one (a zero normal) leaves
+  // the state as it was and says why on the page.
+  await open(browser, '?view=flow', drawnMarker);
+  const edit = (id, value) => evaluate(browser, `(() => { const e = document.getElementById('${id}');
+    e.value = '${value}'; e.dispatchEvent(new Event('change')); return app.state.plane; })()`);
+  const moved = await edit('pose-point-2', '3');
+  const zero = ['0', '1', '2'].map((i) => `pose-normal-${i}`);
+  await edit(zero[0], '0');
+  await edit(zero[1], '0');
+  const refused = await edit(zero[2], '0');
+  const message = await evaluate(browser, "document.getElementById('message').textContent");
+  check('PoseEditsApplyAndBadOnesAreRefusedWithAMessage', moved.pose.point[2] === 3 &&
+    refused.pose.normal[2] !== 0 && /normal/.test(message), message);
   // A lesson's step applies its state: the basis-deformations lesson's second step shows
   // Waxman-Ullman's basis, and Page Down goes no further than the last step.
   await open(browser, '?lesson=basis-deformations&step=1', drawnMarker);
