@@ -30,6 +30,11 @@ install(TARGETS oflab oflab-cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY datasets/ DESTINATION ${OFLAB_INSTALL_DATADIR}/datasets)
 install(DIRECTORY manual/ DESTINATION ${OFLAB_INSTALL_DATADIR}/manual)
 install(FILES README.md DESTINATION ${OFLAB_INSTALL_DATADIR})
+# The browser page (manual/web.md), when tools/build-web.sh has built it: the desktop build
+# never needs emscripten, so a missing page is skipped, not an error.
+set(OFLAB_WEB_PAGE "${PROJECT_SOURCE_DIR}/build-web/oflab-web.html"
+    CACHE FILEPATH "The browser page installed under share/oflab/web/ when it exists")
+install(FILES ${OFLAB_WEB_PAGE} DESTINATION ${OFLAB_INSTALL_DATADIR}/web OPTIONAL)
 
 # The menu entry, its icon and the licence.
 install(FILES packaging/oflab.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)

@@ -2,7 +2,8 @@
 # Packs the built tree with CPack into a temporary directory and checks the .deb with
 # dpkg-deb: its name, the Depends field (VTK, Qt 5, FFmpeg's libraries, giflib), and that
 # it holds both programs, the desktop entry, the icon, both man pages, the copyright file,
-# the datasets and the CMake package. Usage: bash tools/check-deb.sh [BUILD_DIR].
+# the datasets, the CMake package and the browser page when it was built. Usage:
+# bash tools/check-deb.sh [BUILD_DIR].
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=$(cd "${1:-build}" && pwd)
@@ -29,6 +30,12 @@ for f in ./usr/bin/oflab ./usr/bin/oflab-cli ./usr/share/applications/oflab.desk
 done
 grep -q "/cmake/oflab/oflabConfig.cmake\$" <<< "$contents" ||
   { echo "check-deb: the package lacks oflabConfig.cmake" >&2; fail=1; }
+# The browser page, when tools/build-web.sh built it before the package (manual/web.md).
+page=$(sed -n 's/^OFLAB_WEB_PAGE:[A-Z]*=//p' "$build/CMakeCache.txt")
+if [[ -n "$page" && -f "$page" ]]; then
+  grep -q " ./usr/share/oflab/web/oflab-web.html\$" <<< "$contents" ||
+    { echo "check-deb: the package lacks ./usr/share/oflab/web/oflab-web.html" >&2; fail=1; }
+fi
 # The man pages carry the programs' --help.
 dpkg-deb -x "$deb" "$work/root"
 zcat "$work/root/usr/share/man/man1/oflab-cli.1.gz" | grep -q "experiments" ||

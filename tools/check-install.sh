@@ -15,6 +15,12 @@ for f in bin/oflab bin/oflab-cli share/oflab/datasets/scripts/loop.json share/of
          include/oflab/flow/flow_field.h lib/cmake/oflab/oflabConfig.cmake; do
   [[ -e "$prefix/$f" ]] || { echo "check-install: $prefix/$f is missing" >&2; exit 1; }
 done
+# The browser page is installed when tools/build-web.sh has built it (manual/web.md).
+page=$(sed -n 's/^OFLAB_WEB_PAGE:[A-Z]*=//p' "$build/CMakeCache.txt")
+if [[ -n "$page" && -f "$page" ]]; then
+  cmp -s "$page" "$prefix/share/oflab/web/oflab-web.html" ||
+    { echo "check-install: $prefix/share/oflab/web/oflab-web.html is not $page" >&2; exit 1; }
+fi
 
 # The consumer: configure, build and run against the installed package only.
 cmake -S tests/install -B "$work/consumer" -DCMAKE_PREFIX_PATH="$prefix" \

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages oflab needs, and nothing when they are all present.
 # Shared by both README commands and by .ci/run, so all three see the same machine.
+# `install-deps.sh --only PACKAGE...` does the same for the packages named (tools/build-web.sh).
 set -euo pipefail
 
 packages=(
@@ -17,6 +18,7 @@ packages=(
 if [[ "${OFLAB_WITH_OPENCV:-0}" == "1" ]]; then packages+=(libopencv-dev); fi
 # pixman is another optional benchmark peer; ask for it with OFLAB_WITH_PIXMAN=1.
 if [[ "${OFLAB_WITH_PIXMAN:-0}" == "1" ]]; then packages+=(libpixman-1-dev); fi
+if [[ "${1:-}" == "--only" ]]; then packages=("${@:2}"); fi
 
 missing=()
 for p in "${packages[@]}"; do

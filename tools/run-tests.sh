@@ -3,7 +3,8 @@
 # virtual screen (the GUI tests need one), then core/ and analysis/ (everything but the GUI)
 # again under AddressSanitizer and UndefinedBehaviorSanitizer, then the readers' fuzz
 # harnesses (clang, libFuzzer, ASan + UBSan) for a short bounded time each (`ctest -L fuzz`;
-# longer campaigns: tools/fuzz.sh). Idempotent. manual/robustness.md, "Sanitizers".
+# longer campaigns: tools/fuzz.sh), and the browser page: built with emscripten and tested in
+# headless Chromium (manual/web.md). Idempotent. manual/robustness.md, "Sanitizers".
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
@@ -15,6 +16,16 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # one virtual screen, and no two tests share a scratch folder.
 xvfb-run -a -s "-screen 0 1600x1000x24" \
   ctest --test-dir build --output-on-failure --timeout 600 -j"$jobs"
+
+# The browser page (manual/web.md): emscripten and chromium installed when missing, the page
+# built, the golden outputs checked against this build's oflab-cli, then the page's self-test,
+# screenshots and speed in headless Chromium.
+web_start=$SECONDS
+bash tools/build-web.sh
+node tests/web/make_golden.js --check build/analysis/oflab-cli
+node tests/web/web_test.js --out build-web/test-failures
+node tests/web/web_test.js --bench
+echo "oflab: the browser stage took $((SECONDS - web_start)) s"
 
 # The sanitized tree: OFLAB_HEADLESS (core, analysis, oflab-cli and their tests; no Qt, GUI
 # or benchmarks), Debug (assertions on) compiled at -O1 with line tables only (-g1): the

@@ -11,6 +11,17 @@
 #include <filesystem>
 #include <vector>
 
+// Systems without Linux's renameat2 (a WebAssembly build's memory file system, web/) get a
+// stand-in that supports no flag (ENOSYS), so rename_with takes its portable fallbacks.
+#if !defined(RENAME_NOREPLACE)
+#define RENAME_NOREPLACE (1u << 0)
+#define RENAME_EXCHANGE (1u << 1)
+static int renameat2(int, const char*, int, const char*, unsigned) {
+  errno = ENOSYS;
+  return -1;
+}
+#endif
+
 namespace oflab {
 
 namespace fs = std::filesystem;

@@ -32,7 +32,8 @@ constexpr std::int64_t kBilinearHighMargin = 2;
 // Longest run an affine bilinear loop steps in 16.16 fixed point before it restarts from
 // the exact 64-bit position: the rounding of the step then moves the position by at most
 // 32 * 2^-17 = 2^-12 pixel, at most a quarter level of difference in the result.
-constexpr int kMaxApproximateRun = 64;
+// (Only the SIMD loops step in runs: the portable build, e.g. WebAssembly, leaves it unused.)
+[[maybe_unused]] constexpr int kMaxApproximateRun = 64;
 
 // Floor of the sampling position of `s` and its fraction in units of 2^-16, from the
 // map's form: a shift for the affine form (D = 2^shift); for the division form the

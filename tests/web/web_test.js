@@ -1,0 +1,335 @@
+#!/usr/bin/env node
+'use strict';
+// The browser page's tests (manual/web.md), in headless Chromium driven over its DevTools
+// protocol (no packages: Node's own WebSocket, zlib and child_process).
+//
+//   node tests/web/web_test.js [--page build-web/oflab-web.html] [--out DIR]
+//        [--update-baselines] [--bench]
+//
+// - The self-test (oflab-web.html?selftest): every shipped script's levels equal the CLI's
+//   golden outputs (tests/web/golden/scripts.json, tests/web/make_golden.js) and its frame-0
+//   coefficients agree to 1e-12 relative; a changed level or coefficient is caught (negative
+//   controls); broken script and lesson files are refused with a message naming the file.
+// - Screenshots at 1280 x 720 of each view, the comparison, a lesson and a refused file:
+//   each is not blank (>= 5 % of its pixels differ from the background, >= 64 colours) and
+//   within 30 dB PSNR of its baseline (tests/web/baselines/); the flow view's screenshot is
+//   not within 30 dB of the gallery's baseline, and a blank image is found blank (negative
+//   controls). A failing screenshot is written to --out.
+// - --bench: the flow view and the comparison played frame by frame for 300 frames; prints
+//   the frames per second of requestAnimationFrame (speed is reported, not tested).
+if (typeof WebSocket === 'undefined') {
+  if (process.execArgv.includes('--experimental-websocket')) {
+    console.error(`web_test.js needs Node 20.10 or later (a WebSocket client); this is ${process.version}`);
+    process.exit(2);
+  }
+  // Node 20 has its WebSocket client behind a flag: run again with it.
+  const { spawnSync } = require('child_process');
+  const r = spawnSync(process.execPath, ['--experimental-websocket', '--no-warnings', __filename, ...process.argv.slice(2)], { stdio: 'inherit' });
+  process.exit(r.status === null ? 1 : r.status);
+}
+const { spawn } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { decodePng } = require('./png');
+
+const root = path.resolve(__dirname, '..', '..');
+const args = process.argv.slice(2);
+const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
+const page = path.resolve(option('--page', path.join(root, 'build-web/oflab-web.html')));
+const outDir = path.resolve(option('--out', path.join(os.tmpdir(), 'oflab-web-test')));
+const baselines = path.join(__dirname, 'baselines');
+const kWidth = 1280;
+const kHeight = 720;
+const kMinPsnrDb = 30;
+const kRelativeTolerance = 1e-12;
+
+let failures = 0;
+function check(name, ok, detail) {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}${detail ? `: ${detail}` : ''}`);
+  if (!ok) ++failures;
+}
+
+// --- Chromium over the DevTools protocol -------------------------------------------------
+async function launchChromium() {
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'oflab-web-chromium-'));
+  const child = spawn(option('--chromium', '/usr/bin/chromium'), ['--headless=new', '--no-sandbox',
+    '--disable-gpu', '--no-first-run', '--remote-debugging-port=0', `--user-data-dir=${profile}`,
+    `--window-size=${kWidth},${kHeight}`, 'about:blank'], { stdio: ['ignore', 'ignore', 'pipe'] });
+  const url = await new Promise((resolve, reject) => {
+    let text = '';
+    const timer = setTimeout(() => reject(new Error(`chromium did not start: ${text}`)), 30000);
+    child.stderr.on('data', (d) => {
+      text += d;
+      const m = /DevTools listening on (ws:\/\/\S+)/.exec(text);
+      if (m) { clearTimeout(timer); resolve(m[1]); }
+    });
+    child.on('exit', (code) => reject(new Error(`chromium exited (${code}): ${text}`)));
+  });
+  const socket = new WebSocket(url);
+  await new Promise((resolve, reject) => { socket.onopen = resolve; socket.onerror = reject; });
+  let next = 1;
+  const pending = new Map();
+  socket.onmessage = (event) => {
+    const message = JSON.parse(event.data);
+    const waiter = pending.get(message.id);
+    if (!waiter) return;
+    pending.delete(message.id);
+    if (message.error) waiter.reject(new Error(JSON.stringify(message.error))); else waiter.resolve(message.result);
+  };
+  const send = (method, params = {}, sessionId) => new Promise((resolve, reject) => {
+    const id = next++;
+    pending.set(id, { resolve, reject });
+    socket.send(JSON.stringify({ id, method, params, sessionId }));
+  });
+  const { targetId } = await send('Target.createTarget', { url: 'about:blank' });
+  const { sessionId } = await send('Target.attachToTarget', { targetId, flatten: true });
+  const tab = (method, params) => send(method, params, sessionId);
+  await tab('Emulation.setDeviceMetricsOverride', { width: kWidth, height: kHeight, deviceScaleFactor: 1, mobile: false });
+  return {
+    tab,
+    async close() {
+      socket.close();
+      const exited = new Promise((resolve) => child.on('exit', resolve));
+      child.kill();
+      await exited;
+      fs.rmSync(profile, { recursive: true, force: true, maxRetries: 5 });
+    },
+  };
+}
+
+async function evaluate(browser, expression) {
+  const r = await browser.tab('Runtime.evaluate', { expression, returnByValue: true });
+  return r.result.value;
+}
+
+// Opens the page with `query` and waits until `ready` (a JS expression) is true.
+async function open(browser, query, ready, seconds = 180) {
+  await browser.tab('Page.navigate', { url: `file://${page}${query}` });
+  const end = Date.now() + seconds * 1000;
+  while (Date.now() < end) {
+    try {
+      if (await evaluate(browser, ready)) return;
+    } catch (e) { /* the page is still loading */ }
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  throw new Error(`${query}: not ready after ${seconds} s (${ready}); message: ${await evaluate(browser, "document.getElementById('message')?.textContent")}`);
+}
+
+const doneMarker = (id) => `document.getElementById('${id}')?.dataset.done === 'true'`;
+
+// --- The self-test ---------------------------------------------------------------------
+// Differences between the page's self-test and the golden outputs, one line each.
+function compareWithGolden(result, golden) {
+  const problems = [];
+  for (const [name, expected] of Object.entries(golden)) {
+    const got = result.scripts[name];
+    if (!got || got.error) { problems.push(`${name}: ${got ? got.error : 'missing'}`); continue; }
+    if (got.levels.length !== expected.levels.length) {
+      problems.push(`${name}: ${got.levels.length} frames, the CLI ${expected.levels.length}`);
+    }
+    const first = expected.levels.findIndex((level, k) => got.levels[k] !== level);
+    if (first >= 0) problems.push(`${name}: frame ${first} is ${got.levels[first]}, the CLI's ${expected.levels[first]}`);
+    for (const [key, value] of Object.entries(expected.coefficients)) {
+      const v = got.coefficients[key];
+      const scale = Math.max(Math.abs(value), Math.abs(v), 1e-300);
+      if (!(Math.abs(v - value) <= kRelativeTolerance * scale || v === value)) {
+        problems.push(`${name}: ${key} = ${v}, the CLI's ${value}`);
+      }
+    }
+  }
+  for (const name of Object.keys(result.scripts)) if (!(name in golden)) problems.push(`${name}: no golden output`);
+  return problems;
+}
+
+async function testSelftest(browser) {
+  await open(browser, '?selftest', doneMarker('selftest'));
+  const result = JSON.parse(await evaluate(browser, "document.getElementById('selftest').textContent"));
+  const golden = JSON.parse(fs.readFileSync(path.join(__dirname, 'golden/scripts.json'), 'utf8'));
+  check('SelftestReportsPassed', result.passed === true, JSON.stringify(result.bad_files));
+  const problems = compareWithGolden(result, golden);
+  check('SelftestLevelsAndCoefficientsEqualTheCliGoldenOutputs', problems.length === 0,
+    `${Object.keys(golden).length} scripts, ${Object.values(golden).reduce((n, g) => n + g.levels.length, 0)} frames${problems.length ? `; ${problems.slice(0, 5).join('; ')}` : ''}`);
+  // Negative controls: one changed level and one coefficient changed by 1e-10 are caught.
+  const changed = JSON.parse(JSON.stringify(result));
+  const name = Object.keys(changed.scripts)[0];
+  changed.scripts[name].levels[1] = changed.scripts[name].levels[1] === 'none' ? 'affine' : 'none';
+  check('ComparisonCatchesAChangedLevel', compareWithGolden(changed, golden).length === 1);
+  const nudged = JSON.parse(JSON.stringify(result));
+  const c = nudged.scripts[name].coefficients;
+  const key = Object.keys(c).find((k) => c[k] !== 0);
+  c[key] *= 1 + 1e-10;
+  check('ComparisonCatchesACoefficientOff1e-10', compareWithGolden(nudged, golden).length === 1, key);
+  check('BrokenScriptIsRefusedNamingTheFileAndField', /broken-script\.json.*camera/.test(result.bad_files.script), result.bad_files.script);
+  check('BrokenLessonIsRefusedNamingTheFile', /broken-lesson\.json/.test(result.bad_files.lesson), result.bad_files.lesson);
+}
+
+// --- Screenshots -------------------------------------------------------------------------
+const drawnMarker = "Number(document.body.dataset.drawn || 0) > 0";
+const shots = [
+  ['flow', '?view=flow&frame=20'],
+  ['flow-presentation', '?view=flow&frame=60&presentation'],
+  ['basis', '?view=basis&frame=20'],
+  ['comparison', '?view=animation&script=swing&frame=40'],
+  ['lesson', '?lesson=affine-vs-perspective'],
+  // Streamlines of the first-order part (the flow-of-a-plane lesson's first step).
+  ['lesson-step', '?lesson=flow-of-a-plane&step=1'],
+  // A lesson on a scene, which the page cannot play: its narrative and the reason, not a blank.
+  ['lesson-on-a-scene', '?lesson=occlusion'],
+];
+
+function psnr(a, b) {
+  if (a.width !== b.width || a.height !== b.height) return -Infinity;
+  let sum = 0;
+  for (let i = 0; i < a.data.length; i += 4) {
+    for (let c = 0; c < 3; ++c) sum += (a.data[i + c] - b.data[i + c]) ** 2;
+  }
+  const mse = sum / (3 * a.width * a.height);
+  return mse === 0 ? 99 : 10 * Math.log10(255 * 255 / mse);
+}
+
+// "Not blank": at least 5 % of the pixels differ from the top-left pixel and at least 64
+// distinct colours.
+function notBlank(image) {
+  const d = image.data;
+  const colours = new Set();
+  let differing = 0;
+  for (let i = 0; i < d.length; i += 4) {
+    if (d[i] !== d[0] || d[i + 1] !== d[1] || d[i + 2] !== d[2]) ++differing;
+    if (colours.size < 64) colours.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+  }
+  return differing >= 0.05 * image.width * image.height && colours.size >= 64;
+}
+
+async function screenshot(browser, query) {
+  await open(browser, query, drawnMarker);
+  const { data } = await browser.tab('Page.captureScreenshot', { format: 'png' });
+  return Buffer.from(data, 'base64');
+}
+
+async function testScreenshots(browser) {
+  fs.mkdirSync(outDir, { recursive: true });
+  const images = {};
+  for (const [name, query] of shots) {
+    const png = await screenshot(browser, query);
+    const image = decodePng(png, name);
+    images[name] = image;
+    const baseline = path.join(baselines, `${name}.png`);
+    if (args.includes('--update-baselines')) {
+      fs.writeFileSync(`${baseline}.tmp`, png);
+      fs.renameSync(`${baseline}.tmp`, baseline);
+    }
+    const blankOk = notBlank(image) && image.width === kWidth && image.height === kHeight;
+    check(`Screenshot_${name}_IsNotBlank`, blankOk, `${image.width} x ${image.height}`);
+    if (!fs.existsSync(baseline)) {
+      check(`Screenshot_${name}_MatchesBaseline`, false, `missing baseline ${baseline}`);
+      continue;
+    }
+    const db = psnr(image, decodePng(fs.readFileSync(baseline), baseline));
+    check(`Screenshot_${name}_MatchesBaseline`, db >= kMinPsnrDb, `${db.toFixed(1)} dB (>= ${kMinPsnrDb})`);
+    if (db < kMinPsnrDb || !blankOk) fs.writeFileSync(path.join(outDir, `${name}.png`), png);
+  }
+  const basis = path.join(baselines, 'basis.png');
+  if (fs.existsSync(basis)) {
+    const db = psnr(images.flow, decodePng(fs.readFileSync(basis), basis));
+    check('NegativeControl_FlowScreenshotDoesNotMatchTheGalleryBaseline', db < kMinPsnrDb, `${db.toFixed(1)} dB`);
+  }
+  const blank = { width: kWidth, height: kHeight, data: new Uint8Array(kWidth * kHeight * 4).fill(17) };
+  check('NegativeControl_ABlankImageIsFoundBlank', !notBlank(blank));
+  // A refused file leaves a message on the page, not a blank page.
+  await open(browser, '?script=no-such-script', "document.getElementById('message').hidden === false && " + drawnMarker);
+  const message = await evaluate(browser, "document.getElementById('message').textContent");
+  check('AnUnknownScriptGivesAMessageOnThePage', /no-such-script/.test(message), message);
+}
+
+// --- Controls ----------------------------------------------------------------------------
+const kKeys = {
+  ' ': ['Space', 32], ArrowRight: ['ArrowRight', 39], ArrowLeft: ['ArrowLeft', 37], ArrowUp: ['ArrowUp', 38],
+  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], p: ['KeyP', 80], 2: ['Digit2', 50],
+};
+
+async function press(browser, key) {
+  const [code, keyCode] = kKeys[key];
+  for (const type of ['keyDown', 'keyUp']) {
+    await browser.tab('Input.dispatchKeyEvent', { type, key, code, windowsVirtualKeyCode: keyCode, text: type === 'keyDown' && key.length === 1 ? key : undefined });
+  }
+}
+
+async function testControls(browser) {
+  await open(browser, '?view=animation&script=swing', drawnMarker);
+  const frame = () => evaluate(browser, 'app.state.frame');
+  const steps = [];
+  for (const [key, expect] of [['End', 119], ['Home', 0], ['ArrowRight', 1], ['ArrowUp', 11], ['ArrowLeft', 10]]) {
+    await press(browser, key);
+    steps.push(`${key} -> ${await frame()} (expected ${expect})`);
+    if (await frame() !== expect) { check('KeysStepAndJump', false, steps.join(', ')); return; }
+  }
+  check('KeysStepAndJump', true, steps.join(', '));
+  await press(browser, ' ');
+  const playing = await evaluate(browser, 'app.playing');
+  await new Promise((r) => setTimeout(r, 1500));
+  const played = await frame();
+  await press(browser, ' ');
+  check('SpacePlaysAndPauses', playing && played > 10 && !(await evaluate(browser, 'app.playing')), `frame 10 -> ${played} in 1.5 s`);
+  await press(browser, 'p');
+  const presentation = await evaluate(browser, "app.state.presentation && document.body.classList.contains('presentation')");
+  await press(browser, '2');
+  check('KeysSetPresentationAndView', presentation && (await evaluate(browser, 'app.state.view')) === 'basis');
+  // Pose and motion: an accepted edit moves the plane; a refused one (a zero normal) leaves
+  // the state as it was and says why on the page.
+  await open(browser, '?view=flow', drawnMarker);
+  const edit = (id, value) => evaluate(browser, `(() => { const e = document.getElementById('${id}');
+    e.value = '${value}'; e.dispatchEvent(new Event('change')); return app.state.plane; })()`);
+  const moved = await edit('pose-point-2', '3');
+  const zero = ['0', '1', '2'].map((i) => `pose-normal-${i}`);
+  await edit(zero[0], '0');
+  await edit(zero[1], '0');
+  const refused = await edit(zero[2], '0');
+  const message = await evaluate(browser, "document.getElementById('message').textContent");
+  check('PoseEditsApplyAndBadOnesAreRefusedWithAMessage', moved.pose.point[2] === 3 &&
+    refused.pose.normal[2] !== 0 && /normal/.test(message), message);
+  // A lesson's step applies its state: the basis-deformations lesson's second step shows
+  // Waxman-Ullman's basis, and Page Down goes no further than the last step.
+  await open(browser, '?lesson=basis-deformations&step=1', drawnMarker);
+  await press(browser, 'PageDown');
+  await press(browser, 'PageDown');
+  const lesson = await evaluate(browser, "[app.lessonStep, app.state.basis.kind, document.getElementById('lesson-caption').textContent]");
+  check('LessonStepsApplyTheirState', lesson[0] === 2 && lesson[1] === 'waxman-ullman', lesson.join(' | '));
+}
+
+// --- Speed -------------------------------------------------------------------------------
+async function bench(browser) {
+  for (const view of ['flow', 'animation']) {
+    const query = view === 'animation' ? '?bench=animation&script=swing' : '?bench=flow';
+    await open(browser, query, doneMarker('bench'), 300);
+    const r = JSON.parse(await evaluate(browser, "document.getElementById('bench').textContent"));
+    console.log(`bench ${view}: ${r.fps.toFixed(1)} fps over ${r.frames} frames (frame time median ${r.median_ms.toFixed(1)} ms, ` +
+      `95th percentile ${r.p95_ms.toFixed(1)} ms; the page's work median ${r.median_work_ms.toFixed(1)} ms, ` +
+      `95th percentile ${r.p95_work_ms.toFixed(1)} ms) at ${r.width} x ${r.height}, load average ${os.loadavg()[0].toFixed(1)}`);
+  }
+}
+
+(async () => {
+  if (!fs.existsSync(page)) {
+    console.error(`${page}: missing; build it with tools/build-web.sh`);
+    process.exit(2);
+  }
+  const size = fs.statSync(page).size;
+  check('PageIsAtMost8MB', size <= 8 * 1024 * 1024, `${size} bytes`);
+  const browser = await launchChromium();
+  try {
+    if (args.includes('--bench')) {
+      await bench(browser);
+    } else {
+      await testSelftest(browser);
+      await testScreenshots(browser);
+      await testControls(browser);
+    }
+  } catch (error) {
+    check('TheTestsRan', false, error.message);
+  } finally {
+    await browser.close();
+  }
+  console.log(failures ? `${failures} failed` : 'all passed');
+  process.exit(failures ? 1 : 0);
+})();

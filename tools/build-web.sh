@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds the browser page (manual/web.md): core/ compiled to WebAssembly by Debian's
+# emscripten through the CMake preset `web`, assembled into one self-contained
+# build-web/oflab-web.html. Installs emscripten and chromium (for tests/web) when they are
+# missing, and nothing when they are present. Idempotent; prints the page's size.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# emscripten and the header-only libraries for the module, chromium and node's acorn for
+# the tests and emscripten's optimiser.
+bash tools/install-deps.sh --only emscripten chromium node-acorn libglm-dev nlohmann-json3-dev \
+  libstb-dev cmake
+
+# Debian's emscripten runs its JavaScript optimiser with the machine's node, which finds
+# Debian's acorn module only through NODE_PATH.
+export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+# Debian's package ships emscripten's system libraries compiled (a frozen cache), so the
+# first build compiles only oflab.
+emcmake cmake --preset web > build-web-configure.log 2>&1 || {
+  cat build-web-configure.log >&2
+  exit 1
+}
+cmake --build build-web -j"$(nproc 2>/dev/null || echo 2)"
+
+page=build-web/oflab-web.html
+size=$(stat -c %s "$page")
+limit=$((8 * 1024 * 1024))
+echo "oflab: $page, $size bytes"
+if [[ $size -gt $limit ]]; then
+  echo "oflab: $page is larger than the 8 MB limit ($size > $limit bytes)" >&2
+  exit 1
+fi

@@ -1,0 +1,77 @@
+// The page's JavaScript interface to core (manual/web.md): WebSession (web/web_session.h)
+// as the class `Session`, and the shipped data's listings. Number arrays are returned as
+// Float64Array copies; frame pixels as Uint8Array views into the module's memory, valid
+// until the next call into the module (the page copies them into ImageData at once).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include "frame_pixels.h"
+#include "web_session.h"
+
+namespace oflab {
+namespace {
+
+emscripten::val float64_copy(const std::vector<double>& values) {
+  return emscripten::val::global("Float64Array")
+      .new_(emscripten::typed_memory_view(values.size(), values.data()));
+}
+
+emscripten::val arrows(const WebSession& s, const std::string& part, double spacing) {
+  return float64_copy(s.flow_arrows(part, spacing));
+}
+
+emscripten::val streamlines(const WebSession& s, const std::string& part, double spacing,
+                            double duration_s, int steps) {
+  return float64_copy(s.flow_streamlines(part, spacing, duration_s, steps));
+}
+
+emscripten::val run_pixels(const WebSession& s, int index) {
+  const std::vector<std::uint8_t>& pixels = s.run(index).pixels;
+  return emscripten::val(emscripten::typed_memory_view(pixels.size(), pixels.data()));
+}
+
+emscripten::val run_heat(const WebSession& s, int index) {
+  const std::vector<std::uint8_t>& heat = s.run(index).heat;
+  return emscripten::val(emscripten::typed_memory_view(heat.size(), heat.data()));
+}
+
+// The heat map's colour at t in [0, 1] as [r, g, b], for the page's colour bar.
+emscripten::val heat_colour(double t) {
+  std::uint8_t rgb[3];
+  viridis(t, rgb);
+  emscripten::val out = emscripten::val::array();
+  for (std::uint8_t c : rgb) out.call<void>("push", static_cast<int>(c));
+  return out;
+}
+
+}  // namespace
+}  // namespace oflab
+
+EMSCRIPTEN_BINDINGS(oflab_web) {
+  using oflab::WebSession;
+  emscripten::class_<WebSession>("Session")
+      .constructor<>()
+      .function("stateJson", &WebSession::state_json)
+      .function("setState", &WebSession::set_state)
+      .function("addScript", &WebSession::add_script)
+      .function("frameCount", &WebSession::frame_count)
+      .function("frame", &WebSession::frame)
+      .function("seek", &WebSession::seek)
+      .function("sceneProblem", &WebSession::scene_problem)
+      .function("flowJson", &WebSession::flow_json)
+      .function("arrows", &oflab::arrows)
+      .function("streamlines", &oflab::streamlines)
+      .function("basisJson", &WebSession::basis_json)
+      .function("comparisonProblem", &WebSession::comparison_problem)
+      .function("updateComparison", &WebSession::update_comparison)
+      .function("runCount", &WebSession::run_count)
+      .function("frameWidth", &WebSession::frame_width)
+      .function("frameHeight", &WebSession::frame_height)
+      .function("runPixels", &oflab::run_pixels)
+      .function("runHeat", &oflab::run_heat)
+      .class_function("lessonsJson", &WebSession::lessons_json)
+      .class_function("lessonFileJson", &WebSession::lesson_file_json)
+      .class_function("scriptRunJson", &WebSession::script_run_json)
+      .class_function("scriptNamesJson", &WebSession::script_names_json);
+  emscripten::function("heatColour", &oflab::heat_colour);
+}

@@ -1,0 +1,120 @@
+'use strict';
+// The comparison: the state's compared reuse policies (affine and perspective by default)
+// and the exact projection play the same frames of the source, side by side; each panel
+// shows its frame with the shown layer's outline in the colour of the engine's level, and
+// under each policy the difference from the exact frame as a heat map. The frames, levels,
+// errors and heat maps come from core (Session.updateComparison, .runPixels, .runHeat).
+
+const kLevelColours = {
+  none: '#9aa0a6', translate: '#5aa9e6', affine: '#6cc070', perspective: '#e6c35a', rerender: '#e0645a',
+};
+
+const comparisonView = {
+  title: 'Comparison',
+  images: [],  // per panel: its ImageData, reused frame to frame
+
+  // Copies core's pixels (a view into the module's memory, valid until the next call into
+  // it) to the canvas at (x, y), pixel for pixel.
+  put(ctx, index, pixels, width, height, x, y) {
+    let image = this.images[index];
+    if (!image || image.width !== width || image.height !== height) {
+      image = new ImageData(width, height);
+      this.images[index] = image;
+    }
+    image.data.set(pixels);
+    ctx.putImageData(image, x, y);
+  },
+
+  draw(ctx, w, h, style) {
+    const problem = app.session.comparisonProblem();
+    if (problem) {
+      drawCentredText(ctx, w, h, problem, style);
+      setHtml($('runs'), '');
+      return;
+    }
+    // Panels fitted side by side, frames above and heat maps below; core samples the
+    // frames at the panels' size, so each is copied to the canvas pixel for pixel.
+    const n = app.session.runCount();
+    const [fw, fh] = [app.session.frameWidth(), app.session.frameHeight()];
+    const pad = 8;
+    const label = 20 * style.scale;
+    const panelW = (w - pad * (n + 1)) / n;
+    const k = Math.min(panelW / fw, (h / 2 - label - pad * 2) / fh);
+    const pw = Math.max(1, Math.floor(k * fw));
+    const ph = Math.max(1, Math.floor(k * fh));
+    const info = JSON.parse(app.session.updateComparison(pw, ph));
+    info.runs.forEach((run, i) => {
+      const x = Math.round(pad + i * (panelW + pad) + (panelW - pw) / 2);
+      const y = Math.round(pad + label);
+      const exact = i === n - 1;
+      this.put(ctx, 2 * i, app.session.runPixels(i), pw, ph, x, y);
+      for (const outline of run.outlines) {
+        tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
+        ctx.strokeStyle = kLevelColours[outline.level];
+        ctx.lineWidth = 2 * style.line;
+        ctx.stroke();
+      }
+      ctx.fillStyle = '#e6e6e6';
+      ctx.font = style.font(14);
+      ctx.fillText(exact ? 'exact projection' : `${run.policy}: ${run.level}, ${run.measured_error_px.toFixed(2)} px`,
+        x, pad + 14 * style.scale, pw);
+      if (exact) return;
+      const hy = Math.round(y + ph + label + pad);
+      this.put(ctx, 2 * i + 1, app.session.runHeat(i), pw, ph, x, hy);
+      ctx.fillText(`difference from exact: largest ${run.heat_max} grey levels, PSNR ${run.psnr_db.toFixed(1)} dB`,
+        x, hy - 6, pw);
+    });
+    this.drawLegend(ctx, pad + (n - 1) * (panelW + pad), pad * 2 + label + ph + label, panelW, info, style);
+    this.fillTable(info);
+  },
+
+  // The levels' colours and the heat map's colour bar (0 .. full scale grey levels).
+  drawLegend(ctx, x, y, width, info, style) {
+    ctx.font = style.font(13);
+    let ly = y + 10;
+    for (const [level, colour] of Object.entries(kLevelColours)) {
+      ctx.fillStyle = colour;
+      ctx.fillRect(x, ly - 10, 14, 10);
+      ctx.fillStyle = '#e6e6e6';
+      ctx.fillText(level, x + 20, ly);
+      ly += 18 * style.scale;
+    }
+    ly += 10;
+    const barW = Math.min(width, 256);
+    ctx.drawImage(this.colourBar(), x, ly, barW, 14);
+    ctx.fillStyle = '#e6e6e6';
+    ctx.fillText('0', x, ly + 30 * style.scale);
+    ctx.fillText(`${info.heat_full_scale}+ grey levels`, x + barW - 110 * style.scale, ly + 30 * style.scale);
+  },
+
+  // The heat map's ramp from core, 256 x 1 pixels, made once.
+  colourBar() {
+    if (!this.bar) {
+      this.bar = document.createElement('canvas');
+      this.bar.width = 256;
+      this.bar.height = 1;
+      const bctx = this.bar.getContext('2d');
+      for (let i = 0; i < 256; ++i) {
+        const [r, g, b] = Module.heatColour(i / 255);
+        bctx.fillStyle = `rgb(${r},${g},${b})`;
+        bctx.fillRect(i, 0, 1, 1);
+      }
+    }
+    return this.bar;
+  },
+
+  fillTable(info) {
+    const levels = ['none', 'translate', 'affine', 'perspective', 'rerender'];
+    const runs = info.runs.slice(0, -1);
+    let html = `<tr><th>frame ${info.frame}</th>${runs.map((r) => `<th>${r.policy}</th>`).join('')}</tr>`;
+    html += `<tr><td>level</td>${runs.map((r) => `<td>${r.level}</td>`).join('')}</tr>`;
+    html += `<tr><td>error, px</td>${runs.map((r) => `<td>${r.measured_error_px.toFixed(3)}</td>`).join('')}</tr>`;
+    html += `<tr><td>largest, px</td>${runs.map((r) => `<td>${r.max_error_px.toFixed(3)}</td>`).join('')}</tr>`;
+    html += `<tr><th colspan="${runs.length + 1}">share of frames 1 .. now</th></tr>`;
+    for (const level of levels) {
+      html += `<tr><td>${level}</td>${runs.map((r) => `<td>${(100 * r.level_shares[level]).toFixed(0)}%</td>`).join('')}</tr>`;
+    }
+    setHtml($('runs'), html);
+  },
+};
+app.views.animation = comparisonView;

@@ -1,0 +1,125 @@
+#include "frame_pixels.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace oflab {
+namespace {
+
+void require_same_size(const Image& a, const Image& b) {
+  if (a.width() != b.width() || a.height() != b.height()) {
+    throw std::invalid_argument("frame_pixels: frames of different sizes");
+  }
+}
+
+int channel_difference(const Pixel& p, const Pixel& q) {
+  return std::max(std::max(std::abs(p.r - q.r), std::abs(p.g - q.g)),
+                  std::max(std::abs(p.b - q.b), std::abs(p.a - q.a)));
+}
+
+std::vector<int> nearest_indices(int frame_size, int out_size) {
+  std::vector<int> indices(static_cast<std::size_t>(std::max(1, out_size)));
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    const double centre = (static_cast<double>(i) + 0.5) * frame_size / indices.size();
+    indices[i] = std::clamp(static_cast<int>(centre), 0, std::max(0, frame_size - 1));
+  }
+  return indices;
+}
+
+}  // namespace
+
+DisplaySampling display_sampling(int frame_width, int frame_height, int out_width, int out_height) {
+  return {nearest_indices(frame_width, out_width), nearest_indices(frame_height, out_height)};
+}
+
+namespace {
+
+// Writes out[4 * i ...] for every display pixel i, row after row, from `colour(frame row,
+// frame column)`, which returns 4 bytes. Empty frames give transparent black.
+template <class Colour>
+void sample_into(const Image& frame, const DisplaySampling& sampling, Colour colour,
+                 std::vector<std::uint8_t>& out) {
+  out.resize(sampling.columns.size() * sampling.rows.size() * 4);
+  if (frame.empty()) {
+    std::fill(out.begin(), out.end(), 0);
+    return;
+  }
+  std::uint8_t* o = out.data();
+  for (const int y : sampling.rows) {
+    for (const int x : sampling.columns) {
+      const std::array<std::uint8_t, 4> c = colour(y, x);
+      std::copy(c.begin(), c.end(), o);
+      o += 4;
+    }
+  }
+}
+
+}  // namespace
+
+void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
+                  std::vector<std::uint8_t>& out) {
+  // Premultiplied "over": colour + background * (1 - alpha), rounded.
+  const auto over = [&](int y, int x) {
+    const Pixel p = frame.at(x, y);
+    const int rest = 255 - p.a;
+    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(p.r + (rgb[0] * rest + 127) / 255),
+                                       static_cast<std::uint8_t>(p.g + (rgb[1] * rest + 127) / 255),
+                                       static_cast<std::uint8_t>(p.b + (rgb[2] * rest + 127) / 255),
+                                       255};
+  };
+  sample_into(frame, sampling, over, out);
+}
+
+int largest_difference(const Image& a, const Image& b) {
+  require_same_size(a, b);
+  // The largest over pixels of the largest over channels is the largest over all bytes: one
+  // flat loop over bytes, which the compiler turns into SIMD.
+  const auto* pa = reinterpret_cast<const std::uint8_t*>(a.pixels().data());
+  const auto* pb = reinterpret_cast<const std::uint8_t*>(b.pixels().data());
+  const std::size_t bytes = a.pixel_count() * sizeof(Pixel);
+  std::uint8_t largest = 0;
+  for (std::size_t i = 0; i < bytes; ++i) {
+    const std::uint8_t d = pa[i] > pb[i] ? pa[i] - pb[i] : pb[i] - pa[i];
+    largest = std::max(largest, d);
+  }
+  return largest;
+}
+
+void viridis(double t, std::uint8_t rgb[3]) {
+  // Nine samples of matplotlib's viridis at t = 0, 1/8, ..., 1, interpolated linearly.
+  static constexpr std::array<std::array<double, 3>, 9> kStops = {{{68, 1, 84},
+                                                                   {71, 44, 122},
+                                                                   {59, 81, 139},
+                                                                   {44, 113, 142},
+                                                                   {33, 144, 141},
+                                                                   {39, 173, 129},
+                                                                   {92, 200, 99},
+                                                                   {170, 220, 50},
+                                                                   {253, 231, 37}}};
+  const double x = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 8.0;
+  const int i = std::min(7, static_cast<int>(x));
+  const double f = x - i;
+  for (int c = 0; c < 3; ++c) {
+    const double v = kStops[i][c] + (kStops[i + 1][c] - kStops[i][c]) * f;
+    rgb[c] = static_cast<std::uint8_t>(std::lround(v));
+  }
+}
+
+void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
+                              const DisplaySampling& sampling, std::vector<std::uint8_t>& out) {
+  require_same_size(a, b);
+  if (full_scale < 1) throw std::invalid_argument("difference_heat_map_into: full_scale < 1");
+  std::array<std::array<std::uint8_t, 4>, 256> ramp{};
+  for (int d = 0; d < 256; ++d) {
+    std::uint8_t rgb[3];
+    viridis(static_cast<double>(d) / full_scale, rgb);
+    ramp[d] = {rgb[0], rgb[1], rgb[2], 255};
+  }
+  const auto heat = [&](int y, int x) { return ramp[channel_difference(a.at(x, y), b.at(x, y))]; };
+  sample_into(a, sampling, heat, out);
+}
+
+}  // namespace oflab

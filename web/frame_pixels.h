@@ -1,0 +1,42 @@
+// Core frames as the pixels of a 2D canvas (ImageData: straight-alpha RGBA8, row after row),
+// at the size the page shows them: a premultiplied frame flattened over an opaque
+// background, and the difference of two frames as a heat map. Colour mapping and display
+// sampling only; what the frames show is core's.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "image/image.h"
+
+namespace oflab {
+
+// A display of out_width x out_height pixels showing a whole frame: display pixel (x, y)
+// shows the frame pixel under its centre (nearest neighbour). Preconditions: out sizes >= 1.
+struct DisplaySampling {
+  std::vector<int> columns;  // frame column of each display column
+  std::vector<int> rows;     // frame row of each display row
+};
+DisplaySampling display_sampling(int frame_width, int frame_height, int out_width, int out_height);
+
+// `frame` (premultiplied RGBA) composited over the opaque colour (r, g, b) and sampled by
+// `sampling` into `out`, 4 bytes per display pixel (resized to fit).
+void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
+                  std::vector<std::uint8_t>& out);
+
+// The largest absolute difference of the four premultiplied channels over all pixels of two
+// frames, in grey levels (0..255). Precondition: same size (throws std::invalid_argument).
+int largest_difference(const Image& a, const Image& b);
+
+// The difference of two frames as a heat map sampled by `sampling` into `out` (opaque RGBA8):
+// per pixel the largest absolute difference of the four premultiplied channels, in grey
+// levels, coloured by the viridis ramp from 0 (dark blue) to `full_scale` and above
+// (yellow). Preconditions: same size (throws std::invalid_argument), full_scale >= 1.
+void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
+                              const DisplaySampling& sampling, std::vector<std::uint8_t>& out);
+
+// The viridis colour of t in [0, 1] (clamped; NaN as 0) as r, g, b bytes: the heat map's
+// ramp, also for the page's colour bar.
+void viridis(double t, std::uint8_t rgb[3]);
+
+}  // namespace oflab
