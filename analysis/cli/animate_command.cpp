@@ -25,7 +25,10 @@ constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
                                              "--near",
                                              "--guard-band",
                                              "--no-skip-hidden",
-                                             "--hole-fill"};
+                                             "--hole-fill",
+                                             "--cache-angle",
+                                             "--node-polygons",
+                                             "--safety-radius"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
 void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,
@@ -165,6 +168,9 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--cadence", 1},
                            {"--stabilization-plane", 6},
                            {"--hole-fill", 1},
+                           {"--cache-angle", 1},
+                           {"--node-polygons", 1},
+                           {"--safety-radius", 1},
                            {"--frames", 1},
                            {"--repeat-timing", 1},
                            {"--no-warm-up", 0},

@@ -28,7 +28,8 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
     *kind = &source_kind("scene");
     return source;
   }
-  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill"}) {
+  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill",
+                             "--cache-angle", "--node-polygons", "--safety-radius"}) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
   }
   *kind = &source_kind("plane");
@@ -143,7 +144,10 @@ int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--budget-ms", 1},
                            {"--cadence", 1},
                            {"--stabilization-plane", 6},
-                           {"--hole-fill", 1}});
+                           {"--hole-fill", 1},
+                           {"--cache-angle", 1},
+                           {"--node-polygons", 1},
+                           {"--safety-radius", 1}});
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");
