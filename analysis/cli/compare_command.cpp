@@ -85,6 +85,12 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--policies: ") + e.what());
   }
+  for (const ReusePolicy* p : policies) {
+    if (p->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
+      throw UsageError(std::string("--policies: ") + p->name +
+                       " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+    }
+  }
   const SourceKind* kind = nullptr;
   const RunSource source = read_source(a, &kind);
   const bool budgeted = std::any_of(policies.begin(), policies.end(),

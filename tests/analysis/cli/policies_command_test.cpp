@@ -118,8 +118,11 @@ TEST(PoliciesCommand, TheHierarchicalCacheIsListedAndRefusesASinglePlane) {
   EXPECT_TRUE(listed);
   const CliResult r =
       run({"animate", "--script", "stationary", "--frames", "2", "--mode", "hierarchical-cache"});
+  const CliResult c = run({"compare", "--script", "zoom", "--policies", "hierarchical-cache"});
+  EXPECT_EQ(c.code, 2);
+  EXPECT_NE(c.err.find("needs --scene"), std::string::npos) << c.err;
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("needs a scene"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("needs --scene"), std::string::npos) << r.err;
 }
 
 TEST(PoliciesCommand, UnknownModeErrorNamesTheOptionAndThePolicies) {
