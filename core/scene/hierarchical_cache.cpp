@@ -46,6 +46,22 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
   return hull;
 }
 
+// Writes `value` into `labels` (row-major, width x height) at every pixel that `image`,
+// placed with its top-left pixel at (offset_x, offset_y), covers at kCoverAlpha or more.
+void label_covered(const Image& image, int offset_x, int offset_y, int width, int height, int value,
+                   std::vector<int>& labels) {
+  for (int y = 0; y < image.height(); ++y) {
+    const int ly = y + offset_y;
+    if (ly < 0 || ly >= height) continue;
+    for (int x = 0; x < image.width(); ++x) {
+      const int lx = x + offset_x;
+      if (lx >= 0 && lx < width && image.at(x, y).a >= kCoverAlpha) {
+        labels[static_cast<std::size_t>(ly) * width + lx] = value;
+      }
+    }
+  }
+}
+
 // The camera whose image is the rectangle of `camera`'s pixels with top-left corner
 // (x0, y0) and the given size.
 Camera sub_camera(const Camera& camera, int x0, int y0, int width, int height) {
@@ -167,17 +183,8 @@ void HierarchicalCache::render_node(int k, const ViewerPose& view, const std::ve
     const int plane = static_cast<int>(s.planes.size());
     s.planes.push_back(
         plane_vector_of(to_view(view, polygon.centre), direction_to_view(view, polygon.front)));
-    const Image& drawn = placed.layer.image;
-    for (int y = 0; y < drawn.height(); ++y) {
-      const int iy = y + placed.offset_y;
-      if (iy < 0 || iy >= height) continue;
-      for (int x = 0; x < drawn.width(); ++x) {
-        const int ix = x + placed.offset_x;
-        if (ix >= 0 && ix < width && drawn.at(x, y).a >= kCoverAlpha) {
-          s.surface[static_cast<std::size_t>(iy) * width + ix] = plane;
-        }
-      }
-    }
+    label_covered(placed.layer.image, placed.offset_x, placed.offset_y, width, height, plane,
+                  s.surface);
   }
   std::vector<Vec2> local;
   for (const Vec2& v : hull) local.push_back(v - Vec2(x0, y0));
@@ -346,17 +353,7 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
   front_node_.assign(static_cast<std::size_t>(w) * h, -1);
   for (int k : drawn) {
     const WarpedLayer& shown = states_[k]->shown;
-    const Image& image = shown.layer.image;
-    for (int y = 0; y < image.height(); ++y) {
-      const int fy = y + shown.offset_y;
-      if (fy < 0 || fy >= h) continue;
-      for (int x = 0; x < image.width(); ++x) {
-        const int fx = x + shown.offset_x;
-        if (fx >= 0 && fx < w && image.at(x, y).a >= kCoverAlpha) {
-          front_node_[static_cast<std::size_t>(fy) * w + fx] = k;
-        }
-      }
-    }
+    label_covered(shown.layer.image, shown.offset_x, shown.offset_y, w, h, k, front_node_);
   }
   NodeCacheFrame& c = report.cache;
   const DepthFrame exact = render_depth(scene_, camera_, current, context_.near);
