@@ -25,7 +25,10 @@ constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
                                              "--near",
                                              "--guard-band",
                                              "--no-skip-hidden",
-                                             "--hole-fill"};
+                                             "--hole-fill",
+                                             "--cache-angle",
+                                             "--node-polygons",
+                                             "--safety-radius"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
 void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,
@@ -133,6 +136,11 @@ const SourceKind& animate_kind(const CliArgs& a) {
     return *kind;
   }
   if (a.has("--epsilon")) throw UsageError("--epsilon: needs --mode scene-shifting");
+  const ReusePolicy* policy = find_reuse_policy(mode);
+  if (policy && policy->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
+    throw UsageError("--mode " + mode +
+                     ": needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+  }
   return source_kind(a.has("--scene") ? "scene" : "plane");
 }
 
@@ -165,6 +173,9 @@ int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--cadence", 1},
                            {"--stabilization-plane", 6},
                            {"--hole-fill", 1},
+                           {"--cache-angle", 1},
+                           {"--node-polygons", 1},
+                           {"--safety-radius", 1},
                            {"--frames", 1},
                            {"--repeat-timing", 1},
                            {"--no-warm-up", 0},

@@ -31,6 +31,13 @@ SceneSettings read_scene_settings(const CliArgs& a) {
   if (!parse_hole_fill(fill, s.hole_fill)) {
     throw UsageError("--hole-fill: '" + fill + "' is not one of " + hole_fill_name_list());
   }
+  if (a.has("--cache-angle")) s.cache.angle_deg = a.number_in("--cache-angle", limits::kCacheAngle);
+  if (a.has("--node-polygons")) {
+    s.cache.max_node_polygons = a.integer_in("--node-polygons", limits::kCacheNodePolygons);
+  }
+  if (a.has("--safety-radius")) {
+    s.cache.safety_radius = a.number_in("--safety-radius", limits::kSafetyRadius);
+  }
   return s;
 }
 

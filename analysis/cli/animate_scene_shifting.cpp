@@ -28,7 +28,10 @@ constexpr const char* kEngineOnlyOptions[] = {"--threshold",
                                               "--budget-ms",
                                               "--cadence",
                                               "--stabilization-plane",
-                                              "--hole-fill"};
+                                              "--hole-fill",
+                                              "--cache-angle",
+                                              "--node-polygons",
+                                              "--safety-radius"};
 
 void print_summary(const AnimationRun& run, const std::string& scene, const std::string& script,
                    std::ostream& out) {

@@ -43,6 +43,7 @@ std::string animate_usage() {
       "       oflab-cli animate --scene NAME|FILE --script NAME|FILE [same options]\n"
       "               [--compare-conventional [--conventional-single-sample]]\n"
       "               [--near Z] [--guard-band G] [--hole-fill none|stretch|background]\n"
+      "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode " +
       source_kind_modes("|") +
@@ -101,6 +102,7 @@ const std::vector<Command>& all_commands() {
        "               [--cadence N] [--stabilization-plane X Y Z NX NY NZ]\n"
        "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
        "               [--hole-fill none|stretch|background]\n"
+       "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
        "               [--json] [--out DIR [--force]] [--quiet]\n"
        "  policies: the names of 'oflab-cli policies'",
        run_compare_command},

@@ -28,7 +28,8 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
     *kind = &source_kind("scene");
     return source;
   }
-  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill"}) {
+  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill",
+                             "--cache-angle", "--node-polygons", "--safety-radius"}) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
   }
   *kind = &source_kind("plane");
@@ -83,6 +84,12 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
     policies = parse_policy_list(a.values("--policies").at(0));
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--policies: ") + e.what());
+  }
+  for (const ReusePolicy* p : policies) {
+    if (p->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
+      throw UsageError(std::string("--policies: ") + p->name +
+                       " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+    }
   }
   const SourceKind* kind = nullptr;
   const RunSource source = read_source(a, &kind);
@@ -143,7 +150,10 @@ int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream
                            {"--budget-ms", 1},
                            {"--cadence", 1},
                            {"--stabilization-plane", 6},
-                           {"--hole-fill", 1}});
+                           {"--hole-fill", 1},
+                           {"--cache-angle", 1},
+                           {"--node-polygons", 1},
+                           {"--safety-radius", 1}});
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");

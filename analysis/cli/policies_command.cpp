@@ -2,7 +2,8 @@
 // of `oflab-cli animate --mode`, one per line as "name  summary" followed by indented lines
 // saying which system each models and where it breaks, or as JSON:
 //   {"policies": [{"name", "summary", "models", "breaks", "schedule" ("threshold" or
-//   "cadence"), "warp" ("per-layer" or "per-pixel-depth"), "latency_frames"}, ...],
+//   "cadence"), "warp" ("per-layer", "per-pixel-depth" or "node-images"), "latency_frames"},
+//   ...],
 //   "interpolation_latency_frames": 1} in registry order; the last is what frame
 //   generation's interpolation between two renders would score, for comparison.
 #include <algorithm>
@@ -32,7 +33,7 @@ nlohmann::ordered_json policies_json() {
     entry["models"] = p.models;
     entry["breaks"] = p.breaks;
     entry["schedule"] = p.schedule == Schedule::kCadence ? "cadence" : "threshold";
-    entry["warp"] = p.frame_warp == FrameWarp::kPerPixelDepth ? "per-pixel-depth" : "per-layer";
+    entry["warp"] = frame_warp_name(p.frame_warp);
     entry["latency_frames"] = p.latency_frames;
     list.push_back(entry);
   }

@@ -3,7 +3,9 @@
 // per layer on a fixed cadence, with optic flow's threshold rule (`perspective`) for
 // reference, on every Experiment 2 scene under each of its viewer scripts (translate, zoom,
 // rotate) and on the street: measured error, hole pixels, work, latency; a chart of error
-// against work; the vendors' published figures quoted as theirs.
+// against work; the vendors' published figures quoted as theirs. Beside them the
+// dissertation's named rivals: Talisman and Shade et al.'s hierarchical image cache, with the
+// cache's nodes, renders by cause, seams and per-pixel error in a table of their own.
 #pragma once
 
 #include <string>
@@ -33,7 +35,8 @@ struct ReprojectionResult {
   std::vector<ReprojectionSource> sources;
 };
 
-// The policies compared: timewarp, stabilized-plane, depth-reprojection, cadence, perspective.
+// The policies compared: timewarp, stabilized-plane, depth-reprojection, cadence, perspective,
+// and the dissertation's two named rivals, talisman and hierarchical-cache.
 std::vector<const ReusePolicy*> reprojection_policies();
 
 // The Experiment 2 scenes (single-1, two, five-collinear, four-cubes) under translate, zoom

@@ -1,6 +1,7 @@
 // One source under several reuse policies (see analysis/runs/policy_runs.h).
 #include "runs/policy_runs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -73,6 +74,7 @@ PolicyRow policy_row(const PolicyRun& r) {
   row.mean_optimality_gap = s.mean_optimality_gap;
   row.hole_pixels = s.hole_pixels;
   row.latency_frames = r.policy->latency_frames;
+  row.cache = s.cache;
   double sum = 0.0;
   long count = 0;
   for (const AnimationFrame& f : r.run.frames) {
@@ -105,6 +107,7 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
                       {"frames", row.frames},
                       {"hole_pixels", row.hole_pixels},
                       {"latency_frames", row.latency_frames}};
+  if (row.cache.active) j["cache"] = node_cache_json(row.cache);
   if (row.budgeted) {
     j["budget"] = {{"frames_over_budget", row.frames_over_budget},
                    {"starved_layer_frames", row.starved_layer_frames},
@@ -115,19 +118,21 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
 }
 
 void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
-  out << std::left << std::setw(13) << "policy" << std::right;
+  int name_width = 13;
+  for (const PolicyRow& r : rows) name_width = std::max(name_width, int(r.name.size()) + 1);
+  out << std::left << std::setw(name_width) << "policy" << std::right;
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << level_title(static_cast<Level>(l));
   out << std::setw(8) << "work" << std::setw(8) << "time" << std::setw(8) << "model"
       << std::setw(10) << "max err" << std::setw(10) << "mean err" << std::setw(8) << "PSNR"
       << "\n";
-  out << std::left << std::setw(13) << "" << std::right;
+  out << std::left << std::setw(name_width) << "" << std::right;
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << "% layer-fr.";
   out << std::setw(8) << "saved %" << std::setw(8) << "saved %" << std::setw(8) << "saved %"
       << std::setw(10) << "px" << std::setw(10) << "px" << std::setw(8) << "dB"
       << "\n";
   out << std::fixed;
   for (const PolicyRow& r : rows) {
-    out << std::left << std::setw(13) << r.name << std::right << std::setprecision(1);
+    out << std::left << std::setw(name_width) << r.name << std::right << std::setprecision(1);
     for (double share : r.level_share) out << std::setw(12) << 100.0 * share;
     out << std::setw(8) << 100.0 * r.work_saved << std::setw(8) << 100.0 * r.time_saved
         << std::setw(8) << 100.0 * r.model_work_saved << std::setprecision(3) << std::setw(10)
@@ -139,6 +144,18 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
     out << r.name << ": " << r.frames_over_budget << " frames over budget, "
         << r.starved_layer_frames << " starved layer-frames, mean optimality gap "
         << optimality_gap_text(r.mean_optimality_gap, r.gap_frames) << "\n";
+  }
+  for (const PolicyRow& r : rows) {
+    if (!r.cache.active) continue;
+    const NodeCacheTotals& c = r.cache;
+    out << std::setprecision(3) << r.name << ": " << c.nodes << " nodes, " << c.node_frames
+        << " node-frames drawn, " << c.renders << " node renders (" << c.fresh << " fresh, "
+        << c.by_angle << " by the angle, " << c.by_sphere << " by the safety sphere, "
+        << c.uncacheable << " uncacheable); threshold " << c.threshold_px
+        << " px at the focal length, largest corner angle reused " << c.max_angle_deg
+        << " deg; holes " << r.hole_pixels << " px, overlaps " << c.overlap_pixels
+        << " px; per-pixel error max " << c.max_pixel_error_px << " px, mean "
+        << c.mean_pixel_error_px << " px\n";
   }
 }
 

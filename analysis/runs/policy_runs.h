@@ -63,20 +63,23 @@ struct PolicyRow {
   int frames = 0;
   std::int64_t hole_pixels = 0;  // RunSummary's total (0 for a policy without holes)
   int latency_frames = 0;        // the policy's (ReusePolicy::latency_frames)
+  NodeCacheTotals cache;         // RunSummary's (the hierarchical-cache policy only)
 };
 PolicyRow policy_row(const PolicyRun& run);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
 // "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames",
-// "hole_pixels" (the total over the frames), "latency_frames"}, and
+// "hole_pixels" (the total over the frames), "latency_frames"}, for the hierarchical cache
+// "cache": node_cache_json (analysis/runs/run_driver.h), and
 // for a budgeted row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames",
 // "mean_optimality_gap" (fraction, null when no frame was checked)}.
 nlohmann::json policy_row_json(const PolicyRow& row);
 
 // A text table, one row per policy: the level percents, work, time and model work saved,
 // max and mean measured error and mean PSNR; then a line per budgeted row with its frames
-// over budget, starved layer-frames and mean optimality gap.
+// over budget, starved layer-frames and mean optimality gap, and a line per hierarchical
+// cache row with its nodes, node renders by cause, holes, overlaps and per-pixel error.
 void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out);
 
 }  // namespace oflab

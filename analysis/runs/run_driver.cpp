@@ -47,6 +47,7 @@ class SummaryTotals {
       s_.max_excess_px = std::isnan(s_.max_excess_px) ? excess : std::max(s_.max_excess_px, excess);
     }
     add_budget(f.budget);
+    s_.cache.add(f.cache);
     keep_finite(times_, f.time_ms);
     if (keep_finite(baseline_times_, r.baseline_ms)) s_.baseline_time_ms += r.baseline_ms;
     if (keep_finite(conventional_times_, r.conventional_ms))
@@ -99,6 +100,44 @@ class SummaryTotals {
 };
 
 }  // namespace
+
+void NodeCacheTotals::add(const NodeCacheFrame& f) {
+  if (!f.active) return;
+  active = true;
+  nodes = f.nodes;
+  node_frames += f.drawn;
+  renders += f.rendered;
+  fresh += f.fresh;
+  by_angle += f.by_angle;
+  by_sphere += f.by_sphere;
+  uncacheable += f.uncacheable;
+  overlap_pixels += f.overlap_pixels;
+  max_pixel_error_px = std::max(max_pixel_error_px, f.max_pixel_error_px);
+  const std::int64_t n = error_pixels + f.error_pixels;
+  if (n > 0) {
+    mean_pixel_error_px = (mean_pixel_error_px * static_cast<double>(error_pixels) +
+                           f.mean_pixel_error_px * static_cast<double>(f.error_pixels)) /
+                          static_cast<double>(n);
+  }
+  error_pixels = n;
+  max_angle_deg = std::max(max_angle_deg, f.max_angle_deg);
+  threshold_px = f.threshold_px;
+}
+
+nlohmann::json node_cache_json(const NodeCacheTotals& c) {
+  return {{"nodes", c.nodes},
+          {"node_frames", c.node_frames},
+          {"node_renders", c.renders},
+          {"renders_fresh", c.fresh},
+          {"renders_by_angle", c.by_angle},
+          {"renders_by_sphere", c.by_sphere},
+          {"uncacheable", c.uncacheable},
+          {"overlap_pixels", c.overlap_pixels},
+          {"max_pixel_error_px", c.max_pixel_error_px},
+          {"mean_pixel_error_px", c.mean_pixel_error_px},
+          {"max_angle_deg", c.max_angle_deg},
+          {"threshold_px", c.threshold_px}};
+}
 
 long RunSummary::drawn() const {
   long n = 0;

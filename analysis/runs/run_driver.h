@@ -68,6 +68,30 @@ struct RunOptions {
   bool keep_frames = true;
 };
 
+// The hierarchical image cache's totals over a run (AnimationFrame::cache, core/engine/
+// animator.h): the grouping's nodes, node-frames drawn, renders and their causes, overlap
+// pixels, the per-pixel error (max, and mean over every measured pixel), the largest corner
+// angle of a reused node and the threshold in pixels (f tan(angle)).
+struct NodeCacheTotals {
+  bool active = false;
+  int nodes = 0;
+  long node_frames = 0;
+  long renders = 0;
+  long fresh = 0;
+  long by_angle = 0;
+  long by_sphere = 0;
+  long uncacheable = 0;
+  std::int64_t overlap_pixels = 0;
+  double max_pixel_error_px = 0.0;
+  double mean_pixel_error_px = 0.0;
+  std::int64_t error_pixels = 0;
+  double max_angle_deg = 0.0;
+  double threshold_px = 0.0;
+  // Adds one frame's figures (the mean weighted by measured pixels).
+  void add(const NodeCacheFrame& frame);
+};
+nlohmann::json node_cache_json(const NodeCacheTotals& totals);
+
 // Totals over a run. Times in milliseconds of wall time; "baseline" is the exact re-render
 // of the same frames, "conventional" the VTK renderer (NaN medians when not run).
 struct RunSummary {
@@ -117,6 +141,7 @@ struct RunSummary {
   long starved_layer_frames = 0;
   long gap_frames = 0;
   double mean_optimality_gap = std::numeric_limits<double>::quiet_NaN();
+  NodeCacheTotals cache;          // the hierarchical-cache policy only (cache.active)
   double conventional_iou = 0.0;  // mean alpha-mask IoU of VTK against the baseline (or NaN)
   long culled() const { return back_facing + outside_frustum; }
   long drawn() const;  // sum of levels

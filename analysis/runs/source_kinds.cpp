@@ -93,6 +93,7 @@ nlohmann::json with_budget(nlohmann::json summary, const RunSummary& s) {
   const nlohmann::json budget = budget_json(s);
   if (!budget.is_null()) summary["budget"] = budget;
   if (s.reports_holes) summary["hole_pixels"] = s.hole_pixels;
+  if (s.cache.active) summary["cache"] = node_cache_json(s.cache);
   return summary;
 }
 

@@ -31,6 +31,30 @@
 
 namespace oflab {
 
+// What the hierarchical image cache (core/scene/hierarchical_cache.h) did in one frame; only
+// that policy fills it (active).
+struct NodeCacheFrame {
+  bool active = false;
+  int nodes = 0;               // nodes of the grouping (core/scene/cache_nodes.h)
+  int drawn = 0;               // nodes drawn this frame (some polygon of theirs not culled)
+  int rendered = 0;            // of which rendered into their image again (every cause below)
+  int fresh = 0;               // rendered: no image to reuse (frame 0, or drawn again after a cull)
+  int by_angle = 0;            // rendered: a corner's angular error over the threshold
+  int by_sphere = 0;           // rendered: the viewer outside the safety sphere, angle within
+  int uncacheable = 0;         // rendered straight into the frame: a corner at or behind the near
+                               // plane, the quad beyond the guard band, or a warp refused
+  double threshold_px = 0.0;   // the angle threshold at the focal length: f tan(angle), px
+  double max_angle_deg = 0.0;  // the largest corner angle of a reused node, degrees
+  // Against the exact projection of the frame (untimed diagnostics): pixels where a surface
+  // is seen but no node image covers (holes), pixels where the front node image is not the
+  // node of the surface seen there, or covers the background (overlap), and the per-pixel
+  // displacement of the reused nodes' pixels (max and mean over error_pixels pixels).
+  std::int64_t overlap_pixels = 0;
+  double max_pixel_error_px = 0.0;
+  double mean_pixel_error_px = 0.0;
+  std::int64_t error_pixels = 0;
+};
+
 // What an animator did in one frame, in terms every animator shares. Fields that do not
 // apply to an animator stay zero (e.g. culling counts for a single plane).
 struct AnimationFrame {
@@ -65,12 +89,15 @@ struct AnimationFrame {
   // reports_holes): the per-frame CSV and the summaries then add them.
   bool reports_holes = false;
   // The engine report of each layer updated this frame, in layer order: exactly one for a
-  // single plane (also when it is not visible), one per animated polygon for a scene, none
-  // for scene shifting (its slices keep no per-term books).
+  // single plane (also when it is not visible), one per animated polygon for a scene (one per
+  // drawn node under the hierarchical image cache), none for scene shifting (its slices
+  // keep no per-term books).
   std::vector<FrameReport> layer_reports;
   // A policy that shares a per-frame budget (core/engine/budget.h): the budget, what the
   // frame spent, starved layers and the optimality gap; inactive otherwise and in frame 0.
   BudgetReport budget;
+  // The hierarchical image cache's nodes (inactive for every other policy).
+  NodeCacheFrame cache;
   std::string note;  // why the frame is special, empty when it is not
 
   int culled() const { return back_facing + outside_frustum; }
@@ -126,7 +153,7 @@ class Animator {
 // engine's displayed layer composed into a camera-sized frame, transparent (nothing) in
 // frames where the plane is not visible; outlines() the displayed polygon. Throws
 // std::invalid_argument when the script has no frames, or repeat < 1 or F * repeat does not
-// fit an int.
+// fit an int, or the policy needs a scene (FrameWarp::kNodeImages: hierarchical-cache).
 std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
                                               const EngineSettings& settings, int repeat = 1);
 

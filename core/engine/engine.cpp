@@ -128,6 +128,24 @@ PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose
   return {std::move(w.layer), w.offset_x, w.offset_y};
 }
 
+PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& content, Layer& texture,
+                                 const PlanePose& pose, const ConvexPolygon& texels,
+                                 const ViewPolygon& clipped, Sampling sampling,
+                                 std::int64_t* pixels_written, double* model_work) {
+  if (content_is_lit(content)) {
+    ContentStats stats;
+    PlacedLayer placed = render_clipped_content(camera, content, pose, texels, clipped, &stats);
+    *pixels_written += stats.pixels_written;
+    *model_work += stats.work_units * content_unit_cost(content.kind);
+    return placed;
+  }
+  WarpStats stats;
+  PlacedLayer placed = render_clipped(camera, texture, pose, clipped, sampling, &stats);
+  *pixels_written += stats.pixels_written;
+  *model_work += stats.pixels_written * kPerspectiveWarpCost;
+  return placed;
+}
+
 PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
                                    const PlanePose& pose, const ConvexPolygon& texels,
                                    const ViewPolygon& clipped, ContentStats* stats) {

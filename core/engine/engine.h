@@ -188,6 +188,17 @@ PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& con
                                    const PlanePose& pose, const ConvexPolygon& texels,
                                    const ViewPolygon& clipped, ContentStats* stats = nullptr);
 
+// The exact image of a clipped part of a plane from whatever `content` draws: a texture by
+// render_clipped (of `texture`, whose valid polygon is `texels` in texels of the texture),
+// a lit content by render_clipped_content. Adds the pixels written to *pixels_written and
+// the work in the cost model (a texture's pixels at kPerspectiveWarpCost, a lit content's
+// work units at content_unit_cost) to *model_work. Throws std::invalid_argument as
+// render_clipped. Preconditions as render_clipped's.
+PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& content, Layer& texture,
+                                 const PlanePose& pose, const ConvexPolygon& texels,
+                                 const ViewPolygon& clipped, Sampling sampling,
+                                 std::int64_t* pixels_written, double* model_work);
+
 // The engine of one plane, driven pose by pose by its caller. Not an Animator
 // (core/engine/animator.h), which owns its script: make_plane_animator plays a motion script
 // through one PlaneEngine, and the scene engine (core/scene/scene_animator.h) keeps one per

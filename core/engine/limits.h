@@ -61,6 +61,12 @@ inline constexpr Limit kCadence{"cadence", "frames", 1.0, 8.0, true};
 // stabilization), world units.
 inline constexpr Limit kStabilizationPlane{"stabilization plane coordinate", "u", -10000.0,
                                            10000.0};
+// The hierarchical image cache (core/scene/cache_nodes.h CacheSettings): the angular
+// threshold of a node's bounding-box corners, degrees; the grouping rule's polygons per
+// cluster; the safety sphere's radius, world units (0: the automatic, conservative radius).
+inline constexpr Limit kCacheAngle{"cache angle", "deg", 0.001, 10.0};
+inline constexpr Limit kCacheNodePolygons{"node polygons", "polygons", 1.0, 10000.0, true};
+inline constexpr Limit kSafetyRadius{"safety radius", "u", 0.0, 10000.0};
 // Layer content quality: samples per pixel of shaded content, detail of impostors
 // (core/content/layer_content.h, whose kMaxContentQuality is this maximum).
 inline constexpr Limit kContentQuality{"content quality", "", 1.0, 256.0, true};

@@ -31,6 +31,24 @@ ReusePolicy on_cadence(const char* name, const char* summary, ModelUpdate model,
   return described(p, models, breaks);
 }
 
+// Shade et al. 96: the scene engine plays it (core/scene/hierarchical_cache.h); `choose` is
+// never asked, a node's rule being its angle and sphere (cache_render_cause).
+ReusePolicy hierarchical_cache() {
+  ReusePolicy p{"hierarchical-cache",
+                "Shade et al. 96: BSP nodes cached as images on quads, angular error, scenes only",
+                InitialView::kExact,
+                ModelUpdate::kExact,
+                kWarpOrRerender,
+                always_rerender};
+  p.bounded = false;  // an angle at eight box corners does not bound the pixels in between
+  p.frame_warp = FrameWarp::kNodeImages;
+  return described(p,
+                   "hierarchical image caching (Shade, Lischinski, Salesin, DeRose & Snyder 96; "
+                   "dissertation section 2.4.7): a node's image on one quad",
+                   "depth inside a node close to the viewer: one quad per node, an angle at the "
+                   "box corners only");
+}
+
 }  // namespace
 
 LevelPixels estimate_level_pixels(std::int64_t displayed_px, std::int64_t cache_px) {
@@ -67,7 +85,19 @@ Level cadence_choice(const ReusePolicy&, const FrameInputs& inputs) {
 }
 
 bool reports_holes(const ReusePolicy& policy) {
-  return policy.frame_warp == FrameWarp::kPerPixelDepth || policy.schedule == Schedule::kCadence;
+  return policy.frame_warp != FrameWarp::kPerLayer || policy.schedule == Schedule::kCadence;
+}
+
+const char* frame_warp_name(FrameWarp warp) {
+  switch (warp) {
+    case FrameWarp::kPerLayer:
+      return "per-layer";
+    case FrameWarp::kPerPixelDepth:
+      return "per-pixel-depth";
+    case FrameWarp::kNodeImages:
+      return "node-images";
+  }
+  return "per-layer";
 }
 
 const std::vector<ReusePolicy>& reuse_policies() {
@@ -129,6 +159,7 @@ const std::vector<ReusePolicy>& reuse_policies() {
                  ModelUpdate::kExact, FramePlane::kInfinity, FrameWarp::kPerLayer,
                  "oflab's plane per layer on a fixed cadence (asynchronous spacewarp's schedule)",
                  "only resampling and the sampling limit: the fair comparison for the three"),
+      hierarchical_cache(),
   };
   return policies;
 }

@@ -27,6 +27,11 @@
 //   depth-reprojection  post-rendering 3D warping: the composited frame forward-warped by each
 //                       pixel's depth (core/scene/depth_reprojection.h), holes marked;
 //   cadence             each layer by its own plane's exact homography: the fair comparison.
+// The dissertation's other named rival (section 2.4.7):
+//   hierarchical-cache  Shade et al. 96: BSP nodes cached as images on quads facing the viewer,
+//                       warped by the quad's homography, re-rendered by an angular error at
+//                       the nodes' box corners or outside a safety sphere (scenes only;
+//                       core/scene/hierarchical_cache.h).
 #pragma once
 
 #include <array>
@@ -80,9 +85,13 @@ enum class FramePlane {
   kStabilization,  // EngineSettings::stabilization: a given plane, or the automatic fit
 };
 
-// What a frame warp moves: each layer by its own warp (the engine), or the composited
-// frame pixel by pixel by its depth (the scene engine, core/scene/depth_reprojection.h).
-enum class FrameWarp { kPerLayer, kPerPixelDepth };
+// What a frame warp moves: each layer by its own warp (the engine), the composited frame
+// pixel by pixel by its depth (the scene engine, core/scene/depth_reprojection.h), or one
+// cached image per node of the scene's BSP tree (core/scene/hierarchical_cache.h; scenes
+// only: a single plane has no tree to group).
+enum class FrameWarp { kPerLayer, kPerPixelDepth, kNodeImages };
+// "per-layer", "per-pixel-depth" or "node-images".
+const char* frame_warp_name(FrameWarp warp);
 
 // Talisman's sampling limits on the singular values of the fitted warp's 2x2 part
 // (FitFiducials): the layer may be magnified at most 2x (the engine's default sampling
@@ -176,9 +185,9 @@ Level talisman_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 // the error); the choice of timewarp, stabilized-plane, depth-reprojection and cadence.
 Level cadence_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 
-// True when the policy's frames can have holes (FrameWarp::kPerPixelDepth) and its reports
-// therefore carry hole pixels; every policy on a fixed cadence reports them too (0 for the
-// per-layer warps, which show every layer whole).
+// True when the policy's frames can have holes (FrameWarp::kPerPixelDepth, kNodeImages) and
+// its reports therefore carry hole pixels; every policy on a fixed cadence reports them too (0 for
+// the per-layer warps, which show every layer whole).
 bool reports_holes(const ReusePolicy& policy);
 
 // Every policy, in the order help texts and the GUI list them (perspective first). The

@@ -28,6 +28,17 @@ struct BspFragment {
   bool whole = true;           // the entire polygon (false for the pieces of a split)
 };
 
+// One node of the tree: its splitting plane, the fragments lying in it, and its subtrees
+// (indices into BspTree::nodes(), -1 for none). The front subtree holds what lies on the
+// side the normal points to.
+struct BspNode {
+  Vec3 normal{0.0};           // unit normal of the splitting plane
+  double offset = 0.0;        // plane: dot(normal, x) == offset
+  std::vector<int> coplanar;  // fragment indices
+  int front = -1;
+  int back = -1;
+};
+
 struct BspStats {
   int nodes = 0;
   int fragments = 0;  // >= the number of polygons
@@ -58,19 +69,17 @@ class BspTree {
 
   const std::vector<BspFragment>& fragments() const { return fragments_; }
   const BspStats& stats() const { return stats_; }
+  // The nodes, and the index of the root (-1 for an empty tree): what the hierarchical
+  // image cache groups (core/scene/cache_nodes.h).
+  const std::vector<BspNode>& nodes() const { return nodes_; }
+  int root() const { return root_; }
 
  private:
   struct Plane {
     Vec3 normal{0.0};     // unit normal
     double offset = 0.0;  // plane: dot(normal, x) == offset
   };
-  struct Node {
-    Vec3 normal{0.0};     // unit normal of the splitting plane
-    double offset = 0.0;  // plane: dot(normal, x) == offset
-    std::vector<int> coplanar;
-    int front = -1;
-    int back = -1;
-  };
+  using Node = BspNode;
 
   int build(std::vector<int> fragment_ids, int depth);
   int choose_splitter(const std::vector<int>& fragment_ids) const;

@@ -32,6 +32,10 @@
 // perspective-warp unit per source pixel, the measured error the largest per-pixel
 // displacement, and AnimationFrame::hole_pixels the holes.
 //
+// The hierarchical-cache policy (FrameWarp::kNodeImages) classifies the polygons as above, then
+// hands the frame to core/scene/hierarchical_cache.h: nodes of the BSP tree instead of
+// polygons, no hidden test.
+//
 // Near plane. A polygon whose texture rectangle reaches in front of the near plane
 // (Z < near) or projects beyond the guard band (see SceneSettings) is not animated: its
 // part inside the frustum is clipped in 3D and rendered exactly that frame, so a polygon
@@ -48,7 +52,9 @@
 #include "engine/animator.h"
 #include "engine/engine.h"
 #include "scene/bsp_tree.h"
+#include "scene/cache_nodes.h"
 #include "scene/depth_reprojection.h"
+#include "scene/hierarchical_cache.h"
 #include "scene/occlusion.h"
 #include "scene/scene.h"
 #include "scene/view_culling.h"
@@ -73,6 +79,9 @@ struct SceneSettings {
   // What fills the holes of the depth-reprojection policy's warped frames (they are
   // counted whatever fills them; core/scene/depth_reprojection.h).
   HoleFill hole_fill = HoleFill::kNone;
+  // The hierarchical-cache policy's threshold, grouping and safety sphere
+  // (core/scene/cache_nodes.h); other policies ignore it.
+  CacheSettings cache;
 };
 
 // What happened to one polygon in a frame.
@@ -139,6 +148,8 @@ class SceneEngine {
   const DepthFrame& rendered_depth() const { return rendered_depth_; }
   const ViewerPose& rendered_view() const { return rendered_view_; }
   const std::vector<int>& reprojection_sources() const { return source_of_; }
+  // The hierarchical-cache policy's cache; null under other policies.
+  const HierarchicalCache* cache() const { return cache_.get(); }
 
  private:
   struct PolygonState;
@@ -201,7 +212,9 @@ class SceneEngine {
   Image rendered_frame_;
   DepthFrame rendered_depth_;
   ViewerPose rendered_view_;
-  std::vector<int> source_of_;  // the last reprojection's source pixel per pixel
+  std::vector<int> source_of_;                // the last reprojection's source pixel per pixel
+  std::unique_ptr<HierarchicalCache> cache_;  // the hierarchical-cache policy only
+  void cache_frame(const ViewerPose& current, AnimationFrame& report);
 };
 
 // The scene animator playing a viewer script: frame k is seen from script.frames[k].pose.

@@ -76,7 +76,7 @@ void PolicyComparison::build() {
     try {
       run.animator = model_->source_kind().make(model_->source(), *model_->scene_model(), settings);
       restart(run);
-    } catch (const std::exception& e) {  // the model plays it, so this is unexpected
+    } catch (const std::exception& e) {  // a scene-only policy (hierarchical-cache) on a plane
       run.animator.reset();
       run.problem = e.what();
     }

@@ -50,7 +50,15 @@ TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAPlane) {
   source.script = read_script_file(resolve_script_path("zoom-rotation"));
   source.texture = read_image(default_texture_path());
   std::vector<const ReusePolicy*> all;
-  for (const ReusePolicy& p : reuse_policies()) all.push_back(&p);
+  for (const ReusePolicy& p : reuse_policies()) {
+    // The node-image cache plays scenes only, and says so.
+    if (p.frame_warp == FrameWarp::kNodeImages) {
+      EXPECT_THROW(run_policies(source_kind("plane"), source, {&p}, quick_options(2)),
+                   std::invalid_argument);
+      continue;
+    }
+    all.push_back(&p);
+  }
   const auto runs = run_policies(source_kind("plane"), source, all, quick_options(25));
   ASSERT_EQ(runs.size(), all.size());
   expect_same_views(runs, 25);
@@ -62,9 +70,9 @@ TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAScene) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("two")));
   source.viewer = read_viewer_script_file(resolve_viewer_script_path("compound"));
-  const auto runs =
-      run_policies(source_kind("scene"), source,
-                   parse_policy_list("perspective,talisman,dissertation"), quick_options(12));
+  const auto runs = run_policies(
+      source_kind("scene"), source,
+      parse_policy_list("perspective,talisman,dissertation,hierarchical-cache"), quick_options(12));
   expect_same_views(runs, 12);
 }
 

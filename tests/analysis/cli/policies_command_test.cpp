@@ -99,11 +99,30 @@ TEST(PoliciesCommand, TextHasOneLinePerPolicyStartingWithItsName) {
 TEST(PoliciesCommand, EveryListedNameIsAnAnimateMode) {
   const auto j = nlohmann::json::parse(run({"policies", "--json"}).out);
   for (const auto& p : j["policies"]) {
-    const CliResult r = run({"animate", "--script", "stationary", "--frames", "2", "--mode",
-                             p["name"].get<std::string>(), "--json"});
+    // The node-image cache groups a scene's BSP tree: it plays scenes only.
+    const bool scene_only = p["warp"] == "node-images";
+    const CliResult r = scene_only
+                            ? run({"animate", "--scene", "two", "--script", "translate", "--frames",
+                                   "2", "--mode", p["name"].get<std::string>(), "--json"})
+                            : run({"animate", "--script", "stationary", "--frames", "2", "--mode",
+                                   p["name"].get<std::string>(), "--json"});
     ASSERT_EQ(r.code, 0) << p["name"] << ": " << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["mode"], p["name"]);
   }
+}
+
+TEST(PoliciesCommand, TheHierarchicalCacheIsListedAndRefusesASinglePlane) {
+  const auto j = nlohmann::json::parse(run({"policies", "--json"}).out);
+  bool listed = false;
+  for (const auto& p : j["policies"]) listed = listed || p["name"] == "hierarchical-cache";
+  EXPECT_TRUE(listed);
+  const CliResult r =
+      run({"animate", "--script", "stationary", "--frames", "2", "--mode", "hierarchical-cache"});
+  const CliResult c = run({"compare", "--script", "zoom", "--policies", "hierarchical-cache"});
+  EXPECT_EQ(c.code, 2);
+  EXPECT_NE(c.err.find("needs --scene"), std::string::npos) << c.err;
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("needs --scene"), std::string::npos) << r.err;
 }
 
 TEST(PoliciesCommand, UnknownModeErrorNamesTheOptionAndThePolicies) {

@@ -30,7 +30,7 @@ std::string error_of(const std::string& path) {
 TEST(Lessons, EveryShippedLessonFileIsALessonInTeachingOrder) {
   const std::vector<std::string> files = shipped_names("lessons");
   ASSERT_EQ(lessons().size(), files.size());
-  EXPECT_EQ(files.size(), 8u);
+  EXPECT_EQ(files.size(), 9u);
   std::set<std::string> names;
   for (size_t i = 0; i < lessons().size(); ++i) {
     const Lesson& lesson = lessons()[i];
@@ -44,6 +44,8 @@ TEST(Lessons, EveryShippedLessonFileIsALessonInTeachingOrder) {
   EXPECT_EQ(lessons().front().name, "flow-of-a-plane");
   EXPECT_EQ(find_lesson("flow-vs-talisman")->state.compared,
             (std::vector<std::string>{"perspective", "talisman"}));
+  EXPECT_EQ(find_lesson("hierarchical-cache")->state.compared,
+            (std::vector<std::string>{"perspective", "hierarchical-cache"}));
 }
 
 // manual/lessons.md has one section "## Title (`name`)" per lesson file, with its title.
