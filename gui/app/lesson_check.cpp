@@ -1,6 +1,7 @@
 #include "app/lesson_check.h"
 
 #include <QApplication>
+#include <QLabel>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -126,6 +127,27 @@ double threshold_crossings(MainWindow* window, const LessonClaim& claim) {
   return crossings < 0 ? kUnknown : crossings;
 }
 
+// The pixels compared policy `of` has written over frames 0 .. now (its caption's "run N px")
+// over those of policy `over`.
+double run_pixels_ratio(WindowModel& model, const LessonClaim& claim) {
+  const ComparedRun* of = nullptr;
+  const ComparedRun* over = nullptr;
+  for (const ComparedRun& run : model.comparison().runs()) {
+    if (run.policy->name == claim.of) of = &run;
+    if (run.policy->name == claim.over) over = &run;
+  }
+  if (!of || !over || over->pixels_written <= 0) return kUnknown;
+  return double(of->pixels_written) / double(over->pixels_written);
+}
+
+// 1 when the lesson caption's banner is shorter than its wrapped text needs (its last lines
+// cut off), else 0.
+double caption_cut(MainWindow* window) {
+  const auto* banner = window->findChild<QLabel*>(QStringLiteral("caption_banner"));
+  if (!banner || !banner->isVisible()) return 0.0;
+  return banner->height() < banner->heightForWidth(banner->width()) ? 1.0 : 0.0;
+}
+
 std::string number_text(double v) {
   std::ostringstream out;
   out.precision(4);
@@ -158,6 +180,8 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
     return basis->active_tile_count();
   }
   if (kind == "threshold_crossings") return threshold_crossings(window, claim);
+  if (kind == "run_pixels_ratio") return run_pixels_ratio(model, claim);
+  if (kind == "caption_cut") return caption_cut(window);
   if (kind == "view") return window->current_view_name().toStdString() == claim.of ? 1.0 : 0.0;
   return kUnknown;
 }
@@ -165,7 +189,13 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
                                      const std::function<void(int)>& after_part) {
   std::vector<ClaimCheck> checks;
-  const auto check_all = [&](int step, const std::vector<LessonClaim>& claims) {
+  // Every part's caption must be readable whole, whatever the part claims besides.
+  LessonClaim whole_caption;
+  whole_caption.says = "the caption shows its whole text";
+  whole_caption.claim = "caption_cut";
+  whole_caption.at_most = 0;
+  const auto check_all = [&](int step, std::vector<LessonClaim> claims) {
+    claims.push_back(whole_caption);
     for (const LessonClaim& claim : claims) {
       const double measured = measure_claim(window, claim);
       const bool holds = measured >= claim.at_least && measured <= claim.at_most;

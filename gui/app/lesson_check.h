@@ -30,7 +30,8 @@ struct ClaimCheck {
 double measure_claim(MainWindow* window, const LessonClaim& claim);
 
 // Plays `lesson` in `window` (which must run on an external clock: set_external_clock(true))
-// and checks every claim of its narrative and steps, in order; after the claims of each part
+// and checks every claim of its narrative and steps, in order, and of every part that its
+// caption shows whole ("caption_cut" at most 0); after the claims of each part
 // calls `after_part(k)` (0: the narrative, k: the k-th step) when given, with the window as
 // that part left it (for a picture of each step).
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,

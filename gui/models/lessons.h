@@ -56,7 +56,11 @@ struct LessonClaim {
 //     another text (a count; claim at_most 0);
 //   "threshold_crossings": how often the analysis view's budget chart of `level` (none ..
 //     perspective) crosses its dashed threshold upwards over the frames it charts;
-//   "view": 1 when the view in front is `of`, else 0.
+//   "view": 1 when the view in front is `of`, else 0;
+//   "run_pixels_ratio": the pixels compared policy `of` has written over frames 0 .. now (its
+//     panel's caption, "run N px") over those of compared policy `over`;
+//   "caption_cut": 1 when the lesson caption's banner is shorter than its wrapped text needs,
+//     else 0 (the checker claims it at most 0 for every part of every lesson).
 const std::vector<std::string>& lesson_claim_kinds();
 
 struct LessonStep {
