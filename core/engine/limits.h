@@ -88,6 +88,11 @@ inline constexpr Limit kVtkGridPoints{"grid points", "points", 1.0, 1048576.0, t
 // texture copies with every polygon visible), MiB. A run holds two (the animator and its exact
 // baseline), so a scene within it plays within the 2 GB promise (manual/robustness.md).
 inline constexpr Limit kSceneEngineMemory{"scene engine memory", "MiB", 0.0, 768.0};
+// What a scene's impostor polygons may draw in one frame when all of them re-render
+// (core/scene/scene_animator.h scene_impostor_windows): facade windows, each a few lit faces.
+// A frame's time grows with it; at the limit about 10 s (manual/robustness.md). The street
+// (seven impostor facades) admits quality 16.
+inline constexpr Limit kSceneImpostorWindows{"scene impostor detail", "windows", 0.0, 4096.0};
 // The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
 inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};
 // Live play rate, frames per second.

@@ -61,8 +61,9 @@ void split(const BspFragment& f, const Vec3& normal, double offset, double eps, 
 
 }  // namespace
 
-BspTree::BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments)
-    : max_fragments_(max_fragments) {
+BspTree::BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments,
+                 std::int64_t max_vertices)
+    : max_fragments_(max_fragments), max_vertices_(max_vertices) {
   double scale = 1.0;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     BspFragment f;
@@ -72,15 +73,26 @@ BspTree::BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments)
     for (const Vec3& v : f.vertices) {
       scale = std::max({scale, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
     }
+    vertices_ += static_cast<std::int64_t>(f.vertices.size());
     fragments_.push_back(std::move(f));
     planes_.push_back({polygons[i].front, glm::dot(polygons[i].front, polygons[i].centre)});
   }
+  if (vertices_ > max_vertices_) fail_vertex_limit();
   epsilon_ = 1e-9 * scale;
   std::vector<int> ids(fragments_.size());
   for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<int>(i);
   if (!ids.empty()) root_ = build(std::move(ids), 1);
   stats_.nodes = static_cast<int>(nodes_.size());
   stats_.fragments = static_cast<int>(fragments_.size());
+  stats_.vertices = vertices_;
+}
+
+void BspTree::fail_vertex_limit() const {
+  throw std::invalid_argument("the scene's " + std::to_string(planes_.size()) +
+                              " polygons need BSP fragments of more than " +
+                              std::to_string(max_vertices_) +
+                              " vertices in all (the limit): polygons with many vertices, or "
+                              "polygons that intersect each other");
 }
 
 void BspTree::fail_fragment_limit() const {
@@ -143,8 +155,13 @@ int BspTree::build(std::vector<int> ids, int depth) {
       back_ids.push_back(id);
     } else {
       if (fragments_.size() >= size_t(max_fragments_)) fail_fragment_limit();
+      // A cut adds at most four vertices: the two where the plane crosses the outline, in
+      // both halves.
+      if (vertices_ + 4 > max_vertices_) fail_vertex_limit();
       BspFragment f, b;
       split(fragments_[id], node.normal, node.offset, epsilon_, f, b);
+      vertices_ += static_cast<std::int64_t>(f.vertices.size() + b.vertices.size()) -
+                   static_cast<std::int64_t>(fragments_[id].vertices.size());
       ++stats_.splits;
       // The original slot keeps the front half; the back half is a new fragment.
       fragments_[id] = std::move(f);

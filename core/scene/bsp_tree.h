@@ -14,6 +14,7 @@
 // is then correct for every pixel.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "flow/geometry.h"
@@ -41,9 +42,10 @@ struct BspNode {
 
 struct BspStats {
   int nodes = 0;
-  int fragments = 0;  // >= the number of polygons
-  int splits = 0;     // polygons or fragments cut in two while building
-  int depth = 0;      // longest root-to-leaf path, in nodes
+  int fragments = 0;          // >= the number of polygons
+  int splits = 0;             // polygons or fragments cut in two while building
+  int depth = 0;              // longest root-to-leaf path, in nodes
+  std::int64_t vertices = 0;  // of all fragments
 };
 
 class BspTree {
@@ -54,13 +56,20 @@ class BspTree {
   // it (shipped scenes: at most a few splits per polygon); intersecting ones can split
   // without end (3000 random quads give about 150 000 fragments).
   static constexpr int kMaxBspFragments = 200000;
+  // Most vertices all fragments together may have: the per-frame hidden-surface test clips
+  // fragments against each other, so its time grows with the vertices, not with the count
+  // of fragments (100 intersecting circles of 2000 vertices: minutes per frame). Shipped
+  // scenes hold a few thousand; manual/robustness.md gives the worst case's time per frame.
+  static constexpr std::int64_t kMaxBspVertices = 100000;
 
   // Builds the tree. The splitting plane of each node is chosen among up to 24 candidate
   // fragments to keep splits few and the two sides balanced. Deterministic.
   // Precondition: every polygon is valid (scene_polygon_problem is empty).
-  // Throws std::invalid_argument naming the limit when more than `max_fragments` would be
-  // needed (checked before each split, so memory stays bounded).
-  explicit BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments = kMaxBspFragments);
+  // Throws std::invalid_argument naming the limit when more than `max_fragments` fragments,
+  // or fragments of more than `max_vertices` vertices in all, would be needed (checked on
+  // the polygons first and before each split, so memory and time stay bounded).
+  explicit BspTree(const std::vector<ScenePolygon>& polygons, int max_fragments = kMaxBspFragments,
+                   std::int64_t max_vertices = kMaxBspVertices);
 
   // Replaces `order` with the indices of every fragment, back to front as seen from `eye`
   // (world coordinates): a fragment never comes after one it can hide. Fragments in a
@@ -84,6 +93,7 @@ class BspTree {
   int build(std::vector<int> fragment_ids, int depth);
   int choose_splitter(const std::vector<int>& fragment_ids) const;
   [[noreturn]] void fail_fragment_limit() const;
+  [[noreturn]] void fail_vertex_limit() const;
   void traverse(int node, const Vec3& eye, std::vector<int>& order) const;
 
   std::vector<Node> nodes_;
@@ -91,6 +101,8 @@ class BspTree {
   std::vector<Plane> planes_;  // per scene polygon
   double epsilon_ = 1e-9;      // plane-side tolerance, world units
   int max_fragments_ = kMaxBspFragments;
+  std::int64_t max_vertices_ = kMaxBspVertices;
+  std::int64_t vertices_ = 0;  // of all fragments
   int root_ = -1;
   BspStats stats_;
 };

@@ -108,6 +108,29 @@ std::string scene_memory_problem(const Scene& scene, const Camera& camera) {
   return text.str();
 }
 
+double scene_impostor_windows(const Scene& scene, int quality) {
+  const double q = quality;
+  double windows = 0.0;
+  for (const ScenePolygon& p : scene.polygons) {
+    if (p.content == ContentKind::kImpostor) windows += (1.0 + q) * (1.0 + 2.0 * q);
+  }
+  return windows;
+}
+
+std::string scene_content_problem(const Scene& scene, int quality) {
+  const double windows = scene_impostor_windows(scene, quality);
+  const Limit& limit = limits::kSceneImpostorWindows;
+  if (limit.allows(windows)) return "";
+  const auto impostors =
+      std::count_if(scene.polygons.begin(), scene.polygons.end(),
+                    [](const auto& p) { return p.content == ContentKind::kImpostor; });
+  std::ostringstream text;
+  text << "the scene's " << impostors << " impostor polygons at quality " << quality << " draw "
+       << static_cast<long>(windows) << " facade windows a frame, more than " << limit.maximum
+       << " (the " << limit.what << " limit)";
+  return text.str();
+}
+
 SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings)
     : scene_(scene),
       camera_(camera),
@@ -136,6 +159,10 @@ SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSe
     }
   }
   if (const std::string problem = scene_memory_problem(scene, camera); !problem.empty()) {
+    throw std::invalid_argument(problem);
+  }
+  if (const std::string problem = scene_content_problem(scene, settings.engine.content.quality);
+      !problem.empty()) {
     throw std::invalid_argument(problem);
   }
   frustum_ = view_frustum(camera_, settings_.near, 1.0);

@@ -102,6 +102,15 @@ double scene_memory_bytes(const Scene& scene, const Camera& camera);
 // 10240 MiB of layers and textures, more than 768 MiB (the scene engine memory limit)".
 std::string scene_memory_problem(const Scene& scene, const Camera& camera);
 
+// The facade windows the scene's impostor polygons draw when all of them re-render at
+// content quality `quality` (1 .. kMaxContentQuality): (1 + q) storeys by (1 + 2q) bays per
+// impostor polygon, as facade_faces builds them (core/content/layer_content.h).
+double scene_impostor_windows(const Scene& scene, int quality);
+// "" when scene_impostor_windows is within limits::kSceneImpostorWindows; otherwise one
+// phrase naming the figure and the limit: "the scene's 7 impostor polygons at quality 32 draw
+// 15015 facade windows a frame, more than 4096 (the scene impostor detail limit)".
+std::string scene_content_problem(const Scene& scene, int quality);
+
 // The engine of a scene, driven view by view by its caller. Not an Animator
 // (core/engine/animator.h), which owns its script: make_scene_animator plays a viewer script
 // through one SceneEngine (core/scene/viewer_script_animator.h).
@@ -109,7 +118,8 @@ class SceneEngine {
  public:
   // `scene` must outlive the animator. Builds the BSP tree. Throws std::invalid_argument
   // when a polygon has a problem (scene_polygon_problem), the camera is invalid, a
-  // setting is out of range, the scene is over its memory (scene_memory_problem, checked
+  // setting is out of range, the scene's impostors are over their detail
+  // (scene_content_problem), the scene is over its memory (scene_memory_problem, checked
   // before anything is allocated) or the BSP tree would exceed BspTree::kMaxBspFragments.
   SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings);
   ~SceneEngine();

@@ -8,11 +8,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <thread>
 
+#include "flow/geometry.h"
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 
@@ -97,11 +100,58 @@ std::vector<fs::path> write_degenerate_plane_scripts(const fs::path& dir) {
   return files;
 }
 
-fs::path write_repeated_polygon_scene(const fs::path& dir) {
+namespace {
+
+// The shipped single-1 scene, its texture named by an absolute path.
+nlohmann::json single_square_scene() {
   const fs::path shipped = resolve_scene_path("single-1");  // the shipped file
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(shipped));
   scene["textures"]["tile"] =
       fs::absolute(shipped.parent_path() / scene["textures"]["tile"].get<std::string>()).string();
+  return scene;
+}
+
+fs::path write_scene(const nlohmann::json& scene, const fs::path& file) {
+  std::ofstream(file) << scene.dump();
+  return file;
+}
+
+}  // namespace
+
+fs::path write_intersecting_circles_scene(const fs::path& dir) {
+  nlohmann::json scene = single_square_scene();
+  scene["polygons"] = nlohmann::json::array();
+  std::mt19937 rng(1);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> centre(-0.2, 0.2);
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 n = glm::normalize(Vec3(normal(rng), normal(rng), normal(rng)));
+    const Vec3 u =
+        glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+    const Vec3 v = glm::cross(n, u), c(centre(rng), centre(rng), centre(rng));
+    nlohmann::json vertices = nlohmann::json::array();
+    for (int k = 0; k < 2000; ++k) {
+      const double a = 2.0 * 3.141592653589793 * k / 2000.0;
+      const Vec3 p = c + 0.5 * std::cos(a) * u + 0.5 * std::sin(a) * v;
+      vertices.push_back({p.x, p.y, p.z});
+    }
+    scene["polygons"].push_back({{"name", "circle " + std::to_string(i)}, {"vertices", vertices}});
+  }
+  return write_scene(scene, dir / "intersecting-circles.json");
+}
+
+fs::path write_detailed_impostor_scene(const fs::path& dir) {
+  nlohmann::json scene = single_square_scene();
+  nlohmann::json square = scene["polygons"][0];
+  square["content"] = "impostor";
+  scene["content_quality"] = 256;
+  scene["polygons"] = nlohmann::json::array();
+  for (int i = 0; i < 20; ++i) scene["polygons"].push_back(square);
+  return write_scene(scene, dir / "detailed-impostors.json");
+}
+
+fs::path write_repeated_polygon_scene(const fs::path& dir) {
+  nlohmann::json scene = single_square_scene();
   const nlohmann::json square = scene["polygons"][0];
   scene["polygons"] = nlohmann::json::array();
   for (int i = 0; i < 1000; ++i) scene["polygons"].push_back(square);

@@ -45,4 +45,12 @@ std::vector<std::filesystem::path> write_degenerate_plane_scripts(const std::fil
 // limit at the walk viewer's 1280 x 720 px. Returns its path.
 std::filesystem::path write_repeated_polygon_scene(const std::filesystem::path& dir);
 
+// The scene of 100 polygons of 2000 vertices each, circles of radius 0.5 through a
+// small box at random orientations (seeded), so that they all cut each other.
+std::filesystem::path write_intersecting_circles_scene(const std::filesystem::path& dir);
+
+// The shipped single-1 scene with its square repeated 20 times as an impostor facade at
+// content quality 256.
+std::filesystem::path write_detailed_impostor_scene(const std::filesystem::path& dir);
+
 }  // namespace oflab::testing

@@ -180,6 +180,26 @@ TEST(HostileInputs, ARepeatedPolygonSceneIsRefusedByTheMemoryLimitWithin60sAnd2G
   fs::remove_all(dir);
 }
 
+// The inputs whose caps multiplied into minutes a frame: 100 circles of 2000
+// vertices cutting each other (past the BSP vertex cap) and 20 impostor facades at quality
+// 256 (past the impostor detail limit). Each is refused at once with exit 2 and one line
+// naming its limit, within 60 s and 2 GB.
+TEST(HostileInputs, CapsThatMultiplyAreRefusedUpFrontWithin60sAnd2GB) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-caps");
+  const std::pair<fs::path, std::string> cases[] = {
+      {testing::write_intersecting_circles_scene(dir), "vertices in all (the limit)"},
+      {testing::write_detailed_impostor_scene(dir), "(the scene impostor detail limit)"}};
+  for (const auto& [scene, limit] : cases) {
+    const std::vector<std::string> args = {
+        "animate", "--scene", scene.string(), "--script", "circle", "--frames", "3", "--quiet"};
+    expect_ends_cleanly(args, dir, scene.filename().string());
+    const testing::ChildResult r = testing::run_child(OFLAB_CLI_BINARY, args, dir, 2L << 30, 60.0);
+    EXPECT_EQ(r.code, 2) << scene;
+    EXPECT_NE(r.err.find(limit), std::string::npos) << r.err;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(LastResort, AnEscapedExceptionIsOneLineAndTheInternalErrorCode) {
   std::ostringstream err;
   EXPECT_EQ(run_guarded(

@@ -177,19 +177,57 @@ std::vector<ScenePolygon> intersecting_squares(int count) {
   return out;
 }
 
+// No vertex cap, for the fragment cap's test.
+constexpr std::int64_t kAnyVertices = std::int64_t(1) << 40;
+
 TEST(BspTree, IntersectingPolygonsStopAtTheFragmentCapWithAClearMessage) {
   const std::vector<ScenePolygon> polygons = intersecting_squares(60);
-  const int unlimited = BspTree(polygons).stats().fragments;
+  const int unlimited =
+      BspTree(polygons, BspTree::kMaxBspFragments, kAnyVertices).stats().fragments;
   EXPECT_GT(unlimited, 600) << "60 intersecting squares should split into many fragments";
   try {
-    const BspTree capped(polygons, 300);
+    const BspTree capped(polygons, 300, kAnyVertices);
     ADD_FAILURE() << "no error past the cap";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("more than 300 BSP fragments (the limit)"), std::string::npos) << what;
     EXPECT_NE(what.find("60 polygons"), std::string::npos) << what;
   }
-  EXPECT_EQ(BspTree(polygons, unlimited).stats().fragments, unlimited);
+  EXPECT_EQ(BspTree(polygons, unlimited, kAnyVertices).stats().fragments, unlimited);
+}
+
+// The vertex count of the tree is the sum over its fragments, counted here independently;
+// a split adds at most four (the two where the plane crosses the outline, in both halves).
+TEST(BspTree, VertexCountIsTheSumOverFragmentsAndSplitsAddAtMostTwo) {
+  const std::vector<ScenePolygon> polygons = intersecting_squares(20);
+  const BspTree tree(polygons);
+  std::int64_t sum = 0;
+  for (const BspFragment& f : tree.fragments()) sum += static_cast<std::int64_t>(f.vertices.size());
+  EXPECT_EQ(tree.stats().vertices, sum);
+  EXPECT_GT(tree.stats().splits, 0);
+  EXPECT_LE(sum, 4 * 20 + 4 * tree.stats().splits);
+}
+
+// Intersecting squares stop at the vertex cap before the fragment cap, with the limit named;
+// polygons with too many vertices are refused before anything is split; at exactly their
+// count the tree is built (the control).
+TEST(BspTree, VerticesStopAtTheVertexCapWithAClearMessage) {
+  const std::vector<ScenePolygon> polygons = intersecting_squares(60);
+  const std::int64_t unlimited =
+      BspTree(polygons, BspTree::kMaxBspFragments, kAnyVertices).stats().vertices;
+  EXPECT_GT(unlimited, 1000);
+  try {
+    const BspTree capped(polygons, BspTree::kMaxBspFragments, 1000);
+    ADD_FAILURE() << "no error past the vertex cap";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("60 polygons need BSP fragments of more than 1000 vertices in all (the "
+                        "limit)"),
+              std::string::npos)
+        << what;
+  }
+  EXPECT_THROW(BspTree(polygons, BspTree::kMaxBspFragments, 60 * 4 - 1), std::invalid_argument);
+  EXPECT_EQ(BspTree(polygons, BspTree::kMaxBspFragments, unlimited).stats().vertices, unlimited);
 }
 
 }  // namespace

@@ -350,5 +350,47 @@ TEST(SceneMemory, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
   }
 }
 
+// The impostor detail counted independently: the glass panes facade_faces builds (one per
+// window) for each impostor polygon; texture and shaded polygons draw none.
+TEST(SceneImpostorDetail, WindowsAreTheGlassPanesOfEveryImpostorFacade) {
+  std::vector<ScenePolygon> polygons;
+  for (const ContentKind kind : {ContentKind::kImpostor, ContentKind::kTexture,
+                                 ContentKind::kImpostor, ContentKind::kShaded}) {
+    polygons.push_back(square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
+    polygons.back().content = kind;
+  }
+  const Scene scene = scene_with(polygons);
+  for (const int quality : {1, 3, 16}) {
+    const std::vector<FacadeFace> faces = facade_faces(Vec2(1.0, 1.0), quality);
+    const auto panes = std::count_if(faces.begin(), faces.end(), [](const FacadeFace& f) {
+      return f.part == FacadePart::kGlass;
+    });
+    EXPECT_DOUBLE_EQ(scene_impostor_windows(scene, quality), 2.0 * double(panes)) << quality;
+  }
+}
+
+// Over the detail limit the engine refuses before it renders, naming the figure and the
+// limit; the quality just within it is accepted (the control).
+TEST(SceneImpostorDetail, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
+  const Camera camera = make_camera(300.0, 320, 240);
+  std::vector<ScenePolygon> polygons(
+      4, square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
+  for (ScenePolygon& p : polygons) p.content = ContentKind::kImpostor;
+  const Scene scene = scene_with(polygons);
+  SceneSettings settings;
+  settings.engine.content.quality = 22;  // 4 x 23 x 45 = 4140 windows
+  try {
+    SceneEngine engine(scene, camera, settings);
+    FAIL() << "a scene over the impostor detail limit was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the scene's 4 impostor polygons at quality 22 draw 4140 facade windows a frame, "
+              "more than 4096 (the scene impostor detail limit)");
+  }
+  settings.engine.content.quality = 21;  // 4 x 22 x 43 = 3784 windows
+  EXPECT_EQ(scene_content_problem(scene, 21), "");
+  EXPECT_NO_THROW(SceneEngine(scene, camera, settings));
+}
+
 }  // namespace
 }  // namespace oflab
