@@ -7,8 +7,10 @@
 #include <fstream>
 
 #include "app/view_table.h"
+#include "child_process.h"
 #include "flow/flow_field.h"
 #include "image_checks.h"
+#include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "views/basis_view.h"
 #include "views/coefficient_table.h"
@@ -128,6 +130,24 @@ TEST_F(MainWindowTest, BrokenScriptFileShowsAnErrorAndKeepsTheSession) {
   EXPECT_FALSE(window().message().isEmpty());
   EXPECT_TRUE(same_pose(window().model()->scene()->scene().pose, kept.pose));
   EXPECT_TRUE(window().model()->scene()->script_name().isEmpty());
+}
+
+// The scene over the memory limit, chosen in the window: a banner with the CLI's
+// words, and the window keeps playing what it had.
+TEST_F(MainWindowTest, ASceneOverTheMemoryLimitShowsABannerAndKeepsTheSource) {
+  QTemporaryDir dir;
+  const std::filesystem::path scene =
+      testing::write_repeated_polygon_scene(dir.path().toStdString());
+  AnimationModel* animation = window().model()->animation();
+  ASSERT_TRUE(animation->set_source({"scene", "four-cubes", "circle"}));
+  EXPECT_FALSE(animation->set_source({"scene", scene.string(), "walk"}));
+  EXPECT_TRUE(window().message().contains(
+      "MiB of layers and textures, more than 768 MiB (the scene engine memory limit)"))
+      << window().message().toStdString();
+  EXPECT_EQ(animation->source().name, "four-cubes");
+  window().model()->scene()->set_frame(3);  // and it still plays
+  ASSERT_NE(animation->animator(), nullptr);
+  EXPECT_EQ(animation->animator()->frame(), 3);
 }
 
 TEST_F(MainWindowTest, ShippedScriptPlaysItsFrames) {
