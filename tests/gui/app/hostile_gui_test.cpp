@@ -125,5 +125,27 @@ TEST(HostileGuiInputs, ASceneTheCliRefusesIsExitTwoWithTheCliMessage) {
   fs::remove_all(dir);
 }
 
+// The caps that multiplied (BSP vertices, impostor detail) refuse the same scenes in the
+// window as in the CLI: exit 2 and one line naming the limit, within 60 s and 2 GB.
+TEST(HostileGuiInputs, ScenesOverTheVertexAndDetailCapsAreExitTwoWithOneLine) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui-caps");
+  give_children_a_runtime_dir(dir);
+  const std::pair<fs::path, std::string> cases[] = {
+      {testing::write_intersecting_circles_scene(dir), "vertices in all (the limit)"},
+      {testing::write_detailed_impostor_scene(dir), "(the scene impostor detail limit)"}};
+  for (const auto& [scene, limit] : cases) {
+    const testing::ChildResult gui = testing::run_child(
+        OFLAB_GUI_BINARY,
+        {"--scene", scene.string(), "--script", "circle", "--view", "animation", "--screenshot",
+         (dir / "shot.png").string(), "--frames", "2", "--size", "640", "480"},
+        dir, 2L << 30, testing::kHostileTimeLimitSeconds);
+    EXPECT_EQ(gui.code, 2) << gui.err;
+    EXPECT_FALSE(fs::exists(dir / "shot.png"));
+    EXPECT_NE(gui.err.find(limit), std::string::npos) << gui.err;
+    EXPECT_EQ(std::count(gui.err.begin(), gui.err.end(), '\n'), 1) << gui.err;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace oflab
