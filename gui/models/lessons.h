@@ -56,7 +56,17 @@ struct LessonClaim {
 //     another text (a count; claim at_most 0);
 //   "threshold_crossings": how often the analysis view's budget chart of `level` (none ..
 //     perspective) crosses its dashed threshold upwards over the frames it charts;
-//   "view": 1 when the view in front is `of`, else 0.
+//   "view": 1 when the view in front is `of`, else 0;
+// and of the basis explorer (gui/models/basis_explorer.h), as the basis view shows it:
+//   "tile_active": 1 when the gallery's tile of term `of` (its symbol: "scale", "px", ...)
+//     is lit (its coefficient is not zero), else 0;
+//   "solution_count": planes and motions in front of the eye that make the dialled flow;
+//   "futures_apart_frame": the first frame at which the two solutions' images are more
+//     than 1 px apart (-1 when they never are within the second played, or with fewer
+//     than two solutions);
+//   "futures_first_px": how far apart they are after one frame, px;
+//   "grid_change": what the deformation does to the grid in 1 s, field `of` of GridChange:
+//     shift_px (px), area (ratio), turn_deg (degrees), keystone (fraction).
 const std::vector<std::string>& lesson_claim_kinds();
 
 struct LessonStep {

@@ -97,6 +97,13 @@ void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_p
   }
 }
 
+int BasisTiles::tile_state(const std::string& symbol) const {
+  for (const Tile& tile : tiles_) {
+    if (tile.title == symbol) return tile.active ? 1 : 0;
+  }
+  return -1;
+}
+
 double BasisTiles::smallest_text_px() const {
   return std::min(title_font_size(), value_font_size());
 }
