@@ -310,16 +310,15 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(args,
-                    {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
-                     {"--script", 1},         {"--source", 1},     {"--mode", 1},
-                     {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
-                     {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
-                     {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
-                     {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
-                     {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
-                     {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
-                     {"--basis-explorer", 0}});
+  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
+                           {"--script", 1},         {"--source", 1},     {"--mode", 1},
+                           {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
+                           {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
+                           {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
+                           {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
+                           {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
+                           {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
+                           {"--basis-explorer", 0}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);

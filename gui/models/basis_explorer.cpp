@@ -46,7 +46,8 @@ ExplorerTerms default_explorer_terms() {
 
 PlanarBasisTerms explorer_planar_basis(const ExplorerTerms& terms) {
   PlanarBasisTerms p;
-  for (int k = 0; k < kExplorerTermCount; ++k) p.*explorer_terms()[size_t(k)].member = terms[size_t(k)];
+  for (int k = 0; k < kExplorerTermCount; ++k)
+    p.*explorer_terms()[size_t(k)].member = terms[size_t(k)];
   return p;
 }
 
@@ -55,10 +56,10 @@ PlanarFlowCoefficients explorer_coefficients(const ExplorerTerms& terms) {
 }
 
 ExplorerTerms explorer_terms_of(const PlanarFlowCoefficients& coefficients) {
-  const PlanarBasisTerms p =
-      to_planar_basis(taylor_terms(reexpand(coefficients, Vec2(0.0, 0.0))));
+  const PlanarBasisTerms p = to_planar_basis(taylor_terms(reexpand(coefficients, Vec2(0.0, 0.0))));
   ExplorerTerms terms;
-  for (int k = 0; k < kExplorerTermCount; ++k) terms[size_t(k)] = p.*explorer_terms()[size_t(k)].member;
+  for (int k = 0; k < kExplorerTermCount; ++k)
+    terms[size_t(k)] = p.*explorer_terms()[size_t(k)].member;
   return terms;
 }
 
@@ -80,15 +81,14 @@ ExplorerResult explore(const ExplorerTerms& terms, const Camera& camera) {
   const double x = 0.25 * camera.width, y = 0.25 * camera.height;
   r.corners = {Vec2(-x, -y), Vec2(x, -y), Vec2(x, y), Vec2(-x, y)};
   if (r.inverse.solutions.size() != 2) {
-    r.futures_note = r.inverse.solutions.size() == 1
-                         ? "one solution: its future is the only one"
-                         : "no plane is seen: nothing to play forward";
+    r.futures_note = r.inverse.solutions.size() == 1 ? "one solution: its future is the only one"
+                                                     : "no plane is seen: nothing to play forward";
     return r;
   }
   try {
     r.futures = compare_futures(r.inverse.solutions[0], r.inverse.solutions[1], camera.focal_px,
-                                Vec2(0.0, 0.0), r.corners, MotionModel::kScrew,
-                                kFutureFrameSeconds, kFutureFrames, kFuturesApartPx);
+                                Vec2(0.0, 0.0), r.corners, MotionModel::kScrew, kFutureFrameSeconds,
+                                kFutureFrames, kFuturesApartPx);
     r.futures_played = true;
   } catch (const std::invalid_argument&) {
     r.futures_note = "a solution's plane is behind the eye at a corner of the picture";
@@ -101,8 +101,7 @@ Mat3 explorer_deformation(const ExplorerTerms& terms) {
   // composing core's first-order step over many short steps converges to it (the error of
   // each step is O(dt^2), so of the whole O(1 / kSteps)), without a matrix exponential here.
   constexpr int kSteps = 1024;
-  const Mat3 step =
-      taylor_homography(explorer_coefficients(terms), kDeformationSeconds / kSteps);
+  const Mat3 step = taylor_homography(explorer_coefficients(terms), kDeformationSeconds / kSteps);
   Mat3 h(1.0);
   for (int k = 0; k < kSteps; ++k) h = step * h;
   return h / h[2][2];

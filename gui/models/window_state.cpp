@@ -163,8 +163,8 @@ std::string window_state_problem(const WindowState& s) {
     return "flow.spacing_px: must be 0 (automatic) or 4..1000 px";
   }
   return first_of({plane_state_problem(s.plane), settings_state_problem(s.settings),
-                   explorer_terms_problem(s.explorer_terms),
-                   compared_problem(s.compared), check("animation.zoom", kZoom, s.zoom),
+                   explorer_terms_problem(s.explorer_terms), compared_problem(s.compared),
+                   check("animation.zoom", kZoom, s.zoom),
                    check("play_rate", kPlayRate, s.play_rate), check("frame", kFrameCount, s.frame),
                    s.lesson_step >= 0 && (s.lesson_step == 0 || !s.lesson.empty())
                        ? ""

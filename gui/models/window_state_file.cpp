@@ -234,7 +234,8 @@ void read_explorer_terms(const json& j, const std::string& origin, ExplorerTerms
 
 json explorer_terms_object(const ExplorerTerms& terms) {
   json j = json::object();
-  for (int k = 0; k < kExplorerTermCount; ++k) j[explorer_terms()[size_t(k)].key] = terms[size_t(k)];
+  for (int k = 0; k < kExplorerTermCount; ++k)
+    j[explorer_terms()[size_t(k)].key] = terms[size_t(k)];
   return j;
 }
 

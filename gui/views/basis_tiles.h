@@ -53,7 +53,8 @@ class BasisTiles {
  private:
   struct Tile {
     std::vector<QPolygonF> grid;  // the deformed grid lines, half-tile units
-    std::string title, value;
+    std::string title, value;     // the symbol; the coefficient's number ("0" when zero)
+    const char* unit = "";        // its unit, or "(zero)"
     bool active = true;
     int order = 0;
   };

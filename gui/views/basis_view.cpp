@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSlider>
@@ -43,14 +44,16 @@ BasisView::BasisView(WindowModel* window, QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(make_option_bar());
-  auto* body = new QHBoxLayout;
-  auto* middle = new QVBoxLayout;
-  middle->addWidget(explorer_->deformation(), 3);
-  middle->addWidget(canvas_, 2);
-  body->addWidget(explorer_->sliders(), 2);
-  body->addLayout(middle, 4);
-  body->addWidget(explorer_->results(), 3);
-  layout->addLayout(body, 1);
+  // The explorer's dials down the left; its deformation and its worlds side by side above the
+  // gallery, which spans both (the explorer's widgets are hidden without it).
+  body_ = new QGridLayout;
+  body_->addWidget(explorer_->dials(), 0, 0, 2, 1);
+  body_->addWidget(explorer_->deformation(), 0, 1);
+  body_->addWidget(explorer_->worlds(), 0, 2);
+  body_->addWidget(canvas_, 1, 1, 1, 2);
+  body_->setColumnStretch(1, 3);
+  body_->setColumnStretch(2, 2);
+  layout->addLayout(body_, 1);
   layout->addWidget(summary_);
   connect(model_, &SceneModel::scene_changed, this, [this] {
     if (explorer_shown()) explorer_->refresh(isVisible());  // the camera's size and focus
@@ -154,9 +157,11 @@ void BasisView::show_explorer() {
     explore_box_->setChecked(on);
   }
   basis_box_->setEnabled(!on);  // the explorer dials the planar basis
-  explorer_->sliders()->setVisible(on);
+  explorer_->dials()->setVisible(on);
   explorer_->deformation()->setVisible(on);
-  explorer_->results()->setVisible(on);
+  explorer_->worlds()->setVisible(on);
+  body_->setRowStretch(0, on ? 3 : 0);
+  body_->setRowStretch(1, 2);
   explorer_->refresh(on && isVisible());
   refresh();
 }
@@ -213,8 +218,9 @@ void BasisView::update_tiles() {
 void BasisView::update_explorer_tiles(double radius) {
   const TaylorTerms terms = taylor_terms(explorer_coefficients(window_->explorer_terms()));
   tiles_->update(BasisKind::kPlanar, terms, radius, animated_amount());
-  summary_->setText(tr("Explorer: %1 of the 8 planar terms are dialled; the lit tiles below "
-                       "are theirs. The four second-order tiles that no plane makes stay grey.")
+  summary_->setText(tr("Explorer: %1 of the 8 planar terms are dialled; their tiles in the "
+                       "gallery light up. The four second-order tiles that no plane makes stay "
+                       "grey.")
                         .arg(tiles_->active_tile_count()));
   dirty_ = false;
 }

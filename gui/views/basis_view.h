@@ -13,6 +13,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
 class QLabel;
 class QSlider;
 class QTimer;
@@ -87,6 +88,7 @@ class BasisView : public ViewPage {
   QCheckBox* play_box_ = nullptr;
   QCheckBox* explore_box_ = nullptr;
   ExplorerPanel* explorer_ = nullptr;
+  QGridLayout* body_ = nullptr;
   QLabel* summary_ = nullptr;
   QTimer* timer_;
   double phase_ = 3.14159265358979323846;  // 0.5 (1 - cos(phase)) = 1: full amount when paused

@@ -1,11 +1,13 @@
 #include "views/explorer_panel.h"
 
-#include <QGridLayout>
+#include <QDoubleSpinBox>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "models/basis_catalog.h"
@@ -33,17 +35,24 @@ QString case_text(const InverseFlowSolutions& r) {
   switch (r.kind) {
     case InverseFlowCase::kGeneral:
       return r.solutions.size() == 2
-                 ? QObject::tr("General case: two planes, moving differently, make exactly "
-                               "this flow.")
-                 : QObject::tr("General case, but only one plane is in front of the eye (the "
-                               "other is seen edge-on).");
+                 ? QObject::tr(
+                       "General case: two planes, moving differently, make exactly "
+                       "this flow.")
+                 : QObject::tr(
+                       "General case, but only one plane is in front of the eye (the "
+                       "other is seen edge-on).");
     case InverseFlowCase::kTranslationAlongNormal:
-      return QObject::tr("Degenerate (translation along the normal): V is along N, the two "
-                         "solutions coincide.");
+      return QObject::tr(
+          "Degenerate (translation along the normal): V is along N, the two "
+          "solutions coincide.");
     case InverseFlowCase::kFrontoParallelAlongNormal:
-      return QObject::tr("Degenerate (fronto-parallel along the normal): a plane facing the "
-                         "eye, moving along the line of sight: one solution.");
+      return QObject::tr(
+          "Degenerate (fronto-parallel along the normal): a plane facing the "
+          "eye, moving along the line of sight: one solution.");
     case InverseFlowCase::kPureRotation:
+      if (!r.solutions.empty() && r.solutions[0].omega == Vec3(0.0)) {
+        return QObject::tr("No motion: every term is zero, and any plane at rest fits.");
+      }
       return QObject::tr("Degenerate (pure rotation): V = 0, Omega only; any plane fits.");
   }
   return QString();
@@ -61,10 +70,10 @@ QString facing_text(const PlanarMotionSolution& s) {
 
 ExplorerPanel::ExplorerPanel(WindowModel* window, QWidget* parent)
     : QObject(parent), window_(window), theme_(view_theme(false)) {
-  sliders_ = make_sliders(parent);
+  dials_ = make_dials(parent);
   deformation_ = new ImageCanvas(parent);
   deformation_->setObjectName(QStringLiteral("explorer_deformation"));
-  results_ = make_results(parent);
+  worlds_ = make_worlds(parent);
   timer_ = new QTimer(this);
   timer_->setInterval(int(std::lround(kFutureFrameSeconds * 1000.0)));
   connect(timer_, &QTimer::timeout, this, &ExplorerPanel::step_futures);
@@ -81,26 +90,19 @@ ExplorerPanel::ExplorerPanel(WindowModel* window, QWidget* parent)
 
 ExplorerPanel::~ExplorerPanel() = default;
 
-QWidget* ExplorerPanel::make_sliders(QWidget* parent) {
+QWidget* ExplorerPanel::make_dials(QWidget* parent) {
   auto* box = new QWidget(parent);
-  box->setObjectName(QStringLiteral("explorer_sliders"));
+  box->setObjectName(QStringLiteral("explorer_dials"));
   auto* column = new QVBoxLayout(box);
   column->setContentsMargins(0, 0, 0, 0);
   auto* title = new QLabel(tr("<b>Dial the eight planar terms</b>"), box);
   title->setWordWrap(true);
   column->addWidget(title);
-  const char* headings[3] = {"Translation", "First order", "Second order (perspective)"};
-  int last_order = -1;
   for (int k = 0; k < kExplorerTermCount; ++k) {
     const ExplorerTerm& term = explorer_terms()[size_t(k)];
-    if (term.order != last_order) {
-      column->addWidget(new QLabel(tr(headings[term.order]), box));
-      last_order = term.order;
-    }
     const double span = term.slider_span;
-    auto* slider =
-        new SliderSpin(QString::fromLatin1(term.key), -span, span, span / kSliderSteps,
-                       term.decimals, QStringLiteral(" ") + order_unit(term.order), box);
+    auto* slider = new SliderSpin(QString::fromLatin1(term.key), -span, span, span / kSliderSteps,
+                                  term.decimals, QStringLiteral(" ") + order_unit(term.order), box);
     slider->setObjectName(QStringLiteral("explorer_") + term.key);
     slider->set_description(QString::fromLatin1(term.description));
     connect(slider, &SliderSpin::edited, this, [this, k](double value) {
@@ -119,6 +121,12 @@ QWidget* ExplorerPanel::make_sliders(QWidget* parent) {
   buttons->addWidget(zero);
   buttons->addWidget(from_scene);
   column->addLayout(buttons);
+  solutions_ = new QLabel(box);
+  solutions_->setObjectName(QStringLiteral("explorer_solutions"));
+  solutions_->setWordWrap(true);
+  solutions_->setTextFormat(Qt::RichText);
+  column->addSpacing(6);
+  column->addWidget(solutions_);
   column->addStretch(1);
   connect(zero, &QPushButton::clicked, this,
           [this] { window_->set_explorer_terms(ExplorerTerms{}); });
@@ -130,27 +138,23 @@ QWidget* ExplorerPanel::make_sliders(QWidget* parent) {
   return box;
 }
 
-QWidget* ExplorerPanel::make_results(QWidget* parent) {
+QWidget* ExplorerPanel::make_worlds(QWidget* parent) {
   auto* box = new QWidget(parent);
-  box->setObjectName(QStringLiteral("explorer_results"));
+  box->setObjectName(QStringLiteral("explorer_worlds"));
   auto* column = new QVBoxLayout(box);
   column->setContentsMargins(0, 0, 0, 0);
-  solutions_ = new QLabel(box);
-  solutions_->setObjectName(QStringLiteral("explorer_solutions"));
-  solutions_->setWordWrap(true);
-  solutions_->setTextFormat(Qt::RichText);
   sketch_ = new ImageCanvas(box);
   sketch_->setObjectName(QStringLiteral("explorer_planes"));
   play_ = new QPushButton(tr("Play both solutions forward for 1 s"), box);
   play_->setObjectName(QStringLiteral("explorer_play_futures"));
-  play_->setToolTip(tr("Move each solution's plane with its own motion, 30 frames, and chart "
-                       "how far apart their images are"));
+  play_->setToolTip(
+      tr("Move each solution's plane with its own motion, 30 frames, and chart "
+         "how far apart their images are"));
   futures_ = new ImageCanvas(box);
   futures_->setObjectName(QStringLiteral("explorer_futures"));
   futures_line_ = new QLabel(box);
   futures_line_->setObjectName(QStringLiteral("explorer_futures_line"));
   futures_line_->setWordWrap(true);
-  column->addWidget(solutions_);
   column->addWidget(sketch_, 3);
   column->addWidget(play_);
   column->addWidget(futures_, 2);
@@ -184,25 +188,22 @@ QString ExplorerPanel::solutions_text() const {
   const InverseFlowSolutions& r = result_.inverse;
   QString html = QStringLiteral("<p><b>%1</b></p>").arg(case_text(r).toHtmlEscaped());
   if (r.solutions.empty()) return html;
-  const char* names[2] = {"A", "B"};
-  QString head, normal, facing, velocity, omega, depth;
-  for (size_t i = 0; i < r.solutions.size(); ++i) {
-    const PlanarMotionSolution& s = r.solutions[i];
-    head += QStringLiteral("<th align=left>%1</th>").arg(QLatin1String(names[i]));
-    normal += QStringLiteral("<td>%1</td>").arg(s.normal_known ? vector_text(s.normal) : tr("any"));
-    facing += QStringLiteral("<td>%1</td>").arg(facing_text(s));
-    velocity += QStringLiteral("<td>%1</td>").arg(vector_text(s.v_over_d));
-    omega += QStringLiteral("<td>%1</td>").arg(vector_text(s.omega));
-    depth += QStringLiteral("<td>%1</td>")
-                 .arg(s.normal_known ? tr("%1 d").arg(s.depth_over_d, 0, 'f', 2) : tr("any"));
-  }
-  const auto row = [](const QString& name, const QString& cells) {
-    return QStringLiteral("<tr><td>%1&nbsp;&nbsp;</td>%2</tr>").arg(name, cells);
+  // One solution after the other, a quantity per row: narrow enough for presentation mode.
+  const QString names[2] = {tr("Solution A"), tr("Solution B")};
+  const auto row = [](const QString& name, const QString& value) {
+    return QStringLiteral("<tr><td>&nbsp;&nbsp;%1&nbsp;&nbsp;</td><td>%2</td></tr>")
+        .arg(name, value);
   };
-  html += QStringLiteral("<table cellspacing=2><tr><th></th>%1</tr>").arg(head) +
-          row(tr("normal N"), normal) + row(tr("facing the camera"), facing) +
-          row(tr("V/d, 1/s"), velocity) + row(tr("Omega, rad/s"), omega) +
-          row(tr("depth at the centre"), depth) + QStringLiteral("</table>");
+  html += QStringLiteral("<table cellspacing=0>");
+  for (size_t i = 0; i < r.solutions.size() && i < 2; ++i) {
+    const PlanarMotionSolution& s = r.solutions[i];
+    html += QStringLiteral("<tr><td colspan=2><b>%1</b></td></tr>").arg(names[i]) +
+            row(tr("normal N"), s.normal_known ? vector_text(s.normal) : tr("any")) +
+            row(tr("facing the camera"), facing_text(s)) +
+            row(tr("V/d, 1/s"), vector_text(s.v_over_d)) +
+            row(tr("Omega, rad/s"), vector_text(s.omega));
+  }
+  html += QStringLiteral("</table>");
   html += QStringLiteral("<p>%1</p>")
               .arg(tr("Left out, behind the eye: %1 mirror image(s). d, the plane's distance, "
                       "is never known: only V/d.")
@@ -219,12 +220,12 @@ QString ExplorerPanel::futures_text() const {
                           .arg(futures_frame_)
                           .arg(f.frames_played)
                           .arg(f.corner_distance_px[size_t(futures_frame_)], 0, 'f', 3);
-  const QString first = tr("After one frame %1 px; over 1 px first at frame %2.")
-                            .arg(f.corner_distance_px.size() > 1 ? f.corner_distance_px[1] : 0.0,
-                                 0, 'f', 3)
-                            .arg(f.first_frame_apart < 0 ? tr("none")
-                                                         : QString::number(f.first_frame_apart));
-  return now + QStringLiteral(" ") + first;
+  const QString first =
+      tr("After one frame %1 px; over 1 px first at frame %2.")
+          .arg(f.corner_distance_px.size() > 1 ? f.corner_distance_px[1] : 0.0, 0, 'f', 3)
+          .arg(f.first_frame_apart < 0 ? tr("none") : QString::number(f.first_frame_apart));
+  return now + QStringLiteral(" ") + first +
+         tr(" Left: one corner's path under A and under B, magnified.");
 }
 
 void ExplorerPanel::play_futures() {
@@ -251,6 +252,32 @@ void ExplorerPanel::set_external_clock(bool on) {
   if (!on && futures_playing_) timer_->start();
 }
 
+// Room for each slider's name and its field's longest value with the unit, in the theme's
+// control font (a projector's large text must not be cut).
+void ExplorerPanel::fit_sliders() {
+  QFont font = dials_->font();
+  if (theme_.control_font_px > 0) font.setPixelSize(theme_.control_font_px);
+  const QFontMetrics metrics(font);
+  for (int k = 0; k < kExplorerTermCount; ++k) {
+    const ExplorerTerm& term = explorer_terms()[size_t(k)];
+    SliderSpin* slider = sliders_of_[size_t(k)];
+    const QString widest = QString::number(-term.slider_span, 'f', term.decimals) +
+                           QStringLiteral(" ") + order_unit(term.order);
+    slider->spin_box()->setMinimumWidth(metrics.horizontalAdvance(widest) + 2 * metrics.height());
+    if (auto* name = slider->findChild<QLabel*>()) {
+      name->setMinimumWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + 8);
+    }
+  }
+  // The column is as wide as its widest slider needs with a short slider, and no wider: the
+  // deformation and the worlds take the rest.
+  int widest = 0;
+  for (SliderSpin* slider : sliders_of_) {
+    widest = std::max(widest, slider->spin_box()->minimumWidth());
+  }
+  dials_->setMaximumWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + widest +
+                          7 * metrics.height());
+}
+
 void ExplorerPanel::paint() {
   if (!solved_) solve();
   const Mat3 deformation = explorer_deformation(window_->explorer_terms());
@@ -268,9 +295,10 @@ void ExplorerPanel::paint_futures() {
 
 void ExplorerPanel::set_theme(const ViewTheme& theme) {
   theme_ = theme;
+  fit_sliders();
   for (ImageCanvas* canvas : {deformation_, sketch_, futures_}) {
-    canvas->set_background(QColor::fromRgbF(theme.background[0], theme.background[1],
-                                            theme.background[2]));
+    canvas->set_background(
+        QColor::fromRgbF(theme.background[0], theme.background[1], theme.background[2]));
   }
   if (solved_) paint();
 }

@@ -1,9 +1,9 @@
 // The basis explorer's widgets (gui/models/basis_explorer.h), which the basis view lays out
 // around its gallery when the explorer is on: a column of eight sliders, one per planar-basis
-// term with its unit (SliderSpin), the picture of their combined deformation, and a column
-// with the solutions of the inverse problem as numbers and as two sketched planes, and the
-// two solutions played forward for a second (a button, a chart of the pixel distance per
-// frame and a line naming the frame they part). The sliders edit the window model's
+// term with its unit (SliderSpin), with the solutions of the inverse problem as numbers under
+// them; the picture of their combined deformation; and a column with the two solutions
+// sketched as planes and the two played forward for a second (a button, a chart of the pixel
+// distance per frame and a line naming the frame they part). The sliders edit the window model's
 // explorer values; everything else reads them.
 #pragma once
 
@@ -33,9 +33,11 @@ class ExplorerPanel : public QObject {
   ExplorerPanel(WindowModel* window, QWidget* parent);
   ~ExplorerPanel() override;
 
-  QWidget* sliders() const { return sliders_; }  // the sliders and their buttons
+  // The sliders, their buttons and the solutions as numbers.
+  QWidget* dials() const { return dials_; }
   ImageCanvas* deformation() const { return deformation_; }
-  QWidget* results() const { return results_; }  // the solutions and the futures
+  // The solutions' sketches and the futures: the button, the chart and its line.
+  QWidget* worlds() const { return worlds_; }
 
   // Reads the model's values into the sliders and solves and draws them (when `visible`;
   // otherwise only marks the pictures out of date until the next refresh).
@@ -61,17 +63,18 @@ class ExplorerPanel : public QObject {
   double smallest_text_px() const { return theme_.label_size; }
 
  private:
-  QWidget* make_sliders(QWidget* parent);
-  QWidget* make_results(QWidget* parent);
+  QWidget* make_dials(QWidget* parent);
+  QWidget* make_worlds(QWidget* parent);
   void solve();
   void paint();
   void paint_futures();
+  void fit_sliders();
 
   WindowModel* window_;
   ViewTheme theme_;
-  QWidget* sliders_ = nullptr;
+  QWidget* dials_ = nullptr;
   ImageCanvas* deformation_ = nullptr;
-  QWidget* results_ = nullptr;
+  QWidget* worlds_ = nullptr;
   std::array<SliderSpin*, kExplorerTermCount> sliders_of_{};
   QLabel* solutions_ = nullptr;
   ImageCanvas* sketch_ = nullptr;

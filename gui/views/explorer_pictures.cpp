@@ -1,5 +1,6 @@
 #include "views/explorer_pictures.h"
 
+#include <QFontMetrics>
 #include <QPainter>
 #include <QPainterPath>
 #include <QString>
@@ -55,8 +56,10 @@ void warp_texture(QImage& image, const QImage& texture, const Mat3& deformation,
                   const QRectF& frame, double scale, const QRectF& rect, QRgb empty) {
   const Mat3 back = glm::inverse(deformation);
   const QImage source = texture.convertToFormat(QImage::Format_RGB32);
-  const int top = std::max(0, int(frame.top())), bottom = std::min(image.height(), int(frame.bottom()));
-  const int left = std::max(0, int(frame.left())), right = std::min(image.width(), int(frame.right()));
+  const int top = std::max(0, int(frame.top())),
+            bottom = std::min(image.height(), int(frame.bottom()));
+  const int left = std::max(0, int(frame.left())),
+            right = std::min(image.width(), int(frame.right()));
   for (int y = top; y < bottom; ++y) {
     auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
     for (int x = left; x < right; ++x) {
@@ -80,11 +83,17 @@ void warp_texture(QImage& image, const QImage& texture, const Mat3& deformation,
 }  // namespace
 
 QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
-                                  const Camera& camera, const QSize& size,
-                                  const ViewTheme& theme) {
+                                  const Camera& camera, const QSize& size, const ViewTheme& theme) {
   QImage image = blank(size, theme);
-  const double caption = 1.6 * theme.label_size;
   const double margin = 6.0;
+  const QString caption_text =
+      QObject::tr("After %1 s of this flow (dashed: the start)").arg(kDeformationSeconds);
+  QFont bold;
+  bold.setPixelSize(theme.label_size);
+  bold.setBold(true);
+  const bool one_line =
+      QFontMetrics(bold).horizontalAdvance(caption_text) <= image.width() - 2 * margin;
+  const double caption = (one_line ? 1.6 : 2.9) * theme.label_size;
   const double scale = std::min((image.width() - 2 * margin) / camera.width,
                                 (image.height() - 2 * margin - caption) / camera.height);
   if (!(scale > 0.0)) return image;
@@ -108,8 +117,9 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
       QPolygonF line;
       for (int s = 0; s < kLineSamples; ++s) {
         const double a = double(k) / (kGridLines - 1), b = double(s) / (kLineSamples - 1);
-        const Vec2 p = direction == 0 ? Vec2(rect.left() + a * rect.width(), rect.top() + b * rect.height())
-                                      : Vec2(rect.left() + b * rect.width(), rect.top() + a * rect.height());
+        const Vec2 p = direction == 0
+                           ? Vec2(rect.left() + a * rect.width(), rect.top() + b * rect.height())
+                           : Vec2(rect.left() + b * rect.width(), rect.top() + a * rect.height());
         const Vec2 moved = apply_homography(deformation, p);
         line << to_screen.map(QPointF(moved.x, moved.y));
       }
@@ -122,9 +132,7 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
   painter.setPen(to_qcolor(theme.text));
   set_font(painter, theme.label_size, true);
   painter.drawText(QRectF(margin, 0, image.width() - 2 * margin, caption),
-                   Qt::AlignLeft | Qt::AlignVCenter,
-                   QObject::tr("Where the flow carries the picture in %1 s (dashed: where it started)")
-                       .arg(kDeformationSeconds));
+                   Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_text);
   return image;
 }
 
@@ -146,7 +154,8 @@ struct SketchPoints {
 };
 
 SketchPoints sketch_points(const PlanarMotionSolution& s, const Camera& camera) {
-  const SolutionScene scene = solution_scene(s, camera.focal_px, Vec2(0.0, 0.0), MotionModel::kScrew);
+  const SolutionScene scene =
+      solution_scene(s, camera.focal_px, Vec2(0.0, 0.0), MotionModel::kScrew);
   return {scene.pose.point, plane_corners(scene.pose)};
 }
 
@@ -159,7 +168,15 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   painter.setRenderHint(QPainter::Antialiasing, true);
   const std::vector<PlanarMotionSolution>& solutions = result.inverse.solutions;
   const int count = std::max<int>(1, int(solutions.size()));
-  const double title = 1.5 * theme.label_size, legend = 1.5 * theme.label_size;
+  const QString parts[4] = {QObject::tr("dot: the eye"), QObject::tr("N normal"),
+                            QObject::tr("V/d velocity"), QObject::tr("Omega spin")};
+  set_font(painter, theme.label_size);
+  double legend_width = 0.0;
+  for (const QString& part : parts) {
+    legend_width += painter.fontMetrics().horizontalAdvance(part) + theme.label_size;
+  }
+  const int legend_lines = legend_width <= image.width() - 12 ? 1 : 2;
+  const double title = 1.5 * theme.label_size, legend = 1.4 * theme.label_size * legend_lines;
   const double w = double(image.width()) / count;
   const Camera camera = make_camera(1.0, 2, 2);  // only the direction of the centre ray matters
   // One arrow scale for both: the longest of V/d and Omega is 0.8 units (d = 1).
@@ -170,7 +187,7 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   const double arrow = 0.8 / longest;
   // One drawing scale for both: every point of every sketch fits its cell.
   std::vector<std::vector<QPointF>> points(solutions.size());
-  QRectF bounds(view_of(Vec3(0.0)), QSizeF(0, 0));
+  QRectF bounds(view_of(Vec3(0.0)), QSizeF(1e-9, 1e-9));  // the eye
   for (size_t i = 0; i < solutions.size(); ++i) {
     const PlanarMotionSolution& s = solutions[i];
     if (!s.normal_known) continue;
@@ -227,15 +244,16 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
     painter.setBrush(Qt::NoBrush);
   }
   set_font(painter, theme.label_size);
-  const QRectF legend_rect(6, image.height() - legend, image.width() - 12, legend);
-  const QString parts[4] = {QObject::tr("dot: the eye"), QObject::tr("N normal"),
-                            QObject::tr("V/d velocity"), QObject::tr("Omega spin")};
   const QColor colours[4] = {to_qcolor(theme.text), to_qcolor(theme.text),
                              to_qcolor(okabe_ito::kVermillion), to_qcolor(okabe_ito::kBlue)};
-  double x = legend_rect.left();
+  const double line_height = 1.4 * theme.label_size;
+  double x = 6.0;
   for (int k = 0; k < 4; ++k) {
+    const int line = legend_lines == 1 ? 0 : k / 2;  // two items a line when two lines
+    if (legend_lines == 2 && k == 2) x = 6.0;
     painter.setPen(colours[k]);
-    const QRectF r(x, legend_rect.top(), legend_rect.right() - x, legend_rect.height());
+    const QRectF r(x, image.height() - legend + line * line_height, image.width() - 6.0 - x,
+                   line_height);
     painter.drawText(r, Qt::AlignLeft | Qt::AlignVCenter, parts[k]);
     x += painter.fontMetrics().horizontalAdvance(parts[k]) + theme.label_size;
   }
@@ -283,9 +301,6 @@ void paint_tracks(QPainter& painter, const FutureSeparation& f, int frame, const
     painter.drawEllipse(track.back(), 4.0, 4.0);
     painter.setBrush(Qt::NoBrush);
   }
-  painter.setPen(to_qcolor(theme.text));
-  painter.drawText(area.adjusted(6, 4, -6, -4), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
-                   QObject::tr("One corner's path, %1 px wide").arg(side, 0, 'f', 0));
 }
 
 void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const QRectF& area,
@@ -308,12 +323,12 @@ void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const 
   painter.setPen(to_qcolor(theme.text));
   painter.drawText(QRectF(area.left(), area.top(), area.width(), 1.5 * label),
                    Qt::AlignLeft | Qt::AlignVCenter, QObject::tr("px apart, per frame"));
-  painter.drawText(QRectF(area.left(), plot.top() - 0.8 * label, plot.left() - area.left() - 4,
-                          1.6 * label),
-                   Qt::AlignRight | Qt::AlignVCenter, QString::number(top, 'f', 1));
-  painter.drawText(QRectF(area.left(), plot.bottom() - 0.8 * label,
-                          plot.left() - area.left() - 4, 1.6 * label),
-                   Qt::AlignRight | Qt::AlignVCenter, QStringLiteral("0"));
+  painter.drawText(
+      QRectF(area.left(), plot.top() - 0.8 * label, plot.left() - area.left() - 4, 1.6 * label),
+      Qt::AlignRight | Qt::AlignVCenter, QString::number(top, 'f', 1));
+  painter.drawText(
+      QRectF(area.left(), plot.bottom() - 0.8 * label, plot.left() - area.left() - 4, 1.6 * label),
+      Qt::AlignRight | Qt::AlignVCenter, QStringLiteral("0"));
   painter.drawText(QRectF(plot.left(), plot.bottom(), plot.width(), 1.6 * label),
                    Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
   painter.drawText(QRectF(plot.left(), plot.bottom(), plot.width(), 1.6 * label),
@@ -323,9 +338,13 @@ void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const 
     painter.setPen(QPen(to_qcolor(theme.text), 1.0, Qt::DotLine));
     painter.drawLine(QPointF(mark.x(), plot.top()), QPointF(mark.x(), plot.bottom()));
     painter.setPen(to_qcolor(theme.text));
-    painter.drawText(QRectF(mark.x() + 4, plot.top() + 2, plot.right() - mark.x() - 6, 1.5 * label),
-                     Qt::AlignLeft | Qt::AlignVCenter,
-                     QObject::tr("frame %1: over 1 px").arg(f.first_frame_apart));
+    // In the plot's top left, where the curve (growing from zero) never is.
+    QString text = QObject::tr("over 1 px at frame %1").arg(f.first_frame_apart);
+    if (painter.fontMetrics().horizontalAdvance(text) > plot.width() - 8) {
+      text = QObject::tr("1 px: %1").arg(f.first_frame_apart);
+    }
+    painter.drawText(QRectF(plot.left() + 4, plot.top() + 2, plot.width() - 8, 1.5 * label),
+                     Qt::AlignLeft | Qt::AlignVCenter, text);
   }
 }
 
@@ -339,10 +358,9 @@ QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSi
   set_font(painter, theme.label_size);
   if (!result.futures_played || result.futures.corner_images_px.empty()) {
     painter.setPen(to_qcolor(theme.text));
-    painter.drawText(QRectF(image.rect()).adjusted(6, 6, -6, -6),
-                     Qt::AlignCenter | Qt::TextWordWrap,
-                     QObject::tr("Nothing to compare: %1")
-                         .arg(QString::fromStdString(result.futures_note)));
+    painter.drawText(
+        QRectF(image.rect()).adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
+        QObject::tr("Nothing to compare: %1").arg(QString::fromStdString(result.futures_note)));
     return image;
   }
   const FutureSeparation& f = result.futures;

@@ -17,8 +17,7 @@ namespace oflab {
 // explorer_deformation), a grid of 8 x 8 cells on it deformed the same way, the undeformed
 // rectangle's outline, and a caption naming the time.
 QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
-                                  const Camera& camera, const QSize& size,
-                                  const ViewTheme& theme);
+                                  const Camera& camera, const QSize& size, const ViewTheme& theme);
 
 // Each solution of `result` in its own half, seen from above and behind the eye at one
 // shared scale: the eye, its line of sight, the plane (a unit square at distance d = 1 across

@@ -310,7 +310,8 @@ TEST(InverseFlow, TheTwoSolutionsAgreeAtTheFirstFrameAndThenSeparate) {
   for (size_t f = 0; f < s.corner_images_px.size(); ++f) {
     double worst = 0.0;
     for (int i = 0; i < 4; ++i) {
-      worst = std::max(worst, glm::length(s.corner_images_px[f][0][i] - s.corner_images_px[f][1][i]));
+      worst =
+          std::max(worst, glm::length(s.corner_images_px[f][0][i] - s.corner_images_px[f][1][i]));
     }
     EXPECT_DOUBLE_EQ(worst, s.corner_distance_px[f]) << f;
   }

@@ -154,8 +154,9 @@ TEST(WindowStateFile, TheExplorersTermsRoundTripByNameWithinTheirLimits) {
   EXPECT_EQ(error_after([](json& j) { j["basis"]["terms"]["rotation"] = -101; }),
             "s.json: basis.terms: field 'rotation': first-order rate -101 is outside "
             "-100..100 1/s");
-  EXPECT_NE(error_after([](json& j) { j["basis"]["terms"]["py"] = 0.2; }).find("-0.1..0.1 1/(px s)"),
-            std::string::npos);
+  EXPECT_NE(
+      error_after([](json& j) { j["basis"]["terms"]["py"] = 0.2; }).find("-0.1..0.1 1/(px s)"),
+      std::string::npos);
   EXPECT_NE(error_after([](json& j) { j["basis"]["terms"]["np_x"] = 0; }).find("np_x"),
             std::string::npos);
   EXPECT_NE(error_after([](json& j) { j["basis"]["terms"]["scale"] = "big"; }).find("scale"),

@@ -3,14 +3,18 @@
 // point, the grid's changes against hand formulas), the sliders driving the deformation, the
 // lit tiles and the solutions panel in a real window, the two futures as the panel shows
 // them, and the lesson claims of the explorer, each with a negative control.
+#include "models/basis_explorer.h"
+
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSlider>
+#include <algorithm>
 #include <cmath>
 
 #include "app/lesson_check.h"
+#include "flow/homography.h"
 #include "image_checks.h"
-#include "models/basis_explorer.h"
 #include "models/scene_model.h"
 #include "views/basis_view.h"
 #include "views/explorer_panel.h"
@@ -88,9 +92,9 @@ TEST(BasisExplorer, TheStartingValuesHaveTwoWorldsThatPartAtFrame13) {
   // Each solution maps forward to the dialled coefficients (core's own check, here on the
   // explorer's numbers).
   for (const PlanarMotionSolution& s : r.inverse.solutions) {
-    const SolutionScene scene = solution_scene(s, kCamera.focal_px, Vec2(0, 0), MotionModel::kScrew);
-    const PlanarFlowCoefficients back =
-        planar_flow_coefficients(kCamera, scene.pose, scene.motion);
+    const SolutionScene scene =
+        solution_scene(s, kCamera.focal_px, Vec2(0, 0), MotionModel::kScrew);
+    const PlanarFlowCoefficients back = planar_flow_coefficients(kCamera, scene.pose, scene.motion);
     EXPECT_LT(relative_coefficient_difference(back, r.coefficients, kCamera.focal_px), 1e-9);
   }
 }
@@ -119,7 +123,8 @@ TEST_F(BasisExplorerWindow, SlidersDriveTheDeformationTheTilesAndTheSolutions) {
   basis().render_image();
   EXPECT_EQ(basis().active_tile_count(), 0);
   const QImage still = panel().deformation()->image();
-  EXPECT_NE(panel().solutions_text().indexOf("No motion"), -1) << panel().solutions_text().toStdString();
+  EXPECT_NE(panel().solutions_text().indexOf("No motion"), -1)
+      << panel().solutions_text().toStdString();
   // Type 0.2 into the scale slider's field, as a user does.
   SliderSpin* scale = panel().slider(find_explorer_term("scale"));
   ASSERT_NE(scale, nullptr);
@@ -167,14 +172,14 @@ TEST_F(BasisExplorerWindow, TheFuturesAgreeAtFirstAndPartAtTheFrameThePanelShows
   play->click();
   EXPECT_TRUE(panel().futures_playing());
   EXPECT_EQ(panel().futures_frame(), 0);
-  const QImage start = panel().results()->grab().toImage();  // frame 0: the curve not yet drawn
+  const QImage start = panel().worlds()->grab().toImage();  // frame 0: the curve not yet drawn
   for (int k = 1; k <= kFutureFrames; ++k) {
     basis().step_animation();
     EXPECT_EQ(panel().futures_frame(), k);
   }
   EXPECT_FALSE(panel().futures_playing());
   EXPECT_NE(panel().futures_text().indexOf("Frame 30 of 30"), -1);
-  EXPECT_GT(changed_fraction(panel().results()->grab().toImage(), start), 0.0);
+  EXPECT_GT(changed_fraction(panel().worlds()->grab().toImage(), start), 0.0);
   EXPECT_EQ(measure("futures_apart_frame"), 13.0);
   EXPECT_LT(measure("futures_first_px"), 0.01);
 }
@@ -183,7 +188,7 @@ TEST_F(BasisExplorerWindow, TheExplorersClaimsMeasureWhatTheyNameWithControls) {
   ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
   EXPECT_EQ(measure("solution_count"), 2.0);
   ASSERT_TRUE(window().model()->set_explorer_terms(only("scale", 0.2)));
-  EXPECT_EQ(measure("solution_count"), 1.0);       // control: a degenerate case
+  EXPECT_EQ(measure("solution_count"), 1.0);        // control: a degenerate case
   EXPECT_EQ(measure("futures_apart_frame"), -1.0);  // control: nothing to compare
   EXPECT_TRUE(std::isnan(measure("futures_first_px")));
   EXPECT_EQ(measure("tile_active", "scale"), 1.0);
