@@ -128,7 +128,11 @@ const QImage& BasisTiles::paint(const QSize& wanted) {
 // top left and the value at the bottom left.
 void BasisTiles::paint_tile(QPainter& painter, const Tile& tile, const QRectF& cell) const {
   painter.fillRect(cell, to_qcolor(tile.active ? theme_.tile_background : theme_.muted_background));
-  const double scale = 0.5 * std::min(cell.width(), cell.height()) / kHalfView;
+  // A short tile (the explorer's small gallery) shrinks its grid so that the grid, deformed
+  // by at most 1 + kMaxShift half-tiles, stays clear of the value and title bands.
+  const double band = value_font_size() + 0.03 * cell.height();
+  const double scale = std::min(0.5 * std::min(cell.width(), cell.height()) / kHalfView,
+                                (0.5 * cell.height() - band) / (1.0 + kMaxShift));
   QTransform to_cell;
   to_cell.translate(cell.center().x(), cell.center().y());
   to_cell.scale(scale, scale);

@@ -275,7 +275,7 @@ void ExplorerPanel::fit_sliders() {
     widest = std::max(widest, slider->spin_box()->minimumWidth());
   }
   dials_->setMaximumWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + widest +
-                          7 * metrics.height());
+                          9 * metrics.height());
 }
 
 void ExplorerPanel::paint() {

@@ -213,7 +213,9 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
       painter.setPen(to_qcolor(theme.text));
       set_font(painter, theme.label_size);
       painter.drawText(cell.adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
-                       QObject::tr("Any plane: a pure rotation says nothing about it"));
+                       i < int(solutions.size()) && solutions[size_t(i)].omega == Vec3(0.0)
+                           ? QObject::tr("No motion: any plane, at rest")
+                           : QObject::tr("Any plane: a pure rotation says nothing about it"));
       continue;
     }
     QTransform to_cell;
@@ -306,7 +308,7 @@ void paint_tracks(QPainter& painter, const FutureSeparation& f, int frame, const
 void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const QRectF& area,
                  const ViewTheme& theme) {
   const double label = theme.label_size;
-  const QRectF plot = area.adjusted(3.2 * label, 1.6 * label, -8, -1.6 * label);
+  const QRectF plot = area.adjusted(3.2 * label, 2.2 * label, -8, -1.6 * label);
   const double top = std::max(2.0 * kFuturesApartPx, f.corner_distance_px.back());
   const auto at = [&](int k, double px) {
     return QPointF(plot.left() + plot.width() * k / std::max(1, kFutureFrames),
