@@ -268,14 +268,15 @@ void ExplorerPanel::fit_sliders() {
       name->setMinimumWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + 8);
     }
   }
-  // The column is as wide as its widest slider needs with a short slider, and no wider: the
-  // deformation and the worlds take the rest.
+  // The column is as wide as its widest slider needs with a short slider, whatever the
+  // solutions' text (the layout does not jump while a slider moves); the deformation and the
+  // worlds take the rest.
   int widest = 0;
   for (SliderSpin* slider : sliders_of_) {
     widest = std::max(widest, slider->spin_box()->minimumWidth());
   }
-  dials_->setMaximumWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + widest +
-                          9 * metrics.height());
+  dials_->setFixedWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + widest +
+                        9 * metrics.height());
 }
 
 void ExplorerPanel::paint() {

@@ -136,7 +136,7 @@ TEST_F(BasisExplorerWindow, SlidersDriveTheDeformationTheTilesAndTheSolutions) {
   EXPECT_EQ(basis().tile_active("scale"), 1.0);
   EXPECT_EQ(basis().tile_active("rotation"), 0.0);
   const QImage grown = panel().deformation()->image();
-  ASSERT_EQ(grown.size(), still.size());
+  ASSERT_EQ(grown.size(), still.size());  // the layout does not move while a slider does
   EXPECT_GT(changed_fraction(grown, still), 0.05);
   EXPECT_NE(panel().solutions_text().indexOf("fronto-parallel"), -1)
       << panel().solutions_text().toStdString();
