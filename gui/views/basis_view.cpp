@@ -92,7 +92,7 @@ QWidget* BasisView::make_option_bar() {
   play_box_ = new QCheckBox(tr("Play"), bar);
   play_box_->setObjectName(QStringLiteral("gallery_play"));
   row->addWidget(play_box_);
-  explore_box_ = new QCheckBox(tr("Explore: dial the terms, solve for the world"), bar);
+  explore_box_ = new QCheckBox(tr("Explore"), bar);
   explore_box_->setObjectName(QStringLiteral("basis_explore"));
   explore_box_->setToolTip(
       tr("Set the eight planar terms by hand and see every plane and motion that makes them"));

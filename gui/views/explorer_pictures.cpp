@@ -161,6 +161,77 @@ SketchPoints sketch_points(const PlanarMotionSolution& s, const Camera& camera) 
 
 }  // namespace
 
+namespace {
+
+const QString kLegend[4] = {QObject::tr("dot: the eye"), QObject::tr("N normal"),
+                            QObject::tr("V/d velocity"), QObject::tr("Omega spin")};
+
+// The legend's lines: 1 when it fits the width, else 2 (two items a line).
+int legend_lines(QPainter& painter, double width, const ViewTheme& theme) {
+  double needed = 0.0;
+  for (const QString& part : kLegend) {
+    needed += painter.fontMetrics().horizontalAdvance(part) + theme.label_size;
+  }
+  return needed <= width - 12 ? 1 : 2;
+}
+
+void paint_legend(QPainter& painter, const QRectF& band, int lines, const ViewTheme& theme) {
+  const QColor colours[4] = {to_qcolor(theme.text), to_qcolor(theme.text),
+                             to_qcolor(okabe_ito::kVermillion), to_qcolor(okabe_ito::kBlue)};
+  const double line_height = band.height() / lines;
+  double x = band.left();
+  for (int k = 0; k < 4; ++k) {
+    const int line = lines == 1 ? 0 : k / 2;
+    if (lines == 2 && k == 2) x = band.left();
+    painter.setPen(colours[k]);
+    painter.drawText(QRectF(x, band.top() + line * line_height, band.right() - x, line_height),
+                     Qt::AlignLeft | Qt::AlignVCenter, kLegend[k]);
+    x += painter.fontMetrics().horizontalAdvance(kLegend[k]) + theme.label_size;
+  }
+}
+
+// The sketch's points of a solution in the fixed view (view_of), world units: the plane's
+// four corners, its centre, the tips of N, V/d and Omega (arrow lengths times `arrow`).
+std::vector<QPointF> sketch_of(const PlanarMotionSolution& s, double arrow) {
+  const Camera camera = make_camera(1.0, 2, 2);  // only the direction of the centre ray matters
+  const SketchPoints p = sketch_points(s, camera);
+  std::vector<QPointF> points;
+  for (const Vec3& c : p.corners) points.push_back(view_of(c));
+  points.push_back(view_of(p.centre));
+  points.push_back(view_of(p.centre + 0.5 * s.normal));
+  points.push_back(view_of(p.centre + arrow * s.v_over_d));
+  points.push_back(view_of(arrow * s.omega));
+  return points;
+}
+
+// One solution's sketch (points of sketch_of, mapped by to_cell) in the colour of solution
+// `index`.
+void paint_sketch(QPainter& painter, const std::vector<QPointF>& points, const QTransform& to_cell,
+                  int index, const ViewTheme& theme) {
+  const auto at = [&](size_t k) { return to_cell.map(points[k]); };
+  const QPointF eye = to_cell.map(view_of(Vec3(0.0)));
+  painter.setPen(QPen(to_qcolor(theme.muted), 1.0, Qt::DashLine));
+  painter.drawLine(eye, at(4));
+  QColor fill = solution_colour(index);
+  fill.setAlpha(90);
+  painter.setBrush(fill);
+  painter.setPen(QPen(solution_colour(index), theme.line_width + 0.5));
+  painter.drawPolygon(QPolygonF({at(0), at(1), at(2), at(3)}));
+  painter.setBrush(Qt::NoBrush);
+  const double head = 0.9 * theme.label_size;
+  painter.setPen(QPen(to_qcolor(theme.text), theme.line_width + 0.5));
+  draw_arrow(painter, at(4), at(5), head);
+  painter.setPen(QPen(to_qcolor(okabe_ito::kVermillion), theme.line_width + 1.5));
+  draw_arrow(painter, at(4), at(6), head);
+  painter.setPen(QPen(to_qcolor(okabe_ito::kBlue), theme.line_width + 1.5));
+  draw_arrow(painter, eye, at(7), head);
+  painter.setBrush(to_qcolor(theme.text));
+  painter.drawEllipse(eye, 4.0, 4.0);
+  painter.setBrush(Qt::NoBrush);
+}
+
+}  // namespace
+
 QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
                                 const ViewTheme& theme) {
   QImage image = blank(size, theme);
@@ -168,50 +239,35 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   painter.setRenderHint(QPainter::Antialiasing, true);
   const std::vector<PlanarMotionSolution>& solutions = result.inverse.solutions;
   const int count = std::max<int>(1, int(solutions.size()));
-  const QString parts[4] = {QObject::tr("dot: the eye"), QObject::tr("N normal"),
-                            QObject::tr("V/d velocity"), QObject::tr("Omega spin")};
   set_font(painter, theme.label_size);
-  double legend_width = 0.0;
-  for (const QString& part : parts) {
-    legend_width += painter.fontMetrics().horizontalAdvance(part) + theme.label_size;
-  }
-  const int legend_lines = legend_width <= image.width() - 12 ? 1 : 2;
-  const double title = 1.5 * theme.label_size, legend = 1.4 * theme.label_size * legend_lines;
-  const double w = double(image.width()) / count;
-  const Camera camera = make_camera(1.0, 2, 2);  // only the direction of the centre ray matters
-  // One arrow scale for both: the longest of V/d and Omega is 0.8 units (d = 1).
+  const int lines = legend_lines(painter, image.width(), theme);
+  const double title = 1.5 * theme.label_size, legend = 1.4 * theme.label_size * lines;
+  const double w = double(image.width()) / count, cell_h = image.height() - title - legend;
+  // One arrow scale for both: the longest of V/d and Omega is 0.8 units (d = 1); one drawing
+  // scale for both: every point of every sketch fits its cell.
   double longest = 1e-12;
   for (const PlanarMotionSolution& s : solutions) {
     longest = std::max({longest, glm::length(s.v_over_d), glm::length(s.omega)});
   }
-  const double arrow = 0.8 / longest;
-  // One drawing scale for both: every point of every sketch fits its cell.
   std::vector<std::vector<QPointF>> points(solutions.size());
   QRectF bounds(view_of(Vec3(0.0)), QSizeF(1e-9, 1e-9));  // the eye
   for (size_t i = 0; i < solutions.size(); ++i) {
-    const PlanarMotionSolution& s = solutions[i];
-    if (!s.normal_known) continue;
-    const SketchPoints p = sketch_points(s, camera);
-    for (const Vec3& c : p.corners) points[i].push_back(view_of(c));
-    points[i].push_back(view_of(p.centre));
-    points[i].push_back(view_of(p.centre + 0.5 * s.normal));
-    points[i].push_back(view_of(p.centre + arrow * s.v_over_d));
-    points[i].push_back(view_of(arrow * s.omega));
+    if (!solutions[i].normal_known) continue;
+    points[i] = sketch_of(solutions[i], 0.8 / longest);
     for (const QPointF& q : points[i]) bounds |= QRectF(q, QSizeF(1e-9, 1e-9));
   }
-  const double cell_h = image.height() - title - legend;
   const double scale = 0.9 * std::min((w - 12.0) / std::max(bounds.width(), 1e-9),
                                       cell_h / std::max(bounds.height(), 1e-9));
-  set_font(painter, theme.label_size, true);
   const QString names[2] = {QObject::tr("Solution A"), QObject::tr("Solution B")};
   for (int i = 0; i < count; ++i) {
     const QRectF cell(i * w, title, w, cell_h);
+    set_font(painter, theme.label_size, true);
     painter.setPen(i < int(solutions.size()) ? solution_colour(i) : to_qcolor(theme.text));
     painter.drawText(QRectF(i * w + 6, 0, w - 12, title), Qt::AlignLeft | Qt::AlignVCenter,
                      solutions.empty() ? QObject::tr("No motion") : names[i]);
+    set_font(painter, theme.label_size);
     if (i >= int(solutions.size()) || !solutions[size_t(i)].normal_known) {
       painter.setPen(to_qcolor(theme.text));
-      set_font(painter, theme.label_size);
       painter.drawText(cell.adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
                        i < int(solutions.size()) && solutions[size_t(i)].omega == Vec3(0.0)
                            ? QObject::tr("No motion: any plane, at rest")
@@ -222,43 +278,10 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
     to_cell.translate(cell.center().x(), cell.center().y());
     to_cell.scale(scale, scale);
     to_cell.translate(-bounds.center().x(), -bounds.center().y());
-    const std::vector<QPointF>& p = points[size_t(i)];
-    const QPointF eye = to_cell.map(view_of(Vec3(0.0)));
-    painter.setPen(QPen(to_qcolor(theme.muted), 1.0, Qt::DashLine));
-    painter.drawLine(eye, to_cell.map(p[4]));
-    QPolygonF plane;
-    for (int k = 0; k < 4; ++k) plane << to_cell.map(p[size_t(k)]);
-    QColor fill = solution_colour(i);
-    fill.setAlpha(90);
-    painter.setBrush(fill);
-    painter.setPen(QPen(solution_colour(i), theme.line_width + 0.5));
-    painter.drawPolygon(plane);
-    painter.setBrush(Qt::NoBrush);
-    const double head = 0.9 * theme.label_size;
-    painter.setPen(QPen(to_qcolor(theme.text), theme.line_width + 0.5));
-    draw_arrow(painter, to_cell.map(p[4]), to_cell.map(p[5]), head);
-    painter.setPen(QPen(to_qcolor(okabe_ito::kVermillion), theme.line_width + 1.5));
-    draw_arrow(painter, to_cell.map(p[4]), to_cell.map(p[6]), head);
-    painter.setPen(QPen(to_qcolor(okabe_ito::kBlue), theme.line_width + 1.5));
-    draw_arrow(painter, eye, to_cell.map(p[7]), head);
-    painter.setBrush(to_qcolor(theme.text));
-    painter.drawEllipse(eye, 4.0, 4.0);
-    painter.setBrush(Qt::NoBrush);
+    paint_sketch(painter, points[size_t(i)], to_cell, i, theme);
   }
-  set_font(painter, theme.label_size);
-  const QColor colours[4] = {to_qcolor(theme.text), to_qcolor(theme.text),
-                             to_qcolor(okabe_ito::kVermillion), to_qcolor(okabe_ito::kBlue)};
-  const double line_height = 1.4 * theme.label_size;
-  double x = 6.0;
-  for (int k = 0; k < 4; ++k) {
-    const int line = legend_lines == 1 ? 0 : k / 2;  // two items a line when two lines
-    if (legend_lines == 2 && k == 2) x = 6.0;
-    painter.setPen(colours[k]);
-    const QRectF r(x, image.height() - legend + line * line_height, image.width() - 6.0 - x,
-                   line_height);
-    painter.drawText(r, Qt::AlignLeft | Qt::AlignVCenter, parts[k]);
-    x += painter.fontMetrics().horizontalAdvance(parts[k]) + theme.label_size;
-  }
+  paint_legend(painter, QRectF(6, image.height() - legend, image.width() - 12, legend), lines,
+               theme);
   return image;
 }
 
