@@ -158,6 +158,25 @@ TEST_F(BasisExplorerWindow, SlidersDriveTheDeformationTheTilesAndTheSolutions) {
   EXPECT_NEAR(scale->value(), default_explorer_terms()[2], 1e-9);
 }
 
+TEST_F(BasisExplorerWindow, FromTheSceneCopiesTheScenesFlowAndAllZeroClearsIt) {
+  auto* from_scene = basis().findChild<QPushButton*>(QStringLiteral("explorer_from_scene"));
+  auto* zero = basis().findChild<QPushButton*>(QStringLiteral("explorer_zero"));
+  ASSERT_NE(from_scene, nullptr);
+  ASSERT_NE(zero, nullptr);
+  from_scene->click();
+  QApplication::processEvents();
+  const SceneModel& scene = *window().model()->scene();
+  const PlanarFlowCoefficients want =
+      planar_flow_coefficients(scene.scene().camera, scene.current_pose(), scene.current_motion());
+  // The dialled terms make the scene's own eight coefficients back.
+  const PlanarFlowCoefficients got = explorer_coefficients(window().model()->explorer_terms());
+  EXPECT_LT(relative_coefficient_difference(got, want, scene.scene().camera.focal_px), 1e-12);
+  zero->click();
+  QApplication::processEvents();
+  EXPECT_EQ(window().model()->explorer_terms(), ExplorerTerms{});
+  EXPECT_EQ(basis().active_tile_count(), 0);
+}
+
 TEST_F(BasisExplorerWindow, TheFuturesAgreeAtFirstAndPartAtTheFrameThePanelShows) {
   ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
   QApplication::processEvents();
