@@ -67,7 +67,14 @@ for look in normal presentation; do
     --flow-draw arrows,streamlines,texture,zoom $flag
   screen=1920x1200 shot basis-1080-$look --view basis --size 1920 1080 --frames 30 $flag
   screen=1920x1200 shot slices-1080-$look --view slices --size 1920 1080 --frames 10 $flag
+  screen=1920x1200 shot basis-explorer-1080-$look --view basis --basis-explorer --whole-window \
+    --size 1920 1080 --frames 0 $flag
 done
+# The basis explorer's lessons (their steps are pictured below with the other lessons').
+screen=1920x1200 shot lesson-eight-numbers-two-worlds --lesson eight-numbers-two-worlds \
+  --size 1920 1080 --frames 0
+screen=1920x1200 shot lesson-what-each-term-does --lesson what-each-term-does --presentation \
+  --size 1920 1080 --frames 0
 # The world view (the cause) at 1920 x 1080, normal and presentation, the cause-and-effect
 # layout and its lesson.
 screen=1920x1200 shot world-demo --view world --size 1920 1080 --frames 10

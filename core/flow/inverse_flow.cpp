@@ -237,17 +237,20 @@ FutureSeparation compare_futures(const PlanarMotionSolution& a, const PlanarMoti
       worlds[w].points[i] = rho / facing;  // distance 1, as in solution_scene
     }
   }
+  FutureSeparation out;
   const auto separation = [&]() {
-    double worst = 0.0;
-    for (int i = 0; i < 4; ++i) {
-      const Vec3& p = worlds[0].points[i];
-      const Vec3& q = worlds[1].points[i];
-      const Vec2 d = focal_px * (Vec2(p.x / p.z, p.y / p.z) - Vec2(q.x / q.z, q.y / q.z));
-      worst = std::max(worst, glm::length(d));
+    std::array<std::array<Vec2, 4>, 2> images;
+    for (int w = 0; w < 2; ++w) {
+      for (int i = 0; i < 4; ++i) {
+        const Vec3& p = worlds[w].points[i];
+        images[w][i] = focal_px * Vec2(p.x / p.z, p.y / p.z);
+      }
     }
+    out.corner_images_px.push_back(images);
+    double worst = 0.0;
+    for (int i = 0; i < 4; ++i) worst = std::max(worst, glm::length(images[0][i] - images[1][i]));
     return worst;
   };
-  FutureSeparation out;
   out.corner_distance_px.push_back(separation());
   for (int frame = 1; frame <= max_frames; ++frame) {
     bool visible = true;

@@ -124,6 +124,9 @@ struct FutureSeparation {
   // Largest corner distance in pixels at frames 0, 1, ..., frames_played (frame 0 is 0:
   // both start from the same image points).
   std::vector<double> corner_distance_px;
+  // The corners' images at the same frames, centred pixels: [frame][solution a = 0, b = 1]
+  // [corner, in the order of corner_pixels].
+  std::vector<std::array<std::array<Vec2, 4>, 2>> corner_images_px;
   // The first frame whose distance exceeds the threshold; -1 when none did.
   int first_frame_apart = -1;
   // Frames played: max_frames, or fewer when a corner of either plane came within 1e-6 d

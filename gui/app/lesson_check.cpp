@@ -10,6 +10,7 @@
 #include "adapters/flow_parts.h"
 #include "app/main_window.h"
 #include "models/animation_model.h"
+#include "models/basis_explorer.h"
 #include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
@@ -148,6 +149,33 @@ double caption_cut(MainWindow* window) {
   return banner->height() < banner->heightForWidth(banner->width()) ? 1.0 : 0.0;
 }
 
+// The claims of the basis explorer, measured on what the basis view shows; NaN for another
+// kind, or when the view is not there.
+double explorer_claim(MainWindow* window, const LessonClaim& claim) {
+  auto* basis = qobject_cast<BasisView*>(window->view(QStringLiteral("basis")));
+  if (!basis) return kUnknown;
+  basis->render_image();
+  const std::string& kind = claim.claim;
+  if (kind == "tile_active") return basis->tile_active(claim.of);
+  WindowModel& model = *window->model();
+  const Camera& camera = model.scene()->scene().camera;
+  const ExplorerResult result = explore(model.explorer_terms(), camera);
+  if (kind == "solution_count") return double(result.inverse.solutions.size());
+  if (kind == "futures_apart_frame") {
+    return result.futures_played ? result.futures.first_frame_apart : -1.0;
+  }
+  if (kind == "futures_first_px") {
+    return result.futures_played && result.futures.frames_played >= 1
+               ? result.futures.corner_distance_px[1]
+               : kUnknown;
+  }
+  double value = kUnknown;
+  if (kind == "grid_change") {
+    grid_change_field(explorer_grid_change(model.explorer_terms(), camera), claim.of, &value);
+  }
+  return value;
+}
+
 std::string number_text(double v) {
   std::ostringstream out;
   out.precision(4);
@@ -183,7 +211,7 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
   if (kind == "run_pixels_ratio") return run_pixels_ratio(model, claim);
   if (kind == "caption_cut") return caption_cut(window);
   if (kind == "view") return window->current_view_name().toStdString() == claim.of ? 1.0 : 0.0;
-  return kUnknown;
+  return explorer_claim(window, claim);
 }
 
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,

@@ -60,7 +60,17 @@ struct LessonClaim {
 //   "run_pixels_ratio": the pixels compared policy `of` has written over frames 0 .. now (its
 //     panel's caption, "run N px") over those of compared policy `over`;
 //   "caption_cut": 1 when the lesson caption's banner is shorter than its wrapped text needs,
-//     else 0 (the checker claims it at most 0 for every part of every lesson).
+//     else 0 (the checker claims it at most 0 for every part of every lesson);
+// and of the basis explorer (gui/models/basis_explorer.h), as the basis view shows it:
+//   "tile_active": 1 when the gallery's tile of term `of` (its symbol: "scale", "px", ...)
+//     is lit (its coefficient is not zero), else 0;
+//   "solution_count": planes and motions in front of the eye that make the dialled flow;
+//   "futures_apart_frame": the first frame at which the two solutions' images are more
+//     than 1 px apart (-1 when they never are within the second played, or with fewer
+//     than two solutions);
+//   "futures_first_px": how far apart they are after one frame, px;
+//   "grid_change": what the deformation does to the grid in 1 s, field `of` of GridChange:
+//     shift_px (px), area (ratio), turn_deg (degrees), keystone (fraction).
 const std::vector<std::string>& lesson_claim_kinds();
 
 struct LessonStep {

@@ -47,6 +47,8 @@ WindowState WindowModel::state() const {
   s.flow = flow_;
   s.basis = basis_;
   s.basis_playing = basis_playing_;
+  s.basis_explorer = basis_explorer_;
+  s.explorer_terms = explorer_terms_;
   s.plane = scene_->scene();
   s.script = scene_->script() ? scene_->script_name().toStdString() : std::string();
   s.texture = scene_->texture_source().toStdString();
@@ -128,6 +130,8 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   flow_ = s.flow;
   basis_ = s.basis;
   basis_playing_ = s.basis_playing;
+  basis_explorer_ = s.basis_explorer;
+  explorer_terms_ = s.explorer_terms;
   display_ = s.display;
   exact_renderer_ = s.exact_renderer;
   zoom_ = s.zoom;
@@ -141,6 +145,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   lesson_step_ = s.lesson_step;
   emit flow_display_changed();
   emit basis_changed();
+  emit explorer_changed();
   emit panels_changed();
   emit presentation_changed();
   emit scene_panel_changed();
@@ -176,6 +181,29 @@ void WindowModel::set_basis(BasisKind basis) {
 void WindowModel::set_basis_playing(bool playing) {
   basis_playing_ = playing;
   emit basis_changed();
+}
+
+void WindowModel::set_basis_explorer(bool on) {
+  basis_explorer_ = on;
+  emit explorer_changed();
+}
+
+bool WindowModel::set_explorer_term(int index, double value) {
+  if (index < 0 || index >= kExplorerTermCount) return false;
+  ExplorerTerms terms = explorer_terms_;
+  terms[size_t(index)] = value;
+  return set_explorer_terms(terms);
+}
+
+bool WindowModel::set_explorer_terms(const ExplorerTerms& terms) {
+  const std::string problem = explorer_terms_problem(terms);
+  if (!problem.empty()) {
+    emit input_rejected(QString::fromStdString(problem));
+    return false;
+  }
+  explorer_terms_ = terms;
+  emit explorer_changed();
+  return true;
 }
 
 void WindowModel::set_panel_display(PanelDisplay display) {

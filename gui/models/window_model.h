@@ -56,6 +56,16 @@ class WindowModel : public QObject {
   void set_basis(BasisKind basis);
   bool basis_playing() const { return basis_playing_; }
   void set_basis_playing(bool playing);
+  // The basis view shows the explorer (WindowState::basis_explorer).
+  bool basis_explorer() const { return basis_explorer_; }
+  void set_basis_explorer(bool on);
+  // The explorer's eight values (gui/models/basis_explorer.h), each in its term's unit.
+  const ExplorerTerms& explorer_terms() const { return explorer_terms_; }
+  // Sets the value of term `index` (0 .. kExplorerTermCount - 1); refused (false, and
+  // input_rejected naming the term and its limit) outside the term's limit.
+  bool set_explorer_term(int index, double value);
+  // Sets all eight; refused as a whole when one is outside its limit.
+  bool set_explorer_terms(const ExplorerTerms& terms);
 
   PanelDisplay panel_display() const { return display_; }
   void set_panel_display(PanelDisplay display);
@@ -94,7 +104,8 @@ class WindowModel : public QObject {
  signals:
   void view_changed();
   void flow_display_changed();
-  void basis_changed();  // the basis or its playing
+  void basis_changed();     // the basis or its playing
+  void explorer_changed();  // the explorer shown or hidden, or its values
   // The animation view's layout, compared policies, exact renderer or zoom.
   void panels_changed();
   void presentation_changed();
@@ -117,6 +128,8 @@ class WindowModel : public QObject {
   FlowDisplay flow_;
   BasisKind basis_ = BasisKind::kPlanar;
   bool basis_playing_ = false;
+  bool basis_explorer_ = false;
+  ExplorerTerms explorer_terms_ = default_explorer_terms();
   PanelDisplay display_ = PanelDisplay::kSideBySide;
   std::string exact_renderer_ = "core";
   double zoom_ = 1.0;

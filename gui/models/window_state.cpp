@@ -146,7 +146,8 @@ bool parse_panel_display(const std::string& text, PanelDisplay* display) {
 
 bool operator==(const WindowState& a, const WindowState& b) {
   return a.view == b.view && same(a.flow, b.flow) && a.basis == b.basis &&
-         a.basis_playing == b.basis_playing && same(a.plane, b.plane) && a.script == b.script &&
+         a.basis_playing == b.basis_playing && a.basis_explorer == b.basis_explorer &&
+         a.explorer_terms == b.explorer_terms && same(a.plane, b.plane) && a.script == b.script &&
          a.texture == b.texture && a.source == b.source && same(a.settings, b.settings) &&
          a.display == b.display && a.compared == b.compared &&
          a.exact_renderer == b.exact_renderer && a.zoom == b.zoom &&
@@ -162,7 +163,8 @@ std::string window_state_problem(const WindowState& s) {
     return "flow.spacing_px: must be 0 (automatic) or 4..1000 px";
   }
   return first_of({plane_state_problem(s.plane), settings_state_problem(s.settings),
-                   compared_problem(s.compared), check("animation.zoom", kZoom, s.zoom),
+                   explorer_terms_problem(s.explorer_terms), compared_problem(s.compared),
+                   check("animation.zoom", kZoom, s.zoom),
                    check("play_rate", kPlayRate, s.play_rate), check("frame", kFrameCount, s.frame),
                    s.lesson_step >= 0 && (s.lesson_step == 0 || !s.lesson.empty())
                        ? ""

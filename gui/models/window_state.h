@@ -13,6 +13,7 @@
 #include "flow/plane_scene.h"
 #include "models/animation_sources.h"
 #include "models/basis_catalog.h"
+#include "models/basis_explorer.h"
 #include "models/flow_display.h"
 
 namespace oflab {
@@ -35,6 +36,10 @@ struct WindowState {
   FlowDisplay flow;  // the flow view's part and drawing options
   BasisKind basis = BasisKind::kPlanar;
   bool basis_playing = false;  // the gallery animates its deformation amount
+  // The basis view shows the explorer (gui/models/basis_explorer.h) with these eight values
+  // on its sliders, each within its term's limit.
+  bool basis_explorer = false;
+  ExplorerTerms explorer_terms = default_explorer_terms();
 
   // The scene panel's plane at frame 0, the motion script it plays (a shipped name or a
   // file; empty for the plane's own constant motion) and its texture file (empty for the

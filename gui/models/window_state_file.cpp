@@ -219,13 +219,35 @@ json flow_object(const FlowDisplay& d) {
   return j;
 }
 
+// The explorer's values present in `j`, by key, over `terms`; their limits are checked with
+// the rest (window_state_problem).
+void read_explorer_terms(const json& j, const std::string& origin, ExplorerTerms* terms) {
+  const Where w{origin, "basis.terms"};
+  std::vector<std::string> keys;
+  for (const ExplorerTerm& term : explorer_terms()) keys.push_back(term.key);
+  only_fields(j, w, keys);
+  for (int k = 0; k < kExplorerTermCount; ++k) {
+    const char* key = explorer_terms()[size_t(k)].key;
+    optional(j, key, &(*terms)[size_t(k)], [&](const char* f) { return number_field(j, w, f); });
+  }
+}
+
+json explorer_terms_object(const ExplorerTerms& terms) {
+  json j = json::object();
+  for (int k = 0; k < kExplorerTermCount; ++k)
+    j[explorer_terms()[size_t(k)].key] = terms[size_t(k)];
+  return j;
+}
+
 void read_basis(const json& j, const std::string& origin, WindowState* s) {
   const Where w{origin, "basis"};
-  only_fields(j, w, {"kind", "playing"});
+  only_fields(j, w, {"kind", "playing", "explorer", "terms"});
   if (j.contains("kind") && !parse_basis_kind(text(j, w, "kind"), &s->basis)) {
     w.fail("kind", "one of taylor, waxman-ullman, planar");
   }
   optional(j, "playing", &s->basis_playing, [&](const char* f) { return boolean(j, w, f); });
+  optional(j, "explorer", &s->basis_explorer, [&](const char* f) { return boolean(j, w, f); });
+  if (j.contains("terms")) read_explorer_terms(object(j, w, "terms"), origin, &s->explorer_terms);
 }
 
 // The limits of every number (one rule per value: window_state_problem), as a file error.
@@ -301,7 +323,11 @@ json window_state_object(const WindowState& s) {
       {"lesson", s.lesson},
       {"lesson_step", s.lesson_step},
       {"flow", flow_object(s.flow)},
-      {"basis", {{"kind", basis_key(s.basis)}, {"playing", s.basis_playing}}},
+      {"basis",
+       {{"kind", basis_key(s.basis)},
+        {"playing", s.basis_playing},
+        {"explorer", s.basis_explorer},
+        {"terms", explorer_terms_object(s.explorer_terms)}}},
       {"plane", plane_object(s.plane)},
       {"script", s.script},
       {"texture", s.texture},

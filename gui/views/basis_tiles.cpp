@@ -91,10 +91,16 @@ void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_p
         sign * std::clamp(amount, 0.0, 1.0) * kMaxShift * unit_normaliser(term.unit);
     tile.grid = deformed_grid(term.unit, scale);
     tile.title = term.symbol;
-    tile.value = tile.active
-                     ? QString::number(value, 'g', 3).toStdString() + " " + order_unit(term.order)
-                     : std::string("0 (zero)");
+    tile.value = tile.active ? QString::number(value, 'g', 3).toStdString() : std::string("0");
+    tile.unit = tile.active ? order_unit(term.order) : "(zero)";
   }
+}
+
+int BasisTiles::tile_state(const std::string& symbol) const {
+  for (const Tile& tile : tiles_) {
+    if (tile.title == symbol) return tile.active ? 1 : 0;
+  }
+  return -1;
 }
 
 double BasisTiles::smallest_text_px() const {
@@ -122,7 +128,11 @@ const QImage& BasisTiles::paint(const QSize& wanted) {
 // top left and the value at the bottom left.
 void BasisTiles::paint_tile(QPainter& painter, const Tile& tile, const QRectF& cell) const {
   painter.fillRect(cell, to_qcolor(tile.active ? theme_.tile_background : theme_.muted_background));
-  const double scale = 0.5 * std::min(cell.width(), cell.height()) / kHalfView;
+  // A short tile (the explorer's small gallery) shrinks its grid so that the grid, deformed
+  // by at most 1 + kMaxShift half-tiles, stays clear of the value and title bands.
+  const double band = value_font_size() + 0.03 * cell.height();
+  const double scale = std::min(0.5 * std::min(cell.width(), cell.height()) / kHalfView,
+                                (0.5 * cell.height() - band) / (1.0 + kMaxShift));
   QTransform to_cell;
   to_cell.translate(cell.center().x(), cell.center().y());
   to_cell.scale(scale, scale);
@@ -143,11 +153,21 @@ void BasisTiles::paint_tile(QPainter& painter, const Tile& tile, const QRectF& c
   painter.setFont(font);
   const QRectF inner = cell.adjusted(0.04 * cell.width(), 0.03 * cell.height(),
                                      -0.02 * cell.width(), -0.03 * cell.height());
-  painter.drawText(inner, Qt::AlignLeft | Qt::AlignTop, QString::fromStdString(tile.title));
+  const QString title = QString::fromStdString(tile.title);
+  if (painter.fontMetrics().horizontalAdvance(title) > inner.width()) {
+    font.setPixelSize(value_font_size());  // a narrow tile: the titles at the values' size
+    painter.setFont(font);
+  }
+  painter.drawText(inner, Qt::AlignLeft | Qt::AlignTop, title);
   font.setPixelSize(value_font_size());
   font.setBold(false);
   painter.setFont(font);
-  painter.drawText(inner, Qt::AlignLeft | Qt::AlignBottom, QString::fromStdString(tile.value));
+  // The value with its unit; in a tile too narrow for both, the value alone (the explorer's
+  // small gallery: its sliders show the units).
+  const QString value = QString::fromStdString(tile.value);
+  const QString with_unit = value + QStringLiteral(" ") + QString::fromLatin1(tile.unit);
+  const bool fits = painter.fontMetrics().horizontalAdvance(with_unit) <= inner.width();
+  painter.drawText(inner, Qt::AlignLeft | Qt::AlignBottom, fits ? with_unit : value);
   painter.restore();
 }
 

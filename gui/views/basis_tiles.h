@@ -39,6 +39,9 @@ class BasisTiles {
 
   // Number of tiles whose coefficient is not zero after the last update.
   int active_tile_count() const { return active_count_; }
+  // 1 when the tile of the term with this symbol (basis_catalog.h BasisTerm::symbol) is lit
+  // after the last update, 0 when it is grey, -1 when no tile has that symbol.
+  int tile_state(const std::string& symbol) const;
   // The smallest font of the tiles' titles and values, screen pixels.
   double smallest_text_px() const;
 
@@ -50,7 +53,8 @@ class BasisTiles {
  private:
   struct Tile {
     std::vector<QPolygonF> grid;  // the deformed grid lines, half-tile units
-    std::string title, value;
+    std::string title, value;     // the symbol; the coefficient's number ("0" when zero)
+    const char* unit = "";        // its unit, or "(zero)"
     bool active = true;
     int order = 0;
   };

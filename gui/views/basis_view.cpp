@@ -2,11 +2,13 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSlider>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "adapters/flow_parts.h"
@@ -15,6 +17,7 @@
 #include "models/window_model.h"
 #include "scene/view_culling.h"
 #include "views/basis_tiles.h"
+#include "views/explorer_panel.h"
 #include "views/image_canvas.h"
 
 namespace oflab {
@@ -37,13 +40,28 @@ BasisView::BasisView(WindowModel* window, QWidget* parent)
 
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
+  explorer_ = new ExplorerPanel(window_, this);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(make_option_bar());
-  layout->addWidget(canvas_, 1);
+  // The explorer's dials down the left; its deformation and its worlds side by side above the
+  // gallery, which spans both (the explorer's widgets are hidden without it).
+  body_ = new QGridLayout;
+  body_->addWidget(explorer_->dials(), 0, 0, 2, 1);
+  body_->addWidget(explorer_->deformation(), 0, 1);
+  body_->addWidget(explorer_->worlds(), 0, 2);
+  body_->addWidget(canvas_, 1, 1, 1, 2);
+  body_->setColumnStretch(1, 3);
+  body_->setColumnStretch(2, 2);
+  layout->addLayout(body_, 1);
   layout->addWidget(summary_);
-  connect(model_, &SceneModel::scene_changed, this, &BasisView::refresh);
+  connect(model_, &SceneModel::scene_changed, this, [this] {
+    if (explorer_shown()) explorer_->refresh(isVisible());  // the camera's size and focus
+    refresh();
+  });
   connect(window_, &WindowModel::basis_changed, this, &BasisView::show_basis);
+  connect(window_, &WindowModel::explorer_changed, this, &BasisView::show_explorer);
+  show_explorer();
   show_basis();
   connect(canvas_, &ImageCanvas::resized, this, [this] {
     if (isVisible()) paint_canvas();
@@ -74,6 +92,11 @@ QWidget* BasisView::make_option_bar() {
   play_box_ = new QCheckBox(tr("Play"), bar);
   play_box_->setObjectName(QStringLiteral("gallery_play"));
   row->addWidget(play_box_);
+  explore_box_ = new QCheckBox(tr("Explore"), bar);
+  explore_box_->setObjectName(QStringLiteral("basis_explore"));
+  explore_box_->setToolTip(
+      tr("Set the eight planar terms by hand and see every plane and motion that makes them"));
+  row->addWidget(explore_box_);
   row->addStretch(1);
   basis_box_->setToolTip(
       tr("The basis the flow's Taylor terms are shown in (dissertation "
@@ -86,6 +109,7 @@ QWidget* BasisView::make_option_bar() {
           [this](int k) { window_->set_basis(static_cast<BasisKind>(k)); });
   connect(amount_slider_, &QSlider::valueChanged, this, [this](int) { refresh(); });
   connect(play_box_, &QCheckBox::toggled, window_, &WindowModel::set_basis_playing);
+  connect(explore_box_, &QCheckBox::toggled, window_, &WindowModel::set_basis_explorer);
   return bar;
 }
 
@@ -96,6 +120,10 @@ void BasisView::set_amount(double amount) {
 }
 bool BasisView::playing() const { return window_->basis_playing(); }
 int BasisView::active_tile_count() const { return tiles_->active_tile_count(); }
+double BasisView::tile_active(const std::string& symbol) const {
+  const int state = tiles_->tile_state(symbol);
+  return state < 0 ? std::nan("") : double(state);
+}
 QString BasisView::summary() const { return summary_->text(); }
 
 void BasisView::show_basis() {
@@ -116,7 +144,26 @@ void BasisView::show_basis() {
 
 void BasisView::set_external_clock(bool on) {
   external_clock_ = on;
+  explorer_->set_external_clock(on);
   show_basis();
+}
+
+bool BasisView::explorer_shown() const { return window_->basis_explorer(); }
+
+void BasisView::show_explorer() {
+  const bool on = window_->basis_explorer();
+  {
+    const QSignalBlocker block(explore_box_);
+    explore_box_->setChecked(on);
+  }
+  basis_box_->setEnabled(!on);  // the explorer dials the planar basis
+  explorer_->dials()->setVisible(on);
+  explorer_->deformation()->setVisible(on);
+  explorer_->worlds()->setVisible(on);
+  body_->setRowStretch(0, on ? 3 : 0);
+  body_->setRowStretch(1, 2);
+  explorer_->refresh(on && isVisible());
+  refresh();
 }
 
 // Between kLowestShare and all of the amount, never zero: a tile passing through zero
@@ -131,14 +178,19 @@ int BasisView::value_font_size() const { return tiles_->value_font_size(); }
 
 void BasisView::step_animation() {
   phase_ += kPhaseStep;
+  if (explorer_shown()) explorer_->step_futures();
   refresh();
 }
 
 void BasisView::update_tiles() {
   const PlaneScene& scene = model_->scene();
+  const double radius = 0.5 * std::hypot(scene.camera.width, scene.camera.height);
+  if (explorer_shown()) {
+    update_explorer_tiles(radius);
+    return;
+  }
   const FlowContext context =
       make_flow_context(scene.camera, model_->current_pose(), model_->current_motion());
-  const double radius = 0.5 * std::hypot(scene.camera.width, scene.camera.height);
   tiles_->update(basis(), context.terms, radius, animated_amount());
   int second_order_active = 0;
   const std::vector<BasisTerm> terms = basis_terms(basis());
@@ -162,6 +214,17 @@ void BasisView::update_tiles() {
   dirty_ = false;
 }
 
+// The planar gallery of the explorer's terms: a tile lights up while its term is dialled.
+void BasisView::update_explorer_tiles(double radius) {
+  const TaylorTerms terms = taylor_terms(explorer_coefficients(window_->explorer_terms()));
+  tiles_->update(BasisKind::kPlanar, terms, radius, animated_amount());
+  summary_->setText(tr("Explorer: %1 of the 8 planar terms are dialled; their tiles in the "
+                       "gallery light up. The four second-order tiles that no plane makes stay "
+                       "grey.")
+                        .arg(tiles_->active_tile_count()));
+  dirty_ = false;
+}
+
 void BasisView::paint_canvas() { canvas_->set_image(tiles_->paint(canvas_->size())); }
 
 void BasisView::refresh() {
@@ -173,6 +236,7 @@ void BasisView::refresh() {
 
 void BasisView::showEvent(QShowEvent* event) {
   ViewPage::showEvent(event);
+  if (explorer_shown()) explorer_->refresh(true);
   if (dirty_) refresh();
 }
 
@@ -182,10 +246,14 @@ QImage BasisView::render_image() {
   return canvas_->image();
 }
 
-double BasisView::smallest_text_px() const { return tiles_->smallest_text_px(); }
+double BasisView::smallest_text_px() const {
+  const double gallery = tiles_->smallest_text_px();
+  return explorer_shown() ? std::min(gallery, explorer_->smallest_text_px()) : gallery;
+}
 
 void BasisView::set_theme(const ViewTheme& theme) {
   tiles_->set_theme(theme);
+  explorer_->set_theme(theme);
   canvas_->set_background(to_qcolor(theme.background));
   refresh();
 }

@@ -1,6 +1,9 @@
 // View 2, "Basis deformations": the gallery of basis terms (BasisTiles) for the chosen
 // basis, with the amount of deformation on a slider and a play toggle that animates it
-// (a QTimer). Each tile shows the current flow's coefficient of its term.
+// (a QTimer). Each tile shows the current flow's coefficient of its term. With "Explore"
+// on (WindowState::basis_explorer) the view is the basis explorer (views/explorer_panel.h):
+// the planar gallery's tiles then show the explorer's dialled terms instead of the scene's,
+// between the explorer's sliders and its solutions.
 #pragma once
 
 #include <memory>
@@ -10,6 +13,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
 class QLabel;
 class QSlider;
 class QTimer;
@@ -17,6 +21,7 @@ class QTimer;
 namespace oflab {
 
 class BasisTiles;
+class ExplorerPanel;
 class ImageCanvas;
 class SceneModel;
 class WindowModel;
@@ -43,6 +48,9 @@ class BasisView : public ViewPage {
   bool playing() const;  // the window model's basis_playing
   // Tiles with a non-zero coefficient after the last update.
   int active_tile_count() const;
+  // 1 when the tile of the term with this symbol ("scale", "px", ...) is lit after the last
+  // update, 0 when grey, NaN when the gallery has no such tile.
+  double tile_active(const std::string& symbol) const;
   // The line under the tiles; it starts by saying so when the plane is outside the image.
   QString summary() const;
   // The grids' displacement now: while playing it swings between 35 % and 100 % of
@@ -52,6 +60,9 @@ class BasisView : public ViewPage {
   int value_font_size() const;
   // The widget that shows the painted gallery.
   ImageCanvas* canvas() const { return canvas_; }
+  // The explorer's widgets and what they show (shown when the model's basis_explorer is on).
+  ExplorerPanel* explorer() const { return explorer_; }
+  bool explorer_shown() const;
 
   void refresh();
 
@@ -61,9 +72,12 @@ class BasisView : public ViewPage {
  private:
   QWidget* make_option_bar();
   void update_tiles();
+  void update_explorer_tiles(double radius);
   void paint_canvas();
   // The controls show the model's basis and playing; the timer follows; redraws.
   void show_basis();
+  // The explorer's widgets are shown or hidden as the model says; redraws.
+  void show_explorer();
 
   WindowModel* window_;
   SceneModel* model_;
@@ -72,6 +86,9 @@ class BasisView : public ViewPage {
   QComboBox* basis_box_ = nullptr;
   QSlider* amount_slider_ = nullptr;
   QCheckBox* play_box_ = nullptr;
+  QCheckBox* explore_box_ = nullptr;
+  ExplorerPanel* explorer_ = nullptr;
+  QGridLayout* body_ = nullptr;
   QLabel* summary_ = nullptr;
   QTimer* timer_;
   double phase_ = 3.14159265358979323846;  // 0.5 (1 - cos(phase)) = 1: full amount when paused

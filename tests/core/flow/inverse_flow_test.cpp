@@ -305,6 +305,16 @@ TEST(InverseFlow, TheTwoSolutionsAgreeAtTheFirstFrameAndThenSeparate) {
   EXPECT_GT(s.corner_distance_px[s.first_frame_apart], 1.0);
   for (int f = 0; f < s.first_frame_apart; ++f) EXPECT_LE(s.corner_distance_px[f], 1.0);
   RecordProperty("first_frame_apart", s.first_frame_apart);
+  // The recorded corner images give the recorded distances, frame by frame.
+  ASSERT_EQ(s.corner_images_px.size(), s.corner_distance_px.size());
+  for (size_t f = 0; f < s.corner_images_px.size(); ++f) {
+    double worst = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      worst =
+          std::max(worst, glm::length(s.corner_images_px[f][0][i] - s.corner_images_px[f][1][i]));
+    }
+    EXPECT_DOUBLE_EQ(worst, s.corner_distance_px[f]) << f;
+  }
   // Second order in dt: halving the step quarters the first frame's distance.
   const FutureSeparation half = default_case_futures(c, 1.0 / 60.0, 2);
   EXPECT_NEAR(half.corner_distance_px[1] / s.corner_distance_px[1], 0.25, 0.02);

@@ -34,6 +34,11 @@ WindowState random_state(std::mt19937& rng) {
   s.flow.spacing_px = coin() ? 0.0 : in(4.0, 100.0);
   s.basis = BasisKind(pick(kBasisKindCount));
   s.basis_playing = coin();
+  s.basis_explorer = coin();
+  for (int k = 0; k < kExplorerTermCount; ++k) {
+    const Limit& limit = *explorer_terms()[size_t(k)].limit;
+    s.explorer_terms[size_t(k)] = in(limit.minimum, limit.maximum);
+  }
   s.plane.camera = make_camera(in(100.0, 3000.0), 2 + pick(2000), 2 + pick(2000));
   s.plane.pose.point = Vec3(in(-1, 1), in(-1, 1), in(1.0, 20.0));
   s.plane.pose.normal = Vec3(in(-0.5, 0.5), in(-0.5, 0.5), in(0.5, 1.0));
@@ -116,6 +121,54 @@ TEST(WindowStateFile, StatesDifferingInOneFieldAreNotEqual) {
   t = s;
   t.cause_and_effect = !t.cause_and_effect;
   EXPECT_FALSE(t == s);
+  t = s;
+  t.basis_explorer = !t.basis_explorer;
+  EXPECT_FALSE(t == s);
+  t = s;
+  t.explorer_terms[6] = std::nextafter(t.explorer_terms[6], 1.0);
+  EXPECT_FALSE(t == s);
+}
+
+// The explorer's values are fields of "basis" by their term's key; a file may give some of
+// them (the rest keep the base state's), and each is refused beyond its limit, which is
+// stated once (core/engine/limits.h) for the file, the sliders' fields and the model.
+TEST(WindowStateFile, TheExplorersTermsRoundTripByNameWithinTheirLimits) {
+  WindowState s;
+  s.basis_explorer = true;
+  s.explorer_terms = {1.5, -2.25, 0.125, -0.5, 0.75, -1.0, 0.000125, -0.0625};
+  const json j = json::parse(window_state_to_json(s));
+  EXPECT_EQ(j["basis"]["terms"]["px"], 0.000125);
+  EXPECT_EQ(j["basis"]["explorer"], true);
+  const WindowState back = parse_session(window_state_to_json(s), "s.json");
+  EXPECT_TRUE(back == s);
+  EXPECT_EQ(back.explorer_terms, s.explorer_terms);
+  // Only some terms given: the others stay the base state's.
+  WindowState base;
+  const WindowState some = read_window_state_object(
+      json::parse(R"({"basis": {"terms": {"scale": 0.5}}})"), "l.json", "state", base);
+  EXPECT_EQ(some.explorer_terms[2], 0.5);
+  EXPECT_EQ(some.explorer_terms[0], base.explorer_terms[0]);
+  EXPECT_EQ(error_after([](json& j) { j["basis"]["terms"]["tx"] = 20000; }),
+            "s.json: basis.terms: field 'tx': translation rate 20000 is outside "
+            "-10000..10000 px/s");
+  EXPECT_EQ(error_after([](json& j) { j["basis"]["terms"]["rotation"] = -101; }),
+            "s.json: basis.terms: field 'rotation': first-order rate -101 is outside "
+            "-100..100 1/s");
+  EXPECT_NE(
+      error_after([](json& j) { j["basis"]["terms"]["py"] = 0.2; }).find("-0.1..0.1 1/(px s)"),
+      std::string::npos);
+  EXPECT_NE(error_after([](json& j) { j["basis"]["terms"]["np_x"] = 0; }).find("np_x"),
+            std::string::npos);
+  EXPECT_NE(error_after([](json& j) { j["basis"]["terms"]["scale"] = "big"; }).find("scale"),
+            std::string::npos);
+  // The limits a file checks are the explorer's table's (one place).
+  for (const ExplorerTerm& term : explorer_terms()) {
+    ExplorerTerms terms{};
+    terms[size_t(find_explorer_term(term.key))] = term.limit->maximum;
+    EXPECT_EQ(explorer_terms_problem(terms), "") << term.key;
+    terms[size_t(find_explorer_term(term.key))] = std::nextafter(term.limit->maximum, 1e300);
+    EXPECT_NE(explorer_terms_problem(terms).find(term.key), std::string::npos) << term.key;
+  }
 }
 
 TEST(WindowStateFile, TheCauseAndEffectLayoutIsAFlagOfTheFile) {

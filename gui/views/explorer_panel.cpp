@@ -1,0 +1,307 @@
+#include "views/explorer_panel.h"
+
+#include <QDoubleSpinBox>
+#include <QFontMetrics>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "models/basis_catalog.h"
+#include "models/scene_model.h"
+#include "models/window_model.h"
+#include "views/explorer_pictures.h"
+#include "views/image_canvas.h"
+#include "views/slider_spin.h"
+
+namespace oflab {
+namespace {
+
+constexpr int kSliderSteps = 100;  // slider positions on each side of zero
+constexpr double kPi = 3.14159265358979323846;
+
+QString vector_text(const Vec3& v) {
+  return QStringLiteral("(%1, %2, %3)")
+      .arg(v.x, 0, 'f', 2)
+      .arg(v.y, 0, 'f', 2)
+      .arg(v.z, 0, 'f', 2)
+      .replace(QStringLiteral("-0.00"), QStringLiteral("0.00"));
+}
+
+QString case_text(const InverseFlowSolutions& r) {
+  switch (r.kind) {
+    case InverseFlowCase::kGeneral:
+      return r.solutions.size() == 2
+                 ? QObject::tr(
+                       "General case: two planes, moving differently, make exactly "
+                       "this flow.")
+                 : QObject::tr(
+                       "General case, but only one plane is in front of the eye (the "
+                       "other is seen edge-on).");
+    case InverseFlowCase::kTranslationAlongNormal:
+      return QObject::tr(
+          "Degenerate (translation along the normal): V is along N, the two "
+          "solutions coincide.");
+    case InverseFlowCase::kFrontoParallelAlongNormal:
+      return QObject::tr(
+          "Degenerate (fronto-parallel along the normal): a plane facing the "
+          "eye, moving along the line of sight: one solution.");
+    case InverseFlowCase::kPureRotation:
+      if (!r.solutions.empty() && r.solutions[0].omega == Vec3(0.0)) {
+        return QObject::tr("No motion: every term is zero, and any plane at rest fits.");
+      }
+      return QObject::tr("Degenerate (pure rotation): V = 0, Omega only; any plane fits.");
+  }
+  return QString();
+}
+
+// How far the plane is turned from facing the camera squarely, in words.
+QString facing_text(const PlanarMotionSolution& s) {
+  if (!s.normal_known) return QObject::tr("unknown");
+  const double degrees = std::acos(std::min(1.0, std::abs(s.normal.z))) * 180.0 / kPi;
+  if (degrees < 0.5) return QObject::tr("faces it squarely");
+  return QObject::tr("turned %1\u00b0 away").arg(degrees, 0, 'f', 0);
+}
+
+}  // namespace
+
+ExplorerPanel::ExplorerPanel(WindowModel* window, QWidget* parent)
+    : QObject(parent), window_(window), theme_(view_theme(false)) {
+  dials_ = make_dials(parent);
+  deformation_ = new ImageCanvas(parent);
+  deformation_->setObjectName(QStringLiteral("explorer_deformation"));
+  worlds_ = make_worlds(parent);
+  timer_ = new QTimer(this);
+  timer_->setInterval(int(std::lround(kFutureFrameSeconds * 1000.0)));
+  connect(timer_, &QTimer::timeout, this, &ExplorerPanel::step_futures);
+  connect(deformation_, &ImageCanvas::resized, this, [this] {
+    if (deformation_->isVisible()) paint();
+  });
+  connect(futures_, &ImageCanvas::resized, this, [this] {
+    if (futures_->isVisible()) paint_futures();
+  });
+  connect(sketch_, &ImageCanvas::resized, this, [this] {
+    if (sketch_->isVisible()) paint();
+  });
+}
+
+ExplorerPanel::~ExplorerPanel() = default;
+
+QWidget* ExplorerPanel::make_dials(QWidget* parent) {
+  auto* box = new QWidget(parent);
+  box->setObjectName(QStringLiteral("explorer_dials"));
+  auto* column = new QVBoxLayout(box);
+  column->setContentsMargins(0, 0, 0, 0);
+  auto* title = new QLabel(tr("<b>Dial the eight planar terms</b>"), box);
+  title->setWordWrap(true);
+  column->addWidget(title);
+  for (int k = 0; k < kExplorerTermCount; ++k) {
+    const ExplorerTerm& term = explorer_terms()[size_t(k)];
+    const double span = term.slider_span;
+    auto* slider = new SliderSpin(QString::fromLatin1(term.key), -span, span, span / kSliderSteps,
+                                  term.decimals, QStringLiteral(" ") + order_unit(term.order), box);
+    slider->setObjectName(QStringLiteral("explorer_") + term.key);
+    slider->set_description(QString::fromLatin1(term.description));
+    connect(slider, &SliderSpin::edited, this, [this, k](double value) {
+      if (!window_->set_explorer_term(k, value)) refresh(true);  // show the kept value again
+    });
+    sliders_of_[size_t(k)] = slider;
+    column->addWidget(slider);
+  }
+  auto* buttons = new QHBoxLayout;
+  auto* zero = new QPushButton(tr("All zero"), box);
+  zero->setObjectName(QStringLiteral("explorer_zero"));
+  zero->setToolTip(tr("Set every term to zero: no flow"));
+  auto* from_scene = new QPushButton(tr("From the scene"), box);
+  from_scene->setObjectName(QStringLiteral("explorer_from_scene"));
+  from_scene->setToolTip(tr("The terms of the scene panel's plane and motion now"));
+  buttons->addWidget(zero);
+  buttons->addWidget(from_scene);
+  column->addLayout(buttons);
+  solutions_ = new QLabel(box);
+  solutions_->setObjectName(QStringLiteral("explorer_solutions"));
+  solutions_->setWordWrap(true);
+  solutions_->setTextFormat(Qt::RichText);
+  column->addSpacing(6);
+  column->addWidget(solutions_);
+  column->addStretch(1);
+  connect(zero, &QPushButton::clicked, this,
+          [this] { window_->set_explorer_terms(ExplorerTerms{}); });
+  connect(from_scene, &QPushButton::clicked, this, [this] {
+    const SceneModel& scene = *window_->scene();
+    window_->set_explorer_terms(explorer_terms_of(planar_flow_coefficients(
+        scene.scene().camera, scene.current_pose(), scene.current_motion())));
+  });
+  return box;
+}
+
+QWidget* ExplorerPanel::make_worlds(QWidget* parent) {
+  auto* box = new QWidget(parent);
+  box->setObjectName(QStringLiteral("explorer_worlds"));
+  auto* column = new QVBoxLayout(box);
+  column->setContentsMargins(0, 0, 0, 0);
+  sketch_ = new ImageCanvas(box);
+  sketch_->setObjectName(QStringLiteral("explorer_planes"));
+  play_ = new QPushButton(tr("Play both solutions forward for 1 s"), box);
+  play_->setObjectName(QStringLiteral("explorer_play_futures"));
+  play_->setToolTip(
+      tr("Move each solution's plane with its own motion, 30 frames, and chart "
+         "how far apart their images are"));
+  futures_ = new ImageCanvas(box);
+  futures_->setObjectName(QStringLiteral("explorer_futures"));
+  futures_line_ = new QLabel(box);
+  futures_line_->setObjectName(QStringLiteral("explorer_futures_line"));
+  futures_line_->setWordWrap(true);
+  column->addWidget(sketch_, 3);
+  column->addWidget(play_);
+  column->addWidget(futures_, 2);
+  column->addWidget(futures_line_);
+  connect(play_, &QPushButton::clicked, this, &ExplorerPanel::play_futures);
+  return box;
+}
+
+void ExplorerPanel::refresh(bool visible) {
+  const ExplorerTerms& terms = window_->explorer_terms();
+  for (int k = 0; k < kExplorerTermCount; ++k) sliders_of_[size_t(k)]->set_value(terms[size_t(k)]);
+  solved_ = false;
+  if (visible) {
+    solve();
+    paint();
+  }
+}
+
+void ExplorerPanel::solve() {
+  result_ = explore(window_->explorer_terms(), window_->scene()->scene().camera);
+  timer_->stop();
+  futures_playing_ = false;
+  futures_frame_ = result_.futures_played ? result_.futures.frames_played : 0;
+  solutions_->setText(solutions_text());
+  futures_line_->setText(futures_text());
+  play_->setEnabled(result_.futures_played);
+  solved_ = true;
+}
+
+QString ExplorerPanel::solutions_text() const {
+  const InverseFlowSolutions& r = result_.inverse;
+  QString html = QStringLiteral("<p><b>%1</b></p>").arg(case_text(r).toHtmlEscaped());
+  if (r.solutions.empty()) return html;
+  // One solution after the other, a quantity per row: narrow enough for presentation mode.
+  const QString names[2] = {tr("Solution A"), tr("Solution B")};
+  const auto row = [](const QString& name, const QString& value) {
+    return QStringLiteral("<tr><td>&nbsp;&nbsp;%1&nbsp;&nbsp;</td><td>%2</td></tr>")
+        .arg(name, value);
+  };
+  html += QStringLiteral("<table cellspacing=0>");
+  for (size_t i = 0; i < r.solutions.size() && i < 2; ++i) {
+    const PlanarMotionSolution& s = r.solutions[i];
+    html += QStringLiteral("<tr><td colspan=2><b>%1</b></td></tr>").arg(names[i]) +
+            row(tr("normal N"), s.normal_known ? vector_text(s.normal) : tr("any")) +
+            row(tr("facing the camera"), facing_text(s)) +
+            row(tr("V/d, 1/s"), vector_text(s.v_over_d)) +
+            row(tr("Omega, rad/s"), vector_text(s.omega));
+  }
+  html += QStringLiteral("</table>");
+  html += QStringLiteral("<p>%1</p>")
+              .arg(tr("Left out, behind the eye: %1 mirror image(s). d, the plane's distance, "
+                      "is never known: only V/d.")
+                       .arg(r.dropped_behind));
+  return html;
+}
+
+QString ExplorerPanel::futures_text() const {
+  if (!result_.futures_played) {
+    return tr("Nothing to play: %1.").arg(QString::fromStdString(result_.futures_note));
+  }
+  const FutureSeparation& f = result_.futures;
+  const QString now = tr("Frame %1 of %2: the images are %3 px apart.")
+                          .arg(futures_frame_)
+                          .arg(f.frames_played)
+                          .arg(f.corner_distance_px[size_t(futures_frame_)], 0, 'f', 3);
+  const QString first =
+      tr("After one frame %1 px; over 1 px first at frame %2.")
+          .arg(f.corner_distance_px.size() > 1 ? f.corner_distance_px[1] : 0.0, 0, 'f', 3)
+          .arg(f.first_frame_apart < 0 ? tr("none") : QString::number(f.first_frame_apart));
+  return now + QStringLiteral(" ") + first +
+         tr(" Left: one corner's path under A and under B, magnified.");
+}
+
+void ExplorerPanel::play_futures() {
+  if (!result_.futures_played) return;
+  futures_frame_ = 0;
+  futures_playing_ = true;
+  if (!external_clock_) timer_->start();
+  paint_futures();
+}
+
+void ExplorerPanel::step_futures() {
+  if (!futures_playing_) return;
+  futures_frame_ = std::min(futures_frame_ + 1, result_.futures.frames_played);
+  if (futures_frame_ >= result_.futures.frames_played) {
+    futures_playing_ = false;
+    timer_->stop();
+  }
+  paint_futures();
+}
+
+void ExplorerPanel::set_external_clock(bool on) {
+  external_clock_ = on;
+  if (on) timer_->stop();
+  if (!on && futures_playing_) timer_->start();
+}
+
+// Room for each slider's name and its field's longest value with the unit, in the theme's
+// control font (a projector's large text must not be cut).
+void ExplorerPanel::fit_sliders() {
+  QFont font = dials_->font();
+  if (theme_.control_font_px > 0) font.setPixelSize(theme_.control_font_px);
+  const QFontMetrics metrics(font);
+  for (int k = 0; k < kExplorerTermCount; ++k) {
+    const ExplorerTerm& term = explorer_terms()[size_t(k)];
+    SliderSpin* slider = sliders_of_[size_t(k)];
+    const QString widest = QString::number(-term.slider_span, 'f', term.decimals) +
+                           QStringLiteral(" ") + order_unit(term.order);
+    slider->spin_box()->setMinimumWidth(metrics.horizontalAdvance(widest) + 2 * metrics.height());
+    if (auto* name = slider->findChild<QLabel*>()) {
+      name->setMinimumWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + 8);
+    }
+  }
+  // The column is as wide as its widest slider needs with a short slider, whatever the
+  // solutions' text (the layout does not jump while a slider moves); the deformation and the
+  // worlds take the rest.
+  int widest = 0;
+  for (SliderSpin* slider : sliders_of_) {
+    widest = std::max(widest, slider->spin_box()->minimumWidth());
+  }
+  dials_->setFixedWidth(metrics.horizontalAdvance(QStringLiteral("rotation")) + widest +
+                        9 * metrics.height());
+}
+
+void ExplorerPanel::paint() {
+  if (!solved_) solve();
+  const Mat3 deformation = explorer_deformation(window_->explorer_terms());
+  deformation_->set_image(paint_explorer_deformation(window_->scene()->texture(), deformation,
+                                                     window_->scene()->scene().camera,
+                                                     deformation_->size(), theme_));
+  sketch_->set_image(paint_explorer_solutions(result_, sketch_->size(), theme_));
+  paint_futures();
+}
+
+void ExplorerPanel::paint_futures() {
+  futures_->set_image(paint_explorer_futures(result_, futures_frame_, futures_->size(), theme_));
+  futures_line_->setText(futures_text());
+}
+
+void ExplorerPanel::set_theme(const ViewTheme& theme) {
+  theme_ = theme;
+  fit_sliders();
+  for (ImageCanvas* canvas : {deformation_, sketch_, futures_}) {
+    canvas->set_background(
+        QColor::fromRgbF(theme.background[0], theme.background[1], theme.background[2]));
+  }
+  if (solved_) paint();
+}
+
+}  // namespace oflab

@@ -1,0 +1,400 @@
+#include "views/explorer_pictures.h"
+
+#include <QFontMetrics>
+#include <QPainter>
+#include <QPainterPath>
+#include <QString>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "adapters/paint_helpers.h"
+#include "flow/plane.h"
+
+namespace oflab {
+namespace {
+
+constexpr int kGridLines = 9;     // lines per direction: 8 x 8 cells
+constexpr int kLineSamples = 33;  // points per grid line
+
+QColor solution_colour(int index) { return to_qcolor(policy_colour(index)); }
+
+QImage blank(const QSize& wanted, const ViewTheme& theme) {
+  QImage image(wanted.expandedTo(QSize(1, 1)), QImage::Format_RGB32);
+  image.fill(to_qcolor(theme.background));
+  return image;
+}
+
+void set_font(QPainter& painter, int pixels, bool bold = false) {
+  QFont font = painter.font();
+  font.setPixelSize(pixels);
+  font.setBold(bold);
+  painter.setFont(font);
+}
+
+// An arrow from `from` to `to` (screen pixels) with a head `head` pixels long.
+void draw_arrow(QPainter& painter, const QPointF& from, const QPointF& to, double head) {
+  painter.drawLine(from, to);
+  const QPointF d = to - from;
+  const double length = std::hypot(d.x(), d.y());
+  if (length < 1e-6) return;
+  const QPointF u = d / length, n(-u.y(), u.x());
+  const double h = std::min(head, 0.5 * length);
+  painter.drawLine(to, to - h * u + 0.5 * h * n);
+  painter.drawLine(to, to - h * u - 0.5 * h * n);
+}
+
+// The texture rectangle's corners in centred pixels: the middle half of the image.
+QRectF texture_rect(const Camera& camera) {
+  return QRectF(-0.25 * camera.width, -0.25 * camera.height, 0.5 * camera.width,
+                0.5 * camera.height);
+}
+
+// Fills the image frame's pixels of `image` with the texture carried by `deformation`:
+// each pixel's centred position taken back through the inverse homography, nearest texel.
+void warp_texture(QImage& image, const QImage& texture, const Mat3& deformation,
+                  const QRectF& frame, double scale, const QRectF& rect, QRgb empty) {
+  const Mat3 back = glm::inverse(deformation);
+  const QImage source = texture.convertToFormat(QImage::Format_RGB32);
+  const int top = std::max(0, int(frame.top())),
+            bottom = std::min(image.height(), int(frame.bottom()));
+  const int left = std::max(0, int(frame.left())),
+            right = std::min(image.width(), int(frame.right()));
+  for (int y = top; y < bottom; ++y) {
+    auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+    for (int x = left; x < right; ++x) {
+      const Vec2 q((x + 0.5 - frame.center().x()) / scale, (y + 0.5 - frame.center().y()) / scale);
+      const Vec3 h = back * Vec3(q, 1.0);
+      QRgb colour = empty;
+      if (h.z > 0.0) {
+        const double u = (h.x / h.z - rect.left()) / rect.width();
+        const double v = (h.y / h.z - rect.top()) / rect.height();
+        if (u >= 0.0 && u < 1.0 && v >= 0.0 && v < 1.0 && !source.isNull()) {
+          const int tx = std::min(source.width() - 1, int(u * source.width()));
+          const int ty = std::min(source.height() - 1, int(v * source.height()));
+          colour = reinterpret_cast<const QRgb*>(source.constScanLine(ty))[tx];
+        }
+      }
+      line[x] = colour;
+    }
+  }
+}
+
+}  // namespace
+
+QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
+                                  const Camera& camera, const QSize& size, const ViewTheme& theme) {
+  QImage image = blank(size, theme);
+  const double margin = 6.0;
+  const QString caption_text =
+      QObject::tr("After %1 s of this flow (dashed: the start)").arg(kDeformationSeconds);
+  QFont bold;
+  bold.setPixelSize(theme.label_size);
+  bold.setBold(true);
+  const bool one_line =
+      QFontMetrics(bold).horizontalAdvance(caption_text) <= image.width() - 2 * margin;
+  const double caption = (one_line ? 1.6 : 2.9) * theme.label_size;
+  const double scale = std::min((image.width() - 2 * margin) / camera.width,
+                                (image.height() - 2 * margin - caption) / camera.height);
+  if (!(scale > 0.0)) return image;
+  const QRectF frame(0.5 * (image.width() - scale * camera.width),
+                     caption + 0.5 * (image.height() - caption - scale * camera.height),
+                     scale * camera.width, scale * camera.height);
+  const QRectF rect = texture_rect(camera);
+  warp_texture(image, texture, deformation, frame, scale, rect,
+               to_qcolor(theme.image_background).rgb());
+  QPainter painter(&image);
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  QTransform to_screen;
+  to_screen.translate(frame.center().x(), frame.center().y());
+  to_screen.scale(scale, scale);
+  painter.setClipRect(frame);
+  painter.setPen(QPen(to_qcolor(theme.muted), 1.0, Qt::DashLine));
+  painter.drawRect(to_screen.mapRect(rect));
+  painter.setPen(QPen(to_qcolor(order_colour(1)), theme.line_width + 0.5));
+  for (int direction = 0; direction < 2; ++direction) {
+    for (int k = 0; k < kGridLines; ++k) {
+      QPolygonF line;
+      for (int s = 0; s < kLineSamples; ++s) {
+        const double a = double(k) / (kGridLines - 1), b = double(s) / (kLineSamples - 1);
+        const Vec2 p = direction == 0
+                           ? Vec2(rect.left() + a * rect.width(), rect.top() + b * rect.height())
+                           : Vec2(rect.left() + b * rect.width(), rect.top() + a * rect.height());
+        const Vec2 moved = apply_homography(deformation, p);
+        line << to_screen.map(QPointF(moved.x, moved.y));
+      }
+      painter.drawPolyline(line);
+    }
+  }
+  painter.setClipping(false);
+  painter.setPen(QPen(to_qcolor(theme.outline), theme.line_width));
+  painter.drawRect(frame);
+  painter.setPen(to_qcolor(theme.text));
+  set_font(painter, theme.label_size, true);
+  painter.drawText(QRectF(margin, 0, image.width() - 2 * margin, caption),
+                   Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_text);
+  return image;
+}
+
+namespace {
+
+// A fixed view from above, behind and to the left of the eye: turn about Y, then tilt about
+// X; orthographic, screen x right and y down as the viewer frame's.
+QPointF view_of(const Vec3& p) {
+  constexpr double kYaw = 0.9, kPitch = 0.45;  // radians
+  const double x = std::cos(kYaw) * p.x - std::sin(kYaw) * p.z;
+  const double z = std::sin(kYaw) * p.x + std::cos(kYaw) * p.z;
+  const double y = std::cos(kPitch) * p.y + std::sin(kPitch) * z;
+  return QPointF(x, y);
+}
+
+struct SketchPoints {
+  Vec3 centre;
+  std::array<Vec3, 4> corners;
+};
+
+SketchPoints sketch_points(const PlanarMotionSolution& s, const Camera& camera) {
+  const SolutionScene scene =
+      solution_scene(s, camera.focal_px, Vec2(0.0, 0.0), MotionModel::kScrew);
+  return {scene.pose.point, plane_corners(scene.pose)};
+}
+
+}  // namespace
+
+namespace {
+
+const QString kLegend[4] = {QObject::tr("dot: the eye"), QObject::tr("N normal"),
+                            QObject::tr("V/d velocity"), QObject::tr("Omega spin")};
+
+// The legend's lines: 1 when it fits the width, else 2 (two items a line).
+int legend_lines(QPainter& painter, double width, const ViewTheme& theme) {
+  double needed = 0.0;
+  for (const QString& part : kLegend) {
+    needed += painter.fontMetrics().horizontalAdvance(part) + theme.label_size;
+  }
+  return needed <= width - 12 ? 1 : 2;
+}
+
+void paint_legend(QPainter& painter, const QRectF& band, int lines, const ViewTheme& theme) {
+  const QColor colours[4] = {to_qcolor(theme.text), to_qcolor(theme.text),
+                             to_qcolor(okabe_ito::kVermillion), to_qcolor(okabe_ito::kBlue)};
+  const double line_height = band.height() / lines;
+  double x = band.left();
+  for (int k = 0; k < 4; ++k) {
+    const int line = lines == 1 ? 0 : k / 2;
+    if (lines == 2 && k == 2) x = band.left();
+    painter.setPen(colours[k]);
+    painter.drawText(QRectF(x, band.top() + line * line_height, band.right() - x, line_height),
+                     Qt::AlignLeft | Qt::AlignVCenter, kLegend[k]);
+    x += painter.fontMetrics().horizontalAdvance(kLegend[k]) + theme.label_size;
+  }
+}
+
+// The sketch's points of a solution in the fixed view (view_of), world units: the plane's
+// four corners, its centre, the tips of N, V/d and Omega (arrow lengths times `arrow`).
+std::vector<QPointF> sketch_of(const PlanarMotionSolution& s, double arrow) {
+  const Camera camera = make_camera(1.0, 2, 2);  // only the direction of the centre ray matters
+  const SketchPoints p = sketch_points(s, camera);
+  std::vector<QPointF> points;
+  for (const Vec3& c : p.corners) points.push_back(view_of(c));
+  points.push_back(view_of(p.centre));
+  points.push_back(view_of(p.centre + 0.5 * s.normal));
+  points.push_back(view_of(p.centre + arrow * s.v_over_d));
+  points.push_back(view_of(arrow * s.omega));
+  return points;
+}
+
+// One solution's sketch (points of sketch_of, mapped by to_cell) in the colour of solution
+// `index`.
+void paint_sketch(QPainter& painter, const std::vector<QPointF>& points, const QTransform& to_cell,
+                  int index, const ViewTheme& theme) {
+  const auto at = [&](size_t k) { return to_cell.map(points[k]); };
+  const QPointF eye = to_cell.map(view_of(Vec3(0.0)));
+  painter.setPen(QPen(to_qcolor(theme.muted), 1.0, Qt::DashLine));
+  painter.drawLine(eye, at(4));
+  QColor fill = solution_colour(index);
+  fill.setAlpha(90);
+  painter.setBrush(fill);
+  painter.setPen(QPen(solution_colour(index), theme.line_width + 0.5));
+  painter.drawPolygon(QPolygonF({at(0), at(1), at(2), at(3)}));
+  painter.setBrush(Qt::NoBrush);
+  const double head = 0.9 * theme.label_size;
+  painter.setPen(QPen(to_qcolor(theme.text), theme.line_width + 0.5));
+  draw_arrow(painter, at(4), at(5), head);
+  painter.setPen(QPen(to_qcolor(okabe_ito::kVermillion), theme.line_width + 1.5));
+  draw_arrow(painter, at(4), at(6), head);
+  painter.setPen(QPen(to_qcolor(okabe_ito::kBlue), theme.line_width + 1.5));
+  draw_arrow(painter, eye, at(7), head);
+  painter.setBrush(to_qcolor(theme.text));
+  painter.drawEllipse(eye, 4.0, 4.0);
+  painter.setBrush(Qt::NoBrush);
+}
+
+}  // namespace
+
+QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
+                                const ViewTheme& theme) {
+  QImage image = blank(size, theme);
+  QPainter painter(&image);
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  const std::vector<PlanarMotionSolution>& solutions = result.inverse.solutions;
+  const int count = std::max<int>(1, int(solutions.size()));
+  set_font(painter, theme.label_size);
+  const int lines = legend_lines(painter, image.width(), theme);
+  const double title = 1.5 * theme.label_size, legend = 1.4 * theme.label_size * lines;
+  const double w = double(image.width()) / count, cell_h = image.height() - title - legend;
+  // One arrow scale for both: the longest of V/d and Omega is 0.8 units (d = 1); one drawing
+  // scale for both: every point of every sketch fits its cell.
+  double longest = 1e-12;
+  for (const PlanarMotionSolution& s : solutions) {
+    longest = std::max({longest, glm::length(s.v_over_d), glm::length(s.omega)});
+  }
+  std::vector<std::vector<QPointF>> points(solutions.size());
+  QRectF bounds(view_of(Vec3(0.0)), QSizeF(1e-9, 1e-9));  // the eye
+  for (size_t i = 0; i < solutions.size(); ++i) {
+    if (!solutions[i].normal_known) continue;
+    points[i] = sketch_of(solutions[i], 0.8 / longest);
+    for (const QPointF& q : points[i]) bounds |= QRectF(q, QSizeF(1e-9, 1e-9));
+  }
+  const double scale = 0.9 * std::min((w - 12.0) / std::max(bounds.width(), 1e-9),
+                                      cell_h / std::max(bounds.height(), 1e-9));
+  const QString names[2] = {QObject::tr("Solution A"), QObject::tr("Solution B")};
+  for (int i = 0; i < count; ++i) {
+    const QRectF cell(i * w, title, w, cell_h);
+    set_font(painter, theme.label_size, true);
+    painter.setPen(i < int(solutions.size()) ? solution_colour(i) : to_qcolor(theme.text));
+    painter.drawText(QRectF(i * w + 6, 0, w - 12, title), Qt::AlignLeft | Qt::AlignVCenter,
+                     solutions.empty() ? QObject::tr("No motion") : names[i]);
+    set_font(painter, theme.label_size);
+    if (i >= int(solutions.size()) || !solutions[size_t(i)].normal_known) {
+      painter.setPen(to_qcolor(theme.text));
+      painter.drawText(cell.adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
+                       i < int(solutions.size()) && solutions[size_t(i)].omega == Vec3(0.0)
+                           ? QObject::tr("No motion: any plane, at rest")
+                           : QObject::tr("Any plane: a pure rotation says nothing about it"));
+      continue;
+    }
+    QTransform to_cell;
+    to_cell.translate(cell.center().x(), cell.center().y());
+    to_cell.scale(scale, scale);
+    to_cell.translate(-bounds.center().x(), -bounds.center().y());
+    paint_sketch(painter, points[size_t(i)], to_cell, i, theme);
+  }
+  paint_legend(painter, QRectF(6, image.height() - legend, image.width() - 12, legend), lines,
+               theme);
+  return image;
+}
+
+namespace {
+
+// The corner whose two images are furthest apart at the last frame played.
+int parting_corner(const FutureSeparation& f) {
+  const auto& last = f.corner_images_px.back();
+  int best = 0;
+  for (int i = 1; i < 4; ++i) {
+    if (glm::length(last[0][i] - last[1][i]) > glm::length(last[0][best] - last[1][best])) best = i;
+  }
+  return best;
+}
+
+void paint_tracks(QPainter& painter, const FutureSeparation& f, int frame, const QRectF& area,
+                  const ViewTheme& theme) {
+  const int corner = parting_corner(f);
+  QRectF bounds;
+  for (const auto& images : f.corner_images_px) {
+    for (int s = 0; s < 2; ++s) {
+      bounds |= QRectF(QPointF(images[s][corner].x, images[s][corner].y), QSizeF(1e-9, 1e-9));
+    }
+  }
+  const double side = std::max({bounds.width(), bounds.height(), 1.0});
+  const double scale = 0.85 * std::min(area.width(), area.height()) / side;
+  QTransform to_area;
+  to_area.translate(area.center().x(), area.center().y());
+  to_area.scale(scale, scale);
+  to_area.translate(-bounds.center().x(), -bounds.center().y());
+  painter.setPen(QPen(to_qcolor(theme.muted), 1.0));
+  painter.drawRect(area);
+  for (int s = 0; s < 2; ++s) {
+    QPolygonF track;
+    for (int k = 0; k <= frame; ++k) {
+      const Vec2& p = f.corner_images_px[size_t(k)][s][corner];
+      track << to_area.map(QPointF(p.x, p.y));
+    }
+    painter.setPen(QPen(solution_colour(s), theme.line_width + 1.0));
+    painter.drawPolyline(track);
+    painter.setBrush(solution_colour(s));
+    painter.drawEllipse(track.back(), 4.0, 4.0);
+    painter.setBrush(Qt::NoBrush);
+  }
+}
+
+void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const QRectF& area,
+                 const ViewTheme& theme) {
+  const double label = theme.label_size;
+  const QRectF plot = area.adjusted(3.2 * label, 2.2 * label, -8, -1.6 * label);
+  const double top = std::max(2.0 * kFuturesApartPx, f.corner_distance_px.back());
+  const auto at = [&](int k, double px) {
+    return QPointF(plot.left() + plot.width() * k / std::max(1, kFutureFrames),
+                   plot.bottom() - plot.height() * px / top);
+  };
+  painter.setPen(QPen(to_qcolor(theme.muted), 1.0));
+  painter.drawRect(plot);
+  painter.setPen(QPen(to_qcolor(theme.text), 1.0, Qt::DashLine));
+  painter.drawLine(at(0, kFuturesApartPx), at(kFutureFrames, kFuturesApartPx));
+  QPolygonF curve;
+  for (int k = 0; k <= frame; ++k) curve << at(k, f.corner_distance_px[size_t(k)]);
+  painter.setPen(QPen(to_qcolor(okabe_ito::kVermillion), theme.line_width + 1.0));
+  painter.drawPolyline(curve);
+  painter.setPen(to_qcolor(theme.text));
+  painter.drawText(QRectF(area.left(), area.top(), area.width(), 1.5 * label),
+                   Qt::AlignLeft | Qt::AlignVCenter, QObject::tr("px apart, per frame"));
+  painter.drawText(
+      QRectF(area.left(), plot.top() - 0.8 * label, plot.left() - area.left() - 4, 1.6 * label),
+      Qt::AlignRight | Qt::AlignVCenter, QString::number(top, 'f', 1));
+  painter.drawText(
+      QRectF(area.left(), plot.bottom() - 0.8 * label, plot.left() - area.left() - 4, 1.6 * label),
+      Qt::AlignRight | Qt::AlignVCenter, QStringLiteral("0"));
+  painter.drawText(QRectF(plot.left(), plot.bottom(), plot.width(), 1.6 * label),
+                   Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
+  painter.drawText(QRectF(plot.left(), plot.bottom(), plot.width(), 1.6 * label),
+                   Qt::AlignRight | Qt::AlignVCenter, QObject::tr("frame %1").arg(kFutureFrames));
+  if (f.first_frame_apart >= 0 && f.first_frame_apart <= frame) {
+    const QPointF mark = at(f.first_frame_apart, f.corner_distance_px[size_t(f.first_frame_apart)]);
+    painter.setPen(QPen(to_qcolor(theme.text), 1.0, Qt::DotLine));
+    painter.drawLine(QPointF(mark.x(), plot.top()), QPointF(mark.x(), plot.bottom()));
+    painter.setPen(to_qcolor(theme.text));
+    // In the plot's top left, where the curve (growing from zero) never is.
+    QString text = QObject::tr("over 1 px at frame %1").arg(f.first_frame_apart);
+    if (painter.fontMetrics().horizontalAdvance(text) > plot.width() - 8) {
+      text = QObject::tr("1 px: %1").arg(f.first_frame_apart);
+    }
+    painter.drawText(QRectF(plot.left() + 4, plot.top() + 2, plot.width() - 8, 1.5 * label),
+                     Qt::AlignLeft | Qt::AlignVCenter, text);
+  }
+}
+
+}  // namespace
+
+QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSize& size,
+                              const ViewTheme& theme) {
+  QImage image = blank(size, theme);
+  QPainter painter(&image);
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  set_font(painter, theme.label_size);
+  if (!result.futures_played || result.futures.corner_images_px.empty()) {
+    painter.setPen(to_qcolor(theme.text));
+    painter.drawText(
+        QRectF(image.rect()).adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
+        QObject::tr("Nothing to compare: %1").arg(QString::fromStdString(result.futures_note)));
+    return image;
+  }
+  const FutureSeparation& f = result.futures;
+  const int shown = std::clamp(frame, 0, f.frames_played);
+  const double track_side = std::min(0.4 * image.width(), double(image.height()));
+  paint_tracks(painter, f, shown, QRectF(2, 2, track_side - 4, image.height() - 4), theme);
+  paint_chart(painter, f, shown,
+              QRectF(track_side + 4, 0, image.width() - track_side - 4, image.height()), theme);
+  return image;
+}
+
+}  // namespace oflab

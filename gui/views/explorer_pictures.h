@@ -1,0 +1,37 @@
+// The basis explorer's three pictures (gui/models/basis_explorer.h), painted with Qt: the
+// combined deformation on the texture and on a grid, the two solutions' planes with their
+// motions, and the two solutions played forward. Each returns a new image of the asked size
+// (at least 1 x 1 pixels) in the theme's colours, its text at least the theme's label size.
+#pragma once
+
+#include <QImage>
+#include <QSize>
+
+#include "adapters/view_theme.h"
+#include "models/basis_explorer.h"
+
+namespace oflab {
+
+// The camera image (its frame), the texture rectangle (the middle half of the image in each
+// direction, centred pixels) carried by `deformation` (centred pixels to centred pixels,
+// explorer_deformation), a grid of 8 x 8 cells on it deformed the same way, the undeformed
+// rectangle's outline, and a caption naming the time.
+QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
+                                  const Camera& camera, const QSize& size, const ViewTheme& theme);
+
+// Each solution of `result` in its own half, seen from above and behind the eye at one
+// shared scale: the eye, its line of sight, the plane (a unit square at distance d = 1 across
+// its normal N), the arrows of N, V/d (from the plane's centre) and Omega (at the eye, about
+// which it turns), with a title and a legend. One solution fills the picture; a plane that
+// is unobservable (pure rotation) is drawn as a note.
+QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
+                                const ViewTheme& theme);
+
+// The two futures up to frame `frame` (0 .. result.futures.frames_played): left, the track of
+// the corner that parts most under each solution, magnified so both fit; right, the largest
+// corner distance per frame with the 1 px line and the first frame beyond it marked. A note
+// when the futures were not played (result.futures_note).
+QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSize& size,
+                              const ViewTheme& theme);
+
+}  // namespace oflab

@@ -1,0 +1,226 @@
+// The basis explorer (gui/models/basis_explorer.h, gui/views/explorer_panel.h): its model
+// against independent computations (the deformation against the flow integrated point by
+// point, the grid's changes against hand formulas), the sliders driving the deformation, the
+// lit tiles and the solutions panel in a real window, the two futures as the panel shows
+// them, and the lesson claims of the explorer, each with a negative control.
+#include "models/basis_explorer.h"
+
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <algorithm>
+#include <cmath>
+
+#include "app/lesson_check.h"
+#include "flow/homography.h"
+#include "image_checks.h"
+#include "models/scene_model.h"
+#include "views/basis_view.h"
+#include "views/explorer_panel.h"
+#include "views/image_canvas.h"
+#include "views/slider_spin.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+const Camera kCamera = make_camera(600.0, 800, 600);
+
+ExplorerTerms only(const char* key, double value) {
+  ExplorerTerms terms{};
+  terms[size_t(find_explorer_term(key))] = value;
+  return terms;
+}
+
+// Where the flow carries point p in time t, by Runge-Kutta steps of core's flow_at
+// (independent of the homography the explorer composes).
+Vec2 integrate_flow(const PlanarFlowCoefficients& c, Vec2 p, double t) {
+  constexpr int kSteps = 2000;
+  const double h = t / kSteps;
+  for (int k = 0; k < kSteps; ++k) {
+    const Vec2 k1 = flow_at(c, p), k2 = flow_at(c, p + 0.5 * h * k1);
+    const Vec2 k3 = flow_at(c, p + 0.5 * h * k2), k4 = flow_at(c, p + h * k3);
+    p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  }
+  return p;
+}
+
+TEST(BasisExplorer, TheDeformationIsWhereTheFlowCarriesEachPointInOneSecond) {
+  const ExplorerTerms terms = default_explorer_terms();
+  const PlanarFlowCoefficients c = explorer_coefficients(terms);
+  const Mat3 h = explorer_deformation(terms);
+  for (const Vec2& p : {Vec2(0, 0), Vec2(-200, -150), Vec2(200, -150), Vec2(120, 150)}) {
+    const Vec2 want = integrate_flow(c, p, kDeformationSeconds);
+    EXPECT_LT(glm::length(apply_homography(h, p) - want), 0.05) << p.x << " " << p.y;
+  }
+  // Control: the first-order homography over the whole second is visibly off.
+  const Vec2 corner(200, -150);
+  EXPECT_GT(glm::length(apply_homography(taylor_homography(c, 1.0), corner) -
+                        integrate_flow(c, corner, 1.0)),
+            1.0);
+}
+
+TEST(BasisExplorer, EachTermAloneChangesTheGridAsItsNameSays) {
+  const GridChange shift = explorer_grid_change(only("tx", 50.0), kCamera);
+  EXPECT_NEAR(shift.shift_px, 50.0, 1e-6);
+  EXPECT_NEAR(shift.area, 1.0, 1e-9);
+  const GridChange scale = explorer_grid_change(only("scale", 0.2), kCamera);
+  EXPECT_NEAR(scale.area, std::exp(0.4), 1e-3);  // both axes grow by e^0.2
+  const GridChange squash = explorer_grid_change(only("squash", 0.2), kCamera);
+  EXPECT_NEAR(squash.area, 1.0, 1e-3);
+  const GridChange turn = explorer_grid_change(only("rotation", 0.3), kCamera);
+  EXPECT_NEAR(turn.turn_deg, 0.3 * 180.0 / M_PI, 0.02);
+  EXPECT_NEAR(turn.keystone, 0.0, 1e-9);
+  EXPECT_GT(explorer_grid_change(only("px", 0.0002), kCamera).keystone, 0.05);
+  // The terms' symbols are the planar gallery's, in its order.
+  const std::vector<BasisTerm> gallery = basis_terms(BasisKind::kPlanar);
+  for (const ExplorerTerm& term : explorer_terms()) {
+    const auto same = [&](const BasisTerm& t) { return t.symbol == term.key; };
+    EXPECT_NE(std::find_if(gallery.begin(), gallery.end(), same), gallery.end()) << term.key;
+  }
+}
+
+TEST(BasisExplorer, TheStartingValuesHaveTwoWorldsThatPartAtFrame13) {
+  const ExplorerResult r = explore(default_explorer_terms(), kCamera);
+  ASSERT_EQ(r.inverse.solutions.size(), 2u);
+  ASSERT_TRUE(r.futures_played);
+  EXPECT_LT(r.futures.corner_distance_px[1], 0.01);  // the same flow: apart at second order
+  EXPECT_EQ(r.futures.first_frame_apart, 13);
+  EXPECT_LE(r.futures.corner_distance_px[12], 1.0);
+  EXPECT_GT(r.futures.corner_distance_px[13], 1.0);
+  // Each solution maps forward to the dialled coefficients (core's own check, here on the
+  // explorer's numbers).
+  for (const PlanarMotionSolution& s : r.inverse.solutions) {
+    const SolutionScene scene =
+        solution_scene(s, kCamera.focal_px, Vec2(0, 0), MotionModel::kScrew);
+    const PlanarFlowCoefficients back = planar_flow_coefficients(kCamera, scene.pose, scene.motion);
+    EXPECT_LT(relative_coefficient_difference(back, r.coefficients, kCamera.focal_px), 1e-9);
+  }
+}
+
+class BasisExplorerWindow : public WindowTest {
+ protected:
+  void SetUp() override {
+    WindowTest::SetUp();
+    window().set_external_clock(true);
+    window().model()->set_view("basis");
+    window().model()->set_basis_explorer(true);
+    QApplication::processEvents();
+  }
+  BasisView& basis() { return *view_page<BasisView>(window(), "basis"); }
+  ExplorerPanel& panel() { return *basis().explorer(); }
+  double measure(const char* kind, const char* of = "") {
+    LessonClaim claim;
+    claim.claim = kind;
+    claim.of = of;
+    return measure_claim(&window(), claim);
+  }
+};
+
+TEST_F(BasisExplorerWindow, SlidersDriveTheDeformationTheTilesAndTheSolutions) {
+  ASSERT_TRUE(window().model()->set_explorer_terms(ExplorerTerms{}));
+  basis().render_image();
+  EXPECT_EQ(basis().active_tile_count(), 0);
+  const QImage still = panel().deformation()->image();
+  EXPECT_NE(panel().solutions_text().indexOf("No motion"), -1)
+      << panel().solutions_text().toStdString();
+  // Type 0.2 into the scale slider's field, as a user does.
+  SliderSpin* scale = panel().slider(find_explorer_term("scale"));
+  ASSERT_NE(scale, nullptr);
+  scale->spin_box()->setValue(0.2);
+  QApplication::processEvents();
+  EXPECT_DOUBLE_EQ(window().model()->explorer_terms()[2], 0.2);
+  basis().render_image();
+  EXPECT_EQ(basis().active_tile_count(), 1);
+  EXPECT_EQ(basis().tile_active("scale"), 1.0);
+  EXPECT_EQ(basis().tile_active("rotation"), 0.0);
+  const QImage grown = panel().deformation()->image();
+  ASSERT_EQ(grown.size(), still.size());  // the layout does not move while a slider does
+  EXPECT_GT(changed_fraction(grown, still), 0.05);
+  EXPECT_NE(panel().solutions_text().indexOf("fronto-parallel"), -1)
+      << panel().solutions_text().toStdString();
+  // Then rotation by its slider: a second tile, and the default case comes back with all.
+  panel().slider(find_explorer_term("rotation"))->slider()->setValue(150);  // +0.5 1/s
+  QApplication::processEvents();
+  EXPECT_NEAR(window().model()->explorer_terms()[5], 0.5, 1e-12);
+  basis().render_image();
+  EXPECT_EQ(basis().active_tile_count(), 2);
+  ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
+  QApplication::processEvents();
+  EXPECT_EQ(panel().result().inverse.solutions.size(), 2u);
+  EXPECT_NE(panel().solutions_text().indexOf("two planes"), -1);
+  EXPECT_EQ(panel().slider(0)->value(), 40.0);  // the sliders follow the model
+  // A value beyond its limit is refused and the field shows the kept value.
+  scale->spin_box()->setValue(500.0);
+  QApplication::processEvents();
+  EXPECT_EQ(window().model()->explorer_terms()[2], default_explorer_terms()[2]);
+  EXPECT_NEAR(scale->value(), default_explorer_terms()[2], 1e-9);
+}
+
+TEST_F(BasisExplorerWindow, FromTheSceneCopiesTheScenesFlowAndAllZeroClearsIt) {
+  auto* from_scene = basis().findChild<QPushButton*>(QStringLiteral("explorer_from_scene"));
+  auto* zero = basis().findChild<QPushButton*>(QStringLiteral("explorer_zero"));
+  ASSERT_NE(from_scene, nullptr);
+  ASSERT_NE(zero, nullptr);
+  from_scene->click();
+  QApplication::processEvents();
+  const SceneModel& scene = *window().model()->scene();
+  const PlanarFlowCoefficients want =
+      planar_flow_coefficients(scene.scene().camera, scene.current_pose(), scene.current_motion());
+  // The dialled terms make the scene's own eight coefficients back.
+  const PlanarFlowCoefficients got = explorer_coefficients(window().model()->explorer_terms());
+  EXPECT_LT(relative_coefficient_difference(got, want, scene.scene().camera.focal_px), 1e-12);
+  zero->click();
+  QApplication::processEvents();
+  EXPECT_EQ(window().model()->explorer_terms(), ExplorerTerms{});
+  EXPECT_EQ(basis().active_tile_count(), 0);
+}
+
+TEST_F(BasisExplorerWindow, TheFuturesAgreeAtFirstAndPartAtTheFrameThePanelShows) {
+  ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
+  QApplication::processEvents();
+  const ExplorerResult& r = panel().result();
+  ASSERT_TRUE(r.futures_played);
+  EXPECT_LT(r.futures.corner_distance_px[1], 0.01);
+  EXPECT_NE(panel().futures_text().indexOf("over 1 px first at frame 13"), -1)
+      << panel().futures_text().toStdString();
+  // Play: frame by frame from 0 to the end, each line naming that frame's distance.
+  auto* play = basis().findChild<QPushButton*>(QStringLiteral("explorer_play_futures"));
+  ASSERT_NE(play, nullptr);
+  play->click();
+  EXPECT_TRUE(panel().futures_playing());
+  EXPECT_EQ(panel().futures_frame(), 0);
+  const QImage start = panel().worlds()->grab().toImage();  // frame 0: the curve not yet drawn
+  for (int k = 1; k <= kFutureFrames; ++k) {
+    basis().step_animation();
+    EXPECT_EQ(panel().futures_frame(), k);
+  }
+  EXPECT_FALSE(panel().futures_playing());
+  EXPECT_NE(panel().futures_text().indexOf("Frame 30 of 30"), -1);
+  EXPECT_GT(changed_fraction(panel().worlds()->grab().toImage(), start), 0.0);
+  EXPECT_EQ(measure("futures_apart_frame"), 13.0);
+  EXPECT_LT(measure("futures_first_px"), 0.01);
+}
+
+TEST_F(BasisExplorerWindow, TheExplorersClaimsMeasureWhatTheyNameWithControls) {
+  ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
+  EXPECT_EQ(measure("solution_count"), 2.0);
+  ASSERT_TRUE(window().model()->set_explorer_terms(only("scale", 0.2)));
+  EXPECT_EQ(measure("solution_count"), 1.0);        // control: a degenerate case
+  EXPECT_EQ(measure("futures_apart_frame"), -1.0);  // control: nothing to compare
+  EXPECT_TRUE(std::isnan(measure("futures_first_px")));
+  EXPECT_EQ(measure("tile_active", "scale"), 1.0);
+  EXPECT_EQ(measure("tile_active", "tx"), 0.0);  // control: a term not dialled
+  EXPECT_TRUE(std::isnan(measure("tile_active", "no-such-term")));
+  EXPECT_NEAR(measure("grid_change", "area"), std::exp(0.4), 1e-3);
+  EXPECT_NEAR(measure("grid_change", "shift_px"), 0.0, 1e-9);
+  EXPECT_TRUE(std::isnan(measure("grid_change", "volume")));  // control: no such field
+  ASSERT_TRUE(window().model()->set_explorer_terms(only("ty", -30.0)));
+  EXPECT_NEAR(measure("grid_change", "shift_px"), 30.0, 1e-9);
+  EXPECT_NEAR(measure("grid_change", "area"), 1.0, 1e-9);  // control: a shift keeps the area
+  EXPECT_EQ(measure("tile_active", "scale"), 0.0);
+}
+
+}  // namespace
+}  // namespace oflab::test
