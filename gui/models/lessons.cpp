@@ -100,8 +100,9 @@ std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
 
 const std::vector<std::string>& lesson_claim_kinds() {
   static const std::vector<std::string> kinds = {
-      "coefficient",  "flow_ratio",     "level_share",         "max_error", "exact_drawn",
-      "active_tiles", "heat_map_width", "threshold_crossings", "cut_texts", "view"};
+      "coefficient",         "flow_ratio",     "level_share", "max_error",       "exact_drawn",
+      "active_tiles",        "heat_map_width", "hole_pixels", "hole_map_pixels", "near_far_error",
+      "threshold_crossings", "cut_texts",      "view"};
   return kinds;
 }
 

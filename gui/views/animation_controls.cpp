@@ -14,6 +14,7 @@
 
 #include "formats/viewer_script_file.h"
 #include "views/number_box.h"
+#include "views/reprojection_controls.h"
 
 namespace oflab {
 namespace {
@@ -190,6 +191,9 @@ QWidget* AnimationControls::make_engine_row() {
     emit settings_edited();
   });
   add_content_controls(threshold_row, thresholds);
+  reprojection_ = new ReprojectionControls(threshold_row);
+  thresholds->addWidget(reprojection_);
+  connect(reprojection_, &ReprojectionControls::edited, this, [this] { emit settings_edited(); });
   thresholds->addStretch(1);
   set_settings(EngineSettings{});
   return threshold_row;
@@ -225,6 +229,7 @@ EngineSettings AnimationControls::settings() const {
   s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
   s.content.kind = static_cast<ContentKind>(content_box_->currentData().toInt());
   s.content.quality = quality_box_->value();
+  reprojection_->read_into(s);
   if (s.policy->shares_budget && budget_box_->value() >= 0) {
     s.budget = {FrameBudget::Unit::kPixels, double(budget_box_->value())};
   }
@@ -253,6 +258,7 @@ void AnimationControls::set_settings(const EngineSettings& s) {
   const bool pixels = s.budget.unit == FrameBudget::Unit::kPixels;
   budget_box_->setValue(pixels ? static_cast<int>(std::min(s.budget.amount, 1e8)) : -1);
   show_budget();
+  reprojection_->show_settings(s);
 }
 
 QToolButton* AnimationControls::make_compare_button(QWidget* parent) {
