@@ -1,14 +1,10 @@
 #include "adapters/hole_map.h"
 
-#include "adapters/palette.h"
 #include "scene/scene_animator.h"
 
 namespace oflab {
 
-QColor hole_colour() {
-  const Rgb8 c = okabe_ito::kVermillion;
-  return QColor(c.r, c.g, c.b);
-}
+QColor hole_colour() { return QColor(255, 0, 255); }
 
 std::vector<char> reprojection_holes(const Animator& animator, const Image& exact) {
   // Only the scene animator reprojects by depth; its engine keeps the last reprojection's

@@ -16,7 +16,8 @@
 
 namespace oflab {
 
-// The colour hole pixels are marked in (Okabe-Ito vermillion, outside the viridis ramp).
+// The colour hole pixels are marked in: magenta, which neither the viridis ramp nor a level's
+// colour (gui/adapters/palette.h) takes.
 QColor hole_colour();
 
 // Per pixel (row-major, camera-sized) 1 where `animator`'s frame shown now is a hole: the

@@ -375,14 +375,15 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     QImage& map = heat_images_[heat.size()];
     difference_map_into(image, exact, kDifferenceScale, map);
     QStringList caption = agreement_caption(image, exact);
-    if (run.last.reports_holes) {
+    const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
+    if (per_pixel) {
       // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
       const std::int64_t marked = mark_holes(map, reprojection_holes(*run.animator, exact));
       hole_map_pixels_ += marked;
-      caption << tr("holes (vermillion): %1 px").arg(marked);
+      caption << tr("holes (magenta): %1 px").arg(marked);
     }
     heat.push_back(
-        {run.last.reports_holes ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
+        {per_pixel ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
          map,
          {},
          caption});
