@@ -382,11 +382,10 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
       hole_map_pixels_ += marked;
       caption << tr("holes (magenta): %1 px").arg(marked);
     }
-    heat.push_back(
-        {per_pixel ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
-         map,
-         {},
-         caption});
+    heat.push_back({per_pixel ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
+                    map,
+                    {},
+                    caption});
   }
   shown.push_back(exact_panel());
   shown.insert(shown.end(), heat.begin(), heat.end());
