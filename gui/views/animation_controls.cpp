@@ -158,6 +158,10 @@ QWidget* AnimationControls::make_engine_row() {
   layout->addWidget(new QLabel(tr("Delta"), row));
   layout->addWidget(delta_box_);
   layout->addWidget(sampling_box_);
+  // A short button (its menu holds the fields) so the bar still fits a 1024-pixel window.
+  reprojection_ = new ReprojectionControls(row);
+  layout->addWidget(reprojection_);
+  connect(reprojection_, &ReprojectionControls::edited, this, [this] { emit settings_edited(); });
   layout->addStretch(1);
   // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
   auto* threshold_row = new QWidget(this);
@@ -191,9 +195,6 @@ QWidget* AnimationControls::make_engine_row() {
     emit settings_edited();
   });
   add_content_controls(threshold_row, thresholds);
-  reprojection_ = new ReprojectionControls(threshold_row);
-  thresholds->addWidget(reprojection_);
-  connect(reprojection_, &ReprojectionControls::edited, this, [this] { emit settings_edited(); });
   thresholds->addStretch(1);
   set_settings(EngineSettings{});
   return threshold_row;

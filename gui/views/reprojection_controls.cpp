@@ -30,9 +30,6 @@ QString vector_text(const Vec3& v) {
 ReprojectionControls::ReprojectionControls(QWidget* parent) : QToolButton(parent) {
   setObjectName(QStringLiteral("animation_reprojection"));
   setPopupMode(QToolButton::InstantPopup);
-  setToolTip(
-      tr("Today's reprojection policies (timewarp, stabilized-plane, depth-reprojection, "
-         "cadence): the cadence they render on, and the stabilized-plane policy's plane"));
   auto* menu = new QMenu(this);
   auto* form_widget = new QWidget(menu);
   auto* form = new QFormLayout(form_widget);
@@ -102,7 +99,8 @@ void ReprojectionControls::show_settings(const EngineSettings& settings) {
     normal_[k]->setValue(settings.stabilization.normal[k]);
   }
   show_plane_fields();
-  setText(summary(settings));
+  setText(tr("Reprojection"));
+  setToolTip(summary(settings));
 }
 
 void ReprojectionControls::show_plane_fields() {
@@ -114,9 +112,9 @@ void ReprojectionControls::show_plane_fields() {
 }
 
 QString ReprojectionControls::summary(const EngineSettings& settings) {
-  return tr("Reprojection: %1, %2")
-      .arg(cadence_text(settings.cadence),
-           settings.stabilization.automatic ? tr("automatic plane") : tr("given plane"));
+  return tr("Today's reprojection policies (timewarp, stabilized-plane, depth-reprojection, "
+            "cadence) render %1 and warp the frames between; the stabilized-plane policy's %2")
+      .arg(cadence_text(settings.cadence), plane_text(settings.stabilization));
 }
 
 QString ReprojectionControls::plane_text(const StabilizationPlane& plane) {

@@ -30,8 +30,9 @@ class ReprojectionControls : public QToolButton {
   // Shows the cadence and the plane of `settings`; emits nothing.
   void show_settings(const EngineSettings& settings);
 
-  // The button's text: the cadence and which plane ("Reprojection: every 2nd frame,
-  // automatic plane").
+  // The button's tooltip: the cadence and which plane, in words ("... render every 2nd
+  // frame and warp the frames between; the stabilized-plane policy's plane: automatic fit to
+  // the depth"). The button itself says "Reprojection", short enough for a 1024-pixel bar.
   static QString summary(const EngineSettings& settings);
   // Which plane the stabilized-plane policy uses, for its panel's caption: "plane: automatic
   // fit to the depth" or "plane through (0, 0, -7), normal (0, 0, 1)".
