@@ -59,6 +59,11 @@ ReprojectionControls::ReprojectionControls(QWidget* parent) : QToolButton(parent
       boxes[k]->setObjectName(QStringLiteral("animation_stabilization_%1_%2").arg(name).arg(k));
       boxes[k]->setDecimals(3);
       boxes[k]->setSingleStep(0.5);
+      boxes[k]->setToolTip(
+          tr("The %1's %2 of the given stabilization plane (%3)")
+              .arg(name)
+              .arg(QChar(char16_t(u'x' + k)))
+              .arg(QString::fromStdString(limits::kStabilizationPlane.range_text())));
       layout->addWidget(boxes[k]);
       connect(boxes[k], QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
               [this] { emit edited(); });
