@@ -358,7 +358,6 @@ PanelContent AnimationView::exact_panel() {
 
 std::vector<PanelContent> AnimationView::comparison_panels() {
   std::vector<PanelContent> shown, heat;
-  hole_map_pixels_ = 0;
   const Image& exact = exact_image();
   const std::vector<ComparedRun>& runs = comparison_->runs();
   if (heat_images_.size() < runs.size()) heat_images_.resize(runs.size());
@@ -393,6 +392,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
 }
 
 std::vector<PanelContent> AnimationView::panels() {
+  hole_map_pixels_ = 0;  // only the comparison draws hole maps
   switch (window_->panel_display()) {
     case PanelDisplay::kComparison:
       if (!comparison_->runs().empty()) return comparison_panels();
