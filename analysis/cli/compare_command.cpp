@@ -77,6 +77,45 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
   out.commit();
 }
 
+// The names of the registry's policies that `uses` holds for, joined: "timewarp, cadence".
+template <class Uses>
+std::string policy_names_where(Uses uses) {
+  std::string names;
+  for (const ReusePolicy& p : reuse_policies()) {
+    if (uses(p)) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  }
+  return names;
+}
+
+// An option that only a kind of policy reads, given while no compared policy reads it, would
+// change nothing: refused, naming the option, the policies that read it and those compared.
+void refuse_options_without_their_policy(const CliArgs& a,
+                                         const std::vector<const ReusePolicy*>& policies) {
+  struct Rule {
+    const char* option;
+    bool (*uses)(const ReusePolicy&);
+  };
+  const Rule rules[] = {
+      {"--cadence", [](const ReusePolicy& p) { return p.schedule == Schedule::kCadence; }},
+      {"--stabilization-plane",
+       [](const ReusePolicy& p) { return p.frame_plane == FramePlane::kStabilization; }},
+      {"--hole-fill",
+       [](const ReusePolicy& p) { return p.frame_warp == FrameWarp::kPerPixelDepth; }},
+  };
+  for (const Rule& rule : rules) {
+    if (!a.has(rule.option)) continue;
+    if (std::any_of(policies.begin(), policies.end(),
+                    [&](const ReusePolicy* p) { return rule.uses(*p); })) {
+      continue;
+    }
+    std::string compared;
+    for (const ReusePolicy* p : policies)
+      compared += (compared.empty() ? "" : ",") + std::string(p->name);
+    throw UsageError(std::string(rule.option) + ": needs one of " + policy_names_where(rule.uses) +
+                     " in --policies, not '" + compared + "'");
+  }
+}
+
 int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (!a.has("--policies")) throw UsageError("--policies: needs a list, e.g. perspective,talisman");
   std::vector<const ReusePolicy*> policies;
@@ -91,6 +130,7 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
                        " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
     }
   }
+  refuse_options_without_their_policy(a, policies);
   const SourceKind* kind = nullptr;
   const RunSource source = read_source(a, &kind);
   const bool budgeted = std::any_of(policies.begin(), policies.end(),

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "adapters/flow_parts.h"
 #include "app/main_window.h"
@@ -84,6 +86,57 @@ double max_error(WindowModel& model, const std::string& of) {
   const bool found = for_each_played(
       model, of, [&](const auto&, double error) { largest = std::max(largest, error); });
   return found ? largest : kUnknown;
+}
+
+// The frame shown now and its animator, of the engine (`of` "engine") or of a compared
+// policy (`of` its name); false when `of` names no such run or it cannot play.
+bool shown_run(WindowModel& model, const std::string& of, const AnimationFrame** frame,
+               const Animator** animator) {
+  if (of == "engine") {
+    *frame = &model.animation()->current();
+    *animator = model.animation()->animator();
+    return *animator != nullptr;
+  }
+  for (const ComparedRun& run : model.comparison().runs()) {
+    if (run.policy->name != of || !run.animator) continue;
+    *frame = &run.last;
+    *animator = run.animator.get();
+    return true;
+  }
+  return false;
+}
+
+double hole_pixels(WindowModel& model, const std::string& of) {
+  const AnimationFrame* frame = nullptr;
+  const Animator* animator = nullptr;
+  return shown_run(model, of, &frame, &animator) ? double(frame->hole_pixels) : kUnknown;
+}
+
+// The mean measured error of the nearer half of the layers drawn now (by the depth of each
+// polygon's centre in the viewer frame) over that of the farther half: above 1 when the
+// error grows with inverse depth, below 1 when it falls. Infinite when only the nearer half
+// has an error; NaN with fewer than two layers with an error, or none at all.
+double near_far_error(WindowModel& model, const std::string& of) {
+  const AnimationFrame* frame = nullptr;
+  const Animator* animator = nullptr;
+  if (!shown_run(model, of, &frame, &animator)) return kUnknown;
+  std::vector<std::pair<double, double>> by_depth;  // (depth Z, error px)
+  const ViewerPose view = animator->view();
+  for (const LayerOutline& layer : animator->outlines()) {
+    if (!std::isfinite(layer.error_px)) continue;
+    const ScenePolygon& polygon = animator->scene().polygons.at(size_t(layer.polygon));
+    by_depth.emplace_back(to_view(view, polygon.centre).z, layer.error_px);
+  }
+  const size_t half = by_depth.size() / 2;
+  if (half == 0) return kUnknown;
+  std::sort(by_depth.begin(), by_depth.end());
+  double near = 0.0, far = 0.0;
+  for (size_t k = 0; k < half; ++k) {
+    near += by_depth[k].second;
+    far += by_depth[by_depth.size() - 1 - k].second;
+  }
+  if (far <= 0.0) return near > 0.0 ? std::numeric_limits<double>::infinity() : kUnknown;
+  return near / far;
 }
 
 // The share of the exact frame's pixels that something covers (alpha > 0).
@@ -200,6 +253,13 @@ double measure_claim(MainWindow* window, const LessonClaim& claim) {
   if (kind == "max_error") return max_error(model, claim.of);
   if (kind == "exact_drawn") return animation ? exact_drawn(animation) : kUnknown;
   if (kind == "heat_map_width") return animation ? heat_map_width(window, animation) : kUnknown;
+  if (kind == "hole_pixels") return hole_pixels(model, claim.of);
+  if (kind == "hole_map_pixels") {
+    if (!animation) return kUnknown;
+    animation->render_image();
+    return double(animation->hole_map_pixels());
+  }
+  if (kind == "near_far_error") return near_far_error(model, claim.of);
   if (kind == "cut_texts") return animation ? cut_texts(animation) : kUnknown;
   if (kind == "active_tiles") {
     auto* basis = qobject_cast<BasisView*>(window->view(QStringLiteral("basis")));

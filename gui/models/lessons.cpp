@@ -99,12 +99,26 @@ std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
 }  // namespace
 
 const std::vector<std::string>& lesson_claim_kinds() {
-  static const std::vector<std::string> kinds = {
-      "coefficient", "flow_ratio",     "level_share",         "max_error",
-      "exact_drawn", "active_tiles",   "heat_map_width",      "threshold_crossings",
-      "cut_texts",   "view",           "run_pixels_ratio",    "caption_cut",
-      "tile_active", "solution_count", "futures_apart_frame", "futures_first_px",
-      "grid_change"};
+  static const std::vector<std::string> kinds = {"coefficient",
+                                                 "flow_ratio",
+                                                 "level_share",
+                                                 "max_error",
+                                                 "exact_drawn",
+                                                 "active_tiles",
+                                                 "heat_map_width",
+                                                 "hole_pixels",
+                                                 "hole_map_pixels",
+                                                 "near_far_error",
+                                                 "threshold_crossings",
+                                                 "cut_texts",
+                                                 "view",
+                                                 "run_pixels_ratio",
+                                                 "caption_cut",
+                                                 "tile_active",
+                                                 "solution_count",
+                                                 "futures_apart_frame",
+                                                 "futures_first_px",
+                                                 "grid_change"};
   return kinds;
 }
 

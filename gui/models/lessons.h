@@ -52,6 +52,13 @@ struct LessonClaim {
 //   "exact_drawn": the share (0..1) of the exact panel's pixels the exact frame covers now;
 //   "active_tiles": tiles of the basis gallery with a non-zero coefficient;
 //   "heat_map_width": the narrowest heat map of the comparison layout, screen pixels;
+//   "hole_pixels": the holes (AnimationFrame::hole_pixels) of the frame shown now of the
+//     engine (`of` "engine") or of a compared policy (`of` its name), pixels;
+//   "hole_map_pixels": the hole pixels marked on the comparison's heat maps as drawn now
+//     (gui/adapters/hole_map.h), pixels; 0 when no hole map is drawn;
+//   "near_far_error": the mean measured error of the nearer half of the layers drawn now
+//     (by the depth of their polygons' centres) over that of the farther half, of the
+//     engine or of a compared policy (`of`): > 1 when the error grows with inverse depth;
 //   "cut_texts": texts the animation view paints elided, off its canvas or overlapping
 //     another text (a count; claim at_most 0);
 //   "threshold_crossings": how often the analysis view's budget chart of `level` (none ..

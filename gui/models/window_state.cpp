@@ -29,7 +29,10 @@ bool same(const EngineSettings& a, const EngineSettings& b) {
          a.sampling == b.sampling && a.max_magnification == b.max_magnification &&
          a.near == b.near && a.guard_band == b.guard_band && a.content.kind == b.content.kind &&
          a.content.quality == b.content.quality && same(a.content.light, b.content.light) &&
-         a.budget.unit == b.budget.unit && a.budget.amount == b.budget.amount;
+         a.budget.unit == b.budget.unit && a.budget.amount == b.budget.amount &&
+         a.cadence == b.cadence && a.stabilization.automatic == b.stabilization.automatic &&
+         same(a.stabilization.point, b.stabilization.point) &&
+         same(a.stabilization.normal, b.stabilization.normal);
 }
 
 bool same(const FlowDisplay& a, const FlowDisplay& b) {
@@ -82,6 +85,18 @@ std::string settings_state_problem(const EngineSettings& s) {
   for (double t : s.thresholds) {
     const std::string p = check("animation.thresholds", kThreshold, t);
     if (!p.empty()) return p;
+  }
+  const std::string cadence = check("animation.cadence", kCadence, s.cadence);
+  if (!cadence.empty()) return cadence;
+  if (!s.stabilization.automatic) {
+    const std::string plane = first_of(
+        {check_each("animation.stabilization.point", kStabilizationPlane, s.stabilization.point),
+         check_each("animation.stabilization.normal", kStabilizationPlane,
+                    s.stabilization.normal)});
+    if (!plane.empty()) return plane;
+    if (glm::length(s.stabilization.normal) == 0.0) {
+      return "animation.stabilization.normal: must not be zero";
+    }
   }
   if (s.budget.unit == FrameBudget::Unit::kPixels) {
     return check("animation.budget_pixels", kBudgetPixels, s.budget.amount);

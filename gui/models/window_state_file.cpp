@@ -121,6 +121,19 @@ void read_settings(const json& j, const Where& w, EngineSettings* s) {
   }
   optional(j, "content_quality", &s->content.quality,
            [&](const char* f) { return whole(j, w, f); });
+  optional(j, "cadence", &s->cadence, [&](const char* f) { return whole(j, w, f); });
+}
+
+// The stabilization plane: {"automatic": true} or {"automatic": false, "point": [x, y, z],
+// "normal": [x, y, z]} (point and normal optional, over `plane`).
+StabilizationPlane read_stabilization(const json& j, const std::string& origin,
+                                      StabilizationPlane plane) {
+  const Where w{origin, "animation.stabilization"};
+  only_fields(j, w, {"automatic", "point", "normal"});
+  optional(j, "automatic", &plane.automatic, [&](const char* f) { return boolean(j, w, f); });
+  optional(j, "point", &plane.point, [&](const char* f) { return vec3(j, w, f); });
+  optional(j, "normal", &plane.normal, [&](const char* f) { return vec3(j, w, f); });
+  return plane;
 }
 
 // Version 1's budget: "budget_pixels" or "budget_ms", at most one.
@@ -184,12 +197,17 @@ std::vector<std::string> read_compared(const json& j, const Where& w) {
 
 void read_animation(const json& j, const std::string& origin, WindowState* s) {
   const Where w{origin, "animation"};
-  only_fields(j, w,
-              {"source", "mode", "thresholds", "delta", "sampling", "content", "content_quality",
-               "budget", "display", "compared", "exact_renderer", "zoom"});
+  only_fields(
+      j, w,
+      {"source", "mode", "thresholds", "delta", "sampling", "content", "content_quality", "budget",
+       "cadence", "stabilization", "display", "compared", "exact_renderer", "zoom"});
   if (j.contains("source")) s->source = read_source(object(j, w, "source"), origin, s->source);
   read_settings(j, w, &s->settings);
   if (j.contains("budget")) s->settings.budget = read_budget(object(j, w, "budget"), origin);
+  if (j.contains("stabilization")) {
+    s->settings.stabilization =
+        read_stabilization(object(j, w, "stabilization"), origin, s->settings.stabilization);
+  }
   if (j.contains("display") && !parse_panel_display(text(j, w, "display"), &s->display)) {
     w.fail("display", "one of " + panel_display_names());
   }
@@ -341,6 +359,11 @@ json window_state_object(const WindowState& s) {
         {"content", content_name(e.content.kind)},
         {"content_quality", e.content.quality},
         {"budget", {{"unit", budget_unit_name(e.budget.unit)}, {"amount", e.budget.amount}}},
+        {"cadence", e.cadence},
+        {"stabilization",
+         {{"automatic", e.stabilization.automatic},
+          {"point", vec(e.stabilization.point)},
+          {"normal", vec(e.stabilization.normal)}}},
         {"display", panel_display_name(s.display)},
         {"compared", s.compared},
         {"exact_renderer", s.exact_renderer},

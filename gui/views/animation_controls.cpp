@@ -14,6 +14,7 @@
 
 #include "formats/viewer_script_file.h"
 #include "views/number_box.h"
+#include "views/reprojection_controls.h"
 
 namespace oflab {
 namespace {
@@ -157,6 +158,10 @@ QWidget* AnimationControls::make_engine_row() {
   layout->addWidget(new QLabel(tr("Delta"), row));
   layout->addWidget(delta_box_);
   layout->addWidget(sampling_box_);
+  // A short button (its menu holds the fields) so the bar still fits a 1024-pixel window.
+  reprojection_ = new ReprojectionControls(row);
+  layout->addWidget(reprojection_);
+  connect(reprojection_, &ReprojectionControls::edited, this, [this] { emit settings_edited(); });
   layout->addStretch(1);
   // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
   auto* threshold_row = new QWidget(this);
@@ -225,6 +230,7 @@ EngineSettings AnimationControls::settings() const {
   s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
   s.content.kind = static_cast<ContentKind>(content_box_->currentData().toInt());
   s.content.quality = quality_box_->value();
+  reprojection_->read_into(s);
   if (s.policy->shares_budget && budget_box_->value() >= 0) {
     s.budget = {FrameBudget::Unit::kPixels, double(budget_box_->value())};
   }
@@ -253,6 +259,7 @@ void AnimationControls::set_settings(const EngineSettings& s) {
   const bool pixels = s.budget.unit == FrameBudget::Unit::kPixels;
   budget_box_->setValue(pixels ? static_cast<int>(std::min(s.budget.amount, 1e8)) : -1);
   show_budget();
+  reprojection_->show_settings(s);
 }
 
 QToolButton* AnimationControls::make_compare_button(QWidget* parent) {

@@ -4,9 +4,10 @@
 // affine/perspective switch; with the budget policy, a spin box of its pixel budget per
 // frame), the per-level thresholds, the Delta policy, the sampling, the layer content and its
 // quality (core/content/layer_content.h: what a re-render draws; a single plane only, a
-// scene's polygons keep their own), how the two panels are shown, and the policies the
-// comparison layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them). It only
-// edits values; the view applies them and puts them back when it refuses them.
+// scene's polygons keep their own), the cadence and stabilization plane of today's
+// reprojection policies (gui/views/reprojection_controls.h), how the two panels are shown, and the
+// policies the comparison layout plays (a menu of the registry: 2 to kMaxComparedPolicies of them).
+// It only edits values; the view applies them and puts them back when it refuses them.
 #pragma once
 
 #include <QWidget>
@@ -26,6 +27,8 @@ class QSpinBox;
 class QToolButton;
 
 namespace oflab {
+
+class ReprojectionControls;
 
 class AnimationControls : public QWidget {
   Q_OBJECT
@@ -86,6 +89,7 @@ class AnimationControls : public QWidget {
   QComboBox* sampling_box_ = nullptr;
   QComboBox* content_box_ = nullptr;
   QSpinBox* quality_box_ = nullptr;
+  ReprojectionControls* reprojection_ = nullptr;
   std::string shown_kind_;  // the kind of the source last shown by set_source
 };
 

@@ -15,6 +15,7 @@
 
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
+#include "adapters/hole_map.h"
 #include "adapters/painted_text.h"
 #include "engine/limits.h"
 #include "models/animation_model.h"
@@ -23,6 +24,7 @@
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_layout.h"
+#include "views/reprojection_controls.h"
 
 namespace oflab {
 
@@ -74,10 +76,10 @@ QString affine_view_line(const AnimationFrame& frame, const ReusePolicy& policy)
 }
 
 // The caption lines of an engine panel: the levels of this frame and the measured error,
-// the affine view's part of it (affine_view_line), then the cost of this frame and of the
-// run so far.
-QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy, double run_pixels,
-                        double run_ms) {
+// the affine view's part of it (affine_view_line), the plane a stabilized-plane policy
+// warps by, then the cost of this frame and of the run so far.
+QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
+                        const EngineSettings& settings, double run_pixels, double run_ms) {
   QStringList levels;
   for (int k = 0; k < kLevelCount; ++k) {
     const int n = frame.levels[size_t(k)];
@@ -91,6 +93,9 @@ QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy, 
                         .arg(frame.max_measured_error_px, 0, 'f', 2)};
   const QString view = affine_view_line(frame, policy);
   if (!view.isEmpty()) lines << view;
+  if (policy.frame_plane == FramePlane::kStabilization) {
+    lines << ReprojectionControls::plane_text(settings.stabilization);
+  }
   lines << QObject::tr("%1 px, %2 ms (run %3 px, %4 ms)")
                .arg(count_text(double(frame.pixels_written)))
                .arg(frame.time_ms, 0, 'f', 1)
@@ -338,8 +343,9 @@ PanelContent AnimationView::engine_panel() {
   }
   const std::string title =
       fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
-  return {QString::fromStdString(title), image_view(engine_image()), model_->animator()->outlines(),
-          run_caption(model_->current(), *model_->settings().policy, pixels, ms)};
+  return {
+      QString::fromStdString(title), image_view(engine_image()), model_->animator()->outlines(),
+      run_caption(model_->current(), *model_->settings().policy, model_->settings(), pixels, ms)};
 }
 
 PanelContent AnimationView::exact_panel() {
@@ -363,10 +369,22 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     }
     const Image& image = run.animator->image();
     shown.push_back({tr("%1 policy").arg(name), image_view(image), run.animator->outlines(),
-                     run_caption(run.last, *run.policy, double(run.pixels_written), run.time_ms)});
+                     run_caption(run.last, *run.policy, model_->settings(),
+                                 double(run.pixels_written), run.time_ms)});
     QImage& map = heat_images_[heat.size()];
     difference_map_into(image, exact, kDifferenceScale, map);
-    heat.push_back({tr("%1 - exact").arg(name), map, {}, agreement_caption(image, exact)});
+    QStringList caption = agreement_caption(image, exact);
+    const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
+    if (per_pixel) {
+      // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
+      const std::int64_t marked = mark_holes(map, reprojection_holes(*run.animator, exact));
+      hole_map_pixels_ += marked;
+      caption << tr("holes (magenta): %1 px").arg(marked);
+    }
+    heat.push_back({per_pixel ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
+                    map,
+                    {},
+                    caption});
   }
   shown.push_back(exact_panel());
   shown.insert(shown.end(), heat.begin(), heat.end());
@@ -374,6 +392,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
 }
 
 std::vector<PanelContent> AnimationView::panels() {
+  hole_map_pixels_ = 0;  // only the comparison draws hole maps
   switch (window_->panel_display()) {
     case PanelDisplay::kComparison:
       if (!comparison_->runs().empty()) return comparison_panels();

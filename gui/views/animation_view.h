@@ -23,6 +23,7 @@
 #pragma once
 
 #include <QRectF>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -87,6 +88,9 @@ class AnimationView : public ViewPage {
   // comparison: the policies, the exact panel, then the heat maps).
   QRectF shown_frame() const { return shown_frame_; }
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
+  // Hole pixels marked on the comparison's heat maps in the last render (adapters/hole_map.h:
+  // the depth-reprojection policy's holes on its frame shown now); 0 in other layouts.
+  std::int64_t hole_map_pixels() const { return hole_map_pixels_; }
   // Every text the view paints now, at its canvas's size, with its box in canvas pixels
   // (titles, captions, legends, colour-bar labels); for checks of legibility.
   std::vector<PaintedText> painted_texts();
@@ -168,6 +172,7 @@ class AnimationView : public ViewPage {
   std::vector<QRectF> panel_rects_;
   QImage buffers_[2];                // the composed view, painted into in turn (compose)
   std::vector<QImage> heat_images_;  // the heat maps of the last frame, reused
+  std::int64_t hole_map_pixels_ = 0;
   int next_buffer_ = 0;
 };
 

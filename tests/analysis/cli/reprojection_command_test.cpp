@@ -2,6 +2,7 @@
 // claims of issue 27's "done when", each measured on the shipped scenes and viewer scripts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -132,6 +133,47 @@ TEST(Reprojection, AutomaticStabilizationPlaneOfOnePlaneMatchesCadenceFrameForFr
     }
   }
   std::filesystem::remove_all(dir);
+}
+
+// compare checks --cadence by the one rule of limits::kCadence (1..8), and refuses it, as it
+// refuses --stabilization-plane and --hole-fill, when no compared policy reads it: one line
+// naming the option, the value or the policies that read it.
+TEST(Reprojection, CompareRefusesACadenceOutOfRangeOrWithoutACadencePolicy) {
+  const std::vector<std::string> base = {"compare",   "--scene",  "four-cubes", "--script",
+                                         "translate", "--frames", "2",          "--quiet"};
+  const auto compare = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return testing::run_cli_captured(args);
+  };
+  for (const char* bad : {"0", "9", "2.5"}) {
+    const CliResult r = compare({"--policies", "timewarp,perspective", "--cadence", bad});
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--cadence"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1..8"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const CliResult none = compare({"--policies", "perspective,talisman", "--cadence", "3"});
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.err.find("--cadence: needs one of timewarp, stabilized-plane, "
+                          "depth-reprojection, cadence in --policies, not "
+                          "'perspective,talisman'"),
+            std::string::npos)
+      << none.err;
+  const CliResult plane =
+      compare({"--policies", "timewarp", "--stabilization-plane", "0", "0", "1", "0", "0", "1"});
+  EXPECT_EQ(plane.code, 2);
+  EXPECT_NE(plane.err.find("--stabilization-plane: needs one of stabilized-plane"),
+            std::string::npos)
+      << plane.err;
+  const CliResult fill = compare({"--policies", "cadence", "--hole-fill", "stretch"});
+  EXPECT_EQ(fill.code, 2);
+  EXPECT_NE(fill.err.find("--hole-fill: needs one of depth-reprojection"), std::string::npos)
+      << fill.err;
+  // The control: a cadence in range with a cadence policy compared plays.
+  const CliResult good = compare({"--policies", "perspective,cadence", "--cadence", "8"});
+  EXPECT_EQ(good.code, 0) << good.err;
 }
 
 }  // namespace

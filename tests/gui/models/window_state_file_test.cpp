@@ -59,6 +59,10 @@ WindowState random_state(std::mt19937& rng) {
   s.settings.content.quality = 1 + pick(256);
   s.settings.budget = {FrameBudget::Unit(pick(3)), 0.0};
   if (s.settings.budget.unit != FrameBudget::Unit::kNone) s.settings.budget.amount = in(0, 1e6);
+  s.settings.cadence = 1 + pick(8);
+  s.settings.stabilization.automatic = coin();
+  s.settings.stabilization.point = Vec3(in(-100, 100), in(-100, 100), in(-100, 100));
+  s.settings.stabilization.normal = Vec3(in(-1, 1), in(-1, 1), in(0.1, 1));
   s.display = PanelDisplay(pick(4));
   s.compared.clear();
   for (const ReusePolicy& p : policies) {
@@ -127,6 +131,12 @@ TEST(WindowStateFile, StatesDifferingInOneFieldAreNotEqual) {
   t = s;
   t.explorer_terms[6] = std::nextafter(t.explorer_terms[6], 1.0);
   EXPECT_FALSE(t == s);
+  t = s;
+  t.settings.cadence = t.settings.cadence % 8 + 1;
+  EXPECT_FALSE(t == s);
+  t = s;
+  t.settings.stabilization.normal.y = std::nextafter(t.settings.stabilization.normal.y, 1e9);
+  EXPECT_FALSE(t == s);
 }
 
 // The explorer's values are fields of "basis" by their term's key; a file may give some of
@@ -169,6 +179,33 @@ TEST(WindowStateFile, TheExplorersTermsRoundTripByNameWithinTheirLimits) {
     terms[size_t(find_explorer_term(term.key))] = std::nextafter(term.limit->maximum, 1e300);
     EXPECT_NE(explorer_terms_problem(terms).find(term.key), std::string::npos) << term.key;
   }
+}
+
+// The reprojection settings in a session: the cadence within limits::kCadence, the plane's
+// coordinates within limits::kStabilizationPlane, refused naming the field and the range.
+TEST(WindowStateFile, CadenceAndStabilizationPlaneAreCheckedByTheirLimits) {
+  const std::string cadence = error_after([](json& j) { j["animation"]["cadence"] = 9; });
+  EXPECT_NE(cadence.find("s.json"), std::string::npos) << cadence;
+  EXPECT_NE(cadence.find("cadence"), std::string::npos) << cadence;
+  EXPECT_NE(cadence.find("1..8"), std::string::npos) << cadence;
+  const std::string point = error_after([](json& j) {
+    j["animation"]["stabilization"] = {{"automatic", false}, {"point", {0, 0, 1e6}}};
+  });
+  EXPECT_NE(point.find("stabilization"), std::string::npos) << point;
+  EXPECT_NE(point.find("1e+06"), std::string::npos) << point;
+  const std::string normal = error_after([](json& j) {
+    j["animation"]["stabilization"] = {{"automatic", false}, {"normal", {0, 0, 0}}};
+  });
+  EXPECT_NE(normal.find("normal"), std::string::npos) << normal;
+  const std::string unknown = error_after([](json& j) {
+    j["animation"]["stabilization"] = {{"height", 2}};
+  });
+  EXPECT_NE(unknown.find("height"), std::string::npos) << unknown;
+  // A plane in the file reads back as given.
+  WindowState s;
+  s.settings.cadence = 5;
+  s.settings.stabilization = {false, Vec3(0.0, 0.0, -1.25), Vec3(0.0, 0.0, 1.0)};
+  EXPECT_TRUE(parse_session(window_state_to_json(s), "s.json") == s);
 }
 
 TEST(WindowStateFile, TheCauseAndEffectLayoutIsAFlagOfTheFile) {

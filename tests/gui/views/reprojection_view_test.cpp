@@ -1,0 +1,140 @@
+// Today's reprojection in the animation view: the Reprojection menu's cadence and
+// stabilization plane reach the engine (a cadence out of limits::kCadence is refused and the
+// menu shows the engine's again), the stabilized-plane panel says which plane it warps by,
+// the depth-reprojection heat map marks its holes, and the lesson claims that measure them
+// (hole_pixels, hole_map_pixels, near_far_error) hold where they should and fail where they
+// must (negative controls).
+#include <QComboBox>
+#include <QSpinBox>
+#include <algorithm>
+#include <cmath>
+
+#include "adapters/hole_map.h"
+#include "app/lesson_check.h"
+#include "models/animation_model.h"
+#include "models/policy_comparison.h"
+#include "views/animation_view.h"
+#include "views/number_box.h"
+#include "views/reprojection_controls.h"
+#include "window_fixture.h"
+
+namespace oflab::test {
+namespace {
+
+class ReprojectionViewTest : public AnimationWindowTest {
+ protected:
+  // The comparison of `policies` on four cubes seen by `viewer`, played `frames` frames.
+  void compare(const std::vector<std::string>& policies, const std::string& viewer, int frames) {
+    window().show_view("animation");
+    window().set_external_clock(true);
+    ASSERT_TRUE(model().set_source({"scene", "four-cubes", viewer}));
+    ASSERT_TRUE(window().model()->set_compared(policies));
+    window().model()->set_panel_display(PanelDisplay::kComparison);
+    window().play_frames(frames);
+    animation().render_image();
+  }
+
+  double measure(const std::string& kind, const std::string& of) {
+    LessonClaim claim;
+    claim.claim = kind;
+    claim.of = of;
+    return measure_claim(&window(), claim);
+  }
+};
+
+TEST_F(ReprojectionViewTest, CadenceAndPlaneOfTheMenuReachTheEngineAndOutOfRangeIsRefused) {
+  window().show_view("animation");
+  auto* cadence = animation().findChild<QSpinBox*>(QStringLiteral("animation_cadence"));
+  auto* plane = animation().findChild<QComboBox*>(QStringLiteral("animation_stabilization"));
+  auto* point_z =
+      animation().findChild<NumberBox*>(QStringLiteral("animation_stabilization_point_2"));
+  auto* button =
+      animation().findChild<ReprojectionControls*>(QStringLiteral("animation_reprojection"));
+  ASSERT_NE(cadence, nullptr);
+  ASSERT_NE(plane, nullptr);
+  ASSERT_NE(point_z, nullptr);
+  ASSERT_NE(button, nullptr);
+  EXPECT_EQ(cadence->value(), EngineSettings{}.cadence);
+  EXPECT_FALSE(point_z->isEnabled());  // automatic fit: no point to give
+  cadence->setValue(4);
+  QApplication::processEvents();
+  EXPECT_EQ(model().settings().cadence, 4);
+  EXPECT_TRUE(button->toolTip().contains(QStringLiteral("every 4th frame")))
+      << button->toolTip().toStdString();
+  plane->setCurrentIndex(1);
+  emit plane->activated(1);
+  QApplication::processEvents();
+  EXPECT_TRUE(point_z->isEnabled());
+  point_z->setValue(-1.25);
+  QApplication::processEvents();
+  EXPECT_FALSE(model().settings().stabilization.automatic);
+  EXPECT_DOUBLE_EQ(model().settings().stabilization.point.z, -1.25);
+  EXPECT_TRUE(button->toolTip().contains(QStringLiteral("plane through (0, 0, -1.25)")));
+  // One rule per value: 9 is outside limits::kCadence; the engine keeps 4 and the menu shows it.
+  cadence->setValue(9);
+  QApplication::processEvents();
+  EXPECT_EQ(model().settings().cadence, 4);
+  EXPECT_EQ(cadence->value(), 4);
+}
+
+TEST_F(ReprojectionViewTest, StabilizedPlanePanelSaysWhichPlaneItWarpsBy) {
+  compare({"stabilized-plane", "cadence"}, "translate", 3);
+  // The captions may be wrapped into lines: search them joined.
+  const auto has = [&](const QString& words) {
+    QString all;
+    for (const PaintedText& t : animation().painted_texts()) all += t.text + QLatin1Char(' ');
+    return all.simplified().contains(words);
+  };
+  EXPECT_TRUE(has(QStringLiteral("plane: automatic fit to the depth")));
+  EngineSettings settings = model().settings();
+  settings.stabilization = {false, Vec3(0.0, 0.0, 1.25), Vec3(0.0, 0.0, 1.0)};
+  ASSERT_TRUE(model().set_settings(settings));
+  animation().render_image();
+  EXPECT_TRUE(has(QStringLiteral("plane through (0, 0, 1.25),")));
+  EXPECT_TRUE(has(QStringLiteral("normal (0, 0, 1)")));
+  EXPECT_FALSE(has(QStringLiteral("automatic fit")));
+}
+
+TEST_F(ReprojectionViewTest, HoleMapMarksTheDepthReprojectionsHolesAndOnlyThose) {
+  compare({"depth-reprojection", "cadence"}, "translate", 15);  // frame 15: warped, holes
+  const double holes = measure("hole_pixels", "depth-reprojection");
+  const double marked = measure("hole_map_pixels", "");
+  ASSERT_GT(holes, 0.0);
+  // The map marks the pixels core counts (its depth test against the exact frame's coverage:
+  // the same surfaces, so the same pixels up to texels the exact render leaves transparent).
+  EXPECT_NEAR(marked, holes, 0.05 * holes);
+  // An independent count: unreached pixels of the reprojection where the exact frame shows
+  // something, through the adapter the view uses.
+  const ComparedRun& run = window().model()->comparison().runs().front();
+  const std::vector<char> mask = reprojection_holes(*run.animator, animation().exact_image());
+  EXPECT_EQ(double(std::count(mask.begin(), mask.end(), 1)), marked);
+  // Negative controls: the cadence policy warps whole layers and has no holes, an unknown
+  // policy is not measured, and a claim of holes on cadence does not hold.
+  EXPECT_EQ(measure("hole_pixels", "cadence"), 0.0);
+  EXPECT_TRUE(std::isnan(measure("hole_pixels", "talisman")));
+  LessonClaim false_claim;
+  false_claim.claim = "hole_pixels";
+  false_claim.of = "cadence";
+  false_claim.at_least = 1;
+  const double measured = measure_claim(&window(), false_claim);
+  EXPECT_FALSE(measured >= false_claim.at_least);
+  // A rendered frame (a multiple of the cadence) is no reprojection: no hole map.
+  window().play_frames(1);
+  animation().render_image();
+  EXPECT_EQ(animation().hole_map_pixels(), 0);
+}
+
+TEST_F(ReprojectionViewTest, TimewarpsErrorGrowsWithInverseDepthUnderTranslationOnly) {
+  compare({"timewarp", "perspective"}, "translate", 31);
+  const double ratio = measure("near_far_error", "timewarp");
+  EXPECT_GT(ratio, 1.2);  // the near cubes slip further
+  // Negative control: the claim that the far cubes err more fails.
+  EXPECT_FALSE(ratio <= 1.0);
+  // A roll moves every depth alike: timewarp is exact.
+  compare({"timewarp", "perspective"}, "rotate", 31);
+  const double rolled = measure("max_error", "timewarp");
+  EXPECT_LE(rolled, 0.5);
+}
+
+}  // namespace
+}  // namespace oflab::test
