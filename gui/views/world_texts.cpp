@@ -32,7 +32,7 @@ void WorldTexts::lay_out(const QSize& size, const QFont& base, const ViewTheme& 
                          const Projector& project) {
   drawn_.clear();
   patch_ = to_qcolor(theme.background);
-  patch_.setAlpha(190);
+  patch_.setAlpha(220);  // the lines and textures behind show through, faintly
   leader_width_ = theme.line_width;
   const QColor text_colour = to_qcolor(theme.text);
   std::vector<QRectF> taken;
@@ -79,8 +79,14 @@ void WorldTexts::lay_out(const QSize& size, const QFont& base, const ViewTheme& 
     const QPointF near = nearest_on(boxes[k], anchors[k]);
     const bool moved =
         std::hypot(near.x() - anchors[k].x(), near.y() - anchors[k].y()) > 2.0 * kGap + 1.0;
-    drawn_.push_back({QString::fromStdString(placed[k]->text), boxes[k], label_font,
-                      to_qcolor(placed[k]->colour), moved, anchors[k]});
+    // A shade further from the background than the arrow's own colour: the hue still names
+    // the arrow, and the text reads from the back of a room (the palette's purple and
+    // vermillion are too light on presentation mode's background, its blue too dark on the
+    // normal one's).
+    const QColor colour = theme.presentation ? to_qcolor(placed[k]->colour).darker(140)
+                                             : to_qcolor(placed[k]->colour).lighter(140);
+    drawn_.push_back(
+        {QString::fromStdString(placed[k]->text), boxes[k], label_font, colour, moved, anchors[k]});
   }
 }
 
