@@ -1,7 +1,6 @@
 #include "adapters/world_actors.h"
 
 #include <vtkActor.h>
-#include <vtkBillboardTextActor3D.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
@@ -13,7 +12,6 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
-#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <cstring>
@@ -167,18 +165,6 @@ void copy_texture_pixels(const QImage& image, vtkImageData* pixels) {
                 size_t(rgba.width()) * 4);
   }
   pixels->Modified();
-}
-
-vtkSmartPointer<vtkBillboardTextActor3D> add_label(vtkRenderer* renderer, const std::string& text,
-                                                   const RgbF& colour) {
-  auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
-  label->SetInput(text.c_str());
-  label->GetTextProperty()->SetColor(colour[0], colour[1], colour[2]);
-  label->GetTextProperty()->SetJustificationToLeft();
-  label->GetTextProperty()->SetVerticalJustificationToBottom();
-  label->GetTextProperty()->BoldOn();
-  renderer->AddActor(label);
-  return label;
 }
 
 }  // namespace oflab

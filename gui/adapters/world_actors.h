@@ -16,7 +16,6 @@
 #include "image/image.h"
 
 class vtkActor;
-class vtkBillboardTextActor3D;
 class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
@@ -56,10 +55,6 @@ void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned c
 void copy_frame_pixels(const Image& image, vtkImageData* pixels);
 // Copies a QImage into `pixels` as RGBA, row 0 first.
 void copy_texture_pixels(const QImage& image, vtkImageData* pixels);
-
-// A 3D label that always faces the viewer, added to `renderer`.
-vtkSmartPointer<vtkBillboardTextActor3D> add_label(vtkRenderer* renderer, const std::string& text,
-                                                   const RgbF& colour);
 
 // The colour as VTK's three doubles.
 inline std::array<double, 3> vtk_colour(const RgbF& c) { return {c[0], c[1], c[2]}; }

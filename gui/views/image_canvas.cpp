@@ -32,14 +32,34 @@ QRectF ImageCanvas::target_rect() const {
 
 void ImageCanvas::paintEvent(QPaintEvent*) {
   QPainter painter(this);
-  painter.fillRect(rect(), background_);
+  const QRectF target = target_rect();
+  // Only the margins around the image: filling the whole widget first costs a full-size
+  // pass per frame in software.
+  if (!target.contains(QRectF(rect()))) {
+    painter.fillRect(QRectF(0, 0, width(), target.top()), background_);
+    painter.fillRect(QRectF(0, target.bottom(), width(), height() - target.bottom()), background_);
+    painter.fillRect(QRectF(0, target.top(), target.left(), target.height()), background_);
+    painter.fillRect(
+        QRectF(target.right(), target.top(), width() - target.right(), target.height()),
+        background_);
+  }
   if (image_.isNull()) return;
   // Smooth scaling costs a few milliseconds per frame on software rendering; the panels
   // are shown near their own size, so the fast filter looks the same.
-  painter.drawImage(target_rect(), image_);
+  painter.drawImage(target, image_);
+}
+
+void ImageCanvas::mousePressEvent(QMouseEvent* event) {
+  last_mouse_ = event->localPos();
+  event->accept();
 }
 
 void ImageCanvas::mouseMoveEvent(QMouseEvent* event) {
+  if (event->buttons() != Qt::NoButton) {
+    const QPointF delta = event->localPos() - last_mouse_;
+    last_mouse_ = event->localPos();
+    emit dragged(delta, event->buttons(), event->modifiers());
+  }
   const QRectF r = target_rect();
   if (r.isEmpty() || !r.contains(event->pos())) return;
   const double scale = image_.width() / r.width();

@@ -285,6 +285,15 @@ void SlicesView::restart() {
 }
 
 void SlicesView::follow_frame() {
+  if (isVisible()) catch_up();
+}
+
+void SlicesView::showEvent(QShowEvent* event) {
+  ViewPage::showEvent(event);
+  catch_up();
+}
+
+void SlicesView::catch_up() {
   if (!renderer_ || script_.frames.size() < 2) return;
   const int target = window_->scene()->frame() % static_cast<int>(script_.frames.size());
   if (target == frame_) return;
@@ -347,6 +356,7 @@ void SlicesView::refresh() {
 }
 
 QImage SlicesView::render_image() {
+  catch_up();
   refresh();
   return grab().toImage();
 }

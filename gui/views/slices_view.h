@@ -52,7 +52,8 @@ class SlicesView : public ViewPage {
 
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
-  // The script's frame shown now (the window's frame modulo the script's length).
+  // The script's frame shown now (the window's frame modulo the script's length; a hidden
+  // view keeps the frame it last showed until it is shown or rendered).
   int frame() const { return frame_; }
   double smallest_text_px() const override;
   QString scene_panel_note() const override;
@@ -69,12 +70,16 @@ class SlicesView : public ViewPage {
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void restart();
   void refresh();
-  // Brings the slices to the window's frame (forward frame by frame, backward by a restart).
+  // Brings the slices to the window's frame (forward frame by frame, backward by a restart)
+  // when the view is visible; a hidden view waits and catches up when shown or rendered, so
+  // the other views do not pay for its frames and it still shows an uninterrupted run.
   void follow_frame();
+  void catch_up();  // follow_frame even when hidden
   void render_exact();
 
   Scene scene_;

@@ -1,36 +1,35 @@
 #include "views/world_view.h"
 
-#include <QVTKOpenGLNativeWidget.h>
 #include <vtkActor.h>
-#include <vtkActorCollection.h>
 #include <vtkArrowSource.h>
-#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
-#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
-#include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
-#include <vtkTextActor.h>
-#include <vtkTextProperty.h>
 #include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPainter>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "adapters/camera_moves.h"
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
+#include "adapters/label_layout.h"
+#include "adapters/offscreen_vtk.h"
+#include "adapters/paint_helpers.h"
 #include "adapters/palette.h"
 #include "adapters/world_actors.h"
 #include "adapters/world_geometry.h"
@@ -39,6 +38,8 @@
 #include "models/window_model.h"
 #include "scene/scene_animator.h"
 #include "scene_shifting/scene_shifting_renderer.h"
+#include "views/image_canvas.h"
+#include "views/world_texts.h"
 
 namespace oflab {
 namespace {
@@ -81,11 +82,19 @@ std::array<unsigned char, 4> polygon_colour(PolygonStatus status, Level level) {
 }  // namespace
 
 struct WorldView::Impl {
-  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  std::string display_problem = offscreen_vtk_problem();
+  vtkSmartPointer<vtkRenderWindow> window =
+      display_problem.empty() ? make_offscreen_window() : vtkSmartPointer<vtkRenderWindow>::New();
   vtkNew<vtkRenderer> renderer;
-  // The paths and the labels, drawn over everything else with the same camera: the plane
-  // covers most of its own path and the labels at its centre.
+  // The paths, drawn over everything else with the same camera: the plane covers most of
+  // its own path.
   vtkNew<vtkRenderer> overlay;
+  vtkNew<vtkUnsignedCharArray> read_back;
+  std::array<QImage, 2> pictures;  // used in turn: the one on screen is never written
+  int next_picture = 0;
+  int renders = 0;
+  bool needs_render = true;  // something VTK draws changed since the last render
+  QSize rendered_size;
   // The viewer's frame in the world: identity for the plane, the viewer's pose in a scene.
   vtkNew<vtkMatrix4x4> viewer_matrix;
   vtkNew<vtkActor> eye;
@@ -99,13 +108,10 @@ struct WorldView::Impl {
     vtkSmartPointer<vtkMatrix4x4> matrix;
   };
   Arrow velocity, omega, normal, up;
-  vtkSmartPointer<vtkBillboardTextActor3D> eye_label, image_label, velocity_label, omega_label,
-      normal_label, up_label;
-  vtkNew<vtkTextActor> caption, legend;
+  WorldTexts texts;  // labels, legend and caption, painted over VTK's picture
 
   ViewTheme theme = view_theme(false);
   std::array<bool, kWorldPartCount> shown{true, true, true, true, true, true, true, true};
-  double dpi = 72.0;
 
   // What the source gives for every frame (rebuilt when the source changes).
   bool source_dirty = true;
@@ -136,9 +142,9 @@ struct WorldView::Impl {
     arrow.actor->Modified();
   }
 
-  static void place_label(vtkBillboardTextActor3D* label, const Vec3& at, const std::string& text) {
-    label->SetPosition(at.x, at.y, at.z);
-    if (text != label->GetInput()) label->SetInput(text.c_str());
+  void place_label(WorldLabelId id, const Vec3& at, const std::string& text) {
+    texts.labels[size_t(id)].at = at;
+    texts.labels[size_t(id)].text = text;
   }
 
   ViewerPose view;         // the viewer now (identity for the plane)
@@ -154,7 +160,7 @@ struct WorldView::Impl {
   void split_path(int frame);
   void show_parts();
   void apply_theme();
-  void apply_text_sizes();
+  bool to_canvas(const Vec3& at, QPointF* canvas) const;
 };
 
 WorldView::WorldView(WindowModel* window, QWidget* parent)
@@ -172,8 +178,9 @@ WorldView::WorldView(WindowModel* window, QWidget* parent)
 
   const ViewTheme& t = m.theme;
   vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(24);
-  sphere->SetPhiResolution(12);
+  // A small ball: 16 x 8 facets read as round at its size on screen.
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(8);
   vtkNew<vtkPolyDataMapper> sphere_mapper;
   sphere_mapper->SetInputConnection(sphere->GetOutputPort());
   m.eye->SetMapper(sphere_mapper);
@@ -210,24 +217,39 @@ WorldView::WorldView(WindowModel* window, QWidget* parent)
   m.omega = m.add_arrow(okabe_ito::kReddishPurple);
   m.normal = m.add_arrow(okabe_ito::kBlue);
   m.up = m.add_arrow(okabe_ito::kBluishGreen);
-  m.eye_label = add_label(m.overlay, "eye", t.text);
-  m.image_label = add_label(m.overlay, "image plane", t.text);
-  m.velocity_label = add_label(m.overlay, "V", rgbf(okabe_ito::kVermillion));
-  m.omega_label = add_label(m.overlay, "Omega", rgbf(okabe_ito::kReddishPurple));
-  m.normal_label = add_label(m.overlay, "N", rgbf(okabe_ito::kBlue));
-  m.up_label = add_label(m.overlay, "U", rgbf(okabe_ito::kBluishGreen));
-  m.caption->SetPosition(10, 10);
-  m.caption->GetTextProperty()->SetVerticalJustificationToBottom();
-  m.renderer->AddViewProp(m.caption);
-  m.legend->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  m.legend->SetPosition(0.01, 0.98);
-  m.legend->GetTextProperty()->SetVerticalJustificationToTop();
-  m.renderer->AddViewProp(m.legend);
+  m.texts.labels[kEyeLabel] = {"eye", Vec3(0.0), t.text, true};
+  m.texts.labels[kImageLabel] = {"image plane", Vec3(0.0), t.text, true};
+  m.texts.labels[kVelocityLabel] = {"V", Vec3(0.0), rgbf(okabe_ito::kVermillion), true};
+  m.texts.labels[kOmegaLabel] = {"Omega", Vec3(0.0), rgbf(okabe_ito::kReddishPurple), true};
+  m.texts.labels[kNormalLabel] = {"N", Vec3(0.0), rgbf(okabe_ito::kBlue), true};
+  m.texts.labels[kUpLabel] = {"U", Vec3(0.0), rgbf(okabe_ito::kBluishGreen), true};
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(make_button_bar());
-  layout_ = layout;
+  canvas_ = new ImageCanvas(this);
+  canvas_->setObjectName(QStringLiteral("world_canvas"));
+  canvas_->setToolTip(tr("Drag to orbit, Shift+drag to pan, wheel to zoom"));
+  layout->addWidget(canvas_, 1);
+  connect(canvas_, &ImageCanvas::resized, this, [this] {
+    if (isVisible()) draw();
+  });
+  connect(canvas_, &ImageCanvas::dragged, this,
+          [this](QPointF delta, Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers) {
+            if (buttons & Qt::MiddleButton ||
+                (buttons & Qt::LeftButton && modifiers & Qt::ShiftModifier)) {
+              pan_camera(impl_->renderer, delta);
+            } else if (buttons & Qt::LeftButton) {
+              orbit_camera(impl_->renderer, delta);
+            } else if (buttons & Qt::RightButton) {
+              drag_zoom_camera(impl_->renderer, delta);
+            }
+            camera_moved();
+          });
+  connect(canvas_, &ImageCanvas::wheel_turned, this, [this](double notches) {
+    dolly_camera(impl_->renderer, notches);
+    camera_moved();
+  });
 
   SceneModel* scene = window_->scene();
   connect(scene, &SceneModel::scene_changed, this, &WorldView::refresh);
@@ -267,11 +289,11 @@ QWidget* WorldView::make_button_bar() {
   row->addWidget(note_, 1);
   connect(reset, &QPushButton::clicked, this, [this] {
     reset_camera();
-    if (vtk_widget_) vtk_widget_->renderWindow()->Render();
+    camera_moved();
   });
   connect(eye, &QPushButton::clicked, this, [this] {
     view_from_camera();
-    if (vtk_widget_) vtk_widget_->renderWindow()->Render();
+    camera_moved();
   });
   return bar;
 }
@@ -286,39 +308,74 @@ void WorldView::set_part_shown(WorldPart part, bool shown) {
   refresh();
 }
 
-void WorldView::ensure_widget() {
-  // Made when first shown: a window holding an OpenGL widget is composed through OpenGL on
-  // every repaint, which slows every other view on software OpenGL, so a window whose world
-  // view was never opened keeps the plain composition.
-  if (vtk_widget_) return;
-  vtk_widget_ = new QVTKOpenGLNativeWidget(this);
-  vtk_widget_->setObjectName(QStringLiteral("world_vtk"));
-  vtk_widget_->setRenderWindow(impl_->window);
-  vtkNew<vtkInteractorStyleTrackballCamera> style;
-  impl_->window->GetInteractor()->SetInteractorStyle(style);
-  layout_->addWidget(vtk_widget_, 1);
-  vtk_widget_->show();
+std::vector<PaintedText> WorldView::painted_texts() const {
+  return record_painted_text(canvas_->size(),
+                             [this](QPainter& painter) { impl_->texts.paint(painter); });
 }
+
+std::vector<QString> WorldView::text_problems() const {
+  return oflab::text_problems(painted_texts(), canvas_->size());
+}
+
+int WorldView::render_count() const { return impl_->renders; }
 
 void WorldView::refresh() {
   dirty_ = true;
+  impl_->needs_render = true;
   if (!isVisible()) return;
-  ensure_widget();
   update_now();
-  vtk_widget_->renderWindow()->Render();  // the widget shows it when it next paints
+  draw();
+}
+
+void WorldView::camera_moved() {
+  impl_->needs_render = true;
+  if (isVisible()) draw();
 }
 
 void WorldView::showEvent(QShowEvent* event) {
   ViewPage::showEvent(event);
-  ensure_widget();
-  if (dirty_) refresh();
+  if (dirty_) {
+    refresh();
+  } else if (impl_->needs_render || impl_->rendered_size != canvas_->size()) {
+    draw();
+  }
 }
 
 QImage WorldView::render_image() {
-  ensure_widget();
   if (dirty_) update_now();
-  vtk_widget_->renderWindow()->Render();
-  return vtk_widget_->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+  if (impl_->needs_render || impl_->rendered_size != canvas_->size()) draw();
+  return canvas_->image();
+}
+
+void WorldView::draw() {
+  Impl& m = *impl_;
+  const QSize size = canvas_->size();
+  if (size.isEmpty()) return;
+  if (dirty_) update_now();  // a resize may come before the first refresh
+  m.window->SetSize(size.width(), size.height());
+  if (!camera_placed_) {  // after the size: the framing depends on the picture's shape
+    reset_camera();
+    camera_placed_ = true;
+  }
+  QImage& picture = m.pictures[size_t(m.next_picture)];
+  m.next_picture = 1 - m.next_picture;
+  if (m.display_problem.empty()) {
+    m.window->Render();
+    ++m.renders;
+    read_window_pixels(m.window, m.read_back, &picture);
+  } else {
+    picture = QImage(size, QImage::Format_RGB32);
+    picture.fill(to_qcolor(m.theme.background));
+  }
+  m.texts.lay_out(size, font(), m.theme,
+                  [&m](const Vec3& at, QPointF* canvas) { return m.to_canvas(at, canvas); });
+  {
+    QPainter painter(&picture);
+    m.texts.paint(painter);
+  }
+  canvas_->set_image(picture);
+  m.rendered_size = size;
+  m.needs_render = false;
 }
 
 void WorldView::update_now() {
@@ -333,7 +390,9 @@ void WorldView::update_now() {
       m.load_plane(*window_);
     }
     m.source_dirty = false;
-    note_->setText(QString::fromStdString(m.problem));
+    const std::string problem =
+        m.display_problem.empty() ? m.problem : "The world cannot be drawn: " + m.display_problem;
+    note_->setText(QString::fromStdString(problem));
   }
   if (scene) {
     m.update_scene(*animation);
@@ -341,11 +400,7 @@ void WorldView::update_now() {
     m.update_plane(*window_->scene());
   }
   m.show_parts();
-  if (m.dpi != m.window->GetDPI()) m.apply_text_sizes();
-  if (!camera_placed_) {
-    reset_camera();
-    camera_placed_ = true;
-  }
+  m.needs_render = true;
   dirty_ = false;
 }
 
@@ -369,6 +424,7 @@ void WorldView::reset_camera() {
   // Closer in a wide view; a narrow one (the cause-and-effect layout) keeps the whole width.
   camera->Zoom(1.6 * std::clamp(m.renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0));
   m.renderer->ResetCameraClippingRange();
+  m.needs_render = true;
 }
 
 void WorldView::view_from_camera() {
@@ -382,11 +438,13 @@ void WorldView::view_from_camera() {
   camera->SetViewUp(up.x, up.y, up.z);
   camera->SetViewAngle(2.0 * std::atan(0.5 * m.camera.height / m.camera.focal_px) * 180.0 / kPi);
   m.renderer->ResetCameraClippingRange();
+  m.needs_render = true;
 }
 
 void WorldView::set_theme(const ViewTheme& theme) {
   impl_->theme = theme;
   impl_->apply_theme();
+  canvas_->set_background(to_qcolor(theme.background));
   refresh();
 }
 
@@ -484,8 +542,8 @@ void WorldView::Impl::place_viewer(const ViewerPose& pose) {
     to.push_back(corners[size_t((k + 1) % 4)]);
   }
   set_segments(frustum.data, from, to);
-  place_label(eye_label, viewer_to_world(pose, Vec3(0.0, -0.12 * depth, 0.0)), "eye");
-  place_label(image_label, viewer_to_world(pose, corners[0]), "image plane");
+  place_label(kEyeLabel, viewer_to_world(pose, Vec3(0.0)), "eye");
+  place_label(kImageLabel, viewer_to_world(pose, corners[0]), "image plane");
 }
 
 void WorldView::Impl::place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega_w,
@@ -496,9 +554,9 @@ void WorldView::Impl::place_motion(const Vec3& at, const Vec3& velocity, const V
   place(omega, at, omega_w, lo);
   char text[96];
   std::snprintf(text, sizeof text, "V %.2f/s", glm::length(velocity));
-  place_label(velocity_label, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
+  place_label(kVelocityLabel, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
   std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye", glm::length(omega_w));
-  place_label(omega_label, lo > 0 ? at + glm::normalize(omega_w) * lo : at, text);
+  place_label(kOmegaLabel, lo > 0 ? at + glm::normalize(omega_w) * lo : at, text);
   // The axis Omega turns about passes through the eye, not through the arrow's foot.
   const Vec3 eye_w = viewer_to_world(view, Vec3(0.0));
   std::vector<Vec3> axis;
@@ -540,8 +598,8 @@ void WorldView::Impl::update_plane(const SceneModel& scene) {
   const double side = 0.3 * std::hypot(pose.size.x, pose.size.y);
   place(normal, pose.point, axes.normal, side);
   place(up, pose.point, axes.up, side);
-  place_label(normal_label, pose.point + axes.normal * side, "N");
-  place_label(up_label, pose.point + axes.up * side, "U");
+  place_label(kNormalLabel, pose.point + axes.normal * side, "N");
+  place_label(kUpLabel, pose.point + axes.up * side, "U");
   place_motion(pose.point, eye_velocity(motion, pose), motion.omega, full_arrow);
   split_path(scene.frame());
   if (exact) copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels);
@@ -554,7 +612,7 @@ void WorldView::Impl::update_plane(const SceneModel& scene) {
                 "Path of the plane's centre: past thick, future thin. Rays: eye to the plane's "
                 "corners through their images.",
                 depth, camera.focal_px);
-  if (text != std::string(caption->GetInput() ? caption->GetInput() : "")) caption->SetInput(text);
+  texts.caption = text;
 }
 
 void WorldView::Impl::update_scene(AnimationModel& animation) {
@@ -591,29 +649,30 @@ void WorldView::Impl::update_scene(AnimationModel& animation) {
                 "perspective orange, re-render vermillion); culled pale, hidden dark.\n"
                 "V and Omega: the scene's motion seen by the viewer (Omega about the eye). "
                 "Viewer's path: past thick, future thin.");
-  if (text != std::string(caption->GetInput() ? caption->GetInput() : "")) caption->SetInput(text);
+  texts.caption = text;
 }
 
 void WorldView::Impl::show_parts() {
   const auto on = [this](WorldPart part) { return shown[size_t(part)]; };
   const bool plane_mode = !scene_mode;
-  for (vtkProp* p : {static_cast<vtkProp*>(eye.Get()), static_cast<vtkProp*>(frustum.actor),
-                     static_cast<vtkProp*>(eye_label)}) {
+  for (vtkProp* p : {static_cast<vtkProp*>(eye.Get()), static_cast<vtkProp*>(frustum.actor)}) {
     p->SetVisibility(on(WorldPart::kFrustum));
   }
+  texts.labels[kEyeLabel].shown = on(WorldPart::kFrustum);
   image_plane.actor->SetVisibility(on(WorldPart::kImagePlane));
-  image_label->SetVisibility(on(WorldPart::kImagePlane));
+  texts.labels[kImageLabel].shown = on(WorldPart::kImagePlane);
   for (vtkProp* p : {static_cast<vtkProp*>(plane.actor), static_cast<vtkProp*>(plane_outline.actor),
-                     static_cast<vtkProp*>(normal.actor), static_cast<vtkProp*>(up.actor),
-                     static_cast<vtkProp*>(normal_label), static_cast<vtkProp*>(up_label)}) {
+                     static_cast<vtkProp*>(normal.actor), static_cast<vtkProp*>(up.actor)}) {
     p->SetVisibility(plane_mode && on(WorldPart::kPlane));
   }
+  texts.labels[kNormalLabel].shown = texts.labels[kUpLabel].shown =
+      plane_mode && on(WorldPart::kPlane);
   velocity.actor->SetVisibility(on(WorldPart::kVelocity));
-  velocity_label->SetVisibility(on(WorldPart::kVelocity));
-  for (vtkProp* p : {static_cast<vtkProp*>(omega.actor), static_cast<vtkProp*>(omega_label),
-                     static_cast<vtkProp*>(omega_axis.actor)}) {
+  texts.labels[kVelocityLabel].shown = on(WorldPart::kVelocity);
+  for (vtkProp* p : {static_cast<vtkProp*>(omega.actor), static_cast<vtkProp*>(omega_axis.actor)}) {
     p->SetVisibility(on(WorldPart::kOmega));
   }
+  texts.labels[kOmegaLabel].shown = on(WorldPart::kOmega);
   rays.actor->SetVisibility(plane_mode && on(WorldPart::kRays));
   ray_images.actor->SetVisibility(plane_mode && on(WorldPart::kRays));
   path_past.actor->SetVisibility(on(WorldPart::kPath));
@@ -640,27 +699,18 @@ void WorldView::Impl::apply_theme() {
     p->actor->GetProperty()->SetColor(ray[0], ray[1], ray[2]);
     p->actor->GetProperty()->SetLineWidth(p == &rays ? thin : thick);
   }
-  for (vtkBillboardTextActor3D* label : {eye_label.Get(), image_label.Get()}) {
-    label->GetTextProperty()->SetColor(t.text[0], t.text[1], t.text[2]);
-  }
-  for (vtkTextActor* text : {caption.Get(), legend.Get()}) {
-    text->GetTextProperty()->SetColor(t.text[0], t.text[1], t.text[2]);
-  }
-  legend->SetInput("World: the cause of the flow");
-  apply_text_sizes();
+  texts.labels[kEyeLabel].colour = texts.labels[kImageLabel].colour = t.text;
 }
 
-void WorldView::Impl::apply_text_sizes() {
-  // VTK sizes text in points at the window's DPI; the theme's sizes are screen pixels.
-  dpi = window->GetDPI();
-  const auto points = [this](int px) { return std::max(1, int(std::lround(px * 72.0 / dpi))); };
-  for (vtkBillboardTextActor3D* label : {eye_label.Get(), image_label.Get(), velocity_label.Get(),
-                                         omega_label.Get(), normal_label.Get(), up_label.Get()}) {
-    label->GetTextProperty()->SetFontSize(points(theme.label_size));
-  }
-  caption->GetTextProperty()->SetFontSize(points(theme.label_size));
-  legend->GetTextProperty()->SetFontSize(points(theme.font_size));
-  legend->GetTextProperty()->BoldOn();
+bool WorldView::Impl::to_canvas(const Vec3& at, QPointF* canvas) const {
+  const int* size = window->GetSize();
+  renderer->SetWorldPoint(at.x, at.y, at.z, 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  // VTK's display y runs upwards; depth outside [0, 1] is behind the eye or past the far plane.
+  *canvas = QPointF(d[0], size[1] - d[1]);
+  return d[2] >= 0.0 && d[2] <= 1.0 && d[0] >= 0.0 && d[0] <= size[0] && d[1] >= 0.0 &&
+         d[1] <= size[1];
 }
 
 }  // namespace oflab

@@ -1,5 +1,6 @@
 // The world view, "World (the cause)": the 3D scene whose motion makes the flow the other
-// views show, drawn by VTK in a QVTKOpenGLNativeWidget.
+// views show, drawn by VTK offscreen (gui/adapters/offscreen_vtk.h) into an image that a
+// plain widget shows, with its labels and caption painted over it by Qt.
 //
 // For the scene panel's plane (and any single-plane source) the world is the viewer frame
 // (gui/adapters/world_geometry.h): the eye at the origin and the camera's frustum out to the
@@ -19,23 +20,31 @@
 // image plane (the engine's frame) at its pose, and the scene's motion seen by the viewer as
 // the V and Omega arrows at the eye. It follows the animation model.
 //
-// Mouse: orbit (left), pan (middle or Shift+left), zoom (wheel or right), VTK's trackball
-// camera. "Reset view" frames the whole world; "View from the camera" looks through the eye.
-// Every actor is made once: frames replace points, transforms and pixels in place.
+// Mouse: orbit (left), pan (middle or Shift+left), zoom (wheel or right), the rules of VTK's
+// trackball camera (gui/adapters/camera_moves.h). "Reset view" frames the whole world; "View
+// from the camera" looks through the eye. Every actor is made once: frames replace points,
+// transforms and pixels in place. VTK renders only when something it draws changed (the
+// frame, the source, a part shown, the theme, the camera, the size).
+//
+// Texts. The labels (eye, image plane, V, Omega, N, U) are painted next to the projection of
+// the point they name, placed so that none covers another or the caption
+// (gui/adapters/label_layout.h), with a leader line when pushed away from it; the caption is
+// wrapped to the view's width.
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "adapters/painted_text.h"
 #include "flow/geometry.h"
 #include "views/view_page.h"
 
 class QLabel;
-class QBoxLayout;
-class QVTKOpenGLNativeWidget;
 class vtkRenderer;
 
 namespace oflab {
 
+class ImageCanvas;
 class WindowModel;
 
 // What the world view draws, part by part (set_part_shown; all shown by default).
@@ -50,6 +59,7 @@ class WorldView : public ViewPage {
   explicit WorldView(WindowModel* window, QWidget* parent = nullptr);
   ~WorldView() override;
 
+  // The picture at the view's canvas size: VTK's render with the texts painted over it.
   QImage render_image() override;
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
@@ -72,6 +82,15 @@ class WorldView : public ViewPage {
   // The depth of the image plane, world units, as of the last update.
   double image_depth() const;
 
+  // The texts the last picture painted (labels, caption, legend) with their boxes, canvas
+  // pixels, and what is wrong with them (text_problems of gui/adapters/painted_text.h:
+  // elided, off the canvas, overlapping); render_image first for the current frame.
+  std::vector<PaintedText> painted_texts() const;
+  std::vector<QString> text_problems() const;
+  // How many times VTK has rendered since the view was made (tests check that nothing
+  // renders again when nothing changed).
+  int render_count() const;
+
   // Brings the drawing up to date with the model and renders when the view is visible.
   void refresh();
 
@@ -82,12 +101,11 @@ class WorldView : public ViewPage {
   struct Impl;
   QWidget* make_button_bar();
   void update_now();
+  void draw();          // renders VTK at the canvas's size and shows it with its texts
+  void camera_moved();  // draws again after a mouse move or a button
 
   WindowModel* window_;
-  void ensure_widget();
-
-  QVTKOpenGLNativeWidget* vtk_widget_ = nullptr;  // made when first shown (ensure_widget)
-  QBoxLayout* layout_ = nullptr;
+  ImageCanvas* canvas_ = nullptr;
   QLabel* note_ = nullptr;
   std::unique_ptr<Impl> impl_;
   bool dirty_ = true;

@@ -1,12 +1,15 @@
 // The world view (gui/views/world_view.h) and its geometry (gui/adapters/world_geometry.h):
 // the geometry against core's own projection and poses, the picture at 1920 x 1080 in both
 // looks against baselines (with controls: a picture without the arrows and the frustum is
-// rejected, and each part hidden on its own changes the picture), and frames that move the
-// plane without making a single actor anew.
+// rejected, and each part hidden on its own changes the picture), frames that move the
+// plane without making a single actor anew, texts that neither overlap nor are cut (both
+// looks, the cause-and-effect layout, a scene), one render per change and none without, and
+// the mouse turning the camera.
 #include "views/world_view.h"
 
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
+#include <vtkCamera.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -19,6 +22,7 @@
 #include "flow/plane_scene.h"
 #include "image_checks.h"
 #include "models/scene_model.h"
+#include "views/image_canvas.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -122,6 +126,23 @@ class WorldViewTest : public WindowTest {
     QApplication::processEvents();
     window().play_frames(10);
   }
+  // Every text the world view painted is readable: none elided, off the canvas or over
+  // another; the labels and the caption are all there.
+  void expect_clear_texts(WorldView& view, const char* where) {
+    view.render_image();
+    const std::vector<PaintedText> texts = view.painted_texts();
+    QStringList all;
+    for (const PaintedText& t : texts) all << t.text;
+    const QString joined = all.join(QStringLiteral(" | "));
+    for (const char* label : {"eye", "image plane", "World: the cause of the flow"}) {
+      EXPECT_TRUE(all.contains(QString::fromLatin1(label))) << where << ": " << label;
+    }
+    EXPECT_TRUE(joined.contains(QStringLiteral("about the eye"))) << where;
+    EXPECT_GE(all.size(), 6) << where;
+    QString problems;
+    for (const QString& p : view.text_problems()) problems += p + QStringLiteral("; ");
+    EXPECT_TRUE(problems.isEmpty()) << where << ": " << problems.toStdString();
+  }
   std::set<vtkProp*> props() {
     std::set<vtkProp*> all;
     vtkPropCollection* collection = world().renderer()->GetViewProps();
@@ -216,6 +237,99 @@ TEST_F(WorldViewTest, ASceneSourceShowsItsPolygonsWithTheSameActors) {
   EXPECT_NEAR(glm::length(world().drawn_centre() - eye), 0.0, 1e-12);
   EXPECT_GT(distinct_colours(image), 50);
   EXPECT_EQ(props(), before);
+}
+
+// The labels "eye" and "image plane" used to overlap, and the caption's last line ran past
+// the right edge of a narrow view.
+TEST_F(WorldViewTest, LabelsAndCaptionNeitherOverlapNorAreCut) {
+  for (bool presentation : {false, true}) {
+    show_world(presentation);
+    expect_clear_texts(world(), presentation ? "presentation" : "normal");
+    // Presentation mode's texts are at least 18 px tall at 1920 x 1080.
+    for (const PaintedText& t : world().painted_texts()) {
+      if (presentation) {
+        EXPECT_GE(t.box.height(), kPresentationMinTextPx) << t.text.toStdString();
+      }
+    }
+  }
+}
+
+TEST_F(WorldViewTest, TextsStayClearInTheCauseAndEffectLayout) {
+  for (bool presentation : {false, true}) {
+    window().resize(1920, 1080);
+    window().model()->set_presentation(presentation);
+    window().model()->set_cause_and_effect(true);
+    window().set_external_clock(true);
+    QApplication::processEvents();
+    window().play_frames(10);
+    ASSERT_EQ(window().layout_views().size(), 2u);
+    auto* cause = qobject_cast<WorldView*>(window().layout_views()[0]);
+    ASSERT_NE(cause, nullptr);
+    ASSERT_TRUE(cause->isVisible());
+    EXPECT_LT(cause->width(), 1000);  // the narrow half that used to cut the caption
+    expect_clear_texts(*cause, presentation ? "layout, presentation" : "layout");
+  }
+}
+
+TEST_F(WorldViewTest, TextsOfASceneWorldStayClear) {
+  show_world(true);
+  ASSERT_TRUE(window().model()->animation()->set_source({"scene", "four-cubes", "circle"}))
+      << window().message().toStdString();
+  window().play_frames(5);
+  ASSERT_TRUE(world().scene_mode());
+  world().render_image();
+  QString problems;
+  for (const QString& p : world().text_problems()) problems += p + QStringLiteral("; ");
+  EXPECT_TRUE(problems.isEmpty()) << problems.toStdString();
+}
+
+TEST_F(WorldViewTest, RendersOncePerChangeAndNeverWithoutOne) {
+  show_world(false);
+  world().render_image();
+  const int rendered = world().render_count();
+  world().render_image();
+  QApplication::processEvents();
+  EXPECT_EQ(world().render_count(), rendered);  // nothing changed: the same picture
+  window().play_frames(1);
+  world().render_image();
+  QApplication::processEvents();
+  EXPECT_EQ(world().render_count(), rendered + 1);  // one frame, one render
+}
+
+TEST_F(WorldViewTest, DraggingOrbitsPanningSlidesAndTheWheelZooms) {
+  show_world(false);
+  auto* canvas = world().findChild<ImageCanvas*>(QStringLiteral("world_canvas"));
+  ASSERT_NE(canvas, nullptr);
+  vtkCamera* camera = world().renderer()->GetActiveCamera();
+  const QImage before = world().render_image();
+  const double distance = camera->GetDistance();
+  double position[3];
+  camera->GetPosition(position);
+  const auto drag = [canvas](Qt::MouseButton button, Qt::KeyboardModifiers modifiers) {
+    const QPointF from(canvas->width() / 2.0, canvas->height() / 2.0), to = from + QPointF(120, 40);
+    QMouseEvent press(QEvent::MouseButtonPress, from, button, button, modifiers);
+    QMouseEvent move(QEvent::MouseMove, to, Qt::NoButton, button, modifiers);
+    QMouseEvent release(QEvent::MouseButtonRelease, to, button, Qt::NoButton, modifiers);
+    for (QMouseEvent* e : {&press, &move, &release}) QApplication::sendEvent(canvas, e);
+  };
+  drag(Qt::LeftButton, Qt::NoModifier);  // orbit: about the focal point, at the same distance
+  EXPECT_NEAR(camera->GetDistance(), distance, 1e-9 * distance);
+  EXPECT_GT(
+      std::hypot(camera->GetPosition()[0] - position[0], camera->GetPosition()[1] - position[1],
+                 camera->GetPosition()[2] - position[2]),
+      0.1 * distance);
+  EXPECT_GT(changed_fraction(before, world().render_image()), 0.01);
+  double focal[3];
+  camera->GetFocalPoint(focal);
+  drag(Qt::LeftButton, Qt::ShiftModifier);  // pan: the focal point moves, the distance stays
+  EXPECT_NEAR(camera->GetDistance(), distance, 1e-6 * distance);
+  EXPECT_GT(std::hypot(camera->GetFocalPoint()[0] - focal[0], camera->GetFocalPoint()[1] - focal[1],
+                       camera->GetFocalPoint()[2] - focal[2]),
+            1e-3 * distance);
+  QWheelEvent wheel(QPointF(100, 100), QPointF(canvas->mapToGlobal(QPoint(100, 100))), QPoint(),
+                    QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(canvas, &wheel);  // one notch away from the user: 1.1^2 closer
+  EXPECT_NEAR(camera->GetDistance(), distance / 1.21, 1e-6 * distance);
 }
 
 }  // namespace

@@ -1,0 +1,33 @@
+// Where the texts painted over a 3D picture go: labels placed next to the points they name
+// without covering each other or the caption, and captions wrapped to the picture's width
+// so that no line is cut. Plain Qt geometry, no VTK; the world view (gui/views/world_view.h)
+// paints what this places, and gui/adapters/painted_text.h checks the result.
+//
+// Units: pixels of the picture, top-left origin, y down.
+#pragma once
+
+#include <QFontMetricsF>
+#include <QPointF>
+#include <QRectF>
+#include <QSizeF>
+#include <QString>
+#include <vector>
+
+namespace oflab {
+
+// Boxes for labels of `sizes` naming the points `anchors` (same length), in order: each label
+// takes the first of its candidate places that stays inside `area` and overlaps neither a
+// box in `taken` nor a label placed before it. The candidates are the four corners next to
+// the anchor, `gap` pixels away (right and above first), then the same places pushed up or
+// down by whole label heights, nearest first; a label that fits nowhere takes the candidate
+// that overlaps least. Boxes are clamped into `area` (a label larger than the area is
+// aligned with its top-left corner).
+std::vector<QRectF> place_labels(const std::vector<QSizeF>& sizes,
+                                 const std::vector<QPointF>& anchors, const QRectF& area,
+                                 std::vector<QRectF> taken, double gap = 6.0);
+
+// The words of `text` in lines no wider than `width` pixels as `metrics` measures them
+// (a single word wider than `width` stands alone on its line); "\n" starts a new line.
+std::vector<QString> wrap_text(const QString& text, const QFontMetricsF& metrics, double width);
+
+}  // namespace oflab

@@ -1,0 +1,108 @@
+#include "views/world_texts.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+#include <algorithm>
+#include <cmath>
+
+#include "adapters/label_layout.h"
+#include "adapters/paint_helpers.h"
+
+namespace oflab {
+namespace {
+
+constexpr double kMargin = 10.0;  // between the texts and the canvas's edges, pixels
+constexpr double kGap = 6.0;      // between a label and its point, pixels
+
+QFont sized(const QFont& base, int px, bool bold) {
+  QFont font = base;
+  font.setPixelSize(std::max(1, px));
+  font.setBold(bold);
+  return font;
+}
+
+// The point of `box` nearest to `p`.
+QPointF nearest_on(const QRectF& box, const QPointF& p) {
+  return {std::clamp(p.x(), box.left(), box.right()), std::clamp(p.y(), box.top(), box.bottom())};
+}
+
+}  // namespace
+
+void WorldTexts::lay_out(const QSize& size, const QFont& base, const ViewTheme& theme,
+                         const Projector& project) {
+  drawn_.clear();
+  patch_ = to_qcolor(theme.background);
+  patch_.setAlpha(220);  // the lines and textures behind show through, faintly
+  leader_width_ = theme.line_width;
+  const QColor text_colour = to_qcolor(theme.text);
+  std::vector<QRectF> taken;
+
+  const QFont legend_font = sized(base, theme.font_size, true);
+  const QFontMetricsF legend_metrics(legend_font);
+  const QString legend_text = QString::fromStdString(legend);
+  const QRectF legend_box(kMargin, kMargin, legend_metrics.horizontalAdvance(legend_text),
+                          legend_metrics.height());
+  drawn_.push_back({legend_text, legend_box, legend_font, text_colour, false, {}});
+  taken.push_back(legend_box);
+
+  const QFont caption_font = sized(base, theme.label_size, false);
+  const QFontMetricsF caption_metrics(caption_font);
+  const std::vector<QString> lines =
+      wrap_text(QString::fromStdString(caption), caption_metrics, size.width() - 2.0 * kMargin);
+  double top = size.height() - kMargin - caption_metrics.height() * double(lines.size());
+  for (const QString& line : lines) {
+    const QRectF box(kMargin, top, caption_metrics.horizontalAdvance(line),
+                     caption_metrics.height());
+    if (!line.isEmpty()) {
+      drawn_.push_back({line, box, caption_font, text_colour, false, {}});
+      taken.push_back(box);
+    }
+    top += caption_metrics.height();
+  }
+
+  const QFont label_font = sized(base, theme.label_size, true);
+  const QFontMetricsF label_metrics(label_font);
+  std::vector<QSizeF> sizes;
+  std::vector<QPointF> anchors;
+  std::vector<const WorldLabel*> placed;
+  for (const WorldLabel& label : labels) {
+    QPointF at;
+    if (!label.shown || label.text.empty() || !project(label.at, &at)) continue;
+    const QString text = QString::fromStdString(label.text);
+    sizes.emplace_back(label_metrics.horizontalAdvance(text), label_metrics.height());
+    anchors.push_back(at);
+    placed.push_back(&label);
+  }
+  const QRectF area(kMargin, kMargin, size.width() - 2.0 * kMargin, size.height() - 2.0 * kMargin);
+  const std::vector<QRectF> boxes = place_labels(sizes, anchors, area, taken, kGap);
+  for (size_t k = 0; k < boxes.size(); ++k) {
+    const QPointF near = nearest_on(boxes[k], anchors[k]);
+    const bool moved =
+        std::hypot(near.x() - anchors[k].x(), near.y() - anchors[k].y()) > 2.0 * kGap + 1.0;
+    // A shade further from the background than the arrow's own colour: the hue still names
+    // the arrow, and the text reads from the back of a room (the palette's purple and
+    // vermillion are too light on presentation mode's background, its blue too dark on the
+    // normal one's).
+    const QColor colour = theme.presentation ? to_qcolor(placed[k]->colour).darker(140)
+                                             : to_qcolor(placed[k]->colour).lighter(140);
+    drawn_.push_back(
+        {QString::fromStdString(placed[k]->text), boxes[k], label_font, colour, moved, anchors[k]});
+  }
+}
+
+void WorldTexts::paint(QPainter& painter) const {
+  painter.save();
+  for (const Drawn& d : drawn_) {
+    if (d.leader) {
+      painter.setPen(QPen(d.colour, leader_width_));
+      painter.drawLine(d.anchor, nearest_on(d.box, d.anchor));
+    }
+    painter.fillRect(d.box, patch_);
+    painter.setFont(d.font);
+    painter.setPen(d.colour);
+    painter.drawText(QPointF(d.box.left(), d.box.top() + QFontMetricsF(d.font).ascent()), d.text);
+  }
+  painter.restore();
+}
+
+}  // namespace oflab

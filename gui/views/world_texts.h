@@ -1,0 +1,75 @@
+// The texts of the world view (gui/views/world_view.h), painted by Qt over VTK's picture:
+// the labels naming points of the 3D world (eye, image plane, U, N, V, Omega), the legend at
+// the top left and the caption at the bottom. Labels are placed next to the projection of
+// their point so that none covers another, the legend or the caption
+// (gui/adapters/label_layout.h); a label pushed away from its point gets a leader line. The
+// caption is wrapped to the picture's width, so no line is cut.
+//
+// Units: canvas pixels (the picture's), top-left origin, y down; label points in world
+// units of the world view's frame.
+#pragma once
+
+#include <QColor>
+#include <QFont>
+#include <QPointF>
+#include <QRectF>
+#include <QSize>
+#include <QString>
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "adapters/view_theme.h"
+#include "flow/geometry.h"
+
+class QPainter;
+
+namespace oflab {
+
+// A label naming a point of the world.
+struct WorldLabel {
+  std::string text;
+  Vec3 at{0.0};  // world units
+  RgbF colour{0.0, 0.0, 0.0};
+  bool shown = true;
+};
+
+// The labels, in the order they are placed (the first placed keeps its wanted place).
+enum WorldLabelId { kEyeLabel, kImageLabel, kUpLabel, kNormalLabel, kVelocityLabel, kOmegaLabel };
+constexpr int kWorldLabelCount = 6;
+
+class WorldTexts {
+ public:
+  // Where a world point lands on the canvas (canvas pixels); false when it is behind the
+  // camera or outside the canvas (its label is then left out).
+  using Projector = std::function<bool(const Vec3& world, QPointF* canvas)>;
+
+  std::array<WorldLabel, kWorldLabelCount> labels;
+  std::string caption;  // paragraphs separated by "\n"
+  std::string legend = "World: the cause of the flow";
+
+  // Places every text for a canvas of `size` (not empty) in `base`'s family at the theme's
+  // sizes (legend font_size bold, labels label_size bold, caption label_size), the labels at
+  // the points `project` gives.
+  void lay_out(const QSize& size, const QFont& base, const ViewTheme& theme,
+               const Projector& project);
+  // Paints the texts as last laid out, each over a translucent patch of the theme's
+  // background so that it reads over lines and textures.
+  void paint(QPainter& painter) const;
+
+ private:
+  struct Drawn {
+    QString text;
+    QRectF box;  // from the ascent to the descent, as wide as the text's advance
+    QFont font;
+    QColor colour;
+    bool leader = false;  // a line from `anchor` to the box
+    QPointF anchor;
+  };
+  std::vector<Drawn> drawn_;
+  QColor patch_;
+  double leader_width_ = 1.0;
+};
+
+}  // namespace oflab
