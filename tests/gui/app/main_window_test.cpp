@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <fstream>
 
+#include "../../analysis/child_process.h"
 #include "app/view_table.h"
-#include "child_process.h"
 #include "flow/flow_field.h"
 #include "image_checks.h"
 #include "models/animation_model.h"
