@@ -50,6 +50,15 @@ double largest_flow(const SceneModel& scene, const std::string& key) {
   return largest;
 }
 
+// The compared run of the policy named `name`, at the model's frame; nullptr when no
+// compared policy has that name.
+const ComparedRun* compared_run(WindowModel& model, const std::string& name) {
+  for (const ComparedRun& run : model.comparison().runs()) {
+    if (run.policy->name == name) return &run;
+  }
+  return nullptr;
+}
+
 // Levels and errors of frames 1 .. now of the engine or of a compared policy: calls
 // `each(levels, error)` per frame; false when `of` names no such run.
 template <class Each>
@@ -60,14 +69,12 @@ bool for_each_played(WindowModel& model, const std::string& of, Each each) {
     }
     return true;
   }
-  for (const ComparedRun& run : model.comparison().runs()) {
-    if (run.policy->name != of) continue;
-    for (const ComparedFrame& f : run.history) {
-      if (f.frame > 0) each(f.levels, f.max_measured_error_px);
-    }
-    return true;
+  const ComparedRun* run = compared_run(model, of);
+  if (!run) return false;
+  for (const ComparedFrame& f : run->history) {
+    if (f.frame > 0) each(f.levels, f.max_measured_error_px);
   }
-  return false;
+  return true;
 }
 
 double level_share(WindowModel& model, const LessonClaim& claim) {
@@ -97,13 +104,11 @@ bool shown_run(WindowModel& model, const std::string& of, const AnimationFrame**
     *animator = model.animation()->animator();
     return *animator != nullptr;
   }
-  for (const ComparedRun& run : model.comparison().runs()) {
-    if (run.policy->name != of || !run.animator) continue;
-    *frame = &run.last;
-    *animator = run.animator.get();
-    return true;
-  }
-  return false;
+  const ComparedRun* run = compared_run(model, of);
+  if (!run || !run->animator) return false;
+  *frame = &run->last;
+  *animator = run->animator.get();
+  return true;
 }
 
 double hole_pixels(WindowModel& model, const std::string& of) {
@@ -184,12 +189,8 @@ double threshold_crossings(MainWindow* window, const LessonClaim& claim) {
 // The pixels compared policy `of` has written over frames 0 .. now (its caption's "run N px")
 // over those of policy `over`.
 double run_pixels_ratio(WindowModel& model, const LessonClaim& claim) {
-  const ComparedRun* of = nullptr;
-  const ComparedRun* over = nullptr;
-  for (const ComparedRun& run : model.comparison().runs()) {
-    if (run.policy->name == claim.of) of = &run;
-    if (run.policy->name == claim.over) over = &run;
-  }
+  const ComparedRun* of = compared_run(model, claim.of);
+  const ComparedRun* over = compared_run(model, claim.over);
   if (!of || !over || over->pixels_written <= 0) return kUnknown;
   return double(of->pixels_written) / double(over->pixels_written);
 }

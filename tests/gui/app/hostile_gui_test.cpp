@@ -101,6 +101,17 @@ TEST(HostileGuiInputs, DegeneratePlanesAndCamerasEndWithin60sAnd2GB) {
   fs::remove_all(dir);
 }
 
+// oflab asked to play `scene` with viewer script `viewer` and save a screenshot
+// (dir/shot.png) of its animation view, under the hostile-input limits (2 GB, 60 s).
+testing::ChildResult screenshot_of_scene(const fs::path& scene, const std::string& viewer,
+                                         const fs::path& dir) {
+  return testing::run_child(
+      OFLAB_GUI_BINARY,
+      {"--scene", scene.string(), "--script", viewer, "--view", "animation", "--screenshot",
+       (dir / "shot.png").string(), "--frames", "2", "--size", "640", "480"},
+      dir, 2L << 30, testing::kHostileTimeLimitSeconds);
+}
+
 // A scene the CLI refuses is refused by the window with exit status 2 and the CLI's message
 // (the 1000 repeated polygons, over the scene engine's memory limit at the walk
 // viewer's 1280 x 720): the same reader and the same check, not a screenshot of the default
@@ -112,11 +123,7 @@ TEST(HostileGuiInputs, ASceneTheCliRefusesIsExitTwoWithTheCliMessage) {
   const std::string why =
       "the scene's 1000 polygons at 1280 x 720 px may hold 7094 MiB of layers and textures, "
       "more than 768 MiB (the scene engine memory limit)\n";
-  const testing::ChildResult gui = testing::run_child(
-      OFLAB_GUI_BINARY,
-      {"--scene", scene.string(), "--script", "walk", "--view", "animation", "--screenshot",
-       (dir / "shot.png").string(), "--frames", "2", "--size", "640", "480"},
-      dir, 2L << 30, testing::kHostileTimeLimitSeconds);
+  const testing::ChildResult gui = screenshot_of_scene(scene, "walk", dir);
   EXPECT_EQ(gui.code, 2) << gui.err;
   EXPECT_FALSE(fs::exists(dir / "shot.png"));
   ASSERT_GE(gui.err.size(), why.size()) << gui.err;
@@ -134,11 +141,7 @@ TEST(HostileGuiInputs, ScenesOverTheVertexAndDetailCapsAreExitTwoWithOneLine) {
       {testing::write_intersecting_circles_scene(dir), "vertices in all (the limit)"},
       {testing::write_detailed_impostor_scene(dir), "(the scene impostor detail limit)"}};
   for (const auto& [scene, limit] : cases) {
-    const testing::ChildResult gui = testing::run_child(
-        OFLAB_GUI_BINARY,
-        {"--scene", scene.string(), "--script", "circle", "--view", "animation", "--screenshot",
-         (dir / "shot.png").string(), "--frames", "2", "--size", "640", "480"},
-        dir, 2L << 30, testing::kHostileTimeLimitSeconds);
+    const testing::ChildResult gui = screenshot_of_scene(scene, "circle", dir);
     EXPECT_EQ(gui.code, 2) << gui.err;
     EXPECT_FALSE(fs::exists(dir / "shot.png"));
     EXPECT_NE(gui.err.find(limit), std::string::npos) << gui.err;
