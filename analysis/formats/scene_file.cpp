@@ -26,14 +26,18 @@ std::string resolve_texture(const std::string& file, const std::string& base_dir
   return p.is_absolute() ? file : (fs::path(base_dir) / p).string();
 }
 
-void read_textures(const json& root, const Where& top, const std::string& base_dir, Scene& scene) {
+// Reads the "textures" object into scene.textures and returns, for every entry's name, the
+// index of its image. Each file is read and decoded once: entries naming the same file (by
+// its path after links) share the first one's image, which is listed once, under the
+// first entry's name.
+std::map<std::string, int> read_textures(const json& root, const Where& top,
+                                         const std::string& base_dir, Scene& scene) {
   const json& textures = member(root, top, "textures");
   if (!textures.is_object() || textures.empty()) {
     top.fail("textures", "must be an object naming at least one texture file");
   }
-  // Each file is read and decoded once: entries naming the same file (by its path after
-  // links) copy the first one's image instead of decoding it again.
-  std::map<std::string, std::size_t> decoded;
+  std::map<std::string, int> decoded;  // file after links -> image index
+  std::map<std::string, int> by_name;
   for (const auto& [name, file] : textures.items()) {
     const Where w{top.origin, "texture '" + name + "'"};
     if (!file.is_string()) w.fail("", "the file name must be a string");
@@ -42,27 +46,29 @@ void read_textures(const json& root, const Where& top, const std::string& base_d
     const fs::path real = fs::canonical(path, ec);
     const std::string key = ec ? path : real.string();
     if (const auto it = decoded.find(key); it != decoded.end()) {
-      scene.textures.push_back(scene.textures[it->second]);
-    } else {
-      try {
-        scene.textures.push_back(read_image(path));
-      } catch (const ImageFileError& e) {
-        w.fail("", e.what());
-      }
-      decoded[key] = scene.textures.size() - 1;
+      by_name[name] = it->second;
+      continue;
+    }
+    try {
+      scene.textures.push_back(read_image(path));
+    } catch (const ImageFileError& e) {
+      w.fail("", e.what());
     }
     if (scene.textures.back().empty()) w.fail("", "the image '" + path + "' is empty");
     scene.texture_names.push_back(name);
+    decoded[key] = by_name[name] = static_cast<int>(scene.textures.size()) - 1;
   }
+  return by_name;
 }
 
-int texture_index(const json& obj, const Where& w, const Scene& scene,
+// The image index of the texture an object names ("texture", or `fallback`).
+int texture_index(const json& obj, const Where& w, const std::map<std::string, int>& textures,
                   const std::string& fallback) {
   const std::string name = obj.contains("texture") ? text(obj, w, "texture") : fallback;
   if (name.empty()) w.fail("texture", "is missing and the scene names no default 'texture'");
-  const auto it = std::find(scene.texture_names.begin(), scene.texture_names.end(), name);
-  if (it == scene.texture_names.end()) w.fail("texture", "'" + name + "' is not in 'textures'");
-  return static_cast<int>(it - scene.texture_names.begin());
+  const auto it = textures.find(name);
+  if (it == textures.end()) w.fail("texture", "'" + name + "' is not in 'textures'");
+  return it->second;
 }
 
 // The "content" of an object (core/content/layer_content.h), `fallback` when it has none.
@@ -125,9 +131,9 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
   Scene scene;
   scene.name = optional_text(root, top, "name", fs::path(origin).stem().string());
   scene.description = optional_text(root, top, "description", "");
-  read_textures(root, top, base_dir, scene);
+  const std::map<std::string, int> textures = read_textures(root, top, base_dir, scene);
   const std::string default_texture = optional_text(root, top, "texture", "");
-  if (!default_texture.empty()) (void)texture_index(root, top, scene, "");
+  if (!default_texture.empty()) (void)texture_index(root, top, textures, "");
   const ContentKind default_content = content_kind(root, top, ContentKind::kTexture);
   if (root.contains("content_quality")) {
     scene.content_quality = limited_integer(root, top, "content_quality", limits::kContentQuality);
@@ -150,7 +156,7 @@ Scene parse_scene(const std::string& text_in, const std::string& origin,
     }
     ScenePolygon p = by_vertices ? read_vertices(obj, w) : read_rectangle(obj, w);
     p.name = name;
-    p.texture = texture_index(obj, w, scene, default_texture);
+    p.texture = texture_index(obj, w, textures, default_texture);
     p.content = content_kind(obj, w, default_content);
     const PolygonProblem problem = scene_polygon_problem(scene, p);
     if (!problem.field.empty()) w.fail(problem.field, problem.message);

@@ -44,8 +44,10 @@ struct ScenePolygon {
 struct Scene {
   std::string name;
   std::string description;
-  std::vector<Image> textures;             // premultiplied RGBA
-  std::vector<std::string> texture_names;  // same length as textures (for reports)
+  std::vector<Image> textures;  // premultiplied RGBA
+  // Same length as textures: a name of each image (a scene file's entries naming one file
+  // share one image, listed under the first entry's name).
+  std::vector<std::string> texture_names;
   std::vector<ScenePolygon> polygons;
   // Quality of the polygons' lit contents (samples per pixel, detail; LayerContent::quality),
   // 0 when the scene does not say (then the run's settings decide).

@@ -96,16 +96,23 @@ double scene_memory_bytes(const Scene& scene, const Camera& camera) {
   return bytes;
 }
 
-std::string scene_memory_problem(const Scene& scene, const Camera& camera) {
-  const double mib = scene_memory_bytes(scene, camera) / (1024.0 * 1024.0);
+std::string scene_memory_limit_problem(double bytes, const std::string& subject,
+                                       const std::string& what) {
+  const double mib = bytes / (1024.0 * 1024.0);
   const Limit& limit = limits::kSceneEngineMemory;
   if (limit.allows(mib)) return "";
   std::ostringstream text;
-  text << "the scene's " << scene.polygons.size() << " polygons at " << camera.width << " x "
-       << camera.height << " px may hold " << static_cast<long>(std::ceil(mib))
-       << " MiB of layers and textures, more than " << limit.maximum << " MiB (the " << limit.what
-       << " limit)";
+  text << subject << " may hold " << static_cast<long>(std::ceil(mib)) << " MiB of " << what
+       << ", more than " << limit.maximum << " MiB (the " << limit.what << " limit)";
   return text.str();
+}
+
+std::string scene_memory_problem(const Scene& scene, const Camera& camera) {
+  std::ostringstream subject;
+  subject << "the scene's " << scene.polygons.size() << " polygons at " << camera.width << " x "
+          << camera.height << " px";
+  return scene_memory_limit_problem(scene_memory_bytes(scene, camera), subject.str(),
+                                    "layers and textures");
 }
 
 double scene_impostor_windows(const Scene& scene, int quality) {

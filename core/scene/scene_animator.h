@@ -101,6 +101,11 @@ double scene_memory_bytes(const Scene& scene, const Camera& camera);
 // naming the figure and the limit: "the scene's 1000 polygons at 1280 x 720 px may hold
 // 10240 MiB of layers and textures, more than 768 MiB (the scene engine memory limit)".
 std::string scene_memory_problem(const Scene& scene, const Camera& camera);
+// The phrase of scene_memory_problem for any renderer of a scene: "" when `bytes` is within
+// limits::kSceneEngineMemory; otherwise "<subject> may hold N MiB of <what>, more than
+// 768 MiB (the scene engine memory limit)", N the bytes in MiB rounded up.
+std::string scene_memory_limit_problem(double bytes, const std::string& subject,
+                                       const std::string& what);
 
 // The facade windows the scene's impostor polygons draw when all of them re-render at
 // content quality `quality` (1 .. kMaxContentQuality): (1 + q) storeys by (1 + 2q) bays per

@@ -6,10 +6,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "engine/engine.h"
 #include "image/composite.h"
+#include "scene/scene_animator.h"
 
 namespace oflab {
 namespace {
@@ -78,6 +80,39 @@ ViewerStep viewer_step(const RigidMotion& motion) {
   return step;
 }
 
+double scene_shifting_memory_bytes(const Scene& scene, const Camera& camera, double guard_band,
+                                   int occupied_slices) {
+  double bytes = 4.0 * camera.width * camera.height;  // the frame
+  for (const Image& t : scene.textures) bytes += 4.0 * t.pixel_count();
+  for (const ScenePolygon& p : scene.polygons) {
+    const bool known = p.texture >= 0 && p.texture < static_cast<int>(scene.textures.size());
+    if (known) bytes += 4.0 * scene.textures[static_cast<std::size_t>(p.texture)].pixel_count();
+  }
+  if (occupied_slices > 0) {
+    const double grown = 1.0 + 2.0 * guard_band;
+    bytes += (occupied_slices + 2.0) * 4.0 * grown * camera.width * grown * camera.height;
+  }
+  return bytes;
+}
+
+namespace {
+
+// The phrase of scene_memory_limit_problem for a scene-shifting renderer.
+std::string shifting_memory_problem(const Scene& scene, const Camera& camera, double guard_band,
+                                    int occupied_slices) {
+  std::ostringstream subject;
+  subject << "scene shifting of the scene's " << scene.polygons.size() << " polygons";
+  if (occupied_slices > 0) {
+    subject << " in " << occupied_slices << (occupied_slices == 1 ? " slice" : " slices");
+  }
+  subject << " at " << camera.width << " x " << camera.height << " px";
+  return scene_memory_limit_problem(
+      scene_shifting_memory_bytes(scene, camera, guard_band, occupied_slices), subject.str(),
+      occupied_slices > 0 ? "slice layers and textures" : "textures");
+}
+
+}  // namespace
+
 SceneShiftingRenderer::SceneShiftingRenderer(const Scene& scene, const Camera& camera,
                                              const SceneShiftingSettings& settings)
     : scene_(scene), camera_(camera), settings_(settings) {
@@ -102,6 +137,12 @@ SceneShiftingRenderer::SceneShiftingRenderer(const Scene& scene, const Camera& c
       throw std::invalid_argument("polygon '" + p.name + "': " + problem.field + ": " +
                                   problem.message);
     }
+  }
+  if (const std::string problem = shifting_memory_problem(scene, camera, settings.guard_band, 0);
+      !problem.empty()) {
+    throw std::invalid_argument(problem);
+  }
+  for (const ScenePolygon& p : scene.polygons) {
     const Image& texture = scene.textures[p.texture];
     std::vector<Vec2> texels;
     for (const Vec2& uv : polygon_outline(p)) {
@@ -137,12 +178,23 @@ void SceneShiftingRenderer::cut_slices(const ViewerPose& view) {
   params.near = settings_.near > 0.0 ? settings_.near : (std::isfinite(nearest) ? nearest : 1.0);
   params.max_slices = settings_.max_slices;
   slices_ = scene_slices(params);
-  layers_.assign(slices_.size(), SliceLayer{});
-  polygon_slice_.assign(n, -1);
+  std::vector<int> slice_of(n, -1);
+  std::vector<bool> occupied(slices_.size(), false);
   for (int i = 0; i < n; ++i) {
     if (depth[i] <= kMinDepth) continue;
-    polygon_slice_[i] = std::max(0, slice_index_at_depth(slices_, depth[i]));
-    layers_[polygon_slice_[i]].polygons.push_back(i);
+    slice_of[i] = std::max(0, slice_index_at_depth(slices_, depth[i]));
+    occupied[slice_of[i]] = true;
+  }
+  const int occupied_slices = static_cast<int>(std::count(occupied.begin(), occupied.end(), true));
+  if (const std::string problem =
+          shifting_memory_problem(scene_, camera_, settings_.guard_band, occupied_slices);
+      !problem.empty()) {
+    throw std::invalid_argument(problem);
+  }
+  layers_.assign(slices_.size(), SliceLayer{});
+  polygon_slice_ = slice_of;
+  for (int i = 0; i < n; ++i) {
+    if (polygon_slice_[i] >= 0) layers_[polygon_slice_[i]].polygons.push_back(i);
   }
   for (std::size_t s = 0; s < layers_.size(); ++s) {
     std::vector<int>& list = layers_[s].polygons;

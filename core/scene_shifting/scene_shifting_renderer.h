@@ -89,10 +89,21 @@ struct SceneShiftingTotals {
   long shifted_layers = 0;             // occupied slices shifted or scaled, after the first
 };
 
+// The bytes a scene-shifting renderer may hold for `scene` seen through `camera` with
+// `occupied_slices` slices holding polygons, estimated before anything is allocated, 4
+// bytes a pixel: the scene's textures, per polygon its copy of its texture, the frame, and per
+// occupied slice plus two (the compositing scratch and the image a rebuild or scale makes before it
+// replaces the old layer) a layer as large as the frame grown by the guard band on every
+// side ((1 + 2 guard_band)^2 camera images). occupied_slices 0: the textures and the frame.
+double scene_shifting_memory_bytes(const Scene& scene, const Camera& camera, double guard_band,
+                                   int occupied_slices);
+
 class SceneShiftingRenderer {
  public:
   // `scene` must outlive the renderer. Throws std::invalid_argument for a polygon problem
-  // (scene_polygon_problem), an invalid camera or a setting out of range.
+  // (scene_polygon_problem), an invalid camera, a setting out of range, or when the
+  // polygons' texture copies and the frame are over limits::kSceneEngineMemory
+  // (scene_shifting_memory_bytes, checked before anything is allocated).
   SceneShiftingRenderer(const Scene& scene, const Camera& camera,
                         const SceneShiftingSettings& settings);
   ~SceneShiftingRenderer();
@@ -101,8 +112,10 @@ class SceneShiftingRenderer {
 
   // Frame 0 seen from `view`: cuts the slices and renders every layer. Throws
   // std::invalid_argument when a polygon in front of the viewer is not parallel to the image
-  // plane (its front normal within 1e-6 of -Z in the viewer frame), or the slicing needs
-  // more than settings.max_slices slices. The report maps the slice updates onto levels
+  // plane (its front normal within 1e-6 of -Z in the viewer frame), the slicing needs
+  // more than settings.max_slices slices, or the occupied slices' layers would be over
+  // limits::kSceneEngineMemory (scene_shifting_memory_bytes, checked after the cut and
+  // before any layer is rendered). The report maps the slice updates onto levels
   // (see "Levels" above); time_ms and update_ms are the slice report's time_ms.
   AnimationFrame start(const ViewerPose& view);
 

@@ -16,8 +16,12 @@
 #include <thread>
 
 #include "flow/geometry.h"
+#include "formats/atomic_file.h"
 #include "formats/datasets.h"
+#include "formats/image_io.h"
 #include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
+#include "generators/cube_grid.h"
 
 namespace oflab::testing {
 namespace {
@@ -157,6 +161,81 @@ fs::path write_repeated_polygon_scene(const fs::path& dir) {
   for (int i = 0; i < 1000; ++i) scene["polygons"].push_back(square);
   const fs::path file = dir / "repeated-polygon.json";
   std::ofstream(file) << scene.dump(2);
+  return file;
+}
+
+fs::path write_large_obj(const fs::path& dir) {
+  const int n = 175;
+  const fs::path file = dir / "large.obj";
+  std::ofstream out(file);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      out << "v " << double(i) / n - 0.5 << ' ' << double(j) / n - 0.5 << ' '
+          << 0.01 * std::sin(0.3 * i + 0.2 * j) << '\n';
+    }
+  }
+  for (int j = 0; j + 1 < n; ++j) {
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i + 1, b = a + 1, c = a + n, d = c + 1;
+      out << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+    }
+  }
+  return file;
+}
+
+fs::path write_cube_grid_scene(const fs::path& dir) {
+  Scene scene = make_cube_grid(20000);
+  scene.texture_names = {"tile"};
+  const std::string tile = single_square_scene()["textures"]["tile"];
+  return write_scene(scene_to_json(scene, {tile}), dir / "cubes-20000.json");
+}
+
+fs::path write_random_squares_scene(const fs::path& dir) {
+  nlohmann::json scene = single_square_scene();
+  const nlohmann::json square = scene["polygons"][0];
+  scene["polygons"] = nlohmann::json::array();
+  std::mt19937 rng(1);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> position(-1.0, 1.0);
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 n = glm::normalize(Vec3(normal(rng), normal(rng), normal(rng)));
+    const Vec3 up = std::abs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    nlohmann::json p = square;
+    p["name"] = "square " + std::to_string(i);
+    p["centre"] = {position(rng), position(rng), position(rng)};
+    p["normal"] = {n.x, n.y, n.z};
+    p["up"] = {up.x, up.y, up.z};
+    scene["polygons"].push_back(p);
+  }
+  return write_scene(scene, dir / "random-squares.json");
+}
+
+fs::path write_shared_texture_scene(const fs::path& dir) {
+  const fs::path image = fs::absolute(dir / "4096.png");
+  write_png(image.string(), Image(4096, 4096, Pixel{32, 64, 128, 255}), Overwrite::kReplace);
+  nlohmann::json scene = single_square_scene();
+  const nlohmann::json square = scene["polygons"][0];
+  scene["textures"] = nlohmann::json::object();
+  scene["polygons"] = nlohmann::json::array();
+  for (int i = 0; i < 10; ++i) {
+    const std::string name = "t" + std::to_string(i);
+    scene["textures"][name] = image.string();
+    nlohmann::json p = square;
+    p["name"] = "square " + std::to_string(i);
+    p["texture"] = name;
+    p["centre"] = {1.1 * i, 0.0, 0.0};
+    scene["polygons"].push_back(p);
+  }
+  scene["texture"] = "t0";
+  return write_scene(scene, dir / "shared-texture.json");
+}
+
+fs::path write_large_camera_viewer_script(const fs::path& dir) {
+  nlohmann::json script =
+      nlohmann::json::parse(std::ifstream(resolve_viewer_script_path("train-sideways")));
+  script["camera"] = {{"focal_px", 400}, {"image", {4096, 4096}}};
+  const fs::path file = dir / "train-sideways-4096.json";
+  std::ofstream(file) << script.dump();
   return file;
 }
 

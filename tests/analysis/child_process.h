@@ -53,4 +53,21 @@ std::filesystem::path write_intersecting_circles_scene(const std::filesystem::pa
 // content quality 256.
 std::filesystem::path write_detailed_impostor_scene(const std::filesystem::path& dir);
 
+// The large inputs (points 1 to 3), written into `dir`; each must be refused up
+// front by a limit, or played within 60 s and 2 GB:
+// - an OBJ file of 60 552 triangles (a 175 x 175 grid of vertices), about 2 MB;
+std::filesystem::path write_large_obj(const std::filesystem::path& dir);
+// - make-scene's largest output, `make-scene --cubes 20000` (written by the same generator
+//   and writer, the tile texture by absolute path);
+std::filesystem::path write_cube_grid_scene(const std::filesystem::path& dir);
+// - 3000 unit squares at random positions in a box of side 2 and random orientations
+//   (seeded), cutting each other;
+std::filesystem::path write_random_squares_scene(const std::filesystem::path& dir);
+// - ten texture entries naming one 4096 x 4096 PNG (one colour, about 70 KB), each on a
+//   square of its own.
+std::filesystem::path write_shared_texture_scene(const std::filesystem::path& dir);
+// - the train-sideways viewer script with a camera of 4096 x 4096 px (focal length 400 px):
+//   scene shifting of the train-window scene then needs layers of up to 576 MiB a slice.
+std::filesystem::path write_large_camera_viewer_script(const std::filesystem::path& dir);
+
 }  // namespace oflab::testing

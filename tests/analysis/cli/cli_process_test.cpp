@@ -200,6 +200,60 @@ TEST(HostileInputs, CapsThatMultiplyAreRefusedUpFrontWithin60sAnd2GB) {
   fs::remove_all(dir);
 }
 
+// The issue's large inputs (points 1 to 3): an OBJ file of 60 552 faces, make-scene's
+// largest output (`--cubes 20000`, written here by oflab-cli itself), 3000 random squares
+// cutting each other, and ten texture entries naming one 4096 x 4096 PNG (and scene
+// shifting at a camera of 4096 x 4096 px). Each is played
+// with the walk viewer by the scene engine (a reuse policy) and by scene shifting: each run
+// ends within 60 s and 2 GB with exit 0 or 2 and one line, refused up front by a limit
+// (the memory of the scene engine or of scene shifting, the BSP caps) or played.
+TEST(HostileInputs, TheIssuesLargeScenesEndWithin60sAnd2GBInBothSceneModes) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-large");
+  const fs::path cubes = dir / "cubes.json";
+  const testing::ChildResult made = testing::run_child(
+      OFLAB_CLI_BINARY, {"make-scene", "--cubes", "20000", "--out", cubes.string()}, dir,
+      testing::kHostileAddressSpace, testing::kHostileTimeLimitSeconds);
+  ASSERT_EQ(made.code, 0) << made.err;
+  const fs::path scenes[] = {testing::write_large_obj(dir), cubes,
+                             testing::write_random_squares_scene(dir),
+                             testing::write_shared_texture_scene(dir)};
+  for (const fs::path& scene : scenes) {
+    for (const char* mode : {"perspective", "scene-shifting"}) {
+      expect_ends_cleanly({"animate", "--scene", scene.string(), "--mode", mode, "--script", "walk",
+                           "--frames", "3", "--quiet"},
+                          dir, scene.filename().string() + " in " + mode);
+    }
+  }
+  // Scene shifting's slice layers at a camera of 4096 x 4096 px: refused after the cut.
+  const std::vector<std::string> large_camera = {
+      "animate",
+      "--scene",
+      "train-window",
+      "--mode",
+      "scene-shifting",
+      "--script",
+      testing::write_large_camera_viewer_script(dir).string(),
+      "--frames",
+      "3",
+      "--quiet"};
+  expect_ends_cleanly(large_camera, dir, "train-window at 4096 x 4096 px");
+  const testing::ChildResult layers =
+      testing::run_child(OFLAB_CLI_BINARY, large_camera, dir, testing::kHostileAddressSpace,
+                         testing::kHostileTimeLimitSeconds);
+  EXPECT_EQ(layers.code, 2) << layers.err;
+  EXPECT_NE(layers.err.find("in 5 slices at 4096 x 4096 px may hold"), std::string::npos)
+      << layers.err;
+  // The ten entries share one decoded image: ten copies would be 640 MB before the scene
+  // engine's memory limit refuses the scene.
+  const testing::ChildResult shared = testing::run_child(
+      OFLAB_CLI_BINARY,
+      {"animate", "--scene", scenes[3].string(), "--script", "walk", "--frames", "3", "--quiet"},
+      dir, testing::kHostileAddressSpace, testing::kHostileTimeLimitSeconds);
+  EXPECT_EQ(shared.code, 2) << shared.err;
+  EXPECT_LT(shared.peak_rss_kb, 400L * 1024) << "the texture decoded more than once?";
+  fs::remove_all(dir);
+}
+
 TEST(LastResort, AnEscapedExceptionIsOneLineAndTheInternalErrorCode) {
   std::ostringstream err;
   EXPECT_EQ(run_guarded(

@@ -8,11 +8,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
-#include "formats/datasets.h"
 #include "formats/input_file.h"
 #include "formats/json_fields.h"
 #include "formats/scene_file.h"
@@ -149,25 +147,6 @@ TEST(InputFile, ChecksTheSizeReadNotTheSizeClaimed) {
   std::ofstream(dir / "ten.txt") << "0123456789";
   EXPECT_EQ(read_input_file((dir / "ten.txt").string(), 10).bytes, "0123456789");
   EXPECT_EQ(read_input_file((dir / "ten.txt").string(), 9).problem, InputProblem::kTooLarge);
-  fs::remove_all(dir);
-}
-
-TEST(SceneTextures, EntriesNamingOneFileShareItsDecodedImage) {
-  const fs::path dir = testing::fresh_test_dir("oflab-input");
-  nlohmann::json scene = nlohmann::json::parse(std::ifstream(datasets_dir() + "/scenes/two.json"));
-  const std::string tile = datasets_dir() + "/textures/tile.png";
-  fs::create_symlink(tile, dir / "tile-link.png");
-  nlohmann::json textures = nlohmann::json::object();
-  for (int i = 0; i < 10; ++i) textures["t" + std::to_string(i)] = tile;
-  textures["linked"] = "tile-link.png";
-  textures["tile"] = tile;  // the name the scene's polygons use
-  scene["textures"] = textures;
-  std::ofstream(dir / "ten.json") << scene.dump();
-  const Scene read = read_scene_file((dir / "ten.json").string());
-  ASSERT_EQ(read.textures.size(), 12u);
-  for (const Image& t : read.textures) {
-    EXPECT_EQ(t.pixels(), read.textures.front().pixels());
-  }
   fs::remove_all(dir);
 }
 

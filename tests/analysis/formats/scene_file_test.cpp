@@ -110,6 +110,39 @@ std::string scene_text(const std::string& polygons, const std::string& textures 
 const char* kGood =
     R"({"name": "ok", "centre": [0,0,0], "normal": [0,0,1], "up": [0,1,0], "size": [1,1]})";
 
+// Entries naming the same file, directly or through a link, share one decoded image; a
+// second file is an image of its own. Each polygon keeps the texture its entry names.
+TEST(SceneFiles, EntriesNamingOneFileShareOneDecodedImage) {
+  const fs::path dir = testing::fresh_test_dir("oflab-shared-texture");
+  const fs::path link = dir / "link.png", other = dir / "other.png";
+  fs::create_symlink(tile_texture_path(), link);
+  write_png(other.string(), Image(8, 8, Pixel{255, 0, 0, 255}));
+  const std::string polygon =
+      R"({"name": "N", "centre": [0,0,0], "normal": [0,0,1], "up": [0,1,0], "size": [1,1], "texture": "T"})";
+  std::string polygons;
+  for (const char* t : {"a", "b", "c", "d"}) {
+    std::string p = polygon;
+    p.replace(p.find('N'), 1, t);
+    p.replace(p.find("\"T\""), 3, std::string("\"") + t + "\"");
+    polygons += (polygons.empty() ? "" : ", ") + p;
+  }
+  const std::string textures = "{\"a\": \"" + tile_texture_path() + "\", \"b\": \"" +
+                               tile_texture_path() + "\", \"c\": \"" + link.string() +
+                               "\", \"d\": \"" + other.string() + "\", \"tile\": \"" +
+                               tile_texture_path() + "\"}";
+  const Scene scene = parse_scene(
+      R"({"textures": )" + textures + R"(, "polygons": [)" + polygons + "]}", "shared.json", "");
+  ASSERT_EQ(scene.textures.size(), 2u);
+  EXPECT_EQ(scene.texture_names, (std::vector<std::string>{"a", "d"}));
+  ASSERT_EQ(scene.polygons.size(), 4u);
+  EXPECT_EQ(scene.polygons[0].texture, 0);
+  EXPECT_EQ(scene.polygons[1].texture, 0);
+  EXPECT_EQ(scene.polygons[2].texture, 0);
+  EXPECT_EQ(scene.polygons[3].texture, 1);
+  EXPECT_EQ(scene.textures[1].width(), 8);
+  fs::remove_all(dir);
+}
+
 TEST(SceneFiles, ContentIsReadPerPolygonWithTheScenesDefaultAndBadValuesAreNamed) {
   const std::string good = kGood;
   expect_scene_error(

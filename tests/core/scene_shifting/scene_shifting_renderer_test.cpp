@@ -141,5 +141,63 @@ TEST(SceneShiftingRenderer, RejectsPlanesNotParallelToTheImagePlane) {
   EXPECT_THROW(renderer.start(start_view()), std::invalid_argument);
 }
 
+// The memory estimate against a count by hand: 4 bytes a pixel for the frame, the scene's
+// texture, each polygon's copy of it, and per occupied slice plus two a layer of the frame
+// grown by the guard band on every side.
+TEST(SceneShiftingRenderer, MemoryEstimateCountsTexturesFrameAndGuardBandLayers) {
+  const Scene scene = train_like_scene();
+  ASSERT_EQ(scene.textures.size(), 1u);
+  const double texture = 4.0 * scene.textures[0].width() * scene.textures[0].height();
+  const Camera camera = make_camera(300.0, 320, 240);
+  const double frame = 4.0 * 320 * 240;
+  EXPECT_DOUBLE_EQ(scene_shifting_memory_bytes(scene, camera, 1.0, 0),
+                   frame + texture + 5 * texture);
+  EXPECT_DOUBLE_EQ(scene_shifting_memory_bytes(scene, camera, 1.0, 3),
+                   frame + 6 * texture + 5 * 4.0 * (3 * 320) * (3 * 240));
+  EXPECT_DOUBLE_EQ(scene_shifting_memory_bytes(scene, camera, 0.0, 3),
+                   frame + 6 * texture + 5 * frame);
+}
+
+// Twelve squares of a 4096 x 4096 texture: their copies alone are 768 MiB, so the renderer
+// is refused when it is made, naming the figure and the limit; two of them are made.
+TEST(SceneShiftingRenderer, TextureCopiesOverTheMemoryLimitAreRefusedWhenMade) {
+  const Vec3 front(0.0, 0.0, 1.0), up(0.0, 1.0, 0.0);
+  std::vector<ScenePolygon> squares;
+  for (int i = 0; i < 12; ++i) {
+    squares.push_back(square("s" + std::to_string(i), {0.1 * i, 0.0, -3.0}, front, up, 1.0));
+  }
+  Scene scene = scene_with(squares);
+  scene.textures[0] = Image(4096, 4096, Pixel{10, 20, 30, 255});
+  const Camera camera = make_camera(300.0, 320, 240);
+  try {
+    SceneShiftingRenderer renderer(scene, camera, settings_for(0.03));
+    FAIL() << "twelve copies of a 64 MiB texture were accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "scene shifting of the scene's 12 polygons at 320 x 240 px may hold 833 MiB of "
+                 "textures, more than 768 MiB (the scene engine memory limit)");
+  }
+  scene.polygons.resize(2);
+  EXPECT_NO_THROW(SceneShiftingRenderer(scene, camera, settings_for(0.03)));
+}
+
+// At 4096 x 4096 px with the default guard band a slice's layer may reach 3 x 3 frames of
+// 64 MiB: one occupied slice, its scratch and a rebuild's new image are 1.75 GiB, refused
+// after the cut and before anything is rendered; the frame and textures alone were accepted.
+TEST(SceneShiftingRenderer, SliceLayersOverTheMemoryLimitAreRefusedAtStart) {
+  const Scene scene =
+      scene_with({square("far", {0.0, 0.0, -20.0}, {0.0, 0.0, 1.0}, {0.0, 1.0, 0.0}, 12.0)});
+  SceneShiftingRenderer renderer(scene, make_camera(4000.0, 4096, 4096), settings_for(0.03));
+  try {
+    renderer.start(start_view());
+    FAIL() << "the slice layers were not refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("scene shifting of the scene's 1 polygons in 1 slice at "
+                                         "4096 x 4096 px may hold 1793 MiB of slice layers"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace oflab
