@@ -5,6 +5,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "flow/camera.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/obj_scene.h"
@@ -12,20 +13,27 @@
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
 #include "models/window_state_file.h"
-#include "scene/bsp_tree.h"
+#include "scene/scene_animator.h"
+#include "scene/viewer_script.h"
 
 namespace oflab::fuzz {
 namespace {
 
-// Scenes read by the fuzzers are also partitioned (the BSP's fragment cap is part of reading a
-// scene safely), up to this many polygons so that one input stays quick.
-constexpr std::size_t kMaxPartitionedPolygons = 64;
+// Scenes read by the fuzzers are also played for one frame (the scene engine's budgets and
+// the BSP caps are part of reading a scene safely): a scene engine at 80 x 60 px renders
+// frame 0 seen from 5 units in front (+Z) of the polygons' mean centre, looking at it. Up to
+// this many polygons, so that one input stays quick.
+constexpr std::size_t kMaxPlayedPolygons = 64;
 
-void partition(const Scene& scene) {
-  if (scene.polygons.size() > kMaxPartitionedPolygons) return;
+void play(const Scene& scene) {
+  if (scene.polygons.empty() || scene.polygons.size() > kMaxPlayedPolygons) return;
+  Vec3 centre(0.0);
+  for (const ScenePolygon& p : scene.polygons) centre += p.centre;
+  centre /= static_cast<double>(scene.polygons.size());
   try {
-    (void)BspTree(scene.polygons);
-  } catch (const std::invalid_argument&) {  // the fragment cap
+    SceneEngine engine(scene, make_camera(64.0, 80, 60), SceneSettings{});
+    (void)engine.start(look_at(centre + Vec3(0.0, 0.0, 5.0), centre, Vec3(0.0, 1.0, 0.0)));
+  } catch (const std::invalid_argument&) {  // a limit or a polygon the engine refuses
   }
 }
 
@@ -45,7 +53,7 @@ void viewer_script(const std::string& bytes) {
 
 void scene(const std::string& bytes) {
   try {
-    partition(parse_scene(bytes, "fuzz.json", datasets_dir() + "/scenes"));
+    play(parse_scene(bytes, "fuzz.json", datasets_dir() + "/scenes"));
   } catch (const SceneError&) {
   }
 }
@@ -59,7 +67,7 @@ void session(const std::string& bytes) {
 
 void obj(const std::string& bytes) {
   try {
-    partition(parse_obj_scene(bytes, "fuzz.obj", Image(1, 1), "t"));
+    play(parse_obj_scene(bytes, "fuzz.obj", Image(1, 1), "t"));
   } catch (const SceneError&) {
   }
 }

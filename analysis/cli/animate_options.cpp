@@ -9,6 +9,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "content/layer_content.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
 #include "formats/obj_scene.h"
@@ -135,6 +136,9 @@ RunSource read_plane_source(const CliArgs& a) {
   source.script = read_script_file(path);
   source.texture = read_image(a.text_or("--texture", default_texture_path()));
   source.settings.engine = read_engine_settings(a);
+  const std::string samples =
+      plane_shaded_samples_problem(source.settings.engine.content, source.script.camera);
+  if (!samples.empty()) throw UsageError("--quality: " + samples);
   return source;
 }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -388,6 +389,28 @@ std::string content_problem(const LayerContent& content) {
 }
 
 bool content_is_lit(const LayerContent& content) { return content.kind != ContentKind::kTexture; }
+
+double shaded_samples(const LayerContent& content, double layer_pixels) {
+  return content.kind == ContentKind::kShaded ? content.quality * layer_pixels : 0.0;
+}
+
+std::string plane_shaded_samples_problem(const LayerContent& content, const Camera& camera) {
+  std::ostringstream subject;
+  subject << "shaded content at quality " << content.quality << " on a " << camera.width << " x "
+          << camera.height << " px camera";
+  return shaded_samples_problem(
+      shaded_samples(content, static_cast<double>(camera.width) * camera.height), subject.str());
+}
+
+std::string shaded_samples_problem(double samples, const std::string& subject) {
+  const Limit& limit = limits::kShadedSamples;
+  if (limit.allows(samples)) return "";
+  std::ostringstream text;
+  text << subject << " may take " << static_cast<long long>(samples)
+       << " shaded samples a frame, more than " << static_cast<long long>(limit.maximum) << " (the "
+       << limit.what << " limit)";
+  return text.str();
+}
 
 ContentStats render_content(const LayerContent& content, const Camera& camera,
                             const PlanePose& pose, const ConvexPolygon& texel_region,

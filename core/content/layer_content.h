@@ -109,6 +109,18 @@ std::vector<FacadeFace> facade_faces(const Vec2& size, int detail);
 // ("quality" out of 1 .. kMaxContentQuality, "light" zero or not finite).
 std::string content_problem(const LayerContent& content);
 
+// The samples one re-render of `content` may take for a layer of `layer_pixels` pixels:
+// quality per pixel for shaded content, 0 for the other kinds (whose cost the impostor
+// detail limit bounds).
+double shaded_samples(const LayerContent& content, double layer_pixels);
+// "" when `samples` is within limits::kShadedSamples; otherwise one phrase naming the figure
+// and the limit: "<subject> may take N shaded samples a frame, more than 134217728 (the
+// shaded samples limit)".
+std::string shaded_samples_problem(double samples, const std::string& subject);
+// shaded_samples_problem of one plane's layer as large as `camera`'s image: "shaded content
+// at quality 256 on a 8192 x 8192 px camera may take ... (the shaded samples limit)".
+std::string plane_shaded_samples_problem(const LayerContent& content, const Camera& camera);
+
 // True when a re-render lights the content (shaded, impostor): its shading depends on the
 // pose, so a warped image of it can go stale.
 bool content_is_lit(const LayerContent& content);

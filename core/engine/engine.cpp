@@ -160,6 +160,8 @@ PlaneEngine::PlaneEngine(const Camera& camera, Layer texture, const EngineSettin
     : camera_(camera), texture_(std::move(texture)), settings_(settings) {
   const std::string problem = content_problem(settings_.content);
   if (!problem.empty()) throw std::invalid_argument("content: " + problem);
+  const std::string samples = plane_shaded_samples_problem(settings_.content, camera);
+  if (!samples.empty()) throw std::invalid_argument("content: " + samples);
   const std::string budget = frame_budget_problem(settings_.budget);
   if (!budget.empty()) throw std::invalid_argument("budget: " + budget);
 }

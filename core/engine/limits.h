@@ -99,6 +99,11 @@ inline constexpr Limit kSceneEngineMemory{"scene engine memory", "MiB", 0.0, 768
 // A frame's time grows with it; at the limit about 10 s (manual/robustness.md). The street
 // (seven impostor facades) admits quality 16.
 inline constexpr Limit kSceneImpostorWindows{"scene impostor detail", "windows", 0.0, 4096.0};
+// What shaded content may sample in one frame when every shaded layer re-renders
+// (core/content/layer_content.h shaded_samples): quality samples per pixel of a camera-sized
+// layer, summed over a scene's shaded polygons. At about 112 ns a sample (oflab-bench
+// content/shaded/cost-per-unit) a frame at the limit takes about 15 s (manual/robustness.md).
+inline constexpr Limit kShadedSamples{"shaded samples", "samples", 0.0, 134217728.0};
 // The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
 inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};
 // Live play rate, frames per second.

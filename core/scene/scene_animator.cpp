@@ -124,7 +124,23 @@ double scene_impostor_windows(const Scene& scene, int quality) {
   return windows;
 }
 
-std::string scene_content_problem(const Scene& scene, int quality) {
+std::string scene_content_problem(const Scene& scene, const Camera& camera, int quality) {
+  const auto count = [&](ContentKind kind) {
+    return std::count_if(scene.polygons.begin(), scene.polygons.end(),
+                         [&](const auto& p) { return p.content == kind; });
+  };
+  LayerContent shaded;
+  shaded.kind = ContentKind::kShaded;
+  shaded.quality = quality;
+  const double samples = static_cast<double>(count(ContentKind::kShaded)) *
+                         shaded_samples(shaded, static_cast<double>(camera.width) * camera.height);
+  std::ostringstream subject;
+  subject << "the scene's " << count(ContentKind::kShaded) << " shaded polygons at quality "
+          << quality << " on a " << camera.width << " x " << camera.height << " px camera";
+  if (const std::string problem = shaded_samples_problem(samples, subject.str());
+      !problem.empty()) {
+    return problem;
+  }
   const double windows = scene_impostor_windows(scene, quality);
   const Limit& limit = limits::kSceneImpostorWindows;
   if (limit.allows(windows)) return "";
@@ -168,7 +184,8 @@ SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSe
   if (const std::string problem = scene_memory_problem(scene, camera); !problem.empty()) {
     throw std::invalid_argument(problem);
   }
-  if (const std::string problem = scene_content_problem(scene, settings.engine.content.quality);
+  if (const std::string problem =
+          scene_content_problem(scene, camera, settings.engine.content.quality);
       !problem.empty()) {
     throw std::invalid_argument(problem);
   }

@@ -111,10 +111,12 @@ std::string scene_memory_limit_problem(double bytes, const std::string& subject,
 // content quality `quality` (1 .. kMaxContentQuality): (1 + q) storeys by (1 + 2q) bays per
 // impostor polygon, as facade_faces builds them (core/content/layer_content.h).
 double scene_impostor_windows(const Scene& scene, int quality);
-// "" when scene_impostor_windows is within limits::kSceneImpostorWindows; otherwise one
-// phrase naming the figure and the limit: "the scene's 7 impostor polygons at quality 32 draw
-// 15015 facade windows a frame, more than 4096 (the scene impostor detail limit)".
-std::string scene_content_problem(const Scene& scene, int quality);
+// "" when scene_impostor_windows is within limits::kSceneImpostorWindows and the shaded
+// polygons' samples (shaded_samples of a camera-sized layer each, core/content/
+// layer_content.h) within limits::kShadedSamples; otherwise one phrase naming the figure
+// and the limit: "the scene's 7 impostor polygons at quality 32 draw 15015 facade windows a
+// frame, more than 4096 (the scene impostor detail limit)".
+std::string scene_content_problem(const Scene& scene, const Camera& camera, int quality);
 
 // The engine of a scene, driven view by view by its caller. Not an Animator
 // (core/engine/animator.h), which owns its script: make_scene_animator plays a viewer script

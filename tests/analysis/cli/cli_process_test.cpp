@@ -254,6 +254,33 @@ TEST(HostileInputs, TheIssuesLargeScenesEndWithin60sAnd2GBInBothSceneModes) {
   fs::remove_all(dir);
 }
 
+// Shaded content at quality 256: on a single plane seen by a camera of 8192 x 8192 px (17
+// billion samples a frame, hours) and on the street's 13 shaded facades at 1280 x 720 (3
+// billion). Both refused before anything is drawn, exit 2 and one line naming the limit.
+TEST(HostileInputs, ShadedContentOverTheSamplesLimitIsRefusedUpFront) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-shaded");
+  nlohmann::json zoom = nlohmann::json::parse(std::ifstream(datasets_dir() + "/scripts/zoom.json"));
+  zoom["camera"] = {{"focal_px", 8000}, {"image", {8192, 8192}}};
+  const fs::path script = dir / "zoom-8192.json";
+  std::ofstream(script) << zoom.dump();
+  const std::vector<std::string> cases[] = {
+      {"animate", "--script", script.string(), "--content", "shaded", "--quality", "256",
+       "--frames", "3", "--quiet"},
+      {"animate", "--scene", "street", "--script", "walk", "--content", "shaded", "--quality",
+       "256", "--frames", "3", "--quiet"}};
+  for (const auto& args : cases) {
+    expect_ends_cleanly(args, dir, args[2]);
+    const testing::ChildResult r =
+        testing::run_child(OFLAB_CLI_BINARY, args, dir, testing::kHostileAddressSpace,
+                           testing::kHostileTimeLimitSeconds);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("shaded samples a frame, more than 134217728 (the shaded samples limit)"),
+              std::string::npos)
+        << r.err;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(LastResort, AnEscapedExceptionIsOneLineAndTheInternalErrorCode) {
   std::ostringstream err;
   EXPECT_EQ(run_guarded(

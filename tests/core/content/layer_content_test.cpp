@@ -276,5 +276,36 @@ TEST(LayerContent, KindsListEveryNameOnce) {
   EXPECT_EQ(joined, content_name_list());
 }
 
+// Shaded content samples quality times the layer's pixels a re-render, the other kinds
+// none; a plane engine whose camera-sized layer would take more than the limit is refused
+// when it is made, and the largest quality within it is accepted (the control).
+TEST(LayerContent, ShadedSamplesAreQualityTimesPixelsAndTheLimitRefusesAnEngine) {
+  LayerContent shaded;
+  shaded.kind = ContentKind::kShaded;
+  shaded.quality = 7;
+  EXPECT_DOUBLE_EQ(shaded_samples(shaded, 1000.0), 7000.0);
+  LayerContent impostor = shaded;
+  impostor.kind = ContentKind::kImpostor;
+  EXPECT_DOUBLE_EQ(shaded_samples(impostor, 1000.0), 0.0);
+  EXPECT_DOUBLE_EQ(shaded_samples(LayerContent{}, 1000.0), 0.0);
+  // 8192 x 8192 px: quality 2 is exactly 2^27 samples, the limit; quality 3 is over it.
+  const Camera camera = make_camera(8000.0, 8192, 8192);
+  EngineSettings settings;
+  settings.content = shaded;
+  settings.content.quality = 2;
+  EXPECT_EQ(plane_shaded_samples_problem(settings.content, camera), "");
+  EXPECT_NO_THROW(PlaneEngine(camera, make_layer(Image(4, 4)), settings));
+  settings.content.quality = 3;
+  try {
+    PlaneEngine engine(camera, make_layer(Image(4, 4)), settings);
+    FAIL() << "quality 3 at 8192 x 8192 px was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "content: shaded content at quality 3 on a 8192 x 8192 px camera may take "
+                 "201326592 shaded samples a frame, more than 134217728 (the shaded samples "
+                 "limit)");
+  }
+}
+
 }  // namespace
 }  // namespace oflab

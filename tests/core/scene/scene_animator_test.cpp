@@ -388,8 +388,32 @@ TEST(SceneImpostorDetail, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
               "more than 4096 (the scene impostor detail limit)");
   }
   settings.engine.content.quality = 21;  // 4 x 22 x 43 = 3784 windows
-  EXPECT_EQ(scene_content_problem(scene, 21), "");
+  EXPECT_EQ(scene_content_problem(scene, camera, 21), "");
   EXPECT_NO_THROW(SceneEngine(scene, camera, settings));
+}
+
+// The shaded polygons' samples of a scene add up, one camera-sized layer each: two shaded
+// squares at 1280 x 720 px admit quality 72 (132 710 400 samples) and refuse 73.
+TEST(SceneShadedSamples, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
+  const Camera camera = make_camera(1000.0, 1280, 720);
+  std::vector<ScenePolygon> polygons;
+  for (const ContentKind kind :
+       {ContentKind::kShaded, ContentKind::kTexture, ContentKind::kShaded}) {
+    polygons.push_back(square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
+    polygons.back().content = kind;
+  }
+  const Scene scene = scene_with(polygons);
+  EXPECT_EQ(scene_content_problem(scene, camera, 72), "");
+  SceneSettings settings;
+  settings.engine.content.quality = 73;
+  try {
+    SceneEngine engine(scene, camera, settings);
+    FAIL() << "a scene over the shaded samples limit was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the scene's 2 shaded polygons at quality 73 on a 1280 x 720 px camera may take "
+              "134553600 shaded samples a frame, more than 134217728 (the shaded samples limit)");
+  }
 }
 
 }  // namespace
