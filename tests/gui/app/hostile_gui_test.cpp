@@ -12,6 +12,7 @@
 // commands, so the `obj` and `command-line` inputs are oflab-cli's alone
 // (cli.hostile_inputs_within_limits).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -169,6 +170,31 @@ TEST(HostileGuiInputs, TheIssuesLargeScenesEndWithin60sAnd2GBInBothSceneSources)
       {"--scene", "train-window", "--source", "scene-shifting", "--script",
        testing::write_large_camera_viewer_script(dir).string(), "--view", "animation"},
       dir, "train-window at 4096 x 4096 px");
+  fs::remove_all(dir);
+}
+
+// Files that are not regular files (a FIFO, /dev/zero, a link to it, a directory) given as
+// each input oflab reads: refused at once with exit 2 and one line, nothing waiting for a
+// writer or reading without end.
+TEST(HostileGuiInputs, NonRegularFilesAreRefusedAtOnceWithOneLine) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui-nonregular");
+  give_children_a_runtime_dir(dir);
+  ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", dir / "zero.json");
+  fs::create_directories(dir / "folder.json");
+  for (const std::string input : {"/dev/zero", "zero.json", "fifo.json", "folder.json"}) {
+    const std::string path = input[0] == '/' ? input : (dir / input).string();
+    for (const char* option : {"--session", "--scene", "--script"}) {
+      const testing::ChildResult r =
+          testing::run_child(OFLAB_GUI_BINARY,
+                             {option, path, "--screenshot", (dir / "shot.png").string(), "--frames",
+                              "2", "--size", "640", "480"},
+                             dir, testing::kHostileAddressSpace, 10.0);
+      EXPECT_EQ(r.code, 2) << option << " " << input << ": " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_FALSE(fs::exists(dir / "shot.png"));
+    }
+  }
   fs::remove_all(dir);
 }
 

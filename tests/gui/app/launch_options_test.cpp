@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 
 #include "app/view_table.h"
 
@@ -155,6 +156,26 @@ TEST(LaunchOptions, SessionFileIsReadAndABrokenOneRejectedNamingTheFileAndField)
   EXPECT_NE(wide.find("'width': image size 9000 is outside 2..8192 px"), std::string::npos) << wide;
   std::remove(path.c_str());
   EXPECT_EQ(usage_error({"--session", path}).rfind("--session: ", 0), 0u);  // gone
+}
+
+// Errors found while applying a session (not while parsing it) name the file and the field,
+// and no part twice: an unknown display, a plane seen edge-on.
+TEST(LaunchOptions, SessionErrorsFoundWhileApplyingNameTheFileAndTheFieldOnce) {
+  const std::string path = ::testing::TempDir() + "oflab_session_apply.json";
+  std::ifstream seed(OFLAB_FUZZ_SEEDS_DIR "/session/session.json");
+  nlohmann::json session = nlohmann::json::parse(seed);
+  session["animation"]["display"] = "/tmp";
+  std::ofstream(path) << session.dump();
+  const std::string display = usage_error({"--session", path});
+  EXPECT_EQ(display.rfind("--session: oflab_session_apply.json: animation: field 'display'", 0), 0u)
+      << display;
+  session["animation"]["display"] = "difference";
+  session["plane"]["pose"]["normal"] = {1.0, 0.0, 0.0};
+  std::ofstream(path) << session.dump();
+  const std::string edge = usage_error({"--session", path});
+  EXPECT_EQ(edge.rfind("--session: oflab_session_apply.json: field 'plane': ", 0), 0u) << edge;
+  EXPECT_EQ(edge.find("plane: plane"), std::string::npos) << edge;
+  std::remove(path.c_str());
 }
 
 // The usage names every view of the view table, the scene-shifting view "slices" too.
