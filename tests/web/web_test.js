@@ -95,7 +95,13 @@ async function launchChromium(extraFlags = []) {
       const exited = new Promise((resolve) => child.on('exit', resolve));
       child.kill();
       await exited;
-      fs.rmSync(profile, { recursive: true, force: true, maxRetries: 5 });
+      // Chromium's helper processes may still write into the profile after the browser
+      // has exited: retry, and leave a profile that will not go rather than fail the run.
+      try {
+        fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 250 });
+      } catch (error) {
+        console.log(`note: the Chromium profile ${profile} was left behind (${error.code})`);
+      }
     },
   };
 }
