@@ -83,17 +83,20 @@ struct SceneEngine::PolygonState {
   }
 };
 
-double scene_memory_bytes(const Scene& scene, const Camera& camera) {
-  const auto pixels = [](int width, int height) { return static_cast<double>(width) * height; };
+double polygon_texture_copy_bytes(const Scene& scene) {
   double bytes = 0.0;
-  for (const Image& t : scene.textures) bytes += 2.0 * 4.0 * pixels(t.width(), t.height());
-  const double layers = kLayerImagesPerPolygon * 4.0 * pixels(camera.width, camera.height);
   for (const ScenePolygon& p : scene.polygons) {
     const bool known = p.texture >= 0 && p.texture < static_cast<int>(scene.textures.size());
-    const Image* t = known ? &scene.textures[static_cast<std::size_t>(p.texture)] : nullptr;
-    bytes += layers + (t ? 4.0 * pixels(t->width(), t->height()) : 0.0);
+    if (known) bytes += 4.0 * scene.textures[static_cast<std::size_t>(p.texture)].pixel_count();
   }
   return bytes;
+}
+
+double scene_memory_bytes(const Scene& scene, const Camera& camera) {
+  double bytes = 0.0;
+  for (const Image& t : scene.textures) bytes += 2.0 * 4.0 * t.pixel_count();
+  const double layers = kLayerImagesPerPolygon * 4.0 * camera.width * camera.height;
+  return bytes + layers * scene.polygons.size() + polygon_texture_copy_bytes(scene);
 }
 
 std::string scene_memory_limit_problem(double bytes, const std::string& subject,
@@ -132,11 +135,12 @@ std::string scene_content_problem(const Scene& scene, const Camera& camera, int 
   LayerContent shaded;
   shaded.kind = ContentKind::kShaded;
   shaded.quality = quality;
-  const double samples = static_cast<double>(count(ContentKind::kShaded)) *
+  const auto shaded_polygons = count(ContentKind::kShaded);
+  const double samples = static_cast<double>(shaded_polygons) *
                          shaded_samples(shaded, static_cast<double>(camera.width) * camera.height);
   std::ostringstream subject;
-  subject << "the scene's " << count(ContentKind::kShaded) << " shaded polygons at quality "
-          << quality << " on a " << camera.width << " x " << camera.height << " px camera";
+  subject << "the scene's " << shaded_polygons << " shaded polygons at quality " << quality
+          << " on a " << camera.width << " x " << camera.height << " px camera";
   if (const std::string problem = shaded_samples_problem(samples, subject.str());
       !problem.empty()) {
     return problem;
@@ -144,13 +148,10 @@ std::string scene_content_problem(const Scene& scene, const Camera& camera, int 
   const double windows = scene_impostor_windows(scene, quality);
   const Limit& limit = limits::kSceneImpostorWindows;
   if (limit.allows(windows)) return "";
-  const auto impostors =
-      std::count_if(scene.polygons.begin(), scene.polygons.end(),
-                    [](const auto& p) { return p.content == ContentKind::kImpostor; });
   std::ostringstream text;
-  text << "the scene's " << impostors << " impostor polygons at quality " << quality << " draw "
-       << static_cast<long>(windows) << " facade windows a frame, more than " << limit.maximum
-       << " (the " << limit.what << " limit)";
+  text << "the scene's " << count(ContentKind::kImpostor) << " impostor polygons at quality "
+       << quality << " draw " << static_cast<long>(windows) << " facade windows a frame, more than "
+       << limit.maximum << " (the " << limit.what << " limit)";
   return text.str();
 }
 

@@ -90,6 +90,10 @@ struct SceneSettings {
 enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped, kStarved };
 const char* polygon_status_name(PolygonStatus status);
 
+// The bytes of every polygon's copy of its texture, 4 a pixel (a polygon whose texture index
+// is out of range counts none): what a scene's engines, one a polygon, copy.
+double polygon_texture_copy_bytes(const Scene& scene);
+
 // The bytes a scene engine may hold for `scene` seen through `camera` when every polygon is
 // visible, estimated from the inputs alone before anything is allocated: per polygon its
 // engine's copy of its texture and kLayerImagesPerPolygon camera-sized layer images (the

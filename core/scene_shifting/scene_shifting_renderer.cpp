@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "engine/engine.h"
 #include "image/composite.h"
@@ -84,10 +85,7 @@ double scene_shifting_memory_bytes(const Scene& scene, const Camera& camera, dou
                                    int occupied_slices) {
   double bytes = 4.0 * camera.width * camera.height;  // the frame
   for (const Image& t : scene.textures) bytes += 4.0 * t.pixel_count();
-  for (const ScenePolygon& p : scene.polygons) {
-    const bool known = p.texture >= 0 && p.texture < static_cast<int>(scene.textures.size());
-    if (known) bytes += 4.0 * scene.textures[static_cast<std::size_t>(p.texture)].pixel_count();
-  }
+  bytes += polygon_texture_copy_bytes(scene);
   if (occupied_slices > 0) {
     const double grown = 1.0 + 2.0 * guard_band;
     bytes += (occupied_slices + 2.0) * 4.0 * grown * camera.width * grown * camera.height;
@@ -192,7 +190,7 @@ void SceneShiftingRenderer::cut_slices(const ViewerPose& view) {
     throw std::invalid_argument(problem);
   }
   layers_.assign(slices_.size(), SliceLayer{});
-  polygon_slice_ = slice_of;
+  polygon_slice_ = std::move(slice_of);
   for (int i = 0; i < n; ++i) {
     if (polygon_slice_[i] >= 0) layers_[polygon_slice_[i]].polygons.push_back(i);
   }
