@@ -12,9 +12,9 @@
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
-#include "models/window_state_file.h"
 #include "scene/scene_animator.h"
 #include "scene/viewer_script.h"
+#include "state/window_state_file.h"
 
 namespace oflab::fuzz {
 namespace {

@@ -7,8 +7,19 @@
 # headless Chromium (manual/web.md). Idempotent. manual/robustness.md, "Sanitizers".
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+# Each stage prints its time, and the whole run its total, so the time a change costs shows.
+run_start=$SECONDS
+stage_start=$SECONDS
+stage_done() {
+  echo "oflab: stage '$1' took $((SECONDS - stage_start)) s (total $((SECONDS - run_start)) s)"
+  stage_start=$SECONDS
+}
+
 bash tools/install-deps.sh
+stage_done "install"
 bash tools/build.sh
+stage_done "build"
 
 jobs=$(nproc 2>/dev/null || echo 2)
 
@@ -16,16 +27,16 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # one virtual screen, and no two tests share a scratch folder.
 xvfb-run -a -s "-screen 0 1600x1000x24" \
   ctest --test-dir build --output-on-failure --timeout 600 -j"$jobs"
+stage_done "tests"
 
 # The browser page (manual/web.md): emscripten and chromium installed when missing, the page
 # built, the golden outputs checked against this build's oflab-cli, then the page's self-test,
 # screenshots and speed in headless Chromium.
-web_start=$SECONDS
 bash tools/build-web.sh
 node tests/web/make_golden.js --check build/analysis/oflab-cli
 node tests/web/web_test.js --out build-web/test-failures
 node tests/web/web_test.js --bench
-echo "oflab: the browser stage took $((SECONDS - web_start)) s"
+stage_done "browser"
 
 # The sanitized tree: OFLAB_HEADLESS (core, analysis, oflab-cli and their tests; no Qt, GUI
 # or benchmarks), Debug (assertions on) compiled at -O1 with line tables only (-g1): the
@@ -50,6 +61,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   xvfb-run -a -s "-screen 0 1600x1000x24" \
   ctest --test-dir build-sanitize --output-on-failure --timeout 1200 -j"$jobs" \
   -LE 'soak|address-space-limit'
+stage_done "sanitizers"
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
   -DCMAKE_CXX_COMPILER=clang++ -DOFLAB_FUZZ=ON -DOFLAB_BUILD_TESTS=OFF \
@@ -59,3 +71,4 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=cl
 }
 cmake --build build-fuzz -j"$jobs"
 ctest --test-dir build-fuzz -L fuzz --output-on-failure -j"$jobs"
+stage_done "fuzz"

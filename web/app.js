@@ -1,6 +1,6 @@
 'use strict';
 // The page's state and controls (manual/web.md). The state is the window state of the
-// desktop (gui/models/window_state.h) as JSON; core owns it: every change goes through
+// desktop (session/state/window_state.h) as JSON; core owns it: every change goes through
 // Session.setState, which checks it with the session reader, and the page reads it back.
 // Views (flow_view.js, basis_view.js, comparison_view.js) draw the state on one 2D canvas.
 
@@ -12,6 +12,7 @@ const app = {
   playing: false,
   lastStep: 0,     // time of the last played frame, ms
   dirty: true,     // the canvas needs drawing
+  schema: [],      // the state's field table (Session.stateSchemaJson)
   lessons: [],     // lessons as web_session.h lessons_json gives them
   lesson: null,    // the lesson shown, and its step (0: the narrative)
   lessonStep: 0,
@@ -91,15 +92,31 @@ function syncControls() {
   syncFrame();
 }
 
-// The pose and motion of the plane (the state's "plane" object), edited field by field.
-const poseFields = [
-  ['Point', 'pose', 'point'], ['Normal', 'pose', 'normal'], ['Up', 'pose', 'up'],
-  ['Velocity /s', 'motion', 'velocity'], ['Omega rad/s', 'motion', 'omega'],
-];
+// The fields of the state, from the one field table of the teaching layer
+// (session/state/state_fields.h, Session.stateSchemaJson): name, type, range, default, doc.
+function stateField(name) {
+  return app.schema.find((f) => f.name === name);
+}
+
+// The names a field of type "name" allows: its range, "one of a, b, c".
+function fieldNames(name) {
+  return stateField(name).range.replace(/^one of /, '').split(', ');
+}
+
+// The pose and motion of the plane (the state's "plane" object), edited field by field:
+// every [x, y, z] field of plane.pose and plane.motion, labelled by its name and unit.
+function poseFields() {
+  return app.schema.filter((f) => f.type === '[x, y, z]' && /^plane\.(pose|motion)\./.test(f.name))
+    .map((f) => {
+      const [, group, key] = f.name.split('.');
+      const unit = /\d\s+(\S+)$/.exec(f.range);
+      return [key[0].toUpperCase() + key.slice(1) + (unit ? ` ${unit[1]}` : ''), group, key];
+    });
+}
 
 function buildPoseControls() {
   const grid = $('pose-controls');
-  for (const [label, group, key] of poseFields) {
+  for (const [label, group, key] of poseFields()) {
     const name = document.createElement('span');
     name.textContent = label;
     grid.appendChild(name);
@@ -118,13 +135,13 @@ function buildPoseControls() {
   model.textContent = 'Motion model';
   const select = document.createElement('select');
   select.id = 'pose-model';
-  for (const m of ['screw', 'rt', 'centre']) select.add(new Option(m, m));
+  for (const m of fieldNames('plane.motion.model')) select.add(new Option(m, m));
   select.addEventListener('change', () => editState((s) => { s.plane.motion.model = select.value; }));
   grid.append(model, select);
 }
 
 function syncPoseControls(s) {
-  for (const [, group, key] of poseFields) {
+  for (const [, group, key] of poseFields()) {
     for (let i = 0; i < 3; ++i) $(`pose-${key}-${i}`).value = String(+s.plane[group][key][i].toFixed(4));
   }
   $('pose-model').value = s.plane.motion.model;
@@ -286,6 +303,7 @@ async function start() {
   const params = new URLSearchParams(location.search);
   if (params.has('selftest')) { runSelftest(); return; }
   app.state = JSON.parse(app.session.stateJson());
+  app.schema = JSON.parse(Module.Session.stateSchemaJson());
   buildPoseControls();
   for (const view of Object.values(app.views)) if (view.build) view.build();
   bindControls();

@@ -1,6 +1,6 @@
 'use strict';
 // The basis gallery: the twelve terms of one basis of the flow's Taylor expansion (planar,
-// Taylor or Waxman-Ullman; gui/models/basis_catalog.h), each tile the flow of that term
+// Taylor or Waxman-Ullman; session/basis/basis_catalog.h), each tile the flow of that term
 // alone and its coefficient in the plane's current flow, greyed when negligible. Every
 // number comes from Session.basisJson.
 

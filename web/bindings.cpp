@@ -5,6 +5,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include "display/palette.h"
 #include "frame_pixels.h"
 #include "web_session.h"
 
@@ -37,10 +38,9 @@ emscripten::val run_heat(const WebSession& s, int index) {
 
 // The heat map's colour at t in [0, 1] as [r, g, b], for the page's colour bar.
 emscripten::val heat_colour(double t) {
-  std::uint8_t rgb[3];
-  viridis(t, rgb);
+  const oflab::Rgb8 c = oflab::magnitude_colour(t);
   emscripten::val out = emscripten::val::array();
-  for (std::uint8_t c : rgb) out.call<void>("push", static_cast<int>(c));
+  for (std::uint8_t channel : {c.r, c.g, c.b}) out.call<void>("push", static_cast<int>(channel));
   return out;
 }
 
@@ -69,9 +69,11 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("frameHeight", &WebSession::frame_height)
       .function("runPixels", &oflab::run_pixels)
       .function("runHeat", &oflab::run_heat)
+      .function("goToLessonStep", &WebSession::go_to_lesson)
       .class_function("lessonsJson", &WebSession::lessons_json)
       .class_function("lessonFileJson", &WebSession::lesson_file_json)
       .class_function("scriptRunJson", &WebSession::script_run_json)
-      .class_function("scriptNamesJson", &WebSession::script_names_json);
+      .class_function("scriptNamesJson", &WebSession::script_names_json)
+      .class_function("stateSchemaJson", &WebSession::state_schema_json);
   emscripten::function("heatColour", &oflab::heat_colour);
 }

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "display/palette.h"
+
 namespace oflab {
 namespace {
 
@@ -88,35 +90,14 @@ int largest_difference(const Image& a, const Image& b) {
   return largest;
 }
 
-void viridis(double t, std::uint8_t rgb[3]) {
-  // Nine samples of matplotlib's viridis at t = 0, 1/8, ..., 1, interpolated linearly.
-  static constexpr std::array<std::array<double, 3>, 9> kStops = {{{68, 1, 84},
-                                                                   {71, 44, 122},
-                                                                   {59, 81, 139},
-                                                                   {44, 113, 142},
-                                                                   {33, 144, 141},
-                                                                   {39, 173, 129},
-                                                                   {92, 200, 99},
-                                                                   {170, 220, 50},
-                                                                   {253, 231, 37}}};
-  const double x = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 8.0;
-  const int i = std::min(7, static_cast<int>(x));
-  const double f = x - i;
-  for (int c = 0; c < 3; ++c) {
-    const double v = kStops[i][c] + (kStops[i + 1][c] - kStops[i][c]) * f;
-    rgb[c] = static_cast<std::uint8_t>(std::lround(v));
-  }
-}
-
 void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
                               const DisplaySampling& sampling, std::vector<std::uint8_t>& out) {
   require_same_size(a, b);
   if (full_scale < 1) throw std::invalid_argument("difference_heat_map_into: full_scale < 1");
   std::array<std::array<std::uint8_t, 4>, 256> ramp{};
   for (int d = 0; d < 256; ++d) {
-    std::uint8_t rgb[3];
-    viridis(static_cast<double>(d) / full_scale, rgb);
-    ramp[d] = {rgb[0], rgb[1], rgb[2], 255};
+    const Rgb8 c = magnitude_colour(static_cast<double>(d) / full_scale);
+    ramp[d] = {c.r, c.g, c.b, 255};
   }
   const auto heat = [&](int y, int x) { return ramp[channel_difference(a.at(x, y), b.at(x, y))]; };
   sample_into(a, sampling, heat, out);

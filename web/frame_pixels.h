@@ -30,13 +30,10 @@ int largest_difference(const Image& a, const Image& b);
 
 // The difference of two frames as a heat map sampled by `sampling` into `out` (opaque RGBA8):
 // per pixel the largest absolute difference of the four premultiplied channels, in grey
-// levels, coloured by the viridis ramp from 0 (dark blue) to `full_scale` and above
-// (yellow). Preconditions: same size (throws std::invalid_argument), full_scale >= 1.
+// levels, coloured by the one viridis ramp (session/display/palette.h magnitude_colour) from 0
+// (dark blue) to `full_scale` and above (yellow). Preconditions: same size (throws
+// std::invalid_argument), full_scale >= 1.
 void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
                               const DisplaySampling& sampling, std::vector<std::uint8_t>& out);
-
-// The viridis colour of t in [0, 1] (clamped; NaN as 0) as r, g, b bytes: the heat map's
-// ramp, also for the page's colour bar.
-void viridis(double t, std::uint8_t rgb[3]);
 
 }  // namespace oflab

@@ -1,9 +1,10 @@
 'use strict';
-// Lessons: the desktop's lesson files (datasets/lessons/, gui/models/lessons.h), read by the
-// desktop's reader inside the module. A lesson's narrative and each step's caption show
-// above the views; applying a step sets its state (a window state object), goes to its
-// frame and plays its frames. The claims are listed as the sentences they check; the
-// desktop checks them (`oflab --check-lesson`), the page does not.
+// Lessons: the desktop's lesson files (datasets/lessons/, session/lessons/lessons.h), read by the
+// desktop's reader inside the module, and played by the one lesson player of the teaching
+// layer (session/lessons/lesson_player.h, Session.goToLessonStep): a step shows the same
+// state and frame as on the desktop. A lesson's narrative and each step's caption show
+// above the views. The claims are listed as the sentences they check; the engine's claims
+// are checked by `oflab-cli lesson check`, the screen's by `oflab --check-lesson`.
 
 function loadLessons() {
   const lessons = JSON.parse(Module.Session.lessonsJson());
@@ -34,24 +35,24 @@ function startLesson(name) {
   showLessonStep(0);
 }
 
-// The lesson's narrative (step 0) or its k-th step: the state of that step (a step without
-// a state keeps the one before), its frame, then its frames played.
+// The lesson's narrative (step 0) or its k-th step, as the lesson player shows it: the
+// lesson's state and frames played, then steps 1 .. k in turn.
 function showLessonStep(k) {
   const lesson = app.lesson;
   if (!lesson) return;
   k = Math.max(0, Math.min(lesson.steps.length, k));
+  const problem = app.session.goToLessonStep(lesson.name, k);
+  if (problem) {
+    showMessage(problem);
+    return;
+  }
   app.lessonStep = k;
-  let state = lesson.state;
-  for (let i = 0; i < k; ++i) if (lesson.steps[i].state) state = lesson.steps[i].state;
-  const step = k > 0 ? lesson.steps[k - 1] : null;
-  const shown = JSON.parse(JSON.stringify(state));
-  shown.lesson_step = k;
-  if (!applyState(shown, `lessons/${lesson.name}.json`)) return;
+  app.state = JSON.parse(app.session.stateJson());
+  syncControls();
+  app.dirty = true;
   showMessage('');
-  const play = step ? step.play : lesson.play;
-  const from = step && step.frame >= 0 ? step.frame : app.state.frame;
-  seek(from + play);
   setPlaying(false);
+  const step = k > 0 ? lesson.steps[k - 1] : null;
   $('lesson-title').textContent = lesson.title;
   $('lesson-caption').textContent = step ? step.say : lesson.narrative;
   $('lesson-step').textContent = k > 0 ? `step ${k} of ${lesson.steps.length}` : `narrative (${lesson.steps.length} steps)`;

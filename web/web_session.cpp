@@ -11,7 +11,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "adapters/flow_parts.h"
+#include "basis/basis_catalog.h"
+#include "display/flow_parts.h"
 #include "engine/reuse_policy.h"
 #include "flow/basis.h"
 #include "flow/flow_field.h"
@@ -20,8 +21,9 @@
 #include "formats/script_file.h"
 #include "frame_pixels.h"
 #include "image/image_compare.h"
-#include "models/basis_catalog.h"
-#include "models/window_state_file.h"
+#include "player/source_length.h"
+#include "state/state_fields.h"
+#include "state/window_state_file.h"
 
 namespace oflab {
 namespace {
@@ -36,12 +38,6 @@ constexpr int kMaxPanelSide = 4096;
 constexpr int kHeatFullScale = 64;
 // The policy whose runs draw the exact projection: every frame rendered exactly.
 constexpr const char* kExactPolicy = "rerender";
-
-RigidMotion per_second(RigidMotion motion) {
-  motion.velocity /= kWebSecondsPerFrame;
-  motion.omega /= kWebSecondsPerFrame;
-  return motion;
-}
 
 json point_json(const Vec2& p) { return json::array({p.x, p.y}); }
 
@@ -109,17 +105,32 @@ MotionScript read_shipped_or_file_script(const std::string& name) {
 
 }  // namespace
 
-WebSession::WebSession() : texture_(read_image(default_texture_path())) {
+WebSession::WebSession() : texture_(read_image(default_texture_path())), panel_(texture_) {
   state_.plane.pose.texture_size = {texture_.width(), texture_.height()};
   rebuild_comparison();
 }
 
-std::string WebSession::state_json() const { return window_state_object(state_).dump(); }
+WindowState WebSession::shown_state() const {
+  WindowState shown = state_;
+  shown.frame = panel_.frame();
+  return shown;
+}
+
+std::string WebSession::state_json() const { return window_state_object(shown_state()).dump(); }
 
 std::string WebSession::set_state(const std::string& object_json, const std::string& origin) {
   try {
     const json object = json::parse(object_json);
-    WindowState next = read_window_state_object(object, origin, "state", WindowState{});
+    const std::string problem =
+        apply_state(read_window_state_object(object, origin, "state", WindowState{}));
+    return problem.empty() ? problem : origin + ": " + problem;
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+std::string WebSession::apply_state(WindowState next) {
+  try {
     next.plane.pose.texture_size = {texture_.width(), texture_.height()};
     for (const std::string* name : {&next.script, &next.source.name}) {
       if (!name->empty() && scripts_.count(*name) == 0 &&
@@ -127,17 +138,42 @@ std::string WebSession::set_state(const std::string& object_json, const std::str
         scripts_[*name] = read_shipped_or_file_script(*name);
       }
     }
-    const std::string problem = window_state_problem(next);
-    if (!problem.empty()) return origin + ": " + problem;
+    std::string problem = window_state_problem(next);
+    if (!problem.empty()) return problem;
+    // The frame clock as the desktop's: the plane, its script, the source's loop.
+    PlanePanel panel = panel_;
+    problem = panel.set_scene(next.plane);
+    if (problem.empty() && !next.script.empty()) {
+      problem = panel.set_script(scripts_.at(next.script), next.script);
+    }
+    if (!problem.empty()) return problem;
+    panel.set_loop_override(source_frame_count(next.source, panel));
+    panel.set_frame(next.frame);
     const bool rebuild = run_defining_fields(next) != run_defining_fields(state_);
     state_ = std::move(next);
+    panel_ = std::move(panel);
     if (rebuild) rebuild_comparison();
-    seek(state_.frame);
     return "";
   } catch (const std::exception& e) {
     return e.what();
   }
 }
+
+void WebSession::stage_play(int frames) {
+  for (int k = 0; k < frames; ++k) panel_.set_frame(panel_.frame() + 1);
+}
+
+std::string WebSession::go_to_lesson(const std::string& name, int step) {
+  const Lesson* lesson = find_lesson(name);
+  if (!lesson) return "unknown lesson '" + name + "' (one of " + lesson_names() + ")";
+  try {
+    return go_to_lesson_step(*this, *lesson, step);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+std::string WebSession::state_schema_json() { return state_schema().dump(); }
 
 std::string WebSession::add_script(const std::string& text, const std::string& origin) {
   try {
@@ -150,45 +186,22 @@ std::string WebSession::add_script(const std::string& text, const std::string& o
   }
 }
 
-const MotionScript* WebSession::script() const {
-  if (state_.script.empty()) return nullptr;
-  const auto it = scripts_.find(state_.script);
-  return it == scripts_.end() ? nullptr : &it->second;
-}
-
-int WebSession::frame_count() const {
-  if (state_.view == "animation" && !runs_.empty() && runs_.front().animator) {
-    return runs_.front().animator->frame_count();
-  }
-  const MotionScript* s = script();
-  return s ? static_cast<int>(s->frames.size()) : kWebLoopFrames;
-}
+int WebSession::frame_count() const { return panel_.loop_frames(); }
 
 void WebSession::seek(int frame) {
-  const int n = frame_count();
-  state_.frame = ((frame % n) + n) % n;
+  // Stepping back from frame 0 goes to the loop's last frame; the clock lands as the
+  // desktop's does (PlanePanel::set_frame).
+  panel_.set_frame(frame < 0 ? frame_count() + frame % frame_count() : frame);
 }
 
-PlaneScene WebSession::scene() const {
-  PlaneScene scene = state_.plane;
-  if (const MotionScript* s = script()) {
-    const ScriptFrame& f = s->frames[static_cast<std::size_t>(state_.frame) % s->frames.size()];
-    scene.camera = s->camera;
-    scene.pose = f.pose;
-    scene.pose.texture_size = state_.plane.pose.texture_size;
-    scene.motion = per_second(f.motion);
-  } else {
-    scene.pose = pose_at_time(state_.plane, state_.frame % kWebLoopFrames * kWebSecondsPerFrame);
-  }
-  return scene;
-}
+PlaneScene WebSession::scene() const { return panel_.scene_at(panel_.frame()); }
 
 std::string WebSession::scene_problem() const { return plane_scene_problem(scene()); }
 
 std::string WebSession::flow_json() const {
   const PlaneScene s = scene();
   json out;
-  out["frame"] = state_.frame;
+  out["frame"] = panel_.frame();
   out["frames"] = frame_count();
   out["camera"] = {{"width", s.camera.width},
                    {"height", s.camera.height},
@@ -285,20 +298,7 @@ void WebSession::rebuild_comparison() {
   MotionScript source;
   try {
     if (state_.source.kind == "plane") {
-      if (const MotionScript* s = script()) {
-        source = *s;
-      } else {
-        source.name = "scene motion";
-        source.camera = state_.plane.camera;
-        RigidMotion per_frame = state_.plane.motion;
-        per_frame.velocity *= kWebSecondsPerFrame;
-        per_frame.omega *= kWebSecondsPerFrame;
-        for (int k = 0; k < kWebLoopFrames; ++k) {
-          const PlanePose pose = pose_at_time(state_.plane, k * kWebSecondsPerFrame);
-          if (!plane_pose_problem(pose).field.empty()) break;
-          source.frames.push_back({pose, per_frame});
-        }
-      }
+      source = panel_.as_script();
     } else if (state_.source.kind == "script") {
       source = scripts_.at(state_.source.name);
     } else {
@@ -379,7 +379,8 @@ std::string WebSession::update_comparison(int panel_width, int panel_height) {
   panel_width = std::clamp(panel_width, 1, kMaxPanelSide);
   panel_height = std::clamp(panel_height, 1, kMaxPanelSide);
   if (!runs_.empty()) {
-    advance_runs_to(state_.frame);
+    // The runs follow the clock as the desktop's run player does (player/run_player.h).
+    advance_runs_to(panel_.frame() % runs_.front().animator->frame_count());
     if (sampled_frame_ != runs_.front().animator->frame() ||
         sampled_size_ != glm::ivec2(panel_width, panel_height)) {
       finish_runs_frame(panel_width, panel_height);
@@ -387,7 +388,7 @@ std::string WebSession::update_comparison(int panel_width, int panel_height) {
   }
   json out;
   out["problem"] = comparison_problem_;
-  out["frame"] = state_.frame;
+  out["frame"] = panel_.frame();
   out["frames"] = frame_count();
   out["width"] = frame_width();
   out["height"] = frame_height();
@@ -449,6 +450,7 @@ std::string WebSession::lesson_file_json(const std::string& text, const std::str
     }
     const Lesson lesson = read_lesson_file(path.string());
     fs::remove(path);
+    add_lesson(lesson);  // played by name (go_to_lesson) from now on
     return lesson_json(lesson).dump();
   } catch (const std::exception& e) {
     std::error_code ignored;

@@ -1,8 +1,8 @@
 // One browser page's state and the core objects it shows, for the page's JavaScript
 // (bound in web/bindings.cpp; manual/web.md). The page holds one WindowState, the same value
-// a desktop window, a session file and a lesson file hold (gui/models/window_state.h); every
-// number it shows comes from core: the flow (core/flow, through gui/adapters/flow_parts.h),
-// the bases (gui/models/basis_catalog.h) and the engine's runs (core/engine/animator.h).
+// a desktop window, a session file and a lesson file hold (session/state/window_state.h); every
+// number it shows comes from core: the flow (core/flow, through session/display/flow_parts.h),
+// the bases (session/basis/basis_catalog.h) and the engine's runs (core/engine/animator.h).
 //
 // Frames: the scene of frame k is the plane of the state moved for k / 30 seconds (the
 // desktop's scene panel, 150 frames a loop), or frame k of the state's motion script.
@@ -19,15 +19,12 @@
 #include "engine/animator.h"
 #include "engine/script.h"
 #include "flow/plane_scene.h"
-#include "models/lessons.h"
-#include "models/window_state.h"
+#include "lessons/lesson_player.h"
+#include "lessons/lessons.h"
+#include "player/plane_panel.h"
+#include "state/window_state.h"
 
 namespace oflab {
-
-// Seconds per frame of the page's playback, as the desktop's scene panel.
-constexpr double kWebSecondsPerFrame = 1.0 / 30.0;
-// Frames of one loop of the plane's own motion, as the desktop's scene panel.
-constexpr int kWebLoopFrames = 150;
 
 // One compared run of the comparison view: a reuse policy playing the source, or the exact
 // projection (the `rerender` policy: every frame rendered exactly).
@@ -43,13 +40,13 @@ struct WebRun {
   double psnr_db = 0.0;                         // against the exact frame (image_compare.h)
 };
 
-class WebSession {
+class WebSession : public LessonStage {
  public:
   // Reads the shipped butterfly texture from the module's embedded datasets. Throws
   // std::runtime_error when it cannot (a broken build).
   WebSession();
 
-  // The state as a session's state object (gui/models/window_state_file.h), JSON text.
+  // The state as a session's state object (session/state/window_state_file.h), JSON text.
   std::string state_json() const;
   // Reads `object_json` (fields of a state object) over the default state and shows it.
   // Returns "" or the reason it was refused (the state is then unchanged): a field the
@@ -60,11 +57,30 @@ class WebSession {
   // message naming `origin`, the frame or segment and the field.
   std::string add_script(const std::string& text, const std::string& origin);
 
-  // Frames of the loop the views play (the script's length, else kWebLoopFrames), and the
-  // frame shown. seek wraps into 0 .. frames - 1.
+  // Frames of the loop the views play and the frame shown, on the same frame clock as the
+  // desktop's (session/player/plane_panel.h: the script's or the source's length, else 150
+  // frames; a frame where the plane cannot be drawn lands on 0). seek(-k) goes k frames
+  // back from the loop's end.
   int frame_count() const;
-  int frame() const { return state_.frame; }
+  int frame() const { return panel_.frame(); }
   void seek(int frame);
+
+  // Shows step `step` of the lesson `name` (shipped or read by lesson_file_json) through the
+  // one lesson player (session/lessons/lesson_player.h), as the desktop shows it: "" or why
+  // not.
+  std::string go_to_lesson(const std::string& name, int step);
+
+  // The page as a lesson's stage.
+  WindowState stage_state() const override { return shown_state(); }
+  std::string stage_apply(const WindowState& state) override { return apply_state(state); }
+  void stage_stop() override { state_.playing = false; }
+  void stage_seek(int frame) override { panel_.set_frame(frame); }
+  void stage_play(int frames) override;
+  void stage_set_step(int step) override { state_.lesson_step = step; }
+
+  // The window state's field table (session/state/state_fields.h state_schema) as JSON:
+  // the page takes the fields' names, types and ranges from it.
+  static std::string state_schema_json();
 
   // The scene of the frame shown, and "" or why the flow views cannot draw it.
   PlaneScene scene() const;
@@ -73,7 +89,7 @@ class WebSession {
   // The flow view's numbers as JSON: the camera, the plane's outline (top-left pixels), the
   // planar coefficients with their units, the Taylor, Waxman-Ullman and planar-basis terms.
   std::string flow_json() const;
-  // The part `part_key` (gui/adapters/flow_parts.h keys) on a grid `spacing_px` apart, as
+  // The part `part_key` (session/display/flow_parts.h keys) on a grid `spacing_px` apart, as
   // x, y, vx, vy quadruples (top-left pixels; pixels per second). Empty for a scene problem.
   std::vector<double> flow_arrows(const std::string& part_key, double spacing_px) const;
   // Streamlines of the part from seeds `spacing_px` apart, `duration_s` seconds each in
@@ -81,7 +97,7 @@ class WebSession {
   std::vector<double> flow_streamlines(const std::string& part_key, double spacing_px,
                                        double duration_s, int steps) const;
 
-  // The basis gallery of `basis_key` (gui/models/basis_catalog.h): per term its symbol,
+  // The basis gallery of `basis_key` (session/basis/basis_catalog.h): per term its symbol,
   // description, order, unit, coefficient in the current flow, whether it is negligible
   // within radius_px, and its unit flow on a (2n+1)^2 grid over [-radius_px, radius_px]^2
   // (x, y, vx, vy quadruples, centred pixels). "" for an unknown key.
@@ -117,14 +133,18 @@ class WebSession {
   static std::string script_names_json();
 
  private:
-  const MotionScript* script() const;
+  // The state with the frame the clock shows.
+  WindowState shown_state() const;
+  // Shows `state` whole: "" or why it was refused (then nothing changed).
+  std::string apply_state(WindowState state);
   void rebuild_comparison();
   void advance_runs_to(int frame);
   // Per run of the frame reached: the pixels at the panel size, heat map, PSNR.
   void finish_runs_frame(int panel_width, int panel_height);
 
   Image texture_;
-  WindowState state_;
+  PlanePanel panel_;   // the frame clock: the plane, its script, the source's loop
+  WindowState state_;  // the frame is the panel's
   std::map<std::string, MotionScript> scripts_;  // shipped (read on demand) and added
   std::vector<WebRun> runs_;                     // compared policies, then the exact run
   std::string comparison_problem_;

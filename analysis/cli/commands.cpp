@@ -79,8 +79,10 @@ std::string experiments_usage() {
 
 }  // namespace
 
-const std::vector<Command>& all_commands() {
-  static const std::vector<Command> commands = {
+namespace {
+
+std::vector<Command>& command_table() {
+  static std::vector<Command> commands = {
       {"flow", "instantaneous optic flow of a moving plane: coefficients, bases, homographies",
        flow_usage(), run_flow_command},
       {"explain",
@@ -119,6 +121,12 @@ const std::vector<Command>& all_commands() {
   };
   return commands;
 }
+
+}  // namespace
+
+const std::vector<Command>& all_commands() { return command_table(); }
+
+void add_command(const Command& command) { command_table().push_back(command); }
 
 namespace {
 

@@ -24,6 +24,10 @@ struct Command {
 // All subcommands, in the order `oflab-cli --help` lists them.
 const std::vector<Command>& all_commands();
 
+// Adds a subcommand of a layer above analysis to all_commands(), after the others: oflab-cli's
+// main adds the teaching layer's `lesson` (session/cli/lesson_command.h) before run_cli.
+void add_command(const Command& command);
+
 // `oflab-cli flow`: the instantaneous flow of one moving plane (analysis/cli/flow_command.cpp).
 int run_flow_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 // `oflab-cli explain`: the planes and motions behind eight planar flow coefficients

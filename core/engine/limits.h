@@ -46,7 +46,7 @@ inline constexpr Limit kAngularVelocity{"angular velocity", "rad/s", -100.0, 100
 // Each of the eight planar flow coefficients typed in (`oflab-cli explain`): tx, ty in px/s,
 // J in 1/s, px, py in 1/(px s), so no one unit.
 inline constexpr Limit kFlowCoefficient{"flow coefficient", "", -1e6, 1e6};
-// The basis explorer's eight planar-basis terms (gui/models/basis_explorer.h), by order:
+// The basis explorer's eight planar-basis terms (session/basis/basis_explorer.h), by order:
 // translation (tx, ty) in px/s, first order (scale, squash, shear, rotation) in 1/s,
 // perspective (px, py) in 1/(px s).
 inline constexpr Limit kTranslationRate{"translation rate", "px/s", -10000.0, 10000.0};

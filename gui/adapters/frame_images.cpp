@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-#include "adapters/palette.h"
+#include "display/palette.h"
 
 namespace oflab {
 namespace {

@@ -17,7 +17,7 @@
 namespace oflab {
 
 // The colour hole pixels are marked in: magenta, which neither the viridis ramp nor a level's
-// colour (gui/adapters/palette.h) takes.
+// colour (session/display/palette.h) takes.
 QColor hole_colour();
 
 // Per pixel (row-major, camera-sized) 1 where `animator`'s frame shown now is a hole: the

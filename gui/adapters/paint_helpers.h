@@ -3,8 +3,8 @@
 
 #include <QColor>
 
-#include "adapters/palette.h"
 #include "adapters/view_theme.h"
+#include "display/palette.h"
 
 namespace oflab {
 

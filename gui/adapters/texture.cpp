@@ -4,7 +4,7 @@
 #include <QPainter>
 #include <QPainterPath>
 
-#include "adapters/palette.h"
+#include "display/palette.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
 

@@ -2,7 +2,7 @@
 // Theora), the per-frame CSV or the current frame as ParaView data. File dialogs live in the
 // window; these functions never overwrite an existing file unless told to, and write each
 // file whole (analysis/formats/atomic_file.h: a temporary beside it, renamed into place). (Sessions
-// are the window model's state: gui/models/window_state_file.h.)
+// are the window model's state: session/state/window_state_file.h.)
 #pragma once
 
 #include <QString>

@@ -15,10 +15,10 @@
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
-#include "models/animation_sources.h"
-#include "models/lessons.h"
-#include "models/window_state_file.h"
+#include "lessons/lessons.h"
+#include "player/animation_sources.h"
 #include "runs/policy_runs.h"
+#include "state/window_state_file.h"
 
 namespace oflab {
 namespace {
@@ -103,18 +103,13 @@ void read_compared(const CliArgs& cli, LaunchOptions* options) {
 }
 
 // The lesson `name_or_file` for `option`: a shipped lesson, or a lesson file (added for the
-// run, gui/models/lessons.h add_lesson).
+// run, session/lessons/lessons.h add_lesson).
 const Lesson& lesson_named(const std::string& option, const std::string& name_or_file) {
   try {
-    if (const Lesson* lesson = find_lesson(name_or_file)) return *lesson;
-    if (std::filesystem::is_regular_file(name_or_file)) {
-      return add_lesson(read_lesson_file(name_or_file));
-    }
-  } catch (const SessionError& e) {  // a lesson file that cannot be used
+    return find_or_read_lesson(name_or_file);
+  } catch (const SessionError& e) {  // not a lesson, or a lesson file that cannot be used
     throw UsageError(option + ": " + std::string(e.what()));
   }
-  throw UsageError(option + ": unknown lesson '" + name_or_file + "' (known: " + lesson_names() +
-                   ", or a lesson file)");
 }
 
 // The state the other options go over: --session's, --lesson's or the default window's.

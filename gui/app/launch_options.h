@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "cli/cli_args.h"
-#include "models/window_state.h"
+#include "state/window_state.h"
 
 namespace oflab {
 
@@ -58,13 +58,13 @@ const std::vector<std::string>& screenshot_view_names();
 // Parses the arguments after the program name. Throws UsageError with one line naming
 // the option for: unknown options or values, a missing value, --session with --lesson, a
 // --lesson or --check-lesson that is neither a shipped lesson nor a lesson file
-// (gui/models/lessons.h; a file's lesson is added for the run),
+// (session/lessons/lessons.h; a file's lesson is added for the run),
 // --frames without --screenshot, --screenshot with --benchmark, a size outside 320..8192, a
 // frame or benchmark count outside limits::kFrameCount (a benchmark must be positive), a
 // script that is neither a file nor a shipped name or that analysis/formats/script_file.h
 // rejects (the message names the file and field), a scene or viewer script that is neither
 // a file nor a shipped name or that its reader rejects, a session or lesson that
-// gui/models/window_state_file.h rejects, an unknown --mode or --animation-exact, a
+// session/state/window_state_file.h rejects, an unknown --mode or --animation-exact, a
 // --compare list that is empty, longer than kMaxComparedPolicies, repeats a policy or names
 // an unknown one, and a --source that is not a kind with a viewer script or comes without
 // --scene.

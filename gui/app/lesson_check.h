@@ -1,45 +1,43 @@
-// Lessons that tell the truth: every claim of a lesson (gui/models/lessons.h) is measured on
-// the screen it describes. The checker plays the lesson in a real window as a teacher does
-// (the lesson's state, its frames played, then each step's actions in order) and after each
-// part measures each claim on the window's own models and on what its views paint.
+// Lessons that tell the truth on the desktop: every claim of a lesson (session/lessons/
+// lessons.h) is measured on the window it describes. The lesson is played by the one lesson
+// player (session/lessons/lesson_player.h) on the window, as a teacher plays it, and after
+// each part each claim is measured: the engine's kinds on the window's own lab
+// (session/player/engine_claims.h, the same measures as `oflab-cli lesson check`), the
+// screen's kinds (session/lessons/claim_kinds.h, ClaimSource::kScreen) on what the views
+// paint, through screen_claim_measures().
 // `oflab --check-lesson NAME|FILE|all` runs it; the lesson-claims ctest runs it on every
 // shipped lesson at 1920 x 1080, and on a lesson with a false claim, which it must reject.
 #pragma once
 
 #include <functional>
-#include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
-#include "models/lessons.h"
+#include "lessons/lessons.h"
+#include "player/engine_claims.h"
 
 namespace oflab {
 
 class MainWindow;
 
-struct ClaimCheck {
-  int step = 0;  // 0: the narrative; k: the k-th step
-  LessonClaim claim;
-  double measured = 0.0;  // in the claim's unit (gui/models/lessons.h lesson_claim_kinds)
-  bool holds = false;
-};
+// The measure of every screen kind of the registry, by kind name: the value on the window as
+// it is now (the view measured rendered first); NaN when the window lacks what it names.
+const std::map<std::string, std::function<double(MainWindow*, const LessonClaim&)>>&
+screen_claim_measures();
 
-// Measures one claim on the window as it is now (the view in front rendered first).
-// Returns NaN for a claim that names something the window does not have (an unknown flow
-// part, term or compared policy), which then never holds.
+// Measures one claim of any kind on the window as it is now (the view in front rendered
+// first). Returns NaN for a claim that names something the window does not have (an
+// unknown flow part, term or compared policy), which then never holds.
 double measure_claim(MainWindow* window, const LessonClaim& claim);
 
 // Plays `lesson` in `window` (which must run on an external clock: set_external_clock(true))
 // and checks every claim of its narrative and steps, in order, and of every part that its
 // caption shows whole ("caption_cut" at most 0); after the claims of each part
 // calls `after_part(k)` (0: the narrative, k: the k-th step) when given, with the window as
-// that part left it (for a picture of each step).
+// that part left it (for a picture of each step). Throws std::runtime_error naming the
+// lesson and the part when the window refuses a part's state.
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
                                      const std::function<void(int)>& after_part = {});
-
-// One line: the lesson, the step, the claim's words, what was measured against what was
-// claimed, and whether it holds: 'flow-of-a-plane, step 2: "translation is small"
-// (flow_ratio first-order/translation) measured 106.9, claimed at least 5: holds'.
-std::string describe(const Lesson& lesson, const ClaimCheck& check);
 
 }  // namespace oflab

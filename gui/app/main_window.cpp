@@ -33,7 +33,7 @@
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
-#include "models/window_state_file.h"
+#include "state/window_state_file.h"
 #include "views/scene_controls.h"
 #include "views/view_page.h"
 
@@ -351,44 +351,29 @@ QString MainWindow::caption() const {
 }
 
 bool MainWindow::perform_lesson_step(const Lesson& lesson, int step) {
-  if (step < 1 || step > int(lesson.steps.size())) return false;
-  const LessonStep& s = lesson.steps[size_t(step - 1)];
-  if (s.has_state) {
-    WindowState state = s.state;
-    state.frame = model_->scene()->frame();
-    state.playing = false;
-    state.presentation = model_->presentation();
-    QString error;
-    if (!model_->apply(state, &error)) {
-      show_message(tr("lesson %1, step %2: %3")
-                       .arg(QString::fromStdString(lesson.name))
-                       .arg(step)
-                       .arg(error));
-      return false;
-    }
-  }
-  model_->set_playing(false);
-  if (s.frame >= 0) model_->scene()->set_frame(s.frame);
-  play_frames(s.play);
-  return model_->set_lesson_step(step);
+  const std::string problem = oflab::perform_lesson_step(*this, lesson, step);
+  if (!problem.empty()) show_message(QString::fromStdString(problem));
+  return problem.empty();
 }
 
 bool MainWindow::go_to_lesson_step(const Lesson& lesson, int step) {
-  if (step < 0 || step > int(lesson.steps.size())) return false;
-  WindowState state = lesson.state;
-  state.playing = step == 0 && lesson.state.playing && !external_clock_;
-  state.presentation = model_->presentation();  // the teacher's look stays as it is
-  QString error;
-  if (!model_->apply(state, &error)) {
-    show_message(tr("lesson %1: %2").arg(QString::fromStdString(lesson.name), error));
-    return false;
-  }
-  if (!state.playing) play_frames(lesson.play);
-  for (int k = 1; k <= step; ++k) {
-    if (!perform_lesson_step(lesson, k)) return false;
-  }
-  return true;
+  const std::string problem = oflab::go_to_lesson_step(*this, lesson, step, !external_clock_);
+  if (!problem.empty()) show_message(QString::fromStdString(problem));
+  return problem.empty();
 }
+
+WindowState MainWindow::stage_state() const { return model_->state(); }
+
+std::string MainWindow::stage_apply(const WindowState& state) {
+  QString error;
+  return model_->apply(state, &error) ? std::string() : error.toStdString();
+}
+
+void MainWindow::stage_stop() { model_->set_playing(false); }
+
+void MainWindow::stage_seek(int frame) { model_->scene()->set_frame(frame); }
+
+void MainWindow::stage_set_step(int step) { model_->set_lesson_step(step); }
 
 void MainWindow::step_lesson(int delta) {
   const Lesson* lesson = find_lesson(model_->lesson());

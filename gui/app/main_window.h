@@ -10,8 +10,9 @@
 #include <QMainWindow>
 #include <vector>
 
+#include "lessons/lesson_player.h"
+#include "lessons/lessons.h"
 #include "models/frame_pacer.h"
-#include "models/lessons.h"
 
 class QAction;
 class QComboBox;
@@ -32,7 +33,7 @@ class ViewPage;
 class WindowModel;
 struct ViewEntry;
 
-class MainWindow : public QMainWindow {
+class MainWindow : public QMainWindow, public LessonStage {
   Q_OBJECT
 
  public:
@@ -64,13 +65,24 @@ class MainWindow : public QMainWindow {
 
   // Applies a lesson's state (WindowModel::apply); its narrative shows as the caption.
   void apply_lesson(const Lesson& lesson);
-  // A lesson's steps, as the teacher takes them. perform_lesson_step does step `step` (1-based)
-  // of `lesson`: its state (over the one on screen), then its frame, then its frames played,
-  // and shows its text. go_to_lesson_step starts the lesson paused, plays its frames, and
-  // performs steps 1 .. `step` in turn (0: the narrative). Both return false, changing
-  // nothing, for a step the lesson does not have or a state the window refuses.
+  // A lesson's steps, as the teacher takes them, played by the one lesson player
+  // (session/lessons/lesson_player.h) on this window as its stage. perform_lesson_step does
+  // step `step` (1-based) of `lesson`: its state (over the one on screen), then its frame,
+  // then its frames played, and shows its text. go_to_lesson_step starts the lesson paused
+  // (playing live at step 0 when the lesson plays and the clock is the window's own), plays
+  // its frames, and performs steps 1 .. `step` in turn (0: the narrative). Both return false
+  // and show a message for a step the lesson does not have or a state the window refuses.
   bool perform_lesson_step(const Lesson& lesson, int step);
   bool go_to_lesson_step(const Lesson& lesson, int step);
+
+  // The window as a lesson's stage (lessons/lesson_player.h): its model's state, applied
+  // whole; seeking and playing its scene's frames as play_frames does.
+  WindowState stage_state() const override;
+  std::string stage_apply(const WindowState& state) override;
+  void stage_stop() override;
+  void stage_seek(int frame) override;
+  void stage_play(int frames) override { play_frames(frames); }
+  void stage_set_step(int step) override;
   // The caption banner's text: the narrative of the model's lesson, "" for none.
   QString caption() const;
 
@@ -93,7 +105,7 @@ class MainWindow : public QMainWindow {
   // used shows a message and leaves the session as it was; returns false then.
   bool load_script(const QString& name_or_path);
 
-  // Saves the model's state as a session file (gui/models/window_state_file.h); refuses an
+  // Saves the model's state as a session file (session/state/window_state_file.h); refuses an
   // existing file unless `overwrite`. Loads one and applies it, changing nothing when it
   // cannot be read or used. Both show a message naming the file and return false on
   // failure; both confirm success in the status bar.

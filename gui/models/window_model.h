@@ -1,26 +1,29 @@
-// The one home of the window's state (gui/models/window_state.h): the scene model (the
-// plane, its motion or script, the texture and the frame), the animation model (what plays
-// and the engine's settings), the policy comparison, and everything else the window shows
-// (the view in front, each view's options, presentation mode, play rate and playing, the
-// lesson). Views read and edit the state through this model and redraw on its signals;
-// they never read each other. The window applies a whole state with apply() (a lesson, the
-// command line, a session) and captures one with state().
+// The one home of the window's state: a thin Qt adapter over one lab (session/player/lab.h),
+// which holds the whole state (session/state/window_state.h) and plays it: the plane panel
+// (adapted by the scene model), the run of its source (adapted by the animation model), the
+// policy comparison, and everything else the window shows (the view in front, each view's
+// options, presentation mode, play rate and playing, the lesson) as one WindowState value.
+// Views read and edit the state through this model and redraw on its signals; they never
+// read each other. The window applies a whole state with apply() (a lesson, the command
+// line, a session) and captures one with state().
 //
 // Every setter checks its value with the same rule as the files and the command line
 // (core/engine/limits.h, window_state_problem): a refused value changes nothing and is
 // reported with input_rejected, naming the field, the value and the allowed range.
 #pragma once
 
+#include <QImage>
 #include <QObject>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "models/window_state.h"
+#include "state/window_state.h"
 
 namespace oflab {
 
 class AnimationModel;
+class Lab;
 class PolicyComparison;
 class SceneModel;
 
@@ -33,13 +36,18 @@ class WindowModel : public QObject {
   explicit WindowModel(std::vector<std::string> view_names, QObject* parent = nullptr);
   ~WindowModel() override;
 
+  // The lab the window plays (the headless claims of lessons measure it).
+  Lab& lab() const { return *lab_; }
   SceneModel* scene() const { return scene_; }
   AnimationModel* animation() const { return animation_; }
   // The policies the animation view's comparison layout plays, kept on the scene's frame.
-  PolicyComparison& comparison() const { return *comparison_; }
+  PolicyComparison& comparison() const;
 
   // The whole state as the window shows it now.
   WindowState state() const;
+  // The state's values the lab keeps beside its panel and runs (Lab::values: the view, each
+  // view's options, presentation, play, the lesson), read-only; edits go through the setters.
+  const WindowState& values() const;
   // Applies a whole state: checks everything first (window_state_problem, the view, the
   // source kind and its files, the exact renderer, the lesson, the texture and script files)
   // and changes nothing, returning false with *error set ("field: problem"), when any check
@@ -47,54 +55,54 @@ class WindowModel : public QObject {
   bool apply(const WindowState& state, QString* error);
 
   const std::vector<std::string>& view_names() const { return view_names_; }
-  const std::string& view() const { return view_; }
+  const std::string& view() const { return values().view; }
   bool set_view(const std::string& name);  // false (and input_rejected) for an unknown view
 
-  const FlowDisplay& flow_display() const { return flow_; }
+  const FlowDisplay& flow_display() const { return values().flow; }
   void set_flow_display(const FlowDisplay& display);
-  BasisKind basis() const { return basis_; }
+  BasisKind basis() const { return values().basis; }
   void set_basis(BasisKind basis);
-  bool basis_playing() const { return basis_playing_; }
+  bool basis_playing() const { return values().basis_playing; }
   void set_basis_playing(bool playing);
   // The basis view shows the explorer (WindowState::basis_explorer).
-  bool basis_explorer() const { return basis_explorer_; }
+  bool basis_explorer() const { return values().basis_explorer; }
   void set_basis_explorer(bool on);
-  // The explorer's eight values (gui/models/basis_explorer.h), each in its term's unit.
-  const ExplorerTerms& explorer_terms() const { return explorer_terms_; }
+  // The explorer's eight values (session/basis/basis_explorer.h), each in its term's unit.
+  const ExplorerTerms& explorer_terms() const { return values().explorer_terms; }
   // Sets the value of term `index` (0 .. kExplorerTermCount - 1); refused (false, and
   // input_rejected naming the term and its limit) outside the term's limit.
   bool set_explorer_term(int index, double value);
   // Sets all eight; refused as a whole when one is outside its limit.
   bool set_explorer_terms(const ExplorerTerms& terms);
 
-  PanelDisplay panel_display() const { return display_; }
+  PanelDisplay panel_display() const { return values().display; }
   void set_panel_display(PanelDisplay display);
   // The compared policies by registry name; refused unless 1 .. kMaxComparedPolicies
   // distinct known names.
   std::vector<std::string> compared() const;
   bool set_compared(const std::vector<std::string>& names);
-  const std::string& exact_renderer() const { return exact_renderer_; }
+  const std::string& exact_renderer() const { return values().exact_renderer; }
   bool set_exact_renderer(const std::string& name);
-  double zoom() const { return zoom_; }
+  double zoom() const { return values().zoom; }
   bool set_zoom(double zoom);  // refused outside limits::kZoom
 
-  bool presentation() const { return presentation_; }
+  bool presentation() const { return values().presentation; }
   void set_presentation(bool on);
-  bool scene_panel() const { return scene_panel_; }
+  bool scene_panel() const { return values().scene_panel; }
   void set_scene_panel(bool shown);
   // The cause-and-effect layout (WindowState::cause_and_effect) is shown.
-  bool cause_and_effect() const { return cause_and_effect_; }
+  bool cause_and_effect() const { return values().cause_and_effect; }
   void set_cause_and_effect(bool shown);
-  int play_rate() const { return play_rate_; }
+  int play_rate() const { return values().play_rate; }
   bool set_play_rate(int frames_per_second);  // refused outside limits::kPlayRate
-  bool playing() const { return playing_; }
+  bool playing() const { return values().playing; }
   void set_playing(bool playing);
 
   // The lesson whose narrative shows; empty for none. Set by apply() only.
-  const std::string& lesson() const { return lesson_; }
+  const std::string& lesson() const { return values().lesson; }
   // The lesson's step on screen (0: its narrative). The window performs a step's actions and
   // then sets it (app/main_window.h perform_lesson_step); refused beyond the lesson's steps.
-  int lesson_step() const { return lesson_step_; }
+  int lesson_step() const { return values().lesson_step; }
   bool set_lesson_step(int step);
 
   // Reports a refused value from a control (the control keeps the model's value): the same
@@ -116,30 +124,17 @@ class WindowModel : public QObject {
   void input_rejected(const QString& message);
 
  private:
-  // The checks of apply() that need the window's tables and the file system; "" when none
-  // fails.
-  std::string problem(const WindowState& state) const;
+  // The checks of apply() that need the window's tables (the views, the exact renderers);
+  // "" when none fails. The lab checks the rest (Lab::problem).
+  std::string front_end_problem(const WindowState& state) const;
+
+  WindowState& values();
 
   std::vector<std::string> view_names_;
+  std::unique_ptr<Lab> lab_;
+  QImage loaded_texture_;  // the texture file the lab last read, as Qt read it
   SceneModel* scene_;
   AnimationModel* animation_;
-  std::unique_ptr<PolicyComparison> comparison_;
-  std::string view_;
-  FlowDisplay flow_;
-  BasisKind basis_ = BasisKind::kPlanar;
-  bool basis_playing_ = false;
-  bool basis_explorer_ = false;
-  ExplorerTerms explorer_terms_ = default_explorer_terms();
-  PanelDisplay display_ = PanelDisplay::kSideBySide;
-  std::string exact_renderer_ = "core";
-  double zoom_ = 1.0;
-  bool presentation_ = false;
-  bool scene_panel_ = true;
-  bool cause_and_effect_ = false;
-  int play_rate_ = 30;
-  bool playing_ = false;
-  std::string lesson_;
-  int lesson_step_ = 0;
 };
 
 }  // namespace oflab

@@ -11,11 +11,11 @@
 #include <cmath>
 #include <functional>
 
-#include "adapters/palette.h"
+#include "display/palette.h"
 #include "models/animation_model.h"
-#include "models/policy_comparison.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
+#include "player/policy_comparison.h"
 #include "views/frame_inspector.h"
 
 namespace oflab {

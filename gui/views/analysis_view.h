@@ -16,7 +16,7 @@
 // stays still under the pointer. Painted with Qt; reads the animation model only.
 //
 // While the animation view compares policies (its comparison layout,
-// gui/models/policy_comparison.h), the charts overlay the compared policies' histories
+// session/player/policy_comparison.h), the charts overlay the compared policies' histories
 // instead, one line per policy in its colour (views/palette.h policy_colour) with a key:
 // the largest measured error, the frame time and the work in the cost model; then one band
 // per policy with its levels per frame, and beside the bands each policy's share of

@@ -268,7 +268,7 @@ QToolButton* AnimationControls::make_compare_button(QWidget* parent) {
   compare_button_->setText(tr("Policies"));
   compare_button_->setPopupMode(QToolButton::InstantPopup);
   compare_button_->setToolTip(
-      tr("The reuse policies the comparison plays: 2 to %1 of them").arg(kMaxComparedPolicies));
+      tr("The reuse policies the comparison plays: 1 to %1 of them").arg(kMaxComparedPolicies));
   auto* menu = new QMenu(compare_button_);
   for (const ReusePolicy& p : reuse_policies()) {
     QAction* action = menu->addAction(QString(p.name));
@@ -285,12 +285,12 @@ QToolButton* AnimationControls::make_compare_button(QWidget* parent) {
 
 void AnimationControls::compared_toggled(QAction* action) {
   const int checked = static_cast<int>(compared().size());
-  if (checked < 2 || checked > kMaxComparedPolicies) {
+  if (checked < 1 || checked > kMaxComparedPolicies) {
     const QSignalBlocker block(action);
-    action->setChecked(!action->isChecked());  // refused: the comparison keeps 2 .. 4
-    emit refused(tr("Policies: the comparison plays 2 to %1 policies; %2")
+    action->setChecked(!action->isChecked());  // refused: the comparison keeps 1 .. 4
+    emit refused(tr("Policies: the comparison plays 1 to %1 policies; %2")
                      .arg(kMaxComparedPolicies)
-                     .arg(checked < 2 ? tr("check another before unchecking this one")
+                     .arg(checked < 1 ? tr("check another before unchecking this one")
                                       : tr("uncheck one before checking another")));
     return;
   }

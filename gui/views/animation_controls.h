@@ -1,5 +1,5 @@
 // The animation view's control bar: what plays (an entry of the source-kind table,
-// gui/models/animation_sources.h, with its shipped name and viewer script), the engine's
+// session/player/animation_sources.h, with its shipped name and viewer script), the engine's
 // reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
 // affine/perspective switch; with the budget policy, a spin box of its pixel budget per
 // frame), the per-level thresholds, the Delta policy, the sampling, the layer content and its
@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "engine/engine.h"
-#include "models/animation_sources.h"
-#include "models/policy_comparison.h"
-#include "models/window_state.h"
+#include "player/animation_sources.h"
+#include "player/policy_comparison.h"
+#include "state/window_state.h"
 
 class QAction;
 class QComboBox;

@@ -19,8 +19,8 @@
 #include "adapters/painted_text.h"
 #include "engine/limits.h"
 #include "models/animation_model.h"
-#include "models/policy_comparison.h"
 #include "models/window_model.h"
+#include "player/policy_comparison.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_layout.h"
@@ -420,7 +420,7 @@ QRectF AnimationView::fit_content() {
   try {
     if (kind.plane_script) {
       fit_ =
-          script_image_bounds(kind.plane_script(model_->source(), *model_->scene_model()), kNear);
+          script_image_bounds(kind.plane_script(model_->source(), model_->player().panel()), kNear);
     } else if (kind.viewer_script && model_->animator()) {
       fit_ = scene_image_bounds(model_->animator()->scene(), kind.viewer_script(model_->source()),
                                 kNear);

@@ -10,7 +10,7 @@
 //
 // Layouts (PanelDisplay): side by side (engine | exact); the difference heat map; blink
 // (engine and exact in turn); and the comparison, which plays several reuse policies at
-// once on the same frames (gui/models/policy_comparison.h; affine and perspective by
+// once on the same frames (session/player/policy_comparison.h; affine and perspective by
 // default) beside the exact projection, each approximation with its level outlines,
 // measured error and cost, and under each its difference heat map against the exact frame.
 // Beside the panels, the frame inspector (not in the comparison, which has no single

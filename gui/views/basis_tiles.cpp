@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "adapters/paint_helpers.h"
-#include "adapters/palette.h"
+#include "display/palette.h"
 
 namespace oflab {
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "adapters/view_theme.h"
-#include "models/basis_catalog.h"
+#include "basis/basis_catalog.h"
 
 class QPainter;
 

@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "adapters/flow_parts.h"
 #include "adapters/paint_helpers.h"
+#include "display/flow_parts.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "scene/view_culling.h"

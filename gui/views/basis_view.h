@@ -8,7 +8,7 @@
 
 #include <memory>
 
-#include "models/basis_catalog.h"
+#include "basis/basis_catalog.h"
 #include "views/view_page.h"
 
 class QCheckBox;

@@ -7,7 +7,7 @@
 
 #include <QWidget>
 
-#include "models/basis_catalog.h"
+#include "basis/basis_catalog.h"
 
 class QComboBox;
 class QTableWidget;

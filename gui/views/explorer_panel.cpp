@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "models/basis_catalog.h"
+#include "basis/basis_catalog.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "views/explorer_pictures.h"

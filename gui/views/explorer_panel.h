@@ -1,4 +1,4 @@
-// The basis explorer's widgets (gui/models/basis_explorer.h), which the basis view lays out
+// The basis explorer's widgets (session/basis/basis_explorer.h), which the basis view lays out
 // around its gallery when the explorer is on: a column of eight sliders, one per planar-basis
 // term with its unit (SliderSpin), with the solutions of the inverse problem as numbers under
 // them; the picture of their combined deformation; and a column with the two solutions
@@ -12,7 +12,7 @@
 #include <array>
 
 #include "adapters/view_theme.h"
-#include "models/basis_explorer.h"
+#include "basis/basis_explorer.h"
 
 class QLabel;
 class QPushButton;

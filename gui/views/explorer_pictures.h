@@ -1,4 +1,4 @@
-// The basis explorer's three pictures (gui/models/basis_explorer.h), painted with Qt: the
+// The basis explorer's three pictures (session/basis/basis_explorer.h), painted with Qt: the
 // combined deformation on the texture and on a grid, the two solutions' planes with their
 // motions, and the two solutions played forward. Each returns a new image of the asked size
 // (at least 1 x 1 pixels) in the theme's colours, its text at least the theme's label size.
@@ -8,7 +8,7 @@
 #include <QSize>
 
 #include "adapters/view_theme.h"
-#include "models/basis_explorer.h"
+#include "basis/basis_explorer.h"
 
 namespace oflab {
 

@@ -9,7 +9,7 @@
 
 #include "adapters/frame_images.h"
 #include "adapters/paint_helpers.h"
-#include "adapters/palette.h"
+#include "display/palette.h"
 #include "engine/engine.h"
 #include "flow/homography.h"
 #include "image/warp.h"

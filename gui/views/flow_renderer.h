@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "adapters/view_theme.h"
+#include "display/flow_display.h"
 #include "image/image.h"
 #include "image/layer.h"
-#include "models/flow_display.h"
 
 class QPainter;
 

@@ -15,7 +15,7 @@
 // flow view does.
 //
 // For a scene source (a viewer script walking through polygons) the world is the scene's:
-// every polygon in its layer's current level colour (gui/adapters/palette.h), culled polygons
+// every polygon in its layer's current level colour (session/display/palette.h), culled polygons
 // pale and hidden ones dark, the viewer's path past and future, the viewer's frustum and
 // image plane (the engine's frame) at its pose, and the scene's motion seen by the viewer as
 // the V and Omega arrows at the eye. It follows the animation model.

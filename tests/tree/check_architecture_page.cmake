@@ -1,4 +1,4 @@
-# The architecture page check: manual/architecture.md names every header of the three layers,
+# The architecture page check: manual/architecture.md names every header of the four layers,
 # and every header it names exists.
 #
 #   cmake -DROOT=<source tree> [-DPAGE=<page>] -P tests/tree/check_architecture_page.cmake
@@ -7,7 +7,7 @@
 # its layer folder, between backticks: core/engine/animator.h is written `engine/animator.h`,
 # analysis/runs/run_driver.h `runs/run_driver.h`, gui/models/scene_model.h
 # `models/scene_model.h` - exactly as it is included.
-# Fails when a header under core/, analysis/ or gui/ is not named, and when the page names, in
+# Fails when a header under core/, analysis/, session/ or gui/ is not named, and when the page names, in
 # that form, a header that does not exist (a backticked "<folder>/<name>.h" whose folder is a
 # folder of a layer, or a full path such as `core/flow/camera.h`).
 # PAGE defaults to ROOT/manual/architecture.md; ROOT to the tree this script sits in.
@@ -30,7 +30,7 @@ set(problems "")
 set(header_count 0)
 set(layer_folders "")
 set(headers "")
-foreach(layer core analysis gui)
+foreach(layer core analysis session gui)
   file(GLOB_RECURSE layer_headers RELATIVE "${ROOT}/${layer}" "${ROOT}/${layer}/*.h")
   list(SORT layer_headers)
   foreach(header IN LISTS layer_headers)

@@ -40,7 +40,7 @@ if(NOT EXISTS "${style}")
 endif()
 
 set(files "")
-foreach(folder IN ITEMS core analysis gui tests bench fuzz)
+foreach(folder IN ITEMS core analysis session gui tests bench fuzz web)
   file(GLOB_RECURSE found RELATIVE "${ROOT}" "${ROOT}/${folder}/*.h" "${ROOT}/${folder}/*.cpp")
   list(APPEND files ${found})
 endforeach()

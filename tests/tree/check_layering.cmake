@@ -1,9 +1,11 @@
-# The layering check: every include in the tree points down the stack gui -> analysis -> core.
+# The layering check: every include in the tree points down the stack
+# gui -> session -> analysis -> core.
 #
 #   cmake -DROOT=<source tree> -P tests/tree/check_layering.cmake
 #
-# Scans the C++ files (.h, .cpp) of core/, analysis/, gui/ and of the code built with each
-# layer (tests/core with core, tests/analysis and bench/ with analysis, tests/gui with gui).
+# Scans the C++ files (.h, .cpp) of core/, analysis/, session/, gui/ and of the code built with
+# each layer (tests/core with core, tests/analysis and bench/ with analysis, tests/session,
+# web/ (the browser page) and fuzz/ (the readers' harnesses) with session, tests/gui with gui).
 # A quoted include is resolved the way the compiler resolves it: the including file's own
 # folder first, then the include roots its target sees (its test folder, its own layer, then
 # the layers below), and finally the layers above, where finding it is a violation.
@@ -12,8 +14,10 @@
 #   - the include is written with a layer prefix ("core/...", "analysis/...", "gui/..."): each
 #     library exposes only its own folder, so "flow/camera.h", never "core/flow/camera.h";
 #   - the include names no file of the tree (system and third-party headers are <...>);
-#   - core (or the code built with it) includes a Qt or VTK header (<Q...>, <vtk...>), or
-#     analysis includes a Qt header (analysis links VTK but never Qt).
+#   - core or session (or the code built with them) includes a Qt or VTK header (<Q...>,
+#     <vtk...>), or analysis includes a Qt header (analysis links VTK but never Qt);
+#   - a folder of core includes a later folder of core (flow < image < content <
+#     engine = scene < scene_shifting; the engine and the scenes it plays are one rank).
 # Exits with an error listing every violation; prints "layering: N files, no violations"
 # otherwise. ROOT defaults to the tree this script sits in.
 
@@ -25,7 +29,7 @@ endif()
 get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 
 # The layers, lowest first; a file may include headers of its own layer and those below.
-set(layers core analysis gui)
+set(layers core analysis session gui)
 
 # Appends "file:line: #include ...: reason" to `violations`; the reason is the remaining
 # arguments, concatenated (no semicolons: `violations` is a list).
@@ -102,6 +106,39 @@ function(check_gui_include file line include sub)
   set(violations "${violations}" PARENT_SCOPE)
 endfunction()
 
+# Inside core/, the folders in dependency order, lowest first, as folder:rank: the flow of a
+# plane, images and warps, what a layer shows, the engine and the scenes it plays (one rank:
+# the engine's frame records name scene types, the scene engine runs the plane engine), and
+# scene shifting.
+set(core_folders flow:0 image:1 content:2 engine:3 scene:3 scene_shifting:4)
+
+# Sets `out` to the rank of core folder `folder`, or -1.
+function(core_rank folder out)
+  set(${out} -1 PARENT_SCOPE)
+  foreach(entry IN LISTS core_folders)
+    if(entry MATCHES "^${folder}:([0-9]+)$")
+      set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
+    endif()
+  endforeach()
+endfunction()
+
+# Appends a violation when `include` (from `file` in core/`sub`) names a header of a core
+# folder later than `sub`.
+function(check_core_include file line include sub)
+  if(NOT include MATCHES "^([a-z_]+)/")
+    return()
+  endif()
+  set(target "${CMAKE_MATCH_1}")
+  core_rank("${sub}" own)
+  core_rank("${target}" other)
+  if(own GREATER_EQUAL 0 AND other GREATER own)
+    add_violation("${file}" ${line} "\"${include}\""
+      "core/${sub} must not include core/${target} (inside core, folders depend on earlier "
+      "ones only: flow < image < content < engine = scene < scene_shifting)")
+  endif()
+  set(violations "${violations}" PARENT_SCOPE)
+endfunction()
+
 # Checks the files under `folder` (relative to ROOT), built with layer index `rank` and the
 # extra include root `extra`; appends to `violations` and `file_count` in the caller's scope.
 function(check_folder folder rank extra)
@@ -129,7 +166,7 @@ function(check_folder folder rank extra)
       if(directive MATCHES "^#[ \t]*include[ \t]*\"([^\"]+)\"")
         set(include "${CMAKE_MATCH_1}")
         line_of("${text}" "${directive}" line)
-        if(include MATCHES "^(core|analysis|gui)/")
+        if(include MATCHES "^(core|analysis|session|gui)/")
           add_violation("${file}" ${line} "\"${include}\""
             "written with a layer prefix, but each library's include root is its own folder, so "
             "drop the '${CMAKE_MATCH_1}/'")
@@ -142,9 +179,11 @@ function(check_folder folder rank extra)
         elseif(NOT found STREQUAL "")
           add_violation("${file}" ${line} "\"${include}\""
             "resolves to ${found}/${include}, and ${who} must not include ${found} "
-            "(dependencies point gui -> analysis -> core)")
+            "(dependencies point gui -> session -> analysis -> core)")
         elseif(file MATCHES "^gui/([a-z_]+)/")
           check_gui_include("${file}" ${line} "${include}" "${CMAKE_MATCH_1}")
+        elseif(file MATCHES "^core/([a-z_]+)/")
+          check_core_include("${file}" ${line} "${include}" "${CMAKE_MATCH_1}")
         endif()
       elseif(directive MATCHES "^#[ \t]*include[ \t]*<((Q|vtk)[^>]*)>")
         set(include "${CMAKE_MATCH_1}")
@@ -152,7 +191,7 @@ function(check_folder folder rank extra)
         if(include MATCHES "^vtk")
           set(library VTK)
         endif()
-        if(rank EQUAL 0 OR (rank EQUAL 1 AND library STREQUAL "Qt"))
+        if(rank EQUAL 0 OR rank EQUAL 2 OR (rank EQUAL 1 AND library STREQUAL "Qt"))
           line_of("${text}" "${directive}" line)
           add_violation("${file}" ${line} "<${include}>"
             "${who} must not include ${library} headers")
@@ -172,6 +211,8 @@ foreach(layer IN LISTS layers)
   math(EXPR rank "${rank} + 1")
 endforeach()
 check_folder(bench 1 bench)  # oflab-bench links analysis (the engine cases read shipped scripts)
+check_folder(web 2 web)      # the browser page binds session (and core, analysis/formats)
+check_folder(fuzz 2 fuzz)    # the readers' harnesses read through session's readers
 
 list(LENGTH violations violation_count)
 if(violation_count GREATER 0)

@@ -10,6 +10,8 @@
 #include <random>
 #include <vector>
 
+#include "display/palette.h"
+
 namespace oflab {
 namespace {
 
@@ -85,35 +87,32 @@ TEST(FramePixels, HeatMapColoursEachPixelByItsDifference) {
       for (const auto& [u, v] : {std::pair{p.r, q.r}, {p.g, q.g}, {p.b, q.b}, {p.a, q.a}}) {
         d = std::max(d, std::abs(u - v));
       }
-      std::uint8_t rgb[3];
-      viridis(d / 64.0, rgb);
-      for (int c = 0; c < 3; ++c) EXPECT_EQ(out[4 * (y * 16 + x) + c], rgb[c]) << x << "," << y;
+      const Rgb8 c = magnitude_colour(d / 64.0);
+      const std::uint8_t rgb[3] = {c.r, c.g, c.b};
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(out[4 * (y * 16 + x) + k], rgb[k]) << x << "," << y;
     }
   }
   EXPECT_THROW(difference_heat_map_into(a, b, 0, display_sampling(16, 8, 16, 8), out),
                std::invalid_argument);
 }
 
-TEST(FramePixels, ViridisRunsFromDarkBlueToYellowAndClamps) {
-  std::uint8_t low[3], high[3], below[3], above[3], nan[3];
-  viridis(0.0, low);
-  viridis(1.0, high);
-  viridis(-3.0, below);
-  viridis(7.0, above);
-  viridis(std::nan(""), nan);
-  EXPECT_EQ(std::vector<int>(low, low + 3), (std::vector<int>{68, 1, 84}));
-  EXPECT_EQ(std::vector<int>(high, high + 3), (std::vector<int>{253, 231, 37}));
-  EXPECT_EQ(std::vector<int>(below, below + 3), std::vector<int>(low, low + 3));
-  EXPECT_EQ(std::vector<int>(above, above + 3), std::vector<int>(high, high + 3));
-  EXPECT_EQ(std::vector<int>(nan, nan + 3), std::vector<int>(low, low + 3));
+// The one ramp of every front-end (session/display/palette.h), as the page's heat maps use it.
+TEST(FramePixels, TheHeatRampRunsFromDarkBlueToYellowAndClamps) {
+  const auto rgb = [](double t) {
+    const Rgb8 c = magnitude_colour(t);
+    return std::vector<int>{c.r, c.g, c.b};
+  };
+  EXPECT_EQ(rgb(0.0), (std::vector<int>{68, 1, 84}));
+  EXPECT_EQ(rgb(1.0), (std::vector<int>{253, 231, 37}));
+  EXPECT_EQ(rgb(-3.0), rgb(0.0));
+  EXPECT_EQ(rgb(7.0), rgb(1.0));
+  EXPECT_EQ(rgb(std::nan("")), rgb(0.0));
   // Lightness (the sum of the channels) grows along the ramp, so more difference is brighter.
   int previous = -1;
   for (int i = 0; i <= 64; ++i) {
-    std::uint8_t rgb[3];
-    viridis(i / 64.0, rgb);
-    const int sum = rgb[0] + rgb[1] + rgb[2];
-    EXPECT_GE(sum, previous) << i;
-    previous = sum;
+    const std::vector<int> c = rgb(i / 64.0);
+    EXPECT_GE(c[0] + c[1] + c[2], previous) << i;
+    previous = c[0] + c[1] + c[2];
   }
 }
 

@@ -15,6 +15,8 @@
 //   within 30 dB PSNR of its baseline (tests/web/baselines/); the flow view's screenshot is
 //   not within 30 dB of the gallery's baseline, and a blank image is found blank (negative
 //   controls). A failing screenshot is written to --out.
+// - Every step of every shipped lesson shows the state and frame `oflab-cli lesson state`
+//   gives (--cli, default build/analysis/oflab-cli); a changed frame is caught.
 // - --bench: the flow view and the comparison played frame by frame for 300 frames, paced
 //   at 60 Hz and unpaced; prints the frames per second of requestAnimationFrame (speed is
 //   reported, not tested).
@@ -305,6 +307,39 @@ async function testControls(browser) {
   check('LessonStepsApplyTheirState', lesson[0] === 2 && lesson[1] === 'waxman-ullman', lesson.join(' | '));
 }
 
+// --- The same lesson everywhere ----------------------------------------------------------
+// Every step of every shipped lesson shows in the page (Session.goToLessonStep, the one
+// lesson player) the state and frame that `oflab-cli lesson state` gives; the desktop
+// window is held to the CLI's states by tests/gui/app/lesson_player_test.cpp.
+async function testLessonStates(browser) {
+  const { spawnSync } = require('child_process');
+  const cli = path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli')));
+  await open(browser, '?view=flow', drawnMarker);
+  const lessons = await evaluate(browser, 'JSON.stringify(app.lessons.map((l) => [l.name, l.steps.length]))');
+  let parts = 0;
+  const differ = [];
+  for (const [name, steps] of JSON.parse(lessons)) {
+    for (let k = 0; k <= steps; ++k) {
+      const r = spawnSync(cli, ['lesson', 'state', name, '--step', String(k)], { encoding: 'utf8' });
+      if (r.status !== 0) { differ.push(`${name} ${k}: oflab-cli: ${r.stderr.trim()}`); continue; }
+      const expected = JSON.parse(r.stdout).state;
+      const shown = JSON.parse(await evaluate(browser,
+        `(() => { const p = app.session.goToLessonStep(${JSON.stringify(name)}, ${k}); return p || app.session.stateJson(); })()`));
+      if (JSON.stringify(shown) !== JSON.stringify(expected)) {
+        differ.push(`${name} step ${k}: page frame ${shown.frame}, CLI frame ${expected.frame}`);
+      }
+      ++parts;
+    }
+  }
+  check('EveryLessonStepShowsTheCliStateAndFrame', differ.length === 0 && parts >= 44,
+    differ.length ? differ.slice(0, 5).join('; ') : `${parts} parts of ${JSON.parse(lessons).length} lessons`);
+  // Negative control: a changed frame is a difference.
+  const nudged = JSON.parse(spawnSync(cli, ['lesson', 'state', 'flow-of-a-plane'], { encoding: 'utf8' }).stdout).state;
+  const page = JSON.parse(await evaluate(browser, "(() => { app.session.goToLessonStep('flow-of-a-plane', 0); return app.session.stateJson(); })()"));
+  nudged.frame += 1;
+  check('NegativeControl_AnotherFrameIsADifference', JSON.stringify(page) !== JSON.stringify(nudged));
+}
+
 // --- Speed -------------------------------------------------------------------------------
 // Each view twice: paced, as a 60 Hz display shows it (requestAnimationFrame at most 60 a
 // second, so 60 is the most this can show), and unpaced (Chromium's frame-rate limit and
@@ -346,6 +381,7 @@ async function bench(browser) {
       await testSelftest(browser);
       await testScreenshots(browser);
       await testControls(browser);
+      await testLessonStates(browser);
     }
   } catch (error) {
     check('TheTestsRan', false, error.message);

@@ -17,11 +17,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/main_window.h"
+#include "lessons/lessons.h"
 #include "models/animation_model.h"
-#include "models/lessons.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
-#include "models/window_state_file.h"
+#include "state/window_state_file.h"
 #include "views/animation_view.h"
 #include "views/scene_controls.h"
 #include "views/slider_spin.h"

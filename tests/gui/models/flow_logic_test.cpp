@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "adapters/flow_parts.h"
-#include "adapters/palette.h"
+#include "basis/basis_catalog.h"
+#include "display/flow_parts.h"
+#include "display/palette.h"
 #include "flow/homography.h"
 #include "flow/plane_scene.h"
-#include "models/basis_catalog.h"
 #include "models/scene_parameters.h"
 
 namespace oflab {

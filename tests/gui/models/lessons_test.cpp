@@ -1,7 +1,7 @@
 // Lessons are files: every shipped lesson reads, the menu order is theirs, and the manual's
 // list of lessons is exactly the files (a lesson in the manual without a file, or a file
 // the manual misses, fails here).
-#include "models/lessons.h"
+#include "lessons/lessons.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <set>
 
 #include "formats/datasets.h"
-#include "models/window_state_file.h"
+#include "state/window_state_file.h"
 
 namespace oflab {
 namespace {

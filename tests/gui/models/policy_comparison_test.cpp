@@ -1,7 +1,7 @@
 // The comparison's per-frame history: for each compared policy it equals, frame by frame,
 // what the animation model records when it plays that policy alone on the same source; it
 // restarts with the run; it keeps at most its limit of frames, the newest.
-#include "models/policy_comparison.h"
+#include "player/policy_comparison.h"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +46,7 @@ TEST(PolicyComparisonHistory, EqualsEachPolicyPlayedAlone) {
   SceneModel scene;
   AnimationModel model(&scene);
   ASSERT_TRUE(model.set_source(kLoop));
-  PolicyComparison comparison(&model);
+  PolicyComparison comparison(&model.player());
   comparison.set_policies(
       {&reuse_policy("perspective"), &reuse_policy("affine"), &reuse_policy("talisman")});
   for (int f = 1; f <= kFrames; ++f) {
@@ -73,7 +73,7 @@ TEST(PolicyComparisonHistory, LevelTotalsCountTheLayerFramesPerLevel) {
   SceneModel scene;
   AnimationModel model(&scene);
   ASSERT_TRUE(model.set_source({"scene", "four-cubes", "circle"}));
-  PolicyComparison comparison(&model);
+  PolicyComparison comparison(&model.player());
   comparison.set_policies({&reuse_policy("perspective"), &reuse_policy("rerender")});
   scene.set_frame(12);
   const std::vector<ComparedRun>& runs = comparison.runs();
@@ -101,7 +101,7 @@ TEST(PolicyComparisonHistory, RestartsWithTheRunAndKeepsAtMostItsLimit) {
   SceneModel scene;
   AnimationModel model(&scene);
   ASSERT_TRUE(model.set_source(kLoop));
-  PolicyComparison comparison(&model, 10);
+  PolicyComparison comparison(&model.player(), 10);
   for (int f = 1; f <= 25; ++f) {
     scene.set_frame(f);
     comparison.runs();

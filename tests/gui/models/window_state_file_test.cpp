@@ -1,7 +1,7 @@
 // Session files (format 2, by name) and the window state's rules: random states round-trip
 // through a file exactly, format-1 files still read, and an unknown field or a value out of
 // its limit is refused naming the file, the field, the value and the allowed range.
-#include "models/window_state_file.h"
+#include "state/window_state_file.h"
 
 #include <gtest/gtest.h>
 

@@ -7,14 +7,14 @@
 #include <QPainter>
 #include <cmath>
 
-#include "adapters/palette.h"
+#include "display/palette.h"
 #include "engine/engine.h"
 #include "engine/reuse_policy.h"
 #include "flow/geometry.h"
 #include "flow/plane_scene.h"
 #include "models/animation_model.h"
-#include "models/policy_comparison.h"
 #include "models/scene_model.h"
+#include "player/policy_comparison.h"
 #include "views/animation_view.h"
 #include "views/frame_inspector.h"
 #include "window_fixture.h"

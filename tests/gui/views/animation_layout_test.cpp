@@ -19,10 +19,10 @@
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
 #include "image_checks.h"
+#include "lessons/lessons.h"
 #include "models/animation_model.h"
-#include "models/lessons.h"
-#include "models/policy_comparison.h"
 #include "models/scene_model.h"
+#include "player/policy_comparison.h"
 #include "scene/view_culling.h"
 #include "views/animation_view.h"
 #include "views/panel_layout.h"
@@ -252,9 +252,10 @@ TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
   }
 }
 
-// The control bar's Policies menu picks what the comparison plays: any 2 to 4 policies of
-// the registry; a fifth, or dropping below two, is refused and leaves the comparison as it was.
-TEST_F(AnimationLayoutTest, PoliciesMenuComparesTwoToFourPolicies) {
+// The control bar's Policies menu picks what the comparison plays: any 1 to 4 policies of
+// the registry (as the model, the CLI, session files and the page take); a fifth, or none,
+// is refused and leaves the comparison as it was.
+TEST_F(AnimationLayoutTest, PoliciesMenuComparesOneToFourPolicies) {
   show_comparison();
   auto* button = animation().findChild<QToolButton*>("animation_compared");
   ASSERT_NE(button, nullptr);
@@ -280,17 +281,22 @@ TEST_F(AnimationLayoutTest, PoliciesMenuComparesTwoToFourPolicies) {
   action("exact")->trigger();  // a fifth: refused, with a word
   EXPECT_FALSE(action("exact")->isChecked());
   EXPECT_EQ(names().size(), 4u);
-  EXPECT_TRUE(window().message().contains("2 to 4 policies")) << window().message().toStdString();
+  EXPECT_TRUE(window().message().contains("1 to 4 policies")) << window().message().toStdString();
   action("affine")->trigger();
   action("dissertation")->trigger();
   EXPECT_EQ(names(), (std::vector<std::string>{"perspective", "talisman"}));
-  action("talisman")->trigger();  // below two: refused
-  EXPECT_TRUE(action("talisman")->isChecked());
   window().play_frames(3);
   animation().render_image();
   ASSERT_EQ(window().model()->comparison().runs().size(), 2u);
   EXPECT_STREQ(window().model()->comparison().runs()[1].policy->name, "talisman");
   EXPECT_EQ(animation().panel_rects().size(), 5u);
+  action("perspective")->trigger();  // one policy beside the exact frame
+  EXPECT_EQ(names(), (std::vector<std::string>{"talisman"}));
+  animation().render_image();
+  EXPECT_EQ(animation().panel_rects().size(), 3u);
+  action("talisman")->trigger();  // none: refused
+  EXPECT_TRUE(action("talisman")->isChecked());
+  EXPECT_EQ(names(), (std::vector<std::string>{"talisman"}));
 }
 
 // The lesson "optic flow against Talisman" plays optic flow and Talisman beside the exact

@@ -1,9 +1,9 @@
-// The basis explorer (gui/models/basis_explorer.h, gui/views/explorer_panel.h): its model
+// The basis explorer (session/basis/basis_explorer.h, gui/views/explorer_panel.h): its model
 // against independent computations (the deformation against the flow integrated point by
 // point, the grid's changes against hand formulas), the sliders driving the deformation, the
 // lit tiles and the solutions panel in a real window, the two futures as the panel shows
 // them, and the lesson claims of the explorer, each with a negative control.
-#include "models/basis_explorer.h"
+#include "basis/basis_explorer.h"
 
 #include <QDoubleSpinBox>
 #include <QLabel>

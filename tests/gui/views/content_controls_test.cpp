@@ -7,8 +7,8 @@
 
 #include "adapters/frame_images.h"
 #include "image_checks.h"
+#include "lessons/lessons.h"
 #include "models/animation_model.h"
-#include "models/lessons.h"
 #include "models/scene_model.h"
 #include "views/animation_view.h"
 #include "window_fixture.h"

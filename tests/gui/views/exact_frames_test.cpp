@@ -20,8 +20,8 @@
 #include "image_checks.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
-#include "models/window_state_file.h"
 #include "runs/vtk_scene_renderer.h"
+#include "state/window_state_file.h"
 #include "views/animation_view.h"
 #include "window_fixture.h"
 

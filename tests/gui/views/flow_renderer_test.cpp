@@ -9,8 +9,8 @@
 #include <QRegularExpression>
 #include <cmath>
 
-#include "adapters/flow_parts.h"
-#include "adapters/palette.h"
+#include "display/flow_parts.h"
+#include "display/palette.h"
 #include "flow/plane_scene.h"
 
 namespace oflab::test {

@@ -12,7 +12,7 @@
 #include "adapters/hole_map.h"
 #include "app/lesson_check.h"
 #include "models/animation_model.h"
-#include "models/policy_comparison.h"
+#include "player/policy_comparison.h"
 #include "views/animation_view.h"
 #include "views/number_box.h"
 #include "views/reprojection_controls.h"

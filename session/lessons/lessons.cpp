@@ -1,0 +1,201 @@
+#include "lessons/lessons.h"
+
+#include <algorithm>
+#include <deque>
+#include <filesystem>
+
+#include "formats/datasets.h"
+#include "formats/json_fields.h"
+#include "lessons/claim_kinds.h"
+#include "state/window_state_file.h"
+
+namespace oflab {
+namespace {
+
+using namespace json_fields;
+using Where = Place<SessionError>;
+
+// obj[field] as a whole number in first..last.
+int whole_in(const json& obj, const Where& w, const std::string& field, int first, int last) {
+  const double v = number(member(obj, w, field), w, field);
+  if (v != std::floor(v) || v < first || v > last) {
+    w.fail(field,
+           "must be a whole number from " + std::to_string(first) + " to " + std::to_string(last));
+  }
+  return int(v);
+}
+
+LessonClaim read_claim(const json& j, const Where& w) {
+  if (!j.is_object()) w.fail("claims", "each claim must be an object");
+  only_fields(j, w, {"says", "claim", "of", "over", "level", "at_least", "at_most"});
+  LessonClaim c;
+  c.says = text(j, w, "says");
+  c.claim = text(j, w, "claim");
+  c.of = optional_text(j, w, "of", "");
+  c.over = optional_text(j, w, "over", "");
+  c.level = optional_text(j, w, "level", "");
+  if (j.contains("at_least")) c.at_least = number(j.at("at_least"), w, "at_least");
+  if (j.contains("at_most")) c.at_most = number(j.at("at_most"), w, "at_most");
+  if (!j.contains("at_least") && !j.contains("at_most")) {
+    w.fail("at_least", "a claim needs at_least, at_most or both");
+  }
+  // The kind and its fields, through the registry (lessons/claim_kinds.h).
+  const std::string problem = claim_problem(c);
+  if (!problem.empty()) {
+    const size_t colon = problem.find(": ");
+    w.fail(problem.substr(0, colon), problem.substr(colon + 2));
+  }
+  return c;
+}
+
+std::vector<LessonClaim> read_claims(const json& obj, const Where& w) {
+  std::vector<LessonClaim> claims;
+  if (!obj.contains("claims")) return claims;
+  const json& list = obj.at("claims");
+  if (!list.is_array()) w.fail("claims", "must be a list of claims");
+  for (size_t i = 0; i < list.size(); ++i) {
+    claims.push_back(read_claim(list[i], Where{w.origin, w.part + (w.part.empty() ? "" : ", ") +
+                                                             "claim " + std::to_string(i + 1)}));
+  }
+  return claims;
+}
+
+// The steps, each state read over the one before it (the lesson's own first).
+std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
+                                   const WindowState& lesson_state) {
+  std::vector<LessonStep> steps;
+  if (!root.contains("steps")) return steps;
+  const Where top{origin, ""};
+  const json& list = root.at("steps");
+  if (!list.is_array()) top.fail("steps", "must be a list of steps");
+  WindowState state = lesson_state;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Where w{origin, "step " + std::to_string(i + 1)};
+    const json& j = list[i];
+    if (!j.is_object()) top.fail("steps", "each step must be an object");
+    only_fields(j, w, {"say", "do", "claims"});
+    LessonStep step;
+    step.say = text(j, w, "say");
+    if (j.contains("do")) {
+      const json& act = object(j, w, "do");
+      only_fields(act, w, {"frame", "play", "state"});
+      if (act.contains("frame")) step.frame = whole_in(act, w, "frame", 0, 1000000);
+      if (act.contains("play")) step.play = whole_in(act, w, "play", 0, 100000);
+      if (act.contains("state")) {
+        state =
+            read_window_state_object(object(act, w, "state"), origin, w.part + ": state", state);
+        step.has_state = true;
+        step.state = state;
+      }
+    }
+    step.claims = read_claims(j, w);
+    steps.push_back(step);
+  }
+  return steps;
+}
+
+}  // namespace
+
+Lesson read_lesson_file(const std::string& path) {
+  const std::string origin = std::filesystem::path(path).filename().string();
+  const Where top{origin, ""};
+  const json root = parse_object(read_file_text<SessionError>(path), top);
+  only_fields(root, top,
+              {"format", "version", "name", "order", "title", "narrative", "state", "play",
+               "claims", "steps"});
+  if (text(root, top, "format") != "oflab-lesson") top.fail("format", "must be \"oflab-lesson\"");
+  if (number(member(root, top, "version"), top, "version") != 1) {
+    top.fail("version", "only version 1 is known");
+  }
+  Lesson lesson;
+  lesson.name = text(root, top, "name");
+  if (lesson.name != std::filesystem::path(path).stem().string()) {
+    top.fail("name", "must be the file's name without .json");
+  }
+  lesson.title = text(root, top, "title");
+  lesson.narrative = text(root, top, "narrative");
+  const double order = number(member(root, top, "order"), top, "order");
+  if (order != std::floor(order) || order < 1 || order > 1000) {
+    top.fail("order", "must be a whole number from 1 to 1000");
+  }
+  lesson.order = int(order);
+  lesson.state =
+      read_window_state_object(object(root, top, "state"), origin, "state", WindowState());
+  if (!lesson.state.lesson.empty()) top.fail("state", "must not name a lesson itself");
+  lesson.state.lesson = lesson.name;
+  if (root.contains("play")) lesson.play = whole_in(root, top, "play", 0, 100000);
+  lesson.claims = read_claims(root, Where{origin, "narrative"});
+  lesson.steps = read_steps(root, origin, lesson.state);
+  for (LessonStep& step : lesson.steps) step.state.lesson = lesson.name;
+  return lesson;
+}
+
+const std::vector<Lesson>& lessons() {
+  static const std::vector<Lesson> all = [] {
+    std::vector<Lesson> list;
+    for (const std::string& name : shipped_names("lessons")) {
+      list.push_back(read_lesson_file(datasets_dir() + "/lessons/" + name + ".json"));
+    }
+    std::sort(list.begin(), list.end(),
+              [](const Lesson& a, const Lesson& b) { return a.order < b.order; });
+    for (size_t i = 1; i < list.size(); ++i) {
+      if (list[i].order == list[i - 1].order) {
+        throw SessionError(list[i].name + ".json: field 'order': " + std::to_string(list[i].order) +
+                           " is also " + list[i - 1].name + "'s");
+      }
+    }
+    return list;
+  }();
+  return all;
+}
+
+namespace {
+
+// Lessons added from the user's files (a deque: references stay valid as it grows).
+std::deque<Lesson>& added_lessons() {
+  static std::deque<Lesson> added;
+  return added;
+}
+
+}  // namespace
+
+const Lesson* find_lesson(const std::string& name) {
+  for (const Lesson& lesson : lessons()) {
+    if (lesson.name == name) return &lesson;
+  }
+  for (const Lesson& lesson : added_lessons()) {
+    if (lesson.name == name) return &lesson;
+  }
+  return nullptr;
+}
+
+const Lesson& add_lesson(const Lesson& lesson) {
+  for (const Lesson& shipped : lessons()) {
+    if (shipped.name == lesson.name) {
+      throw SessionError(lesson.name + ".json: field 'name': '" + lesson.name +
+                         "' is a shipped lesson's name");
+    }
+  }
+  for (Lesson& added : added_lessons()) {
+    if (added.name == lesson.name) return added = lesson;
+  }
+  return added_lessons().emplace_back(lesson);
+}
+
+const Lesson& find_or_read_lesson(const std::string& name_or_file) {
+  if (const Lesson* lesson = find_lesson(name_or_file)) return *lesson;
+  std::error_code error;
+  if (std::filesystem::is_regular_file(name_or_file, error)) {
+    return add_lesson(read_lesson_file(name_or_file));
+  }
+  throw SessionError("unknown lesson '" + name_or_file + "' (known: " + lesson_names() +
+                     ", or a lesson file)");
+}
+
+std::string lesson_names() {
+  std::string names;
+  for (const Lesson& lesson : lessons()) names += (names.empty() ? "" : ", ") + lesson.name;
+  return names;
+}
+
+}  // namespace oflab

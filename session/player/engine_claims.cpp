@@ -1,0 +1,263 @@
+#include "player/engine_claims.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "basis/basis_explorer.h"
+#include "display/flow_parts.h"
+#include "flow/flow_field.h"
+#include "lessons/claim_kinds.h"
+#include "player/lab.h"
+
+namespace oflab {
+namespace {
+
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
+double coefficient(Lab& lab, const LessonClaim& claim) {
+  const PlanarFlowCoefficients c = planar_flow_coefficients(
+      lab.panel().scene().camera, lab.panel().current_pose(), lab.panel().current_motion());
+  const std::pair<const char*, double> terms[] = {{"tx", c.tx},   {"ty", c.ty},   {"j11", c.j11},
+                                                  {"j12", c.j12}, {"j21", c.j21}, {"j22", c.j22},
+                                                  {"px", c.px},   {"py", c.py}};
+  for (const auto& [name, value] : terms) {
+    if (claim.of == name) return std::abs(value);
+  }
+  return kUnknown;
+}
+
+// The largest |flow| of a part over the plane's image (8-pixel grid), px/s.
+double largest_flow(Lab& lab, const std::string& key) {
+  FlowPart part;
+  if (!parse_flow_part(key, &part)) return kUnknown;
+  const FlowContext context = make_flow_context(
+      lab.panel().scene().camera, lab.panel().current_pose(), lab.panel().current_motion());
+  double largest = 0.0;
+  for (const FlowSample& s : sample_flow_grid(context, part, 8.0)) {
+    largest = std::max(largest, double(glm::length(s.flow)));
+  }
+  return largest;
+}
+
+double flow_ratio(Lab& lab, const LessonClaim& claim) {
+  const double over = largest_flow(lab, claim.over);
+  return over > 0 ? largest_flow(lab, claim.of) / over : kUnknown;
+}
+
+// The compared run of the policy named `name` at the lab's frame; nullptr when no compared
+// policy has that name.
+const ComparedRun* compared_run(Lab& lab, const std::string& name) {
+  for (const ComparedRun& run : lab.comparison().runs()) {
+    if (run.policy->name == name) return &run;
+  }
+  return nullptr;
+}
+
+// Levels and errors of frames 1 .. now of the engine or of a compared policy: calls
+// `each(levels, error)` per frame; false when `of` names no such run.
+template <class Each>
+bool for_each_played(Lab& lab, const std::string& of, Each each) {
+  if (of == "engine") {
+    for (const AnimationFrame& f : lab.run().history()) {
+      if (f.frame > 0) each(f.levels, f.max_measured_error_px);
+    }
+    return true;
+  }
+  const ComparedRun* run = compared_run(lab, of);
+  if (!run) return false;
+  for (const ComparedFrame& f : run->history) {
+    if (f.frame > 0) each(f.levels, f.max_measured_error_px);
+  }
+  return true;
+}
+
+double level_share(Lab& lab, const LessonClaim& claim) {
+  Level level;
+  if (!parse_level(claim.level, &level)) return kUnknown;
+  double at_level = 0.0, drawn = 0.0;
+  const bool found = for_each_played(lab, claim.of, [&](const auto& levels, double) {
+    for (int k = 0; k < kLevelCount; ++k) drawn += levels[size_t(k)];
+    at_level += levels[size_t(level)];
+  });
+  return found && drawn > 0 ? at_level / drawn : kUnknown;
+}
+
+double max_error(Lab& lab, const LessonClaim& claim) {
+  double largest = 0.0;
+  const bool found = for_each_played(
+      lab, claim.of, [&](const auto&, double error) { largest = std::max(largest, error); });
+  return found ? largest : kUnknown;
+}
+
+// The frame shown now and its animator, of the engine (`of` "engine") or of a compared
+// policy (`of` its name); false when `of` names no such run or it cannot play.
+bool shown_run(Lab& lab, const std::string& of, const AnimationFrame** frame,
+               const Animator** animator) {
+  if (of == "engine") {
+    *animator = lab.run().animator();
+    if (!*animator) return false;
+    *frame = &lab.run().current();
+    return true;
+  }
+  const ComparedRun* run = compared_run(lab, of);
+  if (!run || !run->animator) return false;
+  *frame = &run->last;
+  *animator = run->animator.get();
+  return true;
+}
+
+double hole_pixels(Lab& lab, const LessonClaim& claim) {
+  const AnimationFrame* frame = nullptr;
+  const Animator* animator = nullptr;
+  return shown_run(lab, claim.of, &frame, &animator) ? double(frame->hole_pixels) : kUnknown;
+}
+
+// The mean measured error of the nearer half of the layers drawn now (by the depth of each
+// polygon's centre in the viewer frame) over that of the farther half: above 1 when the
+// error grows with inverse depth. Infinite when only the nearer half has an error; NaN with
+// fewer than two layers with an error, or none at all.
+double near_far_error(Lab& lab, const LessonClaim& claim) {
+  const AnimationFrame* frame = nullptr;
+  const Animator* animator = nullptr;
+  if (!shown_run(lab, claim.of, &frame, &animator)) return kUnknown;
+  std::vector<std::pair<double, double>> by_depth;  // (depth Z, error px)
+  const ViewerPose view = animator->view();
+  for (const LayerOutline& layer : animator->outlines()) {
+    if (!std::isfinite(layer.error_px)) continue;
+    const ScenePolygon& polygon = animator->scene().polygons.at(size_t(layer.polygon));
+    by_depth.emplace_back(to_view(view, polygon.centre).z, layer.error_px);
+  }
+  const size_t half = by_depth.size() / 2;
+  if (half == 0) return kUnknown;
+  std::sort(by_depth.begin(), by_depth.end());
+  double near = 0.0, far = 0.0;
+  for (size_t k = 0; k < half; ++k) {
+    near += by_depth[k].second;
+    far += by_depth[by_depth.size() - 1 - k].second;
+  }
+  if (far <= 0.0) return near > 0.0 ? std::numeric_limits<double>::infinity() : kUnknown;
+  return near / far;
+}
+
+// The pixels compared policy `of` has written over frames 0 .. now over those of `over`.
+double run_pixels_ratio(Lab& lab, const LessonClaim& claim) {
+  const ComparedRun* of = compared_run(lab, claim.of);
+  const ComparedRun* over = compared_run(lab, claim.over);
+  if (!of || !over || over->pixels_written <= 0) return kUnknown;
+  return double(of->pixels_written) / double(over->pixels_written);
+}
+
+ExplorerResult explored(Lab& lab) {
+  return explore(lab.values().explorer_terms, lab.panel().scene().camera);
+}
+
+double grid_change(Lab& lab, const LessonClaim& claim) {
+  double value = kUnknown;
+  grid_change_field(explorer_grid_change(lab.values().explorer_terms, lab.panel().scene().camera),
+                    claim.of, &value);
+  return value;
+}
+
+std::map<std::string, EngineMeasure> make_measures() {
+  return {
+      {"coefficient", coefficient},
+      {"flow_ratio", flow_ratio},
+      {"level_share", level_share},
+      {"max_error", max_error},
+      {"hole_pixels", hole_pixels},
+      {"near_far_error", near_far_error},
+      {"view",
+       [](Lab& lab, const LessonClaim& c) { return lab.values().view == c.of ? 1.0 : 0.0; }},
+      {"run_pixels_ratio", run_pixels_ratio},
+      {"solution_count",
+       [](Lab& lab, const LessonClaim&) { return double(explored(lab).inverse.solutions.size()); }},
+      {"futures_apart_frame",
+       [](Lab& lab, const LessonClaim&) {
+         const ExplorerResult r = explored(lab);
+         return r.futures_played ? double(r.futures.first_frame_apart) : -1.0;
+       }},
+      {"futures_first_px",
+       [](Lab& lab, const LessonClaim&) {
+         const ExplorerResult r = explored(lab);
+         return r.futures_played && r.futures.frames_played >= 1 ? r.futures.corner_distance_px[1]
+                                                                 : kUnknown;
+       }},
+      {"grid_change", grid_change},
+  };
+}
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+
+}  // namespace
+
+const std::map<std::string, EngineMeasure>& engine_claim_measures() {
+  static const std::map<std::string, EngineMeasure> measures = make_measures();
+  return measures;
+}
+
+double measure_engine_claim(Lab& lab, const LessonClaim& claim) {
+  const auto it = engine_claim_measures().find(claim.claim);
+  return it == engine_claim_measures().end() ? kUnknown : it->second(lab, claim);
+}
+
+WindowState LabStage::stage_state() const { return lab_->state(); }
+std::string LabStage::stage_apply(const WindowState& state) { return lab_->apply(state); }
+void LabStage::stage_stop() { lab_->values().playing = false; }
+void LabStage::stage_seek(int frame) { lab_->panel().set_frame(frame); }
+void LabStage::stage_play(int frames) {
+  for (int k = 0; k < frames; ++k) lab_->panel().set_frame(lab_->panel().frame() + 1);
+}
+void LabStage::stage_set_step(int step) { lab_->values().lesson_step = step; }
+
+std::vector<ClaimCheck> check_lesson_claims(
+    LessonStage& stage, const Lesson& lesson,
+    const std::function<std::optional<double>(const LessonClaim&)>& measure,
+    const std::vector<LessonClaim>& every_part, const std::function<void(int)>& after_part) {
+  std::vector<ClaimCheck> checks;
+  const auto check_all = [&](int step, std::vector<LessonClaim> claims) {
+    claims.insert(claims.end(), every_part.begin(), every_part.end());
+    for (const LessonClaim& claim : claims) {
+      const std::optional<double> measured = measure(claim);
+      if (!measured) continue;
+      checks.push_back(
+          {step, claim, *measured, *measured >= claim.at_least && *measured <= claim.at_most});
+    }
+    if (after_part) after_part(step);
+  };
+  std::string problem = go_to_lesson_step(stage, lesson, 0);
+  if (!problem.empty()) throw std::runtime_error(problem);
+  check_all(0, lesson.claims);
+  for (size_t k = 0; k < lesson.steps.size(); ++k) {
+    problem = perform_lesson_step(stage, lesson, int(k) + 1);
+    if (!problem.empty()) throw std::runtime_error(problem);
+    check_all(int(k) + 1, lesson.steps[k].claims);
+  }
+  return checks;
+}
+
+std::string describe(const Lesson& lesson, const ClaimCheck& check) {
+  const LessonClaim& c = check.claim;
+  std::string what = c.claim;
+  if (!c.of.empty()) what += " " + c.of + (c.over.empty() ? "" : "/" + c.over);
+  if (!c.level.empty()) what += " at " + c.level;
+  std::string claimed;
+  if (c.at_least > -1e300) claimed += "at least " + number_text(c.at_least);
+  if (c.at_most < 1e300) {
+    claimed += std::string(claimed.empty() ? "" : " and ") + "at most " + number_text(c.at_most);
+  }
+  return lesson.name + ", " +
+         (check.step == 0 ? std::string("narrative") : "step " + std::to_string(check.step)) +
+         ": \"" + c.says + "\" (" + what + ") measured " + number_text(check.measured) +
+         ", claimed " + claimed + ": " + (check.holds ? "holds" : "FALSE");
+}
+
+}  // namespace oflab

@@ -1,0 +1,124 @@
+#include "player/policy_comparison.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "player/plane_panel.h"
+#include "player/run_player.h"
+
+namespace oflab {
+
+ComparedFrame ComparedFrame::of(const AnimationFrame& record) {
+  ComparedFrame f;
+  f.frame = record.frame;
+  f.levels = record.levels;
+  f.max_measured_error_px = record.max_measured_error_px;
+  f.time_ms = record.time_ms;
+  f.model_work = record.model_work;
+  f.pixels_written = record.pixels_written;
+  return f;
+}
+
+int ComparedFrame::drawn() const { return std::accumulate(levels.begin(), levels.end(), 0); }
+
+const ComparedFrame* ComparedRun::at(int frame) const {
+  if (history.empty()) return nullptr;
+  const long index = long(frame) - history.front().frame;
+  return index >= 0 && index < long(history.size()) ? &history[size_t(index)] : nullptr;
+}
+
+std::array<std::int64_t, kLevelCount> ComparedRun::level_totals(int first, int last) const {
+  std::array<std::int64_t, kLevelCount> totals{};
+  for (int k = first; k <= last; ++k) {
+    const ComparedFrame* f = at(k);
+    if (!f) continue;
+    for (int level = 0; level < kLevelCount; ++level)
+      totals[size_t(level)] += f->levels[size_t(level)];
+  }
+  return totals;
+}
+
+PolicyComparison::PolicyComparison(RunPlayer* model, int history_frames)
+    : model_(model),
+      history_frames_(std::max(1, history_frames)),
+      policies_{&reuse_policy("affine"), &reuse_policy("perspective")} {}
+
+PolicyComparison::~PolicyComparison() = default;
+
+void PolicyComparison::set_policies(const std::vector<const ReusePolicy*>& policies) {
+  if (policies.empty() || int(policies.size()) > kMaxComparedPolicies) {
+    throw std::invalid_argument("a comparison takes 1 to " + std::to_string(kMaxComparedPolicies) +
+                                " policies, not " + std::to_string(policies.size()));
+  }
+  for (const ReusePolicy* p : policies) {
+    if (!p) throw std::invalid_argument("a compared policy is missing");
+  }
+  policies_ = policies;
+  reset();
+}
+
+std::vector<const ReusePolicy*> PolicyComparison::policies() const { return policies_; }
+
+void PolicyComparison::reset() {
+  runs_.clear();
+  stale_ = true;
+}
+
+void PolicyComparison::build() {
+  runs_.clear();
+  stale_ = false;
+  if (!model_->animator() || !model_->source_kind().uses_reuse_policy) return;
+  for (const ReusePolicy* policy : policies_) {
+    ComparedRun run;
+    run.policy = policy;
+    EngineSettings settings = model_->settings();
+    settings.policy = policy;
+    try {
+      run.animator = model_->source_kind().make(model_->source(), model_->panel(), settings);
+      restart(run);
+    } catch (const std::exception& e) {  // a scene-only policy (hierarchical-cache) on a plane
+      run.animator.reset();
+      run.problem = e.what();
+    }
+    runs_.push_back(std::move(run));
+  }
+}
+
+void PolicyComparison::restart(ComparedRun& run) const {
+  run.last = run.animator->start();
+  run.pixels_written = run.last.pixels_written;
+  run.time_ms = run.last.time_ms;
+  run.history.clear();
+  record(run);
+}
+
+void PolicyComparison::record(ComparedRun& run) const {
+  run.history.push_back(ComparedFrame::of(run.last));
+  if (int(run.history.size()) > history_frames_) run.history.pop_front();
+}
+
+void PolicyComparison::seek(ComparedRun& run, int frame) const {
+  if (!run.animator) return;
+  if (frame < run.animator->frame()) restart(run);
+  while (run.animator->frame() < frame) {
+    run.last = run.animator->advance();
+    run.pixels_written += run.last.pixels_written;
+    run.time_ms += run.last.time_ms;
+    record(run);
+  }
+}
+
+const std::vector<ComparedRun>& PolicyComparison::runs() {
+  if (stale_) build();
+  const Animator* main = model_->animator();
+  if (!main) {
+    runs_.clear();
+    stale_ = true;
+    return runs_;
+  }
+  for (ComparedRun& run : runs_) seek(run, main->frame());
+  return runs_;
+}
+
+}  // namespace oflab

@@ -1,0 +1,104 @@
+// Everything the window shows, as one value: the view in front, each view's options, what
+// plays and how, the frame, presentation mode and the play rate. One model holds it
+// (gui/models/window_model.h); a lesson (session/lessons/lessons.h), the command line
+// (gui/app/launch_options.h) and a saved session (session/state/window_state_file.h) are each a
+// WindowState, and the window applies one with WindowModel::apply and captures one with
+// WindowModel::state. Plain C++ over core: no Qt, no VTK.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "basis/basis_catalog.h"
+#include "basis/basis_explorer.h"
+#include "display/flow_display.h"
+#include "engine/engine.h"
+#include "flow/plane_scene.h"
+#include "state/source_choice.h"
+
+namespace oflab {
+
+// How the animation view shows the engine's frame and the exact one; kComparison plays
+// several reuse policies at once beside the exact frame (session/player/policy_comparison.h).
+enum class PanelDisplay { kSideBySide, kDifference, kBlink, kComparison };
+// "side-by-side", "difference", "blink", "comparison"
+const char* panel_display_name(PanelDisplay display);
+bool parse_panel_display(const std::string& text, PanelDisplay* display);
+// The names of every display joined by `separator`, for help texts and error messages.
+std::string panel_display_names(const std::string& separator = ", ");
+
+// The most policies the comparison layout plays at once.
+constexpr int kMaxComparedPolicies = 4;
+
+struct WindowState {
+  // The view in front, by its name in the view table (gui/app/view_table.h).
+  std::string view = "flow";
+  FlowDisplay flow;  // the flow view's part and drawing options
+  BasisKind basis = BasisKind::kPlanar;
+  bool basis_playing = false;  // the gallery animates its deformation amount
+  // The basis view shows the explorer (session/basis/basis_explorer.h) with these eight values
+  // on its sliders, each within its term's limit.
+  bool basis_explorer = false;
+  ExplorerTerms explorer_terms = default_explorer_terms();
+
+  // The scene panel's plane at frame 0, the motion script it plays (a shipped name or a
+  // file; empty for the plane's own constant motion) and its texture file (empty for the
+  // default butterfly).
+  PlaneScene plane = default_demo_scene();
+  std::string script;
+  std::string texture;
+  // What the animation and analysis views play (session/player/animation_sources.h), and how.
+  SourceChoice source;
+  EngineSettings settings;
+  // The animation view: its layout, the policies its comparison plays (1 ..
+  // kMaxComparedPolicies distinct registry names, in panel order), who draws its exact panel
+  // (gui/adapters/exact_frames.h) and the zoom on top of zoom-to-fit (limits::kZoom).
+  PanelDisplay display = PanelDisplay::kSideBySide;
+  std::vector<std::string> compared = {"affine", "perspective"};
+  std::string exact_renderer = "core";
+  double zoom = 1.0;
+
+  bool presentation = false;  // large text and thick lines for a projector
+  bool scene_panel = true;    // the scene panel (plane, motion, camera) is shown
+  // The cause-and-effect layout: the world view (the cause) beside the flow view (the
+  // effect) instead of the tabs.
+  bool cause_and_effect = false;
+  int play_rate = 30;    // live play, frames per second (limits::kPlayRate)
+  bool playing = false;  // the scene's motion plays
+  int frame = 0;         // the frame shown (limits::kFrameCount)
+  // The lesson whose narrative shows above the views (session/lessons/lessons.h); empty for none.
+  std::string lesson;
+  // The lesson's step on screen: 0 for its narrative, k for its k-th step (whose text is the
+  // caption then); 0 without a lesson.
+  int lesson_step = 0;
+};
+
+// `names` joined by `separator`, for messages and help texts: "flow, basis, animation".
+inline std::string joined_names(const std::vector<std::string>& names,
+                                const std::string& separator = ", ") {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : separator) + name;
+  return text;
+}
+
+// Field by field over the field table (state/state_fields.h), numbers exactly (a saved
+// state reads back bit for bit).
+bool operator==(const WindowState& a, const WindowState& b);
+inline bool operator!=(const WindowState& a, const WindowState& b) { return !(a == b); }
+
+// "" when every bounded number of `state` is within its limit (core/engine/limits.h) and
+// the compared list names 1 .. kMaxComparedPolicies distinct registry policies;
+// otherwise one phrase naming the field as a session file spells it, the value and the
+// allowed range or names: "animation.thresholds: 1e+06 is outside 0..100 px". The view
+// name, the source kind, the exact renderer, the lesson and the files the state names are
+// checked where they are known (the view table, the source-kind and renderer tables, the
+// lesson catalogue, the file system: WindowModel::apply). Plain C++ over core.
+std::string window_state_problem(const WindowState& state);
+
+// The parts of window_state_problem that the scene and animation models check themselves
+// on every edit: the plane's limits and plane_scene_problem ("plane..." fields), and the
+// engine settings' limits ("animation..." fields). "" when accepted.
+std::string plane_state_problem(const PlaneScene& plane);
+std::string settings_state_problem(const EngineSettings& settings);
+
+}  // namespace oflab

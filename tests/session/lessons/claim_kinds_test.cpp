@@ -1,0 +1,99 @@
+// The claim-kind registry (session/lessons/claim_kinds.h): a lesson naming an unknown kind,
+// a misspelt field or a value its kind cannot measure is refused when it is read, naming the
+// file, the claim and the field; the manual lists exactly the registry's kinds.
+#include "lessons/claim_kinds.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "lessons/lessons.h"
+#include "state/window_state_file.h"
+
+namespace oflab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The error of reading a lesson "x.json" whose only step has `claim` (JSON text).
+std::string error_of_claim(const std::string& claim) {
+  const fs::path dir = fs::temp_directory_path() / ("oflab-claims-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path file = dir / "x.json";
+  std::ofstream(file) << R"({"format": "oflab-lesson", "version": 1, "name": "x", "order": 1,
+    "title": "X", "narrative": "n", "state": {},
+    "steps": [{"say": "s"}, {"say": "t", "claims": [)"
+                      << claim << "]}]}";
+  std::string error;
+  try {
+    read_lesson_file(file.string());
+  } catch (const SessionError& e) {
+    error = e.what();
+  }
+  fs::remove_all(dir);
+  return error;
+}
+
+TEST(ClaimKinds, AnUnknownKindIsRefusedNamingFileClaimAndField) {
+  const std::string error =
+      error_of_claim(R"({"says": "a", "claim": "max_errors", "of": "engine", "at_most": 1})");
+  EXPECT_EQ(error.rfind("x.json: step 2, claim 1: field 'claim': 'max_errors' is not one of", 0),
+            0u)
+      << error;
+}
+
+TEST(ClaimKinds, AMisspeltFieldIsRefusedNamingIt) {
+  const std::string error =
+      error_of_claim(R"({"says": "a", "claim": "max_error", "off": "engine", "at_most": 1})");
+  EXPECT_EQ(error.rfind("x.json: step 2, claim 1: field 'off': unknown field", 0), 0u) << error;
+}
+
+TEST(ClaimKinds, WhatAKindCannotMeasureIsRefused) {
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "max_error", "of": "afine", "at_most": 1})")
+                .find("field 'of': 'afine' is neither engine nor a reuse policy"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "max_error", "at_most": 1})")
+                .find("field 'of': this kind needs it"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "cut_texts", "of": "x", "at_most": 0})")
+                .find("field 'of': this kind takes none"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "level_share", "of": "engine",
+                               "level": "sideways", "at_most": 1})")
+                .find("field 'level': unknown level 'sideways'"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "cut_texts", "at_least": 2, "at_most": 1})")
+                .find("field 'at_least': more than at_most"),
+            std::string::npos);
+  EXPECT_EQ(error_of_claim(R"({"says": "a", "claim": "coefficient", "of": "j11", "at_most": 1})"),
+            "");
+}
+
+TEST(ClaimKinds, EveryShippedLessonReads) {
+  EXPECT_GE(lessons().size(), 14u);
+  for (const Lesson& lesson : lessons()) {
+    for (const LessonStep& step : lesson.steps) {
+      for (const LessonClaim& claim : step.claims) {
+        EXPECT_EQ(claim_problem(claim), "") << lesson.name;
+      }
+    }
+  }
+}
+
+TEST(ClaimKinds, TheManualListsExactlyTheRegistrysKinds) {
+  std::ifstream in(OFLAB_SOURCE_DIR "/manual/lessons.md");
+  std::stringstream page;
+  page << in.rdbuf();
+  const std::string text = page.str();
+  const std::string begin = "<!-- claim-kinds: oflab-cli lesson kinds --markdown -->\n";
+  const size_t from = text.find(begin), to = text.find("<!-- /claim-kinds -->");
+  ASSERT_NE(from, std::string::npos) << "manual/lessons.md lacks the kinds table's markers";
+  ASSERT_NE(to, std::string::npos);
+  EXPECT_EQ(text.substr(from + begin.size(), to - from - begin.size()), claim_kinds_markdown());
+}
+
+}  // namespace
+}  // namespace oflab

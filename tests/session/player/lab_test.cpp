@@ -1,0 +1,107 @@
+// The headless lab (session/player/lab.h) and the lesson player on it: every engine claim
+// of every shipped lesson holds without a window; the frame clock's loop read from a
+// source's files is its animator's length; every engine kind has its measure.
+#include "player/lab.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "lessons/claim_kinds.h"
+#include "lessons/lesson_player.h"
+#include "player/engine_claims.h"
+#include "player/source_length.h"
+#include "state/window_state_file.h"
+
+namespace oflab {
+namespace {
+
+TEST(Lab, EveryEngineClaimOfEveryLessonHoldsHeadlessly) {
+  int measured = 0;
+  for (const Lesson& lesson : lessons()) {
+    Lab lab(shipped_default_texture());
+    LabStage stage(&lab);
+    const auto measure = [&](const LessonClaim& claim) -> std::optional<double> {
+      if (find_claim_kind(claim.claim)->source != ClaimSource::kEngine) return std::nullopt;
+      return measure_engine_claim(lab, claim);
+    };
+    for (const ClaimCheck& check : check_lesson_claims(stage, lesson, measure)) {
+      EXPECT_TRUE(check.holds) << describe(lesson, check);
+      ++measured;
+    }
+  }
+  EXPECT_GE(measured, 100);
+}
+
+TEST(Lab, EveryEngineKindHasItsMeasureAndNoOther) {
+  std::set<std::string> engine_kinds, measures;
+  for (const ClaimKind& kind : claim_kinds()) {
+    if (kind.source == ClaimSource::kEngine) engine_kinds.insert(kind.name);
+  }
+  for (const auto& [name, measure] : engine_claim_measures()) measures.insert(name);
+  EXPECT_EQ(engine_kinds, measures);
+}
+
+// The browser page reads a source's loop from its files (source_frame_count); the desktop
+// takes it from the animator. Both on every part of every lesson.
+TEST(Lab, TheLoopReadFromASourcesFilesIsItsAnimatorsLength) {
+  for (const Lesson& lesson : lessons()) {
+    Lab lab(shipped_default_texture());
+    LabStage stage(&lab);
+    for (int step = 0; step <= int(lesson.steps.size()); ++step) {
+      ASSERT_EQ(go_to_lesson_step(stage, lesson, step), "") << lesson.name;
+      const int from_files = source_frame_count(lab.run().source(), lab.panel());
+      ASSERT_NE(lab.run().animator(), nullptr) << lesson.name;
+      const int expected =
+          lab.run().source_kind().follows_scene_panel ? 0 : lab.run().animator()->frame_count();
+      EXPECT_EQ(from_files, expected) << lesson.name << ", step " << step;
+      EXPECT_EQ(lab.panel().loop_frames(), from_files > 0 ? from_files
+                                           : lab.panel().script()
+                                               ? int(lab.panel().script()->frames.size())
+                                               : PlanePanel::kLoopFrames)
+          << lesson.name << ", step " << step;
+    }
+  }
+}
+
+// A step shows the state its lesson says: its state over the previous one, on the frame
+// the steps reach; the narrative applied again gives the lesson's own state.
+TEST(Lab, TheLessonPlayerShowsTheLessonsStatesAndFrames) {
+  const Lesson& lesson = *find_lesson("affine-vs-perspective");
+  Lab lab(shipped_default_texture());
+  LabStage stage(&lab);
+  ASSERT_EQ(go_to_lesson_step(stage, lesson, 0), "");
+  WindowState expected = lesson.state;
+  expected.playing = false;  // not live
+  int narrative_frame = lab.panel().landing_frame(lesson.state.frame);
+  for (int k = 0; k < lesson.play; ++k)
+    narrative_frame = lab.panel().landing_frame(narrative_frame + 1);
+  expected.frame = narrative_frame;
+  EXPECT_EQ(window_state_object(lab.state()), window_state_object(expected));
+  for (int step = 1; step <= int(lesson.steps.size()); ++step) {
+    const int before = lab.panel().frame();
+    ASSERT_EQ(perform_lesson_step(stage, lesson, step), "");
+    const LessonStep& s = lesson.steps[size_t(step - 1)];
+    const int start = s.frame >= 0 ? s.frame : before;
+    int frame = lab.panel().landing_frame(start);
+    for (int k = 0; k < s.play; ++k) frame = lab.panel().landing_frame(frame + 1);
+    EXPECT_EQ(lab.panel().frame(), frame) << "step " << step;
+    EXPECT_EQ(lab.values().lesson_step, step);
+  }
+  EXPECT_NE(perform_lesson_step(stage, lesson, 99), "");
+}
+
+TEST(Lab, AStateItCannotShowChangesNothing) {
+  Lab lab(shipped_default_texture());
+  const WindowState before = lab.state();
+  WindowState bad;
+  bad.source = {"scene", "no-such-scene", "circle"};
+  EXPECT_NE(lab.apply(bad).find("animation.source"), std::string::npos);
+  bad = WindowState();
+  bad.texture = "/no/such/texture.png";
+  EXPECT_EQ(lab.apply(bad).rfind("texture: ", 0), 0u);
+  EXPECT_TRUE(lab.state() == before);
+}
+
+}  // namespace
+}  // namespace oflab
