@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "engine/limits.h"
+#include "flow/limits.h"
 #include "flow/reprojection.h"
 #include "image/composite.h"
 #include "scene/depth_reprojection.h"

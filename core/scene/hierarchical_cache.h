@@ -54,7 +54,7 @@ struct CacheContext {
   LayerContent content;  // the run's content settings; each polygon keeps its own kind
 };
 
-// What is wrong with `settings` ("" when nothing): the limits of core/engine/limits.h
+// What is wrong with `settings` ("" when nothing): the limits of core/flow/limits.h
 // (kCacheAngle, kCacheNodePolygons, kSafetyRadius), naming the field.
 std::string cache_settings_problem(const CacheSettings& settings);
 

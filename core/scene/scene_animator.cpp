@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/limits.h"
 #include "flow/homography.h"
+#include "flow/limits.h"
 #include "image/composite.h"
 
 namespace oflab {

@@ -5,8 +5,8 @@
 
 #include "adapters/exact_frames.h"
 #include "adapters/texture.h"
-#include "engine/limits.h"
 #include "engine/reuse_policy.h"
+#include "flow/limits.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "models/animation_model.h"

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "engine/limits.h"
 #include "engine/reuse_policy.h"
+#include "flow/limits.h"
 
 namespace oflab {
 namespace {

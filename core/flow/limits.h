@@ -1,8 +1,9 @@
 // One rule per value: every bounded number a person can give oflab (on the command line, in a
 // session, script or scene file, or in a control of the window) has its range stated here
 // once. The CLI, the file readers and the GUI's controls all check a value with its Limit, so
-// a value refused in one place is refused everywhere with the same words.
-// Plain C++17.
+// a value refused in one place is refused everywhere with the same words. It lives in core's
+// lowest folder so that every folder of core (content's quality, the engine's thresholds, the
+// scene's memory) may check with it. Plain C++17.
 #pragma once
 
 #include <string>
