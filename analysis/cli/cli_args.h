@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/limits.h"
 #include "flow/geometry.h"
+#include "flow/limits.h"
 #include "formats/atomic_file.h"
 
 namespace oflab {
@@ -45,7 +45,7 @@ class CliArgs {
   Vec3 vec3(const std::string& name) const;
   std::string text_or(const std::string& name, const std::string& fallback) const;
 
-  // The values of option `name` (required) checked against `limit` (core/engine/limits.h,
+  // The values of option `name` (required) checked against `limit` (core/flow/limits.h,
   // the one rule for each kind of value): throws UsageError naming the option, the value and
   // the range, "--threshold: 1e+06 is outside 0..100 px", or "--focal: 'x' is not a finite
   // number" for text that is not a number. number_in reads the first value; integer_in

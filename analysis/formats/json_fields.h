@@ -11,16 +11,16 @@
 #include <utility>
 #include <vector>
 
-#include "engine/limits.h"
 #include "flow/camera.h"
 #include "flow/geometry.h"
+#include "flow/limits.h"
 #include "formats/input_file.h"
 
 namespace oflab::json_fields {
 
 using nlohmann::json;
 
-// Largest magnitude of any number in a data file that no Limit of core/engine/limits.h
+// Largest magnitude of any number in a data file that no Limit of core/flow/limits.h
 // covers (positions, directions).
 constexpr double kMaxMagnitude = 1e6;
 // Most frames of a whole script (summed over its segments, or listed): the maximum of
@@ -169,7 +169,7 @@ Vec2 vec2(const json& obj, const Place<Error>& w, const std::string& field) {
   return vec2_value(member(obj, w, field), w, field);
 }
 
-// The value `j` of `field` as a number `limit` allows (core/engine/limits.h, the one rule
+// The value `j` of `field` as a number `limit` allows (core/flow/limits.h, the one rule
 // for each kind of value); otherwise fails with the limit's words:
 // "field 'camera.focal_px': 0.5 is outside 1..100000 px".
 template <class Error>

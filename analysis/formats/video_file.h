@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/limits.h"
+#include "flow/limits.h"
 #include "formats/atomic_file.h"
 #include "image/image.h"
 

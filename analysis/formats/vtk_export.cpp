@@ -25,8 +25,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "engine/limits.h"
 #include "flow/basis.h"
+#include "flow/limits.h"
 #include "formats/atomic_file.h"
 
 namespace oflab {

@@ -41,7 +41,7 @@ std::vector<const ReusePolicy*> parse_policy_list(const std::string& text);
 //   work_saved, time_saved   RunSummary's (against the exact re-render of the same run);
 //   max_measured_error_px, mean_measured_error_px   over the visible layer reports;
 //   mean_psnr_db     RunSummary's;
-//   model_work_saved RunSummary's: the deterministic cost model's (core/engine/engine.h), as
+//   model_work_saved RunSummary's: the deterministic cost model's (core/engine/cost_model.h), as
 //                    `animate` reports it for the same policy;
 //   budget           a policy sharing a per-frame budget only: RunSummary's budget figures
 //                    (frames over budget, starved layer-frames, mean optimality gap).

@@ -114,7 +114,7 @@ struct RunSummary {
   double conventional_median_frame_ms = 0.0;
   double time_saved = 0.0;  // 1 - time / baseline time (0 without a baseline)
   double work_saved = 0.0;  // 1 - pixels / baseline pixels (0 without a baseline)
-  // The cost model's work (core/engine/engine.h: pixels of a perspective warp, a re-render
+  // The cost model's work (core/engine/cost_model.h: pixels of a perspective warp, a re-render
   // at its content's cost), of the animator and of the baseline; deterministic.
   double model_work = 0.0;
   double baseline_model_work = 0.0;

@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/limits.h"
 #include "flow/camera.h"
+#include "flow/limits.h"
 #include "flow/plane.h"
 #include "image/polygon.h"
 #include "image/warp.h"
@@ -45,7 +45,7 @@ std::vector<ContentKind> content_kinds();
 std::string content_name_list(const std::string& separator = ", ");
 
 // Largest quality accepted (samples per pixel of shaded, detail of impostor): the maximum of
-// limits::kContentQuality (core/engine/limits.h), where the range is stated.
+// limits::kContentQuality (core/flow/limits.h), where the range is stated.
 constexpr int kMaxContentQuality = static_cast<int>(limits::kContentQuality.maximum);
 
 struct LayerContent {

@@ -1,11 +1,13 @@
 // Algorithm 1 for one plane (dissertation section 5.6.1), corrected; see core/engine/engine.h for
-// the frames and manual/animation.md for the rules and the errata fixed (22-27).
+// the frames and manual/animation.md for the rules and the errata fixed (22-27). This file is
+// the frame's decision: the measure (the flow, the books carried, the exact error each level
+// would leave, the levels' costs), the choice, and apply, which hands the chosen level to the
+// shown layer's updates (core/engine/layer_updates.cpp).
 #include "engine/engine.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include "flow/homography.h"
@@ -14,147 +16,13 @@
 namespace oflab {
 namespace {
 
-std::array<Vec2, 4> texel_corners(const Layer& texture) {
-  const double w = texture.image.width(), h = texture.image.height();
-  return {Vec2(0.0, 0.0), Vec2(w, 0.0), Vec2(w, h), Vec2(0.0, h)};
-}
-
-// Jacobian (2x2, column-major) of homography h at point p.
-glm::dmat2 homography_jacobian(const Mat3& h, const Vec2& p) {
-  const Vec3 q = h * Vec3(p, 1.0);
-  const Vec2 u(q.x / q.z, q.y / q.z);
-  const double g = entry(h, 2, 0), k = entry(h, 2, 1);
-  return glm::dmat2((entry(h, 0, 0) - u.x * g) / q.z, (entry(h, 1, 0) - u.y * g) / q.z,
-                    (entry(h, 0, 1) - u.x * k) / q.z, (entry(h, 1, 1) - u.y * k) / q.z);
-}
-
-// The affine map that agrees with h to first order at p (bottom row exactly (0, 0, 1)).
-Mat3 affine_part_at(const Mat3& h, const Vec2& p) {
-  const glm::dmat2 j = homography_jacobian(h, p);
-  const Vec2 t = apply_homography(h, p) - j * p;
-  return mat3_from_rows({j[0][0], j[1][0], t.x}, {j[0][1], j[1][1], t.y}, {0.0, 0.0, 1.0});
-}
-
-double largest_singular_value(const Mat3& m) {
-  const glm::dmat2 a(entry(m, 0, 0), entry(m, 1, 0), entry(m, 0, 1), entry(m, 1, 1));
-  const glm::dmat2 ata = glm::transpose(a) * a;
-  const double tr = ata[0][0] + ata[1][1], det = glm::determinant(ata);
-  return std::sqrt(0.5 * tr + std::sqrt(std::max(0.0, 0.25 * tr * tr - det)));
-}
-
 using Clock = std::chrono::steady_clock;
 
 double elapsed_ms(Clock::time_point since) {
   return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
 }
 
-// Texel -> top-left pixel homography of the plane's texture rectangle, scaled so that its
-// denominator is the depth Z of the texel's point (positive in front of the eye, negative
-// behind it), whichever corner lies behind the eye.
-Mat3 depth_signed_texture_warp(const Camera& camera, const PlanePose& pose) {
-  const PlaneAxes a = plane_axes(pose);
-  const Mat3 plane_to_camera(a.right, a.up, pose.point);
-  const Mat3 h = translation_matrix(camera.cx, camera.cy) * centred_intrinsics(camera) *
-                 plane_to_camera * texel_to_plane(pose);
-  double largest = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(entry(h, r, c)));
-  }
-  return h * (1.0 / largest);
-}
-
-// Replaces a layer's valid polygon for the lifetime of the guard, restoring it after.
-class PolygonSwap {
- public:
-  PolygonSwap(Layer& layer, ConvexPolygon polygon)
-      : layer_(layer), saved_(std::move(layer_.polygon)) {
-    layer_.polygon = std::move(polygon);
-  }
-  ~PolygonSwap() { layer_.polygon = std::move(saved_); }
-  PolygonSwap(const PolygonSwap&) = delete;
-  PolygonSwap& operator=(const PolygonSwap&) = delete;
-
- private:
-  Layer& layer_;
-  ConvexPolygon saved_;
-};
-
 }  // namespace
-
-std::string plane_visibility_problem(const PlanePose& pose) {
-  const PoseProblem p = plane_pose_problem(pose);
-  if (!p.field.empty()) return p.message;
-  for (const Vec3& c : plane_corners(pose)) {
-    if (!(c.z > 1e-6)) return "a plane corner is at or behind the eye";
-  }
-  const double cosine = glm::dot(glm::normalize(pose.normal), glm::normalize(pose.point));
-  if (std::abs(cosine) < 1e-3) return "the plane is seen edge-on";
-  return "";
-}
-
-Mat3 exact_texture_warp(const Camera& camera, const PlanePose& pose) {
-  return translation_matrix(camera.cx, camera.cy) * texture_to_image(camera, pose);
-}
-
-PlacedLayer render_exact(const Camera& camera, const Layer& texture, const PlanePose& pose,
-                         Sampling sampling, WarpStats* stats) {
-  PlanePose sized = pose;
-  sized.texture_size = glm::ivec2(texture.image.width(), texture.image.height());
-  WarpOptions options;
-  options.sampling = sampling;
-  WarpedLayer w = warp_layer(texture, exact_texture_warp(camera, sized), options);
-  if (stats) *stats = w.stats;
-  return {std::move(w.layer), w.offset_x, w.offset_y};
-}
-
-PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose& pose,
-                           const ViewPolygon& clipped, Sampling sampling, WarpStats* stats) {
-  const glm::ivec2 size(texture.image.width(), texture.image.height());
-  PlanePose sized = pose;
-  sized.texture_size = size;
-  double z_min = clipped.points.at(0).z, z_max = z_min;
-  for (const Vec3& p : clipped.points) {
-    z_min = std::min(z_min, p.z);
-    z_max = std::max(z_max, p.z);
-  }
-  WarpOptions options;
-  options.sampling = sampling;
-  // The warp's horizon margin must not cut into the clipped polygon itself.
-  options.horizon_epsilon = std::clamp(0.5 * z_min / z_max, 1e-4, kDefaultHorizonEpsilon);
-  // Only the clipped part of the texture is drawn (the texture's own polygon is restored).
-  const PolygonSwap part(texture, texel_polygon(clipped.uv, size));
-  WarpedLayer w = warp_layer(texture, depth_signed_texture_warp(camera, sized), options);
-  if (stats) *stats = w.stats;
-  return {std::move(w.layer), w.offset_x, w.offset_y};
-}
-
-PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& content, Layer& texture,
-                                 const PlanePose& pose, const ConvexPolygon& texels,
-                                 const ViewPolygon& clipped, Sampling sampling,
-                                 std::int64_t* pixels_written, double* model_work) {
-  if (content_is_lit(content)) {
-    ContentStats stats;
-    PlacedLayer placed = render_clipped_content(camera, content, pose, texels, clipped, &stats);
-    *pixels_written += stats.pixels_written;
-    *model_work += stats.work_units * content_unit_cost(content.kind);
-    return placed;
-  }
-  WarpStats stats;
-  PlacedLayer placed = render_clipped(camera, texture, pose, clipped, sampling, &stats);
-  *pixels_written += stats.pixels_written;
-  *model_work += stats.pixels_written * kPerspectiveWarpCost;
-  return placed;
-}
-
-PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
-                                   const PlanePose& pose, const ConvexPolygon& texels,
-                                   const ViewPolygon& clipped, ContentStats* stats) {
-  WarpedLayer w;
-  const ContentStats s =
-      render_content(content, camera, pose, texels, project_to_pixels(camera, clipped), w);
-  if (stats) *stats = s;
-  return {std::move(w.layer), w.offset_x, w.offset_y};
-}
 
 PlaneEngine::PlaneEngine(const Camera& camera, Layer texture, const EngineSettings& settings)
     : camera_(camera), texture_(std::move(texture)), settings_(settings) {
@@ -347,276 +215,6 @@ PlaneEngine::Framing PlaneEngine::frame_pose(const PlanePose& pose_in) const {
   return f;
 }
 
-void PlaneEngine::render_fresh(const PlanePose& pose, FrameReport& report) {
-  const Framing framing = frame_pose(pose);
-  switch (framing.kind) {
-    case Framing::kNotShown:
-      hide(framing.note, report);
-      break;
-    case Framing::kClipped:
-      show_clipped(pose, framing, report);
-      break;
-    case Framing::kWhole:
-      rerender(pose, report);
-      break;
-  }
-}
-
-void PlaneEngine::hide(const std::string& note, FrameReport& report) {
-  report.level = Level::kRerender;
-  report.visible = false;
-  report.note = note;
-  cache_.valid = false;
-  display_ = PlacedLayer{};
-  clipped_outline_.clear();
-  clipped_ = false;
-  shown_ = false;
-  accumulated_.fill(0.0);
-}
-
-void PlaneEngine::show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report) {
-  report.level = Level::kRerender;
-  report.clipped = true;
-  report.note = framing.note;
-  cache_.valid = false;
-  shown_ = false;  // the layer holds only part of the plane: the next frame starts afresh
-  accumulated_.fill(0.0);
-  const auto t0 = Clock::now();
-  if (content_is_lit(settings_.content)) {
-    ContentStats stats;
-    display_ = render_clipped_content(camera_, settings_.content, sized_pose(pose),
-                                      texture_.polygon, framing.clipped, &stats);
-    report.pixels_written += stats.pixels_written;
-    report.model_work += stats.work_units * content_unit_cost(settings_.content.kind);
-  } else {
-    WarpStats stats;
-    display_ = render_clipped(camera_, texture_, pose, framing.clipped, settings_.sampling, &stats);
-    report.pixels_written += stats.pixels_written;
-    report.model_work += stats.pixels_written * kPerspectiveWarpCost;
-  }
-  report.render_ms += elapsed_ms(t0);
-  clipped_outline_ = project_to_pixels(camera_, framing.clipped).vertices();
-  clipped_ = true;
-}
-
-void PlaneEngine::rerender(const PlanePose& pose, FrameReport& report) {
-  report.level = Level::kRerender;
-  cache_.valid = false;
-  clipped_ = false;
-  displayed_ = target_warp(pose);
-  model_ = displayed_;
-  rendered_warp_ = displayed_;
-  render_pose_ = sized_pose(pose);
-  if (!origin_set_) {
-    origin_pose_ = render_pose_;
-    origin_set_ = true;
-  }
-  render_plane_ = render_plane_vector(render_pose_);
-  since_render_ = 0;
-  const auto t0 = Clock::now();
-  if (content_is_lit(settings_.content)) {
-    rerender_content(pose, report);
-  } else {
-    // A texture's re-render is one perspective warp in the cost model, whichever kernel ran.
-    const double work = report.model_work;
-    const std::int64_t pixels = report.pixels_written;
-    show(texture_, displayed_, displayed_, report);
-    report.model_work =
-        work + kPerspectiveWarpCost * static_cast<double>(report.pixels_written - pixels);
-  }
-  report.render_ms += elapsed_ms(t0);
-  shown_ = true;
-  accumulated_.fill(0.0);
-}
-
-void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
-  const PlanePose sized = sized_pose(pose);
-  const Mat3 exact = exact_texture_warp(camera_, sized);
-  // A whole frame lies beyond the near plane: the exact warp's denominator is positive.
-  const ContentStats stats = render_content(settings_.content, camera_, sized, texture_.polygon,
-                                            transform(texture_.polygon, exact), warped_);
-  report.pixels_written += stats.pixels_written;
-  report.model_work += stats.work_units * content_unit_cost(settings_.content.kind);
-  rendered_pose_ = sized;
-  const Mat3 origin = translation_matrix(warped_.offset_x, warped_.offset_y);
-  if (policy().allows_reuse()) {
-    rendered_ = warped_.layer;  // the perspective level's source (a copy into kept memory)
-    rendered_from_texel_ = glm::inverse(origin) * exact;
-  }
-  if (policy().initial_view != InitialView::kAffinePart) {
-    std::swap(display_.layer, warped_.layer);
-    display_.offset_x = warped_.offset_x;
-    display_.offset_y = warped_.offset_y;
-    layer_warp_ = exact;
-    layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
-    return;
-  }
-  // An affine initial view (section 6.5): the render is warped onto it.
-  const Layer render = warped_.layer;
-  show(render, displayed_ * glm::inverse(exact) * origin, displayed_, report);
-}
-
-Mat3 PlaneEngine::target_warp(const PlanePose& pose) const {
-  const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
-  // Section 6.5: the initial view is affine too, and the flow model follows it.
-  if (policy().initial_view == InitialView::kAffinePart) {
-    return affine_part_at(exact, 0.5 * texel_corners(texture_)[2]);
-  }
-  return exact;
-}
-
-std::vector<Vec2> PlaneEngine::displayed_outline() const {
-  if (display_.layer.empty()) return {};
-  if (clipped_) return clipped_outline_;
-  std::vector<Vec2> out;
-  for (const Vec2& t : texel_corners(texture_)) out.push_back(apply_homography(displayed_, t));
-  return out;
-}
-
-std::vector<Vec2> PlaneEngine::displayed_corners_centred() const {
-  std::vector<Vec2> out;
-  for (const Vec2& t : texel_corners(texture_)) {
-    out.push_back(pixel_to_centred(camera_, apply_homography(displayed_, t)));
-  }
-  return out;
-}
-
-PlanePose PlaneEngine::sized_pose(const PlanePose& pose) const {
-  PlanePose sized = pose;
-  sized.texture_size = glm::ivec2(texture_.image.width(), texture_.image.height());
-  return sized;
-}
-
-double PlaneEngine::corner_distance(const Mat3& a, const Mat3& b) const {
-  double worst = 0.0;
-  for (const Vec2& t : texel_corners(texture_)) {
-    worst = std::max(worst, glm::length(apply_homography(a, t) - apply_homography(b, t)));
-  }
-  return worst;
-}
-
-double PlaneEngine::shown_error(const Mat3& reference) const {
-  // Where the pixels are: the warp that made the layer, moved by the whole pixels the layer
-  // was shifted since.
-  const glm::ivec2 moved = glm::ivec2(display_.offset_x, display_.offset_y) - layer_origin_;
-  const Mat3 shown = translation_matrix(moved.x, moved.y) * layer_warp_;
-  return corner_distance(shown, reference);
-}
-
-Vec2 PlaneEngine::translation_step(const Mat3& correction, const Vec2& point) const {
-  const Vec2 motion = apply_homography(correction, point) - point;
-  return Vec2(std::round(motion.x), std::round(motion.y));
-}
-
-void PlaneEngine::apply_translation(const Vec2& step) {
-  // The layer is reused as it is, moved by whole pixels; the remainder stays pending.
-  const Mat3 shift = translation_matrix(step.x, step.y);
-  displayed_ = shift * displayed_;
-  cache_.to_display = shift * cache_.to_display;
-  display_.offset_x += static_cast<int>(step.x);
-  display_.offset_y += static_cast<int>(step.y);
-}
-
-void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
-                       FrameReport& report) {
-  warp_reusing(source, source_to_image, report);
-  std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
-  display_.offset_x = warped_.offset_x;
-  display_.offset_y = warped_.offset_y;
-  layer_warp_ = texel_to_image;
-  layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
-}
-
-void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
-  WarpOptions options;
-  options.sampling = settings_.sampling;
-  warp_layer_reusing(source, warp, warped_, options);
-  report.pixels_written += warped_.stats.pixels_written;
-  const bool affine = warped_.stats.kernel_used == WarpKernel::kAffine;
-  report.model_work +=
-      warped_.stats.pixels_written * (affine ? kAffineWarpCost : kPerspectiveWarpCost);
-}
-
-void PlaneEngine::cache_from_display() {
-  // The displayed layer is an exact image of the texture under displayed_, so it can serve
-  // as the cache without another warp (its resolution is the output's).
-  const Mat3 origin = translation_matrix(display_.offset_x, display_.offset_y);
-  cache_.layer = display_.layer;  // a copy into the cache's memory when it is large enough
-  cache_.to_display = origin;
-  cache_.from_texel = glm::inverse(origin) * displayed_;
-  cache_.valid = true;
-}
-
-void PlaneEngine::show_from_cache(FrameReport& report) {
-  show(cache_.layer, cache_.to_display, cache_.to_display * cache_.from_texel, report);
-}
-
-bool PlaneEngine::apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report) {
-  if (!cache_.valid) cache_from_display();
-  const Mat3 step = affine_part_at(correction, point);
-  const Mat3 to_display = step * cache_.to_display;
-  if (largest_singular_value(to_display) > settings_.max_magnification) return false;
-  cache_.to_display = to_display;
-  displayed_ = step * displayed_;
-  show_from_cache(report);
-  return true;
-}
-
-bool PlaneEngine::apply_perspective(const Mat3& target, FrameReport& report) {
-  const Vec2 centre = 0.5 * texel_corners(texture_)[2];
-  const Mat3 to_centre = translation_matrix(centre.x, centre.y);
-  const AffinePerspectiveSplit split =
-      split_affine_perspective(target * to_centre, settings_.delta);
-  // The sampling limit holds here too: the affine rest must not magnify the new cache
-  // along any axis by more than the limit (its determinant alone would hide anisotropy).
-  if (largest_singular_value(split.affine) > settings_.max_magnification) return false;
-  const Mat3 texel_to_cache = split.perspective * translation_matrix(-centre.x, -centre.y);
-  if (content_is_lit(settings_.content)) {
-    // A lit content is not rendered again: the new cache is its last render, warped. That
-    // warp must not magnify the render beyond the limit either (at the plane's centre).
-    const Mat3 render_to_cache = texel_to_cache * glm::inverse(rendered_from_texel_);
-    const Vec2 at = apply_homography(rendered_from_texel_, centre);
-    if (largest_singular_value(affine_part_at(split.affine * render_to_cache, at)) >
-        settings_.max_magnification) {
-      return false;
-    }
-    warp_reusing(rendered_, render_to_cache, report);
-  } else {
-    warp_reusing(texture_, texel_to_cache, report);
-  }
-  std::swap(cache_.layer, warped_.layer);  // the old cache's memory serves the next warp
-  cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
-  cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
-  cache_.valid = true;
-  displayed_ = target;
-  show_from_cache(report);
-  return true;
-}
-
-void PlaneEngine::finish_report(const PlanePose& pose, FrameReport& report) const {
-  report.accumulated = accumulated_;
-  const bool reused = report.visible && !report.clipped && report.level != Level::kRerender;
-  report.estimated_error_px = 0.0;
-  if (reused) {
-    report.estimated_error_px = std::max(neglected_error(accumulated_, TermArray{}, Level::kNone),
-                                         report.pending[static_cast<int>(report.level)]);
-  }
-  report.measured_error_px = std::numeric_limits<double>::quiet_NaN();
-  report.reuse_error_px = std::numeric_limits<double>::quiet_NaN();
-  if (report.visible) {
-    report.measured_error_px =
-        report.clipped ? 0.0 : shown_error(exact_texture_warp(camera_, sized_pose(pose)));
-    report.reuse_error_px = report.clipped ? 0.0 : shown_error(target_warp(pose));
-  }
-  if (reused) {
-    report.photometric_error = shading_change(settings_.content, rendered_pose_, sized_pose(pose));
-  }
-  if (policy().initial_view == InitialView::kAffinePart && report.visible && !report.clipped) {
-    const Mat3 exact = exact_texture_warp(camera_, sized_pose(pose));
-    report.affine_view_error_px = corner_distance(target_warp(pose), exact);
-  }
-}
-
 LevelPixels PlaneEngine::level_pixels() const {
   const auto area = [](const Layer& l) {
     return static_cast<std::int64_t>(l.image.width()) * l.image.height();
@@ -656,7 +254,7 @@ Mat3 PlaneEngine::next_model(const PlanarFlowCoefficients& flow, const PlanePose
     // Talisman: the corners as last rendered, fitted onto their exact projections now.
     const Mat3 exact = exact_texture_warp(camera_, sized_pose(current));
     std::vector<Vec2> rendered, now;
-    for (const Vec2& t : texel_corners(texture_)) {
+    for (const Vec2& t : texel_corners()) {
       rendered.push_back(apply_homography(rendered_warp_, t));
       now.push_back(apply_homography(exact, t));
     }
@@ -738,7 +336,7 @@ void PlaneEngine::measure_level_costs(const Mat3& correction, const Vec2& point)
   const int a = static_cast<int>(Level::kAffine), p = static_cast<int>(Level::kPerspective);
   c.feasible[a] = c.feasible[a] && largest_singular_value(affine) <= settings_.max_magnification;
   c.pixels[a] = box_pixels(transform(cache_polygon, affine));
-  const Vec2 centre = 0.5 * texel_corners(texture_)[2];
+  const Vec2 centre = 0.5 * texel_corners()[2];
   const AffinePerspectiveSplit split = split_affine_perspective(
       measured_.model * translation_matrix(centre.x, centre.y), settings_.delta);
   c.feasible[p] =
@@ -768,35 +366,6 @@ void PlaneEngine::apply_choice(Level level, FrameReport& report) {
   if (policy().model == ModelUpdate::kAffineFit) accumulated_.fill(0.0);
   since_render_ = m.since_render;  // a re-render below resets it
   apply_level(report, m.measures.expansion_point, m.current);
-}
-
-void PlaneEngine::apply_level(FrameReport& report, const Vec2& expansion_point,
-                              const PlanePose& current) {
-  const Mat3 correction = model_ * glm::inverse(displayed_);
-  const Vec2 point = centred_to_pixel(camera_, expansion_point);
-  bool within_limit = true;
-  switch (report.level) {
-    case Level::kNone:
-      break;
-    case Level::kTranslate:
-      apply_translation(translation_step(correction, point));
-      report.model_work += kTranslationCost * static_cast<double>(display_.layer.image.width()) *
-                           display_.layer.image.height();
-      break;
-    case Level::kAffine:
-      within_limit = apply_affine(correction, point, report);
-      break;
-    case Level::kPerspective:
-      within_limit = apply_perspective(model_, report);
-      break;
-    case Level::kRerender:
-      rerender(current, report);
-      break;
-  }
-  if (!within_limit) {
-    report.note = "sampling limit: the cache would be magnified too much";
-    rerender(current, report);
-  }
 }
 
 }  // namespace oflab

@@ -26,15 +26,22 @@
 // (as the scene animator does, core/scene/scene_animator.h), and a plane that does not
 // meet the image (core/scene/view_culling.h plane_meets_image) is not visible: nothing is
 // drawn and no error is counted. No pose makes start() or advance() throw.
+//
+// The exact renders are core/engine/exact_render.h and the cost model's prices
+// core/engine/cost_model.h, both included here. PlaneEngine is implemented in two files: its
+// frame's decision in engine.cpp, its shown layer's updates in layer_updates.cpp.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "content/layer_content.h"
 #include "engine/budget.h"
+#include "engine/cost_model.h"
 #include "engine/decision.h"
+#include "engine/exact_render.h"
 #include "engine/reuse_policy.h"
 #include "flow/camera.h"
 #include "flow/decomposition.h"
@@ -90,14 +97,6 @@ struct EngineSettings {
   StabilizationPlane stabilization;
 };
 
-// The dissertation's cost model (section 6.4.4), in pixels of a perspective warp: a
-// perspective warp costs 1 per pixel written, an affine warp 1/2.1, a translation 1/35 of the
-// layer's area; a re-render costs what its content does (content_unit_cost per work unit,
-// the texture's being one perspective warp).
-constexpr double kPerspectiveWarpCost = 1.0;
-constexpr double kAffineWarpCost = 1.0 / 2.1;
-constexpr double kTranslationCost = 1.0 / 35.0;
-
 // What the engine did in one frame. Error estimates are the engine's own bookkeeping;
 // measured_error_px is the truth: the largest distance between where the shown layer's
 // pixels put the texture's corners (the warp that made the layer, moved by the whole pixels
@@ -146,58 +145,6 @@ struct FrameReport {
   // when not visible. The warps follow the geometry; this is what they cannot follow.
   double photometric_error = 0.0;
 };
-
-// The exact image of a textured plane: the texture warped by texture_to_image (in top-left
-// pixels), as a layer placed at (offset_x, offset_y) of the image. Empty when the plane is
-// not visible (see plane_visibility_problem).
-struct PlacedLayer {
-  Layer layer;
-  int offset_x = 0;
-  int offset_y = 0;
-};
-
-// Empty when the plane can be drawn; else why not: a pose problem, a corner at or behind
-// the eye (Z <= 1e-6), or a view within about 0.06 degrees of edge-on.
-std::string plane_visibility_problem(const PlanePose& pose);
-
-// The exact texel -> top-left image pixel homography of a pose, with a positive
-// denominator over the visible plane. Precondition: plane_visibility_problem is empty.
-Mat3 exact_texture_warp(const Camera& camera, const PlanePose& pose);
-
-// Renders the plane exactly (one perspective warp of the texture). `stats` if non-null
-// receives the warp statistics. Never throws for a visible plane with a valid texture.
-PlacedLayer render_exact(const Camera& camera, const Layer& texture, const PlanePose& pose,
-                         Sampling sampling, WarpStats* stats = nullptr);
-
-// The exact image of `clipped`, the part of the plane's rectangle kept by clip_to_frustum
-// (viewer frame, uv normalised texture coordinates of `texture`'s image), whatever lies
-// behind the eye: one perspective warp of the clipped texture polygon with a depth-signed
-// homography. `pose` gives the plane (its texture_size is taken from the texture). The
-// texture's polygon is replaced by the clipped one during the call and restored after.
-// Throws std::invalid_argument when the warp refuses (a sliver beyond its fixed-point
-// range). Precondition: clipped is not empty and lies at Z > 0.
-PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose& pose,
-                           const ViewPolygon& clipped, Sampling sampling,
-                           WarpStats* stats = nullptr);
-
-// The exact image of the clipped part of a plane (as render_clipped) drawn from a lit content:
-// texels inside `texels` (the valid region, texels of pose.texture_size) where the view
-// meets the plane in front of the eye. `stats` if non-null receives the render's counts.
-// Preconditions: content lit (content_is_lit), clipped not empty and at Z > 0.
-PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
-                                   const PlanePose& pose, const ConvexPolygon& texels,
-                                   const ViewPolygon& clipped, ContentStats* stats = nullptr);
-
-// The exact image of a clipped part of a plane from whatever `content` draws: a texture by
-// render_clipped (of `texture`, whose valid polygon is `texels` in texels of the texture),
-// a lit content by render_clipped_content. Adds the pixels written to *pixels_written and
-// the work in the cost model (a texture's pixels at kPerspectiveWarpCost, a lit content's
-// work units at content_unit_cost) to *model_work. Throws std::invalid_argument as
-// render_clipped. Preconditions as render_clipped's.
-PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& content, Layer& texture,
-                                 const PlanePose& pose, const ConvexPolygon& texels,
-                                 const ViewPolygon& clipped, Sampling sampling,
-                                 std::int64_t* pixels_written, double* model_work);
 
 // The engine of one plane, driven pose by pose by its caller. Not an Animator
 // (core/engine/animator.h), which owns its script: make_plane_animator plays a motion script
@@ -283,6 +230,7 @@ class PlaneEngine {
     int since_render = 1;
   };
 
+  // The frame's decision (engine.cpp): the measure, the choice and the hand-over to apply.
   void measure(bool start, const PlanePose* previous, const RigidMotion* motion,
                const PlanePose& current);
   void measure_fresh(const PlanePose& pose);
@@ -291,21 +239,25 @@ class PlaneEngine {
   void apply_measured(Level level, bool shown, FrameReport& report);
   void apply_choice(Level level, FrameReport& report);
   FrameReport apply_after_refusal(const std::string& refusal, double spent_ms);
-  void render_fresh(const PlanePose& pose, FrameReport& report);
-  void hide(const std::string& note, FrameReport& report);
-  void show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report);
   Mat3 next_model(const PlanarFlowCoefficients& flow, const PlanePose& current,
                   FitFiducials& fit) const;
   Vec3 render_plane_vector(const PlanePose& sized) const;
-  Mat3 target_warp(const PlanePose& pose) const;
-  Vec2 translation_step(const Mat3& correction, const Vec2& point) const;
   Mat3 warp_after(Level level, const Mat3& correction, const Vec2& point, const Mat3& model) const;
+  LevelPixels level_pixels() const;
+
+  // The shown layer (layer_updates.cpp): the levels applied to it, its re-renders, hidden and
+  // clipped frames, the perspective cache, and the error its pixels measure.
+  void render_fresh(const PlanePose& pose, FrameReport& report);
+  void hide(const std::string& note, FrameReport& report);
+  void show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report);
   void apply_level(FrameReport& report, const Vec2& expansion_point, const PlanePose& current);
   void rerender(const PlanePose& pose, FrameReport& report);
   // rerender of a lit content: renders it for the pose (kept as the perspective level's
   // source when the policy reuses) and shows it under displayed_.
   void rerender_content(const PlanePose& pose, FrameReport& report);
   void apply_translation(const Vec2& step);
+  bool apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report);
+  bool apply_perspective(const Mat3& target, FrameReport& report);
   // Warps `source` by source_to_image into the displayed layer (reusing memory) and places
   // it; texel_to_image is the warp the layer then shows (for the measured error).
   void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
@@ -313,11 +265,13 @@ class PlaneEngine {
   // Warps `source` into warped_, reusing its memory; counts the pixels written.
   void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report);
   void cache_from_display();
-  void finish_report(const PlanePose& pose, FrameReport& report) const;
-  LevelPixels level_pixels() const;
-  bool apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report);
-  bool apply_perspective(const Mat3& target, FrameReport& report);
   void show_from_cache(FrameReport& report);
+  void finish_report(const PlanePose& pose, FrameReport& report) const;
+  // The policy's view of a pose: the exact texel -> image warp, or its affine part.
+  Mat3 target_warp(const PlanePose& pose) const;
+  Vec2 translation_step(const Mat3& correction, const Vec2& point) const;
+  // The texture rectangle's corners in texels, and where warps put them.
+  std::array<Vec2, 4> texel_corners() const;
   std::vector<Vec2> displayed_corners_centred() const;
   double corner_distance(const Mat3& a, const Mat3& b) const;
   // The largest corner distance, pixels, between the shown layer and `reference` (a texel to

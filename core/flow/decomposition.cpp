@@ -1,6 +1,7 @@
 // Eq. 20 and corrected eq. 55 (manual/flow-math.md section 5).
 #include "flow/decomposition.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,7 +37,29 @@ glm::dmat2 jacobian_of(const Normalised& n) {
   return glm::dmat2(n.a - n.c * n.g, n.d - n.f * n.g, n.b - n.c * n.h, n.e - n.f * n.h);
 }
 
+// Jacobian (2x2, column-major) of homography h at point p.
+glm::dmat2 homography_jacobian(const Mat3& h, const Vec2& p) {
+  const Vec3 q = h * Vec3(p, 1.0);
+  const Vec2 u(q.x / q.z, q.y / q.z);
+  const double g = entry(h, 2, 0), k = entry(h, 2, 1);
+  return glm::dmat2((entry(h, 0, 0) - u.x * g) / q.z, (entry(h, 1, 0) - u.y * g) / q.z,
+                    (entry(h, 0, 1) - u.x * k) / q.z, (entry(h, 1, 1) - u.y * k) / q.z);
+}
+
 }  // namespace
+
+Mat3 affine_part_at(const Mat3& h, const Vec2& p) {
+  const glm::dmat2 j = homography_jacobian(h, p);
+  const Vec2 t = apply_homography(h, p) - j * p;
+  return mat3_from_rows({j[0][0], j[1][0], t.x}, {j[0][1], j[1][1], t.y}, {0.0, 0.0, 1.0});
+}
+
+double largest_singular_value(const Mat3& m) {
+  const glm::dmat2 a(entry(m, 0, 0), entry(m, 1, 0), entry(m, 0, 1), entry(m, 1, 1));
+  const glm::dmat2 ata = glm::transpose(a) * a;
+  const double tr = ata[0][0] + ata[1][1], det = glm::determinant(ata);
+  return std::sqrt(0.5 * tr + std::sqrt(std::max(0.0, 0.25 * tr * tr - det)));
+}
 
 TranslateLinearPerspective decompose_translate_linear_perspective(const Mat3& w) {
   const Normalised n = normalised_entries(w);

@@ -26,6 +26,15 @@ TranslateLinearPerspective decompose_translate_linear_perspective(const Mat3& w)
 // The Jacobian A of the normalised W at the source origin (same precondition).
 glm::dmat2 origin_jacobian(const Mat3& w);
 
+// The affine map that agrees with homography h to first order at point p: h(p) and h's
+// Jacobian there, with a bottom row of exactly (0, 0, 1). Precondition: p is not on h's
+// horizon (h's denominator at p is not 0).
+Mat3 affine_part_at(const Mat3& h, const Vec2& p);
+
+// The largest singular value of m's upper-left 2 x 2 block: the most an affine m stretches
+// a length, in any direction (the sampling limit's measure of magnification).
+double largest_singular_value(const Mat3& m);
+
 // How much of W's scaling the cached perspective step takes (section 5.4.3):
 // W_persp = [[D,0,0],[0,D,0],[g,h,1]] scales lengths by D at the source origin.
 enum class DeltaPolicy {

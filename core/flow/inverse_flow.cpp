@@ -86,6 +86,53 @@ Vec3 ray_through(const Vec2& pixel, double focal_px) {
   return Vec3(pixel.x / focal_px, pixel.y / focal_px, 1.0);
 }
 
+void check_inverse_flow_inputs(const PlanarFlowCoefficients& c, double focal_px,
+                               const Vec2& front_pixel) {
+  if (!(focal_px > 0.0) || !std::isfinite(focal_px)) {
+    throw std::invalid_argument("focal length must be a positive finite number of pixels");
+  }
+  if (!finite_coefficients(c) || !std::isfinite(front_pixel.x) || !std::isfinite(front_pixel.y)) {
+    throw std::invalid_argument("flow coefficients and the check pixel must be finite");
+  }
+}
+
+// The flow matrix of the coefficients (re-expanded about the principal point) split into its
+// rotation w (the antisymmetric part, [w]x) and the eigen-decomposition of its symmetric part.
+struct FlowMatrixParts {
+  Vec3 rotation;
+  SymmetricEigen symmetric;
+};
+
+FlowMatrixParts flow_matrix_parts(const PlanarFlowCoefficients& c, double f) {
+  const PlanarFlowCoefficients k = (c.origin == Vec2(0.0, 0.0)) ? c : reexpand(c, Vec2(0.0, 0.0));
+  // The flow matrix up to a multiple of the identity (manual/flow-math.md section 2, read
+  // backwards), with B33 set to 0.
+  const Mat3 b = mat3_from_rows({k.j11, k.j12, k.tx / f}, {k.j21, k.j22, k.ty / f},
+                                {-f * k.px, -f * k.py, 0.0});
+  const Mat3 bt = glm::transpose(b);
+  const Mat3 sym = 0.5 * (b + bt);
+  const Mat3 anti = 0.5 * (b - bt);
+  const Vec3 w(entry(anti, 2, 1), entry(anti, 0, 2), entry(anti, 1, 0));  // [w]x = anti
+  return {w, symmetric_eigen(sym)};
+}
+
+// One candidate (V/d, unit N) as the plane in front of the eye along ray `rho`, with the
+// rotation that makes the flow with `w`: false when the plane is seen edge-on there (no
+// solution). A normal facing away is mirrored through the eye, V/d with it.
+bool solution_in_front(Vec3 velocity, Vec3 normal, const Vec3& w, const Vec3& rho,
+                       PlanarMotionSolution& s) {
+  const double facing = glm::dot(normal, rho);
+  if (std::abs(facing) <= 1e-12 * glm::length(rho)) return false;  // edge-on at the check pixel
+  if (facing < 0.0) {  // the mirror image through the eye is the one in front
+    normal = -normal;
+    velocity = -velocity;
+  }
+  s.normal = normal;
+  s.v_over_d = velocity;
+  s.omega = w - 0.5 * glm::cross(normal, velocity);
+  s.depth_over_d = 1.0 / std::abs(facing);
+  return true;
+}
 }  // namespace
 
 const char* inverse_flow_case_name(InverseFlowCase kind) {
@@ -104,24 +151,11 @@ const char* inverse_flow_case_name(InverseFlowCase kind) {
 
 InverseFlowSolutions solve_inverse_flow(const PlanarFlowCoefficients& c, double focal_px,
                                         const Vec2& front_pixel) {
-  if (!(focal_px > 0.0) || !std::isfinite(focal_px)) {
-    throw std::invalid_argument("focal length must be a positive finite number of pixels");
-  }
-  if (!finite_coefficients(c) || !std::isfinite(front_pixel.x) || !std::isfinite(front_pixel.y)) {
-    throw std::invalid_argument("flow coefficients and the check pixel must be finite");
-  }
+  check_inverse_flow_inputs(c, focal_px, front_pixel);
   const double f = focal_px;
-  const PlanarFlowCoefficients k = (c.origin == Vec2(0.0, 0.0)) ? c : reexpand(c, Vec2(0.0, 0.0));
-  // The flow matrix up to a multiple of the identity (manual/flow-math.md section 2, read
-  // backwards), with B33 set to 0.
-  const Mat3 b = mat3_from_rows({k.j11, k.j12, k.tx / f}, {k.j21, k.j22, k.ty / f},
-                                {-f * k.px, -f * k.py, 0.0});
-  const Mat3 bt = glm::transpose(b);
-  const Mat3 sym = 0.5 * (b + bt);
-  const Mat3 anti = 0.5 * (b - bt);
-  const Vec3 w(entry(anti, 2, 1), entry(anti, 0, 2), entry(anti, 1, 0));  // [w]x = anti
-
-  const SymmetricEigen e = symmetric_eigen(sym);
+  const FlowMatrixParts parts = flow_matrix_parts(c, f);
+  const Vec3& w = parts.rotation;
+  const SymmetricEigen& e = parts.symmetric;
   // The symmetric part of (V/d) N^T has eigenvalues s1 >= 0 = s2 >= s3: subtract the middle.
   const double s1 = e.values[0] - e.values[1];
   const double s3 = e.values[2] - e.values[1];
@@ -151,22 +185,12 @@ InverseFlowSolutions solve_inverse_flow(const PlanarFlowCoefficients& c, double 
   const Vec3 rho = ray_through(front_pixel, f);
   const std::pair<Vec3, Vec3> candidates[2] = {{plus, minus}, {minus, plus}};
   for (int i = 0; i < (one_solution ? 1 : 2); ++i) {
-    Vec3 velocity = g * candidates[i].first;
-    Vec3 normal = glm::normalize(candidates[i].second);
-    const double facing = glm::dot(normal, rho);
-    if (std::abs(facing) <= 1e-12 * glm::length(rho)) {  // edge-on at the check pixel
+    PlanarMotionSolution s;
+    if (!solution_in_front(g * candidates[i].first, glm::normalize(candidates[i].second), w, rho,
+                           s)) {
       out.dropped_behind += 2;
       continue;
     }
-    if (facing < 0.0) {  // the mirror image through the eye is the one in front
-      normal = -normal;
-      velocity = -velocity;
-    }
-    PlanarMotionSolution s;
-    s.normal = normal;
-    s.v_over_d = velocity;
-    s.omega = w - 0.5 * glm::cross(normal, velocity);
-    s.depth_over_d = 1.0 / std::abs(facing);
     out.solutions.push_back(s);
     out.dropped_behind += 1;
   }

@@ -36,78 +36,97 @@ std::int64_t quantise(double value, double scale) {
   return static_cast<std::int64_t>(scaled);
 }
 
-}  // namespace
+// The map's coefficients in the doubled coordinates X = 2x, Y = 2y (see header), and the
+// extremes of its numerators and denominator over the region's vertices.
+struct DoubledMap {
+  double a, b, c, d, e, f, g, h, i;
+  double numerator_max;  // largest |Nu|, |Nv|, at least 1
+  double denominator_min;
+  double denominator_max;
+};
 
-InverseMap make_inverse_map(const Mat3& m, const ConvexPolygon& region, bool affine_form) {
-  // Coefficients of the map in the doubled coordinates X = 2x, Y = 2y (see header).
-  const double a = entry(m, 0, 0), b = entry(m, 0, 1), c = 2.0 * entry(m, 0, 2);
-  const double d = entry(m, 1, 0), e = entry(m, 1, 1), f = 2.0 * entry(m, 1, 2);
-  const double g = entry(m, 2, 0), h = entry(m, 2, 1), i = 2.0 * entry(m, 2, 2);
-
-  double numerator_max = 0.0;
-  double denominator_min = HUGE_VAL;
-  double denominator_max = 0.0;
+DoubledMap doubled_map(const Mat3& m, const ConvexPolygon& region) {
+  DoubledMap k;
+  k.a = entry(m, 0, 0), k.b = entry(m, 0, 1), k.c = 2.0 * entry(m, 0, 2);
+  k.d = entry(m, 1, 0), k.e = entry(m, 1, 1), k.f = 2.0 * entry(m, 1, 2);
+  k.g = entry(m, 2, 0), k.h = entry(m, 2, 1), k.i = 2.0 * entry(m, 2, 2);
+  k.numerator_max = 0.0;
+  k.denominator_min = HUGE_VAL;
+  k.denominator_max = 0.0;
   for (const Vec2& p : region.vertices()) {
     const double X = 2.0 * p.x;
     const double Y = 2.0 * p.y;
-    numerator_max =
-        std::max({numerator_max, std::abs(a * X + b * Y + c), std::abs(d * X + e * Y + f)});
-    const double D = g * X + h * Y + i;
-    denominator_min = std::min(denominator_min, D);
-    denominator_max = std::max(denominator_max, D);
+    k.numerator_max = std::max(
+        {k.numerator_max, std::abs(k.a * X + k.b * Y + k.c), std::abs(k.d * X + k.e * Y + k.f)});
+    const double D = k.g * X + k.h * Y + k.i;
+    k.denominator_min = std::min(k.denominator_min, D);
+    k.denominator_max = std::max(k.denominator_max, D);
   }
-  numerator_max = std::max(numerator_max, 1.0);
+  k.numerator_max = std::max(k.numerator_max, 1.0);
+  return k;
+}
 
+// The shift form of the affine kernels. Precondition: the bottom row of the map is (0, 0, 1).
+InverseMap shift_form(const DoubledMap& k) {
+  // D = 2 * 2^s = 2^shift, numerators scale by 2^s = 2^(shift - 1). Wrapping
+  // arithmetic makes a*X + b*Y + c exact whenever its true value fits, so only the
+  // coefficients, their per-pixel steps 2a and 2d, and the numerators over the region
+  // need bounds: with |2a| < 2^62 and |N| <= 2^60 stepping never overflows.
+  const double linear_max = std::max({std::abs(k.a), std::abs(k.b), std::abs(k.d), std::abs(k.e)});
+  const double constant_max = std::max(std::abs(k.c), std::abs(k.f));
+  auto fits = [&](int shift) {
+    return std::ldexp(k.numerator_max, shift - 1) <= kAffineMaxNumerator &&
+           std::ldexp(linear_max, shift) < kMaxCoefficient &&
+           std::ldexp(constant_max, shift - 1) < kMaxCoefficient;
+  };
+  int shift = kAffineMaxShift;
+  while (shift > kAffineMinShift && !fits(shift)) --shift;
+  if (!fits(shift)) {
+    throw std::invalid_argument(
+        "warp: minification beyond the supported range (about 2^40) for exact "
+        "fixed-point sampling");
+  }
+  const double scale = std::ldexp(1.0, shift - 1);
   InverseMap map;
-  if (affine_form) {
-    if (g != 0.0 || h != 0.0 || entry(m, 2, 2) != 1.0) {
-      throw std::invalid_argument("warp: the affine kernel needs a bottom row (0, 0, 1)");
-    }
-    // D = 2 * 2^s = 2^shift, numerators scale by 2^s = 2^(shift - 1). Wrapping
-    // arithmetic makes a*X + b*Y + c exact whenever its true value fits, so only the
-    // coefficients, their per-pixel steps 2a and 2d, and the numerators over the region
-    // need bounds: with |2a| < 2^62 and |N| <= 2^60 stepping never overflows.
-    const double linear_max = std::max({std::abs(a), std::abs(b), std::abs(d), std::abs(e)});
-    const double constant_max = std::max(std::abs(c), std::abs(f));
-    auto fits = [&](int shift) {
-      return std::ldexp(numerator_max, shift - 1) <= kAffineMaxNumerator &&
-             std::ldexp(linear_max, shift) < kMaxCoefficient &&
-             std::ldexp(constant_max, shift - 1) < kMaxCoefficient;
-    };
-    int shift = kAffineMaxShift;
-    while (shift > kAffineMinShift && !fits(shift)) --shift;
-    if (!fits(shift)) {
-      throw std::invalid_argument(
-          "warp: minification beyond the supported range (about 2^40) for exact "
-          "fixed-point sampling");
-    }
-    const double scale = std::ldexp(1.0, shift - 1);
-    map.a = quantise(a, scale), map.b = quantise(b, scale), map.c = quantise(c, scale);
-    map.d = quantise(d, scale), map.e = quantise(e, scale), map.f = quantise(f, scale);
-    map.g = 0, map.h = 0, map.i = std::int64_t{1} << shift;
-    map.affine_shift = shift;
-    return map;
-  }
+  map.a = quantise(k.a, scale), map.b = quantise(k.b, scale), map.c = quantise(k.c, scale);
+  map.d = quantise(k.d, scale), map.e = quantise(k.e, scale), map.f = quantise(k.f, scale);
+  map.g = 0, map.h = 0, map.i = std::int64_t{1} << shift;
+  map.affine_shift = shift;
+  return map;
+}
 
-  if (!(denominator_min > 0.0)) {
+// The division form, for the perspective kernel.
+InverseMap division_form(const DoubledMap& k) {
+  if (!(k.denominator_min > 0.0)) {
     throw std::invalid_argument(
         "warp: the homography's inverse has a non-positive denominator over the warped "
         "region (the region reaches the horizon line)");
   }
   // Largest power of two keeping D <= 2^37 and |N| <= 2^51 over the region.
-  const double limit =
-      std::min(kMaxDivisionDenominator / denominator_max, kDivisionMaxNumerator / numerator_max);
+  const double limit = std::min(kMaxDivisionDenominator / k.denominator_max,
+                                kDivisionMaxNumerator / k.numerator_max);
   const double scale = std::ldexp(1.0, std::ilogb(limit));
-  if (!(denominator_min * scale >= kDivisionMinDenominator)) {
+  if (!(k.denominator_min * scale >= kDivisionMinDenominator)) {
     throw std::invalid_argument(
         "warp: the denominator varies too much over the warped region for exact sampling "
         "(the region is too close to the horizon line)");
   }
-  map.a = quantise(a, scale), map.b = quantise(b, scale), map.c = quantise(c, scale);
-  map.d = quantise(d, scale), map.e = quantise(e, scale), map.f = quantise(f, scale);
-  map.g = quantise(g, scale), map.h = quantise(h, scale), map.i = quantise(i, scale);
+  InverseMap map;
+  map.a = quantise(k.a, scale), map.b = quantise(k.b, scale), map.c = quantise(k.c, scale);
+  map.d = quantise(k.d, scale), map.e = quantise(k.e, scale), map.f = quantise(k.f, scale);
+  map.g = quantise(k.g, scale), map.h = quantise(k.h, scale), map.i = quantise(k.i, scale);
   map.affine_shift = -1;
   return map;
+}
+}  // namespace
+
+InverseMap make_inverse_map(const Mat3& m, const ConvexPolygon& region, bool affine_form) {
+  const DoubledMap k = doubled_map(m, region);
+  if (!affine_form) return division_form(k);
+  if (k.g != 0.0 || k.h != 0.0 || entry(m, 2, 2) != 1.0) {
+    throw std::invalid_argument("warp: the affine kernel needs a bottom row (0, 0, 1)");
+  }
+  return shift_form(k);
 }
 
 }  // namespace oflab

@@ -37,7 +37,7 @@
 
 namespace oflab {
 
-// The policy's options (SceneSettings::cache; limits in core/engine/limits.h).
+// The policy's options (SceneSettings::cache; limits in core/flow/limits.h).
 struct CacheSettings {
   double angle_deg = 0.2;     // re-render when a corner's angular error exceeds this, degrees
   int max_node_polygons = 8;  // the grouping rule: polygons per cluster, at most

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "engine/limits.h"
+#include "flow/limits.h"
 #include "flow/reprojection.h"
 #include "image/composite.h"
 #include "scene/depth_reprojection.h"
@@ -73,6 +73,22 @@ Camera sub_camera(const Camera& camera, int x0, int y0, int width, int height) {
   return c;
 }
 
+// The part of a node image (width x height, top-left at (x0, y0) of the frame) its bounding
+// box's projected hull covers, in the image's pixels: the whole image when the hull is
+// degenerate or was not computed (fewer than 3 points).
+ConvexPolygon hull_region(const std::vector<Vec2>& hull, int x0, int y0, int width, int height) {
+  std::vector<Vec2> local;
+  for (const Vec2& v : hull) local.push_back(v - Vec2(x0, y0));
+  ConvexPolygon region = ConvexPolygon::rectangle(0, 0, width, height);
+  if (local.size() >= 3) {
+    try {
+      region = ConvexPolygon::from_vertices(local);
+    } catch (const std::invalid_argument&) {
+      // A degenerate hull: the whole rectangle.
+    }
+  }
+  return region;
+}
 }  // namespace
 
 std::string cache_settings_problem(const CacheSettings& s) {
@@ -127,33 +143,36 @@ void HierarchicalCache::restart() {
 
 double HierarchicalCache::node_radius(int k) const { return states_[k]->radius; }
 
-void HierarchicalCache::render_node(int k, const ViewerPose& view, const std::vector<char>& culled,
-                                    bool cached, AnimationFrame& report) {
-  NodeState& s = *states_[k];
-  const CacheNode& node = nodes_[k];
-  int x0 = 0, y0 = 0, width = camera_.width, height = camera_.height;
-  std::vector<Vec2> hull;
-  if (cached) {
-    for (const Vec3& c : node.corners()) {
-      hull.push_back(centred_to_pixel(camera_, project_centred(camera_, to_view(view, c))));
-    }
-    hull = convex_hull(hull);
-    BoundingBox box{hull[0].x, hull[0].y, hull[0].x, hull[0].y};
-    for (const Vec2& v : hull) {
-      box = {std::min(box.x_min, v.x), std::min(box.y_min, v.y), std::max(box.x_max, v.x),
-             std::max(box.y_max, v.y)};
-    }
-    x0 = static_cast<int>(std::floor(box.x_min));
-    y0 = static_cast<int>(std::floor(box.y_min));
-    width = std::max(1, static_cast<int>(std::ceil(box.x_max)) - x0);
-    height = std::max(1, static_cast<int>(std::ceil(box.y_max)) - y0);
+HierarchicalCache::NodeRect HierarchicalCache::node_rect(int k, const ViewerPose& view,
+                                                         bool cached) const {
+  NodeRect r{0, 0, camera_.width, camera_.height, {}};
+  if (!cached) return r;
+  for (const Vec3& c : nodes_[k].corners()) {
+    r.hull.push_back(centred_to_pixel(camera_, project_centred(camera_, to_view(view, c))));
   }
-  const Camera sub = sub_camera(camera_, x0, y0, width, height);
+  r.hull = convex_hull(r.hull);
+  BoundingBox box{r.hull[0].x, r.hull[0].y, r.hull[0].x, r.hull[0].y};
+  for (const Vec2& v : r.hull) {
+    box = {std::min(box.x_min, v.x), std::min(box.y_min, v.y), std::max(box.x_max, v.x),
+           std::max(box.y_max, v.y)};
+  }
+  r.x0 = static_cast<int>(std::floor(box.x_min));
+  r.y0 = static_cast<int>(std::floor(box.y_min));
+  r.width = std::max(1, static_cast<int>(std::ceil(box.x_max)) - r.x0);
+  r.height = std::max(1, static_cast<int>(std::ceil(box.y_max)) - r.y0);
+  return r;
+}
+
+Image HierarchicalCache::paint_fragments(int k, const ViewerPose& view,
+                                         const std::vector<char>& culled, const NodeRect& at,
+                                         AnimationFrame& report) {
+  NodeState& s = *states_[k];
+  const Camera sub = sub_camera(camera_, at.x0, at.y0, at.width, at.height);
   const ViewFrustum frustum = view_frustum(sub, context_.near, 1.0);
-  Image image(width, height);
-  s.surface.assign(static_cast<std::size_t>(width) * height, -1);
+  Image image(at.width, at.height);
+  s.surface.assign(static_cast<std::size_t>(at.width) * at.height, -1);
   s.planes.clear();
-  std::vector<int> fragments = node.fragments;
+  std::vector<int> fragments = nodes_[k].fragments;
   std::sort(fragments.begin(), fragments.end(),
             [&](int a, int b) { return fragment_position_[a] < fragment_position_[b]; });
   for (int f : fragments) {
@@ -183,29 +202,28 @@ void HierarchicalCache::render_node(int k, const ViewerPose& view, const std::ve
     const int plane = static_cast<int>(s.planes.size());
     s.planes.push_back(
         plane_vector_of(to_view(view, polygon.centre), direction_to_view(view, polygon.front)));
-    label_covered(placed.layer.image, placed.offset_x, placed.offset_y, width, height, plane,
+    label_covered(placed.layer.image, placed.offset_x, placed.offset_y, at.width, at.height, plane,
                   s.surface);
   }
-  std::vector<Vec2> local;
-  for (const Vec2& v : hull) local.push_back(v - Vec2(x0, y0));
-  ConvexPolygon region = ConvexPolygon::rectangle(0, 0, width, height);
-  if (local.size() >= 3) {
-    try {
-      region = ConvexPolygon::from_vertices(local);
-    } catch (const std::invalid_argument&) {
-      // A degenerate hull: the whole rectangle.
-    }
-  }
-  s.image = make_layer(std::move(image), region);
-  s.x0 = x0;
-  s.y0 = y0;
+  return image;
+}
+
+void HierarchicalCache::render_node(int k, const ViewerPose& view, const std::vector<char>& culled,
+                                    bool cached, AnimationFrame& report) {
+  NodeState& s = *states_[k];
+  const CacheNode& node = nodes_[k];
+  const NodeRect at = node_rect(k, view, cached);
+  Image image = paint_fragments(k, view, culled, at, report);
+  s.image = make_layer(std::move(image), hull_region(at.hull, at.x0, at.y0, at.width, at.height));
+  s.x0 = at.x0;
+  s.y0 = at.y0;
   s.view = view;
   s.valid = cached;
   s.reused = false;
-  s.to_frame = translation_matrix(x0, y0);
+  s.to_frame = translation_matrix(at.x0, at.y0);
   s.shown.layer = s.image;
-  s.shown.offset_x = x0;
-  s.shown.offset_y = y0;
+  s.shown.offset_x = at.x0;
+  s.shown.offset_y = at.y0;
   if (cached) {
     s.quad = cache_quad(eye_position(view), node.centre());
     s.radius = settings_.safety_radius > 0.0 ? settings_.safety_radius
@@ -247,14 +265,7 @@ double HierarchicalCache::vertex_error(int k, const ViewerPose& current) const {
   return largest;
 }
 
-double HierarchicalCache::frame(const ViewerPose& current, const std::vector<char>& culled,
-                                Image& frame, std::vector<Level>& levels, AnimationFrame& report) {
-  const auto t0 = Clock::now();
-  NodeCacheFrame& c = report.cache;
-  c.active = true;
-  c.nodes = static_cast<int>(nodes_.size());
-  c.threshold_px = camera_.focal_px * std::tan(threshold_);
-  const Vec3 eye = eye_position(current);
+std::vector<int> HierarchicalCache::order_nodes(const Vec3& eye, const std::vector<char>& culled) {
   bsp_.back_to_front(eye, order_);
   fragment_position_.assign(bsp_.fragments().size(), 0);
   for (std::size_t i = 0; i < order_.size(); ++i) fragment_position_[order_[i]] = int(i);
@@ -271,60 +282,82 @@ double HierarchicalCache::frame(const ViewerPose& current, const std::vector<cha
   std::sort(drawn.begin(), drawn.end(), [&](int a, int b) {
     return fragment_position_[nodes_[a].fragments[0]] < fragment_position_[nodes_[b].fragments[0]];
   });
-  std::vector<char> rendered(nodes_.size(), 0);
+  return drawn;
+}
+
+bool HierarchicalCache::cacheable(int k, const ViewerPose& current, const Vec3& eye) const {
+  // Every box corner beyond the near plane, on the quad's far side and projecting within the
+  // guard band.
   const double gw = context_.guard_band * camera_.width;
   const double gh = context_.guard_band * camera_.height;
+  bool cacheable = true;
+  const CacheQuad quad = cache_quad(eye, nodes_[k].centre());
+  for (const Vec3& corner : nodes_[k].corners()) {
+    const Vec3 p = to_view(current, corner);
+    if (p.z < context_.near || quad_depth(quad, corner) <= 0.0) {
+      cacheable = false;
+      break;
+    }
+    const Vec2 q = centred_to_pixel(camera_, project_centred(camera_, p));
+    cacheable = cacheable && q.x >= -gw && q.x <= camera_.width + gw && q.y >= -gh &&
+                q.y <= camera_.height + gh;
+  }
+  return cacheable;
+}
+
+bool HierarchicalCache::update_node(int k, const ViewerPose& current, const Vec3& eye,
+                                    const std::vector<char>& culled, AnimationFrame& report) {
+  NodeState& s = *states_[k];
+  NodeCacheFrame& c = report.cache;
+  FrameReport r;
+  r.frame = report.frame;
+  r.estimated_error_px = c.threshold_px;
+  const std::int64_t pixels_before = report.pixels_written;
+  const double work_before = report.model_work;
+  bool render = !s.valid;
+  c.fresh += render;
+  if (s.valid) {
+    const double angle = node_angular_error(s.quad, nodes_[k].corners(), eye);
+    const CacheRenderCause cause =
+        cache_render_cause(s.quad, nodes_[k].corners(), s.radius, eye, threshold_);
+    c.by_angle += cause == CacheRenderCause::kAngle;
+    c.by_sphere += cause == CacheRenderCause::kSphere;
+    render = cause != CacheRenderCause::kNone;
+    if (!render && !warp_node(k, current, report)) {
+      render = true;
+      ++c.uncacheable;
+    } else if (!render) {
+      c.max_angle_deg = std::max(c.max_angle_deg, angle * 180.0 / kPi);
+      r.measured_error_px = vertex_error(k, current);
+    }
+  }
+  if (render) {
+    const bool cached = cacheable(k, current, eye);
+    c.uncacheable += !cached;
+    render_node(k, current, culled, cached, report);
+    ++c.rendered;
+  }
+  ++c.drawn;
+  r.level = render ? Level::kRerender : Level::kPerspective;
+  r.pixels_written = report.pixels_written - pixels_before;
+  r.model_work = report.model_work - work_before;
+  report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
+  report.layer_reports.push_back(r);
+  return render;
+}
+
+double HierarchicalCache::frame(const ViewerPose& current, const std::vector<char>& culled,
+                                Image& frame, std::vector<Level>& levels, AnimationFrame& report) {
+  const auto t0 = Clock::now();
+  NodeCacheFrame& c = report.cache;
+  c.active = true;
+  c.nodes = static_cast<int>(nodes_.size());
+  c.threshold_px = camera_.focal_px * std::tan(threshold_);
+  const Vec3 eye = eye_position(current);
+  const std::vector<int> drawn = order_nodes(eye, culled);
+  std::vector<char> rendered(nodes_.size(), 0);
   for (int k : drawn) {
-    NodeState& s = *states_[k];
-    const CacheNode& node = nodes_[k];
-    FrameReport r;
-    r.frame = report.frame;
-    r.estimated_error_px = c.threshold_px;
-    const std::int64_t pixels_before = report.pixels_written;
-    const double work_before = report.model_work;
-    bool render = !s.valid;
-    c.fresh += render;
-    if (s.valid) {
-      const double angle = node_angular_error(s.quad, node.corners(), eye);
-      const CacheRenderCause cause =
-          cache_render_cause(s.quad, node.corners(), s.radius, eye, threshold_);
-      c.by_angle += cause == CacheRenderCause::kAngle;
-      c.by_sphere += cause == CacheRenderCause::kSphere;
-      render = cause != CacheRenderCause::kNone;
-      if (!render && !warp_node(k, current, report)) {
-        render = true;
-        ++c.uncacheable;
-      } else if (!render) {
-        c.max_angle_deg = std::max(c.max_angle_deg, angle * 180.0 / kPi);
-        r.measured_error_px = vertex_error(k, current);
-      }
-    }
-    if (render) {
-      // Cacheable: every box corner beyond the near plane, on the quad's far side and
-      // projecting within the guard band.
-      bool cacheable = true;
-      const CacheQuad quad = cache_quad(eye, node.centre());
-      for (const Vec3& corner : node.corners()) {
-        const Vec3 p = to_view(current, corner);
-        if (p.z < context_.near || quad_depth(quad, corner) <= 0.0) {
-          cacheable = false;
-          break;
-        }
-        const Vec2 q = centred_to_pixel(camera_, project_centred(camera_, p));
-        cacheable = cacheable && q.x >= -gw && q.x <= camera_.width + gw && q.y >= -gh &&
-                    q.y <= camera_.height + gh;
-      }
-      c.uncacheable += !cacheable;
-      render_node(k, current, culled, cacheable, report);
-      rendered[k] = 1;
-      ++c.rendered;
-    }
-    ++c.drawn;
-    r.level = render ? Level::kRerender : Level::kPerspective;
-    r.pixels_written = report.pixels_written - pixels_before;
-    r.model_work = report.model_work - work_before;
-    report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
-    report.layer_reports.push_back(r);
+    if (update_node(k, current, eye, culled, report)) rendered[k] = 1;
   }
   // A polygon is one layer-frame, re-rendered when a node of its was.
   for (std::size_t p = 0; p < scene_.polygons.size(); ++p) {

@@ -54,7 +54,7 @@ struct CacheContext {
   LayerContent content;  // the run's content settings; each polygon keeps its own kind
 };
 
-// What is wrong with `settings` ("" when nothing): the limits of core/engine/limits.h
+// What is wrong with `settings` ("" when nothing): the limits of core/flow/limits.h
 // (kCacheAngle, kCacheNodePolygons, kSafetyRadius), naming the field.
 std::string cache_settings_problem(const CacheSettings& settings);
 
@@ -89,7 +89,26 @@ class HierarchicalCache {
 
  private:
   struct NodeState;
+  // Where a node image lies in the frame it is rendered in: top-left pixel and size, and the
+  // projected hull of the node's bounding box (empty for an image covering the whole frame).
+  struct NodeRect {
+    int x0, y0, width, height;
+    std::vector<Vec2> hull;
+  };
 
+  // The frame's steps: the drawn nodes in back-to-front order (the others' images dropped);
+  // each drawn node reused or rendered (true: rendered), with its report.
+  std::vector<int> order_nodes(const Vec3& eye, const std::vector<char>& culled);
+  bool update_node(int k, const ViewerPose& current, const Vec3& eye,
+                   const std::vector<char>& culled, AnimationFrame& report);
+  // Whether node k's image may be kept when it is rendered now: every corner of its box
+  // beyond the near plane, on the far side of a new quad, projecting within the guard band.
+  bool cacheable(int k, const ViewerPose& current, const Vec3& eye) const;
+  // A render of node k: where its image lies (the whole frame unless cached), its fragments
+  // painted back to front (the surface labels kept), the image kept with its quad.
+  NodeRect node_rect(int k, const ViewerPose& view, bool cached) const;
+  Image paint_fragments(int k, const ViewerPose& view, const std::vector<char>& culled,
+                        const NodeRect& at, AnimationFrame& report);
   void render_node(int k, const ViewerPose& view, const std::vector<char>& culled, bool cached,
                    AnimationFrame& report);
   bool warp_node(int k, const ViewerPose& current, AnimationFrame& report);

@@ -5,11 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include "engine/limits.h"
 #include "flow/homography.h"
 #include "image/composite.h"
 
@@ -22,8 +20,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-glm::ivec2 texture_size(const Image& texture) { return {texture.width(), texture.height()}; }
-
 // The intersection of two convex polygons: `a` clipped by every edge of `b`.
 ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
   const std::vector<Vec2>& v = b.vertices();
@@ -34,132 +30,10 @@ ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
   return b.empty() ? ConvexPolygon() : a;
 }
 
-}  // namespace
-
-const char* polygon_status_name(PolygonStatus status) {
-  switch (status) {
-    case PolygonStatus::kBackFacing:
-      return "back-facing";
-    case PolygonStatus::kOutsideFrustum:
-      return "outside-frustum";
-    case PolygonStatus::kHidden:
-      return "hidden";
-    case PolygonStatus::kAnimated:
-      return "animated";
-    case PolygonStatus::kClipped:
-      return "clipped";
-    case PolygonStatus::kStarved:
-      return "starved";
-  }
-  return "animated";
-}
-
-struct SceneEngine::PolygonState {
-  std::vector<Vec3> world_vertices;  // the outline in world coordinates
-  std::vector<Vec2> uv;              // the outline, normalised texture coordinates
-  glm::ivec2 texture_size{0, 0};
-  bool opaque = false;
-  bool whole = true;  // one unsplit fragment in the BSP tree
-  std::unique_ptr<PlaneEngine> animator;
-  bool live = false;  // the animator shows the previous frame
-  // This frame:
-  ViewPolygon clipped;         // the outline clipped to the view frustum
-  ConvexPolygon exact_region;  // its exact image, top-left pixels (once region_known)
-  bool region_known = false;
-  bool needs_clipping = false;  // near plane or guard band: render clipped, exactly
-  bool updated = false;
-  PlacedLayer clipped_layer;  // the clipped exact render (status kClipped)
-  FrameReport report;         // the animator's report (status kAnimated)
-  // The measure and allocate phases: what it could do, and what it was given.
-  LayerCandidates candidates;
-  Level allocated = Level::kRerender;
-  bool allocated_shown = true;
-  bool starved = false;
-
-  const PlacedLayer* shown(PolygonStatus status) const {
-    if (status == PolygonStatus::kClipped) return &clipped_layer;
-    if (status == PolygonStatus::kStarved) return nullptr;
-    return animator ? &animator->displayed() : nullptr;
-  }
-};
-
-double polygon_texture_copy_bytes(const Scene& scene) {
-  double bytes = 0.0;
-  for (const ScenePolygon& p : scene.polygons) {
-    const bool known = p.texture >= 0 && p.texture < static_cast<int>(scene.textures.size());
-    if (known) bytes += 4.0 * scene.textures[static_cast<std::size_t>(p.texture)].pixel_count();
-  }
-  return bytes;
-}
-
-double scene_memory_bytes(const Scene& scene, const Camera& camera) {
-  double bytes = 0.0;
-  for (const Image& t : scene.textures) bytes += 2.0 * 4.0 * t.pixel_count();
-  const double layers = kLayerImagesPerPolygon * 4.0 * camera.width * camera.height;
-  return bytes + layers * scene.polygons.size() + polygon_texture_copy_bytes(scene);
-}
-
-std::string scene_memory_limit_problem(double bytes, const std::string& subject,
-                                       const std::string& what) {
-  const double mib = bytes / (1024.0 * 1024.0);
-  const Limit& limit = limits::kSceneEngineMemory;
-  if (limit.allows(mib)) return "";
-  std::ostringstream text;
-  text << subject << " may hold " << static_cast<long>(std::ceil(mib)) << " MiB of " << what
-       << ", more than " << limit.maximum << " MiB (the " << limit.what << " limit)";
-  return text.str();
-}
-
-std::string scene_memory_problem(const Scene& scene, const Camera& camera) {
-  std::ostringstream subject;
-  subject << "the scene's " << scene.polygons.size() << " polygons at " << camera.width << " x "
-          << camera.height << " px";
-  return scene_memory_limit_problem(scene_memory_bytes(scene, camera), subject.str(),
-                                    "layers and textures");
-}
-
-double scene_impostor_windows(const Scene& scene, int quality) {
-  const double q = quality;
-  double windows = 0.0;
-  for (const ScenePolygon& p : scene.polygons) {
-    if (p.content == ContentKind::kImpostor) windows += (1.0 + q) * (1.0 + 2.0 * q);
-  }
-  return windows;
-}
-
-std::string scene_content_problem(const Scene& scene, const Camera& camera, int quality) {
-  const auto count = [&](ContentKind kind) {
-    return std::count_if(scene.polygons.begin(), scene.polygons.end(),
-                         [&](const auto& p) { return p.content == kind; });
-  };
-  LayerContent shaded;
-  shaded.kind = ContentKind::kShaded;
-  shaded.quality = quality;
-  const auto shaded_polygons = count(ContentKind::kShaded);
-  const double samples = static_cast<double>(shaded_polygons) *
-                         shaded_samples(shaded, static_cast<double>(camera.width) * camera.height);
-  std::ostringstream subject;
-  subject << "the scene's " << shaded_polygons << " shaded polygons at quality " << quality
-          << " on a " << camera.width << " x " << camera.height << " px camera";
-  if (const std::string problem = shaded_samples_problem(samples, subject.str());
-      !problem.empty()) {
-    return problem;
-  }
-  const double windows = scene_impostor_windows(scene, quality);
-  const Limit& limit = limits::kSceneImpostorWindows;
-  if (limit.allows(windows)) return "";
-  std::ostringstream text;
-  text << "the scene's " << count(ContentKind::kImpostor) << " impostor polygons at quality "
-       << quality << " draw " << static_cast<long>(windows) << " facade windows a frame, more than "
-       << limit.maximum << " (the " << limit.what << " limit)";
-  return text.str();
-}
-
-SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings)
-    : scene_(scene),
-      camera_(camera),
-      settings_(settings),
-      ledger_(*settings.engine.policy, settings.engine.budget, camera.width, camera.height) {
+// Throws std::invalid_argument naming the first problem of a scene engine's inputs: the
+// camera, the budget, the near plane, the guard band, the hidden test's margins, a polygon,
+// the scene's memory and its contents' detail (see SceneEngine's constructor).
+void check_scene_inputs(const Scene& scene, const Camera& camera, const SceneSettings& settings) {
   if (const char* problem = camera_problem(camera); problem && *problem) {
     throw std::invalid_argument(std::string("camera: ") + problem);
   }
@@ -190,27 +64,20 @@ SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSe
       !problem.empty()) {
     throw std::invalid_argument(problem);
   }
+}
+
+}  // namespace
+
+SceneEngine::SceneEngine(const Scene& scene, const Camera& camera, const SceneSettings& settings)
+    : scene_(scene),
+      camera_(camera),
+      settings_(settings),
+      ledger_(*settings.engine.policy, settings.engine.budget, camera.width, camera.height) {
+  check_scene_inputs(scene, camera, settings);
   frustum_ = view_frustum(camera_, settings_.near, 1.0);
   bsp_ = BspTree(scene.polygons);
   for (const Image& t : scene.textures) scratch_textures_.push_back(make_layer(t));
-  std::vector<int> opaque_texture(scene.textures.size(), -1);  // -1: not looked at yet
-  for (const ScenePolygon& polygon : scene.polygons) {
-    auto state = std::make_unique<PolygonState>();
-    state->world_vertices = polygon_vertices(polygon);
-    state->uv = polygon_outline(polygon);
-    const Image& texture = scene.textures[polygon.texture];
-    state->texture_size = texture_size(texture);
-    // Rectangles of one texture share the answer; only outlines need a look of their own.
-    if (polygon.outline.empty()) {
-      if (opaque_texture[polygon.texture] < 0) {
-        opaque_texture[polygon.texture] = polygon_is_opaque(polygon, texture);
-      }
-      state->opaque = opaque_texture[polygon.texture] == 1;
-    } else {
-      state->opaque = polygon_is_opaque(polygon, texture);
-    }
-    states_.push_back(std::move(state));
-  }
+  states_ = make_polygon_layers(scene);
   for (const BspFragment& f : bsp_.fragments()) {
     if (!f.whole) states_[f.polygon]->whole = false;
   }
@@ -249,7 +116,7 @@ void SceneEngine::classify(const ViewerPose& view, AnimationFrame& report) {
   const double gw = settings_.guard_band * camera_.width;
   const double gh = settings_.guard_band * camera_.height;
   for (std::size_t i = 0; i < states_.size(); ++i) {
-    PolygonState& s = *states_[i];
+    PolygonLayer& s = *states_[i];
     const ScenePolygon& polygon = scene_.polygons[i];
     s.updated = false;
     s.exact_region = ConvexPolygon();
@@ -297,7 +164,7 @@ ConvexPolygon SceneEngine::exact_region(const ViewPolygon& clipped) const {
 
 ConvexPolygon SceneEngine::fragment_region(int fragment, const ViewerPose& view) const {
   const BspFragment& f = bsp_.fragments()[fragment];
-  const PolygonState& s = *states_[f.polygon];
+  const PolygonLayer& s = *states_[f.polygon];
   if (statuses_[f.polygon] == PolygonStatus::kAnimated && s.animator) {
     // Through the displayed warp, so the pieces of one layer fit together exactly.
     try {
@@ -313,7 +180,7 @@ ConvexPolygon SceneEngine::fragment_region(int fragment, const ViewerPose& view)
 }
 
 const ConvexPolygon& SceneEngine::polygon_region(int polygon) {
-  PolygonState& s = *states_[polygon];
+  PolygonLayer& s = *states_[polygon];
   if (!s.region_known) {
     s.exact_region = exact_region(s.clipped);
     s.region_known = true;
@@ -323,156 +190,13 @@ const ConvexPolygon& SceneEngine::polygon_region(int polygon) {
 
 bool SceneEngine::fragment_hidden(int fragment, const ViewerPose& view) {
   const BspFragment& f = bsp_.fragments()[fragment];
-  const PolygonState& s = *states_[f.polygon];
+  const PolygonLayer& s = *states_[f.polygon];
   if (s.whole) return occlusion_.covers(polygon_region(f.polygon), settings_.candidate_margin_px);
   ViewPolygon piece;
   for (const Vec3& v : f.vertices) piece.points.push_back(to_view(view, v));
   piece.uv = f.uv;
   return occlusion_.covers(exact_region(clip_to_frustum(piece, frustum_)),
                            settings_.candidate_margin_px);
-}
-
-void SceneEngine::render_clipped(int index, const ViewerPose& view, AnimationFrame& report) {
-  PolygonState& s = *states_[index];
-  const ScenePolygon& polygon = scene_.polygons[index];
-  s.clipped_layer = PlacedLayer{};
-  const LayerContent content = polygon_content(index);
-  try {
-    const PlanePose pose = polygon_pose(polygon, view, s.texture_size);
-    s.clipped_layer =
-        render_clipped_piece(camera_, content, scratch_textures_[polygon.texture], pose,
-                             texel_polygon(s.uv, s.texture_size), s.clipped,
-                             settings_.engine.sampling, &report.pixels_written, &report.model_work);
-  } catch (const std::invalid_argument&) {
-    // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.
-  }
-}
-
-PlaneEngine& SceneEngine::polygon_engine(int index) {
-  PolygonState& s = *states_[index];
-  if (!s.animator) {
-    const ScenePolygon& polygon = scene_.polygons[index];
-    EngineSettings engine = settings_.engine;
-    engine.content = polygon_content(index);
-    s.animator = std::make_unique<PlaneEngine>(
-        camera_, make_layer(scene_.textures[polygon.texture], texel_polygon(s.uv, s.texture_size)),
-        engine);
-  }
-  return *s.animator;
-}
-
-LayerCandidates SceneEngine::clipped_candidates(int index) {
-  LayerCandidates c;
-  c.kind = LayerCandidates::Kind::kFresh;
-  if (!settings_.engine.policy->shares_budget) return c;
-  const ConvexPolygon& region = polygon_region(index);
-  c.pixels[static_cast<int>(Level::kRerender)] = box_pixels(region);
-  if (!region.empty()) {
-    const BoundingBox b = region.bounds();
-    c.extent_px = std::hypot(b.x_max - b.x_min, b.y_max - b.y_min);
-  }
-  return c;
-}
-
-void SceneEngine::measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
-                                   const ViewerPose& current, AnimationFrame& report) {
-  const auto t0 = Clock::now();
-  for (std::size_t i = 0; i < states_.size(); ++i) {
-    if (statuses_[i] == PolygonStatus::kBackFacing ||
-        statuses_[i] == PolygonStatus::kOutsideFrustum) {
-      continue;
-    }
-    PolygonState& s = *states_[i];
-    const int index = static_cast<int>(i);
-    if (s.needs_clipping) {
-      s.candidates = clipped_candidates(index);
-      continue;
-    }
-    const ScenePolygon& polygon = scene_.polygons[i];
-    PlaneEngine& animator = polygon_engine(index);
-    if (uses_frame_plane_) animator.set_frame_plane(frame_plane_);
-    const PlanePose pose = polygon_pose(polygon, current, s.texture_size);
-    s.candidates = s.live && previous && motion
-                       ? animator.measure_advance(polygon_pose(polygon, *previous, s.texture_size),
-                                                  *motion, pose)
-                       : animator.measure_start(pose);
-  }
-  report.update_ms += ms_since(t0);
-}
-
-void SceneEngine::allocate_polygons(AnimationFrame& report) {
-  std::vector<int> measured;
-  std::vector<LayerCandidates> candidates;
-  for (std::size_t i = 0; i < states_.size(); ++i) {
-    if (statuses_[i] == PolygonStatus::kBackFacing ||
-        statuses_[i] == PolygonStatus::kOutsideFrustum) {
-      continue;
-    }
-    measured.push_back(static_cast<int>(i));
-    candidates.push_back(states_[i]->candidates);
-  }
-  const FrameAllocation a = ledger_.allocate(report.frame, candidates);
-  for (std::size_t k = 0; k < measured.size(); ++k) {
-    PolygonState& s = *states_[measured[k]];
-    s.allocated = a.levels[k];
-    s.allocated_shown = a.shown[k] != 0;
-    s.starved = a.starved[k] != 0;
-  }
-}
-
-void SceneEngine::starve(int index) {
-  statuses_[index] = PolygonStatus::kStarved;
-  states_[index]->live = false;
-  ledger_.applied(Level::kRerender, 0.0, 0, true);
-}
-
-void SceneEngine::update_polygon(int index, const ViewerPose& current, AnimationFrame& report) {
-  PolygonState& s = *states_[index];
-  const auto t0 = Clock::now();
-  s.updated = true;
-  if (s.needs_clipping) {
-    if (!s.allocated_shown) {
-      s.clipped_layer = PlacedLayer{};
-      starve(index);
-      report.update_ms += ms_since(t0);
-      return;
-    }
-    const std::int64_t before = report.pixels_written;
-    render_clipped(index, current, report);
-    statuses_[index] = PolygonStatus::kClipped;
-    levels_[index] = Level::kRerender;
-    ++report.levels[static_cast<int>(Level::kRerender)];
-    ++report.clipped;
-    s.live = false;
-    ledger_.applied(Level::kRerender, ms_since(t0), report.pixels_written - before, s.starved);
-    report.update_ms += ms_since(t0);
-    return;
-  }
-  const FrameReport r = s.animator->apply(s.allocated, s.allocated_shown);
-  if (!s.allocated_shown && s.candidates.kind == LayerCandidates::Kind::kFresh) {
-    starve(index);
-    report.update_ms += ms_since(t0);
-    return;
-  }
-  s.live = true;
-  statuses_[index] = PolygonStatus::kAnimated;
-  levels_[index] = r.level;
-  ++report.levels[static_cast<int>(r.level)];
-  report.pixels_written += r.pixels_written;
-  report.model_work += r.model_work;
-  report.render_ms += r.render_ms;
-  report.max_photometric_error = std::max(report.max_photometric_error, r.photometric_error);
-  ledger_.applied(r.level, r.time_ms, r.pixels_written, s.starved);
-  s.report = r;
-  if (r.visible)
-    report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
-  report.update_ms += ms_since(t0);
-}
-
-LayerContent SceneEngine::polygon_content(int polygon) const {
-  LayerContent content = settings_.engine.content;
-  content.kind = scene_.polygons[polygon].content;
-  return content;
 }
 
 bool SceneEngine::cadence_frame() const {
@@ -611,7 +335,7 @@ void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame
   for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
     const int f = *it;
     const int p = fragments[f].polygon;
-    PolygonState& s = *states_[p];
+    PolygonLayer& s = *states_[p];
     if (statuses_[p] == PolygonStatus::kBackFacing ||
         statuses_[p] == PolygonStatus::kOutsideFrustum) {
       continue;
@@ -639,7 +363,7 @@ void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame
 
 void SceneEngine::add_occluder(int fragment, const PlacedLayer& shown) {
   // What this fragment certainly paints opaque hides whatever is tested after it.
-  const PolygonState& s = *states_[bsp_.fragments()[fragment].polygon];
+  const PolygonLayer& s = *states_[bsp_.fragments()[fragment].polygon];
   if (s.whole) {
     occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
                             Vec2(shown.offset_x, shown.offset_y));
@@ -655,7 +379,7 @@ void SceneEngine::tally_hidden_and_stale(AnimationFrame& report) {
   const BoundingBox frame_box{0.0, 0.0, static_cast<double>(camera_.width),
                               static_cast<double>(camera_.height)};
   for (std::size_t i = 0; i < states_.size(); ++i) {
-    PolygonState& s = *states_[i];
+    PolygonLayer& s = *states_[i];
     if (statuses_[i] == PolygonStatus::kHidden) {
       ++report.hidden;
       report.hidden_area_px += clip_to_box(polygon_region(static_cast<int>(i)), frame_box).area();

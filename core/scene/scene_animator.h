@@ -41,6 +41,11 @@
 // part inside the frustum is clipped in 3D and rendered exactly that frame, so a polygon
 // crossing the near plane is never smeared, never warped through the eye and never
 // crashes a warp. Such polygons are counted as re-rendered and as "clipped".
+//
+// Files. A polygon's layer and status are core/scene/polygon_layer.h, and what a scene costs
+// (memory, content detail) before anything is allocated core/scene/scene_resources.h; both
+// are included here. SceneEngine is implemented in two files: its frame loop in
+// scene_animator.cpp, its per-polygon steps (measure, allocate, update) in polygon_layer.cpp.
 #pragma once
 
 #include <array>
@@ -56,7 +61,9 @@
 #include "scene/depth_reprojection.h"
 #include "scene/hierarchical_cache.h"
 #include "scene/occlusion.h"
+#include "scene/polygon_layer.h"
 #include "scene/scene.h"
+#include "scene/scene_resources.h"
 #include "scene/view_culling.h"
 #include "scene/viewer_script.h"
 #include "scene/viewer_script_animator.h"
@@ -83,44 +90,6 @@ struct SceneSettings {
   // (core/scene/cache_nodes.h); other policies ignore it.
   CacheSettings cache;
 };
-
-// What happened to one polygon in a frame.
-// kStarved: visible, but the frame budget afforded it no render (core/engine/budget.h): not
-// drawn this frame.
-enum class PolygonStatus { kBackFacing, kOutsideFrustum, kHidden, kAnimated, kClipped, kStarved };
-const char* polygon_status_name(PolygonStatus status);
-
-// The bytes of every polygon's copy of its texture, 4 a pixel (a polygon whose texture index
-// is out of range counts none): what a scene's engines, one a polygon, copy.
-double polygon_texture_copy_bytes(const Scene& scene);
-
-// The bytes a scene engine may hold for `scene` seen through `camera` when every polygon is
-// visible, estimated from the inputs alone before anything is allocated: per polygon its
-// engine's copy of its texture and kLayerImagesPerPolygon camera-sized layer images (the
-// rendered and the displayed layer), and per texture the scene's image and the engine's
-// scratch copy, 4 bytes a pixel.
-constexpr int kLayerImagesPerPolygon = 2;
-double scene_memory_bytes(const Scene& scene, const Camera& camera);
-// "" when scene_memory_bytes is within limits::kSceneEngineMemory; otherwise one phrase
-// naming the figure and the limit: "the scene's 1000 polygons at 1280 x 720 px may hold
-// 10240 MiB of layers and textures, more than 768 MiB (the scene engine memory limit)".
-std::string scene_memory_problem(const Scene& scene, const Camera& camera);
-// The phrase of scene_memory_problem for any renderer of a scene: "" when `bytes` is within
-// limits::kSceneEngineMemory; otherwise "<subject> may hold N MiB of <what>, more than
-// 768 MiB (the scene engine memory limit)", N the bytes in MiB rounded up.
-std::string scene_memory_limit_problem(double bytes, const std::string& subject,
-                                       const std::string& what);
-
-// The facade windows the scene's impostor polygons draw when all of them re-render at
-// content quality `quality` (1 .. kMaxContentQuality): (1 + q) storeys by (1 + 2q) bays per
-// impostor polygon, as facade_faces builds them (core/content/layer_content.h).
-double scene_impostor_windows(const Scene& scene, int quality);
-// "" when scene_impostor_windows is within limits::kSceneImpostorWindows and the shaded
-// polygons' samples (shaded_samples of a camera-sized layer each, core/content/
-// layer_content.h) within limits::kShadedSamples; otherwise one phrase naming the figure
-// and the limit: "the scene's 7 impostor polygons at quality 32 draw 15015 facade windows a
-// frame, more than 4096 (the scene impostor detail limit)".
-std::string scene_content_problem(const Scene& scene, const Camera& camera, int quality);
 
 // The engine of a scene, driven view by view by its caller. Not an Animator
 // (core/engine/animator.h), which owns its script: make_scene_animator plays a viewer script
@@ -173,44 +142,46 @@ class SceneEngine {
   const HierarchicalCache* cache() const { return cache_.get(); }
 
  private:
-  struct PolygonState;
-
+  // The frame loop (scene_animator.cpp): classify (cull and find the polygons to clip),
+  // order, measure and allocate, then visibility and updates front to back, the hidden
+  // polygons' tally, compositing back to front.
   AnimationFrame run_frame(const ViewerPose* previous, const RigidMotion* motion,
                            const ViewerPose& current);
-  // The steps of run_frame: visibility and updates front to back, the hidden polygons'
-  // tally, compositing back to front.
+  void classify(const ViewerPose& view, AnimationFrame& report);
   void update_front_to_back(const ViewerPose& current, AnimationFrame& report);
+  bool fragment_hidden(int fragment, const ViewerPose& view);
   void add_occluder(int fragment, const PlacedLayer& shown);
   void tally_hidden_and_stale(AnimationFrame& report);
-  // The measure and allocate phases (step 4) of the polygons that passed culling.
-  void measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
-                        const ViewerPose& current, AnimationFrame& report);
-  void allocate_polygons(AnimationFrame& report);
-  LayerCandidates clipped_candidates(int polygon);
-  void starve(int polygon);
-  PlaneEngine& polygon_engine(int polygon);
   void compose(AnimationFrame& report);
-  void classify(const ViewerPose& view, AnimationFrame& report);
-  bool fragment_hidden(int fragment, const ViewerPose& view);
   const ConvexPolygon& polygon_region(int polygon);
-  void update_polygon(int polygon, const ViewerPose& current, AnimationFrame& report);
-  void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
   ConvexPolygon fragment_region(int fragment, const ViewerPose& view) const;
   ConvexPolygon exact_region(const ViewPolygon& clipped) const;
-  // The engine's content settings with the polygon's own kind of content.
-  LayerContent polygon_content(int polygon) const;
-  // Today's reprojection (see above).
+  // Today's reprojection and the hierarchical cache (see above).
   bool cadence_frame() const;
   void update_frame_plane(const ViewerPose& current);
   void keep_render(const ViewerPose& current);
   void reproject_frame(const ViewerPose& current, AnimationFrame& report);
+  void cache_frame(const ViewerPose& current, AnimationFrame& report);
+
+  // The per-polygon steps (polygon_layer.cpp): the measure and allocate phases (step 4) of
+  // the polygons that passed culling, and one polygon's update.
+  void measure_polygons(const ViewerPose* previous, const RigidMotion* motion,
+                        const ViewerPose& current, AnimationFrame& report);
+  void allocate_polygons(AnimationFrame& report);
+  LayerCandidates clipped_candidates(int polygon);
+  PlaneEngine& polygon_engine(int polygon);
+  void update_polygon(int polygon, const ViewerPose& current, AnimationFrame& report);
+  void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
+  void starve(int polygon);
+  // The engine's content settings with the polygon's own kind of content.
+  LayerContent polygon_content(int polygon) const;
 
   const Scene& scene_;
   Camera camera_;
   SceneSettings settings_;
   ViewFrustum frustum_;
   BspTree bsp_;
-  std::vector<std::unique_ptr<PolygonState>> states_;
+  std::vector<std::unique_ptr<PolygonLayer>> states_;  // one per polygon
   std::vector<Layer> scratch_textures_;  // one per scene texture, for the clipped renders
   std::vector<PolygonStatus> statuses_;
   std::vector<Level> levels_;
@@ -235,7 +206,6 @@ class SceneEngine {
   ViewerPose rendered_view_;
   std::vector<int> source_of_;                // the last reprojection's source pixel per pixel
   std::unique_ptr<HierarchicalCache> cache_;  // the hierarchical-cache policy only
-  void cache_frame(const ViewerPose& current, AnimationFrame& report);
 };
 
 // The scene animator playing a viewer script: frame k is seen from script.frames[k].pose.

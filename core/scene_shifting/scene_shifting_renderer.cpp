@@ -12,7 +12,7 @@
 
 #include "engine/engine.h"
 #include "image/composite.h"
-#include "scene/scene_animator.h"
+#include "scene/scene_resources.h"
 
 namespace oflab {
 namespace {

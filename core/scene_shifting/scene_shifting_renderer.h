@@ -4,8 +4,8 @@
 // At start the scene is cut into slices along the viewing direction (scene_slices, eq. 9
 // with the corrected asymptote) and every polygon goes to the slice holding its depth. Each
 // slice's layer is rendered once: its polygons exactly (render warps of core/image/warp.h, the
-// exact texture warp of core/engine/engine.h), composited far to near. Every later frame, per slice
-// (decide_slice_updates):
+// exact texture warp of core/engine/exact_render.h), composited far to near. Every later frame, per
+// slice (decide_slice_updates):
 //  - shift: the layer moves by the accumulated slice_transform of the viewer's steps, placed
 //    on whole pixels (the rounded exact shift, like the engine's translate level: no
 //    resampling, no pixels written);

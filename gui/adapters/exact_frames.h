@@ -3,7 +3,7 @@
 //
 //  - "core" (the default): core's own exact render, the scene animator re-rendering every
 //    visible polygon from the frame's view (core/scene/scene_animator.h with the rerender
-//    policy: one exact perspective warp of each texture, core/engine/engine.h
+//    policy: one exact perspective warp of each texture, core/engine/exact_render.h
 //    exact_texture_warp, or the lit content rendered for the pose; BSP order; clipping at
 //    the near plane). It is the picture the engine's re-render level and the analysis's
 //    exact baseline (analysis/runs/source_kinds.h) draw, with the engine's own content

@@ -8,7 +8,7 @@
 // line, a session) and captures one with state().
 //
 // Every setter checks its value with the same rule as the files and the command line
-// (core/engine/limits.h, window_state_problem): a refused value changes nothing and is
+// (core/flow/limits.h, window_state_problem): a refused value changes nothing and is
 // reported with input_rejected, naming the field, the value and the allowed range.
 #pragma once
 

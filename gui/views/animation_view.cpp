@@ -17,7 +17,7 @@
 #include "adapters/frame_images.h"
 #include "adapters/hole_map.h"
 #include "adapters/painted_text.h"
-#include "engine/limits.h"
+#include "flow/limits.h"
 #include "models/animation_model.h"
 #include "models/window_model.h"
 #include "player/policy_comparison.h"

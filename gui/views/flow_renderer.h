@@ -6,7 +6,7 @@
 // Everything is drawn in centred image pixels (core/flow/camera.h) mapped onto the view by
 // one scale and shift, refitted at every paint so the chosen region of the image shows
 // whole at any view aspect. The texture is core's exact perspective warp of the plane
-// (core/engine/engine.h's exact_texture_warp), the same projection the animation engine
+// (core/engine/exact_render.h's exact_texture_warp), the same projection the animation engine
 // uses. Drawing on the CPU into a reused image keeps a frame to a few milliseconds on a
 // software-rendered display: no OpenGL widget, no per-frame scene rebuild.
 #pragma once

@@ -1,5 +1,5 @@
 // A number field that takes any number typed (magnitudes up to kEntryLimit), so a value
-// outside its control's limit (core/engine/limits.h) reaches the model and is refused there
+// outside its control's limit (core/flow/limits.h) reaches the model and is refused there
 // with a banner naming the field, the value and the range, instead of being cut silently to
 // the field's own range. It is sized for the numbers of its usual range, and applies a value
 // when typing ends (Enter or focus change), not at every keystroke.

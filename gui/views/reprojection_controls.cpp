@@ -8,7 +8,7 @@
 #include <QSpinBox>
 #include <QWidgetAction>
 
-#include "engine/limits.h"
+#include "flow/limits.h"
 #include "views/number_box.h"
 
 namespace oflab {

@@ -4,7 +4,7 @@
 // and the stabilized-plane policy's plane: the automatic fit to the visible depth, or a
 // plane given by a point and a normal in world coordinates (EngineSettings::stabilization).
 // Like the other controls it only edits values: any number can be typed, and the model
-// refuses one outside its limit (core/engine/limits.h) with a banner.
+// refuses one outside its limit (core/flow/limits.h) with a banner.
 #pragma once
 
 #include <QToolButton>

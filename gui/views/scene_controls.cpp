@@ -5,7 +5,7 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
-#include "engine/limits.h"
+#include "flow/limits.h"
 #include "models/scene_model.h"
 #include "models/scene_parameters.h"
 #include "views/slider_spin.h"

@@ -55,7 +55,7 @@ class SceneControls : public QWidget {
   QWidget* make_camera_group();
   // A control's slider span: from minimum to maximum in steps, shown with decimals and
   // unit. Its field takes any number: the scene model checks the plane's values against
-  // their limits (core/engine/limits.h); a value the scene does not hold (turn, tilt) is
+  // their limits (core/flow/limits.h); a value the scene does not hold (turn, tilt) is
   // checked against `limit` here.
   struct Range {
     double minimum, maximum, step;

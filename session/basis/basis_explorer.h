@@ -12,10 +12,10 @@
 #include <array>
 #include <string>
 
-#include "engine/limits.h"
 #include "flow/basis.h"
 #include "flow/camera.h"
 #include "flow/inverse_flow.h"
+#include "flow/limits.h"
 
 namespace oflab {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <set>
 
-#include "engine/limits.h"
 #include "engine/reuse_policy.h"
+#include "flow/limits.h"
 #include "state/window_state_file.h"
 
 namespace oflab {

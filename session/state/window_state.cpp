@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "engine/limits.h"
 #include "engine/reuse_policy.h"
+#include "flow/limits.h"
 #include "state/state_fields.h"
 
 namespace oflab {

@@ -86,7 +86,7 @@ inline std::string joined_names(const std::vector<std::string>& names,
 bool operator==(const WindowState& a, const WindowState& b);
 inline bool operator!=(const WindowState& a, const WindowState& b) { return !(a == b); }
 
-// "" when every bounded number of `state` is within its limit (core/engine/limits.h) and
+// "" when every bounded number of `state` is within its limit (core/flow/limits.h) and
 // the compared list names 1 .. kMaxComparedPolicies distinct registry policies;
 // otherwise one phrase naming the field as a session file spells it, the value and the
 // allowed range or names: "animation.thresholds: 1e+06 is outside 0..100 px". The view

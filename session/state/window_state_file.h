@@ -6,7 +6,7 @@
 //
 // Refused, with the file, the field and the allowed range or names: an unknown field, a value
 // of the wrong type, a name no table knows (flow part, basis, layout, policy, Delta,
-// sampling, content, motion model) and a number outside its limit (core/engine/limits.h,
+// sampling, content, motion model) and a number outside its limit (core/flow/limits.h,
 // through window_state_problem). The view, the source kind, the exact renderer, the lesson
 // and the files a state names are checked when the window applies it (WindowModel::apply).
 // Plain C++ over analysis/formats/json_fields.h.

@@ -427,7 +427,7 @@ TEST(AnimateCommand, BadOptionsNameTheOption) {
   EXPECT_NE(quality.err.find("--quality"), std::string::npos) << quality.err;
 }
 
-// The limits of core/engine/limits.h, in the words of Limit::problem after the option.
+// The limits of core/flow/limits.h, in the words of Limit::problem after the option.
 TEST(AnimateCommand, OutOfRangeValuesAreRefusedNamingTheOptionTheValueAndTheRange) {
   const auto expect_refused = [](const std::vector<std::string>& more, const std::string& line) {
     std::vector<std::string> args = {"animate", "--script", "zoom", "--frames", "2"};

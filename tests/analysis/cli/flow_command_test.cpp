@@ -195,7 +195,7 @@ TEST(FlowCommand, BadInputGivesOneLineErrorNamingTheArgument) {
   const CliResult m = run(missing);
   EXPECT_EQ(m.code, 2);
   EXPECT_NE(m.err.find("--image"), std::string::npos);
-  // Values outside their limits (core/engine/limits.h): the option, the value, the range.
+  // Values outside their limits (core/flow/limits.h): the option, the value, the range.
   const std::pair<std::pair<int, std::string>, std::string> refused[] = {
       {{2, "0.5"}, "--focal: 0.5 is outside 1..100000 px"},
       {{2, "1e6"}, "--focal: 1e+06 is outside 1..100000 px"},

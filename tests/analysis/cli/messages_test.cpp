@@ -1,5 +1,5 @@
 // The messages of issue 28's point 11, each naming the option or field at fault, and the
-// limits behind them (core/engine/limits.h).
+// limits behind them (core/flow/limits.h).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>

@@ -11,8 +11,8 @@
 #include <iterator>
 #include <random>
 
-#include "engine/limits.h"
 #include "engine/reuse_policy.h"
+#include "flow/limits.h"
 
 namespace oflab {
 namespace {
@@ -141,7 +141,7 @@ TEST(WindowStateFile, StatesDifferingInOneFieldAreNotEqual) {
 
 // The explorer's values are fields of "basis" by their term's key; a file may give some of
 // them (the rest keep the base state's), and each is refused beyond its limit, which is
-// stated once (core/engine/limits.h) for the file, the sliders' fields and the model.
+// stated once (core/flow/limits.h) for the file, the sliders' fields and the model.
 TEST(WindowStateFile, TheExplorersTermsRoundTripByNameWithinTheirLimits) {
   WindowState s;
   s.basis_explorer = true;
@@ -284,7 +284,7 @@ TEST(WindowStateFile, UnknownFieldsAreRefusedNamingThemAndTheKnownOnes) {
   EXPECT_NE(version.find("must be 1 or 2"), std::string::npos) << version;
 }
 
-// One rule per value: the limits of core/engine/limits.h, with the field, value and range.
+// One rule per value: the limits of core/flow/limits.h, with the field, value and range.
 TEST(WindowStateFile, ValuesOutsideTheirLimitsAreRefusedNamingFieldValueAndRange) {
   const std::string threshold = error_after([](json& j) { j["animation"]["thresholds"][1] = 1e6; });
   EXPECT_EQ(threshold,

@@ -1,4 +1,4 @@
-#include "engine/limits.h"
+#include "flow/limits.h"
 
 #include <cmath>
 #include <sstream>

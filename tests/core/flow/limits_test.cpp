@@ -1,6 +1,6 @@
-// The one rule per value (core/engine/limits.h): what a Limit allows, the words of its
+// The one rule per value (core/flow/limits.h): what a Limit allows, the words of its
 // refusals, and the ranges the project's data and the dissertation's experiments rely on.
-#include "engine/limits.h"
+#include "flow/limits.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,9 @@
 // One rule per value: every bounded number a person can give oflab (on the command line, in a
 // session, script or scene file, or in a control of the window) has its range stated here
 // once. The CLI, the file readers and the GUI's controls all check a value with its Limit, so
-// a value refused in one place is refused everywhere with the same words.
-// Plain C++17.
+// a value refused in one place is refused everywhere with the same words. It lives in core's
+// lowest folder so that every folder of core (content's quality, the engine's thresholds, the
+// scene's memory) may check with it. Plain C++17.
 #pragma once
 
 #include <string>
@@ -90,12 +91,12 @@ inline constexpr Limit kSceneCubes{"cube count", "cubes", 1.0, 20000.0, true};
 // at most 109 MB of arrays; an 8192 x 8192 image needs a step of 9 or more).
 inline constexpr Limit kVtkGridStep{"grid step", "px", 1.0, 1024.0, true};
 inline constexpr Limit kVtkGridPoints{"grid points", "points", 1.0, 1048576.0, true};
-// What one scene engine may hold (core/scene/scene_animator.h scene_memory_bytes: its layers and
+// What one scene engine may hold (core/scene/scene_resources.h scene_memory_bytes: its layers and
 // texture copies with every polygon visible), MiB. A run holds two (the animator and its exact
 // baseline), so a scene within it plays within the 2 GB promise (manual/robustness.md).
 inline constexpr Limit kSceneEngineMemory{"scene engine memory", "MiB", 0.0, 768.0};
 // What a scene's impostor polygons may draw in one frame when all of them re-render
-// (core/scene/scene_animator.h scene_impostor_windows): facade windows, each a few lit faces.
+// (core/scene/scene_resources.h scene_impostor_windows): facade windows, each a few lit faces.
 // A frame's time grows with it; at the limit about 10 s (manual/robustness.md). The street
 // (seven impostor facades) admits quality 16.
 inline constexpr Limit kSceneImpostorWindows{"scene impostor detail", "windows", 0.0, 4096.0};
