@@ -20,16 +20,16 @@ namespace oflab {
 
 WindowModel::WindowModel(std::vector<std::string> view_names, QObject* parent)
     : QObject(parent), view_names_(std::move(view_names)) {
-  const QImage texture = default_texture();
+  default_texture_ = default_texture();
   lab_ = std::make_unique<Lab>(
-      image_from_qimage(texture), [this](const std::string& path, std::string* error) {
+      image_from_qimage(default_texture_), [this](const std::string& path, std::string* error) {
         QString why;
         loaded_texture_ = load_texture_image(QString::fromStdString(path), &why);
         if (loaded_texture_.isNull()) *error = why.toStdString();
         return loaded_texture_.isNull() ? Image() : image_from_qimage(loaded_texture_);
       });
   lab_->set_front_end_check([this](const WindowState& s) { return front_end_problem(s); });
-  scene_ = new SceneModel(&lab_->panel(), texture, this);
+  scene_ = new SceneModel(&lab_->panel(), default_texture_, this);
   animation_ = new AnimationModel(&lab_->run(), scene_, this);
   values().view = view_names_.empty() ? WindowState().view : view_names_.front();
   connect(animation_, &AnimationModel::source_changed, this,
@@ -64,7 +64,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
     *error = QString::fromStdString(problem);
     return false;
   }
-  scene_->panel_replaced(s.texture.empty() ? default_texture() : loaded_texture_);
+  scene_->panel_replaced(s.texture.empty() ? default_texture_ : loaded_texture_);
   animation_->run_replaced();
   emit flow_display_changed();
   emit basis_changed();

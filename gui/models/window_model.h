@@ -132,7 +132,8 @@ class WindowModel : public QObject {
 
   std::vector<std::string> view_names_;
   std::unique_ptr<Lab> lab_;
-  QImage loaded_texture_;  // the texture file the lab last read, as Qt read it
+  QImage default_texture_;  // the texture of a state without one (adapters/texture.h)
+  QImage loaded_texture_;   // the texture file the lab last read, as Qt read it
   SceneModel* scene_;
   AnimationModel* animation_;
 };

@@ -193,7 +193,8 @@ void add_basis_fields(std::vector<StateField>& f) {
   }
 }
 
-void add_plane_fields(std::vector<StateField>& f) {
+// The camera of the scene panel.
+void add_camera_fields(std::vector<StateField>& f) {
   using S = WindowState;
   using namespace limits;
   // The camera's principal point follows its size (make_camera), so each of the three is
@@ -218,6 +219,11 @@ void add_plane_fields(std::vector<StateField>& f) {
                      &Camera::focal_px, false));
   f.push_back(camera("plane.camera.width", kImageSize, "the image width", &Camera::width, true));
   f.push_back(camera("plane.camera.height", kImageSize, "the image height", &Camera::height, true));
+}
+
+void add_plane_fields(std::vector<StateField>& f) {
+  using S = WindowState;
+  using namespace limits;
   f.push_back(vec3_field("plane.pose.point", "z " + kDistance.range_text(),
                          "the plane's centre at frame 0, camera frame (u)",
                          [](S* s) { return &s->plane.pose.point; }));
@@ -350,6 +356,7 @@ std::vector<StateField> make_fields() {
   add_top_fields(f);
   add_flow_fields(f);
   add_basis_fields(f);
+  add_camera_fields(f);
   add_plane_fields(f);
   add_engine_fields(f);
   add_view_fields(f);
