@@ -47,6 +47,87 @@ std::shared_ptr<VideoWriter> read_video_option(const CliArgs& a) {
   }
 }
 
+// --frames, --repeat, --repeat-timing and --no-warm-up into `out`.
+void read_timing_options(const CliArgs& a, RunOutput& out) {
+  if (a.has("--frames")) out.max_frames = a.integer_in("--frames", limits::kPlayedFrames);
+  // A long run (--repeat) is timed in one pass unless --repeat-timing asks for more: its
+  // records are then streamed, and its memory does not grow with its length.
+  if (a.has("--repeat")) out.timing_repetitions = 1;
+  if (a.has("--repeat-timing")) {
+    out.timing_repetitions = a.integer_in("--repeat-timing", limits::kTimingPasses);
+  }
+  out.warm_up = !a.has("--no-warm-up");
+}
+
+// The names of --out DIR and --vtk-series DIR into `out`, each checked (a name given, the two
+// not the same directory, --frames-png only with --out, a non-empty --vtk-series DIR only
+// with --force) before anything is created.
+void check_output_dirs(const CliArgs& a, RunOutput& out) {
+  out.dir = a.text_or("--out", "");
+  if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
+  if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
+  out.vtk_series_dir = a.text_or("--vtk-series", "");
+  if (a.has("--vtk-series") && out.vtk_series_dir.empty()) {
+    throw UsageError("--vtk-series: needs a directory name");
+  }
+  if (!out.vtk_series_dir.empty()) {
+    if (!out.dir.empty() &&
+        fs::weakly_canonical(out.dir) == fs::weakly_canonical(out.vtk_series_dir))
+      throw UsageError("--vtk-series: '" + out.vtk_series_dir + "' is also --out");
+    check_out_dir("--vtk-series", out.vtk_series_dir, a.has("--force"));
+  }
+}
+
+// The temporary directories of --out DIR (with its frames.csv stream, opened later by
+// RunOutput::apply_to) and --vtk-series DIR (with its series writer), for those given.
+void open_output_dirs(const CliArgs& a, RunOutput& out) {
+  if (!out.dir.empty()) {
+    out.out = open_out_dir(out.dir, a.has("--force"));
+    out.csv = std::make_shared<std::ofstream>();  // opened by apply_to, which knows the kind
+  }
+  if (!out.vtk_series_dir.empty()) {
+    out.vtk_series_out = open_out_dir(out.vtk_series_dir, a.has("--force"), "--vtk-series");
+    out.vtk_series =
+        std::make_shared<VtkSeriesWriter>(out.vtk_series_out->path(), out.vtk_series_dir);
+  }
+}
+
+// Each frame as DIR/frame_NNNNN.png (with `png`) and into the --video file (when `out` has
+// one); a failed video write throws UsageError naming --video.
+std::function<void(int, const Image&)> frame_writer(const RunOutput& out, bool png) {
+  return [dir = out.dir, into = out.out, png, video = out.video](int i, const Image& frame) {
+    if (png) {
+      std::ostringstream name;
+      name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
+      write_file_inside((fs::path(into->path()) / name.str()).string(), encode_png(frame),
+                        (fs::path(dir) / name.str()).string());
+    }
+    if (!video) return;
+    try {
+      video->add_frame(frame);
+    } catch (const VideoFileError& e) {
+      throw UsageError(std::string("--video: ") + e.what());
+    }
+  };
+}
+
+// The progress lines on `err`: every tenth frame of each pass of a run of 200 frames or more,
+// nothing when `quiet`. `err` must outlive the returned function.
+std::function<void(int, int)> progress_reporter(const RunOutput& out, bool quiet,
+                                                std::ostream& err) {
+  const int passes = out.timing_repetitions + (out.warm_up ? 1 : 0);
+  const char* what = out.warm_up ? " (a warm-up, then the timed passes)\n" : " (timed passes)\n";
+  return [quiet, passes, what, &err](int done, int total) {
+    const int frames = total / passes;
+    if (quiet || frames < 200) return;
+    const int frame = (done - 1) % frames + 1;
+    if (frame % std::max(1, frames / 10) == 0 || frame == frames) {
+      err << "animate: frame " << frame << "/" << frames << " of pass " << (done - 1) / frames + 1
+          << "/" << passes << what << std::flush;
+    }
+  };
+}
+
 bool is_obj_file(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -153,67 +234,13 @@ Sampling read_sampling(const CliArgs& a) {
 
 RunOutput read_run_output(const CliArgs& a, std::ostream& err) {
   RunOutput out;
-  if (a.has("--frames")) out.max_frames = a.integer_in("--frames", limits::kPlayedFrames);
-  // A long run (--repeat) is timed in one pass unless --repeat-timing asks for more: its
-  // records are then streamed, and its memory does not grow with its length.
-  if (a.has("--repeat")) out.timing_repetitions = 1;
-  if (a.has("--repeat-timing")) {
-    out.timing_repetitions = a.integer_in("--repeat-timing", limits::kTimingPasses);
-  }
-  out.warm_up = !a.has("--no-warm-up");
-  out.dir = a.text_or("--out", "");
-  if (a.has("--out") && out.dir.empty()) throw UsageError("--out: needs a directory name");
-  if (a.has("--frames-png") && out.dir.empty()) throw UsageError("--frames-png: needs --out DIR");
-  out.vtk_series_dir = a.text_or("--vtk-series", "");
-  if (a.has("--vtk-series") && out.vtk_series_dir.empty()) {
-    throw UsageError("--vtk-series: needs a directory name");
-  }
-  if (!out.vtk_series_dir.empty()) {
-    if (!out.dir.empty() &&
-        fs::weakly_canonical(out.dir) == fs::weakly_canonical(out.vtk_series_dir))
-      throw UsageError("--vtk-series: '" + out.vtk_series_dir + "' is also --out");
-    check_out_dir("--vtk-series", out.vtk_series_dir, a.has("--force"));
-  }
+  read_timing_options(a, out);
+  check_output_dirs(a, out);
   out.video = read_video_option(a);  // checked before --out DIR's temporary is created
-  if (!out.dir.empty()) {
-    out.out = open_out_dir(out.dir, a.has("--force"));
-    out.csv = std::make_shared<std::ofstream>();  // opened by apply_to, which knows the kind
-  }
-  if (!out.vtk_series_dir.empty()) {
-    out.vtk_series_out = open_out_dir(out.vtk_series_dir, a.has("--force"), "--vtk-series");
-    out.vtk_series =
-        std::make_shared<VtkSeriesWriter>(out.vtk_series_out->path(), out.vtk_series_dir);
-  }
+  open_output_dirs(a, out);
   const bool png = a.has("--frames-png");
-  if (png || out.video) {
-    out.on_frame = [dir = out.dir, into = out.out, png, video = out.video](int i,
-                                                                           const Image& frame) {
-      if (png) {
-        std::ostringstream name;
-        name << "frame_" << std::setw(5) << std::setfill('0') << i << ".png";
-        write_file_inside((fs::path(into->path()) / name.str()).string(), encode_png(frame),
-                          (fs::path(dir) / name.str()).string());
-      }
-      if (!video) return;
-      try {
-        video->add_frame(frame);
-      } catch (const VideoFileError& e) {
-        throw UsageError(std::string("--video: ") + e.what());
-      }
-    };
-  }
-  const bool quiet = a.has("--quiet");
-  const int passes = out.timing_repetitions + (out.warm_up ? 1 : 0);
-  const char* what = out.warm_up ? " (a warm-up, then the timed passes)\n" : " (timed passes)\n";
-  out.progress = [quiet, passes, what, &err](int done, int total) {
-    const int frames = total / passes;
-    if (quiet || frames < 200) return;
-    const int frame = (done - 1) % frames + 1;
-    if (frame % std::max(1, frames / 10) == 0 || frame == frames) {
-      err << "animate: frame " << frame << "/" << frames << " of pass " << (done - 1) / frames + 1
-          << "/" << passes << what << std::flush;
-    }
-  };
+  if (png || out.video) out.on_frame = frame_writer(out, png);
+  out.progress = progress_reporter(out, a.has("--quiet"), err);
   return out;
 }
 

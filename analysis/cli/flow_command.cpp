@@ -159,18 +159,13 @@ VtkOutput read_vtk_output(const CliArgs& a, const Camera& camera) {
   return v;
 }
 
-// The report and, with --vtk, the flow field written for ParaView.
-nlohmann::json flow_report(const CliArgs& a) {
-  const Vec2 image = a.vec2_in("--image", limits::kImageSize);
-  const Camera camera = make_camera(a.number_in("--focal", limits::kFocalLength),
-                                    static_cast<int>(image.x), static_cast<int>(image.y));
-  if (a.has("--force") && !a.has("--vtk")) throw UsageError("--force: needs --vtk FILE.vti");
-  const VtkOutput vtk = read_vtk_output(a, camera);
-
+// --plane-point and --plane-normal, with --plane-up and --plane-size (both or neither: the
+// plane's extent, which its corners need). Throws UsageError naming the option of the field
+// plane_pose_problem names.
+PlanePose read_plane_pose(const CliArgs& a) {
   PlanePose pose;
   pose.point = a.vec3("--plane-point");
   pose.normal = a.vec3("--plane-normal");
-  const bool has_extent = a.has("--plane-up") && a.has("--plane-size");
   if (a.has("--plane-up") != a.has("--plane-size")) {
     throw UsageError(a.has("--plane-up") ? "--plane-size: required with --plane-up"
                                          : "--plane-up: required with --plane-size");
@@ -184,7 +179,12 @@ nlohmann::json flow_report(const CliArgs& a) {
   const PoseProblem problem = plane_pose_problem(pose);
   if (!problem.field.empty())
     throw UsageError(option_for_field(problem.field) + ": " + problem.message);
+  return pose;
+}
 
+// --velocity, --omega (per unit time, their limits) and --motion (a motion model's name).
+// Throws UsageError naming the option.
+RigidMotion read_motion(const CliArgs& a) {
   RigidMotion motion;
   motion.velocity = a.vec3_in("--velocity", limits::kVelocity);
   motion.omega = a.vec3_in("--omega", limits::kAngularVelocity);
@@ -192,35 +192,58 @@ nlohmann::json flow_report(const CliArgs& a) {
   if (!parse_motion_model(model.c_str(), &motion.model)) {
     throw UsageError("--motion: '" + model + "' is not one of " + motion_model_name_list());
   }
+  return motion;
+}
 
-  const PlanarFlowCoefficients c = planar_flow_coefficients(camera, pose, motion);
+// The coefficients `c` and their planar basis terms, as the report's JSON.
+void add_coefficients(nlohmann::json& j, const PlanarFlowCoefficients& c) {
   const PlanarBasisTerms b = to_planar_basis(taylor_terms(c));
-  nlohmann::json j;
-  j["units"] = "centred pixels (x right, y down, origin at the principal point), per unit time";
-  j["motion"] = motion_model_name(motion.model);
   j["coefficients"] = {{"tx", c.tx},   {"ty", c.ty},   {"j11", c.j11}, {"j12", c.j12},
                        {"j21", c.j21}, {"j22", c.j22}, {"px", c.px},   {"py", c.py}};
   j["basis"] = {{"tx", b.tx},         {"ty", b.ty},       {"scale", b.scale},
                 {"squash", b.squash}, {"shear", b.shear}, {"rotation", b.rotation},
                 {"px", b.px},         {"py", b.py}};
-  if (a.has("--dt")) {
-    const double dt = a.number("--dt");
-    j["dt"] = dt;
-    j["homography_taylor"] = matrix_json(taylor_homography(c, dt));
-    j["homography_exact"] = matrix_json(exact_homography(camera, pose, motion, dt));
-    if (has_extent) {
-      const PlanePose later = advance_pose(pose, rigid_step(motion, pose, dt));
-      for (const Vec3& corner : plane_corners(later)) {
-        if (corner.z <= 0.0) throw UsageError("--dt: a plane corner passes behind the camera");
-      }
-      for (const Vec3& corner : plane_corners(pose)) {
-        if (corner.z <= 0.0) throw UsageError("--plane-size: a plane corner is behind the camera");
-      }
-      const ApproximationErrors e = approximation_corner_errors(camera, pose, motion, dt);
-      j["corner_error_px"] = {
-          {"none", e.none}, {"translate", e.translate}, {"affine", e.affine}, {"taylor", e.taylor}};
-    }
+}
+
+// --dt: the Taylor and exact homographies over `dt` and, with the plane's extent, the corner
+// errors of each approximation level (pixels). Throws UsageError when a corner of the plane
+// is behind the camera now or after dt.
+void add_homographies(nlohmann::json& j, const Camera& camera, const PlanePose& pose,
+                      const RigidMotion& motion, const PlanarFlowCoefficients& c, double dt,
+                      bool has_extent) {
+  j["dt"] = dt;
+  j["homography_taylor"] = matrix_json(taylor_homography(c, dt));
+  j["homography_exact"] = matrix_json(exact_homography(camera, pose, motion, dt));
+  if (!has_extent) return;
+  const PlanePose later = advance_pose(pose, rigid_step(motion, pose, dt));
+  for (const Vec3& corner : plane_corners(later)) {
+    if (corner.z <= 0.0) throw UsageError("--dt: a plane corner passes behind the camera");
   }
+  for (const Vec3& corner : plane_corners(pose)) {
+    if (corner.z <= 0.0) throw UsageError("--plane-size: a plane corner is behind the camera");
+  }
+  const ApproximationErrors e = approximation_corner_errors(camera, pose, motion, dt);
+  j["corner_error_px"] = {
+      {"none", e.none}, {"translate", e.translate}, {"affine", e.affine}, {"taylor", e.taylor}};
+}
+
+// The report and, with --vtk, the flow field written for ParaView.
+nlohmann::json flow_report(const CliArgs& a) {
+  const Vec2 image = a.vec2_in("--image", limits::kImageSize);
+  const Camera camera = make_camera(a.number_in("--focal", limits::kFocalLength),
+                                    static_cast<int>(image.x), static_cast<int>(image.y));
+  if (a.has("--force") && !a.has("--vtk")) throw UsageError("--force: needs --vtk FILE.vti");
+  const VtkOutput vtk = read_vtk_output(a, camera);
+  const PlanePose pose = read_plane_pose(a);
+  const bool has_extent = a.has("--plane-up") && a.has("--plane-size");
+  const RigidMotion motion = read_motion(a);
+
+  const PlanarFlowCoefficients c = planar_flow_coefficients(camera, pose, motion);
+  nlohmann::json j;
+  j["units"] = "centred pixels (x right, y down, origin at the principal point), per unit time";
+  j["motion"] = motion_model_name(motion.model);
+  add_coefficients(j, c);
+  if (a.has("--dt")) add_homographies(j, camera, pose, motion, c, a.number("--dt"), has_extent);
   if (a.has("--explain")) {
     j["explain"] =
         explain_round_trip(camera, pose, motion, c, a.optional_number("--dt"), has_extent);

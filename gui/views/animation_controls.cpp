@@ -40,7 +40,10 @@ AnimationControls::AnimationControls(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(2);
   layout->addWidget(make_source_row());
-  layout->addWidget(make_engine_row());
+  layout->addWidget(make_mode_row());
+  // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
+  layout->addWidget(make_threshold_row());
+  set_settings(EngineSettings{});
   explain_controls();
 }
 
@@ -122,8 +125,7 @@ QWidget* AnimationControls::make_source_row() {
   return row;
 }
 
-// Adds the mode row to the layout and returns the thresholds row.
-QWidget* AnimationControls::make_engine_row() {
+QWidget* AnimationControls::make_mode_row() {
   auto* row = new QWidget(this);
   auto* layout = new QHBoxLayout(row);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -163,9 +165,27 @@ QWidget* AnimationControls::make_engine_row() {
   layout->addWidget(reprojection_);
   connect(reprojection_, &ReprojectionControls::edited, this, [this] { emit settings_edited(); });
   layout->addStretch(1);
-  // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
+  connect_mode_controls();
+  return row;
+}
+
+void AnimationControls::connect_mode_controls() {
+  for (QComboBox* box : {mode_box_, delta_box_, sampling_box_}) {
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] {
+      show_budget();
+      emit settings_edited();
+    });
+  }
+  connect(affine_switch_, &QPushButton::clicked, this, [this] {
+    const bool affine = mode_box_->currentData().toString() == QStringLiteral("affine");
+    select_data(mode_box_, affine ? QStringLiteral("perspective") : QStringLiteral("affine"));
+    show_budget();
+    emit settings_edited();
+  });
+}
+
+QWidget* AnimationControls::make_threshold_row() {
   auto* threshold_row = new QWidget(this);
-  static_cast<QVBoxLayout*>(this->layout())->addWidget(row);
   auto* thresholds = new QHBoxLayout(threshold_row);
   thresholds->setContentsMargins(0, 0, 0, 0);
   auto* label = new QLabel(tr("Thresholds (px)"), threshold_row);
@@ -182,21 +202,8 @@ QWidget* AnimationControls::make_engine_row() {
     connect(thresholds_[k], QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
             [this] { emit settings_edited(); });
   }
-  for (QComboBox* box : {mode_box_, delta_box_, sampling_box_}) {
-    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] {
-      show_budget();
-      emit settings_edited();
-    });
-  }
-  connect(affine_switch_, &QPushButton::clicked, this, [this] {
-    const bool affine = mode_box_->currentData().toString() == QStringLiteral("affine");
-    select_data(mode_box_, affine ? QStringLiteral("perspective") : QStringLiteral("affine"));
-    show_budget();
-    emit settings_edited();
-  });
   add_content_controls(threshold_row, thresholds);
   thresholds->addStretch(1);
-  set_settings(EngineSettings{});
   return threshold_row;
 }
 

@@ -58,7 +58,14 @@ class AnimationControls : public QWidget {
 
  private:
   QWidget* make_source_row();
-  QWidget* make_engine_row();
+  // The engine's row: the reuse policy (with the budget box and the affine/perspective
+  // switch), Delta, the sampling and the reprojection menu.
+  QWidget* make_mode_row();
+  // Wires the policy, Delta and sampling boxes and the affine/perspective switch to
+  // settings_edited (the budget box shown or hidden first).
+  void connect_mode_controls();
+  // The row of the per-level thresholds, then the content box and its quality.
+  QWidget* make_threshold_row();
   QToolButton* make_compare_button(QWidget* parent);
   // The content box (the content registry) and the quality spin box, added to `layout`.
   void add_content_controls(QWidget* row, QHBoxLayout* layout);

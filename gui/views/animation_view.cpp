@@ -23,8 +23,8 @@
 #include "player/policy_comparison.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
+#include "views/panel_captions.h"
 #include "views/panel_layout.h"
-#include "views/reprojection_controls.h"
 
 namespace oflab {
 
@@ -47,71 +47,6 @@ constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
-
-// "202 k", "8.4 M": a pixel count for a caption, short enough for a projector's panel.
-QString count_text(double n) {
-  if (n >= 1e6) return QString::number(n / 1e6, 'f', 1) + QStringLiteral(" M");
-  if (n >= 1e3) return QString::number(n / 1e3, 'f', 0) + QStringLiteral(" k");
-  return QString::number(n, 'f', 0);
-}
-
-// Under a policy whose initial view is the affine part of the exact warp (section 6.5), the
-// measured error has two parts: the affine view's own (its missing perspective, which no
-// update removes) and what reuse adds against that view. Empty for other policies and when
-// no layer was drawn.
-QString affine_view_line(const AnimationFrame& frame, const ReusePolicy& policy) {
-  if (policy.initial_view != InitialView::kAffinePart) return {};
-  double view = 0.0, reuse = 0.0;
-  bool drawn = false;
-  for (const FrameReport& r : frame.layer_reports) {
-    if (!r.visible) continue;
-    drawn = true;
-    view = std::max(view, r.affine_view_error_px);
-    if (std::isfinite(r.reuse_error_px)) reuse = std::max(reuse, r.reuse_error_px);
-  }
-  if (!drawn) return {};
-  return QObject::tr("affine view %1 px off · reuse adds %2 px")
-      .arg(view, 0, 'f', 2)
-      .arg(reuse, 0, 'f', 2);
-}
-
-// The caption lines of an engine panel: the levels of this frame and the measured error,
-// the affine view's part of it (affine_view_line), the plane a stabilized-plane policy
-// warps by, then the cost of this frame and of the run so far.
-QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
-                        const EngineSettings& settings, double run_pixels, double run_ms) {
-  QStringList levels;
-  for (int k = 0; k < kLevelCount; ++k) {
-    const int n = frame.levels[size_t(k)];
-    if (n == 0) continue;
-    const QString name = QString::fromLatin1(level_name(Level(k)));
-    levels << (frame.layers > 1 ? QStringLiteral("%1 %2").arg(name).arg(n) : name);
-  }
-  if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
-  QStringList lines{QObject::tr("%1 · error %2 px")
-                        .arg(levels.join(QStringLiteral(", ")))
-                        .arg(frame.max_measured_error_px, 0, 'f', 2)};
-  const QString view = affine_view_line(frame, policy);
-  if (!view.isEmpty()) lines << view;
-  if (policy.frame_plane == FramePlane::kStabilization) {
-    lines << ReprojectionControls::plane_text(settings.stabilization);
-  }
-  lines << QObject::tr("%1 px, %2 ms (run %3 px, %4 ms)")
-               .arg(count_text(double(frame.pixels_written)))
-               .arg(frame.time_ms, 0, 'f', 1)
-               .arg(count_text(run_pixels))
-               .arg(run_ms, 0, 'f', 0);
-  return lines;
-}
-
-// The caption of a difference heat map: how far the two frames agree.
-QStringList agreement_caption(const Image& shown, const Image& exact) {
-  const FrameAgreement a = frame_agreement(shown, exact);
-  const QString psnr = std::isfinite(a.psnr_db)
-                           ? QString::number(a.psnr_db, 'f', 1) + QStringLiteral(" dB")
-                           : QObject::tr("equal");
-  return {QObject::tr("coverage IoU %1 · PSNR %2").arg(a.mask_iou, 0, 'f', 3).arg(psnr)};
-}
 
 // The largest rectangle of `aspect` (width / height) centred in `within`.
 QRectF centred_with_aspect(const QRectF& within, double aspect) {
@@ -182,22 +117,8 @@ QWidget* AnimationView::make_panels() {
   auto* row = new QHBoxLayout;
   canvas_ = new ImageCanvas(box);
   canvas_->setObjectName(QStringLiteral("animation_canvas"));
-  inspector_ = new QLabel(box);
-  inspector_->setObjectName(QStringLiteral("frame_inspector"));
-  inspector_->setWordWrap(true);
-  inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  inspector_->setTextFormat(Qt::RichText);
-  // In a scroll area of fixed width: the new text of every frame then lays out the label
-  // alone, not the whole window (a word-wrapped label's height changes with its text, and
-  // relaying the window out took a tenth of a frame).
-  inspector_area_ = new QScrollArea(box);
-  inspector_area_->setWidget(inspector_);
-  inspector_area_->setWidgetResizable(true);
-  inspector_area_->setFrameShape(QFrame::NoFrame);
-  inspector_area_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  inspector_area_->setFixedWidth(260);
   row->addWidget(canvas_, 1);
-  row->addWidget(inspector_area_);
+  row->addWidget(make_inspector(box));
   layout->addLayout(row, 1);
   auto* bottom = new QHBoxLayout;
   readout_ = new QLabel(tr("Move the mouse over the frames for a readout."), box);
@@ -206,7 +127,42 @@ QWidget* AnimationView::make_panels() {
   // sets the window's width.
   readout_->setWordWrap(true);
   readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Minimum);
-  zoom_box_ = new QDoubleSpinBox(box);
+  make_zoom_box(box);
+  auto* fit = new QPushButton(tr("Fit"), box);
+  fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
+  layout->addWidget(readout_);
+  bottom->addStretch(1);
+  bottom->addWidget(new QLabel(tr("Exact"), box));
+  bottom->addWidget(make_exact_box(box));
+  bottom->addWidget(new QLabel(tr("Zoom"), box));
+  bottom->addWidget(zoom_box_);
+  bottom->addWidget(fit);
+  layout->addLayout(bottom);
+  connect_canvas();
+  connect(fit, &QPushButton::clicked, this, [this] { window_->set_zoom(1.0); });
+  return box;
+}
+
+QScrollArea* AnimationView::make_inspector(QWidget* parent) {
+  inspector_ = new QLabel(parent);
+  inspector_->setObjectName(QStringLiteral("frame_inspector"));
+  inspector_->setWordWrap(true);
+  inspector_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  inspector_->setTextFormat(Qt::RichText);
+  // In a scroll area of fixed width: the new text of every frame then lays out the label
+  // alone, not the whole window (a word-wrapped label's height changes with its text, and
+  // relaying the window out took a tenth of a frame).
+  inspector_area_ = new QScrollArea(parent);
+  inspector_area_->setWidget(inspector_);
+  inspector_area_->setWidgetResizable(true);
+  inspector_area_->setFrameShape(QFrame::NoFrame);
+  inspector_area_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  inspector_area_->setFixedWidth(260);
+  return inspector_area_;
+}
+
+QDoubleSpinBox* AnimationView::make_zoom_box(QWidget* parent) {
+  zoom_box_ = new QDoubleSpinBox(parent);
   zoom_box_->setObjectName(QStringLiteral("animation_zoom"));
   // Wider than the zoom's limit, so a typed value out of range is refused by the model with a
   // message, not cut silently; applied when typing ends.
@@ -218,16 +174,13 @@ QWidget* AnimationView::make_panels() {
   zoom_box_->setToolTip(
       tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
          "over the panels)"));
-  auto* fit = new QPushButton(tr("Fit"), box);
-  fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
-  layout->addWidget(readout_);
-  bottom->addStretch(1);
-  bottom->addWidget(new QLabel(tr("Exact"), box));
-  bottom->addWidget(make_exact_box(box));
-  bottom->addWidget(new QLabel(tr("Zoom"), box));
-  bottom->addWidget(zoom_box_);
-  bottom->addWidget(fit);
-  layout->addLayout(bottom);
+  connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double z) {
+    if (!window_->set_zoom(z)) show_panels();  // refused: the box shows the model's zoom
+  });
+  return zoom_box_;
+}
+
+void AnimationView::connect_canvas() {
   connect(canvas_, &ImageCanvas::hovered, this, &AnimationView::show_readout);
   connect(canvas_, &ImageCanvas::wheel_turned, this, [this](double notches) {
     // The wheel stops at the ends of the range (a gesture, not a typed value).
@@ -235,11 +188,6 @@ QWidget* AnimationView::make_panels() {
     window_->set_zoom(std::clamp(zoom, limits::kZoom.minimum, limits::kZoom.maximum));
   });
   connect(canvas_, &ImageCanvas::resized, this, &AnimationView::refresh);
-  connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double z) {
-    if (!window_->set_zoom(z)) show_panels();  // refused: the box shows the model's zoom
-  });
-  connect(fit, &QPushButton::clicked, this, [this] { window_->set_zoom(1.0); });
-  return box;
 }
 
 QComboBox* AnimationView::make_exact_box(QWidget* parent) {

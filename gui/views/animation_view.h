@@ -114,7 +114,15 @@ class AnimationView : public ViewPage {
   void showEvent(QShowEvent* event) override;
 
  private:
+  // The canvas with the frame inspector beside it, the readout under them, then the Exact
+  // picker and the zoom.
   QWidget* make_panels();
+  // The frame inspector's label in a scroll area of fixed width, returned.
+  QScrollArea* make_inspector(QWidget* parent);
+  // The zoom box, wired to the window model's zoom (a refused value puts the model's back).
+  QDoubleSpinBox* make_zoom_box(QWidget* parent);
+  // The canvas's hover (the readout), wheel (the zoom) and resize (a redraw).
+  void connect_canvas();
   QComboBox* make_exact_box(QWidget* parent);  // the Exact picker, wired to set_exact_renderer
   void show_model_state();
   // The controls show the window model's layout, compared policies, exact renderer and zoom;

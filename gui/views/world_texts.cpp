@@ -34,17 +34,26 @@ void WorldTexts::lay_out(const QSize& size, const QFont& base, const ViewTheme& 
   patch_ = to_qcolor(theme.background);
   patch_.setAlpha(220);  // the lines and textures behind show through, faintly
   leader_width_ = theme.line_width;
-  const QColor text_colour = to_qcolor(theme.text);
   std::vector<QRectF> taken;
+  lay_out_legend(base, theme, taken);
+  lay_out_caption(size, base, theme, taken);
+  lay_out_labels(size, base, theme, project, taken);
+}
 
+void WorldTexts::lay_out_legend(const QFont& base, const ViewTheme& theme,
+                                std::vector<QRectF>& taken) {
   const QFont legend_font = sized(base, theme.font_size, true);
   const QFontMetricsF legend_metrics(legend_font);
   const QString legend_text = QString::fromStdString(legend);
   const QRectF legend_box(kMargin, kMargin, legend_metrics.horizontalAdvance(legend_text),
                           legend_metrics.height());
-  drawn_.push_back({legend_text, legend_box, legend_font, text_colour, false, {}});
+  drawn_.push_back({legend_text, legend_box, legend_font, to_qcolor(theme.text), false, {}});
   taken.push_back(legend_box);
+}
 
+void WorldTexts::lay_out_caption(const QSize& size, const QFont& base, const ViewTheme& theme,
+                                 std::vector<QRectF>& taken) {
+  const QColor text_colour = to_qcolor(theme.text);
   const QFont caption_font = sized(base, theme.label_size, false);
   const QFontMetricsF caption_metrics(caption_font);
   const std::vector<QString> lines =
@@ -59,7 +68,10 @@ void WorldTexts::lay_out(const QSize& size, const QFont& base, const ViewTheme& 
     }
     top += caption_metrics.height();
   }
+}
 
+void WorldTexts::lay_out_labels(const QSize& size, const QFont& base, const ViewTheme& theme,
+                                const Projector& project, const std::vector<QRectF>& taken) {
   const QFont label_font = sized(base, theme.label_size, true);
   const QFontMetricsF label_metrics(label_font);
   std::vector<QSizeF> sizes;

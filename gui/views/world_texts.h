@@ -59,6 +59,17 @@ class WorldTexts {
   void paint(QPainter& painter) const;
 
  private:
+  // The parts of lay_out, in its order; each adds its texts to drawn_ and the boxes the
+  // labels must not cover to `taken`. The legend at the top left, in the legend font.
+  void lay_out_legend(const QFont& base, const ViewTheme& theme, std::vector<QRectF>& taken);
+  // The caption's lines, wrapped to the canvas's width, at the bottom left.
+  void lay_out_caption(const QSize& size, const QFont& base, const ViewTheme& theme,
+                       std::vector<QRectF>& taken);
+  // Each shown label whose point `project` puts on the canvas, placed clear of `taken` and
+  // of each other, with a leader line when pushed away from its point.
+  void lay_out_labels(const QSize& size, const QFont& base, const ViewTheme& theme,
+                      const Projector& project, const std::vector<QRectF>& taken);
+
   struct Drawn {
     QString text;
     QRectF box;  // from the ascent to the descent, as wide as the text's advance

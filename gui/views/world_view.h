@@ -46,6 +46,7 @@ namespace oflab {
 
 class ImageCanvas;
 class WindowModel;
+struct WorldScene;
 
 // What the world view draws, part by part (set_part_shown; all shown by default).
 enum class WorldPart { kFrustum, kImagePlane, kPlane, kVelocity, kOmega, kRays, kPath, kScene };
@@ -98,8 +99,12 @@ class WorldView : public ViewPage {
   void showEvent(QShowEvent* event) override;
 
  private:
-  struct Impl;
   QWidget* make_button_bar();
+  // The canvas VTK's picture is shown on; its drags and wheel turns move the camera.
+  ImageCanvas* make_canvas();
+  // Redraws on the scene model's, the animation model's and the window model's signals (a new
+  // source or texture, or another exact renderer, reloads the whole loop).
+  void follow_models();
   void update_now();
   void draw();          // renders VTK at the canvas's size and shows it with its texts
   void camera_moved();  // draws again after a mouse move or a button
@@ -107,7 +112,7 @@ class WorldView : public ViewPage {
   WindowModel* window_;
   ImageCanvas* canvas_ = nullptr;
   QLabel* note_ = nullptr;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<WorldScene> world_;  // the VTK window, its actors and the camera
   bool dirty_ = true;
   bool camera_placed_ = false;
 };

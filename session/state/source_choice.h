@@ -1,6 +1,6 @@
 // What the animation and analysis views play: a source kind by name, a shipped name or file,
 // and a viewer script for the kinds that need one. The kinds themselves are the window's
-// source-kind table (gui/models/animation_sources.h). Plain C++.
+// source-kind table (session/player/animation_sources.h). Plain C++.
 #pragma once
 
 #include <string>

@@ -1,0 +1,455 @@
+#include "views/world_scene.h"
+
+#include <vtkCamera.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkSphereSource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "adapters/frame_images.h"
+#include "adapters/world_geometry.h"
+#include "models/animation_model.h"
+#include "models/scene_model.h"
+#include "models/window_model.h"
+#include "scene/scene_animator.h"
+#include "scene_shifting/scene_shifting_renderer.h"
+
+namespace oflab {
+namespace {
+
+RgbF rgbf(const Rgb8& c) { return {c.r / 255.0, c.g / 255.0, c.b / 255.0}; }
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The viewer script a scene source plays, or nullptr for other animators.
+const ViewerScript* viewer_script_of(const Animator* animator) {
+  if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(animator)) {
+    return &scene->script();
+  }
+  if (const auto* shifting = dynamic_cast<const SceneShiftingAnimator*>(animator)) {
+    return &shifting->script();
+  }
+  return nullptr;
+}
+
+// How a polygon of a scene is drawn: its level's colour when it was drawn this frame, pale
+// when culled, dark when hidden by polygons in front.
+std::array<unsigned char, 4> polygon_colour(PolygonStatus status, Level level) {
+  switch (status) {
+    case PolygonStatus::kAnimated:
+    case PolygonStatus::kClipped: {
+      const Rgb8 c = level_colour(status == PolygonStatus::kClipped ? Level::kRerender : level);
+      return {c.r, c.g, c.b, 255};
+    }
+    case PolygonStatus::kBackFacing:
+    case PolygonStatus::kOutsideFrustum:
+      return {215, 215, 215, 255};
+    case PolygonStatus::kHidden:
+      return {70, 70, 70, 255};
+    case PolygonStatus::kStarved:
+      return {0, 0, 0, 255};
+  }
+  return {128, 128, 128, 255};
+}
+
+}  // namespace
+
+WorldScene::WorldScene() {
+  // No multisampling: on software OpenGL (llvmpipe) it costs most of the frame.
+  window->SetMultiSamples(0);
+  window->SetNumberOfLayers(2);
+  window->AddRenderer(renderer);
+  overlay->SetLayer(1);
+  overlay->InteractiveOff();
+  overlay->SetActiveCamera(renderer->GetActiveCamera());
+  window->AddRenderer(overlay);
+
+  add_viewer_actors();
+  add_plane_actors();
+  add_scene_actors();
+  velocity = add_arrow(okabe_ito::kVermillion);
+  omega = add_arrow(okabe_ito::kReddishPurple);
+  normal = add_arrow(okabe_ito::kBlue);
+  up = add_arrow(okabe_ito::kBluishGreen);
+  name_labels();
+}
+
+void WorldScene::add_viewer_actors() {
+  const ViewTheme& t = theme;
+  vtkNew<vtkSphereSource> sphere;
+  // A small ball: 16 x 8 facets read as round at its size on screen.
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(8);
+  vtkNew<vtkPolyDataMapper> sphere_mapper;
+  sphere_mapper->SetInputConnection(sphere->GetOutputPort());
+  eye->SetMapper(sphere_mapper);
+  eye->SetUserMatrix(viewer_matrix);
+  renderer->AddActor(eye);
+  frustum = add_poly_actor(renderer, t.outline);
+  image_plane = add_poly_actor(renderer, {1.0, 1.0, 1.0});
+  frame_texture->SetInputData(frame_pixels);
+  frame_texture->InterpolateOn();
+  image_plane.actor->SetTexture(frame_texture);
+  for (PolyActor* p : {&frustum, &image_plane}) p->actor->SetUserMatrix(viewer_matrix);
+}
+
+void WorldScene::add_plane_actors() {
+  const ViewTheme& t = theme;
+  plane = add_poly_actor(renderer, {1.0, 1.0, 1.0});
+  plane_texture->SetInputData(texture_pixels);
+  plane_texture->InterpolateOn();
+  // Opaque: translucent geometry would send every frame through VTK's order-independent
+  // transparency passes, full-window float buffers that software OpenGL fills slowly.
+  plane.actor->ForceOpaqueOn();
+  plane.actor->SetTexture(plane_texture);
+  plane_outline = add_poly_actor(renderer, t.outline);
+  rays = add_poly_actor(renderer, rgbf(okabe_ito::kYellow));
+  ray_images = add_poly_actor(renderer, rgbf(okabe_ito::kYellow));
+  omega_axis = add_poly_actor(renderer, rgbf(okabe_ito::kReddishPurple));
+}
+
+void WorldScene::add_scene_actors() {
+  const ViewTheme& t = theme;
+  path_past = add_poly_actor(overlay, rgbf(okabe_ito::kOrange));
+  path_future = add_poly_actor(overlay, t.muted);
+  polygons = add_poly_actor(renderer, {1.0, 1.0, 1.0});
+  polygons.actor->GetMapper()->ScalarVisibilityOn();
+  polygons.actor->GetMapper()->SetScalarModeToUseCellData();
+  polygons.actor->GetMapper()->SetColorModeToDirectScalars();
+  polygons.actor->ForceOpaqueOn();
+  polygon_edges = add_poly_actor(renderer, t.outline);
+  polygon_edges.actor->GetMapper()->SetInputDataObject(polygons.data);
+  polygon_edges.actor->GetProperty()->SetRepresentationToWireframe();
+}
+
+void WorldScene::name_labels() {
+  const ViewTheme& t = theme;
+  texts.labels[kEyeLabel] = {"eye", Vec3(0.0), t.text, true};
+  texts.labels[kImageLabel] = {"image plane", Vec3(0.0), t.text, true};
+  texts.labels[kVelocityLabel] = {"V", Vec3(0.0), rgbf(okabe_ito::kVermillion), true};
+  texts.labels[kOmegaLabel] = {"Omega", Vec3(0.0), rgbf(okabe_ito::kReddishPurple), true};
+  texts.labels[kNormalLabel] = {"N", Vec3(0.0), rgbf(okabe_ito::kBlue), true};
+  texts.labels[kUpLabel] = {"U", Vec3(0.0), rgbf(okabe_ito::kBluishGreen), true};
+}
+
+WorldScene::Arrow WorldScene::add_arrow(const Rgb8& colour) {
+  Arrow a{vtkSmartPointer<vtkActor>::New(), vtkSmartPointer<vtkMatrix4x4>::New()};
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(arrow_source->GetOutputPort());
+  a.actor->SetMapper(mapper);
+  a.actor->SetUserMatrix(a.matrix);
+  a.actor->GetProperty()->SetColor(colour.r / 255.0, colour.g / 255.0, colour.b / 255.0);
+  renderer->AddActor(a.actor);
+  return a;
+}
+
+void WorldScene::place(Arrow& arrow, const Vec3& origin, const Vec3& direction, double length) {
+  arrow.matrix->DeepCopy(arrow_matrix(origin, direction, length).data());
+  arrow.actor->Modified();
+}
+
+void WorldScene::place_label(WorldLabelId id, const Vec3& at, const std::string& text) {
+  texts.labels[size_t(id)].at = at;
+  texts.labels[size_t(id)].text = text;
+}
+
+// The camera's two framings.
+
+void WorldScene::reset_camera() {
+  const Mat3 to_world = glm::transpose(first_view.rotation);
+  const Vec3 forward = to_world * Vec3(0, 0, 1), view_up = to_world * Vec3(0, -1, 0),
+             right = to_world * Vec3(1, 0, 0);
+  const Vec3 eye_at = viewer_to_world(first_view, Vec3(0.0));
+  const Vec3 focus = 0.5 * (eye_at + world_centre);
+  const double distance = std::max(1e-3, glm::length(world_centre - eye_at));
+  // From the left of the eye, a little behind and above it: the frustum opens towards the
+  // plane across the picture and the path is seen from its side.
+  const Vec3 from = focus + distance * (-0.55 * forward + 0.45 * view_up - 1.0 * right);
+  vtkCamera* vtk_camera = renderer->GetActiveCamera();
+  vtk_camera->SetFocalPoint(focus.x, focus.y, focus.z);
+  vtk_camera->SetPosition(from.x, from.y, from.z);
+  vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
+  vtk_camera->SetViewAngle(30.0);
+  renderer->ResetCamera();
+  // Closer in a wide view; a narrow one (the cause-and-effect layout) keeps the whole width.
+  vtk_camera->Zoom(1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0));
+  renderer->ResetCameraClippingRange();
+  needs_render = true;
+}
+
+void WorldScene::view_from_camera() {
+  const Mat3 to_world = glm::transpose(view.rotation);
+  const Vec3 eye_at = viewer_to_world(view, Vec3(0.0));
+  const Vec3 ahead = eye_at + to_world * Vec3(0, 0, 4.0 * depth),
+             view_up = to_world * Vec3(0, -1, 0);
+  vtkCamera* vtk_camera = renderer->GetActiveCamera();
+  vtk_camera->SetPosition(eye_at.x, eye_at.y, eye_at.z);
+  vtk_camera->SetFocalPoint(ahead.x, ahead.y, ahead.z);
+  vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
+  vtk_camera->SetViewAngle(2.0 * std::atan(0.5 * camera.height / camera.focal_px) * 180.0 / kPi);
+  renderer->ResetCameraClippingRange();
+  needs_render = true;
+}
+
+// The source: what every frame of the loop shows (the plane's path, the scene's polygons).
+
+void WorldScene::load_plane(WindowModel& window) {
+  const SceneModel& scene = *window.scene();
+  const MotionScript script = scene.as_script();
+  const double dt = SceneModel::kSecondsPerFrame;
+  camera = scene.scene().camera;
+  path.clear();
+  largest_velocity = largest_omega = 0.0;
+  for (const ScriptFrame& f : script.frames) {
+    path.push_back(f.pose.point);
+    largest_velocity = std::max(largest_velocity, glm::length(eye_velocity(f.motion, f.pose)) / dt);
+    largest_omega = std::max(largest_omega, glm::length(f.motion.omega) / dt);
+  }
+  first_pose = script.frames.empty() ? scene.current_pose() : script.frames.front().pose;
+  first_view = ViewerPose{};
+  depth = plane_image_depth(path);
+  full_arrow = 0.6 * std::hypot(first_pose.size.x, first_pose.size.y);
+  world_centre = Vec3(0.0);
+  for (const Vec3& p : path) world_centre += p / double(path.size());
+  copy_texture_pixels(scene.texture(), texture_pixels);
+  exact.reset();
+  problem.clear();
+  const ExactRendererKind* kind = find_exact_renderer(window.exact_renderer());
+  try {
+    const Scene as_scene = plane_as_scene(first_pose, image_from_qimage(scene.texture()));
+    exact = kind->make(as_scene, camera, window.animation()->settings());
+  } catch (const std::exception& e) {  // VTK without a display, a refused scene
+    problem = "The image plane is empty: the " + kind->name + " exact renderer cannot start (" +
+              e.what() + ").";
+  }
+  set_coloured_polygons(polygons.data, {}, {});
+}
+
+void WorldScene::load_scene(AnimationModel& animation) {
+  path.clear();
+  largest_velocity = largest_omega = 0.0;
+  exact.reset();
+  problem.clear();
+  Animator* animator = animation.animator();
+  if (!animator) {
+    problem = "Nothing plays: the animation view's source cannot be played.";
+    set_coloured_polygons(polygons.data, {}, {});
+    return;
+  }
+  camera = animator->camera();
+  std::vector<std::vector<Vec3>> outlines;
+  std::vector<Vec3> points;
+  for (const ScenePolygon& polygon : animator->scene().polygons) {
+    outlines.push_back(polygon_vertices(polygon));
+    points.insert(points.end(), outlines.back().begin(), outlines.back().end());
+  }
+  set_coloured_polygons(
+      polygons.data, outlines,
+      std::vector<std::array<unsigned char, 4>>(outlines.size(), {150, 150, 150, 255}));
+  const double dt = SceneModel::kSecondsPerFrame;
+  first_view = animator->view();
+  if (const ViewerScript* script = viewer_script_of(animator)) {
+    for (const ViewerFrame& f : script->frames) {
+      path.push_back(viewer_to_world(f.pose, Vec3(0.0)));
+      largest_velocity = std::max(largest_velocity, glm::length(f.motion.velocity) / dt);
+      largest_omega = std::max(largest_omega, glm::length(f.motion.omega) / dt);
+    }
+    first_view = script->frames.front().pose;
+  }
+  depth = scene_image_depth(points);
+  full_arrow = 2.0 * depth;
+  world_centre = Vec3(0.0);
+  for (const Vec3& p : points) world_centre += p / double(points.size());
+}
+
+// One frame: every actor keeps its identity; points, matrices and pixels change.
+
+void WorldScene::place_viewer(const ViewerPose& pose) {
+  view = pose;
+  viewer_matrix->DeepCopy(viewer_to_world_matrix(pose).data());
+  for (vtkActor* a : {eye.Get(), frustum.actor.Get(), image_plane.actor.Get()}) a->Modified();
+  eye->SetScale(0.05 * depth);
+  const std::array<Vec3, 4> corners = image_plane_corners(camera, depth);
+  set_textured_quad(image_plane.data, corners);
+  std::vector<Vec3> from(4, Vec3(0.0)), to(corners.begin(), corners.end());
+  for (int k = 0; k < 4; ++k) {  // the image's border
+    from.push_back(corners[size_t(k)]);
+    to.push_back(corners[size_t((k + 1) % 4)]);
+  }
+  set_segments(frustum.data, from, to);
+  place_label(kEyeLabel, viewer_to_world(pose, Vec3(0.0)), "eye");
+  place_label(kImageLabel, viewer_to_world(pose, corners[0]), "image plane");
+}
+
+void WorldScene::place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega_w,
+                              double arrow_scale) {
+  const double lv = arrow_length(glm::length(velocity), largest_velocity, arrow_scale);
+  const double lo = arrow_length(glm::length(omega_w), largest_omega, arrow_scale);
+  place(this->velocity, at, velocity, lv);
+  place(omega, at, omega_w, lo);
+  char text[96];
+  std::snprintf(text, sizeof text, "V %.2f/s", glm::length(velocity));
+  place_label(kVelocityLabel, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
+  std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye", glm::length(omega_w));
+  place_label(kOmegaLabel, lo > 0 ? at + glm::normalize(omega_w) * lo : at, text);
+  // The axis Omega turns about passes through the eye, not through the arrow's foot.
+  const Vec3 eye_w = viewer_to_world(view, Vec3(0.0));
+  std::vector<Vec3> axis;
+  if (lo > 0) {
+    const double reach = 1.1 * glm::length(at - eye_w);
+    axis = {eye_w, eye_w + reach * glm::normalize(omega_w)};
+  }
+  set_polyline(omega_axis.data, axis, false);
+}
+
+void WorldScene::split_path(int frame) {
+  const int k = path.empty() ? 0 : std::clamp(frame, 0, int(path.size()) - 1);
+  set_polyline(
+      path_past.data,
+      std::vector<Vec3>(path.begin(), path.begin() + std::min<size_t>(path.size(), size_t(k) + 1)),
+      false);
+  set_polyline(
+      path_future.data,
+      std::vector<Vec3>(path.begin() + std::min<size_t>(path.size(), size_t(k)), path.end()),
+      false);
+}
+
+void WorldScene::update_plane(const SceneModel& scene) {
+  place_viewer(ViewerPose{});
+  const PlanePose pose = scene.current_pose();
+  const RigidMotion motion = scene.current_motion();
+  const std::array<Vec3, 4> corners = plane_corners(pose);
+  centre = pose.point;
+  set_textured_quad(plane.data, corners);
+  const std::vector<Vec3> outline(corners.begin(), corners.end());
+  set_polyline(plane_outline.data, outline, true);
+  set_segments(rays.data, std::vector<Vec3>(4, Vec3(0.0)), outline);
+  std::vector<Vec3> images;
+  for (const Vec3& c : corners) {
+    if (c.z > 0.0) images.push_back(ray_at_depth(c, depth));
+  }
+  set_polyline(ray_images.data, images, true);
+  const PlaneAxes axes = plane_axes(pose);
+  const double side = 0.3 * std::hypot(pose.size.x, pose.size.y);
+  place(normal, pose.point, axes.normal, side);
+  place(up, pose.point, axes.up, side);
+  place_label(kNormalLabel, pose.point + axes.normal * side, "N");
+  place_label(kUpLabel, pose.point + axes.up * side, "U");
+  place_motion(pose.point, eye_velocity(motion, pose), motion.omega, full_arrow);
+  split_path(scene.frame());
+  if (exact) copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels);
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "The eye looks along +Z; the image plane is drawn at "
+                "depth %.2f (f = %.0f px scaled to the scene).\n"
+                "Omega turns about the eye, the viewer's origin (the theory's convention); "
+                "V is the velocity of the body point at the eye.\n"
+                "Path of the plane's centre: past thick, future thin. Rays: eye to the plane's "
+                "corners through their images.",
+                depth, camera.focal_px);
+  texts.caption = text;
+}
+
+void WorldScene::update_scene(AnimationModel& animation) {
+  Animator* animator = animation.animator();
+  if (!animator) return;
+  place_viewer(animator->view());
+  centre = viewer_to_world(view, Vec3(0.0));
+  const size_t count = animator->scene().polygons.size();
+  std::vector<std::array<unsigned char, 4>> colours(count, {150, 150, 150, 255});
+  if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(animator)) {
+    const std::vector<PolygonStatus>& statuses = scene->renderer().statuses();
+    const std::vector<Level>& levels = scene->renderer().levels();
+    for (size_t k = 0; k < count && k < statuses.size() && k < levels.size(); ++k) {
+      colours[k] = polygon_colour(statuses[k], levels[k]);
+    }
+  }
+  set_cell_colours(polygons.data, colours);
+  const int frame = animator->frame();
+  const ViewerScript* script = viewer_script_of(animator);
+  const double dt = SceneModel::kSecondsPerFrame;
+  if (script && frame >= 0 && frame < int(script->frames.size())) {
+    const RigidMotion& motion = script->frames[size_t(frame)].motion;
+    const Mat3 to_world = glm::transpose(view.rotation);
+    place_motion(viewer_to_world(view, Vec3(0.0, 0.0, 1.5 * depth)),
+                 to_world * motion.velocity / dt, to_world * motion.omega / dt, full_arrow);
+  }
+  split_path(frame);
+  copy_frame_pixels(animator->image(), frame_pixels);
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "The viewer walks through the scene; its image plane shows the "
+                "engine's frame.\n"
+                "Polygons in their level's colour (translate sky blue, affine green, "
+                "perspective orange, re-render vermillion); culled pale, hidden dark.\n"
+                "V and Omega: the scene's motion seen by the viewer (Omega about the eye). "
+                "Viewer's path: past thick, future thin.");
+  texts.caption = text;
+}
+
+void WorldScene::show_parts() {
+  const auto on = [this](WorldPart part) { return shown[size_t(part)]; };
+  const bool plane_mode = !scene_mode;
+  for (vtkProp* p : {static_cast<vtkProp*>(eye.Get()), static_cast<vtkProp*>(frustum.actor)}) {
+    p->SetVisibility(on(WorldPart::kFrustum));
+  }
+  texts.labels[kEyeLabel].shown = on(WorldPart::kFrustum);
+  image_plane.actor->SetVisibility(on(WorldPart::kImagePlane));
+  texts.labels[kImageLabel].shown = on(WorldPart::kImagePlane);
+  for (vtkProp* p : {static_cast<vtkProp*>(plane.actor), static_cast<vtkProp*>(plane_outline.actor),
+                     static_cast<vtkProp*>(normal.actor), static_cast<vtkProp*>(up.actor)}) {
+    p->SetVisibility(plane_mode && on(WorldPart::kPlane));
+  }
+  texts.labels[kNormalLabel].shown = texts.labels[kUpLabel].shown =
+      plane_mode && on(WorldPart::kPlane);
+  velocity.actor->SetVisibility(on(WorldPart::kVelocity));
+  texts.labels[kVelocityLabel].shown = on(WorldPart::kVelocity);
+  for (vtkProp* p : {static_cast<vtkProp*>(omega.actor), static_cast<vtkProp*>(omega_axis.actor)}) {
+    p->SetVisibility(on(WorldPart::kOmega));
+  }
+  texts.labels[kOmegaLabel].shown = on(WorldPart::kOmega);
+  rays.actor->SetVisibility(plane_mode && on(WorldPart::kRays));
+  ray_images.actor->SetVisibility(plane_mode && on(WorldPart::kRays));
+  path_past.actor->SetVisibility(on(WorldPart::kPath));
+  path_future.actor->SetVisibility(on(WorldPart::kPath));
+  polygons.actor->SetVisibility(scene_mode && on(WorldPart::kScene));
+  polygon_edges.actor->SetVisibility(scene_mode && on(WorldPart::kScene));
+}
+
+void WorldScene::apply_theme() {
+  const ViewTheme& t = theme;
+  renderer->SetBackground(t.background[0], t.background[1], t.background[2]);
+  const double thin = t.line_width, thick = 2.5 * t.line_width;
+  for (PolyActor* p : {&frustum, &plane_outline, &polygon_edges}) {
+    p->actor->GetProperty()->SetColor(t.outline[0], t.outline[1], t.outline[2]);
+    p->actor->GetProperty()->SetLineWidth(thin);
+  }
+  path_future.actor->GetProperty()->SetColor(t.muted[0], t.muted[1], t.muted[2]);
+  path_future.actor->GetProperty()->SetLineWidth(1.5 * thin);
+  path_past.actor->GetProperty()->SetLineWidth(thick);
+  omega_axis.actor->GetProperty()->SetLineWidth(thin);
+  // Yellow rays vanish on the light background of presentation mode: sky blue there.
+  const RgbF ray = rgbf(t.presentation ? okabe_ito::kSkyBlue : okabe_ito::kYellow);
+  for (PolyActor* p : {&rays, &ray_images}) {
+    p->actor->GetProperty()->SetColor(ray[0], ray[1], ray[2]);
+    p->actor->GetProperty()->SetLineWidth(p == &rays ? thin : thick);
+  }
+  texts.labels[kEyeLabel].colour = texts.labels[kImageLabel].colour = t.text;
+}
+
+bool WorldScene::to_canvas(const Vec3& at, QPointF* canvas) const {
+  const int* size = window->GetSize();
+  renderer->SetWorldPoint(at.x, at.y, at.z, 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  // VTK's display y runs upwards; depth outside [0, 1] is behind the eye or past the far plane.
+  *canvas = QPointF(d[0], size[1] - d[1]);
+  return d[2] >= 0.0 && d[2] <= 1.0 && d[0] >= 0.0 && d[0] <= size[0] && d[1] >= 0.0 &&
+         d[1] <= size[1];
+}
+
+}  // namespace oflab

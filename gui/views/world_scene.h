@@ -1,0 +1,148 @@
+// The world view's VTK scene (gui/views/world_view.h): the offscreen render window with its
+// two renderers (the paths on an overlay layer that shares the camera, so the plane never
+// hides its own path), every actor made once, what a source puts into them for the whole
+// loop (load_plane, load_scene) and what a frame changes in place (update_plane,
+// update_scene: points, matrices and pixels, never a new actor), which parts are shown, the
+// theme's colours and line widths, the labels' points and the caption (WorldTexts, painted
+// by the view), and the camera's two framings.
+//
+// Units: world units (the viewer frame of gui/adapters/world_geometry.h for the plane, the
+// scene's frame for a scene source); speeds per second (SceneModel::kSecondsPerFrame per
+// frame); canvas pixels for to_canvas.
+#pragma once
+
+#include <vtkActor.h>
+#include <vtkArrowSource.h>
+#include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <QImage>
+#include <QPointF>
+#include <QSize>
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "adapters/exact_frames.h"
+#include "adapters/offscreen_vtk.h"
+#include "adapters/view_theme.h"
+#include "adapters/world_actors.h"
+#include "display/palette.h"
+#include "flow/camera.h"
+#include "flow/geometry.h"
+#include "scene/viewer_script.h"
+#include "views/world_texts.h"
+#include "views/world_view.h"  // WorldPart
+
+namespace oflab {
+
+class AnimationModel;
+class SceneModel;
+class WindowModel;
+
+struct WorldScene {
+  // Builds the window (a plain one, never rendered, when display_problem is not empty) and
+  // every actor, in the theme of view_theme(false).
+  WorldScene();
+
+  std::string display_problem = offscreen_vtk_problem();
+  vtkSmartPointer<vtkRenderWindow> window =
+      display_problem.empty() ? make_offscreen_window() : vtkSmartPointer<vtkRenderWindow>::New();
+  vtkNew<vtkRenderer> renderer;
+  // The paths, drawn over everything else with the same camera: the plane covers most of
+  // its own path.
+  vtkNew<vtkRenderer> overlay;
+  vtkNew<vtkUnsignedCharArray> read_back;
+  std::array<QImage, 2> pictures;  // used in turn: the one on screen is never written
+  int next_picture = 0;
+  int renders = 0;
+  bool needs_render = true;  // something VTK draws changed since the last render
+  QSize rendered_size;
+  // The viewer's frame in the world: identity for the plane, the viewer's pose in a scene.
+  vtkNew<vtkMatrix4x4> viewer_matrix;
+  vtkNew<vtkActor> eye;
+  PolyActor frustum, image_plane, plane, plane_outline, rays, ray_images, omega_axis;
+  PolyActor path_past, path_future, polygons, polygon_edges;
+  vtkNew<vtkImageData> frame_pixels, texture_pixels;
+  vtkNew<vtkTexture> frame_texture, plane_texture;
+  vtkNew<vtkArrowSource> arrow_source;
+  struct Arrow {
+    vtkSmartPointer<vtkActor> actor;
+    vtkSmartPointer<vtkMatrix4x4> matrix;
+  };
+  Arrow velocity, omega, normal, up;
+  WorldTexts texts;  // labels, legend and caption, painted over VTK's picture
+
+  ViewTheme theme = view_theme(false);
+  std::array<bool, kWorldPartCount> shown{true, true, true, true, true, true, true, true};
+
+  // What the source gives for every frame (rebuilt when the source changes).
+  bool source_dirty = true;
+  bool scene_mode = false;
+  std::vector<Vec3> path;  // plane centres, or the viewer's eye, per frame, world units
+  double largest_velocity = 0.0, largest_omega = 0.0;  // per second
+  double depth = 1.0;                                  // image plane, world units
+  double full_arrow = 1.0;                             // longest arrow, world units
+  Camera camera;
+  PlanePose first_pose;
+  std::unique_ptr<ExactFrameRenderer> exact;
+  std::string problem;  // why the image plane is empty, "" when it is not
+  Vec3 centre{0.0};
+
+  ViewerPose view;         // the viewer now (identity for the plane)
+  ViewerPose first_view;   // the viewer at frame 0
+  Vec3 world_centre{0.0};  // what the reset view looks at
+
+  // An arrow actor in `colour`, added to the renderer; placed by `place`.
+  Arrow add_arrow(const Rgb8& colour);
+  // Points `arrow` from `origin` along `direction`, `length` world units long.
+  static void place(Arrow& arrow, const Vec3& origin, const Vec3& direction, double length);
+  // Label `id` names `text` at the world point `at` (painted where the camera projects it).
+  void place_label(WorldLabelId id, const Vec3& at, const std::string& text);
+
+  // The whole loop of the window model's plane (its path, largest speeds, image depth, the
+  // texture and the exact renderer of the image plane; `problem` says why it cannot start).
+  void load_plane(WindowModel& window);
+  // The whole loop of the animation model's scene source: its polygons, the viewer's path
+  // and largest speeds; `problem` says why nothing plays.
+  void load_scene(AnimationModel& animation);
+  // The scene model's current frame: plane, rays, arrows, path split, image plane, caption.
+  void update_plane(const SceneModel& scene);
+  // The animator's current frame: viewer, polygon colours, arrows, path split, caption.
+  void update_scene(AnimationModel& animation);
+  // The eye, frustum, image plane and their labels at the viewer pose `pose`.
+  void place_viewer(const ViewerPose& pose);
+  // The V and Omega arrows at `at` (per second), scaled by the loop's largest speeds.
+  void place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega, double arrow_scale);
+  // The path up to `frame` (past) and from it (future).
+  void split_path(int frame);
+  // Shows the parts `shown` asks for that the mode (plane or scene) has.
+  void show_parts();
+  // Colours and line widths of `theme`.
+  void apply_theme();
+  // Where world point `at` lands in the last render (canvas pixels); false when it is behind
+  // the camera or outside the picture.
+  bool to_canvas(const Vec3& at, QPointF* canvas) const;
+
+  // The camera framing everything drawn, seen from behind, above and left of the first
+  // frame's eye.
+  void reset_camera();
+  // The camera at the eye now (the viewer's in a scene) with the camera's field of view.
+  void view_from_camera();
+
+ private:
+  // Called by the constructor in this order, the order the renderers keep their actors in.
+  void add_viewer_actors();  // the eye, the frustum and the image plane with its texture
+  void add_plane_actors();   // the textured plane, its outline, the rays and Omega's axis
+  void add_scene_actors();   // the paths (on the overlay) and the scene's polygons
+  void name_labels();        // the labels' texts and colours
+};
+
+}  // namespace oflab
