@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
   clang-14 clang libclang-rt-14-dev clang-format-14
+  pmccabe
 )
 # OpenCV is an optional benchmark peer; ask for it with OFLAB_WITH_OPENCV=1.
 if [[ "${OFLAB_WITH_OPENCV:-0}" == "1" ]]; then packages+=(libopencv-dev); fi
