@@ -5,7 +5,12 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "display/palette.h"
+#include "engine/decision.h"
 #include "frame_pixels.h"
 #include "web_session.h"
 
@@ -36,13 +41,49 @@ emscripten::val run_heat(const WebSession& s, int index) {
   return emscripten::val(emscripten::typed_memory_view(heat.size(), heat.data()));
 }
 
-// The heat map's colour at t in [0, 1] as [r, g, b], for the page's colour bar.
-emscripten::val heat_colour(double t) {
-  const oflab::Rgb8 c = oflab::magnitude_colour(t);
+
+
+emscripten::val rgb_array(const Rgb8& c) {
   emscripten::val out = emscripten::val::array();
   for (std::uint8_t channel : {c.r, c.g, c.b}) out.call<void>("push", static_cast<int>(channel));
   return out;
 }
+
+// The colour of every update level as {"name": [r, g, b]}, in the levels' order.
+emscripten::val level_colours() {
+  emscripten::val out = emscripten::val::object();
+  for (int k = 0; k < kLevelCount; ++k) {
+    const Level level = static_cast<Level>(k);
+    out.set(level_name(level), rgb_array(level_colour(level)));
+  }
+  return out;
+}
+
+// The flow colour wheel (palette.h flow_wheel_colour) sampled for the page: `angles`
+// directions (angle k * 360 / angles degrees, image coordinates, Y down) times `levels`
+// magnitudes (m / (levels - 1) of the largest), r, g, b bytes, direction-major.
+emscripten::val wheel_table(int angles, int levels) {
+  static std::vector<std::uint8_t> table;
+  angles = std::clamp(angles, 1, 720);
+  levels = std::clamp(levels, 2, 256);
+  table.assign(std::size_t(angles) * std::size_t(levels) * 3, 0);
+  for (int a = 0; a < angles; ++a) {
+    const double angle = 2.0 * std::acos(-1.0) * a / angles;
+    for (int m = 0; m < levels; ++m) {
+      const double r = double(m) / (levels - 1);
+      const Rgb8 c = flow_wheel_colour(Vec2(r * std::cos(angle), r * std::sin(angle)), 1.0);
+      const std::size_t i = (std::size_t(a) * std::size_t(levels) + std::size_t(m)) * 3;
+      table[i] = c.r;
+      table[i + 1] = c.g;
+      table[i + 2] = c.b;
+    }
+  }
+  return emscripten::val(emscripten::typed_memory_view(table.size(), table.data()));
+}
+
+// The one sequential ramp (palette.h magnitude_colour) at t in [0, 1] as [r, g, b]: the
+// heat map's colour bar and the flow arrows' magnitudes.
+emscripten::val heat_colour(double t) { return rgb_array(magnitude_colour(t)); }
 
 }  // namespace
 }  // namespace oflab
@@ -76,4 +117,6 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .class_function("scriptNamesJson", &WebSession::script_names_json)
       .class_function("stateSchemaJson", &WebSession::state_schema_json);
   emscripten::function("heatColour", &oflab::heat_colour);
+  emscripten::function("levelColours", &oflab::level_colours);
+  emscripten::function("wheelTable", &oflab::wheel_table);
 }

@@ -5,9 +5,15 @@
 // under each policy the difference from the exact frame as a heat map. The frames, levels,
 // errors and heat maps come from core (Session.updateComparison, .runPixels, .runHeat).
 
-const kLevelColours = {
-  none: '#9aa0a6', translate: '#5aa9e6', affine: '#6cc070', perspective: '#e6c35a', rerender: '#e0645a',
-};
+// The levels' colours, from core's palette (session/display/palette.h level_colour), read once.
+let levelColoursCache = null;
+function levelColours() {
+  if (!levelColoursCache) {
+    levelColoursCache = {};
+    for (const [level, [r, g, b]] of Object.entries(Module.levelColours())) levelColoursCache[level] = `rgb(${r},${g},${b})`;
+  }
+  return levelColoursCache;
+}
 
 const comparisonView = {
   title: 'Comparison',
@@ -50,7 +56,7 @@ const comparisonView = {
       this.put(ctx, 2 * i, app.session.runPixels(i), pw, ph, x, y);
       for (const outline of run.outlines) {
         tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
-        ctx.strokeStyle = kLevelColours[outline.level];
+        ctx.strokeStyle = levelColours()[outline.level];
         ctx.lineWidth = 2 * style.line;
         ctx.stroke();
       }
@@ -72,7 +78,7 @@ const comparisonView = {
   drawLegend(ctx, x, y, width, info, style) {
     ctx.font = style.font(13);
     let ly = y + 10;
-    for (const [level, colour] of Object.entries(kLevelColours)) {
+    for (const [level, colour] of Object.entries(levelColours())) {
       ctx.fillStyle = colour;
       ctx.fillRect(x, ly - 10, 14, 10);
       ctx.fillStyle = '#e6e6e6';

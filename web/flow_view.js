@@ -109,7 +109,9 @@ const flowView = {
       addArrow(paths[Math.min(kArrowColours - 1, Math.floor(m * kArrowColours))], x0, y0, x1, y1, 4 * style.line);
     }
     paths.forEach((path, c) => {
-      ctx.strokeStyle = `hsl(${200 - 160 * (c + 0.5) / kArrowColours}, 80%, 60%)`;
+      // The one magnitude ramp of every front-end (session/display/palette.h), as the desktop.
+      const [r, g, b] = Module.heatColour((c + 0.5) / kArrowColours);
+      ctx.strokeStyle = `rgb(${r},${g},${b})`;
       ctx.stroke(path);
     });
   },
@@ -168,10 +170,17 @@ const flowView = {
 };
 app.views.flow = flowView;
 
+// The flow colour wheel of core's palette (session/display/palette.h flow_wheel_colour), as
+// the desktop draws it: sampled once at every degree and 64 magnitudes, then looked up.
+const kWheelAngles = 360;
+const kWheelLevels = 64;
+let wheelTableCache = null;
 function wheelColour(vx, vy, largest) {
-  const hue = (Math.atan2(vy, vx) * 180 / Math.PI + 360) % 360;
+  if (!wheelTableCache) wheelTableCache = Uint8Array.from(Module.wheelTable(kWheelAngles, kWheelLevels));
+  const a = Math.round(((Math.atan2(vy, vx) * 180 / Math.PI) + 360) % 360) % kWheelAngles;
   const m = largest > 0 ? Math.min(1, Math.hypot(vx, vy) / largest) : 0;
-  return `hsl(${hue.toFixed(0)}, ${(100 * m).toFixed(0)}%, ${(70 - 20 * m).toFixed(0)}%)`;
+  const i = 3 * (a * kWheelLevels + Math.round(m * (kWheelLevels - 1)));
+  return `rgb(${wheelTableCache[i]},${wheelTableCache[i + 1]},${wheelTableCache[i + 2]})`;
 }
 
 function formatNumber(v) {
