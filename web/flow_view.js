@@ -109,8 +109,9 @@ const flowView = {
       addArrow(paths[Math.min(kArrowColours - 1, Math.floor(m * kArrowColours))], x0, y0, x1, y1, 4 * style.line);
     }
     paths.forEach((path, c) => {
-      // The one magnitude ramp of every front-end (session/display/palette.h), as the desktop.
-      const [r, g, b] = Module.heatColour((c + 0.5) / kArrowColours);
+      // The one magnitude ramp of every front-end (session/display/palette.h), from its
+      // blue on: its darkest purple would vanish on the page's dark background.
+      const [r, g, b] = Module.heatColour(0.25 + 0.75 * (c + 0.5) / kArrowColours);
       ctx.strokeStyle = `rgb(${r},${g},${b})`;
       ctx.stroke(path);
     });
