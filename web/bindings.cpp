@@ -41,8 +41,6 @@ emscripten::val run_heat(const WebSession& s, int index) {
   return emscripten::val(emscripten::typed_memory_view(heat.size(), heat.data()));
 }
 
-
-
 emscripten::val rgb_array(const Rgb8& c) {
   emscripten::val out = emscripten::val::array();
   for (std::uint8_t channel : {c.r, c.g, c.b}) out.call<void>("push", static_cast<int>(channel));
