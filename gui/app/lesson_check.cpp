@@ -3,19 +3,12 @@
 #include <QApplication>
 #include <QLabel>
 #include <algorithm>
-#include <cmath>
 #include <limits>
-#include <sstream>
-#include <utility>
 #include <vector>
 
 #include "app/main_window.h"
-#include "basis/basis_explorer.h"
-#include "display/flow_parts.h"
 #include "models/animation_model.h"
-#include "models/scene_model.h"
 #include "models/window_model.h"
-#include "player/policy_comparison.h"
 #include "views/analysis_view.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"

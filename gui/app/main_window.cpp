@@ -6,8 +6,6 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
-#include <QFileInfo>
-#include <QInputDialog>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -23,13 +21,10 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
-#include "adapters/texture.h"
 #include "app/app_theme.h"
-#include "app/exports.h"
 #include "app/screenshot.h"
 #include "app/view_table.h"
 #include "formats/datasets.h"
-#include "formats/script_file.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
