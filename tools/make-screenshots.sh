@@ -15,7 +15,7 @@ mkdir -p "$out"
 shot() {  # shot NAME ARGS...: one screenshot into manual/images/NAME.png
   local name=$1
   shift
-  xvfb-run -a -s "-screen 0 ${screen:-1600x1000}x24" "$oflab" --screenshot "$out/$name.png" --force "$@" \
+  xvfb-run -a -s "-screen 0 ${screen:-1600x1000}x24 -noreset" "$oflab" --screenshot "$out/$name.png" --force "$@" \
     2> >(grep -v 'XDG_RUNTIME_DIR' >&2)
 }
 
@@ -89,7 +89,7 @@ screen=1920x1200 shot lesson-where-the-flow-comes-from --lesson where-the-flow-c
 # that step's claims (manual/lessons.md shows them).
 steps=$(mktemp -d)
 trap 'rm -rf "$steps"' EXIT
-xvfb-run -a -s "-screen 0 1920x1200x24" "$oflab" --check-lesson all --size 1920 1080 \
+xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" "$oflab" --check-lesson all --size 1920 1080 \
   --step-shots "$steps" 2> >(grep -v 'XDG_RUNTIME_DIR' >&2) | grep -v '^oflab: wrote' |
   tail -n 1
 cp "$steps"/lesson-*-step-*.png "$out"/

@@ -24,8 +24,10 @@ stage_done "build"
 jobs=$(nproc 2>/dev/null || echo 2)
 
 # As many tests at a time as the machine has cores: every GUI test opens its own window on the
-# one virtual screen, and no two tests share a scratch folder.
-xvfb-run -a -s "-screen 0 1600x1000x24" \
+# one virtual screen, and no two tests share a scratch folder. -noreset: by default the X
+# server resets whenever its last client leaves, and a test that connects during that reset
+# is dropped ("could not connect to display"); between two tests there is often no client.
+xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" \
   ctest --test-dir build --output-on-failure --timeout 600 -j"$jobs"
 stage_done "tests"
 
@@ -65,7 +67,7 @@ cmake --build build-sanitize -j"$jobs"
 # They run as many at a time as the machine has cores: under the sanitizers they take about
 # twice as long as their build, and none shares a scratch folder with another.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  xvfb-run -a -s "-screen 0 1600x1000x24" \
+  xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" \
   ctest --test-dir build-sanitize --output-on-failure --timeout 1200 -j"$jobs" \
   -LE 'soak|address-space-limit' \
   -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart'
