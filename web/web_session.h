@@ -75,6 +75,7 @@ class WebSession : public LessonStage {
   std::string stage_apply(const WindowState& state) override { return apply_state(state); }
   void stage_stop() override { state_.playing = false; }
   void stage_seek(int frame) override { panel_.set_frame(frame); }
+  int stage_loop_frames() const override { return panel_.loop_frames(); }
   void stage_play(int frames) override;
   void stage_set_step(int step) override { state_.lesson_step = step; }
 

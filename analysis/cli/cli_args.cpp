@@ -1,6 +1,5 @@
 #include "cli/cli_args.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -36,10 +35,17 @@ const std::vector<std::string>& CliArgs::values(const std::string& name) const {
 }
 
 double CliArgs::parse_number(const std::string& name, const std::string& text) const {
-  errno = 0;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v)) {
+  const bool read_whole = !text.empty() && end == text.c_str() + text.size();
+  // strtod also reads hexadecimal ("0x10" as 16): a number on the command line is decimal.
+  if (read_whole && text.find_first_of("xX") != std::string::npos) {
+    throw UsageError(name + ": '" + text + "' is not a decimal number");
+  }
+  // A value too large for a double reads as infinity; one too small for a normal double
+  // (1e-310) reads as the nearest subnormal or 0, which is finite and kept (the option's
+  // Limit then judges it).
+  if (!read_whole || !std::isfinite(v)) {
     throw UsageError(name + ": '" + text + "' is not a finite number");
   }
   return v;

@@ -32,7 +32,8 @@ class CliArgs {
   const std::vector<std::string>& values(const std::string& name) const;
 
   // Numeric readers: throw UsageError naming the option when absent (required forms) or
-  // when a value is not a finite number / not an integer.
+  // when a value is not a finite decimal number / not an integer ("0x10" is refused; a
+  // subnormal such as 1e-310 is a finite number).
   double number(const std::string& name) const;
   double number_or(const std::string& name, double fallback) const;
   std::optional<double> optional_number(const std::string& name) const;

@@ -28,13 +28,32 @@ const char* case_text(const std::string& name) {
            "unobservable";
   }
   if (name == "translation-along-normal") {
-    return "V is parallel to the normal: the two solutions of the general case coincide";
+    return "V is parallel to the normal to within 6.3e-5 rad: the two solutions of the "
+           "general case coincide to that angle";
   }
   if (name == "fronto-parallel-along-normal") {
-    return "a plane facing the eye squarely, moving along its normal: the two solutions of "
-           "the general case coincide";
+    return "a plane facing the eye squarely, moving along its normal to within 6.3e-5 rad: "
+           "the two solutions of the general case coincide to that angle";
   }
   return "";
+}
+
+// The first line: how many solutions are seen at the check pixel, and the case.
+void print_headline(const nlohmann::json& j, const std::string& pixel, std::ostream& out) {
+  const size_t count = j["solutions"].size();
+  const int edge_on = j["edge_on_at_front_pixel"].get<int>();
+  out << count << (count == 1 ? " solution" : " solutions");
+  if (edge_on > 0) out << " seen at centred pixel " << pixel;
+  if (!j["degenerate"].is_null()) {
+    const std::string name = j["degenerate"].get<std::string>();
+    out << " (degenerate: " << name << ": " << case_text(name) << ")\n";
+    return;
+  }
+  out << " (general case: two planes with two motions make this same instantaneous flow; ";
+  if (edge_on == 1) out << "the other is seen edge-on at this pixel";
+  if (edge_on == 2) out << "both are seen edge-on at this pixel";
+  if (edge_on == 0) out << "only the later frames tell them apart";
+  out << ")\n";
 }
 
 }  // namespace
@@ -49,6 +68,7 @@ nlohmann::json explain_json(const InverseFlowSolutions& result, const Vec2& fron
                         ? nlohmann::json(nullptr)
                         : nlohmann::json(inverse_flow_case_name(result.kind));
   j["mirror_candidates_behind_eye"] = result.dropped_behind;
+  j["edge_on_at_front_pixel"] = result.edge_on;
   j["solutions"] = nlohmann::json::array();
   for (const PlanarMotionSolution& s : result.solutions) {
     nlohmann::json o;
@@ -76,14 +96,7 @@ void print_explain_text(const nlohmann::json& j, std::ostream& out) {
   at << "(" << j["front_pixel"][0].get<double>() << ", " << j["front_pixel"][1].get<double>()
      << ")";
   const std::string pixel = at.str();
-  out << solutions.size() << (solutions.size() == 1 ? " solution" : " solutions");
-  if (j["degenerate"].is_null()) {
-    out << " (general case: two planes with two motions make this same instantaneous flow; "
-           "only the later frames tell them apart)\n";
-  } else {
-    const std::string name = j["degenerate"].get<std::string>();
-    out << " (degenerate: " << name << ": " << case_text(name) << ")\n";
-  }
+  print_headline(j, pixel, out);
   out << "Each plane is N.R = d with unit N pointing away from the eye and d > 0 unknown "
          "(depth up to scale);\nevery listed plane faces the camera: it is in front of the eye "
          "at centred pixel "
@@ -92,6 +105,12 @@ void print_explain_text(const nlohmann::json& j, std::ostream& out) {
   if (mirrors > 0) {
     out << "Left out: " << mirrors
         << " mirror candidate(s) (-N, -V/d), the same flow from a plane behind the eye.\n";
+  }
+  const int edge_on = j["edge_on_at_front_pixel"].get<int>();
+  if (edge_on > 0) {
+    out << "Left out: " << edge_on
+        << " plane(s) parallel to the line of sight through this pixel (seen edge-on, no depth "
+           "there); give --at a pixel where it is seen.\n";
   }
   int index = 0;
   for (const auto& s : solutions) {

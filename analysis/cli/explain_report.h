@@ -12,7 +12,9 @@ namespace oflab {
 // The JSON object of `explain`: {"solutions": [{"omega": [3], "normal": [3] or null,
 // "v_over_d": [3], "v_over_z0": [3] or null, "depth_over_d": number or null,
 // "slopes": [dZ/dX, dZ/dY] or null}, ...], "degenerate": case name or null (general case),
-// "front_pixel": [x, y], "mirror_candidates_behind_eye": count, "units": text}.
+// "front_pixel": [x, y], "mirror_candidates_behind_eye": count, "edge_on_at_front_pixel":
+// count (candidate planes parallel to the line of sight through front_pixel, left out: see
+// InverseFlowSolutions::edge_on), "units": text}.
 // Frame: the viewer frame (X right, Y down, Z forward); rates per unit time; normal unit,
 // oriented so that d = N.R > 0; v_over_z0 = V/Z0 with Z0 = d/N3 the depth where the plane
 // meets the optical axis; slopes -N1/N3, -N2/N3 (null when N3 = 0). `front_pixel` is the

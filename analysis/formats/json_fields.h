@@ -78,13 +78,73 @@ inline std::string json_problem(const json::exception& e) {
   return words;
 }
 
-// `text` parsed; it must be a JSON object. Every exception of the JSON library (a syntax
-// error, a number too large for a double such as 1e400, ...) becomes an Error naming the file:
-// "FILE: not valid JSON (json_problem)".
+// Most values (numbers, strings, lists, objects, each counted once, members' keys not) in
+// one JSON data file, and the deepest nesting of lists and objects. The parsed document
+// takes up to about 170 bytes a value (an object member: a tree node, its key and an empty
+// object), so a file within these peaks below 800 MB (770 MB measured for 4 190 000 members
+// "N": {}, manual/robustness.md); without them 64 MiB of "{}," took 2.3 GB. The largest file oflab
+// writes, `make-scene --cubes 20000`, has 1 700 009 values nested 4 deep; a lesson or session has a
+// few hundred.
+constexpr long long kMaxJsonValues = 4LL << 20;
+constexpr int kMaxJsonDepth = 64;
+
+// A counting pass over JSON text (the library's SAX interface) that builds nothing: it stops
+// at the first value past kMaxJsonValues or list/object past kMaxJsonDepth, and at the first
+// syntax error, keeping its words. Used by parse_object before the document is built.
+class JsonBudget : public nlohmann::json_sax<json> {
+ public:
+  std::string problem;  // "" while within the budget and valid so far
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool key(string_t&) override { return true; }
+  bool start_object(std::size_t) override { return open(); }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    problem = "not valid JSON (" + json_problem(e) + ")";
+    return false;
+  }
+
+ private:
+  long long values_ = 0;
+  int depth_ = 0;
+
+  bool value() {
+    if (++values_ <= kMaxJsonValues) return true;
+    problem = "more than " + std::to_string(kMaxJsonValues) +
+              " JSON values, the limit for data files (numbers, strings, lists and objects)";
+    return false;
+  }
+  bool open() {
+    if (++depth_ <= kMaxJsonDepth) return value();
+    problem = "lists and objects nested more than " + std::to_string(kMaxJsonDepth) +
+              " deep, the limit for data files";
+    return false;
+  }
+  bool close() {
+    --depth_;
+    return true;
+  }
+};
+
+// `text` parsed; it must be a JSON object. It is first counted (JsonBudget): over
+// kMaxJsonValues values or kMaxJsonDepth levels it is refused before anything is built,
+// "FILE: more than 4194304 JSON values, the limit ...". Every exception of the JSON library (a
+// syntax error, a number too large for a double such as 1e400, ...) becomes an Error naming
+// the file: "FILE: not valid JSON (json_problem)".
 template <class Error>
 json parse_object(const std::string& text, const Place<Error>& top) {
   json root;
   try {
+    JsonBudget budget;
+    if (!json::sax_parse(text, &budget) && !budget.problem.empty()) top.fail("", budget.problem);
     root = json::parse(text);
   } catch (const json::exception& e) {
     top.fail("", "not valid JSON (" + json_problem(e) + ")");

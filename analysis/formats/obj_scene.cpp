@@ -34,11 +34,13 @@ struct ObjReader {
 };
 
 double coordinate(const std::string& token, const ObjReader& r) {
-  errno = 0;
+  // Decimal only (strtod would read "0x10" as 16); a subnormal such as 1e-310 is finite and
+  // kept, a value too large for a double reads as infinity.
   char* end = nullptr;
   const double v = std::strtod(token.c_str(), &end);
-  if (token.empty() || end != token.c_str() + token.size() || errno == ERANGE ||
-      !std::isfinite(v) || std::abs(v) > json_fields::kMaxMagnitude) {
+  if (token.empty() || token.find_first_of("xX") != std::string::npos ||
+      end != token.c_str() + token.size() || !std::isfinite(v) ||
+      std::abs(v) > json_fields::kMaxMagnitude) {
     r.fail("'" + token + "' is not a finite number of magnitude at most 1e6");
   }
   return v;

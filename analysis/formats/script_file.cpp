@@ -63,7 +63,7 @@ MotionScript parse_script(const std::string& text, const std::string& origin) {
     std::vector<ScriptSegment> segments;
     long total = 0;  // checked against the cap before anything is expanded
     for (size_t i = 0; i < segs.size(); ++i) {
-      const Where w{origin, "segment " + std::to_string(i)};
+      const Where w{origin, "segment " + std::to_string(i + 1)};  // from 1, as steps and claims
       if (!segs[i].is_object()) w.fail("", "must be an object");
       ScriptSegment seg;
       seg.frames = limited_integer(segs[i], w, "frames", limits::kPlayedFrames);

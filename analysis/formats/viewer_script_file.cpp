@@ -39,7 +39,7 @@ ViewerScript parse_viewer_script(const std::string& text, const std::string& ori
   std::vector<ViewerSegment> segments;
   long total = 0;
   for (std::size_t i = 0; i < segs.size(); ++i) {
-    const Where w{origin, "segment " + std::to_string(i)};
+    const Where w{origin, "segment " + std::to_string(i + 1)};  // from 1, as steps and claims
     if (!segs[i].is_object()) w.fail("", "must be an object");
     ViewerSegment s;
     s.frames = limited_integer(segs[i], w, "frames", limits::kPlayedFrames);

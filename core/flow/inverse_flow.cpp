@@ -116,11 +116,26 @@ FlowMatrixParts flow_matrix_parts(const PlanarFlowCoefficients& c, double f) {
   return {w, symmetric_eigen(sym)};
 }
 
+// `v` with each component of magnitude at most kRoundingNoise * `scale` set to 0: what the
+// eigen-decomposition leaves in place of an exact zero (3.5e-18 instead of 0 for a plane
+// facing the eye squarely) is rounding, and a component that small is no information.
+constexpr double kRoundingNoise = 1e-13;
+
+Vec3 without_rounding_noise(Vec3 v, double scale) {
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(v[i]) <= kRoundingNoise * scale) v[i] = 0.0;
+  }
+  return v;
+}
+
 // One candidate (V/d, unit N) as the plane in front of the eye along ray `rho`, with the
-// rotation that makes the flow with `w`: false when the plane is seen edge-on there (no
-// solution). A normal facing away is mirrored through the eye, V/d with it.
-bool solution_in_front(Vec3 velocity, Vec3 normal, const Vec3& w, const Vec3& rho,
+// rotation that makes the flow with `w` (`scale` the flow matrix's, for rounding noise):
+// false when the plane is seen edge-on there (no solution). A normal facing away is mirrored
+// through the eye, V/d with it.
+bool solution_in_front(Vec3 velocity, Vec3 normal, const Vec3& w, const Vec3& rho, double scale,
                        PlanarMotionSolution& s) {
+  normal = without_rounding_noise(normal, 1.0);
+  velocity = without_rounding_noise(velocity, glm::length(velocity));
   const double facing = glm::dot(normal, rho);
   if (std::abs(facing) <= 1e-12 * glm::length(rho)) return false;  // edge-on at the check pixel
   if (facing < 0.0) {  // the mirror image through the eye is the one in front
@@ -129,7 +144,7 @@ bool solution_in_front(Vec3 velocity, Vec3 normal, const Vec3& w, const Vec3& rh
   }
   s.normal = normal;
   s.v_over_d = velocity;
-  s.omega = w - 0.5 * glm::cross(normal, velocity);
+  s.omega = without_rounding_noise(w - 0.5 * glm::cross(normal, velocity), scale);
   s.depth_over_d = 1.0 / std::abs(facing);
   return true;
 }
@@ -187,8 +202,8 @@ InverseFlowSolutions solve_inverse_flow(const PlanarFlowCoefficients& c, double 
   for (int i = 0; i < (one_solution ? 1 : 2); ++i) {
     PlanarMotionSolution s;
     if (!solution_in_front(g * candidates[i].first, glm::normalize(candidates[i].second), w, rho,
-                           s)) {
-      out.dropped_behind += 2;
+                           scale, s)) {
+      out.edge_on += 1;
       continue;
     }
     out.solutions.push_back(s);

@@ -46,7 +46,12 @@ const char* inverse_flow_case_name(InverseFlowCase kind);
 // each other. Near these cases the solutions are sensitive: a relative change e of the
 // coefficients moves N and V/d by about sqrt(e) (1e-8 for rounding errors), while each
 // solution still maps forward to the coefficients to rounding.
+// In angles: the two non-zero eigenvalues are |V/d| (1 + cos phi)/2 and -|V/d| (1 - cos phi)/2
+// for the angle phi between V and N, so translation-along-normal is named while phi (or
+// pi - phi) is at most kInverseFlowAngleTolerance = 2 sqrt(kInverseFlowTolerance) = 6.3e-5 rad
+// (0.0036 deg); the one solution given then stands for two that differ by less than that.
 constexpr double kInverseFlowTolerance = 1e-9;
+constexpr double kInverseFlowAngleTolerance = 6.324555320336759e-5;  // 2 sqrt(1e-9), rad
 
 // One plane and motion consistent with the coefficients.
 struct PlanarMotionSolution {
@@ -68,18 +73,23 @@ struct PlanarMotionSolution {
 
 struct InverseFlowSolutions {
   InverseFlowCase kind = InverseFlowCase::kGeneral;
-  // Two solutions in the general case, one otherwise (one fewer for a candidate seen
-  // edge-on at the check pixel, see dropped_behind), each with its plane in front of the eye
-  // at the check pixel. Their order carries no meaning.
+  // Two solutions in the general case, one otherwise (one fewer for each candidate seen
+  // edge-on at the check pixel, see edge_on), each with its plane in front of the eye at the
+  // check pixel. Their order carries no meaning.
   std::vector<PlanarMotionSolution> solutions;
-  // Candidates left out because their plane is behind the eye (or seen exactly edge-on) at
-  // the check pixel: each solution's mirror image through the eye, (-N, -V/d, Omega), makes
-  // the same flow matrix but lies behind the eye. 2 in the general case, 1 with one
-  // solution, 0 for a pure rotation; a candidate seen edge-on at the check pixel is left out
-  // with its mirror (2 more). That happens, for instance, for a spin about a plane point
-  // seen at the check pixel: V is then across that line of sight, and so is the other
-  // solution's normal.
+  // Mirror candidates left out because their plane is behind the eye at the check pixel:
+  // each solution's mirror image through the eye, (-N, -V/d, Omega), makes the same flow
+  // matrix but lies behind the eye. One per solution: 2 in the general case, 1 with one
+  // solution, 0 for a pure rotation or a candidate seen edge-on.
   int dropped_behind = 0;
+  // Candidates left out because their plane is seen edge-on at the check pixel (N.rho = 0
+  // to 1e-12: the line of sight through it is parallel to the plane, which is therefore
+  // neither in front nor behind there, and neither is its mirror). They are true solutions
+  // seen at other pixels. That happens, for instance, for a sideways translation of a plane
+  // facing the eye (tx alone) at the principal point: the other solution's plane is
+  // parallel to the optical axis; and for a spin about a plane point seen at the check
+  // pixel: V is then across that line of sight, and so is the other solution's normal.
+  int edge_on = 0;
 };
 
 // Every (N, V/d, Omega) whose flow, through planar_flow_coefficients, equals `c`, keeping

@@ -43,7 +43,7 @@ std::string plane_scene_problem(const PlaneScene& scene) {
   const std::string camera = camera_problem(scene.camera);
   if (!camera.empty()) return "camera: " + camera;
   const PoseProblem pose = plane_pose_problem(scene.pose);
-  if (!pose.field.empty()) return "plane " + pose.field + ": " + pose.message;
+  if (!pose.field.empty()) return pose.message;  // it names the field: "plane up must be ..."
   for (const Vec3& corner : plane_corners(scene.pose)) {
     if (!(corner.z > kMinCornerDepth)) {
       return "plane: a corner of the plane is behind the camera or at the eye; move the plane "

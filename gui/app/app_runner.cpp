@@ -152,11 +152,27 @@ int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream
   return false_claims == 0 ? 0 : 1;
 }
 
+namespace {
+
+// The window's refusal of the launch state as one line naming the option and file it came
+// from: "--session: s.json: texture: ...", "--scene: big.json: the scene's 1000 polygons ...".
+std::string launch_problem(const LaunchOptions& options, std::string problem) {
+  std::string origin = options.state_origin;
+  const std::string source_field = "animation.source: ";
+  if (!options.scene_origin.empty() && problem.rfind(source_field, 0) == 0) {
+    origin = options.scene_origin;
+    problem.erase(0, source_field.size());
+  }
+  return origin.empty() ? problem : origin + ": " + problem;
+}
+
+}  // namespace
+
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
   MainWindow window;
   QString problem;
   if (!window.model()->apply(options.state, &problem)) {  // the files it names, the source
-    err << "oflab: " << problem.simplified().toStdString() << "\n";
+    err << "oflab: " << launch_problem(options, problem.simplified().toStdString()) << "\n";
     return 2;
   }
   std::string error;

@@ -49,6 +49,7 @@ void read_scene(const CliArgs& cli, LaunchOptions* options) {
   } catch (const std::runtime_error& e) {  // SceneError and lookup failures
     throw UsageError("--scene: " + std::string(e.what()));
   }
+  options->scene_origin = "--scene: " + name;
   SourceChoice& source = options->state.source;
   const std::string viewer = cli.has("--script") ? source.viewer : std::string();
   source.kind = cli.has("--source") ? cli.values("--source").at(0) : "scene";
@@ -120,12 +121,14 @@ void read_base_state(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--session")) {
     try {
       options->state = read_session_file(cli.values("--session").at(0));
+      options->state_origin = "--session: " + cli.values("--session").at(0);
     } catch (const SessionError& e) {
       throw UsageError("--session: " + std::string(e.what()));
     }
   }
   if (!cli.has("--lesson")) return;
   options->state = lesson_named("--lesson", cli.values("--lesson").at(0)).state;
+  options->state_origin = "--lesson: " + cli.values("--lesson").at(0);
 }
 
 // --check-lesson NAME|FILE|all: the lessons whose claims are checked.

@@ -27,6 +27,11 @@ struct LaunchOptions {
   // window, with the other options over it. The files it names are checked when the window
   // applies it.
   WindowState state;
+  // Where `state` came from, for the messages of files it names that cannot be used when the
+  // window applies it: "--session: PATH", "--lesson: NAME" or "" (the default window);
+  // and "--scene: NAME" when --scene chose the animation's source.
+  std::string state_origin;
+  std::string scene_origin;
   // --view: the view captured by --screenshot and measured by --benchmark; "window" (or
   // empty) for the whole window. A view name also brings that view to the front.
   std::string view;

@@ -335,7 +335,7 @@ void MainWindow::apply_lesson(const Lesson& lesson) {
   WindowState state = lesson.state;
   state.presentation = model_->presentation();  // the teacher's look stays as it is
   if (!model_->apply(state, &error)) {
-    show_message(tr("lesson %1: %2").arg(QString::fromStdString(lesson.name), error));
+    show_message(tr("%1.json: %2").arg(QString::fromStdString(lesson.name), error));
     return;
   }
   statusBar()->showMessage(tr("Lesson: %1").arg(QString::fromStdString(lesson.title)));
@@ -367,6 +367,8 @@ std::string MainWindow::stage_apply(const WindowState& state) {
 void MainWindow::stage_stop() { model_->set_playing(false); }
 
 void MainWindow::stage_seek(int frame) { model_->scene()->set_frame(frame); }
+
+int MainWindow::stage_loop_frames() const { return model_->scene()->loop_frames(); }
 
 void MainWindow::stage_set_step(int step) { model_->set_lesson_step(step); }
 

@@ -81,6 +81,7 @@ class MainWindow : public QMainWindow, public LessonStage {
   std::string stage_apply(const WindowState& state) override;
   void stage_stop() override;
   void stage_seek(int frame) override;
+  int stage_loop_frames() const override;
   void stage_play(int frames) override { play_frames(frames); }
   void stage_set_step(int step) override;
   // The caption banner's text: the narrative of the model's lesson, "" for none.

@@ -25,6 +25,9 @@ class LessonStage {
   virtual void stage_stop() = 0;
   // Goes to `frame` as the front-end's frame clock lands on it (player/plane_panel.h).
   virtual void stage_seek(int frame) = 0;
+  // Frames in one loop of what plays now (player/plane_panel.h loop_frames): a step's frame
+  // must be below it.
+  virtual int stage_loop_frames() const = 0;
   // Plays `frames` frames, one at a time, as live play does.
   virtual void stage_play(int frames) = 0;
   // The lesson's step on screen is now `step` (0: its narrative).
@@ -33,8 +36,10 @@ class LessonStage {
 
 // Performs step `step` (1 .. steps) of `lesson` on a stage showing step - 1: applies the
 // step's state (if any) on the frame shown, not playing, with the stage's presentation mode;
-// goes to its frame (if any); plays its frames. "" or why not ("lesson NAME, step K:
-// problem"); nothing is done for a step out of range (then "step K does not exist").
+// goes to its frame (if any); plays its frames. "" or why not, naming the lesson's file
+// ("NAME.json: step K: problem"; "NAME.json: step K: field 'do.frame': 1000 is beyond the
+// last frame, 89, of what plays" when the frame is not in the loop of what plays after the
+// step's state); nothing is done for a step out of range (then "step K does not exist").
 std::string perform_lesson_step(LessonStage& stage, const Lesson& lesson, int step);
 
 // Shows `lesson` from its start up to step `step` (0: the narrative): its state with the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <filesystem>
+#include <system_error>
 
 #include "formats/datasets.h"
 #include "formats/json_fields.h"
@@ -127,6 +128,10 @@ Lesson read_lesson_file(const std::string& path) {
   lesson.claims = read_claims(root, Where{origin, "narrative"});
   lesson.steps = read_steps(root, origin, lesson.state);
   for (LessonStep& step : lesson.steps) step.state.lesson = lesson.name;
+  // The files a lesson names are found beside it first (a teacher's folder of lesson,
+  // textures and scripts).
+  lesson.state = with_files_beside(lesson.state, path);
+  for (LessonStep& step : lesson.steps) step.state = with_files_beside(step.state, path);
   return lesson;
 }
 
@@ -182,14 +187,40 @@ const Lesson& add_lesson(const Lesson& lesson) {
   return added_lessons().emplace_back(lesson);
 }
 
+namespace {
+
+// True when `name_or_file` is meant as a file: it names something on disk (a file, a
+// directory, a device, a dangling or looping link), cannot even be looked up (a name too
+// long, a loop of links on the way), or is written as a path (a '/' or a ".json" ending).
+// A plain word that names nothing is an unknown lesson's name.
+bool meant_as_file(const std::string& name_or_file) {
+  if (name_or_file.find('/') != std::string::npos) return true;
+  const std::string json = ".json";
+  if (name_or_file.size() > json.size() &&
+      name_or_file.compare(name_or_file.size() - json.size(), json.size(), json) == 0) {
+    return true;
+  }
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::symlink_status(name_or_file, error);
+  // A name that is simply not there reports ENOENT beside not_found; any other error (a loop,
+  // a name too long) means the file system was asked about a path.
+  return status.type() != std::filesystem::file_type::not_found ||
+         (error && error != std::errc::no_such_file_or_directory);
+}
+
+}  // namespace
+
 const Lesson& find_or_read_lesson(const std::string& name_or_file) {
   if (const Lesson* lesson = find_lesson(name_or_file)) return *lesson;
-  std::error_code error;
-  if (std::filesystem::is_regular_file(name_or_file, error)) {
-    return add_lesson(read_lesson_file(name_or_file));
+  if (!meant_as_file(name_or_file)) {
+    throw SessionError("unknown lesson '" + name_or_file + "' (known: " + lesson_names() +
+                       ", or a lesson file)");
   }
-  throw SessionError("unknown lesson '" + name_or_file + "' (known: " + lesson_names() +
-                     ", or a lesson file)");
+  try {  // the reader names the path and why it cannot be read (a loop, a name too long, ...)
+    return add_lesson(read_lesson_file(name_or_file));
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw SessionError(name_or_file + ": cannot read the file (" + e.code().message() + ")");
+  }
 }
 
 std::string lesson_names() {

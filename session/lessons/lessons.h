@@ -81,8 +81,12 @@ const Lesson* find_lesson(const std::string& name);
 const Lesson& add_lesson(const Lesson& lesson);
 
 // The lesson `name_or_file` names: a shipped or added lesson's name, else a lesson file,
-// read (read_lesson_file) and added (add_lesson). Throws SessionError naming it when it is
-// neither, or when the file cannot be used (a file system error included).
+// read (read_lesson_file) and added (add_lesson). A name is taken as a file when it contains
+// '/', ends in ".json" or names anything on disk (or cannot be looked up: a loop of links,
+// a name too long). Throws SessionError with one line: "unknown lesson 'NAME' (known: ...)"
+// for a plain word that is neither, else the file's problem naming its path ("PATH: cannot
+// open the file (Too many levels of symbolic links)", "PATH: is not a regular file
+// (character device)", "PATH: field 'order': ...").
 const Lesson& find_or_read_lesson(const std::string& name_or_file);
 
 // The names in teaching order, comma separated, for error messages and --help.

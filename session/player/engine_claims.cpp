@@ -213,6 +213,8 @@ WindowState LabStage::stage_state() const { return lab_->state(); }
 std::string LabStage::stage_apply(const WindowState& state) { return lab_->apply(state); }
 void LabStage::stage_stop() { lab_->values().playing = false; }
 void LabStage::stage_seek(int frame) { lab_->panel().set_frame(frame); }
+
+int LabStage::stage_loop_frames() const { return lab_->panel().loop_frames(); }
 void LabStage::stage_play(int frames) {
   for (int k = 0; k < frames; ++k) lab_->panel().set_frame(lab_->panel().frame() + 1);
 }

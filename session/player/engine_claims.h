@@ -38,6 +38,7 @@ class LabStage : public LessonStage {
   std::string stage_apply(const WindowState& state) override;
   void stage_stop() override;
   void stage_seek(int frame) override;
+  int stage_loop_frames() const override;
   void stage_play(int frames) override;
   void stage_set_step(int step) override;
 

@@ -1,6 +1,8 @@
 #include "state/window_state.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 #include "engine/reuse_policy.h"
 #include "flow/limits.h"
@@ -97,6 +99,28 @@ std::string compared_problem(const std::vector<std::string>& compared) {
   return "";
 }
 
+// A given stabilization plane where the eye is at the origin (the plane source: the viewer
+// frame of frame 0): it must not pass within limits::kDistance's least distance of the eye,
+// and must meet the optical axis in front of it (Z > 0) unless it is parallel to the axis.
+// Scenes give it in world coordinates, where the eye is the viewer script's, so only the
+// plane source is checked here.
+std::string stabilization_problem(const WindowState& s) {
+  const StabilizationPlane& plane = s.settings.stabilization;
+  if (plane.automatic || s.source.kind != "plane" || glm::length(plane.normal) == 0.0) return "";
+  const Vec3 n = glm::normalize(plane.normal);
+  const double distance = glm::dot(n, plane.point);  // signed distance from the eye, u
+  std::ostringstream text;
+  if (std::abs(distance) < limits::kDistance.minimum) {
+    text << "animation.stabilization: the plane passes " << std::abs(distance)
+         << " u from the eye; it must pass at least " << limits::kDistance.minimum
+         << " u away (the least distance of a plane)";
+  } else if (n.z != 0.0 && distance / n.z < 0.0) {
+    text << "animation.stabilization: the plane meets the optical axis behind the eye, at Z = "
+         << distance / n.z << " u; it must be in front (Z > 0)";
+  }
+  return text.str();
+}
+
 }  // namespace
 
 std::string panel_display_names(const std::string& separator) {
@@ -138,8 +162,8 @@ std::string window_state_problem(const WindowState& s) {
     return "flow.spacing_px: must be 0 (automatic) or 4..1000 px";
   }
   return first_of({plane_state_problem(s.plane), settings_state_problem(s.settings),
-                   explorer_terms_problem(s.explorer_terms), compared_problem(s.compared),
-                   check("animation.zoom", kZoom, s.zoom),
+                   stabilization_problem(s), explorer_terms_problem(s.explorer_terms),
+                   compared_problem(s.compared), check("animation.zoom", kZoom, s.zoom),
                    check("play_rate", kPlayRate, s.play_rate), check("frame", kFrameCount, s.frame),
                    s.lesson_step >= 0 && (s.lesson_step == 0 || !s.lesson.empty())
                        ? ""

@@ -87,12 +87,13 @@ bool operator==(const WindowState& a, const WindowState& b);
 inline bool operator!=(const WindowState& a, const WindowState& b) { return !(a == b); }
 
 // "" when every bounded number of `state` is within its limit (core/flow/limits.h) and
-// the compared list names 1 .. kMaxComparedPolicies distinct registry policies;
-// otherwise one phrase naming the field as a session file spells it, the value and the
-// allowed range or names: "animation.thresholds: 1e+06 is outside 0..100 px". The view
-// name, the source kind, the exact renderer, the lesson and the files the state names are
-// checked where they are known (the view table, the source-kind and renderer tables, the
-// lesson catalogue, the file system: WindowModel::apply). Plain C++ over core.
+// the compared list names 1 .. kMaxComparedPolicies distinct registry policies, and, for
+// the plane source, a given stabilization plane passes at least 0.01 u from the eye and meets
+// the optical axis in front of it (or is parallel to it); otherwise one phrase naming the field as
+// a session file spells it, the value and the allowed range or names: "animation.thresholds: 1e+06
+// is outside 0..100 px". The view name, the source kind, the exact renderer, the lesson and the
+// files the state names are checked where they are known (the view table, the source-kind and
+// renderer tables, the lesson catalogue, the file system: WindowModel::apply). Plain C++ over core.
 std::string window_state_problem(const WindowState& state);
 
 // The parts of window_state_problem that the scene and animation models check themselves

@@ -118,9 +118,32 @@ WindowState parse_session(const std::string& json_text, const std::string& origi
   return read_window_state_object(root, origin, "", WindowState());
 }
 
+namespace {
+
+// `value`, a file a state names, as a path from the current folder: beside the file `dir`
+// names when such a file exists there, else unchanged.
+std::string beside(const std::filesystem::path& dir, const std::string& value) {
+  if (value.empty() || dir.empty() || std::filesystem::path(value).is_absolute()) return value;
+  const std::filesystem::path near = dir / value;
+  std::error_code error;
+  return std::filesystem::exists(near, error) ? near.lexically_normal().string() : value;
+}
+
+}  // namespace
+
+WindowState with_files_beside(WindowState state, const std::string& file) {
+  const std::filesystem::path dir = std::filesystem::path(file).parent_path();
+  state.texture = beside(dir, state.texture);
+  state.script = beside(dir, state.script);
+  state.source.name = beside(dir, state.source.name);
+  state.source.viewer = beside(dir, state.source.viewer);
+  return state;
+}
+
 WindowState read_session_file(const std::string& path) {
-  return parse_session(read_file_text<SessionError>(path),
-                       std::filesystem::path(path).filename().string());
+  return with_files_beside(parse_session(read_file_text<SessionError>(path),
+                                         std::filesystem::path(path).filename().string()),
+                           path);
 }
 
 void write_session_file(const std::string& path, const WindowState& state, bool overwrite) {

@@ -44,8 +44,14 @@ WindowState read_window_state_object(const nlohmann::json& object, const std::st
 // source in errors.
 WindowState parse_session(const std::string& text, const std::string& origin);
 
-// Reads a session file (parse_session with the file's name as origin); throws SessionError
-// when it cannot be read.
+// `state` with the files it names (texture, script, the animation's source and viewer
+// script) found beside `file`, the session or lesson that names them: a relative name that
+// is a file in `file`'s folder becomes that path (from the current folder); any other name
+// (absolute, a shipped name, a file only beside the current folder) is kept.
+WindowState with_files_beside(WindowState state, const std::string& file);
+
+// Reads a session file (parse_session with the file's name as origin, its files found
+// beside it: with_files_beside); throws SessionError when it cannot be read.
 WindowState read_session_file(const std::string& path);
 
 // Writes a session file whole (analysis/formats/atomic_file.h: a temporary beside it, renamed

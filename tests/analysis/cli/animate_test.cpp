@@ -403,7 +403,7 @@ TEST(AnimateCommand, BadScriptsNameTheFileTheFrameAndTheField) {
       "not valid JSON", "");
   expect_script_error(
       R"({"camera": {"focal_px": 256, "image": [320, 240]}, "plane": {"size": [1, 0.8], "point": [0,0,2], "normal": [0,0,1], "up": [0,-1,0]}, "segments": [{"frames": 0, "velocity": [0,0,0], "omega": [0,0,0]}]})",
-      "segment 0", "frames");
+      "segment 1", "frames");
   expect_script_error("{\"camera\": ", "not valid JSON", "");
 }
 

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <nlohmann/json.hpp>
@@ -155,6 +156,60 @@ TEST(HostileInputs, DegeneratePlanesAndCamerasEndWithin60sAnd2GB) {
   for (const fs::path& file : testing::write_degenerate_plane_scripts(dir)) {
     expect_ends_cleanly({"animate", "--script", file.string(), "--frames", "20"}, dir,
                         file.filename().string());
+  }
+  fs::remove_all(dir);
+}
+
+// A JSON data file `name` in `dir`: `head` (an object's text) with an unknown field
+// "padding" whose value is `open` + element(0) + ... + element(count - 1) + `close`.
+fs::path padded_json(const fs::path& dir, const std::string& name, std::string head,
+                     const std::string& open, const std::function<std::string(long)>& element,
+                     long count, const std::string& close) {
+  head.erase(head.rfind('}'));  // the closing brace
+  std::ofstream out(dir / name, std::ios::binary);
+  out << head << ", \"padding\": " << open;
+  for (long i = 0; i < count; ++i) out << element(i);
+  out << close << "}";
+  return dir / name;
+}
+
+// The issue's point 4: 64 MiB of "{}," in an unknown field took 2.28 GB before the refusal.
+// The JSON readers now count values and nesting before they build the document (formats/
+// json_fields.h JsonBudget): such a lesson, session or script is refused at once naming the
+// limit, before anything is built; so is one nested a million lists deep.
+TEST(HostileInputs, JsonFilesAreBoundedWhileParsedWithin60sAnd2GB) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-json");
+  std::ifstream zoom_in(resolve_script_path("zoom"));
+  const std::string zoom((std::istreambuf_iterator<char>(zoom_in)), {});
+  const auto lesson = [](const std::string& name) {
+    return R"({"format": "oflab-lesson", "version": 1, "name": ")" + name +
+           R"(", "order": 99, "title": "T", "narrative": "n", "state": {}})";
+  };
+  const long objects = ((64L << 20) - 4096) / 3;  // 64 MiB of "{},", under the file limit
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const auto empty_object = [](long) { return std::string("{},"); };
+  const auto bracket = [](long) { return std::string("["); };
+  const Case cases[] = {
+      {{"lesson", "state",
+        padded_json(dir, "empty-objects.json", lesson("empty-objects"), "[", empty_object, objects,
+                    "{}]")
+            .string()},
+       "empty-objects.json: more than 4194304 JSON values, the limit for data files"},
+      {{"animate", "--script",
+        padded_json(dir, "deep.json", zoom, "", bracket, 1000000, "").string(), "--frames", "5"},
+       "deep.json: lists and objects nested more than 64 deep, the limit for data files"},
+  };
+  for (const Case& c : cases) {
+    const testing::ChildResult r = run_cli_child(c.args, dir, testing::kHostileAddressSpace,
+                                                 testing::kHostileTimeLimitSeconds);
+    EXPECT_TRUE(r.exited && !r.timed_out) << c.says << ": signal " << r.signal;
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+    RecordProperty(c.says.substr(0, c.says.find(':')) + "_peak_rss_kb", r.peak_rss_kb);
   }
   fs::remove_all(dir);
 }

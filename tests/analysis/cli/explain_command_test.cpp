@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -167,6 +168,78 @@ TEST(ExplainCommand, NamesTheDegenerateCases) {
   EXPECT_EQ(t.code, 0);
   EXPECT_NE(t.out.find("1 solution (degenerate: fronto-parallel-along-normal"), std::string::npos)
       << t.out;
+}
+
+// Issue 39, point 10: at a check pixel where one plane of the general case is seen edge-on,
+// the count, the words and the left-out candidates are true. A sideways translation of the
+// plane Z = d facing the eye (tx = 16 px/s alone, f = 500 px): the facing plane is the one
+// solution seen at the principal point, its mirror Z = -d is the one candidate behind the
+// eye, and the other solution, the plane X = d, is parallel to the optical axis there
+// (solved by hand: tests/core/flow/inverse_flow_test.cpp). Printed without rounding noise.
+TEST(ExplainCommand, AnEdgeOnPlaneAtTheCheckPixelIsCountedAsEdgeOnNotBehindTheEye) {
+  const std::vector<std::string> args = {
+      "explain", "--coefficients", "16", "0", "0", "0", "0", "0", "0", "0", "--focal", "500"};
+  const CliResult t = run(args);
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_EQ(t.out.rfind("1 solution seen at centred pixel (0, 0) (general case: two planes with "
+                        "two motions make this same instantaneous flow; the other is seen "
+                        "edge-on at this pixel)\n",
+                        0),
+            0u)
+      << t.out;
+  EXPECT_NE(t.out.find("Left out: 1 mirror candidate(s)"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("Left out: 1 plane(s) parallel to the line of sight"), std::string::npos)
+      << t.out;
+  EXPECT_NE(t.out.find("normal N = (0, 0, 1), 0 deg from the optical axis"), std::string::npos)
+      << t.out;
+  EXPECT_NE(t.out.find("V/d = (0.032, 0, 0)"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("Omega = (0, 0, 0)"), std::string::npos) << t.out;
+  EXPECT_EQ(t.out.find("e-1"), std::string::npos) << "rounding noise: " << t.out;
+  const nlohmann::json j = nlohmann::json::parse(run(with(args, "--json")).out);
+  EXPECT_TRUE(j["degenerate"].is_null());
+  EXPECT_EQ(j["solutions"].size(), 1u);
+  EXPECT_EQ(j["mirror_candidates_behind_eye"], 1);
+  EXPECT_EQ(j["edge_on_at_front_pixel"], 1);
+  // Off the axis both planes are seen: two solutions, two mirrors, none edge-on.
+  const nlohmann::json off =
+      nlohmann::json::parse(run(with(with(with(with(args, "--at"), "100"), "0"), "--json")).out);
+  EXPECT_EQ(off["solutions"].size(), 2u);
+  EXPECT_EQ(off["mirror_candidates_behind_eye"], 2);
+  EXPECT_EQ(off["edge_on_at_front_pixel"], 0);
+  // The general case's usual words where both planes are seen.
+  const CliResult both = run(with(with(with(args, "--at"), "100"), "0"));
+  EXPECT_EQ(both.out.rfind("2 solutions (general case: two planes with two motions make this "
+                           "same instantaneous flow; only the later frames tell them apart)\n",
+                           0),
+            0u)
+      << both.out;
+}
+
+// The one solution of translation-along-normal stands for two that differ by up to 6.3e-5
+// rad, and the text says so.
+TEST(ExplainCommand, TranslationAlongTheNormalSaysHowNarrowItsToleranceIs) {
+  PlanePose pose;
+  pose.point = Vec3(0.1, 0.0, 2.0);
+  pose.normal = Vec3(0.3, 0.2, 1.0);
+  RigidMotion motion;
+  const Vec3 n = glm::normalize(pose.normal);
+  const Vec3 across = glm::normalize(glm::cross(n, Vec3(0.0, 1.0, 0.0)));
+  const std::string words = "V is parallel to the normal to within 6.3e-5 rad";
+  for (const double phi : {5e-5, 8e-5}) {  // angle between V and N, radians
+    motion.velocity = 0.4 * (std::cos(phi) * n + std::sin(phi) * across);
+    auto args =
+        explain_args(planar_flow_coefficients(make_camera(500.0, 640, 480), pose, motion), 500.0);
+    args.pop_back();  // text, not --json
+    const CliResult t = run(args);
+    ASSERT_EQ(t.code, 0) << t.err;
+    if (phi < 6.3e-5) {
+      EXPECT_NE(t.out.find("1 solution (degenerate: translation-along-normal: " + words),
+                std::string::npos)
+          << t.out;
+    } else {
+      EXPECT_EQ(t.out.rfind("2 solutions (general case", 0), 0u) << t.out;
+    }
+  }
 }
 
 TEST(ExplainCommand, FlowExplainRunsTheRoundTripAndPlaysBothForward) {

@@ -53,6 +53,24 @@ TEST(Messages, LargeWholeNumbersNameTheOptionAndItsRange) {
             "oflab-cli make-scene: --cubes: 2.14748e+09 is outside 1..20000 cubes\n");
 }
 
+// Issue 39, point 12: a command-line number is decimal ("0x10" read as 16 before), and a
+// subnormal such as 1e-310 is a finite number that the option's limit judges (it was "not a
+// finite number"); a value too large for a double is still not one.
+TEST(Messages, CommandLineNumbersAreDecimalAndSubnormalsAreFinite) {
+  EXPECT_EQ(refusal({"animate", "--script", "zoom", "--frames", "0x10"}),
+            "oflab-cli animate: --frames: '0x10' is not a decimal number\n");
+  EXPECT_EQ(refusal({"animate", "--script", "zoom", "--frames", "0X1p4"}),
+            "oflab-cli animate: --frames: '0X1p4' is not a decimal number\n");
+  EXPECT_EQ(refusal({"animate", "--script", "zoom", "--frames", "1e-310"}),
+            "oflab-cli animate: --frames: 1e-310 is outside 1..1e+06 frames\n");
+  EXPECT_EQ(refusal({"animate", "--script", "zoom", "--frames", "1e400"}),
+            "oflab-cli animate: --frames: '1e400' is not a finite number\n");
+  const testing::CliResult at =
+      run_cli_captured({"explain", "--coefficients", "16", "0", "0", "0", "0", "0", "0", "0",
+                        "--focal", "500", "--at", "1e-310", "0"});
+  EXPECT_EQ(at.code, 0) << at.err;
+}
+
 TEST(Messages, AViewerScriptWithAZeroUpNamesUp) {
   const fs::path dir = testing::fresh_test_dir("oflab-messages");
   nlohmann::json script =

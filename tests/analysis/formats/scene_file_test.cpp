@@ -246,10 +246,10 @@ TEST(SceneFiles, MalformedViewerScriptsNameTheFileTheSegmentAndTheField) {
       "viewer": {"position": [0,0,5], "look_at": [0,0,0], "up": [0,1,0]}, "segments": )";
   expect_script_error(head + R"([{"frames": 3, "velocity": [0,0,0], "omega": [0,0,0]},
                                  {"frames": 0, "velocity": [0,0,0], "omega": [0,0,0]}]})",
-                      {"segment 1", "'frames'"});
+                      {"segment 2", "'frames'"});
   expect_script_error(head + R"([{"frames": 3, "velocity": [0,"a",0], "omega": [0,0,0]}]})",
-                      {"segment 0", "'velocity'"});
-  expect_script_error(head + R"([{"frames": 3, "velocity": [0,0,0]}]})", {"segment 0", "'omega'"});
+                      {"segment 1", "'velocity'"});
+  expect_script_error(head + R"([{"frames": 3, "velocity": [0,0,0]}]})", {"segment 1", "'omega'"});
   expect_script_error(head + "[]}", {"'segments'"});
   expect_script_error(R"({"camera": {"focal_px": 256, "image": [64, 48]},
       "viewer": {"position": [0,0,5], "look_at": [0,0,5], "up": [0,1,0]},

@@ -82,16 +82,18 @@ TEST(InverseFlow, EverySolutionMapsForwardToTheCoefficientsAndOneIsTheTruth) {
     } else if (c.motion.model == MotionModel::kSpinAboutCentre && c.motion.velocity == Vec3(0.0)) {
       // A spin about the plane's centre P: V = -Omega x P is across the line of sight to P,
       // and the other solution's normal is along V, so its plane is seen exactly edge-on at
-      // P's pixel, the check pixel: left out with its mirror.
+      // P's pixel, the check pixel: counted as edge-on, neither in front nor behind.
       ++edge_on;
       ASSERT_EQ(r.kind, InverseFlowCase::kGeneral) << "case " << i;
       ASSERT_EQ(r.solutions.size(), 1u) << "case " << i;
-      EXPECT_EQ(r.dropped_behind, 3);
+      EXPECT_EQ(r.dropped_behind, 1);
+      EXPECT_EQ(r.edge_on, 1);
     } else {
       ++general;
       ASSERT_EQ(r.kind, InverseFlowCase::kGeneral) << "case " << i;
       ASSERT_EQ(r.solutions.size(), 2u) << "case " << i;
       EXPECT_EQ(r.dropped_behind, 2);
+      EXPECT_EQ(r.edge_on, 0);
     }
     const PlanarMotionSolution want = truth(c);
     double nearest = 1e300;
@@ -272,6 +274,65 @@ TEST(InverseFlow, FrontoParallelPlaneMovingAlongItsNormalIsNamed) {
   EXPECT_EQ(r.solutions[0].normal, Vec3(0.0, 0.0, 1.0));
   EXPECT_NEAR(r.solutions[0].v_over_d.z, -0.1, 1e-15);  // approaching: V3/Z0 = -0.1
   EXPECT_STREQ(inverse_flow_case_name(r.kind), "fronto-parallel-along-normal");
+}
+
+TEST(InverseFlow, ASidewaysTranslationOfAFacingPlaneHasItsOtherSolutionEdgeOnAtTheAxis) {
+  // The plane Z = 2 facing the eye, moving sideways at V = (0.064, 0, 0): tx = f V1 / Z =
+  // 500 * 0.032 = 16 px, every other coefficient 0 (`explain --coefficients 16 0 0 0 0 0 0 0
+  // --focal 500`).
+  PlanarFlowCoefficients k;
+  k.tx = 16.0;
+  const InverseFlowSolutions r = solve_inverse_flow(k, 500.0);
+  EXPECT_EQ(r.kind, InverseFlowCase::kGeneral);
+  ASSERT_EQ(r.solutions.size(), 1u);
+  EXPECT_EQ(r.dropped_behind, 1);  // the facing plane's mirror, Z = -d
+  EXPECT_EQ(r.edge_on, 1);         // the other plane is parallel to the optical axis
+  // Exact zeros, not rounding noise (3.5e-18 before).
+  const PlanarMotionSolution& facing = r.solutions[0];
+  EXPECT_EQ(facing.normal, Vec3(0.0, 0.0, 1.0));
+  EXPECT_NEAR(facing.v_over_d.x, 0.032, 1e-16);
+  EXPECT_EQ(facing.v_over_d.y, 0.0);
+  EXPECT_EQ(facing.v_over_d.z, 0.0);
+  EXPECT_EQ(facing.omega, Vec3(0.0));
+  // Seen from a pixel off the axis, the other solution is there: the plane X = d (normal
+  // along X), moving along the optical axis, with the rotation that keeps the same flow.
+  const InverseFlowSolutions off_axis = solve_inverse_flow(k, 500.0, Vec2(100.0, 0.0));
+  ASSERT_EQ(off_axis.solutions.size(), 2u);
+  EXPECT_EQ(off_axis.edge_on, 0);
+  bool found = false;
+  for (const PlanarMotionSolution& s : off_axis.solutions) {
+    if (std::abs(s.normal.x - 1.0) > 1e-15) continue;
+    found = true;
+    EXPECT_EQ(s.normal.y, 0.0);
+    EXPECT_EQ(s.normal.z, 0.0);
+    EXPECT_NEAR(s.v_over_d.z, 0.032, 1e-16);
+    // By hand: B = [Omega]x + (V/d) N^T must be B13 = tx / f = 0.032 and zero elsewhere.
+    // (V/d) N^T puts 0.032 at B31; [Omega]x has B13 = Omega2 and B31 = -Omega2, so
+    // Omega = (0, 0.032, 0).
+    EXPECT_EQ(s.omega.x, 0.0);
+    EXPECT_NEAR(s.omega.y, 0.032, 1e-16);
+    EXPECT_EQ(s.omega.z, 0.0);
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(InverseFlow, TranslationAlongTheNormalIsNamedWithin63MicroradiansOnly) {
+  // V at angle phi from a tilted plane's normal, built from the angle (not from the solver's
+  // eigenvalues): one solution up to kInverseFlowAngleTolerance = 2 sqrt(1e-9), two beyond.
+  EXPECT_NEAR(kInverseFlowAngleTolerance, 2.0 * std::sqrt(kInverseFlowTolerance), 1e-18);
+  FlowCase c = testing::default_case();
+  c.motion.model = MotionModel::kScrew;
+  c.motion.omega = Vec3(0.05, -0.02, 0.01);
+  const Vec3 n = glm::normalize(c.pose.normal);
+  const Vec3 across = glm::normalize(glm::cross(n, Vec3(0.0, 1.0, 0.0)));
+  for (double phi : {0.0, 3e-5, 6.0e-5, 6.6e-5, 1e-4, 1e-3}) {
+    c.motion.velocity = 0.3 * (std::cos(phi) * n + std::sin(phi) * across);
+    const PlanarFlowCoefficients k = planar_flow_coefficients(c.camera, c.pose, c.motion);
+    const InverseFlowSolutions r = solve_inverse_flow(k, c.camera.focal_px, centre_pixel(c));
+    const bool named = phi <= kInverseFlowAngleTolerance;
+    EXPECT_EQ(r.kind == InverseFlowCase::kTranslationAlongNormal, named) << "phi " << phi;
+    EXPECT_EQ(r.solutions.size(), named ? 1u : 2u) << "phi " << phi;
+  }
 }
 
 TEST(InverseFlow, RefusesNonFiniteInput) {

@@ -127,8 +127,8 @@ TEST(HostileGuiInputs, ASceneTheCliRefusesIsExitTwoWithTheCliMessage) {
   const testing::ChildResult gui = screenshot_of_scene(scene, "walk", dir);
   EXPECT_EQ(gui.code, 2) << gui.err;
   EXPECT_FALSE(fs::exists(dir / "shot.png"));
-  ASSERT_GE(gui.err.size(), why.size()) << gui.err;
-  EXPECT_EQ(gui.err.substr(gui.err.size() - why.size()), why) << gui.err;
+  // The line names the option and the file, then the figure and the limit (issue 39).
+  EXPECT_EQ(gui.err, "oflab: --scene: " + scene.string() + ": " + why);
   EXPECT_EQ(std::count(gui.err.begin(), gui.err.end(), '\n'), 1) << gui.err;
   fs::remove_all(dir);
 }
@@ -195,6 +195,49 @@ TEST(HostileGuiInputs, NonRegularFilesAreRefusedAtOnceWithOneLine) {
       EXPECT_FALSE(fs::exists(dir / "shot.png"));
     }
   }
+  fs::remove_all(dir);
+}
+
+// Lesson names that are paths the file system cannot read (a link to itself, a name of 5000
+// characters, a device, a directory) are refused with exit 2 and one line naming the path
+// and why, as --lesson and as --check-lesson (issue 39, point 5).
+TEST(HostileGuiInputs, LessonPathsThatCannotBeReadAreOneLineNamingThem) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui-lessons");
+  give_children_a_runtime_dir(dir);
+  fs::create_symlink(dir / "loop.json", dir / "loop.json");
+  const std::pair<std::string, std::string> cases[] = {
+      {(dir / "loop.json").string(), "cannot open the file (Too many levels of symbolic links)"},
+      {std::string(5000, 'a'), "cannot open the file (File name too long)"},
+      {"/dev/zero", "is not a regular file (a FIFO, device or socket)"},
+      {dir.string(), "is a directory"}};
+  for (const auto& [path, why] : cases) {
+    for (const std::string option : {"--lesson", "--check-lesson"}) {
+      const testing::ChildResult r =
+          testing::run_child(OFLAB_GUI_BINARY, {option, path, "--size", "640", "480"}, dir,
+                             testing::kHostileAddressSpace, testing::kHostileTimeLimitSeconds);
+      EXPECT_EQ(r.code, 2) << option << " " << path.substr(0, 80) << ": " << r.err;
+      EXPECT_EQ(r.err, "oflab: " + option + ": " + path + ": " + why + "\n");
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// A session whose texture cannot be read is refused naming the session file, the field and
+// the texture's own problem (issue 39, point 12).
+TEST(HostileGuiInputs, ASessionsUnreadableTextureNamesTheSession) {
+  const fs::path dir = testing::fresh_test_dir("oflab-hostile-gui-session");
+  give_children_a_runtime_dir(dir);
+  const fs::path session = dir / "s.json";
+  std::ofstream(session) << R"({"format": "oflab-session", "version": 2, "texture": "none.png"})";
+  const testing::ChildResult r =
+      testing::run_child(OFLAB_GUI_BINARY,
+                         {"--session", session.string(), "--screenshot",
+                          (dir / "shot.png").string(), "--size", "640", "480"},
+                         dir, testing::kHostileAddressSpace, testing::kHostileTimeLimitSeconds);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("oflab: --session: " + session.string() + ": texture: none.png: ", 0), 0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   fs::remove_all(dir);
 }
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "formats/datasets.h"
 #include "lessons/lesson_player.h"
 #include "lessons/lessons.h"
 #include "player/engine_claims.h"
@@ -55,6 +56,25 @@ std::string lesson_file(const std::string& name, const std::string& claim) {
   return file.string();
 }
 
+// A lesson file "NAME.json" in a fresh folder with `state` and `steps` (JSON text).
+std::string lesson_with_steps(const std::string& name, const std::string& state,
+                              const std::string& steps) {
+  const fs::path dir = fs::temp_directory_path() / ("oflab-lesson-cli-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path file = dir / (name + ".json");
+  std::ofstream(file) << R"({"format": "oflab-lesson", "version": 1, "name": ")" << name
+                      << R"(", "order": 99, "title": "T", "narrative": "n", "state": )" << state
+                      << R"(, "steps": )" << steps << "}";
+  return file.string();
+}
+
+// A refusal as the issue asks: exit 2 and one line (ending in a newline) holding `needle`.
+void expect_one_line_refusal(const CliRun& r, const std::string& needle) {
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+}
+
 TEST(LessonCommand, ListsEveryLesson) {
   const CliRun r = lesson({"list"});
   EXPECT_EQ(r.code, 0) << r.err;
@@ -97,6 +117,67 @@ TEST(LessonCommand, ALessonFileWithAnUnknownKindIsRefusedAtReadTime) {
   EXPECT_NE(misspelt.err.find("misspelt.json: step 1, claim 1: field 'at_mots': unknown field"),
             std::string::npos)
       << misspelt.err;
+}
+
+TEST(LessonCommand, AnUnknownOfOrAnEmptyRangeIsRefusedAtReadTimeNotMeasured) {
+  // Refused by the claim-kind registry when the file is read: never "measured nan".
+  const CliRun of = lesson({"check", lesson_file("unknown-of", R"({"says": "x",
+      "claim": "max_error", "of": "afine", "at_most": 1})")});
+  expect_one_line_refusal(
+      of, "unknown-of.json: step 1, claim 1: field 'of': 'afine' is neither engine nor a reuse");
+  EXPECT_EQ(of.out.find("nan"), std::string::npos) << of.out;
+  const CliRun range = lesson({"check", lesson_file("empty-range", R"({"says": "x",
+      "claim": "max_error", "of": "engine", "at_least": 2, "at_most": 1})")});
+  expect_one_line_refusal(range,
+                          "empty-range.json: step 1, claim 1: field 'at_least': more than at_most");
+  EXPECT_EQ(range.out.find("nan"), std::string::npos) << range.out;
+}
+
+TEST(LessonCommand, ALessonPathThatCannotBeReadIsAOneLineRefusalNamingIt) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("oflab-lesson-path-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  fs::create_symlink(dir / "loop.json", dir / "loop.json");  // a link to itself
+  const std::string loop = (dir / "loop.json").string();
+  expect_one_line_refusal(lesson({"state", loop}),
+                          loop + ": cannot open the file (Too many levels of symbolic links)");
+  const std::string long_name(5000, 'a');
+  expect_one_line_refusal(lesson({"check", long_name}),
+                          ": cannot open the file (File name too long)");
+  expect_one_line_refusal(lesson({"state", "/dev/zero"}),
+                          "/dev/zero: is not a regular file (a FIFO, device or socket)");
+  expect_one_line_refusal(lesson({"state", dir.string()}), dir.string() + ": is a directory");
+  // A plain word that names nothing is still an unknown lesson.
+  expect_one_line_refusal(lesson({"state", "no-such-lesson"}), "unknown lesson 'no-such-lesson'");
+  fs::remove_all(dir);
+}
+
+TEST(LessonCommand, AStepFrameBeyondWhatPlaysIsRefusedNamingTheFileTheStepAndTheField) {
+  // The zoom script plays 90 frames: frames 0 .. 89.
+  const std::string file = lesson_with_steps("far-frame", R"({"script": "zoom"})",
+                                             R"([{"say": "s", "do": {"frame": 89}},
+                                                 {"say": "t", "do": {"frame": 1000000}}])");
+  EXPECT_EQ(lesson({"state", file, "--step", "1"}).code, 0);
+  expect_one_line_refusal(lesson({"state", file, "--step", "2"}),
+                          "far-frame.json: step 2: field 'do.frame': 1000000 is beyond the last "
+                          "frame, 89, of what plays");
+}
+
+TEST(LessonCommand, AFileTheLessonNamesIsFoundBesideItAndItsProblemNamesTheLesson) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("oflab-lesson-beside-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  fs::copy_file(default_texture_path(), dir / "tex.png", fs::copy_options::overwrite_existing);
+  const std::string beside = lesson_with_steps("beside", R"({"texture": "tex.png"})", "[]");
+  fs::rename(beside, dir / "beside.json");
+  const CliRun r = lesson({"state", (dir / "beside.json").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["state"]["texture"], (dir / "tex.png").string());
+  // A texture that is nowhere: the message starts with the lesson's file, then the field.
+  const std::string missing =
+      lesson_with_steps("missing-texture", R"({"texture": "none.png"})", "[]");
+  expect_one_line_refusal(lesson({"state", missing}), "missing-texture.json: texture: none.png");
+  fs::remove_all(dir);
 }
 
 }  // namespace
