@@ -268,8 +268,9 @@ void RunOutput::apply_to(RunOptions& options, const SourceKind& kind) const {
   if (!*csv) throw FileWriteError("'" + shown + "': cannot create the file");
   // The header waits for the first frame, which says whether the rows carry hole pixels.
   options.on_record = [csv = csv, shown, header = kind.write_csv_header, row = kind.write_csv_row,
+                       extra = kind.hole_extra_columns,
                        first = true](const FrameRecord& record) mutable {
-    if (first) write_csv_header_for(*csv, header, record.frame.reports_holes);
+    if (first) write_csv_header_for(*csv, header, record.frame.reports_holes, extra);
     first = false;
     row(*csv, record);
     // A full disk shows when the stream's buffer is written: the run stops there.

@@ -41,6 +41,18 @@ SceneSettings read_scene_settings(const CliArgs& a) {
   return s;
 }
 
+RunSource read_scene_source(const CliArgs& a) {
+  RunSource source;
+  source.viewer = read_viewer_script_option(a);
+  source.scene = std::make_shared<const Scene>(read_scene_option(a));
+  source.settings = read_scene_settings(a);
+  // The scene's content quality unless --quality says otherwise.
+  if (!a.has("--quality") && source.scene->content_quality > 0) {
+    source.settings.engine.content.quality = source.scene->content_quality;
+  }
+  return source;
+}
+
 namespace {
 
 void print_scene_summary(const AnimationRun& run, const std::string& scene,
@@ -58,8 +70,14 @@ void print_scene_summary(const AnimationRun& run, const std::string& scene,
       << "  hidden " << s.hidden << " (" << percent(s.hidden, total)
       << "%, not updated: " << std::setprecision(0) << s.hidden_area_px
       << " px of polygon image left unwarped)\n"
-      << "  clipped at the near plane or guard band " << s.clipped << "\n"
-      << std::setprecision(3) << "  median frame time: engine " << s.median_frame_ms
+      << "  clipped at the near plane or guard band " << s.clipped << "\n";
+  if (s.reports_holes) {
+    const RerenderCauses& c = s.rerender_causes;
+    out << "  re-rendered polygon-frames: " << c.schedule << " on the cadence, " << c.off_schedule()
+        << " off it (sampling limit " << c.sampling_limit << ", refused " << c.refused
+        << ", no image " << c.no_image << ", clipped " << c.clipped << ")\n";
+  }
+  out << std::setprecision(3) << "  median frame time: engine " << s.median_frame_ms
       << " ms, exact re-render " << s.baseline_median_frame_ms << " ms";
   if (std::isfinite(s.conventional_median_frame_ms)) {
     out << ", conventional (VTK) " << s.conventional_median_frame_ms << " ms";
@@ -74,14 +92,7 @@ void print_scene_summary(const AnimationRun& run, const std::string& scene,
 }
 
 int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  RunSource source;
-  source.viewer = read_viewer_script_option(a);
-  source.scene = std::make_shared<const Scene>(read_scene_option(a));
-  source.settings = read_scene_settings(a);
-  // The scene's content quality unless --quality says otherwise.
-  if (!a.has("--quality") && source.scene->content_quality > 0) {
-    source.settings.engine.content.quality = source.scene->content_quality;
-  }
+  const RunSource source = read_scene_source(a);
   const SceneSettings& settings = source.settings;
   PlayOptions options;
   options.conventional = a.has("--compare-conventional");

@@ -6,6 +6,7 @@
 #include <iosfwd>
 
 #include "cli/cli_args.h"
+#include "runs/source_kinds.h"
 #include "scene/scene_animator.h"
 
 namespace oflab {
@@ -18,5 +19,12 @@ int animate_scene(const CliArgs& args, std::ostream& out, std::ostream& err);
 // The scene settings of the options: the engine's (read_engine_settings), --near,
 // --guard-band (0..16 image sizes) and --no-skip-hidden. Throws UsageError naming the option.
 SceneSettings read_scene_settings(const CliArgs& args);
+
+// The run source of --scene NAME|FILE and --script NAME|FILE with the settings of the options
+// (read_scene_settings), the polygons at the scene's content_quality unless --quality gives
+// one. The one reading of a scene run that `animate` and `compare` share, so the same options
+// give the same run. Throws UsageError naming the option, SceneFileError / ScriptError for
+// bad files.
+RunSource read_scene_source(const CliArgs& args);
 
 }  // namespace oflab

@@ -20,13 +20,9 @@ namespace {
 // The source of the options: a scene and its viewer script with --scene, else a plane's
 // motion script and texture. Sets *kind to the source's kind.
 RunSource read_source(const CliArgs& a, const SourceKind** kind) {
-  RunSource source;
   if (a.has("--scene")) {
-    source.viewer = read_viewer_script_option(a);
-    source.scene = std::make_shared<const Scene>(read_scene_option(a));
-    source.settings = read_scene_settings(a);
     *kind = &source_kind("scene");
-    return source;
+    return read_scene_source(a);  // as animate reads it: the same options, the same run
   }
   for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill",
                              "--cache-angle", "--node-polygons", "--safety-radius"}) {

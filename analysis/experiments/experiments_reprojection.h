@@ -2,10 +2,10 @@
 // "Today's reprojection"): timewarp, one stabilization plane, per-pixel depth and the plane
 // per layer on a fixed cadence, with optic flow's threshold rule (`perspective`) for
 // reference, on every Experiment 2 scene under each of its viewer scripts (translate, zoom,
-// rotate) and on the street: measured error, hole pixels, work, latency; a chart of error
-// against work; the vendors' published figures quoted as theirs. Beside them the
-// dissertation's named rivals: Talisman and Shade et al.'s hierarchical image cache, with the
-// cache's nodes, renders by cause, seams and per-pixel error in a table of their own.
+// rotate), on the street and on the city block: measured error, hole pixels, work, latency;
+// a chart of error against work; the vendors' published figures quoted as theirs. Beside
+// them the dissertation's named rivals: Talisman and Shade et al.'s hierarchical image cache,
+// with the cache's nodes, renders by cause, seams and per-pixel error in a table of their own.
 #pragma once
 
 #include <string>
@@ -40,7 +40,8 @@ struct ReprojectionResult {
 std::vector<const ReusePolicy*> reprojection_policies();
 
 // The Experiment 2 scenes (single-1, two, five-collinear, four-cubes) under translate, zoom
-// and rotate, then the street under walk. Throws what the readers and runs throw.
+// and rotate, then the street under walk and the city block under city-flyby. Throws what
+// the readers and runs throw.
 ReprojectionResult run_reprojection_experiment(
     const ReprojectionSpec& spec, const std::function<void(const std::string&)>& progress);
 

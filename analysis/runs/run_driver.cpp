@@ -41,6 +41,10 @@ class SummaryTotals {
     s_.max_measured_error_px = std::max(s_.max_measured_error_px, f.max_measured_error_px);
     s_.hole_pixels += f.hole_pixels;
     s_.reports_holes = s_.reports_holes || f.reports_holes;
+    const RerenderCauses& c = f.rerender_causes;
+    RerenderCauses& sum = s_.rerender_causes;
+    sum = {sum.schedule + c.schedule, sum.sampling_limit + c.sampling_limit,
+           sum.refused + c.refused, sum.no_image + c.no_image, sum.clipped + c.clipped};
     for (const FrameReport& l : f.layer_reports) {
       if (!l.visible || !std::isfinite(l.measured_error_px)) continue;
       const double excess = l.measured_error_px - l.estimated_error_px;

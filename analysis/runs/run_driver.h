@@ -126,6 +126,8 @@ struct RunSummary {
   // reports them (AnimationFrame::reports_holes: the summaries then carry the total).
   std::int64_t hole_pixels = 0;
   bool reports_holes = false;
+  // The causes of the re-renders, summed over the frames (AnimationFrame::rerender_causes).
+  RerenderCauses rerender_causes;
   // Measured minus estimated error (FrameReport) of the worst visible engine layer report
   // over the run, pixels: at most 0 when the estimates bound the truth; NaN when there was
   // no such report (scene shifting keeps no per-layer books).

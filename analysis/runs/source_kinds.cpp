@@ -26,6 +26,12 @@ Settings with_baseline(Settings settings, bool baseline) {
   return settings;
 }
 
+constexpr char kNoColumns[] = "";
+// The causes of a scene frame's re-renders (AnimationFrame::rerender_causes), in its order.
+constexpr char kRerenderCauseColumns[] =
+    ",rerender_schedule,rerender_sampling_limit,rerender_refused,rerender_no_image,"
+    "rerender_clipped";
+
 // ---- Single plane ----
 
 std::unique_ptr<Animator> make_plane(const RunSource& source, bool baseline) {
@@ -34,9 +40,10 @@ std::unique_ptr<Animator> make_plane(const RunSource& source, bool baseline) {
 }
 
 // A kind's CSV of a run that kept its frames: the header, then a row per frame.
-template <void (*Header)(std::ostream&), void (*Row)(std::ostream&, const FrameRecord&)>
+template <void (*Header)(std::ostream&), void (*Row)(std::ostream&, const FrameRecord&),
+          const char* Extra>
 void write_csv_of(std::ostream& out, const AnimationRun& run) {
-  write_csv_header_for(out, Header, !run.frames.empty() && run.frames.front().reports_holes);
+  write_csv_header_for(out, Header, !run.frames.empty() && run.frames.front().reports_holes, Extra);
   for (std::size_t i = 0; i < run.frames.size(); ++i) {
     Row(out, {run.frames[i], run.psnr_db[i], run.baseline_ms[i], run.conventional_ms[i]});
   }
@@ -93,6 +100,7 @@ nlohmann::json with_budget(nlohmann::json summary, const RunSummary& s) {
   const nlohmann::json budget = budget_json(s);
   if (!budget.is_null()) summary["budget"] = budget;
   if (s.reports_holes) summary["hole_pixels"] = s.hole_pixels;
+
   if (s.cache.active) summary["cache"] = node_cache_json(s.cache);
   return summary;
 }
@@ -168,7 +176,11 @@ void write_scene_csv_row(std::ostream& out, const FrameRecord& record) {
       << r.max_measured_error_px << ',' << record.psnr_db << ',' << record.baseline_ms << ','
       << record.conventional_ms << ',' << r.render_ms << ',' << r.model_work << ','
       << r.max_photometric_error;
-  if (r.reports_holes) out << ',' << r.hole_pixels;
+  if (r.reports_holes) {
+    const RerenderCauses& c = r.rerender_causes;
+    out << ',' << r.hole_pixels << ',' << c.schedule << ',' << c.sampling_limit << ',' << c.refused
+        << ',' << c.no_image << ',' << c.clipped;
+  }
   out << '\n';
 }
 
@@ -221,8 +233,19 @@ nlohmann::json scene_summary_fields(const AnimationRun& run) {
           {"conventional_iou", finite_or_null(s.conventional_iou)}};
 }
 
+// The scene summary; under a policy that reports holes (those on a fixed cadence) also the
+// causes of its re-renders, which say how far it kept its cadence.
 nlohmann::json scene_summary_json(const AnimationRun& run) {
-  return with_budget(scene_summary_fields(run), run.summary);
+  nlohmann::json j = with_budget(scene_summary_fields(run), run.summary);
+  if (run.summary.reports_holes) {
+    const RerenderCauses& c = run.summary.rerender_causes;
+    j["rerender_causes"] = {{"schedule", c.schedule},
+                            {"sampling_limit", c.sampling_limit},
+                            {"refused", c.refused},
+                            {"no_image", c.no_image},
+                            {"clipped", c.clipped}};
+  }
+  return j;
 }
 
 // ---- Scene shifting ----
@@ -270,13 +293,16 @@ nlohmann::json shifting_summary_json(const AnimationRun& run) {
 
 const std::vector<SourceKind>& source_kinds() {
   static const std::vector<SourceKind> kinds = {
-      {"plane", make_plane, play_plane, write_csv_of<write_plane_csv_header, write_plane_csv_row>,
+      {"plane", make_plane, play_plane,
+       write_csv_of<write_plane_csv_header, write_plane_csv_row, kNoColumns>,
        write_plane_csv_header, write_plane_csv_row, plane_summary_json},
-      {"scene", make_scene, play_scene, write_csv_of<write_scene_csv_header, write_scene_csv_row>,
-       write_scene_csv_header, write_scene_csv_row, scene_summary_json},
+      {"scene", make_scene, play_scene,
+       write_csv_of<write_scene_csv_header, write_scene_csv_row, kRerenderCauseColumns>,
+       write_scene_csv_header, write_scene_csv_row, scene_summary_json, false,
+       kRerenderCauseColumns},
       {"scene-shifting", make_shifting, play_shifting,
-       write_csv_of<write_scene_csv_header, write_scene_csv_row>, write_scene_csv_header,
-       write_scene_csv_row, shifting_summary_json, true},
+       write_csv_of<write_scene_csv_header, write_scene_csv_row, kNoColumns>,
+       write_scene_csv_header, write_scene_csv_row, shifting_summary_json, true},
   };
   return kinds;
 }
@@ -357,7 +383,8 @@ void print_savings_and_error(const RunSummary& s, std::ostream& out) {
       << " grey levels\n";
 }
 
-void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool holes) {
+void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool holes,
+                          const char* extra) {
   if (!holes) {
     header(out);
     return;
@@ -366,7 +393,7 @@ void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool
   header(line);
   std::string text = line.str();
   if (!text.empty() && text.back() == '\n') text.pop_back();
-  out << text << ",hole_pixels\n";
+  out << text << ",hole_pixels" << extra << "\n";
 }
 
 }  // namespace oflab

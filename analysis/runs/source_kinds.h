@@ -64,12 +64,18 @@ struct SourceKind {
   // animate --mode scene-shifting`); false when the inputs choose it (a motion script: the
   // plane; a scene: the scene animator under the policy of the mode).
   bool selected_by_mode = false;
+  // The columns the kind's rows add after hole_pixels (with a leading comma; "" for none):
+  // the scene's causes of its re-renders (AnimationFrame::rerender_causes), which say per
+  // frame why a policy on a fixed cadence did not keep it.
+  const char* hole_extra_columns = "";
 };
 
 // Writes a kind's CSV header (`header`, one of SourceKind::write_csv_header); with `holes`
-// (AnimationFrame::reports_holes) the line gets a last column, hole_pixels, which the kinds'
-// rows then fill. Without holes the header is the kind's own, byte for byte.
-void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool holes);
+// (AnimationFrame::reports_holes) the line gets the column hole_pixels and then `extra`
+// (SourceKind::hole_extra_columns), which the kinds' rows then fill. Without holes the
+// header is the kind's own, byte for byte.
+void write_csv_header_for(std::ostream& out, void (*header)(std::ostream&), bool holes,
+                          const char* extra = "");
 
 // The kinds, in the order above.
 const std::vector<SourceKind>& source_kinds();

@@ -55,6 +55,23 @@ struct NodeCacheFrame {
   std::int64_t error_pixels = 0;
 };
 
+// Why the layers re-rendered in a frame were re-rendered, one cause per layer-frame at level
+// re-render (the scene engine counts them; their sum is AnimationFrame::levels[kRerender]):
+// the policy's own schedule (its rule, or its cadence: frame 0 and every cadence-th frame of
+// the layer; a per-pixel depth warp's render frames), or against it: the warp would have
+// magnified the cache beyond the sampling limit, a warp was refused (beyond its range), the
+// layer had no image to warp (it came into view, or back after being hidden), or it reaches
+// in front of the near plane or beyond the guard band (clipped: rendered exactly every frame
+// it is). A policy on a fixed cadence keeps it exactly when the last four are zero.
+struct RerenderCauses {
+  int schedule = 0;
+  int sampling_limit = 0;
+  int refused = 0;
+  int no_image = 0;
+  int clipped = 0;
+  int off_schedule() const { return sampling_limit + refused + no_image + clipped; }
+};
+
 // What an animator did in one frame, in terms every animator shares. Fields that do not
 // apply to an animator stay zero (e.g. culling counts for a single plane).
 struct AnimationFrame {
@@ -98,6 +115,9 @@ struct AnimationFrame {
   BudgetReport budget;
   // The hierarchical image cache's nodes (inactive for every other policy).
   NodeCacheFrame cache;
+  // The causes of this frame's re-renders (the scene engine; zero for the other animators
+  // and the hierarchical cache, whose nodes count their own).
+  RerenderCauses rerender_causes;
   std::string note;  // why the frame is special, empty when it is not
 
   int culled() const { return back_facing + outside_frustum; }

@@ -7,10 +7,22 @@
 namespace oflab {
 namespace {
 
-// First integer n with n + 0.5 >= t, clamped to [lo, hi] before conversion to int, so
-// that huge or infinite coordinates cannot overflow.
+// A coordinate within rounding of a pixel centre (kTieTolerance, relative to its size) is
+// taken as on the centre. Two polygons sharing an edge compute it from their own vertices
+// (clipped, transformed), which may differ in the last bits: on an edge through a pixel
+// centre one could round the crossing up and the other down, and then neither would
+// cover the centre. On the centre exactly, the half-open rule gives it to exactly one.
+constexpr double kTieTolerance = 1e-9;
+
+double snapped_to_centre(double t) {
+  const double centre = std::floor(t) + 0.5;
+  return std::abs(t - centre) <= kTieTolerance * std::max(1.0, std::abs(t)) ? centre : t;
+}
+
+// First integer n with n + 0.5 >= t (t snapped to a centre within rounding), clamped to
+// [lo, hi] before conversion to int, so that huge or infinite coordinates cannot overflow.
 int first_centre_at_or_after(double t, int lo, int hi) {
-  const double n = std::ceil(t - 0.5);
+  const double n = std::ceil(snapped_to_centre(t) - 0.5);
   if (!(n > lo)) return lo;  // also catches NaN
   if (n >= hi) return hi;
   return static_cast<int>(n);

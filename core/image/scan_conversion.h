@@ -9,7 +9,10 @@
 //     x_left(c.y) <= c.x < x_right(c.y)  (the polygon's crossings of the line y = c.y),
 // a half-open "top-left" rule: two polygons sharing an edge never both cover a pixel.
 // Crossings are evaluated directly from the edge's end points for every row (no
-// accumulated increments), so the rule holds up to one rounding of the crossing.
+// accumulated increments), and a crossing or vertex y within 1e-9 (relative) of a pixel
+// centre is taken as on it: two polygons whose shared edge passes through pixel centres
+// (a BSP split, a clipped edge) may compute it from vertices differing in the last bits,
+// and would otherwise both round away from the centre and leave it uncovered.
 #pragma once
 
 #include "image/polygon.h"

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace oflab {
@@ -100,6 +101,13 @@ double node_angular_error(const CacheQuad& quad, const std::array<Vec3, 8>& corn
     largest = std::max(largest, angular_error(eye, p, point_on_quad(quad, p)));
   }
   return largest;
+}
+
+double angle_in_pixels(const Camera& camera, const Vec3& p, double angle) {
+  const double phi = std::atan2(std::hypot(p.x, p.y), p.z);
+  constexpr double kRightAngle = 1.57079632679489661923;
+  if (phi + angle >= kRightAngle) return std::numeric_limits<double>::infinity();
+  return camera.focal_px * (std::tan(phi + angle) - std::tan(phi));
 }
 
 double safety_radius(const CacheQuad& quad, const std::array<Vec3, 8>& corners, double threshold) {

@@ -32,6 +32,7 @@
 #include <array>
 #include <vector>
 
+#include "flow/camera.h"
 #include "flow/geometry.h"
 #include "scene/bsp_tree.h"
 
@@ -85,6 +86,16 @@ double angular_error(const Vec3& eye, const Vec3& p, const Vec3& shown);
 // from `eye`. Precondition: every corner has quad_depth > 0.
 double node_angular_error(const CacheQuad& quad, const std::array<Vec3, 8>& corners,
                           const Vec3& eye);
+
+// The image size of an angular error at a point: the largest distance, pixels, between the
+// projection of `p` (viewer frame, Z > 0) and the projection of any ray within `angle`
+// radians of the ray to p. With phi the angle between that ray and the optical axis, the rays
+// within `angle` project to an ellipse whose long axis runs from f tan(phi - angle) to
+// f tan(phi + angle) through p's projection; its farthest point from p's projection is the
+// outer end, so the size is f (tan(phi + angle) - tan(phi)): f tan(angle) on the axis, about
+// f angle / cos^2(phi) off it. Infinite when phi + angle reaches pi / 2 (the error may leave
+// the image plane). Precondition: p.z > 0, 0 <= angle < pi / 2.
+double angle_in_pixels(const Camera& camera, const Vec3& p, double angle);
 
 // The radius of the conservative safety sphere around quad.eye for `threshold` radians
 // (see above), world units; 0 when a corner has quad_depth <= 0.

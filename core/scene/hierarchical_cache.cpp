@@ -89,6 +89,24 @@ ConvexPolygon hull_region(const std::vector<Vec2>& hull, int x0, int y0, int wid
   }
   return region;
 }
+// The part of `region` (pixels of a node image) that `to_frame` maps inside the frame
+// [0, width] x [0, height]: each frame edge's half-plane pulled back through the homography
+// (line l in the frame is H^T l in the image, where H's denominator is positive). Where the
+// denominator is not positive the warp refuses the image anyway, so the region is kept whole.
+ConvexPolygon in_frame_part(const ConvexPolygon& region, const Mat3& to_frame, int width,
+                            int height) {
+  for (const Vec2& v : region.vertices()) {
+    if (!(homography_denominator(to_frame, v) > 0.0)) return region;
+  }
+  // l . (H p) = (H^T l) . p, and the positive denominator keeps the side.
+  const Mat3 pull = glm::transpose(to_frame);
+  ConvexPolygon part = region;
+  for (const Vec3& line : {Vec3(1, 0, 0), Vec3(-1, 0, width), Vec3(0, 1, 0), Vec3(0, -1, height)}) {
+    part = clip_to_half_plane(part, pull * line);
+  }
+  return part;
+}
+
 }  // namespace
 
 std::string cache_settings_problem(const CacheSettings& s) {
@@ -163,6 +181,31 @@ HierarchicalCache::NodeRect HierarchicalCache::node_rect(int k, const ViewerPose
   return r;
 }
 
+bool HierarchicalCache::paint_fragment(int f, const ViewerPose& view, const Camera& sub,
+                                       const ViewFrustum& frustum, Image& image,
+                                       std::int64_t* pixels, double* work, PlacedLayer& placed) {
+  const BspFragment& fragment = bsp_.fragments()[f];
+  const ScenePolygon& polygon = scene_.polygons[fragment.polygon];
+  ViewPolygon piece;
+  for (const Vec3& v : fragment.vertices) piece.points.push_back(to_view(view, v));
+  piece.uv = fragment.uv;
+  clip_to_frustum_in_place(piece, frustum);
+  if (piece.empty()) return false;
+  const Image& texture = scene_.textures[polygon.texture];
+  const glm::ivec2 size(texture.width(), texture.height());
+  LayerContent content = context_.content;
+  content.kind = polygon.content;
+  try {
+    placed = render_clipped_piece(
+        sub, content, textures_[polygon.texture], polygon_pose(polygon, view, size),
+        texel_polygon(polygon_outline(polygon), size), piece, context_.sampling, pixels, work);
+  } catch (const std::invalid_argument&) {
+    return false;  // a sliver beyond the warps' fixed-point range: drawn as nothing
+  }
+  composite_over(image, placed.layer, placed.offset_x, placed.offset_y);
+  return true;
+}
+
 Image HierarchicalCache::paint_fragments(int k, const ViewerPose& view,
                                          const std::vector<char>& culled, const NodeRect& at,
                                          AnimationFrame& report) {
@@ -176,34 +219,33 @@ Image HierarchicalCache::paint_fragments(int k, const ViewerPose& view,
   std::sort(fragments.begin(), fragments.end(),
             [&](int a, int b) { return fragment_position_[a] < fragment_position_[b]; });
   for (int f : fragments) {
-    const BspFragment& fragment = bsp_.fragments()[f];
-    const ScenePolygon& polygon = scene_.polygons[fragment.polygon];
-    if (culled[fragment.polygon]) continue;
-    ViewPolygon piece;
-    for (const Vec3& v : fragment.vertices) piece.points.push_back(to_view(view, v));
-    piece.uv = fragment.uv;
-    clip_to_frustum_in_place(piece, frustum);
-    if (piece.empty()) continue;
-    const Image& texture = scene_.textures[polygon.texture];
-    const glm::ivec2 size(texture.width(), texture.height());
-    LayerContent content = context_.content;
-    content.kind = polygon.content;
+    const ScenePolygon& polygon = scene_.polygons[bsp_.fragments()[f].polygon];
     PlacedLayer placed;
-    try {
-      placed = render_clipped_piece(sub, content, textures_[polygon.texture],
-                                    polygon_pose(polygon, view, size),
-                                    texel_polygon(polygon_outline(polygon), size), piece,
-                                    context_.sampling, &report.pixels_written, &report.model_work);
-    } catch (const std::invalid_argument&) {
-      continue;  // a sliver beyond the warps' fixed-point range: drawn as nothing
+    if (culled[bsp_.fragments()[f].polygon] ||
+        !paint_fragment(f, view, sub, frustum, image, &report.pixels_written, &report.model_work,
+                        placed)) {
+      continue;
     }
-    composite_over(image, placed.layer, placed.offset_x, placed.offset_y);
     // Which surface each pixel shows: the last fragment painted over it (back to front).
     const int plane = static_cast<int>(s.planes.size());
     s.planes.push_back(
         plane_vector_of(to_view(view, polygon.centre), direction_to_view(view, polygon.front)));
     label_covered(placed.layer.image, placed.offset_x, placed.offset_y, at.width, at.height, plane,
                   s.surface);
+  }
+  return image;
+}
+
+Image HierarchicalCache::exact_frame(const ViewerPose& view, const std::vector<char>& culled) {
+  const ViewFrustum frustum = view_frustum(camera_, context_.near, 1.0);
+  Image image(camera_.width, camera_.height);
+  std::int64_t pixels = 0;
+  double work = 0.0;
+  for (int f : order_) {
+    PlacedLayer placed;
+    if (!culled[bsp_.fragments()[f].polygon]) {
+      paint_fragment(f, view, camera_, frustum, image, &pixels, &work, placed);
+    }
   }
   return image;
 }
@@ -239,30 +281,38 @@ bool HierarchicalCache::warp_node(int k, const ViewerPose& current, AnimationFra
   s.to_frame = h * translation_matrix(s.x0, s.y0);
   WarpOptions options;
   options.sampling = context_.sampling;
+  // Only the part of the image that lands in the frame is warped: the image keeps its whole
+  // region for later frames, the warp gets it clipped to the frame's preimage.
+  const ConvexPolygon region = s.image.polygon;
+  s.image.polygon = in_frame_part(region, s.to_frame, camera_.width, camera_.height);
   try {
     warp_layer_reusing(s.image, s.to_frame, s.shown, options);
   } catch (const std::invalid_argument&) {
+    s.image.polygon = region;
     return false;
   }
+  s.image.polygon = region;
   report.pixels_written += s.shown.stats.pixels_written;
   report.model_work += s.shown.stats.pixels_written * kPerspectiveWarpCost;
   s.reused = true;
   return true;
 }
 
-double HierarchicalCache::vertex_error(int k, const ViewerPose& current) const {
+HierarchicalCache::VertexErrors HierarchicalCache::vertex_errors(int k,
+                                                                 const ViewerPose& current) const {
   const NodeState& s = *states_[k];
-  double largest = 0.0;
+  VertexErrors e;
   for (int f : nodes_[k].fragments) {
     for (const Vec3& v : bsp_.fragments()[f].vertices) {
       const Vec3 exact = to_view(current, v);
       const Vec3 shown = to_view(current, point_on_quad(s.quad, v));
       if (exact.z < context_.near || shown.z < context_.near) continue;
-      largest = std::max(largest, double(glm::length(project_centred(camera_, exact) -
-                                                     project_centred(camera_, shown))));
+      e.measured = std::max(e.measured, double(glm::length(project_centred(camera_, exact) -
+                                                           project_centred(camera_, shown))));
+      e.estimated = std::max(e.estimated, angle_in_pixels(camera_, exact, threshold_));
     }
   }
-  return largest;
+  return e;
 }
 
 std::vector<int> HierarchicalCache::order_nodes(const Vec3& eye, const std::vector<char>& culled) {
@@ -311,7 +361,7 @@ bool HierarchicalCache::update_node(int k, const ViewerPose& current, const Vec3
   NodeCacheFrame& c = report.cache;
   FrameReport r;
   r.frame = report.frame;
-  r.estimated_error_px = c.threshold_px;
+  r.estimated_error_px = 0.0;  // a render; a reuse estimates per vertex below
   const std::int64_t pixels_before = report.pixels_written;
   const double work_before = report.model_work;
   bool render = !s.valid;
@@ -328,7 +378,9 @@ bool HierarchicalCache::update_node(int k, const ViewerPose& current, const Vec3
       ++c.uncacheable;
     } else if (!render) {
       c.max_angle_deg = std::max(c.max_angle_deg, angle * 180.0 / kPi);
-      r.measured_error_px = vertex_error(k, current);
+      const VertexErrors e = vertex_errors(k, current);
+      r.measured_error_px = e.measured;
+      r.estimated_error_px = e.estimated;
     }
   }
   if (render) {
@@ -376,12 +428,12 @@ double HierarchicalCache::frame(const ViewerPose& current, const std::vector<cha
   }
   report.composite_ms += ms_since(t1);
   const auto t2 = Clock::now();
-  measure_pixels(current, drawn, report);
+  measure_pixels(current, drawn, culled, report);
   return ms_since(t2);
 }
 
 void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vector<int>& drawn,
-                                       AnimationFrame& report) {
+                                       const std::vector<char>& culled, AnimationFrame& report) {
   const int w = camera_.width, h = camera_.height;
   front_node_.assign(static_cast<std::size_t>(w) * h, -1);
   for (int k : drawn) {
@@ -399,13 +451,14 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
   }
   const std::vector<int> none;
   double sum = 0.0;
+  std::int64_t candidates = 0;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       const int k = front_node_[i];
       const int p = exact.polygon[i];
       if (k < 0) {
-        report.hole_pixels += p >= 0;
+        candidates += p >= 0;
         continue;
       }
       const std::vector<int>& of = p >= 0 ? nodes_of_polygon_[p] : none;
@@ -433,6 +486,22 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
     }
   }
   c.mean_pixel_error_px = c.error_pixels > 0 ? sum / c.error_pixels : 0.0;
+  if (candidates > 0) report.hole_pixels += count_holes(current, culled);
+}
+
+std::int64_t HierarchicalCache::count_holes(const ViewerPose& current,
+                                            const std::vector<char>& culled) {
+  // The depth sees a polygon wherever its outline is, but a content may be transparent there
+  // (an impostor's facade): a hole is where the exact frame is opaque and no node image is.
+  const Image exact = exact_frame(current, culled);
+  std::int64_t holes = 0;
+  for (int y = 0; y < camera_.height; ++y) {
+    for (int x = 0; x < camera_.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * camera_.width + x;
+      holes += front_node_[i] < 0 && exact.at(x, y).a >= kCoverAlpha;
+    }
+  }
+  return holes;
 }
 
 }  // namespace oflab

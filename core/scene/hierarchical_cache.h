@@ -24,10 +24,19 @@
 // Errors (FrameReport per drawn node, AnimationFrame::cache): a node's measured error is the
 // largest distance, pixels, between the exact projection now of a vertex of its fragments and
 // the projection now of where its image shows that vertex (the vertex's point on the quad);
-// 0 for a node rendered this frame. Its estimated error is the threshold converted to pixels,
-// f tan(angle), so RunSummary::max_excess_px says how far the angular rule lets the error
-// go beyond that. The per-pixel error, holes and overlaps are measured against the exact
-// depth of the frame (render_depth), outside the frame's time.
+// 0 for a node rendered this frame. Its estimated error is the threshold angle converted to
+// pixels at each of those vertices (angle_in_pixels: f tan(angle) on the optical axis, about
+// f angle / cos^2 of the vertex's angle off it), the largest over the vertices, so
+// RunSummary::max_excess_px says how far the angular rule lets the error go beyond the angle
+// it promises at the corners of the node's box (0 for a rendered node). The per-pixel error
+// and overlaps are measured against the exact depth of the frame (render_depth); holes are
+// pixels the exact frame (every fragment rendered from its content, back to front) covers at
+// least half opaque and no node image does, since a content may be transparent inside its
+// polygon (an impostor's facade). All outside the frame's time.
+//
+// Pixel work. A warp writes only the pixels inside the frame (the image's region clipped to
+// the frame's preimage); a render writes the node's whole image, guard band included, as it
+// is kept for later frames.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +46,7 @@
 #include "content/layer_content.h"
 #include "engine/animator.h"
 #include "engine/engine.h"
+#include "engine/exact_render.h"
 #include "image/image.h"
 #include "scene/bsp_tree.h"
 #include "scene/cache_nodes.h"
@@ -109,12 +119,30 @@ class HierarchicalCache {
   NodeRect node_rect(int k, const ViewerPose& view, bool cached) const;
   Image paint_fragments(int k, const ViewerPose& view, const std::vector<char>& culled,
                         const NodeRect& at, AnimationFrame& report);
+  // Fragment f seen from `view`, clipped to `frustum` (of `sub`, the camera of `image`),
+  // rendered from its polygon's content and composited over `image`; adds to *pixels and
+  // *work. False (nothing drawn) when the clipped piece is empty or beyond the warps' range.
+  bool paint_fragment(int f, const ViewerPose& view, const Camera& sub, const ViewFrustum& frustum,
+                      Image& image, std::int64_t* pixels, double* work, PlacedLayer& placed);
+  // The exact frame: every fragment of a polygon not culled, back to front (order_), as a
+  // render of every node would paint it (a diagnostic: its work is not counted).
+  Image exact_frame(const ViewerPose& view, const std::vector<char>& culled);
+  // Pixels where the exact frame is at least half opaque and no node image is (front_node_).
+  std::int64_t count_holes(const ViewerPose& current, const std::vector<char>& culled);
   void render_node(int k, const ViewerPose& view, const std::vector<char>& culled, bool cached,
                    AnimationFrame& report);
   bool warp_node(int k, const ViewerPose& current, AnimationFrame& report);
-  double vertex_error(int k, const ViewerPose& current) const;
+  // Over the vertices of node k's fragments in front of the near plane (as shown and
+  // exactly): the largest distance between a vertex's exact projection now and where the
+  // image shows it (measured), and the largest image size of the threshold angle at a vertex
+  // (angle_in_pixels: estimated), pixels.
+  struct VertexErrors {
+    double measured = 0.0;
+    double estimated = 0.0;
+  };
+  VertexErrors vertex_errors(int k, const ViewerPose& current) const;
   void measure_pixels(const ViewerPose& current, const std::vector<int>& drawn,
-                      AnimationFrame& report);
+                      const std::vector<char>& culled, AnimationFrame& report);
 
   const Scene& scene_;
   Camera camera_;

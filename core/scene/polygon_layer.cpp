@@ -24,6 +24,12 @@ double ms_since(Clock::time_point t0) {
 
 glm::ivec2 texture_size(const Image& texture) { return {texture.width(), texture.height()}; }
 
+// True in a frame whose re-renders are all the schedule's: frame 0, and every frame in which
+// a per-pixel depth warp renders (it renders every polygon afresh, clipped or not).
+bool scheduled_render_frame(int frame_index, const ReusePolicy& policy) {
+  return frame_index == 0 || policy.frame_warp == FrameWarp::kPerPixelDepth;
+}
+
 }  // namespace
 
 const char* polygon_status_name(PolygonStatus status) {
@@ -178,6 +184,9 @@ void SceneEngine::update_polygon(int index, const ViewerPose& current, Animation
     levels_[index] = Level::kRerender;
     ++report.levels[static_cast<int>(Level::kRerender)];
     ++report.clipped;
+    ++(scheduled_render_frame(frame_index_, *settings_.engine.policy)
+           ? report.rerender_causes.schedule
+           : report.rerender_causes.clipped);
     s.live = false;
     ledger_.applied(Level::kRerender, ms_since(t0), report.pixels_written - before, s.starved);
     report.update_ms += ms_since(t0);
@@ -188,6 +197,9 @@ void SceneEngine::update_polygon(int index, const ViewerPose& current, Animation
     starve(index);
     report.update_ms += ms_since(t0);
     return;
+  }
+  if (r.level == Level::kRerender) {
+    count_rerender_cause(s.candidates.kind == LayerCandidates::Kind::kFresh, r.note, report);
   }
   s.live = true;
   statuses_[index] = PolygonStatus::kAnimated;
@@ -202,6 +214,21 @@ void SceneEngine::update_polygon(int index, const ViewerPose& current, Animation
   if (r.visible)
     report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
   report.update_ms += ms_since(t0);
+}
+
+void SceneEngine::count_rerender_cause(bool fresh, const std::string& note,
+                                       AnimationFrame& report) const {
+  RerenderCauses& c = report.rerender_causes;
+  const auto starts = [&](const char* prefix) { return note.rfind(prefix, 0) == 0; };
+  if (fresh) {
+    ++(scheduled_render_frame(frame_index_, *settings_.engine.policy) ? c.schedule : c.no_image);
+  } else if (starts("sampling limit")) {
+    ++c.sampling_limit;
+  } else if (starts("re-rendered after a refusal")) {
+    ++c.refused;
+  } else {
+    ++c.schedule;
+  }
 }
 
 LayerContent SceneEngine::polygon_content(int polygon) const {

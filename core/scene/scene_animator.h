@@ -173,6 +173,9 @@ class SceneEngine {
   void update_polygon(int polygon, const ViewerPose& current, AnimationFrame& report);
   void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
   void starve(int polygon);
+  // Adds a re-render of a polygon to report.rerender_causes: `fresh` when it had no image
+  // to warp, else by its engine report's note (sampling limit, refusal) or its schedule.
+  void count_rerender_cause(bool fresh, const std::string& note, AnimationFrame& report) const;
   // The engine's content settings with the polygon's own kind of content.
   LayerContent polygon_content(int polygon) const;
 

@@ -115,6 +115,35 @@ TEST(CompareCommand, JsonRowsAgreeWithAnimateRunAlone) {
   }
 }
 
+// One reading of a scene run (read_scene_source): the same options give compare and animate
+// the same run, the scene's own content quality included (the street's is 3).
+TEST(CompareCommand, SceneRowsAreAnimateRunAloneAtTheScenesContentQuality) {
+  const std::vector<std::string> common = {
+      "--scene", "street", "--script", "walk", "--frames", "2", "--repeat-timing", "1", "--json"};
+  std::vector<std::string> compare = {"compare", "--policies", "perspective,hierarchical-cache"};
+  compare.insert(compare.end(), common.begin(), common.end());
+  const CliResult r = run(compare);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out).at("policies");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    std::vector<std::string> animate = {"animate", "--mode", row["name"].get<std::string>()};
+    animate.insert(animate.end(), common.begin(), common.end());
+    const CliResult alone = run(animate);
+    ASSERT_EQ(alone.code, 0) << alone.err;
+    const auto a = nlohmann::json::parse(alone.out);
+    EXPECT_DOUBLE_EQ(row["model_work_saved"].get<double>(), a["model_work_saved"].get<double>())
+        << row["name"];
+    EXPECT_DOUBLE_EQ(row["work_saved"].get<double>(), a["work_saved"].get<double>());
+    EXPECT_DOUBLE_EQ(row["max_measured_error_px"].get<double>(),
+                     a["max_measured_error_px"].get<double>());
+  }
+  // Control: at quality 1 the same run's work differs, so the check above can fail.
+  compare.insert(compare.end(), {"--quality", "1"});
+  const auto low = nlohmann::json::parse(run(compare).out).at("policies");
+  EXPECT_NE(low[0]["model_work_saved"].get<double>(), rows[0]["model_work_saved"].get<double>());
+}
+
 // The seam with layer contents: compare takes --content and --quality as animate does, and
 // its model_work_saved is animate's for the same policy and content.
 TEST(CompareCommand, ContentAndQualityReachEveryPolicyAndModelWorkMatchesAnimate) {

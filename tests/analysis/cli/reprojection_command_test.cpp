@@ -44,6 +44,11 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   return rows;
 }
 
+// The index of the column named `name` in a CSV header (header.size() when absent).
+std::size_t column(const std::vector<std::string>& header, const std::string& name) {
+  return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+}
+
 TEST(Reprojection, TimewarpIsExactWhenTheViewerRolls) {
   const nlohmann::json j = animate_scene("four-cubes", "rotate", "timewarp");
   EXPECT_LE(j["max_measured_error_px"].get<double>(), 0.5);
@@ -81,11 +86,12 @@ TEST(Reprojection, SummariesAndThePerFrameCsvCarryHolePixels) {
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const auto rows = read_csv(out + "/frames.csv");
   ASSERT_EQ(rows.size(), 31u);
-  ASSERT_EQ(rows[0].back(), "hole_pixels");
+  const std::size_t hole_column = column(rows[0], "hole_pixels");
+  ASSERT_LT(hole_column, rows[0].size());
   long total = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), rows[0].size());
-    const long holes = std::stol(rows[i].back());
+    const long holes = std::stol(rows[i][hole_column]);
     if ((i - 1) % 4 == 0) EXPECT_EQ(holes, 0) << "a rendered frame, row " << i;
     total += holes;
   }
@@ -103,6 +109,51 @@ TEST(Reprojection, SummariesAndThePerFrameCsvCarryHolePixels) {
   EXPECT_EQ(rows_json[0]["hole_pixels"], 0);
   EXPECT_EQ(rows_json[1]["hole_pixels"].get<long>(), total);
   EXPECT_EQ(rows_json[1]["latency_frames"], 0);
+  std::filesystem::remove_all(dir);
+}
+
+// A policy on a fixed cadence keeps it, or every frame says why not: per row of the CSV the
+// causes add up to the re-rendered polygons; with Delta 1 the cadence is kept exactly (every
+// drawn polygon on even frames, none on odd ones); with the default Delta the re-renders
+// beyond it are the sampling limit's, named frame by frame.
+TEST(Reprojection, EveryReRenderOffTheCadenceIsNamedPerFrame) {
+  const std::filesystem::path dir = testing::fresh_test_dir("oflab-cadence-causes");
+  const std::vector<std::string> causes = {"rerender_schedule", "rerender_sampling_limit",
+                                           "rerender_refused", "rerender_no_image",
+                                           "rerender_clipped"};
+  for (const std::string delta : {"1", "dissertation"}) {
+    const std::string out = (dir / delta).string();
+    const CliResult r = testing::run_cli_captured(
+        {"animate",  "--scene",     "four-cubes", "--script", "rotate",  "--mode",
+         "timewarp", "--cadence",   "2",          "--delta",  delta,     "--frames",
+         "40",       "--out",       out,          "--json",   "--quiet", "--repeat-timing",
+         "1",        "--no-warm-up"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const auto rows = read_csv(out + "/frames.csv");
+    ASSERT_EQ(rows.size(), 41u);
+    const std::size_t rerender = column(rows[0], "rerender"), drawn = column(rows[0], "drawn");
+    long sampling_limit = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      long sum = 0;
+      for (const std::string& cause : causes) sum += std::stol(rows[i].at(column(rows[0], cause)));
+      EXPECT_EQ(sum, std::stol(rows[i].at(rerender))) << "delta " << delta << ", row " << i;
+      sampling_limit += std::stol(rows[i].at(column(rows[0], "rerender_sampling_limit")));
+      if (delta == "1") {
+        const long expected = (i - 1) % 2 == 0 ? std::stol(rows[i].at(drawn)) : 0;
+        EXPECT_EQ(std::stol(rows[i].at(rerender)), expected) << "row " << i;
+      }
+    }
+    const nlohmann::json& c = j.at("rerender_causes");
+    EXPECT_EQ(c["sampling_limit"].get<long>(), sampling_limit);
+    if (delta == "1") {
+      EXPECT_EQ(c["sampling_limit"].get<long>() + c["refused"].get<long>() +
+                    c["no_image"].get<long>() + c["clipped"].get<long>(),
+                0);
+    } else {
+      EXPECT_GT(sampling_limit, 0);  // the default Delta's cache is magnified past the limit
+    }
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -69,6 +69,37 @@ TEST(ScanConversion, PolygonsSharingAnEdgeCoverEveryPixelOnce) {
   }
 }
 
+// Two polygons whose shared edge passes through pixel centres, each computed from its own
+// vertices: they differ by a rounding (1e-13 px), the left one's just short of the centres
+// and the right one's just past them. Without the tie snap the right one would leave the
+// centres on its left edge and the left one would leave them to it (a one-pixel gap); with
+// it every pixel is covered once. Control: a real offset (1e-6 px) is no tie and moves the
+// column to the polygon that truly covers its centres.
+TEST(ScanConversion, SharedEdgesThroughCentresComputedFromDifferentVerticesLeaveNoGap) {
+  for (const double x : {10.5, 552.5, 727.5}) {
+    for (const double lean : {0.0, 2.0}) {  // vertical, and slanted through centres
+      const double w = x + 20.0;
+      const ConvexPolygon left = ConvexPolygon::from_vertices(
+          {Vec2(0, 0), Vec2(x - 1e-13, 0), Vec2(x + 8.0 * lean - 1e-13, 8), Vec2(0, 8)});
+      const ConvexPolygon right = ConvexPolygon::from_vertices(
+          {Vec2(x + 1e-13, 0), Vec2(w, 0), Vec2(w, 8), Vec2(x + 8.0 * lean + 1e-13, 8)});
+      const std::vector<int> a = coverage_counts(left, static_cast<int>(w), 8);
+      const std::vector<int> b = coverage_counts(right, static_cast<int>(w), 8);
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_EQ(a[i] + b[i], 1) << "edge at " << x << ", lean " << lean << ", pixel " << i;
+      }
+      // The centre on the edge goes to the right-hand polygon (x_left <= c.x).
+      if (lean == 0.0) {
+        EXPECT_EQ(b[static_cast<std::size_t>(x - 0.5)], 1);
+      }
+    }
+    const ConvexPolygon short_of = ConvexPolygon::rectangle(0.0, 0.0, x - 1e-6, 8.0);
+    EXPECT_EQ(
+        coverage_counts(short_of, static_cast<int>(x + 20.0), 8)[static_cast<std::size_t>(x - 0.5)],
+        0);
+  }
+}
+
 TEST(ScanConversion, HugeAndDegeneratePolygonsAreClampedOrEmpty) {
   const ConvexPolygon huge = ConvexPolygon::rectangle(-1e300, -1e300, 1e300, 1e300);
   const std::vector<int> counts = coverage_counts(huge, 7, 5);
