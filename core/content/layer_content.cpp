@@ -370,10 +370,19 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   const LayerBox box = prepare_layer(region, out);
   const PlaneFrame f(camera, pose);
   const Vec3 light = glm::normalize(content.light);
+  // The faces' rasters in bands of faces on the worker threads, kept in face order.
+  const std::vector<FacadeFace> all = facade_faces(pose.size, content.quality);
+  std::array<std::vector<FaceRaster>, kMaxBands> banded;
+  for_each_band(static_cast<int>(all.size()), 64, [&](int band, int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      FaceRaster raster;
+      if (face_raster(all[static_cast<std::size_t>(k)], f, light, box, out.layer.polygon, raster))
+        banded[static_cast<std::size_t>(band)].push_back(std::move(raster));
+    }
+  });
   std::vector<FaceRaster> faces;
-  for (const FacadeFace& face : facade_faces(pose.size, content.quality)) {
-    FaceRaster raster;
-    if (face_raster(face, f, light, box, out.layer.polygon, raster)) faces.push_back(raster);
+  for (std::vector<FaceRaster>& b : banded) {
+    for (FaceRaster& r : b) faces.push_back(std::move(r));
   }
   std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
   // Bands of rows on the worker threads (core/image/thread_pool.h): every band draws every
