@@ -38,14 +38,22 @@ void play_pass(const std::shared_ptr<const Scene>& scene, const ViewerScript& wa
   for (int r = 0; r < kRuns; ++r) {
     SceneSettings settings;
     settings.engine.policy = &reuse_policy(kRerender[r] ? "rerender" : "perspective");
+    // The scene's own content detail, as `oflab-cli animate --scene street` plays it.
+    if (scene->content_quality > 0) settings.engine.content.quality = scene->content_quality;
     runs[r] = make_scene_animator(scene, walk, settings);
   }
-  for (std::size_t frame = 0; frame < walk.frames.size(); ++frame) {
+  // Blocks of frames in turn, so that the thread counts meet the same load: the pool is
+  // resized between blocks, not between frames (a worker just made starts cold).
+  constexpr std::size_t kBlock = 10;
+  for (std::size_t first = 0; first < walk.frames.size(); first += kBlock) {
+    const std::size_t last = std::min(first + kBlock, walk.frames.size());
     for (int r = 0; r < kRuns; ++r) {
       if (r == 0 || kThreads[r] != kThreads[r - 1]) set_worker_threads(kThreads[r]);
-      const AnimationFrame f = frame == 0 ? runs[r]->start() : runs[r]->advance();
-      benchmark::DoNotOptimize(runs[r]->image().pixels().data());
-      if (frame > 0) ms[r].push_back(f.time_ms);
+      for (std::size_t frame = first; frame < last; ++frame) {
+        const AnimationFrame f = frame == 0 ? runs[r]->start() : runs[r]->advance();
+        benchmark::DoNotOptimize(runs[r]->image().pixels().data());
+        if (frame > 0) ms[r].push_back(f.time_ms);
+      }
     }
   }
   set_worker_threads(1);

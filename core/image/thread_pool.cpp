@@ -3,6 +3,8 @@
 #include "image/thread_pool.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -20,12 +22,20 @@ struct Job {
   const std::function<void(int, int, int)>* body = nullptr;
   int rows = 0;
   int bands = 0;
-  int next = 0;
-  int unfinished = 0;
-  std::vector<std::exception_ptr> errors;
+  int next = 0;                            // guarded by the pool's mutex
+  std::atomic<int> unfinished{0};          // written under the mutex, read by the waiting caller
+  std::vector<std::exception_ptr> errors;  // each band writes its own
 };
 
 void run_band(const std::function<void(int, int, int)>& body, int band, int begin, int end);
+
+using Clock = std::chrono::steady_clock;
+
+// How long a worker watches for the next loop before it sleeps, and a caller for the last
+// bands before it sleeps: a frame runs many short loops one after another, and a thread
+// woken from sleep on a busy machine may wait a whole time slice for a core.
+constexpr auto kWorkerSpin = std::chrono::microseconds(200);
+constexpr auto kCallerSpin = std::chrono::microseconds(500);
 
 class Pool {
  public:
@@ -38,7 +48,10 @@ class Pool {
     threads_ = 1;
     stopping_ = false;
     try {
-      for (int i = 1; i < count; ++i) workers_.emplace_back([this] { work(); });
+      // A worker starts from the jobs posted before it was made, so it cannot miss one
+      // posted before it first runs.
+      const unsigned posted = posted_.load();
+      for (int i = 1; i < count; ++i) workers_.emplace_back([this, posted] { work(posted); });
       threads_ = count;
     } catch (const std::system_error&) {
       stop();  // no threads here: every band on the caller
@@ -50,15 +63,19 @@ class Pool {
   bool run(Job& job) {
     std::unique_lock<std::mutex> busy(busy_, std::try_to_lock);
     if (!busy.owns_lock()) return false;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      job_ = &job;
-    }
-    wake_.notify_all();
-    take_bands(job);
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return job.unfinished == 0; });
-    job_ = nullptr;
+    job_ = &job;
+    posted_.fetch_add(1, std::memory_order_release);
+    wake_.notify_all();
+    take_bands(job, lock);
+    lock.unlock();
+    const auto until = Clock::now() + kCallerSpin;
+    while (job.unfinished.load(std::memory_order_acquire) > 0 && Clock::now() < until) {
+      std::this_thread::yield();
+    }
+    lock.lock();
+    done_.wait(lock, [&] { return job.unfinished.load() == 0; });
+    job_ = nullptr;  // under the mutex: no worker reaches the job after this
     return true;
   }
 
@@ -73,21 +90,23 @@ class Pool {
     workers_.clear();
   }
 
-  void work() {
-    std::unique_lock<std::mutex> lock(mutex_);
+  void work(unsigned seen) {
     for (;;) {
-      wake_.wait(lock, [&] { return stopping_ || (job_ && job_->next < job_->bands); });
+      const auto until = Clock::now() + kWorkerSpin;
+      while (posted_.load(std::memory_order_acquire) == seen && Clock::now() < until) {
+        std::this_thread::yield();
+      }
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || posted_.load() != seen; });
       if (stopping_) return;
-      Job& job = *job_;
-      lock.unlock();
-      take_bands(job);
-      lock.lock();
+      seen = posted_.load();
+      if (job_) take_bands(*job_, lock);
     }
   }
 
   // Takes the job's next band until none is left; the last to finish wakes the caller.
-  void take_bands(Job& job) {
-    std::unique_lock<std::mutex> lock(mutex_);
+  // `lock` holds the mutex on entry and on return, so the job is alive while it is read.
+  void take_bands(Job& job, std::unique_lock<std::mutex>& lock) {
     while (job.next < job.bands) {
       const int band = job.next++;
       lock.unlock();
@@ -99,15 +118,16 @@ class Pool {
         job.errors[static_cast<std::size_t>(band)] = std::current_exception();
       }
       lock.lock();
-      if (--job.unfinished == 0) done_.notify_all();
+      if (job.unfinished.fetch_sub(1, std::memory_order_acq_rel) == 1) done_.notify_all();
     }
   }
 
   std::mutex busy_;   // held by the one job on the pool
-  std::mutex mutex_;  // guards job_, stopping_ and the job's next and unfinished
+  std::mutex mutex_;  // guards job_, stopping_ and the job's next band
   std::condition_variable wake_;
   std::condition_variable done_;
   Job* job_ = nullptr;
+  std::atomic<unsigned> posted_{0};  // jobs posted so far
   bool stopping_ = false;
   int threads_ = 1;
   std::vector<std::thread> workers_;
@@ -158,7 +178,7 @@ void for_each_band(int rows, int min_rows, const std::function<void(int, int, in
   job.body = &body;
   job.rows = std::max(rows, 0);
   job.bands = bands;
-  job.unfinished = bands;
+  job.unfinished.store(bands);
   job.errors.resize(static_cast<std::size_t>(bands));
   if (bands == 1 || in_band || pool().threads() == 1 || !pool().run(job)) {
     for (int band = 0; band < bands; ++band) {
