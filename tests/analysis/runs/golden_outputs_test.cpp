@@ -160,21 +160,21 @@ TEST_P(Golden, AnimateOutputsAreUnchanged) {
   EXPECT_EQ(csv_text, read_text(fixtures / "frames.csv")) << c.name << ": frames.csv";
 }
 
-// The pixel loops' threads (core/image/thread_pool.h) change nothing but the times: the
-// street's lit facades and walls (every content kind, layers cut into bands) with the exact
-// re-render beside the engine, on 1 thread and on 2.
-TEST(GoldenThreads, TheStreetIsTheSameOnOneAndTwoThreads) {
-  const std::vector<std::string> walk = {"--scene", "street", "--script", "walk", "--frames", "6"};
-  std::vector<std::string> one = walk, two = walk;
-  one.insert(one.end(), {"--threads", "1"});
-  two.insert(two.end(), {"--threads", "2"});
-  const AnimateOutputs a = animate_outputs(one, "street-1"), b = animate_outputs(two, "street-2");
+// The pixel loops' threads (core/image/thread_pool.h) change nothing but the times: four
+// cubes as facade impostors (the lit content whose render is cut into bands of rows and of
+// faces), with the exact re-render beside the engine, on 1 thread and on 2.
+TEST(GoldenThreads, ImpostorCubesAreTheSameOnOneAndTwoThreads) {
+  const auto run = [](const char* frames, const char* threads) {
+    return animate_outputs({"--scene", "four-cubes", "--script", "compound", "--frames", frames,
+                            "--content", "impostor", "--no-warm-up", "--threads", threads},
+                           std::string("cubes-") + frames + "-" + threads);
+  };
+  const AnimateOutputs a = run("6", "1"), b = run("6", "2");
   ASSERT_FALSE(a.summary_text.empty());
   EXPECT_EQ(a.summary_text, b.summary_text);
   EXPECT_EQ(a.csv_text, b.csv_text);
   // Negative control: one frame more is a different run, and the comparison sees it.
-  std::vector<std::string> longer = {"--scene", "street", "--script", "walk", "--frames", "7"};
-  EXPECT_NE(animate_outputs(longer, "street-7").csv_text, a.csv_text);
+  EXPECT_NE(run("7", "2").csv_text, a.csv_text);
 }
 
 INSTANTIATE_TEST_SUITE_P(Runs, Golden, ::testing::ValuesIn(golden_cases()),
