@@ -17,6 +17,7 @@
 #include "content_bench.h"
 #include "engine_bench.h"
 #include "image/warp.h"
+#include "scene_bench.h"
 #include "warp_cases.h"
 #ifdef OFLAB_BENCH_WITH_OPENCV
 #include "opencv_peer.h"
@@ -106,6 +107,7 @@ void register_all() {
 #endif
   register_engine_cases(kRepetitions);
   register_content_cases(kRepetitions);
+  register_scene_cases(1);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "cli/commands.h"
 
+#include <algorithm>
 #include <exception>
 #include <ostream>
 #include <string>
@@ -12,6 +13,7 @@
 #include "flow/motion.h"
 #include "formats/atomic_file.h"
 #include "formats/vtk_export.h"
+#include "image/thread_pool.h"
 #include "image/warp.h"
 #include "runs/run_driver.h"
 #include "runs/source_kinds.h"
@@ -133,7 +135,28 @@ namespace {
 void print_help(std::ostream& out) {
   out << "oflab-cli: headless tools of Optic Flow Lab\n\nCommands:\n";
   for (const Command& c : all_commands()) out << "  " << c.name << "  " << c.summary << "\n";
-  out << "\nRun 'oflab-cli COMMAND --help' for a command's options.\n";
+  out << "\nRun 'oflab-cli COMMAND --help' for a command's options. Every command takes\n"
+         "--threads N: the threads of the pixel loops (1..64; default: the machine's cores).\n";
+}
+
+// Takes `--threads N` (the one option of every command) out of a command's arguments and
+// sets core's worker threads: N, or the machine's cores without it.
+CommandArgs take_threads_option(const CommandArgs& args) {
+  CommandArgs rest;
+  int threads = machine_cores();
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != "--threads") {
+      rest.push_back(args[i]);
+      continue;
+    }
+    std::vector<std::string> option(
+        args.begin() + static_cast<std::ptrdiff_t>(i),
+        args.begin() + static_cast<std::ptrdiff_t>(std::min(i + 2, args.size())));
+    threads = CliArgs(option, {{"--threads", 1}}).integer_in("--threads", limits::kWorkerThreads);
+    ++i;
+  }
+  set_worker_threads(std::min(threads, kMaxWorkerThreads));
+  return rest;
 }
 
 }  // namespace
@@ -145,13 +168,13 @@ int run_cli(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   }
   for (const Command& c : all_commands()) {
     if (args[0] != c.name) continue;
-    const CommandArgs rest(args.begin() + 1, args.end());
-    if (!rest.empty() && (rest[0] == "--help" || rest[0] == "-h")) {
-      out << "usage: " << c.usage << "\n";
+    const CommandArgs given(args.begin() + 1, args.end());
+    if (!given.empty() && (given[0] == "--help" || given[0] == "-h")) {
+      out << "usage: " << c.usage << " [--threads N]\n";
       return 0;
     }
     try {
-      return c.run(rest, out, err);
+      return c.run(take_threads_option(given), out, err);
     } catch (const UsageError& e) {  // bad input, in any command: one line naming the option
       err << "oflab-cli " << c.name << ": " << e.what() << "\n";
       return 2;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "image/scan_conversion.h"
+#include "image/thread_pool.h"
 
 namespace oflab {
 namespace {
@@ -109,6 +110,16 @@ std::vector<Vec2> pixel_samples(int n) {
   return out;
 }
 
+// The tallies of a loop's bands, summed in band order.
+ContentStats sum(const std::array<ContentStats, kMaxBands>& bands) {
+  ContentStats total;
+  for (const ContentStats& b : bands) {
+    total.pixels_written += b.pixels_written;
+    total.work_units += b.work_units;
+  }
+  return total;
+}
+
 double unit_hash(int a, int b) {
   std::uint32_t h =
       static_cast<std::uint32_t>(a) * 73856093u ^ static_cast<std::uint32_t>(b) * 19349663u;
@@ -168,26 +179,33 @@ ContentStats render_shaded(const LayerContent& content, const Camera& camera, co
   const Vec3 plane_vec = plane_vector(pose);
   const Vec3 light = glm::normalize(content.light);
   const std::vector<Vec2> samples = pixel_samples(content.quality);
-  ContentStats stats;
-  ScanConverter scan(out.layer.polygon, box.width, box.height);
-  PixelSpan span;
-  while (scan.next(span)) {
-    Pixel* row = out.layer.image.row(span.y);
-    for (int x = span.x_begin; x < span.x_end; ++x) {
-      Vec3 colour(0.0);
-      int hits = 0;
-      for (const Vec2& s : samples) {
-        const Vec2 p(box.x0 + x + s.x, box.y0 + span.y + s.y);
-        hits += shade_sample(f, plane_vec, texels, light, p, colour) ? 1 : 0;
+  // Bands of rows on the worker threads (core/image/thread_pool.h), each with its tally.
+  std::array<ContentStats, kMaxBands> band_stats{};
+  const int min_rows = std::max(4, 4096 / std::max(1, box.width * content.quality));
+  for_each_band(box.height, min_rows, [&](int band, int begin, int end) {
+    ContentStats& stats = band_stats[static_cast<std::size_t>(band)];
+    ScanConverter scan(out.layer.polygon, box.width, box.height);
+    scan.clip_rows(begin, end);
+    PixelSpan span;
+    while (scan.next(span)) {
+      Pixel* row = out.layer.image.row(span.y);
+      for (int x = span.x_begin; x < span.x_end; ++x) {
+        Vec3 colour(0.0);
+        int hits = 0;
+        for (const Vec2& s : samples) {
+          const Vec2 p(box.x0 + x + s.x, box.y0 + span.y + s.y);
+          hits += shade_sample(f, plane_vec, texels, light, p, colour) ? 1 : 0;
+        }
+        stats.work_units += static_cast<std::int64_t>(samples.size());
+        if (hits == 0) continue;
+        const double coverage = static_cast<double>(hits) / samples.size();
+        const Vec3 c = colour / static_cast<double>(samples.size());  // premultiplied
+        row[x] = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), to_byte(coverage)};
+        ++stats.pixels_written;
       }
-      stats.work_units += static_cast<std::int64_t>(samples.size());
-      if (hits == 0) continue;
-      const double coverage = static_cast<double>(hits) / samples.size();
-      const Vec3 c = colour / static_cast<double>(samples.size());  // premultiplied
-      row[x] = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), to_byte(coverage)};
-      ++stats.pixels_written;
     }
-  }
+  });
+  const ContentStats stats = sum(band_stats);
   out.stats.pixels_written = stats.pixels_written;
   return stats;
 }
@@ -289,43 +307,60 @@ ConvexPolygon clip_to_region(ConvexPolygon polygon, const ConvexPolygon& region)
   return polygon;
 }
 
-// Rasterises one face into the layer with the depth buffer (1/Z, larger is nearer).
-void draw_face(const FacadeFace& face, const PlaneFrame& f, const Vec3& light, const LayerBox& box,
-               const ConvexPolygon& region, std::vector<float>& depth, WarpedLayer& out,
-               ContentStats& stats) {
+// One face as the layer sees it: its pixel shape (layer pixels), flat colour, and 1/Z as an
+// affine function of the pixel (c0 + a x + b y at pixel centres).
+struct FaceRaster {
+  ConvexPolygon shape;
+  Pixel colour;
+  double a = 0.0, b = 0.0, c0 = 0.0;
+};
+
+// The face's raster, or false when it is seen from behind or covers no part of the region.
+bool face_raster(const FacadeFace& face, const PlaneFrame& f, const Vec3& light,
+                 const LayerBox& box, const ConvexPolygon& region, FaceRaster& raster) {
   std::vector<Vec3> world;
   for (const Vec3& c : face.corners) world.push_back(f.point(c.x, c.y, c.z));
   const Vec3 n =
       glm::normalize(face.normal.x * f.right + face.normal.y * f.up + face.normal.z * f.front);
-  if (glm::dot(n, world[0]) >= 0.0) return;  // seen from behind
+  if (glm::dot(n, world[0]) >= 0.0) return false;  // seen from behind
   const std::vector<Vec3> front = clip_near(world, 1e-6);
-  if (front.size() < 3) return;
+  if (front.size() < 3) return false;
   std::vector<Vec2> pixels;
   for (const Vec3& p : front) {
     pixels.emplace_back(f.camera.focal_px * p.x / p.z + f.camera.cx - box.x0,
                         f.camera.focal_px * p.y / p.z + f.camera.cy - box.y0);
   }
-  const ConvexPolygon shape = clip_to_region(make_polygon_unchecked(pixels), region);
-  if (shape.empty()) return;
+  raster.shape = clip_to_region(make_polygon_unchecked(pixels), region);
+  if (raster.shape.empty()) return false;
   Vec3 centre(0.0);
   for (const Vec3& p : world) centre += 0.25 * p;
   const Vec3 c = lit(facade_material(face.part), n, centre, light);
-  const Pixel colour{to_byte(c.r), to_byte(c.g), to_byte(c.b), 255};
+  raster.colour = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), 255};
   // 1/Z along the ray (x, y, 1) of the face's plane n.X = e is n.(x, y, 1) / e: affine in pixels.
   const double e = glm::dot(n, world[0]), k = 1.0 / (f.camera.focal_px * e);
-  const double a = n.x * k, b = n.y * k;
-  const double c0 = n.z / e + a * (box.x0 + 0.5 - f.camera.cx) + b * (box.y0 + 0.5 - f.camera.cy);
-  ScanConverter scan(shape, box.width, box.height);
+  raster.a = n.x * k;
+  raster.b = n.y * k;
+  raster.c0 =
+      n.z / e + raster.a * (box.x0 + 0.5 - f.camera.cx) + raster.b * (box.y0 + 0.5 - f.camera.cy);
+  return true;
+}
+
+// Rasterises rows [begin, end) of one face into the layer with the depth buffer (1/Z,
+// larger is nearer).
+void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int end,
+                    std::vector<float>& depth, WarpedLayer& out, ContentStats& stats) {
+  ScanConverter scan(face.shape, box.width, box.height);
+  scan.clip_rows(begin, end);
   PixelSpan span;
   while (scan.next(span)) {
     Pixel* row = out.layer.image.row(span.y);
     float* z = depth.data() + static_cast<std::size_t>(span.y) * box.width;
     for (int x = span.x_begin; x < span.x_end; ++x) {
-      const float inv_z = static_cast<float>(c0 + a * x + b * span.y);
+      const float inv_z = static_cast<float>(face.c0 + face.a * x + face.b * span.y);
       ++stats.work_units;
       if (inv_z <= z[x]) continue;
       z[x] = inv_z;
-      row[x] = colour;
+      row[x] = face.colour;
     }
   }
 }
@@ -335,12 +370,34 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   const LayerBox box = prepare_layer(region, out);
   const PlaneFrame f(camera, pose);
   const Vec3 light = glm::normalize(content.light);
-  std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
-  ContentStats stats;
-  for (const FacadeFace& face : facade_faces(pose.size, content.quality)) {
-    draw_face(face, f, light, box, out.layer.polygon, depth, out, stats);
+  // The faces' rasters in bands of faces on the worker threads, kept in face order.
+  const std::vector<FacadeFace> all = facade_faces(pose.size, content.quality);
+  std::array<std::vector<FaceRaster>, kMaxBands> banded;
+  for_each_band(static_cast<int>(all.size()), 64, [&](int band, int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      FaceRaster raster;
+      if (face_raster(all[static_cast<std::size_t>(k)], f, light, box, out.layer.polygon, raster))
+        banded[static_cast<std::size_t>(band)].push_back(std::move(raster));
+    }
+  });
+  std::vector<FaceRaster> faces;
+  for (std::vector<FaceRaster>& b : banded) {
+    for (FaceRaster& r : b) faces.push_back(std::move(r));
   }
-  for (const Pixel& p : out.layer.image.pixels()) stats.pixels_written += p.a ? 1 : 0;
+  std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
+  // Bands of rows on the worker threads (core/image/thread_pool.h): every band draws every
+  // face in the same order over its own rows, so each pixel's depth test is the same.
+  std::array<ContentStats, kMaxBands> band_stats{};
+  const int min_rows = std::max(8, 16384 / std::max(box.width, 1));
+  for_each_band(box.height, min_rows, [&](int band, int begin, int end) {
+    ContentStats& stats = band_stats[static_cast<std::size_t>(band)];
+    for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
+    for (int y = begin; y < end; ++y) {
+      const Pixel* row = out.layer.image.row(y);
+      for (int x = 0; x < box.width; ++x) stats.pixels_written += row[x].a ? 1 : 0;
+    }
+  });
+  const ContentStats stats = sum(band_stats);
   out.stats.pixels_written = stats.pixels_written;
   return stats;
 }

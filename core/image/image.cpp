@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image/pixel_math.h"
+#include "image/thread_pool.h"
 
 namespace oflab {
 namespace {
@@ -46,7 +47,16 @@ Image::Image(int width, int height, Pixel fill) {
   pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
 }
 
-void Image::fill(Pixel value) { std::fill(pixels_.begin(), pixels_.end(), value); }
+void Image::fill(Pixel value) {
+  // In bands of rows on the worker threads (core/image/thread_pool.h): a camera-sized frame
+  // is megabytes of stores.
+  Pixel* pixels = pixels_.data();
+  const std::size_t width = static_cast<std::size_t>(width_);
+  for_each_band(height_, std::max(8, 65536 / std::max(width_, 1)), [&](int, int begin, int end) {
+    std::fill(pixels + width * static_cast<std::size_t>(begin),
+              pixels + width * static_cast<std::size_t>(end), value);
+  });
+}
 
 void Image::reshape(int width, int height) {
   check_dimensions(width, height);

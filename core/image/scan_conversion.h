@@ -15,6 +15,8 @@
 // and would otherwise both round away from the centre and leave it uncovered.
 #pragma once
 
+#include <algorithm>
+
 #include "image/polygon.h"
 
 namespace oflab {
@@ -39,6 +41,13 @@ class ScanConverter {
   // Rows [first_row(), end_row()) may be non-empty; others are certainly empty.
   int first_row() const { return row_; }
   int end_row() const { return end_row_; }
+
+  // Restricts the rows still to come to [begin, end) (a band of a loop on the worker
+  // threads); the spans of those rows are the same as without the restriction.
+  void clip_rows(int begin, int end) {
+    row_ = std::max(row_, begin);
+    end_row_ = std::min(end_row_, end);
+  }
 
   // Produces the next row's span (possibly empty) and returns true, or returns false
   // when every row has been produced.

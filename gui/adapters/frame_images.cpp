@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "display/palette.h"
+#include "image/thread_pool.h"
 
 namespace oflab {
 namespace {
@@ -98,6 +99,29 @@ QImage difference_map(const Image& a, const Image& b, int full_scale) {
   return out;
 }
 
+namespace {
+
+// One row of the difference map: the largest channel difference of each pixel through the
+// colour table (`channels` is scratch of 4 x width bytes).
+void difference_row(const Pixel* row_a, const Pixel* row_b, const std::array<QRgb, 256>& colours,
+                    std::vector<std::uint8_t>& channels, QRgb* line, int width) {
+  const auto* pa = reinterpret_cast<const std::uint8_t*>(row_a);
+  const auto* pb = reinterpret_cast<const std::uint8_t*>(row_b);
+  if (std::memcmp(pa, pb, channels.size()) == 0) {  // most rows miss the plane in both
+    std::fill(line, line + width, colours[0]);
+    return;
+  }
+  for (size_t i = 0; i < channels.size(); ++i) {
+    channels[i] = std::uint8_t(pa[i] > pb[i] ? pa[i] - pb[i] : pb[i] - pa[i]);
+  }
+  for (int x = 0; x < width; ++x) {
+    const std::uint8_t* c = &channels[size_t(x) * 4];
+    line[x] = colours[std::max(std::max(c[0], c[1]), std::max(c[2], c[3]))];
+  }
+}
+
+}  // namespace
+
 void difference_map_into(const Image& a, const Image& b, int full_scale, QImage& out) {
   const QSize size(std::max(1, a.width()), std::max(1, a.height()));
   if (out.size() != size || out.format() != QImage::Format_RGB32) {
@@ -111,24 +135,18 @@ void difference_map_into(const Image& a, const Image& b, int full_scale, QImage&
     colours[size_t(d)] = qRgb(c.r, c.g, c.b);
   }
   // The channel differences of a row first, in a loop over bytes the compiler vectorises,
-  // then the largest of each pixel's four through the colour table.
-  std::vector<std::uint8_t> channels(size_t(a.width()) * 4);
-  for (int y = 0; y < a.height(); ++y) {
-    const auto* pa = reinterpret_cast<const std::uint8_t*>(a.row(y));
-    const auto* pb = reinterpret_cast<const std::uint8_t*>(b.row(y));
-    auto* line = reinterpret_cast<QRgb*>(out.scanLine(y));
-    if (std::memcmp(pa, pb, channels.size()) == 0) {  // most rows miss the plane in both
-      std::fill(line, line + a.width(), colours[0]);
-      continue;
-    }
-    for (size_t i = 0; i < channels.size(); ++i) {
-      channels[i] = std::uint8_t(pa[i] > pb[i] ? pa[i] - pb[i] : pb[i] - pa[i]);
-    }
-    for (int x = 0; x < a.width(); ++x) {
-      const std::uint8_t* c = &channels[size_t(x) * 4];
-      line[x] = colours[std::max(std::max(c[0], c[1]), std::max(c[2], c[3]))];
-    }
-  }
+  // then the largest of each pixel's four through the colour table; bands of rows on core's
+  // worker threads (core/image/thread_pool.h), each with its own row of differences. The
+  // image is detached here, once, so that the bands' scanLine() only reads its sharing.
+  out.bits();
+  for_each_band(a.height(), std::max(8, 65536 / std::max(1, a.width())),
+                [&](int, int begin, int end) {
+                  std::vector<std::uint8_t> channels(size_t(a.width()) * 4);
+                  for (int y = begin; y < end; ++y) {
+                    difference_row(a.row(y), b.row(y), colours, channels,
+                                   reinterpret_cast<QRgb*>(out.scanLine(y)), a.width());
+                  }
+                });
 }
 
 void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, const QColor& text,
@@ -161,21 +179,35 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
 
 FrameAgreement frame_agreement(const Image& a, const Image& b) {
   FrameAgreement result;
-  long both = 0, either = 0;
-  double squared = 0.0;
-  for (int y = 0; y < a.height(); ++y) {
-    const Pixel* pa = a.row(y);
-    const Pixel* pb = b.row(y);
-    for (int x = 0; x < a.width(); ++x) {
-      const bool ca = pa[x].a > 127, cb = pb[x].a > 127;
-      either += (ca || cb);
-      if (!(ca && cb)) continue;
-      ++both;
-      for (int d : {pa[x].r - pb[x].r, pa[x].g - pb[x].g, pa[x].b - pb[x].b}) squared += d * d;
-    }
+  // Whole-number tallies per band of rows (core's worker threads), summed in band order.
+  struct Tally {
+    std::int64_t both = 0, either = 0, squared = 0;
+  };
+  std::array<Tally, kMaxBands> tallies{};
+  for_each_band(a.height(), std::max(8, 65536 / std::max(1, a.width())),
+                [&](int band, int begin, int end) {
+                  Tally& t = tallies[size_t(band)];
+                  for (int y = begin; y < end; ++y) {
+                    const Pixel* pa = a.row(y);
+                    const Pixel* pb = b.row(y);
+                    for (int x = 0; x < a.width(); ++x) {
+                      const bool ca = pa[x].a > 127, cb = pb[x].a > 127;
+                      t.either += (ca || cb);
+                      if (!(ca && cb)) continue;
+                      ++t.both;
+                      for (int d : {pa[x].r - pb[x].r, pa[x].g - pb[x].g, pa[x].b - pb[x].b})
+                        t.squared += d * d;
+                    }
+                  }
+                });
+  Tally total;
+  for (const Tally& t : tallies) {
+    total.both += t.both;
+    total.either += t.either;
+    total.squared += t.squared;
   }
-  result.mask_iou = either > 0 ? static_cast<double>(both) / either : 1.0;
-  const double mse = both > 0 ? squared / (3.0 * both) : 0.0;
+  result.mask_iou = total.either > 0 ? static_cast<double>(total.both) / total.either : 1.0;
+  const double mse = total.both > 0 ? static_cast<double>(total.squared) / (3.0 * total.both) : 0.0;
   result.psnr_db =
       mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
   return result;

@@ -14,8 +14,10 @@
 #include "app/main_window.h"
 #include "app/screenshot.h"
 #include "formats/atomic_file.h"
+#include "image/thread_pool.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
+#include "player/stage_times.h"
 #include "views/view_page.h"
 
 namespace oflab {
@@ -85,6 +87,24 @@ int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostre
   return 0;
 }
 
+namespace {
+
+// The benchmark's stages (player/stage_times.h) in milliseconds per frame, the rest (Qt's
+// events, VTK, what no stage covers) as "other", and the worker threads.
+void print_stage_times(double total_ms, int frames, std::ostream& out) {
+  out << "oflab: per frame (ms, " << worker_threads() << " threads):";
+  double staged = 0.0;
+  for (int k = 0; k < static_cast<int>(FrameStage::kCount); ++k) {
+    const FrameStage stage = static_cast<FrameStage>(k);
+    staged += stage_ms(stage);
+    out << " " << frame_stage_name(stage) << " " << stage_ms(stage) / frames << ",";
+  }
+  out << " other " << std::max(0.0, total_ms - staged) / frames << ", total " << total_ms / frames
+      << "\n";
+}
+
+}  // namespace
+
 int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream& out) {
   // The animation view unless another view is asked for: it runs the engine, renders the
   // exact frame (core's exact render, or VTK's with --animation-exact vtk) and paints both
@@ -97,6 +117,7 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
   if (!layout) window->show_view(name);
   SceneModel* model = window->model()->scene();
   for (int i = 0; i < 3; ++i) window->play_frames(1);  // warm up caches and shaders
+  reset_stage_times();
   QElapsedTimer timer;
   timer.start();
   for (int i = 0; i < options.benchmark; ++i) {
@@ -115,6 +136,7 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
       << " frames in " << seconds << " s: " << (seconds > 0 ? options.benchmark / seconds : 0.0)
       << " frames per second (window " << options.width << " x " << options.height << ", view "
       << size.width() << " x " << size.height() << ")\n";
+  print_stage_times(seconds * 1e3, options.benchmark, out);
   return 0;
 }
 
@@ -133,7 +155,7 @@ int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream
     };
     std::vector<ClaimCheck> checks;
     try {
-      checks = check_lesson(window, lesson, shoot);
+      checks = check_lesson(window, lesson, shoot, options.time_claims);
     } catch (const std::runtime_error& e) {  // a part the window refused
       err << "oflab: " << e.what() << "\n";
       ++false_claims;
@@ -169,6 +191,7 @@ std::string launch_problem(const LaunchOptions& options, std::string problem) {
 }  // namespace
 
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
+  set_worker_threads(options.threads);
   MainWindow window;
   QString problem;
   if (!window.model()->apply(options.state, &problem)) {  // the files it names, the source

@@ -15,6 +15,7 @@
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
+#include "image/thread_pool.h"
 #include "lessons/lessons.h"
 #include "player/animation_sources.h"
 #include "runs/policy_runs.h"
@@ -284,6 +285,14 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   if (options->benchmark > 0 && !options->screenshot.empty()) {
     throw UsageError("--benchmark: cannot be combined with --screenshot");
   }
+  options->time_claims = cli.has("--time-claims");
+  if (options->time_claims && options->check_lessons.empty()) {
+    throw UsageError("--time-claims: only used with --check-lesson");
+  }
+  options->threads =
+      cli.has("--threads")
+          ? cli.integer_in("--threads", limits::kWorkerThreads)
+          : std::min(machine_cores(), static_cast<int>(limits::kWorkerThreads.maximum));
 }
 
 }  // namespace
@@ -312,7 +321,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                            {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
                            {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
                            {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
-                           {"--basis-explorer", 0}});
+                           {"--basis-explorer", 0}, {"--threads", 1},    {"--time-claims", 0}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
@@ -368,7 +377,9 @@ std::string launch_usage() {
          "]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] "
          "[--cause-and-effect] [--basis-explorer]\n"
-         "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]]] [--help]\n"
+         "             [--threads N (the pixel loops' threads; default: the machine's cores)]\n"
+         "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]] [--time-claims]] "
+         "[--help]\n"
          "  views: " +
          joined_names(titled) +
          "; window is the whole window\n"

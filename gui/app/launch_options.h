@@ -40,7 +40,10 @@ struct LaunchOptions {
   // --whole-window: the screenshot is of the whole window, with `view` in front.
   bool whole_window = false;
   int benchmark = 0;  // frames to render as fast as possible (> 0; limits::kFrameCount)
-  int width = 1280;   // window size in pixels
+  // --threads N: the threads of core's pixel loops (core/image/thread_pool.h;
+  // limits::kWorkerThreads), the machine's cores without it.
+  int threads = 1;
+  int width = 1280;  // window size in pixels
   int height = 800;
   bool help = false;  // --help: print the usage and exit 0
   // --check-lesson NAME|FILE|all: check the claims of these lessons (gui/app/lesson_check.h)
@@ -50,6 +53,9 @@ struct LaunchOptions {
   // lesson, at step_shot_path(DIR, lesson, part); an existing picture is replaced only with
   // --force.
   std::string step_shots;
+  // --time-claims (with --check-lesson): also measure the claims of timed kinds (frame_rate),
+  // which other checks leave out.
+  bool time_claims = false;
 };
 
 // DIR/lesson-NAME.png for the narrative (part 0), DIR/lesson-NAME-step-K.png for step K: the

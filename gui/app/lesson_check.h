@@ -35,9 +35,11 @@ double measure_claim(MainWindow* window, const LessonClaim& claim);
 // and checks every claim of its narrative and steps, in order, and of every part that its
 // caption shows whole ("caption_cut" at most 0); after the claims of each part
 // calls `after_part(k)` (0: the narrative, k: the k-th step) when given, with the window as
-// that part left it (for a picture of each step). Throws std::runtime_error naming the
-// lesson and the part when the window refuses a part's state.
+// that part left it (for a picture of each step). Claims of a timed kind (ClaimKind::timed:
+// frame_rate) are measured only with `time_claims`, else left out of the result. Throws
+// std::runtime_error naming the lesson and the part when the window refuses a part's state.
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
-                                     const std::function<void(int)>& after_part = {});
+                                     const std::function<void(int)>& after_part = {},
+                                     bool time_claims = false);
 
 }  // namespace oflab

@@ -21,6 +21,7 @@
 #include "models/animation_model.h"
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
+#include "player/stage_times.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_captions.h"
@@ -272,6 +273,7 @@ const Image& AnimationView::exact_image() {
   const Animator* animator = model_->animator();
   if (!animator || exact_frame_index_ == animator->frame()) return exact_frame_;
   try {
+    const StageTimer timer(FrameStage::kExactFrame);
     if (!exact_)
       exact_ = exact_kind_->make(animator->scene(), animator->camera(), model_->settings());
     exact_frame_ = exact_->render(animator->view());
@@ -320,6 +322,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
                      run_caption(run.last, *run.policy, model_->settings(),
                                  double(run.pixels_written), run.time_ms)});
     QImage& map = heat_images_[heat.size()];
+    const StageTimer maps(FrameStage::kMaps);
     difference_map_into(image, exact, kDifferenceScale, map);
     QStringList caption = agreement_caption(image, exact);
     const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
@@ -347,6 +350,7 @@ std::vector<PanelContent> AnimationView::panels() {
       break;
     case PanelDisplay::kDifference: {
       if (heat_images_.empty()) heat_images_.resize(1);
+      const StageTimer maps(FrameStage::kMaps);
       difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
       QStringList caption = agreement_caption(engine_image(), exact_image());
       const QString view = affine_view_line(model_->current(), *model_->settings().policy);
@@ -415,6 +419,7 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
 
 AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelContent>& contents,
                                                          int canvas_width, double gap) const {
+  const StageTimer timer(FrameStage::kText);
   const bool heat_row =
       window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
@@ -436,6 +441,7 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
 
 void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
                                 const PanelCell& cell) {
+  const StageTimer timer(FrameStage::kText);
   const int text_px = theme_.font_size;
   QFont font = painter.font();
   font.setBold(true);
@@ -563,7 +569,9 @@ void AnimationView::refresh() {
 }
 
 QImage AnimationView::render_image() {
+  const StageTimer drawing(FrameStage::kDrawing);
   if (model_->animator() && window_->panel_display() != PanelDisplay::kComparison) {
+    const StageTimer text(FrameStage::kText);
     inspector_->setText(explain_frame(model_->current(), model_->settings()));
   }
   const QImage image = compose(canvas_size());

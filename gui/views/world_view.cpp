@@ -13,6 +13,7 @@
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
+#include "player/stage_times.h"
 #include "views/image_canvas.h"
 #include "views/world_scene.h"
 
@@ -163,6 +164,7 @@ void WorldView::draw() {
   }
   QImage& picture = m.pictures[size_t(m.next_picture)];
   m.next_picture = 1 - m.next_picture;
+  const StageTimer drawing(FrameStage::kDrawing);  // VTK's render and its read-back
   if (m.display_problem.empty()) {
     m.window->Render();
     ++m.renders;
@@ -171,6 +173,7 @@ void WorldView::draw() {
     picture = QImage(size, QImage::Format_RGB32);
     picture.fill(to_qcolor(m.theme.background));
   }
+  const StageTimer text(FrameStage::kText);
   m.texts.lay_out(size, font(), m.theme,
                   [&m](const Vec3& at, QPointF* canvas) { return m.to_canvas(at, canvas); });
   {
@@ -183,6 +186,7 @@ void WorldView::draw() {
 }
 
 void WorldView::update_now() {
+  const StageTimer drawing(FrameStage::kDrawing);  // the actors' transforms and geometry
   WorldScene& m = *world_;
   AnimationModel* animation = window_->animation();
   const bool scene = animation->source_kind().uses_viewer;

@@ -60,6 +60,13 @@ ClaimKind screen(std::string name, std::string measures, bool of = false, bool l
   return {std::move(name), std::move(measures), ClaimSource::kScreen, of, false, level, check};
 }
 
+// A screen kind that times the machine (ClaimKind::timed).
+ClaimKind timed_screen(std::string name, std::string measures) {
+  ClaimKind kind = screen(std::move(name), std::move(measures));
+  kind.timed = true;
+  return kind;
+}
+
 std::vector<ClaimKind> make_kinds() {
   return {
       engine("coefficient",
@@ -107,6 +114,10 @@ std::vector<ClaimKind> make_kinds() {
              "the first frame at which the explorer's two solutions are more than 1 px apart "
              "(-1 when never within the second played)"),
       engine("futures_first_px", "how far apart the two solutions are after one frame, px"),
+      timed_screen("frame_rate",
+                   "frames per second the window plays the part's state at: the engine advanced "
+                   "and the view in front drawn frame by frame for 60 frames, as `oflab "
+                   "--benchmark` (timed: only with `--time-claims`)"),
       engine("grid_change",
              "what the explorer's deformation does to the grid in 1 s: `of` shift_px (px), area "
              "(ratio), turn_deg (degrees) or keystone (fraction)",
@@ -153,8 +164,10 @@ std::string claim_kinds_markdown() {
       if (needed) fields += (fields.empty() ? "`" : ", `") + std::string(name) + "`";
     }
     table += "| `" + kind.name + "` | " + (fields.empty() ? "-" : fields) + " | " +
-             (kind.source == ClaimSource::kEngine ? "engine" : "screen") + " | " + kind.measures +
-             " |\n";
+             (kind.source == ClaimSource::kEngine ? "engine"
+              : kind.timed                        ? "screen, timed"
+                                                  : "screen") +
+             " | " + kind.measures + " |\n";
   }
   return table;
 }

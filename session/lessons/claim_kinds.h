@@ -32,6 +32,11 @@ struct ClaimKind {
   // "" when `value` may be the claim's "of" ("over" when `over` is true), else what it may
   // be ("one of tx, ty, ..."); null when any text is allowed (checked where it is measured).
   std::string (*check_of)(const std::string& value) = nullptr;
+  // A rate of the machine (frames per second): measured only when a check is asked to time
+  // (`oflab --check-lesson ... --time-claims`), and left out of other checks, so that a busy
+  // machine cannot make a lesson's check fail; the test suite checks such a claim's reading
+  // and measure, and `oflab --benchmark` measures the rate itself.
+  bool timed = false;
 };
 
 // Every kind, in the manual's order.

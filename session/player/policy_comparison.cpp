@@ -4,8 +4,10 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "image/thread_pool.h"
 #include "player/plane_panel.h"
 #include "player/run_player.h"
+#include "player/stage_times.h"
 
 namespace oflab {
 
@@ -117,7 +119,13 @@ const std::vector<ComparedRun>& PolicyComparison::runs() {
     stale_ = true;
     return runs_;
   }
-  for (ComparedRun& run : runs_) seek(run, main->frame());
+  // The runs are independent (each its own animator over the shared, unchanging source):
+  // one run per band on the worker threads, whose own loops then run on that thread.
+  const int frame = main->frame();
+  const StageTimer timer(FrameStage::kComparedRuns);
+  for_each_band(int(runs_.size()), 1, [&](int, int first, int last) {
+    for (int k = first; k < last; ++k) seek(runs_[size_t(k)], frame);
+  });
   return runs_;
 }
 

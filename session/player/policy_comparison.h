@@ -84,7 +84,9 @@ class PolicyComparison {
   void reset();
 
   // One run per policy at the model's current frame; empty when the model plays nothing
-  // or its source does not use a reuse policy (scene shifting).
+  // or its source does not use a reuse policy (scene shifting). The runs advance at once on
+  // core's worker threads (core/image/thread_pool.h), each on one thread, so their frames
+  // and records are those of a run on its own.
   const std::vector<ComparedRun>& runs();
 
  private:

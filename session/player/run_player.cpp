@@ -1,6 +1,7 @@
 #include "player/run_player.h"
 
 #include "player/plane_panel.h"
+#include "player/stage_times.h"
 #include "state/window_state.h"
 
 namespace oflab {
@@ -96,6 +97,7 @@ const std::vector<AnimationFrame>& RunPlayer::history() {
 }
 
 void RunPlayer::seek(int frame) {
+  const StageTimer timer(FrameStage::kEngine);
   if (frame < animator_->frame()) history_.assign(1, animator_->start());
   while (animator_->frame() < frame) history_.push_back(animator_->advance());
 }

@@ -329,6 +329,19 @@ TEST(AnimateCommand, RepeatPlaysTheScriptAgainAndTakesAWholeNumberInItsRange) {
   EXPECT_NE(scene.err.find("--repeat"), std::string::npos) << scene.err;
 }
 
+// --threads N, the option of every command: a count outside 1..64 is refused naming it.
+TEST(AnimateCommand, ThreadsTakeAWholeNumberInTheirRange) {
+  EXPECT_EQ(cli({"animate", "--script", "zoom", "--frames", "2", "--threads", "2"}).code, 0);
+  for (const char* n : {"0", "65", "x", "1.5"}) {
+    const Cli c = cli({"animate", "--script", "zoom", "--frames", "2", "--threads", n});
+    EXPECT_EQ(c.code, 2) << n;
+    EXPECT_NE(c.err.find("--threads"), std::string::npos) << c.err;
+    EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;  // one line
+  }
+  const Cli missing = cli({"animate", "--script", "zoom", "--threads"});
+  EXPECT_EQ(missing.code, 2);
+}
+
 TEST(AnimateCommand, AllScriptsRunInAllModes) {
   for (const std::string& s : shipped_script_names()) {
     for (const char* mode : {"perspective", "affine", "rerender", "exact"}) {

@@ -104,10 +104,14 @@ TEST(CommandLine, UnwritableScreenshotExitsWithOne) {
 }
 
 TEST(CommandLine, BenchmarkPrintsFramesPerSecond) {
-  const ProcessResult run = run_oflab({"--benchmark", "10", "--size", "640", "480"});
+  const ProcessResult run =
+      run_oflab({"--benchmark", "10", "--size", "640", "480", "--threads", "2"});
   ASSERT_EQ(run.exit_code, 0) << run.err.toStdString();
   EXPECT_TRUE(run.out.contains("frames per second")) << run.out.toStdString();
   EXPECT_TRUE(run.out.contains("animation view")) << run.out.toStdString();
+  // Where the frame went, stage by stage, on the threads asked for.
+  EXPECT_TRUE(run.out.contains("per frame (ms, 2 threads): engine ")) << run.out.toStdString();
+  EXPECT_TRUE(run.out.contains(" exact frame ")) << run.out.toStdString();
 }
 
 }  // namespace

@@ -225,6 +225,8 @@ TEST(LaunchOptions, OutOfRangeCountsAndSessionWithLessonAreRefused) {
   EXPECT_EQ(bench.rfind("--benchmark: 1e+09 is outside 1..1e+06 frames", 0), 0u) << bench;
   const std::string none = usage_error({"--benchmark", "0"});
   EXPECT_EQ(none.rfind("--benchmark: 0 is outside 1..1e+06 frames", 0), 0u) << none;
+  const std::string threads = usage_error({"--threads", "0"});
+  EXPECT_EQ(threads.rfind("--threads: 0 is outside 1..64 threads", 0), 0u) << threads;
   const std::string both = usage_error({"--session", "s.json", "--lesson", "occlusion"});
   EXPECT_EQ(both.rfind("--lesson: give --session or --lesson", 0), 0u) << both;
 }
