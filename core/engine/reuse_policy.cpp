@@ -164,6 +164,16 @@ const std::vector<ReusePolicy>& reuse_policies() {
   return policies;
 }
 
+const char* level_word(const ReusePolicy& policy, Level level) {
+  if (policy.frame_warp == FrameWarp::kNodeImages) {
+    return level == Level::kRerender ? "rendered" : "cached";
+  }
+  if (policy.schedule == Schedule::kCadence) {
+    return level == Level::kRerender ? "rendered" : "reprojected";
+  }
+  return level_name(level);
+}
+
 const ReusePolicy* find_reuse_policy(const std::string& name) {
   for (const ReusePolicy& p : reuse_policies()) {
     if (name == p.name) return &p;

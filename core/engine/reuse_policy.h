@@ -190,6 +190,13 @@ Level cadence_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 // the per-layer warps, which show every layer whole).
 bool reports_holes(const ReusePolicy& policy);
 
+// What `policy` did to a layer it showed at `level`, in that policy's own words, for captions
+// and legends: Algorithm 1's level names ("none" .. "rerender", level_name) for the policies
+// of the threshold rule; "rendered" or "reprojected" for a policy on a fixed cadence (its warp
+// level is a reprojection of the last render, not a Taylor level); "rendered" or "cached" for
+// the hierarchical cache (a node's cached image warped onto its quad). Never null.
+const char* level_word(const ReusePolicy& policy, Level level);
+
 // Every policy, in the order help texts and the GUI list them (perspective first). The
 // entries live as long as the program; pointers to them may be kept and compared.
 const std::vector<ReusePolicy>& reuse_policies();

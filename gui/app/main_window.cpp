@@ -28,6 +28,7 @@
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
+#include "player/animation_sources.h"
 #include "state/window_state_file.h"
 #include "views/scene_controls.h"
 #include "views/view_page.h"
@@ -80,8 +81,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     model_->set_view(current_view_name().toStdString());
     update_scene_panel();
   });
-  connect(model_->animation(), &AnimationModel::source_changed, this,
-          &MainWindow::update_scene_panel);
+  // An accepted source or settings change clears a refusal of an earlier one.
+  connect(model_->animation(), &AnimationModel::source_changed, this, [this] {
+    clear_message();
+    update_scene_panel();
+    update_source_status();
+  });
 
   create_actions();
   create_menus();
@@ -102,7 +107,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
           &WindowModel::set_scene_panel);
   apply_app_theme(false);
   QApplication::instance()->installEventFilter(this);
-  statusBar()->showMessage(tr("Default demo: a textured plane in a screw motion"));
+  source_status_ = new QLabel(this);
+  source_status_->setObjectName(QStringLiteral("source_status"));
+  statusBar()->addPermanentWidget(source_status_);
+  update_source_status();
   resize(1280, 800);
 }
 
@@ -141,6 +149,12 @@ void MainWindow::fit_scene_panel() {
   controls_->ensurePolished();
   const int wanted = controls_->sizeHint().width() + 20;
   scene_dock_->widget()->setMinimumWidth(std::min(wanted, 430));
+}
+
+void MainWindow::update_source_status() {
+  source_status_->setText(
+      tr("Animation plays: %1")
+          .arg(QString::fromStdString(describe_source(model_->animation()->source()))));
 }
 
 void MainWindow::update_scene_panel() {

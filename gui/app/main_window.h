@@ -135,6 +135,8 @@ class MainWindow : public QMainWindow, public LessonStage {
   // Disables the scene panel's controls, with the view's note, when the view in front does
   // not draw the panel's plane (ViewPage::scene_panel_note).
   void update_scene_panel();
+  // The status bar's permanent note of what the animation and analysis views play.
+  void update_source_status();
   void show_message(const QString& text);
   // Follow the model: the view in front, the theme, the play timer and the caption.
   void show_model_view();
@@ -165,6 +167,7 @@ class MainWindow : public QMainWindow, public LessonStage {
   QAction* end_action_ = nullptr;
   std::vector<Tab> views_;
   QLabel* caption_banner_ = nullptr;
+  QLabel* source_status_ = nullptr;
   QLabel* message_banner_ = nullptr;
   QLabel* frame_label_ = nullptr;
   QTimer* motion_timer_;

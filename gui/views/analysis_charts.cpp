@@ -206,7 +206,8 @@ void draw_budget(QPainter& p, const ChartFrame& f, int level, double threshold,
   p.setPen(dashed);
   p.drawLine(QPointF(f.area.left(), y), QPointF(f.area.right(), y));
   draw_series(p, f, top, QPen(level_qcolor(level), 2.0), estimated);
-  draw_series(p, f, top, QPen(text, 1.0), measured_at);
+  // Dotted, so it never reads as the level's own line ("none" is a dark grey).
+  draw_series(p, f, top, QPen(text, 2.0, Qt::DotLine, Qt::RoundCap), measured_at);
 }
 
 // ---- The comparison: one series per compared policy ----

@@ -218,7 +218,7 @@ void AnalysisView::read_model() {
                          "Bottom: each policy's levels per frame, and its share over the charted "
                          "frames. Click a chart to jump to that frame.")
                     : tr("Dashed: threshold. Coloured: error the level would leave. "
-                         "Thin: measured error. Click a chart to jump to that frame."));
+                         "Dotted: measured error. Click a chart to jump to that frame."));
   key_->setToolTip(comparing() ? tr("How to read the comparison's charts")
                                : tr("How to read the four budget charts of the bottom two rows"));
   charts_->settings = model_->settings();

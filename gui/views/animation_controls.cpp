@@ -3,8 +3,10 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMenu>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -27,6 +29,30 @@ QString source_key(const std::string& kind, const std::string& name) {
 QString entry_label(const AnimationSourceKind& kind, const QString& name) {
   return QString::fromStdString(fill_pattern(kind.label, name.toStdString()));
 }
+
+// A menu of check boxes that stays open while they are checked and unchecked, so several
+// policies can be picked in one visit; a click outside or Escape closes it.
+class ChecklistMenu : public QMenu {
+ public:
+  using QMenu::QMenu;
+
+ protected:
+  void mouseReleaseEvent(QMouseEvent* event) override {
+    if (!toggle(actionAt(event->pos()))) QMenu::mouseReleaseEvent(event);
+  }
+  void keyPressEvent(QKeyEvent* event) override {
+    const int key = event->key();
+    const bool press = key == Qt::Key_Return || key == Qt::Key_Enter || key == Qt::Key_Space;
+    if (!press || !toggle(activeAction())) QMenu::keyPressEvent(event);
+  }
+
+ private:
+  bool toggle(QAction* action) {
+    if (!action || !action->isEnabled() || !action->isCheckable()) return false;
+    action->trigger();
+    return true;
+  }
+};
 
 void select_data(QComboBox* box, const QVariant& data) {
   const int index = box->findData(data);
@@ -276,7 +302,8 @@ QToolButton* AnimationControls::make_compare_button(QWidget* parent) {
   compare_button_->setPopupMode(QToolButton::InstantPopup);
   compare_button_->setToolTip(
       tr("The reuse policies the comparison plays: 1 to %1 of them").arg(kMaxComparedPolicies));
-  auto* menu = new QMenu(compare_button_);
+  auto* menu = new ChecklistMenu(compare_button_);
+  menu->setObjectName(QStringLiteral("animation_compared_menu"));
   for (const ReusePolicy& p : reuse_policies()) {
     QAction* action = menu->addAction(QString(p.name));
     action->setCheckable(true);

@@ -216,8 +216,10 @@ void FlowRenderer::update_arrows(const std::vector<FlowSample>& samples, double 
   if (!shown) return;
   const double top = magnitude_top(theme_);
   for (const FlowSample& s : samples) {
-    arrows_.push_back({qpoint(s.position), qpoint(s.position + arrow_seconds * s.flow),
-                       magnitude_qcolor(glm::length(s.flow), bar_max_, top)});
+    const QPointF tip = qpoint(s.position + arrow_seconds * s.flow);
+    if (outline_in_front_ && !outline_.containsPoint(tip, Qt::OddEvenFill)) continue;
+    arrows_.push_back(
+        {qpoint(s.position), tip, magnitude_qcolor(glm::length(s.flow), bar_max_, top)});
   }
 }
 

@@ -72,16 +72,25 @@ class FlowRenderer {
   };
   const std::vector<Streamline>& streamlines() const { return streamlines_; }
 
+  // One arrow of the last update: from the sample point to where its flow points, centred
+  // pixels. An arrow whose tip would leave the plane's outline (plane in front of the eye)
+  // is not drawn, so no arrow points into space the plane does not cover.
+  struct Arrow {
+    QPointF from, to;
+    QColor colour;
+  };
+  const std::vector<Arrow>& arrows() const { return arrows_; }
+  // Arrow-grid samples of the shown part inside the plane's image after the last update.
+  int shown_samples() const { return shown_samples_; }
+  // The plane's projected corners, centred pixels, after the last update.
+  const QPolygonF& outline() const { return outline_; }
+
   // Where `paint` at `size` puts the caption (view pixels): the strip at the top that the
   // scene is kept out of, and where it maps the plane's projected outline.
   QRectF caption_rect(const QSize& size) const;
   QRectF outline_rect(const QSize& size) const;
 
  private:
-  struct Arrow {
-    QPointF from, to;  // centred pixels
-    QColor colour;
-  };
   void update_faded_texture();
   void update_plane_image(const FlowContext& context, bool wanted);
   void update_arrows(const std::vector<FlowSample>& samples, double arrow_seconds, bool shown);

@@ -2,6 +2,7 @@
 
 #include <QStringList>
 #include <cmath>
+#include <vector>
 
 #include "models/animation_model.h"
 
@@ -11,9 +12,23 @@ namespace {
 QString px(double value) { return QString::number(value, 'f', 2); }
 
 QString layers_summary(const AnimationFrame& f, const ReusePolicy& policy) {
-  QStringList counts;
+  // One count per word of the policy's own (a cadence policy's four warp levels are all
+  // "reprojected").
+  QStringList words;
+  std::vector<int> sums;
   for (int k = 0; k < kLevelCount; ++k) {
-    counts << QStringLiteral("%1 %2").arg(f.levels[size_t(k)]).arg(level_name(Level(k)));
+    const QString word = QString::fromLatin1(level_word(policy, Level(k)));
+    const int at = int(words.indexOf(word));
+    if (at < 0) {
+      words << word;
+      sums.push_back(f.levels[size_t(k)]);
+    } else {
+      sums[size_t(at)] += f.levels[size_t(k)];
+    }
+  }
+  QStringList counts;
+  for (int k = 0; k < int(words.size()); ++k) {
+    counts << QStringLiteral("%1 %2").arg(sums[size_t(k)]).arg(words[k]);
   }
   QString text = QStringLiteral(
                      "<b>Frame %1</b>: %2 of %3 layers drawn (%4).<br>%5% approximated; "
@@ -53,8 +68,15 @@ bool holds(const LayerOutline& outline, const Vec2& point) {
   return inside;
 }
 
-// What a reuse level does to the previous image, in a few words.
-QString reuse_words(Level level) {
+// What a reuse level of `policy` does to the previous image, in a few words.
+QString reuse_words(const ReusePolicy& policy, Level level) {
+  if (policy.frame_warp == FrameWarp::kPerPixelDepth) {
+    return QStringLiteral("the last render, each pixel moved by its depth");
+  }
+  if (policy.schedule == Schedule::kCadence) {
+    return QStringLiteral("the last render, reprojected by the %1 policy's homography")
+        .arg(QString::fromUtf8(policy.name));
+  }
   switch (level) {
     case Level::kNone:
       return QStringLiteral("the previous image, unchanged");
@@ -110,7 +132,8 @@ QString describe_shown_view(const FrameReport& r, const ReusePolicy& policy) {
   const QString off = std::isfinite(error) && error < kExactTolerancePx
                           ? QStringLiteral("exact: %1 px from the exact projection").arg(px(error))
                           : QStringLiteral("%1 px off the exact projection").arg(px(error));
-  if (r.level != Level::kRerender) return QStringLiteral("%1: %2").arg(reuse_words(r.level), off);
+  if (r.level != Level::kRerender)
+    return QStringLiteral("%1: %2").arg(reuse_words(policy, r.level), off);
   const QString how = r.frame == 0 ? QStringLiteral("rendered") : QStringLiteral("re-rendered");
   if (policy.initial_view == InitialView::kAffinePart) {
     return QStringLiteral(
@@ -132,12 +155,20 @@ QString explain_frame(const AnimationFrame& frame, const EngineSettings& setting
   }
   QString text = QStringLiteral("<b>Frame %1: %2</b><br>Shown: %3.")
                      .arg(r.frame)
-                     .arg(level_name(r.level))
+                     .arg(QString::fromLatin1(level_word(*settings.policy, r.level)))
                      .arg(describe_shown_view(r, *settings.policy).toHtmlEscaped());
   if (r.frame == 0) return text;
-  text += QStringLiteral(
-      "<br>The cheapest level whose neglected error stays within its "
-      "threshold wins:<br>");
+  if (settings.policy->schedule == Schedule::kCadence) {
+    text += QStringLiteral(
+                "<br>The %1 policy renders one frame in %2 and reprojects the frames between, "
+                "whatever their error. Algorithm 1's choice, for comparison:<br>")
+                .arg(QString::fromUtf8(settings.policy->name))
+                .arg(settings.cadence);
+  } else {
+    text += QStringLiteral(
+        "<br>The cheapest level whose neglected error stays within its "
+        "threshold wins:<br>");
+  }
   for (int level = 0; level < kTermCount; ++level) {
     const double error = neglected_error(r.carried, r.flow, Level(level));
     const double limit = settings.thresholds[size_t(level)];
@@ -166,6 +197,14 @@ QString explain_frame(const AnimationFrame& frame, const EngineSettings& setting
               "projection) %2 px; engine time %3 ms.")
               .arg(px(r.estimated_error_px), px(r.measured_error_px))
               .arg(r.time_ms, 0, 'f', 2);
+  if (settings.policy->initial_view == InitialView::kAffinePart) {
+    text += QStringLiteral(
+                "<br>Why they differ: the estimate bounds the error against the %1 policy's "
+                "own affine view of the pose; that view alone is %2 px off the exact "
+                "projection (an affine view has no foreshortening), and reuse adds %3 px.")
+                .arg(QString::fromUtf8(settings.policy->name), px(r.affine_view_error_px),
+                     px(r.reuse_error_px));
+  }
   return text;
 }
 

@@ -41,13 +41,17 @@ QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
   for (int k = 0; k < kLevelCount; ++k) {
     const int n = frame.levels[size_t(k)];
     if (n == 0) continue;
-    const QString name = QString::fromLatin1(level_name(Level(k)));
+    const QString name = QString::fromLatin1(level_word(policy, Level(k)));
     levels << (frame.layers > 1 ? QStringLiteral("%1 %2").arg(name).arg(n) : name);
   }
   if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
   QStringList lines{QObject::tr("%1 · error %2 px")
                         .arg(levels.join(QStringLiteral(", ")))
                         .arg(frame.max_measured_error_px, 0, 'f', 2)};
+  const int rendered = frame.levels[size_t(Level::kRerender)];
+  if (policy.schedule == Schedule::kCadence && rendered > 0 && levels.size() == 1) {
+    lines << QObject::tr("a render frame: rendered, not reprojected");
+  }
   const QString view = affine_view_line(frame, policy);
   if (!view.isEmpty()) lines << view;
   if (policy.frame_plane == FramePlane::kStabilization) {

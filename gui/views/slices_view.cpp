@@ -346,14 +346,24 @@ void SlicesView::refresh() {
       exact_problem_.isEmpty() ? QString::fromStdString(exact_renderers().front().title)
                                : exact_problem_,
       exact_label_->size().expandedTo(QSize(160, 120)), theme_));
-  caption_->setText(QString("Frame %1: a viewer moving sideways at %2 units/frame, slices "
-                            "cut so every point of a slice moves within %3 px of the others "
-                            "(eq. 9, asymptote k|V|/epsilon = %4).")
+  // The walk is shorter than the window's loop: say which of its frames the play bar's is.
+  const int window_frame = window_->scene()->frame();
+  const QString wrapped = window_frame == frame_
+                              ? QString()
+                              : QString(" (the play bar's frame %1: the %2-frame walk repeats)")
+                                    .arg(window_frame)
+                                    .arg(script_.frames.size());
+  caption_->setText(QString("Frame %1%2: a viewer moving sideways at %3 units/frame, slices "
+                            "cut so every point of a slice moves within %4 px of the others "
+                            "(eq. 9, asymptote k|V|/epsilon = %5).")
                         .arg(frame_)
+                        .arg(wrapped)
                         .arg(speed_->value())
                         .arg(epsilon_->value())
                         .arg(asymptote, 0, 'f', 2));
 }
+
+QString SlicesView::caption() const { return caption_->text(); }
 
 QImage SlicesView::render_image() {
   catch_up();

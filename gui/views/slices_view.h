@@ -55,6 +55,9 @@ class SlicesView : public ViewPage {
   // The script's frame shown now (the window's frame modulo the script's length; a hidden
   // view keeps the frame it last showed until it is shown or rendered).
   int frame() const { return frame_; }
+  // The caption under the pictures: the walk's frame shown, and the play bar's when the
+  // walk has repeated.
+  QString caption() const;
   double smallest_text_px() const override;
   QString scene_panel_note() const override;
 

@@ -82,6 +82,12 @@ std::vector<ClaimKind> make_kinds() {
              true, false, true, run_name),
       engine("max_error", "the largest measured error (px) over frames 1 .. now, same `of`", true,
              false, false, run_name),
+      engine("frame_error", "the measured error (px) of the frame shown now, same `of`", true,
+             false, false, run_name),
+      engine("photometric_error",
+             "the largest photometric error (grey levels, 0..255) of a layer of the frame shown "
+             "now, same `of`: shading kept from the layer's last render",
+             true, false, false, run_name),
       screen("exact_drawn", "the share (0..1) of the exact panel's pixels the exact frame covers"),
       screen("active_tiles", "tiles of the basis gallery with a non-zero coefficient"),
       screen("heat_map_width", "the narrowest heat map of the comparison layout, screen pixels"),

@@ -130,6 +130,14 @@ std::string fill_pattern(const std::string& pattern, const std::string& value) {
   return at == std::string::npos ? pattern : pattern.substr(0, at) + value + pattern.substr(at + 2);
 }
 
+std::string describe_source(const SourceChoice& choice) {
+  const AnimationSourceKind* kind = find_animation_source_kind(choice.kind);
+  if (!kind) return choice.kind;
+  std::string text = fill_pattern(kind->label, choice.name);
+  if (kind->uses_viewer && !choice.viewer.empty()) text += ", viewer script " + choice.viewer;
+  return text;
+}
+
 std::string animation_source_kind_names() {
   std::string names;
   for (const AnimationSourceKind& kind : animation_source_kinds()) {

@@ -68,6 +68,10 @@ const AnimationSourceKind* find_animation_source_kind(const std::string& name);
 // `pattern` (a label or panel title) with its "%1", if any, replaced by `value`.
 std::string fill_pattern(const std::string& pattern, const std::string& value);
 
+// What `choice` plays, in the picker's words: "Scene: street, viewer script walk",
+// "Plane script: swing", "Plane of the scene panel"; the kind's name for an unknown kind.
+std::string describe_source(const SourceChoice& choice);
+
 // The names of the kinds, comma separated, for error messages.
 std::string animation_source_kind_names();
 

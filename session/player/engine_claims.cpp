@@ -110,6 +110,21 @@ bool shown_run(Lab& lab, const std::string& of, const AnimationFrame** frame,
   return true;
 }
 
+// The largest measured error (corners against the exact projection, px) of the layers of
+// the frame shown now; 0 at frame 0 or with nothing drawn.
+double frame_error(Lab& lab, const LessonClaim& claim) {
+  const AnimationFrame* frame = nullptr;
+  const Animator* animator = nullptr;
+  return shown_run(lab, claim.of, &frame, &animator) ? frame->max_measured_error_px : kUnknown;
+}
+
+// The largest photometric error (grey levels) of a layer of the frame shown now.
+double photometric_error(Lab& lab, const LessonClaim& claim) {
+  const AnimationFrame* frame = nullptr;
+  const Animator* animator = nullptr;
+  return shown_run(lab, claim.of, &frame, &animator) ? frame->max_photometric_error : kUnknown;
+}
+
 double hole_pixels(Lab& lab, const LessonClaim& claim) {
   const AnimationFrame* frame = nullptr;
   const Animator* animator = nullptr;
@@ -168,6 +183,8 @@ std::map<std::string, EngineMeasure> make_measures() {
       {"flow_ratio", flow_ratio},
       {"level_share", level_share},
       {"max_error", max_error},
+      {"frame_error", frame_error},
+      {"photometric_error", photometric_error},
       {"hole_pixels", hole_pixels},
       {"near_far_error", near_far_error},
       {"view",

@@ -165,3 +165,25 @@ TEST(ReusePolicies, LevelCostsCountTheWarpsEachLevelRuns) {
 
 }  // namespace
 }  // namespace oflab
+
+TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
+  for (const ReusePolicy& p : reuse_policies()) {
+    for (int k = 0; k < kLevelCount; ++k) {
+      const Level level = Level(k);
+      const std::string word = level_word(p, level);
+      if (p.frame_warp == FrameWarp::kNodeImages) {
+        EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "cached") << p.name;
+      } else if (p.schedule == Schedule::kCadence) {
+        EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "reprojected") << p.name;
+      } else {
+        EXPECT_EQ(word, level_name(level)) << p.name;
+      }
+    }
+  }
+  // The four policies of today's reprojection and the cache never borrow a Taylor level name.
+  for (const char* name :
+       {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "hierarchical-cache"}) {
+    EXPECT_STRNE(level_word(reuse_policy(name), Level::kPerspective), "perspective") << name;
+    EXPECT_STRNE(level_word(reuse_policy(name), Level::kRerender), "rerender") << name;
+  }
+}

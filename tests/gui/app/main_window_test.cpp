@@ -1,6 +1,7 @@
 // The window for real: it opens on the demo, every view renders, the controls drive the
 // scene, impossible input is refused with a visible message, lessons set themselves up.
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <algorithm>
@@ -148,6 +149,14 @@ TEST_F(MainWindowTest, ASceneOverTheMemoryLimitShowsABannerAndKeepsTheSource) {
   window().model()->scene()->set_frame(3);  // and it still plays
   ASSERT_NE(animation->animator(), nullptr);
   EXPECT_EQ(animation->animator()->frame(), 3);
+  // The status bar names what plays, and a later accepted change takes the banner down.
+  const auto* status = window().findChild<QLabel*>(QStringLiteral("source_status"));
+  ASSERT_NE(status, nullptr);
+  EXPECT_EQ(status->text().toStdString(),
+            "Animation plays: Scene: four-cubes, viewer script circle");
+  ASSERT_TRUE(animation->set_source({"script", "swing", ""}));
+  EXPECT_TRUE(window().message().isEmpty()) << window().message().toStdString();
+  EXPECT_EQ(status->text().toStdString(), "Animation plays: Plane script: swing");
 }
 
 TEST_F(MainWindowTest, ShippedScriptPlaysItsFrames) {

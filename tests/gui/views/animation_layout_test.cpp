@@ -10,6 +10,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QMenu>
+#include <QTest>
 #include <QToolButton>
 #include <QWidget>
 #include <cmath>
@@ -274,6 +275,17 @@ TEST_F(AnimationLayoutTest, PoliciesMenuComparesOneToFourPolicies) {
   };
   EXPECT_TRUE(action("affine")->isChecked());
   EXPECT_TRUE(action("perspective")->isChecked());
+  // A click on an entry checks it and leaves the menu open for the next one.
+  QMenu* menu = button->menu();
+  menu->popup(button->mapToGlobal(QPoint(0, button->height())));
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(menu));
+  QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(action("talisman")).center());
+  EXPECT_TRUE(action("talisman")->isChecked());
+  EXPECT_TRUE(menu->isVisible());
+  QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(action("talisman")).center());
+  EXPECT_FALSE(action("talisman")->isChecked());
+  EXPECT_TRUE(menu->isVisible());
+  menu->close();
   action("talisman")->trigger();
   EXPECT_EQ(names(), (std::vector<std::string>{"perspective", "affine", "talisman"}));
   action("dissertation")->trigger();

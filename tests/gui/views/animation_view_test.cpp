@@ -28,6 +28,7 @@
 #include "views/analysis_view.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
+#include "views/panel_captions.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -327,6 +328,57 @@ TEST(FrameInspector, MarksTheLevelsThePolicyDoesNotAllow) {
   EXPECT_EQ(affine.find("affine: leaves 0.00 px &le; 1.00 px (not allowed"), std::string::npos);
   settings.policy = &reuse_policy("perspective");
   EXPECT_EQ(explain_frame(record, settings).toStdString().find("not allowed"), std::string::npos);
+}
+
+TEST(FrameInspector, SaysWhyAnAffineViewsMeasuredErrorExceedsItsEstimate) {
+  AnimationFrame record;
+  record.frame = 20;
+  record.layers = 1;
+  record.levels[static_cast<int>(Level::kRerender)] = 1;
+  FrameReport plane;
+  plane.frame = 20;
+  plane.level = Level::kRerender;
+  plane.estimated_error_px = 0.0;
+  plane.measured_error_px = 83.46;
+  plane.affine_view_error_px = 83.46;
+  plane.reuse_error_px = 0.0;
+  record.layer_reports.push_back(plane);
+  EngineSettings settings;
+  settings.policy = &reuse_policy("affine");
+  const std::string affine = explain_frame(record, settings).toStdString();
+  EXPECT_NE(affine.find("Estimated error 0.00 px; measured"), std::string::npos) << affine;
+  EXPECT_NE(affine.find("that view alone is 83.46 px off the exact projection"), std::string::npos)
+      << affine;
+  EXPECT_NE(affine.find("reuse adds 0.00 px"), std::string::npos) << affine;
+  // A policy whose initial view is the exact projection has no such part to explain.
+  settings.policy = &reuse_policy("perspective");
+  EXPECT_EQ(explain_frame(record, settings).toStdString().find("Why they differ"),
+            std::string::npos);
+}
+
+TEST(PanelCaptions, ReprojectionPoliciesSayWhatTheyDidInTheirOwnWords) {
+  AnimationFrame frame;
+  frame.frame = 5;
+  frame.layers = 10;
+  frame.levels[static_cast<int>(Level::kPerspective)] = 10;
+  EngineSettings settings;
+  const QString warped =
+      run_caption(frame, reuse_policy("depth-reprojection"), settings, 0, 0).join('\n');
+  EXPECT_TRUE(warped.startsWith(QStringLiteral("reprojected 10"))) << warped.toStdString();
+  EXPECT_FALSE(warped.contains(QStringLiteral("perspective"))) << warped.toStdString();
+  EXPECT_FALSE(warped.contains(QStringLiteral("render frame"))) << warped.toStdString();
+
+  frame.levels = {};
+  frame.levels[static_cast<int>(Level::kRerender)] = 8;
+  frame.layers = 8;
+  const QString rendered = run_caption(frame, reuse_policy("timewarp"), settings, 0, 0).join('\n');
+  EXPECT_TRUE(rendered.startsWith(QStringLiteral("rendered 8"))) << rendered.toStdString();
+  EXPECT_TRUE(rendered.contains(QStringLiteral("a render frame"))) << rendered.toStdString();
+  // A policy of the threshold rule keeps Algorithm 1's names and has no render frames.
+  const QString perspective =
+      run_caption(frame, reuse_policy("perspective"), settings, 0, 0).join('\n');
+  EXPECT_TRUE(perspective.startsWith(QStringLiteral("rerender 8"))) << perspective.toStdString();
+  EXPECT_FALSE(perspective.contains(QStringLiteral("render frame"))) << perspective.toStdString();
 }
 
 TEST(SessionFile, PolicyAndSamplingRoundTripByNameAndUnknownNamesAreRefused) {

@@ -53,6 +53,23 @@ TEST(FlowRenderer, StreamlineHeadsSitOnTheirShaftsAtTheCommonScale) {
   EXPECT_LT(shortest, 5.0);
 }
 
+// No arrowhead sticks out past the plane's outline: an arrow whose tip would leave the
+// plane is not drawn (the demo's screw motion pushes the edge rows' tips outside).
+TEST(FlowRenderer, EveryArrowEndsInsideThePlanesOutline) {
+  FlowRenderer renderer;
+  FlowDisplay display;
+  display.arrows = true;
+  renderer.update(demo_context(), display, QString());
+  ASSERT_FALSE(renderer.arrows().empty());
+  for (const FlowRenderer::Arrow& a : renderer.arrows()) {
+    EXPECT_TRUE(renderer.outline().containsPoint(a.from, Qt::OddEvenFill));
+    EXPECT_TRUE(renderer.outline().containsPoint(a.to, Qt::OddEvenFill));
+  }
+  // The negative control: some samples of this motion had tips outside, and were dropped.
+  EXPECT_LT(int(renderer.arrows().size()), renderer.shown_samples());
+  EXPECT_GT(int(renderer.arrows().size()), renderer.shown_samples() / 2);
+}
+
 TEST(FlowRenderer, ZoomToPlaneKeepsTheSceneOutOfTheCaption) {
   for (bool presentation : {false, true}) {
     FlowRenderer renderer;
