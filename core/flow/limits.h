@@ -91,10 +91,11 @@ inline constexpr Limit kRepeat{"repeat count", "plays", 1.0, 1000000.0, true};
 inline constexpr Limit kTimingPasses{"timed passes", "passes", 1.0, 1000.0, true};
 // Frame rate of a video file (`--fps N`).
 inline constexpr Limit kVideoFps{"frame rate", "fps", 1.0, 60.0, true};
-// Pixels of a video file's frame (analysis/formats/video_file.h VideoWriter): the encoders
-// (x264 with its look-ahead frames) need many times a frame's size, so an 8192 x 8192 frame
-// runs out of the 2 GB promise; 4096 x 2304 (UHD 3840 x 2160 and DCI 4K fit) is the largest.
-inline constexpr Limit kVideoFramePixels{"video frame", "pixels", 4.0, 4096.0 * 2304.0, true};
+// Pixels of a video file's frame (analysis/formats/video_file.h VideoWriter): x264 keeps
+// dozens of frames in its look-ahead, so 60 frames of 4096 x 2304 px ran out of the 2 GB
+// address space (x264's malloc failed at 1.5 GB resident) while 2560 x 1440 px peaked at
+// 706 MB (manual/robustness.md); 2560 x 1440 (and 1920 x 1080) is the largest.
+inline constexpr Limit kVideoFramePixels{"video frame", "pixels", 4.0, 2560.0 * 1440.0, true};
 // Cubes of a generated grid-of-cubes scene (`oflab-cli make-scene --cubes N`).
 inline constexpr Limit kSceneCubes{"cube count", "cubes", 1.0, 20000.0, true};
 // The flow field written for ParaView (`oflab-cli flow --vtk`, analysis/formats/vtk_export.h):
