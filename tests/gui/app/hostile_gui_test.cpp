@@ -173,17 +173,22 @@ TEST(HostileGuiInputs, TheIssuesLargeScenesEndWithin60sAnd2GBInBothSceneSources)
   fs::remove_all(dir);
 }
 
-// A session (written into `dir` as NAME.json) showing the animation view's comparison
-// layout of all four compared policies, with `source` (a session's "source" object) and,
-// when `camera` > 0, a plane camera of camera x camera px.
+// A session (the fuzz seed's, written into `dir` as NAME.json) showing the animation view's
+// comparison layout of all four compared policies, with `source` (a session's "source"
+// object: kind, name, viewer) and, when `camera` > 0, a plane camera of camera x camera px.
 fs::path comparison_session(const std::string& name, const nlohmann::json& source, int camera,
                             const fs::path& dir) {
-  nlohmann::json session = {{"format", "oflab-session"}, {"version", 1}, {"view", "animation"}};
-  session["animation"] = {{"display", "comparison"},
-                          {"compared", {"affine", "perspective", "talisman", "rerender"}},
-                          {"source", source}};
+  nlohmann::json session =
+      nlohmann::json::parse(std::ifstream(OFLAB_FUZZ_SEEDS_DIR "/session/session.json"));
+  session["texture"] = "";
+  session["script"] = "";
+  session["frame"] = 0;
+  session["view"] = "animation";
+  session["animation"]["display"] = "comparison";
+  session["animation"]["compared"] = {"affine", "perspective", "talisman", "rerender"};
+  session["animation"]["source"] = source;
   if (camera > 0) {
-    session["plane"] = {{"camera", {{"focal_px", 600.0}, {"width", camera}, {"height", camera}}}};
+    session["plane"]["camera"] = {{"focal_px", 600.0}, {"width", camera}, {"height", camera}};
   }
   const fs::path file = dir / (name + ".json");
   std::ofstream(file) << session.dump();
@@ -201,12 +206,22 @@ TEST(HostileGuiInputs, ComparisonsOfFourPoliciesEndWithin60sAnd2GB) {
   const auto scene = [](const fs::path& file) {
     return nlohmann::json{{"kind", "scene"}, {"name", file.string()}, {"viewer", "walk"}};
   };
-  const fs::path sessions[] = {
-      comparison_session("shared", scene(testing::write_shared_texture_scene(dir)), 0, dir),
-      comparison_session("squares", scene(testing::write_repeated_polygon_scene(dir, 108)), 0, dir),
-      comparison_session("plane", {{"kind", "plane"}}, 8192, dir)};
-  for (const fs::path& session : sessions) {
+  const std::pair<fs::path, int> sessions[] = {
+      {comparison_session("shared", scene(testing::write_shared_texture_scene(dir)), 0, dir), 2},
+      {comparison_session("squares", scene(testing::write_repeated_polygon_scene(dir, 108)), 0,
+                          dir),
+       2},
+      {comparison_session("plane", {{"kind", "plane"}, {"name", ""}, {"viewer", ""}}, 8192, dir),
+       0}};
+  for (const auto& [session, code] : sessions) {
     expect_gui_ends_cleanly({"--session", session.string()}, dir, session.filename().string());
+    const testing::ChildResult r = testing::run_child(
+        OFLAB_GUI_BINARY,
+        {"--session", session.string(), "--screenshot", (dir / "shot.png").string(), "--force",
+         "--frames", "2", "--size", "640", "480"},
+        dir, testing::kHostileAddressSpace, testing::kHostileTimeLimitSeconds);
+    EXPECT_EQ(r.code, code) << session << ": " << r.err;  // read, then refused or played
+    if (code == 2) EXPECT_NE(r.err.find("(the scene engine memory limit)"), std::string::npos);
   }
   fs::remove_all(dir);
 }
