@@ -223,7 +223,9 @@ TEST(HostileGuiInputs, ComparisonsOfFourPoliciesEndWithin60sAnd2GB) {
     EXPECT_TRUE(r.exited && !r.timed_out) << session;
     EXPECT_EQ(r.code, code) << session << ": " << r.err;  // read, then refused or played
     EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    if (code == 2) EXPECT_NE(r.err.find("(the scene engine memory limit)"), std::string::npos);
+    if (code == 2) {
+      EXPECT_NE(r.err.find("(the scene engine memory limit)"), std::string::npos) << r.err;
+    }
   }
   fs::remove_all(dir);
 }
