@@ -247,7 +247,6 @@ TEST(HostileInputs, LessonsOverTheirBudgetsAreRefusedWhenRead) {
        "up to here, more than 1000 (the lesson frames limit)\n"}};
   for (const auto& [file, message] : cases) {
     const std::vector<std::string> args = {"lesson", "check", file};
-    expect_ends_cleanly(args, dir, file);
     const testing::ChildResult r =
         testing::run_child(OFLAB_CLI_BINARY, args, dir, testing::kHostileAddressSpace,
                            testing::kHostileTimeLimitSeconds);
@@ -269,7 +268,6 @@ TEST(HostileInputs, AVideoFrameOverTheLimitIsRefusedBeforeTheEncoderOpens) {
   const std::vector<std::string> args = {
       "animate", "--script", large.string(),           "--frames",
       "2",       "--video",  (dir / "x.mp4").string(), "--quiet"};
-  expect_ends_cleanly(args, dir, "8192 x 8192 video");
   const testing::ChildResult r =
       testing::run_child(OFLAB_CLI_BINARY, args, dir, testing::kHostileAddressSpace,
                          testing::kHostileTimeLimitSeconds);
