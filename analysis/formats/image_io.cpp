@@ -33,6 +33,13 @@ void append_bytes(void* context, void* data, int size) {
                                              static_cast<std::size_t>(size));
 }
 
+// Why stb_image failed last: its own words, or (it gives none when an allocation failed
+// before it could say) "out of memory".
+std::string stb_failure() {
+  const char* reason = stbi_failure_reason();
+  return reason && *reason ? reason : "out of memory";
+}
+
 bool starts_with(const std::string& bytes, const char* signature, size_t length) {
   return bytes.size() >= length && std::memcmp(bytes.data(), signature, length) == 0;
 }
@@ -64,7 +71,7 @@ ImageFileSize check_image_bytes(const std::string& bytes, const std::string& ori
   if (png && png_header_size(bytes, &size)) {
     // stb_image refuses some large PNGs itself, but names no size: check ours first.
   } else if (!stbi_info_from_memory(data, length, &size.width, &size.height, &channels)) {
-    throw ImageFileError(origin + ": cannot read image header (" + stbi_failure_reason() + ")");
+    throw ImageFileError(origin + ": cannot read image header (" + stb_failure() + ")");
   }
   if (size.width < 1 || size.height < 1) throw ImageFileError(origin + ": image is empty");
   if (size.width > kMaxImageDimension || size.height > kMaxImageDimension ||
@@ -90,7 +97,7 @@ Image decode_image(const std::string& bytes, const std::string& origin) {
       stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                             static_cast<int>(bytes.size()), &w, &h, &channels, 4),
       stbi_image_free);
-  if (!data) throw ImageFileError(origin + ": cannot read image (" + stbi_failure_reason() + ")");
+  if (!data) throw ImageFileError(origin + ": cannot read image (" + stb_failure() + ")");
   if (w != size.width || h != size.height) {
     throw ImageFileError(origin + ": cannot read image (the header's size is not the image's)");
   }

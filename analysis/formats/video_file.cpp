@@ -369,6 +369,13 @@ void VideoWriter::add_frame(const Image& frame) {
         throw VideoFileError("a frame of " + std::to_string(frame.width()) + " x " +
                              std::to_string(frame.height()) + " pixels is too small");
       }
+      const Limit& limit = limits::kVideoFramePixels;
+      if (!limit.allows(double(size.width) * size.height)) {  // before the encoder allocates
+        throw VideoFileError("a frame of " + std::to_string(frame.width()) + " x " +
+                             std::to_string(frame.height()) + " pixels is larger than " +
+                             std::to_string(long(limit.maximum)) + " pixels (the " + limit.what +
+                             " limit)");
+      }
       width_ = frame.width();
       height_ = frame.height();
       std::unique_ptr<Encoder> encoder = make_encoder(format_);

@@ -65,9 +65,10 @@ class VideoWriter {
   VideoWriter& operator=(const VideoWriter&) = delete;
 
   // Appends one frame. The first frame fixes the size (stored_video_size of it, at least
-  // 2 x 2 pixels); every later frame must have the first one's width and height. Throws
-  // VideoFileError naming the path on a size mismatch, an empty or too small frame, or an
-  // encoder failure; FileWriteError naming the path when the file cannot be written.
+  // 2 x 2 pixels and at most limits::kVideoFramePixels, checked before the encoder is
+  // opened); every later frame must have the first one's width and height. Throws
+  // VideoFileError naming the path on a size mismatch, an empty, too small or too large
+  // frame, or an encoder failure; FileWriteError naming the path when the file cannot be written.
   void add_frame(const Image& frame);
 
   // Flushes the encoder, closes the file and renames it over the path. Throws

@@ -58,6 +58,13 @@ inline constexpr Limit kFrameCount{"frame count", "frames", 0.0, 1000000.0, true
 // Frames of what must play at least one (`oflab-cli animate --frames N`, a segment of a
 // motion or viewer script): kFrameCount's maximum, which also caps a whole script.
 inline constexpr Limit kPlayedFrames{"frame count", "frames", 1.0, kFrameCount.maximum, true};
+// Frames the window plays before a screenshot (`oflab --frames N`) or times (`oflab
+// --benchmark N`): each is drawn in every view it touches (about 36 ms a frame in the
+// animation view on the development machine), so the largest run takes about 40 s; a longer
+// run is `oflab-cli animate`'s (kFrameCount).
+inline constexpr Limit kWindowFrames{"frame count", "frames", 0.0, 1000.0, true};
+inline constexpr Limit kWindowPlayedFrames{"frame count", "frames", 1.0, kWindowFrames.maximum,
+                                           true};
 // The budget policy's frame budget (core/engine/budget.h): pixels or milliseconds per frame.
 inline constexpr Limit kBudgetPixels{"frame budget", "px", 0.0, 1e9};
 inline constexpr Limit kBudgetMs{"frame budget", "ms", 0.0, 1e9};
@@ -84,6 +91,11 @@ inline constexpr Limit kRepeat{"repeat count", "plays", 1.0, 1000000.0, true};
 inline constexpr Limit kTimingPasses{"timed passes", "passes", 1.0, 1000.0, true};
 // Frame rate of a video file (`--fps N`).
 inline constexpr Limit kVideoFps{"frame rate", "fps", 1.0, 60.0, true};
+// Pixels of a video file's frame (analysis/formats/video_file.h VideoWriter): x264 keeps
+// dozens of frames in its look-ahead, so 60 frames of 4096 x 2304 px ran out of the 2 GB
+// address space (x264's malloc failed at 1.5 GB resident) while 2560 x 1440 px peaked at
+// 706 MB (manual/robustness.md); 2560 x 1440 (and 1920 x 1080) is the largest.
+inline constexpr Limit kVideoFramePixels{"video frame", "pixels", 4.0, 2560.0 * 1440.0, true};
 // Cubes of a generated grid-of-cubes scene (`oflab-cli make-scene --cubes N`).
 inline constexpr Limit kSceneCubes{"cube count", "cubes", 1.0, 20000.0, true};
 // The flow field written for ParaView (`oflab-cli flow --vtk`, analysis/formats/vtk_export.h):
@@ -91,10 +103,17 @@ inline constexpr Limit kSceneCubes{"cube count", "cubes", 1.0, 20000.0, true};
 // at most 109 MB of arrays; an 8192 x 8192 image needs a step of 9 or more).
 inline constexpr Limit kVtkGridStep{"grid step", "px", 1.0, 1024.0, true};
 inline constexpr Limit kVtkGridPoints{"grid points", "points", 1.0, 1048576.0, true};
-// What one scene engine may hold (core/scene/scene_resources.h scene_memory_bytes: its layers and
-// texture copies with every polygon visible), MiB. A run holds two (the animator and its exact
-// baseline), so a scene within it plays within the 2 GB promise (manual/robustness.md).
-inline constexpr Limit kSceneEngineMemory{"scene engine memory", "MiB", 0.0, 768.0};
+// What the engines of one run may hold together (core/scene/scene_resources.h
+// run_memory_bytes: engines x polygons x layers grown by the guard band, and the textures),
+// MiB: the model's animator, its exact baseline and each compared policy's animator
+// (session/player/policy_comparison.h). Within it, and the program's own 60 to 300 MB, a run
+// stays within the 2 GB promise (manual/robustness.md).
+inline constexpr Limit kRunMemory{"run memory", "MiB", 0.0, 1536.0};
+// What one scene engine may hold (scene_memory_bytes: its layers and texture copies with every
+// polygon visible and grown into the guard band), MiB: half of kRunMemory, as every run holds
+// two (the animator and its exact baseline).
+inline constexpr Limit kSceneEngineMemory{"scene engine memory", "MiB", 0.0,
+                                          kRunMemory.maximum / 2.0};
 // What a scene's impostor polygons may draw in one frame when all of them re-render
 // (core/scene/scene_resources.h scene_impostor_windows): facade windows, each a few lit faces.
 // A frame's time grows with it; at the limit about 10 s (manual/robustness.md). The street
@@ -105,6 +124,13 @@ inline constexpr Limit kSceneImpostorWindows{"scene impostor detail", "windows",
 // layer, summed over a scene's shaded polygons. At about 112 ns a sample (oflab-bench
 // content/shaded/cost-per-unit) a frame at the limit takes about 15 s (manual/robustness.md).
 inline constexpr Limit kShadedSamples{"shaded samples", "samples", 0.0, 134217728.0};
+// What one lesson file may ask (session/lessons/lessons.h): its steps, and the frames it plays
+// in all (its "play", and each step's "frame", reached by playing forward, and "play"). A
+// window plays a lesson's frames one at a time with every view drawn (about 36 ms a frame on
+// the development machine), so the largest lesson plays within about 40 s; the shipped lessons
+// have at most 6 steps and play at most 492 frames.
+inline constexpr Limit kLessonSteps{"lesson steps", "steps", 0.0, 64.0, true};
+inline constexpr Limit kLessonFrames{"lesson frames", "frames", 0.0, 1000.0, true};
 // The animation view's zoom on top of zoom-to-fit (1 fits the plane's whole loop).
 inline constexpr Limit kZoom{"zoom", "x", 0.25, 8.0};
 // Live play rate, frames per second.

@@ -56,7 +56,8 @@ void check_scene_inputs(const Scene& scene, const Camera& camera, const SceneSet
                                   "'): " + p.field + ": " + p.message);
     }
   }
-  if (const std::string problem = scene_memory_problem(scene, camera); !problem.empty()) {
+  if (const std::string problem = scene_memory_problem(scene, camera, settings.guard_band);
+      !problem.empty()) {
     throw std::invalid_argument(problem);
   }
   if (const std::string problem =

@@ -21,17 +21,21 @@ double polygon_texture_copy_bytes(const Scene& scene) {
   return bytes;
 }
 
-double scene_memory_bytes(const Scene& scene, const Camera& camera) {
+double scene_memory_bytes(const Scene& scene, const Camera& camera, double guard_band) {
   double bytes = 0.0;
   for (const Image& t : scene.textures) bytes += 2.0 * 4.0 * t.pixel_count();
-  const double layers = kLayerImagesPerPolygon * 4.0 * camera.width * camera.height;
+  const double grown = (1.0 + 2.0 * guard_band) * (1.0 + 2.0 * guard_band);
+  const double layers = kLayerImagesPerPolygon * grown * 4.0 * camera.width * camera.height;
   return bytes + layers * scene.polygons.size() + polygon_texture_copy_bytes(scene);
 }
 
-std::string scene_memory_limit_problem(double bytes, const std::string& subject,
-                                       const std::string& what) {
+namespace {
+
+// "<subject> may hold N MiB of <what>, more than M MiB (the <limit> limit)", or "" when
+// `bytes` is within `limit` (MiB), N the bytes in MiB rounded up.
+std::string memory_limit_problem(const Limit& limit, double bytes, const std::string& subject,
+                                 const std::string& what) {
   const double mib = bytes / (1024.0 * 1024.0);
-  const Limit& limit = limits::kSceneEngineMemory;
   if (limit.allows(mib)) return "";
   std::ostringstream text;
   text << subject << " may hold " << static_cast<long>(std::ceil(mib)) << " MiB of " << what
@@ -39,12 +43,35 @@ std::string scene_memory_limit_problem(double bytes, const std::string& subject,
   return text.str();
 }
 
-std::string scene_memory_problem(const Scene& scene, const Camera& camera) {
+std::string polygons_subject(const Scene& scene, const Camera& camera) {
   std::ostringstream subject;
   subject << "the scene's " << scene.polygons.size() << " polygons at " << camera.width << " x "
           << camera.height << " px";
-  return scene_memory_limit_problem(scene_memory_bytes(scene, camera), subject.str(),
-                                    "layers and textures");
+  return subject.str();
+}
+
+}  // namespace
+
+std::string scene_memory_limit_problem(double bytes, const std::string& subject,
+                                       const std::string& what) {
+  return memory_limit_problem(limits::kSceneEngineMemory, bytes, subject, what);
+}
+
+std::string scene_memory_problem(const Scene& scene, const Camera& camera, double guard_band) {
+  return scene_memory_limit_problem(scene_memory_bytes(scene, camera, guard_band),
+                                    polygons_subject(scene, camera), "layers and textures");
+}
+
+double run_memory_bytes(const Scene& scene, const Camera& camera, double guard_band, int engines) {
+  return engines * scene_memory_bytes(scene, camera, guard_band);
+}
+
+std::string run_memory_problem(const Scene& scene, const Camera& camera, double guard_band,
+                               int engines) {
+  return memory_limit_problem(
+      limits::kRunMemory, run_memory_bytes(scene, camera, guard_band, engines),
+      std::to_string(engines) + " engines of " + polygons_subject(scene, camera),
+      "layers and textures");
 }
 
 double scene_impostor_windows(const Scene& scene, int quality) {

@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QWindow>
 #include <algorithm>
+#include <new>
 #include <ostream>
 
 #include "app/lesson_check.h"
@@ -37,7 +38,31 @@ bool wait_until_exposed(QWidget* window, int timeout_ms) {
   return false;
 }
 
+// The frame and what failed, for the window's banner: "out of memory at frame 15
+// (std::bad_alloc)" or "the engine failed at frame 15: WHAT".
+QString failure_text(const MainWindow& window, const std::exception& e) {
+  const int frame = window.model()->scene()->frame();
+  if (dynamic_cast<const std::bad_alloc*>(&e)) {
+    return QObject::tr("out of memory at frame %1 (%2)").arg(frame).arg(e.what());
+  }
+  return QObject::tr("the engine failed at frame %1: %2").arg(frame).arg(e.what());
+}
+
 }  // namespace
+
+bool GuardedApplication::notify(QObject* receiver, QEvent* event) {
+  try {
+    return QApplication::notify(receiver, event);
+  } catch (const std::exception& e) {
+    MainWindow* window = nullptr;
+    for (QWidget* w : topLevelWidgets()) {
+      if (auto* m = qobject_cast<MainWindow*>(w)) window = m;
+    }
+    if (!window) throw;
+    window->report_failure(failure_text(*window, e));
+    return false;
+  }
+}
 
 bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error) {
   window->resize(options.width, options.height);
@@ -76,7 +101,15 @@ bool write_png(const QImage& image, const std::string& path, const char* option,
 
 int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostream& out,
                     std::ostream& err) {
+  window->clear_cancel();
   window->play_frames(options.frames);
+  if (window->cancelled()) {
+    const QString why = window->message().isEmpty() ? QStringLiteral("Escape or the window closed")
+                                                    : window->message();
+    err << "oflab: --frames: stopped at frame " << window->model()->scene()->frame() << " of "
+        << options.frames << ": " << why.simplified().toStdString() << "\n";
+    return 1;
+  }
   const QString view = QString::fromStdString(options.view);
   ViewPage* page = view.isEmpty() || options.whole_window ? nullptr : window->view(view);
   const QImage image = page ? page->render_image() : window->grab_window_image();

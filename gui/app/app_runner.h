@@ -2,6 +2,7 @@
 // some frames, save a screenshot and exit, or time the flow view.
 #pragma once
 
+#include <QApplication>
 #include <iosfwd>
 
 #include "app/launch_options.h"
@@ -10,13 +11,25 @@ namespace oflab {
 
 class MainWindow;
 
+// oflab's application: a QApplication whose notify turns an exception escaping an event
+// handler (the engine running out of memory while Space or Page Down plays frames, a paint
+// building the comparison) into a message in the main window (MainWindow::report_failure:
+// playing stops, the window stays open) instead of the end of the program. Without a main
+// window the exception goes on as before.
+class GuardedApplication : public QApplication {
+ public:
+  GuardedApplication(int& argc, char** argv) : QApplication(argc, argv) {}
+  bool notify(QObject* receiver, QEvent* event) override;
+};
+
 // Sets up the window for the options (size, lesson, view in front) and shows it, waiting
 // until it is on screen. Returns false with *error set if the window never appeared.
 bool prepare_window(MainWindow* window, const LaunchOptions& options, std::string* error);
 
 // --screenshot: plays options.frames frames, captures the chosen view (or the whole
 // window) and writes the PNG. Returns the exit code: 0, or 1 when the file cannot be
-// written (the message goes to `err`).
+// written or the frames were stopped (Escape, the window closed, the engine failed: one
+// line on `err` naming the frame and why).
 int take_screenshot(MainWindow* window, const LaunchOptions& options, std::ostream& out,
                     std::ostream& err);
 

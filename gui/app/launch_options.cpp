@@ -279,9 +279,9 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   }
   // The CLI's rule for counts: the range is checked on the number as written, so a huge
   // one is named with its range rather than as too large for a whole number.
-  options->frames = cli.has("--frames") ? cli.integer_in("--frames", limits::kFrameCount) : 0;
+  options->frames = cli.has("--frames") ? cli.integer_in("--frames", limits::kWindowFrames) : 0;
   options->benchmark =
-      cli.has("--benchmark") ? cli.integer_in("--benchmark", limits::kPlayedFrames) : 0;
+      cli.has("--benchmark") ? cli.integer_in("--benchmark", limits::kWindowPlayedFrames) : 0;
   if (options->benchmark > 0 && !options->screenshot.empty()) {
     throw UsageError("--benchmark: cannot be combined with --screenshot");
   }

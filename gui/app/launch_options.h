@@ -36,10 +36,10 @@ struct LaunchOptions {
   // empty) for the whole window. A view name also brings that view to the front.
   std::string view;
   std::string screenshot;  // PNG path; when set, play `frames` frames, save, exit
-  int frames = 0;          // frames to play before the screenshot (limits::kFrameCount)
+  int frames = 0;          // frames to play before the screenshot (limits::kWindowFrames)
   // --whole-window: the screenshot is of the whole window, with `view` in front.
   bool whole_window = false;
-  int benchmark = 0;  // frames to render as fast as possible (> 0; limits::kFrameCount)
+  int benchmark = 0;  // frames to render as fast as possible (> 0; limits::kWindowPlayedFrames)
   // --threads N: the threads of core's pixel loops (core/image/thread_pool.h;
   // limits::kWorkerThreads), the machine's cores without it.
   int threads = 1;
@@ -71,7 +71,7 @@ const std::vector<std::string>& screenshot_view_names();
 // --lesson or --check-lesson that is neither a shipped lesson nor a lesson file
 // (session/lessons/lessons.h; a file's lesson is added for the run),
 // --frames without --screenshot, --screenshot with --benchmark, a size outside 320..8192, a
-// frame or benchmark count outside limits::kFrameCount (a benchmark must be positive), a
+// frame or benchmark count outside limits::kWindowFrames (a benchmark must be positive), a
 // script that is neither a file nor a shipped name or that analysis/formats/script_file.h
 // rejects (the message names the file and field), a scene or viewer script that is neither
 // a file nor a shipped name or that its reader rejects, a session or lesson that

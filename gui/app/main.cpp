@@ -27,7 +27,7 @@ int run_main(int argc, char** argv) {
   }
   // VTK's OpenGL widget needs its surface format before the application exists.
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  QApplication app(argc, argv);
+  oflab::GuardedApplication app(argc, argv);
   return oflab::run_oflab(options, std::cout, std::cerr);
 }
 

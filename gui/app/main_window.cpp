@@ -186,6 +186,10 @@ void MainWindow::create_actions() {
   reset_action_->setShortcut(Qt::Key_Home);
   reset_action_->setToolTip(tr("Back to frame 0 (Home)"));
   connect(reset_action_, &QAction::triggered, this, [this] { model_->scene()->set_frame(0); });
+  stop_action_ = new QAction(tr("Stop"), this);
+  stop_action_->setShortcut(Qt::Key_Escape);
+  stop_action_->setToolTip(tr("Stop playing frames or a lesson's steps (Escape)"));
+  connect(stop_action_, &QAction::triggered, this, &MainWindow::cancel_long_work);
   presentation_action_ = new QAction(tr("Presentation mode"), this);
   presentation_action_->setCheckable(true);
   presentation_action_->setShortcut(Qt::Key_F11);
@@ -230,7 +234,8 @@ void MainWindow::create_menus() {
   panel->setShortcut(Qt::Key_F9);
   panel->setToolTip(tr("Show or hide the scene panel (F9)"));
   view->addAction(panel);
-  for (QAction* a : {play_action_, step_action_, back_action_, reset_action_, end_action_}) {
+  for (QAction* a :
+       {play_action_, step_action_, back_action_, reset_action_, end_action_, stop_action_}) {
     view->addAction(a);
   }
   create_view_shortcuts(view);
@@ -360,12 +365,14 @@ QString MainWindow::caption() const {
 }
 
 bool MainWindow::perform_lesson_step(const Lesson& lesson, int step) {
+  cancelled_ = false;
   const std::string problem = oflab::perform_lesson_step(*this, lesson, step);
   if (!problem.empty()) show_message(QString::fromStdString(problem));
   return problem.empty();
 }
 
 bool MainWindow::go_to_lesson_step(const Lesson& lesson, int step) {
+  cancelled_ = false;
   const std::string problem = oflab::go_to_lesson_step(*this, lesson, step, !external_clock_);
   if (!problem.empty()) show_message(QString::fromStdString(problem));
   return problem.empty();
@@ -388,7 +395,7 @@ void MainWindow::stage_set_step(int step) { model_->set_lesson_step(step); }
 
 void MainWindow::step_lesson(int delta) {
   const Lesson* lesson = find_lesson(model_->lesson());
-  if (!lesson) return;
+  if (!lesson || playing_frames_) return;  // a step still playing: Escape stops it
   const int step = model_->lesson_step() + delta;
   if (step < 0 || step > int(lesson->steps.size())) return;
   if (delta == 1) {
@@ -464,12 +471,37 @@ void MainWindow::set_external_clock(bool on) {
 }
 
 void MainWindow::play_frames(int frames) {
-  for (int i = 0; i < frames; ++i) {
+  if (playing_frames_) return;
+  playing_frames_ = true;
+  struct Done {  // also when the engine throws (report_failure then shows it)
+    bool& flag;
+    ~Done() { flag = false; }
+  } done{playing_frames_};
+  for (int i = 0; i < frames && !cancelled_; ++i) {
     model_->scene()->advance(1);
     for (const Tab& tab : views_) tab.page->step_animation();
     for (ViewPage* page : layout_views_) page->step_animation();
     QApplication::processEvents();
   }
+}
+
+void MainWindow::cancel_long_work() {
+  cancelled_ = true;
+  model_->set_playing(false);
+  statusBar()->showMessage(tr("Stopped at frame %1 (Escape)").arg(model_->scene()->frame()), 10000);
+}
+
+void MainWindow::report_failure(const QString& what) {
+  cancelled_ = true;
+  model_->set_playing(false);
+  message_banner_->setText(tr("Stopped: %1. Choose a smaller scene or camera.").arg(what));
+  message_banner_->show();
+  statusBar()->showMessage(message_banner_->text(), 10000);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  cancelled_ = true;
+  QMainWindow::closeEvent(event);
 }
 
 void MainWindow::show_layout() {
@@ -527,6 +559,9 @@ bool MainWindow::handle_play_key(QWidget* target, int key) {
       break;
     case Qt::Key_End:
       action = end_action_;
+      break;
+    case Qt::Key_Escape:
+      action = stop_action_;
       break;
     default:
       return false;

@@ -95,8 +95,22 @@ class MainWindow : public QMainWindow, public LessonStage {
   // and presentation_changed.
 
   // Advances the scene's motion and each view's own animation by `frames` steps, rendering
-  // the visible view after each (used by --screenshot --frames N).
+  // the visible view after each (used by --screenshot --frames N and the lessons). Events
+  // are processed between frames, so Escape (cancel_long_work) or closing the window stops
+  // it after the frame drawn; it does nothing while frames are already playing (a key
+  // pressed meanwhile starts no second loop).
   void play_frames(int frames);
+  // Escape: stops what plays (frames played by play_frames, a lesson's steps being played,
+  // live play), keeping the frame shown; the status bar says where it stopped. Sticky until
+  // the next lesson step or play_frames run starts afresh (clear_cancel).
+  void cancel_long_work();
+  bool cancelled() const { return cancelled_; }
+  bool playing_frames() const { return playing_frames_; }
+  void clear_cancel() { cancelled_ = false; }
+  // An exception that escaped the engine in an event handler (the application's notify,
+  // app/app_runner.h): live play and any frames playing stop, and the banner says `what`
+  // ("the engine stopped at frame 15: std::bad_alloc"); the window stays open.
+  void report_failure(const QString& what);
 
   // With an external clock no timer advances anything: only play_frames does, so
   // screenshots and benchmarks are reproducible. Playing states are kept.
@@ -117,10 +131,12 @@ class MainWindow : public QMainWindow, public LessonStage {
   QImage grab_window_image();
 
  protected:
-  // The play keys (Space, Left, Right, Home, End) act whatever has focus, except in a number
-  // field the user is typing into; Enter in a number field applies the value and gives the
+  // The play keys (Space, Left, Right, Home, End, Escape) act whatever has focus, except in a
+  // number field the user is typing into; Enter in a number field applies the value and gives the
   // focus back to the view.
   bool eventFilter(QObject* watched, QEvent* event) override;
+  // Closing the window stops frames playing (cancel_long_work).
+  void closeEvent(QCloseEvent* event) override;
 
  private:
   void create_view_shortcuts(QMenu* menu);
@@ -178,7 +194,10 @@ class MainWindow : public QMainWindow, public LessonStage {
   QAction* back_action_ = nullptr;
   QAction* reset_action_ = nullptr;
   QAction* presentation_action_ = nullptr;
+  QAction* stop_action_ = nullptr;
   bool external_clock_ = false;
+  bool playing_frames_ = false;  // play_frames is running
+  bool cancelled_ = false;       // Escape or closing asked it to stop
 };
 
 }  // namespace oflab

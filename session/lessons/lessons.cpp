@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "flow/limits.h"
 #include "formats/datasets.h"
 #include "formats/json_fields.h"
 #include "lessons/claim_kinds.h"
@@ -61,9 +62,22 @@ std::vector<LessonClaim> read_claims(const json& obj, const Where& w) {
   return claims;
 }
 
-// The steps, each state read over the one before it (the lesson's own first).
+// Adds `frames` frames played at `field` to the lesson's `played` so far; fails at `w` when
+// they pass limits::kLessonFrames.
+void count_played(int frames, int& played, const Where& w, const std::string& field) {
+  played += frames;
+  const Limit& limit = limits::kLessonFrames;
+  if (!limit.allows(played)) {
+    w.fail(field, "the lesson plays " + std::to_string(played) + " frames up to here, more than " +
+                      std::to_string(int(limit.maximum)) + " (the " + limit.what + " limit)");
+  }
+}
+
+// The steps, each state read over the one before it (the lesson's own first); `played` the
+// frames played before them, counted on against limits::kLessonFrames. At most
+// limits::kLessonSteps steps: the reader stops at the first one over, before reading it.
 std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
-                                   const WindowState& lesson_state) {
+                                   const WindowState& lesson_state, int played) {
   std::vector<LessonStep> steps;
   if (!root.contains("steps")) return steps;
   const Where top{origin, ""};
@@ -72,6 +86,11 @@ std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
   WindowState state = lesson_state;
   for (size_t i = 0; i < list.size(); ++i) {
     const Where w{origin, "step " + std::to_string(i + 1)};
+    if (!limits::kLessonSteps.allows(double(i + 1))) {
+      w.fail("", "the lesson has " + std::to_string(list.size()) + " steps, more than " +
+                     std::to_string(int(limits::kLessonSteps.maximum)) + " (the " +
+                     limits::kLessonSteps.what + " limit)");
+    }
     const json& j = list[i];
     if (!j.is_object()) top.fail("steps", "each step must be an object");
     only_fields(j, w, {"say", "do", "claims"});
@@ -80,8 +99,14 @@ std::vector<LessonStep> read_steps(const json& root, const std::string& origin,
     if (j.contains("do")) {
       const json& act = object(j, w, "do");
       only_fields(act, w, {"frame", "play", "state"});
-      if (act.contains("frame")) step.frame = whole_in(act, w, "frame", 0, 1000000);
-      if (act.contains("play")) step.play = whole_in(act, w, "play", 0, 100000);
+      if (act.contains("frame")) {
+        step.frame = whole_in(act, w, "frame", 0, 1000000);
+        count_played(step.frame, played, w, "frame");
+      }
+      if (act.contains("play")) {
+        step.play = whole_in(act, w, "play", 0, 100000);
+        count_played(step.play, played, w, "play");
+      }
       if (act.contains("state")) {
         state =
             read_window_state_object(object(act, w, "state"), origin, w.part + ": state", state);
@@ -124,9 +149,13 @@ Lesson read_lesson_file(const std::string& path) {
       read_window_state_object(object(root, top, "state"), origin, "state", WindowState());
   if (!lesson.state.lesson.empty()) top.fail("state", "must not name a lesson itself");
   lesson.state.lesson = lesson.name;
-  if (root.contains("play")) lesson.play = whole_in(root, top, "play", 0, 100000);
+  int played = 0;
+  if (root.contains("play")) {
+    lesson.play = whole_in(root, top, "play", 0, 100000);
+    count_played(lesson.play, played, top, "play");
+  }
   lesson.claims = read_claims(root, Where{origin, "narrative"});
-  lesson.steps = read_steps(root, origin, lesson.state);
+  lesson.steps = read_steps(root, origin, lesson.state, played);
   for (LessonStep& step : lesson.steps) step.state.lesson = lesson.name;
   // The files a lesson names are found beside it first (a teacher's folder of lesson,
   // textures and scripts).

@@ -17,6 +17,13 @@
 // does what a teacher does (go to a frame, play frames, change controls: a "state" read over
 // the previous step's state), and checks its "claims". Unknown fields are refused.
 //
+// Budgets (core/flow/limits.h): at most limits::kLessonSteps steps, and at most
+// limits::kLessonFrames frames played in all (the lesson's "play", and each step's "frame",
+// reached by playing forward, and "play", counted in the order they are played). A file over
+// either is refused when it is read, naming the file, the step and the limit:
+//   "long.json: step 3: field 'play': the lesson plays 1200 frames up to here, more than 1000
+//   (the lesson frames limit)".
+//
 // A claim is a statement about the screen the program evaluates (gui/app/lesson_check.h):
 //   {"says": "the words of the sentence it checks", "claim": KIND, ...fields of the kind,
 //    "at_least": number and/or "at_most": number}
@@ -64,7 +71,7 @@ struct Lesson {
 };
 
 // The lesson in the file at `path`. Throws SessionError (session/state/window_state_file.h)
-// naming the file and the field when it cannot be read or used.
+// naming the file and the field when it cannot be read or used, or passes a budget above.
 Lesson read_lesson_file(const std::string& path);
 
 // Every shipped lesson (datasets/lessons/, analysis/formats/datasets.h), in teaching order;

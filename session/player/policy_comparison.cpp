@@ -8,6 +8,7 @@
 #include "player/plane_panel.h"
 #include "player/run_player.h"
 #include "player/stage_times.h"
+#include "scene/scene_resources.h"
 
 namespace oflab {
 
@@ -71,9 +72,15 @@ void PolicyComparison::build() {
   runs_.clear();
   stale_ = false;
   if (!model_->animator() || !model_->source_kind().uses_reuse_policy) return;
+  const std::string too_large = memory_problem();
   for (const ReusePolicy* policy : policies_) {
     ComparedRun run;
     run.policy = policy;
+    if (!too_large.empty()) {  // none is made: together they would pass the run's memory
+      run.problem = too_large;
+      runs_.push_back(std::move(run));
+      continue;
+    }
     EngineSettings settings = model_->settings();
     settings.policy = policy;
     try {
@@ -85,6 +92,16 @@ void PolicyComparison::build() {
     }
     runs_.push_back(std::move(run));
   }
+}
+
+std::string PolicyComparison::memory_problem() const {
+  const Animator& main = *model_->animator();
+  const int engines = kEnginesBesideComparedRuns + int(policies_.size());
+  const std::string problem =
+      run_memory_problem(main.scene(), main.camera(), model_->settings().guard_band, engines);
+  if (problem.empty()) return "";
+  return "not compared: " + problem + " (the animation, its exact projection and " +
+         std::to_string(policies_.size()) + " compared policies)";
 }
 
 void PolicyComparison::restart(ComparedRun& run) const {

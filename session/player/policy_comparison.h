@@ -9,6 +9,11 @@
 // frame, backward by a restart, like the model) and restart when the model's source or
 // settings change.
 //
+// The compared runs are made only when every engine of the window fits the run memory limit
+// together (core/scene/scene_resources.h run_memory_problem): the model's animator, its exact
+// baseline and one animator per compared policy, each estimated as the model's scene seen
+// through its camera. Otherwise every run carries that one-line problem and none plays.
+//
 // Each run also keeps its per-frame history (ComparedFrame: levels, measured error, time and
 // work) over the current pass, for the analysis view's overlays (gui/views/analysis_view.h):
 // at most kComparedHistoryFrames frames, the oldest dropped first, 56 bytes a frame.
@@ -32,6 +37,10 @@ class RunPlayer;
 // Frames of history kept per compared run: 5.6 MB per run at most, whatever the script's
 // length (a script may have up to a million frames).
 constexpr int kComparedHistoryFrames = 100000;
+
+// The engines a window holds beside the compared runs: the model's animator and its exact
+// baseline (the animation view's exact panel).
+constexpr int kEnginesBesideComparedRuns = 2;
 
 // What a compared policy did at one frame: the fields of its AnimationFrame that the
 // analysis view charts, without the per-layer books.
@@ -91,6 +100,9 @@ class PolicyComparison {
 
  private:
   void build();
+  // "" when the model's engines and one per compared policy fit limits::kRunMemory together;
+  // else the message every run carries. Precondition: the model has an animator.
+  std::string memory_problem() const;
   void restart(ComparedRun& run) const;
   void seek(ComparedRun& run, int frame) const;
   void record(ComparedRun& run) const;

@@ -154,12 +154,12 @@ fs::path write_detailed_impostor_scene(const fs::path& dir) {
   return write_scene(scene, dir / "detailed-impostors.json");
 }
 
-fs::path write_repeated_polygon_scene(const fs::path& dir) {
+fs::path write_repeated_polygon_scene(const fs::path& dir, int copies) {
   nlohmann::json scene = single_square_scene();
   const nlohmann::json square = scene["polygons"][0];
   scene["polygons"] = nlohmann::json::array();
-  for (int i = 0; i < 1000; ++i) scene["polygons"].push_back(square);
-  const fs::path file = dir / "repeated-polygon.json";
+  for (int i = 0; i < copies; ++i) scene["polygons"].push_back(square);
+  const fs::path file = dir / ("repeated-polygon-" + std::to_string(copies) + ".json");
   std::ofstream(file) << scene.dump(2);
   return file;
 }

@@ -40,10 +40,12 @@ void expect_ends_cleanly(const std::string& binary, const std::vector<std::strin
 // take), a plane of size 1e-300, focal lengths of 1e6 and 1e-300. Returns their paths.
 std::vector<std::filesystem::path> write_degenerate_plane_scripts(const std::filesystem::path& dir);
 
-// The scene of one shipped polygon repeated 1000 times (single-1's square, its tile
-// texture by absolute path), about 93 KB, written into `dir`: over the scene engine's memory
-// limit at the walk viewer's 1280 x 720 px. Returns its path.
-std::filesystem::path write_repeated_polygon_scene(const std::filesystem::path& dir);
+// The scene of one shipped polygon repeated `copies` times (single-1's square, its
+// tile texture by absolute path), about 93 KB for 1000, written into `dir` as
+// repeated-polygon-COPIES.json: 1000 and 100 copies are over the scene engine's memory limit
+// at the walk viewer's 1280 x 720 px, 27 the most within it. Returns its path.
+std::filesystem::path write_repeated_polygon_scene(const std::filesystem::path& dir,
+                                                   int copies = 1000);
 
 // The scene of 100 polygons of 2000 vertices each, circles of radius 0.5 through a
 // small box at random orientations (seeded), so that they all cut each other.

@@ -6,10 +6,12 @@
 #include <QApplication>
 #include <QSurfaceFormat>
 
+#include "app/app_runner.h"
+
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   if (::testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
-  QApplication app(argc, argv);
+  oflab::GuardedApplication app(argc, argv);  // as oflab runs: escaped exceptions shown
   return RUN_ALL_TESTS();
 }

@@ -313,29 +313,34 @@ TEST(SceneEngine, JoinedFacesShowGapsInAffineModeOnly) {
   EXPECT_GE(gaps["affine"], 3);
 }
 
-// The memory estimate counted by hand: per polygon two 4-byte layers of the camera's size
+// The memory estimate counted by hand: per polygon two 4-byte layers of the camera's image
+// grown by the guard band on every side ((1 + 2 g) squared images: 4 at g = 0.5, 9 at g = 1)
 // and a copy of its 64 x 64 texture; two copies of the texture.
-TEST(SceneMemory, EstimateCountsLayersAndTextureCopiesPerPolygon) {
+TEST(SceneMemory, EstimateCountsGrownLayersAndTextureCopiesPerPolygon) {
   const Camera camera = make_camera(300.0, 320, 240);
   std::vector<ScenePolygon> polygons;
   for (int i = 0; i < 7; ++i)
     polygons.push_back(square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
   const Scene scene = scene_with(polygons);
-  EXPECT_DOUBLE_EQ(scene_memory_bytes(scene, camera),
+  EXPECT_DOUBLE_EQ(scene_memory_bytes(scene, camera, 0.5),
+                   7.0 * (2 * 4 * 320 * 240 * 4 + 64 * 64 * 4) + 2.0 * 64 * 64 * 4);
+  EXPECT_DOUBLE_EQ(scene_memory_bytes(scene, camera, 1.0),
+                   7.0 * (2 * 9 * 320 * 240 * 4 + 64 * 64 * 4) + 2.0 * 64 * 64 * 4);
+  EXPECT_DOUBLE_EQ(scene_memory_bytes(scene, camera, 0.0),
                    7.0 * (2 * 320 * 240 * 4 + 64 * 64 * 4) + 2.0 * 64 * 64 * 4);
-  EXPECT_EQ(scene_memory_problem(scene, camera), "");
+  EXPECT_EQ(scene_memory_problem(scene, camera, 0.5), "");
 }
 
 // Over the limit the engine refuses before it allocates, naming the figure and the limit;
 // one polygon fewer than the limit allows is accepted (the control).
 TEST(SceneMemory, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
   const Camera camera = make_camera(700.0, 1280, 720);
-  const double per_polygon = 2.0 * 1280 * 720 * 4 + 64 * 64 * 4;
+  const double per_polygon = 2.0 * 4.0 * 1280 * 720 * 4 + 64 * 64 * 4;
   const int fits = static_cast<int>((768.0 * 1024 * 1024 - 2.0 * 64 * 64 * 4) / per_polygon);
   std::vector<ScenePolygon> polygons(
       fits, square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
   const Scene within = scene_with(polygons);
-  EXPECT_EQ(scene_memory_problem(within, camera), "");
+  EXPECT_EQ(scene_memory_problem(within, camera, 0.5), "");
   EXPECT_NO_THROW(SceneEngine(within, camera, SceneSettings{}));
   polygons.push_back(polygons.back());
   const Scene over = scene_with(polygons);
@@ -345,9 +350,29 @@ TEST(SceneMemory, AnEngineOverTheLimitIsRefusedAndOneWithinItIsMade) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "the scene's " + std::to_string(fits + 1) +
-                  " polygons at 1280 x 720 px may hold 769 MiB of layers and textures, more "
+                  " polygons at 1280 x 720 px may hold 788 MiB of layers and textures, more "
                   "than 768 MiB (the scene engine memory limit)");
   }
+}
+
+// The engines of one run multiply: n engines hold n times one engine's estimate, checked
+// against the run memory limit (twice one engine's): two engines of a scene at the engine
+// limit fit, three do not.
+TEST(SceneMemory, EnginesOfARunMultiplyAgainstTheRunLimit) {
+  const Camera camera = make_camera(700.0, 1280, 720);
+  std::vector<ScenePolygon> polygons(
+      9, square("s", Vec3(0, 0, 5), Vec3(0, 0, -1), Vec3(0, 1, 0), 1.0));
+  const Scene scene = scene_with(polygons);
+  const double one = scene_memory_bytes(scene, camera, 0.5);
+  EXPECT_DOUBLE_EQ(run_memory_bytes(scene, camera, 0.5, 6), 6.0 * one);
+  const double mib = 1024.0 * 1024.0;
+  const int fitting = static_cast<int>(1536.0 * mib / one);
+  EXPECT_EQ(run_memory_problem(scene, camera, 0.5, fitting), "");
+  EXPECT_EQ(run_memory_problem(scene, camera, 0.5, fitting + 1),
+            std::to_string(fitting + 1) + " engines of the scene's 9 polygons at 1280 x 720 px " +
+                "may hold " +
+                std::to_string(static_cast<long>(std::ceil((fitting + 1) * one / mib))) +
+                " MiB of layers and textures, more than 1536 MiB (the run memory limit)");
 }
 
 // The impostor detail counted independently: the glass panes facade_faces builds (one per

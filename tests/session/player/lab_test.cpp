@@ -103,5 +103,39 @@ TEST(Lab, AStateItCannotShowChangesNothing) {
   EXPECT_TRUE(lab.state() == before);
 }
 
+// The window's engines multiply: the animation, its exact projection and one per compared
+// policy, each estimated as the plane (one polygon) with two layers of the 3000 x 3000 px
+// frame grown by the guard band (275 MiB each). Six engines (4 compared) would pass the run
+// memory limit: no compared run is made and each says why; three (1 compared) fit and play.
+TEST(Lab, ComparedRunsAreMadeOnlyWhenEveryEngineFitsTheRunMemoryTogether) {
+  Lab lab(shipped_default_texture());
+  WindowState state;
+  state.plane.camera.width = 3000;
+  state.plane.camera.height = 3000;
+  state.compared = {"affine", "perspective", "talisman", "rerender"};
+  ASSERT_EQ(lab.apply(state), "");
+  const std::vector<ComparedRun>& over = lab.comparison().runs();
+  ASSERT_EQ(over.size(), 4u);
+  for (const ComparedRun& run : over) {
+    EXPECT_FALSE(run.animator);
+    EXPECT_EQ(run.problem.rfind("not compared: 6 engines of the scene's 1 polygons at 3000 x "
+                                "3000 px may hold ",
+                                0),
+              0u)
+        << run.problem;
+    EXPECT_NE(run.problem.find(" MiB of layers and textures, more than 1536 MiB (the run memory "
+                               "limit) (the animation, its exact projection and 4 compared "
+                               "policies)"),
+              std::string::npos)
+        << run.problem;
+  }
+  state.compared = {"affine"};
+  ASSERT_EQ(lab.apply(state), "");
+  const std::vector<ComparedRun>& within = lab.comparison().runs();
+  ASSERT_EQ(within.size(), 1u);
+  EXPECT_TRUE(within[0].animator) << within[0].problem;
+  EXPECT_EQ(within[0].problem, "");
+}
+
 }  // namespace
 }  // namespace oflab
