@@ -245,6 +245,12 @@ void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--presentation")) options->state.presentation = true;
   if (cli.has("--cause-and-effect")) options->state.cause_and_effect = true;
   if (cli.has("--basis-explorer")) options->state.basis_explorer = true;
+  if (cli.has("--world-camera")) {
+    const std::string key = cli.values("--world-camera").at(0);
+    if (!parse_world_camera(key, &options->state.world_camera)) {
+      throw UsageError("--world-camera: unknown camera '" + key + "' (known: orbit, eye)");
+    }
+  }
 }
 
 void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
@@ -301,15 +307,15 @@ const std::vector<std::string>& screenshot_view_names() {
 }
 
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
-                           {"--script", 1},         {"--source", 1},     {"--mode", 1},
-                           {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
-                           {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
-                           {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
-                           {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
-                           {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
-                           {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
-                           {"--basis-explorer", 0}});
+  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},      {"--scene", 1},
+                           {"--script", 1},         {"--source", 1},      {"--mode", 1},
+                           {"--animation-show", 1}, {"--compare", 1},     {"--animation-exact", 1},
+                           {"--view", 1},           {"--screenshot", 1},  {"--whole-window", 0},
+                           {"--frames", 1},         {"--benchmark", 1},   {"--size", 2},
+                           {"--flow-show", 1},      {"--flow-draw", 1},   {"--basis", 1},
+                           {"--presentation", 0},   {"--help", 0},        {"--check-lesson", 1},
+                           {"--step-shots", 1},     {"--force", 0},       {"--cause-and-effect", 0},
+                           {"--basis-explorer", 0}, {"--world-camera", 1}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
@@ -365,11 +371,14 @@ std::string launch_usage() {
          "]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] "
          "[--cause-and-effect] [--basis-explorer]\n"
+         "             [--world-camera orbit|eye]\n"
          "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]]] [--help]\n"
          "  views: " +
          joined_names(titled) +
          "; window is the whole window\n"
          "  --cause-and-effect: the world view beside the flow view (F8 in the window)\n"
+         "  --world-camera eye: the world view looks through the eye (its \"View from the "
+         "camera\"); orbit (the default) frames the whole world from beside it\n"
          "  --basis-explorer: the basis view's explorer (dial the planar terms, solve for the "
          "world)\n"
          "  lessons: " +

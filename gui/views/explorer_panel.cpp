@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "adapters/painted_text.h"
 #include "basis/basis_catalog.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
@@ -96,6 +97,7 @@ QWidget* ExplorerPanel::make_dials(QWidget* parent) {
   auto* column = new QVBoxLayout(box);
   column->setContentsMargins(0, 0, 0, 0);
   auto* title = new QLabel(tr("<b>Dial the eight planar terms</b>"), box);
+  title->setObjectName(QStringLiteral("explorer_title"));
   title->setWordWrap(true);
   column->addWidget(title);
   for (int k = 0; k < kExplorerTermCount; ++k) {
@@ -292,6 +294,42 @@ void ExplorerPanel::paint() {
 void ExplorerPanel::paint_futures() {
   futures_->set_image(paint_explorer_futures(result_, futures_frame_, futures_->size(), theme_));
   futures_line_->setText(futures_text());
+}
+
+std::vector<QString> ExplorerPanel::text_problems() const {
+  std::vector<QString> problems;
+  const auto add = [&problems](const QString& where, const std::vector<QString>& found) {
+    for (const QString& problem : found) problems.push_back(where + QStringLiteral(": ") + problem);
+  };
+  const auto painted = [&](ImageCanvas* canvas, const std::function<void(QPainter&)>& draw) {
+    if (!canvas->isVisible() || canvas->size().isEmpty()) return;
+    add(canvas->objectName(),
+        oflab::text_problems(record_painted_text(canvas->size(), draw), canvas->size()));
+  };
+  painted(sketch_,
+          [this](QPainter& p) { draw_explorer_solutions(p, result_, sketch_->size(), theme_); });
+  painted(futures_, [this](QPainter& p) {
+    draw_explorer_futures(p, result_, futures_frame_, futures_->size(), theme_);
+  });
+  for (QWidget* column : {dials_, worlds_}) {
+    for (QWidget* part : column->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+      if (!part->isVisible()) continue;
+      const auto* label = qobject_cast<QLabel*>(part);
+      const int needed = label && label->wordWrap() ? label->heightForWidth(label->width()) : 0;
+      if (part->height() < needed) {
+        problems.push_back(QStringLiteral("%1: %2 px high, its text needs %3")
+                               .arg(part->objectName())
+                               .arg(part->height())
+                               .arg(needed));
+      } else if (part->geometry().bottom() >= column->height()) {
+        problems.push_back(QStringLiteral("%1: reaches past its column (bottom %2 of %3 px)")
+                               .arg(part->objectName())
+                               .arg(part->geometry().bottom())
+                               .arg(column->height()));
+      }
+    }
+  }
+  return problems;
 }
 
 void ExplorerPanel::set_theme(const ViewTheme& theme) {

@@ -237,6 +237,13 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   QImage image = blank(size, theme);
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
+  draw_explorer_solutions(painter, result, image.size(), theme);
+  return image;
+}
+
+void draw_explorer_solutions(QPainter& painter, const ExplorerResult& result, const QSize& size,
+                             const ViewTheme& theme) {
+  const QRect image(QPoint(0, 0), size);
   const std::vector<PlanarMotionSolution>& solutions = result.inverse.solutions;
   const int count = std::max<int>(1, int(solutions.size()));
   set_font(painter, theme.label_size);
@@ -282,7 +289,6 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   }
   paint_legend(painter, QRectF(6, image.height() - legend, image.width() - 12, legend), lines,
                theme);
-  return image;
 }
 
 namespace {
@@ -380,13 +386,20 @@ QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSi
   QImage image = blank(size, theme);
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
+  draw_explorer_futures(painter, result, frame, image.size(), theme);
+  return image;
+}
+
+void draw_explorer_futures(QPainter& painter, const ExplorerResult& result, int frame,
+                           const QSize& size, const ViewTheme& theme) {
+  const QRect image(QPoint(0, 0), size);
   set_font(painter, theme.label_size);
   if (!result.futures_played || result.futures.corner_images_px.empty()) {
     painter.setPen(to_qcolor(theme.text));
     painter.drawText(
-        QRectF(image.rect()).adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
+        QRectF(image).adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
         QObject::tr("Nothing to compare: %1").arg(QString::fromStdString(result.futures_note)));
-    return image;
+    return;
   }
   const FutureSeparation& f = result.futures;
   const int shown = std::clamp(frame, 0, f.frames_played);
@@ -394,7 +407,6 @@ QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSi
   paint_tracks(painter, f, shown, QRectF(2, 2, track_side - 4, image.height() - 4), theme);
   paint_chart(painter, f, shown,
               QRectF(track_side + 4, 0, image.width() - track_side - 4, image.height()), theme);
-  return image;
 }
 
 }  // namespace oflab

@@ -7,6 +7,8 @@
 #include <QImage>
 #include <QSize>
 
+class QPainter;
+
 #include "adapters/view_theme.h"
 #include "basis/basis_explorer.h"
 
@@ -33,5 +35,13 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
 // when the futures were not played (result.futures_note).
 QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSize& size,
                               const ViewTheme& theme);
+
+// The same two pictures drawn by `painter` on a device of `size` over what is there (the
+// functions above fill a new image with the background first; a text recorder,
+// gui/adapters/painted_text.h, measures their texts this way).
+void draw_explorer_solutions(QPainter& painter, const ExplorerResult& result, const QSize& size,
+                             const ViewTheme& theme);
+void draw_explorer_futures(QPainter& painter, const ExplorerResult& result, int frame,
+                           const QSize& size, const ViewTheme& theme);
 
 }  // namespace oflab

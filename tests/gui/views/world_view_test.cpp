@@ -68,6 +68,11 @@ TEST(WorldGeometry, RaysCrossTheImagePlaneAtThePlaneCornersPixels) {
 TEST(WorldGeometry, ImageDepthsSitBetweenTheEyeAndTheScene) {
   EXPECT_DOUBLE_EQ(plane_image_depth({{0, 0, 3}, {1, 0, 2}, {0, 1, 5}}), 1.0);
   EXPECT_DOUBLE_EQ(plane_image_depth({}), 1.0);
+  // A plane flying into the eye (depth 2 down to 0.02): half the nearest would be 0.01, a
+  // point; a quarter of the median depth (1.01) holds instead.
+  std::vector<Vec3> approach;
+  for (int k = 0; k <= 99; ++k) approach.push_back({0, 0, 2.0 - 0.02 * k});
+  EXPECT_NEAR(plane_image_depth(approach), 0.25 * (2.0 - 0.02 * 50), 1e-12);
   EXPECT_DOUBLE_EQ(scene_image_depth({{0, 0, 0}, {3, 4, 0}}), 0.5);
   EXPECT_DOUBLE_EQ(scene_image_depth({{1, 1, 1}}), 1.0);
 }
