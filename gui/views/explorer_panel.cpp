@@ -9,6 +9,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "adapters/painted_text.h"
 #include "basis/basis_catalog.h"
@@ -190,21 +191,29 @@ QString ExplorerPanel::solutions_text() const {
   const InverseFlowSolutions& r = result_.inverse;
   QString html = QStringLiteral("<p><b>%1</b></p>").arg(case_text(r).toHtmlEscaped());
   if (r.solutions.empty()) return html;
-  // One solution after the other, a quantity per row: narrow enough for presentation mode.
+  // The solutions side by side, a quantity per row: half the height of one after the other,
+  // so that both fit the dials' column under the sliders.
   const QString names[2] = {tr("Solution A"), tr("Solution B")};
-  const auto row = [](const QString& name, const QString& value) {
-    return QStringLiteral("<tr><td>&nbsp;&nbsp;%1&nbsp;&nbsp;</td><td>%2</td></tr>")
-        .arg(name, value);
+  const size_t count = std::min<size_t>(r.solutions.size(), 2);
+  const auto row = [&](const QString& name,
+                       const std::function<QString(const PlanarMotionSolution&)>& value) {
+    QString cells = QStringLiteral("<tr><td>%1&nbsp;&nbsp;</td>").arg(name);
+    for (size_t i = 0; i < count; ++i) {
+      cells += QStringLiteral("<td>%1&nbsp;&nbsp;</td>").arg(value(r.solutions[i]));
+    }
+    return cells + QStringLiteral("</tr>");
   };
-  html += QStringLiteral("<table cellspacing=0>");
-  for (size_t i = 0; i < r.solutions.size() && i < 2; ++i) {
-    const PlanarMotionSolution& s = r.solutions[i];
-    html += QStringLiteral("<tr><td colspan=2><b>%1</b></td></tr>").arg(names[i]) +
-            row(tr("normal N"), s.normal_known ? vector_text(s.normal) : tr("any")) +
-            row(tr("facing the camera"), facing_text(s)) +
-            row(tr("V/d, 1/s"), vector_text(s.v_over_d)) +
-            row(tr("Omega, rad/s"), vector_text(s.omega));
-  }
+  html += QStringLiteral("<table cellspacing=0><tr><td></td>");
+  for (size_t i = 0; i < count; ++i) html += QStringLiteral("<td><b>%1</b></td>").arg(names[i]);
+  html +=
+      QStringLiteral("</tr>") +
+      row(tr("normal N"),
+          [](const PlanarMotionSolution& s) {
+            return s.normal_known ? vector_text(s.normal) : tr("any");
+          }) +
+      row(tr("facing"), [](const PlanarMotionSolution& s) { return facing_text(s); }) +
+      row(tr("V/d, 1/s"), [](const PlanarMotionSolution& s) { return vector_text(s.v_over_d); }) +
+      row(tr("Omega, rad/s"), [](const PlanarMotionSolution& s) { return vector_text(s.omega); });
   html += QStringLiteral("</table>");
   html += QStringLiteral("<p>%1</p>")
               .arg(tr("Left out, behind the eye: %1 mirror image(s). d, the plane's distance, "

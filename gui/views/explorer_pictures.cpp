@@ -91,9 +91,11 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
   QFont bold;
   bold.setPixelSize(theme.label_size);
   bold.setBold(true);
-  const bool one_line =
-      QFontMetrics(bold).horizontalAdvance(caption_text) <= image.width() - 2 * margin;
-  const double caption = (one_line ? 1.6 : 2.9) * theme.label_size;
+  // As tall as the caption's wrapped lines need at this width, and a little room.
+  const QRect wrapped = QFontMetrics(bold).boundingRect(
+      QRect(0, 0, std::max(1, int(image.width() - 2 * margin)), 100000), Qt::TextWordWrap,
+      caption_text);
+  const double caption = wrapped.height() + 0.6 * theme.label_size;
   const double scale = std::min((image.width() - 2 * margin) / camera.width,
                                 (image.height() - 2 * margin - caption) / camera.height);
   if (!(scale > 0.0)) return image;

@@ -72,6 +72,10 @@ WorldScene::WorldScene() {
   add_plane_actors();
   add_scene_actors();
   velocity = add_arrow(okabe_ito::kVermillion);
+  // V starts at the plane's centre and often runs along it: on the overlay, as the paths,
+  // the plane never hides it.
+  renderer->RemoveActor(velocity.actor);
+  overlay->AddActor(velocity.actor);
   omega = add_arrow(okabe_ito::kReddishPurple);
   normal = add_arrow(okabe_ito::kBlue);
   up = add_arrow(okabe_ito::kBluishGreen);
@@ -177,10 +181,38 @@ void WorldScene::reset_camera() {
   vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
   vtk_camera->SetViewAngle(30.0);
   renderer->ResetCamera();
-  // Closer in a wide view; a narrow one (the cause-and-effect layout) keeps the whole width.
-  vtk_camera->Zoom(1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0));
+  // ResetCamera fits a bounding sphere, loosely: closer, as far as every place the plane
+  // takes over the loop (and the eye's frustum) stays inside 90 % of the picture.
+  vtk_camera->Zoom(fit_zoom(0.9));
   renderer->ResetCameraClippingRange();
   needs_render = true;
+}
+
+double WorldScene::fit_zoom(double fill) const {
+  std::vector<Vec3> points = {viewer_to_world(first_view, Vec3(0.0))};
+  for (const Vec3& c : image_plane_corners(camera, depth)) {
+    points.push_back(viewer_to_world(first_view, c));
+  }
+  const double reach = scene_mode ? 0.0 : 0.5 * std::hypot(first_pose.size.x, first_pose.size.y);
+  for (const Vec3& p : path) {
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 step(0.0);
+      step[axis] = reach;
+      points.push_back(p + step);
+      points.push_back(p - step);
+    }
+  }
+  const int* size = window->GetSize();
+  double widest = 1e-9;  // the furthest point from the picture's centre, in half sizes
+  for (const Vec3& p : points) {
+    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    if (d[2] < 0.0 || d[2] > 1.0) continue;
+    widest = std::max(
+        {widest, std::abs(d[0] / (0.5 * size[0]) - 1.0), std::abs(d[1] / (0.5 * size[1]) - 1.0)});
+  }
+  return std::clamp(fill / widest, 0.5, 3.0);
 }
 
 void WorldScene::view_from_camera() {

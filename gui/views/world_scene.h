@@ -144,6 +144,11 @@ struct WorldScene {
   // The camera framing everything drawn, seen from behind, above and left of the first
   // frame's eye.
   void reset_camera();
+  // The zoom (VTK's Camera::Zoom factor, 0.5 .. 3) after which the eye, its image plane and
+  // every place of the plane over the loop (its centre +- half its diagonal along each axis;
+  // the viewer's path in a scene) fill `fill` of the picture's half width or half height,
+  // whichever they reach first, as the current camera projects them.
+  double fit_zoom(double fill) const;
   // The camera at the eye now (the viewer's in a scene), looking along its line of sight
   // with its up, its field of view wide enough that the whole image and a margin of
   // kEyeViewMargin of it on each side fit the render's shape. Call after the window's size.
