@@ -158,9 +158,13 @@ QWidget* ExplorerPanel::make_worlds(QWidget* parent) {
   futures_line_ = new QLabel(box);
   futures_line_->setObjectName(QStringLiteral("explorer_futures_line"));
   futures_line_->setWordWrap(true);
-  column->addWidget(sketch_, 3);
+  futures_->setToolTip(
+      tr("Above: the image under solution A and under solution B, the other's outline "
+         "dashed (when there is room). Below left: the corner that parts most, its path "
+         "under each, magnified. Below right: how far apart the images are, per frame."));
+  column->addWidget(sketch_, 2);
   column->addWidget(play_);
-  column->addWidget(futures_, 2);
+  column->addWidget(futures_, 3);
   column->addWidget(futures_line_);
   connect(play_, &QPushButton::clicked, this, &ExplorerPanel::play_futures);
   return box;
@@ -235,8 +239,7 @@ QString ExplorerPanel::futures_text() const {
       tr("After one frame %1 px; over 1 px first at frame %2.")
           .arg(f.corner_distance_px.size() > 1 ? f.corner_distance_px[1] : 0.0, 0, 'f', 3)
           .arg(f.first_frame_apart < 0 ? tr("none") : QString::number(f.first_frame_apart));
-  return now + QStringLiteral(" ") + first +
-         tr(" Left: one corner's path under A and under B, magnified.");
+  return now + QStringLiteral(" ") + first;
 }
 
 void ExplorerPanel::play_futures() {
@@ -301,7 +304,9 @@ void ExplorerPanel::paint() {
 }
 
 void ExplorerPanel::paint_futures() {
-  futures_->set_image(paint_explorer_futures(result_, futures_frame_, futures_->size(), theme_));
+  futures_->set_image(paint_explorer_futures(result_, futures_frame_, window_->scene()->texture(),
+                                             window_->scene()->scene().camera, futures_->size(),
+                                             theme_));
   futures_line_->setText(futures_text());
 }
 
@@ -318,7 +323,8 @@ std::vector<QString> ExplorerPanel::text_problems() const {
   painted(sketch_,
           [this](QPainter& p) { draw_explorer_solutions(p, result_, sketch_->size(), theme_); });
   painted(futures_, [this](QPainter& p) {
-    draw_explorer_futures(p, result_, futures_frame_, futures_->size(), theme_);
+    draw_explorer_futures(p, result_, futures_frame_, window_->scene()->texture(),
+                          window_->scene()->scene().camera, futures_->size(), theme_);
   });
   for (QWidget* column : {dials_, worlds_}) {
     for (QWidget* part : column->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly)) {

@@ -14,7 +14,11 @@
 namespace oflab {
 namespace {
 
-constexpr int kGridLines = 9;     // lines per direction: 8 x 8 cells
+constexpr int kGridLines = 9;  // lines per direction: 8 x 8 cells
+// The futures' pictures show when the canvas is at least this many label heights tall (the
+// chart under them keeps 0.45 of it, over kChartPlotLines + 3.8 labels).
+constexpr double kPicturesLines = 14.0;
+constexpr double kChartPlotLines = 2.5;
 constexpr int kLineSamples = 33;  // points per grid line
 
 QColor solution_colour(int index) { return to_qcolor(policy_colour(index)); }
@@ -305,6 +309,59 @@ int parting_corner(const FutureSeparation& f) {
   return best;
 }
 
+// Solution `s`'s camera image at `frame`, in `area` under a title: the camera's frame on the
+// image background, the texture on the quad its rectangle's corners reach (a homography
+// of the texture's pixels, as the plane's image is), the other solution's quad dashed.
+void paint_future_picture(QPainter& painter, const ExplorerResult& result, int frame, int s,
+                          const QImage& texture, const Camera& camera, const QRectF& area,
+                          const ViewTheme& theme) {
+  const FutureSeparation& f = result.futures;
+  const double title = 1.5 * theme.label_size;
+  set_font(painter, theme.label_size, true);
+  painter.setPen(solution_colour(s));
+  painter.drawText(QRectF(area.left() + 4, area.top(), area.width() - 8, title),
+                   Qt::AlignLeft | Qt::AlignVCenter,
+                   QObject::tr("%1, frame %2").arg(s == 0 ? "A" : "B").arg(frame));
+  set_font(painter, theme.label_size);
+  const QRectF box = area.adjusted(4, title, -4, -2);
+  const double scale = std::min(box.width() / camera.width, box.height() / camera.height);
+  if (!(scale > 0.0)) return;
+  const QRectF picture(box.center().x() - 0.5 * scale * camera.width,
+                       box.top() + 0.5 * (box.height() - scale * camera.height),
+                       scale * camera.width, scale * camera.height);
+  QTransform to_picture;
+  to_picture.translate(picture.center().x(), picture.center().y());
+  to_picture.scale(scale, scale);
+  painter.fillRect(picture, to_qcolor(theme.image_background));
+  const auto quad = [&](int solution) {
+    QPolygonF q;
+    for (const Vec2& p : f.corner_images_px[size_t(frame)][size_t(solution)]) {
+      q << to_picture.map(QPointF(p.x, p.y));
+    }
+    return q;
+  };
+  const QRectF rect = texture_rect(camera);
+  QPolygonF source;
+  for (const Vec2& c : result.corners) {
+    source << QPointF((c.x - rect.left()) / rect.width() * texture.width(),
+                      (c.y - rect.top()) / rect.height() * texture.height());
+  }
+  QTransform to_quad;
+  painter.save();
+  painter.setClipRect(picture);
+  if (!texture.isNull() && QTransform::quadToQuad(source, quad(s), to_quad)) {
+    painter.setTransform(to_quad, true);
+    painter.drawImage(QPointF(0, 0), texture);
+  }
+  painter.restore();
+  painter.setPen(QPen(solution_colour(1 - s), theme.line_width, Qt::DashLine));
+  painter.drawPolygon(quad(1 - s));
+  painter.setPen(QPen(solution_colour(s), theme.line_width + 0.5));
+  painter.drawPolygon(quad(s));
+  painter.setPen(QPen(to_qcolor(theme.outline), 1.0));
+  painter.drawRect(picture);
+}
+
 void paint_tracks(QPainter& painter, const FutureSeparation& f, int frame, const QRectF& area,
                   const ViewTheme& theme) {
   const int corner = parting_corner(f);
@@ -356,6 +413,9 @@ void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const 
   painter.setPen(to_qcolor(theme.text));
   painter.drawText(QRectF(area.left(), area.top(), area.width(), 1.5 * label),
                    Qt::AlignLeft | Qt::AlignVCenter, QObject::tr("px apart, per frame"));
+  // The axis values and the mark's text need the plot at least kChartPlotLines labels high:
+  // lower, they would be drawn over each other.
+  if (plot.height() < kChartPlotLines * label) return;
   painter.drawText(
       QRectF(area.left(), plot.top() - 0.8 * label, plot.left() - area.left() - 4, 1.6 * label),
       Qt::AlignRight | Qt::AlignVCenter, QString::number(top, 'f', 1));
@@ -383,17 +443,18 @@ void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const 
 
 }  // namespace
 
-QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSize& size,
-                              const ViewTheme& theme) {
+QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QImage& texture,
+                              const Camera& camera, const QSize& size, const ViewTheme& theme) {
   QImage image = blank(size, theme);
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
-  draw_explorer_futures(painter, result, frame, image.size(), theme);
+  draw_explorer_futures(painter, result, frame, texture, camera, image.size(), theme);
   return image;
 }
 
 void draw_explorer_futures(QPainter& painter, const ExplorerResult& result, int frame,
-                           const QSize& size, const ViewTheme& theme) {
+                           const QImage& texture, const Camera& camera, const QSize& size,
+                           const ViewTheme& theme) {
   const QRect image(QPoint(0, 0), size);
   set_font(painter, theme.label_size);
   if (!result.futures_played || result.futures.corner_images_px.empty()) {
@@ -405,10 +466,20 @@ void draw_explorer_futures(QPainter& painter, const ExplorerResult& result, int 
   }
   const FutureSeparation& f = result.futures;
   const int shown = std::clamp(frame, 0, f.frames_played);
-  const double track_side = std::min(0.4 * image.width(), double(image.height()));
-  paint_tracks(painter, f, shown, QRectF(2, 2, track_side - 4, image.height() - 4), theme);
+  // The two pictures side by side above, the magnified track and the chart below; the
+  // pictures only when the chart keeps room for its texts (kChartLines label heights).
+  const double label = theme.label_size;
+  const double pictures =
+      image.height() >= kPicturesLines * label ? std::round(0.55 * image.height()) : 0.0;
+  for (int s = 0; s < 2 && pictures > 0.0; ++s) {
+    paint_future_picture(painter, result, shown, s, texture, camera,
+                         QRectF(0.5 * s * image.width(), 0, 0.5 * image.width(), pictures), theme);
+  }
+  const double below = image.height() - pictures;
+  const double track_side = std::min(0.3 * image.width(), below);
+  paint_tracks(painter, f, shown, QRectF(2, pictures + 2, track_side - 4, below - 4), theme);
   paint_chart(painter, f, shown,
-              QRectF(track_side + 4, 0, image.width() - track_side - 4, image.height()), theme);
+              QRectF(track_side + 4, pictures, image.width() - track_side - 4, below), theme);
 }
 
 }  // namespace oflab

