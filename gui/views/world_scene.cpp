@@ -507,12 +507,16 @@ void WorldScene::apply_theme() {
 
 std::string WorldScene::caption() const {
   if (!from_eye) return caption_body;
-  const std::string omega = texts.labels[kOmegaLabel].text.empty()
-                                ? "no Omega"
-                                : texts.labels[kOmegaLabel].text + ", its arrow left out";
-  return "Seen through the eye, as the camera sees it: the frame is the image's border; the "
-         "image plane, the rays and the eye are left out (" +
-         omega + "). Drag to look from elsewhere, or press Reset view.\n" + caption_body;
+  const std::string& omega_text = texts.labels[kOmegaLabel].text;
+  // Short: through the eye the picture is smaller than the frame it is drawn in, and the
+  // lines on the image plane, the rays and the depth do not apply.
+  return "Seen through the eye: the frame is the image's border (" +
+         (omega_text.empty() ? std::string("no Omega") : omega_text) +
+         ", its arrow, the eye, the image plane and the rays left out). Drag to look "
+         "around, or press Reset view.\n" +
+         (scene_mode ? std::string("Polygons in their level's colour; culled pale, hidden dark.")
+                     : std::string("V is the velocity of the body point at the eye. Path of "
+                                   "the plane's centre: past thick, future thin."));
 }
 
 bool WorldScene::to_canvas(const Vec3& at, QPointF* canvas) const {
