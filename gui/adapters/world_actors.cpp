@@ -14,6 +14,7 @@
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace oflab {
@@ -136,7 +137,7 @@ void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned c
   data->Modified();
 }
 
-void copy_frame_pixels(const Image& image, vtkImageData* pixels) {
+void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& backdrop) {
   int* dims = pixels->GetDimensions();
   if (dims[0] != image.width() || dims[1] != image.height() ||
       pixels->GetNumberOfScalarComponents() != 3 || !pixels->GetPointData()->GetScalars()) {
@@ -144,12 +145,17 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels) {
     pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   }
   auto* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
+  const auto over = [](unsigned char colour, unsigned char alpha, double back) {
+    // Premultiplied: the colour plus what shows through (1 - alpha) of the backdrop.
+    return static_cast<unsigned char>(
+        std::min(255.0, colour + (255 - alpha) * std::clamp(back, 0.0, 1.0) + 0.5));
+  };
   for (int y = 0; y < image.height(); ++y) {
     const Pixel* row = image.row(y);
     for (int x = 0; x < image.width(); ++x, out += 3) {
-      out[0] = row[x].r;  // premultiplied: the colour over black
-      out[1] = row[x].g;
-      out[2] = row[x].b;
+      out[0] = over(row[x].r, row[x].a, backdrop[0]);
+      out[1] = over(row[x].g, row[x].a, backdrop[1]);
+      out[2] = over(row[x].b, row[x].a, backdrop[2]);
     }
   }
   pixels->Modified();

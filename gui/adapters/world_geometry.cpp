@@ -18,9 +18,12 @@ Vec3 ray_at_depth(const Vec3& point, double depth) { return point * (depth / poi
 
 double plane_image_depth(const std::vector<Vec3>& centres) {
   if (centres.empty()) return 1.0;
-  double nearest = std::numeric_limits<double>::infinity();
-  for (const Vec3& c : centres) nearest = std::min(nearest, c.z);
-  return 0.5 * nearest;
+  std::vector<double> depths;
+  for (const Vec3& c : centres) depths.push_back(c.z);
+  std::sort(depths.begin(), depths.end());
+  const double median = depths[depths.size() / 2];
+  if (!(median > 0.0)) return 1.0;
+  return std::max(0.5 * depths.front(), 0.25 * median);
 }
 
 double scene_image_depth(const std::vector<Vec3>& points) {

@@ -31,9 +31,11 @@ std::array<Vec3, 4> image_plane_corners(const Camera& camera, double depth);
 // plane at `depth`: point * depth / point.z.
 Vec3 ray_at_depth(const Vec3& point, double depth);
 
-// The image plane's depth for a plane whose centre moves along `centres` (viewer frame,
-// every z > 0, at least one): half the smallest depth, so the picture plane sits between the
-// eye and the plane in every frame. 1 for an empty list.
+// The image plane's depth for a plane whose centre moves along `centres` (viewer frame, at
+// least one): half the smallest depth, so the picture plane sits between the eye and the
+// plane in every frame, but never less than a quarter of the median depth, so that a plane
+// flying into the eye does not shrink the image plane to a point (the plane then passes
+// through it for the frames it is that near). 1 for an empty list or a median depth <= 0.
 double plane_image_depth(const std::vector<Vec3>& centres);
 
 // The image plane's depth for a scene whose points are `points` (world units): a tenth of

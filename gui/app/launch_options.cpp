@@ -249,6 +249,12 @@ void read_view_overrides(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--presentation")) options->state.presentation = true;
   if (cli.has("--cause-and-effect")) options->state.cause_and_effect = true;
   if (cli.has("--basis-explorer")) options->state.basis_explorer = true;
+  if (cli.has("--world-camera")) {
+    const std::string key = cli.values("--world-camera").at(0);
+    if (!parse_world_camera(key, &options->state.world_camera)) {
+      throw UsageError("--world-camera: unknown camera '" + key + "' (known: orbit, eye)");
+    }
+  }
 }
 
 void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
@@ -321,7 +327,8 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                            {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
                            {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
                            {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
-                           {"--basis-explorer", 0}, {"--threads", 1},    {"--time-claims", 0}});
+                           {"--basis-explorer", 0}, {"--threads", 1},    {"--time-claims", 0},
+                           {"--world-camera", 1}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
@@ -377,6 +384,7 @@ std::string launch_usage() {
          "]\n"
          "             [--basis taylor|waxman-ullman|planar] [--presentation] "
          "[--cause-and-effect] [--basis-explorer]\n"
+         "             [--world-camera orbit|eye]\n"
          "             [--threads N (the pixel loops' threads; default: the machine's cores)]\n"
          "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]] [--time-claims]] "
          "[--help]\n"
@@ -384,6 +392,8 @@ std::string launch_usage() {
          joined_names(titled) +
          "; window is the whole window\n"
          "  --cause-and-effect: the world view beside the flow view (F8 in the window)\n"
+         "  --world-camera eye: the world view looks through the eye (its \"View from the "
+         "camera\"); orbit (the default) frames the whole world from beside it\n"
          "  --basis-explorer: the basis view's explorer (dial the planar terms, solve for the "
          "world)\n"
          "  lessons: " +

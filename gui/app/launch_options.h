@@ -4,7 +4,7 @@
 //         [--animation-exact RENDERER]
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
 //         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation]
-//         [--cause-and-effect]
+//         [--cause-and-effect] [--basis-explorer] [--world-camera orbit|eye]
 //         [--check-lesson NAME|FILE|all] [--help]
 // The options that say what the window shows are one WindowState (gui/models/
 // window_state.h): the session's or the lesson's state (or the default window), with each

@@ -15,6 +15,7 @@
 #include "views/analysis_view.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"
+#include "views/world_view.h"
 
 namespace oflab {
 namespace {
@@ -46,10 +47,31 @@ double heat_map_width(MainWindow* window, AnimationView* view) {
   return narrowest;
 }
 
-// Texts of the animation view that are elided, leave its canvas or overlap another.
-double cut_texts(AnimationView* view) {
-  view->render_image();
-  return double(view->text_problems().size());
+// Texts that are elided, leave their canvas or overlap another: of the world view or the
+// basis view (its explorer) when one of them shows (in front, or in the cause-and-effect
+// layout), else of the animation view.
+double cut_texts(MainWindow* window) {
+  const std::vector<ViewPage*> shown = window->model()->cause_and_effect()
+                                           ? window->layout_views()
+                                           : std::vector<ViewPage*>{window->current_view()};
+  bool measured = false;
+  double problems = 0.0;
+  for (ViewPage* page : shown) {
+    if (auto* world = qobject_cast<WorldView*>(page)) {
+      world->render_image();
+      problems += double(world->text_problems().size());
+      measured = true;
+    } else if (auto* basis = qobject_cast<BasisView*>(page)) {
+      basis->render_image();
+      problems += double(basis->text_problems().size());
+      measured = true;
+    }
+  }
+  if (measured) return problems;
+  auto* animation = qobject_cast<AnimationView*>(window->view(QStringLiteral("animation")));
+  if (!animation) return kUnknown;
+  animation->render_image();
+  return double(animation->text_problems().size());
 }
 
 // How often the analysis view's budget chart of `claim.level` crosses its threshold upwards
@@ -119,7 +141,7 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
       {"heat_map_width", on_animation(heat_map_width)},
       {"hole_map_pixels",
        on_animation([](MainWindow*, AnimationView* v) { return double(v->hole_map_pixels()); })},
-      {"cut_texts", on_animation([](MainWindow*, AnimationView* v) { return cut_texts(v); })},
+      {"cut_texts", [](MainWindow* window, const LessonClaim&) { return cut_texts(window); }},
       {"active_tiles",
        [](MainWindow* window, const LessonClaim&) {
          BasisView* basis = basis_view(window);

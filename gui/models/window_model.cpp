@@ -73,6 +73,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   emit presentation_changed();
   emit scene_panel_changed();
   emit layout_changed();
+  emit world_camera_changed();
   emit play_changed();
   emit lesson_changed();
   emit view_changed();
@@ -190,6 +191,12 @@ void WindowModel::set_cause_and_effect(bool shown) {
   if (shown == values().cause_and_effect) return;
   values().cause_and_effect = shown;
   emit layout_changed();
+}
+
+void WindowModel::set_world_camera(WorldCamera camera) {
+  if (camera == values().world_camera) return;
+  values().world_camera = camera;
+  emit world_camera_changed();
 }
 
 bool WindowModel::set_play_rate(int frames_per_second) {

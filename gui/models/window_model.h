@@ -93,6 +93,9 @@ class WindowModel : public QObject {
   // The cause-and-effect layout (WindowState::cause_and_effect) is shown.
   bool cause_and_effect() const { return values().cause_and_effect; }
   void set_cause_and_effect(bool shown);
+  // Where the world view looks from (WindowState::world_camera).
+  WorldCamera world_camera() const { return values().world_camera; }
+  void set_world_camera(WorldCamera camera);
   int play_rate() const { return values().play_rate; }
   bool set_play_rate(int frames_per_second);  // refused outside limits::kPlayRate
   bool playing() const { return values().playing; }
@@ -119,7 +122,8 @@ class WindowModel : public QObject {
   void presentation_changed();
   void scene_panel_changed();
   void layout_changed();  // the cause-and-effect layout was shown or hidden
-  void play_changed();    // the play rate or playing
+  void world_camera_changed();
+  void play_changed();  // the play rate or playing
   void lesson_changed();
   void input_rejected(const QString& message);
 

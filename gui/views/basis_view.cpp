@@ -150,6 +150,10 @@ void BasisView::set_external_clock(bool on) {
 
 bool BasisView::explorer_shown() const { return window_->basis_explorer(); }
 
+std::vector<QString> BasisView::text_problems() const {
+  return explorer_shown() ? explorer_->text_problems() : std::vector<QString>{};
+}
+
 void BasisView::show_explorer() {
   const bool on = window_->basis_explorer();
   {

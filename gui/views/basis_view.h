@@ -6,7 +6,9 @@
 // between the explorer's sliders and its solutions.
 #pragma once
 
+#include <QString>
 #include <memory>
+#include <vector>
 
 #include "basis/basis_catalog.h"
 #include "views/view_page.h"
@@ -63,6 +65,9 @@ class BasisView : public ViewPage {
   // The explorer's widgets and what they show (shown when the model's basis_explorer is on).
   ExplorerPanel* explorer() const { return explorer_; }
   bool explorer_shown() const;
+  // What is wrong with the explorer's texts (ExplorerPanel::text_problems) when it is shown;
+  // empty otherwise. render_image first for the current values.
+  std::vector<QString> text_problems() const;
 
   void refresh();
 

@@ -9,7 +9,9 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
+#include "adapters/painted_text.h"
 #include "basis/basis_catalog.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
@@ -96,6 +98,7 @@ QWidget* ExplorerPanel::make_dials(QWidget* parent) {
   auto* column = new QVBoxLayout(box);
   column->setContentsMargins(0, 0, 0, 0);
   auto* title = new QLabel(tr("<b>Dial the eight planar terms</b>"), box);
+  title->setObjectName(QStringLiteral("explorer_title"));
   title->setWordWrap(true);
   column->addWidget(title);
   for (int k = 0; k < kExplorerTermCount; ++k) {
@@ -155,9 +158,13 @@ QWidget* ExplorerPanel::make_worlds(QWidget* parent) {
   futures_line_ = new QLabel(box);
   futures_line_->setObjectName(QStringLiteral("explorer_futures_line"));
   futures_line_->setWordWrap(true);
-  column->addWidget(sketch_, 3);
+  futures_->setToolTip(
+      tr("Above: the image under solution A and under solution B, the other's outline "
+         "dashed (when there is room). Below left: the corner that parts most, its path "
+         "under each, magnified. Below right: how far apart the images are, per frame."));
+  column->addWidget(sketch_, 2);
   column->addWidget(play_);
-  column->addWidget(futures_, 2);
+  column->addWidget(futures_, 3);
   column->addWidget(futures_line_);
   connect(play_, &QPushButton::clicked, this, &ExplorerPanel::play_futures);
   return box;
@@ -188,21 +195,29 @@ QString ExplorerPanel::solutions_text() const {
   const InverseFlowSolutions& r = result_.inverse;
   QString html = QStringLiteral("<p><b>%1</b></p>").arg(case_text(r).toHtmlEscaped());
   if (r.solutions.empty()) return html;
-  // One solution after the other, a quantity per row: narrow enough for presentation mode.
+  // The solutions side by side, a quantity per row: half the height of one after the other,
+  // so that both fit the dials' column under the sliders.
   const QString names[2] = {tr("Solution A"), tr("Solution B")};
-  const auto row = [](const QString& name, const QString& value) {
-    return QStringLiteral("<tr><td>&nbsp;&nbsp;%1&nbsp;&nbsp;</td><td>%2</td></tr>")
-        .arg(name, value);
+  const size_t count = std::min<size_t>(r.solutions.size(), 2);
+  const auto row = [&](const QString& name,
+                       const std::function<QString(const PlanarMotionSolution&)>& value) {
+    QString cells = QStringLiteral("<tr><td>%1&nbsp;&nbsp;</td>").arg(name);
+    for (size_t i = 0; i < count; ++i) {
+      cells += QStringLiteral("<td>%1&nbsp;&nbsp;</td>").arg(value(r.solutions[i]));
+    }
+    return cells + QStringLiteral("</tr>");
   };
-  html += QStringLiteral("<table cellspacing=0>");
-  for (size_t i = 0; i < r.solutions.size() && i < 2; ++i) {
-    const PlanarMotionSolution& s = r.solutions[i];
-    html += QStringLiteral("<tr><td colspan=2><b>%1</b></td></tr>").arg(names[i]) +
-            row(tr("normal N"), s.normal_known ? vector_text(s.normal) : tr("any")) +
-            row(tr("facing the camera"), facing_text(s)) +
-            row(tr("V/d, 1/s"), vector_text(s.v_over_d)) +
-            row(tr("Omega, rad/s"), vector_text(s.omega));
-  }
+  html += QStringLiteral("<table cellspacing=0><tr><td></td>");
+  for (size_t i = 0; i < count; ++i) html += QStringLiteral("<td><b>%1</b></td>").arg(names[i]);
+  html +=
+      QStringLiteral("</tr>") +
+      row(tr("normal N"),
+          [](const PlanarMotionSolution& s) {
+            return s.normal_known ? vector_text(s.normal) : tr("any");
+          }) +
+      row(tr("facing"), [](const PlanarMotionSolution& s) { return facing_text(s); }) +
+      row(tr("V/d, 1/s"), [](const PlanarMotionSolution& s) { return vector_text(s.v_over_d); }) +
+      row(tr("Omega, rad/s"), [](const PlanarMotionSolution& s) { return vector_text(s.omega); });
   html += QStringLiteral("</table>");
   html += QStringLiteral("<p>%1</p>")
               .arg(tr("Left out, behind the eye: %1 mirror image(s). d, the plane's distance, "
@@ -224,8 +239,7 @@ QString ExplorerPanel::futures_text() const {
       tr("After one frame %1 px; over 1 px first at frame %2.")
           .arg(f.corner_distance_px.size() > 1 ? f.corner_distance_px[1] : 0.0, 0, 'f', 3)
           .arg(f.first_frame_apart < 0 ? tr("none") : QString::number(f.first_frame_apart));
-  return now + QStringLiteral(" ") + first +
-         tr(" Left: one corner's path under A and under B, magnified.");
+  return now + QStringLiteral(" ") + first;
 }
 
 void ExplorerPanel::play_futures() {
@@ -290,8 +304,47 @@ void ExplorerPanel::paint() {
 }
 
 void ExplorerPanel::paint_futures() {
-  futures_->set_image(paint_explorer_futures(result_, futures_frame_, futures_->size(), theme_));
+  futures_->set_image(paint_explorer_futures(result_, futures_frame_, window_->scene()->texture(),
+                                             window_->scene()->scene().camera, futures_->size(),
+                                             theme_));
   futures_line_->setText(futures_text());
+}
+
+std::vector<QString> ExplorerPanel::text_problems() const {
+  std::vector<QString> problems;
+  const auto add = [&problems](const QString& where, const std::vector<QString>& found) {
+    for (const QString& problem : found) problems.push_back(where + QStringLiteral(": ") + problem);
+  };
+  const auto painted = [&](ImageCanvas* canvas, const std::function<void(QPainter&)>& draw) {
+    if (!canvas->isVisible() || canvas->size().isEmpty()) return;
+    add(canvas->objectName(),
+        oflab::text_problems(record_painted_text(canvas->size(), draw), canvas->size()));
+  };
+  painted(sketch_,
+          [this](QPainter& p) { draw_explorer_solutions(p, result_, sketch_->size(), theme_); });
+  painted(futures_, [this](QPainter& p) {
+    draw_explorer_futures(p, result_, futures_frame_, window_->scene()->texture(),
+                          window_->scene()->scene().camera, futures_->size(), theme_);
+  });
+  for (QWidget* column : {dials_, worlds_}) {
+    for (QWidget* part : column->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+      if (!part->isVisible()) continue;
+      const auto* label = qobject_cast<QLabel*>(part);
+      const int needed = label && label->wordWrap() ? label->heightForWidth(label->width()) : 0;
+      if (part->height() < needed) {
+        problems.push_back(QStringLiteral("%1: %2 px high, its text needs %3")
+                               .arg(part->objectName())
+                               .arg(part->height())
+                               .arg(needed));
+      } else if (part->geometry().bottom() >= column->height()) {
+        problems.push_back(QStringLiteral("%1: reaches past its column (bottom %2 of %3 px)")
+                               .arg(part->objectName())
+                               .arg(part->geometry().bottom())
+                               .arg(column->height()));
+      }
+    }
+  }
+  return problems;
 }
 
 void ExplorerPanel::set_theme(const ViewTheme& theme) {

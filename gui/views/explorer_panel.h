@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QString>
 #include <array>
+#include <vector>
 
 #include "adapters/view_theme.h"
 #include "basis/basis_explorer.h"
@@ -59,6 +60,11 @@ class ExplorerPanel : public QObject {
   QString solutions_text() const;
   QString futures_text() const;
   SliderSpin* slider(int index) const { return sliders_of_[size_t(index)]; }
+  // What is wrong with the texts the panel shows, one sentence each (empty when every word
+  // shows whole): the painted pictures' texts elided, off their canvas or overlapping
+  // (text_problems of gui/adapters/painted_text.h), and a label (the title, the solutions,
+  // the futures' line) shorter than its wrapped text needs or reaching past its column.
+  std::vector<QString> text_problems() const;
   // The smallest text of the painted pictures, pixels.
   double smallest_text_px() const { return theme_.label_size; }
 

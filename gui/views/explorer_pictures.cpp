@@ -14,7 +14,11 @@
 namespace oflab {
 namespace {
 
-constexpr int kGridLines = 9;     // lines per direction: 8 x 8 cells
+constexpr int kGridLines = 9;  // lines per direction: 8 x 8 cells
+// The futures' pictures show when the canvas is at least this many label heights tall (the
+// chart under them keeps 0.45 of it, over kChartPlotLines + 3.8 labels).
+constexpr double kPicturesLines = 14.0;
+constexpr double kChartPlotLines = 2.5;
 constexpr int kLineSamples = 33;  // points per grid line
 
 QColor solution_colour(int index) { return to_qcolor(policy_colour(index)); }
@@ -91,9 +95,11 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
   QFont bold;
   bold.setPixelSize(theme.label_size);
   bold.setBold(true);
-  const bool one_line =
-      QFontMetrics(bold).horizontalAdvance(caption_text) <= image.width() - 2 * margin;
-  const double caption = (one_line ? 1.6 : 2.9) * theme.label_size;
+  // As tall as the caption's wrapped lines need at this width, and a little room.
+  const QRect wrapped = QFontMetrics(bold).boundingRect(
+      QRect(0, 0, std::max(1, int(image.width() - 2 * margin)), 100000), Qt::TextWordWrap,
+      caption_text);
+  const double caption = wrapped.height() + 0.6 * theme.label_size;
   const double scale = std::min((image.width() - 2 * margin) / camera.width,
                                 (image.height() - 2 * margin - caption) / camera.height);
   if (!(scale > 0.0)) return image;
@@ -237,6 +243,13 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   QImage image = blank(size, theme);
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
+  draw_explorer_solutions(painter, result, image.size(), theme);
+  return image;
+}
+
+void draw_explorer_solutions(QPainter& painter, const ExplorerResult& result, const QSize& size,
+                             const ViewTheme& theme) {
+  const QRect image(QPoint(0, 0), size);
   const std::vector<PlanarMotionSolution>& solutions = result.inverse.solutions;
   const int count = std::max<int>(1, int(solutions.size()));
   set_font(painter, theme.label_size);
@@ -282,7 +295,6 @@ QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
   }
   paint_legend(painter, QRectF(6, image.height() - legend, image.width() - 12, legend), lines,
                theme);
-  return image;
 }
 
 namespace {
@@ -295,6 +307,59 @@ int parting_corner(const FutureSeparation& f) {
     if (glm::length(last[0][i] - last[1][i]) > glm::length(last[0][best] - last[1][best])) best = i;
   }
   return best;
+}
+
+// Solution `s`'s camera image at `frame`, in `area` under a title: the camera's frame on the
+// image background, the texture on the quad its rectangle's corners reach (a homography
+// of the texture's pixels, as the plane's image is), the other solution's quad dashed.
+void paint_future_picture(QPainter& painter, const ExplorerResult& result, int frame, int s,
+                          const QImage& texture, const Camera& camera, const QRectF& area,
+                          const ViewTheme& theme) {
+  const FutureSeparation& f = result.futures;
+  const double title = 1.5 * theme.label_size;
+  set_font(painter, theme.label_size, true);
+  painter.setPen(solution_colour(s));
+  painter.drawText(QRectF(area.left() + 4, area.top(), area.width() - 8, title),
+                   Qt::AlignLeft | Qt::AlignVCenter,
+                   QObject::tr("%1, frame %2").arg(s == 0 ? "A" : "B").arg(frame));
+  set_font(painter, theme.label_size);
+  const QRectF box = area.adjusted(4, title, -4, -2);
+  const double scale = std::min(box.width() / camera.width, box.height() / camera.height);
+  if (!(scale > 0.0)) return;
+  const QRectF picture(box.center().x() - 0.5 * scale * camera.width,
+                       box.top() + 0.5 * (box.height() - scale * camera.height),
+                       scale * camera.width, scale * camera.height);
+  QTransform to_picture;
+  to_picture.translate(picture.center().x(), picture.center().y());
+  to_picture.scale(scale, scale);
+  painter.fillRect(picture, to_qcolor(theme.image_background));
+  const auto quad = [&](int solution) {
+    QPolygonF q;
+    for (const Vec2& p : f.corner_images_px[size_t(frame)][size_t(solution)]) {
+      q << to_picture.map(QPointF(p.x, p.y));
+    }
+    return q;
+  };
+  const QRectF rect = texture_rect(camera);
+  QPolygonF source;
+  for (const Vec2& c : result.corners) {
+    source << QPointF((c.x - rect.left()) / rect.width() * texture.width(),
+                      (c.y - rect.top()) / rect.height() * texture.height());
+  }
+  QTransform to_quad;
+  painter.save();
+  painter.setClipRect(picture);
+  if (!texture.isNull() && QTransform::quadToQuad(source, quad(s), to_quad)) {
+    painter.setTransform(to_quad, true);
+    painter.drawImage(QPointF(0, 0), texture);
+  }
+  painter.restore();
+  painter.setPen(QPen(solution_colour(1 - s), theme.line_width, Qt::DashLine));
+  painter.drawPolygon(quad(1 - s));
+  painter.setPen(QPen(solution_colour(s), theme.line_width + 0.5));
+  painter.drawPolygon(quad(s));
+  painter.setPen(QPen(to_qcolor(theme.outline), 1.0));
+  painter.drawRect(picture);
 }
 
 void paint_tracks(QPainter& painter, const FutureSeparation& f, int frame, const QRectF& area,
@@ -348,6 +413,9 @@ void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const 
   painter.setPen(to_qcolor(theme.text));
   painter.drawText(QRectF(area.left(), area.top(), area.width(), 1.5 * label),
                    Qt::AlignLeft | Qt::AlignVCenter, QObject::tr("px apart, per frame"));
+  // The axis values and the mark's text need the plot at least kChartPlotLines labels high:
+  // lower, they would be drawn over each other.
+  if (plot.height() < kChartPlotLines * label) return;
   painter.drawText(
       QRectF(area.left(), plot.top() - 0.8 * label, plot.left() - area.left() - 4, 1.6 * label),
       Qt::AlignRight | Qt::AlignVCenter, QString::number(top, 'f', 1));
@@ -375,26 +443,43 @@ void paint_chart(QPainter& painter, const FutureSeparation& f, int frame, const 
 
 }  // namespace
 
-QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSize& size,
-                              const ViewTheme& theme) {
+QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QImage& texture,
+                              const Camera& camera, const QSize& size, const ViewTheme& theme) {
   QImage image = blank(size, theme);
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
+  draw_explorer_futures(painter, result, frame, texture, camera, image.size(), theme);
+  return image;
+}
+
+void draw_explorer_futures(QPainter& painter, const ExplorerResult& result, int frame,
+                           const QImage& texture, const Camera& camera, const QSize& size,
+                           const ViewTheme& theme) {
+  const QRect image(QPoint(0, 0), size);
   set_font(painter, theme.label_size);
   if (!result.futures_played || result.futures.corner_images_px.empty()) {
     painter.setPen(to_qcolor(theme.text));
     painter.drawText(
-        QRectF(image.rect()).adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
+        QRectF(image).adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
         QObject::tr("Nothing to compare: %1").arg(QString::fromStdString(result.futures_note)));
-    return image;
+    return;
   }
   const FutureSeparation& f = result.futures;
   const int shown = std::clamp(frame, 0, f.frames_played);
-  const double track_side = std::min(0.4 * image.width(), double(image.height()));
-  paint_tracks(painter, f, shown, QRectF(2, 2, track_side - 4, image.height() - 4), theme);
+  // The two pictures side by side above, the magnified track and the chart below; the
+  // pictures only when the chart keeps room for its texts (kChartLines label heights).
+  const double label = theme.label_size;
+  const double pictures =
+      image.height() >= kPicturesLines * label ? std::round(0.55 * image.height()) : 0.0;
+  for (int s = 0; s < 2 && pictures > 0.0; ++s) {
+    paint_future_picture(painter, result, shown, s, texture, camera,
+                         QRectF(0.5 * s * image.width(), 0, 0.5 * image.width(), pictures), theme);
+  }
+  const double below = image.height() - pictures;
+  const double track_side = std::min(0.3 * image.width(), below);
+  paint_tracks(painter, f, shown, QRectF(2, pictures + 2, track_side - 4, below - 4), theme);
   paint_chart(painter, f, shown,
-              QRectF(track_side + 4, 0, image.width() - track_side - 4, image.height()), theme);
-  return image;
+              QRectF(track_side + 4, pictures, image.width() - track_side - 4, below), theme);
 }
 
 }  // namespace oflab

@@ -7,6 +7,8 @@
 #include <QImage>
 #include <QSize>
 
+class QPainter;
+
 #include "adapters/view_theme.h"
 #include "basis/basis_explorer.h"
 
@@ -27,11 +29,22 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
 QImage paint_explorer_solutions(const ExplorerResult& result, const QSize& size,
                                 const ViewTheme& theme);
 
-// The two futures up to frame `frame` (0 .. result.futures.frames_played): left, the track of
-// the corner that parts most under each solution, magnified so both fit; right, the largest
-// corner distance per frame with the 1 px line and the first frame beyond it marked. A note
-// when the futures were not played (result.futures_note).
-QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QSize& size,
-                              const ViewTheme& theme);
+// The two futures at frame `frame` (0 .. result.futures.frames_played): above, side by side,
+// the camera's image under solution A and under solution B (`texture` on the quad its
+// rectangle's corners reach in `camera`'s frame, the other solution's quad dashed); below
+// left, the track of the corner that parts most under each solution, magnified so both fit;
+// below right, the largest corner distance per frame with the 1 px line and the first frame
+// beyond it marked. A note when the futures were not played (result.futures_note).
+QImage paint_explorer_futures(const ExplorerResult& result, int frame, const QImage& texture,
+                              const Camera& camera, const QSize& size, const ViewTheme& theme);
+
+// The same two pictures drawn by `painter` on a device of `size` over what is there (the
+// functions above fill a new image with the background first; a text recorder,
+// gui/adapters/painted_text.h, measures their texts this way).
+void draw_explorer_solutions(QPainter& painter, const ExplorerResult& result, const QSize& size,
+                             const ViewTheme& theme);
+void draw_explorer_futures(QPainter& painter, const ExplorerResult& result, int frame,
+                           const QImage& texture, const Camera& camera, const QSize& size,
+                           const ViewTheme& theme);
 
 }  // namespace oflab

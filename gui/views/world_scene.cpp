@@ -72,6 +72,10 @@ WorldScene::WorldScene() {
   add_plane_actors();
   add_scene_actors();
   velocity = add_arrow(okabe_ito::kVermillion);
+  // V starts at the plane's centre and often runs along it: on the overlay, as the paths,
+  // the plane never hides it.
+  renderer->RemoveActor(velocity.actor);
+  overlay->AddActor(velocity.actor);
   omega = add_arrow(okabe_ito::kReddishPurple);
   normal = add_arrow(okabe_ito::kBlue);
   up = add_arrow(okabe_ito::kBluishGreen);
@@ -160,6 +164,8 @@ void WorldScene::place_label(WorldLabelId id, const Vec3& at, const std::string&
 // The camera's two framings.
 
 void WorldScene::reset_camera() {
+  from_eye = false;
+  show_parts();
   const Mat3 to_world = glm::transpose(first_view.rotation);
   const Vec3 forward = to_world * Vec3(0, 0, 1), view_up = to_world * Vec3(0, -1, 0),
              right = to_world * Vec3(1, 0, 0);
@@ -175,10 +181,41 @@ void WorldScene::reset_camera() {
   vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
   vtk_camera->SetViewAngle(30.0);
   renderer->ResetCamera();
-  // Closer in a wide view; a narrow one (the cause-and-effect layout) keeps the whole width.
-  vtk_camera->Zoom(1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0));
+  // ResetCamera fits a bounding sphere, loosely. The plane: closer, as far as every place it
+  // takes over the loop (and the eye's frustum) stays inside 90 % of the picture. A scene:
+  // closer in a wide view, a narrow one (the cause-and-effect layout) keeping the whole
+  // width; the viewer's path may leave the picture, the polygons and the viewer stay.
+  vtk_camera->Zoom(scene_mode ? 1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0)
+                              : fit_zoom(0.9));
   renderer->ResetCameraClippingRange();
   needs_render = true;
+}
+
+double WorldScene::fit_zoom(double fill) const {
+  std::vector<Vec3> points = {viewer_to_world(first_view, Vec3(0.0))};
+  for (const Vec3& c : image_plane_corners(camera, depth)) {
+    points.push_back(viewer_to_world(first_view, c));
+  }
+  const double reach = scene_mode ? 0.0 : 0.5 * std::hypot(first_pose.size.x, first_pose.size.y);
+  for (const Vec3& p : path) {
+    for (int axis = 0; axis < 3; ++axis) {
+      Vec3 step(0.0);
+      step[axis] = reach;
+      points.push_back(p + step);
+      points.push_back(p - step);
+    }
+  }
+  const int* size = window->GetSize();
+  double widest = 1e-9;  // the furthest point from the picture's centre, in half sizes
+  for (const Vec3& p : points) {
+    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    if (d[2] < 0.0 || d[2] > 1.0) continue;
+    widest = std::max(
+        {widest, std::abs(d[0] / (0.5 * size[0]) - 1.0), std::abs(d[1] / (0.5 * size[1]) - 1.0)});
+  }
+  return std::clamp(fill / widest, 0.5, 3.0);
 }
 
 void WorldScene::view_from_camera() {
@@ -186,12 +223,25 @@ void WorldScene::view_from_camera() {
   const Vec3 eye_at = viewer_to_world(view, Vec3(0.0));
   const Vec3 ahead = eye_at + to_world * Vec3(0, 0, 4.0 * depth),
              view_up = to_world * Vec3(0, -1, 0);
+  // The image's half height and half width over the focal length; VTK's angle is vertical,
+  // so a render narrower than the image needs a taller angle to show its whole width.
+  const double aspect = std::max(1e-3, renderer->GetTiledAspectRatio());
+  const double half_tan = (1.0 + 2.0 * kEyeViewMargin) * 0.5 / camera.focal_px *
+                          std::max(double(camera.height), double(camera.width) / aspect);
   vtkCamera* vtk_camera = renderer->GetActiveCamera();
   vtk_camera->SetPosition(eye_at.x, eye_at.y, eye_at.z);
   vtk_camera->SetFocalPoint(ahead.x, ahead.y, ahead.z);
   vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
-  vtk_camera->SetViewAngle(2.0 * std::atan(0.5 * camera.height / camera.focal_px) * 180.0 / kPi);
+  vtk_camera->SetViewAngle(2.0 * std::atan(half_tan) * 180.0 / kPi);
+  from_eye = true;
+  show_parts();
   renderer->ResetCameraClippingRange();
+  needs_render = true;
+}
+
+void WorldScene::leave_eye() {
+  from_eye = false;
+  show_parts();
   needs_render = true;
 }
 
@@ -287,21 +337,29 @@ void WorldScene::place_viewer(const ViewerPose& pose) {
 
 void WorldScene::place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega_w,
                               double arrow_scale) {
-  const double lv = arrow_length(glm::length(velocity), largest_velocity, arrow_scale);
-  const double lo = arrow_length(glm::length(omega_w), largest_omega, arrow_scale);
-  place(this->velocity, at, velocity, lv);
-  place(omega, at, omega_w, lo);
-  char text[96];
-  std::snprintf(text, sizeof text, "V %.2f/s", glm::length(velocity));
-  place_label(kVelocityLabel, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
-  std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye", glm::length(omega_w));
-  place_label(kOmegaLabel, lo > 0 ? at + glm::normalize(omega_w) * lo : at, text);
-  // The axis Omega turns about passes through the eye, not through the arrow's foot.
+  // A vector that its label would print as 0.00 is neither drawn nor labelled.
+  const bool moving = glm::length(velocity) >= kLeastShownRate;
+  const bool turning = glm::length(omega_w) >= kLeastShownRate;
+  const double lv = moving ? arrow_length(glm::length(velocity), largest_velocity, arrow_scale) : 0;
+  const double lo = turning ? arrow_length(glm::length(omega_w), largest_omega, arrow_scale) : 0;
+  // Omega turns about the eye (the theory's convention): for the plane its arrow starts
+  // there, on the axis; in a scene the eye is crowded with the frustum's labels, and both
+  // arrows start at `at`, ahead of it.
   const Vec3 eye_w = viewer_to_world(view, Vec3(0.0));
+  const Vec3 omega_at = scene_mode ? at : eye_w;
+  place(this->velocity, at, velocity, lv);
+  place(omega, omega_at, omega_w, lo);
+  char text[96] = "";
+  if (moving) std::snprintf(text, sizeof text, "V %.2f units/s", glm::length(velocity));
+  place_label(kVelocityLabel, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
+  text[0] = 0;
+  if (turning)
+    std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye", glm::length(omega_w));
+  place_label(kOmegaLabel, lo > 0 ? omega_at + glm::normalize(omega_w) * lo : omega_at, text);
   std::vector<Vec3> axis;
   if (lo > 0) {
     const double reach = 1.1 * glm::length(at - eye_w);
-    axis = {eye_w, eye_w + reach * glm::normalize(omega_w)};
+    axis = {eye_w, eye_w + std::max(reach, lo) * glm::normalize(omega_w)};
   }
   set_polyline(omega_axis.data, axis, false);
 }
@@ -341,7 +399,9 @@ void WorldScene::update_plane(const SceneModel& scene) {
   place_label(kUpLabel, pose.point + axes.up * side, "U");
   place_motion(pose.point, eye_velocity(motion, pose), motion.omega, full_arrow);
   split_path(scene.frame());
-  if (exact) copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels);
+  if (exact)
+    copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels,
+                      theme.image_background);
   char text[400];
   std::snprintf(text, sizeof text,
                 "The eye looks along +Z; the image plane is drawn at "
@@ -351,7 +411,7 @@ void WorldScene::update_plane(const SceneModel& scene) {
                 "Path of the plane's centre: past thick, future thin. Rays: eye to the plane's "
                 "corners through their images.",
                 depth, camera.focal_px);
-  texts.caption = text;
+  caption_body = text;
 }
 
 void WorldScene::update_scene(AnimationModel& animation) {
@@ -379,7 +439,7 @@ void WorldScene::update_scene(AnimationModel& animation) {
                  to_world * motion.velocity / dt, to_world * motion.omega / dt, full_arrow);
   }
   split_path(frame);
-  copy_frame_pixels(animator->image(), frame_pixels);
+  copy_frame_pixels(animator->image(), frame_pixels, theme.image_background);
   char text[400];
   std::snprintf(text, sizeof text,
                 "The viewer walks through the scene; its image plane shows the "
@@ -388,18 +448,20 @@ void WorldScene::update_scene(AnimationModel& animation) {
                 "perspective orange, re-render vermillion); culled pale, hidden dark.\n"
                 "V and Omega: the scene's motion seen by the viewer (Omega about the eye). "
                 "Viewer's path: past thick, future thin.");
-  texts.caption = text;
+  caption_body = text;
 }
 
 void WorldScene::show_parts() {
   const auto on = [this](WorldPart part) { return shown[size_t(part)]; };
   const bool plane_mode = !scene_mode;
-  for (vtkProp* p : {static_cast<vtkProp*>(eye.Get()), static_cast<vtkProp*>(frustum.actor)}) {
-    p->SetVisibility(on(WorldPart::kFrustum));
-  }
-  texts.labels[kEyeLabel].shown = on(WorldPart::kFrustum);
-  image_plane.actor->SetVisibility(on(WorldPart::kImagePlane));
-  texts.labels[kImageLabel].shown = on(WorldPart::kImagePlane);
+  // Through the eye the ball would enclose the camera and the image plane would cover what
+  // it shows; the frustum's border stays, as the frame of what the camera sees.
+  eye->SetVisibility(on(WorldPart::kFrustum) && !from_eye);
+  frustum.actor->SetVisibility(on(WorldPart::kFrustum));
+  texts.labels[kEyeLabel].shown = on(WorldPart::kFrustum) && !from_eye;
+  image_plane.actor->SetVisibility(on(WorldPart::kImagePlane) && !from_eye);
+  texts.labels[kImageLabel].shown = from_eye ? on(WorldPart::kFrustum) : on(WorldPart::kImagePlane);
+  texts.labels[kImageLabel].text = from_eye ? "the camera's image" : "image plane";
   for (vtkProp* p : {static_cast<vtkProp*>(plane.actor), static_cast<vtkProp*>(plane_outline.actor),
                      static_cast<vtkProp*>(normal.actor), static_cast<vtkProp*>(up.actor)}) {
     p->SetVisibility(plane_mode && on(WorldPart::kPlane));
@@ -408,12 +470,14 @@ void WorldScene::show_parts() {
       plane_mode && on(WorldPart::kPlane);
   velocity.actor->SetVisibility(on(WorldPart::kVelocity));
   texts.labels[kVelocityLabel].shown = on(WorldPart::kVelocity);
+  // Omega's arrow starts at the eye: through the eye it would fill the view (the caption
+  // gives its value instead).
   for (vtkProp* p : {static_cast<vtkProp*>(omega.actor), static_cast<vtkProp*>(omega_axis.actor)}) {
-    p->SetVisibility(on(WorldPart::kOmega));
+    p->SetVisibility(on(WorldPart::kOmega) && !from_eye);
   }
-  texts.labels[kOmegaLabel].shown = on(WorldPart::kOmega);
-  rays.actor->SetVisibility(plane_mode && on(WorldPart::kRays));
-  ray_images.actor->SetVisibility(plane_mode && on(WorldPart::kRays));
+  texts.labels[kOmegaLabel].shown = on(WorldPart::kOmega) && !from_eye;
+  rays.actor->SetVisibility(plane_mode && on(WorldPart::kRays) && !from_eye);
+  ray_images.actor->SetVisibility(plane_mode && on(WorldPart::kRays) && !from_eye);
   path_past.actor->SetVisibility(on(WorldPart::kPath));
   path_future.actor->SetVisibility(on(WorldPart::kPath));
   polygons.actor->SetVisibility(scene_mode && on(WorldPart::kScene));
@@ -439,6 +503,20 @@ void WorldScene::apply_theme() {
     p->actor->GetProperty()->SetLineWidth(p == &rays ? thin : thick);
   }
   texts.labels[kEyeLabel].colour = texts.labels[kImageLabel].colour = t.text;
+}
+
+std::string WorldScene::caption() const {
+  if (!from_eye) return caption_body;
+  const std::string& omega_text = texts.labels[kOmegaLabel].text;
+  // Short: through the eye the picture is smaller than the frame it is drawn in, and the
+  // lines on the image plane, the rays and the depth do not apply.
+  return "Seen through the eye: the frame is the image's border (" +
+         (omega_text.empty() ? std::string("no Omega") : omega_text) +
+         ", its arrow, the eye, the image plane and the rays left out). Drag to look "
+         "around, or press Reset view.\n" +
+         (scene_mode ? std::string("Polygons in their level's colour; culled pale, hidden dark.")
+                     : std::string("V is the velocity of the body point at the eye. Path of "
+                                   "the plane's centre: past thick, future thin."));
 }
 
 bool WorldScene::to_canvas(const Vec3& at, QPointF* canvas) const {

@@ -78,9 +78,13 @@ struct WorldScene {
     vtkSmartPointer<vtkMatrix4x4> matrix;
   };
   Arrow velocity, omega, normal, up;
-  WorldTexts texts;  // labels, legend and caption, painted over VTK's picture
+  WorldTexts texts;          // labels, legend and caption, painted over VTK's picture
+  std::string caption_body;  // what the frame shows, set by update_plane and update_scene
 
   ViewTheme theme = view_theme(false);
+  // The camera looks through the eye (view_from_camera): the eye's ball, the image plane
+  // and the rays are left out, whatever `shown` says.
+  bool from_eye = false;
   std::array<bool, kWorldPartCount> shown{true, true, true, true, true, true, true, true};
 
   // What the source gives for every frame (rebuilt when the source changes).
@@ -119,12 +123,19 @@ struct WorldScene {
   void update_scene(AnimationModel& animation);
   // The eye, frustum, image plane and their labels at the viewer pose `pose`.
   void place_viewer(const ViewerPose& pose);
-  // The V and Omega arrows at `at` (per second), scaled by the loop's largest speeds.
+  // The V arrow at `at` and the Omega arrow at the eye (at `at` too in a scene; per second),
+  // scaled by the loop's
+  // largest speeds; a vector shorter than kLeastShownRate (which its label would print as
+  // 0.00) is neither drawn nor labelled.
+  static constexpr double kLeastShownRate = 0.005;
   void place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega, double arrow_scale);
   // The path up to `frame` (past) and from it (future).
   void split_path(int frame);
   // Shows the parts `shown` asks for that the mode (plane or scene) has.
   void show_parts();
+  // The caption under the picture: caption_body, after a line saying so when the camera
+  // looks through the eye.
+  std::string caption() const;
   // Colours and line widths of `theme`.
   void apply_theme();
   // Where world point `at` lands in the last render (canvas pixels); false when it is behind
@@ -134,8 +145,18 @@ struct WorldScene {
   // The camera framing everything drawn, seen from behind, above and left of the first
   // frame's eye.
   void reset_camera();
-  // The camera at the eye now (the viewer's in a scene) with the camera's field of view.
+  // The zoom (VTK's Camera::Zoom factor, 0.5 .. 3) after which the eye, its image plane and
+  // every place of the plane over the loop (its centre +- half its diagonal along each axis)
+  // fill `fill` of the picture's half width or half height, whichever they reach first, as
+  // the current camera projects them (reset_camera's framing of the plane).
+  double fit_zoom(double fill) const;
+  // The camera at the eye now (the viewer's in a scene), looking along its line of sight
+  // with its up, its field of view wide enough that the whole image and a margin of
+  // kEyeViewMargin of it on each side fit the render's shape. Call after the window's size.
   void view_from_camera();
+  // The camera stays where it is but no longer looks through the eye (a mouse move).
+  void leave_eye();
+  static constexpr double kEyeViewMargin = 0.12;
 
  private:
   // Called by the constructor in this order, the order the renderers keep their actors in.

@@ -49,14 +49,8 @@ QWidget* WorldView::make_button_bar() {
   row->addWidget(reset);
   row->addWidget(eye);
   row->addWidget(note_, 1);
-  connect(reset, &QPushButton::clicked, this, [this] {
-    reset_camera();
-    camera_moved();
-  });
-  connect(eye, &QPushButton::clicked, this, [this] {
-    view_from_camera();
-    camera_moved();
-  });
+  connect(reset, &QPushButton::clicked, this, &WorldView::reset_camera);
+  connect(eye, &QPushButton::clicked, this, &WorldView::view_from_camera);
   return bar;
 }
 
@@ -69,6 +63,7 @@ ImageCanvas* WorldView::make_canvas() {
   });
   connect(canvas_, &ImageCanvas::dragged, this,
           [this](QPointF delta, Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers) {
+            leave_eye();
             if (buttons & Qt::MiddleButton ||
                 (buttons & Qt::LeftButton && modifiers & Qt::ShiftModifier)) {
               pan_camera(world_->renderer, delta);
@@ -80,6 +75,7 @@ ImageCanvas* WorldView::make_canvas() {
             camera_moved();
           });
   connect(canvas_, &ImageCanvas::wheel_turned, this, [this](double notches) {
+    leave_eye();
     dolly_camera(world_->renderer, notches);
     camera_moved();
   });
@@ -101,6 +97,28 @@ void WorldView::follow_models() {
     world_->source_dirty = true;
     refresh();
   });
+  connect(window_, &WindowModel::world_camera_changed, this, [this] {
+    if (window_->world_camera() == placed_camera_) return;
+    camera_placed_ = false;
+    camera_moved();
+  });
+}
+
+void WorldView::place_camera() {
+  placed_camera_ = window_->world_camera();
+  if (placed_camera_ == WorldCamera::kEye) {
+    world_->view_from_camera();
+  } else {
+    world_->reset_camera();
+  }
+  camera_placed_ = true;
+}
+
+void WorldView::leave_eye() {
+  if (placed_camera_ != WorldCamera::kEye) return;
+  placed_camera_ = WorldCamera::kOrbit;
+  world_->leave_eye();
+  window_->set_world_camera(WorldCamera::kOrbit);
 }
 
 vtkRenderer* WorldView::renderer() const { return world_->renderer; }
@@ -158,10 +176,7 @@ void WorldView::draw() {
   if (size.isEmpty()) return;
   if (dirty_) update_now();  // a resize may come before the first refresh
   m.window->SetSize(size.width(), size.height());
-  if (!camera_placed_) {  // after the size: the framing depends on the picture's shape
-    reset_camera();
-    camera_placed_ = true;
-  }
+  if (!camera_placed_) place_camera();  // after the size: the framing depends on its shape
   QImage& picture = m.pictures[size_t(m.next_picture)];
   m.next_picture = 1 - m.next_picture;
   const StageTimer drawing(FrameStage::kDrawing);  // VTK's render and its read-back
@@ -174,6 +189,7 @@ void WorldView::draw() {
     picture.fill(to_qcolor(m.theme.background));
   }
   const StageTimer text(FrameStage::kText);
+  m.texts.caption = m.caption();
   m.texts.lay_out(size, font(), m.theme,
                   [&m](const Vec3& at, QPointF* canvas) { return m.to_canvas(at, canvas); });
   {
@@ -207,14 +223,25 @@ void WorldView::update_now() {
   } else {
     m.update_plane(*window_->scene());
   }
+  if (camera_placed_ && placed_camera_ == WorldCamera::kEye) m.view_from_camera();  // follows
   m.show_parts();
   m.needs_render = true;
   dirty_ = false;
 }
 
-void WorldView::reset_camera() { world_->reset_camera(); }
+void WorldView::reset_camera() {
+  camera_placed_ = false;  // placed again even when the model already says "orbit"
+  window_->set_world_camera(WorldCamera::kOrbit);
+  camera_moved();
+}
 
-void WorldView::view_from_camera() { world_->view_from_camera(); }
+void WorldView::view_from_camera() {
+  camera_placed_ = false;
+  window_->set_world_camera(WorldCamera::kEye);
+  camera_moved();
+}
+
+bool WorldView::from_eye() const { return world_->from_eye; }
 
 void WorldView::set_theme(const ViewTheme& theme) {
   world_->theme = theme;

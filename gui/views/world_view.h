@@ -22,9 +22,13 @@
 //
 // Mouse: orbit (left), pan (middle or Shift+left), zoom (wheel or right), the rules of VTK's
 // trackball camera (gui/adapters/camera_moves.h). "Reset view" frames the whole world; "View
-// from the camera" looks through the eye. Every actor is made once: frames replace points,
-// transforms and pixels in place. VTK renders only when something it draws changed (the
-// frame, the source, a part shown, the theme, the camera, the size).
+// from the camera" looks through the eye, following it, with a field of view a little wider
+// than the camera's so that the image's border shows as a frame; the eye's ball, the image
+// plane and the rays are left out there (the ball would enclose the view, the image plane
+// would cover the plane). The two are the window model's world camera
+// (WindowState::world_camera, "orbit" and "eye"); a drag makes it "orbit" again. Every actor is
+// made once: frames replace points, transforms and pixels in place. VTK renders only when something
+// it draws changed (the frame, the source, a part shown, the theme, the camera, the size).
 //
 // Texts. The labels (eye, image plane, V, Omega, N, U) are painted next to the projection of
 // the point they name, placed so that none covers another or the caption
@@ -37,6 +41,7 @@
 
 #include "adapters/painted_text.h"
 #include "flow/geometry.h"
+#include "state/window_state.h"
 #include "views/view_page.h"
 
 class QLabel;
@@ -65,10 +70,14 @@ class WorldView : public ViewPage {
   void set_theme(const ViewTheme& theme) override;
   double smallest_text_px() const override;
 
-  // The VTK camera framing everything drawn, seen from behind, above and left of the eye.
+  // The VTK camera framing everything drawn, seen from behind, above and left of the eye
+  // (the model's world camera becomes "orbit").
   void reset_camera();
-  // The VTK camera at the eye (the viewer's in a scene) with the camera's field of view.
+  // The VTK camera at the eye (the viewer's in a scene), looking through it (the model's
+  // world camera becomes "eye").
   void view_from_camera();
+  // True while the camera looks through the eye.
+  bool from_eye() const;
 
   // Hides or shows a part (screenshots that leave a part out; the image tests' controls).
   void set_part_shown(WorldPart part, bool shown);
@@ -108,6 +117,11 @@ class WorldView : public ViewPage {
   void update_now();
   void draw();          // renders VTK at the canvas's size and shows it with its texts
   void camera_moved();  // draws again after a mouse move or a button
+  // Places the VTK camera as the model's world camera says (after the canvas has its size).
+  void place_camera();
+  // A mouse move leaves the view through the eye: the model's world camera becomes "orbit"
+  // without moving the camera.
+  void leave_eye();
 
   WindowModel* window_;
   ImageCanvas* canvas_ = nullptr;
@@ -115,6 +129,7 @@ class WorldView : public ViewPage {
   std::unique_ptr<WorldScene> world_;  // the VTK window, its actors and the camera
   bool dirty_ = true;
   bool camera_placed_ = false;
+  WorldCamera placed_camera_ = WorldCamera::kOrbit;  // the framing the camera was placed by
 };
 
 }  // namespace oflab

@@ -106,7 +106,9 @@ std::vector<ClaimKind> make_kinds() {
              "threshold upwards over the frames it charts",
              false, true),
       screen("cut_texts",
-             "texts the animation view paints elided, off its canvas or overlapping another"),
+             "texts elided, off their canvas or overlapping another, or labels cut short: of "
+             "the world view or the basis view's explorer when in front, else of the "
+             "animation view"),
       engine("view", "1 when the view in front is `of`, else 0", true),
       engine("run_pixels_ratio",
              "the pixels compared policy `of` has written over frames 0 .. now over those of "

@@ -152,6 +152,11 @@ void add_top_fields(std::vector<StateField>& f) {
       flag("scene_panel", "the scene panel is shown", [](S* s) { return &s->scene_panel; }));
   f.push_back(flag("cause_and_effect", "the world view beside the flow view instead of tabs",
                    [](S* s) { return &s->cause_and_effect; }));
+  f.push_back(named<WorldCamera>(
+      "world_camera", "orbit, eye",
+      "where the world view looks from: beside the eye (orbit) or through it (eye)",
+      [](S* s) { return &s->world_camera; }, parse_world_camera,
+      [](WorldCamera c) { return std::string(world_camera_name(c)); }));
   f.push_back(text_field("lesson", "a lesson's name, or empty", "the lesson whose caption shows",
                          [](S* s) { return &s->lesson; }));
   f.push_back(whole_field("lesson_step", Limit{"lesson step", "", 0, 1000, true},

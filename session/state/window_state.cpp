@@ -153,6 +153,20 @@ bool parse_panel_display(const std::string& text, PanelDisplay* display) {
   return false;
 }
 
+const char* world_camera_name(WorldCamera camera) {
+  return camera == WorldCamera::kEye ? "eye" : "orbit";
+}
+
+bool parse_world_camera(const std::string& text, WorldCamera* camera) {
+  for (WorldCamera c : {WorldCamera::kOrbit, WorldCamera::kEye}) {
+    if (text == world_camera_name(c)) {
+      *camera = c;
+      return true;
+    }
+  }
+  return false;
+}
+
 bool operator==(const WindowState& a, const WindowState& b) { return same_fields(a, b); }
 
 std::string window_state_problem(const WindowState& s) {

@@ -27,6 +27,14 @@ bool parse_panel_display(const std::string& text, PanelDisplay* display);
 // The names of every display joined by `separator`, for help texts and error messages.
 std::string panel_display_names(const std::string& separator = ", ");
 
+// Where the world view's camera looks from: kOrbit frames the whole world from beside the
+// eye (the mouse orbits it; "Reset view"), kEye looks through the eye with the camera's
+// field of view ("View from the camera").
+enum class WorldCamera { kOrbit, kEye };
+// "orbit", "eye"
+const char* world_camera_name(WorldCamera camera);
+bool parse_world_camera(const std::string& text, WorldCamera* camera);
+
 // The most policies the comparison layout plays at once.
 constexpr int kMaxComparedPolicies = 4;
 
@@ -63,6 +71,7 @@ struct WindowState {
   // The cause-and-effect layout: the world view (the cause) beside the flow view (the
   // effect) instead of the tabs.
   bool cause_and_effect = false;
+  WorldCamera world_camera = WorldCamera::kOrbit;  // where the world view looks from
   int play_rate = 30;    // live play, frames per second (limits::kPlayRate)
   bool playing = false;  // the scene's motion plays
   int frame = 0;         // the frame shown (limits::kFrameCount)
