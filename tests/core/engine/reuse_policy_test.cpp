@@ -163,9 +163,6 @@ TEST(ReusePolicies, LevelCostsCountTheWarpsEachLevelRuns) {
   EXPECT_EQ(p[static_cast<int>(Level::kRerender)], 5000);     // texture -> display
 }
 
-}  // namespace
-}  // namespace oflab
-
 TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
   for (const ReusePolicy& p : reuse_policies()) {
     for (int k = 0; k < kLevelCount; ++k) {
@@ -187,3 +184,6 @@ TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
     EXPECT_STRNE(level_word(reuse_policy(name), Level::kRerender), "rerender") << name;
   }
 }
+
+}  // namespace
+}  // namespace oflab
