@@ -28,25 +28,40 @@ double exact_drawn(AnimationView* view) {
   return double(covered) / double(exact.pixel_count());
 }
 
+// The narrowest width of the frame's content as drawn on the comparison's heat maps (the
+// last `policies` panels), canvas pixels; 0 outside the comparison.
 double heat_map_width(MainWindow* window, AnimationView* view) {
   view->render_image();
   const int policies = int(window->model()->comparison().policies().size());
-  const std::vector<QRectF>& rects = view->panel_rects();
+  const std::vector<QRectF> drawn = view->drawn_content_rects();
   if (window->model()->panel_display() != PanelDisplay::kComparison ||
-      int(rects.size()) < 2 * policies + 1) {
+      int(drawn.size()) < 2 * policies + 1) {
     return 0.0;
   }
   double narrowest = 1e300;
-  for (size_t k = rects.size() - size_t(policies); k < rects.size(); ++k) {
-    narrowest = std::min(narrowest, rects[k].width());
+  for (size_t k = drawn.size() - size_t(policies); k < drawn.size(); ++k) {
+    narrowest = std::min(narrowest, drawn[k].width());
   }
   return narrowest;
 }
 
-// Texts of the animation view that are elided, leave its canvas or overlap another.
-double cut_texts(AnimationView* view) {
+// The percent of the exact panel's image the exact frame's content covers as drawn.
+double panel_fill(AnimationView* view) {
   view->render_image();
-  return double(view->text_problems().size());
+  return 100.0 * view->content_fill();
+}
+
+// Texts of the view in front that are elided, leave its canvas or overlap another: the
+// analysis view's when it is in front, else the animation view's.
+double cut_texts(MainWindow* window) {
+  if (auto* analysis = qobject_cast<AnalysisView*>(window->current_view())) {
+    analysis->render_image();
+    return double(analysis->text_problems().size());
+  }
+  auto* animation = qobject_cast<AnimationView*>(window->view(QStringLiteral("animation")));
+  if (!animation) return kUnknown;
+  animation->render_image();
+  return double(animation->text_problems().size());
 }
 
 // How often the analysis view's budget chart of `claim.level` crosses its threshold upwards
@@ -96,7 +111,8 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
       {"heat_map_width", on_animation(heat_map_width)},
       {"hole_map_pixels",
        on_animation([](MainWindow*, AnimationView* v) { return double(v->hole_map_pixels()); })},
-      {"cut_texts", on_animation([](MainWindow*, AnimationView* v) { return cut_texts(v); })},
+      {"panel_fill", on_animation([](MainWindow*, AnimationView* v) { return panel_fill(v); })},
+      {"cut_texts", [](MainWindow* window, const LessonClaim&) { return cut_texts(window); }},
       {"active_tiles",
        [](MainWindow* window, const LessonClaim&) {
          BasisView* basis = basis_view(window);

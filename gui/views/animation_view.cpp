@@ -129,11 +129,13 @@ QWidget* AnimationView::make_panels() {
   readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Minimum);
   make_zoom_box(box);
   auto* fit = new QPushButton(tr("Fit"), box);
-  fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
+  fit->setToolTip(tr("Zoom to fit what the framing frames on every panel"));
   layout->addWidget(readout_);
   bottom->addStretch(1);
   bottom->addWidget(new QLabel(tr("Exact"), box));
   bottom->addWidget(make_exact_box(box));
+  bottom->addWidget(new QLabel(tr("Framing"), box));
+  bottom->addWidget(make_framing_box(box));
   bottom->addWidget(new QLabel(tr("Zoom"), box));
   bottom->addWidget(zoom_box_);
   bottom->addWidget(fit);
@@ -172,7 +174,7 @@ QDoubleSpinBox* AnimationView::make_zoom_box(QWidget* parent) {
   zoom_box_->setValue(window_->zoom());
   zoom_box_->setSuffix(QStringLiteral(" x"));
   zoom_box_->setToolTip(
-      tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
+      tr("Zoom of every panel; 1 fits what the framing frames (mouse wheel "
          "over the panels)"));
   connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double z) {
     if (!window_->set_zoom(z)) show_panels();  // refused: the box shows the model's zoom
@@ -206,6 +208,22 @@ QComboBox* AnimationView::make_exact_box(QWidget* parent) {
   return exact_box_;
 }
 
+QComboBox* AnimationView::make_framing_box(QWidget* parent) {
+  framing_box_ = new QComboBox(parent);
+  framing_box_->setObjectName(QStringLiteral("animation_framing"));
+  framing_box_->addItems(QString::fromStdString(panel_framing_names(",")).split(','));
+  framing_box_->setToolTip(
+      tr("What every panel frames, one zoom for all: loop, the plane's whole motion; content, "
+         "what is drawn around the frame shown, so a far plane fills its panel; auto, content "
+         "in presentation mode. Display only: no error figure changes"));
+  connect(framing_box_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    PanelFraming framing = PanelFraming::kAuto;
+    if (parse_panel_framing(framing_box_->itemText(index).toStdString(), &framing))
+      window_->set_framing(framing);
+  });
+  return framing_box_;
+}
+
 PanelDisplay AnimationView::display() const { return window_->panel_display(); }
 
 void AnimationView::show_panels() {
@@ -219,8 +237,9 @@ void AnimationView::show_panels() {
   if (display != shown_display_) blink_phase_ = false;
   shown_display_ = display;
   {
-    const QSignalBlocker block1(exact_box_), block2(zoom_box_);
+    const QSignalBlocker block1(exact_box_), block2(zoom_box_), block3(framing_box_);
     exact_box_->setCurrentIndex(int(exact_kind_ - exact_renderers().data()));
+    framing_box_->setCurrentText(QString::fromLatin1(panel_framing_name(window_->framing())));
     zoom_box_->setValue(window_->zoom());
   }
   controls_->set_display(display);
@@ -363,21 +382,67 @@ std::vector<PanelContent> AnimationView::panels() {
 
 QRectF AnimationView::fit_content() {
   if (fit_known_) return fit_;
-  fit_ = QRectF();
+  frame_bounds_.clear();
   const AnimationSourceKind& kind = model_->source_kind();
   try {
     if (kind.plane_script) {
-      fit_ =
-          script_image_bounds(kind.plane_script(model_->source(), model_->player().panel()), kNear);
+      frame_bounds_ =
+          script_frame_bounds(kind.plane_script(model_->source(), model_->player().panel()), kNear);
     } else if (kind.viewer_script && model_->animator()) {
-      fit_ = scene_image_bounds(model_->animator()->scene(), kind.viewer_script(model_->source()),
-                                kNear);
+      frame_bounds_ = scene_frame_bounds(model_->animator()->scene(),
+                                         kind.viewer_script(model_->source()), kNear);
     }
   } catch (const std::exception&) {  // the model refuses such sources with a message
-    fit_ = QRectF();
+    frame_bounds_.clear();
   }
+  fit_ = bounds_around(frame_bounds_, 0, -1);
   fit_known_ = true;
   return fit_;
+}
+
+QRectF AnimationView::framed_content() {
+  const QRectF loop = fit_content();
+  if (!window_->frames_content() || !model_->animator()) return loop;
+  const QRectF around = bounds_around(frame_bounds_, model_->animator()->frame(), kFramingFrames);
+  return around.isEmpty() ? loop : around;
+}
+
+std::vector<QRectF> AnimationView::drawn_content_rects() {
+  const Image& exact = exact_image();
+  int x0 = exact.width(), y0 = exact.height(), x1 = -1, y1 = -1;
+  for (int y = 0; y < exact.height(); ++y) {
+    const Pixel* row = exact.row(y);
+    for (int x = 0; x < exact.width(); ++x) {
+      if (row[x].a == 0) continue;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    }
+  }
+  std::vector<QRectF> drawn;
+  const QRectF covered = x1 < 0 ? QRectF() : QRectF(QPointF(x0, y0), QPointF(x1 + 1, y1 + 1));
+  for (const QRectF& panel : panel_rects_) {
+    const QRectF in_panel =
+        covered.isEmpty() ? QRectF() : frame_to_panel(shown_frame_, panel).mapRect(covered);
+    drawn.push_back(in_panel.intersected(panel));
+  }
+  return drawn;
+}
+
+double AnimationView::content_fill() {
+  const Image& exact = exact_image();
+  if (exact.empty() || shown_frame_.isEmpty()) return 0.0;
+  const QRect pixels =
+      shown_frame_.toAlignedRect().intersected(QRect(0, 0, exact.width(), exact.height()));
+  std::size_t covered = 0;
+  for (int y = pixels.top(); y <= pixels.bottom(); ++y) {
+    const Pixel* row = exact.row(y);
+    for (int x = pixels.left(); x <= pixels.right(); ++x) {
+      covered += row[x].a > 0 && shown_frame_.contains(QPointF(x + 0.5, y + 0.5));
+    }
+  }
+  return double(covered) / (shown_frame_.width() * shown_frame_.height());
 }
 
 void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
@@ -422,7 +487,7 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
   QFont font;
   font.setPixelSize(theme_.font_size);
   const QFontMetrics metrics(font);
-  CaptionLines lines{2, 1};
+  CaptionLines lines{2, 1, theme_.font_size, 1};
   for (size_t i = 0; i < contents.size(); ++i) {
     QStringList wrapped;
     for (const QString& line : contents[i].caption)
@@ -430,6 +495,25 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
     contents[i].caption = wrapped;
     int& row = heat_row && int(i) >= columns ? lines.heat : lines.top;
     row = std::max(row, int(wrapped.size()));
+  }
+  QFont bold = font;
+  bold.setBold(true);
+  for (double scale : {1.15, 1.0, 0.85}) {
+    bold.setPixelSize(int(theme_.font_size * scale));
+    const QFontMetrics title_metrics(bold);
+    const bool fits = std::all_of(contents.begin(), contents.end(), [&](const PanelContent& c) {
+      return title_metrics.horizontalAdvance(c.title) <= cell_width;
+    });
+    if (fits) {
+      lines.title_px = bold.pixelSize();
+      return lines;
+    }
+  }
+  bold.setPixelSize(theme_.font_size);
+  for (PanelContent& c : contents) {
+    const QStringList wrapped = wrapped_caption(c.title, QFontMetrics(bold), cell_width);
+    c.title = wrapped.join(QLatin1Char('\n'));
+    lines.title_lines = std::max(lines.title_lines, int(wrapped.size()));
   }
   return lines;
 }
@@ -439,15 +523,17 @@ void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
   const int text_px = theme_.font_size;
   QFont font = painter.font();
   font.setBold(true);
-  // The title a little larger than the text when it fits, else at the text size, elided.
-  font.setPixelSize(int(text_px * 1.15));
-  if (QFontMetrics(font).horizontalAdvance(panel.title) > cell.title.width())
-    font.setPixelSize(text_px);
+  font.setPixelSize(lines_.title_px);
   painter.setFont(font);
   painter.setPen(qcolor(theme_.text));
-  painter.drawText(
-      cell.title, Qt::AlignCenter,
-      QFontMetrics(font).elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
+  const QStringList title = panel.title.split(QLatin1Char('\n'));
+  const double title_row = cell.title.height() / std::max(1, lines_.title_lines);
+  const double title_top = cell.title.bottom() - title_row * title.size();
+  for (int i = 0; i < title.size(); ++i) {
+    const QRectF row(cell.title.left(), title_top + i * title_row, cell.title.width(), title_row);
+    painter.drawText(row, Qt::AlignCenter,
+                     QFontMetrics(font).elidedText(title[i], Qt::ElideRight, int(row.width())));
+  }
   font.setPixelSize(text_px);
   font.setBold(false);
   painter.setFont(font);
@@ -464,12 +550,12 @@ void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
 void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat) {
   const QColor text = qcolor(theme_.text);
   const int text_px = theme_.font_size;
-  const double bar_height = text_px * 3.6;
   // Side by side in a wide band, stacked (legend above the colour bar) in a cell.
-  const bool stacked = band.height() >= 2 * bar_height;
+  const bool stacked = band.height() >= 2 * text_px * 3.6;
   QRectF legend = band, bar = band;
   if (levels && heat && stacked) {
-    legend.setBottom(band.bottom() - bar_height);
+    legend.setBottom(band.bottom() -
+                     difference_bar_height(std::min(band.width(), 30.0 * text_px), text_px));
     bar.setTop(legend.bottom());
   } else if (levels && heat) {
     legend.setWidth(band.width() * 0.55);
@@ -478,6 +564,7 @@ void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool level
   if (levels) draw_level_legend(painter, legend, text, text_px);
   if (heat) {
     bar.setWidth(std::min(bar.width(), 30.0 * text_px));
+    const double bar_height = difference_bar_height(bar.width(), text_px);
     draw_difference_bar(painter,
                         QRectF(bar.left(), bar.bottom() - std::min(bar.height(), bar_height),
                                bar.width(), std::min(bar.height(), bar_height)),
@@ -518,8 +605,11 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
   if (!animator) return;
   std::vector<PanelContent> contents = panels();
   const int text_px = theme_.font_size;
-  const double gap = text_px, title = text_px * 1.8;
+  const double gap = text_px;
   const CaptionLines lines = wrap_captions(contents, size.width(), gap);
+  lines_ = lines;
+  // One title line at 1.15 times the text size gets 1.8 text sizes, as the bands always had.
+  const double title = lines.title_lines * lines.title_px * 1.3 + text_px * 0.3;
   const double caption = text_px * kCaptionLine * lines.top;
   const double heat_caption = text_px * kCaptionLine * lines.heat;
   // The comparison puts the heat maps in a second row, each under its policy, as large as
@@ -546,7 +636,7 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
   }
   const QRectF& first = cells.front().image;
   const Camera& camera = animator->camera();
-  shown_frame_ = panel_frame(fit_content(), QSizeF(camera.width, camera.height),
+  shown_frame_ = panel_frame(framed_content(), QSizeF(camera.width, camera.height),
                              first.width() / first.height(), window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
   for (size_t i = 0; i < contents.size(); ++i)

@@ -4,9 +4,10 @@
 // engine's re-render level and the analysis's baseline draw), or independently by VTK as
 // textured 3D polygons with the matching camera. Made for a projector: the panels are painted at
 // the view's own size and fill it, every panel shows the same part of the camera image (zoom to fit
-// on the plane over its whole loop, times a zoom the teacher sets with the Zoom box or the mouse
-// wheel), every panel outlines the exact polygons, and titles, numbers and legends sit in bands
-// around the images, never over them.
+// on the plane over its whole loop, or, framing what is drawn (WindowState::framing, the default
+// in presentation mode), over the frames around the one shown, so a far plane fills its panel;
+// times a zoom the teacher sets with the Zoom box or the mouse wheel), every panel outlines the
+// exact polygons, and titles, numbers and legends sit in bands around the images, never over them.
 //
 // Layouts (PanelDisplay): side by side (engine | exact); the difference heat map; blink
 // (engine and exact in turn); and the comparison, which plays several reuse policies at
@@ -79,8 +80,9 @@ class AnimationView : public ViewPage {
   bool external_clock() const { return external_clock_; }
 
   // The teacher's zoom on top of zoom-to-fit (the window model's; limits::kZoom): 1 fits the
-  // plane's whole loop. The mouse wheel over the panels multiplies it by kWheelZoomStep per
-  // notch, stopping at the ends of the range.
+  // plane's whole loop, or the frames around the one shown when the framing is content. The mouse
+  // wheel over the panels multiplies it by kWheelZoomStep per notch, stopping at the ends of the
+  // range.
   static constexpr double kWheelZoomStep = 1.25;
 
   // What the last render showed: the part of the camera image (camera pixels) every panel
@@ -88,6 +90,14 @@ class AnimationView : public ViewPage {
   // comparison: the policies, the exact panel, then the heat maps).
   QRectF shown_frame() const { return shown_frame_; }
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
+  // What the panels draw of the frame: the bounding box (canvas pixels) of the exact frame's
+  // covered pixels (alpha > 0) as drawn in each panel of panel_rects(), clipped to that panel;
+  // empty rectangles when nothing is covered. Of the last render.
+  std::vector<QRectF> drawn_content_rects();
+  // The share (0..1) of the exact panel's image that the exact frame's content covers as
+  // drawn in the last render: covered camera pixels (alpha > 0, pixel centres) inside
+  // shown_frame() over its area. Display only: the framing moves it, no error figure.
+  double content_fill();
   // Hole pixels marked on the comparison's heat maps in the last render (adapters/hole_map.h:
   // the depth-reprojection policy's holes on its frame shown now); 0 in other layouts.
   std::int64_t hole_map_pixels() const { return hole_map_pixels_; }
@@ -123,7 +133,8 @@ class AnimationView : public ViewPage {
   QDoubleSpinBox* make_zoom_box(QWidget* parent);
   // The canvas's hover (the readout), wheel (the zoom) and resize (a redraw).
   void connect_canvas();
-  QComboBox* make_exact_box(QWidget* parent);  // the Exact picker, wired to set_exact_renderer
+  QComboBox* make_exact_box(QWidget* parent);    // the Exact picker, wired to set_exact_renderer
+  QComboBox* make_framing_box(QWidget* parent);  // the Framing picker, wired to set_framing
   void show_model_state();
   // The controls show the window model's layout, compared policies, exact renderer and zoom;
   // the blink timer follows the layout; redraws.
@@ -141,18 +152,26 @@ class AnimationView : public ViewPage {
   void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
                    const std::vector<std::vector<Vec2>>& outlines);
   // The title above the panel's image and its caption lines below it.
-  // Caption lines the bands under the frames (top) and under the heat maps must hold.
+  // Caption lines the bands under the frames (top) and under the heat maps must hold, and the
+  // titles' one pixel size and lines.
   struct CaptionLines {
     int top = 2;
     int heat = 1;
+    int title_px = 12;
+    int title_lines = 1;
   };
   // Breaks the panels' captions into lines that fit their cells on a canvas `canvas_width`
-  // pixels wide (cells `gap` apart) at the theme's text size, so no number is elided.
+  // pixels wide (cells `gap` apart) at the theme's text size, so no number is elided; picks
+  // one title size for every panel, the largest of 1.15, 1 and 0.85 times the text size at
+  // which every title fits its cell on one line, else the text size with titles broken
+  // (wrapped_caption) onto as many lines as the longest needs.
   CaptionLines wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
                              double gap) const;
   void paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell);
   void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
+  // The plane's (scene's) image bounds over the whole loop, and what the framing frames now.
   QRectF fit_content();
+  QRectF framed_content();
   void show_readout(QPointF pixel);
 
   WindowModel* window_;
@@ -165,6 +184,7 @@ class AnimationView : public ViewPage {
   QLabel* readout_ = nullptr;
   QDoubleSpinBox* zoom_box_ = nullptr;
   QComboBox* exact_box_ = nullptr;
+  QComboBox* framing_box_ = nullptr;
   QTimer* blink_timer_;
   const ExactRendererKind* exact_kind_;
   std::unique_ptr<ExactFrameRenderer> exact_;  // of the model's source; null after a change
@@ -174,14 +194,16 @@ class AnimationView : public ViewPage {
   ViewTheme theme_;
   bool blink_phase_ = false;
   bool external_clock_ = false;
-  bool fit_known_ = false;  // fit_ is up to date with the model's source
-  QRectF fit_;              // the plane's image over its loop (empty: the whole image)
+  bool fit_known_ = false;            // fit_ is up to date with the model's source
+  QRectF fit_;                        // the plane's image over its loop (empty: the whole image)
+  std::vector<QRectF> frame_bounds_;  // the plane's image at each frame of the loop
   QRectF shown_frame_;
   std::vector<QRectF> panel_rects_;
   QImage buffers_[2];                // the composed view, painted into in turn (compose)
   std::vector<QImage> heat_images_;  // the heat maps of the last frame, reused
   std::int64_t hole_map_pixels_ = 0;
   int next_buffer_ = 0;
+  CaptionLines lines_;  // of the last paint: the titles' size and lines
 };
 
 }  // namespace oflab

@@ -77,7 +77,12 @@ std::vector<ClaimKind> make_kinds() {
              false, false, run_name),
       screen("exact_drawn", "the share (0..1) of the exact panel's pixels the exact frame covers"),
       screen("active_tiles", "tiles of the basis gallery with a non-zero coefficient"),
-      screen("heat_map_width", "the narrowest heat map of the comparison layout, screen pixels"),
+      screen("heat_map_width",
+             "the narrowest heat map of the comparison layout as drawn: the width of the frame's "
+             "content (the exact frame's covered pixels) on it, screen pixels"),
+      screen("panel_fill",
+             "the share (percent) of the exact panel's image that the exact frame's content "
+             "covers as drawn now, at the panels' shared framing and zoom"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",
@@ -93,7 +98,8 @@ std::vector<ClaimKind> make_kinds() {
              "threshold upwards over the frames it charts",
              false, true),
       screen("cut_texts",
-             "texts the animation view paints elided, off its canvas or overlapping another"),
+             "texts the view in front paints (the animation view; the analysis view when in "
+             "front) elided, off its canvas or overlapping another"),
       engine("view", "1 when the view in front is `of`, else 0", true),
       engine("run_pixels_ratio",
              "the pixels compared policy `of` has written over frames 0 .. now over those of "

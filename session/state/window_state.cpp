@@ -1,6 +1,7 @@
 #include "state/window_state.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "engine/reuse_policy.h"
 #include "flow/limits.h"
@@ -8,6 +9,10 @@
 
 namespace oflab {
 namespace {
+
+const std::pair<PanelFraming, const char*> kFramings[] = {{PanelFraming::kAuto, "auto"},
+                                                          {PanelFraming::kLoop, "loop"},
+                                                          {PanelFraming::kContent, "content"}};
 
 constexpr PanelDisplay kDisplays[] = {PanelDisplay::kSideBySide, PanelDisplay::kDifference,
                                       PanelDisplay::kBlink, PanelDisplay::kComparison};
@@ -127,6 +132,29 @@ bool parse_panel_display(const std::string& text, PanelDisplay* display) {
     }
   }
   return false;
+}
+
+const char* panel_framing_name(PanelFraming framing) {
+  for (const auto& [f, name] : kFramings) {
+    if (f == framing) return name;
+  }
+  return "auto";
+}
+
+bool parse_panel_framing(const std::string& text, PanelFraming* framing) {
+  for (const auto& [f, name] : kFramings) {
+    if (text == name) {
+      *framing = f;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string panel_framing_names(const std::string& separator) {
+  std::string names;
+  for (const auto& entry : kFramings) names += (names.empty() ? "" : separator) + entry.second;
+  return names;
 }
 
 bool operator==(const WindowState& a, const WindowState& b) { return same_fields(a, b); }
