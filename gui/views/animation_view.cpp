@@ -59,6 +59,24 @@ QRectF centred_with_aspect(const QRectF& within, double aspect) {
   return QRectF(within.center().x() - w / 2, within.center().y() - h / 2, w, h);
 }
 
+// `lines` with every line wider than `width` in `metrics` broken at its spaces, each break as
+// far right as fits (a title with none of wrapped_caption's separators).
+QStringList broken_at_spaces(const QStringList& lines, const QFontMetrics& metrics, double width) {
+  QStringList out;
+  for (QString line : lines) {
+    while (metrics.horizontalAdvance(line) > width) {
+      int at = line.lastIndexOf(QLatin1Char(' '));
+      while (at > 0 && metrics.horizontalAdvance(line.left(at)) > width)
+        at = line.lastIndexOf(QLatin1Char(' '), at - 1);
+      if (at <= 0) break;
+      out << line.left(at);
+      line = line.mid(at + 1);
+    }
+    out << line;
+  }
+  return out;
+}
+
 }  // namespace
 
 AnimationView::AnimationView(WindowModel* window, QWidget* parent)
@@ -341,6 +359,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     QImage& map = heat_images_[heat.size()];
     difference_map_into(image, exact, kDifferenceScale, map);
     QStringList caption = agreement_caption(image, exact);
+    caption << sub_pixel_note(run.last);
     const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
     if (per_pixel) {
       // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
@@ -368,6 +387,7 @@ std::vector<PanelContent> AnimationView::panels() {
       if (heat_images_.empty()) heat_images_.resize(1);
       difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
       QStringList caption = agreement_caption(engine_image(), exact_image());
+      caption << sub_pixel_note(model_->current());
       const QString view = affine_view_line(model_->current(), *model_->settings().policy);
       if (!view.isEmpty()) caption << view;
       return {{tr("engine - exact"), heat_images_[0], {}, caption}};
@@ -431,18 +451,32 @@ std::vector<QRectF> AnimationView::drawn_content_rects() {
 }
 
 double AnimationView::content_fill() {
-  const Image& exact = exact_image();
-  if (exact.empty() || shown_frame_.isEmpty()) return 0.0;
-  const QRect pixels =
-      shown_frame_.toAlignedRect().intersected(QRect(0, 0, exact.width(), exact.height()));
-  std::size_t covered = 0;
-  for (int y = pixels.top(); y <= pixels.bottom(); ++y) {
-    const Pixel* row = exact.row(y);
-    for (int x = pixels.left(); x <= pixels.right(); ++x) {
-      covered += row[x].a > 0 && shown_frame_.contains(QPointF(x + 0.5, y + 0.5));
-    }
+  const Animator* animator = model_->animator();
+  if (!animator || shown_frame_.isEmpty()) return 0.0;
+  // The exact outlines of the frame shown (the plane's image, whatever its texture's alpha),
+  // rasterised over the shown frame at kFillGrid cells across.
+  constexpr int kFillGrid = 400;
+  const QSize grid(kFillGrid,
+                   std::max(1, int(kFillGrid * shown_frame_.height() / shown_frame_.width())));
+  QImage mask(grid, QImage::Format_Grayscale8);
+  mask.fill(0);
+  QPainter painter(&mask);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(Qt::white);
+  painter.setTransform(frame_to_panel(shown_frame_, QRectF(QPointF(0, 0), QSizeF(grid))));
+  for (const std::vector<Vec2>& outline :
+       exact_outlines(animator->scene(), animator->view(), animator->camera(), kNear)) {
+    QPolygonF polygon;
+    for (const Vec2& p : outline) polygon << QPointF(p.x, p.y);
+    painter.drawPolygon(polygon);
   }
-  return double(covered) / (shown_frame_.width() * shown_frame_.height());
+  painter.end();
+  std::size_t covered = 0;
+  for (int y = 0; y < grid.height(); ++y) {
+    const uchar* row = mask.constScanLine(y);
+    for (int x = 0; x < grid.width(); ++x) covered += row[x] > 127;
+  }
+  return double(covered) / (double(grid.width()) * grid.height());
 }
 
 void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
@@ -479,9 +513,8 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
 }
 
 AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelContent>& contents,
-                                                         int canvas_width, double gap) const {
-  const bool heat_row =
-      window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
+                                                         int canvas_width, double gap,
+                                                         bool heat_row) const {
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
   const double cell_width = (canvas_width - 2 * gap - (columns - 1) * gap) / std::max(1, columns);
   QFont font;
@@ -511,7 +544,8 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
   }
   bold.setPixelSize(theme_.font_size);
   for (PanelContent& c : contents) {
-    const QStringList wrapped = wrapped_caption(c.title, QFontMetrics(bold), cell_width);
+    const QStringList wrapped = broken_at_spaces(
+        wrapped_caption(c.title, QFontMetrics(bold), cell_width), QFontMetrics(bold), cell_width);
     c.title = wrapped.join(QLatin1Char('\n'));
     lines.title_lines = std::max(lines.title_lines, int(wrapped.size()));
   }
@@ -599,25 +633,23 @@ std::vector<QString> AnimationView::text_problems() {
   return oflab::text_problems(painted_texts(), canvas_size());
 }
 
-void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
-  panel_rects_.clear();
-  const Animator* animator = model_->animator();
-  if (!animator) return;
-  std::vector<PanelContent> contents = panels();
+AnimationView::PanelPlan AnimationView::plan_panels(std::vector<PanelContent> contents,
+                                                    const QSize& size, bool heat_row) const {
+  PanelPlan plan;
   const int text_px = theme_.font_size;
   const double gap = text_px;
-  const CaptionLines lines = wrap_captions(contents, size.width(), gap);
-  lines_ = lines;
+  plan.lines = wrap_captions(contents, size.width(), gap, heat_row);
+  const CaptionLines& lines = plan.lines;
   // One title line at 1.15 times the text size gets 1.8 text sizes, as the bands always had.
   const double title = lines.title_lines * lines.title_px * 1.3 + text_px * 0.3;
   const double caption = text_px * kCaptionLine * lines.top;
   const double heat_caption = text_px * kCaptionLine * lines.heat;
-  // The comparison puts the heat maps in a second row, each under its policy, as large as
-  // the frames above them, and the legends in the spare cell under the exact panel; the
-  // other layouts have one row and the legends in a band below it.
-  const bool heat_row =
-      window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
-  const double band = heat_row ? 0.0 : text_px * 3.9;
+  // Below one row, the legends' band holds the colour bar of any heat maps.
+  const PanelDisplay display = window_->panel_display();
+  const bool heat = display == PanelDisplay::kComparison || display == PanelDisplay::kDifference;
+  const double bar =
+      heat ? difference_bar_height(std::min(0.4 * size.width(), 30.0 * text_px), text_px) : 0.0;
+  const double band = heat_row ? 0.0 : std::max(text_px * 3.9, bar + gap);
   const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap - band);
   const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
   QRectF top = area;
@@ -625,26 +657,76 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
     const double image = (area.height() - gap / 2 - 2 * title - caption - heat_caption) / 2;
     top.setHeight(title + caption + std::max(0.0, image));
   }
-  std::vector<PanelCell> cells = panel_row(top, columns, gap, title, caption);
-  QRectF legends(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
+  plan.cells = panel_row(top, columns, gap, title, caption);
+  plan.legends = QRectF(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
   if (heat_row) {
     const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(),
                         area.bottom() - top.bottom() - gap / 2);
     const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, heat_caption);
-    cells.insert(cells.end(), more.begin(), more.end() - 1);
-    legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
+    plan.cells.insert(plan.cells.end(), more.begin(), more.end() - 1);
+    plan.legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
   }
-  const QRectF& first = cells.front().image;
+  plan.contents = std::move(contents);
+  return plan;
+}
+
+bool AnimationView::texts_fit(const PanelPlan& plan) const {
+  QFont font;
+  font.setPixelSize(theme_.font_size);
+  QFont bold = font;
+  bold.setBold(true);
+  bold.setPixelSize(plan.lines.title_px);
+  const QFontMetrics text(font), title(bold);
+  for (size_t i = 0; i < plan.contents.size(); ++i) {
+    const PanelCell& cell = plan.cells[i];
+    if (cell.image.height() < 3 * theme_.font_size) return false;
+    for (const QString& line : plan.contents[i].title.split(QLatin1Char('\n'))) {
+      if (title.horizontalAdvance(line) > cell.title.width()) return false;
+    }
+    for (const QString& line : plan.contents[i].caption) {
+      if (text.horizontalAdvance(line) > cell.caption.width()) return false;
+    }
+  }
+  return true;
+}
+
+double AnimationView::content_scale(const PanelPlan& plan, const QRectF& content) const {
+  const Camera& camera = model_->animator()->camera();
+  const QRectF& image = plan.cells.front().image;
+  const QRectF frame = panel_frame(content, QSizeF(camera.width, camera.height),
+                                   image.width() / image.height(), 1.0);
+  return image.width() / frame.width();
+}
+
+void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
+  panel_rects_.clear();
+  const Animator* animator = model_->animator();
+  if (!animator) return;
+  const std::vector<PanelContent> contents = panels();
+  const QRectF content = framed_content();
+  // The comparison puts the heat maps in a second row under their policies, unless every
+  // panel in one row draws the framed content larger with every text whole (a wide canvas
+  // under a lesson's caption leaves two rows of flat images); the other layouts have one row.
+  const bool comparing =
+      window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
+  PanelPlan plan = plan_panels(contents, size, comparing);
+  if (comparing) {
+    PanelPlan strip = plan_panels(contents, size, false);
+    if (texts_fit(strip) && content_scale(strip, content) > content_scale(plan, content))
+      plan = std::move(strip);
+  }
+  lines_ = plan.lines;
+  const QRectF& first = plan.cells.front().image;
   const Camera& camera = animator->camera();
-  shown_frame_ = panel_frame(framed_content(), QSizeF(camera.width, camera.height),
+  shown_frame_ = panel_frame(content, QSizeF(camera.width, camera.height),
                              first.width() / first.height(), window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
-  for (size_t i = 0; i < contents.size(); ++i)
-    paint_panel(painter, contents[i], cells[i], outlines);
+  for (size_t i = 0; i < plan.contents.size(); ++i)
+    paint_panel(painter, plan.contents[i], plan.cells[i], outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
-  paint_band(painter, legends, levels,
-             heat_row || window_->panel_display() == PanelDisplay::kDifference);
+  paint_band(painter, plan.legends, levels,
+             comparing || window_->panel_display() == PanelDisplay::kDifference);
 }
 
 void AnimationView::refresh() {

@@ -94,9 +94,10 @@ class AnimationView : public ViewPage {
   // covered pixels (alpha > 0) as drawn in each panel of panel_rects(), clipped to that panel;
   // empty rectangles when nothing is covered. Of the last render.
   std::vector<QRectF> drawn_content_rects();
-  // The share (0..1) of the exact panel's image that the exact frame's content covers as
-  // drawn in the last render: covered camera pixels (alpha > 0, pixel centres) inside
-  // shown_frame() over its area. Display only: the framing moves it, no error figure.
+  // The share (0..1) of the exact panel's image that what it shows covers as drawn in the
+  // last render: the area inside the exact outlines of the frame shown (exact_outlines: the
+  // plane's or the polygons' images, whatever their textures' alpha) within shown_frame(),
+  // over its area, rasterised 400 cells across. Display only: no error figure depends on it.
   double content_fill();
   // Hole pixels marked on the comparison's heat maps in the last render (adapters/hole_map.h:
   // the depth-reprojection policy's holes on its frame shown now); 0 in other layouts.
@@ -165,8 +166,25 @@ class AnimationView : public ViewPage {
   // one title size for every panel, the largest of 1.15, 1 and 0.85 times the text size at
   // which every title fits its cell on one line, else the text size with titles broken
   // (wrapped_caption) onto as many lines as the longest needs.
-  CaptionLines wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
-                             double gap) const;
+  CaptionLines wrap_captions(std::vector<PanelContent>& contents, int canvas_width, double gap,
+                             bool heat_row) const;
+  // Where the panels go on a canvas: their contents (captions wrapped for their cells), cells,
+  // the legends' rectangle and the caption and title lines.
+  struct PanelPlan {
+    std::vector<PanelContent> contents;
+    std::vector<PanelCell> cells;
+    QRectF legends;
+    CaptionLines lines;
+  };
+  // `contents` on a canvas of `size`: with `heat_row`, the comparison's heat maps in a second
+  // row, each under its policy, and the legends in the spare cell under the exact panel; else
+  // every panel in one row and the legends in a band below it.
+  PanelPlan plan_panels(std::vector<PanelContent> contents, const QSize& size, bool heat_row) const;
+  // Whether every title and caption line of `plan` fits its cell's width whole and its
+  // images are at least a few text lines high.
+  bool texts_fit(const PanelPlan& plan) const;
+  // Canvas pixels per camera pixel at which `plan`'s panels draw `content` (zoom 1).
+  double content_scale(const PanelPlan& plan, const QRectF& content) const;
   void paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell);
   void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
   // The plane's (scene's) image bounds over the whole loop, and what the framing frames now.

@@ -81,8 +81,9 @@ std::vector<ClaimKind> make_kinds() {
              "the narrowest heat map of the comparison layout as drawn: the width of the frame's "
              "content (the exact frame's covered pixels) on it, screen pixels"),
       screen("panel_fill",
-             "the share (percent) of the exact panel's image that the exact frame's content "
-             "covers as drawn now, at the panels' shared framing and zoom"),
+             "the share (percent) of the exact panel's image inside the exact outlines of what "
+             "it shows now (the plane's or the polygons' images), at the panels' shared "
+             "framing and zoom"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",

@@ -42,9 +42,9 @@ std::string panel_framing_names(const std::string& separator = ", ");
 inline bool frames_content(PanelFraming framing, bool presentation) {
   return framing == PanelFraming::kContent || (framing == PanelFraming::kAuto && presentation);
 }
-// Frames either side of the frame shown whose exact outlines content framing holds: half a
-// second at 30 frames per second, so the plane's motion still shows.
-constexpr int kFramingFrames = 15;
+// Frames either side of the frame shown whose exact outlines content framing holds: a sixth
+// of a second at 30 frames per second, so the framing follows the motion smoothly.
+constexpr int kFramingFrames = 5;
 
 // The most policies the comparison layout plays at once.
 constexpr int kMaxComparedPolicies = 4;

@@ -31,6 +31,7 @@
 #include "scene/scene.h"
 #include "scene/view_culling.h"
 #include "views/animation_view.h"
+#include "views/panel_captions.h"
 #include "views/panel_layout.h"
 #include "window_fixture.h"
 
@@ -417,9 +418,6 @@ TEST(WrappedCaption, BreaksAtTheSeparatorsSoEveryLineFitsAndNothingIsLost) {
   EXPECT_EQ(many.join(QString()).remove(' '), QString(caption).remove(' ').remove(QChar(0x00b7)));
 }
 
-}  // namespace
-}  // namespace oflab::test
-
 // Framing what is drawn (issue: a far plane was a few dozen pixels on a projector): in the
 // flow-vs-talisman loop, seen far and from behind, the exact frame's content covers at least
 // a quarter of the exact panel when the panels frame the frames around the one shown, and
@@ -501,10 +499,10 @@ TEST(BoundsAround, UnitesTheFramesWithinReach) {
 // 1366 x 768: no text is elided, off the canvas or overlapping (the exact panel's title, the
 // colour bar's caption and labels among them), and every panel title has one font size.
 TEST_F(AnimationLayoutTest, ComparisonTextsAreWholeWithAndWithoutTheScenePanel) {
-  window().apply_lesson(*find_lesson("affine-vs-perspective"));
-  window().model()->set_playing(false);
+  show_comparison();
+  ASSERT_TRUE(model().set_source({"script", "swing", ""}));
+  ASSERT_TRUE(window().model()->set_compared({"affine", "perspective"}));
   window().model()->set_presentation(true);
-  window().set_external_clock(true);
   window().play_frames(10);
   for (const QSize size : {QSize(1920, 1080), QSize(1366, 768)}) {
     for (bool scene_panel : {true, false}) {
@@ -561,3 +559,22 @@ TEST(DifferenceBar, FitsItsCaptionAndLabelsToItsWidth) {
     EXPECT_TRUE(text_problems(texts, QSize(2000, 400)).empty());
   }
 }
+
+// Under a heat map of a frame within a pixel, a line says what its lit edges are (sub-pixel
+// shifts and resampling), so they are not read as the corner error above; a frame many
+// pixels off (the control) or with nothing drawn gets none: its map shows the error.
+TEST(SubPixelNote, NamesTheLitEdgesOnlyWithinAPixel) {
+  AnimationFrame frame;
+  frame.levels[size_t(Level::kPerspective)] = 1;
+  frame.max_measured_error_px = 0.21;
+  ASSERT_EQ(sub_pixel_note(frame).size(), 1);
+  EXPECT_TRUE(sub_pixel_note(frame).front().startsWith(QStringLiteral("lit edges")));
+  frame.max_measured_error_px = 3.8;
+  EXPECT_TRUE(sub_pixel_note(frame).isEmpty());
+  frame.max_measured_error_px = 0.21;
+  frame.levels[size_t(Level::kPerspective)] = 0;
+  EXPECT_TRUE(sub_pixel_note(frame).isEmpty());
+}
+
+}  // namespace
+}  // namespace oflab::test
