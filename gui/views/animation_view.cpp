@@ -428,20 +428,14 @@ QRectF AnimationView::framed_content() {
 }
 
 std::vector<QRectF> AnimationView::drawn_content_rects() {
-  const Image& exact = exact_image();
-  int x0 = exact.width(), y0 = exact.height(), x1 = -1, y1 = -1;
-  for (int y = 0; y < exact.height(); ++y) {
-    const Pixel* row = exact.row(y);
-    for (int x = 0; x < exact.width(); ++x) {
-      if (row[x].a == 0) continue;
-      x0 = std::min(x0, x);
-      x1 = std::max(x1, x);
-      y0 = std::min(y0, y);
-      y1 = std::max(y1, y);
+  QRectF covered;
+  if (const Animator* animator = model_->animator()) {
+    for (const std::vector<Vec2>& outline :
+         exact_outlines(animator->scene(), animator->view(), animator->camera(), kNear)) {
+      for (const Vec2& p : outline) covered |= QRectF(QPointF(p.x, p.y), QSizeF(1e-9, 1e-9));
     }
   }
   std::vector<QRectF> drawn;
-  const QRectF covered = x1 < 0 ? QRectF() : QRectF(QPointF(x0, y0), QPointF(x1 + 1, y1 + 1));
   for (const QRectF& panel : panel_rects_) {
     const QRectF in_panel =
         covered.isEmpty() ? QRectF() : frame_to_panel(shown_frame_, panel).mapRect(covered);

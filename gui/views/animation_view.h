@@ -90,9 +90,10 @@ class AnimationView : public ViewPage {
   // comparison: the policies, the exact panel, then the heat maps).
   QRectF shown_frame() const { return shown_frame_; }
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
-  // What the panels draw of the frame: the bounding box (canvas pixels) of the exact frame's
-  // covered pixels (alpha > 0) as drawn in each panel of panel_rects(), clipped to that panel;
-  // empty rectangles when nothing is covered. Of the last render.
+  // What the panels draw of the frame: the bounding box (canvas pixels) of the exact outlines
+  // of the frame shown (the plane's or the polygons' images) as drawn in each panel of
+  // panel_rects(), clipped to that panel; empty rectangles when nothing is seen. Of the last
+  // render.
   std::vector<QRectF> drawn_content_rects();
   // The share (0..1) of the exact panel's image that what it shows covers as drawn in the
   // last render: the area inside the exact outlines of the frame shown (exact_outlines: the

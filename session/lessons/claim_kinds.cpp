@@ -78,8 +78,8 @@ std::vector<ClaimKind> make_kinds() {
       screen("exact_drawn", "the share (0..1) of the exact panel's pixels the exact frame covers"),
       screen("active_tiles", "tiles of the basis gallery with a non-zero coefficient"),
       screen("heat_map_width",
-             "the narrowest heat map of the comparison layout as drawn: the width of the frame's "
-             "content (the exact frame's covered pixels) on it, screen pixels"),
+             "the narrowest heat map of the comparison layout as drawn: the width of what it "
+             "shows (the exact outlines' bounding box) on it, screen pixels"),
       screen("panel_fill",
              "the share (percent) of the exact panel's image inside the exact outlines of what "
              "it shows now (the plane's or the polygons' images), at the panels' shared "
