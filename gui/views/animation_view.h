@@ -23,7 +23,9 @@
 // the view redraws on its signals. The engines run only while a view asks for their frames.
 #pragma once
 
+#include <QImage>
 #include <QRectF>
+#include <QStringList>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -49,7 +51,15 @@ class ImageCanvas;
 class PolicyComparison;
 class WindowModel;
 struct ExactRendererKind;
-struct PanelContent;
+
+// One panel: a camera-sized picture (premultiplied; painted over the view's background),
+// the level outlines drawn on it, and the lines under it.
+struct PanelContent {
+  QString title;
+  QImage image;
+  std::vector<LayerOutline> levels;
+  QStringList caption;
+};
 
 class AnimationView : public ViewPage {
   Q_OBJECT
@@ -128,6 +138,10 @@ class AnimationView : public ViewPage {
  private:
   // The canvas with the frame inspector beside it, the readout under them, then the Exact
   // picker and the zoom.
+  static constexpr int kDifferenceScale = 128;  // grey levels at the colour bar's top
+  static constexpr double kNear = 0.05;  // near plane of the exact render (SceneSettings::near)
+  static constexpr double kCaptionLine = 1.4;  // caption line height, times the text size
+
   QWidget* make_panels();
   // The frame inspector's label in a scroll area of fixed width, returned.
   QScrollArea* make_inspector(QWidget* parent);

@@ -40,7 +40,7 @@ std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, dou
 QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, double width);
 
 // Fraction of the content's size added on every side when fitting it.
-constexpr double kFitMargin = 0.04;
+constexpr double kFitMargin = 0.02;
 
 // The part of the camera image (camera pixels) every panel shows: `content` grown by
 // kFitMargin of its size on every side, widened or heightened about its centre to `aspect`
