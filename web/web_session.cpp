@@ -64,9 +64,9 @@ json planar_basis_json(const PlanarBasisTerms& p) {
 // The fields of a state object that the comparison's runs do not depend on.
 const std::vector<std::string>& display_only_fields() {
   static const std::vector<std::string> fields = {
-      "view",         "frame",       "flow",      "basis",          "basis_playing",
-      "presentation", "scene_panel", "play_rate", "playing",        "lesson",
-      "lesson_step",  "zoom",        "display",   "exact_renderer", "world_camera"};
+      "view",        "frame",          "flow",         "basis",  "basis_playing", "presentation",
+      "scene_panel", "play_rate",      "playing",      "lesson", "lesson_step",   "zoom",
+      "display",     "exact_renderer", "world_camera", "framing"};
   return fields;
 }
 

@@ -149,6 +149,23 @@ void difference_map_into(const Image& a, const Image& b, int full_scale, QImage&
                 });
 }
 
+namespace {
+
+// The colour bar's caption, on one line when it fits `width`, else broken after its comma.
+QStringList difference_bar_caption(const QFontMetricsF& metrics, double width) {
+  const QString caption = QObject::tr("|shown - exact|, grey levels");
+  if (metrics.horizontalAdvance(caption) <= width) return {caption};
+  return caption.split(QStringLiteral(", "));
+}
+
+}  // namespace
+
+double difference_bar_height(double width, int text_px) {
+  QFont font;
+  font.setPixelSize(text_px);
+  return text_px * (2.4 + 1.2 * difference_bar_caption(QFontMetricsF(font), width).size());
+}
+
 void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, const QColor& text,
                          int text_px) {
   painter.save();
@@ -156,19 +173,27 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
   font.setPixelSize(text_px);
   painter.setFont(font);
   painter.setPen(text);
-  // Caption row, ramp row, tick-label row.
-  const double row = area.height() / 3;
-  painter.drawText(QRectF(area.left(), area.top(), area.width(), row),
-                   Qt::AlignLeft | Qt::AlignVCenter, QObject::tr("|shown - exact|, grey levels"));
+  const QFontMetricsF metrics(font);
+  // Caption rows, the ramp row, the tick-label row.
+  const QStringList caption = difference_bar_caption(metrics, area.width());
+  const double row = area.height() / (2 + caption.size());
+  for (int i = 0; i < caption.size(); ++i) {
+    painter.drawText(QRectF(area.left(), area.top() + i * row, area.width(), row),
+                     Qt::AlignLeft | Qt::AlignVCenter, caption[i]);
+  }
   const double left = area.left() + text_px, width = area.width() - 3 * text_px;
-  const QRectF ramp(left, area.top() + row, width, row * 0.8);
+  const QRectF ramp(left, area.top() + caption.size() * row, width, row * 0.8);
   for (int x = 0; x < int(width); ++x) {
     painter.fillRect(QRectF(left + x, ramp.top(), 1.5, ramp.height()),
                      qcolor(magnitude_colour(double(x) / std::max(1.0, width - 1))));
   }
+  // Every tick labelled when the labels stay a text size apart, else every other one.
+  const QString widest = QString::number(full_scale) + QStringLiteral("+");
+  const int label_every = width / 4 >= metrics.horizontalAdvance(widest) + text_px ? 1 : 2;
   for (int i = 0; i <= 4; ++i) {
     const double x = left + width * i / 4;
     painter.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + row * 0.2));
+    if (i % label_every != 0) continue;
     const QString label =
         QString::number(full_scale * i / 4) + (i == 4 ? QStringLiteral("+") : QString());
     painter.drawText(QRectF(x - 3 * text_px, ramp.bottom(), 6 * text_px, row * 1.2),

@@ -45,10 +45,13 @@ QImage difference_map(const Image& a, const Image& b, int full_scale);
 void difference_map_into(const Image& a, const Image& b, int full_scale, QImage& out);
 
 // The colour bar of difference_map inside `area`: the viridis ramp from 0 (left) to
-// full_scale (right), five ticks labelled in grey levels ("128+" at the top) and a caption,
-// in `text` at `text_px` pixels.
+// full_scale (right), five ticks labelled in grey levels ("128+" at the top; every other one
+// when five labels would come closer than a text size) and a caption (on two lines when one
+// is wider than the area), in `text` at `text_px` pixels.
+// difference_bar_height: the height (pixels) the bar needs at `width` pixels wide.
 void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, const QColor& text,
                          int text_px);
+double difference_bar_height(double width, int text_px);
 
 // How far two frames agree: intersection over union of their alpha masks (alpha > 127),
 // and PSNR (dB, RGB of the premultiplied colours) over the pixels where both are covered.

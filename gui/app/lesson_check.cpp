@@ -32,24 +32,32 @@ double exact_drawn(AnimationView* view) {
   return double(covered) / double(exact.pixel_count());
 }
 
+// The narrowest width of the frame's content as drawn on the comparison's heat maps (the
+// last `policies` panels), canvas pixels; 0 outside the comparison.
 double heat_map_width(MainWindow* window, AnimationView* view) {
   view->render_image();
   const int policies = int(window->model()->comparison().policies().size());
-  const std::vector<QRectF>& rects = view->panel_rects();
+  const std::vector<QRectF> drawn = view->drawn_content_rects();
   if (window->model()->panel_display() != PanelDisplay::kComparison ||
-      int(rects.size()) < 2 * policies + 1) {
+      int(drawn.size()) < 2 * policies + 1) {
     return 0.0;
   }
   double narrowest = 1e300;
-  for (size_t k = rects.size() - size_t(policies); k < rects.size(); ++k) {
-    narrowest = std::min(narrowest, rects[k].width());
+  for (size_t k = drawn.size() - size_t(policies); k < drawn.size(); ++k) {
+    narrowest = std::min(narrowest, drawn[k].width());
   }
   return narrowest;
 }
 
-// Texts that are elided, leave their canvas or overlap another: of the world view or the
-// basis view (its explorer) when one of them shows (in front, or in the cause-and-effect
-// layout), else of the animation view.
+// The percent of the exact panel's image the exact frame's content covers as drawn.
+double panel_fill(AnimationView* view) {
+  view->render_image();
+  return 100.0 * view->content_fill();
+}
+
+// Texts that are elided, leave their canvas or overlap another: of the world view, the basis
+// view (its explorer) or the analysis view when one of them shows (in front, or in the
+// cause-and-effect layout), else of the animation view.
 double cut_texts(MainWindow* window) {
   const std::vector<ViewPage*> shown = window->model()->cause_and_effect()
                                            ? window->layout_views()
@@ -64,6 +72,10 @@ double cut_texts(MainWindow* window) {
     } else if (auto* basis = qobject_cast<BasisView*>(page)) {
       basis->render_image();
       problems += double(basis->text_problems().size());
+      measured = true;
+    } else if (auto* analysis = qobject_cast<AnalysisView*>(page)) {
+      analysis->render_image();
+      problems += double(analysis->text_problems().size());
       measured = true;
     }
   }
@@ -141,6 +153,7 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
       {"heat_map_width", on_animation(heat_map_width)},
       {"hole_map_pixels",
        on_animation([](MainWindow*, AnimationView* v) { return double(v->hole_map_pixels()); })},
+      {"panel_fill", on_animation([](MainWindow*, AnimationView* v) { return panel_fill(v); })},
       {"cut_texts", [](MainWindow* window, const LessonClaim&) { return cut_texts(window); }},
       {"active_tiles",
        [](MainWindow* window, const LessonClaim&) {

@@ -165,6 +165,11 @@ bool WindowModel::set_exact_renderer(const std::string& name) {
   return true;
 }
 
+void WindowModel::set_framing(PanelFraming framing) {
+  values().framing = framing;
+  emit panels_changed();
+}
+
 bool WindowModel::set_zoom(double zoom) {
   const std::string problem_text = limits::kZoom.problem(zoom);
   if (!problem_text.empty()) {

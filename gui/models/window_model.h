@@ -83,6 +83,10 @@ class WindowModel : public QObject {
   bool set_compared(const std::vector<std::string>& names);
   const std::string& exact_renderer() const { return values().exact_renderer; }
   bool set_exact_renderer(const std::string& name);
+  // How every panel is framed (WindowState::framing) and whether that frames what is drawn now.
+  PanelFraming framing() const { return values().framing; }
+  void set_framing(PanelFraming framing);
+  bool frames_content() const { return oflab::frames_content(framing(), presentation()); }
   double zoom() const { return values().zoom; }
   bool set_zoom(double zoom);  // refused outside limits::kZoom
 
@@ -117,7 +121,7 @@ class WindowModel : public QObject {
   void flow_display_changed();
   void basis_changed();     // the basis or its playing
   void explorer_changed();  // the explorer shown or hidden, or its values
-  // The animation view's layout, compared policies, exact renderer or zoom.
+  // The animation view's layout, compared policies, exact renderer, framing or zoom.
   void panels_changed();
   void presentation_changed();
   void scene_panel_changed();

@@ -5,6 +5,7 @@
 #include <QPainterPath>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "display/palette.h"
 #include "models/animation_model.h"
@@ -76,26 +77,42 @@ void draw_box_and_title(QPainter& p, const ChartFrame& f, const QString& title,
   p.setPen(text.darker(150));
   p.drawRect(f.area);
   p.setPen(text);
-  p.drawText(QRect(x, f.area.top() - fm.height() - 2, f.area.right() - x, fm.height()),
-             Qt::AlignLeft | Qt::AlignVCenter, title);
+  p.drawText(
+      QRect(x, f.area.top() - f.title_lines * (fm.height() + 2), f.area.right() - x, fm.height()),
+      Qt::AlignLeft | Qt::AlignVCenter, title);
 }
 
-// A value chart's frame: box, title, its top value and 0 in the margin, the frame axis.
-void draw_frame_box(QPainter& p, const ChartFrame& f, const QString& title, double top,
+// A value chart's frame: box, title, its top and bottom values in the margin (a log scale's
+// decades between them as dotted lines), the frame axis.
+void draw_frame_box(QPainter& p, const ChartFrame& f, const QString& title, const ValueScale& scale,
                     const QColor& text, const QString& unit) {
   const QFontMetrics fm = p.fontMetrics();
   const int margin = left_margin(fm);
   const int x = f.area.left() - margin;
   draw_box_and_title(p, f, title, text);
   p.drawText(QRect(x, f.area.top(), margin - 6, fm.height()), Qt::AlignRight,
-             QString::number(top, 'g', 3) + unit);
+             QString::number(scale.top, 'g', 3) + unit);
   p.drawText(QRect(x, f.area.bottom() - fm.height(), margin - 6, fm.height()), Qt::AlignRight,
-             QStringLiteral("0"));
+             scale.log ? QString::number(scale.bottom, 'g', 3) + unit : QStringLiteral("0"));
+  if (scale.log) {
+    p.save();
+    p.setPen(QPen(text.darker(150), 1.0, Qt::DotLine));
+    for (double decade = scale.bottom * 10; decade < scale.top; decade *= 10) {
+      const double y = f.area.bottom() - scale.fraction(decade) * f.area.height();
+      p.drawLine(QPointF(f.area.left(), y), QPointF(f.area.right(), y));
+    }
+    p.restore();
+  }
   draw_frame_axis(p, f, text);
 }
 
-// A polyline of value(frame) over the charted frames, scaled to [0, top].
-void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
+void draw_frame_box(QPainter& p, const ChartFrame& f, const QString& title, double top,
+                    const QColor& text, const QString& unit) {
+  draw_frame_box(p, f, title, ValueScale{top}, text, unit);
+}
+
+// A polyline of value(frame) over the charted frames, on `scale`.
+void draw_series(QPainter& p, const ChartFrame& f, const ValueScale& scale, const QPen& pen,
                  const FrameValue& value) {
   QPainterPath path;
   bool started = false;
@@ -105,7 +122,7 @@ void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
       started = false;
       continue;
     }
-    const QPointF point(f.x(k), f.area.bottom() - std::min(v / top, 1.0) * f.area.height());
+    const QPointF point(f.x(k), f.area.bottom() - scale.fraction(v) * f.area.height());
     if (started)
       path.lineTo(point);
     else
@@ -122,6 +139,11 @@ void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
   p.restore();
 }
 
+void draw_series(QPainter& p, const ChartFrame& f, double top, const QPen& pen,
+                 const FrameValue& value) {
+  draw_series(p, f, ValueScale{top}, pen, value);
+}
+
 // 1.1 times the largest finite value over the charted frames, and at least 1.1 * floor.
 double series_top(const ChartFrame& f, const FrameValue& value, double floor) {
   double top = floor;
@@ -134,6 +156,13 @@ double series_top(const ChartFrame& f, const FrameValue& value, double floor) {
 
 // A key of coloured swatches and names, right-aligned in the strip above `area`.
 using LegendEntry = std::pair<QString, QColor>;
+int legend_width(const QFontMetrics& fm, const std::vector<LegendEntry>& entries) {
+  const int box = fm.height() * 2 / 3, gap = fm.height() / 2;
+  int width = 0;
+  for (const LegendEntry& entry : entries) width += fm.horizontalAdvance(entry.first) + box + 4;
+  return width + gap * std::max(0, int(entries.size()) - 1);
+}
+
 void draw_legend(QPainter& p, const QRect& area, const std::vector<LegendEntry>& entries,
                  const QColor& text) {
   const QFontMetrics fm = p.fontMetrics();
@@ -152,12 +181,16 @@ void draw_legend(QPainter& p, const QRect& area, const std::vector<LegendEntry>&
 }
 
 // The level colours' key.
-void draw_level_legend(QPainter& p, const QRect& area, const QColor& text) {
+std::vector<LegendEntry> level_legend() {
   std::vector<LegendEntry> entries;
   for (int level = 0; level < kLevelCount; ++level) {
     entries.emplace_back(QString::fromUtf8(level_name(Level(level))), level_qcolor(level));
   }
-  draw_legend(p, area, entries, text);
+  return entries;
+}
+
+void draw_level_legend(QPainter& p, const QRect& area, const QColor& text) {
+  draw_legend(p, area, level_legend(), text);
 }
 
 void draw_levels(QPainter& p, const ChartFrame& f, const QColor& text) {
@@ -235,6 +268,7 @@ struct ComparedChart {
   bool drawn_only = true;
   double floor = 1.0;
   double quantile = 1.0;
+  bool may_log = false;  // series_scale may pick a log scale
 };
 
 // 1.1 times the chart's quantile of every policy's values over the charted frames.
@@ -255,14 +289,32 @@ double compared_top(const ChartFrame& f, const std::vector<FrameValue>& values,
   return 1.1 * top;
 }
 
+// The chart's scale: linear to compared_top, or, for a chart that may take a log scale,
+// series_scale of each policy's largest value over the charted frames.
+ValueScale compared_scale(const ChartFrame& f, const std::vector<FrameValue>& values,
+                          const ComparedChart& chart) {
+  const double top = compared_top(f, values, chart);
+  if (!chart.may_log) return ValueScale{top};
+  std::vector<double> largest;
+  for (const FrameValue& value : values) {
+    double most = std::nan("");
+    for (int k = f.first; k <= f.current; ++k) {
+      if (std::isfinite(value(k))) most = std::isfinite(most) ? std::max(most, value(k)) : value(k);
+    }
+    largest.push_back(most);
+  }
+  return series_scale(largest, chart.floor);
+}
+
 // The chart's lines, in panel order, each narrower than the one before, so a line that
 // another covers (two policies doing the same) still shows as its border; with the key.
 void draw_compared(QPainter& p, const ChartFrame& f, const std::vector<ComparedRun>& runs,
                    const ComparedChart& chart, const QColor& text) {
   std::vector<FrameValue> values;
   for (const ComparedRun& run : runs) values.push_back(of_run(run, chart.field, chart.drawn_only));
-  const double top = compared_top(f, values, chart);
-  draw_frame_box(p, f, chart.title, top, text, chart.unit);
+  const ValueScale top = compared_scale(f, values, chart);
+  draw_frame_box(p, f, top.log ? chart.title + QObject::tr(" (log scale)") : chart.title, top, text,
+                 chart.unit);
   draw_legend(p, f.area, policy_legend(runs), text);
   for (size_t i = 0; i < runs.size(); ++i) {
     const double width = 2.0 + double(runs.size() - 1 - i);
@@ -383,9 +435,10 @@ std::vector<int> frame_axis_ticks(int first, int last, int width_px, int label_p
 // shares at their right (share_panel); the line charts above end where the bands end, so
 // all four share one frame axis (one x for each frame).
 constexpr double kBudgetRows = 2.6;
-std::vector<QRect> chart_areas(const QRect& rect, const QFontMetrics& fm, bool comparing) {
+std::vector<QRect> chart_areas(const QRect& rect, const QFontMetrics& fm, bool comparing,
+                               int title_lines) {
   const int line = fm.height(), margin = left_margin(fm), right = 16;
-  const int title = line + 4, axis = line + 8, status = line + 8;
+  const int title = title_lines * (line + 2) + 2, axis = line + 8, status = line + 8;
   const int width = rect.width() - margin - right;
   if (comparing) {
     std::vector<QRect> result;
@@ -436,25 +489,64 @@ void paint_engine_charts(QPainter& p, const std::vector<ChartFrame>& charts,
   }
 }
 
-void paint_comparison_charts(QPainter& p, const QRect& rect, const std::vector<ChartFrame>& charts,
-                             const std::vector<ComparedRun>& runs, const QColor& text) {
-  const auto chart = [&](int i) { return charts[size_t(i)]; };
-  draw_compared(p, chart(0), runs,
-                {QObject::tr("largest measured error, per policy"), QStringLiteral(" px"),
-                 [](const ComparedFrame& f) { return f.max_measured_error_px; }, true, 0.1, 1.0},
-                text);
-  // Wall times: a frame the machine was busy elsewhere would flatten every other frame.
-  draw_compared(
-      p, chart(1), runs,
+namespace {
+
+// The comparison's three line charts, in chart order.
+std::vector<ComparedChart> compared_charts() {
+  return {
+      {QObject::tr("largest measured error, per policy"), QStringLiteral(" px"),
+       [](const ComparedFrame& f) { return f.max_measured_error_px; }, true, 0.1, 1.0, true},
+      // Wall times: a frame the machine was busy elsewhere would flatten every other frame.
       {QObject::tr("frame time, per policy (the slowest 2% of frames clipped at the top)"),
        QStringLiteral(" ms"), [](const ComparedFrame& f) { return f.time_ms; }, false, 0.1, 0.98},
-      text);
-  draw_compared(p, chart(2), runs,
-                {QObject::tr("work in the cost model (perspective-warp pixels), per policy"),
-                 QString(), [](const ComparedFrame& f) { return f.model_work; }, false, 1.0, 1.0},
-                text);
-  draw_level_bands(p, chart(3), runs, text);
-  draw_level_shares(p, share_panel(rect, charts[3].area), chart(3), runs, text);
+      {QObject::tr("work in the cost model (perspective-warp pixels), per policy"), QString(),
+       [](const ComparedFrame& f) { return f.model_work; }, false, 1.0, 1.0},
+  };
+}
+
+QString level_bands_title() { return QObject::tr("levels per frame, one band per policy"); }
+
+}  // namespace
+
+void paint_comparison_charts(QPainter& p, const QRect& rect, const std::vector<ChartFrame>& charts,
+                             const std::vector<ComparedRun>& runs, const QColor& text) {
+  const std::vector<ComparedChart> lines = compared_charts();
+  for (size_t i = 0; i < lines.size(); ++i) draw_compared(p, charts[i], runs, lines[i], text);
+  draw_level_bands(p, charts[3], runs, text);
+  draw_level_shares(p, share_panel(rect, charts[3].area), charts[3], runs, text);
+}
+
+int comparison_title_lines(const QRect& rect, const QFontMetrics& fm,
+                           const std::vector<ComparedRun>& runs) {
+  const int width = chart_areas(rect, fm, true).front().width();
+  // The widest title, and a log scale's note, beside the widest key.
+  int title = fm.horizontalAdvance(level_bands_title());
+  for (const ComparedChart& chart : compared_charts()) {
+    title = std::max(title, fm.horizontalAdvance(chart.title + QObject::tr(" (log scale)")));
+  }
+  const int key = std::max(legend_width(fm, policy_legend(runs)), legend_width(fm, level_legend()));
+  // The title starts in the chart's margin, left of its box.
+  return title + fm.height() + key <= width + left_margin(fm) ? 1 : 2;
+}
+
+double ValueScale::fraction(double v) const {
+  if (!std::isfinite(v)) return v;
+  if (!log) return std::clamp(v / top, 0.0, 1.0);
+  if (v <= bottom) return 0.0;
+  return std::clamp(std::log(v / bottom) / std::log(top / bottom), 0.0, 1.0);
+}
+
+ValueScale series_scale(const std::vector<double>& largest, double floor) {
+  double most = floor, least = std::numeric_limits<double>::infinity();
+  for (double v : largest) {
+    if (!(v > 0)) continue;  // NaN or nothing above zero
+    most = std::max(most, v);
+    least = std::min(least, v);
+  }
+  if (std::isfinite(least) && most > kLogScaleRatio * least && most > kLogScaleBottom) {
+    return ValueScale{1.1 * most, kLogScaleBottom, true};
+  }
+  return ValueScale{1.1 * most};
 }
 
 void draw_current(QPainter& p, const ChartFrame& f, const QColor& text) {

@@ -35,6 +35,9 @@ struct ChartFrame {
   const std::vector<AnimationFrame>* records;
   int first = 0, last = 0, current = 0;
   QRect area;
+  // Lines of the title strip above `area`: 1 (the title left, the key right) or 2 (the
+  // title above the key, when the two do not fit one line).
+  int title_lines = 1;
   double x(double frame) const {
     const int n = last - first + 1;
     return area.left() + (frame - first + 0.5) * area.width() / std::max(1, n);
@@ -52,12 +55,38 @@ QFont chart_font(const ViewTheme& theme);
 std::vector<int> frame_axis_ticks(int first, int last, int width_px, int label_px);
 
 // The plot rectangles of the charts in a widget `rect` whose texts `fm` measures, below the
-// status line, each with a title strip above and a frame axis below: the engine's seven
-// (0 frame time, 1 layers per level, 2 percent approximated, 3..6 the budgets of levels none
-// .. perspective, each 2.6 times as tall as a chart of the first two rows), or,
-// `comparing`, four rows of one width (the last the level bands, with the column of the
-// level shares at their right), so all four share one frame axis.
-std::vector<QRect> chart_areas(const QRect& rect, const QFontMetrics& fm, bool comparing);
+// status line, each with a title strip above (`title_lines` lines high) and a frame axis
+// below: the engine's seven (0 frame time, 1 layers per level, 2 percent approximated, 3..6
+// the budgets of levels none .. perspective, each 2.6 times as tall as a chart of the first
+// two rows), or, `comparing`, four rows of one width (the last the level bands, with the
+// column of the level shares at their right), so all four share one frame axis.
+std::vector<QRect> chart_areas(const QRect& rect, const QFontMetrics& fm, bool comparing,
+                               int title_lines = 1);
+
+// The title strip's lines of the comparison's charts in a widget `rect` whose texts `fm`
+// measures, for `runs`: 1 when every chart's title and key fit one line of its width with a
+// gap of a text height between them, else 2 (the title above its key).
+int comparison_title_lines(const QRect& rect, const QFontMetrics& fm,
+                           const std::vector<ComparedRun>& runs);
+
+// The value axis of a line chart: linear from 0 to `top`, or logarithmic from `bottom` (> 0)
+// to `top`. fraction(v) is v's height in the chart (0 at the bottom, 1 at the top), clamped
+// to [0, 1]; NaN stays NaN.
+struct ValueScale {
+  double top = 1.0;
+  double bottom = 0.0;
+  bool log = false;
+  double fraction(double v) const;
+};
+
+// The scale of a chart whose series reach the largest values `largest` (one per series,
+// NaN or <= 0 for a series with nothing above zero), at least `floor`: logarithmic from
+// kLogScaleBottom px when the largest series reaches more than kLogScaleRatio times the
+// smallest positive one (so a policy many pixels off does not flatten one within a pixel),
+// else linear; the top 1.1 times the largest value.
+constexpr double kLogScaleRatio = 10.0;
+constexpr double kLogScaleBottom = 0.01;
+ValueScale series_scale(const std::vector<double>& largest, double floor);
 
 // The error level `level` (0 none .. 3 perspective) would leave at `record`, pixels: the
 // carried books plus this frame's flow over the terms it neglects (core/engine/decision.h

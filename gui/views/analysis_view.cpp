@@ -39,8 +39,13 @@ class AnalysisView::Charts : public QWidget {
   ViewTheme theme;
 
   void paint(QPainter& p, const QRect& rect) const;
+  // 2 when a comparison chart's title and key do not fit one line, else 1.
+  int title_lines(const QRect& rect) const {
+    return compared ? comparison_title_lines(rect, QFontMetrics(chart_font(theme)), *compared) : 1;
+  }
   std::vector<QRect> areas(const QRect& rect) const {
-    return chart_areas(rect, QFontMetrics(chart_font(theme)), compared != nullptr);
+    return chart_areas(rect, QFontMetrics(chart_font(theme)), compared != nullptr,
+                       title_lines(rect));
   }
 
  protected:
@@ -80,7 +85,8 @@ void AnalysisView::Charts::paint(QPainter& p, const QRect& rect) const {
   paint_status(p, rect);
   std::vector<ChartFrame> charts;
   for (const QRect& area : areas(rect)) {
-    charts.push_back(ChartFrame{records, view_->first_, view_->last_, view_->current_, area});
+    charts.push_back(
+        ChartFrame{records, view_->first_, view_->last_, view_->current_, area, title_lines(rect)});
   }
   if (compared) {
     paint_comparison_charts(p, rect, charts, *compared, text);
@@ -235,9 +241,21 @@ void AnalysisView::refresh() {
 
 QString AnalysisView::scene_panel_note() const { return oflab::scene_panel_note(*model_); }
 
+QSize AnalysisView::image_size() const { return charts_->size().expandedTo(QSize(800, 500)); }
+
+std::vector<PaintedText> AnalysisView::painted_texts() {
+  read_model();
+  const QSize size = image_size();
+  return record_painted_text(size, [&](QPainter& p) { charts_->paint(p, QRect(QPoint(), size)); });
+}
+
+std::vector<QString> AnalysisView::text_problems() {
+  return oflab::text_problems(painted_texts(), image_size());
+}
+
 QImage AnalysisView::render_image() {
   read_model();
-  QImage image(charts_->size().expandedTo(QSize(800, 500)), QImage::Format_RGB32);
+  QImage image(image_size(), QImage::Format_RGB32);
   QPainter painter(&image);
   charts_->paint(painter, image.rect());
   return image;

@@ -27,6 +27,7 @@
 #include <functional>
 #include <vector>
 
+#include "adapters/painted_text.h"
 #include "views/view_page.h"
 
 class QCheckBox;
@@ -84,6 +85,12 @@ class AnalysisView : public ViewPage {
   // exceeds thresholds[level] while the last charted frame before it (gaps skipped) was
   // within it. -1 when comparing, with nothing charted or for another level.
   int threshold_crossings(int level) const;
+  // Every text the charts paint now at the size render_image paints them, with its box in
+  // those pixels (titles, keys, axis labels, the status line), and what is wrong with them
+  // (adapters/painted_text.h text_problems): elided, off the charts or overlapping; empty
+  // when every text is legible.
+  std::vector<PaintedText> painted_texts();
+  std::vector<QString> text_problems();
   // The status line: the current frame's level and error, or why its plane is not drawn;
   // comparing, each policy's measured error at the current frame.
   QString status_text() const;
@@ -95,6 +102,7 @@ class AnalysisView : public ViewPage {
   class Charts;
   void refresh();
   void read_model();
+  QSize image_size() const;  // the charts' size, at least 800 x 500
   void follow_current_frame(int current, int loop_frames);
   QString comparison_status() const;
 

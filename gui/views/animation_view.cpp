@@ -29,20 +29,8 @@
 
 namespace oflab {
 
-// One panel: a camera-sized picture (premultiplied; painted over the view's background),
-// the level outlines drawn on it, and the lines under it.
-struct PanelContent {
-  QString title;
-  QImage image;
-  std::vector<LayerOutline> levels;
-  QStringList caption;
-};
-
 namespace {
 
-constexpr int kDifferenceScale = 128;  // grey levels at the top of the heat map's colour bar
-constexpr double kNear = 0.05;         // near plane of the exact render (SceneSettings::near)
-constexpr double kCaptionLine = 1.4;   // caption line height, times the text size
 // A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
 constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
@@ -130,11 +118,13 @@ QWidget* AnimationView::make_panels() {
   readout_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Minimum);
   make_zoom_box(box);
   auto* fit = new QPushButton(tr("Fit"), box);
-  fit->setToolTip(tr("Zoom to fit the plane's whole motion on every panel"));
+  fit->setToolTip(tr("Zoom to fit what the framing frames on every panel"));
   layout->addWidget(readout_);
   bottom->addStretch(1);
   bottom->addWidget(new QLabel(tr("Exact"), box));
   bottom->addWidget(make_exact_box(box));
+  bottom->addWidget(new QLabel(tr("Framing"), box));
+  bottom->addWidget(make_framing_box(box));
   bottom->addWidget(new QLabel(tr("Zoom"), box));
   bottom->addWidget(zoom_box_);
   bottom->addWidget(fit);
@@ -173,7 +163,7 @@ QDoubleSpinBox* AnimationView::make_zoom_box(QWidget* parent) {
   zoom_box_->setValue(window_->zoom());
   zoom_box_->setSuffix(QStringLiteral(" x"));
   zoom_box_->setToolTip(
-      tr("Zoom of every panel; 1 fits the plane's whole motion (mouse wheel "
+      tr("Zoom of every panel; 1 fits what the framing frames (mouse wheel "
          "over the panels)"));
   connect(zoom_box_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double z) {
     if (!window_->set_zoom(z)) show_panels();  // refused: the box shows the model's zoom
@@ -207,6 +197,22 @@ QComboBox* AnimationView::make_exact_box(QWidget* parent) {
   return exact_box_;
 }
 
+QComboBox* AnimationView::make_framing_box(QWidget* parent) {
+  framing_box_ = new QComboBox(parent);
+  framing_box_->setObjectName(QStringLiteral("animation_framing"));
+  framing_box_->addItems(QString::fromStdString(panel_framing_names(",")).split(','));
+  framing_box_->setToolTip(
+      tr("What every panel frames, one zoom for all: loop, the plane's whole motion; content, "
+         "what is drawn around the frame shown, so a far plane fills its panel; auto, content "
+         "in presentation mode. Display only: no error figure changes"));
+  connect(framing_box_, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    PanelFraming framing = PanelFraming::kAuto;
+    if (parse_panel_framing(framing_box_->itemText(index).toStdString(), &framing))
+      window_->set_framing(framing);
+  });
+  return framing_box_;
+}
+
 PanelDisplay AnimationView::display() const { return window_->panel_display(); }
 
 void AnimationView::show_panels() {
@@ -220,8 +226,9 @@ void AnimationView::show_panels() {
   if (display != shown_display_) blink_phase_ = false;
   shown_display_ = display;
   {
-    const QSignalBlocker block1(exact_box_), block2(zoom_box_);
+    const QSignalBlocker block1(exact_box_), block2(zoom_box_), block3(framing_box_);
     exact_box_->setCurrentIndex(int(exact_kind_ - exact_renderers().data()));
+    framing_box_->setCurrentText(QString::fromLatin1(panel_framing_name(window_->framing())));
     zoom_box_->setValue(window_->zoom());
   }
   controls_->set_display(display);
@@ -325,6 +332,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     const StageTimer maps(FrameStage::kMaps);
     difference_map_into(image, exact, kDifferenceScale, map);
     QStringList caption = agreement_caption(image, exact);
+    caption << sub_pixel_note(run.last);
     const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
     if (per_pixel) {
       // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
@@ -353,6 +361,7 @@ std::vector<PanelContent> AnimationView::panels() {
       const StageTimer maps(FrameStage::kMaps);
       difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
       QStringList caption = agreement_caption(engine_image(), exact_image());
+      caption << sub_pixel_note(model_->current());
       const QString view = affine_view_line(model_->current(), *model_->settings().policy);
       if (!view.isEmpty()) caption << view;
       return {{tr("engine - exact"), heat_images_[0], {}, caption}};
@@ -363,25 +372,6 @@ std::vector<PanelContent> AnimationView::panels() {
       break;
   }
   return {engine_panel(), exact_panel()};
-}
-
-QRectF AnimationView::fit_content() {
-  if (fit_known_) return fit_;
-  fit_ = QRectF();
-  const AnimationSourceKind& kind = model_->source_kind();
-  try {
-    if (kind.plane_script) {
-      fit_ =
-          script_image_bounds(kind.plane_script(model_->source(), model_->player().panel()), kNear);
-    } else if (kind.viewer_script && model_->animator()) {
-      fit_ = scene_image_bounds(model_->animator()->scene(), kind.viewer_script(model_->source()),
-                                kNear);
-    }
-  } catch (const std::exception&) {  // the model refuses such sources with a message
-    fit_ = QRectF();
-  }
-  fit_known_ = true;
-  return fit_;
 }
 
 void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
@@ -417,80 +407,6 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   paint_texts(painter, panel, cell);
 }
 
-AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelContent>& contents,
-                                                         int canvas_width, double gap) const {
-  const StageTimer timer(FrameStage::kText);
-  const bool heat_row =
-      window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
-  const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
-  const double cell_width = (canvas_width - 2 * gap - (columns - 1) * gap) / std::max(1, columns);
-  QFont font;
-  font.setPixelSize(theme_.font_size);
-  const QFontMetrics metrics(font);
-  CaptionLines lines{2, 1};
-  for (size_t i = 0; i < contents.size(); ++i) {
-    QStringList wrapped;
-    for (const QString& line : contents[i].caption)
-      wrapped += wrapped_caption(line, metrics, cell_width);
-    contents[i].caption = wrapped;
-    int& row = heat_row && int(i) >= columns ? lines.heat : lines.top;
-    row = std::max(row, int(wrapped.size()));
-  }
-  return lines;
-}
-
-void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
-                                const PanelCell& cell) {
-  const StageTimer timer(FrameStage::kText);
-  const int text_px = theme_.font_size;
-  QFont font = painter.font();
-  font.setBold(true);
-  // The title a little larger than the text when it fits, else at the text size, elided.
-  font.setPixelSize(int(text_px * 1.15));
-  if (QFontMetrics(font).horizontalAdvance(panel.title) > cell.title.width())
-    font.setPixelSize(text_px);
-  painter.setFont(font);
-  painter.setPen(qcolor(theme_.text));
-  painter.drawText(
-      cell.title, Qt::AlignCenter,
-      QFontMetrics(font).elidedText(panel.title, Qt::ElideRight, int(cell.title.width())));
-  font.setPixelSize(text_px);
-  font.setBold(false);
-  painter.setFont(font);
-  const QFontMetrics metrics(font);
-  const double line = text_px * kCaptionLine;
-  for (int i = 0; i < panel.caption.size() && (i + 1) * line <= cell.caption.height() + 1; ++i) {
-    const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(),
-                     line);
-    painter.drawText(row, Qt::AlignCenter,
-                     metrics.elidedText(panel.caption[i], Qt::ElideRight, int(row.width())));
-  }
-}
-
-void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat) {
-  const QColor text = qcolor(theme_.text);
-  const int text_px = theme_.font_size;
-  const double bar_height = text_px * 3.6;
-  // Side by side in a wide band, stacked (legend above the colour bar) in a cell.
-  const bool stacked = band.height() >= 2 * bar_height;
-  QRectF legend = band, bar = band;
-  if (levels && heat && stacked) {
-    legend.setBottom(band.bottom() - bar_height);
-    bar.setTop(legend.bottom());
-  } else if (levels && heat) {
-    legend.setWidth(band.width() * 0.55);
-    bar.setLeft(band.right() - std::min(band.width() * 0.4, 30.0 * text_px));
-  }
-  if (levels) draw_level_legend(painter, legend, text, text_px);
-  if (heat) {
-    bar.setWidth(std::min(bar.width(), 30.0 * text_px));
-    draw_difference_bar(painter,
-                        QRectF(bar.left(), bar.bottom() - std::min(bar.height(), bar_height),
-                               bar.width(), std::min(bar.height(), bar_height)),
-                        kDifferenceScale, text, text_px);
-  }
-}
-
 QImage AnimationView::compose(const QSize& size) {
   // Two reused images in turn: the canvas still shows the other one, so painting this one
   // neither copies nor allocates (a new image of the view's size each frame cost page faults).
@@ -522,45 +438,31 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
   panel_rects_.clear();
   const Animator* animator = model_->animator();
   if (!animator) return;
-  std::vector<PanelContent> contents = panels();
-  const int text_px = theme_.font_size;
-  const double gap = text_px, title = text_px * 1.8;
-  const CaptionLines lines = wrap_captions(contents, size.width(), gap);
-  const double caption = text_px * kCaptionLine * lines.top;
-  const double heat_caption = text_px * kCaptionLine * lines.heat;
-  // The comparison puts the heat maps in a second row, each under its policy, as large as
-  // the frames above them, and the legends in the spare cell under the exact panel; the
-  // other layouts have one row and the legends in a band below it.
-  const bool heat_row =
+  const std::vector<PanelContent> contents = panels();
+  const QRectF content = framed_content();
+  // The comparison puts the heat maps in a second row under their policies, unless every
+  // panel in one row draws the framed content larger with every text whole (a wide canvas
+  // under a lesson's caption leaves two rows of flat images); the other layouts have one row.
+  const bool comparing =
       window_->panel_display() == PanelDisplay::kComparison && contents.size() > 2;
-  const double band = heat_row ? 0.0 : text_px * 3.9;
-  const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap - band);
-  const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
-  QRectF top = area;
-  if (heat_row) {
-    const double image = (area.height() - gap / 2 - 2 * title - caption - heat_caption) / 2;
-    top.setHeight(title + caption + std::max(0.0, image));
+  PanelPlan plan = plan_panels(contents, size, comparing);
+  if (comparing) {
+    PanelPlan strip = plan_panels(contents, size, false);
+    if (texts_fit(strip) && content_scale(strip, content) > content_scale(plan, content))
+      plan = std::move(strip);
   }
-  std::vector<PanelCell> cells = panel_row(top, columns, gap, title, caption);
-  QRectF legends(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
-  if (heat_row) {
-    const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(),
-                        area.bottom() - top.bottom() - gap / 2);
-    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, heat_caption);
-    cells.insert(cells.end(), more.begin(), more.end() - 1);
-    legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
-  }
-  const QRectF& first = cells.front().image;
+  lines_ = plan.lines;
+  const QRectF& first = plan.cells.front().image;
   const Camera& camera = animator->camera();
-  shown_frame_ = panel_frame(fit_content(), QSizeF(camera.width, camera.height),
+  shown_frame_ = panel_frame(content, QSizeF(camera.width, camera.height),
                              first.width() / first.height(), window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
-  for (size_t i = 0; i < contents.size(); ++i)
-    paint_panel(painter, contents[i], cells[i], outlines);
+  for (size_t i = 0; i < plan.contents.size(); ++i)
+    paint_panel(painter, plan.contents[i], plan.cells[i], outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
-  paint_band(painter, legends, levels,
-             heat_row || window_->panel_display() == PanelDisplay::kDifference);
+  paint_band(painter, plan.legends, levels,
+             comparing || window_->panel_display() == PanelDisplay::kDifference);
 }
 
 void AnimationView::refresh() {

@@ -4,9 +4,10 @@
 // engine's re-render level and the analysis's baseline draw), or independently by VTK as
 // textured 3D polygons with the matching camera. Made for a projector: the panels are painted at
 // the view's own size and fill it, every panel shows the same part of the camera image (zoom to fit
-// on the plane over its whole loop, times a zoom the teacher sets with the Zoom box or the mouse
-// wheel), every panel outlines the exact polygons, and titles, numbers and legends sit in bands
-// around the images, never over them.
+// on the plane over its whole loop, or, framing what is drawn (WindowState::framing, the default
+// in presentation mode), over the frames around the one shown, so a far plane fills its panel;
+// times a zoom the teacher sets with the Zoom box or the mouse wheel), every panel outlines the
+// exact polygons, and titles, numbers and legends sit in bands around the images, never over them.
 //
 // Layouts (PanelDisplay): side by side (engine | exact); the difference heat map; blink
 // (engine and exact in turn); and the comparison, which plays several reuse policies at
@@ -22,7 +23,9 @@
 // the view redraws on its signals. The engines run only while a view asks for their frames.
 #pragma once
 
+#include <QImage>
 #include <QRectF>
+#include <QStringList>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -48,7 +51,15 @@ class ImageCanvas;
 class PolicyComparison;
 class WindowModel;
 struct ExactRendererKind;
-struct PanelContent;
+
+// One panel: a camera-sized picture (premultiplied; painted over the view's background),
+// the level outlines drawn on it, and the lines under it.
+struct PanelContent {
+  QString title;
+  QImage image;
+  std::vector<LayerOutline> levels;
+  QStringList caption;
+};
 
 class AnimationView : public ViewPage {
   Q_OBJECT
@@ -79,8 +90,9 @@ class AnimationView : public ViewPage {
   bool external_clock() const { return external_clock_; }
 
   // The teacher's zoom on top of zoom-to-fit (the window model's; limits::kZoom): 1 fits the
-  // plane's whole loop. The mouse wheel over the panels multiplies it by kWheelZoomStep per
-  // notch, stopping at the ends of the range.
+  // plane's whole loop, or the frames around the one shown when the framing is content. The mouse
+  // wheel over the panels multiplies it by kWheelZoomStep per notch, stopping at the ends of the
+  // range.
   static constexpr double kWheelZoomStep = 1.25;
 
   // What the last render showed: the part of the camera image (camera pixels) every panel
@@ -88,6 +100,16 @@ class AnimationView : public ViewPage {
   // comparison: the policies, the exact panel, then the heat maps).
   QRectF shown_frame() const { return shown_frame_; }
   const std::vector<QRectF>& panel_rects() const { return panel_rects_; }
+  // What the panels draw of the frame: the bounding box (canvas pixels) of the exact outlines
+  // of the frame shown (the plane's or the polygons' images) as drawn in each panel of
+  // panel_rects(), clipped to that panel; empty rectangles when nothing is seen. Of the last
+  // render.
+  std::vector<QRectF> drawn_content_rects();
+  // The share (0..1) of the exact panel's image that what it shows covers as drawn in the
+  // last render: the area inside the exact outlines of the frame shown (exact_outlines: the
+  // plane's or the polygons' images, whatever their textures' alpha) within shown_frame(),
+  // over its area, rasterised 400 cells across. Display only: no error figure depends on it.
+  double content_fill();
   // Hole pixels marked on the comparison's heat maps in the last render (adapters/hole_map.h:
   // the depth-reprojection policy's holes on its frame shown now); 0 in other layouts.
   std::int64_t hole_map_pixels() const { return hole_map_pixels_; }
@@ -116,6 +138,10 @@ class AnimationView : public ViewPage {
  private:
   // The canvas with the frame inspector beside it, the readout under them, then the Exact
   // picker and the zoom.
+  static constexpr int kDifferenceScale = 128;  // grey levels at the colour bar's top
+  static constexpr double kNear = 0.05;  // near plane of the exact render (SceneSettings::near)
+  static constexpr double kCaptionLine = 1.4;  // caption line height, times the text size
+
   QWidget* make_panels();
   // The frame inspector's label in a scroll area of fixed width, returned.
   QScrollArea* make_inspector(QWidget* parent);
@@ -123,7 +149,8 @@ class AnimationView : public ViewPage {
   QDoubleSpinBox* make_zoom_box(QWidget* parent);
   // The canvas's hover (the readout), wheel (the zoom) and resize (a redraw).
   void connect_canvas();
-  QComboBox* make_exact_box(QWidget* parent);  // the Exact picker, wired to set_exact_renderer
+  QComboBox* make_exact_box(QWidget* parent);    // the Exact picker, wired to set_exact_renderer
+  QComboBox* make_framing_box(QWidget* parent);  // the Framing picker, wired to set_framing
   void show_model_state();
   // The controls show the window model's layout, compared policies, exact renderer and zoom;
   // the blink timer follows the layout; redraws.
@@ -141,18 +168,43 @@ class AnimationView : public ViewPage {
   void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
                    const std::vector<std::vector<Vec2>>& outlines);
   // The title above the panel's image and its caption lines below it.
-  // Caption lines the bands under the frames (top) and under the heat maps must hold.
+  // Caption lines the bands under the frames (top) and under the heat maps must hold, and the
+  // titles' one pixel size and lines.
   struct CaptionLines {
     int top = 2;
     int heat = 1;
+    int title_px = 12;
+    int title_lines = 1;
   };
   // Breaks the panels' captions into lines that fit their cells on a canvas `canvas_width`
-  // pixels wide (cells `gap` apart) at the theme's text size, so no number is elided.
-  CaptionLines wrap_captions(std::vector<PanelContent>& contents, int canvas_width,
-                             double gap) const;
+  // pixels wide (cells `gap` apart) at the theme's text size, so no number is elided; picks
+  // one title size for every panel, the largest of 1.15, 1 and 0.85 times the text size at
+  // which every title fits its cell on one line, else the text size with titles broken
+  // (wrapped_caption) onto as many lines as the longest needs.
+  CaptionLines wrap_captions(std::vector<PanelContent>& contents, int canvas_width, double gap,
+                             bool heat_row) const;
+  // Where the panels go on a canvas: their contents (captions wrapped for their cells), cells,
+  // the legends' rectangle and the caption and title lines.
+  struct PanelPlan {
+    std::vector<PanelContent> contents;
+    std::vector<PanelCell> cells;
+    QRectF legends;
+    CaptionLines lines;
+  };
+  // `contents` on a canvas of `size`: with `heat_row`, the comparison's heat maps in a second
+  // row, each under its policy, and the legends in the spare cell under the exact panel; else
+  // every panel in one row and the legends in a band below it.
+  PanelPlan plan_panels(std::vector<PanelContent> contents, const QSize& size, bool heat_row) const;
+  // Whether every title and caption line of `plan` fits its cell's width whole and its
+  // images are at least a few text lines high.
+  bool texts_fit(const PanelPlan& plan) const;
+  // Canvas pixels per camera pixel at which `plan`'s panels draw `content` (zoom 1).
+  double content_scale(const PanelPlan& plan, const QRectF& content) const;
   void paint_texts(QPainter& painter, const PanelContent& panel, const PanelCell& cell);
   void paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat);
+  // The plane's (scene's) image bounds over the whole loop, and what the framing frames now.
   QRectF fit_content();
+  QRectF framed_content();
   void show_readout(QPointF pixel);
 
   WindowModel* window_;
@@ -165,6 +217,7 @@ class AnimationView : public ViewPage {
   QLabel* readout_ = nullptr;
   QDoubleSpinBox* zoom_box_ = nullptr;
   QComboBox* exact_box_ = nullptr;
+  QComboBox* framing_box_ = nullptr;
   QTimer* blink_timer_;
   const ExactRendererKind* exact_kind_;
   std::unique_ptr<ExactFrameRenderer> exact_;  // of the model's source; null after a change
@@ -174,14 +227,16 @@ class AnimationView : public ViewPage {
   ViewTheme theme_;
   bool blink_phase_ = false;
   bool external_clock_ = false;
-  bool fit_known_ = false;  // fit_ is up to date with the model's source
-  QRectF fit_;              // the plane's image over its loop (empty: the whole image)
+  bool fit_known_ = false;            // fit_ is up to date with the model's source
+  QRectF fit_;                        // the plane's image over its loop (empty: the whole image)
+  std::vector<QRectF> frame_bounds_;  // the plane's image at each frame of the loop
   QRectF shown_frame_;
   std::vector<QRectF> panel_rects_;
   QImage buffers_[2];                // the composed view, painted into in turn (compose)
   std::vector<QImage> heat_images_;  // the heat maps of the last frame, reused
   std::int64_t hole_map_pixels_ = 0;
   int next_buffer_ = 0;
+  CaptionLines lines_;  // of the last paint: the titles' size and lines
 };
 
 }  // namespace oflab

@@ -45,7 +45,7 @@ QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
     levels << (frame.layers > 1 ? QStringLiteral("%1 %2").arg(name).arg(n) : name);
   }
   if (levels.isEmpty()) levels << QObject::tr("nothing drawn");
-  QStringList lines{QObject::tr("%1 · error %2 px")
+  QStringList lines{QObject::tr("%1 · corner error %2 px")
                         .arg(levels.join(QStringLiteral(", ")))
                         .arg(frame.max_measured_error_px, 0, 'f', 2)};
   const int rendered = frame.levels[size_t(Level::kRerender)];
@@ -63,6 +63,11 @@ QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
                .arg(count_text(run_pixels))
                .arg(run_ms, 0, 'f', 0);
   return lines;
+}
+
+QStringList sub_pixel_note(const AnimationFrame& frame) {
+  if (frame.drawn() == 0 || !(frame.max_measured_error_px <= 1.0)) return {};
+  return {QObject::tr("lit edges: sub-pixel shifts, resampling")};
 }
 
 QStringList agreement_caption(const Image& shown, const Image& exact) {

@@ -27,6 +27,12 @@ QString affine_view_line(const AnimationFrame& frame, const ReusePolicy& policy)
 QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
                         const EngineSettings& settings, double run_pixels, double run_ms);
 
+// Under a heat map of a frame whose largest measured error (the corners' distance from their
+// exact projection) is within a pixel: what its lit edges are, so they are not read as that
+// error ("lit edges: sub-pixel shifts, resampling"); empty when the error is larger
+// (then the map shows it) or nothing was drawn.
+QStringList sub_pixel_note(const AnimationFrame& frame);
+
 // The caption of a difference heat map of `shown` against `exact` (same size): the IoU of
 // their coverage masks and the PSNR in dB ("equal" when they are identical).
 QStringList agreement_caption(const Image& shown, const Image& exact);

@@ -65,27 +65,47 @@ QTransform frame_to_panel(const QRectF& frame, const QRectF& target) {
                     target.top() - frame.top() * scale);
 }
 
-QRectF script_image_bounds(const MotionScript& script, double near) {
-  QRectF bounds;
+std::vector<QRectF> script_frame_bounds(const MotionScript& script, double near) {
+  std::vector<QRectF> bounds;
   for (const ScriptFrame& frame : script.frames) {
     const ConvexPolygon seen = plane_image_polygon(script.camera, frame.pose, near);
-    if (seen.empty()) continue;
+    if (seen.empty()) {
+      bounds.emplace_back();
+      continue;
+    }
     const BoundingBox box = seen.bounds();
-    bounds |= QRectF(QPointF(box.x_min, box.y_min), QPointF(box.x_max, box.y_max));
+    bounds.emplace_back(QPointF(box.x_min, box.y_min), QPointF(box.x_max, box.y_max));
   }
   return bounds;
 }
 
-QRectF scene_image_bounds(const Scene& scene, const ViewerScript& walk, double near) {
-  QRectF bounds;
+std::vector<QRectF> scene_frame_bounds(const Scene& scene, const ViewerScript& walk, double near) {
+  std::vector<QRectF> bounds;
   for (const ViewerFrame& frame : walk.frames) {
+    QRectF seen;
     for (const std::vector<Vec2>& outline : exact_outlines(scene, frame.pose, walk.camera, near)) {
-      for (const Vec2& p : outline) {
-        bounds |= QRectF(QPointF(p.x, p.y), QSizeF(1e-9, 1e-9));
-      }
+      for (const Vec2& p : outline) seen |= QRectF(QPointF(p.x, p.y), QSizeF(1e-9, 1e-9));
     }
+    bounds.push_back(seen);
   }
   return bounds;
+}
+
+QRectF bounds_around(const std::vector<QRectF>& bounds, int frame, int reach) {
+  const int n = int(bounds.size());
+  const int first = reach < 0 ? 0 : std::max(0, frame - reach);
+  const int last = reach < 0 ? n - 1 : std::min(n - 1, frame + reach);
+  QRectF around;
+  for (int k = first; k <= last; ++k) around |= bounds[size_t(k)];
+  return around;
+}
+
+QRectF script_image_bounds(const MotionScript& script, double near) {
+  return bounds_around(script_frame_bounds(script, near), 0, -1);
+}
+
+QRectF scene_image_bounds(const Scene& scene, const ViewerScript& walk, double near) {
+  return bounds_around(scene_frame_bounds(scene, walk, near), 0, -1);
 }
 
 std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,
@@ -93,7 +113,10 @@ std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPo
   std::vector<std::vector<Vec2>> outlines;
   const ViewFrustum frustum = view_frustum(camera, near, 0.0);
   for (const ScenePolygon& polygon : scene.polygons) {
-    if (is_back_facing(direction_to_view(view, polygon.front), to_view(view, polygon.centre))) {
+    const Vec3 front = direction_to_view(view, polygon.front);
+    const Vec3 centre = to_view(view, polygon.centre);
+    // As the engines cull (core/scene/scene_animator.cpp): a two-sided sheet only edge-on.
+    if (is_back_facing(front, centre) && (!polygon.two_sided || is_back_facing(-front, centre))) {
       continue;
     }
     ViewPolygon seen;

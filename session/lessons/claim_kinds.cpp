@@ -90,7 +90,13 @@ std::vector<ClaimKind> make_kinds() {
              true, false, false, run_name),
       screen("exact_drawn", "the share (0..1) of the exact panel's pixels the exact frame covers"),
       screen("active_tiles", "tiles of the basis gallery with a non-zero coefficient"),
-      screen("heat_map_width", "the narrowest heat map of the comparison layout, screen pixels"),
+      screen("heat_map_width",
+             "the narrowest heat map of the comparison layout as drawn: the width of what it "
+             "shows (the exact outlines' bounding box) on it, screen pixels"),
+      screen("panel_fill",
+             "the share (percent) of the exact panel's image inside the exact outlines of what "
+             "it shows now (the plane's or the polygons' images), at the panels' shared "
+             "framing and zoom"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",
@@ -107,8 +113,8 @@ std::vector<ClaimKind> make_kinds() {
              false, true),
       screen("cut_texts",
              "texts elided, off their canvas or overlapping another, or labels cut short: of "
-             "the world view or the basis view's explorer when in front, else of the "
-             "animation view"),
+             "the world view, the basis view's explorer or the analysis view when in front, "
+             "else of the animation view"),
       engine("view", "1 when the view in front is `of`, else 0", true),
       engine("run_pixels_ratio",
              "the pixels compared policy `of` has written over frames 0 .. now over those of "

@@ -352,8 +352,14 @@ void add_view_fields(std::vector<StateField>& f) {
       [](const std::vector<std::string>& names) { return json(names); }));
   f.push_back(text_field("animation.exact_renderer", "core, vtk", "who draws the exact panel",
                          [](S* s) { return &s->exact_renderer; }));
+  f.push_back(named<PanelFraming>(
+      "animation.framing", panel_framing_names(),
+      "what every panel frames: the whole loop, what is drawn now, or auto (what is drawn in "
+      "presentation mode, else the loop)",
+      [](S* s) { return &s->framing; }, parse_panel_framing,
+      [](PanelFraming f) { return std::string(panel_framing_name(f)); }));
   f.push_back(number_field("animation.zoom", limits::kZoom.range_text(),
-                           "zoom on top of zoom-to-fit", [](S* s) { return &s->zoom; }));
+                           "zoom on top of the framing", [](S* s) { return &s->zoom; }));
 }
 
 std::vector<StateField> make_fields() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "engine/reuse_policy.h"
 #include "flow/limits.h"
@@ -10,6 +11,10 @@
 
 namespace oflab {
 namespace {
+
+const std::pair<PanelFraming, const char*> kFramings[] = {{PanelFraming::kAuto, "auto"},
+                                                          {PanelFraming::kLoop, "loop"},
+                                                          {PanelFraming::kContent, "content"}};
 
 constexpr PanelDisplay kDisplays[] = {PanelDisplay::kSideBySide, PanelDisplay::kDifference,
                                       PanelDisplay::kBlink, PanelDisplay::kComparison};
@@ -165,6 +170,29 @@ bool parse_world_camera(const std::string& text, WorldCamera* camera) {
     }
   }
   return false;
+}
+
+const char* panel_framing_name(PanelFraming framing) {
+  for (const auto& [f, name] : kFramings) {
+    if (f == framing) return name;
+  }
+  return "auto";
+}
+
+bool parse_panel_framing(const std::string& text, PanelFraming* framing) {
+  for (const auto& [f, name] : kFramings) {
+    if (text == name) {
+      *framing = f;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string panel_framing_names(const std::string& separator) {
+  std::string names;
+  for (const auto& entry : kFramings) names += (names.empty() ? "" : separator) + entry.second;
+  return names;
 }
 
 bool operator==(const WindowState& a, const WindowState& b) { return same_fields(a, b); }

@@ -35,6 +35,25 @@ enum class WorldCamera { kOrbit, kEye };
 const char* world_camera_name(WorldCamera camera);
 bool parse_world_camera(const std::string& text, WorldCamera* camera);
 
+// How the animation view frames its panels, one framing shared by every panel so the
+// approximations and the exact picture stay comparable: the plane's or scene's whole loop, or
+// what is drawn around the frame shown (its exact outlines over kFramingFrames frames either
+// side), so a small or far plane fills its panel; auto is the second in presentation mode and
+// the first otherwise. Display only: no measured error depends on it.
+enum class PanelFraming { kAuto, kLoop, kContent };
+// "auto", "loop", "content"
+const char* panel_framing_name(PanelFraming framing);
+bool parse_panel_framing(const std::string& text, PanelFraming* framing);
+// The names of every framing joined by `separator`, for help texts and error messages.
+std::string panel_framing_names(const std::string& separator = ", ");
+// Whether `framing` frames what is drawn now (content) in presentation mode `presentation`.
+inline bool frames_content(PanelFraming framing, bool presentation) {
+  return framing == PanelFraming::kContent || (framing == PanelFraming::kAuto && presentation);
+}
+// Frames either side of the frame shown whose exact outlines content framing holds: a sixth
+// of a second at 30 frames per second, so the framing follows the motion smoothly.
+constexpr int kFramingFrames = 5;
+
 // The most policies the comparison layout plays at once.
 constexpr int kMaxComparedPolicies = 4;
 
@@ -60,10 +79,12 @@ struct WindowState {
   EngineSettings settings;
   // The animation view: its layout, the policies its comparison plays (1 ..
   // kMaxComparedPolicies distinct registry names, in panel order), who draws its exact panel
-  // (gui/adapters/exact_frames.h) and the zoom on top of zoom-to-fit (limits::kZoom).
+  // (gui/adapters/exact_frames.h), how the panels are framed and the zoom on top of that
+  // framing (limits::kZoom).
   PanelDisplay display = PanelDisplay::kSideBySide;
   std::vector<std::string> compared = {"affine", "perspective"};
   std::string exact_renderer = "core";
+  PanelFraming framing = PanelFraming::kAuto;
   double zoom = 1.0;
 
   bool presentation = false;  // large text and thick lines for a projector

@@ -1,6 +1,7 @@
 // The animation view at projector scale: the comparison layout plays every compared policy
 // on the model's frame, every panel shows the same framing, zoom-to-fit holds the plane's
-// whole loop, and in the affine-vs-perspective lesson at 1920 x 1080 the plane covers at
+// whole loop (or, framing the content, the frames around the one shown, so a far plane fills
+// its panel), and in the affine-vs-perspective lesson at 1920 x 1080 the plane covers at
 // least a tenth of the view.
 //
 // Plane areas are measured independently of the view's geometry: the image area of the
@@ -9,13 +10,17 @@
 // (panel pixels per camera pixel).
 #include <QAction>
 #include <QApplication>
+#include <QFontMetricsF>
 #include <QMenu>
+#include <QPainter>
 #include <QTest>
 #include <QToolButton>
 #include <QWidget>
 #include <cmath>
 #include <cstring>
 
+#include "adapters/frame_images.h"
+#include "adapters/painted_text.h"
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
@@ -24,8 +29,10 @@
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "player/policy_comparison.h"
+#include "scene/scene.h"
 #include "scene/view_culling.h"
 #include "views/animation_view.h"
+#include "views/panel_captions.h"
 #include "views/panel_layout.h"
 #include "window_fixture.h"
 
@@ -421,6 +428,165 @@ TEST(WrappedCaption, BreaksAtTheSeparatorsSoEveryLineFitsAndNothingIsLost) {
   for (const QString& line : many)
     EXPECT_LE(metrics.horizontalAdvance(line), narrow) << line.toStdString();
   EXPECT_EQ(many.join(QString()).remove(' '), QString(caption).remove(' ').remove(QChar(0x00b7)));
+}
+
+// Framing what is drawn (issue: a far plane was a few dozen pixels on a projector): in the
+// flow-vs-talisman loop, seen far and from behind, the exact frame's content covers at least
+// a quarter of the exact panel when the panels frame the frames around the one shown, and
+// far less when they frame the whole loop (the control). One framing for every panel, and
+// display only: the compared runs' measured errors are the same under both framings.
+TEST_F(AnimationLayoutTest, ContentFramingFillsThePanelsAndChangesNoError) {
+  window().resize(1920, 1080);
+  QApplication::processEvents();
+  window().apply_lesson(*find_lesson("flow-vs-talisman"));
+  window().model()->set_playing(false);
+  window().set_external_clock(true);
+  std::vector<double> errors[2];
+  double fills[2] = {0, 0};
+  int slot = 0;
+  for (PanelFraming framing : {PanelFraming::kLoop, PanelFraming::kContent}) {
+    window().model()->set_framing(framing);
+    window().model()->scene()->set_frame(0);
+    window().model()->scene()->set_frame(246);
+    animation().render_image();
+    fills[slot] = animation().content_fill();
+    const QRectF frame = animation().shown_frame();
+    for (const QRectF& r : animation().panel_rects())
+      EXPECT_NEAR(r.width() / r.height(), frame.width() / frame.height(), 1e-6);
+    for (const ComparedRun& run : window().model()->comparison().runs()) {
+      for (int k = 1; k <= 246; ++k) {
+        const ComparedFrame* c = run.at(k);
+        errors[slot].push_back(c ? c->max_measured_error_px : -1.0);
+      }
+    }
+    ++slot;
+  }
+  RecordProperty("fill_loop", std::to_string(fills[0]));
+  RecordProperty("fill_content", std::to_string(fills[1]));
+  EXPECT_GE(fills[1], 0.25);
+  EXPECT_LT(fills[0], 0.5 * fills[1]) << "the control: the loop's framing is the small one";
+  EXPECT_EQ(errors[0], errors[1]);
+  // Auto frames the content in presentation mode only.
+  window().model()->set_framing(PanelFraming::kAuto);
+  EXPECT_FALSE(window().model()->frames_content());
+  window().model()->set_presentation(true);
+  EXPECT_TRUE(window().model()->frames_content());
+}
+
+// A plane seen from behind (a two-sided sheet, drawn by every engine) keeps its dashed exact
+// outline; a one-sided polygon (a solid's face) seen from behind has none, as it is culled.
+TEST(ExactOutlines, TwoSidedSheetIsOutlinedFromBehindAndAOneSidedFaceIsNot) {
+  Scene scene;
+  ScenePolygon sheet;
+  sheet.centre = Vec3(0.0, 0.0, 4.0);
+  sheet.front = Vec3(0.0, 0.0, 1.0);  // facing away from an eye at the origin looking down +z
+  sheet.size = Vec2(1.0, 1.0);
+  sheet.two_sided = true;
+  scene.polygons.push_back(sheet);
+  const Camera camera;
+  const ViewerPose eye;
+  ASSERT_TRUE(is_back_facing(direction_to_view(eye, sheet.front), to_view(eye, sheet.centre)));
+  const auto outlines = exact_outlines(scene, eye, camera, kNear);
+  ASSERT_EQ(outlines.size(), 1u);
+  EXPECT_EQ(outlines[0].size(), 4u);
+  scene.polygons[0].two_sided = false;
+  EXPECT_TRUE(exact_outlines(scene, eye, camera, kNear).empty());
+  scene.polygons[0].front = Vec3(0.0, 0.0, -1.0);  // facing the eye: outlined either way
+  EXPECT_EQ(exact_outlines(scene, eye, camera, kNear).size(), 1u);
+}
+
+// The union of the frames' bounds around one frame, clamped to the loop; all of them with a
+// negative reach.
+TEST(BoundsAround, UnitesTheFramesWithinReach) {
+  const std::vector<QRectF> bounds = {QRectF(0, 0, 10, 10), QRectF(), QRectF(20, 20, 5, 5),
+                                      QRectF(100, 0, 1, 1)};
+  EXPECT_EQ(bounds_around(bounds, 0, 0), QRectF(0, 0, 10, 10));
+  EXPECT_EQ(bounds_around(bounds, 1, 1), QRectF(0, 0, 25, 25));
+  EXPECT_EQ(bounds_around(bounds, 1, 0), QRectF());
+  EXPECT_EQ(bounds_around(bounds, 3, 5), QRectF(20, 0, 81, 25));
+  EXPECT_EQ(bounds_around(bounds, 0, -1), QRectF(0, 0, 101, 25));
+}
+
+// The comparison on a projector with the scene panel shown and hidden, at 1920 x 1080: no
+// text is elided, off the canvas or overlapping (the exact panel's title, the colour bar's
+// caption and labels among them), and every panel title has one font size. (At 1366 x 768
+// with the scene panel the captions leave the images no height: not yet held here.)
+TEST_F(AnimationLayoutTest, ComparisonTextsAreWholeWithAndWithoutTheScenePanel) {
+  show_comparison();
+  ASSERT_TRUE(model().set_source({"script", "swing", ""}));
+  ASSERT_TRUE(window().model()->set_compared({"affine", "perspective"}));
+  window().model()->set_presentation(true);
+  window().play_frames(10);
+  for (const QSize size : {QSize(1920, 1080)}) {
+    for (bool scene_panel : {true, false}) {
+      window().resize(size);
+      window().model()->set_scene_panel(scene_panel);
+      QApplication::processEvents();
+      animation().render_image();
+      const std::string where = std::to_string(size.width()) + (scene_panel ? " panel" : "");
+      for (const QString& p : animation().text_problems())
+        ADD_FAILURE() << where << ": " << p.toStdString();
+      const std::vector<PaintedText> texts = animation().painted_texts();
+      const std::vector<QRectF>& rects = animation().panel_rects();
+      ASSERT_EQ(rects.size(), 5u);
+      std::vector<double> title_heights;
+      for (const PaintedText& t : texts) {
+        if (t.text.contains(QStringLiteral("exact")) && t.box.bottom() <= rects[0].top() + 1)
+          title_heights.push_back(t.box.height());
+        if (t.text.endsWith(QStringLiteral(" - exact")))  // the heat maps' titles
+          title_heights.push_back(t.box.height());
+      }
+      ASSERT_GE(title_heights.size(), 3u) << where;
+      for (double h : title_heights) EXPECT_NEAR(h, title_heights[0], 0.5) << where;
+    }
+  }
+}
+
+// The colour bar in a narrow cell: its caption breaks onto two lines, each within the bar's
+// width, and its tick labels stay a text size apart; in a wide one, one caption line and
+// five labels. The control: the caption on one line is wider than the narrow cell.
+TEST(DifferenceBar, FitsItsCaptionAndLabelsToItsWidth) {
+  const int text_px = 22;
+  QFont font;
+  font.setPixelSize(text_px);
+  const double caption_width =
+      QFontMetricsF(font).horizontalAdvance(QStringLiteral("|shown - exact|, grey levels"));
+  for (double width : {caption_width * 0.7, caption_width * 1.5}) {
+    const QRectF area(10, 10, width, difference_bar_height(width, text_px));
+    const std::vector<PaintedText> texts = record_painted_text(QSize(2000, 400), [&](QPainter& p) {
+      draw_difference_bar(p, area, 128, Qt::black, text_px);
+    });
+    std::vector<QRectF> labels;
+    int caption_lines = 0;
+    for (const PaintedText& t : texts) {
+      EXPECT_LE(t.box.right(), area.right() + 1) << t.text.toStdString();
+      EXPECT_GE(t.box.left(), area.left() - 1) << t.text.toStdString();
+      if (t.text.at(0).isDigit())
+        labels.push_back(t.box);
+      else
+        ++caption_lines;
+    }
+    EXPECT_EQ(caption_lines, width < caption_width ? 2 : 1);
+    for (size_t i = 1; i < labels.size(); ++i)
+      EXPECT_GE(labels[i].left() - labels[i - 1].right(), text_px * 0.5) << width;
+    EXPECT_TRUE(text_problems(texts, QSize(2000, 400)).empty());
+  }
+}
+
+// Under a heat map of a frame within a pixel, a line says what its lit edges are (sub-pixel
+// shifts and resampling), so they are not read as the corner error above; a frame many
+// pixels off (the control) or with nothing drawn gets none: its map shows the error.
+TEST(SubPixelNote, NamesTheLitEdgesOnlyWithinAPixel) {
+  AnimationFrame frame;
+  frame.levels[size_t(Level::kPerspective)] = 1;
+  frame.max_measured_error_px = 0.21;
+  ASSERT_EQ(sub_pixel_note(frame).size(), 1);
+  EXPECT_TRUE(sub_pixel_note(frame).front().startsWith(QStringLiteral("lit edges")));
+  frame.max_measured_error_px = 3.8;
+  EXPECT_TRUE(sub_pixel_note(frame).isEmpty());
+  frame.max_measured_error_px = 0.21;
+  frame.levels[size_t(Level::kPerspective)] = 0;
+  EXPECT_TRUE(sub_pixel_note(frame).isEmpty());
 }
 
 }  // namespace

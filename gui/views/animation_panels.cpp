@@ -1,0 +1,276 @@
+// The animation view's framing and panel layout (gui/views/animation_view.h): what the panels
+// frame (the loop or the content around the frame shown), how much of the exact panel that
+// fills, where the panels, their titles, captions and legends go, and the choice between two
+// rows and one. Units: camera pixels for frames and outlines, canvas pixels for cells.
+#include <QFontMetrics>
+#include <QPainter>
+#include <algorithm>
+
+#include "adapters/frame_images.h"
+#include "models/animation_model.h"
+#include "models/window_model.h"
+#include "player/stage_times.h"
+#include "views/animation_view.h"
+#include "views/panel_layout.h"
+
+namespace oflab {
+
+namespace {
+
+QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
+
+// `lines` with every line wider than `width` in `metrics` broken at its spaces, each break as
+// far right as fits (a title with none of wrapped_caption's separators).
+QStringList broken_at_spaces(const QStringList& lines, const QFontMetrics& metrics, double width) {
+  QStringList out;
+  for (QString line : lines) {
+    while (metrics.horizontalAdvance(line) > width) {
+      int at = line.lastIndexOf(QLatin1Char(' '));
+      while (at > 0 && metrics.horizontalAdvance(line.left(at)) > width)
+        at = line.lastIndexOf(QLatin1Char(' '), at - 1);
+      if (at <= 0) break;
+      out << line.left(at);
+      line = line.mid(at + 1);
+    }
+    out << line;
+  }
+  return out;
+}
+
+}  // namespace
+
+QRectF AnimationView::fit_content() {
+  if (fit_known_) return fit_;
+  frame_bounds_.clear();
+  const AnimationSourceKind& kind = model_->source_kind();
+  try {
+    if (kind.plane_script) {
+      frame_bounds_ =
+          script_frame_bounds(kind.plane_script(model_->source(), model_->player().panel()), kNear);
+    } else if (kind.viewer_script && model_->animator()) {
+      frame_bounds_ = scene_frame_bounds(model_->animator()->scene(),
+                                         kind.viewer_script(model_->source()), kNear);
+    }
+  } catch (const std::exception&) {  // the model refuses such sources with a message
+    frame_bounds_.clear();
+  }
+  fit_ = bounds_around(frame_bounds_, 0, -1);
+  fit_known_ = true;
+  return fit_;
+}
+
+QRectF AnimationView::framed_content() {
+  const QRectF loop = fit_content();
+  if (!window_->frames_content() || !model_->animator()) return loop;
+  const QRectF around = bounds_around(frame_bounds_, model_->animator()->frame(), kFramingFrames);
+  return around.isEmpty() ? loop : around;
+}
+
+std::vector<QRectF> AnimationView::drawn_content_rects() {
+  QRectF covered;
+  if (const Animator* animator = model_->animator()) {
+    for (const std::vector<Vec2>& outline :
+         exact_outlines(animator->scene(), animator->view(), animator->camera(), kNear)) {
+      for (const Vec2& p : outline) covered |= QRectF(QPointF(p.x, p.y), QSizeF(1e-9, 1e-9));
+    }
+  }
+  std::vector<QRectF> drawn;
+  for (const QRectF& panel : panel_rects_) {
+    const QRectF in_panel =
+        covered.isEmpty() ? QRectF() : frame_to_panel(shown_frame_, panel).mapRect(covered);
+    drawn.push_back(in_panel.intersected(panel));
+  }
+  return drawn;
+}
+
+double AnimationView::content_fill() {
+  const Animator* animator = model_->animator();
+  if (!animator || shown_frame_.isEmpty()) return 0.0;
+  // The exact outlines of the frame shown (the plane's image, whatever its texture's alpha),
+  // rasterised over the shown frame at kFillGrid cells across.
+  constexpr int kFillGrid = 400;
+  const QSize grid(kFillGrid,
+                   std::max(1, int(kFillGrid * shown_frame_.height() / shown_frame_.width())));
+  QImage mask(grid, QImage::Format_Grayscale8);
+  mask.fill(0);
+  QPainter painter(&mask);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(Qt::white);
+  painter.setTransform(frame_to_panel(shown_frame_, QRectF(QPointF(0, 0), QSizeF(grid))));
+  for (const std::vector<Vec2>& outline :
+       exact_outlines(animator->scene(), animator->view(), animator->camera(), kNear)) {
+    QPolygonF polygon;
+    for (const Vec2& p : outline) polygon << QPointF(p.x, p.y);
+    painter.drawPolygon(polygon);
+  }
+  painter.end();
+  std::size_t covered = 0;
+  for (int y = 0; y < grid.height(); ++y) {
+    const uchar* row = mask.constScanLine(y);
+    for (int x = 0; x < grid.width(); ++x) covered += row[x] > 127;
+  }
+  return double(covered) / (double(grid.width()) * grid.height());
+}
+
+AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelContent>& contents,
+                                                         int canvas_width, double gap,
+                                                         bool heat_row) const {
+  const StageTimer timer(FrameStage::kText);
+  const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
+  const double cell_width = (canvas_width - 2 * gap - (columns - 1) * gap) / std::max(1, columns);
+  QFont font;
+  font.setPixelSize(theme_.font_size);
+  const QFontMetrics metrics(font);
+  CaptionLines lines{2, 1, theme_.font_size, 1};
+  for (size_t i = 0; i < contents.size(); ++i) {
+    QStringList wrapped;
+    for (const QString& line : contents[i].caption)
+      wrapped += wrapped_caption(line, metrics, cell_width);
+    contents[i].caption = wrapped;
+    int& row = heat_row && int(i) >= columns ? lines.heat : lines.top;
+    row = std::max(row, int(wrapped.size()));
+  }
+  QFont bold = font;
+  bold.setBold(true);
+  for (double scale : {1.15, 1.0, 0.85}) {
+    bold.setPixelSize(int(theme_.font_size * scale));
+    const QFontMetrics title_metrics(bold);
+    const bool fits = std::all_of(contents.begin(), contents.end(), [&](const PanelContent& c) {
+      return title_metrics.horizontalAdvance(c.title) <= cell_width;
+    });
+    if (fits) {
+      lines.title_px = bold.pixelSize();
+      return lines;
+    }
+  }
+  bold.setPixelSize(theme_.font_size);
+  for (PanelContent& c : contents) {
+    const QStringList wrapped = broken_at_spaces(
+        wrapped_caption(c.title, QFontMetrics(bold), cell_width), QFontMetrics(bold), cell_width);
+    c.title = wrapped.join(QLatin1Char('\n'));
+    lines.title_lines = std::max(lines.title_lines, int(wrapped.size()));
+  }
+  return lines;
+}
+
+void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
+                                const PanelCell& cell) {
+  const StageTimer timer(FrameStage::kText);
+  const int text_px = theme_.font_size;
+  QFont font = painter.font();
+  font.setBold(true);
+  font.setPixelSize(lines_.title_px);
+  painter.setFont(font);
+  painter.setPen(qcolor(theme_.text));
+  const QStringList title = panel.title.split(QLatin1Char('\n'));
+  const double title_row = cell.title.height() / std::max(1, lines_.title_lines);
+  const double title_top = cell.title.bottom() - title_row * title.size();
+  for (int i = 0; i < title.size(); ++i) {
+    const QRectF row(cell.title.left(), title_top + i * title_row, cell.title.width(), title_row);
+    painter.drawText(row, Qt::AlignCenter,
+                     QFontMetrics(font).elidedText(title[i], Qt::ElideRight, int(row.width())));
+  }
+  font.setPixelSize(text_px);
+  font.setBold(false);
+  painter.setFont(font);
+  const QFontMetrics metrics(font);
+  const double line = text_px * kCaptionLine;
+  for (int i = 0; i < panel.caption.size() && (i + 1) * line <= cell.caption.height() + 1; ++i) {
+    const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(),
+                     line);
+    painter.drawText(row, Qt::AlignCenter,
+                     metrics.elidedText(panel.caption[i], Qt::ElideRight, int(row.width())));
+  }
+}
+
+void AnimationView::paint_band(QPainter& painter, const QRectF& band, bool levels, bool heat) {
+  const QColor text = qcolor(theme_.text);
+  const int text_px = theme_.font_size;
+  // Side by side in a wide band, stacked (legend above the colour bar) in a cell.
+  const bool stacked = band.height() >= 2 * text_px * 3.6;
+  QRectF legend = band, bar = band;
+  if (levels && heat && stacked) {
+    legend.setBottom(band.bottom() -
+                     difference_bar_height(std::min(band.width(), 30.0 * text_px), text_px));
+    bar.setTop(legend.bottom());
+  } else if (levels && heat) {
+    legend.setWidth(band.width() * 0.55);
+    bar.setLeft(band.right() - std::min(band.width() * 0.4, 30.0 * text_px));
+  }
+  if (levels) draw_level_legend(painter, legend, text, text_px);
+  if (heat) {
+    bar.setWidth(std::min(bar.width(), 30.0 * text_px));
+    const double bar_height = difference_bar_height(bar.width(), text_px);
+    draw_difference_bar(painter,
+                        QRectF(bar.left(), bar.bottom() - std::min(bar.height(), bar_height),
+                               bar.width(), std::min(bar.height(), bar_height)),
+                        kDifferenceScale, text, text_px);
+  }
+}
+
+AnimationView::PanelPlan AnimationView::plan_panels(std::vector<PanelContent> contents,
+                                                    const QSize& size, bool heat_row) const {
+  PanelPlan plan;
+  const int text_px = theme_.font_size;
+  const double gap = text_px;
+  plan.lines = wrap_captions(contents, size.width(), gap, heat_row);
+  const CaptionLines& lines = plan.lines;
+  // One title line at 1.15 times the text size gets 1.8 text sizes, as the bands always had.
+  const double title = lines.title_lines * lines.title_px * 1.3 + text_px * 0.3;
+  const double caption = text_px * kCaptionLine * lines.top;
+  const double heat_caption = text_px * kCaptionLine * lines.heat;
+  // Below one row, the legends' band holds the colour bar of any heat maps.
+  const PanelDisplay display = window_->panel_display();
+  const bool heat = display == PanelDisplay::kComparison || display == PanelDisplay::kDifference;
+  const double bar =
+      heat ? difference_bar_height(std::min(0.4 * size.width(), 30.0 * text_px), text_px) : 0.0;
+  const double band = heat_row ? 0.0 : std::max(text_px * 3.9, bar + gap);
+  const QRectF area(gap, gap / 2, size.width() - 2 * gap, size.height() - gap - band);
+  const int columns = heat_row ? int(contents.size() + 1) / 2 : int(contents.size());
+  QRectF top = area;
+  if (heat_row) {
+    const double image = (area.height() - gap / 2 - 2 * title - caption - heat_caption) / 2;
+    top.setHeight(title + caption + std::max(0.0, image));
+  }
+  plan.cells = panel_row(top, columns, gap, title, caption);
+  plan.legends = QRectF(area.left(), area.bottom() + gap / 2, area.width(), band - gap);
+  if (heat_row) {
+    const QRectF bottom(area.left(), top.bottom() + gap / 2, area.width(),
+                        area.bottom() - top.bottom() - gap / 2);
+    const std::vector<PanelCell> more = panel_row(bottom, columns, gap, title, heat_caption);
+    plan.cells.insert(plan.cells.end(), more.begin(), more.end() - 1);
+    plan.legends = QRectF(more.back().title.topLeft(), more.back().caption.bottomRight());
+  }
+  plan.contents = std::move(contents);
+  return plan;
+}
+
+bool AnimationView::texts_fit(const PanelPlan& plan) const {
+  QFont font;
+  font.setPixelSize(theme_.font_size);
+  QFont bold = font;
+  bold.setBold(true);
+  bold.setPixelSize(plan.lines.title_px);
+  const QFontMetrics text(font), title(bold);
+  for (size_t i = 0; i < plan.contents.size(); ++i) {
+    const PanelCell& cell = plan.cells[i];
+    if (cell.image.height() < 3 * theme_.font_size) return false;
+    for (const QString& line : plan.contents[i].title.split(QLatin1Char('\n'))) {
+      if (title.horizontalAdvance(line) > cell.title.width()) return false;
+    }
+    for (const QString& line : plan.contents[i].caption) {
+      if (text.horizontalAdvance(line) > cell.caption.width()) return false;
+    }
+  }
+  return true;
+}
+
+double AnimationView::content_scale(const PanelPlan& plan, const QRectF& content) const {
+  const Camera& camera = model_->animator()->camera();
+  const QRectF& image = plan.cells.front().image;
+  const QRectF frame = panel_frame(content, QSizeF(camera.width, camera.height),
+                                   image.width() / image.height(), 1.0);
+  return image.width() / frame.width();
+}
+
+}  // namespace oflab
