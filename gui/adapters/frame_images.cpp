@@ -160,10 +160,21 @@ QStringList difference_bar_caption(const QFontMetricsF& metrics, double width) {
 
 }  // namespace
 
+namespace {
+
+// The step between the colour bar's caption lines: their boxes (ascent + descent) never touch,
+// also in fonts whose leading is negative.
+double caption_line_step(const QFontMetricsF& metrics) {
+  return std::max(metrics.lineSpacing(), metrics.height()) + 2.0;
+}
+
+}  // namespace
+
 double difference_bar_height(double width, int text_px) {
   QFont font;
   font.setPixelSize(text_px);
-  return text_px * (2.4 + 1.2 * difference_bar_caption(QFontMetricsF(font), width).size());
+  const QFontMetricsF metrics(font);
+  return text_px * 2.4 + caption_line_step(metrics) * difference_bar_caption(metrics, width).size();
 }
 
 void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, const QColor& text,
@@ -176,13 +187,15 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
   const QFontMetricsF metrics(font);
   // Caption rows, the ramp row, the tick-label row.
   const QStringList caption = difference_bar_caption(metrics, area.width());
-  const double row = area.height() / (2 + caption.size());
+  // Caption lines a line spacing apart (so two never touch), the ramp and labels below.
+  const double line = caption_line_step(metrics);
+  const double row = std::max(0.0, area.height() - caption.size() * line) / 2;
   for (int i = 0; i < caption.size(); ++i) {
-    painter.drawText(QRectF(area.left(), area.top() + i * row, area.width(), row),
+    painter.drawText(QRectF(area.left(), area.top() + i * line, area.width(), line),
                      Qt::AlignLeft | Qt::AlignVCenter, caption[i]);
   }
   const double left = area.left() + text_px, width = area.width() - 3 * text_px;
-  const QRectF ramp(left, area.top() + caption.size() * row, width, row * 0.8);
+  const QRectF ramp(left, area.top() + caption.size() * line, width, row * 0.8);
   for (int x = 0; x < int(width); ++x) {
     painter.fillRect(QRectF(left + x, ramp.top(), 1.5, ramp.height()),
                      qcolor(magnitude_colour(double(x) / std::max(1.0, width - 1))));

@@ -25,6 +25,7 @@
 #include "image/image_compare.h"
 #include "runs/source_kinds.h"
 #include "runs/statistics.h"
+#include "scene/scene_resources.h"
 
 namespace oflab {
 namespace {
@@ -440,6 +441,13 @@ TEST(Scenes, DefaultPolicyBooksHoldOnEveryShippedScene) {
       source.viewer = read_viewer_script_file(resolve_viewer_script_path(script));
       PlayOptions o;
       o.baseline = false;
+      // A pair the memory limit refuses does not play (the city block's 80 polygons at the
+      // 1280 x 720 scripts); the limit's own test is HostileInputs.ARepeatedPolygonScene...
+      if (!scene_memory_problem(*source.scene, source.viewer.camera,
+                                source.settings.engine.guard_band)
+               .empty()) {
+        continue;
+      }
       // The street's and the city block's lit contents are dear to render (manual/costs.md):
       // their first 30 frames of each script keep the test within the suite's time budget.
       if (scene_name == "street" || scene_name == "city-block") o.max_frames = 30;

@@ -61,8 +61,13 @@ WindowState random_state(std::mt19937& rng) {
   if (s.settings.budget.unit != FrameBudget::Unit::kNone) s.settings.budget.amount = in(0, 1e6);
   s.settings.cadence = 1 + pick(8);
   s.settings.stabilization.automatic = coin();
-  s.settings.stabilization.point = Vec3(in(-100, 100), in(-100, 100), in(-100, 100));
+  // A given plane meets the optical axis in front of the eye (window_state_problem): its point
+  // is 1 to 100 u along the normal from the eye, plus any offset within the plane.
   s.settings.stabilization.normal = Vec3(in(-1, 1), in(-1, 1), in(0.1, 1));
+  const Vec3 axis = glm::normalize(s.settings.stabilization.normal);
+  Vec3 side(in(-100, 100), in(-100, 100), in(-100, 100));
+  side -= axis * glm::dot(side, axis);
+  s.settings.stabilization.point = axis * in(1, 100) + side;
   s.display = PanelDisplay(pick(4));
   s.compared.clear();
   for (const ReusePolicy& p : policies) {
@@ -204,7 +209,7 @@ TEST(WindowStateFile, CadenceAndStabilizationPlaneAreCheckedByTheirLimits) {
   // A plane in the file reads back as given.
   WindowState s;
   s.settings.cadence = 5;
-  s.settings.stabilization = {false, Vec3(0.0, 0.0, -1.25), Vec3(0.0, 0.0, 1.0)};
+  s.settings.stabilization = {false, Vec3(0.0, 0.0, 1.25), Vec3(0.0, 0.0, 1.0)};
   EXPECT_TRUE(parse_session(window_state_to_json(s), "s.json") == s);
 }
 

@@ -503,7 +503,8 @@ TEST(BoundsAround, UnitesTheFramesWithinReach) {
   EXPECT_EQ(bounds_around(bounds, 0, 0), QRectF(0, 0, 10, 10));
   EXPECT_EQ(bounds_around(bounds, 1, 1), QRectF(0, 0, 25, 25));
   EXPECT_EQ(bounds_around(bounds, 1, 0), QRectF());
-  EXPECT_EQ(bounds_around(bounds, 3, 5), QRectF(20, 0, 81, 25));
+  EXPECT_EQ(bounds_around(bounds, 3, 1), QRectF(20, 0, 81, 25));
+  EXPECT_EQ(bounds_around(bounds, 3, 5), QRectF(0, 0, 101, 25));
   EXPECT_EQ(bounds_around(bounds, 0, -1), QRectF(0, 0, 101, 25));
 }
 
@@ -569,7 +570,8 @@ TEST(DifferenceBar, FitsItsCaptionAndLabelsToItsWidth) {
     EXPECT_EQ(caption_lines, width < caption_width ? 2 : 1);
     for (size_t i = 1; i < labels.size(); ++i)
       EXPECT_GE(labels[i].left() - labels[i - 1].right(), text_px * 0.5) << width;
-    EXPECT_TRUE(text_problems(texts, QSize(2000, 400)).empty());
+    for (const QString& problem : text_problems(texts, QSize(2000, 400)))
+      ADD_FAILURE() << width << ": " << problem.toStdString();
   }
 }
 

@@ -88,7 +88,7 @@ TEST_F(WindowTest, SlicesFollowTheWindowsFrameCounter) {
   EXPECT_EQ(view->frame(), scene->frame());
 }
 
-// The walk (121 frames) is shorter than the window's loop (150): past its end the view
+// The walk (120 frames) is shorter than the window's loop (150): past its end the view
 // shows the walk's frame and its caption names the play bar's frame it stands for.
 TEST_F(WindowTest, SlicesCaptionSaysWhenTheWalkRepeats) {
   window().show_view("slices");
@@ -101,9 +101,9 @@ TEST_F(WindowTest, SlicesCaptionSaysWhenTheWalkRepeats) {
   EXPECT_FALSE(view->caption().contains("repeats")) << view->caption().toStdString();
   scene->set_frame(140);
   view->render_image();
-  EXPECT_EQ(view->frame(), 140 % 121);
+  EXPECT_EQ(view->frame(), 140 % 120);
   EXPECT_TRUE(
-      view->caption().startsWith("Frame 19 (the play bar's frame 140: the 121-frame walk repeats)"))
+      view->caption().startsWith("Frame 20 (the play bar's frame 140: the 120-frame walk repeats)"))
       << view->caption().toStdString();
 }
 

@@ -156,10 +156,10 @@ TEST(LessonCommand, AStepFrameBeyondWhatPlaysIsRefusedNamingTheFileTheStepAndThe
   // The zoom script plays 90 frames: frames 0 .. 89.
   const std::string file = lesson_with_steps("far-frame", R"({"script": "zoom"})",
                                              R"([{"say": "s", "do": {"frame": 89}},
-                                                 {"say": "t", "do": {"frame": 1000000}}])");
+                                                 {"say": "t", "do": {"frame": 900}}])");
   EXPECT_EQ(lesson({"state", file, "--step", "1"}).code, 0);
   expect_one_line_refusal(lesson({"state", file, "--step", "2"}),
-                          "far-frame.json: step 2: field 'do.frame': 1000000 is beyond the last "
+                          "far-frame.json: step 2: field 'do.frame': 900 is beyond the last "
                           "frame, 89, of what plays");
 }
 
