@@ -31,7 +31,8 @@ std::vector<PaintedText> record_painted_text(const QSize& size,
 // What is wrong with `texts` on a canvas of `size`, one sentence each (empty when nothing is):
 // a text elided (it holds an ellipsis, U+2026), a text whose box leaves the canvas by more
 // than a pixel, and two texts whose boxes overlap by more than `overlap_px2` square pixels
-// (lines that touch are not an overlap).
+// and by more than 1.5 px across (lines that touch, or a wrapped text's lines a line spacing
+// apart in a font with a negative leading, are not an overlap).
 std::vector<QString> text_problems(const std::vector<PaintedText>& texts, const QSize& size,
                                    double overlap_px2 = 4.0);
 

@@ -341,7 +341,7 @@ TEST(HostileInputs, AVideoFrameOverTheLimitIsRefusedBeforeTheEncoderOpens) {
   fs::remove_all(dir);
 }
 
-// The inputs whose caps multiplied into minutes a frame: 100 circles of 2000
+// The inputs whose caps multiplied into minutes a frame: circles of 2000
 // vertices cutting each other (past the BSP vertex cap) and 20 impostor facades at quality
 // 256 (past the impostor detail limit). Each is refused at once with exit 2 and one line
 // naming its limit, within 60 s and 2 GB.
