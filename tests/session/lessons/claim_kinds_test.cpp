@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "lesson_read_error.h"
 #include "lessons/lessons.h"
 #include "state/window_state_file.h"
 
@@ -20,21 +21,8 @@ namespace fs = std::filesystem;
 
 // The error of reading a lesson "x.json" whose only step has `claim` (JSON text).
 std::string error_of_claim(const std::string& claim) {
-  const fs::path dir = fs::temp_directory_path() / ("oflab-claims-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path file = dir / "x.json";
-  std::ofstream(file) << R"({"format": "oflab-lesson", "version": 1, "name": "x", "order": 1,
-    "title": "X", "narrative": "n", "state": {},
-    "steps": [{"say": "s"}, {"say": "t", "claims": [)"
-                      << claim << "]}]}";
-  std::string error;
-  try {
-    read_lesson_file(file.string());
-  } catch (const SessionError& e) {
-    error = e.what();
-  }
-  fs::remove_all(dir);
-  return error;
+  return test::lesson_read_error(
+      "claims", R"("steps": [{"say": "s"}, {"say": "t", "claims": [)" + claim + "]}]}");
 }
 
 TEST(ClaimKinds, AnUnknownKindIsRefusedNamingFileClaimAndField) {

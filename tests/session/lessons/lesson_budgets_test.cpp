@@ -10,6 +10,7 @@
 #include <string>
 
 #include "flow/limits.h"
+#include "lesson_read_error.h"
 #include "lessons/lessons.h"
 #include "state/window_state_file.h"
 
@@ -21,20 +22,7 @@ namespace fs = std::filesystem;
 // Reads a lesson "x.json" with the top-level fields `top` (JSON text, ending in a comma or
 // empty) and the steps `steps` (JSON text of the list's items); the error, "" when read.
 std::string error_of_lesson(const std::string& top, const std::string& steps) {
-  const fs::path dir = fs::temp_directory_path() / ("oflab-budgets-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path file = dir / "x.json";
-  std::ofstream(file) << R"({"format": "oflab-lesson", "version": 1, "name": "x", "order": 1,
-    "title": "X", "narrative": "n", "state": {}, )"
-                      << top << R"( "steps": [)" << steps << "]}";
-  std::string error;
-  try {
-    read_lesson_file(file.string());
-  } catch (const SessionError& e) {
-    error = e.what();
-  }
-  fs::remove_all(dir);
-  return error;
+  return test::lesson_read_error("budgets", top + R"( "steps": [)" + steps + "]}");
 }
 
 // `n` steps, each `step` (JSON text of one step).
