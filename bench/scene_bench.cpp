@@ -31,13 +31,28 @@ constexpr int kRuns = 4;
 constexpr std::array<int, kRuns> kThreads = {1, 1, 2, 2};
 constexpr std::array<bool, kRuns> kRerender = {false, true, false, true};
 
-// One pass over the walk; appends each run's frame times (after frame 0) to `ms`.
-void play_pass(const std::shared_ptr<const Scene>& scene, const ViewerScript& walk,
-               std::array<std::vector<double>, kRuns>& ms) {
+// A scene, a viewer script and the engine's policy, timed against the exact re-render.
+struct SceneCase {
+  const char* name;
+  const char* scene;
+  const char* viewer;
+  const char* policy;
+};
+
+// The street walked under optic flow (the engine of chapter 6), and the four cubes passed
+// under depth reprojection (each pixel splatted by its own depth: the holes lesson).
+constexpr std::array<SceneCase, 2> kCases = {
+    SceneCase{"scene/street/walk/threads", "street", "walk", "perspective"},
+    SceneCase{"scene/four-cubes/translate/depth-reprojection/threads", "four-cubes", "translate",
+              "depth-reprojection"}};
+
+// One pass over the viewer script; appends each run's frame times (after frame 0) to `ms`.
+void play_pass(const SceneCase& c, const std::shared_ptr<const Scene>& scene,
+               const ViewerScript& walk, std::array<std::vector<double>, kRuns>& ms) {
   std::array<std::unique_ptr<SceneScriptAnimator>, kRuns> runs;
   for (int r = 0; r < kRuns; ++r) {
     SceneSettings settings;
-    settings.engine.policy = &reuse_policy(kRerender[r] ? "rerender" : "perspective");
+    settings.engine.policy = &reuse_policy(kRerender[r] ? "rerender" : c.policy);
     // The scene's own content detail, as `oflab-cli animate --scene street` plays it.
     if (scene->content_quality > 0) settings.engine.content.quality = scene->content_quality;
     runs[r] = make_scene_animator(scene, walk, settings);
@@ -59,12 +74,12 @@ void play_pass(const std::shared_ptr<const Scene>& scene, const ViewerScript& wa
   set_worker_threads(1);
 }
 
-void run_street(benchmark::State& state) {
+void run_case(benchmark::State& state, const SceneCase& c) {
   std::shared_ptr<const Scene> scene;
   ViewerScript walk;
   try {
-    scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("street")));
-    walk = read_viewer_script_file(resolve_viewer_script_path("walk"));
+    scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(c.scene)));
+    walk = read_viewer_script_file(resolve_viewer_script_path(c.viewer));
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;
@@ -72,7 +87,7 @@ void run_street(benchmark::State& state) {
   std::array<std::vector<double>, kRuns> ms;
   for (auto _ : state) {
     const std::size_t before = ms[2].size();
-    play_pass(scene, walk, ms);
+    play_pass(c, scene, walk, ms);
     double engine_2t = 0.0;
     for (std::size_t k = before; k < ms[2].size(); ++k) engine_2t += ms[2][k];
     state.SetIterationTime(1e-3 * engine_2t);
@@ -93,12 +108,14 @@ void run_street(benchmark::State& state) {
 }  // namespace
 
 void register_scene_cases(int repetitions) {
-  benchmark::RegisterBenchmark("scene/street/walk/threads", run_street)
-      ->UseManualTime()
-      ->Iterations(1)
-      ->Repetitions(repetitions)
-      ->ReportAggregatesOnly(repetitions > 1)
-      ->Unit(benchmark::kMillisecond);
+  for (const SceneCase& c : kCases) {
+    benchmark::RegisterBenchmark(c.name, [&c](benchmark::State& state) { run_case(state, c); })
+        ->UseManualTime()
+        ->Iterations(1)
+        ->Repetitions(repetitions)
+        ->ReportAggregatesOnly(repetitions > 1)
+        ->Unit(benchmark::kMillisecond);
+  }
 }
 
 }  // namespace oflab::bench

@@ -1,4 +1,4 @@
-// Scene cases of oflab-bench (manual/costs.md): the street's walk on core's worker threads.
+// Scene cases of oflab-bench (manual/costs.md): scenes on core's worker threads.
 #pragma once
 
 namespace oflab::bench {
@@ -13,6 +13,9 @@ namespace oflab::bench {
 // rerender_scaling, and engine/rerender_1t, engine/rerender_2t (the engine against the exact
 // re-render on the same threads). Ratios come from frames measured side by side, so a busy machine
 // slows both sides alike. A missing dataset makes the case report an error.
+// Registers "scene/four-cubes/translate/depth-reprojection/threads" alike: the scene
+// `four-cubes` under `translate` (the holes lesson's run), with depth reprojection in the
+// engine's place (every pixel splatted by its own depth, core/scene/depth_reprojection.h).
 void register_scene_cases(int repetitions);
 
 }  // namespace oflab::bench

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "image/scan_conversion.h"
+#include "image/thread_pool.h"
 #include "scene/view_culling.h"
 
 namespace oflab {
@@ -49,7 +50,6 @@ double cross(const Vec2& a, const Vec2& b, const Vec2& p) {
 // What the splats of one reprojection keep per target pixel, and where each source pixel's
 // centre lands.
 struct SplatBuffers {
-  explicit SplatBuffers(std::size_t n) : z(n, -1.0), dist(n, 0.0), exact(n) {}
   std::vector<double> z;     // inverse depth of what each pixel shows; -1: nothing yet
   std::vector<double> dist;  // distance from its splat's centre
   std::vector<Vec2> exact;   // where each source pixel centre lands now
@@ -60,33 +60,86 @@ struct PixelBox {
   int x_begin = 0, x_end = -1, y_begin = 0, y_end = -1;
 };
 
-// One source pixel's splat: its footprint after the step, the pixels it may cover, the source
-// pixel and polygon (-1: background), its centre's inverse depth after the step and colour.
-struct Splat {
-  std::array<Vec2, 4> corners;
-  PixelBox box;
-  int source = 0;
-  int polygon = -1;
-  double centre_w = 0.0;
-  Pixel colour;
+// Every source pixel's splat, planned before any is painted: its footprint after the step,
+// the pixels it may cover (an empty box: no splat), its centre's inverse depth after the
+// step, and per source row the target rows its splats may reach.
+struct SplatPlan {
+  std::vector<std::array<Vec2, 4>> corners;
+  std::vector<PixelBox> boxes;
+  std::vector<double> centre_w;
+  std::vector<int> row_first, row_last;  // per source row; last < first: reaches no row
 };
 
-// The footprint of source pixel (i, j), grown by kSplatMargin, after the step: each corner
-// moved by the depth of its surface there (`surface`: m is the polygon's plane; else the
-// background, moved as a direction). False when a corner cannot be moved (move_point).
-bool move_footprint(const Camera& camera, const RigidStep3& step, const Vec3& m, bool surface,
-                    int i, int j, double near, std::array<Vec2, 4>& q) {
-  const double lo = -kSplatMargin, hi = 1.0 + kSplatMargin;
-  const std::array<Vec2, 4> corners{Vec2(i + lo, j + lo), Vec2(i + hi, j + lo),
-                                    Vec2(i + hi, j + hi), Vec2(i + lo, j + hi)};
-  bool ok = true;
-  for (int c = 0; c < 4 && ok; ++c) {
-    double w_unused = 0.0;
-    const double w =
-        surface ? glm::dot(m, pixel_direction(camera, corners[c].x, corners[c].y)) : 0.0;
-    ok = move_point(camera, step, m, w, corners[c].x, corners[c].y, near, q[c], w_unused);
+// Each source pixel's top-left footprint corner moved with its own surface (a footprint's
+// other corners are the top-left corners of the pixels two to the right and two below,
+// grown by kSplatMargin = 0.5, and are taken from there when that pixel shows the same
+// surface: the same computation, so the same bits).
+struct CornerLattice {
+  std::vector<Vec2> moved;
+  std::vector<char> ok;
+};
+
+// The working memory of one reprojection, kept by each thread that reprojects: a frame's
+// buffers are tens of megabytes, and fresh ones cost a page fault per page every frame.
+// Sized for `n` pixels and `rows` rows; what a pass reads before it writes is reset here.
+struct ReprojectionScratch {
+  SplatBuffers buffers;
+  CornerLattice lattice;
+  SplatPlan plan;
+  void prepare(std::size_t n, int rows) {
+    buffers.z.assign(n, -1.0);
+    buffers.dist.resize(n);
+    buffers.exact.resize(n);
+    lattice.moved.resize(n);
+    lattice.ok.resize(n);
+    plan.corners.resize(n);
+    plan.boxes.resize(n);
+    plan.centre_w.resize(n);
+    plan.row_first.assign(static_cast<std::size_t>(rows), 0);
+    plan.row_last.assign(static_cast<std::size_t>(rows), -1);
   }
-  return ok;
+};
+// The footprint corner at top-left pixel position (u, v) moved with the surface of plane
+// vector m (`surface`; else the background, moved as a direction). False when it cannot be
+// moved (move_point).
+bool move_corner(const Camera& camera, const RigidStep3& step, const Vec3& m, bool surface,
+                 double u, double v, double near, Vec2& q) {
+  double w_unused = 0.0;
+  const double w = surface ? glm::dot(m, pixel_direction(camera, u, v)) : 0.0;
+  return move_point(camera, step, m, w, u, v, near, q, w_unused);
+}
+
+// The corners a footprint shares with its neighbours' assume a margin of half a pixel.
+static_assert(kSplatMargin == 0.5, "the corner lattice needs a margin of half a pixel");
+
+// The top-left footprint corner of pixel (i, j), i <= width + 1, j <= height + 1, moved with
+// polygon p's surface (-1: the background): the lattice's when pixel (i, j) shows polygon p.
+bool lattice_corner(const CornerLattice& lattice, const DepthFrame& depth, const Camera& camera,
+                    const RigidStep3& step, int i, int j, int p, double near, Vec2& q) {
+  if (i < depth.width && j < depth.height) {
+    const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
+    if (depth.polygon[k] == p) {
+      q = lattice.moved[k];
+      return lattice.ok[k] != 0;
+    }
+  }
+  const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
+  return move_corner(camera, step, m, p >= 0, i - 0.5, j - 0.5, near, q);
+}
+
+// The footprint of source pixel (i, j) showing polygon p, grown by kSplatMargin, after the
+// step: corners at (i - 0.5, j - 0.5), (i + 1.5, j - 0.5), (i + 1.5, j + 1.5), (i - 0.5,
+// j + 1.5). False when a corner cannot be moved.
+bool move_footprint(const CornerLattice& lattice, const DepthFrame& depth, const Camera& camera,
+                    const RigidStep3& step, int i, int j, int p, double near,
+                    std::array<Vec2, 4>& q) {
+  const int di[4] = {0, 2, 2, 0}, dj[4] = {0, 0, 2, 2};
+  for (int c = 0; c < 4; ++c) {
+    if (!lattice_corner(lattice, depth, camera, step, i + di[c], j + dj[c], p, near, q[c])) {
+      return false;
+    }
+  }
+  return true;
 }
 
 // The pixels of a width x height frame whose centres the bounding box of footprint `q` holds;
@@ -119,29 +172,100 @@ bool inside_footprint(const std::array<Vec2, 4>& q, const Vec2& c) {
   return positive || negative;
 }
 
-// Paints `splat` into r.image at every pixel centre inside its footprint where it wins: the
-// nearest surface, and among the splats of one polygon the one whose centre lands nearest.
-void paint_splat(const Splat& splat, const DepthFrame& depth, int width, SplatBuffers& buffers,
-                 Reprojection& r) {
-  const Vec2 landed = buffers.exact[static_cast<std::size_t>(splat.source)];
-  for (int y = splat.box.y_begin; y <= splat.box.y_end; ++y) {
-    for (int x = splat.box.x_begin; x <= splat.box.x_end; ++x) {
+// Paints source pixel s's planned splat into r.image at every pixel centre of target rows
+// [y_begin, y_end] inside its footprint where it wins: the nearest surface, and among the
+// splats of one polygon the one whose centre lands nearest. Returns the pixels written.
+std::int64_t paint_splat(const SplatPlan& plan, std::size_t s, int y_begin, int y_end,
+                         const Image& rendered, const DepthFrame& depth, SplatBuffers& buffers,
+                         Reprojection& r) {
+  const int width = depth.width;
+  const PixelBox& box = plan.boxes[s];
+  const std::array<Vec2, 4>& corners = plan.corners[s];
+  const Vec2 landed = buffers.exact[s];
+  const int polygon = depth.polygon[s];
+  const Pixel colour = rendered.pixels()[s];
+  std::int64_t written = 0;
+  for (int y = std::max(box.y_begin, y_begin); y <= std::min(box.y_end, y_end); ++y) {
+    for (int x = box.x_begin; x <= box.x_end; ++x) {
       const Vec2 c(x + 0.5, y + 0.5);
-      if (!inside_footprint(splat.corners, c)) continue;
+      if (!inside_footprint(corners, c)) continue;
       const std::size_t d = static_cast<std::size_t>(y) * width + x;
       const double e = glm::length(c - landed);
-      if (r.source[d] >= 0 && depth.polygon[r.source[d]] == splat.polygon) {
+      if (r.source[d] >= 0 && depth.polygon[r.source[d]] == polygon) {
         if (e >= buffers.dist[d]) continue;  // a splat of the same surface lands nearer
-      } else if (splat.centre_w <= buffers.z[d]) {
+      } else if (plan.centre_w[s] <= buffers.z[d]) {
         continue;  // something nearer (or the same) is there
       }
-      buffers.z[d] = splat.centre_w;
+      buffers.z[d] = plan.centre_w[s];
       buffers.dist[d] = e;
-      r.image.at(x, y) = splat.colour;
-      r.source[d] = splat.source;
-      ++r.pixels_written;
+      r.image.at(x, y) = colour;
+      r.source[d] = static_cast<int>(s);
+      ++written;
     }
   }
+  return written;
+}
+
+// The lattice of moved top-left corners of source rows [begin, end).
+void move_lattice_rows(const DepthFrame& depth, const Camera& camera, const RigidStep3& step,
+                       double near, int begin, int end, CornerLattice& lattice) {
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[k];
+      const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
+      lattice.ok[k] =
+          move_corner(camera, step, m, p >= 0, i - 0.5, j - 0.5, near, lattice.moved[k]);
+    }
+  }
+}
+
+// The splats of source rows [begin, end): each centre moved by the pixel's own depth, each
+// footprint's corners by the depth of its surface there.
+void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidStep3& step,
+                     double near, const CornerLattice& lattice, int begin, int end,
+                     SplatBuffers& buffers, SplatPlan& plan) {
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[s];
+      const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
+      PixelBox& box = plan.boxes[s];
+      if (!move_point(camera, step, m, depth.inverse_depth[s], i + 0.5, j + 0.5, near,
+                      buffers.exact[s], plan.centre_w[s]) ||
+          !move_footprint(lattice, depth, camera, step, i, j, p, near, plan.corners[s]) ||
+          !footprint_box(plan.corners[s], depth.width, depth.height, box)) {
+        box = PixelBox{};
+        continue;
+      }
+      plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
+                              ? box.y_begin
+                              : std::min(plan.row_first[j], box.y_begin);
+      plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+    }
+  }
+}
+
+// Paints every planned splat into target rows [y_begin, y_end), in source order (so each
+// pixel sees its splats in the order one pass over the source would paint them). Returns the
+// pixels written.
+std::int64_t paint_target_rows(const SplatPlan& plan, const Image& rendered,
+                               const DepthFrame& depth, int y_begin, int y_end,
+                               SplatBuffers& buffers, Reprojection& r) {
+  std::int64_t written = 0;
+  for (int j = 0; j < depth.height; ++j) {
+    if (plan.row_last[j] < plan.row_first[j] || plan.row_last[j] < y_begin ||
+        plan.row_first[j] >= y_end) {
+      continue;
+    }
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
+      const PixelBox& box = plan.boxes[s];
+      if (box.y_end < box.y_begin || box.y_end < y_begin || box.y_begin >= y_end) continue;
+      written += paint_splat(plan, s, y_begin, y_end - 1, rendered, depth, buffers, r);
+    }
+  }
+  return written;
 }
 
 // The unreached pixels and holes of r (see reproject_by_depth's `now`) and the per-pixel
@@ -308,30 +432,27 @@ Reprojection reproject_by_depth(const Image& rendered, const DepthFrame& depth,
   Reprojection r;
   r.image = Image(width, height);
   r.source.assign(n, -1);
-  SplatBuffers buffers(n);
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const std::size_t s = static_cast<std::size_t>(j) * width + i;
-      ++r.source_pixels;
-      const int p = depth.polygon[s];
-      const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
-      // The centre moves by the pixel's own depth; the footprint's corners by the depth of
-      // its surface there.
-      double centre_w = 0.0;
-      if (!move_point(camera, step, m, depth.inverse_depth[s], i + 0.5, j + 0.5, near,
-                      buffers.exact[s], centre_w)) {
-        continue;
-      }
-      std::array<Vec2, 4> q;
-      PixelBox box;
-      if (!move_footprint(camera, step, m, p >= 0, i, j, near, q) ||
-          !footprint_box(q, width, height, box)) {
-        continue;
-      }
-      const Splat splat{q, box, static_cast<int>(s), p, centre_w, rendered.at(i, j)};
-      paint_splat(splat, depth, width, buffers, r);
-    }
-  }
+  r.source_pixels = static_cast<std::int64_t>(n);
+  thread_local ReprojectionScratch scratch;
+  scratch.prepare(n, height);
+  SplatBuffers& buffers = scratch.buffers;
+  CornerLattice& lattice = scratch.lattice;
+  SplatPlan& plan = scratch.plan;
+  // Three passes over bands of rows, each band writing only its own rows: the moved corners,
+  // the splats of the source rows, then the target rows painted. The bands are cut by the
+  // frame's size alone, so the frame is the same with any number of threads.
+  const int min_rows = std::max(4, 16384 / std::max(width, 1));
+  for_each_band(height, min_rows, [&](int, int begin, int end) {
+    move_lattice_rows(depth, camera, step, near, begin, end, lattice);
+  });
+  for_each_band(height, min_rows, [&](int, int begin, int end) {
+    plan_splat_rows(depth, camera, step, near, lattice, begin, end, buffers, plan);
+  });
+  std::vector<std::int64_t> written(static_cast<std::size_t>(band_count(height, min_rows)), 0);
+  for_each_band(height, min_rows, [&](int band, int begin, int end) {
+    written[band] = paint_target_rows(plan, rendered, depth, begin, end, buffers, r);
+  });
+  for (const std::int64_t w : written) r.pixels_written += w;
   measure_unreached(depth, buffers, now, width, r);
   if (fill == HoleFill::kBackground) {
     for (std::size_t d = 0; d < n; ++d) {
