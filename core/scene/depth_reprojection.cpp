@@ -43,16 +43,13 @@ bool move_point(const Camera& camera, const RigidStep3& step, const Vec3& m, dou
   return true;
 }
 
-double cross(const Vec2& a, const Vec2& b, const Vec2& p) {
-  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-}
-
 // What the splats of one reprojection keep per target pixel, and where each source pixel's
 // centre lands.
 struct SplatBuffers {
   std::vector<double> z;     // inverse depth of what each pixel shows; -1: nothing yet
   std::vector<double> dist;  // distance from its splat's centre
   std::vector<Vec2> exact;   // where each source pixel centre lands now
+  std::vector<int> polygon;  // the polygon of the splat each pixel shows (where it shows one)
 };
 
 // The target pixels whose centres a footprint's bounding box holds, inclusive.
@@ -90,6 +87,7 @@ struct ReprojectionScratch {
     buffers.z.assign(n, -1.0);
     buffers.dist.resize(n);
     buffers.exact.resize(n);
+    buffers.polygon.resize(n);
     lattice.moved.resize(n);
     lattice.ok.resize(n);
     plan.corners.resize(n);
@@ -160,18 +158,6 @@ bool footprint_box(const std::array<Vec2, 4>& q, int width, int height, PixelBox
   return !(pixels > kMaxSplatBoxPixels);
 }
 
-// True when point c lies inside the convex footprint q, edges included, whichever its
-// orientation.
-bool inside_footprint(const std::array<Vec2, 4>& q, const Vec2& c) {
-  bool positive = true, negative = true;
-  for (int e = 0; e < 4; ++e) {
-    const double k = cross(q[e], q[(e + 1) % 4], c);
-    positive = positive && k >= -1e-9;
-    negative = negative && k <= 1e-9;
-  }
-  return positive || negative;
-}
-
 // Paints source pixel s's planned splat into r.image at every pixel centre of target rows
 // [y_begin, y_end] inside its footprint where it wins: the nearest surface, and among the
 // splats of one polygon the one whose centre lands nearest. Returns the pixels written.
@@ -180,25 +166,34 @@ std::int64_t paint_splat(const SplatPlan& plan, std::size_t s, int y_begin, int 
                          Reprojection& r) {
   const int width = depth.width;
   const PixelBox& box = plan.boxes[s];
-  const std::array<Vec2, 4>& corners = plan.corners[s];
+  const std::array<Vec2, 4>& q = plan.corners[s];
   const Vec2 landed = buffers.exact[s];
   const int polygon = depth.polygon[s];
+  const double centre_w = plan.centre_w[s];
   const Pixel colour = rendered.pixels()[s];
+  // The footprint's edge vectors, for inside_footprint's test, computed once.
+  std::array<Vec2, 4> edge;
+  for (int e = 0; e < 4; ++e) edge[e] = q[(e + 1) % 4] - q[e];
   std::int64_t written = 0;
   for (int y = std::max(box.y_begin, y_begin); y <= std::min(box.y_end, y_end); ++y) {
     for (int x = box.x_begin; x <= box.x_end; ++x) {
       const Vec2 c(x + 0.5, y + 0.5);
-      if (!inside_footprint(corners, c)) continue;
-      const std::size_t d = static_cast<std::size_t>(y) * width + x;
-      const double e = glm::length(c - landed);
-      if (r.source[d] >= 0 && depth.polygon[r.source[d]] == polygon) {
-        if (e >= buffers.dist[d]) continue;  // a splat of the same surface lands nearer
-      } else if (plan.centre_w[s] <= buffers.z[d]) {
-        continue;  // something nearer (or the same) is there
+      bool positive = true, negative = true;  // inside_footprint, edges included
+      for (int e = 0; e < 4; ++e) {
+        const double k = edge[e].x * (c.y - q[e].y) - edge[e].y * (c.x - q[e].x);
+        positive = positive && k >= -1e-9;
+        negative = negative && k <= 1e-9;
       }
-      buffers.z[d] = plan.centre_w[s];
+      if (!positive && !negative) continue;
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const bool same = r.source[d] >= 0 && buffers.polygon[d] == polygon;
+      if (!same && centre_w <= buffers.z[d]) continue;  // something nearer (or the same)
+      const double e = glm::length(c - landed);
+      if (same && e >= buffers.dist[d]) continue;  // a splat of the same surface lands nearer
+      buffers.z[d] = centre_w;
       buffers.dist[d] = e;
-      r.image.at(x, y) = colour;
+      buffers.polygon[d] = polygon;
+      r.image.pixels()[d] = colour;
       r.source[d] = static_cast<int>(s);
       ++written;
     }

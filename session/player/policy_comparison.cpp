@@ -136,13 +136,13 @@ const std::vector<ComparedRun>& PolicyComparison::runs() {
     stale_ = true;
     return runs_;
   }
-  // The runs are independent (each its own animator over the shared, unchanging source):
-  // one run per band on the worker threads, whose own loops then run on that thread.
+  // One run after another, each run's pixel loops (warps, composites, splats) on all the
+  // worker threads: the runs' costs differ by far (a depth reprojection splats every pixel,
+  // a cadence run mostly copies), so one run per thread would leave a core idle while the
+  // dearest run plays alone on the other.
   const int frame = main->frame();
   const StageTimer timer(FrameStage::kComparedRuns);
-  for_each_band(int(runs_.size()), 1, [&](int, int first, int last) {
-    for (int k = first; k < last; ++k) seek(runs_[size_t(k)], frame);
-  });
+  for (ComparedRun& run : runs_) seek(run, frame);
   return runs_;
 }
 

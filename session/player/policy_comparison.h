@@ -93,9 +93,9 @@ class PolicyComparison {
   void reset();
 
   // One run per policy at the model's current frame; empty when the model plays nothing
-  // or its source does not use a reuse policy (scene shifting). The runs advance at once on
-  // core's worker threads (core/image/thread_pool.h), each on one thread, so their frames
-  // and records are those of a run on its own.
+  // or its source does not use a reuse policy (scene shifting). The runs advance one after
+  // another, each one's pixel loops on core's worker threads (core/image/thread_pool.h), so
+  // their frames and records are those of a run on its own.
   const std::vector<ComparedRun>& runs();
 
  private:
