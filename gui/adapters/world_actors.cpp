@@ -15,6 +15,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 namespace oflab {
@@ -145,17 +146,22 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
     pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   }
   auto* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
-  const auto over = [](unsigned char colour, unsigned char alpha, double back) {
-    // Premultiplied: the colour plus what shows through (1 - alpha) of the backdrop.
-    return static_cast<unsigned char>(
-        std::min(255.0, colour + (255 - alpha) * std::clamp(back, 0.0, 1.0) + 0.5));
+  // Premultiplied: the colour plus what shows through (1 - alpha) of the backdrop. What shows
+  // through depends on alpha alone, so it is tabled once per channel (the same products).
+  std::array<std::array<double, 256>, 3> through;
+  for (int c = 0; c < 3; ++c) {
+    const double back = std::clamp(static_cast<double>(backdrop[c]), 0.0, 1.0);
+    for (int alpha = 0; alpha < 256; ++alpha) through[c][alpha] = (255 - alpha) * back;
+  }
+  const auto over = [](unsigned char colour, double shown_through) {
+    return static_cast<unsigned char>(std::min(255.0, colour + shown_through + 0.5));
   };
   for (int y = 0; y < image.height(); ++y) {
     const Pixel* row = image.row(y);
     for (int x = 0; x < image.width(); ++x, out += 3) {
-      out[0] = over(row[x].r, row[x].a, backdrop[0]);
-      out[1] = over(row[x].g, row[x].a, backdrop[1]);
-      out[2] = over(row[x].b, row[x].a, backdrop[2]);
+      out[0] = over(row[x].r, through[0][row[x].a]);
+      out[1] = over(row[x].g, through[1][row[x].a]);
+      out[2] = over(row[x].b, through[2][row[x].a]);
     }
   }
   pixels->Modified();

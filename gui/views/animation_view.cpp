@@ -320,12 +320,12 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
   if (heat_images_.size() < runs.size()) heat_images_.resize(runs.size());
   for (const ComparedRun& run : runs) {
     const QString name = QString::fromLatin1(run.policy->name);
-    if (!run.animator) {
+    if (!run.animator()) {
       shown.push_back({name, QImage(), {}, {QString::fromStdString(run.problem)}});
       continue;
     }
-    const Image& image = run.animator->image();
-    shown.push_back({tr("%1 policy").arg(name), image_view(image), run.animator->outlines(),
+    const Image& image = run.animator()->image();
+    shown.push_back({tr("%1 policy").arg(name), image_view(image), run.animator()->outlines(),
                      run_caption(run.last, *run.policy, model_->settings(),
                                  double(run.pixels_written), run.time_ms)});
     QImage& map = heat_images_[heat.size()];
@@ -336,7 +336,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
     if (per_pixel) {
       // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
-      const std::int64_t marked = mark_holes(map, reprojection_holes(*run.animator, exact));
+      const std::int64_t marked = mark_holes(map, reprojection_holes(*run.animator(), exact));
       hole_map_pixels_ += marked;
       caption << tr("holes (magenta): %1 px").arg(marked);
     }

@@ -104,9 +104,9 @@ bool shown_run(Lab& lab, const std::string& of, const AnimationFrame** frame,
     return true;
   }
   const ComparedRun* run = compared_run(lab, of);
-  if (!run || !run->animator) return false;
+  if (!run || !run->animator()) return false;
   *frame = &run->last;
-  *animator = run->animator.get();
+  *animator = run->animator();
   return true;
 }
 

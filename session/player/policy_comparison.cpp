@@ -81,13 +81,17 @@ void PolicyComparison::build() {
       runs_.push_back(std::move(run));
       continue;
     }
+    if (policy == model_->settings().policy) {  // the model's own run, played once
+      runs_.push_back(std::move(run));
+      continue;
+    }
     EngineSettings settings = model_->settings();
     settings.policy = policy;
     try {
-      run.animator = model_->source_kind().make(model_->source(), model_->panel(), settings);
+      run.owned = model_->source_kind().make(model_->source(), model_->panel(), settings);
       restart(run);
     } catch (const std::exception& e) {  // a scene-only policy (hierarchical-cache) on a plane
-      run.animator.reset();
+      run.owned.reset();
       run.problem = e.what();
     }
     runs_.push_back(std::move(run));
@@ -96,7 +100,10 @@ void PolicyComparison::build() {
 
 std::string PolicyComparison::memory_problem() const {
   const Animator& main = *model_->animator();
-  const int engines = kEnginesBesideComparedRuns + int(policies_.size());
+  const int own = int(std::count_if(policies_.begin(), policies_.end(), [&](const ReusePolicy* p) {
+    return p != model_->settings().policy;  // the model's own policy plays no second engine
+  }));
+  const int engines = kEnginesBesideComparedRuns + own;
   const std::string problem =
       run_memory_problem(main.scene(), main.camera(), model_->settings().guard_band, engines);
   if (problem.empty()) return "";
@@ -105,7 +112,7 @@ std::string PolicyComparison::memory_problem() const {
 }
 
 void PolicyComparison::restart(ComparedRun& run) const {
-  run.last = run.animator->start();
+  run.last = run.owned->start();
   run.pixels_written = run.last.pixels_written;
   run.time_ms = run.last.time_ms;
   run.history.clear();
@@ -118,10 +125,10 @@ void PolicyComparison::record(ComparedRun& run) const {
 }
 
 void PolicyComparison::seek(ComparedRun& run, int frame) const {
-  if (!run.animator) return;
-  if (frame < run.animator->frame()) restart(run);
-  while (run.animator->frame() < frame) {
-    run.last = run.animator->advance();
+  if (!run.owned) return;
+  if (frame < run.owned->frame()) restart(run);
+  while (run.owned->frame() < frame) {
+    run.last = run.owned->advance();
     run.pixels_written += run.last.pixels_written;
     run.time_ms += run.last.time_ms;
     record(run);
@@ -142,8 +149,31 @@ const std::vector<ComparedRun>& PolicyComparison::runs() {
   // dearest run plays alone on the other.
   const int frame = main->frame();
   const StageTimer timer(FrameStage::kComparedRuns);
-  for (ComparedRun& run : runs_) seek(run, frame);
+  for (ComparedRun& run : runs_) {
+    if (run.problem.empty() && !run.owned) {
+      run.model = main;
+      follow_model(run, frame);
+    } else {
+      seek(run, frame);
+    }
+  }
   return runs_;
+}
+
+void PolicyComparison::follow_model(ComparedRun& run, int frame) const {
+  const std::vector<AnimationFrame>& records = model_->history();
+  int next = run.history.empty() ? 0 : run.history.back().frame + 1;
+  if (next > frame + 1) {  // the model went back: its run restarted from frame 0
+    run.history.clear();
+    next = 0;
+  }
+  if (next == 0) run.pixels_written = 0, run.time_ms = 0.0;
+  for (int k = next; k <= frame && k < int(records.size()); ++k) {
+    run.last = records[size_t(k)];
+    run.pixels_written += run.last.pixels_written;
+    run.time_ms += run.last.time_ms;
+    record(run);
+  }
 }
 
 }  // namespace oflab

@@ -58,13 +58,19 @@ struct ComparedFrame {
 };
 
 // One compared policy: its animator and what it did, this frame and over the run so far.
+// A compared policy that is the model's own plays no second engine: the run follows the
+// model's animator and records (the same frames, made once).
 struct ComparedRun {
   const ReusePolicy* policy = nullptr;
-  std::unique_ptr<Animator> animator;  // null when the source cannot be played (see problem)
-  std::string problem;                 // why not, one line; empty when it plays
-  AnimationFrame last;                 // the record of animator->frame()
-  std::int64_t pixels_written = 0;     // by the warp kernels over frames 0 .. frame()
-  double time_ms = 0.0;                // wall time of frames 0 .. frame()
+  std::unique_ptr<Animator> owned;  // its own engine; null when it follows the model's
+  const Animator* model = nullptr;  // the model's engine, when the policy is the model's
+  // The engine whose frame this run shows; nullptr when the source cannot be played (see
+  // problem).
+  const Animator* animator() const { return owned ? owned.get() : model; }
+  std::string problem;              // why not, one line; empty when it plays
+  AnimationFrame last;              // the record of animator->frame()
+  std::int64_t pixels_written = 0;  // by the warp kernels over frames 0 .. frame()
+  double time_ms = 0.0;             // wall time of frames 0 .. frame()
   // Frames of the current pass, consecutive and oldest first, ending at animator->frame():
   // frames 0 .. frame() while they number at most the comparison's limit
   // (kComparedHistoryFrames by default), else the last that many.
@@ -105,6 +111,8 @@ class PolicyComparison {
   std::string memory_problem() const;
   void restart(ComparedRun& run) const;
   void seek(ComparedRun& run, int frame) const;
+  // A run of the model's own policy: its records become the model's of frames up to `frame`.
+  void follow_model(ComparedRun& run, int frame) const;
   void record(ComparedRun& run) const;
 
   RunPlayer* model_;

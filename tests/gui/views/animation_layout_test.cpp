@@ -76,8 +76,8 @@ TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
   EXPECT_STREQ(runs[0].policy->name, "affine");
   EXPECT_STREQ(runs[1].policy->name, "perspective");
   for (const ComparedRun& run : runs) {
-    ASSERT_NE(run.animator, nullptr) << run.problem;
-    EXPECT_EQ(run.animator->frame(), 12);
+    ASSERT_NE(run.animator(), nullptr) << run.problem;
+    EXPECT_EQ(run.animator()->frame(), 12);
     EXPECT_EQ(run.last.frame, 12);
   }
   // Two approximations, the exact frame, two heat maps.
@@ -87,7 +87,7 @@ TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
   settings.policy = &reuse_policy("affine");
   ASSERT_TRUE(model().set_settings(settings));
   const Image& model_frame = model().animator()->image();
-  const Image& compared = window().model()->comparison().runs()[0].animator->image();
+  const Image& compared = window().model()->comparison().runs()[0].animator()->image();
   ASSERT_EQ(model_frame.width(), compared.width());
   EXPECT_EQ(std::memcmp(model_frame.row(0), compared.row(0),
                         size_t(compared.width()) * compared.height() * 4),
@@ -95,7 +95,7 @@ TEST_F(AnimationLayoutTest, ComparisonPlaysEveryPolicyOnTheModelsFrame) {
   // Stepping back restarts them on the same frame.
   window().model()->scene()->set_frame(5);
   for (const ComparedRun& run : window().model()->comparison().runs())
-    EXPECT_EQ(run.animator->frame(), 5);
+    EXPECT_EQ(run.animator()->frame(), 5);
 }
 
 TEST_F(AnimationLayoutTest, ComparisonTakesOneToFourPoliciesOfTheRegistry) {
@@ -256,7 +256,7 @@ TEST_F(AnimationLayoutTest, AffineVsPerspectiveLessonFillsTheView) {
         << "frame " << frame << ": " << plane_area / view_area << " of " << animation().width()
         << " x " << animation().height();
     for (const ComparedRun& run : window().model()->comparison().runs())
-      EXPECT_EQ(run.animator->frame(), frame);
+      EXPECT_EQ(run.animator()->frame(), frame);
   }
 }
 
@@ -331,7 +331,7 @@ TEST_F(AnimationLayoutTest, FlowVsTalismanLessonComparesPerspectiveAndTalisman) 
   EXPECT_STREQ(runs[0].policy->name, "perspective");
   EXPECT_STREQ(runs[1].policy->name, "talisman");
   for (const ComparedRun& run : runs) {
-    ASSERT_NE(run.animator, nullptr) << run.problem;
+    ASSERT_NE(run.animator(), nullptr) << run.problem;
     EXPECT_EQ(run.last.frame, 20);
   }
   window().apply_lesson(*find_lesson("affine-vs-perspective"));

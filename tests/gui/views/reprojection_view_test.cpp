@@ -106,7 +106,7 @@ TEST_F(ReprojectionViewTest, HoleMapMarksTheDepthReprojectionsHolesAndOnlyThose)
   // An independent count: unreached pixels of the reprojection where the exact frame shows
   // something, through the adapter the view uses.
   const ComparedRun& run = window().model()->comparison().runs().front();
-  const std::vector<char> mask = reprojection_holes(*run.animator, animation().exact_image());
+  const std::vector<char> mask = reprojection_holes(*run.animator(), animation().exact_image());
   EXPECT_EQ(double(std::count(mask.begin(), mask.end(), 1)), marked);
   // Negative controls: the cadence policy warps whole layers and has no holes, an unknown
   // policy is not measured, and a claim of holes on cadence does not hold.

@@ -107,17 +107,19 @@ TEST(Lab, AStateItCannotShowChangesNothing) {
 // policy, each estimated as the plane (one polygon) with two layers of the 3000 x 3000 px
 // frame grown by the guard band (275 MiB each). Six engines (4 compared) would pass the run
 // memory limit: no compared run is made and each says why; three (1 compared) fit and play.
+// The animation's own policy (perspective) compared plays no engine of its own: with it in
+// the place of one of the four, five engines fit, and its run shows the animation's engine.
 TEST(Lab, ComparedRunsAreMadeOnlyWhenEveryEngineFitsTheRunMemoryTogether) {
   Lab lab(shipped_default_texture());
   WindowState state;
   state.plane.camera.width = 3000;
   state.plane.camera.height = 3000;
-  state.compared = {"affine", "perspective", "talisman", "rerender"};
+  state.compared = {"affine", "dissertation", "talisman", "rerender"};
   ASSERT_EQ(lab.apply(state), "");
   const std::vector<ComparedRun>& over = lab.comparison().runs();
   ASSERT_EQ(over.size(), 4u);
   for (const ComparedRun& run : over) {
-    EXPECT_FALSE(run.animator);
+    EXPECT_FALSE(run.animator());
     EXPECT_EQ(run.problem.rfind("not compared: 6 engines of the scene's 1 polygons at 3000 x "
                                 "3000 px may hold ",
                                 0),
@@ -133,8 +135,41 @@ TEST(Lab, ComparedRunsAreMadeOnlyWhenEveryEngineFitsTheRunMemoryTogether) {
   ASSERT_EQ(lab.apply(state), "");
   const std::vector<ComparedRun>& within = lab.comparison().runs();
   ASSERT_EQ(within.size(), 1u);
-  EXPECT_TRUE(within[0].animator) << within[0].problem;
+  EXPECT_TRUE(within[0].animator()) << within[0].problem;
   EXPECT_EQ(within[0].problem, "");
+  state.compared = {"affine", "perspective", "talisman", "rerender"};
+  ASSERT_EQ(lab.apply(state), "");
+  const std::vector<ComparedRun>& five = lab.comparison().runs();
+  ASSERT_EQ(five.size(), 4u);
+  for (const ComparedRun& run : five) EXPECT_TRUE(run.animator()) << run.problem;
+  EXPECT_EQ(five[1].animator(), lab.run().animator());
+  EXPECT_EQ(five[0].owned.get(), five[0].animator());
+}
+
+// A compared run of the animation's own policy follows the animation's engine: the same
+// records frame by frame as a run of that policy on its own, played forward and back.
+TEST(Lab, TheAnimationsOwnPolicyComparedShowsTheAnimationsRun) {
+  Lab lab(shipped_default_texture());
+  WindowState state;
+  state.compared = {"perspective", "affine"};
+  ASSERT_EQ(state.settings.policy, &reuse_policy("perspective"));
+  ASSERT_EQ(lab.apply(state), "");
+  for (int frame : {5, 9, 3}) {
+    state.frame = frame;
+    ASSERT_EQ(lab.apply(state), "");
+    const ComparedRun& own = lab.comparison().runs()[0];
+    ASSERT_EQ(own.animator(), lab.run().animator());
+    ASSERT_FALSE(own.owned);
+    EXPECT_EQ(own.last.frame, frame);
+    ASSERT_EQ(int(own.history.size()), frame + 1);
+    std::int64_t written = 0;
+    for (int k = 0; k <= frame; ++k) {
+      EXPECT_EQ(own.history[size_t(k)].frame, k);
+      written += lab.run().history()[size_t(k)].pixels_written;
+    }
+    EXPECT_EQ(own.pixels_written, written);
+    EXPECT_EQ(own.last.pixels_written, lab.run().current().pixels_written);
+  }
 }
 
 }  // namespace
