@@ -1,8 +1,8 @@
 #include "experiments/experiments_warp.h"
 
-#include <chrono>
 #include <cmath>
 
+#include "engine/wall_clock.h"
 #include "experiments/experiments_runs.h"
 #include "experiments/published_results.h"
 #include "formats/datasets.h"
@@ -58,10 +58,9 @@ WarpTiming time_case(const std::string& size, const Layer& source, const std::st
   std::vector<double> ms;
   ms.reserve(repetitions);
   for (int i = 0; i < repetitions; ++i) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = WallClock::now();
     run();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
+    ms.push_back(ms_since(start));
   }
   t.median_ms = median_of(ms);
   return t;

@@ -20,11 +20,11 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
+#include "engine/wall_clock.h"
 #include "report/charts.h"
 #include "runs/vtk_content_actors.h"
 
@@ -194,7 +194,7 @@ void VtkSceneRenderer::add_lit_contents(const Scene& scene, const LayerContent& 
 
 double VtkSceneRenderer::render(const ViewerPose& view) {
   Impl& m = *impl_;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = WallClock::now();
   const Mat3 to_world = glm::transpose(view.rotation);
   const Vec3 eye = eye_position(view);
   const Vec3 forward = to_world * Vec3(0.0, 0.0, 1.0);
@@ -213,8 +213,7 @@ double VtkSceneRenderer::render(const ViewerPose& view) {
   m.window->Render();
   const int w = m.camera.width, h = m.camera.height;
   m.window->GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, m.pixels);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double ms = ms_since(t0);
   // OpenGL's rows run bottom to top; the framebuffer holds colour already multiplied by
   // alpha over the transparent black background, i.e. premultiplied.
   const unsigned char* in = m.pixels->GetPointer(0);

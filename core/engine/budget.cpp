@@ -2,10 +2,11 @@
 #include "engine/budget.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+
+#include "engine/wall_clock.h"
 
 namespace oflab {
 namespace {
@@ -273,7 +274,7 @@ FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& bud
     a.starved[i] = wants_pixels(layers[i]) && !got_pixels ? 1 : 0;
   }
   a.planned = greedy.cost;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = WallClock::now();
   double best = budget.unit == FrameBudget::Unit::kPixels
                     ? optimal_benefit(options, budget.amount)
                     : std::numeric_limits<double>::quiet_NaN();
@@ -281,8 +282,7 @@ FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& bud
     best = exhaustive_allocation(options, budget.amount).benefit;
   }
   if (!std::isnan(best)) a.optimality_gap = optimality_gap(best, greedy.benefit);
-  a.check_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  a.check_ms = ms_since(t0);
   return a;
 }
 

@@ -10,17 +10,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/wall_clock.h"
 #include "flow/homography.h"
 #include "flow/reprojection.h"
 
 namespace oflab {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
+using Clock = WallClock;
 
 }  // namespace
 
@@ -80,7 +77,7 @@ void PlaneEngine::measure(bool start, const PlanePose* previous, const RigidMoti
     }
     measured_.refusal = refusal;
   }
-  measured_.ms = elapsed_ms(t0);
+  measured_.ms = ms_since(t0);
 }
 
 void PlaneEngine::measure_fresh(const PlanePose& pose) {
@@ -119,7 +116,7 @@ FrameReport PlaneEngine::apply(Level level, bool shown) {
       FrameReport report;
       report.frame = frame_;
       apply_measured(level, shown, report);
-      report.time_ms = measured_.ms + elapsed_ms(t0);
+      report.time_ms = measured_.ms + ms_since(t0);
       report.warp_ms = report.time_ms - report.render_ms;
       finish_report(measured_.current, report);
       return report;
@@ -127,7 +124,7 @@ FrameReport PlaneEngine::apply(Level level, bool shown) {
       refusal = refused.what();
     }
   }
-  return apply_after_refusal(refusal, measured_.ms + elapsed_ms(t0));
+  return apply_after_refusal(refusal, measured_.ms + ms_since(t0));
 }
 
 void PlaneEngine::apply_measured(Level level, bool shown, FrameReport& report) {
@@ -156,7 +153,7 @@ FrameReport PlaneEngine::apply_after_refusal(const std::string& refusal, double 
   report.frame = frame_;
   try {
     render_fresh(current, report);
-    report.time_ms = spent_ms + elapsed_ms(t0);
+    report.time_ms = spent_ms + ms_since(t0);
     report.warp_ms = report.time_ms - report.render_ms;
     finish_report(current, report);
     if (report.visible) report.note = "re-rendered after a refusal: " + refusal;
@@ -164,7 +161,7 @@ FrameReport PlaneEngine::apply_after_refusal(const std::string& refusal, double 
     report = FrameReport{};
     report.frame = frame_;
     hide(std::string("not drawn: ") + again.what(), report);
-    report.time_ms = spent_ms + elapsed_ms(t0);
+    report.time_ms = spent_ms + ms_since(t0);
     report.warp_ms = report.time_ms - report.render_ms;
     finish_report(current, report);
   }

@@ -10,15 +10,12 @@
 #include <utility>
 
 #include "engine/engine.h"
+#include "engine/wall_clock.h"
 
 namespace oflab {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
+using Clock = WallClock;
 
 }  // namespace
 
@@ -74,7 +71,7 @@ void PlaneEngine::show_clipped(const PlanePose& pose, const Framing& framing, Fr
     report.pixels_written += stats.pixels_written;
     report.model_work += stats.pixels_written * kPerspectiveWarpCost;
   }
-  report.render_ms += elapsed_ms(t0);
+  report.render_ms += ms_since(t0);
   clipped_outline_ = project_to_pixels(camera_, framing.clipped).vertices();
   clipped_ = true;
 }
@@ -104,7 +101,7 @@ void PlaneEngine::rerender(const PlanePose& pose, FrameReport& report) {
     report.model_work =
         work + kPerspectiveWarpCost * static_cast<double>(report.pixels_written - pixels);
   }
-  report.render_ms += elapsed_ms(t0);
+  report.render_ms += ms_since(t0);
   shown_ = true;
   accumulated_.fill(0.0);
 }

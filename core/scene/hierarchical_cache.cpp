@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/wall_clock.h"
 #include "flow/limits.h"
 #include "flow/reprojection.h"
 #include "image/composite.h"
@@ -14,15 +15,11 @@
 namespace oflab {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = WallClock;
 
 constexpr double kPi = 3.14159265358979323846;
 // A node image's pixel counts as covering when at least half opaque.
 constexpr std::uint8_t kCoverAlpha = 128;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 // The convex hull of `points` (Andrew's monotone chain), clockwise on screen.
 std::vector<Vec2> convex_hull(std::vector<Vec2> p) {

@@ -11,16 +11,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/wall_clock.h"
 #include "scene/scene_animator.h"
 
 namespace oflab {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = WallClock;
 
 glm::ivec2 texture_size(const Image& texture) { return {texture.width(), texture.height()}; }
 

@@ -8,17 +8,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/wall_clock.h"
 #include "flow/homography.h"
 #include "image/composite.h"
 
 namespace oflab {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = WallClock;
 
 // The intersection of two convex polygons: `a` clipped by every edge of `b`.
 ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {

@@ -11,17 +11,14 @@
 #include <utility>
 
 #include "engine/engine.h"
+#include "engine/wall_clock.h"
 #include "image/composite.h"
 #include "scene/scene_resources.h"
 
 namespace oflab {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using Clock = WallClock;
 
 constexpr double kMinDepth = 1e-6;  // corners at or behind this depth are not drawn
 

@@ -2,7 +2,8 @@
 #include "player/stage_times.h"
 
 #include <array>
-#include <chrono>
+
+#include "engine/wall_clock.h"
 
 namespace oflab {
 namespace {
@@ -10,11 +11,8 @@ namespace {
 thread_local std::array<double, static_cast<int>(FrameStage::kCount)> totals{};
 thread_local StageTimer* innermost = nullptr;
 
-double now_ms() {
-  return std::chrono::duration<double, std::milli>(
-             std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
+// Milliseconds on the wall clock from its (arbitrary) origin: only differences mean anything.
+double now_ms() { return ms_since(WallClock::time_point()); }
 
 }  // namespace
 
