@@ -54,7 +54,8 @@ void play_pass(const SceneCase& c, const std::shared_ptr<const Scene>& scene,
     SceneSettings settings;
     settings.engine.policy = &reuse_policy(kRerender[r] ? "rerender" : c.policy);
     // The scene's own content detail, as `oflab-cli animate --scene street` plays it.
-    if (scene->content_quality > 0) settings.engine.content.quality = scene->content_quality;
+    settings.engine.content.quality =
+        scene_content_quality(*scene, settings.engine.content.quality);
     runs[r] = make_scene_animator(scene, walk, settings);
   }
   // Blocks of frames in turn, so that the thread counts meet the same load: the pool is

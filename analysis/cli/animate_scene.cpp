@@ -47,8 +47,9 @@ RunSource read_scene_source(const CliArgs& a) {
   source.scene = std::make_shared<const Scene>(read_scene_option(a));
   source.settings = read_scene_settings(a);
   // The scene's content quality unless --quality says otherwise.
-  if (!a.has("--quality") && source.scene->content_quality > 0) {
-    source.settings.engine.content.quality = source.scene->content_quality;
+  if (!a.has("--quality")) {
+    source.settings.engine.content.quality =
+        scene_content_quality(*source.scene, source.settings.engine.content.quality);
   }
   return source;
 }

@@ -105,7 +105,7 @@ bool add_texture_actors(const Scene& scene, vtkRenderer* renderer) {
 int multisamples(const Scene& scene, const LayerContent& content) {
   bool shaded = false;
   for (const ScenePolygon& p : scene.polygons) shaded = shaded || p.content == ContentKind::kShaded;
-  const int samples = scene.content_quality > 0 ? scene.content_quality : content.quality;
+  const int samples = scene_content_quality(scene, content.quality);
   return shaded && samples > 1 ? samples : 0;
 }
 
@@ -182,7 +182,7 @@ void VtkSceneRenderer::add_lit_contents(const Scene& scene, const LayerContent& 
   const std::string problem = content_problem(content);
   if (!problem.empty()) throw std::invalid_argument("VtkSceneRenderer: content " + problem);
   LayerContent lit = content;
-  if (scene.content_quality > 0) lit.quality = scene.content_quality;
+  lit.quality = scene_content_quality(scene, lit.quality);
   add_content_actors(scene, lit, m.renderer);
   m.towards_light = glm::normalize(content.light);
   m.light->SetLightTypeToSceneLight();

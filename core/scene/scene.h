@@ -54,6 +54,13 @@ struct Scene {
   int content_quality = 0;
 };
 
+// The quality the scene's lit contents play at: the scene's own when it gives one, else
+// `setting` (the run's, LayerContent::quality). The one rule of every front-end that plays a
+// scene (`oflab-cli animate` unless --quality says otherwise, the window, the benchmarks).
+inline int scene_content_quality(const Scene& scene, int setting) {
+  return scene.content_quality > 0 ? scene.content_quality : setting;
+}
+
 // The outline actually used: polygon.outline, or the unit square when it is empty, as
 // normalised texture coordinates in order (either orientation).
 std::vector<Vec2> polygon_outline(const ScenePolygon& polygon);

@@ -24,7 +24,7 @@ class CoreExactRenderer final : public ExactFrameRenderer {
   static SceneSettings scene_settings(const Scene& scene, const EngineSettings& engine) {
     SceneSettings s;
     s.engine = engine;
-    if (scene.content_quality > 0) s.engine.content.quality = scene.content_quality;
+    s.engine.content.quality = scene_content_quality(scene, engine.content.quality);
     s.engine.policy = &reuse_policy("rerender");
     s.near = engine.near;
     s.guard_band = engine.guard_band;

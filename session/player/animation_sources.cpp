@@ -34,9 +34,8 @@ RunSource scene_source(const SourceChoice& choice, const EngineSettings& setting
   source.viewer = read_viewer_script_file(resolve_viewer_script_path(choice.viewer));
   source.settings.engine = settings;
   // The polygons keep their own contents and the scene's quality, as `oflab-cli animate`.
-  if (source.scene->content_quality > 0) {
-    source.settings.engine.content.quality = source.scene->content_quality;
-  }
+  source.settings.engine.content.quality =
+      scene_content_quality(*source.scene, settings.content.quality);
   source.shifting.sampling = settings.sampling;
   return source;
 }

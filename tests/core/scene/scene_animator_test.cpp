@@ -67,6 +67,15 @@ void expect_matches_reference(const Image& shown, const Image& reference, double
   }
 }
 
+// A scene's own content quality wins over the run's setting; without one the setting plays.
+TEST(SceneContentQuality, TheScenesOwnWhenItGivesOneElseTheSetting) {
+  Scene scene;
+  EXPECT_EQ(scene_content_quality(scene, 3), 3);
+  scene.content_quality = 2;
+  EXPECT_EQ(scene_content_quality(scene, 3), 2);
+  EXPECT_EQ(scene_content_quality(scene, 1), 2);
+}
+
 TEST(ViewerScript, StepsMoveThePlanesExactlyAsTheirPosesSay) {
   const ViewerPose start = look_at(Vec3(1, 2, 6), Vec3(0, 0, 0), Vec3(0, 1, 0));
   EXPECT_LT(glm::length(eye_position(start) - Vec3(1, 2, 6)), 1e-12);
