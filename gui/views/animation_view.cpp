@@ -48,6 +48,17 @@ QRectF centred_with_aspect(const QRectF& within, double aspect) {
   return QRectF(within.center().x() - w / 2, within.center().y() - h / 2, w, h);
 }
 
+// The aspect (width over height) of the panels' frame: that of `content`, so that each panel
+// hugs what it frames in its cell (a tall band of squares in a wide cell leaves no empty sides),
+// held within kHugAspect of a square; the cell's own when nothing is framed or the panels are
+// zoomed in (a zoom then uses the whole cell).
+double hugging_aspect(const QRectF& cell, const QRectF& content, double zoom) {
+  constexpr double kHugAspect = 4.0;
+  const double cell_aspect = cell.width() / cell.height();
+  if (content.isEmpty() || zoom > 1.0) return cell_aspect;
+  return std::clamp(content.width() / content.height(), 1.0 / kHugAspect, kHugAspect);
+}
+
 }  // namespace
 
 AnimationView::AnimationView(WindowModel* window, QWidget* parent)
@@ -452,10 +463,10 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
       plan = std::move(strip);
   }
   lines_ = plan.lines;
-  const QRectF& first = plan.cells.front().image;
   const Camera& camera = animator->camera();
   shown_frame_ = panel_frame(content, QSizeF(camera.width, camera.height),
-                             first.width() / first.height(), window_->zoom());
+                             hugging_aspect(plan.cells.front().image, content, window_->zoom()),
+                             window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
   for (size_t i = 0; i < plan.contents.size(); ++i)
     paint_panel(painter, plan.contents[i], plan.cells[i], outlines);
