@@ -89,6 +89,10 @@ class FlowRenderer {
   // scene is kept out of, and where it maps the plane's projected outline.
   QRectF caption_rect(const QSize& size) const;
   QRectF outline_rect(const QSize& size) const;
+  // The share (0..1) of the region `paint` at `size` fits the scene into (left of the legend
+  // strip, between the caption and the wheel's caption) that the plane's projected outline
+  // covers, after the last update.
+  double plane_share(const QSize& size) const;
 
  private:
   void update_faded_texture();
@@ -100,7 +104,8 @@ class FlowRenderer {
   void update_caption(const FlowDisplay& display, const QString& frame_caption);
   void choose_view_region(const FlowContext& context, const FlowDisplay& display);
   QTransform image_to_view(const QSize& size) const;
-  double wheel_caption_height() const;  // view pixels at the bottom, 0 without the wheel
+  QRectF scene_rect(const QSize& size) const;  // where image_to_view fits the scene, view px
+  double wheel_caption_height() const;         // view pixels at the bottom, 0 without the wheel
   void paint_scene(QPainter& painter, const QTransform& to_view);
   void paint_arrows(QPainter& painter, const QTransform& to_view);
   void paint_side(QPainter& painter, const QRectF& side);
