@@ -93,6 +93,8 @@ class FlowRenderer {
   // strip, between the caption and the wheel's caption) that the plane's projected outline
   // covers, after the last update.
   double plane_share(const QSize& size) const;
+  // The region `paint` at `size` fits the scene into, view pixels.
+  QRectF scene_rect(const QSize& size) const;
 
  private:
   void update_faded_texture();
@@ -104,8 +106,7 @@ class FlowRenderer {
   void update_caption(const FlowDisplay& display, const QString& frame_caption);
   void choose_view_region(const FlowContext& context, const FlowDisplay& display);
   QTransform image_to_view(const QSize& size) const;
-  QRectF scene_rect(const QSize& size) const;  // where image_to_view fits the scene, view px
-  double wheel_caption_height() const;         // view pixels at the bottom, 0 without the wheel
+  double wheel_caption_height() const;  // view pixels at the bottom, 0 without the wheel
   void paint_scene(QPainter& painter, const QTransform& to_view);
   void paint_arrows(QPainter& painter, const QTransform& to_view);
   void paint_side(QPainter& painter, const QRectF& side);
