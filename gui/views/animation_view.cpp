@@ -31,6 +31,11 @@ namespace oflab {
 
 namespace {
 
+// In presentation mode a view shorter than this (a 1366 x 768 projector under a lesson's
+// caption) leaves out the engine's two rows of controls and the readout line, so the panels
+// keep the height their titles, captions and legends need; pixels.
+constexpr int kCompactBelowPx = 700;
+
 // A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
 constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
@@ -278,6 +283,7 @@ void AnimationView::set_theme(const ViewTheme& theme) {
   font.setPixelSize(theme.presentation ? theme.label_size : 12);
   inspector_->setFont(font);
   inspector_area_->setFixedWidth(theme.presentation ? 380 : 260);
+  show_compact(theme_.presentation && height() < kCompactBelowPx);
   refresh();
 }
 
@@ -490,6 +496,16 @@ QImage AnimationView::render_image() {
   const QImage image = compose(canvas_size());
   canvas_->set_image(image);
   return image;
+}
+
+void AnimationView::resizeEvent(QResizeEvent* event) {
+  ViewPage::resizeEvent(event);
+  show_compact(theme_.presentation && height() < kCompactBelowPx);
+}
+
+void AnimationView::show_compact(bool compact) {
+  controls_->set_engine_rows_shown(!compact);
+  readout_->setVisible(!compact);
 }
 
 void AnimationView::showEvent(QShowEvent* event) {

@@ -529,18 +529,22 @@ TEST(BoundsAround, UnitesTheFramesWithinReach) {
   EXPECT_EQ(bounds_around(bounds, 0, -1), QRectF(0, 0, 101, 25));
 }
 
-// The comparison on a projector with the scene panel shown and hidden, at 1920 x 1080: no
-// text is elided, off the canvas or overlapping (the exact panel's title, the colour bar's
-// caption and labels among them), and every panel title has one font size. (At 1366 x 768
-// with the scene panel the captions leave the images no height: not yet held here.)
+// The comparison on a projector with the scene panel shown and hidden, at 1920 x 1080, and
+// at 1366 x 768 with it hidden (the lessons' state; in presentation mode the short view
+// leaves out the engine's rows of controls and the readout): no text is elided, off the
+// canvas or overlapping (the exact panel's title, the colour bar's caption and labels among
+// them), and every panel title has one font size. The control: at 1366 x 768 with the scene
+// panel shown the measure finds texts over each other (not yet fixed: the level legend runs
+// into the colour bar's caption, and the images are a few tens of pixels tall).
 TEST_F(AnimationLayoutTest, ComparisonTextsAreWholeWithAndWithoutTheScenePanel) {
   show_comparison();
   ASSERT_TRUE(model().set_source({"script", "swing", ""}));
   ASSERT_TRUE(window().model()->set_compared({"affine", "perspective"}));
   window().model()->set_presentation(true);
   window().play_frames(10);
-  for (const QSize size : {QSize(1920, 1080)}) {
+  for (const QSize size : {QSize(1920, 1080), QSize(1366, 768)}) {
     for (bool scene_panel : {true, false}) {
+      if (size.width() == 1366 && scene_panel) continue;  // the control, below
       window().resize(size);
       window().model()->set_scene_panel(scene_panel);
       QApplication::processEvents();
@@ -562,6 +566,10 @@ TEST_F(AnimationLayoutTest, ComparisonTextsAreWholeWithAndWithoutTheScenePanel) 
       for (double h : title_heights) EXPECT_NEAR(h, title_heights[0], 0.5) << where;
     }
   }
+  window().model()->set_scene_panel(true);
+  QApplication::processEvents();
+  animation().render_image();
+  EXPECT_FALSE(animation().text_problems().empty()) << "the control: 1366 x 768, scene panel";
 }
 
 // The colour bar in a narrow cell: its caption breaks onto two lines, each within the bar's
