@@ -4,6 +4,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "views/analysis_view.h"
 #include "views/animation_view.h"
 #include "views/basis_view.h"
+#include "views/flow_view.h"
 #include "views/world_view.h"
 
 namespace oflab {
@@ -49,19 +51,39 @@ double heat_map_width(MainWindow* window, AnimationView* view) {
   return narrowest;
 }
 
-// The percent of the exact panel's image the exact frame's content covers as drawn.
-double panel_fill(AnimationView* view) {
-  view->render_image();
-  return 100.0 * view->content_fill();
+// The views in front: those of the cause-and-effect layout, else the current one.
+std::vector<ViewPage*> shown_views(MainWindow* window) {
+  return window->model()->cause_and_effect() ? window->layout_views()
+                                             : std::vector<ViewPage*>{window->current_view()};
+}
+
+// The percent of its panel what a view in front draws covers, the smallest over them: the
+// animation view's exact panel (the exact frame's content as drawn), the flow view's scene
+// region (the plane's image), the world view's picture (the hull of the plane or the scene,
+// the eye and its image plane); NaN when none of them is in front.
+double panel_fill(MainWindow* window) {
+  double smallest = kUnknown;
+  for (ViewPage* page : shown_views(window)) {
+    double fill = kUnknown;
+    if (auto* animation = qobject_cast<AnimationView*>(page)) {
+      animation->render_image();
+      fill = animation->content_fill();
+    } else if (auto* flow = qobject_cast<FlowView*>(page)) {
+      fill = flow->plane_share();
+    } else if (auto* world = qobject_cast<WorldView*>(page)) {
+      fill = world->drawn_share();
+    }
+    if (!std::isnan(fill))
+      smallest = std::isnan(smallest) ? 100.0 * fill : std::min(smallest, 100.0 * fill);
+  }
+  return smallest;
 }
 
 // Texts that are elided, leave their canvas or overlap another: of the world view, the basis
 // view (its explorer) or the analysis view when one of them shows (in front, or in the
 // cause-and-effect layout), else of the animation view.
 double cut_texts(MainWindow* window) {
-  const std::vector<ViewPage*> shown = window->model()->cause_and_effect()
-                                           ? window->layout_views()
-                                           : std::vector<ViewPage*>{window->current_view()};
+  const std::vector<ViewPage*> shown = shown_views(window);
   bool measured = false;
   double problems = 0.0;
   for (ViewPage* page : shown) {
@@ -153,7 +175,7 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
       {"heat_map_width", on_animation(heat_map_width)},
       {"hole_map_pixels",
        on_animation([](MainWindow*, AnimationView* v) { return double(v->hole_map_pixels()); })},
-      {"panel_fill", on_animation([](MainWindow*, AnimationView* v) { return panel_fill(v); })},
+      {"panel_fill", [](MainWindow* window, const LessonClaim&) { return panel_fill(window); }},
       {"cut_texts", [](MainWindow* window, const LessonClaim&) { return cut_texts(window); }},
       {"active_tiles",
        [](MainWindow* window, const LessonClaim&) {

@@ -92,8 +92,11 @@ void draw_frame_box(QPainter& p, const ChartFrame& f, const QString& title, cons
   draw_box_and_title(p, f, title, text);
   p.drawText(QRect(x, f.area.top(), margin - 6, fm.height()), Qt::AlignRight,
              QString::number(scale.top, 'g', 3) + unit);
-  p.drawText(QRect(x, f.area.bottom() - fm.height(), margin - 6, fm.height()), Qt::AlignRight,
-             scale.log ? QString::number(scale.bottom, 'g', 3) + unit : QStringLiteral("0"));
+  // A linear chart too short for both values keeps its top one: its bottom is zero.
+  if (scale.log || f.area.height() >= 2 * fm.height()) {
+    p.drawText(QRect(x, f.area.bottom() - fm.height(), margin - 6, fm.height()), Qt::AlignRight,
+               scale.log ? QString::number(scale.bottom, 'g', 3) + unit : QStringLiteral("0"));
+  }
   if (scale.log) {
     p.save();
     p.setPen(QPen(text.darker(150), 1.0, Qt::DotLine));

@@ -66,11 +66,16 @@ AnimationControls::AnimationControls(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(2);
   layout->addWidget(make_source_row());
-  layout->addWidget(make_mode_row());
+  engine_rows_.push_back(make_mode_row());
   // The thresholds get their own row so the bar stays narrow enough for a 1280-pixel window.
-  layout->addWidget(make_threshold_row());
+  engine_rows_.push_back(make_threshold_row());
+  for (QWidget* row : engine_rows_) layout->addWidget(row);
   set_settings(EngineSettings{});
   explain_controls();
+}
+
+void AnimationControls::set_engine_rows_shown(bool shown) {
+  for (QWidget* row : engine_rows_) row->setVisible(shown);
 }
 
 void AnimationControls::explain_controls() {

@@ -47,6 +47,9 @@ class AnimationControls : public QWidget {
   // of them once the user has picked; set_compared takes what PolicyComparison takes).
   std::vector<const ReusePolicy*> compared() const;
   void set_compared(const std::vector<const ReusePolicy*>& policies);  // emits nothing
+  // Shows or hides the engine's two rows (the policy and the thresholds) under the source row:
+  // a short window in presentation mode leaves them out for the panels' sake.
+  void set_engine_rows_shown(bool shown);
 
  signals:
   void settings_edited();
@@ -57,6 +60,7 @@ class AnimationControls : public QWidget {
   void refused(const QString& message);
 
  private:
+  std::vector<QWidget*> engine_rows_;  // the mode row and the threshold row
   QWidget* make_source_row();
   // The engine's row: the reuse policy (with the budget box and the affine/perspective
   // switch), Delta, the sampling and the reprojection menu.

@@ -124,8 +124,10 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
   CaptionLines lines{2, 1, theme_.font_size, 1};
   for (size_t i = 0; i < contents.size(); ++i) {
     QStringList wrapped;
+    // At the separators first; a piece still wider than the cell breaks at its spaces (a
+    // caption the lesson refers to is never elided).
     for (const QString& line : contents[i].caption)
-      wrapped += wrapped_caption(line, metrics, cell_width);
+      wrapped += broken_at_spaces(wrapped_caption(line, metrics, cell_width), metrics, cell_width);
     contents[i].caption = wrapped;
     int& row = heat_row && int(i) >= columns ? lines.heat : lines.top;
     row = std::max(row, int(wrapped.size()));

@@ -31,6 +31,11 @@ namespace oflab {
 
 namespace {
 
+// In presentation mode a view shorter than this (a 1366 x 768 projector under a lesson's
+// caption) leaves out the engine's two rows of controls and the readout line, so the panels
+// keep the height their titles, captions and legends need; pixels.
+constexpr int kCompactBelowPx = 700;
+
 // A canvas smaller than this (a view never shown) is painted at kDefaultCanvas instead.
 constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
@@ -46,6 +51,17 @@ QRectF centred_with_aspect(const QRectF& within, double aspect) {
     h = w / aspect;
   }
   return QRectF(within.center().x() - w / 2, within.center().y() - h / 2, w, h);
+}
+
+// The aspect (width over height) of the panels' frame: that of `content`, so that each panel
+// hugs what it frames in its cell (a tall band of squares in a wide cell leaves no empty sides),
+// held within kHugAspect of a square; the cell's own when nothing is framed or the panels are
+// zoomed in (a zoom then uses the whole cell).
+double hugging_aspect(const QRectF& cell, const QRectF& content, double zoom) {
+  constexpr double kHugAspect = 4.0;
+  const double cell_aspect = cell.width() / cell.height();
+  if (content.isEmpty() || zoom > 1.0) return cell_aspect;
+  return std::clamp(content.width() / content.height(), 1.0 / kHugAspect, kHugAspect);
 }
 
 }  // namespace
@@ -267,6 +283,7 @@ void AnimationView::set_theme(const ViewTheme& theme) {
   font.setPixelSize(theme.presentation ? theme.label_size : 12);
   inspector_->setFont(font);
   inspector_area_->setFixedWidth(theme.presentation ? 380 : 260);
+  show_compact(theme_.presentation && height() < kCompactBelowPx);
   refresh();
 }
 
@@ -452,10 +469,10 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
       plan = std::move(strip);
   }
   lines_ = plan.lines;
-  const QRectF& first = plan.cells.front().image;
   const Camera& camera = animator->camera();
   shown_frame_ = panel_frame(content, QSizeF(camera.width, camera.height),
-                             first.width() / first.height(), window_->zoom());
+                             hugging_aspect(plan.cells.front().image, content, window_->zoom()),
+                             window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
   for (size_t i = 0; i < plan.contents.size(); ++i)
     paint_panel(painter, plan.contents[i], plan.cells[i], outlines);
@@ -479,6 +496,16 @@ QImage AnimationView::render_image() {
   const QImage image = compose(canvas_size());
   canvas_->set_image(image);
   return image;
+}
+
+void AnimationView::resizeEvent(QResizeEvent* event) {
+  ViewPage::resizeEvent(event);
+  show_compact(theme_.presentation && height() < kCompactBelowPx);
+}
+
+void AnimationView::show_compact(bool compact) {
+  controls_->set_engine_rows_shown(!compact);
+  readout_->setVisible(!compact);
 }
 
 void AnimationView::showEvent(QShowEvent* event) {

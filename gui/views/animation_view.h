@@ -131,9 +131,12 @@ class AnimationView : public ViewPage {
 
   // Redraws when visible.
   void refresh();
+  // Hides (compact) or shows the engine's rows of controls and the readout line.
+  void show_compact(bool compact);
 
  protected:
   void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   // The canvas with the frame inspector beside it, the readout under them, then the Exact

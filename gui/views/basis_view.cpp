@@ -44,12 +44,13 @@ BasisView::BasisView(WindowModel* window, QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(make_option_bar());
-  // The explorer's dials down the left; its deformation and its worlds side by side above the
-  // gallery, which spans both (the explorer's widgets are hidden without it).
+  // The explorer's dials down the left, its deformation above the gallery and its worlds down
+  // the right, tall enough for the two futures side by side (the explorer's widgets are
+  // hidden without it, and the gallery then spans the whole body: show_explorer).
   body_ = new QGridLayout;
   body_->addWidget(explorer_->dials(), 0, 0, 2, 1);
   body_->addWidget(explorer_->deformation(), 0, 1);
-  body_->addWidget(explorer_->worlds(), 0, 2);
+  body_->addWidget(explorer_->worlds(), 0, 2, 2, 1);
   body_->addWidget(canvas_, 1, 1, 1, 2);
   body_->setColumnStretch(1, 3);
   body_->setColumnStretch(2, 2);
@@ -166,6 +167,8 @@ void BasisView::show_explorer() {
   explorer_->worlds()->setVisible(on);
   body_->setRowStretch(0, on ? 3 : 0);
   body_->setRowStretch(1, 2);
+  body_->removeWidget(canvas_);
+  body_->addWidget(canvas_, 1, 1, 1, on ? 1 : 2);
   explorer_->refresh(on && isVisible());
   refresh();
 }

@@ -14,6 +14,7 @@
 #include "flow/homography.h"
 #include "image/warp.h"
 #include "scene/view_culling.h"
+#include "views/panel_layout.h"
 
 namespace oflab {
 namespace {
@@ -348,14 +349,24 @@ QRectF FlowRenderer::outline_rect(const QSize& size) const {
   return image_to_view(size).map(outline_).boundingRect();
 }
 
+QRectF FlowRenderer::scene_rect(const QSize& size) const {
+  const double pad = 0.01 * size.width();
+  const double top = caption_rect(size).bottom() + pad;
+  return QRectF(0.0, top, size.width() - side_width_px(size.width()),
+                std::max(1.0, size.height() - top - wheel_caption_height() - pad));
+}
+
+double FlowRenderer::plane_share(const QSize& size) const {
+  const QPolygonF outline = image_to_view(size).map(outline_);
+  return hull_share(std::vector<QPointF>(outline.begin(), outline.end()), scene_rect(size));
+}
+
 // Centred image pixels -> view pixels: the chosen region, with a margin, centred in the
 // part of the view left of the legend strip, below the caption and above the wheel's
 // caption, so the scene never runs through their text.
 QTransform FlowRenderer::image_to_view(const QSize& size) const {
-  const double width = size.width() - side_width_px(size.width());
-  const double pad = 0.01 * size.width();
-  const double top = caption_rect(size).bottom() + pad;
-  const double height = std::max(1.0, size.height() - top - wheel_caption_height() - pad);
+  const QRectF scene = scene_rect(size);
+  const double width = scene.width(), top = scene.top(), height = scene.height();
   const double aspect = width / height;
   const double half_h = kViewMargin * std::max(view_half_size_.y, view_half_size_.x / aspect);
   const double scale = 0.5 * height / half_h;

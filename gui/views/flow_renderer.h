@@ -89,6 +89,12 @@ class FlowRenderer {
   // scene is kept out of, and where it maps the plane's projected outline.
   QRectF caption_rect(const QSize& size) const;
   QRectF outline_rect(const QSize& size) const;
+  // The share (0..1) of the region `paint` at `size` fits the scene into (left of the legend
+  // strip, between the caption and the wheel's caption) that the plane's projected outline
+  // covers, after the last update.
+  double plane_share(const QSize& size) const;
+  // The region `paint` at `size` fits the scene into, view pixels.
+  QRectF scene_rect(const QSize& size) const;
 
  private:
   void update_faded_texture();

@@ -131,6 +131,11 @@ void FlowView::update_scene() {
   dirty_ = false;
 }
 
+double FlowView::plane_share() {
+  render_image();
+  return renderer_->plane_share(canvas_->size());
+}
+
 void FlowView::paint_canvas() { canvas_->set_image(renderer_->paint(canvas_->size())); }
 
 void FlowView::refresh() {

@@ -43,6 +43,9 @@ class FlowView : public ViewPage {
   // no flow, its caption says so and a note over the greyed table explains the terms.
   bool plane_in_image() const { return renderer_->plane_in_image(); }
   QString caption() const { return renderer_->caption(); }
+  // The share (0..1) of the picture's scene region the plane's image covers, at the canvas
+  // size after a render (FlowRenderer::plane_share).
+  double plane_share();
 
   // Updates the picture from the model and paints it when the view is visible (otherwise
   // it paints when shown).

@@ -1,6 +1,8 @@
 #include "views/panel_layout.h"
 
+#include <QPolygonF>
 #include <algorithm>
+#include <cmath>
 
 #include "scene/view_culling.h"
 
@@ -41,6 +43,38 @@ QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, do
     }
   }
   return {text};
+}
+
+double hull_share(const std::vector<QPointF>& points, const QRectF& picture) {
+  if (points.size() < 3 || picture.isEmpty()) return 0.0;
+  // Andrew's monotone chain: the lower and the upper hull, counter-clockwise.
+  std::vector<QPointF> sorted = points;
+  std::sort(sorted.begin(), sorted.end(), [](const QPointF& a, const QPointF& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  const auto cross = [](const QPointF& o, const QPointF& a, const QPointF& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  std::vector<QPointF> hull(2 * sorted.size());
+  size_t k = 0;
+  for (size_t i = 0; i < sorted.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], sorted[i]) <= 0) --k;
+    hull[k++] = sorted[i];
+  }
+  for (size_t i = sorted.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], sorted[i]) <= 0) --k;
+    hull[k++] = sorted[i];
+  }
+  hull.resize(k > 0 ? k - 1 : 0);
+  const QPolygonF inside =
+      QPolygonF(QVector<QPointF>(hull.begin(), hull.end())).intersected(QPolygonF(picture));
+  double twice_area = 0.0;
+  for (int i = 0; i < inside.size(); ++i) {
+    const QPointF& a = inside[i];
+    const QPointF& b = inside[(i + 1) % inside.size()];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+  }
+  return std::abs(twice_area) / 2.0 / (picture.width() * picture.height());
 }
 
 QRectF panel_frame(const QRectF& content, const QSizeF& camera_size, double aspect, double zoom) {

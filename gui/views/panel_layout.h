@@ -39,6 +39,11 @@ std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, dou
 // it). Never drops or reorders characters other than the separators' spaces and the dot.
 QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, double width);
 
+// The share (0..1) of `picture` inside the convex hull of `points` (same units, e.g. canvas
+// pixels): how much of a view what it draws covers. 0 for fewer than three points or an
+// empty picture.
+double hull_share(const std::vector<QPointF>& points, const QRectF& picture);
+
 // Fraction of the content's size added on every side when fitting it.
 constexpr double kFitMargin = 0.02;
 

@@ -1,6 +1,7 @@
 #include "views/world_scene.h"
 
 #include <vtkCamera.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -17,6 +18,7 @@
 #include "models/window_model.h"
 #include "scene/scene_animator.h"
 #include "scene_shifting/scene_shifting_renderer.h"
+#include "views/panel_layout.h"
 
 namespace oflab {
 namespace {
@@ -528,6 +530,29 @@ bool WorldScene::to_canvas(const Vec3& at, QPointF* canvas) const {
   *canvas = QPointF(d[0], size[1] - d[1]);
   return d[2] >= 0.0 && d[2] <= 1.0 && d[0] >= 0.0 && d[0] <= size[0] && d[1] >= 0.0 &&
          d[1] <= size[1];
+}
+
+double WorldScene::drawn_share() const {
+  std::vector<Vec3> points;
+  vtkPoints* drawn = (scene_mode ? polygons.data : plane.data)->GetPoints();
+  for (vtkIdType i = 0; drawn && i < drawn->GetNumberOfPoints(); ++i) {
+    const double* p = drawn->GetPoint(i);
+    points.emplace_back(p[0], p[1], p[2]);
+  }
+  if (!from_eye) {
+    points.push_back(viewer_to_world(view, Vec3(0.0)));
+    for (const Vec3& c : image_plane_corners(camera, depth))
+      points.push_back(viewer_to_world(view, c));
+  }
+  const int* size = window->GetSize();
+  std::vector<QPointF> seen;
+  for (const Vec3& p : points) {
+    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    if (d[2] >= 0.0 && d[2] <= 1.0) seen.emplace_back(d[0], size[1] - d[1]);
+  }
+  return hull_share(seen, QRectF(0, 0, size[0], size[1]));
 }
 
 }  // namespace oflab

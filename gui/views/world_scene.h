@@ -141,6 +141,11 @@ struct WorldScene {
   // Where world point `at` lands in the last render (canvas pixels); false when it is behind
   // the camera or outside the picture.
   bool to_canvas(const Vec3& at, QPointF* canvas) const;
+  // The share (0..1) of the last render's picture inside the convex hull of what it draws
+  // now: the plane's corners (the scene's polygons in a scene) and, unless the camera looks
+  // through the eye, the eye and its image plane's corners; points behind the camera are
+  // left out.
+  double drawn_share() const;
 
   // The camera framing everything drawn, seen from behind, above and left of the first
   // frame's eye.

@@ -140,6 +140,11 @@ std::vector<QString> WorldView::text_problems() const {
   return oflab::text_problems(painted_texts(), canvas_->size());
 }
 
+double WorldView::drawn_share() {
+  render_image();
+  return world_->drawn_share();
+}
+
 int WorldView::render_count() const { return world_->renders; }
 
 void WorldView::refresh() {

@@ -97,6 +97,10 @@ class WorldView : public ViewPage {
   // elided, off the canvas, overlapping); render_image first for the current frame.
   std::vector<PaintedText> painted_texts() const;
   std::vector<QString> text_problems() const;
+  // The share (0..1) of the picture inside the convex hull of what it draws (the plane or the
+  // scene's polygons, and the eye with its image plane unless seen through the eye) after a
+  // render at the canvas size (WorldScene::drawn_share).
+  double drawn_share();
   // How many times VTK has rendered since the view was made (tests check that nothing
   // renders again when nothing changed).
   int render_count() const;

@@ -94,9 +94,12 @@ std::vector<ClaimKind> make_kinds() {
              "the narrowest heat map of the comparison layout as drawn: the width of what it "
              "shows (the exact outlines' bounding box) on it, screen pixels"),
       screen("panel_fill",
-             "the share (percent) of the exact panel's image inside the exact outlines of what "
-             "it shows now (the plane's or the polygons' images), at the panels' shared "
-             "framing and zoom"),
+             "the share (percent) of its panel that what a view in front shows now covers, the "
+             "smallest over the views in front: the animation view's exact panel inside the "
+             "exact outlines (the plane's or the polygons' images) at the panels' shared "
+             "framing and zoom; the flow view's picture inside the plane's image; the world "
+             "view's picture inside the hull of the plane or the scene, the eye and its image "
+             "plane"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",

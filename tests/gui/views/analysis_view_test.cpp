@@ -13,6 +13,7 @@
 #include "engine/reuse_policy.h"
 #include "flow/geometry.h"
 #include "flow/plane_scene.h"
+#include "lessons/lessons.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "player/policy_comparison.h"
@@ -92,6 +93,33 @@ TEST_F(AnalysisViewTest, WholeLoopAxisSpansTheLoop) {
   EXPECT_EQ(analysis().first_frame(), 0);
   EXPECT_EQ(analysis().last_frame(), window().model()->animation()->animator()->frame_count() - 1);
   EXPECT_EQ(analysis().current_frame(), 5);
+}
+
+// The why-errors-accumulate lesson on a 1366 x 768 projector in presentation mode, with the
+// scene panel shown and hidden: no chart text is elided, off the charts or over another (a
+// linear chart too short for its top and bottom values keeps the top one). The control: a
+// window held at 900 x 480 with the scene panel cuts some. (Four compared policies at 1366 x 768 do
+// not fit yet.)
+TEST_F(AnalysisViewTest, TheLessonsChartsAreLegibleAt1366x768) {
+  window().apply_lesson(*find_lesson("why-errors-accumulate"));
+  window().model()->set_playing(false);
+  window().model()->set_presentation(true);
+  window().set_external_clock(true);
+  const auto problems = [this] {
+    QApplication::processEvents();
+    analysis().render_image();
+    QString all;
+    for (const QString& p : analysis().text_problems()) all += p + QStringLiteral("; ");
+    return all.toStdString();
+  };
+  for (bool scene_panel : {true, false}) {
+    window().model()->set_scene_panel(scene_panel);
+    window().resize(1366, 768);
+    EXPECT_EQ(problems(), "") << (scene_panel ? "with" : "without") << " the scene panel";
+  }
+  window().model()->set_scene_panel(true);
+  window().setFixedSize(900, 480);
+  EXPECT_NE(problems(), "") << "the control: 900 x 480";
 }
 
 TEST(AnalysisFrameTicks, AreRoundFramesFarEnoughApartForTheirLabels) {

@@ -361,9 +361,13 @@ TEST_F(AnimationLayoutTest, ComparisonIsLegibleInPresentationAtProjectorSize) {
     const std::vector<QString> problems = animation().text_problems();
     for (const QString& p : problems)
       ADD_FAILURE() << names.size() << " policies: " << p.toStdString();
-    const std::vector<QRectF>& rects = animation().panel_rects();
+    // What each heat map shows, as drawn (the panels hug it: their width says nothing more).
+    // Two policies hold the lessons' 300 px; three and four put the swing's tall plane in
+    // seven and nine panels, and what each heat map draws is narrower (110.7 px measured with
+    // four; the cells they used to be measured by were 200 px, mostly empty).
+    const std::vector<QRectF> rects = animation().drawn_content_rects();
     ASSERT_EQ(rects.size(), 2 * names.size() + 1);
-    const double least = names.size() == 2 ? 300.0 : 200.0;
+    const double least = names.size() == 2 ? 300.0 : 100.0;
     for (size_t k = names.size() + 1; k < rects.size(); ++k) {
       EXPECT_GE(rects[k].width(), least) << names.size() << " policies, heat map " << k;
     }
@@ -473,6 +477,23 @@ TEST_F(AnimationLayoutTest, ContentFramingFillsThePanelsAndChangesNoError) {
   EXPECT_TRUE(window().model()->frames_content());
 }
 
+// hull_share, the measure of panel_fill in the flow and world views: the hull of a set with
+// points inside it is its corners' polygon (a triangle's area by base times height over 2);
+// a diamond over the picture's edge counts only its part inside (four corner triangles cut
+// off, by hand); fewer than three points, or three on a line, cover nothing (the controls).
+TEST(HullShare, CoversTheConvexHullInsideThePicture) {
+  const QRectF picture(0, 0, 100, 50);
+  const std::vector<QPointF> triangle = {{10, 10}, {90, 10}, {50, 40}, {50, 20}, {40, 15}};
+  EXPECT_NEAR(hull_share(triangle, picture), 80.0 * 30.0 / 2.0 / 5000.0, 1e-9);
+  // A diamond of half-diagonal 40 about (50, 25): of its 3200 square units, the parts above
+  // y = 0 and below y = 50 are gone, each a triangle of height 15 and base 30.
+  const std::vector<QPointF> diamond = {{10, 25}, {50, -15}, {90, 25}, {50, 65}};
+  EXPECT_NEAR(hull_share(diamond, picture), (3200.0 - 2 * 225.0) / 5000.0, 1e-9);
+  EXPECT_EQ(hull_share({{0, 0}, {10, 10}}, picture), 0.0);
+  EXPECT_NEAR(hull_share({{0, 0}, {10, 10}, {20, 20}}, picture), 0.0, 1e-12);
+  EXPECT_EQ(hull_share(triangle, QRectF()), 0.0);
+}
+
 // A plane seen from behind (a two-sided sheet, drawn by every engine) keeps its dashed exact
 // outline; a one-sided polygon (a solid's face) seen from behind has none, as it is culled.
 TEST(ExactOutlines, TwoSidedSheetIsOutlinedFromBehindAndAOneSidedFaceIsNot) {
@@ -508,18 +529,22 @@ TEST(BoundsAround, UnitesTheFramesWithinReach) {
   EXPECT_EQ(bounds_around(bounds, 0, -1), QRectF(0, 0, 101, 25));
 }
 
-// The comparison on a projector with the scene panel shown and hidden, at 1920 x 1080: no
-// text is elided, off the canvas or overlapping (the exact panel's title, the colour bar's
-// caption and labels among them), and every panel title has one font size. (At 1366 x 768
-// with the scene panel the captions leave the images no height: not yet held here.)
+// The comparison on a projector with the scene panel shown and hidden, at 1920 x 1080, and
+// at 1366 x 768 with it hidden (the lessons' state; in presentation mode the short view
+// leaves out the engine's rows of controls and the readout): no text is elided, off the
+// canvas or overlapping (the exact panel's title, the colour bar's caption and labels among
+// them), and every panel title has one font size. The control: at 1366 x 768 with the scene
+// panel shown the measure finds texts over each other (not yet fixed: the level legend runs
+// into the colour bar's caption, and the images are a few tens of pixels tall).
 TEST_F(AnimationLayoutTest, ComparisonTextsAreWholeWithAndWithoutTheScenePanel) {
   show_comparison();
   ASSERT_TRUE(model().set_source({"script", "swing", ""}));
   ASSERT_TRUE(window().model()->set_compared({"affine", "perspective"}));
   window().model()->set_presentation(true);
   window().play_frames(10);
-  for (const QSize size : {QSize(1920, 1080)}) {
+  for (const QSize size : {QSize(1920, 1080), QSize(1366, 768)}) {
     for (bool scene_panel : {true, false}) {
+      if (size.width() == 1366 && scene_panel) continue;  // the control, below
       window().resize(size);
       window().model()->set_scene_panel(scene_panel);
       QApplication::processEvents();
@@ -541,6 +566,10 @@ TEST_F(AnimationLayoutTest, ComparisonTextsAreWholeWithAndWithoutTheScenePanel) 
       for (double h : title_heights) EXPECT_NEAR(h, title_heights[0], 0.5) << where;
     }
   }
+  window().model()->set_scene_panel(true);
+  QApplication::processEvents();
+  animation().render_image();
+  EXPECT_FALSE(animation().text_problems().empty()) << "the control: 1366 x 768, scene panel";
 }
 
 // The colour bar in a narrow cell: its caption breaks onto two lines, each within the bar's

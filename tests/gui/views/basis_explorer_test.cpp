@@ -278,5 +278,38 @@ TEST(BasisExplorer, TheFuturesShowAsTwoPicturesSideBySide) {
   }
 }
 
+// In the window at 1920 x 1080 in presentation mode, with the scene panel shown and hidden,
+// the explorer's worlds column runs down the whole body, so the futures' canvas is tall
+// enough for the two pictures over the chart (14 label heights), and its texts stay whole;
+// the canvas at the futures' last frame matches its baseline (scene panel hidden). The
+// control: the same canvas painted without a texture (the two pictures empty) does not.
+TEST_F(BasisExplorerWindow, TheFuturesShowAsTwoPicturesInTheWindowAt1080p) {
+  window().model()->set_presentation(true);
+  ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
+  auto* futures = basis().findChild<ImageCanvas*>(QStringLiteral("explorer_futures"));
+  ASSERT_NE(futures, nullptr);
+  for (bool scene_panel : {true, false}) {
+    window().model()->set_scene_panel(scene_panel);
+    window().resize(1920, 1080);
+    QApplication::processEvents();
+    basis().render_image();
+    EXPECT_GE(futures->height(), 14.0 * panel().smallest_text_px())
+        << (scene_panel ? "with" : "without") << " the scene panel: " << futures->height();
+    EXPECT_EQ(measure("cut_texts"), 0.0) << (scene_panel ? "with" : "without");
+  }
+  const ExplorerResult& r = panel().result();
+  ASSERT_TRUE(r.futures_played);
+  EXPECT_EQ(panel().futures_frame(), r.futures.frames_played);
+  const QImage shown = futures->image();
+  test::expect_matches_baseline(shown, QStringLiteral("explorer-futures-presentation"), 480);
+  const QImage baseline(QStringLiteral(OFLAB_GUI_BASELINES "/explorer-futures-presentation.png"));
+  ASSERT_FALSE(baseline.isNull());
+  const QImage empty = paint_explorer_futures(r, panel().futures_frame(), QImage(),
+                                              window().model()->scene()->scene().camera,
+                                              shown.size(), view_theme(true));
+  EXPECT_LT(psnr_db(baseline, scaled_rgb(empty, baseline.size())), kBaselinePsnrDb)
+      << "the control: the futures without their pictures' texture";
+}
+
 }  // namespace
 }  // namespace oflab::test

@@ -89,6 +89,47 @@ TEST(FlowRenderer, ZoomToPlaneKeepsTheSceneOutOfTheCaption) {
   }
 }
 
+// Twice the signed area of `polygon` (shoelace).
+double twice_area(const QPolygonF& polygon) {
+  double sum = 0.0;
+  for (int k = 0; k < polygon.size(); ++k) {
+    const QPointF& a = polygon[k];
+    const QPointF& b = polygon[(k + 1) % polygon.size()];
+    sum += a.x() * b.y() - b.x() * a.y();
+  }
+  return sum;
+}
+
+// The panel_fill measure of the flow view: the plane's image over the scene region. The plane
+// zoomed to fit lies inside the region, so the share is its outline's area (shoelace over the
+// corners in centred pixels, times the square of the view's scale read off the outline's box)
+// over the region's (the view left of the legend strip, under the caption). The control:
+// without the zoom to the plane the share is smaller.
+TEST(FlowRenderer, PlaneShareIsThePlanesImageOverTheSceneRegion) {
+  const QSize size(1400, 900);
+  double shares[2] = {0, 0};
+  for (bool zoom : {true, false}) {
+    FlowRenderer renderer;
+    renderer.set_theme(view_theme(true));
+    FlowDisplay display;
+    display.zoom_to_plane = zoom;
+    renderer.update(demo_context(), display, QStringLiteral("frame 0, t = 0.00 s"));
+    shares[zoom ? 0 : 1] = renderer.plane_share(size);
+    if (!zoom) continue;
+    const double scale =
+        renderer.outline_rect(size).width() / renderer.outline().boundingRect().width();
+    const QRectF region = renderer.scene_rect(size);
+    EXPECT_TRUE(region.contains(renderer.outline_rect(size)));
+    EXPECT_NEAR(region.left(), 0.0, 1e-9);
+    EXPECT_GT(region.top(), renderer.caption_rect(size).bottom());
+    const double expected = std::abs(twice_area(renderer.outline())) / 2.0 * scale * scale /
+                            (region.width() * region.height());
+    EXPECT_NEAR(shares[0], expected, 1e-6);
+  }
+  EXPECT_GT(shares[0], 0.25);
+  EXPECT_LT(shares[1], shares[0]) << "the control: the whole image framed";
+}
+
 // Pixels of `image` inside `rect` whose colour is the colour bar's lowest (viridis at 0).
 int bar_bottom_pixels(const QImage& image, const QRect& rect) {
   const Rgb8 c = magnitude_colour(0.0);

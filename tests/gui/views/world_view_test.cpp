@@ -290,6 +290,29 @@ TEST_F(WorldViewTest, ViewFromTheCameraShowsTheTexturedPlane) {
   }
 }
 
+// The panel_fill measure of the world view (WorldView::drawn_share): through the eye only the
+// plane is drawn, so the hull of its corners is the plane's image, which holds every pixel the
+// plane changes (plane_share above, counted independently from the pixels; its texture's
+// transparent parts change none) and not far more; the orbit's hull adds the eye and its
+// image plane. The control: the camera zoomed twice as close covers more of the picture.
+TEST_F(WorldViewTest, DrawnShareIsTheHullOfWhatTheViewDraws) {
+  show_world(true);
+  window().model()->set_world_camera(WorldCamera::kEye);
+  const double pixels = plane_share(world());
+  const double hull = world().drawn_share();
+  RecordProperty("eye_hull", std::to_string(hull));
+  RecordProperty("eye_pixels", std::to_string(pixels));
+  EXPECT_GE(hull, pixels);
+  EXPECT_LT(hull, 3.0 * pixels);
+  world().reset_camera();
+  const double orbit = world().drawn_share();
+  EXPECT_GT(orbit, 0.05);
+  EXPECT_LT(orbit, 1.0);
+  world().renderer()->GetActiveCamera()->Zoom(2.0);
+  world().refresh();
+  EXPECT_GT(world().drawn_share(), 1.5 * orbit) << "the control: a closer camera";
+}
+
 TEST_F(WorldViewTest, ZeroVectorsAreNotLabelledAndVelocityHasItsUnit) {
   show_world(false);
   QStringList texts;
