@@ -1,0 +1,129 @@
+#include "study/psychometric.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace oflab {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The fit's view of the trials: log errors and answers, so one evaluation costs two exps.
+struct LogTrials {
+  std::vector<double> log_error;
+  std::vector<char> correct;
+};
+
+LogTrials log_trials(const std::vector<TrialOutcome>& trials) {
+  LogTrials t;
+  for (const TrialOutcome& trial : trials) {
+    t.log_error.push_back(std::log(trial.error_px));
+    t.correct.push_back(trial.correct ? 1 : 0);
+  }
+  return t;
+}
+
+double weibull_k(double lapse) {
+  return -std::log(1.0 - (kThresholdCorrect - kGuessRate) / (1.0 - kGuessRate - lapse));
+}
+
+double clamp_probability(double p) { return std::min(std::max(p, 1e-12), 1.0 - 1e-12); }
+
+// log L at log threshold `log_t`.
+double log_likelihood_at(const LogTrials& t, double log_t, double slope, double lapse) {
+  const double k = weibull_k(lapse), span = 1.0 - kGuessRate - lapse;
+  double sum = 0.0;
+  for (size_t i = 0; i < t.log_error.size(); ++i) {
+    const double seen = 1.0 - std::exp(-k * std::exp(slope * (t.log_error[i] - log_t)));
+    const double p = clamp_probability(kGuessRate + span * seen);
+    sum += t.correct[i] ? std::log(p) : std::log(1.0 - p);
+  }
+  return sum;
+}
+
+ThresholdFit fit_log_trials(const LogTrials& t, const FitSettings& s) {
+  constexpr int kGrid = 12;
+  const double lo = std::log(s.min_px), hi = std::log(s.max_px), step = (hi - lo) / (kGrid - 1);
+  int best = 0;
+  double best_ll = -1e300;
+  for (int i = 0; i < kGrid; ++i) {
+    const double ll = log_likelihood_at(t, lo + i * step, s.slope, s.lapse);
+    if (ll > best_ll) best_ll = ll, best = i;
+  }
+  // Golden-section search between the best grid point's neighbours.
+  double a = lo + std::max(best - 1, 0) * step, b = lo + std::min(best + 1, kGrid - 1) * step;
+  const double r = (std::sqrt(5.0) - 1.0) / 2.0;
+  double c = b - r * (b - a), d = a + r * (b - a);
+  double fc = log_likelihood_at(t, c, s.slope, s.lapse),
+         fd = log_likelihood_at(t, d, s.slope, s.lapse);
+  while (b - a > 1e-5) {
+    if (fc > fd) {
+      b = d, d = c, fd = fc, c = b - r * (b - a), fc = log_likelihood_at(t, c, s.slope, s.lapse);
+    } else {
+      a = c, c = d, fc = fd, d = a + r * (b - a), fd = log_likelihood_at(t, d, s.slope, s.lapse);
+    }
+  }
+  ThresholdFit fit;
+  const double log_t = 0.5 * (a + b);
+  fit.threshold_px = std::exp(log_t);
+  fit.log_likelihood = log_likelihood_at(t, log_t, s.slope, s.lapse);
+  if (best_ll > fit.log_likelihood) {  // a grid end beat the refinement
+    fit.threshold_px = std::exp(lo + best * step), fit.log_likelihood = best_ll;
+  }
+  fit.at_bound = log_t - lo < 1e-3 || hi - log_t < 1e-3;
+  return fit;
+}
+
+// The value at fraction `q` of sorted `v` (non-empty), interpolated between order statistics.
+double percentile(const std::vector<double>& v, double q) {
+  const double at = q * double(v.size() - 1);
+  const size_t i = size_t(std::floor(at));
+  if (i + 1 >= v.size()) return v.back();
+  return v[i] + (at - double(i)) * (v[i + 1] - v[i]);
+}
+
+}  // namespace
+
+double PsychometricFunction::correct(double error_px) const {
+  const double seen =
+      error_px <= 0.0
+          ? 0.0
+          : 1.0 - std::exp(-weibull_k(lapse) * std::pow(error_px / threshold_px, slope));
+  return kGuessRate + (1.0 - kGuessRate - lapse) * seen;
+}
+
+double log_likelihood(const std::vector<TrialOutcome>& trials, const PsychometricFunction& f) {
+  double sum = 0.0;
+  for (const TrialOutcome& trial : trials) {
+    const double p = clamp_probability(f.correct(trial.error_px));
+    sum += trial.correct ? std::log(p) : std::log(1.0 - p);
+  }
+  return sum;
+}
+
+ThresholdFit fit_threshold(const std::vector<TrialOutcome>& trials, const FitSettings& settings) {
+  return fit_log_trials(log_trials(trials), settings);
+}
+
+ThresholdInterval bootstrap_interval(const std::vector<TrialOutcome>& trials, double fitted_px,
+                                     const FitSettings& settings, int replicates, double level,
+                                     StudyRandom& random) {
+  const PsychometricFunction fitted{fitted_px, settings.slope, settings.lapse};
+  LogTrials t = log_trials(trials);
+  std::vector<double> p;
+  for (const TrialOutcome& trial : trials) p.push_back(fitted.correct(trial.error_px));
+  std::vector<double> refits;
+  for (int b = 0; b < replicates; ++b) {
+    for (size_t i = 0; i < p.size(); ++i) t.correct[i] = random.chance(p[i]) ? 1 : 0;
+    refits.push_back(fit_log_trials(t, settings).threshold_px);
+  }
+  std::sort(refits.begin(), refits.end());
+  return {percentile(refits, (1.0 - level) / 2.0), percentile(refits, (1.0 + level) / 2.0)};
+}
+
+double arcmin_of_pixels(double px, double pixels_per_inch, double distance_cm) {
+  const double size_cm = px / pixels_per_inch * 2.54;
+  return 2.0 * std::atan(size_cm / (2.0 * distance_cm)) * 180.0 / kPi * 60.0;
+}
+
+}  // namespace oflab
