@@ -2,15 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
 
 #include "study/psychometric.h"
 
 namespace oflab {
 namespace {
 
-constexpr double kLargeStep = 0.2;  // log10 units, until the second reversal
-constexpr double kSmallStep = 0.1;
-constexpr int kDown = 3;  // correct answers in a row that lower the level
+constexpr double kLargeStep = 0.1;  // log10 units, until the second reversal
+constexpr double kSmallStep = 0.05;
+constexpr int kDown = 3;                // correct answers in a row that lower the level
+constexpr double kStartBelowMax = 0.8;  // log10 units: the first level, clearly visible
 
 std::vector<double> log_spaced(double lo, double hi, int n) {
   std::vector<double> v;
@@ -26,7 +30,7 @@ double probability_within(double p) { return std::min(std::max(p, 1e-9), 1.0 - 1
 
 Staircase::Staircase(const MethodSettings& s)
     : log_min_(std::log10(s.min_px)), log_max_(std::log10(s.max_px)) {
-  log_level_ = s.start_px > 0.0 ? std::log10(s.start_px) : log_max_ - 4 * kLargeStep;
+  log_level_ = s.start_px > 0.0 ? std::log10(s.start_px) : log_max_ - kStartBelowMax;
   log_level_ = std::min(std::max(log_level_, log_min_), log_max_);
 }
 
@@ -36,7 +40,7 @@ void Staircase::record(double requested_px, double /*shown_px*/, bool correct) {
   int change = 0;
   if (!correct) {
     change = +1;
-  } else if (++run_ == kDown) {
+  } else if (++run_ == (reversals_.empty() ? 1 : kDown)) {
     change = -1;
   }
   if (change == 0) return;
@@ -57,36 +61,58 @@ double Staircase::estimate_px() const {
 
 // --- QUEST+ --------------------------------------------------------------------------------
 
-QuestPlus::QuestPlus(const MethodSettings& s, const QuestPlusGrid& grid) {
-  for (double t : log_spaced(s.min_px, s.max_px, grid.thresholds)) {
+static std::shared_ptr<const QuestPlus::Tables> make_tables(const MethodSettings& s,
+                                                            const QuestPlusGrid& grid) {
+  auto t = std::make_shared<QuestPlus::Tables>();
+  for (double threshold : log_spaced(s.min_px, s.max_px, grid.thresholds)) {
     for (double slope : grid.slopes) {
-      for (double lapse : grid.lapses) parameters_.push_back({t, slope, lapse});
+      for (double lapse : grid.lapses) t->parameters.push_back({threshold, slope, lapse});
     }
   }
-  stimuli_ = log_spaced(s.min_px, s.max_px, grid.stimuli);
-  for (double x : stimuli_) {
-    for (const Parameters& p : parameters_) {
+  t->stimuli = log_spaced(s.min_px, s.max_px, grid.stimuli);
+  for (double x : t->stimuli) {
+    for (const QuestPlus::Parameters& p : t->parameters) {
       const double pc =
           probability_within(PsychometricFunction{p.threshold_px, p.slope, p.lapse}.correct(x));
-      correct_.push_back(pc);
-      log_correct_.push_back(std::log(pc));
-      log_wrong_.push_back(std::log(1.0 - pc));
+      t->correct.push_back(pc);
+      t->log_correct.push_back(std::log(pc));
+      t->log_wrong.push_back(std::log(1.0 - pc));
     }
   }
-  posterior_.assign(parameters_.size(), 1.0 / double(parameters_.size()));
-  log_posterior_.assign(parameters_.size(), std::log(posterior_[0]));
+  return t;
+}
+
+// The tables of one range and grid, built on first use (under a lock: a window may run
+// studies on more than one thread).
+static std::shared_ptr<const QuestPlus::Tables> shared_tables(const MethodSettings& s,
+                                                              const QuestPlusGrid& grid) {
+  using Key = std::tuple<double, double, int, int, std::vector<double>, std::vector<double>>;
+  static std::mutex lock;
+  static std::map<Key, std::shared_ptr<const QuestPlus::Tables>> built;
+  const std::lock_guard<std::mutex> hold(lock);
+  auto& tables =
+      built[Key{s.min_px, s.max_px, grid.thresholds, grid.stimuli, grid.slopes, grid.lapses}];
+  if (!tables) tables = make_tables(s, grid);
+  return tables;
+}
+
+QuestPlus::QuestPlus(const MethodSettings& s, const QuestPlusGrid& grid)
+    : tables_(shared_tables(s, grid)) {
+  const size_t n = tables_->parameters.size();
+  posterior_.assign(n, 1.0 / double(n));
+  log_posterior_.assign(n, std::log(posterior_[0]));
   choose_next();
 }
 
 double QuestPlus::expected_entropy(int s) const {
   // For outcome r with likelihoods L_p: Z_r = sum q_p L_p, the new posterior q_p L_p / Z_r,
   // whose entropy is log Z_r - sum q_p L_p log(q_p L_p) / Z_r; weighted by Z_r and summed.
-  const size_t n = parameters_.size();
+  const size_t n = tables_->parameters.size();
   // log(q_p L_p) = log q_p + log L_p from the tables: no logarithm in the loop.
   const size_t at = size_t(s) * n;
-  const double* pc = &correct_[at];
-  const double* log_pc = &log_correct_[at];
-  const double* log_pw = &log_wrong_[at];
+  const double* pc = &tables_->correct[at];
+  const double* log_pc = &tables_->log_correct[at];
+  const double* log_pw = &tables_->log_wrong[at];
   double z[2] = {0.0, 0.0}, m[2] = {0.0, 0.0};
   for (size_t p = 0; p < n; ++p) {
     const double q = posterior_[p], lq = log_posterior_[p];
@@ -103,24 +129,24 @@ double QuestPlus::expected_entropy(int s) const {
 
 void QuestPlus::choose_next() {
   double best = 1e300;
-  for (int s = 0; s < int(stimuli_.size()); ++s) {
+  for (int s = 0; s < int(tables_->stimuli.size()); ++s) {
     const double h = expected_entropy(s);
     if (h < best - 1e-12) best = h, next_ = s;
   }
 }
 
-double QuestPlus::next_error_px() const { return stimuli_[size_t(next_)]; }
+double QuestPlus::next_error_px() const { return tables_->stimuli[size_t(next_)]; }
 
 void QuestPlus::record(double /*requested_px*/, double shown_px, bool correct) {
   double sum = 0.0;
-  for (size_t p = 0; p < parameters_.size(); ++p) {
-    const Parameters& k = parameters_[p];
+  for (size_t p = 0; p < parameters().size(); ++p) {
+    const Parameters& k = parameters()[p];
     const double pc = probability_within(
         PsychometricFunction{k.threshold_px, k.slope, k.lapse}.correct(shown_px));
     posterior_[p] *= correct ? pc : 1.0 - pc;
     sum += posterior_[p];
   }
-  for (size_t p = 0; p < parameters_.size(); ++p) {
+  for (size_t p = 0; p < parameters().size(); ++p) {
     posterior_[p] /= sum;
     // A posterior that underflowed to 0 contributes nothing; its log is kept finite.
     log_posterior_[p] = std::log(std::max(posterior_[p], 1e-300));
@@ -130,15 +156,15 @@ void QuestPlus::record(double /*requested_px*/, double shown_px, bool correct) {
 
 double QuestPlus::estimate_px() const {
   double mean = 0.0;
-  for (size_t p = 0; p < parameters_.size(); ++p)
-    mean += posterior_[p] * std::log(parameters_[p].threshold_px);
+  for (size_t p = 0; p < parameters().size(); ++p)
+    mean += posterior_[p] * std::log(parameters()[p].threshold_px);
   return std::exp(mean);
 }
 
 double QuestPlus::log10_threshold_sd() const {
   double mean = 0.0, square = 0.0;
-  for (size_t p = 0; p < parameters_.size(); ++p) {
-    const double l = std::log10(parameters_[p].threshold_px);
+  for (size_t p = 0; p < parameters().size(); ++p) {
+    const double l = std::log10(parameters()[p].threshold_px);
     mean += posterior_[p] * l, square += posterior_[p] * l * l;
   }
   return std::sqrt(std::max(square - mean * mean, 0.0));

@@ -1,9 +1,11 @@
 // The adaptive methods that choose each trial's error level (manual/study.md), a registry
 // (adaptive_methods()) that the study files, `oflab-cli study` and the front-ends read:
 //  - "staircase": 3-down-1-up on a log scale (Levitt 1971): three correct answers in a row
-//    lower the error by one step, one wrong answer raises it; steps of 0.2 log10 units until
-//    the second reversal, 0.1 after. It converges on 79.4 % correct. Its own estimate is the
-//    geometric mean of the reversal levels after the first two.
+//    lower the error by one step, one wrong answer raises it (before the first reversal each
+//    correct answer lowers it, to come down fast from the clearly visible first level, 0.8
+//    log10 units below the range's top); steps of 0.1 log10 units until
+//    the second reversal, 0.05 after (2 dB, then 1 dB of amplitude). It converges on 79.4 %
+//    correct. Its own estimate is the geometric mean of the reversal levels after the first two.
 //  - "quest+": QUEST+ (Watson 2017, Journal of Vision 17(3):10): a posterior over a grid of
 //    threshold t (the 75 %-correct error, study/psychometric.h), slope and lapse rate; each
 //    trial shows the error of the stimulus grid whose expected posterior entropy after the
@@ -24,7 +26,7 @@ namespace oflab {
 struct MethodSettings {
   double min_px = 0.1;  // the error range it may request, pixels (0 < min < max)
   double max_px = 10.0;
-  // The staircase's first level (0: 4 steps of 0.2 log10 units below max_px).
+  // The staircase's first level (0: 0.8 log10 units below max_px).
   double start_px = 0.0;
 };
 
@@ -74,9 +76,9 @@ class Staircase : public AdaptiveMethod {
 // The QUEST+ grids: thresholds and stimuli log-spaced over [min_px, max_px], these slopes and
 // lapse rates, a uniform prior.
 struct QuestPlusGrid {
-  int thresholds = 40;
-  int stimuli = 40;
-  std::vector<double> slopes{1.5, 2.5, 3.5, 5.0, 7.0};
+  int thresholds = 80;  // 6 % apart over the shipped studies' 0.1..10 px
+  int stimuli = 80;
+  std::vector<double> slopes{1.5, 2.5, 3.5, 5.0, 7.0, 10.0};
   std::vector<double> lapses{0.0, 0.02, 0.05};
 };
 
@@ -91,21 +93,26 @@ class QuestPlus : public AdaptiveMethod {
   struct Parameters {
     double threshold_px, slope, lapse;
   };
-  const std::vector<Parameters>& parameters() const { return parameters_; }
+  // The grids and the likelihood tables, built once per range and grid and shared by every
+  // QUEST+ of them (a study's conditions, a simulation's sessions).
+  struct Tables {
+    std::vector<Parameters> parameters;
+    std::vector<double> stimuli;
+    std::vector<double> correct;  // p(correct | stimulus s, parameters p) at s * P + p
+    std::vector<double> log_correct, log_wrong;  // log p and log(1 - p) at s * P + p
+  };
+  const std::vector<Parameters>& parameters() const { return tables_->parameters; }
   // The posterior over parameters() (sums to 1).
   const std::vector<double>& posterior() const { return posterior_; }
   // The stimulus grid, pixels.
-  const std::vector<double>& stimuli() const { return stimuli_; }
+  const std::vector<double>& stimuli() const { return tables_->stimuli; }
   // The expected entropy (nats) of the posterior after a trial at stimulus `s` of stimuli().
   double expected_entropy(int s) const;
   // The posterior standard deviation of log10 t.
   double log10_threshold_sd() const;
 
  private:
-  std::vector<Parameters> parameters_;
-  std::vector<double> stimuli_;
-  std::vector<double> correct_;  // p(correct | stimulus s, parameters p) at s * P + p
-  std::vector<double> log_correct_, log_wrong_;  // log p and log(1 - p) at s * P + p
+  std::shared_ptr<const Tables> tables_;
   std::vector<double> posterior_, log_posterior_;
   int next_ = 0;  // the stimulus of least expected entropy
   void choose_next();

@@ -41,17 +41,32 @@ double log_likelihood_at(const LogTrials& t, double log_t, double slope, double 
   return sum;
 }
 
-ThresholdFit fit_log_trials(const LogTrials& t, const FitSettings& s) {
-  constexpr int kGrid = 12;
-  const double lo = std::log(s.min_px), hi = std::log(s.max_px), step = (hi - lo) / (kGrid - 1);
+// The best of `n` log thresholds evenly spaced over [lo, hi] (n >= 2); its index.
+int best_of_grid(const LogTrials& t, const FitSettings& s, double lo, double hi, int n,
+                 double* best_ll) {
   int best = 0;
-  double best_ll = -1e300;
-  for (int i = 0; i < kGrid; ++i) {
-    const double ll = log_likelihood_at(t, lo + i * step, s.slope, s.lapse);
-    if (ll > best_ll) best_ll = ll, best = i;
+  *best_ll = -1e300;
+  for (int i = 0; i < n; ++i) {
+    const double ll = log_likelihood_at(t, lo + i * (hi - lo) / (n - 1), s.slope, s.lapse);
+    if (ll > *best_ll) *best_ll = ll, best = i;
   }
-  // Golden-section search between the best grid point's neighbours.
-  double a = lo + std::max(best - 1, 0) * step, b = lo + std::min(best + 1, kGrid - 1) * step;
+  return best;
+}
+
+ThresholdFit fit_log_trials(const LogTrials& t, const FitSettings& s) {
+  // A coarse grid over the range, a fine grid between the best point's neighbours (a steep
+  // function's likelihood can have several local maxima there), then golden-section search
+  // between the fine grid's neighbours of its best.
+  constexpr int kCoarse = 12, kFine = 16;
+  const double lo = std::log(s.min_px), hi = std::log(s.max_px);
+  double ll_coarse = 0.0, ll_fine = 0.0;
+  const double coarse = (hi - lo) / (kCoarse - 1);
+  const int i = best_of_grid(t, s, lo, hi, kCoarse, &ll_coarse);
+  const double lo2 = lo + std::max(i - 1, 0) * coarse,
+               hi2 = lo + std::min(i + 1, kCoarse - 1) * coarse;
+  const double fine = (hi2 - lo2) / (kFine - 1);
+  const int j = best_of_grid(t, s, lo2, hi2, kFine, &ll_fine);
+  double a = lo2 + std::max(j - 1, 0) * fine, b = lo2 + std::min(j + 1, kFine - 1) * fine;
   const double r = (std::sqrt(5.0) - 1.0) / 2.0;
   double c = b - r * (b - a), d = a + r * (b - a);
   double fc = log_likelihood_at(t, c, s.slope, s.lapse),
@@ -64,13 +79,17 @@ ThresholdFit fit_log_trials(const LogTrials& t, const FitSettings& s) {
     }
   }
   ThresholdFit fit;
-  const double log_t = 0.5 * (a + b);
-  fit.threshold_px = std::exp(log_t);
-  fit.log_likelihood = log_likelihood_at(t, log_t, s.slope, s.lapse);
-  if (best_ll > fit.log_likelihood) {  // a grid end beat the refinement
-    fit.threshold_px = std::exp(lo + best * step), fit.log_likelihood = best_ll;
+  double log_fit = 0.5 * (a + b);
+  fit.log_likelihood = log_likelihood_at(t, log_fit, s.slope, s.lapse);
+  if (ll_fine > fit.log_likelihood) log_fit = lo2 + j * fine, fit.log_likelihood = ll_fine;
+  // On a plateau that reaches an end of the range (every answer right, or wrong) the data do
+  // not bound the threshold on that side: the fit is that end, flagged.
+  for (const double end : {lo, hi}) {
+    if (log_likelihood_at(t, end, s.slope, s.lapse) >= fit.log_likelihood - 1e-9) {
+      log_fit = end, fit.at_bound = true;
+    }
   }
-  fit.at_bound = log_t - lo < 1e-3 || hi - log_t < 1e-3;
+  fit.threshold_px = std::exp(log_fit);
   return fit;
 }
 
