@@ -6,6 +6,7 @@
 
 #include "cli/cli_args.h"
 #include "study/adaptive_methods.h"
+#include "study/engine_display.h"
 #include "study/study_analysis.h"
 #include "study/study_file.h"
 #include "study/trial_csv.h"
@@ -18,9 +19,11 @@ using nlohmann::ordered_json;
 constexpr const char* kUsage =
     "oflab-cli study list | simulate --study NAME|FILE --observer-threshold PX "
     "[--observer-slope S] [--observer-lapse L] [--sessions N] [--seed S] [--method M|all] "
-    "[--replicates B] [--late-fraction F] [--json] | session --study NAME|FILE "
+    "[--replicates B] [--late-fraction F] [--shown engine|requested] [--json] | session --study "
+    "NAME|FILE "
     "--observer-threshold PX --csv FILE [--observer NAME] [--method M] [--seed S] [--ppi P] "
-    "[--force] | analyse CSV... [--replicates B] [--seed S] [--slope S] [--lapse L] [--json]";
+    "[--force] | analyse CSV... [--replicates B] [--seed S] [--slope S] [--lapse L] [--json] | "
+    "ladder --study NAME|FILE [--json]";
 
 inline constexpr Limit kSessions{"sessions", "", 1.0, 100000.0, true};
 inline constexpr Limit kReplicates{"bootstrap replicates", "", 20.0, 100000.0, true};
@@ -90,8 +93,13 @@ int simulate(const CommandArgs& args, std::ostream& out) {
                                            {"--method", 1},
                                            {"--replicates", 1},
                                            {"--late-fraction", 1},
+                                           {"--shown", 1},
                                            {"--json", 0}});
   const Study study = study_argument(a);
+  const std::string shown = a.text_or("--shown", "engine");
+  if (shown != "engine" && shown != "requested") {
+    throw UsageError("--shown: '" + shown + "' is not one of engine, requested");
+  }
   SimulationSettings s;
   s.observer = observer_argument(a, study);
   s.sessions = a.has("--sessions") ? a.integer_in("--sessions", kSessions) : 100;
@@ -99,6 +107,7 @@ int simulate(const CommandArgs& args, std::ostream& out) {
   s.methods = methods_argument(a, "all");
   s.replicates = a.has("--replicates") ? a.integer_in("--replicates", kReplicates) : 200;
   s.late_fraction = a.has("--late-fraction") ? a.number_in("--late-fraction", kLateFraction) : 0.0;
+  if (shown == "engine") s.display = engine_error_display(study);
   const std::vector<SimulationSummary> results = simulate_study(study, s);
   ordered_json j = {{"study", study.name},
                     {"sessions", s.sessions},
@@ -107,7 +116,7 @@ int simulate(const CommandArgs& args, std::ostream& out) {
                      {{"threshold_px", s.observer.threshold_px},
                       {"slope", s.observer.slope},
                       {"lapse", s.observer.lapse}}},
-                    {"shown_error", "as requested"},
+                    {"shown_error", shown == "engine" ? "measured by the engine" : "as requested"},
                     {"bootstrap_replicates", s.replicates},
                     {"results", ordered_json::array()}};
   for (const SimulationSummary& r : results) {
@@ -159,7 +168,7 @@ int session(const CommandArgs& args, std::ostream& out) {
   const std::uint64_t seed = seed_argument(a, study.seed);
   const double ppi = a.has("--ppi") ? a.number_in("--ppi", kPpi) : 96.0;
   StudySession run(study, method, seed);
-  simulate_answers(run, seed, observer, [](int, double requested) { return requested; });
+  simulate_answers(run, seed, observer, engine_error_display(study));
   write_trial_csv(csv, trial_rows(run, name, ppi), overwrite);
   out << "wrote " << csv << ": " << run.trials().size() << " trials of " << study.name << " ("
       << method << ", seed " << seed << ")\n";
@@ -230,6 +239,26 @@ int analyse(const CommandArgs& args, std::ostream& out) {
   return 0;
 }
 
+// Each condition's ladder: the thresholds and the errors the engine measured at them.
+int ladder(const CommandArgs& args, std::ostream& out) {
+  const CliArgs a(options_after(args, 1), {{"--study", 1}, {"--json", 0}});
+  const Study study = study_argument(a);
+  ordered_json j = {{"study", study.name}, {"conditions", ordered_json::array()}};
+  for (const StudyCondition& c : study.conditions) {
+    const ErrorLadder l = play_error_ladder(c, study.min_px, study.max_px, kLadderSteps);
+    j["conditions"].push_back(
+        {{"condition", c.name}, {"threshold_px", l.thresholds_px}, {"measured_px", l.measured_px}});
+    if (a.has("--json")) continue;
+    out << c.name << " (" << study_policy_name(c.policy) << ", " << c.speed_deg_s << " deg/s)\n";
+    for (size_t i = 0; i < l.thresholds_px.size(); ++i) {
+      out << "  threshold " << std::setw(10) << l.thresholds_px[i] << " px  measured "
+          << l.measured_px[i] << " px\n";
+    }
+  }
+  if (a.has("--json")) out << j.dump(2) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 Command study_command() {
@@ -247,7 +276,8 @@ int run_study_command(const CommandArgs& args, std::ostream& out, std::ostream& 
   if (action == "simulate") return simulate(args, out);
   if (action == "session") return session(args, out);
   if (action == "analyse") return analyse(args, out);
-  throw UsageError("unknown action '" + action + "' (list, simulate, session, analyse)");
+  if (action == "ladder") return ladder(args, out);
+  throw UsageError("unknown action '" + action + "' (list, simulate, session, analyse, ladder)");
 }
 
 }  // namespace oflab

@@ -48,7 +48,8 @@ TEST(StudyFile, TheShippedStudiesReadWithTheirConditions) {
   EXPECT_EQ(full.trials, 40);
   EXPECT_EQ(full.conditions.size(), 5u);
   EXPECT_STREQ(study_policy_name(full.conditions[2].policy), "perspective");
-  EXPECT_STREQ(study_texture_name(full.conditions[4].texture), "grating");
+  EXPECT_STREQ(study_policy_name(full.conditions[4].policy), "affine");
+  EXPECT_STREQ(study_texture_name(full.conditions[3].texture), "grating");
   EXPECT_LT(find_or_read_study("class").trials, full.trials);
 }
 
