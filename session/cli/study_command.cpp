@@ -83,22 +83,11 @@ int list(std::ostream& out) {
   return 0;
 }
 
-int simulate(const CommandArgs& args, std::ostream& out) {
-  const CliArgs a(options_after(args, 1), {{"--study", 1},
-                                           {"--observer-threshold", 1},
-                                           {"--observer-slope", 1},
-                                           {"--observer-lapse", 1},
-                                           {"--sessions", 1},
-                                           {"--seed", 1},
-                                           {"--method", 1},
-                                           {"--replicates", 1},
-                                           {"--late-fraction", 1},
-                                           {"--shown", 1},
-                                           {"--json", 0}});
-  const Study study = study_argument(a);
-  const std::string shown = a.text_or("--shown", "engine");
-  if (shown != "engine" && shown != "requested") {
-    throw UsageError("--shown: '" + shown + "' is not one of engine, requested");
+// The settings of `simulate` from its options; `shown` receives how errors are shown.
+SimulationSettings simulation_settings(const CliArgs& a, const Study& study, std::string* shown) {
+  *shown = a.text_or("--shown", "engine");
+  if (*shown != "engine" && *shown != "requested") {
+    throw UsageError("--shown: '" + *shown + "' is not one of engine, requested");
   }
   SimulationSettings s;
   s.observer = observer_argument(a, study);
@@ -107,8 +96,13 @@ int simulate(const CommandArgs& args, std::ostream& out) {
   s.methods = methods_argument(a, "all");
   s.replicates = a.has("--replicates") ? a.integer_in("--replicates", kReplicates) : 200;
   s.late_fraction = a.has("--late-fraction") ? a.number_in("--late-fraction", kLateFraction) : 0.0;
-  if (shown == "engine") s.display = engine_error_display(study);
-  const std::vector<SimulationSummary> results = simulate_study(study, s);
+  if (*shown == "engine") s.display = engine_error_display(study);
+  return s;
+}
+
+ordered_json simulation_json(const Study& study, const SimulationSettings& s,
+                             const std::string& shown,
+                             const std::vector<SimulationSummary>& results) {
   ordered_json j = {{"study", study.name},
                     {"sessions", s.sessions},
                     {"seed", s.seed},
@@ -129,13 +123,33 @@ int simulate(const CommandArgs& args, std::ostream& out) {
                             {"median_method_estimate_px", r.median_method_estimate_px},
                             {"late_presentations", r.late_presentations}});
   }
+  return j;
+}
+
+int simulate(const CommandArgs& args, std::ostream& out) {
+  const CliArgs a(options_after(args, 1), {{"--study", 1},
+                                           {"--observer-threshold", 1},
+                                           {"--observer-slope", 1},
+                                           {"--observer-lapse", 1},
+                                           {"--sessions", 1},
+                                           {"--seed", 1},
+                                           {"--method", 1},
+                                           {"--replicates", 1},
+                                           {"--late-fraction", 1},
+                                           {"--shown", 1},
+                                           {"--json", 0}});
+  const Study study = study_argument(a);
+  std::string shown;
+  const SimulationSettings s = simulation_settings(a, study, &shown);
+  const std::vector<SimulationSummary> results = simulate_study(study, s);
   if (a.has("--json")) {
-    out << j.dump(2) << "\n";
+    out << simulation_json(study, s, shown, results).dump(2) << "\n";
     return 0;
   }
   out << "study " << study.name << ": " << s.sessions << " simulated sessions, observer threshold "
       << s.observer.threshold_px << " px (slope " << s.observer.slope << ", lapse "
-      << s.observer.lapse << ")\n";
+      << s.observer.lapse << "), errors shown "
+      << (shown == "engine" ? "by the engine" : "as requested") << "\n";
   for (const SimulationSummary& r : results) {
     out << std::left << std::setw(22) << r.condition << " " << std::setw(10) << r.method
         << " within 10 %: " << std::setw(6) << r.recovered_within_10pct
