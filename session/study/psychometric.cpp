@@ -101,6 +101,51 @@ double percentile(const std::vector<double>& v, double q) {
   return v[i] + (at - double(i)) * (v[i + 1] - v[i]);
 }
 
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+// The standard normal quantile of p in (0, 1), by bisection on normal_cdf (to 1e-12).
+double normal_quantile(double p) {
+  double lo = -40.0, hi = 40.0;
+  while (hi - lo > 1e-12) {
+    const double mid = 0.5 * (lo + hi);
+    (normal_cdf(mid) < p ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// BCa's bias correction z0: the normal quantile of the share of refits below the fit (ties
+// counted half), kept within [1/2B, 1 - 1/2B].
+double bias_correction(const std::vector<double>& sorted_refits, double fit) {
+  const double n = double(sorted_refits.size());
+  const double below = double(std::lower_bound(sorted_refits.begin(), sorted_refits.end(), fit) -
+                              sorted_refits.begin());
+  const double equal = double(std::upper_bound(sorted_refits.begin(), sorted_refits.end(), fit) -
+                              sorted_refits.begin()) -
+                       below;
+  const double share = std::min(std::max((below + 0.5 * equal) / n, 0.5 / n), 1.0 - 0.5 / n);
+  return normal_quantile(share);
+}
+
+// BCa's acceleration from the jackknife of the log threshold (each trial left out once):
+// sum d^3 / (6 (sum d^2)^1.5) with d the mean less each leave-one-out fit; 0 when they agree.
+double acceleration(const std::vector<TrialOutcome>& trials, const FitSettings& settings) {
+  if (trials.size() < 3) return 0.0;
+  std::vector<double> leave_one_out;
+  for (size_t i = 0; i < trials.size(); ++i) {
+    std::vector<TrialOutcome> rest = trials;
+    rest.erase(rest.begin() + long(i));
+    leave_one_out.push_back(std::log(fit_log_trials(log_trials(rest), settings).threshold_px));
+  }
+  double mean = 0.0;
+  for (double v : leave_one_out) mean += v / double(leave_one_out.size());
+  double square = 0.0, cube = 0.0;
+  for (double v : leave_one_out) {
+    const double d = mean - v;
+    square += d * d, cube += d * d * d;
+  }
+  return square > 0.0 ? cube / (6.0 * std::pow(square, 1.5)) : 0.0;
+}
+
 }  // namespace
 
 double PsychometricFunction::correct(double error_px) const {
@@ -131,13 +176,21 @@ ThresholdInterval bootstrap_interval(const std::vector<TrialOutcome>& trials, do
   LogTrials t = log_trials(trials);
   std::vector<double> p;
   for (const TrialOutcome& trial : trials) p.push_back(fitted.correct(trial.error_px));
-  std::vector<double> refits;
+  std::vector<double> refits;  // log thresholds
   for (int b = 0; b < replicates; ++b) {
     for (size_t i = 0; i < p.size(); ++i) t.correct[i] = random.chance(p[i]) ? 1 : 0;
-    refits.push_back(fit_log_trials(t, settings).threshold_px);
+    refits.push_back(std::log(fit_log_trials(t, settings).threshold_px));
   }
   std::sort(refits.begin(), refits.end());
-  return {percentile(refits, (1.0 - level) / 2.0), percentile(refits, (1.0 + level) / 2.0)};
+  const double log_fit = std::log(fitted_px);
+  const double z0 = bias_correction(refits, log_fit);
+  const double a = acceleration(trials, settings);
+  const auto adjusted = [&](double alpha) {
+    const double z = normal_quantile(alpha);
+    return normal_cdf(z0 + (z0 + z) / (1.0 - a * (z0 + z)));
+  };
+  return {std::exp(percentile(refits, adjusted((1.0 - level) / 2.0))),
+          std::exp(percentile(refits, adjusted((1.0 + level) / 2.0)))};
 }
 
 double arcmin_of_pixels(double px, double pixels_per_inch, double distance_cm) {

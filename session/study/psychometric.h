@@ -11,9 +11,12 @@
 //
 // The fit (fit_threshold) is maximum likelihood over t with beta and lambda fixed at assumed
 // values (the study's; fitting the slope too needs far more trials than a class session
-// has), and the confidence interval is a parametric bootstrap: answers drawn again from the
-// fitted function at the same shown errors, refitted, the 2.5 and 97.5 percentiles of the
-// refits. Plain C++.
+// has), and the confidence interval is a parametric bootstrap with BCa's corrections (Efron
+// 1987): answers drawn again from the fitted function at the same shown errors and refitted;
+// the interval's ends are the refits' percentiles moved by the bias correction z0 (the share
+// of refits below the fit) and the acceleration a (the skew of the jackknife's
+// leave-one-trial-out fits). Plain percentiles covered the truth in 92 to 93 % of simulated
+// sessions, BCa's in 94 to 95 % (manual/study.md). Plain C++.
 #pragma once
 
 #include <vector>
@@ -72,9 +75,11 @@ struct ThresholdInterval {
 };
 
 // The parametric bootstrap interval of the threshold at `level` (0.95 for 95 %): `replicates`
-// (>= 20) sets of answers drawn from the function of threshold `fitted_px` (and the settings'
-// slope and lapse) at the errors of `trials`, each refitted; the (1-level)/2 and (1+level)/2
-// percentiles of the refits (interpolated between order statistics). Draws from `random`.
+// (>= 20) sets of answers drawn from the function of threshold `fitted_px` (the maximum-
+// likelihood fit of `trials`, with the settings' slope and lapse) at the errors of `trials`,
+// each refitted; the BCa percentiles Phi(z0 + (z0 + z) / (1 - a (z0 + z))) of the log refits
+// for z the normal quantiles of (1-level)/2 and (1+level)/2 (interpolated between order
+// statistics), z0 and a as above (a from len(trials) more fits). Draws from `random`.
 ThresholdInterval bootstrap_interval(const std::vector<TrialOutcome>& trials, double fitted_px,
                                      const FitSettings& settings, int replicates, double level,
                                      StudyRandom& random);
