@@ -8,7 +8,7 @@ import oflab
 import pytest
 
 PAGE = os.sysconf("SC_PAGE_SIZE")
-SMALL = {"frames": 2, "repeat_timing": 1, "warm_up": False}
+SMALL = {"frames": 1, "repeat_timing": 1, "warm_up": False}
 
 
 def resident_bytes():
@@ -27,7 +27,7 @@ def test_a_thousand_small_runs_leave_memory_flat():
         run.summary
         run.records
         if k % 2 == 0:
-            run.frames[1].sum()
+            run.frames[0].sum()
     del run
     gc.collect()
     grown = resident_bytes() - before
