@@ -60,7 +60,6 @@ nlohmann::ordered_json policies_json() {
   return report;
 }
 
-
 // Bad options are UsageErrors, which run_cli reports; nothing else goes to `err`.
 int run_policies_command(const CommandArgs& args, std::ostream& out, std::ostream& /*err*/) {
   const CliArgs a(args, {{"--json", 0}});

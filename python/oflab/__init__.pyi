@@ -6,7 +6,7 @@ from typing import Any, Sequence
 import numpy as np
 import numpy.typing as npt
 
-Source = str | PathLike[str]
+Source = str | PathLike[str] | dict[str, Any]
 
 class Picture(np.ndarray):
     def _repr_png_(self) -> bytes | None: ...

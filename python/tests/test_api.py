@@ -104,3 +104,19 @@ def test_a_lesson_check_equals_oflab_cli_lesson_check(cli):
     assert [c["text"] for c in checks] == printed[:-1]
     assert checks and all(c["holds"] for c in checks)
     assert re.search(r"%d engine claims" % len(checks), printed[-1])
+
+
+def test_a_script_given_as_a_dict_plays_as_its_file(tmp_path):
+    here = os.path.dirname(os.path.abspath(__file__))
+    with open(os.path.join(here, "..", "..", "datasets", "scripts", "zoom.json"),
+              encoding="utf-8") as f:
+        script = json.load(f)
+    script["name"] = "my-zoom"
+    from_dict = oflab.run(script, "affine", frames=10, repeat_timing=1, warm_up=False).summary
+    from_name = oflab.run("zoom", "affine", frames=10, repeat_timing=1, warm_up=False).summary
+    assert from_dict["script"] == "my-zoom"
+    assert from_dict["levels"] == from_name["levels"]
+    assert from_dict["max_measured_error_px"] == from_name["max_measured_error_px"]
+    script["camera"]["focal_px"] = -5
+    with pytest.raises(ValueError, match="focal"):
+        oflab.run(script, "affine", frames=2)
