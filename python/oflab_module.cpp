@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -178,7 +179,7 @@ py::list lesson_list() {
 
 // A lesson of datasets/lessons (or a lesson file) and its headless check.
 struct PyLesson {
-  const Lesson* lesson = nullptr;
+  std::shared_ptr<const Lesson> lesson;  // a copy: an added lesson may be replaced later
 
   py::list check() const {
     std::vector<ClaimCheck> checks;
@@ -206,9 +207,9 @@ struct PyLesson {
 
 PyLesson lesson(const std::string& name) {
   try {
-    return PyLesson{&find_or_read_lesson(name)};
+    return PyLesson{std::make_shared<const Lesson>(find_or_read_lesson(name))};
   } catch (const std::runtime_error& e) {
-    throw py::value_error(std::string("name: ") + e.what() + " (lessons: " + lesson_names() + ")");
+    throw py::value_error(std::string("name: ") + e.what());
   }
 }
 

@@ -216,7 +216,7 @@ struct FrameStore {
     const Image& truth = baseline ? baseline->image() : image;
     append_image(shown, image);
     append_image(exact, truth);
-    const std::vector<std::uint8_t> d = difference_map(image, truth);
+    const std::vector<std::uint8_t> d = channel_difference_map(image, truth);
     difference.insert(difference.end(), d.begin(), d.end());
     std::vector<std::uint8_t> h = reprojection_hole_map(animator, truth);
     if (h.empty()) h.assign(image.pixel_count(), 0);

@@ -173,7 +173,7 @@ std::string difference_vti(const Camera& camera, const Image& shown, const Image
   vtkNew<vtkUnsignedCharArray> difference;
   difference->SetName("difference");
   difference->SetNumberOfTuples(static_cast<vtkIdType>(shown.pixel_count()));
-  const std::vector<std::uint8_t> map = difference_map(shown, exact);
+  const std::vector<std::uint8_t> map = channel_difference_map(shown, exact);
   for (std::size_t k = 0; k < map.size(); ++k) {
     difference->SetValue(static_cast<vtkIdType>(k), map[k]);
   }

@@ -9,9 +9,9 @@
 
 namespace oflab {
 
-std::vector<std::uint8_t> difference_map(const Image& shown, const Image& exact) {
+std::vector<std::uint8_t> channel_difference_map(const Image& shown, const Image& exact) {
   if (shown.width() != exact.width() || shown.height() != exact.height()) {
-    throw std::invalid_argument("difference_map: the two images differ in size");
+    throw std::invalid_argument("channel_difference_map: the two images differ in size");
   }
   std::vector<std::uint8_t> map(shown.pixel_count());
   for (std::size_t k = 0; k < map.size(); ++k) {

@@ -15,7 +15,7 @@ namespace oflab {
 // Per pixel, the largest of the four premultiplied channels' absolute differences between
 // `shown` and `exact`, in 8-bit levels (0: the same pixel). Throws std::invalid_argument for
 // images of different sizes.
-std::vector<std::uint8_t> difference_map(const Image& shown, const Image& exact);
+std::vector<std::uint8_t> channel_difference_map(const Image& shown, const Image& exact);
 
 // Per pixel, 1 where `animator`'s frame shown now is a hole of depth reprojection: no warped
 // pixel reached it (the scene engine's last reprojection left it without a source pixel) and
