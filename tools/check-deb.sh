@@ -53,6 +53,14 @@ fi
 dpkg-deb -x "$deb" "$work/root"
 zcat "$work/root/usr/share/man/man1/oflab-cli.1.gz" | grep -q "experiments" ||
   { echo "check-deb: oflab-cli.1 does not list the commands" >&2; fail=1; }
+# The packaged Python module imports and plays a shipped script from the packaged datasets.
+if [[ -n "$pydir" ]]; then
+  python=$(sed -n 's/^OFLAB_PYTHON_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")
+  (cd / && PYTHONPATH="$work/root/usr/$pydir" OFLAB_DATASETS="$work/root/usr/share/oflab/datasets" \
+    "${python:-python3}" -c "import oflab; assert oflab.__file__.startswith('$work'), oflab.__file__
+assert oflab.run('rotation', 'perspective', frames=4, repeat_timing=1).summary['frames'] == 4") ||
+    { echo "check-deb: the packaged Python module does not run" >&2; fail=1; }
+fi
 if command -v desktop-file-validate > /dev/null; then
   desktop-file-validate "$work/root/usr/share/applications/oflab.desktop" || fail=1
 fi

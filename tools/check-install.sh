@@ -46,10 +46,10 @@ cp "$prefix/share/oflab/datasets/scripts/zoom.json" "$prefix/share/oflab/dataset
 # install (not the build tree), it plays the shipped rotation script from the installed
 # datasets.
 pydir=$(sed -n 's/^OFLAB_INSTALL_PYTHONDIR:[A-Z]*=//p' "$build/CMakeCache.txt")
-python=$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")
-if [[ -n "$pydir" && -n "$python" ]]; then
+python=$(sed -n 's/^OFLAB_PYTHON_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")
+if [[ -n "$pydir" ]]; then
   frames=$(cd / && PYTHONPATH="$prefix/$pydir" OFLAB_DATASETS="$prefix/share/oflab/datasets" \
-    "$python" -c "import oflab; assert oflab.__file__.startswith('$prefix'), oflab.__file__
+    "${python:-python3}" -c "import oflab; assert oflab.__file__.startswith('$prefix'), oflab.__file__
 print(oflab.run('rotation', 'perspective', frames=4, repeat_timing=1).summary['frames'])") ||
     { echo "check-install: the installed Python module does not run" >&2; exit 1; }
   [[ "$frames" == 4 ]] || { echo "check-install: the installed module played $frames frames, not 4" >&2; exit 1; }
