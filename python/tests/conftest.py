@@ -58,7 +58,28 @@ def cli():
         pytest.skip("OFLAB_CLI names no oflab-cli")
 
     def run_cli(*args, expect=0):
-        done = subprocess.run([path, *args], capture_output=True, text=True, check=False)
-        assert done.returncode == expect, done.stderr
-        return json.loads(done.stdout) if expect == 0 and "--json" in args else done
+        return started_cli(path, args, expect)()
     return run_cli
+
+
+@pytest.fixture(scope="session")
+def cli_started():
+    """oflab-cli started now, its result (as the cli fixture's) when the returned function is
+    called: the module's side of a parity test plays while the CLI runs."""
+    path = os.environ.get("OFLAB_CLI")
+    if not path:
+        pytest.skip("OFLAB_CLI names no oflab-cli")
+    return lambda *args, expect=0: started_cli(path, args, expect)
+
+
+def started_cli(path, args, expect):
+    process = subprocess.Popen([path, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
+
+    def result():
+        out, err = process.communicate()
+        assert process.returncode == expect, err
+        if expect == 0 and "--json" in args:
+            return json.loads(out)
+        return subprocess.CompletedProcess(process.args, process.returncode, out, err)
+    return result

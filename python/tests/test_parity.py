@@ -39,38 +39,38 @@ def playable(source):
     return [p["name"] for p in oflab.policies() if p["warp"] != "node-images"]
 
 
-def check_animate_parity(cli, source, policies):
+def check_animate_parity(cli_started, source, policies):
     name, settings = source_call(source)
     for policy in policies:
-        expected = cli("animate", *source_options(source), "--mode", policy, "--json",
-                       "--quiet", *cli_options(QUICK))
+        expected = cli_started("animate", *source_options(source), "--mode", policy, "--json",
+                               "--quiet", *cli_options(QUICK))
         summary = oflab.run(name, policy, **settings).summary
-        assert without_times(summary) == without_times(expected), policy
+        assert without_times(summary) == without_times(expected()), policy
         assert summary["mode"] == policy
 
 
 @pytest.mark.parametrize("source", [SOURCES[5], SOURCES[-1]], ids=lambda s: s["source"])
-def test_run_summary_equals_animate_json_under_every_policy(cli, source):
+def test_run_summary_equals_animate_json_under_every_policy(cli_started, source):
     policies = playable(source)
     assert len(policies) >= 10
-    check_animate_parity(cli, source, policies)
+    check_animate_parity(cli_started, source, policies)
 
 
-def test_run_summary_equals_animate_json_for_every_script(cli):
+def test_run_summary_equals_animate_json_for_every_script(cli_started):
     for source in SOURCES:
-        check_animate_parity(cli, source, ["perspective"])
+        check_animate_parity(cli_started, source, ["perspective"])
 
 
 @pytest.mark.parametrize("source", SOURCES, ids=lambda s: s["source"])
-def test_compare_summary_equals_compare_json(cli, source):
+def test_compare_summary_equals_compare_json(cli_started, source):
     name, settings = source_call(source)
     del settings["warm_up"]  # compare always warms up
     timing = {"frames": QUICK["frames"], "repeat_timing": QUICK["repeat_timing"]}
     policies = playable(source)
-    expected = cli("compare", *source_options(source), "--policies", ",".join(policies),
-                   "--json", "--quiet", *cli_options(timing))
+    expected = cli_started("compare", *source_options(source), "--policies", ",".join(policies),
+                           "--json", "--quiet", *cli_options(timing))
     comparison = oflab.compare(name, policies, **settings)
-    assert without_times(comparison.summary) == without_times(expected)
+    assert without_times(comparison.summary) == without_times(expected())
     assert comparison.policies == policies
 
 
