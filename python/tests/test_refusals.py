@@ -81,6 +81,8 @@ def test_flow_and_explain_name_their_fields():
 
 
 def test_ctrl_c_stops_a_long_run_with_keyboard_interrupt():
+    """The timer's thread runs Python while the run plays (the run released the GIL) and
+    interrupts the main thread, whose run sees the signal between two frames."""
     timer = threading.Timer(0.3, _thread.interrupt_main)
     timer.start()
     try:
