@@ -13,7 +13,8 @@ set(CPACK_PACKAGE_DESCRIPTION
     "A desktop tool (oflab) and a command-line tool (oflab-cli) for the optic flow of a moving
 textured plane and the reuse of its previous image through a 2D warp (no update,
 translate, affine, perspective, re-render). Includes the core library with its headers
-and CMake package (find_package(oflab), target oflab::core).")
+and CMake package (find_package(oflab), target oflab::core), and the Python module
+oflab (import oflab: runs, flows and lessons as dicts and numpy arrays).")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # oflab_<version>_<arch>.deb
@@ -23,5 +24,11 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libgl1-mesa-dri")
 # Linking the installed core library from CMake needs GLM's headers and config.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libglm-dev, cmake, g++")
+# The Python module (python/CMakeLists.txt): its interpreter and numpy, which
+# dpkg-shlibdeps cannot see (added to what it computes).
+get_property(oflab_python_depends GLOBAL PROPERTY OFLAB_PYTHON_DEB_DEPENDS)
+if(oflab_python_depends)
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "${oflab_python_depends}")
+endif()
 set(CPACK_OUTPUT_FILE_PREFIX ${CMAKE_BINARY_DIR}/packages)
 include(CPack)

@@ -2,7 +2,8 @@
 # Installs a built tree into a temporary prefix and uses the install as a user would:
 # builds and runs the consumer project tests/install/ against find_package(oflab), and runs
 # the installed oflab-cli from / on the shipped `loop` script, writing its report into a
-# temporary directory. Usage: bash tools/check-install.sh [BUILD_DIR] (default build/).
+# temporary directory, and imports the installed Python module when it was built.
+# Usage: bash tools/check-install.sh [BUILD_DIR] (default build/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=$(cd "${1:-build}" && pwd)
@@ -41,4 +42,16 @@ rows=$(($(wc -l < "$work/report/frames.csv") - 1))
 cp "$prefix/share/oflab/datasets/scripts/zoom.json" "$prefix/share/oflab/datasets/scripts/installed-only.json"
 (cd / && env -u OFLAB_DATASETS "$prefix/bin/oflab-cli" animate --script installed-only --frames 2 \
    > /dev/null) || { echo "check-install: the installed oflab-cli does not use its installed datasets" >&2; exit 1; }
+# The installed Python module, when it was built (manual/python.md): imported from the
+# install (not the build tree), it plays the shipped rotation script from the installed
+# datasets.
+pydir=$(sed -n 's/^OFLAB_INSTALL_PYTHONDIR:[A-Z]*=//p' "$build/CMakeCache.txt")
+python=$(sed -n 's/^OFLAB_PYTHON_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt")
+if [[ -n "$pydir" ]]; then
+  frames=$(cd / && PYTHONPATH="$prefix/$pydir" OFLAB_DATASETS="$prefix/share/oflab/datasets" \
+    "${python:-python3}" -c "import oflab; assert oflab.__file__.startswith('$prefix'), oflab.__file__
+print(oflab.run('rotation', 'perspective', frames=4, repeat_timing=1).summary['frames'])") ||
+    { echo "check-install: the installed Python module does not run" >&2; exit 1; }
+  [[ "$frames" == 4 ]] || { echo "check-install: the installed module played $frames frames, not 4" >&2; exit 1; }
+fi
 echo "check-install: the consumer and the installed oflab-cli work from $prefix"

@@ -11,6 +11,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libgif-dev
   help2man dpkg-dev file
   libgtest-dev libgmock-dev libbenchmark-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest
   xvfb xauth libgl1-mesa-dri
   clang-14 clang libclang-rt-14-dev clang-format-14
   pmccabe

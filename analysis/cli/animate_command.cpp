@@ -64,32 +64,11 @@ void print_summary(const nlohmann::json& j, const std::string& script, const Reu
   if (j.contains("budget")) print_budget(j.at("budget"), out);
 }
 
-// --repeat N (default 1): within limits::kRepeat, and N times the script's frames fits an
-// int. Throws UsageError naming --repeat, the value as typed and the limit.
-int read_repeat(const CliArgs& a, const MotionScript& script) {
-  if (!a.has("--repeat")) return 1;
-  const double repeat = a.number("--repeat");
-  const long frames = static_cast<long>(script.frames.size());
-  const long most = std::min<long>(static_cast<long>(limits::kRepeat.maximum),
-                                   std::numeric_limits<int>::max() / frames);
-  const std::string range = "1.." + std::to_string(most) + " (plays of the script's " +
-                            std::to_string(frames) + " frames)";
-  const std::string& text = a.values("--repeat").at(0);
-  if (repeat != std::floor(repeat)) {
-    throw UsageError("--repeat: " + text + " is not a whole number, " + range);
-  }
-  if (repeat < 1 || repeat > most) throw UsageError("--repeat: " + text + " is outside " + range);
-  return static_cast<int>(repeat);
-}
-
 // The single-plane form: a motion script and a texture.
 int animate_plane(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  for (const char* option : kSceneOnlyOptions) {
-    if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
-  }
-  const std::string script_arg = a.values("--script").at(0);
-  RunSource source = read_plane_source(a);
-  source.repeat = read_repeat(a, source.script);
+  const AnimateInputs inputs = read_animate_inputs(a);
+  const std::string& script_arg = inputs.script_arg;
+  const RunSource& source = inputs.source;
   const EngineSettings& settings = source.settings.engine;
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
@@ -99,21 +78,10 @@ int animate_plane(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const nlohmann::json summary = kind.summary_json(run);
   output.finish();
   output.write_summary(summary);
-  const std::string name = source.script.name.empty() ? script_arg : source.script.name;
   if (a.has("--json")) {
-    nlohmann::json j = summary;
-    j["script"] = name;
-    j["mode"] = settings.policy->name;
-    j["delta"] = delta_policy_name(settings.delta);
-    j["thresholds"] = settings.thresholds;
-    j["content"] = content_name(settings.content.kind);
-    j["content_quality"] = settings.content.quality;
-    if (reports_holes(*settings.policy)) {
-      j["cadence"] = settings.cadence;
-      j["latency_frames"] = settings.policy->latency_frames;
-    }
-    out << j.dump(2) << "\n";
+    out << plane_animate_json(source, run, script_arg).dump(2) << "\n";
   } else {
+    const std::string name = source.script.name.empty() ? script_arg : source.script.name;
     print_summary(summary, name, *settings.policy, out);
   }
   return 0;
@@ -144,10 +112,24 @@ const SourceKind& animate_kind(const CliArgs& a) {
   return source_kind(a.has("--scene") ? "scene" : "plane");
 }
 
-int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
+// The single plane's source, every refusal of animate's plane form made.
+RunSource read_plane_form_source(const CliArgs& a) {
+  for (const char* option : kSceneOnlyOptions) {
+    if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
+  }
+  RunSource source = read_plane_source(a);
+  source.repeat = read_repeat(a, source.script);
+  return source;
+}
+
+void refuse_repeat_with_scene(const CliArgs& a) {
   if (a.has("--repeat") && a.has("--scene")) {
     throw UsageError("--repeat: plays a motion script again and again; not with --scene");
   }
+}
+
+int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
+  refuse_repeat_with_scene(a);
   const std::string kind = animate_kind(a).name;
   for (const AnimateForm& form : kAnimateForms) {
     if (kind == form.kind) return form.run(a, out, err);
@@ -157,44 +139,105 @@ int animate(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
+// --repeat N (default 1): within limits::kRepeat, and N times the script's frames fits an
+// int. Throws UsageError naming --repeat, the value as typed and the limit.
+int read_repeat(const CliArgs& a, const MotionScript& script) {
+  if (!a.has("--repeat")) return 1;
+  const double repeat = a.number("--repeat");
+  const long frames = static_cast<long>(script.frames.size());
+  const long most = std::min<long>(static_cast<long>(limits::kRepeat.maximum),
+                                   std::numeric_limits<int>::max() / frames);
+  const std::string range = "1.." + std::to_string(most) + " (plays of the script's " +
+                            std::to_string(frames) + " frames)";
+  const std::string& text = a.values("--repeat").at(0);
+  if (repeat != std::floor(repeat)) {
+    throw UsageError("--repeat: " + text + " is not a whole number, " + range);
+  }
+  if (repeat < 1 || repeat > most) throw UsageError("--repeat: " + text + " is outside " + range);
+  return static_cast<int>(repeat);
+}
+
+nlohmann::json plane_animate_json(const RunSource& source, const AnimationRun& run,
+                                  const std::string& script_arg) {
+  const EngineSettings& settings = source.settings.engine;
+  nlohmann::json j = source_kind("plane").summary_json(run);
+  j["script"] = source.script.name.empty() ? script_arg : source.script.name;
+  j["mode"] = settings.policy->name;
+  j["delta"] = delta_policy_name(settings.delta);
+  j["thresholds"] = settings.thresholds;
+  j["content"] = content_name(settings.content.kind);
+  j["content_quality"] = settings.content.quality;
+  if (reports_holes(*settings.policy)) {
+    j["cadence"] = settings.cadence;
+    j["latency_frames"] = settings.policy->latency_frames;
+  }
+  return j;
+}
+
+AnimateInputs read_animate_inputs(const CliArgs& a) {
+  refuse_repeat_with_scene(a);
+  AnimateInputs inputs;
+  inputs.kind = &animate_kind(a);
+  inputs.script_arg = a.has("--script") ? a.values("--script").at(0) : "";
+  const std::string kind = inputs.kind->name;
+  if (kind == "plane") {
+    inputs.source = read_plane_form_source(a);
+  } else if (kind == "scene") {
+    inputs.source = read_scene_source(a);
+  } else {
+    throw UsageError("--mode " + kind + ": only oflab-cli animate plays it");
+  }
+  return inputs;
+}
+
+nlohmann::json animate_json(const AnimateInputs& inputs, const AnimationRun& run) {
+  if (std::string(inputs.kind->name) == "scene") return scene_animate_json(inputs.source, run);
+  return plane_animate_json(inputs.source, run, inputs.script_arg);
+}
+
+const std::map<std::string, int>& animate_options() {
+  static const std::map<std::string, int> options = {{"--script", 1},
+                                                     {"--texture", 1},
+                                                     {"--mode", 1},
+                                                     {"--threshold", 1},
+                                                     {"--thresholds", 4},
+                                                     {"--delta", 1},
+                                                     {"--sampling", 1},
+                                                     {"--content", 1},
+                                                     {"--quality", 1},
+                                                     {"--budget-pixels", 1},
+                                                     {"--budget-ms", 1},
+                                                     {"--cadence", 1},
+                                                     {"--stabilization-plane", 6},
+                                                     {"--hole-fill", 1},
+                                                     {"--cache-angle", 1},
+                                                     {"--node-polygons", 1},
+                                                     {"--safety-radius", 1},
+                                                     {"--frames", 1},
+                                                     {"--repeat-timing", 1},
+                                                     {"--no-warm-up", 0},
+                                                     {"--repeat", 1},
+                                                     {"--out", 1},
+                                                     {"--force", 0},
+                                                     {"--frames-png", 0},
+                                                     {"--video", 1},
+                                                     {"--fps", 1},
+                                                     {"--vtk-series", 1},
+                                                     {"--json", 0},
+                                                     {"--quiet", 0},
+                                                     {"--scene", 1},
+                                                     {"--compare-conventional", 0},
+                                                     {"--conventional-single-sample", 0},
+                                                     {"--near", 1},
+                                                     {"--guard-band", 1},
+                                                     {"--no-skip-hidden", 0},
+                                                     {"--epsilon", 1}};
+  return options;
+}
+
 int run_animate_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(args, {{"--script", 1},
-                           {"--texture", 1},
-                           {"--mode", 1},
-                           {"--threshold", 1},
-                           {"--thresholds", 4},
-                           {"--delta", 1},
-                           {"--sampling", 1},
-                           {"--content", 1},
-                           {"--quality", 1},
-                           {"--budget-pixels", 1},
-                           {"--budget-ms", 1},
-                           {"--cadence", 1},
-                           {"--stabilization-plane", 6},
-                           {"--hole-fill", 1},
-                           {"--cache-angle", 1},
-                           {"--node-polygons", 1},
-                           {"--safety-radius", 1},
-                           {"--frames", 1},
-                           {"--repeat-timing", 1},
-                           {"--no-warm-up", 0},
-                           {"--repeat", 1},
-                           {"--out", 1},
-                           {"--force", 0},
-                           {"--frames-png", 0},
-                           {"--video", 1},
-                           {"--fps", 1},
-                           {"--vtk-series", 1},
-                           {"--json", 0},
-                           {"--quiet", 0},
-                           {"--scene", 1},
-                           {"--compare-conventional", 0},
-                           {"--conventional-single-sample", 0},
-                           {"--near", 1},
-                           {"--guard-band", 1},
-                           {"--no-skip-hidden", 0},
-                           {"--epsilon", 1}});
+    const CliArgs a(args, animate_options());
     return animate(a, out, err);
   } catch (const ScriptError& e) {
     err << "oflab-cli animate: " << e.what() << "\n";

@@ -5,9 +5,11 @@
 #include <fstream>
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli/cli_args.h"
 #include "engine/engine.h"
@@ -15,6 +17,7 @@
 #include "formats/video_file.h"
 #include "formats/vtk_export.h"
 #include "image/image.h"
+#include "runs/policy_runs.h"
 #include "runs/source_kinds.h"
 #include "scene/scene.h"
 #include "scene/viewer_script.h"
@@ -36,6 +39,55 @@ EngineSettings read_engine_settings(const CliArgs& args);
 // the option for an unknown --script name or a bad option, ScriptError for a broken script
 // file and ImageFileError for an unreadable texture.
 RunSource read_plane_source(const CliArgs& args);
+
+// --repeat N (default 1): within limits::kRepeat, and N times the script's frames fits an
+// int. Throws UsageError naming --repeat, the value as typed and the limit.
+int read_repeat(const CliArgs& args, const MotionScript& script);
+
+// The options `oflab-cli animate` accepts, name (with "--") -> number of values: the one
+// table of its CliArgs, which the Python module reads too (manual/python.md).
+const std::map<std::string, int>& animate_options();
+
+// The JSON of `animate --script ... --json` for a single plane: the plane kind's summary of
+// `run` (analysis/runs/source_kinds.h) with the script's name (its file's "name", else
+// `script_arg` as given), the mode, Delta, thresholds, content and quality, and for a
+// policy with holes its cadence and latency. `source` is the run's (read_plane_source).
+nlohmann::json plane_animate_json(const RunSource& source, const AnimationRun& run,
+                                  const std::string& script_arg);
+
+// What `oflab-cli animate` plays for its options, in its plane and scene forms (scene
+// shifting, selected by --mode scene-shifting, is refused here: only the command plays it):
+// the kind (analysis/runs/source_kinds.h), the source (read_plane_source with --repeat, or
+// the scene's read_scene_source) and --script as given. Every refusal of those forms is
+// made (scene options without --scene, --repeat with --scene, a policy that needs a scene).
+// Throws UsageError naming the option, and the readers' errors (ScriptError, SceneError,
+// ViewerScriptError, ImageFileError) for broken files.
+struct AnimateInputs {
+  const SourceKind* kind = nullptr;
+  RunSource source;
+  std::string script_arg;
+};
+AnimateInputs read_animate_inputs(const CliArgs& args);
+// `animate --json`'s object for a run of `inputs`: plane_animate_json or, for a scene,
+// scene_animate_json (analysis/cli/animate_scene.h).
+nlohmann::json animate_json(const AnimateInputs& inputs, const AnimationRun& run);
+
+// `oflab-cli compare`'s reading of its options (analysis/cli/compare_command.cpp): the
+// source's kind (plane, or scene with --scene), the source as animate reads it, and the
+// policies of --policies, every refusal of compare made (a policy that needs a scene, an
+// option no compared policy reads, a frame budget without `budget`). Throws UsageError
+// naming the option, and the readers' errors for broken files.
+struct CompareInputs {
+  const SourceKind* kind = nullptr;
+  RunSource source;
+  std::vector<const ReusePolicy*> policies;
+};
+CompareInputs read_compare_inputs(const CliArgs& args);
+// The options `oflab-cli compare` accepts (as animate_options).
+const std::map<std::string, int>& compare_options();
+// The JSON of `compare --json`: {"script", "scene" (with a scene), "thresholds",
+// "policies": a policy_row_json per row} (analysis/runs/policy_runs.h).
+nlohmann::json compare_json(const CompareInputs& inputs, const std::vector<PolicyRow>& rows);
 
 // --budget-pixels N (pixels written per frame, limits::kBudgetPixels) or --budget-ms T
 // (milliseconds per frame, limits::kBudgetMs, converted with the run's measured cost per

@@ -102,17 +102,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const SourceKind& kind = source_kind("scene");
   output.apply_to(options, kind);
   const AnimationRun result = kind.play(source, options);
-  nlohmann::json j = kind.summary_json(result);
-  j["scene"] = source.scene->name;
-  j["script"] = source.viewer.name;
-  j["mode"] = settings.engine.policy->name;
-  j["thresholds"] = settings.engine.thresholds;
-  j["skip_hidden"] = settings.skip_hidden;
-  if (reports_holes(*settings.engine.policy)) {
-    j["cadence"] = settings.engine.cadence;
-    j["latency_frames"] = settings.engine.policy->latency_frames;
-    j["hole_fill"] = hole_fill_name(settings.hole_fill);
-  }
+  const nlohmann::json j = scene_animate_json(source, result);
   output.finish();
   output.write_summary(j);
   if (a.has("--json")) {
@@ -125,6 +115,22 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 }  // namespace
+
+nlohmann::json scene_animate_json(const RunSource& source, const AnimationRun& run) {
+  const SceneSettings& settings = source.settings;
+  nlohmann::json j = source_kind("scene").summary_json(run);
+  j["scene"] = source.scene->name;
+  j["script"] = source.viewer.name;
+  j["mode"] = settings.engine.policy->name;
+  j["thresholds"] = settings.engine.thresholds;
+  j["skip_hidden"] = settings.skip_hidden;
+  if (reports_holes(*settings.engine.policy)) {
+    j["cadence"] = settings.engine.cadence;
+    j["latency_frames"] = settings.engine.policy->latency_frames;
+    j["hole_fill"] = hole_fill_name(settings.hole_fill);
+  }
+  return j;
+}
 
 int animate_scene(const CliArgs& a, std::ostream& out, std::ostream& err) {
   try {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <nlohmann/json.hpp>
 
 #include "cli/cli_args.h"
 #include "runs/source_kinds.h"
@@ -26,5 +27,11 @@ SceneSettings read_scene_settings(const CliArgs& args);
 // give the same run. Throws UsageError naming the option, SceneFileError / ScriptError for
 // bad files.
 RunSource read_scene_source(const CliArgs& args);
+
+// The JSON of `animate --scene ... --json` (and its --out DIR/summary.json): the scene kind's
+// summary of `run` (analysis/runs/source_kinds.h) with the scene's and viewer script's names,
+// the mode, thresholds and skip_hidden, and for a policy with holes its cadence, latency and
+// hole fill. `source` is the run's (read_scene_source); the Python module returns it too.
+nlohmann::json scene_animate_json(const RunSource& source, const AnimationRun& run);
 
 }  // namespace oflab

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,10 @@ int run_experiments_command(const CommandArgs& args, std::ostream& out, std::ost
 
 // `oflab-cli policies`: lists the engine's reuse policies, the values of `animate --mode`
 // (analysis/cli/policies_command.cpp, core/engine/reuse_policy.h).
+// `oflab-cli policies --json`'s object: {"policies": [{"name", "summary", "models", "breaks",
+// "schedule", "warp", "latency_frames"} per entry of reuse_policies()],
+// "interpolation_latency_frames"}; the Python module's policies() returns its list.
+nlohmann::ordered_json policies_json();
 int run_policies_command(const CommandArgs& args, std::ostream& out, std::ostream& err);
 
 // `oflab-cli compare`: one script under several reuse policies, a row each

@@ -113,28 +113,10 @@ void refuse_options_without_their_policy(const CliArgs& a,
 }
 
 int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
-  if (!a.has("--policies")) throw UsageError("--policies: needs a list, e.g. perspective,talisman");
-  std::vector<const ReusePolicy*> policies;
-  try {
-    policies = parse_policy_list(a.values("--policies").at(0));
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--policies: ") + e.what());
-  }
-  for (const ReusePolicy* p : policies) {
-    if (p->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
-      throw UsageError(std::string("--policies: ") + p->name +
-                       " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
-    }
-  }
-  refuse_options_without_their_policy(a, policies);
-  const SourceKind* kind = nullptr;
-  const RunSource source = read_source(a, &kind);
-  const bool budgeted = std::any_of(policies.begin(), policies.end(),
-                                    [](const ReusePolicy* p) { return p->shares_budget; });
-  if (source.settings.engine.budget.unit != FrameBudget::Unit::kNone && !budgeted) {
-    throw UsageError(std::string(a.has("--budget-ms") ? "--budget-ms" : "--budget-pixels") +
-                     ": needs budget in --policies (the only policy with a frame budget)");
-  }
+  const CompareInputs inputs = read_compare_inputs(a);
+  const SourceKind* kind = inputs.kind;
+  const RunSource& source = inputs.source;
+  const std::vector<const ReusePolicy*>& policies = inputs.policies;
   PlayOptions options;
   const RunOutput output = read_run_output(a, err);
   output.apply_timing_to(options);
@@ -144,11 +126,7 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   if (!output.dir.empty()) write_outputs(*output.out, output.dir, *kind, runs, rows);
   const std::string script = source.scene ? source.viewer.name : source.script.name;
   if (a.has("--json")) {
-    nlohmann::json j = {{"script", script}, {"policies", nlohmann::json::array()}};
-    if (source.scene) j["scene"] = source.scene->name;
-    j["thresholds"] = source.settings.engine.thresholds;
-    for (const PolicyRow& row : rows) j["policies"].push_back(policy_row_json(row));
-    out << j.dump(2) << "\n";
+    out << compare_json(inputs, rows).dump(2) << "\n";
     return 0;
   }
   out << (source.scene ? "scene " + source.scene->name + ", viewer script " : "script ") << script
@@ -161,35 +139,77 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
+CompareInputs read_compare_inputs(const CliArgs& a) {
+  if (!a.has("--policies")) throw UsageError("--policies: needs a list, e.g. perspective,talisman");
+  CompareInputs inputs;
+  std::vector<const ReusePolicy*>& policies = inputs.policies;
+  try {
+    policies = parse_policy_list(a.values("--policies").at(0));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--policies: ") + e.what());
+  }
+  for (const ReusePolicy* p : policies) {
+    if (p->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
+      throw UsageError(std::string("--policies: ") + p->name +
+                       " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+    }
+  }
+  refuse_options_without_their_policy(a, policies);
+  inputs.source = read_source(a, &inputs.kind);
+  const RunSource& source = inputs.source;
+  const bool budgeted = std::any_of(policies.begin(), policies.end(),
+                                    [](const ReusePolicy* p) { return p->shares_budget; });
+  if (source.settings.engine.budget.unit != FrameBudget::Unit::kNone && !budgeted) {
+    throw UsageError(std::string(a.has("--budget-ms") ? "--budget-ms" : "--budget-pixels") +
+                     ": needs budget in --policies (the only policy with a frame budget)");
+  }
+  return inputs;
+}
+
+const std::map<std::string, int>& compare_options() {
+  static const std::map<std::string, int> options = {{"--script", 1},
+                                                     {"--scene", 1},
+                                                     {"--policies", 1},
+                                                     {"--texture", 1},
+                                                     {"--threshold", 1},
+                                                     {"--thresholds", 4},
+                                                     {"--delta", 1},
+                                                     {"--sampling", 1},
+                                                     {"--frames", 1},
+                                                     {"--repeat-timing", 1},
+                                                     {"--out", 1},
+                                                     {"--force", 0},
+                                                     {"--json", 0},
+                                                     {"--quiet", 0},
+                                                     {"--near", 1},
+                                                     {"--guard-band", 1},
+                                                     {"--no-skip-hidden", 0},
+                                                     {"--content", 1},
+                                                     {"--quality", 1},
+                                                     {"--budget-pixels", 1},
+                                                     {"--budget-ms", 1},
+                                                     {"--cadence", 1},
+                                                     {"--stabilization-plane", 6},
+                                                     {"--hole-fill", 1},
+                                                     {"--cache-angle", 1},
+                                                     {"--node-polygons", 1},
+                                                     {"--safety-radius", 1}};
+  return options;
+}
+
+nlohmann::json compare_json(const CompareInputs& inputs, const std::vector<PolicyRow>& rows) {
+  const RunSource& source = inputs.source;
+  const std::string script = source.scene ? source.viewer.name : source.script.name;
+  nlohmann::json j = {{"script", script}, {"policies", nlohmann::json::array()}};
+  if (source.scene) j["scene"] = source.scene->name;
+  j["thresholds"] = source.settings.engine.thresholds;
+  for (const PolicyRow& row : rows) j["policies"].push_back(policy_row_json(row));
+  return j;
+}
+
 int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   try {
-    const CliArgs a(args, {{"--script", 1},
-                           {"--scene", 1},
-                           {"--policies", 1},
-                           {"--texture", 1},
-                           {"--threshold", 1},
-                           {"--thresholds", 4},
-                           {"--delta", 1},
-                           {"--sampling", 1},
-                           {"--frames", 1},
-                           {"--repeat-timing", 1},
-                           {"--out", 1},
-                           {"--force", 0},
-                           {"--json", 0},
-                           {"--quiet", 0},
-                           {"--near", 1},
-                           {"--guard-band", 1},
-                           {"--no-skip-hidden", 0},
-                           {"--content", 1},
-                           {"--quality", 1},
-                           {"--budget-pixels", 1},
-                           {"--budget-ms", 1},
-                           {"--cadence", 1},
-                           {"--stabilization-plane", 6},
-                           {"--hole-fill", 1},
-                           {"--cache-angle", 1},
-                           {"--node-polygons", 1},
-                           {"--safety-radius", 1}});
+    const CliArgs a(args, compare_options());
     if (!a.has("--script")) throw UsageError("--script: needs NAME|FILE");
     if (!a.has("--scene")) return compare(a, out, err);
     return report_scene_input_errors([&] { return compare(a, out, err); }, err, "compare");

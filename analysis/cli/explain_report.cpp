@@ -138,4 +138,26 @@ void print_explain_text(const nlohmann::json& j, std::ostream& out) {
   }
 }
 
+nlohmann::json explain_report(const CliArgs& a) {
+  const std::vector<double> k = a.numbers_in("--coefficients", limits::kFlowCoefficient);
+  const double focal = a.number_in("--focal", limits::kFocalLength);
+  const Vec2 at = a.has("--at") ? a.vec2("--at") : Vec2(0.0, 0.0);
+  PlanarFlowCoefficients c;
+  c.tx = k[0];
+  c.ty = k[1];
+  c.j11 = k[2];
+  c.j12 = k[3];
+  c.j21 = k[4];
+  c.j22 = k[5];
+  c.px = k[6];
+  c.py = k[7];
+  return explain_json(solve_inverse_flow(c, focal, at), at);
+}
+
+const std::map<std::string, int>& explain_options() {
+  static const std::map<std::string, int> options = {
+      {"--coefficients", 8}, {"--focal", 1}, {"--at", 2}};
+  return options;
+}
+
 }  // namespace oflab

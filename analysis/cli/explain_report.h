@@ -3,8 +3,10 @@
 #pragma once
 
 #include <iosfwd>
+#include <map>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_args.h"
 #include "flow/inverse_flow.h"
 
 namespace oflab {
@@ -20,6 +22,13 @@ namespace oflab {
 // meets the optical axis; slopes -N1/N3, -N2/N3 (null when N3 = 0). `front_pixel` is the
 // centred pixel at which every listed plane is in front of the eye (solve_inverse_flow's).
 nlohmann::json explain_json(const InverseFlowSolutions& result, const Vec2& front_pixel);
+
+// The object of `oflab-cli explain`'s options (explain_options()): --coefficients tx ty j11
+// j12 j21 j22 px py (each within limits::kFlowCoefficient), --focal F (limits::kFocalLength)
+// and --at x y (front_pixel; default the principal point). Throws UsageError naming the option.
+nlohmann::json explain_report(const CliArgs& args);
+// The options explain_report reads, name (with "--") -> number of values.
+const std::map<std::string, int>& explain_options();
 
 // The same object as lines of text: the number of solutions and the case, what was left
 // out, and for each solution its structure (normal, angle to the optical axis, slopes,

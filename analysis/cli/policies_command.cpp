@@ -24,6 +24,23 @@ namespace {
 // a frame only once the next one is rendered: one frame late.
 constexpr int kInterpolationLatencyFrames = 1;
 
+void print_text(std::ostream& stream) {
+  std::size_t width = 0;
+  for (const ReusePolicy& p : reuse_policies()) width = std::max(width, std::string(p.name).size());
+  std::ostringstream out;  // keeps the caller's stream formatting untouched
+  for (const ReusePolicy& p : reuse_policies()) {
+    out << std::left << std::setw(static_cast<int>(width)) << p.name << "  " << p.summary << "\n"
+        << std::string(width + 2, ' ') << "models: " << p.models << "\n"
+        << std::string(width + 2, ' ') << "breaks: " << p.breaks << "\n";
+  }
+  out << "Latency: every policy extrapolates from the last render (0 frames of delay); frame\n"
+         "generation's interpolation between two renders would show each frame "
+      << kInterpolationLatencyFrames << " frame late.\n";
+  stream << out.str();
+}
+
+}  // namespace
+
 nlohmann::ordered_json policies_json() {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const ReusePolicy& p : reuse_policies()) {
@@ -42,23 +59,6 @@ nlohmann::ordered_json policies_json() {
   report["interpolation_latency_frames"] = kInterpolationLatencyFrames;
   return report;
 }
-
-void print_text(std::ostream& stream) {
-  std::size_t width = 0;
-  for (const ReusePolicy& p : reuse_policies()) width = std::max(width, std::string(p.name).size());
-  std::ostringstream out;  // keeps the caller's stream formatting untouched
-  for (const ReusePolicy& p : reuse_policies()) {
-    out << std::left << std::setw(static_cast<int>(width)) << p.name << "  " << p.summary << "\n"
-        << std::string(width + 2, ' ') << "models: " << p.models << "\n"
-        << std::string(width + 2, ' ') << "breaks: " << p.breaks << "\n";
-  }
-  out << "Latency: every policy extrapolates from the last render (0 frames of delay); frame\n"
-         "generation's interpolation between two renders would show each frame "
-      << kInterpolationLatencyFrames << " frame late.\n";
-  stream << out.str();
-}
-
-}  // namespace
 
 // Bad options are UsageErrors, which run_cli reports; nothing else goes to `err`.
 int run_policies_command(const CommandArgs& args, std::ostream& out, std::ostream& /*err*/) {

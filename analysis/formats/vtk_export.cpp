@@ -28,6 +28,7 @@
 #include "flow/basis.h"
 #include "flow/limits.h"
 #include "formats/atomic_file.h"
+#include "runs/frame_maps.h"
 
 namespace oflab {
 namespace {
@@ -172,11 +173,9 @@ std::string difference_vti(const Camera& camera, const Image& shown, const Image
   vtkNew<vtkUnsignedCharArray> difference;
   difference->SetName("difference");
   difference->SetNumberOfTuples(static_cast<vtkIdType>(shown.pixel_count()));
-  for (std::size_t k = 0; k < shown.pixel_count(); ++k) {
-    const Pixel a = shown.pixels()[k], b = exact.pixels()[k];
-    const int d = std::max(
-        {std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
-    difference->SetValue(static_cast<vtkIdType>(k), static_cast<unsigned char>(d));
+  const std::vector<std::uint8_t> map = channel_difference_map(shown, exact);
+  for (std::size_t k = 0; k < map.size(); ++k) {
+    difference->SetValue(static_cast<vtkIdType>(k), map[k]);
   }
   grid->GetPointData()->SetScalars(difference);
   return xml_bytes<vtkXMLImageDataWriter>(grid.Get());

@@ -82,18 +82,8 @@ int check(const CommandArgs& args, std::ostream& out, std::ostream& err) {
   }
   int claims = 0, false_claims = 0, screen = 0;
   for (const Lesson* lesson : chosen) {
-    Lab lab(shipped_default_texture());
-    LabStage stage(&lab);
-    const auto measure = [&](const LessonClaim& claim) -> std::optional<double> {
-      const ClaimKind* kind = find_claim_kind(claim.claim);
-      if (!kind || kind->source != ClaimSource::kEngine) {
-        ++screen;
-        return std::nullopt;
-      }
-      return measure_engine_claim(lab, claim);
-    };
     try {
-      for (const ClaimCheck& c : check_lesson_claims(stage, *lesson, measure)) {
+      for (const ClaimCheck& c : check_engine_claims(*lesson, &screen)) {
         out << describe(*lesson, c) << "\n";
         ++claims;
         false_claims += !c.holds;

@@ -279,4 +279,18 @@ std::string describe(const Lesson& lesson, const ClaimCheck& check) {
          ", claimed " + claimed + ": " + (check.holds ? "holds" : "FALSE");
 }
 
+std::vector<ClaimCheck> check_engine_claims(const Lesson& lesson, int* screen_claims) {
+  Lab lab(shipped_default_texture());
+  LabStage stage(&lab);
+  const auto measure = [&](const LessonClaim& claim) -> std::optional<double> {
+    const ClaimKind* kind = find_claim_kind(claim.claim);
+    if (!kind || kind->source != ClaimSource::kEngine) {
+      if (screen_claims) ++*screen_claims;
+      return std::nullopt;
+    }
+    return measure_engine_claim(lab, claim);
+  };
+  return check_lesson_claims(stage, lesson, measure);
+}
+
 }  // namespace oflab

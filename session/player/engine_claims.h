@@ -68,6 +68,12 @@ std::vector<ClaimCheck> check_lesson_claims(
     const std::vector<LessonClaim>& every_part = {},
     const std::function<void(int)>& after_part = {});
 
+// The engine claims of `lesson` checked headlessly, as `oflab-cli lesson check` checks them:
+// a Lab with the shipped default texture as the stage, every part played in order, each
+// engine kind measured by measure_engine_claim; the claims of the screen's kinds are left
+// out and counted in *screen_claims (when not null). Throws as check_lesson_claims.
+std::vector<ClaimCheck> check_engine_claims(const Lesson& lesson, int* screen_claims = nullptr);
+
 // One line: the lesson, the part, the claim's words, what was measured against what was
 // claimed, and whether it holds: 'flow-of-a-plane, step 2: "translation is small"
 // (flow_ratio first-order/translation) measured 106.9, claimed at least 5: holds'.

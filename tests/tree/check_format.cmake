@@ -3,7 +3,7 @@
 #   cmake -DROOT=<source tree> [-DCLANG_FORMAT=<program>] -P tests/tree/check_format.cmake
 #
 # Runs `clang-format-14 --dry-run --Werror` over every C++ file (.h, .cpp) of core/,
-# analysis/, gui/, tests/, bench/ and fuzz/. The fixture trees under tests/tree/fixtures/
+# analysis/, session/, gui/, tests/, bench/, fuzz/, web/ and python/. The fixture trees under tests/tree/fixtures/
 # whose names start with "misformatted" are left out: they are wrong on purpose, for the
 # control that shows this check rejects them. The style is ROOT/.clang-format, or the one
 # of the tree this script sits in when ROOT has none (the fixture trees).
@@ -40,7 +40,7 @@ if(NOT EXISTS "${style}")
 endif()
 
 set(files "")
-foreach(folder IN ITEMS core analysis session gui tests bench fuzz web)
+foreach(folder IN ITEMS core analysis session gui tests bench fuzz web python)
   file(GLOB_RECURSE found RELATIVE "${ROOT}" "${ROOT}/${folder}/*.h" "${ROOT}/${folder}/*.cpp")
   list(APPEND files ${found})
 endforeach()

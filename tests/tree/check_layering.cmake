@@ -5,7 +5,8 @@
 #
 # Scans the C++ files (.h, .cpp) of core/, analysis/, session/, gui/ and of the code built with
 # each layer (tests/core with core, tests/analysis and bench/ with analysis, tests/session,
-# web/ (the browser page) and fuzz/ (the readers' harnesses) with session, tests/gui with gui).
+# web/ (the browser page), fuzz/ (the readers' harnesses) and python/ (the Python module) with
+# session, tests/gui with gui).
 # A quoted include is resolved the way the compiler resolves it: the including file's own
 # folder first, then the include roots its target sees (its test folder, its own layer, then
 # the layers below), and finally the layers above, where finding it is a violation.
@@ -213,6 +214,7 @@ endforeach()
 check_folder(bench 1 bench)  # oflab-bench links analysis (the engine cases read shipped scripts)
 check_folder(web 2 web)      # the browser page binds session (and core, analysis/formats)
 check_folder(fuzz 2 fuzz)    # the readers' harnesses read through session's readers
+check_folder(python 2 python)  # the Python module binds session (and analysis, core)
 
 list(LENGTH violations violation_count)
 if(violation_count GREATER 0)

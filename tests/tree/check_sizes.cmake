@@ -3,7 +3,7 @@
 #
 #   cmake -DROOT=<source tree> [-DMAX_LONG_FUNCTIONS=5] -P tests/tree/check_sizes.cmake
 #
-# Over the .cpp and .h files of core/, analysis/, session/, gui/ and web/:
+# Over the .cpp and .h files of core/, analysis/, session/, gui/, web/ and python/:
 #   - no .cpp together with its .h is longer than 800 lines;
 #   - at most MAX_LONG_FUNCTIONS functions are longer than 60 lines, as pmccabe counts them
 #     (its fifth column; Debian's pmccabe, installed by tools/install-deps.sh: a missing
@@ -21,7 +21,7 @@ if(NOT DEFINED MAX_LONG_FUNCTIONS)
 endif()
 
 set(files "")
-foreach(folder core analysis session gui web)
+foreach(folder core analysis session gui web python)
   file(GLOB_RECURSE found "${ROOT}/${folder}/*.h" "${ROOT}/${folder}/*.cpp")
   list(APPEND files ${found})
 endforeach()
