@@ -11,24 +11,15 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/animator.h"
-#include "image/image.h"
-
 namespace oflab {
 
 // The colour hole pixels are marked in: magenta, which neither the viridis ramp nor a level's
 // colour (session/display/palette.h) takes.
 QColor hole_colour();
 
-// Per pixel (row-major, camera-sized) 1 where `animator`'s frame shown now is a hole: the
-// depth-reprojection policy's frame left the pixel unreached (no source pixel) and `exact`,
-// the exact frame of the same view, covers it (alpha > 0); 0 elsewhere. Empty when the frame
-// shown now is no reprojection (another policy or source, or a frame rendered afresh on the
-// cadence), so it has no holes. Precondition: exact is the animator's camera size or empty.
-std::vector<char> reprojection_holes(const Animator& animator, const Image& exact);
-
-// Paints every hole pixel of `holes` (reprojection_holes) in hole_colour() on `map` (a heat
-// map of the same size) and returns how many it marked; 0 for an empty mask.
-std::int64_t mark_holes(QImage& map, const std::vector<char>& holes);
+// Paints every hole pixel of `holes` (analysis/runs/frame_maps.h reprojection_hole_map: 1 for
+// a hole, row-major) in hole_colour() on `map` (a heat map of the same size) and returns how
+// many it marked; 0 for an empty mask.
+std::int64_t mark_holes(QImage& map, const std::vector<std::uint8_t>& holes);
 
 }  // namespace oflab

@@ -22,6 +22,7 @@
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
 #include "player/stage_times.h"
+#include "runs/frame_maps.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_captions.h"
@@ -353,7 +354,7 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
     const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
     if (per_pixel) {
       // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
-      const std::int64_t marked = mark_holes(map, reprojection_holes(*run.animator(), exact));
+      const std::int64_t marked = mark_holes(map, reprojection_hole_map(*run.animator(), exact));
       hole_map_pixels_ += marked;
       caption << tr("holes (magenta): %1 px").arg(marked);
     }

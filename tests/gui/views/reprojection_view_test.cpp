@@ -13,6 +13,7 @@
 #include "app/lesson_check.h"
 #include "models/animation_model.h"
 #include "player/policy_comparison.h"
+#include "runs/frame_maps.h"
 #include "views/animation_view.h"
 #include "views/number_box.h"
 #include "views/reprojection_controls.h"
@@ -106,7 +107,8 @@ TEST_F(ReprojectionViewTest, HoleMapMarksTheDepthReprojectionsHolesAndOnlyThose)
   // An independent count: unreached pixels of the reprojection where the exact frame shows
   // something, through the adapter the view uses.
   const ComparedRun& run = window().model()->comparison().runs().front();
-  const std::vector<char> mask = reprojection_holes(*run.animator(), animation().exact_image());
+  const std::vector<std::uint8_t> mask =
+      reprojection_hole_map(*run.animator(), animation().exact_image());
   EXPECT_EQ(double(std::count(mask.begin(), mask.end(), 1)), marked);
   // Negative controls: the cadence policy warps whole layers and has no holes, an unknown
   // policy is not measured, and a claim of holes on cadence does not hold.
