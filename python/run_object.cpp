@@ -24,6 +24,7 @@
 #include "formats/scene_file.h"
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
+#include "report/report.h"
 #include "runs/frame_maps.h"
 #include "runs/policy_runs.h"
 #include "state/window_state_file.h"
@@ -501,22 +502,6 @@ py::object compare_source(py::object source, py::object policies, py::kwargs set
 }
 
 namespace {
-
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') {
-      out += "&lt;";
-    } else if (c == '>') {
-      out += "&gt;";
-    } else if (c == '&') {
-      out += "&amp;";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
 
 std::string colour_css(Level level) {
   const Rgb8 c = level_colour(level);

@@ -62,6 +62,9 @@ std::string render_html(const Report& report, const std::string& dir);
 // RFC 4648 base64 of `bytes` (with '=' padding).
 std::string base64_encode(const std::string& bytes);
 
+// `text` safe inside HTML text and attribute values: & < > " as character references.
+std::string html_escape(const std::string& text);
+
 // Writes `dir`/report.md and `dir`/report.html. Throws std::runtime_error naming the file
 // on failure.
 void write_report(const Report& report, const std::string& dir);

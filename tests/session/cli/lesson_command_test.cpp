@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli/cli_run.h"
 #include "formats/datasets.h"
 #include "lessons/lesson_player.h"
 #include "lessons/lessons.h"
@@ -23,25 +24,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code = 0;
-  std::string out, err;
-};
+using testing::CliRun;
 
 CliRun lesson(const CommandArgs& args) {
-  static const bool added = [] {
-    add_command(lesson_command());
-    return true;
-  }();
-  (void)added;
-  CommandArgs all = {"lesson"};
-  all.insert(all.end(), args.begin(), args.end());
-  std::ostringstream out, err;
-  CliRun r;
-  r.code = run_cli(all, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
+  return testing::run_session_command(lesson_command(), args);
 }
 
 // A lesson file "NAME.json" in a fresh folder, whose only step has `claim`.

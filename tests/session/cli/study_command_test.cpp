@@ -12,30 +12,17 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli/cli_run.h"
+
 namespace oflab {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code = 0;
-  std::string out, err;
-};
+using testing::CliRun;
 
 CliRun study(const CommandArgs& args) {
-  static const bool added = [] {
-    add_command(study_command());
-    return true;
-  }();
-  (void)added;
-  CommandArgs all = {"study"};
-  all.insert(all.end(), args.begin(), args.end());
-  std::ostringstream out, err;
-  CliRun r;
-  r.code = run_cli(all, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
+  return testing::run_session_command(study_command(), args);
 }
 
 std::string golden_text(const std::string& name) {
