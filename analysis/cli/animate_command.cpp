@@ -196,42 +196,20 @@ nlohmann::json animate_json(const AnimateInputs& inputs, const AnimationRun& run
 }
 
 const std::map<std::string, int>& animate_options() {
-  static const std::map<std::string, int> options = {{"--script", 1},
-                                                     {"--texture", 1},
-                                                     {"--mode", 1},
-                                                     {"--threshold", 1},
-                                                     {"--thresholds", 4},
-                                                     {"--delta", 1},
-                                                     {"--sampling", 1},
-                                                     {"--content", 1},
-                                                     {"--quality", 1},
-                                                     {"--budget-pixels", 1},
-                                                     {"--budget-ms", 1},
-                                                     {"--cadence", 1},
-                                                     {"--stabilization-plane", 6},
-                                                     {"--hole-fill", 1},
-                                                     {"--cache-angle", 1},
-                                                     {"--node-polygons", 1},
-                                                     {"--safety-radius", 1},
-                                                     {"--frames", 1},
-                                                     {"--repeat-timing", 1},
-                                                     {"--no-warm-up", 0},
-                                                     {"--repeat", 1},
-                                                     {"--out", 1},
-                                                     {"--force", 0},
-                                                     {"--frames-png", 0},
-                                                     {"--video", 1},
-                                                     {"--fps", 1},
-                                                     {"--vtk-series", 1},
-                                                     {"--json", 0},
-                                                     {"--quiet", 0},
-                                                     {"--scene", 1},
-                                                     {"--compare-conventional", 0},
-                                                     {"--conventional-single-sample", 0},
-                                                     {"--near", 1},
-                                                     {"--guard-band", 1},
-                                                     {"--no-skip-hidden", 0},
-                                                     {"--epsilon", 1}};
+  static const std::map<std::string, int> options = [] {
+    std::map<std::string, int> all = run_options();
+    all.insert({{"--mode", 1},
+                {"--no-warm-up", 0},
+                {"--repeat", 1},
+                {"--frames-png", 0},
+                {"--video", 1},
+                {"--fps", 1},
+                {"--vtk-series", 1},
+                {"--compare-conventional", 0},
+                {"--conventional-single-sample", 0},
+                {"--epsilon", 1}});
+    return all;
+  }();
   return options;
 }
 

@@ -44,8 +44,14 @@ RunSource read_plane_source(const CliArgs& args);
 // int. Throws UsageError naming --repeat, the value as typed and the limit.
 int read_repeat(const CliArgs& args, const MotionScript& script);
 
-// The options `oflab-cli animate` accepts, name (with "--") -> number of values: the one
-// table of its CliArgs, which the Python module reads too (manual/python.md).
+// The options both `oflab-cli animate` and `compare` accept, name (with "--") -> number of
+// values: the source (--script, --scene, --texture, --frames), the engine's and the scene's
+// settings (read_engine_settings, read_scene_settings) and the output (--out, --force,
+// --json, --quiet, --repeat-timing).
+const std::map<std::string, int>& run_options();
+
+// The options `oflab-cli animate` accepts (run_options and its own): the one table of its
+// CliArgs, which the Python module reads too (manual/python.md).
 const std::map<std::string, int>& animate_options();
 
 // The JSON of `animate --script ... --json` for a single plane: the plane kind's summary of
@@ -83,7 +89,7 @@ struct CompareInputs {
   std::vector<const ReusePolicy*> policies;
 };
 CompareInputs read_compare_inputs(const CliArgs& args);
-// The options `oflab-cli compare` accepts (as animate_options).
+// The options `oflab-cli compare` accepts: run_options and --policies (as animate_options).
 const std::map<std::string, int>& compare_options();
 // The JSON of `compare --json`: {"script", "scene" (with a scene), "thresholds",
 // "policies": a policy_row_json per row} (analysis/runs/policy_runs.h).

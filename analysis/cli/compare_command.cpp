@@ -167,33 +167,11 @@ CompareInputs read_compare_inputs(const CliArgs& a) {
 }
 
 const std::map<std::string, int>& compare_options() {
-  static const std::map<std::string, int> options = {{"--script", 1},
-                                                     {"--scene", 1},
-                                                     {"--policies", 1},
-                                                     {"--texture", 1},
-                                                     {"--threshold", 1},
-                                                     {"--thresholds", 4},
-                                                     {"--delta", 1},
-                                                     {"--sampling", 1},
-                                                     {"--frames", 1},
-                                                     {"--repeat-timing", 1},
-                                                     {"--out", 1},
-                                                     {"--force", 0},
-                                                     {"--json", 0},
-                                                     {"--quiet", 0},
-                                                     {"--near", 1},
-                                                     {"--guard-band", 1},
-                                                     {"--no-skip-hidden", 0},
-                                                     {"--content", 1},
-                                                     {"--quality", 1},
-                                                     {"--budget-pixels", 1},
-                                                     {"--budget-ms", 1},
-                                                     {"--cadence", 1},
-                                                     {"--stabilization-plane", 6},
-                                                     {"--hole-fill", 1},
-                                                     {"--cache-angle", 1},
-                                                     {"--node-polygons", 1},
-                                                     {"--safety-radius", 1}};
+  static const std::map<std::string, int> options = [] {
+    std::map<std::string, int> all = run_options();
+    all.insert({"--policies", 1});
+    return all;
+  }();
   return options;
 }
 
