@@ -86,8 +86,9 @@ struct AnimationFrame {
   double update_ms = 0.0;                 // of which updating layers (warps, bookkeeping)
   double composite_ms = 0.0;              // of which clearing the frame and compositing
   double visibility_ms = 0.0;             // of which the hidden test
-  std::int64_t pixels_written = 0;        // by the warp kernels
-  std::int64_t pixels_composited = 0;     // into the frame
+  int update_waves = 0;             // the scene engine's waves of layer updates (scene_animator.h)
+  std::int64_t pixels_written = 0;  // by the warp kernels
+  std::int64_t pixels_composited = 0;  // into the frame
   // The layers' work in the engine's cost model (core/engine/cost_model.h kPerspectiveWarpCost
   // and the rest; pixels of a perspective warp, deterministic), the part of update_ms spent
   // rendering contents, and the largest photometric error (FrameReport) of a drawn layer.

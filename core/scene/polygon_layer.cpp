@@ -70,7 +70,7 @@ std::vector<std::unique_ptr<PolygonLayer>> make_polygon_layers(const Scene& scen
   return layers;
 }
 
-void SceneEngine::render_clipped(int index, const ViewerPose& view, AnimationFrame& report) {
+void SceneEngine::render_clipped(int index, const ViewerPose& view, AnimationFrame& tally) {
   PolygonLayer& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
   s.clipped_layer = PlacedLayer{};
@@ -80,7 +80,7 @@ void SceneEngine::render_clipped(int index, const ViewerPose& view, AnimationFra
     s.clipped_layer =
         render_clipped_piece(camera_, content, scratch_textures_[polygon.texture], pose,
                              texel_polygon(s.uv, s.texture_size), s.clipped,
-                             settings_.engine.sampling, &report.pixels_written, &report.model_work);
+                             settings_.engine.sampling, &tally.pixels_written, &tally.model_work);
   } catch (const std::invalid_argument&) {
     // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.
   }
@@ -158,64 +158,98 @@ void SceneEngine::allocate_polygons(AnimationFrame& report) {
   }
 }
 
-void SceneEngine::starve(int index) {
-  statuses_[index] = PolygonStatus::kStarved;
-  states_[index]->live = false;
-  ledger_.applied(Level::kRerender, 0.0, 0, true);
+void PolygonUpdate::add_to(AnimationFrame& report) const {
+  for (int k = 0; k < kLevelCount; ++k) report.levels[k] += tally.levels[k];
+  report.clipped += tally.clipped;
+  RerenderCauses& c = report.rerender_causes;
+  c.schedule += tally.rerender_causes.schedule;
+  c.sampling_limit += tally.rerender_causes.sampling_limit;
+  c.refused += tally.rerender_causes.refused;
+  c.no_image += tally.rerender_causes.no_image;
+  c.clipped += tally.rerender_causes.clipped;
+  report.pixels_written += tally.pixels_written;
+  report.model_work += tally.model_work;
+  report.update_ms += tally.update_ms;
+  report.render_ms += tally.render_ms;
+  report.max_photometric_error =
+      std::max(report.max_photometric_error, tally.max_photometric_error);
+  report.max_measured_error_px =
+      std::max(report.max_measured_error_px, tally.max_measured_error_px);
 }
 
-void SceneEngine::update_polygon(int index, const ViewerPose& current, AnimationFrame& report) {
+void SceneEngine::starve(int index, PolygonUpdate& u) {
+  statuses_[index] = PolygonStatus::kStarved;
+  states_[index]->live = false;
+  u.applied = true;
+  u.level = Level::kRerender;
+  u.starved = true;
+}
+
+void SceneEngine::update_polygon(int index, const ViewerPose& current, PolygonUpdate& u) {
   PolygonLayer& s = *states_[index];
+  AnimationFrame& tally = u.tally;
   const auto t0 = Clock::now();
   s.updated = true;
   if (s.needs_clipping) {
     if (!s.allocated_shown) {
       s.clipped_layer = PlacedLayer{};
-      starve(index);
-      report.update_ms += ms_since(t0);
+      starve(index, u);
+      tally.update_ms += ms_since(t0);
       return;
     }
-    const std::int64_t before = report.pixels_written;
-    render_clipped(index, current, report);
+    render_clipped(index, current, tally);
     statuses_[index] = PolygonStatus::kClipped;
     levels_[index] = Level::kRerender;
-    ++report.levels[static_cast<int>(Level::kRerender)];
-    ++report.clipped;
+    ++tally.levels[static_cast<int>(Level::kRerender)];
+    ++tally.clipped;
     ++(scheduled_render_frame(frame_index_, *settings_.engine.policy)
-           ? report.rerender_causes.schedule
-           : report.rerender_causes.clipped);
+           ? tally.rerender_causes.schedule
+           : tally.rerender_causes.clipped);
     s.live = false;
-    ledger_.applied(Level::kRerender, ms_since(t0), report.pixels_written - before, s.starved);
-    report.update_ms += ms_since(t0);
+    u.applied = true;
+    u.level = Level::kRerender;
+    u.ms = ms_since(t0);
+    u.pixels = tally.pixels_written;
+    u.starved = s.starved;
+    tally.update_ms += u.ms;
     return;
   }
   const FrameReport r = s.animator->apply(s.allocated, s.allocated_shown);
   if (!s.allocated_shown && s.candidates.kind == LayerCandidates::Kind::kFresh) {
-    starve(index);
-    report.update_ms += ms_since(t0);
+    starve(index, u);
+    tally.update_ms += ms_since(t0);
     return;
   }
   if (r.level == Level::kRerender) {
-    count_rerender_cause(s.candidates.kind == LayerCandidates::Kind::kFresh, r.note, report);
+    count_rerender_cause(s.candidates.kind == LayerCandidates::Kind::kFresh, r.note, tally);
   }
   s.live = true;
   statuses_[index] = PolygonStatus::kAnimated;
   levels_[index] = r.level;
-  ++report.levels[static_cast<int>(r.level)];
-  report.pixels_written += r.pixels_written;
-  report.model_work += r.model_work;
-  report.render_ms += r.render_ms;
-  report.max_photometric_error = std::max(report.max_photometric_error, r.photometric_error);
-  ledger_.applied(r.level, r.time_ms, r.pixels_written, s.starved);
+  ++tally.levels[static_cast<int>(r.level)];
+  tally.pixels_written += r.pixels_written;
+  tally.model_work += r.model_work;
+  tally.render_ms += r.render_ms;
+  tally.max_photometric_error = std::max(tally.max_photometric_error, r.photometric_error);
+  u.applied = true;
+  u.level = r.level;
+  u.ms = r.time_ms;
+  u.pixels = r.pixels_written;
+  u.starved = s.starved;
   s.report = r;
   if (r.visible)
-    report.max_measured_error_px = std::max(report.max_measured_error_px, r.measured_error_px);
-  report.update_ms += ms_since(t0);
+    tally.max_measured_error_px = std::max(tally.max_measured_error_px, r.measured_error_px);
+  tally.update_ms += ms_since(t0);
+}
+
+void SceneEngine::record_update(const PolygonUpdate& u, AnimationFrame& report) {
+  u.add_to(report);
+  if (u.applied) ledger_.applied(u.level, u.ms, u.pixels, u.starved);
 }
 
 void SceneEngine::count_rerender_cause(bool fresh, const std::string& note,
-                                       AnimationFrame& report) const {
-  RerenderCauses& c = report.rerender_causes;
+                                       AnimationFrame& tally) const {
+  RerenderCauses& c = tally.rerender_causes;
   const auto starts = [&](const char* prefix) { return note.rfind(prefix, 0) == 0; };
   if (fresh) {
     ++(scheduled_render_frame(frame_index_, *settings_.engine.policy) ? c.schedule : c.no_image);

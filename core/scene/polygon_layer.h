@@ -8,9 +8,11 @@
 // Units: top-left image pixels for regions and layers, world units for the outline.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "engine/animator.h"
 #include "engine/budget.h"
 #include "engine/decision.h"
 #include "engine/engine.h"
@@ -42,9 +44,10 @@ struct PolygonLayer {
   ConvexPolygon exact_region;  // its exact image, top-left pixels (once region_known)
   bool region_known = false;
   bool needs_clipping = false;  // near plane or guard band: render clipped, exactly
-  bool updated = false;
-  PlacedLayer clipped_layer;  // the clipped exact render (status kClipped)
-  FrameReport report;         // the animator's report (status kAnimated)
+  bool updated = false;         // updated, or its update waits in the current wave
+  bool in_wave = false;         // its update waits in the current wave
+  PlacedLayer clipped_layer;    // the clipped exact render (status kClipped)
+  FrameReport report;           // the animator's report (status kAnimated)
   // The measure and allocate phases: what it could do, and what it was given.
   LayerCandidates candidates;
   Level allocated = Level::kRerender;
@@ -58,6 +61,25 @@ struct PolygonLayer {
     if (status == PolygonStatus::kStarved) return nullptr;
     return animator ? &animator->displayed() : nullptr;
   }
+};
+
+// What one polygon's update adds to its frame. The scene engine updates the polygons of one
+// wave (core/scene/scene_animator.h, step 4) on the worker threads, each into its own
+// PolygonUpdate, then adds them to the frame's report and to the budget's ledger in the
+// walk's order: the report is the same bytes on any number of threads.
+struct PolygonUpdate {
+  // Levels, clipped, re-render causes, pixels written, model work, update and render times,
+  // and the largest measured and photometric errors of this polygon's update.
+  AnimationFrame tally;
+  // The ledger's entry (BudgetLedger::applied); `applied` false for none.
+  bool applied = false;
+  Level level = Level::kRerender;
+  double ms = 0.0;
+  std::int64_t pixels = 0;
+  bool starved = false;
+
+  // Adds the tally to `report`: counts, pixels, work and times summed, errors as maxima.
+  void add_to(AnimationFrame& report) const;
 };
 
 // One layer per polygon of `scene`, in order, with its outline, texture size and opacity

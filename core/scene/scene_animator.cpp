@@ -11,6 +11,7 @@
 #include "engine/wall_clock.h"
 #include "flow/homography.h"
 #include "image/composite.h"
+#include "image/thread_pool.h"
 
 namespace oflab {
 namespace {
@@ -186,15 +187,13 @@ const ConvexPolygon& SceneEngine::polygon_region(int polygon) {
   return s.exact_region;
 }
 
-bool SceneEngine::fragment_hidden(int fragment, const ViewerPose& view) {
+ConvexPolygon SceneEngine::hidden_candidate(int fragment, const ViewerPose& view) {
   const BspFragment& f = bsp_.fragments()[fragment];
-  const PolygonLayer& s = *states_[f.polygon];
-  if (s.whole) return occlusion_.covers(polygon_region(f.polygon), settings_.candidate_margin_px);
+  if (states_[f.polygon]->whole) return polygon_region(f.polygon);
   ViewPolygon piece;
   for (const Vec3& v : f.vertices) piece.points.push_back(to_view(view, v));
   piece.uv = f.uv;
-  return occlusion_.covers(exact_region(clip_to_frustum(piece, frustum_)),
-                           settings_.candidate_margin_px);
+  return exact_region(clip_to_frustum(piece, frustum_));
 }
 
 bool SceneEngine::cadence_frame() const {
@@ -328,34 +327,138 @@ void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame
   fragment_drawn_.assign(fragments.size(), 0);
   fragment_regions_.resize(fragments.size());
   occlusion_.clear(camera_.width, camera_.height);
-  // Front to back: decide visibility against what is already in front, update, and let
-  // the drawn fragment hide what lies behind it.
+  wave_.clear();
+  // Front to back: decide visibility against what is already in front, queue the update,
+  // and once the wave has run let each drawn fragment hide what lies behind it.
   for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
     const int f = *it;
     const int p = fragments[f].polygon;
-    PolygonLayer& s = *states_[p];
     if (statuses_[p] == PolygonStatus::kBackFacing ||
         statuses_[p] == PolygonStatus::kOutsideFrustum) {
       continue;
     }
-    if (!s.updated) {
+    const bool update = !states_[p]->updated;
+    if (update) {
+      const auto tv = Clock::now();
+      const ConvexPolygon candidate =
+          settings_.skip_hidden ? hidden_candidate(f, current) : ConvexPolygon();
+      const bool blocked = !settings_.waves || wave_blocks(p, candidate);
+      report.visibility_ms += ms_since(tv);
+      if (blocked) run_wave(current, report);
       if (settings_.skip_hidden) {
-        const auto tv = Clock::now();
-        const bool hidden = fragment_hidden(f, current);
-        report.visibility_ms += ms_since(tv);
+        const auto th = Clock::now();
+        const bool hidden = occlusion_.covers(candidate, settings_.candidate_margin_px);
+        report.visibility_ms += ms_since(th);
         if (hidden) continue;
       }
-      update_polygon(p, current, report);
     }
+    wave_.push_back(wave_entry(f, update));
+  }
+  run_wave(current, report);
+}
+
+SceneEngine::WaveEntry SceneEngine::wave_entry(int fragment, bool update) {
+  const int p = bsp_.fragments()[fragment].polygon;
+  PolygonLayer& s = *states_[p];
+  WaveEntry e;
+  e.fragment = fragment;
+  e.update = update;
+  if (update) {
+    s.updated = true;
+    s.in_wave = true;
+  }
+  e.occludes = settings_.skip_hidden && s.opaque;
+  if (!e.occludes) return e;
+  if (!s.in_wave) {
+    // Updated in an earlier wave: its layer is known.
     const PlacedLayer* shown = s.shown(statuses_[p]);
-    if (!shown || shown->layer.empty()) continue;
-    fragment_drawn_[f] = 1;
-    if (!s.whole) fragment_regions_[f] = fragment_region(f, current);
-    if (settings_.skip_hidden && s.opaque) {
-      const auto tv = Clock::now();
-      add_occluder(f, *shown);
-      report.visibility_ms += ms_since(tv);
+    e.occludes = shown && !shown->layer.empty();
+    if (e.occludes) {
+      e.reach = translated(shown->layer.polygon, shown->offset_x, shown->offset_y).bounds();
     }
+    return e;
+  }
+  // Its layer is still to come: its exact image grown by what the shown layer may stray
+  // from it (the errors its level leaves, this frame's and the last frame's, and rounding).
+  double stray = 8.0;
+  if (!s.needs_clipping && s.candidates.kind == LayerCandidates::Kind::kChoice) {
+    const int level = static_cast<int>(s.allocated);
+    if (level < kTermCount) stray += 2.0 * s.candidates.error[level];
+    if (s.live && std::isfinite(s.report.measured_error_px)) {
+      stray += 2.0 * s.report.measured_error_px;
+    }
+  }
+  const BoundingBox b = polygon_region(p).bounds();
+  e.reach = {b.x_min - stray, b.y_min - stray, b.x_max + stray, b.y_max + stray};
+  return e;
+}
+
+// True when the wave must run before polygon p is tested and queued: a layer of the wave
+// may reach its hidden test's candidate, or both are clipped texture renders sharing the
+// scratch texture they draw from.
+bool SceneEngine::wave_blocks(int polygon, const ConvexPolygon& candidate) const {
+  const auto uses_scratch = [&](int p) {
+    return states_[p]->needs_clipping && !content_is_lit(polygon_content(p));
+  };
+  const bool scratch = uses_scratch(polygon);
+  const int texture = scene_.polygons[polygon].texture;
+  BoundingBox need;
+  const bool tested = !candidate.empty();
+  if (tested) {
+    const BoundingBox b = candidate.bounds();
+    const double m = settings_.candidate_margin_px;
+    need = {b.x_min - m, b.y_min - m, b.x_max + m, b.y_max + m};
+  }
+  for (const WaveEntry& e : wave_) {
+    const int p = bsp_.fragments()[e.fragment].polygon;
+    if (e.update && scratch && uses_scratch(p) && scene_.polygons[p].texture == texture) {
+      return true;
+    }
+    if (tested && e.occludes && e.reach.x_min < need.x_max && need.x_min < e.reach.x_max &&
+        e.reach.y_min < need.y_max && need.y_min < e.reach.y_max) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void SceneEngine::run_wave(const ViewerPose& current, AnimationFrame& report) {
+  std::vector<int> polygons;
+  for (const WaveEntry& e : wave_) {
+    if (e.update) polygons.push_back(bsp_.fragments()[e.fragment].polygon);
+  }
+  std::vector<PolygonUpdate> updates(polygons.size());
+  const int count = static_cast<int>(polygons.size());
+  if (count > 0) ++report.update_waves;
+  if (count == 1) {
+    update_polygon(polygons[0], current, updates[0]);  // its own loops use the threads
+  } else if (count > 1) {
+    for_each_band(count, 1, [&](int, int begin, int end) {
+      for (int k = begin; k < end; ++k) update_polygon(polygons[k], current, updates[k]);
+    });
+  }
+  std::size_t next = 0;
+  for (const WaveEntry& e : wave_) {
+    if (e.update) {
+      states_[polygons[next]]->in_wave = false;
+      record_update(updates[next++], report);
+    }
+    draw_fragment(e.fragment, current, report);
+  }
+  wave_.clear();
+}
+
+void SceneEngine::draw_fragment(int fragment, const ViewerPose& current, AnimationFrame& report) {
+  const int p = bsp_.fragments()[fragment].polygon;
+  PolygonLayer& s = *states_[p];
+  const PlacedLayer* shown = s.shown(statuses_[p]);
+  if (!shown || shown->layer.empty()) return;
+  fragment_drawn_[fragment] = 1;
+  if (!s.whole) fragment_regions_[fragment] = fragment_region(fragment, current);
+  if (settings_.skip_hidden && s.opaque) {
+    const auto tv = Clock::now();
+    add_occluder(fragment, *shown);
+    report.visibility_ms += ms_since(tv);
   }
 }
 

@@ -16,7 +16,14 @@
 //     (its candidate levels and their costs), the levels are allocated over all of them
 //     (each its own choice, or the `budget` policy's share of a per-frame budget), and the
 //     walk of step 3 applies them; a polygon found hidden then leaves its share unspent,
-//     and one the budget could not afford a render is "starved": not drawn this frame;
+//     and one the budget could not afford a render is "starved": not drawn this frame.
+//     The walk queues the updates in waves that run at once on the worker threads
+//     (core/image/thread_pool.h): a polygon joins the wave unless a layer already in it may
+//     reach the image region its hidden test looks at (that layer's exact image grown by
+//     the errors its level leaves) or both render clipped textures from one scratch copy;
+//     then the wave runs first. The updates are recorded (report, ledger, occluders) in the
+//     walk's order, so frames and reports are the same bytes as one polygon at a time, on
+//     any number of threads;
 //  5. composite the layers back to front into the frame (premultiplied, transparent where
 //     nothing is drawn).
 //
@@ -78,6 +85,9 @@ struct SceneSettings {
   // clipped and rendered exactly, which bounds every layer's size.
   double guard_band = 0.5;
   bool skip_hidden = true;  // step 3 above
+  // Step 4's updates in waves on the worker threads (true), or one polygon at a time (the
+  // walk as written, which the waves must reproduce to the byte; tests compare the two).
+  bool waves = true;
   // Conservative margins of the hidden test, in pixels: occluders are shrunk by
   // occluder_inset_px (the border pixels of a warped layer may be partly transparent) and
   // the candidate's exact image is grown by candidate_margin_px (pixel rounding).
@@ -149,8 +159,22 @@ class SceneEngine {
                            const ViewerPose& current);
   void classify(const ViewerPose& view, AnimationFrame& report);
   void update_front_to_back(const ViewerPose& current, AnimationFrame& report);
-  bool fragment_hidden(int fragment, const ViewerPose& view);
+  // The image region the hidden test of a fragment must find covered (exact, top-left
+  // pixels; the test grows it by candidate_margin_px).
+  ConvexPolygon hidden_candidate(int fragment, const ViewerPose& view);
   void add_occluder(int fragment, const PlacedLayer& shown);
+  // The waves of step 4 (scene_animator.cpp): fragments in the walk's order whose polygons'
+  // updates run at once on the worker threads, then are recorded in that order.
+  struct WaveEntry {
+    int fragment = 0;
+    bool update = false;    // this entry's polygon is updated in the wave
+    bool occludes = false;  // its layer may become an occluder: `reach` holds its box
+    BoundingBox reach;
+  };
+  WaveEntry wave_entry(int fragment, bool update);
+  bool wave_blocks(int polygon, const ConvexPolygon& candidate) const;
+  void run_wave(const ViewerPose& current, AnimationFrame& report);
+  void draw_fragment(int fragment, const ViewerPose& current, AnimationFrame& report);
   void tally_hidden_and_stale(AnimationFrame& report);
   void compose(AnimationFrame& report);
   const ConvexPolygon& polygon_region(int polygon);
@@ -170,12 +194,16 @@ class SceneEngine {
   void allocate_polygons(AnimationFrame& report);
   LayerCandidates clipped_candidates(int polygon);
   PlaneEngine& polygon_engine(int polygon);
-  void update_polygon(int polygon, const ViewerPose& current, AnimationFrame& report);
-  void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& report);
-  void starve(int polygon);
-  // Adds a re-render of a polygon to report.rerender_causes: `fresh` when it had no image
+  // One polygon's update into `u` (safe to run at once for different polygons: it writes
+  // only the polygon's own layer, status and level), and its record into the frame's
+  // report and the ledger (in the walk's order).
+  void update_polygon(int polygon, const ViewerPose& current, PolygonUpdate& u);
+  void record_update(const PolygonUpdate& u, AnimationFrame& report);
+  void render_clipped(int polygon, const ViewerPose& view, AnimationFrame& tally);
+  void starve(int polygon, PolygonUpdate& u);
+  // Adds a re-render of a polygon to tally.rerender_causes: `fresh` when it had no image
   // to warp, else by its engine report's note (sampling limit, refusal) or its schedule.
-  void count_rerender_cause(bool fresh, const std::string& note, AnimationFrame& report) const;
+  void count_rerender_cause(bool fresh, const std::string& note, AnimationFrame& tally) const;
   // The engine's content settings with the polygon's own kind of content.
   LayerContent polygon_content(int polygon) const;
 
@@ -191,6 +219,7 @@ class SceneEngine {
   std::vector<int> order_;
   std::vector<char> fragment_drawn_;
   std::vector<ConvexPolygon> fragment_regions_;
+  std::vector<WaveEntry> wave_;
   OcclusionTest occlusion_;
   BudgetLedger ledger_;
   Image frame_;
