@@ -294,8 +294,24 @@ const Image& AnimationView::engine_image() {
   return animator ? animator->image() : kEmpty;
 }
 
+const Image* AnimationView::compared_exact_frame() {
+  const Animator* animator = model_->animator();
+  if (!animator || exact_kind_->name != "core" || model_->source_kind().name != "scene" ||
+      window_->panel_display() != PanelDisplay::kComparison) {
+    return nullptr;
+  }
+  for (const ComparedRun& run : comparison_->runs()) {
+    if (std::string(run.policy->name) == "rerender" && run.animator() &&
+        run.animator()->frame() == animator->frame()) {
+      return &run.animator()->image();
+    }
+  }
+  return nullptr;
+}
+
 const Image& AnimationView::exact_image() {
   const Animator* animator = model_->animator();
+  if (const Image* compared = compared_exact_frame()) return *compared;
   if (!animator || exact_frame_index_ == animator->frame()) return exact_frame_;
   try {
     const StageTimer timer(FrameStage::kExactFrame);

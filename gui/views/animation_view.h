@@ -128,6 +128,11 @@ class AnimationView : public ViewPage {
   // when nothing can be played).
   const Image& engine_image();
   const Image& exact_image();
+  // The frame of a compared run that re-renders a scene, when the comparison is shown, it is
+  // on the current frame and core draws the exact panel: that frame is the exact frame (a
+  // scene engine re-rendering as it advances shows the bytes of one started afresh at the
+  // frame's view, tests/core/scene), so it is not drawn twice. nullptr otherwise.
+  const Image* compared_exact_frame();
 
   // Redraws when visible.
   void refresh();
