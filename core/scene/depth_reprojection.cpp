@@ -47,7 +47,7 @@ bool move_point(const Camera& camera, const RigidStep3& step, const Vec3& m, dou
 // centre lands.
 struct SplatBuffers {
   std::vector<double> z;     // inverse depth of what each pixel shows; -1: nothing yet
-  std::vector<double> dist;  // distance from its splat's centre
+  std::vector<double> dist;  // squared distance from its splat's centre, px^2
   std::vector<Vec2> exact;   // where each source pixel centre lands now
   std::vector<int> polygon;  // the polygon of the splat each pixel shows (where it shows one)
 };
@@ -188,7 +188,8 @@ std::int64_t paint_splat(const SplatPlan& plan, std::size_t s, int y_begin, int 
       const std::size_t d = static_cast<std::size_t>(y) * width + x;
       const bool same = r.source[d] >= 0 && buffers.polygon[d] == polygon;
       if (!same && centre_w <= buffers.z[d]) continue;  // something nearer (or the same)
-      const double e = glm::length(c - landed);
+      // Squared: the nearer of two landings without a square root per pixel.
+      const double e = glm::dot(c - landed, c - landed);
       if (same && e >= buffers.dist[d]) continue;  // a splat of the same surface lands nearer
       buffers.z[d] = centre_w;
       buffers.dist[d] = e;
