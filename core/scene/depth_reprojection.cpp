@@ -78,13 +78,14 @@ struct CornerLattice {
 
 // The working memory of one reprojection, kept by each thread that reprojects: a frame's
 // buffers are tens of megabytes, and fresh ones cost a page fault per page every frame.
-// Sized for `n` pixels and `rows` rows; what a pass reads before it writes is reset here.
+// Sized for `n` pixels and `rows` rows; what a pass reads before it writes is reset here, but
+// the inverse depths, which the first pass resets band by band.
 struct ReprojectionScratch {
   SplatBuffers buffers;
   CornerLattice lattice;
   SplatPlan plan;
   void prepare(std::size_t n, int rows) {
-    buffers.z.assign(n, -1.0);
+    buffers.z.resize(n);  // reset to -1 by the first pass, band by band
     buffers.dist.resize(n);
     buffers.exact.resize(n);
     buffers.polygon.resize(n);
@@ -439,6 +440,8 @@ Reprojection reproject_by_depth(const Image& rendered, const DepthFrame& depth,
   // frame's size alone, so the frame is the same with any number of threads.
   const int min_rows = std::max(4, 16384 / std::max(width, 1));
   for_each_band(height, min_rows, [&](int, int begin, int end) {
+    std::fill(buffers.z.begin() + static_cast<std::ptrdiff_t>(begin) * width,
+              buffers.z.begin() + static_cast<std::ptrdiff_t>(end) * width, -1.0);
     move_lattice_rows(depth, camera, step, near, begin, end, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
