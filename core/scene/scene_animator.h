@@ -174,6 +174,9 @@ class SceneEngine {
   WaveEntry wave_entry(int fragment, bool update);
   bool wave_blocks(int polygon, const ConvexPolygon& candidate) const;
   void run_wave(const ViewerPose& current, AnimationFrame& report);
+  // A rough cost of a queued update, to start the dearest first: the pixels its level may
+  // write (LayerCandidates::pixels), eight times over for a lit content's render.
+  double update_cost(int polygon);
   void draw_fragment(int fragment, const ViewerPose& current, AnimationFrame& report);
   void tally_hidden_and_stale(AnimationFrame& report);
   void compose(AnimationFrame& report);
