@@ -332,6 +332,9 @@ DepthFrame render_depth(const Scene& scene, const Camera& camera, const ViewerPo
   depth.polygon.assign(n, -1);
   depth.planes.assign(scene.polygons.size(), Vec3(0.0));
   const ViewFrustum frustum = view_frustum(camera, near, 1.0);
+  // The visible polygons' image regions, in polygon order.
+  std::vector<int> drawn;
+  std::vector<ConvexPolygon> regions;
   for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
     const ScenePolygon& polygon = scene.polygons[i];
     const Vec3 front = direction_to_view(view, polygon.front);
@@ -342,22 +345,31 @@ DepthFrame render_depth(const Scene& scene, const Camera& camera, const ViewerPo
     clipped.uv = polygon_outline(polygon);
     clipped = clip_to_frustum(clipped, frustum);
     if (clipped.empty()) continue;
-    const Vec3 m = plane_vector_of(centre, front);
-    depth.planes[i] = m;
-    const ConvexPolygon region = project_to_pixels(camera, clipped);
-    ScanConverter rows(region, camera.width, camera.height);
-    PixelSpan span;
-    while (rows.next(span)) {
-      for (int x = span.x_begin; x < span.x_end; ++x) {
-        const std::size_t k = static_cast<std::size_t>(span.y) * camera.width + x;
-        const double w = glm::dot(m, pixel_direction(camera, x + 0.5, span.y + 0.5));
-        if (w > depth.inverse_depth[k]) {
-          depth.inverse_depth[k] = w;
-          depth.polygon[k] = static_cast<int>(i);
+    depth.planes[i] = plane_vector_of(centre, front);
+    drawn.push_back(static_cast<int>(i));
+    regions.push_back(project_to_pixels(camera, clipped));
+  }
+  // Bands of rows on the worker threads, each drawing every polygon in order over its rows:
+  // every pixel sees the polygons in the same order on any number of threads.
+  const int min_rows = std::max(4, 16384 / std::max(camera.width, 1));
+  for_each_band(camera.height, min_rows, [&](int, int begin, int end) {
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+      const Vec3 m = depth.planes[static_cast<std::size_t>(drawn[k])];
+      ScanConverter rows(regions[k], camera.width, camera.height);
+      rows.clip_rows(begin, end);
+      PixelSpan span;
+      while (rows.next(span)) {
+        for (int x = span.x_begin; x < span.x_end; ++x) {
+          const std::size_t p = static_cast<std::size_t>(span.y) * camera.width + x;
+          const double w = glm::dot(m, pixel_direction(camera, x + 0.5, span.y + 0.5));
+          if (w > depth.inverse_depth[p]) {
+            depth.inverse_depth[p] = w;
+            depth.polygon[p] = drawn[k];
+          }
         }
       }
     }
-  }
+  });
   return depth;
 }
 
