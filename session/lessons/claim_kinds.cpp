@@ -92,7 +92,9 @@ std::vector<ClaimKind> make_kinds() {
       screen("active_tiles", "tiles of the basis gallery with a non-zero coefficient"),
       screen("heat_map_width",
              "the narrowest heat map of the comparison layout as drawn: the width of what it "
-             "shows (the exact outlines' bounding box) on it, screen pixels"),
+             "shows (the exact outlines' bounding box) on it, in pixels of the 1920 x 1080 "
+             "look: screen pixels over presentation mode's scale (0.711 at 1366 x 768, 1 at "
+             "1920 x 1080 and in the normal look)"),
       screen("panel_fill",
              "the share (percent) of its panel that what a view in front shows now covers, the "
              "smallest over the views in front: the animation view's exact panel inside the "
