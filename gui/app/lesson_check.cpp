@@ -60,8 +60,8 @@ std::vector<ViewPage*> shown_views(MainWindow* window) {
 
 // The percent of its panel what a view in front draws covers, the smallest over them: the
 // animation view's exact panel (the exact frame's content as drawn), the flow view's scene
-// region (the plane's image), the world view's picture (the hull of the plane or the scene,
-// the eye and its image plane); NaN when none of them is in front.
+// region (the plane's image), the world view's picture between its legend and caption (the hull of
+// the plane or the scene, the eye and its image plane); NaN when none of them is in front.
 double panel_fill(MainWindow* window) {
   double smallest = kUnknown;
   for (ViewPage* page : shown_views(window)) {

@@ -100,8 +100,8 @@ std::vector<ClaimKind> make_kinds() {
              "smallest over the views in front: the animation view's exact panel inside the "
              "exact outlines (the plane's or the polygons' images) at the panels' shared "
              "framing and zoom; the flow view's picture inside the plane's image; the world "
-             "view's picture inside the hull of the plane or the scene, the eye and its image "
-             "plane"),
+             "view's picture between its legend and caption inside the hull of the plane or the "
+             "scene, the eye and its image plane"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",
