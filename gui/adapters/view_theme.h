@@ -48,7 +48,7 @@ constexpr double kPresentationMinScale = 0.6;
 double presentation_scale(int width, int height);
 
 // The smallest text presentation mode allows at `scale`, pixels: kPresentationMinTextPx
-// scaled and rounded down (13 px at 1366x768).
+// scaled and rounded down (12 px at 1366x768).
 int presentation_min_text_px(double scale);
 
 // The normal look (presentation == false) or presentation mode (true), whose text sizes
