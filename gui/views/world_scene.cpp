@@ -174,10 +174,12 @@ void WorldScene::reset_camera() {
   const Vec3 eye_at = viewer_to_world(first_view, Vec3(0.0));
   const Vec3 focus = 0.5 * (eye_at + world_centre);
   const double distance = std::max(1e-3, glm::length(world_centre - eye_at));
-  // From behind the eye and as far to its left, a little above it: the frustum opens towards
-  // the plane across the picture and the path is seen from its side, foreshortened enough
-  // that the eye-to-plane picture fills a narrow view (the cause-and-effect layout's).
-  const Vec3 from = focus + distance * (-0.8 * forward + 0.45 * view_up - 0.8 * right);
+  // The plane: from behind the eye and as far to its left, a little above it, so the frustum
+  // opens towards the plane across the picture and the eye-to-plane picture, foreshortened,
+  // fills a narrow view (the cause-and-effect layout's). A scene: from the left of the eye, a
+  // little behind and above it, the viewer's path seen from its side.
+  const Vec3 side = scene_mode ? -0.55 * forward - 1.0 * right : -0.8 * forward - 0.8 * right;
+  const Vec3 from = focus + distance * (side + 0.45 * view_up);
   vtkCamera* vtk_camera = renderer->GetActiveCamera();
   vtk_camera->SetFocalPoint(focus.x, focus.y, focus.z);
   vtk_camera->SetPosition(from.x, from.y, from.z);
