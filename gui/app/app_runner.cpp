@@ -188,7 +188,7 @@ int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream
     };
     std::vector<ClaimCheck> checks;
     try {
-      checks = check_lesson(window, lesson, shoot, options.time_claims);
+      checks = check_lesson(window, lesson, shoot, options.time_claims, options.claim_kinds);
     } catch (const std::runtime_error& e) {  // a part the window refused
       err << "oflab: " << e.what() << "\n";
       ++false_claims;

@@ -47,7 +47,7 @@ constexpr const char* kOwnFontClasses[] = {"QHeaderView", "QDockWidget", "QStatu
 
 }  // namespace
 
-void apply_app_theme(bool presentation) {
+void apply_app_theme(const ViewTheme& theme) {
   static const QFont base_font = QApplication::font();
   static const std::vector<QFont> base_class_fonts = [] {
     std::vector<QFont> fonts;
@@ -57,9 +57,8 @@ void apply_app_theme(bool presentation) {
   if (QApplication::style()->objectName().compare(QLatin1String("fusion"), Qt::CaseInsensitive)) {
     QApplication::setStyle(QStringLiteral("Fusion"));  // the application owns the style
   }
-  QApplication::setPalette(presentation ? light_palette() : dark_palette());
+  QApplication::setPalette(theme.presentation ? light_palette() : dark_palette());
   QFont font = base_font;
-  const ViewTheme theme = view_theme(presentation);
   if (theme.control_font_px > 0) font.setPixelSize(theme.control_font_px);
   QApplication::setFont(font);
   for (size_t i = 0; i < base_class_fonts.size(); ++i) {

@@ -16,6 +16,7 @@
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
 #include "image/thread_pool.h"
+#include "lessons/claim_kinds.h"
 #include "lessons/lessons.h"
 #include "player/animation_sources.h"
 #include "runs/policy_runs.h"
@@ -145,6 +146,23 @@ void read_check_lessons(const CliArgs& cli, LaunchOptions* options) {
     throw UsageError("--check-lesson: " + std::string(e.what()));
   }
   options->check_lessons.push_back(lesson_named("--check-lesson", name).name);
+}
+
+// --claim-kinds K1,K2,...: with --check-lesson; each a kind of the claim registry.
+void read_claim_kinds(const CliArgs& cli, LaunchOptions* options) {
+  if (!cli.has("--claim-kinds")) return;
+  if (options->check_lessons.empty()) {
+    throw UsageError("--claim-kinds: only used with --check-lesson");
+  }
+  std::stringstream list(cli.values("--claim-kinds").at(0));
+  for (std::string kind; std::getline(list, kind, ',');) {
+    if (!find_claim_kind(kind)) {
+      throw UsageError("--claim-kinds: unknown claim kind '" + kind +
+                       "' (known: " + joined_names(claim_kind_names()) + ")");
+    }
+    options->claim_kinds.push_back(kind);
+  }
+  if (options->claim_kinds.empty()) throw UsageError("--claim-kinds: no kind named");
 }
 
 // --step-shots DIR: with --check-lesson; DIR an existing directory; every picture it would
@@ -328,11 +346,12 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
                            {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
                            {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
                            {"--basis-explorer", 0}, {"--threads", 1},    {"--time-claims", 0},
-                           {"--world-camera", 1}});
+                           {"--world-camera", 1},   {"--claim-kinds", 1}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
   read_check_lessons(cli, &options);
+  read_claim_kinds(cli, &options);
   read_step_shots(cli, &options);
   read_script(cli, &options);
   check_source(cli);
@@ -386,8 +405,8 @@ std::string launch_usage() {
          "[--cause-and-effect] [--basis-explorer]\n"
          "             [--world-camera orbit|eye]\n"
          "             [--threads N (the pixel loops' threads; default: the machine's cores)]\n"
-         "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]] [--time-claims]] "
-         "[--help]\n"
+         "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]] [--time-claims]\n"
+         "                [--claim-kinds K1,K2,... (only these kinds of claims)]] [--help]\n"
          "  views: " +
          joined_names(titled) +
          "; window is the whole window\n"

@@ -56,6 +56,9 @@ struct LaunchOptions {
   // --time-claims (with --check-lesson): also measure the claims of timed kinds (frame_rate),
   // which other checks leave out.
   bool time_claims = false;
+  // --claim-kinds K1,K2,... (with --check-lesson): only the claims of these kinds (names of
+  // session/lessons/claim_kinds.h) are measured, every part still played; empty: all kinds.
+  std::vector<std::string> claim_kinds;
 };
 
 // DIR/lesson-NAME.png for the narrative (part 0), DIR/lesson-NAME-step-K.png for step K: the

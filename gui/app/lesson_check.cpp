@@ -35,7 +35,8 @@ double exact_drawn(AnimationView* view) {
 }
 
 // The narrowest width of the frame's content as drawn on the comparison's heat maps (the
-// last `policies` panels), canvas pixels; 0 outside the comparison.
+// last `policies` panels), in pixels of the 1920 x 1080 look: canvas pixels over the
+// presentation scale (ViewTheme::scale, 1 in the normal look); 0 outside the comparison.
 double heat_map_width(MainWindow* window, AnimationView* view) {
   view->render_image();
   const int policies = int(window->model()->comparison().policies().size());
@@ -48,7 +49,7 @@ double heat_map_width(MainWindow* window, AnimationView* view) {
   for (size_t k = drawn.size() - size_t(policies); k < drawn.size(); ++k) {
     narrowest = std::min(narrowest, drawn[k].width());
   }
-  return narrowest;
+  return narrowest / window->theme().scale;
 }
 
 // The views in front: those of the cause-and-effect layout, else the current one.
@@ -59,8 +60,8 @@ std::vector<ViewPage*> shown_views(MainWindow* window) {
 
 // The percent of its panel what a view in front draws covers, the smallest over them: the
 // animation view's exact panel (the exact frame's content as drawn), the flow view's scene
-// region (the plane's image), the world view's picture (the hull of the plane or the scene,
-// the eye and its image plane); NaN when none of them is in front.
+// region (the plane's image), the world view's picture between its legend and caption (the hull of
+// the plane or the scene, the eye and its image plane); NaN when none of them is in front.
 double panel_fill(MainWindow* window) {
   double smallest = kUnknown;
   for (ViewPage* page : shown_views(window)) {
@@ -203,14 +204,20 @@ screen_claim_measures() {
 
 double measure_claim(MainWindow* window, const LessonClaim& claim) {
   if (ViewPage* page = window->current_view()) page->render_image();
-  QApplication::processEvents();
+  // The layouts settled first: a new caption or look (a re-sized font) asks for layouts that
+  // ask for more.
+  for (int pass = 0; pass < 3; ++pass) {
+    QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QApplication::processEvents();
+  }
   const auto screen = screen_claim_measures().find(claim.claim);
   if (screen != screen_claim_measures().end()) return screen->second(window, claim);
   return measure_engine_claim(window->model()->lab(), claim);
 }
 
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
-                                     const std::function<void(int)>& after_part, bool time_claims) {
+                                     const std::function<void(int)>& after_part, bool time_claims,
+                                     const std::vector<std::string>& kinds) {
   // Every part's caption must be readable whole, whatever the part claims besides.
   LessonClaim whole_caption;
   whole_caption.says = "the caption shows its whole text";
@@ -218,9 +225,11 @@ std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
   whole_caption.at_most = 0;
   return check_lesson_claims(
       *window, lesson,
-      [window, time_claims](const LessonClaim& claim) -> std::optional<double> {
+      [window, time_claims, &kinds](const LessonClaim& claim) -> std::optional<double> {
         const ClaimKind* kind = find_claim_kind(claim.claim);
         if (kind && kind->timed && !time_claims) return std::nullopt;
+        if (!kinds.empty() && std::find(kinds.begin(), kinds.end(), claim.claim) == kinds.end())
+          return std::nullopt;
         return measure_claim(window, claim);
       },
       {whole_caption}, after_part);

@@ -36,10 +36,13 @@ double measure_claim(MainWindow* window, const LessonClaim& claim);
 // caption shows whole ("caption_cut" at most 0); after the claims of each part
 // calls `after_part(k)` (0: the narrative, k: the k-th step) when given, with the window as
 // that part left it (for a picture of each step). Claims of a timed kind (ClaimKind::timed:
-// frame_rate) are measured only with `time_claims`, else left out of the result. Throws
-// std::runtime_error naming the lesson and the part when the window refuses a part's state.
+// frame_rate) are measured only with `time_claims`, else left out of the result; with
+// `kinds` not empty, only the claims of those kinds are measured (caption_cut's among them
+// only when named), the others left out. Throws std::runtime_error naming the lesson and
+// the part when the window refuses a part's state.
 std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
                                      const std::function<void(int)>& after_part = {},
-                                     bool time_claims = false);
+                                     bool time_claims = false,
+                                     const std::vector<std::string>& kinds = {});
 
 }  // namespace oflab

@@ -105,7 +105,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // Closed with its title bar's button (not hidden by a minimised window): the model hears.
   connect(scene_dock_->toggleViewAction(), &QAction::toggled, model_,
           &WindowModel::set_scene_panel);
-  apply_app_theme(false);
+  apply_app_theme(view_theme(false));
   QApplication::instance()->installEventFilter(this);
   source_status_ = new QLabel(this);
   source_status_->setObjectName(QStringLiteral("source_status"));
@@ -130,25 +130,6 @@ QWidget* MainWindow::create_banners() {
   layout->addWidget(caption_banner_);
   layout->addWidget(message_banner_);
   return box;
-}
-
-void MainWindow::style_banners() {
-  // Okabe-Ito blue for the lesson caption, vermillion for refused input. Style sheets fix
-  // the font, so its size follows the presentation mode here.
-  const QString style = QStringLiteral(
-      "QLabel { background: %1; color: white; padding: 6px; border-radius: 3px; "
-      "font-size: %2pt; }");
-  const int points = model_->presentation() ? 17 : 10;
-  caption_banner_->setStyleSheet(style.arg(QStringLiteral("#0072B2")).arg(points));
-  message_banner_->setStyleSheet(style.arg(QStringLiteral("#D55E00")).arg(points));
-}
-
-void MainWindow::fit_scene_panel() {
-  // The panel is as wide as its controls want (fonts change with presentation mode), up
-  // to a third of a 1280-pixel window, so the views keep most of the screen.
-  controls_->ensurePolished();
-  const int wanted = controls_->sizeHint().width() + 20;
-  scene_dock_->widget()->setMinimumWidth(std::min(wanted, 430));
 }
 
 void MainWindow::update_source_status() {
@@ -313,7 +294,7 @@ void MainWindow::add_view(const ViewEntry& entry) {
   page->setFocusPolicy(Qt::StrongFocus);  // clicking a view takes the focus from a field
   views_.push_back({QString::fromStdString(entry.name), page});
   tabs_->addTab(page, tr(entry.title.c_str()));
-  page->set_theme(view_theme(model_->presentation()));
+  page->set_theme(theme());
 }
 
 ViewPage* MainWindow::view(const QString& name) const {
@@ -433,20 +414,6 @@ void MainWindow::show_message(const QString& text) {
 
 void MainWindow::clear_message() { message_banner_->hide(); }
 
-void MainWindow::show_presentation() {
-  const bool on = model_->presentation();
-  const QSignalBlocker block(presentation_action_);
-  presentation_action_->setChecked(on);
-  apply_app_theme(on);
-  // A dock paints its title in the font it was made with unless it has one of its own.
-  scene_dock_->setFont(QApplication::font());
-  style_banners();
-  for (const Tab& tab : views_) tab.page->set_theme(view_theme(on));
-  for (ViewPage* page : layout_views_) page->set_theme(view_theme(on));
-  // Let the scene panel grow with the fonts instead of clipping its controls.
-  fit_scene_panel();
-}
-
 void MainWindow::show_play() {
   const int rate = model_->play_rate();
   if (speed_box_->findData(rate) < 0) speed_box_->addItem(tr("%1 fps").arg(rate), rate);
@@ -512,7 +479,7 @@ void MainWindow::show_layout() {
     for (const char* name : {"world", "flow"}) {
       ViewPage* page = find_view_entry(name)->make(model_);
       page->setFocusPolicy(Qt::StrongFocus);
-      page->set_theme(view_theme(model_->presentation()));
+      page->set_theme(theme());
       page->set_external_clock(external_clock_);
       cause_effect_->addWidget(page);
       layout_views_.push_back(page);

@@ -10,6 +10,7 @@
 #include <QMainWindow>
 #include <vector>
 
+#include "adapters/view_theme.h"
 #include "lessons/lesson_player.h"
 #include "lessons/lessons.h"
 #include "models/frame_pacer.h"
@@ -127,6 +128,10 @@ class MainWindow : public QMainWindow, public LessonStage {
   bool save_session(const QString& path, bool overwrite);
   bool load_session(const QString& path);
 
+  // The views' theme: the model's look at the window's presentation scale
+  // (presentation_scale of the window's size when the look was last set).
+  ViewTheme theme() const;
+
   // The whole window as drawn, VTK content included.
   QImage grab_window_image();
 
@@ -137,6 +142,8 @@ class MainWindow : public QMainWindow, public LessonStage {
   bool eventFilter(QObject* watched, QEvent* event) override;
   // Closing the window stops frames playing (cancel_long_work).
   void closeEvent(QCloseEvent* event) override;
+  // In presentation mode, sizes the look to the window (presentation_scale).
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   void create_view_shortcuts(QMenu* menu);
@@ -195,6 +202,7 @@ class MainWindow : public QMainWindow, public LessonStage {
   QAction* reset_action_ = nullptr;
   QAction* presentation_action_ = nullptr;
   QAction* stop_action_ = nullptr;
+  double theme_scale_ = 1.0;  // presentation_scale of the window when the look was set
   bool external_clock_ = false;
   bool playing_frames_ = false;  // play_frames is running
   bool cancelled_ = false;       // Escape or closing asked it to stop

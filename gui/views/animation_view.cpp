@@ -283,7 +283,7 @@ void AnimationView::set_theme(const ViewTheme& theme) {
   QFont font = inspector_->font();
   font.setPixelSize(theme.presentation ? theme.label_size : 12);
   inspector_->setFont(font);
-  inspector_area_->setFixedWidth(theme.presentation ? 380 : 260);
+  inspector_area_->setFixedWidth(theme.presentation ? int(380 * theme.scale) : 260);
   show_compact(theme_.presentation && height() < kCompactBelowPx);
   refresh();
 }

@@ -101,6 +101,10 @@ QWidget* ExplorerPanel::make_dials(QWidget* parent) {
   title->setObjectName(QStringLiteral("explorer_title"));
   title->setWordWrap(true);
   column->addWidget(title);
+  // The dials close together, so that the solutions under them fit a 768-pixel window.
+  auto* dials = new QVBoxLayout;
+  dials->setSpacing(1);
+  column->addLayout(dials);
   for (int k = 0; k < kExplorerTermCount; ++k) {
     const ExplorerTerm& term = explorer_terms()[size_t(k)];
     const double span = term.slider_span;
@@ -112,7 +116,7 @@ QWidget* ExplorerPanel::make_dials(QWidget* parent) {
       if (!window_->set_explorer_term(k, value)) refresh(true);  // show the kept value again
     });
     sliders_of_[size_t(k)] = slider;
-    column->addWidget(slider);
+    dials->addWidget(slider);
   }
   auto* buttons = new QHBoxLayout;
   auto* zero = new QPushButton(tr("All zero"), box);

@@ -174,39 +174,77 @@ void WorldScene::reset_camera() {
   const Vec3 eye_at = viewer_to_world(first_view, Vec3(0.0));
   const Vec3 focus = 0.5 * (eye_at + world_centre);
   const double distance = std::max(1e-3, glm::length(world_centre - eye_at));
-  // From the left of the eye, a little behind and above it: the frustum opens towards the
-  // plane across the picture and the path is seen from its side.
-  const Vec3 from = focus + distance * (-0.55 * forward + 0.45 * view_up - 1.0 * right);
+  // The plane: from behind the eye and as far to its left, a little above it, so the frustum
+  // opens towards the plane across the picture and the eye-to-plane picture, foreshortened,
+  // fills a narrow view (the cause-and-effect layout's). A scene: from the left of the eye, a
+  // little behind and above it, the viewer's path seen from its side.
+  const Vec3 side = scene_mode ? -0.55 * forward - 1.0 * right : -0.8 * forward - 0.8 * right;
+  const Vec3 from = focus + distance * (side + 0.45 * view_up);
   vtkCamera* vtk_camera = renderer->GetActiveCamera();
   vtk_camera->SetFocalPoint(focus.x, focus.y, focus.z);
   vtk_camera->SetPosition(from.x, from.y, from.z);
   vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
   vtk_camera->SetViewAngle(30.0);
   renderer->ResetCamera();
-  // ResetCamera fits a bounding sphere, loosely. The plane: closer, as far as every place it
-  // takes over the loop (and the eye's frustum) stays inside 90 % of the picture. A scene:
+  if (!scene_mode) centre_framed_points();
+  // ResetCamera fits a bounding sphere, loosely. The plane: centred and closer, as far as every
+  // place it takes over the loop (and the eye's frustum) stays inside 95 % of the picture. A scene:
   // closer in a wide view, a narrow one (the cause-and-effect layout) keeping the whole
   // width; the viewer's path may leave the picture, the polygons and the viewer stay.
   vtk_camera->Zoom(scene_mode ? 1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0)
-                              : fit_zoom(0.9));
+                              : fit_zoom(0.95));
   renderer->ResetCameraClippingRange();
   needs_render = true;
 }
 
-double WorldScene::fit_zoom(double fill) const {
+void WorldScene::centre_framed_points() {
+  const std::vector<Vec3> points = framed_points();
+  double left = 1e300, right = -1e300, bottom = 1e300, top = -1e300;
+  for (const Vec3& p : points) {
+    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    if (d[2] < 0.0 || d[2] > 1.0) continue;
+    left = std::min(left, d[0]), right = std::max(right, d[0]);
+    bottom = std::min(bottom, d[1]), top = std::max(top, d[1]);
+  }
+  if (left > right) return;
+  vtkCamera* vtk_camera = renderer->GetActiveCamera();
+  const double* focal = vtk_camera->GetFocalPoint();
+  renderer->SetWorldPoint(focal[0], focal[1], focal[2], 1.0);
+  renderer->WorldToDisplay();
+  const double depth_z = renderer->GetDisplayPoint()[2];
+  const int* size = window->GetSize();
+  const auto world_at = [&](double x, double y) {
+    renderer->SetDisplayPoint(x, y, depth_z);
+    renderer->DisplayToWorld();
+    const double* w = renderer->GetWorldPoint();
+    return Vec3(w[0], w[1], w[2]) / (w[3] != 0.0 ? w[3] : 1.0);
+  };
+  // Pan (camera and focal point together) so that the box's centre is the picture's.
+  const Vec3 shift =
+      world_at(0.5 * (left + right), 0.5 * (bottom + top)) - world_at(0.5 * size[0], 0.5 * size[1]);
+  const double* from = vtk_camera->GetPosition();
+  vtk_camera->SetPosition(from[0] + shift.x, from[1] + shift.y, from[2] + shift.z);
+  vtk_camera->SetFocalPoint(focal[0] + shift.x, focal[1] + shift.y, focal[2] + shift.z);
+}
+
+std::vector<Vec3> WorldScene::framed_points() const {
   std::vector<Vec3> points = {viewer_to_world(first_view, Vec3(0.0))};
   for (const Vec3& c : image_plane_corners(camera, depth)) {
     points.push_back(viewer_to_world(first_view, c));
   }
-  const double reach = scene_mode ? 0.0 : 0.5 * std::hypot(first_pose.size.x, first_pose.size.y);
-  for (const Vec3& p : path) {
-    for (int axis = 0; axis < 3; ++axis) {
-      Vec3 step(0.0);
-      step[axis] = reach;
-      points.push_back(p + step);
-      points.push_back(p - step);
-    }
+  // The plane's corners wherever the loop takes them; a scene's viewer path.
+  if (scene_mode) {
+    points.insert(points.end(), path.begin(), path.end());
+  } else {
+    points.insert(points.end(), loop_corners.begin(), loop_corners.end());
   }
+  return points;
+}
+
+double WorldScene::fit_zoom(double fill) const {
+  const std::vector<Vec3> points = framed_points();
   const int* size = window->GetSize();
   double widest = 1e-9;  // the furthest point from the picture's centre, in half sizes
   for (const Vec3& p : points) {
@@ -255,9 +293,11 @@ void WorldScene::load_plane(WindowModel& window) {
   const double dt = SceneModel::kSecondsPerFrame;
   camera = scene.scene().camera;
   path.clear();
+  loop_corners.clear();
   largest_velocity = largest_omega = 0.0;
   for (const ScriptFrame& f : script.frames) {
     path.push_back(f.pose.point);
+    for (const Vec3& c : plane_corners(f.pose)) loop_corners.push_back(c);
     largest_velocity = std::max(largest_velocity, glm::length(eye_velocity(f.motion, f.pose)) / dt);
     largest_omega = std::max(largest_omega, glm::length(f.motion.omega) / dt);
   }
@@ -552,7 +592,8 @@ double WorldScene::drawn_share() const {
     const double* d = renderer->GetDisplayPoint();
     if (d[2] >= 0.0 && d[2] <= 1.0) seen.emplace_back(d[0], size[1] - d[1]);
   }
-  return hull_share(seen, QRectF(0, 0, size[0], size[1]));
+  const QRectF free = texts.free_area();
+  return hull_share(seen, free.isEmpty() ? QRectF(0, 0, size[0], size[1]) : free);
 }
 
 }  // namespace oflab

@@ -91,6 +91,9 @@ struct WorldScene {
   bool source_dirty = true;
   bool scene_mode = false;
   std::vector<Vec3> path;  // plane centres, or the viewer's eye, per frame, world units
+  // The plane's corners at every frame of the loop (empty for a scene), world units: what
+  // the orbit camera frames.
+  std::vector<Vec3> loop_corners;
   double largest_velocity = 0.0, largest_omega = 0.0;  // per second
   double depth = 1.0;                                  // image plane, world units
   double full_arrow = 1.0;                             // longest arrow, world units
@@ -141,20 +144,27 @@ struct WorldScene {
   // Where world point `at` lands in the last render (canvas pixels); false when it is behind
   // the camera or outside the picture.
   bool to_canvas(const Vec3& at, QPointF* canvas) const;
-  // The share (0..1) of the last render's picture inside the convex hull of what it draws
-  // now: the plane's corners (the scene's polygons in a scene) and, unless the camera looks
-  // through the eye, the eye and its image plane's corners; points behind the camera are
-  // left out.
+  // The share (0..1) of the last render's picture between its legend and caption
+  // (WorldTexts::free_area; the whole picture before the texts are laid out) inside the
+  // convex hull of what it draws now: the plane's corners (the scene's polygons in a scene) and,
+  // unless the camera looks through the eye, the eye and its image plane's corners; points behind
+  // the camera are left out.
   double drawn_share() const;
 
   // The camera framing everything drawn, seen from behind, above and left of the first
   // frame's eye.
   void reset_camera();
   // The zoom (VTK's Camera::Zoom factor, 0.5 .. 3) after which the eye, its image plane and
-  // every place of the plane over the loop (its centre +- half its diagonal along each axis)
+  // every corner of the plane over the loop (loop_corners)
   // fill `fill` of the picture's half width or half height, whichever they reach first, as
   // the current camera projects them (reset_camera's framing of the plane).
   double fit_zoom(double fill) const;
+  // What the orbit camera frames: the first frame's eye, its image plane's corners and the
+  // plane's corners over the loop (a scene's viewer path instead), world units.
+  std::vector<Vec3> framed_points() const;
+  // Pans the camera (its position and focal point together, in the picture's plane through
+  // the focal point) so that the box of framed_points as projected now is centred.
+  void centre_framed_points();
   // The camera at the eye now (the viewer's in a scene), looking along its line of sight
   // with its up, its field of view wide enough that the whole image and a margin of
   // kEyeViewMargin of it on each side fit the render's shape. Call after the window's size.

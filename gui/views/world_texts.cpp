@@ -36,7 +36,12 @@ void WorldTexts::lay_out(const QSize& size, const QFont& base, const ViewTheme& 
   leader_width_ = theme.line_width;
   std::vector<QRectF> taken;
   lay_out_legend(base, theme, taken);
+  const double top = taken.empty() ? 0.0 : taken.back().bottom();
+  const size_t legend_boxes = taken.size();
   lay_out_caption(size, base, theme, taken);
+  double bottom = size.height();
+  for (size_t k = legend_boxes; k < taken.size(); ++k) bottom = std::min(bottom, taken[k].top());
+  free_area_ = QRectF(0.0, top, size.width(), std::max(0.0, bottom - top));
   lay_out_labels(size, base, theme, project, taken);
 }
 

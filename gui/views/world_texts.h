@@ -57,6 +57,9 @@ class WorldTexts {
   // Paints the texts as last laid out, each over a translucent patch of the theme's
   // background so that it reads over lines and textures.
   void paint(QPainter& painter) const;
+  // The picture's band between the legend and the caption as last laid out (the whole
+  // width; canvas pixels): where the world is seen whole; empty before a lay_out.
+  QRectF free_area() const { return free_area_; }
 
  private:
   // The parts of lay_out, in its order; each adds its texts to drawn_ and the boxes the
@@ -79,6 +82,7 @@ class WorldTexts {
     QPointF anchor;
   };
   std::vector<Drawn> drawn_;
+  QRectF free_area_;
   QColor patch_;
   double leader_width_ = 1.0;
 };

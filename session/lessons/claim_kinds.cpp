@@ -92,14 +92,16 @@ std::vector<ClaimKind> make_kinds() {
       screen("active_tiles", "tiles of the basis gallery with a non-zero coefficient"),
       screen("heat_map_width",
              "the narrowest heat map of the comparison layout as drawn: the width of what it "
-             "shows (the exact outlines' bounding box) on it, screen pixels"),
+             "shows (the exact outlines' bounding box) on it, in pixels of the 1920 x 1080 "
+             "look: screen pixels over presentation mode's scale (0.711 at 1366 x 768, 1 at "
+             "1920 x 1080 and in the normal look)"),
       screen("panel_fill",
              "the share (percent) of its panel that what a view in front shows now covers, the "
              "smallest over the views in front: the animation view's exact panel inside the "
              "exact outlines (the plane's or the polygons' images) at the panels' shared "
              "framing and zoom; the flow view's picture inside the plane's image; the world "
-             "view's picture inside the hull of the plane or the scene, the eye and its image "
-             "plane"),
+             "view's picture between its legend and caption inside the hull of the plane or the "
+             "scene, the eye and its image plane"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",

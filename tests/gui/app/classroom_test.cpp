@@ -86,6 +86,45 @@ TEST_F(ClassroomTest, PresentationTextIsAtLeastEighteenPixelsOnEveryView) {
       false);  // the application's fonts are global: leave them normal
 }
 
+// A smaller window scales presentation mode's sizes: the smaller of width / 1920 and height
+// / 1080, within 0.6 .. 1 (computed here independently for each window), the theme's fonts
+// rounded from the 1920 x 1080 sizes.
+TEST(PresentationScale, IsTheSmallerRatioToA1080pWindowWithinItsLimits) {
+  EXPECT_DOUBLE_EQ(presentation_scale(1920, 1080), 1.0);
+  EXPECT_DOUBLE_EQ(presentation_scale(3840, 2160), 1.0);  // never larger
+  EXPECT_DOUBLE_EQ(presentation_scale(1366, 768), 768.0 / 1080.0);
+  EXPECT_DOUBLE_EQ(presentation_scale(1280, 1024), 1280.0 / 1920.0);  // the width limits
+  EXPECT_DOUBLE_EQ(presentation_scale(800, 600), kPresentationMinScale);
+  const ViewTheme small = view_theme(true, 768.0 / 1080.0);
+  EXPECT_EQ(small.font_size, 16);   // 22 x 0.711 = 15.6
+  EXPECT_EQ(small.label_size, 14);  // 20 x 0.711 = 14.2
+  EXPECT_EQ(small.control_font_px, 14);
+  EXPECT_EQ(presentation_min_text_px(768.0 / 1080.0), 12);                   // 18 x 0.711 = 12.8
+  EXPECT_EQ(view_theme(false, 0.5).font_size, view_theme(false).font_size);  // normal look
+}
+
+// On a 1366 x 768 projector the window's controls and the views' texts are presentation mode's
+// sizes scaled by 0.711: no text under presentation_min_text_px, the controls' font 14 px; the
+// control: back at 1920 x 1080 the controls' font is 20 px again.
+TEST_F(ClassroomTest, PresentationTextScalesWithASmallerWindow) {
+  window().resize(1366, 768);
+  window().model()->set_presentation(true);
+  QApplication::processEvents();
+  const double scale = window().theme().scale;
+  EXPECT_NEAR(scale, 768.0 / 1080.0, 1e-9);
+  EXPECT_EQ(QFontInfo(QApplication::font()).pixelSize(), 14);
+  for (const char* name : {"flow", "basis", "analysis"}) {
+    ASSERT_TRUE(window().show_view(QString::fromLatin1(name)));
+    window().view(QString::fromLatin1(name))->render_image();
+    EXPECT_GE(window().view(QString::fromLatin1(name))->smallest_text_px(),
+              presentation_min_text_px(scale))
+        << name;
+  }
+  show_at_projector_size(window());
+  EXPECT_EQ(QFontInfo(QApplication::font()).pixelSize(), 20) << "the control: 1920 x 1080";
+  window().model()->set_presentation(false);
+}
+
 // The scrub bar's groove shows in both looks: beyond the handle (at the first frame, the
 // whole groove is the unplayed part) some pixel of the bar's middle line stands at least 40
 // lightness levels apart from the window's colour.

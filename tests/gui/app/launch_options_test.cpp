@@ -133,6 +133,21 @@ TEST(LaunchOptions, ComparedPoliciesAreOneToFourDistinctNamesOfTheRegistry) {
   EXPECT_NE(usage_error({"--compare", "bogus"}).find("perspective"), std::string::npos);
 }
 
+TEST(LaunchOptions, ClaimKindsAreKindsOfTheRegistryAndOnlyWithACheck) {
+  const LaunchOptions o =
+      parse_launch_options({"--check-lesson", "all", "--claim-kinds", "cut_texts,panel_fill"});
+  EXPECT_EQ(o.claim_kinds, (std::vector<std::string>{"cut_texts", "panel_fill"}));
+  EXPECT_TRUE(parse_launch_options({"--check-lesson", "all"}).claim_kinds.empty());
+  const std::string unknown =
+      usage_error({"--check-lesson", "all", "--claim-kinds", "cut_texts,bogus"});
+  EXPECT_EQ(unknown.rfind("--claim-kinds: unknown claim kind 'bogus'", 0), 0u) << unknown;
+  EXPECT_NE(unknown.find("heat_map_width"), std::string::npos) << unknown;  // the known ones
+  EXPECT_EQ(usage_error({"--check-lesson", "all", "--claim-kinds", ""}),
+            "--claim-kinds: no kind named");
+  EXPECT_EQ(usage_error({"--claim-kinds", "cut_texts"}),
+            "--claim-kinds: only used with --check-lesson");
+}
+
 TEST(LaunchOptions, SessionFileIsReadAndABrokenOneRejectedNamingTheFileAndField) {
   const std::string path = ::testing::TempDir() + "oflab_session_width.json";
   std::ifstream seed(OFLAB_FUZZ_SEEDS_DIR "/session/session.json");

@@ -98,8 +98,8 @@ TEST_F(AnalysisViewTest, WholeLoopAxisSpansTheLoop) {
 // The why-errors-accumulate lesson on a 1366 x 768 projector in presentation mode, with the
 // scene panel shown and hidden: no chart text is elided, off the charts or over another (a
 // linear chart too short for its top and bottom values keeps the top one). The control: a
-// window held at 900 x 480 with the scene panel cuts some. (Four compared policies at 1366 x 768 do
-// not fit yet.)
+// window held at 900 x 480 with the scene panel, its charts drawn at the 1920 x 1080 sizes
+// (not scaled to the window), cuts some.
 TEST_F(AnalysisViewTest, TheLessonsChartsAreLegibleAt1366x768) {
   window().apply_lesson(*find_lesson("why-errors-accumulate"));
   window().model()->set_playing(false);
@@ -119,7 +119,9 @@ TEST_F(AnalysisViewTest, TheLessonsChartsAreLegibleAt1366x768) {
   }
   window().model()->set_scene_panel(true);
   window().setFixedSize(900, 480);
-  EXPECT_NE(problems(), "") << "the control: 900 x 480";
+  QApplication::processEvents();
+  analysis().set_theme(view_theme(true));  // the 1920 x 1080 sizes, unscaled
+  EXPECT_NE(problems(), "") << "the control: 900 x 480 at the 1920 x 1080 sizes";
 }
 
 TEST(AnalysisFrameTicks, AreRoundFramesFarEnoughApartForTheirLabels) {
@@ -321,10 +323,10 @@ TEST_F(AnalysisComparisonTest, EachComparedPolicyHasItsLineKeyAndLevelBand) {
 }
 
 // Four policies, affine among them, on a projector with the scene panel shown and hidden, at
-// 1920 x 1080: no chart text is elided, off the charts or overlapping another (a title over
-// its key among them), and the error chart takes a log scale, so the perspective policy's
-// line within a pixel is not flattened under affine's many pixels. (At 1366 x 768 with the
-// scene panel the charts are too short for their texts: not yet held here.)
+// 1920 x 1080 and 1366 x 768 (presentation mode scaled to the window): no chart text is
+// elided, off the charts or overlapping another (a title over its key among them), and the
+// error chart takes a log scale, so the perspective policy's line within a pixel is not
+// flattened under affine's many pixels.
 TEST_F(AnalysisComparisonTest, FourPoliciesWithAffineAreLegibleAndNotFlattened) {
   window().model()->set_presentation(true);
   window().model()->set_playing(false);
@@ -337,7 +339,7 @@ TEST_F(AnalysisComparisonTest, FourPoliciesWithAffineAreLegibleAndNotFlattened) 
   settings.delta = DeltaPolicy::kSqrtAbsDet;
   ASSERT_TRUE(window().model()->animation()->set_settings(settings));
   window().play_frames(60);
-  for (const QSize size : {QSize(1920, 1080)}) {
+  for (const QSize size : {QSize(1920, 1080), QSize(1366, 768)}) {
     for (bool scene_panel : {true, false}) {
       window().resize(size);
       window().model()->set_scene_panel(scene_panel);
