@@ -109,7 +109,7 @@ async function launchChromium(extraFlags = []) {
 }
 
 async function evaluate(browser, expression) {
-  const r = await browser.tab('Runtime.evaluate', { expression, returnByValue: true });
+  const r = await browser.tab('Runtime.evaluate', { expression, returnByValue: true, awaitPromise: true });
   return r.result.value;
 }
 
@@ -172,6 +172,35 @@ async function testSelftest(browser) {
   check('ComparisonCatchesACoefficientOff1e-10', compareWithGolden(nudged, golden).length === 1, key);
   check('BrokenScriptIsRefusedNamingTheFileAndField', /broken-script\.json.*camera/.test(result.bad_files.script), result.bad_files.script);
   check('BrokenLessonIsRefusedNamingTheFile', /broken-lesson\.json/.test(result.bad_files.lesson), result.bad_files.lesson);
+  // The lessons, views and time to interactive a check outside the project reads.
+  const lessonDiffer = [];
+  let parts = 0;
+  for (const [name, steps] of Object.entries(result.lessons || {})) {
+    steps.forEach((part, k) => {
+      const expected = cliLessonState(name, k);
+      if (JSON.stringify(part.state) !== JSON.stringify(expected) || part.frame !== expected.frame) lessonDiffer.push(`${name} ${k}`);
+      ++parts;
+    });
+  }
+  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 14 && parts >= 48 && lessonDiffer.length === 0,
+    `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
+  const views = Object.entries(result.views || {});
+  check('SelftestReportsViewsAndTimeToInteractive', views.length === 4 && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
+    result.time_to_interactive_ms > 0, `interactive after ${result.time_to_interactive_ms} ms; ` +
+    views.map(([n, v]) => `${n} ${v.paced_fps.toFixed(1)} paced, ${v.unpaced_fps.toFixed(0)} unpaced fps`).join(', '));
+}
+
+// `oflab-cli lesson state NAME --step K`'s state object (--cli, default build/analysis/oflab-cli).
+const cliStates = new Map();
+function cliLessonState(name, k) {
+  const key = `${name} ${k}`;
+  if (!cliStates.has(key)) {
+    const { spawnSync } = require('child_process');
+    const cli = path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli')));
+    const r = spawnSync(cli, ['lesson', 'state', name, '--step', String(k)], { encoding: 'utf8' });
+    cliStates.set(key, r.status === 0 ? JSON.parse(r.stdout).state : { error: r.stderr.trim() });
+  }
+  return cliStates.get(key);
 }
 
 // --- Screenshots -------------------------------------------------------------------------
@@ -184,8 +213,10 @@ const shots = [
   ['lesson', '?lesson=affine-vs-perspective'],
   // Streamlines of the first-order part (the flow-of-a-plane lesson's first step).
   ['lesson-step', '?lesson=flow-of-a-plane&step=1'],
-  // A lesson on a scene, which the page cannot play: its narrative and the reason, not a blank.
-  ['lesson-on-a-scene', '?lesson=occlusion'],
+  // A lesson on a scene, played by the scene animator: the policies beside the exact frame.
+  ['lesson-on-a-scene', '?lesson=occlusion&step=1'],
+  // The street walked through (when-reuse-pays), the scene with the most polygons.
+  ['street', '?lesson=when-reuse-pays'],
 ];
 
 function psnr(a, b) {
@@ -320,14 +351,16 @@ async function testLessonStates(browser) {
   const differ = [];
   for (const [name, steps] of JSON.parse(lessons)) {
     for (let k = 0; k <= steps; ++k) {
-      const r = spawnSync(cli, ['lesson', 'state', name, '--step', String(k)], { encoding: 'utf8' });
-      if (r.status !== 0) { differ.push(`${name} ${k}: oflab-cli: ${r.stderr.trim()}`); continue; }
-      const expected = JSON.parse(r.stdout).state;
+      const expected = cliLessonState(name, k);
+      if (expected.error) { differ.push(`${name} ${k}: oflab-cli: ${expected.error}`); continue; }
       const shown = JSON.parse(await evaluate(browser,
         `(() => { const p = app.session.goToLessonStep(${JSON.stringify(name)}, ${k}); return p || app.session.stateJson(); })()`));
       if (JSON.stringify(shown) !== JSON.stringify(expected)) {
         differ.push(`${name} step ${k}: page frame ${shown.frame}, CLI frame ${expected.frame}`);
       }
+      // The source of a part plays on the page: the comparison's runs are made (scenes too).
+      const problem = await evaluate(browser, 'app.session.comparisonProblem()');
+      if (problem) differ.push(`${name} step ${k}: the source does not play: ${problem}`);
       ++parts;
     }
   }
@@ -338,6 +371,104 @@ async function testLessonStates(browser) {
   const page = JSON.parse(await evaluate(browser, "(() => { app.session.goToLessonStep('flow-of-a-plane', 0); return app.session.stateJson(); })()"));
   nudged.frame += 1;
   check('NegativeControl_AnotherFrameIsADifference', JSON.stringify(page) !== JSON.stringify(nudged));
+}
+
+// --- Claims ------------------------------------------------------------------------------
+// Every engine claim of every part of every lesson, measured on the page's lab after the
+// page went to that part (Session.checkClaimsJson, the check control), gives the line
+// `oflab-cli lesson check all` prints for it, word for word, and holds.
+async function testClaims(browser) {
+  const { spawnSync } = require('child_process');
+  const cli = path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli')));
+  const r = spawnSync(cli, ['lesson', 'check', 'all'], { encoding: 'utf8' });
+  const expected = r.stdout.split('\n').filter((l) => l && !l.startsWith('oflab-cli lesson check:'));
+  await open(browser, '?view=flow', drawnMarker);
+  const lines = JSON.parse(await evaluate(browser, `JSON.stringify((() => {
+    const lines = [];
+    for (const lesson of app.lessons) {
+      for (let k = 0; k <= lesson.steps.length; ++k) {
+        const problem = app.session.goToLessonStep(lesson.name, k);
+        if (problem) { lines.push(problem); continue; }
+        for (const c of JSON.parse(app.session.checkClaimsJson())) if (c.source === 'engine') lines.push(c.line);
+      }
+    }
+    return lines;
+  })())`));
+  const differ = lines.map((l, i) => (l === expected[i] ? '' : `page: ${l} | CLI: ${expected[i]}`)).filter(Boolean);
+  check('EveryEngineClaimIsMeasuredOnThePageAsTheCli', r.status === 0 && lines.length === expected.length && differ.length === 0,
+    `${lines.length} claims on the page, ${expected.length} from oflab-cli${differ.length ? `; ${differ.slice(0, 3).join('; ')}` : ''}`);
+  check('EveryEngineClaimHoldsOnThePage', lines.length > 0 && lines.every((l) => / holds$/.test(l)),
+    lines.filter((l) => !/ holds$/.test(l)).slice(0, 3).join('; '));
+  // The check control lists says / measured / holds for the part shown.
+  await open(browser, '?lesson=occlusion&step=1', drawnMarker);
+  await evaluate(browser, "document.getElementById('lesson-check').click()");
+  const table = await evaluate(browser, "document.getElementById('lesson-checks').textContent");
+  check('TheCheckControlListsSaysMeasuredHolds', /says.*measured.*holds/.test(table) && /holds/.test(table.replace(/^.*?holds/, '')), table.slice(0, 160));
+  // Negative control: the same claims measured on another frame are not the CLI's lines.
+  const moved = JSON.parse(await evaluate(browser, `(() => { app.session.goToLessonStep('why-errors-accumulate', 1); app.session.seek(3);
+    return JSON.stringify(JSON.parse(app.session.checkClaimsJson()).filter((c) => c.source === 'engine').map((c) => c.line)); })()`));
+  check('NegativeControl_ClaimsOnAnotherFrameDiffer', moved.some((l) => !expected.includes(l)), moved.slice(0, 1).join(''));
+}
+
+// --- Links and files ------------------------------------------------------------------------
+// Every lesson part and every session file the project keeps (fuzz/seeds/session: no session
+// ships in datasets/) as a permalink: at most 2 KB, and opening it on a fresh page's state
+// restores the state exactly. A session saved by the page reads back to the same state; a
+// refused session file names the file and the field and changes nothing.
+async function testLinks(browser) {
+  await open(browser, '?view=flow', drawnMarker);
+  const sessions = fs.readdirSync(path.join(root, 'fuzz/seeds/session')).filter((f) => f.endsWith('.json'))
+    .map((f) => [f, fs.readFileSync(path.join(root, 'fuzz/seeds/session', f), 'utf8')]);
+  const result = JSON.parse(await evaluate(browser, `(async () => {
+    const parts = [];
+    for (const lesson of app.lessons) {
+      for (let k = 0; k <= lesson.steps.length; ++k) parts.push(['lesson', lesson.name, k]);
+    }
+    for (const [name, text] of ${JSON.stringify(sessions)}) parts.push(['session', name, text]);
+    const out = { count: 0, longest: 0, differ: [] };
+    for (const [kind, name, arg] of parts) {
+      const problem = kind === 'lesson' ? app.session.goToLessonStep(name, arg) : app.session.openSession(arg, name);
+      if (problem) { out.differ.push(name + ': ' + problem); continue; }
+      const original = app.session.stateJson();
+      const fragment = await linkFragment(JSON.parse(original));
+      out.longest = Math.max(out.longest, fragment.length + 1);
+      if (fragment.length + 1 > 2048) out.differ.push(name + ' ' + arg + ': link of ' + (fragment.length + 1) + ' bytes');
+      app.session.setState('{}', 'reset');
+      const opened = await openLink(fragment);
+      const restored = app.session.stateJson();
+      if (opened || restored !== original) out.differ.push(name + ' ' + (kind === 'lesson' ? arg : '') + ': ' + (opened || 'restored state differs'));
+      ++out.count;
+    }
+    return JSON.stringify(out);
+  })()`));
+  check('EveryLessonPartAndSessionRoundTripsThroughAPermalinkOfAtMost2KB', result.differ.length === 0 && result.count >= 48,
+    `${result.count} states, longest link ${result.longest} bytes${result.differ.length ? `; ${result.differ.slice(0, 3).join('; ')}` : ''}`);
+  // Negative control: a link of another state does not restore this one.
+  const other = await evaluate(browser, `(async () => { app.session.goToLessonStep('holes', 1); const a = app.session.stateJson();
+    const f = await linkFragment(JSON.parse(a)); app.session.goToLessonStep('holes', 0); const g = await linkFragment(JSON.parse(app.session.stateJson()));
+    await openLink(g); return app.session.stateJson() !== a && f !== g; })()`);
+  check('NegativeControl_AnotherLinkRestoresAnotherState', other === true);
+  // Opening the page at a permalink shows that state; #embed hides the controls.
+  const fragment = await evaluate(browser, "(async () => { app.session.goToLessonStep('occlusion', 1); return linkFragment(JSON.parse(app.session.stateJson())); })()");
+  const expected = await evaluate(browser, 'app.session.stateJson()');
+  await open(browser, `#embed&${fragment}`, drawnMarker);
+  await open(browser, `?view=basis#embed&${fragment}`, `Number(document.body.dataset.interactive || 0) > 0`);
+  const shown = await evaluate(browser, "[app.session.stateJson(), getComputedStyle(document.getElementById('bar')).display, getComputedStyle(document.getElementById('canvas')).width]");
+  check('APermalinkOpensItsStateAndEmbedHidesTheControls', shown[0] === expected && shown[1] === 'none', `bar ${shown[1]}, canvas ${shown[2]}`);
+  // A saved session reads back to the same state; a refused one names the file and the field.
+  const files = JSON.parse(await evaluate(browser, `(() => {
+    app.session.goToLessonStep('timewarp-rotation', 1);
+    const before = app.session.stateJson();
+    const text = app.session.sessionFileText();
+    app.session.setState('{}', 'reset');
+    const back = openSessionText(text, 'saved.json') && app.session.stateJson() === before;
+    const bad = text.replace('"cadence": 2', '"cadence": -4');
+    const refused = !openSessionText(bad, 'broken-session.json');
+    return JSON.stringify({ back, refused, message: document.getElementById('message').textContent,
+      unchanged: app.session.stateJson() === before, format: JSON.parse(text).format });
+  })()`));
+  check('ASavedSessionReadsBackToTheSameState', files.back && files.format === 'oflab-session', files.format);
+  check('ARefusedSessionNamesTheFileAndFieldAndChangesNothing', files.refused && files.unchanged && /broken-session\.json.*cadence/.test(files.message), files.message);
 }
 
 // --- Speed -------------------------------------------------------------------------------
@@ -382,6 +513,8 @@ async function bench(browser) {
       await testScreenshots(browser);
       await testControls(browser);
       await testLessonStates(browser);
+      await testClaims(browser);
+      await testLinks(browser);
     }
   } catch (error) {
     check('TheTestsRan', false, error.message);
