@@ -309,12 +309,14 @@ async function start() {
     app.module = await createOflabModule();
     window.Module = app.module;
     app.session = new Module.Session();
+    app.moduleMs = performance.now();
   } catch (error) {
     showMessage(`oflab could not start its WebAssembly module: ${error.message || error}`);
     return;
   }
   const params = new URLSearchParams(location.search);
   app.defaultState = JSON.parse(app.session.stateJson());
+  app.timings = { module_ms: Math.round(app.moduleMs), load_event_ms: Math.round(performance.getEntriesByType('navigation')[0]?.loadEventStart || 0) };
   app.state = JSON.parse(app.session.stateJson());
   app.schema = JSON.parse(Module.Session.stateSchemaJson());
   buildPoseControls();

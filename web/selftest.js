@@ -31,7 +31,7 @@ function finish(id, object) {
 }
 
 async function runSelftest() {
-  const result = { passed: true, time_to_interactive_ms: Math.round(app.interactiveMs), scripts: {}, bad_files: {} };
+  const result = { passed: true, time_to_interactive_ms: Math.round(app.interactiveMs), startup: app.timings, scripts: {}, bad_files: {} };
   for (const name of JSON.parse(Module.Session.scriptNamesJson())) {
     const run = JSON.parse(Module.Session.scriptRunJson(name));
     if (run.error) result.passed = false;

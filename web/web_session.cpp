@@ -397,10 +397,21 @@ std::string WebSession::comparison_problem() {
 std::vector<const Animator*> WebSession::shown_animators() {
   comparison_problem_.clear();
   std::vector<const Animator*> animators;
-  for (const ShownRun& run : shown_runs(lab_, &comparison_problem_)) {
-    animators.push_back(run.animator);
-  }
+  const std::vector<ShownRun> shown = shown_runs(lab_, &comparison_problem_);
+  for (const ShownRun& run : shown) animators.push_back(run.animator);
   if (animators.empty()) return animators;
+  // A compared `rerender` run is the exact projection itself (the same source and settings
+  // but the policy): it is shown as the exact panel too, and no third engine runs.
+  const auto rerender = std::find_if(
+      shown.begin(), shown.end(), [](const ShownRun& run) { return run.policy == kExactPolicy; });
+  if (rerender != shown.end()) {
+    exact_.reset();
+    exact_key_.clear();
+    exact_shown_ = rerender->animator;
+    exact_record_ = rerender->last;
+    animators.push_back(exact_shown_);
+    return animators;
+  }
   try {
     if (exact_run_key(lab_.state()) != exact_key_) rebuild_exact();
     advance_exact_to(animators.front()->frame());
@@ -410,7 +421,9 @@ std::vector<const Animator*> WebSession::shown_animators() {
     comparison_problem_ = e.what();
     return {};
   }
-  animators.push_back(exact_.get());
+  exact_shown_ = exact_.get();
+  exact_record_ = &exact_last_;
+  animators.push_back(exact_shown_);
   return animators;
 }
 
@@ -491,7 +504,7 @@ std::string WebSession::update_comparison(int panel_width, int panel_height) {
   out["heat_full_scale"] = kHeatFullScale;
   json runs = json::array();
   if (!animators.empty()) {
-    shown.push_back({kExactPolicy, exact_.get(), &exact_last_, {}, 0.0});
+    shown.push_back({kExactPolicy, exact_shown_, exact_record_, {}, 0.0});
     for (std::size_t k = 0; k < shown.size(); ++k) {
       runs.push_back(panel_json(shown[k], panels_[k]));
     }

@@ -155,7 +155,10 @@ class WebSession {
   LabStage stage_{&lab_};            // lessons play on the lab, as `oflab-cli lesson` plays them
   std::unique_ptr<Animator> exact_;  // the exact projection of the lab's source
   AnimationFrame exact_last_;
-  std::string exact_key_;         // the source and settings exact_ plays (JSON text)
+  std::string exact_key_;  // the source and settings exact_ plays (JSON text)
+  // The exact panel's engine and record: exact_, or a compared `rerender` run's.
+  const Animator* exact_shown_ = nullptr;
+  const AnimationFrame* exact_record_ = nullptr;
   std::vector<WebPanel> panels_;  // compared runs (or the source's), then the exact one
   std::string comparison_problem_;
   int sampled_frame_ = -1;  // the frame whose pixels the panels hold, at sampled_size_
