@@ -2,7 +2,7 @@
 // The page's state and controls (manual/web.md). The state is the window state of the
 // desktop (session/state/window_state.h) as JSON; core owns it: every change goes through
 // Session.setState, which checks it with the session reader, and the page reads it back.
-// Views (flow_view.js, basis_view.js, comparison_view.js) draw the state on one 2D canvas.
+// Views (flow_view.js, basis_view.js, comparison_view.js, analysis_view.js) draw the state on one 2D canvas.
 
 const app = {
   module: null,    // the WebAssembly module of core (createOflabModule)
@@ -203,7 +203,7 @@ function bindControls() {
 }
 
 // Space plays and pauses; the arrows step (Up and Down by ten frames); Home and End go to
-// the first and the last frame; Page Down and Page Up step through a lesson; 1-3 pick a view,
+// the first and the last frame; Page Down and Page Up step through a lesson; 1-4 pick a view,
 // P the presentation mode.
 function onKey(e) {
   if (e.target.tagName === 'INPUT' && e.target.type !== 'range') return;
@@ -222,6 +222,7 @@ function onKey(e) {
     1: () => editState((s) => { s.view = 'flow'; }),
     2: () => editState((s) => { s.view = 'basis'; }),
     3: () => editState((s) => { s.view = 'animation'; }),
+    4: () => editState((s) => { s.view = 'analysis'; }),
     p: () => editState((s) => { s.presentation = !s.presentation; }),
   };
   const action = keys[e.key];
@@ -263,12 +264,11 @@ function draw() {
   document.body.dataset.drawn = String(Number(document.body.dataset.drawn || 0) + 1);
 }
 
-// The page's view for the state's: the analysis view's runs show in the comparison, the
-// world view's plane in the flow view.
+// The page's view for the state's: the world view's plane shows in the flow view.
 function shownView() {
   const view = app.state.view;
   if (view in app.views) return view;
-  return view === 'analysis' ? 'animation' : 'flow';
+  return 'flow';
 }
 
 // One frame of the page: plays at the state's play rate, draws when something changed.

@@ -106,6 +106,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("basisJson", &WebSession::basis_json)
       .function("comparisonProblem", &WebSession::comparison_problem)
       .function("updateComparison", &WebSession::update_comparison)
+      .function("analysisJson", &WebSession::analysis_json)
       .function("runCount", &WebSession::run_count)
       .function("frameWidth", &WebSession::frame_width)
       .function("frameHeight", &WebSession::frame_height)

@@ -121,6 +121,12 @@ class WebSession {
   // largest difference from the exact frame and the PSNR against it, the outlines of the
   // shown layers (frame pixels). Panel sizes are clamped to 1 .. 4096.
   std::string update_comparison(int panel_width, int panel_height);
+  // The analysis charts' history: per compared run (or the source's own run when its kind
+  // has no reuse policy), frames max(0, now - frames + 1) .. now of the current pass as
+  // {"first", "last", "runs": [{"policy", "frames": [{"frame", "levels": [drawn layers per
+  // level, the levels' order], "error_px": largest measured error (null: nothing drawn)}]}]},
+  // or {"problem": why not}. `frames` is clamped to 1 .. 1000.
+  std::string analysis_json(int frames);
   int run_count();
   const WebPanel& run(int index) const { return panels_.at(static_cast<std::size_t>(index)); }
   int frame_width();

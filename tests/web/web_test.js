@@ -217,6 +217,8 @@ const shots = [
   ['lesson-on-a-scene', '?lesson=occlusion&step=1'],
   // The street walked through (when-reuse-pays), the scene with the most polygons.
   ['street', '?lesson=when-reuse-pays'],
+  // The analysis charts of the errors-accumulate lesson's first step.
+  ['analysis', '?lesson=why-errors-accumulate&step=1'],
 ];
 
 function psnr(a, b) {
@@ -286,7 +288,7 @@ async function testScreenshots(browser) {
 // --- Controls ----------------------------------------------------------------------------
 const kKeys = {
   ' ': ['Space', 32], ArrowRight: ['ArrowRight', 39], ArrowLeft: ['ArrowLeft', 37], ArrowUp: ['ArrowUp', 38],
-  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], p: ['KeyP', 80], 2: ['Digit2', 50],
+  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], p: ['KeyP', 80], 2: ['Digit2', 50], 4: ['Digit4', 52],
 };
 
 async function press(browser, key) {
@@ -336,6 +338,17 @@ async function testControls(browser) {
   await press(browser, 'PageDown');
   const lesson = await evaluate(browser, "[app.lessonStep, app.state.basis.kind, document.getElementById('lesson-caption').textContent]");
   check('LessonStepsApplyTheirState', lesson[0] === 2 && lesson[1] === 'waxman-ullman', lesson.join(' | '));
+  // A click on the analysis charts goes to the frame under the pointer: a quarter of the way
+  // along the x axis of frames 0 .. 79 is frame 20 (the key 4 shows the charts).
+  await open(browser, '?script=swing&frame=60', drawnMarker);
+  await press(browser, '4');
+  const charts = await evaluate(browser, `(() => { draw(); const c = analysisView.charts; const r = document.getElementById('canvas').getBoundingClientRect();
+    return JSON.stringify({ x: r.left + c.x + c.w / 4, y: r.top + r.height / 2, view: app.state.view, range: analysisView.range }); })()`);
+  const at = JSON.parse(charts);
+  await browser.tab('Input.dispatchMouseEvent', { type: 'mousePressed', x: at.x, y: at.y, button: 'left', clickCount: 1 });
+  await browser.tab('Input.dispatchMouseEvent', { type: 'mouseReleased', x: at.x, y: at.y, button: 'left', clickCount: 1 });
+  const jumped = await evaluate(browser, 'app.session.frame()');
+  check('AClickOnTheAnalysisChartsGoesToThatFrame', at.view === 'analysis' && jumped === 20 && at.range[0] === 0, `view ${at.view}, axis ${at.range}, frame 60 -> ${jumped} (expected 20)`);
 }
 
 // --- The same lesson everywhere ----------------------------------------------------------
