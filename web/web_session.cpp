@@ -96,6 +96,7 @@ std::string WebSession::state_json() const { return window_state_object(lab_.sta
 std::string WebSession::session_file_text() const { return window_state_to_json(lab_.state()); }
 
 std::string WebSession::set_state(const std::string& object_json, const std::string& origin) {
+  ++epoch_;  // the state may change
   try {
     const json object = json::parse(object_json);
     const std::string problem =
@@ -107,6 +108,7 @@ std::string WebSession::set_state(const std::string& object_json, const std::str
 }
 
 std::string WebSession::open_session(const std::string& text, const std::string& origin) {
+  ++epoch_;  // the state may change
   try {
     const std::string problem = lab_.apply(parse_session(text, origin));
     return problem.empty() ? problem : origin + ": " + problem;
@@ -116,6 +118,7 @@ std::string WebSession::open_session(const std::string& text, const std::string&
 }
 
 std::string WebSession::go_to_lesson(const std::string& name, int step) {
+  ++epoch_;  // the state may change
   const Lesson* lesson = find_lesson(name);
   if (!lesson) return "unknown lesson '" + name + "' (one of " + lesson_names() + ")";
   try {
@@ -395,6 +398,16 @@ std::string WebSession::comparison_problem() {
 }
 
 std::vector<const Animator*> WebSession::shown_animators() {
+  // The page asks several times a frame (the problem, the count, the size, the update):
+  // the engines are found once per frame and state.
+  if (memo_epoch_ == epoch_ && memo_frame_ == frame()) return memo_;
+  memo_ = find_shown_animators();
+  memo_epoch_ = epoch_;
+  memo_frame_ = frame();
+  return memo_;
+}
+
+std::vector<const Animator*> WebSession::find_shown_animators() {
   comparison_problem_.clear();
   std::vector<const Animator*> animators;
   const std::vector<ShownRun> shown = shown_runs(lab_, &comparison_problem_);

@@ -151,7 +151,8 @@ class WebSession {
  private:
   // The engines the comparison shows at the lab's frame: compared runs (or the source's own
   // run), then the exact run; empty with comparison_problem_ set when nothing plays.
-  std::vector<const Animator*> shown_animators();
+  std::vector<const Animator*> shown_animators();  // memoised per frame and epoch_
+  std::vector<const Animator*> find_shown_animators();
   void rebuild_exact();
   void advance_exact_to(int frame);
   // Per panel of the frame reached: the pixels at the panel size, heat map, PSNR.
@@ -165,7 +166,11 @@ class WebSession {
   // The exact panel's engine and record: exact_, or a compared `rerender` run's.
   const Animator* exact_shown_ = nullptr;
   const AnimationFrame* exact_record_ = nullptr;
-  std::vector<WebPanel> panels_;  // compared runs (or the source's), then the exact one
+  int epoch_ = 0;  // counts the calls that may change the state (set_state, lessons, ...)
+  int memo_epoch_ = -1;
+  int memo_frame_ = -1;
+  std::vector<const Animator*> memo_;  // shown_animators() of memo_frame_ at memo_epoch_
+  std::vector<WebPanel> panels_;       // compared runs (or the source's), then the exact one
   std::string comparison_problem_;
   int sampled_frame_ = -1;  // the frame whose pixels the panels hold, at sampled_size_
   glm::ivec2 sampled_size_{0, 0};
