@@ -219,6 +219,10 @@ const shots = [
   ['street', '?lesson=when-reuse-pays'],
   // The analysis charts of the errors-accumulate lesson's first step.
   ['analysis', '?lesson=why-errors-accumulate&step=1'],
+  // A laptop's 1366 x 768: the comparison, the street and the charts.
+  ['comparison-1366', '?view=animation&script=swing&frame=40', [1366, 768]],
+  ['street-1366', '?lesson=when-reuse-pays', [1366, 768]],
+  ['analysis-1366', '?lesson=why-errors-accumulate&step=1', [1366, 768]],
 ];
 
 function psnr(a, b) {
@@ -244,17 +248,22 @@ function notBlank(image) {
   return differing >= 0.05 * image.width * image.height && colours.size >= 64;
 }
 
-async function screenshot(browser, query) {
-  await open(browser, query, drawnMarker);
-  const { data } = await browser.tab('Page.captureScreenshot', { format: 'png' });
-  return Buffer.from(data, 'base64');
+async function screenshot(browser, query, [width, height] = [kWidth, kHeight]) {
+  await browser.tab('Emulation.setDeviceMetricsOverride', { width, height, deviceScaleFactor: 1, mobile: false });
+  try {
+    await open(browser, query, drawnMarker);
+    const { data } = await browser.tab('Page.captureScreenshot', { format: 'png' });
+    return Buffer.from(data, 'base64');
+  } finally {
+    await browser.tab('Emulation.setDeviceMetricsOverride', { width: kWidth, height: kHeight, deviceScaleFactor: 1, mobile: false });
+  }
 }
 
 async function testScreenshots(browser) {
   fs.mkdirSync(outDir, { recursive: true });
   const images = {};
-  for (const [name, query] of shots) {
-    const png = await screenshot(browser, query);
+  for (const [name, query, size = [kWidth, kHeight]] of shots) {
+    const png = await screenshot(browser, query, size);
     const image = decodePng(png, name);
     images[name] = image;
     const baseline = path.join(baselines, `${name}.png`);
@@ -262,7 +271,7 @@ async function testScreenshots(browser) {
       fs.writeFileSync(`${baseline}.tmp`, png);
       fs.renameSync(`${baseline}.tmp`, baseline);
     }
-    const blankOk = notBlank(image) && image.width === kWidth && image.height === kHeight;
+    const blankOk = notBlank(image) && image.width === size[0] && image.height === size[1];
     check(`Screenshot_${name}_IsNotBlank`, blankOk, `${image.width} x ${image.height}`);
     if (!fs.existsSync(baseline)) {
       check(`Screenshot_${name}_MatchesBaseline`, false, `missing baseline ${baseline}`);
@@ -338,6 +347,23 @@ async function testControls(browser) {
   await press(browser, 'PageDown');
   const lesson = await evaluate(browser, "[app.lessonStep, app.state.basis.kind, document.getElementById('lesson-caption').textContent]");
   check('LessonStepsApplyTheirState', lesson[0] === 2 && lesson[1] === 'waxman-ullman', lesson.join(' | '));
+  // The source pickers: scene shifting of the train window seen from the train plays beside
+  // the scene's exact projection; scene shifting of the street (planes not facing the
+  // viewer) is refused with the reason, and the state stays.
+  await open(browser, '?view=flow', drawnMarker);
+  const picked = JSON.parse(await evaluate(browser, `(() => {
+    const pick = (value, viewer) => { $('viewer').value = viewer; $('source').value = value; $('source').dispatchEvent(new Event('change')); };
+    pick('scene-shifting:train-window', 'train-sideways');
+    seek(30);
+    const played = { source: app.state.animation.source, view: app.state.view, problem: app.session.comparisonProblem(),
+      runs: JSON.parse(app.session.updateComparison(160, 120)).runs.map((r) => r.policy) };
+    const before = app.session.stateJson();
+    pick('scene-shifting:street', 'walk');
+    return JSON.stringify({ played, message: $('message').textContent, unchanged: app.session.stateJson() === before });
+  })()`));
+  check('TheSourcePickerPlaysSceneShifting', picked.played.source.kind === 'scene-shifting' && picked.played.source.viewer === 'train-sideways' &&
+    picked.played.view === 'animation' && !picked.played.problem && picked.played.runs.join() === 'scene-shifting,rerender', JSON.stringify(picked.played));
+  check('ASourceThatCannotPlayIsRefusedAndTheStateStays', picked.unchanged && /not parallel to the image plane/.test(picked.message), picked.message);
   // A click on the analysis charts goes to the frame under the pointer: a quarter of the way
   // along the x axis of frames 0 .. 79 is frame 20 (the key 4 shows the charts).
   await open(browser, '?script=swing&frame=60', drawnMarker);
