@@ -84,8 +84,8 @@ function exactFrameHash() {
 // of requestAnimationFrame over kViewFrames frames (after kViewWarmUp) stepping and drawing (paced by the
 // display), and the frames a second the page's own work per frame allows (1000 / its
 // median in ms: what an unpaced display could show).
-const kViewFrames = 60;
-const kViewWarmUp = 10;
+const kViewFrames = 30;
+const kViewWarmUp = 5;
 async function selftestViews() {
   const views = {};
   const cases = [['flow', { view: 'flow' }], ['basis', { view: 'basis' }],
