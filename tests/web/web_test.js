@@ -491,6 +491,22 @@ async function testLinks(browser) {
   await open(browser, `?view=basis#embed&${fragment}`, `Number(document.body.dataset.interactive || 0) > 0`);
   const shown = await evaluate(browser, "[app.session.stateJson(), getComputedStyle(document.getElementById('bar')).display, getComputedStyle(document.getElementById('canvas')).width]");
   check('APermalinkOpensItsStateAndEmbedHidesTheControls', shown[0] === expected && shown[1] === 'none', `bar ${shown[1]}, canvas ${shown[2]}`);
+  // The PNG and session controls download the view as a PNG of the canvas's size and the
+  // state as a session file (the downloads are caught where the page hands them over).
+  const saved = JSON.parse(await evaluate(browser, `new Promise((done) => {
+    const got = [];
+    download = (blob, name) => {
+      const read = blob.type === 'image/png' ? blob.arrayBuffer().then((b) => { const v = new DataView(b); return [v.getUint32(16), v.getUint32(20)]; }) : blob.text();
+      read.then((content) => { got.push({ name, type: blob.type, content }); if (got.length === 2) done(JSON.stringify({ got, canvas: [$('canvas').width, $('canvas').height], state: app.session.stateJson() })); });
+    };
+    $('save-png').click();
+    $('save-session').click();
+  })`));
+  const png = saved.got.find((g) => g.type === 'image/png');
+  const session = saved.got.find((g) => g.type === 'application/json');
+  check('PngAndSessionDownloads', png && JSON.stringify(png.content) === JSON.stringify(saved.canvas) && /\.png$/.test(png.name) &&
+    session && JSON.parse(session.content).format === 'oflab-session' && /\.json$/.test(session.name),
+    `${png && png.name} ${png && png.content}, canvas ${saved.canvas}; ${session && session.name}`);
   // A saved session reads back to the same state; a refused one names the file and the field.
   const files = JSON.parse(await evaluate(browser, `(() => {
     app.session.goToLessonStep('timewarp-rotation', 1);
