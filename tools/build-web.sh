@@ -24,9 +24,9 @@ cmake --build build-web -j"$(nproc 2>/dev/null || echo 2)"
 
 page=build-web/oflab-web.html
 size=$(stat -c %s "$page")
-limit=$((8 * 1024 * 1024))
+limit=$((6 * 1024 * 1024))
 echo "oflab: $page, $size bytes"
 if [[ $size -gt $limit ]]; then
-  echo "oflab: $page is larger than the 8 MB limit ($size > $limit bytes)" >&2
+  echo "oflab: $page is larger than the 6 MB limit ($size > $limit bytes)" >&2
   exit 1
 fi

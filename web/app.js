@@ -2,7 +2,7 @@
 // The page's state and controls (manual/web.md). The state is the window state of the
 // desktop (session/state/window_state.h) as JSON; core owns it: every change goes through
 // Session.setState, which checks it with the session reader, and the page reads it back.
-// Views (flow_view.js, basis_view.js, comparison_view.js) draw the state on one 2D canvas.
+// Views (flow_view.js, basis_view.js, comparison_view.js, analysis_view.js) draw the state on one 2D canvas.
 
 const app = {
   module: null,    // the WebAssembly module of core (createOflabModule)
@@ -79,13 +79,14 @@ function syncFrame() {
 
 function syncControls() {
   const s = app.state;
-  document.body.dataset.view = s.view in app.views ? s.view : 'flow';
+  document.body.dataset.view = shownView();
   document.body.classList.toggle('presentation', s.presentation);
   $('presentation').classList.toggle('active', s.presentation);
   for (const b of document.querySelectorAll('#views button')) {
     b.classList.toggle('active', b.dataset.view === s.view);
   }
   $('script').value = s.script;
+  syncSourcePickers(s);
   $('basis-kind').value = s.basis.kind;
   if (app.views.flow) app.views.flow.syncControls(s);
   syncPoseControls(s);
@@ -148,7 +149,7 @@ function syncPoseControls(s) {
   $('pose-motion').title = s.script ? 'The script moves the plane; these are the plane\'s own pose and motion' : '';
 }
 
-// A file the user opened: a motion script or a lesson, read by core's readers; anything
+// A file the user opened: a motion script, a lesson or a session, read by core's readers; anything
 // else, or a file they refuse, gives a message naming the file.
 function openFile(file) {
   file.text().then((text) => {
@@ -162,11 +163,15 @@ function openFile(file) {
       startLesson(lesson.name);
       return;
     }
-    // Scripts, and whatever is not a lesson: the script reader names the problem.
-    const problem = app.session.addScript(text, file.name);
-    if (problem) { showMessage(problem); return; }
-    const name = JSON.parse(text).name || file.name;
-    if (![...$('script').options].some((o) => o.value === name)) $('script').add(new Option(name, name));
+    if (format === 'oflab-session') {
+      openSessionText(text, file.name);
+      return;
+    }
+    // Scripts, and whatever is not a lesson or a session: the script reader names the problem.
+    const added = JSON.parse(app.session.addScript(text, file.name));
+    if (added.error) { showMessage(added.error); return; }
+    const name = added.path;
+    if (![...$('script').options].some((o) => o.value === name)) $('script').add(new Option(file.name, name));
     editState((s) => { s.script = name; s.frame = 0; }, file.name);
   }, (error) => showMessage(`${file.name}: cannot read the file (${error})`));
 }
@@ -198,7 +203,7 @@ function bindControls() {
 }
 
 // Space plays and pauses; the arrows step (Up and Down by ten frames); Home and End go to
-// the first and the last frame; Page Down and Page Up step through a lesson; 1-3 pick a view,
+// the first and the last frame; Page Down and Page Up step through a lesson; 1-4 pick a view,
 // P the presentation mode.
 function onKey(e) {
   if (e.target.tagName === 'INPUT' && e.target.type !== 'range') return;
@@ -217,6 +222,7 @@ function onKey(e) {
     1: () => editState((s) => { s.view = 'flow'; }),
     2: () => editState((s) => { s.view = 'basis'; }),
     3: () => editState((s) => { s.view = 'animation'; }),
+    4: () => editState((s) => { s.view = 'analysis'; }),
     p: () => editState((s) => { s.presentation = !s.presentation; }),
   };
   const action = keys[e.key];
@@ -242,20 +248,27 @@ function draw() {
   ctx.setTransform(1, 0, 0, 1, 0, 0);
   ctx.fillStyle = '#111315';
   ctx.fillRect(0, 0, w, h);
-  const view = app.views[app.state.view] || app.views.flow;
+  const view = app.views[shownView()];
   try {
     view.draw(ctx, w, h, drawStyle());
     if (!(app.state.view in app.views)) {
       // A state (a lesson's) may name a view of the desktop window that the page lacks.
       ctx.fillStyle = '#e6c35a';
       ctx.font = drawStyle().font(14);
-      ctx.fillText(`The ${app.state.view} view is in the desktop window only; this is the flow view.`, 12, 22);
+      ctx.fillText(`The ${app.state.view} view is in the desktop window only; this is the ${view.title} view.`, 12, h - 10);
     }
   } catch (error) {
     showMessage(`The ${app.state.view} view could not draw: ${error.message || error}`);
   }
   // Frames drawn so far: the tests wait for the first before taking a screenshot.
   document.body.dataset.drawn = String(Number(document.body.dataset.drawn || 0) + 1);
+}
+
+// The page's view for the state's: the world view's plane shows in the flow view.
+function shownView() {
+  const view = app.state.view;
+  if (view in app.views) return view;
+  return 'flow';
 }
 
 // One frame of the page: plays at the state's play rate, draws when something changed.
@@ -296,23 +309,42 @@ async function start() {
     app.module = await createOflabModule();
     window.Module = app.module;
     app.session = new Module.Session();
+    app.moduleMs = performance.now();
   } catch (error) {
     showMessage(`oflab could not start its WebAssembly module: ${error.message || error}`);
     return;
   }
   const params = new URLSearchParams(location.search);
-  if (params.has('selftest')) { runSelftest(); return; }
+  app.defaultState = JSON.parse(app.session.stateJson());
+  app.timings = { module_ms: Math.round(app.moduleMs), load_event_ms: Math.round(performance.getEntriesByType('navigation')[0]?.loadEventStart || 0) };
   app.state = JSON.parse(app.session.stateJson());
   app.schema = JSON.parse(Module.Session.stateSchemaJson());
   buildPoseControls();
   for (const view of Object.values(app.views)) if (view.build) view.build();
   bindControls();
+  bindShareControls();
   fillScriptPicker();
   loadLessons();
   syncControls();
   applyUrlOptions(params);
+  const fragment = location.hash.slice(1);
+  document.body.classList.toggle('embed', fragment.split('&').includes('embed'));
+  if (fragment) {
+    const problem = await openLink(fragment);
+    if (problem) showMessage(problem);
+  }
   if (params.has('bench')) { runBench(params.get('bench')); return; }
+  draw();
+  app.dirty = false;
+  app.interactiveMs = performance.now();
+  document.body.dataset.interactive = String(Math.round(app.interactiveMs));
   requestAnimationFrame(tick);
+  if (params.has('selftest')) runSelftest();
 }
 
 window.addEventListener('load', start);
+window.addEventListener('hashchange', () => {
+  document.body.classList.toggle('embed', location.hash.slice(1).split('&').includes('embed'));
+  openLink(location.hash.slice(1)).then((problem) => { if (problem) showMessage(problem); });
+  app.dirty = true;
+});

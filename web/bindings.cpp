@@ -93,6 +93,9 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("stateJson", &WebSession::state_json)
       .function("setState", &WebSession::set_state)
       .function("addScript", &WebSession::add_script)
+      .function("sessionFileText", &WebSession::session_file_text)
+      .function("openSession", &WebSession::open_session)
+      .function("checkClaimsJson", &WebSession::check_claims_json)
       .function("frameCount", &WebSession::frame_count)
       .function("frame", &WebSession::frame)
       .function("seek", &WebSession::seek)
@@ -103,6 +106,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("basisJson", &WebSession::basis_json)
       .function("comparisonProblem", &WebSession::comparison_problem)
       .function("updateComparison", &WebSession::update_comparison)
+      .function("analysisJson", &WebSession::analysis_json)
       .function("runCount", &WebSession::run_count)
       .function("frameWidth", &WebSession::frame_width)
       .function("frameHeight", &WebSession::frame_height)
@@ -113,6 +117,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .class_function("lessonFileJson", &WebSession::lesson_file_json)
       .class_function("scriptRunJson", &WebSession::script_run_json)
       .class_function("scriptNamesJson", &WebSession::script_names_json)
+      .class_function("sceneNamesJson", &WebSession::scene_names_json)
       .class_function("stateSchemaJson", &WebSession::state_schema_json);
   emscripten::function("heatColour", &oflab::heat_colour);
   emscripten::function("levelColours", &oflab::level_colours);

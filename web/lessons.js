@@ -3,8 +3,9 @@
 // desktop's reader inside the module, and played by the one lesson player of the teaching
 // layer (session/lessons/lesson_player.h, Session.goToLessonStep): a step shows the same
 // state and frame as on the desktop. A lesson's narrative and each step's caption show
-// above the views. The claims are listed as the sentences they check; the engine's claims
-// are checked by `oflab-cli lesson check`, the screen's by `oflab --check-lesson`.
+// above the views. The claims are listed as the sentences they check; the check control
+// (share.js checkClaims) measures the engine's claims on the page's lab, as `oflab-cli
+// lesson check` does; the screen's are checked by `oflab --check-lesson`.
 
 function loadLessons() {
   const lessons = JSON.parse(Module.Session.lessonsJson());
@@ -46,18 +47,27 @@ function showLessonStep(k) {
     showMessage(problem);
     return;
   }
-  app.lessonStep = k;
   app.state = JSON.parse(app.session.stateJson());
   syncControls();
   app.dirty = true;
   showMessage('');
   setPlaying(false);
+  showLessonText(k);
+}
+
+// The lesson panel's text for part k of the lesson shown (0: the narrative): title, caption,
+// the claims it checks; the check table is emptied until the check control is pressed.
+function showLessonText(k) {
+  const lesson = app.lesson;
+  app.lessonStep = k;
   const step = k > 0 ? lesson.steps[k - 1] : null;
   $('lesson-title').textContent = lesson.title;
   $('lesson-caption').textContent = step ? step.say : lesson.narrative;
   $('lesson-step').textContent = k > 0 ? `step ${k} of ${lesson.steps.length}` : `narrative (${lesson.steps.length} steps)`;
   const claims = step ? step.claims : [];
   $('lesson-claims').innerHTML = claims.map((c) => `<li>checks: ${escapeHtml(c)}</li>`).join('');
+  $('lesson-checks').hidden = true;
+  $('lesson-checks').innerHTML = '';
   $('lesson-prev').disabled = k === 0;
   $('lesson-next').disabled = k === lesson.steps.length;
 }

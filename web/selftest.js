@@ -1,12 +1,17 @@
 'use strict';
 // The page's self-test and benchmark (manual/web.md; tests/web/web_test.js reads both).
 //
-// ?selftest runs every shipped motion script through the engine with the default settings
-// (as `oflab-cli animate --script NAME`) and writes one JSON object into #selftest:
-//   {"passed": bool, "scripts": {NAME: {"levels": [...], "coefficients": {...}}},
-//    "bad_files": {"script": message, "lesson": message}}
-// "passed" says every script ran and both broken files were refused with a message; the
-// test compares the levels and coefficients with the CLI's golden outputs.
+// ?selftest, once the page is interactive, runs every shipped motion script through the
+// engine with the default settings (as `oflab-cli animate --script NAME`), plays every step
+// of every lesson and each view, and writes one JSON object into #selftest:
+//   {"passed": bool, "time_to_interactive_ms": ms from navigation to controls live,
+//    "scripts": {NAME: {"levels": [...], "coefficients": {...}}},
+//    "bad_files": {"script": message, "lesson": message},
+//    "lessons": {NAME: [per part: {"frame", "state", "exact_frame_fnv1a", "claims"}]},
+//    "views": {VIEW: {"paced_fps", "unpaced_fps", "median_work_ms"}}}
+// "passed" says every script ran, both broken files were refused with a message, every
+// lesson part showed and every engine claim held; the test compares the levels and
+// coefficients with the CLI's golden outputs and the lessons with `oflab-cli lesson`.
 //
 // ?bench=flow|animation plays that view, stepping one frame and drawing it on every
 // animation frame for kBenchFrames frames after kBenchWarmUp, and writes
@@ -25,8 +30,8 @@ function finish(id, object) {
   out.dataset.done = 'true';
 }
 
-function runSelftest() {
-  const result = { passed: true, scripts: {}, bad_files: {} };
+async function runSelftest() {
+  const result = { passed: true, time_to_interactive_ms: Math.round(app.interactiveMs), startup: app.timings, scripts: {}, bad_files: {} };
   for (const name of JSON.parse(Module.Session.scriptNamesJson())) {
     const run = JSON.parse(Module.Session.scriptRunJson(name));
     if (run.error) result.passed = false;
@@ -34,13 +39,82 @@ function runSelftest() {
   }
   // Broken files must be refused with the reader's message naming the file.
   const session = app.session;
-  result.bad_files.script = session.addScript('{"format": "oflab-script", "version": 1, "camera": 3}', 'broken-script.json');
+  result.bad_files.script = JSON.parse(session.addScript('{"format": "oflab-script", "version": 1, "camera": 3}', 'broken-script.json')).error || '';
   const lesson = JSON.parse(Module.Session.lessonFileJson('{"format": "oflab-lesson", "version": 1, "name": "x"', 'broken-lesson.json'));
   result.bad_files.lesson = lesson.error || '';
   for (const [file, message] of [['broken-script.json', result.bad_files.script], ['broken-lesson.json', result.bad_files.lesson]]) {
     if (!message.includes(file)) result.passed = false;
   }
+  result.lessons = selftestLessons(result);
+  result.views = await selftestViews();
   finish('selftest', result);
+}
+
+// Every step of every lesson as the page shows it: the state (a session's state object), its
+// frame, a hash of the comparison's exact frame where the state plays an engine source
+// (FNV-1a over the 160 x 120 panel's RGBA bytes; null when nothing plays) and the engine
+// claims measured on the page ("line": as `oflab-cli lesson check` prints it).
+function selftestLessons(result) {
+  const lessons = {};
+  for (const lesson of app.lessons) {
+    const steps = [];
+    for (let k = 0; k <= lesson.steps.length; ++k) {
+      const problem = app.session.goToLessonStep(lesson.name, k);
+      if (problem) { result.passed = false; steps.push({ error: problem }); continue; }
+      const state = JSON.parse(app.session.stateJson());
+      const claims = JSON.parse(app.session.checkClaimsJson()).filter((c) => c.source === 'engine');
+      if (claims.some((c) => !c.holds)) result.passed = false;
+      steps.push({ frame: state.frame, state, exact_frame_fnv1a: exactFrameHash(), claims: claims.map((c) => c.line) });
+    }
+    lessons[lesson.name] = steps;
+  }
+  return lessons;
+}
+
+function exactFrameHash() {
+  if (app.session.comparisonProblem()) return null;
+  JSON.parse(app.session.updateComparison(160, 120));
+  const pixels = app.session.runPixels(app.session.runCount() - 1);
+  let h = 0x811c9dc5;
+  for (let i = 0; i < pixels.length; ++i) h = Math.imul(h ^ pixels[i], 0x01000193) >>> 0;
+  return h.toString(16).padStart(8, '0');
+}
+
+// Per view (the comparison on the swing script and on the street scene): frames a second
+// of requestAnimationFrame over kViewFrames frames (after kViewWarmUp) stepping and drawing (paced by the
+// display), and the frames a second the page's own work per frame allows (1000 / its
+// median in ms: what an unpaced display could show).
+const kViewFrames = 30;
+const kViewWarmUp = 5;
+async function selftestViews() {
+  const views = {};
+  const cases = [['flow', { view: 'flow' }], ['basis', { view: 'basis' }],
+    ['animation', { view: 'animation', script: 'swing' }],
+    ['animation-street', { view: 'animation', animation: { source: { kind: 'scene', name: 'street', viewer: 'walk' } } }]];
+  for (const [name, state] of cases) {
+    app.session.setState(JSON.stringify(state), 'selftest');
+    app.state = JSON.parse(app.session.stateJson());
+    syncControls();
+    const times = [];
+    const work = [];
+    let last = 0;
+    let frames = 0;
+    await new Promise((done) => {
+      function frame(now) {
+        const start = performance.now();
+        if (++frames > kViewWarmUp) times.push(now - last);
+        last = now;
+        seek(app.state.frame + 1);
+        draw();
+        if (frames > kViewWarmUp) work.push(performance.now() - start);
+        if (times.length < kViewFrames) requestAnimationFrame(frame); else done();
+      }
+      requestAnimationFrame(frame);
+    });
+    const median = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
+    views[name] = { paced_fps: 1000 * times.length / times.reduce((a, b) => a + b, 0), unpaced_fps: 1000 / median(work), median_work_ms: median(work) };
+  }
+  return views;
 }
 
 function runBench(view) {

@@ -21,7 +21,10 @@
 #include "formats/script_file.h"
 #include "frame_pixels.h"
 #include "image/image_compare.h"
-#include "player/source_length.h"
+#include "lessons/claim_kinds.h"
+#include "lessons/lesson_player.h"
+#include "player/animation_sources.h"
+#include "shown_runs.h"
 #include "state/state_fields.h"
 #include "state/window_state_file.h"
 
@@ -61,24 +64,6 @@ json planar_basis_json(const PlanarBasisTerms& p) {
           {"py", p.py}};
 }
 
-// The fields of a state object that the comparison's runs do not depend on.
-const std::vector<std::string>& display_only_fields() {
-  static const std::vector<std::string> fields = {
-      "view",        "frame",          "flow",         "basis",  "basis_playing", "presentation",
-      "scene_panel", "play_rate",      "playing",      "lesson", "lesson_step",   "zoom",
-      "display",     "exact_renderer", "world_camera", "framing"};
-  return fields;
-}
-
-json run_defining_fields(const WindowState& state) {
-  json object = window_state_object(state);
-  for (const std::string& field : display_only_fields()) {
-    object.erase(field);
-    object["animation"].erase(field);
-  }
-  return object;
-}
-
 json lesson_json(const Lesson& lesson) {
   json steps = json::array();
   for (const LessonStep& step : lesson.steps) {
@@ -105,103 +90,110 @@ MotionScript read_shipped_or_file_script(const std::string& name) {
 
 }  // namespace
 
-WebSession::WebSession() : texture_(read_image(default_texture_path())), panel_(texture_) {
-  state_.plane.pose.texture_size = {texture_.width(), texture_.height()};
-  rebuild_comparison();
-}
+WebSession::WebSession() : lab_(shipped_default_texture()) {}
 
-WindowState WebSession::shown_state() const {
-  WindowState shown = state_;
-  shown.frame = panel_.frame();
-  return shown;
-}
+std::string WebSession::state_json() const { return window_state_object(lab_.state()).dump(); }
 
-std::string WebSession::state_json() const { return window_state_object(shown_state()).dump(); }
+std::string WebSession::session_file_text() const { return window_state_to_json(lab_.state()); }
 
 std::string WebSession::set_state(const std::string& object_json, const std::string& origin) {
+  ++epoch_;  // the state may change
   try {
     const json object = json::parse(object_json);
     const std::string problem =
-        apply_state(read_window_state_object(object, origin, "state", WindowState{}));
+        lab_.apply(read_window_state_object(object, origin, "state", WindowState{}));
     return problem.empty() ? problem : origin + ": " + problem;
   } catch (const std::exception& e) {
     return e.what();
   }
 }
 
-std::string WebSession::apply_state(WindowState next) {
+std::string WebSession::open_session(const std::string& text, const std::string& origin) {
+  ++epoch_;  // the state may change
   try {
-    next.plane.pose.texture_size = {texture_.width(), texture_.height()};
-    for (const std::string* name : {&next.script, &next.source.name}) {
-      if (!name->empty() && scripts_.count(*name) == 0 &&
-          (name == &next.script || next.source.kind == "script")) {
-        scripts_[*name] = read_shipped_or_file_script(*name);
-      }
-    }
-    std::string problem = window_state_problem(next);
-    if (!problem.empty()) return problem;
-    // The frame clock as the desktop's: the plane, its script, the source's loop.
-    PlanePanel panel = panel_;
-    problem = panel.set_scene(next.plane);
-    if (problem.empty() && !next.script.empty()) {
-      problem = panel.set_script(scripts_.at(next.script), next.script);
-    }
-    if (!problem.empty()) return problem;
-    panel.set_loop_override(source_frame_count(next.source, panel));
-    panel.set_frame(next.frame);
-    const bool rebuild = run_defining_fields(next) != run_defining_fields(state_);
-    state_ = std::move(next);
-    panel_ = std::move(panel);
-    if (rebuild) rebuild_comparison();
-    return "";
+    const std::string problem = lab_.apply(parse_session(text, origin));
+    return problem.empty() ? problem : origin + ": " + problem;
   } catch (const std::exception& e) {
     return e.what();
   }
-}
-
-void WebSession::stage_play(int frames) {
-  for (int k = 0; k < frames; ++k) panel_.set_frame(panel_.frame() + 1);
 }
 
 std::string WebSession::go_to_lesson(const std::string& name, int step) {
+  ++epoch_;  // the state may change
   const Lesson* lesson = find_lesson(name);
   if (!lesson) return "unknown lesson '" + name + "' (one of " + lesson_names() + ")";
   try {
-    return go_to_lesson_step(*this, *lesson, step);
+    return go_to_lesson_step(stage_, *lesson, step);
   } catch (const std::exception& e) {
     return e.what();
   }
+}
+
+std::string WebSession::check_claims_json() {
+  json out = json::array();
+  const WindowState& values = lab_.values();
+  const Lesson* lesson = values.lesson.empty() ? nullptr : find_lesson(values.lesson);
+  if (!lesson || values.lesson_step > int(lesson->steps.size())) return out.dump();
+  const int step = values.lesson_step;
+  const std::vector<LessonClaim>& claims =
+      step == 0 ? lesson->claims : lesson->steps[std::size_t(step) - 1].claims;
+  const auto bound = [](double v, double open) { return v == open ? json() : json(v); };
+  for (const LessonClaim& claim : claims) {
+    const ClaimKind* kind = find_claim_kind(claim.claim);
+    const bool engine = kind && kind->source == ClaimSource::kEngine;
+    json item = {{"says", claim.says},
+                 {"kind", claim.claim},
+                 {"source", engine ? "engine" : "screen"},
+                 {"at_least", bound(claim.at_least, -1e300)},
+                 {"at_most", bound(claim.at_most, 1e300)}};
+    if (engine) {
+      const double measured = measure_engine_claim(lab_, claim);
+      const bool holds = measured >= claim.at_least && measured <= claim.at_most;
+      item["measured"] = std::isnan(measured) ? json() : json(measured);
+      item["holds"] = holds;
+      item["line"] = describe(*lesson, ClaimCheck{step, claim, measured, holds});
+    }
+    out.push_back(item);
+  }
+  return out.dump();
 }
 
 std::string WebSession::state_schema_json() { return state_schema().dump(); }
 
 std::string WebSession::add_script(const std::string& text, const std::string& origin) {
+  // The lab reads scripts by name or path: the text goes to the module's memory file system,
+  // under the name the user gave.
+  namespace fs = std::filesystem;
   try {
-    MotionScript script = parse_script(text, origin);
-    const std::string name = script.name.empty() ? origin : script.name;
-    scripts_[name] = std::move(script);
-    return "";
+    parse_script(text, origin);  // refused before it is kept
+    const fs::path dir = "/uploads/scripts";
+    fs::create_directories(dir);
+    std::string stem = fs::path(origin).filename().string();
+    if (stem.empty()) stem = "script.json";
+    const fs::path path = dir / stem;
+    std::ofstream(path, std::ios::binary) << text;
+    return json{{"path", path.string()}}.dump();
   } catch (const std::exception& e) {
-    return e.what();
+    return json{{"error", e.what()}}.dump();
   }
 }
 
-int WebSession::frame_count() const { return panel_.loop_frames(); }
+int WebSession::frame_count() const { return lab_.panel().loop_frames(); }
 
 void WebSession::seek(int frame) {
   // Stepping back from frame 0 goes to the loop's last frame; the clock lands as the
   // desktop's does (PlanePanel::set_frame).
-  panel_.set_frame(frame < 0 ? frame_count() + frame % frame_count() : frame);
+  lab_.panel().set_frame(frame < 0 ? frame_count() + frame % frame_count() : frame);
 }
 
-PlaneScene WebSession::scene() const { return panel_.scene_at(panel_.frame()); }
+PlaneScene WebSession::scene() const { return lab_.panel().scene_at(lab_.panel().frame()); }
 
 std::string WebSession::scene_problem() const { return plane_scene_problem(scene()); }
 
 std::string WebSession::flow_json() const {
   const PlaneScene s = scene();
   json out;
-  out["frame"] = panel_.frame();
+  out["frame"] = frame();
   out["frames"] = frame_count();
   out["camera"] = {{"width", s.camera.width},
                    {"height", s.camera.height},
@@ -292,134 +284,190 @@ std::string WebSession::basis_json(const std::string& basis_key, double radius_p
   return json{{"key", basis_key}, {"title", basis_title(kind)}, {"terms", terms}}.dump();
 }
 
-void WebSession::rebuild_comparison() {
-  runs_.clear();
+namespace {
+
+// What the exact run depends on: the plane, its script and texture, the source and the
+// engine settings of the state (not its view, frame or display options).
+std::string exact_run_key(const WindowState& state) {
+  json object = window_state_object(state);
+  json key = {{"plane", object["plane"]},
+              {"script", object.value("script", json())},
+              {"texture", object.value("texture", json())},
+              {"animation", object["animation"]}};
+  for (const char* field : {"display", "exact_renderer", "framing", "zoom", "compared"}) {
+    key["animation"].erase(field);
+  }
+  return key.dump();
+}
+
+}  // namespace
+
+std::string WebSession::comparison_problem() {
+  shown_animators();
+  return comparison_problem_;
+}
+
+std::vector<const Animator*> WebSession::shown_animators() {
+  // The page asks several times a frame (the problem, the count, the size, the update):
+  // the engines are found once per frame and state.
+  if (memo_epoch_ == epoch_ && memo_frame_ == frame()) return memo_;
+  memo_ = find_shown_animators();
+  memo_epoch_ = epoch_;
+  memo_frame_ = frame();
+  return memo_;
+}
+
+std::vector<const Animator*> WebSession::find_shown_animators() {
   comparison_problem_.clear();
-  MotionScript source;
+  std::vector<const Animator*> animators;
+  const std::vector<ShownRun> shown = shown_runs(lab_, &comparison_problem_);
+  for (const ShownRun& run : shown) animators.push_back(run.animator);
+  if (animators.empty()) return animators;
+  // A compared `rerender` run is the exact projection itself (the same source and settings
+  // but the policy): it is shown as the exact panel too, and no third engine runs.
+  const auto rerender = std::find_if(
+      shown.begin(), shown.end(), [](const ShownRun& run) { return run.policy == kExactPolicy; });
+  if (rerender != shown.end()) {
+    exact_.reset();
+    exact_key_.clear();
+    exact_shown_ = rerender->animator;
+    exact_record_ = rerender->last;
+    animators.push_back(exact_shown_);
+    return animators;
+  }
   try {
-    if (state_.source.kind == "plane") {
-      source = panel_.as_script();
-    } else if (state_.source.kind == "script") {
-      source = scripts_.at(state_.source.name);
-    } else {
-      comparison_problem_ = "the browser page plays planes and motion scripts; the source '" +
-                            state_.source.kind +
-                            "' (scenes and viewer scripts) plays in the "
-                            "desktop window only";
-      return;
-    }
-    std::vector<std::string> policies = state_.compared;
-    policies.push_back(kExactPolicy);
-    for (const std::string& name : policies) {
-      EngineSettings settings = state_.settings;
-      settings.policy = &reuse_policy(name);
-      WebRun run;
-      run.policy = name;
-      run.animator = make_plane_animator(source, texture_, settings);
-      run.last = run.animator->start();
-      runs_.push_back(std::move(run));
-    }
-    sampled_frame_ = -1;
+    if (exact_run_key(lab_.state()) != exact_key_) rebuild_exact();
+    advance_exact_to(animators.front()->frame());
   } catch (const std::exception& e) {
-    runs_.clear();
+    exact_.reset();
+    exact_key_.clear();
     comparison_problem_ = e.what();
+    return {};
   }
+  exact_shown_ = exact_.get();
+  exact_record_ = &exact_last_;
+  animators.push_back(exact_shown_);
+  return animators;
 }
 
-void WebSession::advance_runs_to(int frame) {
-  if (runs_.empty()) return;
-  frame = std::min(frame, runs_.front().animator->frame_count() - 1);
-  if (frame == runs_.front().animator->frame()) return;
-  if (frame < runs_.front().animator->frame()) {
-    for (WebRun& run : runs_) {
-      run.last = run.animator->start();
-      run.level_frames = {};
-      run.max_error_px = 0.0;
-    }
-  }
-  while (runs_.front().animator->frame() < frame) {
-    for (WebRun& run : runs_) {
-      run.last = run.animator->advance();
-      for (int l = 0; l < kLevelCount; ++l) run.level_frames[l] += run.last.levels[l];
-      run.max_error_px = std::max(run.max_error_px, run.last.max_measured_error_px);
-    }
-  }
+void WebSession::rebuild_exact() {
+  exact_.reset();
+  exact_key_ = exact_run_key(lab_.state());
+  SourceChoice choice = lab_.run().source();
+  // Scene shifting's exact projection is the scene's: every polygon rendered exactly.
+  if (choice.kind == "scene-shifting") choice.kind = "scene";
+  const AnimationSourceKind* kind = find_animation_source_kind(choice.kind);
+  if (!kind) throw std::invalid_argument("unknown source kind '" + choice.kind + "'");
+  EngineSettings settings = lab_.run().settings();
+  settings.policy = &reuse_policy(kExactPolicy);
+  exact_ = kind->make(choice, lab_.panel(), settings);
+  exact_last_ = exact_->start();
+  sampled_frame_ = -1;
 }
 
-void WebSession::finish_runs_frame(int panel_width, int panel_height) {
-  const Image& exact = runs_.back().animator->image();
-  const DisplaySampling sampling =
-      display_sampling(exact.width(), exact.height(), panel_width, panel_height);
-  for (WebRun& run : runs_) {
-    const Image& image = run.animator->image();
-    flatten_into(image, sampling, kBackground, run.pixels);
-    if (&run == &runs_.back()) {
+void WebSession::advance_exact_to(int frame) {
+  frame = std::min(frame, exact_->frame_count() - 1);
+  if (frame < exact_->frame()) exact_last_ = exact_->start();
+  while (exact_->frame() < frame) exact_last_ = exact_->advance();
+}
+
+void WebSession::sample_panels(const std::vector<const Animator*>& animators, int width,
+                               int height) {
+  const Image& exact = animators.back()->image();
+  const DisplaySampling sampling = display_sampling(exact.width(), exact.height(), width, height);
+  panels_.resize(animators.size());
+  for (std::size_t k = 0; k < animators.size(); ++k) {
+    WebPanel& panel = panels_[k];
+    const Image& image = animators[k]->image();
+    flatten_into(image, sampling, kBackground, panel.pixels);
+    if (k + 1 == animators.size()) {
       // The exact run against itself: no heat map is shown, and the figures are known.
-      run.heat.clear();
-      run.heat_max = 0;
-      run.psnr_db = kIdenticalPsnrDb;
+      panel.heat.clear();
+      panel.heat_max = 0;
+      panel.psnr_db = kIdenticalPsnrDb;
       continue;
     }
-    difference_heat_map_into(image, exact, kHeatFullScale, sampling, run.heat);
-    run.heat_max = largest_difference(image, exact);
-    run.psnr_db = psnr_db(image, exact);
+    difference_heat_map_into(image, exact, kHeatFullScale, sampling, panel.heat);
+    panel.heat_max = largest_difference(image, exact);
+    panel.psnr_db = psnr_db(image, exact);
   }
-  sampled_frame_ = runs_.front().animator->frame();
-  sampled_size_ = {panel_width, panel_height};
+  sampled_frame_ = animators.back()->frame();
+  sampled_size_ = {width, height};
 }
 
-int WebSession::frame_width() const {
-  return runs_.empty() ? 0 : runs_.front().animator->camera().width;
+std::string WebSession::analysis_json(int frames) {
+  frames = std::clamp(frames, 1, 1000);
+  std::string problem;
+  if (!lab_.run().animator()) {
+    problem = lab_.run().take_problem();
+    return json{{"problem", problem.empty() ? "the source cannot be played" : problem}}.dump();
+  }
+  const int now = lab_.run().animator()->frame();
+  const int first = std::max(0, now - frames + 1);
+  const auto frame_json = [](int frame, const auto& levels, int drawn, double error) {
+    return json{{"frame", frame},
+                {"levels", json(std::vector<int>(levels.begin(), levels.end()))},
+                {"error_px", drawn > 0 ? json(error) : json()}};
+  };
+  json runs = json::array();
+  for (const ComparedRun& run : lab_.comparison().runs()) {
+    if (!run.problem.empty()) return json{{"problem", run.problem}}.dump();
+    json list = json::array();
+    for (const ComparedFrame& f : run.history) {
+      if (f.frame >= first && f.frame <= now) {
+        list.push_back(frame_json(f.frame, f.levels, f.drawn(), f.max_measured_error_px));
+      }
+    }
+    runs.push_back({{"policy", run.policy->name}, {"frames", list}});
+  }
+  if (runs.empty()) {
+    const std::vector<AnimationFrame>& history = lab_.run().history();
+    json list = json::array();
+    for (int k = first; k <= now && k < int(history.size()); ++k) {
+      const AnimationFrame& f = history[std::size_t(k)];
+      list.push_back(frame_json(k, f.levels, f.drawn(), f.max_measured_error_px));
+    }
+    runs.push_back({{"policy", lab_.run().source().kind}, {"frames", list}});
+  }
+  return json{{"first", first}, {"last", now}, {"runs", runs}}.dump();
 }
-int WebSession::frame_height() const {
-  return runs_.empty() ? 0 : runs_.front().animator->camera().height;
+
+int WebSession::run_count() { return int(shown_animators().size()); }
+
+int WebSession::frame_width() {
+  const std::vector<const Animator*> animators = shown_animators();
+  return animators.empty() ? 0 : animators.back()->camera().width;
+}
+
+int WebSession::frame_height() {
+  const std::vector<const Animator*> animators = shown_animators();
+  return animators.empty() ? 0 : animators.back()->camera().height;
 }
 
 std::string WebSession::update_comparison(int panel_width, int panel_height) {
   panel_width = std::clamp(panel_width, 1, kMaxPanelSide);
   panel_height = std::clamp(panel_height, 1, kMaxPanelSide);
-  if (!runs_.empty()) {
-    // The runs follow the clock as the desktop's run player does (player/run_player.h).
-    advance_runs_to(panel_.frame() % runs_.front().animator->frame_count());
-    if (sampled_frame_ != runs_.front().animator->frame() ||
-        sampled_size_ != glm::ivec2(panel_width, panel_height)) {
-      finish_runs_frame(panel_width, panel_height);
-    }
+  const std::vector<const Animator*> animators = shown_animators();
+  std::vector<ShownRun> shown = shown_runs(lab_, &comparison_problem_);
+  if (!animators.empty() && (sampled_frame_ != animators.back()->frame() ||
+                             sampled_size_ != glm::ivec2(panel_width, panel_height) ||
+                             panels_.size() != animators.size())) {
+    sample_panels(animators, panel_width, panel_height);
   }
   json out;
   out["problem"] = comparison_problem_;
-  out["frame"] = panel_.frame();
+  out["frame"] = frame();
   out["frames"] = frame_count();
-  out["width"] = frame_width();
-  out["height"] = frame_height();
+  out["width"] = animators.empty() ? 0 : animators.back()->camera().width;
+  out["height"] = animators.empty() ? 0 : animators.back()->camera().height;
   out["panel"] = {panel_width, panel_height};
   out["heat_full_scale"] = kHeatFullScale;
   json runs = json::array();
-  for (const WebRun& run : runs_) {
-    const ReusePolicy& policy = reuse_policy(run.policy);
-    json levels = json::object();
-    int drawn = 0;
-    for (int l = 0; l < kLevelCount; ++l) drawn += run.level_frames[l];
-    for (int l = 0; l < kLevelCount; ++l) {
-      levels[level_name(static_cast<Level>(l))] =
-          drawn > 0 ? static_cast<double>(run.level_frames[l]) / drawn : 0.0;
+  if (!animators.empty()) {
+    shown.push_back({kExactPolicy, exact_shown_, exact_record_, {}, 0.0});
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+      runs.push_back(shown_run_json(shown[k], panels_[k].psnr_db, panels_[k].heat_max));
     }
-    json outlines = json::array();
-    for (const LayerOutline& outline : run.animator->outlines()) {
-      json points = json::array();
-      for (const Vec2& p : outline.points) points.push_back(point_json(p));
-      outlines.push_back({{"level", level_name(outline.level)}, {"points", points}});
-    }
-    const bool shown = !run.last.layer_reports.empty() && run.last.layer_reports[0].visible;
-    runs.push_back({{"policy", run.policy},
-                    {"summary", policy.summary},
-                    {"level", shown ? level_name(run.last.layer_reports[0].level) : "not visible"},
-                    {"measured_error_px", run.last.max_measured_error_px},
-                    {"max_error_px", run.max_error_px},
-                    {"level_shares", levels},
-                    {"psnr_db", run.psnr_db},
-                    {"heat_max", run.heat_max},
-                    {"outlines", outlines}});
   }
   out["runs"] = runs;
   return out.dump();
@@ -487,5 +535,10 @@ std::string WebSession::script_run_json(const std::string& name) {
 }
 
 std::string WebSession::script_names_json() { return json(shipped_script_names()).dump(); }
+
+std::string WebSession::scene_names_json() {
+  return json{{"scenes", shipped_names("scenes")}, {"viewers", shipped_names("viewer-scripts")}}
+      .dump();
+}
 
 }  // namespace oflab

@@ -1,11 +1,16 @@
 // One browser page's state and the core objects it shows, for the page's JavaScript
-// (bound in web/bindings.cpp; manual/web.md). The page holds one WindowState, the same value
-// a desktop window, a session file and a lesson file hold (session/state/window_state.h); every
-// number it shows comes from core: the flow (core/flow, through session/display/flow_parts.h),
+// (bound in web/bindings.cpp; manual/web.md). The page holds the teaching layer's headless
+// lab (session/player/lab.h), the one the desktop window and `oflab-cli lesson` hold: its
+// state is the same WindowState a session file and a lesson file hold, its sources are
+// every kind the desktop plays (the plane, motion scripts, scenes with viewer scripts, scene
+// shifting; session/player/animation_sources.h), lessons play on it through the one lesson
+// player and their engine claims are measured on it (session/player/engine_claims.h). Every
+// number the page shows comes from core through it: the flow (session/display/flow_parts.h),
 // the bases (session/basis/basis_catalog.h) and the engine's runs (core/engine/animator.h).
 //
-// Frames: the scene of frame k is the plane of the state moved for k / 30 seconds (the
-// desktop's scene panel, 150 frames a loop), or frame k of the state's motion script.
+// Frames: the lab's frame clock (session/player/plane_panel.h): the plane of the state moved
+// for k / 30 seconds (150 frames a loop), frame k of the state's motion script, or of the
+// source's own length (a viewer script's frames).
 // Positions handed to the page are top-left image pixels of the scene's camera (Y down);
 // flows are pixels per second (30 frames per second).
 #pragma once
@@ -17,67 +22,67 @@
 #include <vector>
 
 #include "engine/animator.h"
-#include "engine/script.h"
 #include "flow/plane_scene.h"
-#include "lessons/lesson_player.h"
 #include "lessons/lessons.h"
-#include "player/plane_panel.h"
+#include "player/engine_claims.h"
+#include "player/lab.h"
 #include "state/window_state.h"
 
 namespace oflab {
 
-// One compared run of the comparison view: a reuse policy playing the source, or the exact
-// projection (the `rerender` policy: every frame rendered exactly).
-struct WebRun {
+// One panel of the comparison view: a compared policy's run (the lab's,
+// player/policy_comparison.h), the source's own run when its kind has no reuse policy, or the exact
+// projection (the `rerender` policy: every frame rendered exactly), sampled for the page.
+struct WebPanel {
   std::string policy;
-  std::unique_ptr<Animator> animator;
-  AnimationFrame last;
-  std::array<int, kLevelCount> level_frames{};  // frames 1 .. now per level
-  double max_error_px = 0.0;                    // largest measured error, frames 1 .. now
-  std::vector<std::uint8_t> pixels;             // the frame at panel size (frame_pixels.h)
-  std::vector<std::uint8_t> heat;               // difference to the exact frame, panel size
-  int heat_max = 0;                             // its largest difference, grey levels
-  double psnr_db = 0.0;                         // against the exact frame (image_compare.h)
+  std::vector<std::uint8_t> pixels;  // the frame at panel size (frame_pixels.h)
+  std::vector<std::uint8_t> heat;    // difference to the exact frame, panel size
+  int heat_max = 0;                  // its largest difference, grey levels
+  double psnr_db = 0.0;              // against the exact frame (image_compare.h)
 };
 
-class WebSession : public LessonStage {
+class WebSession {
  public:
-  // Reads the shipped butterfly texture from the module's embedded datasets. Throws
-  // std::runtime_error when it cannot (a broken build).
+  // A lab with the shipped butterfly texture from the module's embedded datasets. Throws
+  // std::runtime_error when it cannot be read (a broken build).
   WebSession();
 
   // The state as a session's state object (session/state/window_state_file.h), JSON text.
   std::string state_json() const;
+  // The state as a session file's text (format "oflab-session", version 2), as the desktop
+  // saves it.
+  std::string session_file_text() const;
   // Reads `object_json` (fields of a state object) over the default state and shows it.
-  // Returns "" or the reason it was refused (the state is then unchanged): a field the
-  // session reader refuses, a script that cannot be read, a plane no view can draw.
+  // Returns "" or the reason it was refused naming `origin` (the state is then unchanged):
+  // a field the session reader refuses, a file the state names that cannot be read, a
+  // source that cannot be played (Lab::apply).
   std::string set_state(const std::string& object_json, const std::string& origin);
-  // A motion script file of the user's: parsed (analysis/formats/script_file.h) and made
-  // known under its script name for set_state's "script" field. Returns "" or the reader's
-  // message naming `origin`, the frame or segment and the field.
+  // A session file's text (version 1 or 2) read by the desktop's reader and shown whole:
+  // "" or the reader's or the lab's message naming `origin` and the field (nothing changed).
+  std::string open_session(const std::string& text, const std::string& origin);
+  // A motion script file of the user's: parsed (analysis/formats/script_file.h) and kept in
+  // the module's file system, where a state's "script" or script source names it by the
+  // path returned: {"path": ...} or {"error": the reader's message naming `origin`, the
+  // frame or segment and the field}.
   std::string add_script(const std::string& text, const std::string& origin);
 
-  // Frames of the loop the views play and the frame shown, on the same frame clock as the
-  // desktop's (session/player/plane_panel.h: the script's or the source's length, else 150
-  // frames; a frame where the plane cannot be drawn lands on 0). seek(-k) goes k frames
-  // back from the loop's end.
+  // Frames of the loop the views play and the frame shown, on the lab's frame clock (the
+  // script's or the source's length, else 150 frames; a frame where the plane cannot be
+  // drawn lands on 0). seek(-k) goes k frames back from the loop's end.
   int frame_count() const;
-  int frame() const { return panel_.frame(); }
+  int frame() const { return lab_.panel().frame(); }
   void seek(int frame);
 
   // Shows step `step` of the lesson `name` (shipped or read by lesson_file_json) through the
-  // one lesson player (session/lessons/lesson_player.h), as the desktop shows it: "" or why
-  // not.
+  // one lesson player (session/lessons/lesson_player.h) on the lab, as the desktop and
+  // `oflab-cli lesson state` show it: "" or why not.
   std::string go_to_lesson(const std::string& name, int step);
-
-  // The page as a lesson's stage.
-  WindowState stage_state() const override { return shown_state(); }
-  std::string stage_apply(const WindowState& state) override { return apply_state(state); }
-  void stage_stop() override { state_.playing = false; }
-  void stage_seek(int frame) override { panel_.set_frame(frame); }
-  int stage_loop_frames() const override { return panel_.loop_frames(); }
-  void stage_play(int frames) override;
-  void stage_set_step(int step) override { state_.lesson_step = step; }
+  // The claims of the lesson part shown (the state's lesson and lesson_step; [] without a
+  // lesson), each measured on the lab now when its kind is the engine's (session/lessons/
+  // claim_kinds.h): [{"says", "kind", "source": "engine"|"screen", "measured" (engine
+  // kinds; null for NaN), "at_least", "at_most" (null when open), "holds" (engine kinds),
+  // "line": player/engine_claims.h describe(), as `oflab-cli lesson check` prints it}].
+  std::string check_claims_json();
 
   // The window state's field table (session/state/state_fields.h state_schema) as JSON:
   // the page takes the fields' names, types and ranges from it.
@@ -104,20 +109,28 @@ class WebSession : public LessonStage {
   // (x, y, vx, vy quadruples, centred pixels). "" for an unknown key.
   std::string basis_json(const std::string& basis_key, double radius_px, int n) const;
 
-  // The comparison: the state's compared policies and the exact projection playing the
-  // state's source at the frame shown. Returns "" or why the source cannot be played.
-  std::string comparison_problem() const { return comparison_problem_; }
-  // Brings the runs to the frame shown (forward frame by frame, backward by a restart; the
-  // runs stand still while the page shows another view) and samples their frames and heat
-  // maps at panel_width x panel_height display pixels (run_pixels, run_heat). Returns per
-  // run: policy, level of the frame, measured error, largest error so far, level shares over
-  // frames 1 .. now, the largest difference from the exact frame and the PSNR against it,
-  // the outlines of the shown layers (frame pixels). Panel sizes are clamped to 1 .. 4096.
+  // The comparison: the lab's compared runs of the state's source (or the source's own run
+  // when its kind has no reuse policy) and the exact projection, at the frame shown.
+  // "" or why the source cannot be played.
+  std::string comparison_problem();
+  // Brings the runs to the frame shown (the lab's runs: forward frame by frame, backward by
+  // a restart; they stand still while the page shows another view) and samples their frames
+  // and heat maps at panel_width x panel_height display pixels (run_pixels, run_heat).
+  // Returns per panel: policy, level of the frame (or the drawn layers per level of a
+  // scene), measured error, largest error so far, level shares over frames 1 .. now, the
+  // largest difference from the exact frame and the PSNR against it, the outlines of the
+  // shown layers (frame pixels). Panel sizes are clamped to 1 .. 4096.
   std::string update_comparison(int panel_width, int panel_height);
-  int run_count() const { return static_cast<int>(runs_.size()); }
-  const WebRun& run(int index) const { return runs_.at(static_cast<std::size_t>(index)); }
-  int frame_width() const;
-  int frame_height() const;
+  // The analysis charts' history: per compared run (or the source's own run when its kind
+  // has no reuse policy), frames max(0, now - frames + 1) .. now of the current pass as
+  // {"first", "last", "runs": [{"policy", "frames": [{"frame", "levels": [drawn layers per
+  // level, the levels' order], "error_px": largest measured error (null: nothing drawn)}]}]},
+  // or {"problem": why not}. `frames` is clamped to 1 .. 1000.
+  std::string analysis_json(int frames);
+  int run_count();
+  const WebPanel& run(int index) const { return panels_.at(static_cast<std::size_t>(index)); }
+  int frame_width();
+  int frame_height();
 
   // Every lesson (shipped, teaching order) as JSON: name, title, narrative, the state of
   // its narrative and of each step (state objects), each step's caption, frame and play.
@@ -132,24 +145,34 @@ class WebSession : public LessonStage {
   static std::string script_run_json(const std::string& name);
   // The names of the shipped motion scripts (datasets/scripts), JSON list.
   static std::string script_names_json();
+  // The names of the shipped scenes and viewer scripts: {"scenes": [...], "viewers": [...]}.
+  static std::string scene_names_json();
 
  private:
-  // The state with the frame the clock shows.
-  WindowState shown_state() const;
-  // Shows `state` whole: "" or why it was refused (then nothing changed).
-  std::string apply_state(WindowState state);
-  void rebuild_comparison();
-  void advance_runs_to(int frame);
-  // Per run of the frame reached: the pixels at the panel size, heat map, PSNR.
-  void finish_runs_frame(int panel_width, int panel_height);
+  // The engines the comparison shows at the lab's frame: compared runs (or the source's own
+  // run), then the exact run; empty with comparison_problem_ set when nothing plays.
+  std::vector<const Animator*> shown_animators();  // memoised per frame and epoch_
+  std::vector<const Animator*> find_shown_animators();
+  void rebuild_exact();
+  void advance_exact_to(int frame);
+  // Per panel of the frame reached: the pixels at the panel size, heat map, PSNR.
+  void sample_panels(const std::vector<const Animator*>& animators, int width, int height);
 
-  Image texture_;
-  PlanePanel panel_;   // the frame clock: the plane, its script, the source's loop
-  WindowState state_;  // the frame is the panel's
-  std::map<std::string, MotionScript> scripts_;  // shipped (read on demand) and added
-  std::vector<WebRun> runs_;                     // compared policies, then the exact run
+  Lab lab_;
+  LabStage stage_{&lab_};            // lessons play on the lab, as `oflab-cli lesson` plays them
+  std::unique_ptr<Animator> exact_;  // the exact projection of the lab's source
+  AnimationFrame exact_last_;
+  std::string exact_key_;  // the source and settings exact_ plays (JSON text)
+  // The exact panel's engine and record: exact_, or a compared `rerender` run's.
+  const Animator* exact_shown_ = nullptr;
+  const AnimationFrame* exact_record_ = nullptr;
+  int epoch_ = 0;  // counts the calls that may change the state (set_state, lessons, ...)
+  int memo_epoch_ = -1;
+  int memo_frame_ = -1;
+  std::vector<const Animator*> memo_;  // shown_animators() of memo_frame_ at memo_epoch_
+  std::vector<WebPanel> panels_;       // compared runs (or the source's), then the exact one
   std::string comparison_problem_;
-  int sampled_frame_ = -1;  // the frame whose pixels the runs hold, at sampled_size_
+  int sampled_frame_ = -1;  // the frame whose pixels the panels hold, at sampled_size_
   glm::ivec2 sampled_size_{0, 0};
 };
 

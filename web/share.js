@@ -1,0 +1,192 @@
+'use strict';
+// Links, checks and files of the page (manual/web.md): the state in the address's fragment
+// (a permalink), #embed (one view without controls, for an iframe on a slide), the claims of
+// a lesson's step measured by the teaching layer in the module, the view as PNG, the state
+// as the desktop's session file, and the source pickers (scenes with viewer scripts).
+//
+// A permalink is #s=<the state's fields that differ from the page's opening state, as JSON,
+// deflated (CompressionStream 'deflate-raw') and base64url-encoded>. Opening it reads those
+// fields over the default state through the session reader (Session.setState), so the state
+// restored is the one linked, frame included.
+
+const kLinkPrefix = 's=';
+
+// The fields of `state` that differ from `base`, objects compared field by field and
+// everything else (numbers, names, lists) as a whole.
+function stateDiff(state, base) {
+  const diff = {};
+  for (const [key, value] of Object.entries(state)) {
+    const b = base ? base[key] : undefined;
+    if (value && typeof value === 'object' && !Array.isArray(value) && b && typeof b === 'object') {
+      const inner = stateDiff(value, b);
+      if (Object.keys(inner).length) diff[key] = inner;
+    } else if (JSON.stringify(value) !== JSON.stringify(b)) {
+      diff[key] = value;
+    }
+  }
+  return diff;
+}
+
+async function streamBytes(bytes, transform) {
+  const stream = new Blob([bytes]).stream().pipeThrough(transform);
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+
+function toBase64Url(bytes) {
+  let text = '';
+  for (const b of bytes) text += String.fromCharCode(b);
+  return btoa(text).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+function fromBase64Url(text) {
+  const plain = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  return Uint8Array.from(plain, (c) => c.charCodeAt(0));
+}
+
+// The permalink's fragment of the state shown (without '#').
+async function linkFragment(state) {
+  const json = JSON.stringify(stateDiff(state || app.state, app.defaultState));
+  const packed = await streamBytes(new TextEncoder().encode(json), new CompressionStream('deflate-raw'));
+  return kLinkPrefix + toBase64Url(packed);
+}
+
+// The state object a fragment holds (the fields over the default state), or throws.
+async function linkState(fragment) {
+  const part = fragment.split('&').find((p) => p.startsWith(kLinkPrefix));
+  if (!part) return null;
+  const bytes = await streamBytes(fromBase64Url(part.slice(kLinkPrefix.length)), new DecompressionStream('deflate-raw'));
+  return JSON.parse(new TextDecoder().decode(bytes));
+}
+
+// Shows the state a permalink holds: "" or why not (the page then stays as it was).
+async function openLink(fragment) {
+  let diff;
+  try {
+    diff = await linkState(fragment);
+  } catch (error) {
+    return `the link: its state cannot be read (${error.message || error})`;
+  }
+  if (!diff) return '';
+  if (!applyState(diff, 'the link')) return $('message').textContent;
+  showLessonOfState();
+  return '';
+}
+
+// After a state was applied whole (a link, a session file): the lesson panel shows the
+// lesson and step the state names, without playing it again.
+function showLessonOfState() {
+  app.lesson = app.lessons.find((l) => l.name === app.state.lesson) || null;
+  $('lesson').value = app.lesson ? app.lesson.name : '';
+  $('lesson-panel').hidden = !app.lesson;
+  if (app.lesson) showLessonText(app.state.lesson_step);
+}
+
+async function copyLink() {
+  const url = `${location.href.split('#')[0]}#${await linkFragment()}`;
+  history.replaceState(null, '', url);
+  try {
+    await navigator.clipboard.writeText(url);
+    showMessage('');
+    $('copy-link').textContent = 'Link copied';
+  } catch (error) {
+    // file:// pages may not reach the clipboard: the address bar holds the link.
+    $('copy-link').textContent = 'Link in the address bar';
+  }
+  setTimeout(() => { $('copy-link').textContent = 'Copy link'; }, 2000);
+}
+
+function download(blob, name) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
+function fileStem() {
+  return app.state.lesson ? `oflab-${app.state.lesson}-${app.state.lesson_step}` : `oflab-${app.state.view}-${app.state.frame}`;
+}
+
+function savePng() {
+  draw();
+  $('canvas').toBlob((blob) => download(blob, `${fileStem()}.png`), 'image/png');
+}
+
+function saveSession() {
+  download(new Blob([app.session.sessionFileText()], { type: 'application/json' }), `${fileStem()}.json`);
+}
+
+// A session file the user opened, read by the desktop's reader: shown whole, or refused with
+// the message naming the file and the field (nothing changes).
+function openSessionText(text, name) {
+  const problem = app.session.openSession(text, name);
+  if (problem) {
+    showMessage(problem);
+    return false;
+  }
+  app.state = JSON.parse(app.session.stateJson());
+  syncControls();
+  showLessonOfState();
+  app.dirty = true;
+  showMessage('');
+  return true;
+}
+
+// The claims of the lesson's part shown, measured now: says / measured / holds.
+function checkClaims() {
+  const claims = JSON.parse(app.session.checkClaimsJson());
+  const rows = claims.map((c) => {
+    const bounds = [c.at_least !== null ? `\u2265 ${c.at_least}` : '', c.at_most !== null ? `\u2264 ${c.at_most}` : ''].filter(Boolean).join(', ');
+    if (c.source !== 'engine') {
+      return `<tr><td>${escapeHtml(c.says)}</td><td>${escapeHtml(c.kind)} ${bounds}</td><td colspan="2" class="unit">on the screen: oflab --check-lesson</td></tr>`;
+    }
+    const measured = c.measured === null ? 'n/a' : Number(c.measured.toPrecision(4)).toString();
+    return `<tr class="${c.holds ? 'holds' : 'false'}"><td>${escapeHtml(c.says)}</td><td>${escapeHtml(c.kind)} ${bounds}</td>` +
+      `<td>${measured}</td><td>${c.holds ? 'holds' : 'FALSE'}</td></tr>`;
+  });
+  $('lesson-checks').innerHTML = rows.length
+    ? `<tr><th>says</th><th>claim</th><th>measured</th><th>holds</th></tr>${rows.join('')}`
+    : '<tr><td>This part makes no claims.</td></tr>';
+  $('lesson-checks').hidden = false;
+  return claims;
+}
+
+// The source pickers: the plane (with the script picker) or a shipped scene, played by the
+// scene animator or by scene shifting, walked through by a shipped viewer script.
+function fillSourcePickers() {
+  const names = JSON.parse(Module.Session.sceneNamesJson());
+  const source = $('source');
+  source.add(new Option('the plane', 'plane:'));
+  for (const kind of ['scene', 'scene-shifting']) {
+    for (const name of names.scenes) source.add(new Option(`${kind === 'scene' ? 'Scene' : 'Scene shifting'}: ${name}`, `${kind}:${name}`));
+  }
+  for (const name of names.viewers) $('viewer').add(new Option(name, name));
+  source.addEventListener('change', () => editState((s) => {
+    const [kind, name] = source.value.split(':');
+    s.animation.source = { kind, name, viewer: kind === 'plane' ? '' : ($('viewer').value || names.viewers[0]) };
+    if (kind !== 'plane') s.view = 'animation';
+    s.frame = 0;
+  }, 'the source'));
+  $('viewer').addEventListener('change', () => editState((s) => {
+    s.animation.source.viewer = $('viewer').value;
+    s.frame = 0;
+  }, 'the viewer script'));
+}
+
+function syncSourcePickers(s) {
+  const src = s.animation.source;
+  const value = `${src.kind}:${src.kind === 'plane' ? '' : src.name}`;
+  if ([...$('source').options].some((o) => o.value === value)) $('source').value = value;
+  $('viewer').value = src.viewer || '';
+  $('viewer').disabled = src.kind === 'plane';
+}
+
+function bindShareControls() {
+  $('copy-link').addEventListener('click', () => copyLink());
+  $('save-png').addEventListener('click', savePng);
+  $('save-session').addEventListener('click', saveSession);
+  $('lesson-check').addEventListener('click', checkClaims);
+  fillSourcePickers();
+}

@@ -1,0 +1,100 @@
+#include "shown_runs.h"
+
+#include <algorithm>
+
+#include "engine/reuse_policy.h"
+#include "player/lab.h"
+#include "player/policy_comparison.h"
+#include "player/run_player.h"
+
+namespace oflab {
+namespace {
+
+using json = nlohmann::json;
+
+json point_json(const Vec2& p) { return json::array({p.x, p.y}); }
+
+ShownRun shown_compared(const ComparedRun& run) {
+  ShownRun shown{run.policy->name, run.animator(), &run.last, {}, 0.0};
+  const int now = run.animator()->frame();
+  shown.level_frames = run.level_totals(1, now);
+  for (const ComparedFrame& f : run.history) {
+    if (f.frame >= 1) shown.max_error_px = std::max(shown.max_error_px, f.max_measured_error_px);
+  }
+  return shown;
+}
+
+ShownRun shown_model(RunPlayer& player) {
+  ShownRun shown{player.source().kind, player.animator(), &player.current(), {}, 0.0};
+  const std::vector<AnimationFrame>& history = player.history();
+  for (std::size_t k = 1; k < history.size(); ++k) {
+    for (int l = 0; l < kLevelCount; ++l) shown.level_frames[l] += history[k].levels[l];
+    shown.max_error_px = std::max(shown.max_error_px, history[k].max_measured_error_px);
+  }
+  return shown;
+}
+
+// The level of a frame: the shown layer's for one plane, the drawn layers per level for a
+// scene.
+std::string level_text(const AnimationFrame& record) {
+  if (record.layer_reports.size() == 1) {
+    return record.layer_reports[0].visible ? level_name(record.layer_reports[0].level)
+                                           : "not visible";
+  }
+  std::string text;
+  for (int l = 0; l < kLevelCount; ++l) {
+    if (record.levels[l] == 0) continue;
+    text += (text.empty() ? "" : ", ") + std::to_string(record.levels[l]) + " " +
+            level_name(static_cast<Level>(l));
+  }
+  return text.empty() ? "nothing drawn" : text;
+}
+
+}  // namespace
+
+std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem) {
+  std::vector<ShownRun> shown;
+  if (!lab.run().animator()) {
+    *problem = lab.run().take_problem();
+    if (problem->empty()) *problem = "the source cannot be played";
+    return shown;
+  }
+  for (const ComparedRun& run : lab.comparison().runs()) {
+    if (!run.problem.empty()) {
+      *problem = run.problem;
+      return {};
+    }
+    shown.push_back(shown_compared(run));
+  }
+  // A kind without a reuse policy (scene shifting) shows its own run.
+  if (shown.empty()) shown.push_back(shown_model(lab.run()));
+  return shown;
+}
+
+nlohmann::json shown_run_json(const ShownRun& run, double psnr_db, int heat_max) {
+  json levels = json::object();
+  std::int64_t drawn = 0;
+  for (int l = 0; l < kLevelCount; ++l) drawn += run.level_frames[l];
+  for (int l = 0; l < kLevelCount; ++l) {
+    levels[level_name(static_cast<Level>(l))] =
+        drawn > 0 ? static_cast<double>(run.level_frames[l]) / double(drawn) : 0.0;
+  }
+  json outlines = json::array();
+  for (const LayerOutline& outline : run.animator->outlines()) {
+    json points = json::array();
+    for (const Vec2& p : outline.points) points.push_back(point_json(p));
+    outlines.push_back({{"level", level_name(outline.level)}, {"points", points}});
+  }
+  const ReusePolicy* policy = find_reuse_policy(run.policy);
+  return {{"policy", run.policy},
+          {"summary", policy ? policy->summary : std::string()},
+          {"level", level_text(*run.last)},
+          {"measured_error_px", run.last->max_measured_error_px},
+          {"max_error_px", run.max_error_px},
+          {"level_shares", levels},
+          {"psnr_db", psnr_db},
+          {"heat_max", heat_max},
+          {"outlines", outlines}};
+}
+
+}  // namespace oflab
