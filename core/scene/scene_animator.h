@@ -51,8 +51,9 @@
 //
 // Files. A polygon's layer and status are core/scene/polygon_layer.h, and what a scene costs
 // (memory, content detail) before anything is allocated core/scene/scene_resources.h; both
-// are included here. SceneEngine is implemented in two files: its frame loop in
-// scene_animator.cpp, its per-polygon steps (measure, allocate, update) in polygon_layer.cpp.
+// are included here. SceneEngine is implemented in three files: its frame loop in
+// scene_animator.cpp, its walk front to back (hidden tests and the waves of updates) in
+// update_waves.cpp, its per-polygon steps (measure, allocate, update) in polygon_layer.cpp.
 #pragma once
 
 #include <array>

@@ -1,0 +1,180 @@
+// The scene engine's walk front to back (core/scene/scene_animator.h, steps 3 and 4): the hidden
+// test of each polygon against what is already in front, the waves of layer updates that run at
+// once on the worker threads, and the record of each update, drawn fragment and occluder in
+// the walk's order. The rest of the frame loop is scene_animator.cpp.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "engine/wall_clock.h"
+#include "image/thread_pool.h"
+#include "scene/scene_animator.h"
+
+namespace oflab {
+namespace {
+
+using Clock = WallClock;
+
+}  // namespace
+
+void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame& report) {
+  const std::vector<BspFragment>& fragments = bsp_.fragments();
+  fragment_drawn_.assign(fragments.size(), 0);
+  fragment_regions_.resize(fragments.size());
+  occlusion_.clear(camera_.width, camera_.height);
+  wave_.clear();
+  // Front to back: decide visibility against what is already in front, queue the update,
+  // and once the wave has run let each drawn fragment hide what lies behind it.
+  for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
+    const int f = *it;
+    const int p = fragments[f].polygon;
+    if (statuses_[p] == PolygonStatus::kBackFacing ||
+        statuses_[p] == PolygonStatus::kOutsideFrustum) {
+      continue;
+    }
+    const bool update = !states_[p]->updated;
+    if (update) {
+      const auto tv = Clock::now();
+      const ConvexPolygon candidate =
+          settings_.skip_hidden ? hidden_candidate(f, current) : ConvexPolygon();
+      const bool blocked = !settings_.waves || wave_blocks(p, candidate);
+      report.visibility_ms += ms_since(tv);
+      if (blocked) run_wave(current, report);
+      if (settings_.skip_hidden) {
+        const auto th = Clock::now();
+        const bool hidden = occlusion_.covers(candidate, settings_.candidate_margin_px);
+        report.visibility_ms += ms_since(th);
+        if (hidden) continue;
+      }
+    }
+    wave_.push_back(wave_entry(f, update));
+  }
+  run_wave(current, report);
+}
+
+SceneEngine::WaveEntry SceneEngine::wave_entry(int fragment, bool update) {
+  const int p = bsp_.fragments()[fragment].polygon;
+  PolygonLayer& s = *states_[p];
+  WaveEntry e;
+  e.fragment = fragment;
+  e.update = update;
+  if (update) {
+    s.updated = true;
+    s.in_wave = true;
+  }
+  e.occludes = settings_.skip_hidden && s.opaque;
+  if (!e.occludes) return e;
+  if (!s.in_wave) {
+    // Updated in an earlier wave: its layer is known.
+    const PlacedLayer* shown = s.shown(statuses_[p]);
+    e.occludes = shown && !shown->layer.empty();
+    if (e.occludes) {
+      e.reach = translated(shown->layer.polygon, shown->offset_x, shown->offset_y).bounds();
+    }
+    return e;
+  }
+  // Its layer is still to come: its exact image grown by what the shown layer may stray
+  // from it (the errors its level leaves, this frame's and the last frame's, and rounding).
+  double stray = 8.0;
+  if (!s.needs_clipping && s.candidates.kind == LayerCandidates::Kind::kChoice) {
+    const int level = static_cast<int>(s.allocated);
+    if (level < kTermCount) stray += 2.0 * s.candidates.error[level];
+    if (s.live && std::isfinite(s.report.measured_error_px)) {
+      stray += 2.0 * s.report.measured_error_px;
+    }
+  }
+  const BoundingBox b = polygon_region(p).bounds();
+  e.reach = {b.x_min - stray, b.y_min - stray, b.x_max + stray, b.y_max + stray};
+  return e;
+}
+
+// True when the wave must run before polygon p is tested and queued: a layer of the wave
+// may reach its hidden test's candidate, or both are clipped texture renders sharing the
+// scratch texture they draw from.
+bool SceneEngine::wave_blocks(int polygon, const ConvexPolygon& candidate) const {
+  const auto uses_scratch = [&](int p) {
+    return states_[p]->needs_clipping && !content_is_lit(polygon_content(p));
+  };
+  const bool scratch = uses_scratch(polygon);
+  const int texture = scene_.polygons[polygon].texture;
+  BoundingBox need;
+  const bool tested = !candidate.empty();
+  if (tested) {
+    const BoundingBox b = candidate.bounds();
+    const double m = settings_.candidate_margin_px;
+    need = {b.x_min - m, b.y_min - m, b.x_max + m, b.y_max + m};
+  }
+  for (const WaveEntry& e : wave_) {
+    const int p = bsp_.fragments()[e.fragment].polygon;
+    if (e.update && scratch && uses_scratch(p) && scene_.polygons[p].texture == texture) {
+      return true;
+    }
+    if (tested && e.occludes && e.reach.x_min < need.x_max && need.x_min < e.reach.x_max &&
+        e.reach.y_min < need.y_max && need.y_min < e.reach.y_max) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void SceneEngine::run_wave(const ViewerPose& current, AnimationFrame& report) {
+  std::vector<int> polygons;
+  for (const WaveEntry& e : wave_) {
+    if (e.update) polygons.push_back(bsp_.fragments()[e.fragment].polygon);
+  }
+  std::vector<PolygonUpdate> updates(polygons.size());
+  const int count = static_cast<int>(polygons.size());
+  if (count > 0) ++report.update_waves;
+  if (count == 1) {
+    update_polygon(polygons[0], current, updates[0]);  // its own loops use the threads
+  } else if (count > 1) {
+    // The dearest first, so that the threads finish together (each update writes only its
+    // own polygon's state and record, so the order changes no byte).
+    std::vector<int> order(polygons.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::vector<double> cost(polygons.size());
+    for (std::size_t k = 0; k < polygons.size(); ++k) cost[k] = update_cost(polygons[k]);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+    for_each_band(count, 1, [&](int, int begin, int end) {
+      for (int k = begin; k < end; ++k)
+        update_polygon(polygons[order[k]], current, updates[order[k]]);
+    });
+  }
+  std::size_t next = 0;
+  for (const WaveEntry& e : wave_) {
+    if (e.update) {
+      states_[polygons[next]]->in_wave = false;
+      record_update(updates[next++], report);
+    }
+    draw_fragment(e.fragment, current, report);
+  }
+  wave_.clear();
+}
+
+double SceneEngine::update_cost(int polygon) {
+  const PolygonLayer& s = *states_[polygon];
+  const bool lit = content_is_lit(polygon_content(polygon));
+  if (s.needs_clipping)
+    return static_cast<double>(box_pixels(polygon_region(polygon))) * (lit ? 8 : 1);
+  const Level level =
+      s.candidates.kind == LayerCandidates::Kind::kChoice ? s.allocated : Level::kRerender;
+  const double pixels = static_cast<double>(s.candidates.pixels[static_cast<int>(level)]);
+  return level == Level::kRerender && lit ? 8.0 * pixels : pixels;
+}
+
+void SceneEngine::draw_fragment(int fragment, const ViewerPose& current, AnimationFrame& report) {
+  const int p = bsp_.fragments()[fragment].polygon;
+  PolygonLayer& s = *states_[p];
+  const PlacedLayer* shown = s.shown(statuses_[p]);
+  if (!shown || shown->layer.empty()) return;
+  fragment_drawn_[fragment] = 1;
+  if (!s.whole) fragment_regions_[fragment] = fragment_region(fragment, current);
+  if (settings_.skip_hidden && s.opaque) {
+    const auto tv = Clock::now();
+    add_occluder(fragment, *shown);
+    report.visibility_ms += ms_since(tv);
+  }
+}
+
+}  // namespace oflab
