@@ -96,7 +96,10 @@ void refuse_options_without_their_policy(const CliArgs& a,
       {"--stabilization-plane",
        [](const ReusePolicy& p) { return p.frame_plane == FramePlane::kStabilization; }},
       {"--hole-fill",
-       [](const ReusePolicy& p) { return p.frame_warp == FrameWarp::kPerPixelDepth; }},
+       [](const ReusePolicy& p) {
+         return p.frame_warp == FrameWarp::kPerPixelDepth &&
+                p.pixel_motion == PixelMotion::kViewerStep;
+       }},
   };
   for (const Rule& rule : rules) {
     if (!a.has(rule.option)) continue;
@@ -149,9 +152,9 @@ CompareInputs read_compare_inputs(const CliArgs& a) {
     throw UsageError(std::string("--policies: ") + e.what());
   }
   for (const ReusePolicy* p : policies) {
-    if (p->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
-      throw UsageError(std::string("--policies: ") + p->name +
-                       " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+    if (std::string why; needs_scene(*p, &why) && !a.has("--scene")) {
+      throw UsageError(std::string("--policies: ") + p->name + " needs --scene NAME|FILE (" + why +
+                       ")");
     }
   }
   refuse_options_without_their_policy(a, policies);
