@@ -279,6 +279,7 @@ double SceneEngine::generate_frame(const ViewerPose& current, AnimationFrame& re
   report.pixels_written = g.pixels_written + g.inpainted_pixels;
   report.model_work = static_cast<double>(g.source_pixels) * kPerspectiveWarpCost;
   report.hole_pixels = g.hole_pixels;
+  report.inpainted_pixels = g.inpainted_pixels;
   report.max_measured_error_px = g.max_error_px;
   return diagnostics_ms;
 }
