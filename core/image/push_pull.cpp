@@ -13,8 +13,8 @@ namespace {
 struct Level {
   int width = 0;
   int height = 0;
-  std::vector<std::array<double, 4>> colour;
-  std::vector<double> weight;
+  std::vector<std::array<float, 4>> colour;
+  std::vector<float> weight;
 };
 
 // Level l + 1 from level l: weighted means of 2 x 2 blocks, weight min(1, sum).
@@ -23,23 +23,23 @@ Level pull(const Level& fine) {
   coarse.width = (fine.width + 1) / 2;
   coarse.height = (fine.height + 1) / 2;
   const std::size_t n = static_cast<std::size_t>(coarse.width) * coarse.height;
-  coarse.colour.assign(n, {0.0, 0.0, 0.0, 0.0});
-  coarse.weight.assign(n, 0.0);
+  coarse.colour.assign(n, {0.0f, 0.0f, 0.0f, 0.0f});
+  coarse.weight.assign(n, 0.0f);
   for (int y = 0; y < fine.height; ++y) {
     for (int x = 0; x < fine.width; ++x) {
       const std::size_t f = static_cast<std::size_t>(y) * fine.width + x;
       const std::size_t c = static_cast<std::size_t>(y / 2) * coarse.width + x / 2;
-      const double w = fine.weight[f];
+      const float w = fine.weight[f];
       for (int k = 0; k < 4; ++k) coarse.colour[c][k] += w * fine.colour[f][k];
       coarse.weight[c] += w;
     }
   }
   for (std::size_t c = 0; c < n; ++c) {
-    const double w = coarse.weight[c];
-    if (w > 0.0) {
-      for (double& channel : coarse.colour[c]) channel /= w;
+    const float w = coarse.weight[c];
+    if (w > 0.0f) {
+      for (float& channel : coarse.colour[c]) channel /= w;
     }
-    coarse.weight[c] = std::min(1.0, w);
+    coarse.weight[c] = std::min(1.0f, w);
   }
   return coarse;
 }
@@ -50,16 +50,16 @@ void push(Level& fine, const Level& coarse) {
     for (int x = 0; x < fine.width; ++x) {
       const std::size_t f = static_cast<std::size_t>(y) * fine.width + x;
       const std::size_t c = static_cast<std::size_t>(y / 2) * coarse.width + x / 2;
-      const double w = fine.weight[f];
-      if (w >= 1.0) continue;
+      const float w = fine.weight[f];
+      if (w >= 1.0f) continue;
       for (int k = 0; k < 4; ++k) {
-        fine.colour[f][k] = w * fine.colour[f][k] + (1.0 - w) * coarse.colour[c][k];
+        fine.colour[f][k] = w * fine.colour[f][k] + (1.0f - w) * coarse.colour[c][k];
       }
     }
   }
 }
 
-std::uint8_t channel(double v) {
+std::uint8_t channel(float v) {
   return static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L));
 }
 
@@ -89,7 +89,7 @@ std::int64_t push_pull_inpaint(Image& image, const std::vector<char>& hole) {
   std::int64_t filled = 0;
   for (std::size_t k = 0; k < hole.size(); ++k) {
     if (!hole[k]) continue;
-    const std::array<double, 4>& c = levels[0].colour[k];
+    const std::array<float, 4>& c = levels[0].colour[k];
     Pixel p{channel(c[0]), channel(c[1]), channel(c[2]), channel(c[3])};
     p.r = std::min(p.r, p.a), p.g = std::min(p.g, p.a), p.b = std::min(p.b, p.a);
     image.pixels()[k] = p;

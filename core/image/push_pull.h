@@ -8,7 +8,7 @@
 // level l takes w c + (1 - w) c_parent, c_parent its parent's pushed colour (pixel (x/2, y/2)
 // of level l + 1). So a valid pixel keeps its colour, and a hole takes the mean of the valid
 // pixels of the smallest block of the pyramid around it that has any. Colours are the
-// premultiplied channels, averaged as real numbers and rounded once at the end.
+// premultiplied channels, averaged as single-precision reals and rounded once at the end.
 #pragma once
 
 #include <cstdint>

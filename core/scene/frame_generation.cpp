@@ -52,11 +52,13 @@ bool move_corner(const Camera& camera, const RigidStep3& back, const DepthFrame&
   return extrapolate_point(camera, back, m, i - 0.5, j - 0.5, k, near, q, w);
 }
 
-std::vector<Splat> plan_splats(const DepthFrame& depth, const Camera& camera,
-                               const RigidStep3& back, int k, double near) {
+// The moved top-left corner of every source pixel, on its own surface.
+void move_lattice(const DepthFrame& depth, const Camera& camera, const RigidStep3& back, int k,
+                  double near, Lattice& lattice) {
   const int width = depth.width, height = depth.height;
   const std::size_t n = static_cast<std::size_t>(width) * height;
-  Lattice lattice{std::vector<Vec2>(n), std::vector<char>(n, 0)};
+  lattice.moved.resize(n);
+  lattice.ok.resize(n);
   double unused = 0.0;
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
@@ -66,22 +68,21 @@ std::vector<Splat> plan_splats(const DepthFrame& depth, const Camera& camera,
                                         j - 0.5, k, near, lattice.moved[s], unused);
     }
   }
-  std::vector<Splat> splats(n);
-  const int di[4] = {0, 2, 2, 0}, dj[4] = {0, 0, 2, 2};
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const std::size_t s = static_cast<std::size_t>(j) * width + i;
-      const int p = depth.polygon[s];
-      Splat& splat = splats[s];
-      splat.ok = extrapolate_point(camera, back, p >= 0 ? depth.planes[p] : Vec3(0.0), i + 0.5,
-                                   j + 0.5, k, near, splat.centre, splat.w);
-      for (int c = 0; c < 4 && splat.ok; ++c) {
-        splat.ok = move_corner(camera, back, depth, lattice, i + di[c], j + dj[c], p, k, near,
-                               splat.corners[c]);
-      }
-    }
+}
+
+// Source pixel (i, j)'s splat: its moved centre, corners and extrapolated inverse depth.
+Splat plan_splat(const DepthFrame& depth, const Camera& camera, const RigidStep3& back,
+                 const Lattice& lattice, int i, int j, int k, double near) {
+  static constexpr int di[4] = {0, 2, 2, 0}, dj[4] = {0, 0, 2, 2};
+  const int p = depth.polygon[static_cast<std::size_t>(j) * depth.width + i];
+  Splat splat;
+  splat.ok = extrapolate_point(camera, back, p >= 0 ? depth.planes[p] : Vec3(0.0), i + 0.5, j + 0.5,
+                               k, near, splat.centre, splat.w);
+  for (int c = 0; c < 4 && splat.ok; ++c) {
+    splat.ok = move_corner(camera, back, depth, lattice, i + di[c], j + dj[c], p, k, near,
+                           splat.corners[c]);
   }
-  return splats;
+  return splat;
 }
 
 // What the painting keeps per target pixel.
@@ -210,13 +211,24 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   g.image = Image(width, height);
   g.source.assign(n, -1);
   g.source_pixels = static_cast<std::int64_t>(n);
-  const std::vector<Splat> splats =
-      plan_splats(depth, camera, back, std::max(1, frames_ahead), near);
-  Targets t{std::vector<double>(n, -1.0), std::vector<double>(n, 0.0), std::vector<int>(n, -1)};
-  for (std::size_t s = 0; s < n; ++s) {
-    if (!splats[s].ok) continue;
-    g.pixels_written +=
-        paint(splats[s], s, depth.polygon[s], rendered.pixels()[s], width, height, t, g);
+  const int k = std::max(1, frames_ahead);
+  // Working memory kept by each thread: a frame's buffers are tens of megabytes, and fresh
+  // ones cost a page fault per page every frame.
+  thread_local Lattice lattice;
+  thread_local Targets t;
+  move_lattice(depth, camera, back, k, near, lattice);
+  t.w.assign(n, -1.0);
+  t.dist.assign(n, 0.0);
+  t.polygon.assign(n, -1);
+  // Each splat planned and painted in source order.
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      const Splat splat = plan_splat(depth, camera, back, lattice, i, j, k, near);
+      if (!splat.ok) continue;
+      const std::size_t s = static_cast<std::size_t>(j) * width + i;
+      g.pixels_written +=
+          paint(splat, s, depth.polygon[s], rendered.pixels()[s], width, height, t, g);
+    }
   }
   g.unreached.assign(n, 0);
   for (std::size_t d = 0; d < n; ++d) {
