@@ -35,7 +35,7 @@ std::vector<const ReusePolicy*> reprojection_policies() {
   std::vector<const ReusePolicy*> out;
   for (const char* name :
        {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "mv-extrapolation",
-        "mv-extrapolation-no-inpaint", "perspective", "talisman", "hierarchical-cache"}) {
+        "mv-no-inpaint", "perspective", "talisman", "hierarchical-cache"}) {
     out.push_back(&reuse_policy(name));
   }
   return out;

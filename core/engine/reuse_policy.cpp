@@ -190,7 +190,7 @@ const std::vector<ReusePolicy>& reuse_policies() {
           "frame generation: the render splatted along its motion vectors, holes inpainted", true,
           "acceleration and turns (the vectors are of the last step), and disocclusions: "
           "inpainting guesses what was hidden"),
-      mv_extrapolation("mv-extrapolation-no-inpaint",
+      mv_extrapolation("mv-no-inpaint",
                        "frame generation along motion vectors, disocclusions left empty", false,
                        "as mv-extrapolation, with its disocclusions left as holes"),
   };

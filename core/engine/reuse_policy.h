@@ -28,10 +28,10 @@
 //                       pixel's depth (core/scene/depth_reprojection.h), holes marked;
 //   cadence             each layer by its own plane's exact homography: the fair comparison.
 // Frame generation by extrapolation (the family of DLSS 3 / FSR 3 frame generation), scenes only:
-//   mv-extrapolation             the last render splatted forward along its per-pixel motion
-//                                vectors, without the new pose, disocclusions masked and filled
-//                                by pyramid (push-pull) inpainting (core/scene/frame_generation.h);
-//   mv-extrapolation-no-inpaint  the same with the disocclusions left empty.
+//   mv-extrapolation    the last render splatted forward along its per-pixel motion vectors,
+//                       without the new pose, disocclusions masked and filled by pyramid
+//                       (push-pull) inpainting (core/scene/frame_generation.h);
+//   mv-no-inpaint       the same with the disocclusions left empty.
 // The dissertation's other named rival (section 2.4.7):
 //   hierarchical-cache  Shade et al. 96: BSP nodes cached as images on quads facing the viewer,
 //                       warped by the quad's homography, re-rendered by an angular error at

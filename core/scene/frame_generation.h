@@ -1,5 +1,5 @@
 // Frame generation by extrapolation along per-pixel motion vectors: the `mv-extrapolation`
-// and `mv-extrapolation-no-inpaint` policies of core/engine/reuse_policy.h
+// and `mv-no-inpaint` policies of core/engine/reuse_policy.h
 // (manual/policies.md "Frame generation by extrapolation").
 //
 // What it models. Engines render, beside each frame, its depth and its per-pixel motion

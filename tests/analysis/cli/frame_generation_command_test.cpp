@@ -31,7 +31,7 @@ std::vector<PolicyRun> play_generation(const std::string& scene, const std::stri
   options.timing_repetitions = 1;
   options.baseline = false;
   return run_policies(source_kind("scene"), source,
-                      parse_policy_list("mv-extrapolation,mv-extrapolation-no-inpaint"), options);
+                      parse_policy_list("mv-extrapolation,mv-no-inpaint"), options);
 }
 
 TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
@@ -62,8 +62,8 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
 TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) {
   const CliResult r = testing::run_cli_captured(
       {"compare", "--scene", "four-cubes", "--script", "translate", "--policies",
-       "perspective,depth-reprojection,mv-extrapolation,mv-extrapolation-no-inpaint", "--frames",
-       "5", "--json", "--repeat-timing", "1"});
+       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint", "--frames", "5", "--json",
+       "--repeat-timing", "1"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = nlohmann::json::parse(r.out).at("policies");
   ASSERT_EQ(rows.size(), 4u);

@@ -48,7 +48,7 @@ TEST(PoliciesCommand, JsonListsEveryPolicyWithWhatItModelsInRegistryOrder) {
   std::set<std::string> names;
   for (const auto& e : list) names.insert(e["name"].get<std::string>());
   for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "mv-extrapolation", "mv-extrapolation-no-inpaint"}) {
+                           "mv-extrapolation", "mv-no-inpaint"}) {
     EXPECT_EQ(names.count(name), 1u) << name;
   }
 }

@@ -127,7 +127,7 @@ TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
 TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   // Frame k after a render at frame 0 is rendered exactly when k is a multiple of N.
   for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "mv-extrapolation", "mv-extrapolation-no-inpaint"}) {
+                           "mv-extrapolation", "mv-no-inpaint"}) {
     const ReusePolicy& p = reuse_policy(name);
     EXPECT_EQ(p.schedule, Schedule::kCadence) << name;
     EXPECT_EQ(p.latency_frames, 0) << name;
@@ -153,7 +153,7 @@ TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   EXPECT_EQ(reuse_policy("depth-reprojection").frame_warp, FrameWarp::kPerPixelDepth);
   EXPECT_EQ(reuse_policy("cadence").model, ModelUpdate::kExact);
   // Frame generation: per-pixel, along motion vectors, with and without inpainting, scenes only.
-  for (const char* name : {"mv-extrapolation", "mv-extrapolation-no-inpaint"}) {
+  for (const char* name : {"mv-extrapolation", "mv-no-inpaint"}) {
     const ReusePolicy& p = reuse_policy(name);
     EXPECT_EQ(p.frame_warp, FrameWarp::kPerPixelDepth) << name;
     EXPECT_EQ(p.pixel_motion, PixelMotion::kMotionVectors) << name;
@@ -162,7 +162,7 @@ TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
     EXPECT_NE(why, "") << name;
   }
   EXPECT_TRUE(reuse_policy("mv-extrapolation").inpaint);
-  EXPECT_FALSE(reuse_policy("mv-extrapolation-no-inpaint").inpaint);
+  EXPECT_FALSE(reuse_policy("mv-no-inpaint").inpaint);
   EXPECT_EQ(reuse_policy("depth-reprojection").pixel_motion, PixelMotion::kViewerStep);
   EXPECT_FALSE(needs_scene(reuse_policy("depth-reprojection")));
   EXPECT_TRUE(needs_scene(reuse_policy("hierarchical-cache")));

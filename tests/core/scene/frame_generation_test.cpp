@@ -261,7 +261,7 @@ TEST(FrameGeneration, MeasuredErrorNeverUnderReportsTheErrorReadFromTheImage) {
     scene.texture_names.push_back("coded");
   }
   SceneSettings settings;
-  settings.engine.policy = &reuse_policy("mv-extrapolation-no-inpaint");
+  settings.engine.policy = &reuse_policy("mv-no-inpaint");
   settings.engine.cadence = 3;
   const std::vector<std::vector<ViewerFrame>> scripts = {
       sliding(10, Vec3(0.05, 0, 0), Vec3(0.0)),                         // translate
