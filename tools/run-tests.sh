@@ -75,7 +75,11 @@ cmake --build build-sanitize -j"$jobs"
 #   lessons and steps;
 # - the two whole four-cubes runs of the reprojection command tests (Reprojection.
 #   DepthReprojectionHasHoles..., Reprojection.SummariesAndThePerFrameCsv..., 28 s here):
-#   core's depth-reprojection tests run the splat, holes and fills there.
+#   core's depth-reprojection tests run the splat, holes and fills there;
+# - frame generation on every shipped scene and viewer script
+#   (FrameGenerationCommand.RunsOnEveryShippedSceneAndViewerScript, 4 s of CPU here): 24 runs
+#   of whole 640 x 480 frames; the core tests of frame generation and
+#   FrameGenerationCommand.CompareRows... run its code under the sanitizers.
 # The analysis tests draw charts and render with VTK, so they run under the virtual screen.
 # They run as many at a time as the machine has cores: under the sanitizers they take about
 # twice as long as their build, and none shares a scratch folder with another.
@@ -83,7 +87,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" \
   ctest --test-dir build-sanitize --output-on-failure --timeout 1200 -j"$jobs" \
   -LE 'soak|address-space-limit' \
-  -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart|Experiment[12]Published\.|StudySimulation\.|Lab.EveryEngineClaimOfEveryLesson|Reprojection.DepthReprojectionHasHoles|Reprojection.SummariesAndThePerFrameCsv'
+  -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart|Experiment[12]Published\.|StudySimulation\.|Lab.EveryEngineClaimOfEveryLesson|Reprojection.DepthReprojectionHasHoles|Reprojection.SummariesAndThePerFrameCsv|FrameGenerationCommand.RunsOnEveryShippedSceneAndViewerScript'
 stage_done "sanitizers"
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \

@@ -105,9 +105,8 @@ const SourceKind& animate_kind(const CliArgs& a) {
   }
   if (a.has("--epsilon")) throw UsageError("--epsilon: needs --mode scene-shifting");
   const ReusePolicy* policy = find_reuse_policy(mode);
-  if (policy && policy->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
-    throw UsageError("--mode " + mode +
-                     ": needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+  if (std::string why; policy && needs_scene(*policy, &why) && !a.has("--scene")) {
+    throw UsageError("--mode " + mode + ": needs --scene NAME|FILE (" + why + ")");
   }
   return source_kind(a.has("--scene") ? "scene" : "plane");
 }

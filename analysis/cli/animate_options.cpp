@@ -180,10 +180,13 @@ EngineSettings read_engine_settings(const CliArgs& a) {
   if (a.has("--cadence")) {
     s.cadence = a.integer_in("--cadence", limits::kCadence);
     if (s.policy->schedule != Schedule::kCadence && !a.has("--policies")) {
-      throw UsageError(
-          "--cadence: needs a policy on a fixed cadence (timewarp, "
-          "stabilized-plane, depth-reprojection, cadence), not '" +
-          mode + "'");
+      std::string on_cadence;
+      for (const ReusePolicy& p : reuse_policies()) {
+        if (p.schedule == Schedule::kCadence)
+          on_cadence += (on_cadence.empty() ? "" : ", ") + std::string(p.name);
+      }
+      throw UsageError("--cadence: needs a policy on a fixed cadence (" + on_cadence + "), not '" +
+                       mode + "'");
     }
   }
   if (a.has("--stabilization-plane")) {

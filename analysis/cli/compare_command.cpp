@@ -52,7 +52,8 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
   for (int l = 0; l < kLevelCount; ++l) summary << ",pct_" << level_name(static_cast<Level>(l));
   summary << ",work_saved,time_saved,model_work_saved,max_measured_error_px,"
              "mean_measured_error_px,mean_psnr_db,layer_frames,frames,frames_over_budget,"
-             "starved_layer_frames,mean_optimality_gap,hole_pixels,latency_frames\n";
+             "starved_layer_frames,mean_optimality_gap,hole_pixels,latency_frames,mean_ssim,"
+             "inpainted_pixels\n";
   for (const PolicyRow& row : rows) {
     summary << row.name;
     for (double share : row.level_share) summary << ',' << 100.0 * share;
@@ -67,7 +68,9 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
     } else {
       summary << ",,,";
     }
-    summary << ',' << row.hole_pixels << ',' << row.latency_frames << "\n";
+    summary << ',' << row.hole_pixels << ',' << row.latency_frames << ',';
+    if (std::isfinite(row.mean_ssim)) summary << row.mean_ssim;
+    summary << ',' << row.inpainted_pixels << "\n";
   }
   write_output(out, dir, "summary.csv", summary.str());
   out.commit();
@@ -96,7 +99,10 @@ void refuse_options_without_their_policy(const CliArgs& a,
       {"--stabilization-plane",
        [](const ReusePolicy& p) { return p.frame_plane == FramePlane::kStabilization; }},
       {"--hole-fill",
-       [](const ReusePolicy& p) { return p.frame_warp == FrameWarp::kPerPixelDepth; }},
+       [](const ReusePolicy& p) {
+         return p.frame_warp == FrameWarp::kPerPixelDepth &&
+                p.pixel_motion == PixelMotion::kViewerStep;
+       }},
   };
   for (const Rule& rule : rules) {
     if (!a.has(rule.option)) continue;
@@ -118,6 +124,7 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const RunSource& source = inputs.source;
   const std::vector<const ReusePolicy*>& policies = inputs.policies;
   PlayOptions options;
+  options.measure_ssim = true;  // every row's mean_ssim
   const RunOutput output = read_run_output(a, err);
   output.apply_timing_to(options);
   const std::vector<PolicyRun> runs = run_policies(*kind, source, policies, options);
@@ -149,9 +156,9 @@ CompareInputs read_compare_inputs(const CliArgs& a) {
     throw UsageError(std::string("--policies: ") + e.what());
   }
   for (const ReusePolicy* p : policies) {
-    if (p->frame_warp == FrameWarp::kNodeImages && !a.has("--scene")) {
-      throw UsageError(std::string("--policies: ") + p->name +
-                       " needs --scene NAME|FILE (a single plane has no BSP tree to group)");
+    if (std::string why; needs_scene(*p, &why) && !a.has("--scene")) {
+      throw UsageError(std::string("--policies: ") + p->name + " needs --scene NAME|FILE (" + why +
+                       ")");
     }
   }
   refuse_options_without_their_policy(a, policies);

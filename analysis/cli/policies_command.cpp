@@ -2,7 +2,8 @@
 // of `oflab-cli animate --mode`, one per line as "name  summary" followed by indented lines
 // saying which system each models and where it breaks, or as JSON:
 //   {"policies": [{"name", "summary", "models", "breaks", "schedule" ("threshold" or
-//   "cadence"), "warp" ("per-layer", "per-pixel-depth" or "node-images"), "latency_frames"},
+//   "cadence"), "warp" ("per-layer", "per-pixel-depth" or "node-images"), "latency_frames",
+//   "scenes_only" (true for a policy a single plane cannot play: needs_scene)},
 //   ...],
 //   "interpolation_latency_frames": 1} in registry order; the last is what frame
 //   generation's interpolation between two renders would score, for comparison.
@@ -52,6 +53,7 @@ nlohmann::ordered_json policies_json() {
     entry["schedule"] = p.schedule == Schedule::kCadence ? "cadence" : "threshold";
     entry["warp"] = frame_warp_name(p.frame_warp);
     entry["latency_frames"] = p.latency_frames;
+    entry["scenes_only"] = needs_scene(p);
     list.push_back(entry);
   }
   nlohmann::ordered_json report;

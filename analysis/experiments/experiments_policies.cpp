@@ -16,12 +16,12 @@ namespace oflab {
 namespace {
 
 // Every policy that plays a single plane as well as a scene: the node-image cache
-// (hierarchical-cache) groups a scene's BSP tree, so it is compared in the reprojection
-// section (experiments_reprojection.h) on scenes only.
+// (hierarchical-cache) and motion-vector extrapolation (needs_scene) are compared in the
+// reprojection section (experiments_reprojection.h) on scenes only.
 std::vector<const ReusePolicy*> every_policy() {
   std::vector<const ReusePolicy*> all;
   for (const ReusePolicy& p : reuse_policies()) {
-    if (p.frame_warp != FrameWarp::kNodeImages) all.push_back(&p);
+    if (!needs_scene(p)) all.push_back(&p);
   }
   return all;
 }

@@ -24,14 +24,18 @@ std::string fixed(double v, int digits) {
 
 ReprojectionSpec reprojection_spec(bool quick) {
   ReprojectionSpec spec;
-  if (quick) spec.max_frames = 12;
+  if (quick) {
+    spec.max_frames = 12;
+    spec.ssim = false;
+  }
   return spec;
 }
 
 std::vector<const ReusePolicy*> reprojection_policies() {
   std::vector<const ReusePolicy*> out;
-  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "perspective", "talisman", "hierarchical-cache"}) {
+  for (const char* name :
+       {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "mv-extrapolation",
+        "mv-no-inpaint", "perspective", "talisman", "hierarchical-cache"}) {
     out.push_back(&reuse_policy(name));
   }
   return out;
@@ -53,6 +57,7 @@ ReprojectionResult run_reprojection_experiment(
   options.max_frames = spec.max_frames;
   options.warm_up = false;
   options.timing_repetitions = 1;
+  options.measure_ssim = spec.ssim;
   for (const auto& [scene, script] : sources) {
     if (progress) progress(scene + ", " + script);
     RunSource source;
@@ -72,8 +77,9 @@ ReportTable results_table(const ReprojectionResult& r) {
   ReportTable t;
   t.caption = "Every policy on the same frames (cadence " + std::to_string(r.spec.cadence) +
               "; perspective is optic flow's threshold rule, for reference)";
-  t.header = {"scene, script", "policy",          "re-render %",      "max error px",
-              "mean error px", "hole px (total)", "model work saved", "latency frames"};
+  t.header = {"scene, script", "policy",           "re-render %",   "max error px",
+              "mean error px", "hole px (total)",  "inpainted px",  "mean PSNR dB",
+              "mean SSIM",     "model work saved", "latency frames"};
   for (const ReprojectionSource& s : r.sources) {
     for (const PolicyRun& run : s.runs) {
       const PolicyRow row = policy_row(run);
@@ -86,7 +92,9 @@ ReportTable results_table(const ReprojectionResult& r) {
                         run.policy->frame_warp == FrameWarp::kPerPixelDepth
                             ? std::string("per pixel")
                             : fixed(row.mean_measured_error_px, 3),
-                        std::to_string(row.hole_pixels),
+                        std::to_string(row.hole_pixels), std::to_string(row.inpainted_pixels),
+                        fixed(row.mean_psnr_db, 1),
+                        std::isfinite(row.mean_ssim) ? fixed(row.mean_ssim, 4) : std::string("-"),
                         fixed(100.0 * row.model_work_saved, 1) + "%",
                         std::to_string(row.latency_frames)});
     }
@@ -177,8 +185,10 @@ ReportSection reprojection_section(const ReprojectionResult& result, ExperimentC
   s.paragraph(
       "Timewarp (rotation-only homography), one stabilization plane for the frame (automatic: "
       "the least-squares fit of inverse depth to the visible pixels at each render), per-pixel "
-      "depth reprojection (forward splatting, holes counted, fill none) and each layer's own "
-      "plane (cadence), all rendering every " +
+      "depth reprojection (forward splatting, holes counted, fill none), frame generation by "
+      "extrapolation along the render's motion vectors without the new pose (mv-extrapolation, "
+      "its disocclusions filled by push-pull inpainting, and without inpainting) and each "
+      "layer's own plane (cadence), all rendering every " +
       std::to_string(result.spec.cadence) +
       "nd frame and warping between, beside optic "
       "flow's threshold rule; the first " +
@@ -186,7 +196,9 @@ ReportSection reprojection_section(const ReprojectionResult& result, ExperimentC
       " frames of each Experiment 2 scene under translate, zoom and rotate, of the street "
       "under walk and of the city block under city-flyby. Error: the largest corner displacement "
       "of a layer (per-layer warps) or the "
-      "largest per-pixel displacement (depth reprojection). Work: the cost model's, in pixels "
+      "largest per-pixel displacement (depth reprojection, frame generation). PSNR and SSIM "
+      "against the exact frame (SSIM after Wang et al. 2004, on luma, 11 x 11 Gaussian window; "
+      "'-' when not measured, as in a quick run). Work: the cost model's, in pixels "
       "of a perspective warp (a per-pixel warp costs one per pixel of the frame). Latency: "
       "frames of delay; every policy here extrapolates from the last render.");
   s.table(results_table(result));

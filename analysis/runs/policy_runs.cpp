@@ -67,6 +67,8 @@ PolicyRow policy_row(const PolicyRun& r) {
   row.time_saved = s.time_saved;
   row.model_work_saved = s.model_work_saved;
   row.mean_psnr_db = s.mean_psnr_db;
+  row.mean_ssim = s.mean_ssim;
+  row.inpainted_pixels = s.inpainted_pixels;
   row.budgeted = r.policy->shares_budget;
   row.frames_over_budget = s.frames_over_budget;
   row.starved_layer_frames = s.starved_layer_frames;
@@ -78,6 +80,13 @@ PolicyRow policy_row(const PolicyRun& r) {
   double sum = 0.0;
   long count = 0;
   for (const AnimationFrame& f : r.run.frames) {
+    // A frame warped as a whole (depth reprojection, frame generation) has no layer reports:
+    // its largest per-pixel error is its one sample.
+    if (f.layer_reports.empty() && f.drawn() > 0) {
+      row.max_measured_error_px = std::max(row.max_measured_error_px, f.max_measured_error_px);
+      sum += f.max_measured_error_px;
+      ++count;
+    }
     for (const FrameReport& report : f.layer_reports) {
       if (!report.visible || !std::isfinite(report.measured_error_px)) continue;
       row.max_measured_error_px = std::max(row.max_measured_error_px, report.measured_error_px);
@@ -103,9 +112,11 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
                       {"max_measured_error_px", row.max_measured_error_px},
                       {"mean_measured_error_px", row.mean_measured_error_px},
                       {"mean_psnr_db", finite_or_null(row.mean_psnr_db)},
+                      {"mean_ssim", finite_or_null(row.mean_ssim)},
                       {"layer_frames", row.layer_frames},
                       {"frames", row.frames},
                       {"hole_pixels", row.hole_pixels},
+                      {"inpainted_pixels", row.inpainted_pixels},
                       {"latency_frames", row.latency_frames}};
   if (row.cache.active) j["cache"] = node_cache_json(row.cache);
   if (row.budgeted) {
@@ -124,11 +135,13 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << level_title(static_cast<Level>(l));
   out << std::setw(8) << "work" << std::setw(8) << "time" << std::setw(8) << "model"
       << std::setw(10) << "max err" << std::setw(10) << "mean err" << std::setw(8) << "PSNR"
+      << std::setw(8) << "SSIM"
       << "\n";
   out << std::left << std::setw(name_width) << "" << std::right;
   for (int l = 0; l < kLevelCount; ++l) out << std::setw(12) << "% layer-fr.";
   out << std::setw(8) << "saved %" << std::setw(8) << "saved %" << std::setw(8) << "saved %"
-      << std::setw(10) << "px" << std::setw(10) << "px" << std::setw(8) << "dB"
+      << std::setw(10) << "px" << std::setw(10) << "px" << std::setw(8) << "dB" << std::setw(8)
+      << ""
       << "\n";
   out << std::fixed;
   for (const PolicyRow& r : rows) {
@@ -137,7 +150,8 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
     out << std::setw(8) << 100.0 * r.work_saved << std::setw(8) << 100.0 * r.time_saved
         << std::setw(8) << 100.0 * r.model_work_saved << std::setprecision(3) << std::setw(10)
         << r.max_measured_error_px << std::setw(10) << r.mean_measured_error_px
-        << std::setprecision(1) << std::setw(8) << r.mean_psnr_db << "\n";
+        << std::setprecision(1) << std::setw(8) << r.mean_psnr_db << std::setprecision(3)
+        << std::setw(8) << r.mean_ssim << "\n";
   }
   for (const PolicyRow& r : rows) {
     if (!r.budgeted) continue;

@@ -40,7 +40,9 @@ std::vector<const ReusePolicy*> parse_policy_list(const std::string& text);
 //   level_share[l]   fraction of the drawn layer-frames updated at level l;
 //   work_saved, time_saved   RunSummary's (against the exact re-render of the same run);
 //   max_measured_error_px, mean_measured_error_px   over the visible layer reports;
-//   mean_psnr_db     RunSummary's;
+//   mean_psnr_db, mean_ssim   RunSummary's (SSIM NaN unless PlayOptions::measure_ssim);
+//   max_measured_error_px also takes each frame's own largest error, so a frame warped as a
+//                    whole (per-pixel policies: no layer reports) counts;
 //   model_work_saved RunSummary's: the deterministic cost model's (core/engine/cost_model.h), as
 //                    `animate` reports it for the same policy;
 //   budget           a policy sharing a per-frame budget only: RunSummary's budget figures
@@ -59,21 +61,23 @@ struct PolicyRow {
   double max_measured_error_px = 0.0;
   double mean_measured_error_px = 0.0;
   double mean_psnr_db = 0.0;
+  double mean_ssim = std::numeric_limits<double>::quiet_NaN();  // RunSummary's
   long layer_frames = 0;
   int frames = 0;
-  std::int64_t hole_pixels = 0;  // RunSummary's total (0 for a policy without holes)
-  int latency_frames = 0;        // the policy's (ReusePolicy::latency_frames)
-  NodeCacheTotals cache;         // RunSummary's (the hierarchical-cache policy only)
+  std::int64_t hole_pixels = 0;       // RunSummary's total (0 for a policy without holes)
+  std::int64_t inpainted_pixels = 0;  // RunSummary's total (mv-extrapolation's fills)
+  int latency_frames = 0;             // the policy's (ReusePolicy::latency_frames)
+  NodeCacheTotals cache;              // RunSummary's (the hierarchical-cache policy only)
 };
 PolicyRow policy_row(const PolicyRun& run);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
-// "mean_measured_error_px", "mean_psnr_db" (null when NaN), "layer_frames", "frames",
-// "hole_pixels" (the total over the frames), "latency_frames"}, for the hierarchical cache
-// "cache": node_cache_json (analysis/runs/run_driver.h), and
-// for a budgeted row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames",
-// "mean_optimality_gap" (fraction, null when no frame was checked)}.
+// "mean_measured_error_px", "mean_psnr_db", "mean_ssim" (null when NaN), "layer_frames",
+// "frames", "hole_pixels" and "inpainted_pixels" (totals over the frames), "latency_frames"}, for
+// the hierarchical cache "cache": node_cache_json (analysis/runs/run_driver.h), and for a budgeted
+// row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames", "mean_optimality_gap"
+// (fraction, null when no frame was checked)}.
 nlohmann::json policy_row_json(const PolicyRow& row);
 
 // A text table, one row per policy: the level percents, work, time and model work saved,

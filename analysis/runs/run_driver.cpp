@@ -40,6 +40,7 @@ class SummaryTotals {
     s_.visibility_time_ms += f.visibility_ms;
     s_.max_measured_error_px = std::max(s_.max_measured_error_px, f.max_measured_error_px);
     s_.hole_pixels += f.hole_pixels;
+    s_.inpainted_pixels += f.inpainted_pixels;
     s_.reports_holes = s_.reports_holes || f.reports_holes;
     const RerenderCauses& c = f.rerender_causes;
     RerenderCauses& sum = s_.rerender_causes;
@@ -60,6 +61,10 @@ class SummaryTotals {
       psnr_sum_ += r.psnr_db;
       ++psnr_count_;
     }
+    if (std::isfinite(r.ssim)) {
+      ssim_sum_ += r.ssim;
+      ++ssim_count_;
+    }
   }
 
   // The medians, the mean PSNR and the savings, once every frame is added.
@@ -68,6 +73,7 @@ class SummaryTotals {
     s_.baseline_median_frame_ms = median_of(std::move(baseline_times_));
     s_.conventional_median_frame_ms = median_of(std::move(conventional_times_));
     s_.mean_psnr_db = psnr_count_ ? psnr_sum_ / psnr_count_ : kNaN;
+    s_.mean_ssim = ssim_count_ ? ssim_sum_ / ssim_count_ : kNaN;
     s_.time_saved = s_.baseline_time_ms > 0.0 ? 1.0 - s_.time_ms / s_.baseline_time_ms : 0.0;
     s_.work_saved = s_.baseline_pixels > 0 ? 1.0 - static_cast<double>(s_.pixels) /
                                                        static_cast<double>(s_.baseline_pixels)
@@ -101,6 +107,8 @@ class SummaryTotals {
   std::vector<double> times_, baseline_times_, conventional_times_;
   double psnr_sum_ = 0.0;
   long psnr_count_ = 0;
+  double ssim_sum_ = 0.0;
+  long ssim_count_ = 0;
 };
 
 }  // namespace
@@ -234,9 +242,13 @@ class RunLoop {
   // The frame's deterministic facts, its PSNR and IoU against the baseline, on_frame; then
   // the record itself, or with several timed passes the frame and PSNR until the medians.
   void record_frame(int i, const AnimationFrame& f, double baseline_ms, double conventional_ms) {
-    double psnr = kNaN;
+    double psnr = kNaN, ssim = kNaN;
     if (baseline_ && (options_.psnr_when_nothing_drawn || f.drawn() > 0)) {
       psnr = psnr_db(animator_.image(), baseline_->image());
+      const Image& shown = animator_.image();
+      if (options_.measure_ssim && shown.width() >= kSsimWindow && shown.height() >= kSsimWindow) {
+        ssim = mean_ssim(shown, baseline_->image());
+      }
     }
     if (conventional_ && baseline_)
       iou_sum_ += alpha_iou(conventional_->image(), baseline_->image());
@@ -244,11 +256,12 @@ class RunLoop {
     if (options_.on_animators) options_.on_animators(i, animator_, baseline_);
     if (options_.on_view) options_.on_view(i, animator_.view());
     if (single_timed_) {
-      emit({f, psnr, baseline_ms, conventional_ms}, options_.keep_frames);
+      emit({f, psnr, baseline_ms, conventional_ms, ssim}, options_.keep_frames);
       return;
     }
     run_.frames.push_back(f);
     run_.psnr_db.push_back(psnr);
+    ssim_.push_back(ssim);
   }
 
   // A record with its final times: into the totals, to on_record and, with `store`, into
@@ -300,7 +313,7 @@ class RunLoop {
       }
       run_.baseline_ms.push_back(median_of(t.baseline));
       run_.conventional_ms.push_back(median_of(t.conventional));
-      emit({f, run_.psnr_db[i], run_.baseline_ms[i], run_.conventional_ms[i]}, false);
+      emit({f, run_.psnr_db[i], run_.baseline_ms[i], run_.conventional_ms[i], ssim_[i]}, false);
     }
     if (!options_.keep_frames) {
       run_.frames = {};
@@ -318,6 +331,7 @@ class RunLoop {
   int frames_ = 0;
   int passes_ = 0;
   std::vector<TimeSamples> samples_;  // per frame, with several timed passes
+  std::vector<double> ssim_;          // per frame held for the medians
   double iou_sum_ = 0.0;
   AnimationRun run_;
   SummaryTotals totals_;

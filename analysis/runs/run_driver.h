@@ -31,6 +31,9 @@ struct FrameRecord {
   double psnr_db;
   double baseline_ms;
   double conventional_ms;
+  // Mean SSIM against the baseline (core/image/image_compare.h mean_ssim), NaN when not
+  // measured (RunOptions::measure_ssim false, no baseline, or a frame under 11 x 11 pixels).
+  double ssim = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RunOptions {
@@ -46,6 +49,9 @@ struct RunOptions {
   // PSNR of frames in which the animator drew nothing: measured (both images usually empty:
   // kIdenticalPsnrDb) when true, NaN when false (the single plane's "not visible" frames).
   bool psnr_when_nothing_drawn = true;
+  // Also the SSIM of each recorded frame against the baseline (FrameRecord::ssim), where the
+  // PSNR is measured; off by default, as it costs about as much as a frame's warp.
+  bool measure_ssim = false;
   // Called after each frame of each pass with (frames done, total over all passes).
   std::function<void(int, int)> progress;
   // Called with each frame's image (camera-sized, premultiplied), e.g. to save PNGs.
@@ -133,6 +139,8 @@ struct RunSummary {
   // no such report (scene shifting keeps no per-layer books).
   double max_excess_px = std::numeric_limits<double>::quiet_NaN();
   double mean_psnr_db = 0.0;  // over the finite per-frame PSNRs (NaN when none)
+  double mean_ssim = std::numeric_limits<double>::quiet_NaN();  // over the measured SSIMs
+  std::int64_t inpainted_pixels = 0;  // AnimationFrame::inpainted_pixels over the frames
   // A policy that shares a per-frame budget (AnimationFrame::budget, core/engine/budget.h):
   // frames with the budget active (all but the first), frames whose layers spent more than
   // the budget (the rule keeps this 0), starved layer-frames, and the mean optimality gap

@@ -103,6 +103,9 @@ struct AnimationFrame {
   // disocclusion or a part of the view outside the rendered frame); only a per-pixel depth
   // warp has any, a layer warp shows every layer whole.
   std::int64_t hole_pixels = 0;
+  // Of the unreached pixels, those filled by inpainting (core/scene/frame_generation.h: the
+  // mv-extrapolation policy); 0 for every other policy.
+  std::int64_t inpainted_pixels = 0;
   // True under a policy whose reports carry hole pixels (core/engine/reuse_policy.h
   // reports_holes): the per-frame CSV and the summaries then add them.
   bool reports_holes = false;

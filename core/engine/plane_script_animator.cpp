@@ -139,10 +139,9 @@ class PlaneScriptAnimator final : public Animator {
 std::unique_ptr<Animator> make_plane_animator(const MotionScript& script, const Image& texture,
                                               const EngineSettings& settings, int repeat) {
   if (script.frames.empty()) throw std::invalid_argument("the motion script has no frames");
-  if (settings.policy->frame_warp == FrameWarp::kNodeImages) {
+  if (std::string why; needs_scene(*settings.policy, &why)) {
     throw std::invalid_argument(std::string(settings.policy->name) +
-                                " needs a scene (--scene): a single plane has no BSP tree to "
-                                "group into nodes");
+                                " needs a scene (--scene): " + why);
   }
   const long frames = static_cast<long>(script.frames.size());
   if (repeat < 1 || frames * repeat > std::numeric_limits<int>::max()) {

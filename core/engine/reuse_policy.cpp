@@ -49,6 +49,20 @@ ReusePolicy hierarchical_cache() {
                    "box corners only");
 }
 
+// Frame generation by extrapolation along motion vectors (core/scene/frame_generation.h): a
+// per-pixel warp on the fixed cadence, without the new pose.
+ReusePolicy mv_extrapolation(const char* name, const char* summary, bool inpaint,
+                             const char* breaks) {
+  ReusePolicy p = on_cadence(
+      name, summary, ModelUpdate::kExact, FramePlane::kInfinity, FrameWarp::kPerPixelDepth,
+      "frame generation by extrapolation along motion vectors (the family of DLSS 3 / FSR 3 "
+      "frame generation; disocclusion mask and inpainting pyramid after AMD FidelityFX FSR 3)",
+      breaks);
+  p.pixel_motion = PixelMotion::kMotionVectors;
+  p.inpaint = inpaint;
+  return p;
+}
+
 }  // namespace
 
 LevelPixels estimate_level_pixels(std::int64_t displayed_px, std::int64_t cache_px) {
@@ -86,6 +100,17 @@ Level cadence_choice(const ReusePolicy&, const FrameInputs& inputs) {
 
 bool reports_holes(const ReusePolicy& policy) {
   return policy.frame_warp != FrameWarp::kPerLayer || policy.schedule == Schedule::kCadence;
+}
+
+bool needs_scene(const ReusePolicy& policy, std::string* why) {
+  const char* reason = nullptr;
+  if (policy.frame_warp == FrameWarp::kNodeImages) {
+    reason = "a single plane has no BSP tree to group into nodes";
+  } else if (policy.pixel_motion == PixelMotion::kMotionVectors) {
+    reason = "its motion vectors and depth are a rendered scene frame's";
+  }
+  if (reason && why) *why = reason;
+  return reason != nullptr;
 }
 
 const char* frame_warp_name(FrameWarp warp) {
@@ -160,6 +185,14 @@ const std::vector<ReusePolicy>& reuse_policies() {
                  "oflab's plane per layer on a fixed cadence (asynchronous spacewarp's schedule)",
                  "only resampling and the sampling limit: the fair comparison for the three"),
       hierarchical_cache(),
+      mv_extrapolation(
+          "mv-extrapolation",
+          "frame generation: the render splatted along its motion vectors, holes inpainted", true,
+          "acceleration and turns (the vectors are of the last step), and disocclusions: "
+          "inpainting guesses what was hidden"),
+      mv_extrapolation("mv-no-inpaint",
+                       "frame generation along motion vectors, disocclusions left empty", false,
+                       "as mv-extrapolation, with its disocclusions left as holes"),
   };
   return policies;
 }
@@ -167,6 +200,9 @@ const std::vector<ReusePolicy>& reuse_policies() {
 const char* level_word(const ReusePolicy& policy, Level level) {
   if (policy.frame_warp == FrameWarp::kNodeImages) {
     return level == Level::kRerender ? "rendered" : "cached";
+  }
+  if (policy.pixel_motion == PixelMotion::kMotionVectors) {
+    return level == Level::kRerender ? "rendered" : "generated";
   }
   if (policy.schedule == Schedule::kCadence) {
     return level == Level::kRerender ? "rendered" : "reprojected";

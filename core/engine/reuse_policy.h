@@ -27,6 +27,11 @@
 //   depth-reprojection  post-rendering 3D warping: the composited frame forward-warped by each
 //                       pixel's depth (core/scene/depth_reprojection.h), holes marked;
 //   cadence             each layer by its own plane's exact homography: the fair comparison.
+// Frame generation by extrapolation (the family of DLSS 3 / FSR 3 frame generation), scenes only:
+//   mv-extrapolation    the last render splatted forward along its per-pixel motion vectors,
+//                       without the new pose, disocclusions masked and filled by pyramid
+//                       (push-pull) inpainting (core/scene/frame_generation.h);
+//   mv-no-inpaint       the same with the disocclusions left empty.
 // The dissertation's other named rival (section 2.4.7):
 //   hierarchical-cache  Shade et al. 96: BSP nodes cached as images on quads facing the viewer,
 //                       warped by the quad's homography, re-rendered by an angular error at
@@ -90,6 +95,12 @@ enum class FramePlane {
 // cached image per node of the scene's BSP tree (core/scene/hierarchical_cache.h; scenes
 // only: a single plane has no tree to group).
 enum class FrameWarp { kPerLayer, kPerPixelDepth, kNodeImages };
+
+// Where a per-pixel frame warp (FrameWarp::kPerPixelDepth) moves each pixel of the last render:
+// by the viewer's true step since the render (depth reprojection, which knows the new pose), or
+// along the render's per-pixel motion vectors extrapolated to the new time without the new pose
+// (frame generation by extrapolation, core/scene/frame_generation.h).
+enum class PixelMotion { kViewerStep, kMotionVectors };
 // "per-layer", "per-pixel-depth" or "node-images".
 const char* frame_warp_name(FrameWarp warp);
 
@@ -159,6 +170,10 @@ struct ReusePolicy {
   FramePlane frame_plane = FramePlane::kInfinity;
   FrameWarp frame_warp = FrameWarp::kPerLayer;
   int latency_frames = 0;
+  // FrameWarp::kPerPixelDepth: how the pixels move, and whether the disocclusions of a
+  // motion-vector extrapolation are filled by pyramid inpainting (else left empty).
+  PixelMotion pixel_motion = PixelMotion::kViewerStep;
+  bool inpaint = false;
   // For `oflab-cli policies`: the system it models (with its source) and where it breaks.
   const char* models = "";
   const char* breaks = "";
@@ -190,9 +205,15 @@ Level cadence_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 // the per-layer warps, which show every layer whole).
 bool reports_holes(const ReusePolicy& policy);
 
+// True when the policy plays scenes only: the hierarchical cache (a single plane has no BSP
+// tree to group) and motion-vector extrapolation (core/scene/frame_generation.h works on a
+// scene's rendered frame and depth). `why` receives the reason, for one-line refusals.
+bool needs_scene(const ReusePolicy& policy, std::string* why = nullptr);
+
 // What `policy` did to a layer it showed at `level`, in that policy's own words, for captions
 // and legends: Algorithm 1's level names ("none" .. "rerender", level_name) for the policies
-// of the threshold rule; "rendered" or "reprojected" for a policy on a fixed cadence (its warp
+// of the threshold rule; "rendered" or "generated" for motion-vector extrapolation;
+// "rendered" or "reprojected" for the other policies on a fixed cadence (its warp
 // level is a reprojection of the last render, not a Taylor level); "rendered" or "cached" for
 // the hierarchical cache (a node's cached image warped onto its quad). Never null.
 const char* level_word(const ReusePolicy& policy, Level level);

@@ -1,7 +1,10 @@
 #include "image/image_compare.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace oflab {
 
@@ -23,6 +26,86 @@ double psnr_db(const Image& a, const Image& b) {
   if (count == 0 || sum == 0.0) return kIdenticalPsnrDb;
   const double mse = sum / static_cast<double>(count);
   return std::min(kIdenticalPsnrDb, 10.0 * std::log10(255.0 * 255.0 / mse));
+}
+
+namespace {
+
+// The normalised 1-D Gaussian of the SSIM window; its outer product is the 2-D window.
+std::array<double, kSsimWindow> ssim_weights() {
+  std::array<double, kSsimWindow> w{};
+  double sum = 0.0;
+  for (int k = 0; k < kSsimWindow; ++k) {
+    const double x = k - (kSsimWindow - 1) / 2.0;
+    w[k] = std::exp(-x * x / (2.0 * kSsimSigma * kSsimSigma));
+    sum += w[k];
+  }
+  for (double& v : w) v /= sum;
+  return w;
+}
+
+std::vector<double> luma(const Image& image) {
+  std::vector<double> y(image.pixel_count());
+  for (std::size_t k = 0; k < y.size(); ++k) {
+    const Pixel p = image.pixels()[k];
+    y[k] = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
+  }
+  return y;
+}
+
+// The "valid" Gaussian filtering of `v` (width x height): rows, then columns.
+std::vector<double> filtered(const std::vector<double>& v, int width, int height) {
+  static const std::array<double, kSsimWindow> w = ssim_weights();
+  const int ow = width - kSsimWindow + 1, oh = height - kSsimWindow + 1;
+  std::vector<double> rows(static_cast<std::size_t>(ow) * height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < ow; ++x) {
+      double s = 0.0;
+      for (int k = 0; k < kSsimWindow; ++k)
+        s += w[k] * v[static_cast<std::size_t>(y) * width + x + k];
+      rows[static_cast<std::size_t>(y) * ow + x] = s;
+    }
+  }
+  std::vector<double> out(static_cast<std::size_t>(ow) * oh);
+  for (int y = 0; y < oh; ++y) {
+    for (int x = 0; x < ow; ++x) {
+      double s = 0.0;
+      for (int k = 0; k < kSsimWindow; ++k)
+        s += w[k] * rows[static_cast<std::size_t>(y + k) * ow + x];
+      out[static_cast<std::size_t>(y) * ow + x] = s;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+double mean_ssim(const Image& a, const Image& b) {
+  if (a.width() != b.width() || a.height() != b.height()) {
+    throw std::invalid_argument("mean_ssim: images differ in size");
+  }
+  if (a.width() < kSsimWindow || a.height() < kSsimWindow) {
+    throw std::invalid_argument("mean_ssim: images smaller than the 11 x 11 window");
+  }
+  const int w = a.width(), h = a.height();
+  const std::vector<double> x = luma(a), y = luma(b);
+  std::vector<double> xx(x.size()), yy(x.size()), xy(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    xx[k] = x[k] * x[k];
+    yy[k] = y[k] * y[k];
+    xy[k] = x[k] * y[k];
+  }
+  const std::vector<double> mx = filtered(x, w, h), my = filtered(y, w, h);
+  const std::vector<double> sxx = filtered(xx, w, h), syy = filtered(yy, w, h),
+                            sxy = filtered(xy, w, h);
+  const double c1 = (0.01 * 255.0) * (0.01 * 255.0), c2 = (0.03 * 255.0) * (0.03 * 255.0);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < mx.size(); ++k) {
+    const double vx = sxx[k] - mx[k] * mx[k], vy = syy[k] - my[k] * my[k];
+    const double cov = sxy[k] - mx[k] * my[k];
+    sum += (2.0 * mx[k] * my[k] + c1) * (2.0 * cov + c2) /
+           ((mx[k] * mx[k] + my[k] * my[k] + c1) * (vx + vy + c2));
+  }
+  return sum / static_cast<double>(mx.size());
 }
 
 }  // namespace oflab

@@ -223,32 +223,66 @@ void SceneEngine::update_frame_plane(const ViewerPose& current) {
                                                       direction_to_view(current, plane_normal_));
 }
 
-void SceneEngine::keep_render(const ViewerPose& current) {
+void SceneEngine::keep_render(const ViewerPose& current, const ViewerPose* previous) {
   rendered_frame_ = frame_;
   rendered_depth_ = render_depth(scene_, camera_, current, settings_.near);
   rendered_view_ = current;
+  rendered_previous_ = previous ? *previous : current;
+  rendered_index_ = frame_index_;
   has_render_ = true;
   source_of_.clear();
 }
 
-void SceneEngine::reproject_frame(const ViewerPose& current, AnimationFrame& report) {
+double SceneEngine::reproject_frame(const ViewerPose& current, AnimationFrame& report) {
+  double diagnostics_ms = 0.0;
   const auto t0 = Clock::now();
-  Reprojection r =
-      reproject_by_depth(rendered_frame_, rendered_depth_, camera_,
-                         viewer_step(rendered_view_, current), settings_.hole_fill, settings_.near);
-  report.update_ms = ms_since(t0);
-  // Which unreached pixels are holes: the depth of the view now, a diagnostic (untimed).
-  const DepthFrame now = render_depth(scene_, camera_, current, settings_.near);
-  r.hole_pixels = 0;
-  for (std::size_t k = 0; k < r.unreached.size(); ++k) {
-    r.hole_pixels += r.unreached[k] && now.polygon[k] >= 0;
+  const ReusePolicy& policy = *settings_.engine.policy;
+  if (policy.pixel_motion == PixelMotion::kMotionVectors) {
+    diagnostics_ms = generate_frame(current, report);
+    report.update_ms = ms_since(t0) - diagnostics_ms;
+  } else {
+    Reprojection r = reproject_by_depth(rendered_frame_, rendered_depth_, camera_,
+                                        viewer_step(rendered_view_, current), settings_.hole_fill,
+                                        settings_.near);
+    report.update_ms = ms_since(t0);
+    // Which unreached pixels are holes: the depth of the view now, a diagnostic (untimed).
+    const DepthFrame now = render_depth(scene_, camera_, current, settings_.near);
+    r.hole_pixels = 0;
+    for (std::size_t k = 0; k < r.unreached.size(); ++k) {
+      r.hole_pixels += r.unreached[k] && now.polygon[k] >= 0;
+    }
+    frame_ = std::move(r.image);
+    source_of_ = std::move(r.source);
+    report.pixels_written = r.pixels_written;
+    report.model_work = static_cast<double>(r.source_pixels) * kPerspectiveWarpCost;
+    report.hole_pixels = r.hole_pixels;
+    report.max_measured_error_px = r.max_error_px;
   }
-  frame_ = std::move(r.image);
-  source_of_ = std::move(r.source);
-  report.pixels_written = r.pixels_written;
-  report.model_work = static_cast<double>(r.source_pixels) * kPerspectiveWarpCost;
-  report.hole_pixels = r.hole_pixels;
-  report.max_measured_error_px = r.max_error_px;
+  mark_reprojected(current, report);
+  return diagnostics_ms;
+}
+
+double SceneEngine::generate_frame(const ViewerPose& current, AnimationFrame& report) {
+  GeneratedFrame g = extrapolate_by_motion(
+      rendered_frame_, rendered_depth_, camera_, viewer_step(rendered_view_, rendered_previous_),
+      frame_index_ - rendered_index_, settings_.engine.policy->inpaint, settings_.near);
+  // The error against the true step and the holes against the depth now: diagnostics, their
+  // time returned for the caller to leave out.
+  const auto t0 = Clock::now();
+  measure_generated_frame(rendered_depth_, camera_, viewer_step(rendered_view_, current),
+                          render_depth(scene_, camera_, current, settings_.near), g);
+  const double diagnostics_ms = ms_since(t0);
+  frame_ = std::move(g.image);
+  source_of_ = std::move(g.source);
+  report.pixels_written = g.pixels_written + g.inpainted_pixels;
+  report.model_work = static_cast<double>(g.source_pixels) * kPerspectiveWarpCost;
+  report.hole_pixels = g.hole_pixels;
+  report.inpainted_pixels = g.inpainted_pixels;
+  report.max_measured_error_px = g.max_error_px;
+  return diagnostics_ms;
+}
+
+void SceneEngine::mark_reprojected(const ViewerPose& current, AnimationFrame& report) {
   bsp_.back_to_front(eye_position(current), order_);
   for (std::size_t i = 0; i < states_.size(); ++i) {
     states_[i]->live = false;  // the layers start afresh at the next render
@@ -286,7 +320,7 @@ AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMot
   report.layers = static_cast<int>(scene_.polygons.size());
   const ReusePolicy& policy = *settings_.engine.policy;
   report.reports_holes = reports_holes(policy);
-  const bool per_pixel = policy.frame_warp == FrameWarp::kPerPixelDepth;
+  const bool per_pixel = policy.frame_warp == FrameWarp::kPerPixelDepth;  // or motion vectors
   if (cache_) {
     classify(current, report);
     cache_frame(current, report);  // takes its diagnostics' time off report.time_ms
@@ -295,8 +329,8 @@ AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMot
   }
   if (per_pixel && has_render_ && !cadence_frame()) {
     classify(current, report);
-    reproject_frame(current, report);
-    report.time_ms = ms_since(t0);
+    const double diagnostics_ms = reproject_frame(current, report);
+    report.time_ms = ms_since(t0) - diagnostics_ms;
     return report;
   }
   if (per_pixel) {
@@ -315,7 +349,7 @@ AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMot
   const auto t1 = Clock::now();
   compose(report);
   report.composite_ms = ms_since(t1);
-  if (per_pixel) keep_render(current);
+  if (per_pixel) keep_render(current, previous);
   // The budget's optimality check is a diagnostic, left out as the measured errors are.
   report.time_ms = ms_since(t0) - report.budget.check_ms;
   return report;

@@ -39,6 +39,11 @@
 // perspective-warp unit per source pixel, the measured error the largest per-pixel
 // displacement, and AnimationFrame::hole_pixels the holes.
 //
+// The motion-vector extrapolation policies (PixelMotion::kMotionVectors) keep the render as
+// depth reprojection does, with the viewer of the frame before it (its motion vectors), and
+// generate every other frame by extrapolate_by_motion (core/scene/frame_generation.h), which
+// does not read the viewer now; the true step is used only for the measured error and holes.
+//
 // The hierarchical-cache policy (FrameWarp::kNodeImages) classifies the polygons as above, then
 // hands the frame to core/scene/hierarchical_cache.h: nodes of the BSP tree instead of
 // polygons, no hidden test.
@@ -67,6 +72,7 @@
 #include "scene/bsp_tree.h"
 #include "scene/cache_nodes.h"
 #include "scene/depth_reprojection.h"
+#include "scene/frame_generation.h"
 #include "scene/hierarchical_cache.h"
 #include "scene/occlusion.h"
 #include "scene/polygon_layer.h"
@@ -187,8 +193,11 @@ class SceneEngine {
   // Today's reprojection and the hierarchical cache (see above).
   bool cadence_frame() const;
   void update_frame_plane(const ViewerPose& current);
-  void keep_render(const ViewerPose& current);
-  void reproject_frame(const ViewerPose& current, AnimationFrame& report);
+  void keep_render(const ViewerPose& current, const ViewerPose* previous);
+  // Return the milliseconds of their diagnostics (errors, holes), left out of the frame's time.
+  double reproject_frame(const ViewerPose& current, AnimationFrame& report);
+  double generate_frame(const ViewerPose& current, AnimationFrame& report);
+  void mark_reprojected(const ViewerPose& current, AnimationFrame& report);
   void cache_frame(const ViewerPose& current, AnimationFrame& report);
 
   // The per-polygon steps (polygon_layer.cpp): the measure and allocate phases (step 4) of
@@ -240,7 +249,9 @@ class SceneEngine {
   Image rendered_frame_;
   DepthFrame rendered_depth_;
   ViewerPose rendered_view_;
-  std::vector<int> source_of_;                // the last reprojection's source pixel per pixel
+  ViewerPose rendered_previous_;  // the viewer of the frame before the render (motion vectors)
+  int rendered_index_ = 0;        // the frame index of the render
+  std::vector<int> source_of_;    // the last reprojection's source pixel per pixel
   std::unique_ptr<HierarchicalCache> cache_;  // the hierarchical-cache policy only
 };
 

@@ -70,6 +70,11 @@ bool holds(const LayerOutline& outline, const Vec2& point) {
 
 // What a reuse level of `policy` does to the previous image, in a few words.
 QString reuse_words(const ReusePolicy& policy, Level level) {
+  if (policy.pixel_motion == PixelMotion::kMotionVectors) {
+    return QStringLiteral(
+        "the last render, each pixel moved along its motion vector, "
+        "extrapolated");
+  }
   if (policy.frame_warp == FrameWarp::kPerPixelDepth) {
     return QStringLiteral("the last render, each pixel moved by its depth");
   }

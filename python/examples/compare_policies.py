@@ -4,7 +4,7 @@ import sys
 import oflab
 
 quick = dict(frames=30, repeat_timing=1) if "--quick" in sys.argv else {}
-names = [p["name"] for p in oflab.policies() if p["warp"] != "node-images"]  # those need a scene
+names = [p["name"] for p in oflab.policies() if not p["scenes_only"]]  # the others need a scene
 comparison = oflab.compare("rotation", names, **quick)
 for row in comparison.summary["policies"]:
     errors = comparison.records[row["name"]]["measured_error_px"]

@@ -32,11 +32,11 @@ def source_call(source):
 
 def playable(source):
     """The policies the source's kind can play: a single plane has no BSP tree to group,
-    so the node-image policy (hierarchical-cache) needs a scene (its refusal is tested in
-    test_refusals.py)."""
+    so the node-image policy (hierarchical-cache) needs a scene, and so does frame
+    generation along motion vectors (their refusal is tested in test_refusals.py)."""
     if "scene" in source:
         return POLICIES
-    return [p["name"] for p in oflab.policies() if p["warp"] != "node-images"]
+    return [p["name"] for p in oflab.policies() if not p["scenes_only"]]
 
 
 def check_animate_parity(cli_started, source, policies):

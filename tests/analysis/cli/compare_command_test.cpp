@@ -51,8 +51,8 @@ TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAPlane) {
   source.texture = read_image(default_texture_path());
   std::vector<const ReusePolicy*> all;
   for (const ReusePolicy& p : reuse_policies()) {
-    // The node-image cache plays scenes only, and says so.
-    if (p.frame_warp == FrameWarp::kNodeImages) {
+    // The node-image cache and frame generation play scenes only, and say so.
+    if (needs_scene(p)) {
       EXPECT_THROW(run_policies(source_kind("plane"), source, {&p}, quick_options(2)),
                    std::invalid_argument);
       continue;
@@ -72,7 +72,9 @@ TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAScene) {
   source.viewer = read_viewer_script_file(resolve_viewer_script_path("compound"));
   const auto runs = run_policies(
       source_kind("scene"), source,
-      parse_policy_list("perspective,talisman,dissertation,hierarchical-cache"), quick_options(12));
+      parse_policy_list("perspective,talisman,dissertation,hierarchical-cache,mv-extrapolation,"
+                        "mv-no-inpaint"),
+      quick_options(12));
   expect_same_views(runs, 12);
 }
 

@@ -34,7 +34,8 @@ TEST(PoliciesCommand, JsonListsEveryPolicyWithWhatItModelsInRegistryOrder) {
   EXPECT_EQ(list[3]["name"], "rerender");
   for (size_t i = 0; i < list.size(); ++i) {
     const ReusePolicy& p = reuse_policies()[i];
-    ASSERT_EQ(list[i].size(), 7u) << list[i];
+    ASSERT_EQ(list[i].size(), 8u) << list[i];
+    EXPECT_EQ(list[i]["scenes_only"], needs_scene(p)) << p.name;
     EXPECT_EQ(list[i]["name"], p.name);
     EXPECT_EQ(list[i]["summary"], p.summary);
     EXPECT_EQ(list[i]["models"], p.models);
@@ -46,7 +47,8 @@ TEST(PoliciesCommand, JsonListsEveryPolicyWithWhatItModelsInRegistryOrder) {
   }
   std::set<std::string> names;
   for (const auto& e : list) names.insert(e["name"].get<std::string>());
-  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence"}) {
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
+                           "mv-extrapolation", "mv-no-inpaint"}) {
     EXPECT_EQ(names.count(name), 1u) << name;
   }
 }
@@ -99,8 +101,8 @@ TEST(PoliciesCommand, TextHasOneLinePerPolicyStartingWithItsName) {
 TEST(PoliciesCommand, EveryListedNameIsAnAnimateMode) {
   const auto j = nlohmann::json::parse(run({"policies", "--json"}).out);
   for (const auto& p : j["policies"]) {
-    // The node-image cache groups a scene's BSP tree: it plays scenes only.
-    const bool scene_only = p["warp"] == "node-images";
+    // The node-image cache and frame generation play scenes only.
+    const bool scene_only = p["scenes_only"].get<bool>();
     const CliResult r = scene_only
                             ? run({"animate", "--scene", "two", "--script", "translate", "--frames",
                                    "2", "--mode", p["name"].get<std::string>(), "--json"})
@@ -123,6 +125,13 @@ TEST(PoliciesCommand, TheHierarchicalCacheIsListedAndRefusesASinglePlane) {
   EXPECT_NE(c.err.find("needs --scene"), std::string::npos) << c.err;
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("needs --scene"), std::string::npos) << r.err;
+  // Frame generation reads a rendered scene frame's motion vectors and depth: scenes only too.
+  const CliResult mv = run({"animate", "--script", "stationary", "--mode", "mv-extrapolation"});
+  EXPECT_EQ(mv.code, 2);
+  EXPECT_NE(mv.err.find("--mode mv-extrapolation: needs --scene NAME|FILE (its motion vectors"),
+            std::string::npos)
+      << mv.err;
+  EXPECT_EQ(mv.err.find('\n'), mv.err.size() - 1) << mv.err;
 }
 
 TEST(PoliciesCommand, UnknownModeErrorNamesTheOptionAndThePolicies) {

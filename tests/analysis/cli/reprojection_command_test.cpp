@@ -208,7 +208,8 @@ TEST(Reprojection, CompareRefusesACadenceOutOfRangeOrWithoutACadencePolicy) {
   const CliResult none = compare({"--policies", "perspective,talisman", "--cadence", "3"});
   EXPECT_EQ(none.code, 2);
   EXPECT_NE(none.err.find("--cadence: needs one of timewarp, stabilized-plane, "
-                          "depth-reprojection, cadence in --policies, not "
+                          "depth-reprojection, cadence, mv-extrapolation, "
+                          "mv-no-inpaint in --policies, not "
                           "'perspective,talisman'"),
             std::string::npos)
       << none.err;

@@ -126,7 +126,8 @@ TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
 
 TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   // Frame k after a render at frame 0 is rendered exactly when k is a multiple of N.
-  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence"}) {
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
+                           "mv-extrapolation", "mv-no-inpaint"}) {
     const ReusePolicy& p = reuse_policy(name);
     EXPECT_EQ(p.schedule, Schedule::kCadence) << name;
     EXPECT_EQ(p.latency_frames, 0) << name;
@@ -151,6 +152,20 @@ TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   EXPECT_EQ(reuse_policy("stabilized-plane").frame_plane, FramePlane::kStabilization);
   EXPECT_EQ(reuse_policy("depth-reprojection").frame_warp, FrameWarp::kPerPixelDepth);
   EXPECT_EQ(reuse_policy("cadence").model, ModelUpdate::kExact);
+  // Frame generation: per-pixel, along motion vectors, with and without inpainting, scenes only.
+  for (const char* name : {"mv-extrapolation", "mv-no-inpaint"}) {
+    const ReusePolicy& p = reuse_policy(name);
+    EXPECT_EQ(p.frame_warp, FrameWarp::kPerPixelDepth) << name;
+    EXPECT_EQ(p.pixel_motion, PixelMotion::kMotionVectors) << name;
+    std::string why;
+    EXPECT_TRUE(needs_scene(p, &why)) << name;
+    EXPECT_NE(why, "") << name;
+  }
+  EXPECT_TRUE(reuse_policy("mv-extrapolation").inpaint);
+  EXPECT_FALSE(reuse_policy("mv-no-inpaint").inpaint);
+  EXPECT_EQ(reuse_policy("depth-reprojection").pixel_motion, PixelMotion::kViewerStep);
+  EXPECT_FALSE(needs_scene(reuse_policy("depth-reprojection")));
+  EXPECT_TRUE(needs_scene(reuse_policy("hierarchical-cache")));
   EXPECT_FALSE(reports_holes(reuse_policy("perspective")));
 }
 
@@ -170,6 +185,8 @@ TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
       const std::string word = level_word(p, level);
       if (p.frame_warp == FrameWarp::kNodeImages) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "cached") << p.name;
+      } else if (p.pixel_motion == PixelMotion::kMotionVectors) {
+        EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "generated") << p.name;
       } else if (p.schedule == Schedule::kCadence) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "reprojected") << p.name;
       } else {
@@ -178,8 +195,8 @@ TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
     }
   }
   // The four policies of today's reprojection and the cache never borrow a Taylor level name.
-  for (const char* name :
-       {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "hierarchical-cache"}) {
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
+                           "hierarchical-cache", "mv-extrapolation"}) {
     EXPECT_STRNE(level_word(reuse_policy(name), Level::kPerspective), "perspective") << name;
     EXPECT_STRNE(level_word(reuse_policy(name), Level::kRerender), "rerender") << name;
   }

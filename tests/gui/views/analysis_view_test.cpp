@@ -443,8 +443,8 @@ TEST(FrameInspector, SaysWhatEachPolicysFramesAreAndHowFarFromExact) {
   SceneModel scene;
   AnimationModel model(&scene);
   for (const ReusePolicy& policy : reuse_policies()) {
-    // The demo is a single plane; the node-image cache plays scenes only.
-    if (policy.frame_warp == FrameWarp::kNodeImages) continue;
+    // The demo is a single plane; the node-image cache and frame generation play scenes only.
+    if (needs_scene(policy)) continue;
     EngineSettings settings = model.settings();
     settings.policy = &policy;
     ASSERT_TRUE(model.set_settings(settings)) << policy.name;
