@@ -122,9 +122,9 @@ void OcclusionTest::clear(int width, int height) {
   grid_.cell = 3.0 * size / static_cast<double>(kGridCells);
 }
 
-void OcclusionTest::add_occluder(const ConvexPolygon& region, double inset, Vec2 offset) {
-  if (region.empty()) return;
-  Occluder o;
+bool OcclusionTest::make_occluder(const ConvexPolygon& region, double inset, Vec2 offset,
+                                  Occluder& o) {
+  if (region.empty()) return false;
   const std::vector<Vec2>& v = region.vertices();
   o.lines.reserve(v.size());
   for (std::size_t k = 0; k < v.size(); ++k) {
@@ -137,7 +137,12 @@ void OcclusionTest::add_occluder(const ConvexPolygon& region, double inset, Vec2
   const BoundingBox b = region.bounds();
   o.box = {b.x_min + offset.x + inset, b.y_min + offset.y + inset, b.x_max + offset.x - inset,
            b.y_max + offset.y - inset};
-  if (o.box.x_min >= o.box.x_max || o.box.y_min >= o.box.y_max) return;  // eroded away
+  return o.box.x_min < o.box.x_max && o.box.y_min < o.box.y_max;  // else eroded away
+}
+
+void OcclusionTest::add_occluder(const ConvexPolygon& region, double inset, Vec2 offset) {
+  Occluder o;
+  if (!make_occluder(region, inset, offset, o)) return;
   const int index = static_cast<int>(occluders_.size());
   occluders_.push_back(std::move(o));
   const CellRange r = cell_range(occluders_.back().box, grid_.origin, grid_.cell, kGridCells);
@@ -185,12 +190,27 @@ void OcclusionTest::nearby(const BoundingBox& box, std::vector<int>& out) const 
 }
 
 bool OcclusionTest::covers(const ConvexPolygon& region_in, double margin) const {
+  return covers(region_in, margin, {}, nullptr);
+}
+
+bool OcclusionTest::covers(const ConvexPolygon& region_in, double margin,
+                           const std::vector<ConvexPolygon>& extra, bool* gave_up) const {
+  if (gave_up) *gave_up = false;
   if (region_in.empty()) return true;
-  if (occluders_.empty()) return false;
   BoundingBox box = region_in.bounds();
   box = {box.x_min - margin, box.y_min - margin, box.x_max + margin, box.y_max + margin};
-  std::vector<int> candidates;
-  nearby(box, candidates);
+  std::vector<int> near;
+  if (!occluders_.empty()) nearby(box, near);
+  std::vector<Occluder> extras;
+  for (const ConvexPolygon& e : extra) {
+    Occluder o;
+    if (make_occluder(e, 0.0, Vec2(0.0), o) && boxes_overlap(box, o.box)) {
+      extras.push_back(std::move(o));
+    }
+  }
+  std::vector<const Occluder*> candidates;
+  for (int index : near) candidates.push_back(&occluders_[index]);
+  for (const Occluder& o : extras) candidates.push_back(&o);
   if (candidates.empty()) return false;
   // A cheap necessary condition first, before any polygon is built: the grown region's
   // extreme points (each vertex moved by +-margin in x and y) lie in some occluder.
@@ -199,7 +219,7 @@ bool OcclusionTest::covers(const ConvexPolygon& region_in, double margin) const 
       const Vec2 p = v + margin * d;
       bool inside = false;
       for (std::size_t i = 0; i < candidates.size() && !inside; ++i) {
-        inside = this->inside(occluders_[candidates[i]], p);
+        inside = this->inside(*candidates[i], p);
       }
       if (!inside) return false;
       if (margin <= 0.0) break;
@@ -207,23 +227,25 @@ bool OcclusionTest::covers(const ConvexPolygon& region_in, double margin) const 
   }
   const ConvexPolygon region = margin > 0.0 ? dilated(region_in, margin) : region_in;
   std::vector<ConvexPolygon> pieces{region}, next;
-  for (int index : candidates) {
-    const Occluder& o = occluders_[index];
+  for (const Occluder* o : candidates) {
     next.clear();
     for (ConvexPolygon& piece : pieces) {
-      if (!boxes_overlap(piece.bounds(), o.box)) {
+      if (!boxes_overlap(piece.bounds(), o->box)) {
         next.push_back(std::move(piece));
         continue;
       }
       // The part outside each moved edge line survives as a piece; what is inside them all
       // is covered.
       ConvexPolygon inside = std::move(piece);
-      for (std::size_t k = 0; k < o.lines.size() && !inside.empty(); ++k) {
-        ConvexPolygon outside = clip_to_half_plane(inside, -o.lines[k]);
+      for (std::size_t k = 0; k < o->lines.size() && !inside.empty(); ++k) {
+        ConvexPolygon outside = clip_to_half_plane(inside, -o->lines[k]);
         if (outside.area() > kNegligibleArea) next.push_back(std::move(outside));
-        inside = clip_to_half_plane(inside, o.lines[k]);
+        inside = clip_to_half_plane(inside, o->lines[k]);
       }
-      if (next.size() > kMaxPieces) return false;
+      if (next.size() > kMaxPieces) {
+        if (gave_up) *gave_up = true;
+        return false;
+      }
     }
     pieces.swap(next);
     if (pieces.empty()) return true;

@@ -42,6 +42,11 @@ class OcclusionTest {
   // when the pieces multiply beyond a few hundred, which only very fragmented occluder sets
   // cause.
   bool covers(const ConvexPolygon& region, double margin = 0.0) const;
+  // As covers, with the `extra` regions (top-left pixels, not shrunk, not kept) counted as
+  // occluders too, after the kept ones; *gave_up, when given, is set when it gave up (then
+  // it returns false though the region may be covered).
+  bool covers(const ConvexPolygon& region, double margin, const std::vector<ConvexPolygon>& extra,
+              bool* gave_up) const;
 
   std::size_t occluder_count() const { return occluders_.size(); }
 
@@ -53,6 +58,8 @@ class OcclusionTest {
     BoundingBox box;
   };
   bool inside(const Occluder& o, const Vec2& p) const;
+  // The occluder of `region` at `offset` shrunk by `inset`; false when nothing is left.
+  static bool make_occluder(const ConvexPolygon& region, double inset, Vec2 offset, Occluder& o);
   // Occluders are binned on a grid of kGridCells x kGridCells cells over the grown frame,
   // so a candidate is cut only by the occluders near it: a frame of a thousand polygons
   // stays cheap to test. Occluders reaching beyond the grid, or spanning many cells, are

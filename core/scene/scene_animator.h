@@ -18,12 +18,12 @@
 //     walk of step 3 applies them; a polygon found hidden then leaves its share unspent,
 //     and one the budget could not afford a render is "starved": not drawn this frame.
 //     The walk queues the updates in waves that run at once on the worker threads
-//     (core/image/thread_pool.h): a polygon joins the wave unless a layer already in it may
-//     reach the image region its hidden test looks at (that layer's exact image grown by
-//     the errors its level leaves) or both render clipped textures from one scratch copy;
-//     then the wave runs first. The updates are recorded (report, ledger, occluders) in the
-//     walk's order, so frames and reports are the same bytes as one polygon at a time, on
-//     any number of threads;
+//     (core/image/thread_pool.h): a polygon joins the wave unless its hidden test's region
+//     would be covered were every layer already in the wave as wide as it may reach (its
+//     exact image grown by the errors its level leaves), or both render clipped textures
+//     from one scratch copy; then the wave runs first. The updates are recorded (report, ledger,
+//     occluders) in the walk's order, so frames and reports are the same bytes as one polygon at a
+//     time, on any number of threads;
 //  5. composite the layers back to front into the frame (premultiplied, transparent where
 //     nothing is drawn).
 //
@@ -175,8 +175,8 @@ class SceneEngine {
   struct WaveEntry {
     int fragment = 0;
     bool update = false;    // this entry's polygon is updated in the wave
-    bool occludes = false;  // its layer may become an occluder: `reach` holds its box
-    BoundingBox reach;
+    bool occludes = false;  // its layer may become an occluder, within `reach`
+    ConvexPolygon reach;    // top-left pixels
   };
   WaveEntry wave_entry(int fragment, bool update);
   bool wave_blocks(int polygon, const ConvexPolygon& candidate) const;

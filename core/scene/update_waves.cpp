@@ -70,7 +70,7 @@ SceneEngine::WaveEntry SceneEngine::wave_entry(int fragment, bool update) {
     const PlacedLayer* shown = s.shown(statuses_[p]);
     e.occludes = shown && !shown->layer.empty();
     if (e.occludes) {
-      e.reach = translated(shown->layer.polygon, shown->offset_x, shown->offset_y).bounds();
+      e.reach = translated(shown->layer.polygon, shown->offset_x, shown->offset_y);
     }
     return e;
   }
@@ -84,38 +84,34 @@ SceneEngine::WaveEntry SceneEngine::wave_entry(int fragment, bool update) {
       stray += 2.0 * s.report.measured_error_px;
     }
   }
-  const BoundingBox b = polygon_region(p).bounds();
-  e.reach = {b.x_min - stray, b.y_min - stray, b.x_max + stray, b.y_max + stray};
+  e.reach = dilated(polygon_region(p), stray);
   return e;
 }
 
-// True when the wave must run before polygon p is tested and queued: a layer of the wave
-// may reach its hidden test's candidate, or both are clipped texture renders sharing the
-// scratch texture they draw from.
+// True when the wave must run before polygon p is tested and queued: its hidden test's
+// candidate would be covered, or the test gives up, were every layer of the wave as wide as
+// it may reach (an occluder only ever covers more, so a candidate left uncovered then is
+// uncovered by the layers the wave will draw too); or both are clipped texture renders
+// sharing the scratch texture they draw from.
 bool SceneEngine::wave_blocks(int polygon, const ConvexPolygon& candidate) const {
   const auto uses_scratch = [&](int p) {
     return states_[p]->needs_clipping && !content_is_lit(polygon_content(p));
   };
   const bool scratch = uses_scratch(polygon);
   const int texture = scene_.polygons[polygon].texture;
-  BoundingBox need;
-  const bool tested = !candidate.empty();
-  if (tested) {
-    const BoundingBox b = candidate.bounds();
-    const double m = settings_.candidate_margin_px;
-    need = {b.x_min - m, b.y_min - m, b.x_max + m, b.y_max + m};
-  }
+  std::vector<ConvexPolygon> reaches;
   for (const WaveEntry& e : wave_) {
     const int p = bsp_.fragments()[e.fragment].polygon;
     if (e.update && scratch && uses_scratch(p) && scene_.polygons[p].texture == texture) {
       return true;
     }
-    if (tested && e.occludes && e.reach.x_min < need.x_max && need.x_min < e.reach.x_max &&
-        e.reach.y_min < need.y_max && need.y_min < e.reach.y_max) {
-      return true;
-    }
+    if (e.occludes) reaches.push_back(e.reach);
   }
-  return false;
+  if (candidate.empty() || reaches.empty()) return false;
+  bool gave_up = false;
+  const bool covered =
+      occlusion_.covers(candidate, settings_.candidate_margin_px, reaches, &gave_up);
+  return covered || gave_up;
 }
 
 void SceneEngine::run_wave(const ViewerPose& current, AnimationFrame& report) {
