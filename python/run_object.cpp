@@ -486,7 +486,8 @@ py::object compare_source(py::object source, py::object policies, py::kwargs set
     const CliArgs a(args, compare_options());
     const CompareInputs inputs = read_compare_inputs(a);
     std::ostringstream messages;
-    const PlayOptions options = play_options(a, messages);
+    PlayOptions options = play_options(a, messages);
+    add_compare_measures(options);
     py::gil_scoped_release release;
     const std::vector<PolicyRun> runs =
         run_policies(*inputs.kind, inputs.source, inputs.policies, options);

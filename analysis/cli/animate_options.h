@@ -94,6 +94,10 @@ const std::map<std::string, int>& compare_options();
 // The JSON of `compare --json`: {"script", "scene" (with a scene), "thresholds",
 // "policies": a policy_row_json per row} (analysis/runs/policy_runs.h).
 nlohmann::json compare_json(const CompareInputs& inputs, const std::vector<PolicyRow>& rows);
+// What a comparison measures beyond a run's own (every row's mean SSIM against the exact
+// frames: PlayOptions::measure_ssim), set on `options`; `oflab-cli compare` and the Python
+// module's compare both call it, so their rows are the same.
+void add_compare_measures(PlayOptions& options);
 
 // --budget-pixels N (pixels written per frame, limits::kBudgetPixels) or --budget-ms T
 // (milliseconds per frame, limits::kBudgetMs, converted with the run's measured cost per

@@ -124,7 +124,7 @@ int compare(const CliArgs& a, std::ostream& out, std::ostream& err) {
   const RunSource& source = inputs.source;
   const std::vector<const ReusePolicy*>& policies = inputs.policies;
   PlayOptions options;
-  options.measure_ssim = true;  // every row's mean_ssim
+  add_compare_measures(options);
   const RunOutput output = read_run_output(a, err);
   output.apply_timing_to(options);
   const std::vector<PolicyRun> runs = run_policies(*kind, source, policies, options);
@@ -206,5 +206,7 @@ int run_compare_command(const CommandArgs& args, std::ostream& out, std::ostream
     return 2;
   }
 }
+
+void add_compare_measures(PlayOptions& options) { options.measure_ssim = true; }
 
 }  // namespace oflab

@@ -43,20 +43,21 @@ std::array<double, kSsimWindow> ssim_weights() {
   return w;
 }
 
-std::vector<double> luma(const Image& image) {
-  std::vector<double> y(image.pixel_count());
+void luma(const Image& image, std::vector<double>& y) {
+  y.resize(image.pixel_count());
   for (std::size_t k = 0; k < y.size(); ++k) {
     const Pixel p = image.pixels()[k];
     y[k] = 0.299 * p.r + 0.587 * p.g + 0.114 * p.b;
   }
-  return y;
 }
 
-// The "valid" Gaussian filtering of `v` (width x height): rows, then columns.
-std::vector<double> filtered(const std::vector<double>& v, int width, int height) {
+// The "valid" Gaussian filtering of `v` (width x height) into `out`: rows (into `rows`),
+// then columns. Every element of both is written.
+void filtered(const std::vector<double>& v, int width, int height, std::vector<double>& rows,
+              std::vector<double>& out) {
   static const std::array<double, kSsimWindow> w = ssim_weights();
   const int ow = width - kSsimWindow + 1, oh = height - kSsimWindow + 1;
-  std::vector<double> rows(static_cast<std::size_t>(ow) * height);
+  rows.resize(static_cast<std::size_t>(ow) * height);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < ow; ++x) {
       double s = 0.0;
@@ -65,7 +66,7 @@ std::vector<double> filtered(const std::vector<double>& v, int width, int height
       rows[static_cast<std::size_t>(y) * ow + x] = s;
     }
   }
-  std::vector<double> out(static_cast<std::size_t>(ow) * oh);
+  out.resize(static_cast<std::size_t>(ow) * oh);
   for (int y = 0; y < oh; ++y) {
     for (int x = 0; x < ow; ++x) {
       double s = 0.0;
@@ -74,8 +75,13 @@ std::vector<double> filtered(const std::vector<double>& v, int width, int height
       out[static_cast<std::size_t>(y) * ow + x] = s;
     }
   }
-  return out;
 }
+
+// The working memory of mean_ssim, kept by each thread that measures: a frame's planes are
+// megabytes each, and fresh ones cost a page fault per page every frame.
+struct SsimScratch {
+  std::vector<double> x, y, xx, yy, xy, rows, mx, my, sxx, syy, sxy;
+};
 
 }  // namespace
 
@@ -87,16 +93,23 @@ double mean_ssim(const Image& a, const Image& b) {
     throw std::invalid_argument("mean_ssim: images smaller than the 11 x 11 window");
   }
   const int w = a.width(), h = a.height();
-  const std::vector<double> x = luma(a), y = luma(b);
-  std::vector<double> xx(x.size()), yy(x.size()), xy(x.size());
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    xx[k] = x[k] * x[k];
-    yy[k] = y[k] * y[k];
-    xy[k] = x[k] * y[k];
+  thread_local SsimScratch m;
+  luma(a, m.x);
+  luma(b, m.y);
+  m.xx.resize(m.x.size());
+  m.yy.resize(m.x.size());
+  m.xy.resize(m.x.size());
+  for (std::size_t k = 0; k < m.x.size(); ++k) {
+    m.xx[k] = m.x[k] * m.x[k];
+    m.yy[k] = m.y[k] * m.y[k];
+    m.xy[k] = m.x[k] * m.y[k];
   }
-  const std::vector<double> mx = filtered(x, w, h), my = filtered(y, w, h);
-  const std::vector<double> sxx = filtered(xx, w, h), syy = filtered(yy, w, h),
-                            sxy = filtered(xy, w, h);
+  filtered(m.x, w, h, m.rows, m.mx);
+  filtered(m.y, w, h, m.rows, m.my);
+  filtered(m.xx, w, h, m.rows, m.sxx);
+  filtered(m.yy, w, h, m.rows, m.syy);
+  filtered(m.xy, w, h, m.rows, m.sxy);
+  const std::vector<double>&mx = m.mx, &my = m.my, &sxx = m.sxx, &syy = m.syy, &sxy = m.sxy;
   const double c1 = (0.01 * 255.0) * (0.01 * 255.0), c2 = (0.03 * 255.0) * (0.03 * 255.0);
   double sum = 0.0;
   for (std::size_t k = 0; k < mx.size(); ++k) {
