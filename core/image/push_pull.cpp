@@ -78,9 +78,9 @@ std::int64_t push_pull_inpaint(Image& image, const std::vector<char>& hole) {
   bool any_valid = false;
   for (std::size_t k = 0; k < hole.size(); ++k) {
     const Pixel p = image.pixels()[k];
-    base.colour[k] = {static_cast<double>(p.r), static_cast<double>(p.g), static_cast<double>(p.b),
-                      static_cast<double>(p.a)};
-    base.weight[k] = hole[k] ? 0.0 : 1.0;
+    base.colour[k] = {static_cast<float>(p.r), static_cast<float>(p.g), static_cast<float>(p.b),
+                      static_cast<float>(p.a)};
+    base.weight[k] = hole[k] ? 0.0f : 1.0f;
     any_valid = any_valid || !hole[k];
   }
   if (!any_valid || hole.empty()) return 0;
