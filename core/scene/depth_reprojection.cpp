@@ -8,19 +8,15 @@
 
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
+#include "scene/splat_footprint.h"
 #include "scene/view_culling.h"
 
 namespace oflab {
 namespace {
 
-// A footprint whose bounding box holds more pixel centres than this is dropped (its pixels
-// stay holes): only a surface seen nearly edge-on after the step can magnify a pixel so far.
-constexpr double kMaxSplatBoxPixels = 4096.0;
-
-// The direction through top-left pixel position (u, v): (x/f, y/f, 1), x, y centred.
-Vec3 pixel_direction(const Camera& camera, double u, double v) {
-  return Vec3((u - camera.cx) / camera.focal_px, (v - camera.cy) / camera.focal_px, 1.0);
-}
+using splat::CornerLattice;
+using splat::pixel_direction;
+using splat::PixelBox;
 
 // Where the point seen at (u, v) with plane vector m lands after the step, top-left pixels,
 // and its inverse depth there; false when it is behind the surface's horizon or reaches
@@ -52,11 +48,6 @@ struct SplatBuffers {
   std::vector<int> polygon;  // the polygon of the splat each pixel shows (where it shows one)
 };
 
-// The target pixels whose centres a footprint's bounding box holds, inclusive.
-struct PixelBox {
-  int x_begin = 0, x_end = -1, y_begin = 0, y_end = -1;
-};
-
 // Every source pixel's splat, planned before any is painted: its footprint after the step,
 // the pixels it may cover (an empty box: no splat), its centre's inverse depth after the
 // step, and per source row the target rows its splats may reach.
@@ -65,15 +56,6 @@ struct SplatPlan {
   std::vector<PixelBox> boxes;
   std::vector<double> centre_w;
   std::vector<int> row_first, row_last;  // per source row; last < first: reaches no row
-};
-
-// Each source pixel's top-left footprint corner moved with its own surface (a footprint's
-// other corners are the top-left corners of the pixels two to the right and two below,
-// grown by kSplatMargin = 0.5, and are taken from there when that pixel shows the same
-// surface: the same computation, so the same bits).
-struct CornerLattice {
-  std::vector<Vec2> moved;
-  std::vector<char> ok;
 };
 
 // The working memory of one reprojection, kept by each thread that reprojects: a frame's
@@ -98,66 +80,18 @@ struct ReprojectionScratch {
     plan.row_last.assign(static_cast<std::size_t>(rows), -1);
   }
 };
-// The footprint corner at top-left pixel position (u, v) moved with the surface of plane
-// vector m (`surface`; else the background, moved as a direction). False when it cannot be
-// moved (move_point).
-bool move_corner(const Camera& camera, const RigidStep3& step, const Vec3& m, bool surface,
-                 double u, double v, double near, Vec2& q) {
-  double w_unused = 0.0;
-  const double w = surface ? glm::dot(m, pixel_direction(camera, u, v)) : 0.0;
-  return move_point(camera, step, m, w, u, v, near, q, w_unused);
-}
-
-// The corners a footprint shares with its neighbours' assume a margin of half a pixel.
-static_assert(kSplatMargin == 0.5, "the corner lattice needs a margin of half a pixel");
-
-// The top-left footprint corner of pixel (i, j), i <= width + 1, j <= height + 1, moved with
-// polygon p's surface (-1: the background): the lattice's when pixel (i, j) shows polygon p.
-bool lattice_corner(const CornerLattice& lattice, const DepthFrame& depth, const Camera& camera,
-                    const RigidStep3& step, int i, int j, int p, double near, Vec2& q) {
-  if (i < depth.width && j < depth.height) {
-    const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
-    if (depth.polygon[k] == p) {
-      q = lattice.moved[k];
-      return lattice.ok[k] != 0;
-    }
+// Moves a footprint corner at top-left pixel position (u, v) with the surface of plane vector
+// m (0: the background, moved as a direction) by the step: splat::move_lattice_rows' `move`.
+struct CornerMove {
+  const Camera& camera;
+  const RigidStep3& step;
+  double near;
+  bool operator()(const Vec3& m, double u, double v, Vec2& q) const {
+    double w_unused = 0.0;
+    const double w = glm::dot(m, pixel_direction(camera, u, v));
+    return move_point(camera, step, m, w, u, v, near, q, w_unused);
   }
-  const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
-  return move_corner(camera, step, m, p >= 0, i - 0.5, j - 0.5, near, q);
-}
-
-// The footprint of source pixel (i, j) showing polygon p, grown by kSplatMargin, after the
-// step: corners at (i - 0.5, j - 0.5), (i + 1.5, j - 0.5), (i + 1.5, j + 1.5), (i - 0.5,
-// j + 1.5). False when a corner cannot be moved.
-bool move_footprint(const CornerLattice& lattice, const DepthFrame& depth, const Camera& camera,
-                    const RigidStep3& step, int i, int j, int p, double near,
-                    std::array<Vec2, 4>& q) {
-  const int di[4] = {0, 2, 2, 0}, dj[4] = {0, 0, 2, 2};
-  for (int c = 0; c < 4; ++c) {
-    if (!lattice_corner(lattice, depth, camera, step, i + di[c], j + dj[c], p, near, q[c])) {
-      return false;
-    }
-  }
-  return true;
-}
-
-// The pixels of a width x height frame whose centres the bounding box of footprint `q` holds;
-// false when there are none or more than kMaxSplatBoxPixels.
-bool footprint_box(const std::array<Vec2, 4>& q, int width, int height, PixelBox& box) {
-  double x0 = q[0].x, x1 = q[0].x, y0 = q[0].y, y1 = q[0].y;
-  for (const Vec2& c : q) {
-    x0 = std::min(x0, c.x), x1 = std::max(x1, c.x);
-    y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
-  }
-  box.x_begin = std::max(0, static_cast<int>(std::ceil(x0 - 0.5)));
-  box.x_end = std::min(width - 1, static_cast<int>(std::floor(x1 - 0.5)));
-  box.y_begin = std::max(0, static_cast<int>(std::ceil(y0 - 0.5)));
-  box.y_end = std::min(height - 1, static_cast<int>(std::floor(y1 - 0.5)));
-  if (box.x_end < box.x_begin || box.y_end < box.y_begin) return false;
-  const double pixels =
-      static_cast<double>(box.x_end - box.x_begin + 1) * (box.y_end - box.y_begin + 1);
-  return !(pixels > kMaxSplatBoxPixels);
-}
+};
 
 // Paints source pixel s's planned splat into r.image at every pixel centre of target rows
 // [y_begin, y_end] inside its footprint where it wins: the nearest surface, and among the
@@ -172,20 +106,12 @@ std::int64_t paint_splat(const SplatPlan& plan, std::size_t s, int y_begin, int 
   const int polygon = depth.polygon[s];
   const double centre_w = plan.centre_w[s];
   const Pixel colour = rendered.pixels()[s];
-  // The footprint's edge vectors, for inside_footprint's test, computed once.
-  std::array<Vec2, 4> edge;
-  for (int e = 0; e < 4; ++e) edge[e] = q[(e + 1) % 4] - q[e];
+  const std::array<Vec2, 4> edge = splat::footprint_edges(q);  // computed once
   std::int64_t written = 0;
   for (int y = std::max(box.y_begin, y_begin); y <= std::min(box.y_end, y_end); ++y) {
     for (int x = box.x_begin; x <= box.x_end; ++x) {
       const Vec2 c(x + 0.5, y + 0.5);
-      bool positive = true, negative = true;  // inside_footprint, edges included
-      for (int e = 0; e < 4; ++e) {
-        const double k = edge[e].x * (c.y - q[e].y) - edge[e].y * (c.x - q[e].x);
-        positive = positive && k >= -1e-9;
-        negative = negative && k <= 1e-9;
-      }
-      if (!positive && !negative) continue;
+      if (!splat::inside_footprint(q, edge, c)) continue;
       const std::size_t d = static_cast<std::size_t>(y) * width + x;
       const bool same = r.source[d] >= 0 && buffers.polygon[d] == polygon;
       if (!same && centre_w <= buffers.z[d]) continue;  // something nearer (or the same)
@@ -203,20 +129,6 @@ std::int64_t paint_splat(const SplatPlan& plan, std::size_t s, int y_begin, int 
   return written;
 }
 
-// The lattice of moved top-left corners of source rows [begin, end).
-void move_lattice_rows(const DepthFrame& depth, const Camera& camera, const RigidStep3& step,
-                       double near, int begin, int end, CornerLattice& lattice) {
-  for (int j = begin; j < end; ++j) {
-    for (int i = 0; i < depth.width; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
-      const int p = depth.polygon[k];
-      const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
-      lattice.ok[k] =
-          move_corner(camera, step, m, p >= 0, i - 0.5, j - 0.5, near, lattice.moved[k]);
-    }
-  }
-}
-
 // The splats of source rows [begin, end): each centre moved by the pixel's own depth, each
 // footprint's corners by the depth of its surface there.
 void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidStep3& step,
@@ -226,12 +138,13 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidS
     for (int i = 0; i < depth.width; ++i) {
       const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
       const int p = depth.polygon[s];
-      const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
+      const Vec3 m = splat::surface_of(depth, p);
       PixelBox& box = plan.boxes[s];
       if (!move_point(camera, step, m, depth.inverse_depth[s], i + 0.5, j + 0.5, near,
                       buffers.exact[s], plan.centre_w[s]) ||
-          !move_footprint(lattice, depth, camera, step, i, j, p, near, plan.corners[s]) ||
-          !footprint_box(plan.corners[s], depth.width, depth.height, box)) {
+          !splat::move_footprint(lattice, depth, i, j, p, CornerMove{camera, step, near},
+                                 plan.corners[s]) ||
+          !splat::footprint_box(plan.corners[s], depth.width, depth.height, box)) {
         box = PixelBox{};
         continue;
       }
@@ -454,7 +367,7 @@ Reprojection reproject_by_depth(const Image& rendered, const DepthFrame& depth,
   for_each_band(height, min_rows, [&](int, int begin, int end) {
     std::fill(buffers.z.begin() + static_cast<std::ptrdiff_t>(begin) * width,
               buffers.z.begin() + static_cast<std::ptrdiff_t>(end) * width, -1.0);
-    move_lattice_rows(depth, camera, step, near, begin, end, lattice);
+    splat::move_lattice_rows(depth, begin, end, CornerMove{camera, step, near}, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
     plan_splat_rows(depth, camera, step, near, lattice, begin, end, buffers, plan);

@@ -6,21 +6,13 @@
 #include <cmath>
 
 #include "image/push_pull.h"
+#include "scene/splat_footprint.h"
 
 namespace oflab {
 namespace {
 
-// A footprint whose bounding box holds more pixel centres than this is dropped (its pixels
-// stay unreached), as in depth reprojection.
-constexpr double kMaxSplatBoxPixels = 4096.0;
-
-Vec3 pixel_direction(const Camera& camera, double u, double v) {
-  return Vec3((u - camera.cx) / camera.focal_px, (v - camera.cy) / camera.focal_px, 1.0);
-}
-
-Vec2 project(const Camera& camera, const Vec3& x) {
-  return Vec2(camera.cx + camera.focal_px * x.x / x.z, camera.cy + camera.focal_px * x.y / x.z);
-}
+using splat::pixel_direction;
+using splat::project;
 
 // Every source pixel's splat: its moved footprint, its moved centre and extrapolated inverse
 // depth; ok false when it has none.
@@ -31,58 +23,30 @@ struct Splat {
   bool ok = false;
 };
 
-// The footprint corners of pixel (i, j) on polygon p (-1: background) moved, the top-left
-// corner lattice shared with the pixels that show the same surface.
-struct Lattice {
-  std::vector<Vec2> moved;
-  std::vector<char> ok;
+// Moves a footprint corner at top-left pixel position (u, v) with the surface of plane vector
+// m (0: the background) along its motion extrapolated `frames_ahead` frames:
+// splat::move_lattice_rows' `move`.
+struct CornerMove {
+  const Camera& camera;
+  const RigidStep3& back;
+  int frames_ahead;
+  double near;
+  bool operator()(const Vec3& m, double u, double v, Vec2& q) const {
+    double unused = 0.0;
+    return extrapolate_point(camera, back, m, u, v, frames_ahead, near, q, unused);
+  }
 };
-
-bool move_corner(const Camera& camera, const RigidStep3& back, const DepthFrame& depth,
-                 const Lattice& lattice, int i, int j, int p, int k, double near, Vec2& q) {
-  if (i < depth.width && j < depth.height) {
-    const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
-    if (depth.polygon[s] == p) {
-      q = lattice.moved[s];
-      return lattice.ok[s] != 0;
-    }
-  }
-  const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
-  double w = 0.0;
-  return extrapolate_point(camera, back, m, i - 0.5, j - 0.5, k, near, q, w);
-}
-
-// The moved top-left corner of every source pixel, on its own surface.
-void move_lattice(const DepthFrame& depth, const Camera& camera, const RigidStep3& back, int k,
-                  double near, Lattice& lattice) {
-  const int width = depth.width, height = depth.height;
-  const std::size_t n = static_cast<std::size_t>(width) * height;
-  lattice.moved.resize(n);
-  lattice.ok.resize(n);
-  double unused = 0.0;
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const std::size_t s = static_cast<std::size_t>(j) * width + i;
-      const int p = depth.polygon[s];
-      lattice.ok[s] = extrapolate_point(camera, back, p >= 0 ? depth.planes[p] : Vec3(0.0), i - 0.5,
-                                        j - 0.5, k, near, lattice.moved[s], unused);
-    }
-  }
-}
 
 // Source pixel (i, j)'s splat: its moved centre, corners and extrapolated inverse depth.
 Splat plan_splat(const DepthFrame& depth, const Camera& camera, const RigidStep3& back,
-                 const Lattice& lattice, int i, int j, int k, double near) {
-  static constexpr int di[4] = {0, 2, 2, 0}, dj[4] = {0, 0, 2, 2};
+                 const splat::CornerLattice& lattice, int i, int j, int k, double near) {
   const int p = depth.polygon[static_cast<std::size_t>(j) * depth.width + i];
-  Splat splat;
-  splat.ok = extrapolate_point(camera, back, p >= 0 ? depth.planes[p] : Vec3(0.0), i + 0.5, j + 0.5,
-                               k, near, splat.centre, splat.w);
-  for (int c = 0; c < 4 && splat.ok; ++c) {
-    splat.ok = move_corner(camera, back, depth, lattice, i + di[c], j + dj[c], p, k, near,
-                           splat.corners[c]);
-  }
-  return splat;
+  Splat planned;
+  planned.ok = extrapolate_point(camera, back, splat::surface_of(depth, p), i + 0.5, j + 0.5, k,
+                                 near, planned.centre, planned.w) &&
+               splat::move_footprint(lattice, depth, i, j, p, CornerMove{camera, back, k, near},
+                                     planned.corners);
+  return planned;
 }
 
 // What the painting keeps per target pixel.
@@ -92,43 +56,24 @@ struct Targets {
   std::vector<int> polygon;
 };
 
-bool inside(const std::array<Vec2, 4>& q, const Vec2& c) {
-  bool positive = true, negative = true;
-  for (int e = 0; e < 4; ++e) {
-    const Vec2 edge = q[(e + 1) % 4] - q[e];
-    const double k = edge.x * (c.y - q[e].y) - edge.y * (c.x - q[e].x);
-    positive = positive && k >= -1e-9;
-    negative = negative && k <= 1e-9;
-  }
-  return positive || negative;
-}
-
 // Paints source pixel s's splat: the nearest surface wins, and among one polygon's splats
 // the one whose centre lands nearest. Returns the pixels written.
-std::int64_t paint(const Splat& splat, std::size_t s, int polygon, Pixel colour, int width,
-                   int height, Targets& t, GeneratedFrame& g) {
-  double x0 = splat.corners[0].x, x1 = x0, y0 = splat.corners[0].y, y1 = y0;
-  for (const Vec2& c : splat.corners) {
-    x0 = std::min(x0, c.x), x1 = std::max(x1, c.x);
-    y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
-  }
-  const int xb = std::max(0, static_cast<int>(std::ceil(x0 - 0.5)));
-  const int xe = std::min(width - 1, static_cast<int>(std::floor(x1 - 0.5)));
-  const int yb = std::max(0, static_cast<int>(std::ceil(y0 - 0.5)));
-  const int ye = std::min(height - 1, static_cast<int>(std::floor(y1 - 0.5)));
-  if (xe < xb || ye < yb) return 0;
-  if (static_cast<double>(xe - xb + 1) * (ye - yb + 1) > kMaxSplatBoxPixels) return 0;
+std::int64_t paint(const Splat& sp, std::size_t s, int polygon, Pixel colour, int width, int height,
+                   Targets& t, GeneratedFrame& g) {
+  splat::PixelBox box;
+  if (!splat::footprint_box(sp.corners, width, height, box)) return 0;
+  const std::array<Vec2, 4> edge = splat::footprint_edges(sp.corners);
   std::int64_t written = 0;
-  for (int y = yb; y <= ye; ++y) {
-    for (int x = xb; x <= xe; ++x) {
+  for (int y = box.y_begin; y <= box.y_end; ++y) {
+    for (int x = box.x_begin; x <= box.x_end; ++x) {
       const Vec2 c(x + 0.5, y + 0.5);
-      if (!inside(splat.corners, c)) continue;
+      if (!splat::inside_footprint(sp.corners, edge, c)) continue;
       const std::size_t d = static_cast<std::size_t>(y) * width + x;
       const bool same = g.source[d] >= 0 && t.polygon[d] == polygon;
-      if (!same && splat.w <= t.w[d]) continue;
-      const double e = glm::length(c - splat.centre);
+      if (!same && sp.w <= t.w[d]) continue;
+      const double e = glm::length(c - sp.centre);
       if (same && e >= t.dist[d]) continue;
-      t.w[d] = splat.w;
+      t.w[d] = sp.w;
       t.dist[d] = e;
       t.polygon[d] = polygon;
       g.image.pixels()[d] = colour;
@@ -214,20 +159,22 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   const int k = std::max(1, frames_ahead);
   // Working memory kept by each thread: a frame's buffers are tens of megabytes, and fresh
   // ones cost a page fault per page every frame.
-  thread_local Lattice lattice;
+  thread_local splat::CornerLattice lattice;
   thread_local Targets t;
-  move_lattice(depth, camera, back, k, near, lattice);
+  lattice.moved.resize(n);
+  lattice.ok.resize(n);
+  splat::move_lattice_rows(depth, 0, height, CornerMove{camera, back, k, near}, lattice);
   t.w.assign(n, -1.0);
   t.dist.assign(n, 0.0);
   t.polygon.assign(n, -1);
   // Each splat planned and painted in source order.
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
-      const Splat splat = plan_splat(depth, camera, back, lattice, i, j, k, near);
-      if (!splat.ok) continue;
+      const Splat planned = plan_splat(depth, camera, back, lattice, i, j, k, near);
+      if (!planned.ok) continue;
       const std::size_t s = static_cast<std::size_t>(j) * width + i;
       g.pixels_written +=
-          paint(splat, s, depth.polygon[s], rendered.pixels()[s], width, height, t, g);
+          paint(planned, s, depth.polygon[s], rendered.pixels()[s], width, height, t, g);
     }
   }
   g.unreached.assign(n, 0);

@@ -80,6 +80,15 @@ std::vector<ScenePolygon> random_polygons(std::mt19937& rng, int count) {
   return out;
 }
 
+Vec3 world_point_at(const Camera& camera, const ScenePolygon& polygon, const ViewerPose& view,
+                    double u, double v) {
+  const Vec3 eye = eye_position(view);
+  const Vec3 ray = glm::transpose(view.rotation) *
+                   Vec3((u - camera.cx) / camera.focal_px, (v - camera.cy) / camera.focal_px, 1.0);
+  const double s = glm::dot(polygon.front, polygon.centre - eye) / glm::dot(polygon.front, ray);
+  return eye + s * ray;
+}
+
 Image ray_cast_scene(const Scene& scene, const Camera& camera, const ViewerPose& view,
                      double near) {
   struct Prepared {

@@ -35,6 +35,12 @@ std::vector<ScenePolygon> random_polygons(std::mt19937& rng, int count);
 // far to near, each sampling its texture at the texel that contains the hit (nearest).
 Image ray_cast_scene(const Scene& scene, const Camera& camera, const ViewerPose& view, double near);
 
+// The world point seen at top-left pixel position (u, v) of `camera` at `view` on `polygon`'s
+// plane, found in world coordinates: the eye, the ray's world direction, the plane's world
+// centre and normal. Precondition: the ray is not parallel to the plane.
+Vec3 world_point_at(const Camera& camera, const ScenePolygon& polygon, const ViewerPose& view,
+                    double u, double v);
+
 // Share of pixels whose colour differs by more than `tolerance` in any channel (0..1),
 // counting only pixels that are not transparent in at least one of the images.
 double mismatch_fraction(const Image& a, const Image& b, int tolerance = 8);

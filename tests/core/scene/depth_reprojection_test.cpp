@@ -16,6 +16,7 @@ namespace {
 
 using testing::scene_with;
 using testing::square;
+using testing::world_point_at;
 
 const Camera kCamera = make_camera(300.0, 160, 120);
 constexpr double kNear = 0.05;
@@ -24,16 +25,6 @@ constexpr double kNear = 0.05;
 Scene two_squares() {
   return scene_with({square("far", Vec3(0.0, 0.0, -2.0), Vec3(0, 0, 1), Vec3(0, 1, 0), 2.0),
                      square("near", Vec3(0.3, 0.1, 0.0), Vec3(0, 0, 1), Vec3(0, 1, 0), 0.6)});
-}
-
-// The world point seen at top-left pixel (u, v) on `polygon`'s plane, found in world
-// coordinates: the eye, the ray's world direction, the plane's world centre and normal.
-Vec3 world_point_at(const ScenePolygon& polygon, const ViewerPose& view, double u, double v) {
-  const Vec3 eye = eye_position(view);
-  const Vec3 ray = glm::transpose(view.rotation) * Vec3((u - kCamera.cx) / kCamera.focal_px,
-                                                        (v - kCamera.cy) / kCamera.focal_px, 1.0);
-  const double s = glm::dot(polygon.front, polygon.centre - eye) / glm::dot(polygon.front, ray);
-  return eye + s * ray;
 }
 
 TEST(DepthReprojection, DepthIsTheRaysHitOfTheNearestPolygon) {
@@ -46,7 +37,7 @@ TEST(DepthReprojection, DepthIsTheRaysHitOfTheNearestPolygon) {
       const int k = y * kCamera.width + x;
       const int p = depth.polygon[k];
       if (p < 0) continue;
-      const Vec3 hit = world_point_at(scene.polygons[p], view, x + 0.5, y + 0.5);
+      const Vec3 hit = world_point_at(kCamera, scene.polygons[p], view, x + 0.5, y + 0.5);
       EXPECT_NEAR(depth.inverse_depth[k], 1.0 / to_view(view, hit).z, 1e-9);
       near += p == 1;
       ++both;
@@ -111,8 +102,8 @@ TEST(DepthReprojection, PerPixelErrorIsTheDistanceToTheIndependentProjection) {
   for (int d = 0; d < kCamera.width * kCamera.height; ++d) {
     const int s = r.source[d];
     if (s < 0 || depth.polygon[s] < 0) continue;
-    const Vec3 hit = world_point_at(scene.polygons[depth.polygon[s]], then, s % kCamera.width + 0.5,
-                                    s / kCamera.width + 0.5);
+    const Vec3 hit = world_point_at(kCamera, scene.polygons[depth.polygon[s]], then,
+                                    s % kCamera.width + 0.5, s / kCamera.width + 0.5);
     const Vec2 exact = centred_to_pixel(kCamera, project_centred(kCamera, to_view(now, hit)));
     const double e = glm::length(Vec2(d % kCamera.width + 0.5, d / kCamera.width + 0.5) - exact);
     largest = std::max(largest, e);

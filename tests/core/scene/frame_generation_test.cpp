@@ -20,22 +20,13 @@ namespace {
 
 using testing::open_cube;
 using testing::scene_with;
+using testing::world_point_at;
 
 const Camera kCamera = make_camera(150.0, 160, 120);
 constexpr double kNear = 0.05;
 
 Vec2 project_world(const ViewerPose& view, const Vec3& world) {
   return centred_to_pixel(kCamera, project_centred(kCamera, to_view(view, world)));
-}
-
-// The world point seen at top-left pixel (u, v) on `polygon`'s plane, by a ray in world
-// coordinates.
-Vec3 world_point_at(const ScenePolygon& polygon, const ViewerPose& view, double u, double v) {
-  const Vec3 eye = eye_position(view);
-  const Vec3 ray = glm::transpose(view.rotation) * Vec3((u - kCamera.cx) / kCamera.focal_px,
-                                                        (v - kCamera.cy) / kCamera.focal_px, 1.0);
-  const double s = glm::dot(polygon.front, polygon.centre - eye) / glm::dot(polygon.front, ray);
-  return eye + s * ray;
 }
 
 // A near cube in front of a far one, seen from a viewer sliding sideways: the near cube
@@ -65,7 +56,7 @@ TEST(FrameGeneration, ExtrapolationIsExactForASteadySidewaysSlideAndWrongInATurn
         Vec2 moved;
         double w = 0.0;
         ASSERT_TRUE(extrapolate_point(kCamera, back, depth.planes[p], u, v, k, kNear, moved, w));
-        const Vec3 hit = world_point_at(scene.polygons[p], f[1].pose, u, v);
+        const Vec3 hit = world_point_at(kCamera, scene.polygons[p], f[1].pose, u, v);
         *worst = std::max(*worst, glm::length(moved - project_world(f[1 + k].pose, hit)));
       }
     }
@@ -87,8 +78,8 @@ std::vector<char> disoccluded(const Scene& scene, const ViewerPose& then, const 
   for (std::size_t d = 0; d < out.size(); ++d) {
     const int p = seen_now.polygon[d];
     if (p < 0) continue;
-    const Vec3 x =
-        world_point_at(scene.polygons[p], now, d % kCamera.width + 0.5, d / kCamera.width + 0.5);
+    const Vec3 x = world_point_at(kCamera, scene.polygons[p], now, d % kCamera.width + 0.5,
+                                  d / kCamera.width + 0.5);
     const Vec2 q = project_world(then, x);
     const int i = static_cast<int>(std::floor(q.x)), j = static_cast<int>(std::floor(q.y));
     if (i < 0 || j < 0 || i >= kCamera.width || j >= kCamera.height) {
