@@ -4,7 +4,7 @@
 // loop (load_plane, load_scene) and what a frame changes in place (update_plane,
 // update_scene: points, matrices and pixels, never a new actor), which parts are shown, the
 // theme's colours and line widths, the labels' points and the caption (WorldTexts, painted
-// by the view), and the camera's two framings.
+// by the view), and the camera's two framings (their code in gui/views/world_camera.cpp).
 //
 // Units: world units (the viewer frame of gui/adapters/world_geometry.h for the plane, the
 // scene's frame for a scene source); speeds per second (SceneModel::kSecondsPerFrame per
