@@ -68,12 +68,12 @@ void WorldScene::place_orbit(const Vec3& side, const Vec3& view_up) {
 }
 
 // ResetCamera fits a bounding sphere, loosely: the plane is then centred and brought closer,
-// as far as every place it takes over the loop (and the eye's frustum) stays inside 95 % of
+// as far as every place it takes over the loop (and the eye's frustum) stays inside 90 % of
 // the picture.
 void WorldScene::frame_plane_from(const Vec3& side, const Vec3& view_up) {
   place_orbit(side, view_up);
   centre_framed_points();
-  renderer->GetActiveCamera()->Zoom(fit_zoom(0.95));
+  renderer->GetActiveCamera()->Zoom(fit_zoom(0.9));
 }
 
 void WorldScene::centre_framed_points() {

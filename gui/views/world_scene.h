@@ -159,7 +159,7 @@ struct WorldScene {
   // ResetCamera.
   void place_orbit(const Vec3& side, const Vec3& view_up);
   // place_orbit, then the plane's framing: centred (centre_framed_points) and zoomed so that
-  // the framed points fill 95 % of the picture (fit_zoom).
+  // the framed points fill 90 % of the picture (fit_zoom).
   void frame_plane_from(const Vec3& side, const Vec3& view_up);
   // What the orbit camera frames the plane in, canvas pixels: the picture between its legend and
   // caption as the texts were last laid out (WorldTexts::free_area), the whole picture before.
