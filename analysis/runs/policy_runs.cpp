@@ -16,7 +16,26 @@ nlohmann::json finite_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
+// The per-frame peaks of the pixels written, frame 0 left out (it renders every layer).
+void set_pixel_peaks(const AnimationRun& run, PolicyRow* row) {
+  row->pixels_written = run.summary.pixels;
+  std::vector<std::int64_t> per_frame;
+  for (std::size_t i = 1; i < run.frames.size(); ++i) {
+    per_frame.push_back(run.frames[i].pixels_written);
+  }
+  row->pixels_written_p95 = nearest_rank_percentile(per_frame, 95.0);
+  row->pixels_written_max = nearest_rank_percentile(per_frame, 100.0);
+}
+
 }  // namespace
+
+std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const double n = static_cast<double>(values.size());
+  const auto rank = static_cast<std::size_t>(std::ceil(percent * n / 100.0));
+  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
+}
 
 std::vector<PolicyRun> run_policies(const SourceKind& kind, const RunSource& source,
                                     const std::vector<const ReusePolicy*>& policies,
@@ -77,6 +96,7 @@ PolicyRow policy_row(const PolicyRun& r) {
   row.hole_pixels = s.hole_pixels;
   row.latency_frames = r.policy->latency_frames;
   row.cache = s.cache;
+  set_pixel_peaks(r.run, &row);
   double sum = 0.0;
   long count = 0;
   for (const AnimationFrame& f : r.run.frames) {
@@ -117,7 +137,10 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
                       {"frames", row.frames},
                       {"hole_pixels", row.hole_pixels},
                       {"inpainted_pixels", row.inpainted_pixels},
-                      {"latency_frames", row.latency_frames}};
+                      {"latency_frames", row.latency_frames},
+                      {"pixels_written", row.pixels_written},
+                      {"pixels_written_p95", row.pixels_written_p95},
+                      {"pixels_written_max", row.pixels_written_max}};
   if (row.cache.active) j["cache"] = node_cache_json(row.cache);
   if (row.budgeted) {
     j["budget"] = {{"frames_over_budget", row.frames_over_budget},

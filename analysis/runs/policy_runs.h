@@ -46,7 +46,11 @@ std::vector<const ReusePolicy*> parse_policy_list(const std::string& text);
 //   model_work_saved RunSummary's: the deterministic cost model's (core/engine/cost_model.h), as
 //                    `animate` reports it for the same policy;
 //   budget           a policy sharing a per-frame budget only: RunSummary's budget figures
-//                    (frames over budget, starved layer-frames, mean optimality gap).
+//                    (frames over budget, starved layer-frames, mean optimality gap);
+//   pixels_written   RunSummary's total over the frames, and the 95th percentile and the
+//                    largest of the per-frame pixels written (AnimationFrame::pixels_written)
+//                    over frames 1 .. n-1: frame 0 renders every layer under every policy,
+//                    so it is left out of the peaks (0 for a run of one frame).
 struct PolicyRow {
   std::string name;
   std::array<double, kLevelCount> level_share{};
@@ -64,17 +68,26 @@ struct PolicyRow {
   double mean_ssim = std::numeric_limits<double>::quiet_NaN();  // RunSummary's
   long layer_frames = 0;
   int frames = 0;
-  std::int64_t hole_pixels = 0;       // RunSummary's total (0 for a policy without holes)
-  std::int64_t inpainted_pixels = 0;  // RunSummary's total (mv-extrapolation's fills)
-  int latency_frames = 0;             // the policy's (ReusePolicy::latency_frames)
-  NodeCacheTotals cache;              // RunSummary's (the hierarchical-cache policy only)
+  std::int64_t hole_pixels = 0;         // RunSummary's total (0 for a policy without holes)
+  std::int64_t inpainted_pixels = 0;    // RunSummary's total (mv-extrapolation's fills)
+  int latency_frames = 0;               // the policy's (ReusePolicy::latency_frames)
+  std::int64_t pixels_written = 0;      // RunSummary::pixels, over every frame
+  std::int64_t pixels_written_p95 = 0;  // nearest-rank 95th percentile per frame, frame 0 out
+  std::int64_t pixels_written_max = 0;  // the largest per frame, frame 0 out
+  NodeCacheTotals cache;                // RunSummary's (the hierarchical-cache policy only)
 };
 PolicyRow policy_row(const PolicyRun& run);
+
+// The nearest-rank `percent` percentile of `values` (0 < percent <= 100): sorted ascending,
+// the value of rank ceil(percent / 100 x n) (1-based), that is the smallest value that at
+// least `percent` percent of the values do not exceed. 0 for no values.
+std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
 // "mean_measured_error_px", "mean_psnr_db", "mean_ssim" (null when NaN), "layer_frames",
-// "frames", "hole_pixels" and "inpainted_pixels" (totals over the frames), "latency_frames"}, for
+// "frames", "hole_pixels" and "inpainted_pixels" (totals over the frames), "latency_frames",
+// "pixels_written" (total), "pixels_written_p95" and "pixels_written_max" (per frame), for
 // the hierarchical cache "cache": node_cache_json (analysis/runs/run_driver.h), and for a budgeted
 // row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames", "mean_optimality_gap"
 // (fraction, null when no frame was checked)}.
