@@ -27,7 +27,8 @@
 // write pixels within the next kLookaheadHorizon frames by prediction (a free layer at its
 // write expiry, a writing layer at its re-render expiry) adds its cost there; the frame's
 // target T is the mean pixels per frame over the last kLookaheadHorizon frames as allocated
-// (`past`), this frame as planned and the horizon as predicted.
+// (`past`), this frame as planned and the horizon as predicted (the frame's fresh and
+// clipped renders taken to recur in each frame ahead).
 // While P is below T, the layer whose predicted write is nearest (then the lowest index) is
 // updated now, early, when that brings P nearer T (P + cost / 2 < T): a free layer at its
 // cheapest acceptable writing level (LayerCandidates::early_write), a writing layer by a
