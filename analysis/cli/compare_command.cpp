@@ -53,7 +53,7 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
   summary << ",work_saved,time_saved,model_work_saved,max_measured_error_px,"
              "mean_measured_error_px,mean_psnr_db,layer_frames,frames,frames_over_budget,"
              "starved_layer_frames,mean_optimality_gap,hole_pixels,latency_frames,mean_ssim,"
-             "inpainted_pixels\n";
+             "inpainted_pixels,pixels_written,pixels_written_p95,pixels_written_max\n";
   for (const PolicyRow& row : rows) {
     summary << row.name;
     for (double share : row.level_share) summary << ',' << 100.0 * share;
@@ -70,7 +70,8 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
     }
     summary << ',' << row.hole_pixels << ',' << row.latency_frames << ',';
     if (std::isfinite(row.mean_ssim)) summary << row.mean_ssim;
-    summary << ',' << row.inpainted_pixels << "\n";
+    summary << ',' << row.inpainted_pixels << ',' << row.pixels_written << ','
+            << row.pixels_written_p95 << ',' << row.pixels_written_max << "\n";
   }
   write_output(out, dir, "summary.csv", summary.str());
   out.commit();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -16,7 +17,79 @@ nlohmann::json finite_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
+// The per-frame peaks of the pixels written, frame 0 left out (it renders every layer).
+void set_pixel_peaks(const AnimationRun& run, PolicyRow* row) {
+  row->pixels_written = run.summary.pixels;
+  std::vector<std::int64_t> per_frame;
+  for (std::size_t i = 1; i < run.frames.size(); ++i) {
+    per_frame.push_back(run.frames[i].pixels_written);
+  }
+  row->pixels_written_p95 = nearest_rank_percentile(per_frame, 95.0);
+  row->pixels_written_max = nearest_rank_percentile(per_frame, 100.0);
+}
+
+nlohmann::json expiry_json(const ExpiryTable& t) {
+  nlohmann::json layers = nlohmann::json::array();
+  std::map<int, std::size_t> at;
+  for (const ExpiryPair& p : t.pairs) {
+    if (!at.count(p.layer)) {
+      at[p.layer] = layers.size();
+      layers.push_back({{"layer", p.layer},
+                        {"predicted", nlohmann::json::array()},
+                        {"actual", nlohmann::json::array()}});
+    }
+    nlohmann::json& l = layers[at[p.layer]];
+    l["predicted"].push_back(p.predicted);
+    l["actual"].push_back(p.actual);
+  }
+  return {{"by_rule", t.by_rule},
+          {"early", t.early},
+          {"other", t.other},
+          {"unpredicted", t.unpredicted},
+          {"exact", t.exact},
+          {"median_error_frames", finite_or_null(t.median_error_frames)},
+          {"max_error_frames", finite_or_null(t.max_error_frames)},
+          {"layers", layers}};
+}
+
 }  // namespace
+
+ExpiryTable expiry_table(const AnimationRun& run) {
+  ExpiryTable t;
+  std::vector<double> errors;
+  for (const AnimationFrame& f : run.frames) {
+    for (const FrameReport& r : f.layer_reports) {
+      const ExpiryOutcome& o = r.expiry;
+      if (!o.ended) continue;
+      if (o.early) ++t.early;
+      if (!o.by_rule && !o.early) ++t.other;
+      if (!o.by_rule) continue;
+      ++t.by_rule;
+      if (o.predicted < 0) {
+        ++t.unpredicted;
+        continue;
+      }
+      t.pairs.push_back({r.layer, o.predicted, o.actual});
+      errors.push_back(std::abs(o.predicted - o.actual));
+      t.exact += o.predicted == o.actual ? 1 : 0;
+    }
+  }
+  if (!errors.empty()) {
+    std::sort(errors.begin(), errors.end());
+    const std::size_t n = errors.size();
+    t.median_error_frames = n % 2 ? errors[n / 2] : 0.5 * (errors[n / 2 - 1] + errors[n / 2]);
+    t.max_error_frames = errors.back();
+  }
+  return t;
+}
+
+std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const double n = static_cast<double>(values.size());
+  const auto rank = static_cast<std::size_t>(std::ceil(percent * n / 100.0));
+  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
+}
 
 std::vector<PolicyRun> run_policies(const SourceKind& kind, const RunSource& source,
                                     const std::vector<const ReusePolicy*>& policies,
@@ -77,6 +150,9 @@ PolicyRow policy_row(const PolicyRun& r) {
   row.hole_pixels = s.hole_pixels;
   row.latency_frames = r.policy->latency_frames;
   row.cache = s.cache;
+  set_pixel_peaks(r.run, &row);
+  row.predicts = r.policy->spreads_updates;
+  if (row.predicts) row.expiry = expiry_table(r.run);
   double sum = 0.0;
   long count = 0;
   for (const AnimationFrame& f : r.run.frames) {
@@ -117,8 +193,12 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
                       {"frames", row.frames},
                       {"hole_pixels", row.hole_pixels},
                       {"inpainted_pixels", row.inpainted_pixels},
-                      {"latency_frames", row.latency_frames}};
+                      {"latency_frames", row.latency_frames},
+                      {"pixels_written", row.pixels_written},
+                      {"pixels_written_p95", row.pixels_written_p95},
+                      {"pixels_written_max", row.pixels_written_max}};
   if (row.cache.active) j["cache"] = node_cache_json(row.cache);
+  if (row.predicts) j["expiry"] = expiry_json(row.expiry);
   if (row.budgeted) {
     j["budget"] = {{"frames_over_budget", row.frames_over_budget},
                    {"starved_layer_frames", row.starved_layer_frames},
@@ -158,6 +238,15 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
     out << r.name << ": " << r.frames_over_budget << " frames over budget, "
         << r.starved_layer_frames << " starved layer-frames, mean optimality gap "
         << optimality_gap_text(r.mean_optimality_gap, r.gap_frames) << "\n";
+  }
+  for (const PolicyRow& r : rows) {
+    if (!r.predicts) continue;
+    const ExpiryTable& e = r.expiry;
+    out << std::setprecision(1) << r.name << ": " << e.by_rule << " expiries by the rule ("
+        << e.exact << " predicted exactly, median error " << e.median_error_frames
+        << " frames, largest " << e.max_error_frames << "), " << e.early
+        << " re-renders brought forward, " << e.other << " lives ended otherwise; pixels per "
+        << "frame p95 " << r.pixels_written_p95 << ", max " << r.pixels_written_max << "\n";
   }
   for (const PolicyRow& r : rows) {
     if (!r.cache.active) continue;

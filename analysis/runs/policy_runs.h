@@ -46,7 +46,31 @@ std::vector<const ReusePolicy*> parse_policy_list(const std::string& text);
 //   model_work_saved RunSummary's: the deterministic cost model's (core/engine/cost_model.h), as
 //                    `animate` reports it for the same policy;
 //   budget           a policy sharing a per-frame budget only: RunSummary's budget figures
-//                    (frames over budget, starved layer-frames, mean optimality gap).
+//                    (frames over budget, starved layer-frames, mean optimality gap);
+//   pixels_written   RunSummary's total over the frames, and the 95th percentile and the
+//                    largest of the per-frame pixels written (AnimationFrame::pixels_written)
+//                    over frames 1 .. n-1: frame 0 renders every layer under every policy,
+//                    so it is left out of the peaks (0 for a run of one frame).
+// Predicted against actual expiry (core/engine/lookahead.h ExpiryOutcome), over the lives of
+// every layer of a run: lives the rule ended (by_rule; with a prediction, a pair of `pairs`:
+// layer, predicted and actual frame), lives the schedule ended early, and lives ended
+// otherwise (refusals, the sampling limit, clipped or hidden frames); the median and largest
+// |predicted - actual| over the pairs, frames (NaN without pairs), and the exact pairs.
+struct ExpiryPair {
+  int layer = 0;
+  int predicted = -1;
+  int actual = -1;
+};
+struct ExpiryTable {
+  std::vector<ExpiryPair> pairs;
+  long by_rule = 0, early = 0, other = 0, unpredicted = 0;
+  long exact = 0;
+  double median_error_frames = std::numeric_limits<double>::quiet_NaN();
+  double max_error_frames = std::numeric_limits<double>::quiet_NaN();
+};
+// The table of `run`'s layer reports (every policy of the threshold rule fills them).
+ExpiryTable expiry_table(const AnimationRun& run);
+
 struct PolicyRow {
   std::string name;
   std::array<double, kLevelCount> level_share{};
@@ -64,17 +88,32 @@ struct PolicyRow {
   double mean_ssim = std::numeric_limits<double>::quiet_NaN();  // RunSummary's
   long layer_frames = 0;
   int frames = 0;
-  std::int64_t hole_pixels = 0;       // RunSummary's total (0 for a policy without holes)
-  std::int64_t inpainted_pixels = 0;  // RunSummary's total (mv-extrapolation's fills)
-  int latency_frames = 0;             // the policy's (ReusePolicy::latency_frames)
-  NodeCacheTotals cache;              // RunSummary's (the hierarchical-cache policy only)
+  std::int64_t hole_pixels = 0;         // RunSummary's total (0 for a policy without holes)
+  std::int64_t inpainted_pixels = 0;    // RunSummary's total (mv-extrapolation's fills)
+  int latency_frames = 0;               // the policy's (ReusePolicy::latency_frames)
+  std::int64_t pixels_written = 0;      // RunSummary::pixels, over every frame
+  std::int64_t pixels_written_p95 = 0;  // nearest-rank 95th percentile per frame, frame 0 out
+  std::int64_t pixels_written_max = 0;  // the largest per frame, frame 0 out
+  NodeCacheTotals cache;                // RunSummary's (the hierarchical-cache policy only)
+  // `lookahead` only (ReusePolicy::spreads_updates): its predicted against actual expiries.
+  bool predicts = false;
+  ExpiryTable expiry;
 };
 PolicyRow policy_row(const PolicyRun& run);
+
+// The nearest-rank `percent` percentile of `values` (0 < percent <= 100): sorted ascending,
+// the value of rank ceil(percent / 100 x n) (1-based), that is the smallest value that at
+// least `percent` percent of the values do not exceed. 0 for no values.
+std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
 // "mean_measured_error_px", "mean_psnr_db", "mean_ssim" (null when NaN), "layer_frames",
-// "frames", "hole_pixels" and "inpainted_pixels" (totals over the frames), "latency_frames"}, for
+// "frames", "hole_pixels" and "inpainted_pixels" (totals over the frames), "latency_frames",
+// "pixels_written" (total), "pixels_written_p95" and "pixels_written_max" (per frame), for
+// `lookahead` "expiry": {"by_rule", "early", "other", "unpredicted", "exact",
+// "median_error_frames", "max_error_frames" (null without pairs), "layers": [{"layer",
+// "predicted": [frames], "actual": [frames]}]}, for
 // the hierarchical cache "cache": node_cache_json (analysis/runs/run_driver.h), and for a budgeted
 // row "budget": {"frames_over_budget", "starved_layer_frames", "gap_frames", "mean_optimality_gap"
 // (fraction, null when no frame was checked)}.

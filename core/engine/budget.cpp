@@ -6,6 +6,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "engine/lookahead.h"
 #include "engine/wall_clock.h"
 
 namespace oflab {
@@ -255,13 +256,17 @@ bool wants_pixels(const LayerCandidates& c) {
 }  // namespace
 
 FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& budget,
-                               const LevelRates& rates,
-                               const std::vector<LayerCandidates>& layers) {
+                               const LevelRates& rates, const std::vector<LayerCandidates>& layers,
+                               const std::vector<double>& past_pixels) {
   FrameAllocation a;
   a.levels.resize(layers.size());
   a.shown.assign(layers.size(), 1);
   a.starved.assign(layers.size(), 0);
   for (std::size_t i = 0; i < layers.size(); ++i) a.levels[i] = layers[i].choice;
+  if (policy.spreads_updates) {
+    spread_updates(layers, past_pixels, a);
+    return a;
+  }
   if (!policy.shares_budget || budget.unit == FrameBudget::Unit::kNone) return a;
   std::vector<BudgetLayer> options;
   for (const LayerCandidates& c : layers) options.push_back(budget_layer(c, budget, rates));
@@ -295,7 +300,11 @@ FrameAllocation BudgetLedger::allocate(int frame, const std::vector<LayerCandida
   updates_.clear();
   const bool active = policy_->shares_budget && frame > 0;
   const FrameAllocation a =
-      allocate_frame(*policy_, active ? budget_ : FrameBudget{}, rates_, layers);
+      allocate_frame(*policy_, active ? budget_ : FrameBudget{}, rates_, layers, past_);
+  if (policy_->spreads_updates && frame > 0) {
+    past_.push_back(a.planned);
+    if (past_.size() > kLookaheadHorizon) past_.erase(past_.begin());
+  }
   if (active) {
     frame_.active = true;
     frame_.amount = budget_.amount;

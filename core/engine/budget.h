@@ -58,6 +58,14 @@ struct LayerCandidates {
   LevelPixels pixels{};             // upper bounds of the pixels each level would write
   TermArray error{};                // kChoice: error each level none..perspective leaves, px
   double extent_px = 0.0;           // kFresh: diagonal of the render's box, pixels
+  // kChoice, policies of the threshold rule (core/engine/lookahead.h): frames after this one
+  // until the layer is predicted to expire for its reuse levels (the rule re-renders it) and
+  // for its free levels (it must write pixels), if it takes its own choice; -1 when no
+  // expiry is predicted. early_write: its cheapest writing level the rule accepts now
+  // (affine, perspective, else re-render).
+  int rerender_expiry = -1;
+  int write_expiry = -1;
+  Level early_write = Level::kRerender;
 };
 
 // The upper bound of the pixels a warp into the box of `polygon` writes: the area of its
@@ -138,7 +146,10 @@ struct FrameAllocation {
   std::vector<Level> levels;
   std::vector<char> shown;
   std::vector<char> starved;
-  double planned = 0.0;  // cost of the allocation, budget units
+  double planned = 0.0;  // cost of the allocation, budget units (pixels for `lookahead`)
+  // `lookahead` (core/engine/lookahead.h spread_updates): the layers updated early, ahead of
+  // their predicted expiry; empty for every other policy.
+  std::vector<char> early;
   // Optimality gap against the optimum: for a pixel budget optimal_benefit's, otherwise (or
   // when that gives NaN) exhaustive search's with at most kExhaustiveMaxLayers competing
   // layers; NaN when not checked (more competing layers, or no budget).
@@ -147,8 +158,10 @@ struct FrameAllocation {
   // frame's time (AnimationFrame::time_ms) as they leave out the measured error.
   double check_ms = 0.0;
 };
+// `past_pixels`: the pixels allocated in the last frames, read by `lookahead` only.
 FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& budget,
-                               const LevelRates& rates, const std::vector<LayerCandidates>& layers);
+                               const LevelRates& rates, const std::vector<LayerCandidates>& layers,
+                               const std::vector<double>& past_pixels = {});
 
 // The cost of writing `pixels` at `level` in `budget`'s unit: the pixels themselves, or
 // pixels x rates.ms_per_pixel(level) for a time budget.
@@ -195,6 +208,7 @@ class BudgetLedger {
   LevelRates rates_;
   BudgetReport frame_;
   std::vector<Update> updates_;
+  std::vector<double> past_;  // `lookahead`: the last frames' planned pixels (oldest first)
 };
 
 }  // namespace oflab

@@ -89,7 +89,7 @@ void PlaneEngine::measure_fresh(const PlanePose& pose) {
     return;
   }
   c.kind = LayerCandidates::Kind::kFresh;
-  if (!policy().shares_budget) return;
+  if (!policy().shares_budget && !policy().spreads_updates) return;
   const ConvexPolygon region = framing.kind == Framing::kClipped
                                    ? project_to_pixels(camera_, framing.clipped)
                                    : transform(texture_.polygon, target_warp(pose));
@@ -101,6 +101,12 @@ void PlaneEngine::measure_fresh(const PlanePose& pose) {
 }
 
 FrameReport PlaneEngine::apply(Level level, bool shown) {
+  FrameReport report = apply_frame(level, shown);
+  track_expiry(level, report);
+  return report;
+}
+
+FrameReport PlaneEngine::apply_frame(Level level, bool shown) {
   const auto t0 = Clock::now();
   if (measured_.start) {
     frame_ = 0;
@@ -320,6 +326,75 @@ void PlaneEngine::measure_choice() {
     c.error[l] = std::max(neglected_error(m.carried, m.flow, static_cast<Level>(l)), m.pending[l]);
   }
   if (policy().shares_budget) measure_level_costs(correction, point);
+  measure_expiry();
+}
+
+void PlaneEngine::measure_expiry() {
+  Measured& m = measured_;
+  LayerCandidates& c = m.candidates;
+  if (policy().schedule != Schedule::kThreshold) return;
+  const TermArray& thresholds = settings_.thresholds;
+  LevelSet reuse{}, free{};
+  reuse[highest_reuse_level()] = true;
+  free[0] = policy().allowed[0];
+  free[1] = policy().allowed[1];
+  m.rerender_slack = level_slack(c.error, thresholds, reuse);
+  m.write_slack = level_slack(c.error, thresholds, free);
+  c.rerender_expiry = expiry_.rerender.frames_to_expiry_with(m.rerender_slack);
+  c.write_expiry = expiry_.write.frames_to_expiry_with(m.write_slack);
+  c.early_write = Level::kRerender;
+  for (Level l : {Level::kAffine, Level::kPerspective}) {
+    const int k = static_cast<int>(l);
+    if (c.feasible[k] && c.error[k] <= thresholds[k]) {
+      c.early_write = l;
+      break;
+    }
+  }
+}
+
+void PlaneEngine::track_expiry(Level allocated, FrameReport& report) {
+  ExpiryTrack& t = expiry_;
+  const Measured& m = measured_;
+  const bool choice = m.candidates.kind == LayerCandidates::Kind::kChoice && m.refusal.empty();
+  if (m.start) t = ExpiryTrack{};  // frame 0 (again): no life before it
+  if (report.visible && report.level != Level::kRerender) {
+    if (!choice || policy().schedule != Schedule::kThreshold) return;
+    t.rerender.push(m.rerender_slack);
+    if (report.level >= Level::kAffine) {
+      t.write.clear();
+    } else {
+      t.write.push(m.write_slack);
+    }
+    const int ahead = t.rerender.frames_to_expiry();
+    report.predicted_expiry = ahead > 0 ? frame_ + ahead : -1;
+    t.predicted.push_back(report.predicted_expiry);
+    return;
+  }
+  if (t.live) {
+    ExpiryOutcome& o = report.expiry;
+    o.ended = true;
+    o.by_rule = choice && m.candidates.choice == Level::kRerender;
+    o.early = choice && !o.by_rule && allocated == Level::kRerender;
+    o.actual = o.by_rule ? frame_ : -1;
+    const int made = std::max(t.start + 1, frame_ - kLookaheadHorizon);
+    const int index = made - t.start - 1;
+    if (index >= 0 && index < static_cast<int>(t.predicted.size())) {
+      o.made = made;
+      o.predicted = t.predicted[static_cast<std::size_t>(index)];
+    }
+  }
+  t = ExpiryTrack{};
+  if (!report.visible) return;
+  t.live = true;
+  t.start = frame_;
+  t.rerender.push(settings_.thresholds[highest_reuse_level()]);  // every error 0 after a render
+}
+
+int PlaneEngine::highest_reuse_level() const {
+  for (int l = static_cast<int>(Level::kPerspective); l > 0; --l) {
+    if (policy().allowed[l]) return l;
+  }
+  return 0;
 }
 
 void PlaneEngine::measure_level_costs(const Mat3& correction, const Vec2& point) {

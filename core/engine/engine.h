@@ -42,6 +42,7 @@
 #include "engine/cost_model.h"
 #include "engine/decision.h"
 #include "engine/exact_render.h"
+#include "engine/lookahead.h"
 #include "engine/reuse_policy.h"
 #include "flow/camera.h"
 #include "flow/decomposition.h"
@@ -144,6 +145,13 @@ struct FrameReport {
   // core/content/layer_content.h); 0 when re-rendered this frame, for texture content and
   // when not visible. The warps follow the geometry; this is what they cannot follow.
   double photometric_error = 0.0;
+  // The layer's predicted expiry (core/engine/lookahead.h), policies of the threshold rule:
+  // the frame in which it is predicted to expire as of this frame (absolute; -1 when none is
+  // predicted or it was rendered now), and how its life ended when this frame ended one.
+  int predicted_expiry = -1;
+  ExpiryOutcome expiry;
+  // Which layer of its animator this is: the scene polygon's index (0 for a single plane).
+  int layer = 0;
 };
 
 // The engine of one plane, driven pose by pose by its caller. Not an Animator
@@ -228,7 +236,21 @@ class PlaneEngine {
     Mat3 model{1.0};  // the model warp after this frame
     FitFiducials fit;
     int since_render = 1;
+    double rerender_slack = 0.0, write_slack = 0.0;  // core/engine/lookahead.h, this frame
   };
+  // The lives of the shown layer for lookahead's prediction (core/engine/lookahead.h): the
+  // slacks since the last render and the last pixel-writing update, the frame of the render
+  // and the expiry predicted in each frame since (absolute, -1 none).
+  struct ExpiryTrack {
+    bool live = false;
+    int start = 0;
+    SlackSeries rerender, write;
+    std::vector<int> predicted;
+  };
+  void measure_expiry();
+  int highest_reuse_level() const;  // the highest allowed level below re-render
+  void track_expiry(Level allocated, FrameReport& report);
+  FrameReport apply_frame(Level level, bool shown);
 
   // The frame's decision (engine.cpp): the measure, the choice and the hand-over to apply.
   void measure(bool start, const PlanePose* previous, const RigidMotion* motion,
@@ -318,6 +340,7 @@ class PlaneEngine {
   bool shown_ = false;
   int frame_ = 0;
   Measured measured_;
+  ExpiryTrack expiry_;
 };
 
 }  // namespace oflab

@@ -49,6 +49,23 @@ ReusePolicy hierarchical_cache() {
                    "box corners only");
 }
 
+// Section 7.5.4: the corrected rule per layer, its updates scheduled ahead of the predicted
+// expiries (core/engine/lookahead.h).
+ReusePolicy lookahead() {
+  ReusePolicy p{"lookahead",
+                "section 7.5.4: each layer's expiry predicted, updates spread ahead of it",
+                InitialView::kExact,
+                ModelUpdate::kTaylor,
+                kAllLevels,
+                threshold_choice};
+  p.spreads_updates = true;
+  return described(p,
+                   "predictive reuse (dissertation section 7.5.4; regulation after Horvitz & "
+                   "Lengyel 97): expiry predicted from the flow and its time derivative",
+                   "motion that changes faster than its derivative predicts: early updates "
+                   "then cost pixels without flattening the peaks");
+}
+
 // Frame generation by extrapolation along motion vectors (core/scene/frame_generation.h): a
 // per-pixel warp on the fixed cadence, without the new pose.
 ReusePolicy mv_extrapolation(const char* name, const char* summary, bool inpaint,
@@ -193,6 +210,7 @@ const std::vector<ReusePolicy>& reuse_policies() {
       mv_extrapolation("mv-no-inpaint",
                        "frame generation along motion vectors, disocclusions left empty", false,
                        "as mv-extrapolation, with its disocclusions left as holes"),
+      lookahead(),
   };
   return policies;
 }

@@ -18,6 +18,10 @@
 //   budget       section 7.5.2 and Horvitz & Lengyel 97: a per-frame budget (pixels or
 //                milliseconds, EngineSettings::budget) allocated over the layers by cost and
 //                benefit (core/engine/budget.h).
+// A policy that schedules ahead (core/engine/lookahead.h):
+//   lookahead    section 7.5.4: each layer's expiry predicted from its error's growth and the
+//                growth's time derivative; pixel-writing updates moved ahead of it onto
+//                frames with fewer pixels planned, so that no frame's cost peaks.
 // Today's reprojection, on a fixed cadence (render every N-th frame, warp the frames between;
 // EngineSettings::cadence; manual/policies.md "Today's reprojection"):
 //   timewarp            asynchronous timewarp: every layer by the rotation-only homography
@@ -163,6 +167,10 @@ struct ReusePolicy {
   // budget (core/engine/budget.h allocate_frame); `choose` is then what a layer would take
   // were the budget unlimited.
   bool shares_budget = false;
+  // True when the frame's layers are scheduled together ahead of their predicted expiries
+  // (core/engine/lookahead.h spread_updates): `choose` is a layer's own choice, which the
+  // schedule may bring forward (a writing level or a re-render now instead of later).
+  bool spreads_updates = false;
   // Today's reprojection (manual/policies.md): the schedule, the plane of a kFrameHomography
   // model, what the frame warp moves, and the delay it adds in frames (0 for every
   // extrapolating policy; frame generation's interpolation between two renders would be 1).

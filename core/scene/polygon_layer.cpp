@@ -102,7 +102,8 @@ PlaneEngine& SceneEngine::polygon_engine(int index) {
 LayerCandidates SceneEngine::clipped_candidates(int index) {
   LayerCandidates c;
   c.kind = LayerCandidates::Kind::kFresh;
-  if (!settings_.engine.policy->shares_budget) return c;
+  const ReusePolicy& policy = *settings_.engine.policy;
+  if (!policy.shares_budget && !policy.spreads_updates) return c;
   const ConvexPolygon& region = polygon_region(index);
   c.pixels[static_cast<int>(Level::kRerender)] = box_pixels(region);
   if (!region.empty()) {
@@ -237,6 +238,7 @@ void SceneEngine::update_polygon(int index, const ViewerPose& current, PolygonUp
   u.pixels = r.pixels_written;
   u.starved = s.starved;
   s.report = r;
+  s.report.layer = index;
   if (r.visible)
     tally.max_measured_error_px = std::max(tally.max_measured_error_px, r.measured_error_px);
   tally.update_ms += ms_since(t0);

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <numeric>
+#include <sstream>
 #include <string>
 
 #include "cli/commands.h"
@@ -201,6 +204,77 @@ TEST(CompareCommand, TextTableHasARowPerPolicyAndOutWritesTheCsvs) {
     ++lines;
   }
   EXPECT_EQ(lines, 4);  // header and three policies
+  std::filesystem::remove_all(dir);
+}
+
+// The column `name` of a per-frame CSV (`compare --out`'s POLICY.csv), as integers.
+std::vector<std::int64_t> csv_column(const std::filesystem::path& file, const std::string& name) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream header(line);
+  std::string cell;
+  int column = 0;
+  while (std::getline(header, cell, ',') && cell != name) ++column;
+  std::vector<std::int64_t> values;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    for (int c = 0; c <= column; ++c) std::getline(row, cell, ',');
+    values.push_back(std::stoll(cell));
+  }
+  return values;
+}
+
+// The nearest-rank percentile by its definition: the smallest of the values that at least
+// `percent` percent of them do not exceed.
+std::int64_t smallest_covering(const std::vector<std::int64_t>& values, double percent) {
+  std::int64_t best = std::numeric_limits<std::int64_t>::max();
+  for (std::int64_t v : values) {
+    const auto covered =
+        std::count_if(values.begin(), values.end(), [v](std::int64_t x) { return x <= v; });
+    if (100.0 * double(covered) >= percent * double(values.size())) best = std::min(best, v);
+  }
+  return best;
+}
+
+TEST(PolicyRuns, NearestRankPercentileIsTheTextbookOne) {
+  const std::vector<std::int64_t> v = {15, 20, 35, 40, 50};  // the usual worked example
+  EXPECT_EQ(nearest_rank_percentile(v, 5.0), 15);
+  EXPECT_EQ(nearest_rank_percentile(v, 30.0), 20);
+  EXPECT_EQ(nearest_rank_percentile(v, 40.0), 20);
+  EXPECT_EQ(nearest_rank_percentile(v, 50.0), 35);
+  EXPECT_EQ(nearest_rank_percentile(v, 100.0), 50);
+  EXPECT_EQ(nearest_rank_percentile({}, 95.0), 0);
+  std::vector<std::int64_t> twenty;  // 95 % of 20 is rank 19 exactly, not 20
+  for (int i = 1; i <= 20; ++i) twenty.push_back(i);
+  EXPECT_EQ(nearest_rank_percentile(twenty, 95.0), 19);
+  EXPECT_EQ(smallest_covering(twenty, 95.0), 19);
+}
+
+// pixels_written_p95 and _max are the per-frame pixels of the run's CSV, frame 0 left out,
+// computed here by the definition; pixels_written is the total over every frame.
+TEST(CompareCommand, PixelPeaksAreThePerFramePixelsWithoutFrameZero) {
+  const std::filesystem::path dir = testing::fresh_test_dir("oflab-compare-peaks");
+  std::filesystem::remove(dir);
+  const CliResult r =
+      run({"compare", "--script", "zoom-rotation", "--policies", "perspective,rerender", "--frames",
+           "24", "--repeat-timing", "1", "--json", "--out", dir.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out).at("policies");
+  for (const auto& row : rows) {
+    const auto all = csv_column(dir / (row["name"].get<std::string>() + ".csv"), "pixels_written");
+    ASSERT_EQ(all.size(), 24u);
+    const std::vector<std::int64_t> later(all.begin() + 1, all.end());
+    EXPECT_EQ(row["pixels_written"].get<std::int64_t>(),
+              std::accumulate(all.begin(), all.end(), std::int64_t{0}));
+    EXPECT_EQ(row["pixels_written_max"].get<std::int64_t>(),
+              *std::max_element(later.begin(), later.end()));
+    EXPECT_EQ(row["pixels_written_p95"].get<std::int64_t>(), smallest_covering(later, 95.0));
+  }
+  // Control: the 95th percentile is not the largest frame here (zoom-rotation's frames grow),
+  // so the two fields are computed apart.
+  EXPECT_LT(rows[0]["pixels_written_p95"].get<std::int64_t>(),
+            rows[0]["pixels_written_max"].get<std::int64_t>());
   std::filesystem::remove_all(dir);
 }
 

@@ -1,0 +1,119 @@
+// The `lookahead` policy's prediction and schedule (core/engine/lookahead.h), against
+// independent computations: the slack of a quadratic evaluated directly, and schedules
+// worked by hand.
+#include "engine/lookahead.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/reuse_policy.h"
+
+namespace oflab {
+namespace {
+
+// The first t > t0 at which s(t) = a + b t + c t^2 is negative, by evaluating it.
+int first_negative(double a, double b, double c, int t0) {
+  for (int t = t0 + 1; t < t0 + 1000; ++t) {
+    if (a + b * t + c * t * t < 0.0) return t;
+  }
+  return -1;
+}
+
+TEST(Lookahead, PredictionIsExactForAQuadraticSlack) {
+  const struct {
+    double a, b, c;
+  } cases[] = {{1.01, -0.01, -0.002}, {1.0, -0.13, 0.0}, {0.81, 0.02, -0.003}, {1.0, -0.2, 0.004}};
+  for (const auto& q : cases) {
+    for (int t0 = 2; t0 < 12; ++t0) {
+      SlackSeries s;
+      for (int t = t0 - 2; t <= t0; ++t) s.push(q.a + q.b * t + q.c * t * t);
+      const int expected = first_negative(q.a, q.b, q.c, t0);
+      const int ahead = s.frames_to_expiry();
+      EXPECT_EQ(ahead < 0 ? -1 : t0 + ahead, expected)
+          << q.a << " " << q.b << " " << q.c << " " << t0;
+    }
+  }
+}
+
+TEST(Lookahead, TwoSamplesExtrapolateLinearlyAndOneSampleNothing) {
+  SlackSeries s;
+  s.push(1.0);
+  EXPECT_EQ(s.frames_to_expiry(), -1);
+  EXPECT_EQ(s.frames_to_expiry_with(0.75), 4);  // 0.5, 0.25, 0.0 (not negative), then -0.25
+  s.push(0.75);
+  EXPECT_EQ(s.frames_to_expiry(), 4);
+  // A slack that grows never expires.
+  SlackSeries growing;
+  growing.push(0.5);
+  growing.push(0.6);
+  EXPECT_EQ(growing.frames_to_expiry(), -1);
+}
+
+TEST(Lookahead, LevelSlackIsTheBestAcceptedLevelsMargin) {
+  const TermArray error{3.0, 0.9, 0.4, 0.1}, thresholds{1.0, 1.0, 0.5, 1.0};
+  EXPECT_DOUBLE_EQ(level_slack(error, thresholds, {true, true, false, false, false}), 0.1);
+  EXPECT_DOUBLE_EQ(level_slack(error, thresholds, {false, false, true, true, false}), 0.9);
+  EXPECT_LT(level_slack(error, thresholds, {false, false, false, false, true}), -1e300);
+}
+
+LayerCandidates choice(Level level, int write_expiry, std::int64_t pixels) {
+  LayerCandidates c;
+  c.kind = LayerCandidates::Kind::kChoice;
+  c.choice = level;
+  c.write_expiry = write_expiry;
+  c.early_write = Level::kAffine;
+  c.pixels = estimate_level_pixels(pixels, pixels);
+  return c;
+}
+
+FrameAllocation own_choices(const std::vector<LayerCandidates>& layers) {
+  FrameAllocation a;
+  for (const LayerCandidates& c : layers) a.levels.push_back(c.choice);
+  return a;
+}
+
+// An empty frame before a peak: the layers due next frame are moved into it, nearest first,
+// until the frame holds about the mean of the frame and its horizon; a layer due beyond the
+// horizon, or with no prediction, stays.
+TEST(Lookahead, ALightFrameTakesTheNearestPredictedWritesUpToTheMean) {
+  const std::vector<LayerCandidates> layers = {choice(Level::kTranslate, 1, 100),
+                                               choice(Level::kTranslate, 1, 100),
+                                               choice(Level::kTranslate, 1, 100),
+                                               choice(Level::kTranslate, 2, 100),
+                                               choice(Level::kNone, kLookaheadHorizon + 1, 100),
+                                               choice(Level::kTranslate, -1, 100)};
+  FrameAllocation a = own_choices(layers);
+  spread_updates(layers, {}, a);
+  // Planned 0, predicted 400 over the horizon: the mean of 4 frames is 100, one layer.
+  EXPECT_EQ(a.levels[0], Level::kAffine);
+  EXPECT_EQ(a.early[0], 1);
+  for (std::size_t i = 1; i < layers.size(); ++i) {
+    EXPECT_EQ(a.levels[i], layers[i].choice) << i;
+    EXPECT_EQ(a.early[i], 0) << i;
+  }
+  EXPECT_DOUBLE_EQ(a.planned, 100.0);
+  // Control: after heavy frames the target rises to (1200 + 400) / 7 = 229: two layers move.
+  FrameAllocation b = own_choices(layers);
+  spread_updates(layers, {400.0, 400.0, 400.0}, b);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ(b.levels[i], i < 2 ? Level::kAffine : Level::kTranslate) << i;
+  EXPECT_EQ(b.levels[4], Level::kNone);
+}
+
+// A frame already over the mean moves nothing; and only `lookahead` schedules ahead.
+TEST(Lookahead, AHeavyFrameMovesNothingAndOnlyLookaheadSpreads) {
+  const std::vector<LayerCandidates> layers = {choice(Level::kAffine, -1, 1000),
+                                               choice(Level::kTranslate, 1, 100)};
+  FrameAllocation a = own_choices(layers);
+  spread_updates(layers, {}, a);
+  EXPECT_EQ(a.levels[1], Level::kTranslate);
+  for (const ReusePolicy& p : reuse_policies()) {
+    EXPECT_EQ(p.spreads_updates, std::string(p.name) == "lookahead") << p.name;
+  }
+  const std::vector<LayerCandidates> light(4, choice(Level::kTranslate, 1, 100));
+  EXPECT_EQ(allocate_frame(reuse_policy("perspective"), {}, {}, light).levels[0],
+            Level::kTranslate);
+  EXPECT_EQ(allocate_frame(reuse_policy("lookahead"), {}, {}, light).levels[0], Level::kAffine);
+}
+
+}  // namespace
+}  // namespace oflab
