@@ -21,6 +21,7 @@ struct PolicyRun {
   const ReusePolicy* policy = nullptr;
   AnimationRun run;
   std::vector<ViewerPose> views;  // per frame, what the frame showed (RunOptions::on_view)
+  int cadence = 2;                // the run's EngineSettings::cadence
 };
 
 // Plays `source` once per policy with the kind's play ("plane" or "scene": the policy goes
@@ -66,7 +67,7 @@ struct PolicyRow {
   int frames = 0;
   std::int64_t hole_pixels = 0;       // RunSummary's total (0 for a policy without holes)
   std::int64_t inpainted_pixels = 0;  // RunSummary's total (mv-extrapolation's fills)
-  int latency_frames = 0;             // the policy's (ReusePolicy::latency_frames)
+  int latency_frames = 0;             // the policy's at the run's cadence (latency_frames)
   NodeCacheTotals cache;              // RunSummary's (the hierarchical-cache policy only)
 };
 PolicyRow policy_row(const PolicyRun& run);
