@@ -69,9 +69,10 @@ std::vector<const ReusePolicy*> reprojection_policies();
 std::vector<const ReusePolicy*> one_motion_policies();
 
 // Times each policy of one_motion_policies() on four cubes under translate, the script's camera
-// widened to width x height at the same vertical field of view, on one thread (the worker
-// threads are restored after): the first 9 frames (at cadence 2 four frames between renders).
-// Throws what the readers and the scene engine throw.
+// widened to width x height at the same vertical field of view, guard band 0.05 (SceneSettings:
+// the default 0.5 puts four cubes over the scene memory limit at 1920 x 1080), on one thread
+// (the worker threads are restored after): the first 9 frames (at cadence 2 four frames between
+// renders). Throws what the readers and the scene engine throw.
 std::vector<MethodTiming> time_one_motion(int width, int height, int cadence);
 
 // The Experiment 2 scenes (single-1, two, five-collinear, four-cubes) under translate, zoom
