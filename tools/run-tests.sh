@@ -32,12 +32,12 @@ xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" \
 stage_done "tests"
 
 # The browser page (manual/web.md): emscripten and chromium installed when missing, the page
-# built, the golden outputs checked against this build's oflab-cli, then the page's self-test,
-# screenshots and speed in headless Chromium.
+# built, the golden outputs checked against this build's oflab-cli, then the page's self-test
+# (its views' frame rates among it) and screenshots in headless Chromium. The page's benchmark
+# (`node tests/web/web_test.js --bench`) is run by hand for manual/web.md's figures.
 bash tools/build-web.sh
 node tests/web/make_golden.js --check build/analysis/oflab-cli
 node tests/web/web_test.js --out build-web/test-failures
-node tests/web/web_test.js --bench
 stage_done "browser"
 
 # The sanitized tree: OFLAB_HEADLESS (core, analysis, oflab-cli and their tests; no Qt, GUI
@@ -64,9 +64,10 @@ cmake --build build-sanitize -j"$jobs"
 # - the quick experiments report (ExperimentsCommand.QuickRun..., 137 s): each experiment's
 #   own tests and the report and chart tests cover it;
 # - the published-figure checks of experiments 1 and 2 (Experiment1Published.*,
-#   Experiment2Published.*: 90 s of whole experiment runs in the main suite, several times
-#   that under the sanitizers): numbers against the dissertation's tables, whose code paths the
-#   engines' and experiments' smaller tests run under the sanitizers;
+#   Experiment2Published.*, the one test analysis.experiments_published_figures; whole
+#   experiment runs, several times longer under the sanitizers): numbers against the
+#   dissertation's tables, whose code paths the engines' and experiments' smaller tests run
+#   under the sanitizers;
 # - the threshold study's simulated-observer statistics (StudySimulation.*, 8 s here, several
 #   times that sanitized): the trial loop, methods, fit and bootstrap they run are run there
 #   by the study's smaller tests and `study simulate`'s golden test;
@@ -87,7 +88,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" \
   ctest --test-dir build-sanitize --output-on-failure --timeout 1200 -j"$jobs" \
   -LE 'soak|address-space-limit' \
-  -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart|Experiment[12]Published\.|StudySimulation\.|Lab.EveryEngineClaimOfEveryLesson|Reprojection.DepthReprojectionHasHoles|Reprojection.SummariesAndThePerFrameCsv|FrameGenerationCommand.RunsOnEveryShippedSceneAndViewerScript'
+  -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart|Experiment[12]Published\.|analysis.experiments_published_figures|StudySimulation\.|Lab.EveryEngineClaimOfEveryLesson|Reprojection.DepthReprojectionHasHoles|Reprojection.SummariesAndThePerFrameCsv|FrameGenerationCommand.RunsOnEveryShippedSceneAndViewerScript'
 stage_done "sanitizers"
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
