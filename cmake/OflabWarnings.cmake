@@ -7,3 +7,12 @@ function(oflab_target_defaults target)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
 endfunction()
+
+# oflab_test_target_defaults(<target>): oflab_target_defaults, and a test program's own files
+# compiled at -O1 in the optimised builds: optimising test code at -O3 took about 40 % of
+# its compile time for nothing the tests measure (the libraries they test keep -O3, and
+# GCC's -O levels give the same floating-point results: ISO C++ mode, no contraction).
+function(oflab_test_target_defaults target)
+  oflab_target_defaults(${target})
+  target_compile_options(${target} PRIVATE $<$<CONFIG:Release,RelWithDebInfo,MinSizeRel>:-O1>)
+endfunction()

@@ -61,7 +61,9 @@ std::vector<ViewPage*> shown_views(MainWindow* window) {
 // The percent of its panel what a view in front draws covers, the smallest over them: the
 // animation view's exact panel (the exact frame's content as drawn), the flow view's scene
 // region (the plane's image), the world view's picture between its legend and caption (the hull of
-// the plane or the scene, the eye and its image plane); NaN when none of them is in front.
+// the plane or the scene, the eye and its image plane), the basis view's tiles (the smallest
+// share of a tile inside its deformed square) or, with the explorer, its deformation picture
+// (inside the deformed texture rectangle); NaN when none of them is in front.
 double panel_fill(MainWindow* window) {
   double smallest = kUnknown;
   for (ViewPage* page : shown_views(window)) {
@@ -73,6 +75,8 @@ double panel_fill(MainWindow* window) {
       fill = flow->plane_share();
     } else if (auto* world = qobject_cast<WorldView*>(page)) {
       fill = world->drawn_share();
+    } else if (auto* basis = qobject_cast<BasisView*>(page)) {
+      fill = basis->drawn_share();
     }
     if (!std::isnan(fill))
       smallest = std::isnan(smallest) ? 100.0 * fill : std::min(smallest, 100.0 * fill);

@@ -13,10 +13,10 @@ namespace {
 
 constexpr int kTileCount = 12;
 constexpr int kColumns = 6;
-constexpr int kGridLines = 9;       // lines per direction: 8 x 8 cells over [-1, 1]^2
-constexpr int kLineSamples = 33;    // points per grid line
-constexpr double kMaxShift = 0.5;   // displacement at amount 1, in half-tile units
-constexpr double kHalfView = 1.75;  // half-height of a tile's view, in half-tile units
+constexpr int kGridLines = 9;         // lines per direction: 8 x 8 cells over [-1, 1]^2
+constexpr int kLineSamples = 33;      // points per grid line
+constexpr double kMaxShift = 0.5;     // displacement at amount 1, in half-tile units
+constexpr double kSideMargin = 0.04;  // of a tile's width, left and right of its grid
 
 // Tile index -> (row from the top, column): rows of 2, 4 and 6 tiles, centred.
 void tile_cell(int index, int* row, int* column) {
@@ -70,13 +70,38 @@ double unit_normaliser(const TaylorTerms& unit) {
   return largest > 0.0 ? 1.0 / largest : 0.0;
 }
 
+// The region inside a deformed grid's outer lines (deformed_grid's order), as one polygon.
+QPolygonF grid_outline(const std::vector<QPolygonF>& lines) {
+  if (lines.size() < size_t(2 * kGridLines)) return {};
+  const QPolygonF& left = lines[0];
+  const QPolygonF& bottom = lines[size_t(2 * kGridLines - 1)];
+  const QPolygonF& right = lines[size_t(kGridLines - 1)];
+  const QPolygonF& top = lines[size_t(kGridLines)];
+  QPolygonF outline = left;
+  outline << bottom;
+  for (int i = right.size() - 1; i >= 0; --i) outline << right[i];
+  for (int i = top.size() - 1; i >= 0; --i) outline << top[i];
+  return outline;
+}
+
+double polygon_area(const QPolygonF& polygon) {
+  double twice = 0.0;
+  for (int i = 0; i < polygon.size(); ++i) {
+    const QPointF& a = polygon[i];
+    const QPointF& b = polygon[(i + 1) % polygon.size()];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
 }  // namespace
 
 BasisTiles::BasisTiles() : theme_(view_theme(false)), tiles_(kTileCount) {}
 
 void BasisTiles::set_theme(const ViewTheme& theme) { theme_ = theme; }
 
-void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_px, double amount) {
+void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_px, double amount,
+                        double framed_amount) {
   const std::vector<BasisTerm> terms = basis_terms(kind);
   active_count_ = 0;
   for (size_t i = 0; i < tiles_.size() && i < terms.size(); ++i) {
@@ -87,9 +112,13 @@ void BasisTiles::update(BasisKind kind, const TaylorTerms& flow, double radius_p
     tile.order = term.order;
     active_count_ += tile.active ? 1 : 0;
     const double sign = tile.active && value < 0.0 ? -1.0 : 1.0;
-    const double scale =
-        sign * std::clamp(amount, 0.0, 1.0) * kMaxShift * unit_normaliser(term.unit);
-    tile.grid = deformed_grid(term.unit, scale);
+    const double unit = sign * kMaxShift * unit_normaliser(term.unit);
+    tile.grid = deformed_grid(term.unit, std::clamp(amount, 0.0, 1.0) * unit);
+    const QRectF framed =
+        grid_outline(deformed_grid(term.unit, std::clamp(framed_amount, 0.0, 1.0) * unit))
+            .boundingRect();
+    tile.reach = QPointF(std::max({1.0, -framed.left(), framed.right()}),
+                         std::max({1.0, -framed.top(), framed.bottom()}));
     tile.title = term.symbol;
     tile.value = tile.active ? QString::number(value, 'g', 3).toStdString() : std::string("0");
     tile.unit = tile.active ? order_unit(term.order) : "(zero)";
@@ -107,6 +136,38 @@ double BasisTiles::smallest_text_px() const {
   return std::min(title_font_size(), value_font_size());
 }
 
+double BasisTiles::smallest_fill() const {
+  if (painted_size_.isEmpty()) return 0.0;
+  double smallest = 1.0;
+  for (int i = 0; i < kTileCount; ++i) {
+    const QRectF cell = cell_rect(i, painted_size_);
+    const Tile& tile = tiles_[size_t(i)];
+    const QPolygonF drawn = to_cell(cell, tile.reach).map(grid_outline(tile.grid));
+    const double area = polygon_area(drawn.intersected(QPolygonF(cell)));
+    smallest = std::min(smallest, area / (cell.width() * cell.height()));
+  }
+  return smallest;
+}
+
+QRectF BasisTiles::cell_rect(int index, const QSizeF& size) {
+  int row = 0, column = 0;
+  tile_cell(index, &row, &column);
+  const double w = size.width() / kColumns, h = size.height() / 3.0;
+  return QRectF(column * w, row * h, w, h);
+}
+
+// The grid at the framed amount reaches `reach` half-tiles from the centre; it fills the cell's
+// width but its side margins and its height but the title band above and the value band below.
+QTransform BasisTiles::to_cell(const QRectF& cell, const QPointF& reach) const {
+  const double band = 1.25 * title_font_size() + 0.03 * cell.height();
+  const double scale = std::max(0.0, std::min((0.5 - kSideMargin) * cell.width() / reach.x(),
+                                              (0.5 * cell.height() - band) / reach.y()));
+  QTransform transform;
+  transform.translate(cell.center().x(), cell.center().y());
+  transform.scale(scale, scale);
+  return transform;
+}
+
 const QImage& BasisTiles::paint(const QSize& wanted) {
   const QSize size = wanted.expandedTo(QSize(1, 1));
   QImage& image = buffers_[next_buffer_];
@@ -114,28 +175,16 @@ const QImage& BasisTiles::paint(const QSize& wanted) {
   if (image.size() != size) image = QImage(size, QImage::Format_RGB32);
   image.fill(to_qcolor(theme_.background));  // the cells without a tile
   QPainter painter(&image);
-  const double w = double(size.width()) / kColumns, h = size.height() / 3.0;
-  for (int i = 0; i < kTileCount; ++i) {
-    int row = 0, column = 0;
-    tile_cell(i, &row, &column);
-    paint_tile(painter, tiles_[size_t(i)], QRectF(column * w, row * h, w, h));
-  }
+  for (int i = 0; i < kTileCount; ++i) paint_tile(painter, tiles_[size_t(i)], cell_rect(i, size));
+  painted_size_ = size;
   return image;
 }
 
 // One tile: its background, the undeformed square, the deformed grid (half-tile units,
-// Y down, kHalfView half-tile units from the centre to the nearer edge), the symbol at the
-// top left and the value at the bottom left.
+// Y down, framed by to_cell), the symbol at the top left and the value at the bottom left.
 void BasisTiles::paint_tile(QPainter& painter, const Tile& tile, const QRectF& cell) const {
   painter.fillRect(cell, to_qcolor(tile.active ? theme_.tile_background : theme_.muted_background));
-  // A short tile (the explorer's small gallery) shrinks its grid so that the grid, deformed
-  // by at most 1 + kMaxShift half-tiles, stays clear of the value and title bands.
-  const double band = value_font_size() + 0.03 * cell.height();
-  const double scale = std::min(0.5 * std::min(cell.width(), cell.height()) / kHalfView,
-                                (0.5 * cell.height() - band) / (1.0 + kMaxShift));
-  QTransform to_cell;
-  to_cell.translate(cell.center().x(), cell.center().y());
-  to_cell.scale(scale, scale);
+  const QTransform to_cell = this->to_cell(cell, tile.reach);
   painter.save();
   painter.setClipRect(cell);
   painter.setRenderHint(QPainter::Antialiasing, true);

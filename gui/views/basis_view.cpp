@@ -198,7 +198,7 @@ void BasisView::update_tiles() {
   }
   const FlowContext context =
       make_flow_context(scene.camera, model_->current_pose(), model_->current_motion());
-  tiles_->update(basis(), context.terms, radius, animated_amount());
+  tiles_->update(basis(), context.terms, radius, animated_amount(), amount());
   int second_order_active = 0;
   const std::vector<BasisTerm> terms = basis_terms(basis());
   for (const BasisTerm& term : terms) {
@@ -224,7 +224,7 @@ void BasisView::update_tiles() {
 // The planar gallery of the explorer's terms: a tile lights up while its term is dialled.
 void BasisView::update_explorer_tiles(double radius) {
   const TaylorTerms terms = taylor_terms(explorer_coefficients(window_->explorer_terms()));
-  tiles_->update(BasisKind::kPlanar, terms, radius, animated_amount());
+  tiles_->update(BasisKind::kPlanar, terms, radius, animated_amount(), amount());
   summary_->setText(tr("Explorer: %1 of the 8 planar terms are dialled; their tiles in the "
                        "gallery light up. The four second-order tiles that no plane makes stay "
                        "grey.")
@@ -251,6 +251,11 @@ QImage BasisView::render_image() {
   if (dirty_) update_tiles();
   paint_canvas();
   return canvas_->image();
+}
+
+double BasisView::drawn_share() {
+  render_image();
+  return explorer_shown() ? explorer_->deformation_fill() : tiles_->smallest_fill();
 }
 
 double BasisView::smallest_text_px() const {

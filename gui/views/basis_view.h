@@ -53,6 +53,13 @@ class BasisView : public ViewPage {
   // 1 when the tile of the term with this symbol ("scale", "px", ...) is lit after the last
   // update, 0 when grey, NaN when the gallery has no such tile.
   double tile_active(const std::string& symbol) const;
+  // The share (0..1) of its panel that what the view draws covers, as drawn now (it renders
+  // first): without the explorer, the smallest over the gallery's 12 tiles of the share of the
+  // tile inside its deformed square (BasisTiles::smallest_fill); with it, the share of the
+  // explorer's deformation picture under its caption inside the deformed texture rectangle
+  // (ExplorerPanel::deformation_fill; the explorer's small gallery there is an index of the
+  // dialled terms and is not measured). The basis view's panel_fill.
+  double drawn_share();
   // The line under the tiles; it starts by saying so when the plane is outside the image.
   QString summary() const;
   // The grids' displacement now: while playing it swings between 35 % and 100 % of

@@ -307,6 +307,12 @@ void ExplorerPanel::paint() {
   paint_futures();
 }
 
+double ExplorerPanel::deformation_fill() const {
+  if (!deformation_->isVisible()) return 0.0;
+  return explorer_deformation_fill(explorer_deformation(window_->explorer_terms()),
+                                   window_->scene()->scene().camera, deformation_->size(), theme_);
+}
+
 void ExplorerPanel::paint_futures() {
   futures_->set_image(paint_explorer_futures(result_, futures_frame_, window_->scene()->texture(),
                                              window_->scene()->scene().camera, futures_->size(),

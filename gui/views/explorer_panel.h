@@ -65,6 +65,9 @@ class ExplorerPanel : public QObject {
   // (text_problems of gui/adapters/painted_text.h), and a label (the title, the solutions,
   // the futures' line) shorter than its wrapped text needs or reaching past its column.
   std::vector<QString> text_problems() const;
+  // The share (0..1) of the deformation picture under its caption that the deformed texture
+  // rectangle covers, at the canvas's size (explorer_deformation_fill); 0 while it is hidden.
+  double deformation_fill() const;
   // The smallest text of the painted pictures, pixels.
   double smallest_text_px() const { return theme_.label_size; }
 

@@ -54,21 +54,24 @@ QRectF texture_rect(const Camera& camera) {
                 0.5 * camera.height);
 }
 
-// Fills the image frame's pixels of `image` with the texture carried by `deformation`:
-// each pixel's centred position taken back through the inverse homography, nearest texel.
+// Fills the pixels of `region` (canvas pixels) with the texture carried by `deformation`:
+// each pixel's centred position (`to_screen`'s inverse) taken back through the inverse
+// homography, nearest texel; `empty` where no texel lands.
 void warp_texture(QImage& image, const QImage& texture, const Mat3& deformation,
-                  const QRectF& frame, double scale, const QRectF& rect, QRgb empty) {
+                  const QTransform& to_screen, const QRectF& region, const QRectF& rect,
+                  QRgb empty) {
   const Mat3 back = glm::inverse(deformation);
+  const QTransform to_centred = to_screen.inverted();
   const QImage source = texture.convertToFormat(QImage::Format_RGB32);
-  const int top = std::max(0, int(frame.top())),
-            bottom = std::min(image.height(), int(frame.bottom()));
-  const int left = std::max(0, int(frame.left())),
-            right = std::min(image.width(), int(frame.right()));
+  const int top = std::max(0, int(region.top())),
+            bottom = std::min(image.height(), int(std::ceil(region.bottom())));
+  const int left = std::max(0, int(region.left())),
+            right = std::min(image.width(), int(std::ceil(region.right())));
   for (int y = top; y < bottom; ++y) {
     auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
     for (int x = left; x < right; ++x) {
-      const Vec2 q((x + 0.5 - frame.center().x()) / scale, (y + 0.5 - frame.center().y()) / scale);
-      const Vec3 h = back * Vec3(q, 1.0);
+      const QPointF c = to_centred.map(QPointF(x + 0.5, y + 0.5));
+      const Vec3 h = back * Vec3(c.x(), c.y(), 1.0);
       QRgb colour = empty;
       if (h.z > 0.0) {
         const double u = (h.x / h.z - rect.left()) / rect.width();
@@ -84,39 +87,96 @@ void warp_texture(QImage& image, const QImage& texture, const Mat3& deformation,
   }
 }
 
+QString deformation_caption() {
+  return QObject::tr("After %1 s of this flow (dashed: the start)").arg(kDeformationSeconds);
+}
+
+// The texture rectangle's corners carried by `deformation` (centred pixels), in order; false
+// when one of them goes behind (w <= 0), the quad then not a picture of the rectangle.
+bool deformed_quad(const Mat3& deformation, const QRectF& rect, QPolygonF* quad) {
+  for (const QPointF& c :
+       {rect.topLeft(), rect.topRight(), rect.bottomRight(), rect.bottomLeft()}) {
+    const Vec3 h = deformation * Vec3(c.x(), c.y(), 1.0);
+    if (!(h.z > 0.0)) return false;
+    *quad << QPointF(h.x / h.z, h.y / h.z);
+  }
+  return true;
+}
+
+double polygon_area(const QPolygonF& polygon) {
+  double twice = 0.0;
+  for (int i = 0; i < polygon.size(); ++i) {
+    const QPointF& a = polygon[i];
+    const QPointF& b = polygon[(i + 1) % polygon.size()];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
 }  // namespace
 
-QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
-                                  const Camera& camera, const QSize& size, const ViewTheme& theme) {
-  QImage image = blank(size, theme);
-  const double margin = 6.0;
-  const QString caption_text =
-      QObject::tr("After %1 s of this flow (dashed: the start)").arg(kDeformationSeconds);
+DeformationFraming explorer_deformation_framing(const Mat3& deformation, const Camera& camera,
+                                                const QSize& size, const ViewTheme& theme) {
+  constexpr double kMargin = 6.0, kContentMargin = 0.03;
+  const QSize canvas = size.expandedTo(QSize(1, 1));
   QFont bold;
   bold.setPixelSize(theme.label_size);
   bold.setBold(true);
   // As tall as the caption's wrapped lines need at this width, and a little room.
   const QRect wrapped = QFontMetrics(bold).boundingRect(
-      QRect(0, 0, std::max(1, int(image.width() - 2 * margin)), 100000), Qt::TextWordWrap,
-      caption_text);
-  const double caption = wrapped.height() + 0.6 * theme.label_size;
-  const double scale = std::min((image.width() - 2 * margin) / camera.width,
-                                (image.height() - 2 * margin - caption) / camera.height);
-  if (!(scale > 0.0)) return image;
-  const QRectF frame(0.5 * (image.width() - scale * camera.width),
-                     caption + 0.5 * (image.height() - caption - scale * camera.height),
-                     scale * camera.width, scale * camera.height);
+      QRect(0, 0, std::max(1, int(canvas.width() - 2 * kMargin)), 100000), Qt::TextWordWrap,
+      deformation_caption());
+  DeformationFraming framing;
+  framing.caption = wrapped.height() + 0.6 * theme.label_size;
+  framing.picture = QRectF(kMargin, framing.caption, canvas.width() - 2 * kMargin,
+                           canvas.height() - framing.caption - kMargin);
+  // What is framed: the texture rectangle before and after, grown a little, within the image.
+  const QRectF image(-0.5 * camera.width, -0.5 * camera.height, camera.width, camera.height);
   const QRectF rect = texture_rect(camera);
-  warp_texture(image, texture, deformation, frame, scale, rect,
+  QPolygonF quad;
+  QRectF content = image;
+  if (deformed_quad(deformation, rect, &quad)) {
+    const QRectF both = rect.united(quad.boundingRect());
+    content = both.adjusted(-kContentMargin * both.width(), -kContentMargin * both.height(),
+                            kContentMargin * both.width(), kContentMargin * both.height())
+                  .intersected(image);
+    if (content.isEmpty()) content = image;
+  }
+  framing.scale = std::min(framing.picture.width() / content.width(),
+                           framing.picture.height() / content.height());
+  if (!(framing.scale > 0.0)) return framing;
+  framing.to_screen.translate(framing.picture.center().x(), framing.picture.center().y());
+  framing.to_screen.scale(framing.scale, framing.scale);
+  framing.to_screen.translate(-content.center().x(), -content.center().y());
+  framing.frame = framing.to_screen.mapRect(image);
+  return framing;
+}
+
+double explorer_deformation_fill(const Mat3& deformation, const Camera& camera, const QSize& size,
+                                 const ViewTheme& theme) {
+  const DeformationFraming framing = explorer_deformation_framing(deformation, camera, size, theme);
+  QPolygonF quad;
+  if (!(framing.scale > 0.0) || !deformed_quad(deformation, texture_rect(camera), &quad))
+    return 0.0;
+  const QPolygonF seen = framing.to_screen.map(quad).intersected(
+      QPolygonF(framing.frame.intersected(framing.picture)));
+  return polygon_area(seen) / (framing.picture.width() * framing.picture.height());
+}
+
+QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
+                                  const Camera& camera, const QSize& size, const ViewTheme& theme) {
+  QImage image = blank(size, theme);
+  const DeformationFraming framing = explorer_deformation_framing(deformation, camera, size, theme);
+  if (!(framing.scale > 0.0)) return image;
+  const QRectF shown = framing.frame.intersected(framing.picture);
+  const QRectF rect = texture_rect(camera);
+  warp_texture(image, texture, deformation, framing.to_screen, shown, rect,
                to_qcolor(theme.image_background).rgb());
   QPainter painter(&image);
   painter.setRenderHint(QPainter::Antialiasing, true);
-  QTransform to_screen;
-  to_screen.translate(frame.center().x(), frame.center().y());
-  to_screen.scale(scale, scale);
-  painter.setClipRect(frame);
+  painter.setClipRect(shown);
   painter.setPen(QPen(to_qcolor(theme.muted), 1.0, Qt::DashLine));
-  painter.drawRect(to_screen.mapRect(rect));
+  painter.drawRect(framing.to_screen.mapRect(rect));
   painter.setPen(QPen(to_qcolor(order_colour(1)), theme.line_width + 0.5));
   for (int direction = 0; direction < 2; ++direction) {
     for (int k = 0; k < kGridLines; ++k) {
@@ -127,18 +187,21 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
                            ? Vec2(rect.left() + a * rect.width(), rect.top() + b * rect.height())
                            : Vec2(rect.left() + b * rect.width(), rect.top() + a * rect.height());
         const Vec2 moved = apply_homography(deformation, p);
-        line << to_screen.map(QPointF(moved.x, moved.y));
+        line << framing.to_screen.map(QPointF(moved.x, moved.y));
       }
       painter.drawPolyline(line);
     }
   }
+  // The image's border where it is in the picture (zoomed in, it may lie beyond).
+  const double pen = theme.line_width;
+  painter.setClipRect(framing.picture.adjusted(-pen, -pen, pen, pen));
+  painter.setPen(QPen(to_qcolor(theme.outline), pen));
+  painter.drawRect(framing.frame);
   painter.setClipping(false);
-  painter.setPen(QPen(to_qcolor(theme.outline), theme.line_width));
-  painter.drawRect(frame);
   painter.setPen(to_qcolor(theme.text));
   set_font(painter, theme.label_size, true);
-  painter.drawText(QRectF(margin, 0, image.width() - 2 * margin, caption),
-                   Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption_text);
+  painter.drawText(QRectF(framing.picture.left(), 0, framing.picture.width(), framing.caption),
+                   Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, deformation_caption());
   return image;
 }
 

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <QImage>
+#include <QRectF>
 #include <QSize>
+#include <QTransform>
 
 class QPainter;
 
@@ -14,10 +16,33 @@ class QPainter;
 
 namespace oflab {
 
+// Where paint_explorer_deformation draws on a picture of `size` pixels: a caption band of
+// `caption` pixels on top, the picture under it (6 px from the sides and the bottom), and the
+// camera image (centred pixels) mapped by `to_screen` (a uniform `scale`, canvas pixels per
+// camera pixel) onto `frame`, canvas pixels. The framing zooms so that the texture rectangle
+// before and after `deformation`, grown by 3 % on every side and within the camera image,
+// fills the picture and sits at its centre; the image's frame may then reach past the
+// picture. A rectangle carried behind the eye frames the whole image. scale is 0 when the
+// picture is empty.
+struct DeformationFraming {
+  double caption = 0.0;
+  QRectF picture, frame;
+  QTransform to_screen;
+  double scale = 0.0;
+};
+DeformationFraming explorer_deformation_framing(const Mat3& deformation, const Camera& camera,
+                                                const QSize& size, const ViewTheme& theme);
+
+// The share (0..1) of that picture the texture rectangle carried by `deformation` covers
+// (inside the image's frame): the explorer's panel_fill. 0 when the rectangle goes behind the
+// eye or the picture is empty.
+double explorer_deformation_fill(const Mat3& deformation, const Camera& camera, const QSize& size,
+                                 const ViewTheme& theme);
+
 // The camera image (its frame), the texture rectangle (the middle half of the image in each
 // direction, centred pixels) carried by `deformation` (centred pixels to centred pixels,
 // explorer_deformation), a grid of 8 x 8 cells on it deformed the same way, the undeformed
-// rectangle's outline, and a caption naming the time.
+// rectangle's outline, and a caption naming the time, framed by explorer_deformation_framing.
 QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation,
                                   const Camera& camera, const QSize& size, const ViewTheme& theme);
 

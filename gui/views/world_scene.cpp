@@ -25,8 +25,6 @@ namespace {
 
 RgbF rgbf(const Rgb8& c) { return {c.r / 255.0, c.g / 255.0, c.b / 255.0}; }
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The viewer script a scene source plays, or nullptr for other animators.
 const ViewerScript* viewer_script_of(const Animator* animator) {
   if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(animator)) {
@@ -161,128 +159,6 @@ void WorldScene::place(Arrow& arrow, const Vec3& origin, const Vec3& direction, 
 void WorldScene::place_label(WorldLabelId id, const Vec3& at, const std::string& text) {
   texts.labels[size_t(id)].at = at;
   texts.labels[size_t(id)].text = text;
-}
-
-// The camera's two framings.
-
-void WorldScene::reset_camera() {
-  from_eye = false;
-  show_parts();
-  const Mat3 to_world = glm::transpose(first_view.rotation);
-  const Vec3 forward = to_world * Vec3(0, 0, 1), view_up = to_world * Vec3(0, -1, 0),
-             right = to_world * Vec3(1, 0, 0);
-  const Vec3 eye_at = viewer_to_world(first_view, Vec3(0.0));
-  const Vec3 focus = 0.5 * (eye_at + world_centre);
-  const double distance = std::max(1e-3, glm::length(world_centre - eye_at));
-  // The plane: from behind the eye and as far to its left, a little above it, so the frustum
-  // opens towards the plane across the picture and the eye-to-plane picture, foreshortened,
-  // fills a narrow view (the cause-and-effect layout's). A scene: from the left of the eye, a
-  // little behind and above it, the viewer's path seen from its side.
-  const Vec3 side = scene_mode ? -0.55 * forward - 1.0 * right : -0.8 * forward - 0.8 * right;
-  const Vec3 from = focus + distance * (side + 0.45 * view_up);
-  vtkCamera* vtk_camera = renderer->GetActiveCamera();
-  vtk_camera->SetFocalPoint(focus.x, focus.y, focus.z);
-  vtk_camera->SetPosition(from.x, from.y, from.z);
-  vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
-  vtk_camera->SetViewAngle(30.0);
-  renderer->ResetCamera();
-  if (!scene_mode) centre_framed_points();
-  // ResetCamera fits a bounding sphere, loosely. The plane: centred and closer, as far as every
-  // place it takes over the loop (and the eye's frustum) stays inside 95 % of the picture. A scene:
-  // closer in a wide view, a narrow one (the cause-and-effect layout) keeping the whole
-  // width; the viewer's path may leave the picture, the polygons and the viewer stay.
-  vtk_camera->Zoom(scene_mode ? 1.6 * std::clamp(renderer->GetTiledAspectRatio() / 1.6, 0.6, 1.0)
-                              : fit_zoom(0.95));
-  renderer->ResetCameraClippingRange();
-  needs_render = true;
-}
-
-void WorldScene::centre_framed_points() {
-  const std::vector<Vec3> points = framed_points();
-  double left = 1e300, right = -1e300, bottom = 1e300, top = -1e300;
-  for (const Vec3& p : points) {
-    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    if (d[2] < 0.0 || d[2] > 1.0) continue;
-    left = std::min(left, d[0]), right = std::max(right, d[0]);
-    bottom = std::min(bottom, d[1]), top = std::max(top, d[1]);
-  }
-  if (left > right) return;
-  vtkCamera* vtk_camera = renderer->GetActiveCamera();
-  const double* focal = vtk_camera->GetFocalPoint();
-  renderer->SetWorldPoint(focal[0], focal[1], focal[2], 1.0);
-  renderer->WorldToDisplay();
-  const double depth_z = renderer->GetDisplayPoint()[2];
-  const int* size = window->GetSize();
-  const auto world_at = [&](double x, double y) {
-    renderer->SetDisplayPoint(x, y, depth_z);
-    renderer->DisplayToWorld();
-    const double* w = renderer->GetWorldPoint();
-    return Vec3(w[0], w[1], w[2]) / (w[3] != 0.0 ? w[3] : 1.0);
-  };
-  // Pan (camera and focal point together) so that the box's centre is the picture's.
-  const Vec3 shift =
-      world_at(0.5 * (left + right), 0.5 * (bottom + top)) - world_at(0.5 * size[0], 0.5 * size[1]);
-  const double* from = vtk_camera->GetPosition();
-  vtk_camera->SetPosition(from[0] + shift.x, from[1] + shift.y, from[2] + shift.z);
-  vtk_camera->SetFocalPoint(focal[0] + shift.x, focal[1] + shift.y, focal[2] + shift.z);
-}
-
-std::vector<Vec3> WorldScene::framed_points() const {
-  std::vector<Vec3> points = {viewer_to_world(first_view, Vec3(0.0))};
-  for (const Vec3& c : image_plane_corners(camera, depth)) {
-    points.push_back(viewer_to_world(first_view, c));
-  }
-  // The plane's corners wherever the loop takes them; a scene's viewer path.
-  if (scene_mode) {
-    points.insert(points.end(), path.begin(), path.end());
-  } else {
-    points.insert(points.end(), loop_corners.begin(), loop_corners.end());
-  }
-  return points;
-}
-
-double WorldScene::fit_zoom(double fill) const {
-  const std::vector<Vec3> points = framed_points();
-  const int* size = window->GetSize();
-  double widest = 1e-9;  // the furthest point from the picture's centre, in half sizes
-  for (const Vec3& p : points) {
-    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    if (d[2] < 0.0 || d[2] > 1.0) continue;
-    widest = std::max(
-        {widest, std::abs(d[0] / (0.5 * size[0]) - 1.0), std::abs(d[1] / (0.5 * size[1]) - 1.0)});
-  }
-  return std::clamp(fill / widest, 0.5, 3.0);
-}
-
-void WorldScene::view_from_camera() {
-  const Mat3 to_world = glm::transpose(view.rotation);
-  const Vec3 eye_at = viewer_to_world(view, Vec3(0.0));
-  const Vec3 ahead = eye_at + to_world * Vec3(0, 0, 4.0 * depth),
-             view_up = to_world * Vec3(0, -1, 0);
-  // The image's half height and half width over the focal length; VTK's angle is vertical,
-  // so a render narrower than the image needs a taller angle to show its whole width.
-  const double aspect = std::max(1e-3, renderer->GetTiledAspectRatio());
-  const double half_tan = (1.0 + 2.0 * kEyeViewMargin) * 0.5 / camera.focal_px *
-                          std::max(double(camera.height), double(camera.width) / aspect);
-  vtkCamera* vtk_camera = renderer->GetActiveCamera();
-  vtk_camera->SetPosition(eye_at.x, eye_at.y, eye_at.z);
-  vtk_camera->SetFocalPoint(ahead.x, ahead.y, ahead.z);
-  vtk_camera->SetViewUp(view_up.x, view_up.y, view_up.z);
-  vtk_camera->SetViewAngle(2.0 * std::atan(half_tan) * 180.0 / kPi);
-  from_eye = true;
-  show_parts();
-  renderer->ResetCameraClippingRange();
-  needs_render = true;
-}
-
-void WorldScene::leave_eye() {
-  from_eye = false;
-  show_parts();
-  needs_render = true;
 }
 
 // The source: what every frame of the loop shows (the plane's path, the scene's polygons).

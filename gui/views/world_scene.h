@@ -4,7 +4,7 @@
 // loop (load_plane, load_scene) and what a frame changes in place (update_plane,
 // update_scene: points, matrices and pixels, never a new actor), which parts are shown, the
 // theme's colours and line widths, the labels' points and the caption (WorldTexts, painted
-// by the view), and the camera's two framings.
+// by the view), and the camera's two framings (their code in gui/views/world_camera.cpp).
 //
 // Units: world units (the viewer frame of gui/adapters/world_geometry.h for the plane, the
 // scene's frame for a scene source); speeds per second (SceneModel::kSecondsPerFrame per
@@ -152,18 +152,29 @@ struct WorldScene {
   double drawn_share() const;
 
   // The camera framing everything drawn, seen from behind, above and left of the first
-  // frame's eye.
+  // frame's eye; for the plane, of a few such vantages the one with the largest drawn_share.
   void reset_camera();
+  // The orbit camera looking at the middle of the first frame's eye and the world's centre
+  // from `side` (world units per their distance apart) with `view_up`, fitted by VTK's
+  // ResetCamera.
+  void place_orbit(const Vec3& side, const Vec3& view_up);
+  // place_orbit, then the plane's framing: centred (centre_framed_points) and zoomed so that
+  // the framed points fill 90 % of the picture (fit_zoom).
+  void frame_plane_from(const Vec3& side, const Vec3& view_up);
+  // What the orbit camera frames the plane in, canvas pixels: the picture between its legend and
+  // caption as the texts were last laid out (WorldTexts::free_area), the whole picture before.
+  QRectF framed_picture() const;
   // The zoom (VTK's Camera::Zoom factor, 0.5 .. 3) after which the eye, its image plane and
-  // every corner of the plane over the loop (loop_corners)
-  // fill `fill` of the picture's half width or half height, whichever they reach first, as
-  // the current camera projects them (reset_camera's framing of the plane).
+  // every corner of the plane over the loop (loop_corners) fill `fill` of framed_picture's
+  // half width or half height about its centre, whichever they reach first, as the current
+  // camera projects them (reset_camera's framing of the plane).
   double fit_zoom(double fill) const;
   // What the orbit camera frames: the first frame's eye, its image plane's corners and the
   // plane's corners over the loop (a scene's viewer path instead), world units.
   std::vector<Vec3> framed_points() const;
   // Pans the camera (its position and focal point together, in the picture's plane through
-  // the focal point) so that the box of framed_points as projected now is centred.
+  // the focal point) so that the box of framed_points as projected now is centred in
+  // framed_picture.
   void centre_framed_points();
   // The camera at the eye now (the viewer's in a scene), looking along its line of sight
   // with its up, its field of view wide enough that the whole image and a margin of

@@ -181,7 +181,14 @@ void WorldView::draw() {
   if (size.isEmpty()) return;
   if (dirty_) update_now();  // a resize may come before the first refresh
   m.window->SetSize(size.width(), size.height());
-  if (!camera_placed_) place_camera();  // after the size: the framing depends on its shape
+  const auto project = [&m](const Vec3& at, QPointF* canvas) { return m.to_canvas(at, canvas); };
+  if (!camera_placed_) {
+    // After the size, and the legend and caption laid out: the framing fits the picture between
+    // them (WorldScene::framed_picture).
+    m.texts.caption = m.caption();
+    m.texts.lay_out(size, font(), m.theme, project);
+    place_camera();
+  }
   QImage& picture = m.pictures[size_t(m.next_picture)];
   m.next_picture = 1 - m.next_picture;
   const StageTimer drawing(FrameStage::kDrawing);  // VTK's render and its read-back
@@ -195,8 +202,7 @@ void WorldView::draw() {
   }
   const StageTimer text(FrameStage::kText);
   m.texts.caption = m.caption();
-  m.texts.lay_out(size, font(), m.theme,
-                  [&m](const Vec3& at, QPointF* canvas) { return m.to_canvas(at, canvas); });
+  m.texts.lay_out(size, font(), m.theme, project);
   {
     QPainter painter(&picture);
     m.texts.paint(painter);

@@ -101,7 +101,9 @@ std::vector<ClaimKind> make_kinds() {
              "exact outlines (the plane's or the polygons' images) at the panels' shared "
              "framing and zoom; the flow view's picture inside the plane's image; the world "
              "view's picture between its legend and caption inside the hull of the plane or the "
-             "scene, the eye and its image plane"),
+             "scene, the eye and its image plane; the basis gallery's tile inside its deformed "
+             "square (the smallest of the 12 tiles) or, with the explorer, its deformation's "
+             "picture under the caption inside the deformed texture rectangle"),
       engine("hole_pixels",
              "the holes of the frame shown now of the engine (`of` engine) or of a compared "
              "policy (`of` its name), pixels",

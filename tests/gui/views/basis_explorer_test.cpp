@@ -16,6 +16,7 @@
 #include "flow/homography.h"
 #include "image_checks.h"
 #include "models/scene_model.h"
+#include "views/basis_tiles.h"
 #include "views/basis_view.h"
 #include "views/explorer_panel.h"
 #include "views/explorer_pictures.h"
@@ -138,7 +139,9 @@ TEST_F(BasisExplorerWindow, SlidersDriveTheDeformationTheTilesAndTheSolutions) {
   EXPECT_EQ(basis().tile_active("rotation"), 0.0);
   const QImage grown = panel().deformation()->image();
   ASSERT_EQ(grown.size(), still.size());  // the layout does not move while a slider does
-  EXPECT_GT(changed_fraction(grown, still), 0.05);
+  // The picture zooms on what it shows: the grown grid fills it as the still one did, and the
+  // dashed start shrinks inside it.
+  EXPECT_GT(changed_fraction(grown, still), 0.02);
   EXPECT_NE(panel().solutions_text().indexOf("fronto-parallel"), -1)
       << panel().solutions_text().toStdString();
   // Then rotation by its slider: a second tile, and the default case comes back with all.
@@ -207,6 +210,12 @@ TEST_F(BasisExplorerWindow, TheFuturesAgreeAtFirstAndPartAtTheFrameThePanelShows
 TEST_F(BasisExplorerWindow, TheExplorersClaimsMeasureWhatTheyNameWithControls) {
   ASSERT_TRUE(window().model()->set_explorer_terms(default_explorer_terms()));
   EXPECT_EQ(measure("solution_count"), 2.0);
+  EXPECT_GT(measure("panel_fill"), 25.0);  // percent of the deformation picture
+  ASSERT_TRUE(window().model()->set_explorer_terms(only("tx", 560.0)));
+  EXPECT_LT(measure("panel_fill"), 10.0);  // control: the rectangle carried out of the image
+  window().model()->set_basis_explorer(false);
+  EXPECT_GT(measure("panel_fill"), 25.0);  // the gallery's smallest tile
+  window().model()->set_basis_explorer(true);
   ASSERT_TRUE(window().model()->set_explorer_terms(only("scale", 0.2)));
   EXPECT_EQ(measure("solution_count"), 1.0);        // control: a degenerate case
   EXPECT_EQ(measure("futures_apart_frame"), -1.0);  // control: nothing to compare
@@ -221,6 +230,54 @@ TEST_F(BasisExplorerWindow, TheExplorersClaimsMeasureWhatTheyNameWithControls) {
   EXPECT_NEAR(measure("grid_change", "shift_px"), 30.0, 1e-9);
   EXPECT_NEAR(measure("grid_change", "area"), 1.0, 1e-9);  // control: a shift keeps the area
   EXPECT_EQ(measure("tile_active", "scale"), 0.0);
+}
+
+// panel_fill of the explorer (explorer_deformation_fill) against the framing computed by hand:
+// the texture rectangle (400 x 300 of an 800 x 600 image) grown by 3 % on every side fills the
+// picture under the caption. The control: the rectangle carried 560 px right, of which only
+// 40 x 300 px stay in the image; the framing holds the start and the part inside, and the
+// fill falls under a tenth.
+TEST(BasisFill, TheExplorersFillIsTheDeformedRectangleInsideTheImageOverItsPicture) {
+  const ViewTheme theme = view_theme(false);
+  const QSize size(700, 500);
+  const DeformationFraming still = explorer_deformation_framing(Mat3(1.0), kCamera, size, theme);
+  const double area = still.picture.width() * still.picture.height();
+  const double scale = std::min(still.picture.width() / 424.0, still.picture.height() / 318.0);
+  EXPECT_NEAR(still.scale, scale, 1e-9);
+  EXPECT_NEAR(explorer_deformation_fill(Mat3(1.0), kCamera, size, theme),
+              400.0 * 300.0 * scale * scale / area, 1e-6);
+  Mat3 shift(1.0);
+  shift[2][0] = 560.0;  // x + 560: the third column is the translation
+  const DeformationFraming moved = explorer_deformation_framing(shift, kCamera, size, theme);
+  // The start and the shifted rectangle span x -200 .. 760, grown by 28.8 px: -228.8 .. 788.8,
+  // cut at the image's edge x = 400; y -159 .. 159.
+  const double shifted = std::min(moved.picture.width() / 628.8, moved.picture.height() / 318.0);
+  EXPECT_NEAR(moved.scale, shifted, 1e-9);
+  const double fill = explorer_deformation_fill(shift, kCamera, size, theme);
+  EXPECT_NEAR(fill, 40.0 * 300.0 * shifted * shifted / area, 1e-6);
+  EXPECT_LT(fill, 0.1);
+}
+
+// panel_fill of the gallery (BasisTiles::smallest_fill): undeformed, every tile's square fills
+// the cell's width but 4 % each side or its height but the title and value bands (1.25 title
+// heights and 3 % of the cell each), whichever is less. Controls: nothing painted yet, a
+// gallery too small for any grid (nothing drawn, nothing filled), and tiles framed for a
+// larger amount than they show, which fill less.
+TEST(BasisFill, TheGallerysFillIsTheSmallestDeformedSquareOverItsTile) {
+  BasisTiles tiles;
+  tiles.set_theme(view_theme(false));
+  tiles.update(BasisKind::kPlanar, TaylorTerms{}, 400.0, 0.0, 0.0);
+  EXPECT_EQ(tiles.smallest_fill(), 0.0);
+  tiles.paint(QSize(600, 450));  // cells of 100 x 150
+  const double band = 1.25 * tiles.title_font_size() + 0.03 * 150.0;
+  const double half = std::min(0.46 * 100.0, 75.0 - band);
+  const double fitted = 4.0 * half * half / (100.0 * 150.0);
+  EXPECT_NEAR(tiles.smallest_fill(), fitted, 1e-9);
+  tiles.update(BasisKind::kPlanar, TaylorTerms{}, 400.0, 0.0, 1.0);
+  tiles.paint(QSize(600, 450));
+  EXPECT_LT(tiles.smallest_fill(), 0.8 * fitted);
+  tiles.paint(QSize(60, 30));
+  EXPECT_EQ(tiles.smallest_fill(), 0.0);
 }
 
 // The explorer's texts at 1920 x 1080 and 1366 x 768 in presentation mode (scaled to the
