@@ -5,7 +5,7 @@
 // images rendered with their depth at a few viewpoints, and the views in between made from the
 // two nearest renders, each pixel moved by its depth ("morph maps"), both images mapped and
 // merged so that the nearer surface wins where both put a pixel, and what neither image saw
-// left as a hole ("image holes"; they are filled by interpolating neighbours in the paper).
+// left as a hole.
 // This is oflab's own clean-room version, written from the publication: each render is
 // forward-warped to the viewer of the in-between frame by its per-pixel depth with the true
 // step (reproject_by_depth, core/scene/depth_reprojection.h: footprints splatted as in
