@@ -168,7 +168,7 @@ nlohmann::json plane_animate_json(const RunSource& source, const AnimationRun& r
   j["content_quality"] = settings.content.quality;
   if (reports_holes(*settings.policy)) {
     j["cadence"] = settings.cadence;
-    j["latency_frames"] = settings.policy->latency_frames;
+    j["latency_frames"] = latency_frames(*settings.policy, settings.cadence);
   }
   return j;
 }

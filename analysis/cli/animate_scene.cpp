@@ -126,7 +126,7 @@ nlohmann::json scene_animate_json(const RunSource& source, const AnimationRun& r
   j["skip_hidden"] = settings.skip_hidden;
   if (reports_holes(*settings.engine.policy)) {
     j["cadence"] = settings.engine.cadence;
-    j["latency_frames"] = settings.engine.policy->latency_frames;
+    j["latency_frames"] = latency_frames(*settings.engine.policy, settings.engine.cadence);
     j["hole_fill"] = hole_fill_name(settings.hole_fill);
   }
   return j;

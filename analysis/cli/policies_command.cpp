@@ -2,11 +2,13 @@
 // of `oflab-cli animate --mode`, one per line as "name  summary" followed by indented lines
 // saying which system each models and where it breaks, or as JSON:
 //   {"policies": [{"name", "summary", "models", "breaks", "schedule" ("threshold" or
-//   "cadence"), "warp" ("per-layer", "per-pixel-depth" or "node-images"), "latency_frames",
-//   "scenes_only" (true for a policy a single plane cannot play: needs_scene)},
+//   "cadence"), "warp" ("per-layer", "per-pixel-depth" or "node-images"), "latency_frames"
+//   (at the default cadence, EngineSettings::cadence: latency_frames), "scenes_only" (true for
+//   a policy a single plane cannot play: needs_scene)},
 //   ...],
 //   "interpolation_latency_frames": 1} in registry order; the last is what frame
-//   generation's interpolation between two renders would score, for comparison.
+//   generation's interpolation between two renders scores (DLSS 3, FSR 3; view-interpolation
+//   at cadence 2), for comparison.
 #include <algorithm>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -16,13 +18,15 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "engine/engine.h"
 #include "engine/reuse_policy.h"
 
 namespace oflab {
 namespace {
 
 // Frame generation (DLSS 3, FSR 3) interpolates between two rendered frames, so it can show
-// a frame only once the next one is rendered: one frame late.
+// a frame only once the next one is rendered: one frame late (latency_frames of an
+// interpolating policy at cadence 2).
 constexpr int kInterpolationLatencyFrames = 1;
 
 void print_text(std::ostream& stream) {
@@ -34,8 +38,12 @@ void print_text(std::ostream& stream) {
         << std::string(width + 2, ' ') << "models: " << p.models << "\n"
         << std::string(width + 2, ' ') << "breaks: " << p.breaks << "\n";
   }
-  out << "Latency: every policy extrapolates from the last render (0 frames of delay); frame\n"
-         "generation's interpolation between two renders would show each frame "
+  out << "Latency: every policy but view-interpolation extrapolates from the last render (0\n"
+         "frames of delay); view-interpolation waits for the next render, cadence - 1 frames\n"
+         "late (at the default cadence "
+      << EngineSettings{}.cadence << ": "
+      << latency_frames(reuse_policy("view-interpolation"), EngineSettings{}.cadence)
+      << "), as frame generation's interpolation (DLSS 3, FSR 3) shows each frame "
       << kInterpolationLatencyFrames << " frame late.\n";
   stream << out.str();
 }
@@ -52,7 +60,7 @@ nlohmann::ordered_json policies_json() {
     entry["breaks"] = p.breaks;
     entry["schedule"] = p.schedule == Schedule::kCadence ? "cadence" : "threshold";
     entry["warp"] = frame_warp_name(p.frame_warp);
-    entry["latency_frames"] = p.latency_frames;
+    entry["latency_frames"] = latency_frames(p, EngineSettings{}.cadence);
     entry["scenes_only"] = needs_scene(p);
     list.push_back(entry);
   }

@@ -100,6 +100,7 @@ std::vector<PolicyRun> run_policies(const SourceKind& kind, const RunSource& sou
     one.settings.engine.policy = policy;
     PolicyRun r;
     r.policy = policy;
+    r.cadence = one.settings.engine.cadence;
     PlayOptions o = options;
     o.on_view = [&r](int, const ViewerPose& view) { r.views.push_back(view); };
     r.run = kind.play(one, o);
@@ -148,7 +149,7 @@ PolicyRow policy_row(const PolicyRun& r) {
   row.gap_frames = s.gap_frames;
   row.mean_optimality_gap = s.mean_optimality_gap;
   row.hole_pixels = s.hole_pixels;
-  row.latency_frames = r.policy->latency_frames;
+  row.latency_frames = latency_frames(*r.policy, r.cadence);
   row.cache = s.cache;
   set_pixel_peaks(r.run, &row);
   row.predicts = r.policy->spreads_updates;

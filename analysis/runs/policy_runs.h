@@ -21,6 +21,7 @@ struct PolicyRun {
   const ReusePolicy* policy = nullptr;
   AnimationRun run;
   std::vector<ViewerPose> views;  // per frame, what the frame showed (RunOptions::on_view)
+  int cadence = 2;                // the run's EngineSettings::cadence
 };
 
 // Plays `source` once per policy with the kind's play ("plane" or "scene": the policy goes
@@ -90,7 +91,7 @@ struct PolicyRow {
   int frames = 0;
   std::int64_t hole_pixels = 0;         // RunSummary's total (0 for a policy without holes)
   std::int64_t inpainted_pixels = 0;    // RunSummary's total (mv-extrapolation's fills)
-  int latency_frames = 0;               // the policy's (ReusePolicy::latency_frames)
+  int latency_frames = 0;               // the policy's at the run's cadence (latency_frames)
   std::int64_t pixels_written = 0;      // RunSummary::pixels, over every frame
   std::int64_t pixels_written_p95 = 0;  // nearest-rank 95th percentile per frame, frame 0 out
   std::int64_t pixels_written_max = 0;  // the largest per frame, frame 0 out

@@ -1,6 +1,7 @@
 // The registry of reuse policies (see core/engine/reuse_policy.h and manual/animation.md).
 #include "engine/reuse_policy.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace oflab {
@@ -80,6 +81,21 @@ ReusePolicy mv_extrapolation(const char* name, const char* summary, bool inpaint
   return p;
 }
 
+// View interpolation (Chen & Williams 93; core/scene/view_interpolation.h): the frames between
+// two renders warped from both by depth to the true pose, shown late.
+ReusePolicy view_interpolation() {
+  ReusePolicy p = on_cadence(
+      "view-interpolation",
+      "view interpolation: the frames between two renders warped from both by depth, late",
+      ModelUpdate::kExact, FramePlane::kInfinity, FrameWarp::kPerPixelDepth,
+      "view interpolation (Chen & Williams 93): in-between views from two rendered views and "
+      "their depth; the interpolating form of frame generation",
+      "latency: each frame waits for the next render (cadence - 1 frames); what neither "
+      "render saw is a hole");
+  p.pixel_motion = PixelMotion::kBetweenRenders;
+  return p;
+}
+
 }  // namespace
 
 LevelPixels estimate_level_pixels(std::int64_t displayed_px, std::int64_t cache_px) {
@@ -115,6 +131,10 @@ Level cadence_choice(const ReusePolicy&, const FrameInputs& inputs) {
   return inputs.since_render >= inputs.cadence ? Level::kRerender : Level::kPerspective;
 }
 
+int latency_frames(const ReusePolicy& policy, int cadence) {
+  return policy.pixel_motion == PixelMotion::kBetweenRenders ? std::max(0, cadence - 1) : 0;
+}
+
 bool reports_holes(const ReusePolicy& policy) {
   return policy.frame_warp != FrameWarp::kPerLayer || policy.schedule == Schedule::kCadence;
 }
@@ -125,6 +145,8 @@ bool needs_scene(const ReusePolicy& policy, std::string* why) {
     reason = "a single plane has no BSP tree to group into nodes";
   } else if (policy.pixel_motion == PixelMotion::kMotionVectors) {
     reason = "its motion vectors and depth are a rendered scene frame's";
+  } else if (policy.pixel_motion == PixelMotion::kBetweenRenders) {
+    reason = "its two views' depths are rendered scene frames, the later one a viewer script's";
   }
   if (reason && why) *why = reason;
   return reason != nullptr;
@@ -210,6 +232,7 @@ const std::vector<ReusePolicy>& reuse_policies() {
       mv_extrapolation("mv-no-inpaint",
                        "frame generation along motion vectors, disocclusions left empty", false,
                        "as mv-extrapolation, with its disocclusions left as holes"),
+      view_interpolation(),
       lookahead(),
   };
   return policies;
@@ -221,6 +244,9 @@ const char* level_word(const ReusePolicy& policy, Level level) {
   }
   if (policy.pixel_motion == PixelMotion::kMotionVectors) {
     return level == Level::kRerender ? "rendered" : "generated";
+  }
+  if (policy.pixel_motion == PixelMotion::kBetweenRenders) {
+    return level == Level::kRerender ? "rendered" : "interpolated";
   }
   if (policy.schedule == Schedule::kCadence) {
     return level == Level::kRerender ? "rendered" : "reprojected";

@@ -36,6 +36,11 @@
 //                       without the new pose, disocclusions masked and filled by pyramid
 //                       (push-pull) inpainting (core/scene/frame_generation.h);
 //   mv-no-inpaint       the same with the disocclusions left empty.
+// View interpolation (Chen & Williams 93), scenes only:
+//   view-interpolation  the frames between two renders made from both: each render forward-warped
+//                       by its depth to the viewer now, nearest surface kept
+//                       (core/scene/view_interpolation.h); it waits for the later render, so it
+//                       shows each frame cadence - 1 frames late.
 // The dissertation's other named rival (section 2.4.7):
 //   hierarchical-cache  Shade et al. 96: BSP nodes cached as images on quads facing the viewer,
 //                       warped by the quad's homography, re-rendered by an angular error at
@@ -101,10 +106,12 @@ enum class FramePlane {
 enum class FrameWarp { kPerLayer, kPerPixelDepth, kNodeImages };
 
 // Where a per-pixel frame warp (FrameWarp::kPerPixelDepth) moves each pixel of the last render:
-// by the viewer's true step since the render (depth reprojection, which knows the new pose), or
+// by the viewer's true step since the render (depth reprojection, which knows the new pose),
 // along the render's per-pixel motion vectors extrapolated to the new time without the new pose
-// (frame generation by extrapolation, core/scene/frame_generation.h).
-enum class PixelMotion { kViewerStep, kMotionVectors };
+// (frame generation by extrapolation, core/scene/frame_generation.h), or, with the render that
+// follows as well, both moved by the viewer's true step to the pose between them (view
+// interpolation, core/scene/view_interpolation.h: it waits for the later render).
+enum class PixelMotion { kViewerStep, kMotionVectors, kBetweenRenders };
 // "per-layer", "per-pixel-depth" or "node-images".
 const char* frame_warp_name(FrameWarp warp);
 
@@ -172,12 +179,10 @@ struct ReusePolicy {
   // schedule may bring forward (a writing level or a re-render now instead of later).
   bool spreads_updates = false;
   // Today's reprojection (manual/policies.md): the schedule, the plane of a kFrameHomography
-  // model, what the frame warp moves, and the delay it adds in frames (0 for every
-  // extrapolating policy; frame generation's interpolation between two renders would be 1).
+  // model and what the frame warp moves (the delay it adds: latency_frames below).
   Schedule schedule = Schedule::kThreshold;
   FramePlane frame_plane = FramePlane::kInfinity;
   FrameWarp frame_warp = FrameWarp::kPerLayer;
-  int latency_frames = 0;
   // FrameWarp::kPerPixelDepth: how the pixels move, and whether the disocclusions of a
   // motion-vector extrapolation are filled by pyramid inpainting (else left empty).
   PixelMotion pixel_motion = PixelMotion::kViewerStep;
@@ -208,19 +213,28 @@ Level talisman_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 // the error); the choice of timewarp, stabilized-plane, depth-reprojection and cadence.
 Level cadence_choice(const ReusePolicy& policy, const FrameInputs& inputs);
 
+// The frames of delay `policy` adds on a fixed cadence of `cadence` (>= 1) frames: 0 for every
+// policy that extrapolates from the last render; cadence - 1 for one that interpolates between
+// two renders (PixelMotion::kBetweenRenders): the first frame after a render can be shown only
+// once the next render, cadence frames after the first, is made, so every frame is shown
+// cadence - 1 frames after its viewer was known.
+int latency_frames(const ReusePolicy& policy, int cadence);
+
 // True when the policy's frames can have holes (FrameWarp::kPerPixelDepth, kNodeImages) and
 // its reports therefore carry hole pixels; every policy on a fixed cadence reports them too (0 for
 // the per-layer warps, which show every layer whole).
 bool reports_holes(const ReusePolicy& policy);
 
 // True when the policy plays scenes only: the hierarchical cache (a single plane has no BSP
-// tree to group) and motion-vector extrapolation (core/scene/frame_generation.h works on a
-// scene's rendered frame and depth). `why` receives the reason, for one-line refusals.
+// tree to group), motion-vector extrapolation (core/scene/frame_generation.h works on a
+// scene's rendered frame and depth) and view interpolation (the same, and the views to come
+// of a viewer script). `why` receives the reason, for one-line refusals.
 bool needs_scene(const ReusePolicy& policy, std::string* why = nullptr);
 
 // What `policy` did to a layer it showed at `level`, in that policy's own words, for captions
 // and legends: Algorithm 1's level names ("none" .. "rerender", level_name) for the policies
 // of the threshold rule; "rendered" or "generated" for motion-vector extrapolation;
+// "rendered" or "interpolated" for view interpolation;
 // "rendered" or "reprojected" for the other policies on a fixed cadence (its warp
 // level is a reprojection of the last render, not a Taylor level); "rendered" or "cached" for
 // the hierarchical cache (a node's cached image warped onto its quad). Never null.

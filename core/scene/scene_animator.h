@@ -43,6 +43,10 @@
 // depth reprojection does, with the viewer of the frame before it (its motion vectors), and
 // generate every other frame by extrapolate_by_motion (core/scene/frame_generation.h), which
 // does not read the viewer now; the true step is used only for the measured error and holes.
+// The view-interpolation policy (PixelMotion::kBetweenRenders) also renders, at the first frame
+// after a render, the next render's frame ahead of its time (the views to come: set_future_views;
+// that render's time is counted at its own frame, where it is rendered again and shown), and
+// makes every frame between from both (interpolate_views, core/scene/view_interpolation.h).
 //
 // The hierarchical-cache policy (FrameWarp::kNodeImages) classifies the polygons as above, then
 // hands the frame to core/scene/hierarchical_cache.h: nodes of the BSP tree instead of
@@ -63,6 +67,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,6 +84,7 @@
 #include "scene/scene.h"
 #include "scene/scene_resources.h"
 #include "scene/view_culling.h"
+#include "scene/view_interpolation.h"
 #include "scene/viewer_script.h"
 #include "scene/viewer_script_animator.h"
 
@@ -136,6 +142,13 @@ class SceneEngine {
   AnimationFrame advance(const ViewerPose& previous, const RigidMotion& motion,
                          const ViewerPose& current);
 
+  // The viewers of the frames to come, for a policy that interpolates between renders
+  // (view-interpolation): views(k, pose) sets the viewer of frame index k (>= 0, counted from
+  // start) and returns false past the last frame. Without it, or past the last frame, such a
+  // policy renders the frame instead. The viewer script animator sets its script's.
+  using FutureViews = std::function<bool(int frame, ViewerPose& pose)>;
+  void set_future_views(FutureViews views) { future_views_ = std::move(views); }
+
   // The composited frame (camera-sized, premultiplied).
   const Image& frame() const { return frame_; }
   const BspTree& bsp() const { return bsp_; }
@@ -150,7 +163,8 @@ class SceneEngine {
   std::vector<LayerOutline> outlines(const ViewerPose& view) const;
   // The depth-reprojection policy: the frame and depth of the last render, the viewer it was
   // seen from, and for the last frame shown the source pixel of every pixel (-1: a hole;
-  // empty after a rendered frame). Meaningless for other policies.
+  // empty after a rendered frame; view interpolation: the source pixel in whichever render
+  // it came from). Meaningless for other policies.
   const Image& rendered_frame() const { return rendered_frame_; }
   const DepthFrame& rendered_depth() const { return rendered_depth_; }
   const ViewerPose& rendered_view() const { return rendered_view_; }
@@ -164,6 +178,9 @@ class SceneEngine {
   // polygons' tally, compositing back to front.
   AnimationFrame run_frame(const ViewerPose* previous, const RigidMotion* motion,
                            const ViewerPose& current);
+  // Every polygon updated and composited for `current` (the frame loop's render path).
+  void render_frame(const ViewerPose* previous, const RigidMotion* motion,
+                    const ViewerPose& current, AnimationFrame& report);
   void classify(const ViewerPose& view, AnimationFrame& report);
   void update_front_to_back(const ViewerPose& current, AnimationFrame& report);
   // The image region the hidden test of a fragment must find covered (exact, top-left
@@ -197,6 +214,11 @@ class SceneEngine {
   // Return the milliseconds of their diagnostics (errors, holes), left out of the frame's time.
   double reproject_frame(const ViewerPose& current, AnimationFrame& report);
   double generate_frame(const ViewerPose& current, AnimationFrame& report);
+  // View interpolation (interpolated_frames.cpp): the next render made ahead when this frame
+  // lies before it (false: this frame is to be rendered), its time added to `excluded_ms`;
+  // then the frame made from both renders.
+  bool look_ahead(double& excluded_ms);
+  double interpolate_frame(const ViewerPose& current, AnimationFrame& report);
   void mark_reprojected(const ViewerPose& current, AnimationFrame& report);
   void cache_frame(const ViewerPose& current, AnimationFrame& report);
 
@@ -252,6 +274,13 @@ class SceneEngine {
   ViewerPose rendered_previous_;  // the viewer of the frame before the render (motion vectors)
   int rendered_index_ = 0;        // the frame index of the render
   std::vector<int> source_of_;    // the last reprojection's source pixel per pixel
+  // View interpolation: the views to come, and the next render made ahead (next_index_ -1:
+  // none).
+  FutureViews future_views_;
+  Image next_frame_;
+  DepthFrame next_depth_;
+  ViewerPose next_view_;
+  int next_index_ = -1;
   std::unique_ptr<HierarchicalCache> cache_;  // the hierarchical-cache policy only
 };
 

@@ -7,12 +7,15 @@
 // Renderer requirements: constructible from (const Scene&, const Camera&, const Settings&);
 // AnimationFrame start(const ViewerPose&); AnimationFrame advance(const ViewerPose& previous,
 // const RigidMotion&, const ViewerPose& current); const Image& frame() const (the composed
-// frame); std::vector<LayerOutline> outlines(const ViewerPose& view) const.
+// frame); std::vector<LayerOutline> outlines(const ViewerPose& view) const. A renderer with
+// set_future_views(std::function<bool(int, ViewerPose&)>) is also given the script's views to
+// come (the scene engine's view interpolation renders the next render's ahead).
 #pragma once
 
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -21,6 +24,14 @@
 #include "scene/viewer_script.h"
 
 namespace oflab {
+
+// Whether Renderer takes the views to come (set_future_views).
+template <class Renderer, class = void>
+struct TakesFutureViews : std::false_type {};
+template <class Renderer>
+struct TakesFutureViews<Renderer, std::void_t<decltype(std::declval<Renderer&>().set_future_views(
+                                      std::declval<bool (*)(int, ViewerPose&)>()))>>
+    : std::true_type {};
 
 template <class Renderer, class Settings>
 class ViewerScriptAnimator final : public Animator {
@@ -31,7 +42,16 @@ class ViewerScriptAnimator final : public Animator {
                        const Settings& settings)
       : scene_(checked(std::move(scene), script)),
         script_(std::move(script)),
-        renderer_(*scene_, script_.camera, settings) {}
+        renderer_(*scene_, script_.camera, settings) {
+    if constexpr (TakesFutureViews<Renderer>::value) {
+      // The animator owns the renderer and is neither copied nor moved: `this` stays valid.
+      renderer_.set_future_views([this](int k, ViewerPose& pose) {
+        if (k < 0 || k >= frame_count()) return false;
+        pose = script_.frames[static_cast<std::size_t>(k)].pose;
+        return true;
+      });
+    }
+  }
 
   int frame_count() const override { return static_cast<int>(script_.frames.size()); }
   int frame() const override { return frame_; }

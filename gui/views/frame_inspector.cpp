@@ -75,6 +75,9 @@ QString reuse_words(const ReusePolicy& policy, Level level) {
         "the last render, each pixel moved along its motion vector, "
         "extrapolated");
   }
+  if (policy.pixel_motion == PixelMotion::kBetweenRenders) {
+    return QStringLiteral("the renders before and after, each pixel moved by its depth");
+  }
   if (policy.frame_warp == FrameWarp::kPerPixelDepth) {
     return QStringLiteral("the last render, each pixel moved by its depth");
   }

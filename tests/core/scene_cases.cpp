@@ -156,6 +156,45 @@ double mismatch_fraction(const Image& a, const Image& b, int tolerance) {
   return covered ? static_cast<double>(different) / covered : 0.0;
 }
 
+Image coded_texture(int polygon) {
+  Image t(256, 256);
+  for (int y = 0; y < 256; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      t.pixels()[static_cast<std::size_t>(y) * 256 + x] =
+          Pixel{static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y),
+                static_cast<std::uint8_t>(polygon * 16), 255};
+    }
+  }
+  return t;
+}
+
+Scene with_coded_textures(Scene scene) {
+  scene.textures.clear();
+  scene.texture_names.clear();
+  for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+    scene.polygons[i].texture = static_cast<int>(i);
+    scene.textures.push_back(coded_texture(static_cast<int>(i)));
+    scene.texture_names.push_back("coded");
+  }
+  return scene;
+}
+
+double coded_image_error(const Scene& scene, const Camera& camera, const Image& frame,
+                         const ViewerPose& view) {
+  double worst = 0.0;
+  for (int y = 0; y < frame.height(); ++y) {
+    for (int x = 0; x < frame.width(); ++x) {
+      const Pixel p = frame.at(x, y);
+      if (p.a != 255) continue;
+      const ScenePolygon& polygon = scene.polygons.at(p.b / 16);
+      const Vec3 world = polygon_point(polygon, Vec2((p.r + 0.5) / 256.0, (p.g + 0.5) / 256.0));
+      const Vec2 q = centred_to_pixel(camera, project_centred(camera, to_view(view, world)));
+      worst = std::max(worst, glm::length(q - Vec2(x + 0.5, y + 0.5)));
+    }
+  }
+  return worst;
+}
+
 void save_ppm(const std::string& path, const Image& image) {
   std::ofstream out(path, std::ios::binary);
   out << "P6\n" << image.width() << " " << image.height() << "\n255\n";

@@ -41,6 +41,19 @@ Image ray_cast_scene(const Scene& scene, const Camera& camera, const ViewerPose&
 Vec3 world_point_at(const Camera& camera, const ScenePolygon& polygon, const ViewerPose& view,
                     double u, double v);
 
+// A texture whose texels say where they are: red and green the texel's column and row, blue
+// 16 x `polygon`. 256 x 256 texels, opaque.
+Image coded_texture(int polygon);
+
+// `scene` with every polygon i given its own coded_texture(i) (at most 16 polygons).
+Scene with_coded_textures(Scene scene);
+
+// The largest distance, pixels, between an opaque pixel's centre in `frame` and the exact
+// projection from `view` of the texel centre its colour names (coded_texture): the error read
+// back from the image alone.
+double coded_image_error(const Scene& scene, const Camera& camera, const Image& frame,
+                         const ViewerPose& view);
+
 // Share of pixels whose colour differs by more than `tolerance` in any channel (0..1),
 // counting only pixels that are not transparent in at least one of the images.
 double mismatch_fraction(const Image& a, const Image& b, int tolerance = 8);

@@ -1,6 +1,7 @@
-// Frame generation from the command line (manual/policies.md "Frame generation by
-// extrapolation"): the motion-vector policies run on every shipped scene and viewer script, and
-// the comparison's rows carry their holes, inpainting and latency.
+// Frame generation and view interpolation from the command line (manual/policies.md "Frame
+// generation by extrapolation", "View interpolation"): the motion-vector policies and
+// view-interpolation run on every shipped scene and viewer script, and the comparison's rows
+// carry their holes, inpainting and latency.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -19,8 +20,9 @@ namespace {
 
 using testing::CliResult;
 
-// Both motion-vector policies on a scene and viewer script, three frames (render, generated,
-// render), one pass without the exact baseline: what is checked is that they run.
+// Both motion-vector policies and view interpolation on a scene and viewer script, three frames
+// (render, generated or interpolated, render), one pass without the exact baseline: what is
+// checked is that they run.
 std::vector<PolicyRun> play_generation(const std::string& scene, const std::string& script) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(scene)));
@@ -31,7 +33,8 @@ std::vector<PolicyRun> play_generation(const std::string& scene, const std::stri
   options.timing_repetitions = 1;
   options.baseline = false;
   return run_policies(source_kind("scene"), source,
-                      parse_policy_list("mv-extrapolation,mv-no-inpaint"), options);
+                      parse_policy_list("mv-extrapolation,mv-no-inpaint,view-interpolation"),
+                      options);
 }
 
 TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
@@ -45,10 +48,10 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
   for (const auto& [scene, script] : runs) {
     std::vector<PolicyRun> played;
     ASSERT_NO_THROW(played = play_generation(scene, script)) << scene << ", " << script;
-    ASSERT_EQ(played.size(), 2u);
+    ASSERT_EQ(played.size(), 3u);
     for (const PolicyRun& run : played) {
       ASSERT_EQ(run.run.frames.size(), 3u) << scene << ", " << script;
-      // Frame 1 is generated: every drawn polygon counted at the generated level.
+      // Frame 1 is generated (interpolated): every drawn polygon counted at that level.
       const AnimationFrame& generated = run.run.frames[1];
       EXPECT_EQ(generated.levels[static_cast<int>(Level::kRerender)], 0);
       EXPECT_GE(generated.hole_pixels, 0);
@@ -62,17 +65,18 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
 TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) {
   const CliResult r = testing::run_cli_captured(
       {"compare", "--scene", "four-cubes", "--script", "translate", "--policies",
-       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint", "--frames", "5", "--json",
-       "--repeat-timing", "1"});
+       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint,view-interpolation",
+       "--frames", "5", "--json", "--repeat-timing", "1"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = nlohmann::json::parse(r.out).at("policies");
-  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(rows.size(), 5u);
   for (const auto& row : rows) {
     for (const char* field :
          {"hole_pixels", "inpainted_pixels", "mean_psnr_db", "mean_ssim", "latency_frames"}) {
       EXPECT_TRUE(row.contains(field)) << row["name"] << " " << field;
     }
-    EXPECT_EQ(row["latency_frames"], 0) << row["name"];
+    // At cadence 2 view interpolation shows each frame one frame late; the others extrapolate.
+    EXPECT_EQ(row["latency_frames"], row["name"] == "view-interpolation" ? 1 : 0) << row["name"];
     EXPECT_GT(row["mean_ssim"].get<double>(), 0.0) << row["name"];
     EXPECT_LE(row["mean_ssim"].get<double>(), 1.0) << row["name"];
   }
@@ -86,6 +90,10 @@ TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) 
   EXPECT_GT(rows[2]["mean_psnr_db"].get<double>(), rows[3]["mean_psnr_db"].get<double>());
   // Extrapolating a steady slide: the error stays near the splat's resampling.
   EXPECT_GT(rows[2]["max_measured_error_px"].get<double>(), 0.0);
+  // Interpolating between two renders reveals what either saw: fewer holes than depth
+  // reprojection from the last render alone, nothing inpainted.
+  EXPECT_LT(rows[4]["hole_pixels"].get<long>(), rows[1]["hole_pixels"].get<long>());
+  EXPECT_EQ(rows[4]["inpainted_pixels"], 0);
 }
 
 }  // namespace

@@ -42,13 +42,15 @@ TEST(PoliciesCommand, JsonListsEveryPolicyWithWhatItModelsInRegistryOrder) {
     EXPECT_EQ(list[i]["breaks"], p.breaks);
     EXPECT_NE(list[i]["models"], "");
     EXPECT_NE(list[i]["breaks"], "");
-    EXPECT_EQ(list[i]["latency_frames"], 0);
+    // At the default cadence 2: view interpolation waits one frame for the next render.
+    EXPECT_EQ(list[i]["latency_frames"], p.pixel_motion == PixelMotion::kBetweenRenders ? 1 : 0)
+        << p.name;
     EXPECT_EQ(list[i]["schedule"], p.schedule == Schedule::kCadence ? "cadence" : "threshold");
   }
   std::set<std::string> names;
   for (const auto& e : list) names.insert(e["name"].get<std::string>());
   for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "mv-extrapolation", "mv-no-inpaint"}) {
+                           "mv-extrapolation", "mv-no-inpaint", "view-interpolation"}) {
     EXPECT_EQ(names.count(name), 1u) << name;
   }
 }

@@ -23,6 +23,7 @@
 #include "cli_capture.h"
 #include "experiments/experiments_delta.h"
 #include "experiments/experiments_policies.h"
+#include "experiments/experiments_reprojection.h"
 #include "experiments/experiments_runs.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
@@ -30,6 +31,8 @@
 #include "experiments/published_results.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
+#include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
 #include "report/charts.h"
 #include "report/report.h"
 #include "scratch_dir.h"
@@ -283,6 +286,52 @@ TEST(ExperimentReadings, LevelMixNamesTheLargestDifferences) {
             "more affine (+37), fewer none (-26)");
   EXPECT_EQ(percent(0.1234), "12.3%");
   EXPECT_EQ(fixed(NAN, 2), "n/a");
+}
+
+// The reprojection chapter's one-motion table from real runs (four cubes under translate, 5
+// frames) and timings at a small size: a row per method in order, each as long as the header,
+// the hole share recomputed from the run's own total, latency from the policy, a time for
+// every method. The times themselves are reported, never asserted.
+TEST(ReprojectionReport, OneMotionTableHasEveryMethodWithItsHolesTimeAndLatency) {
+  ReprojectionResult result;
+  result.spec = reprojection_spec(true);
+  result.spec.max_frames = 5;
+  result.spec.timing_width = 96;
+  result.spec.timing_height = 54;
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("four-cubes")));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path("translate"));
+  PlayOptions options;
+  options.max_frames = 5;
+  options.warm_up = false;
+  options.timing_repetitions = 1;
+  ReprojectionSource s{"four-cubes", "translate", 640 * 480, {}};
+  s.runs = run_policies(source_kind("scene"), source, one_motion_policies(), options);
+  EXPECT_THROW(one_motion_table(result), std::invalid_argument);  // no four cubes yet
+  result.sources.push_back(std::move(s));
+  EXPECT_THROW(one_motion_table(result), std::invalid_argument);  // no timings yet
+  result.timings =
+      time_one_motion(result.spec.timing_width, result.spec.timing_height, result.spec.cadence);
+  const ReportTable t = one_motion_table(result);
+  const std::vector<const ReusePolicy*> methods = one_motion_policies();
+  ASSERT_EQ(t.rows.size(), methods.size());
+  ASSERT_EQ(t.header.size(), 8u);
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    const std::vector<std::string>& row = t.rows[i];
+    ASSERT_EQ(row.size(), t.header.size()) << methods[i]->name;
+    EXPECT_EQ(row[0], methods[i]->name);
+    const RunSummary& summary = result.sources[0].runs[i].run.summary;
+    EXPECT_NEAR(std::stod(row[2]), 100.0 * summary.hole_pixels / (5.0 * 640 * 480), 5e-4) << row[0];
+    EXPECT_GT(std::stod(row[6]), 0.0) << row[0];
+    EXPECT_EQ(row[7], methods[i]->pixel_motion == PixelMotion::kBetweenRenders ? "1" : "0");
+    const MethodTiming& timing = result.timings[i];
+    EXPECT_EQ(timing.policy, methods[i]);
+    // Frames made without rendering among frames 1..8: four on the cadence, eight otherwise.
+    EXPECT_EQ(timing.frames, methods[i]->schedule == Schedule::kCadence ? 4 : 8) << row[0];
+    EXPECT_NEAR(timing.ms_1080p, timing.ms * 400.0, 1e-9 * timing.ms_1080p);  // (1920/96)^2
+  }
+  EXPECT_NE(t.caption.find("measured at 96 x 54 and scaled by the pixel count"), std::string::npos)
+      << t.caption;
 }
 
 TEST(Report, Base64MatchesRfc4648Vectors) {

@@ -127,10 +127,12 @@ TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
 TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   // Frame k after a render at frame 0 is rendered exactly when k is a multiple of N.
   for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "mv-extrapolation", "mv-no-inpaint"}) {
+                           "mv-extrapolation", "mv-no-inpaint", "view-interpolation"}) {
     const ReusePolicy& p = reuse_policy(name);
     EXPECT_EQ(p.schedule, Schedule::kCadence) << name;
-    EXPECT_EQ(p.latency_frames, 0) << name;
+    if (p.pixel_motion != PixelMotion::kBetweenRenders) {
+      EXPECT_EQ(latency_frames(p, 2), 0) << name;
+    }
     EXPECT_TRUE(reports_holes(p)) << name;
     EXPECT_NE(std::string(p.models), "") << name;
     EXPECT_NE(std::string(p.breaks), "") << name;
@@ -164,6 +166,17 @@ TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   EXPECT_TRUE(reuse_policy("mv-extrapolation").inpaint);
   EXPECT_FALSE(reuse_policy("mv-no-inpaint").inpaint);
   EXPECT_EQ(reuse_policy("depth-reprojection").pixel_motion, PixelMotion::kViewerStep);
+  // View interpolation: per-pixel, between two renders, scenes only, shown late: the frame
+  // after a render waits for the next render, cadence frames after it.
+  const ReusePolicy& between = reuse_policy("view-interpolation");
+  EXPECT_EQ(between.frame_warp, FrameWarp::kPerPixelDepth);
+  EXPECT_EQ(between.pixel_motion, PixelMotion::kBetweenRenders);
+  EXPECT_TRUE(needs_scene(between));
+  for (int cadence = 1; cadence <= 8; ++cadence) {
+    const int first_between = 1, next_render = cadence;
+    EXPECT_EQ(latency_frames(between, cadence), next_render - first_between) << cadence;
+    EXPECT_EQ(latency_frames(reuse_policy("depth-reprojection"), cadence), 0) << cadence;
+  }
   EXPECT_FALSE(needs_scene(reuse_policy("depth-reprojection")));
   EXPECT_TRUE(needs_scene(reuse_policy("hierarchical-cache")));
   EXPECT_FALSE(reports_holes(reuse_policy("perspective")));
@@ -187,6 +200,8 @@ TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "cached") << p.name;
       } else if (p.pixel_motion == PixelMotion::kMotionVectors) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "generated") << p.name;
+      } else if (p.pixel_motion == PixelMotion::kBetweenRenders) {
+        EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "interpolated") << p.name;
       } else if (p.schedule == Schedule::kCadence) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "reprojected") << p.name;
       } else {

@@ -212,45 +212,8 @@ TEST(PushPull, HolesTakeTheQuadtreeMeanOfTheSmallestBlockWithValidPixels) {
   EXPECT_EQ(push_pull_inpaint(none, std::vector<char>(16, 1)), 0);  // nothing to pull from
 }
 
-// A texture per polygon whose texels say where they are: red and green the texel's column
-// and row, blue the polygon. 256 x 256 texels, opaque.
-Image coded_texture(int polygon) {
-  Image t(256, 256);
-  for (int y = 0; y < 256; ++y) {
-    for (int x = 0; x < 256; ++x) {
-      t.pixels()[static_cast<std::size_t>(y) * 256 + x] =
-          Pixel{static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y),
-                static_cast<std::uint8_t>(polygon * 16), 255};
-    }
-  }
-  return t;
-}
-
-// The largest distance between an opaque pixel's centre and the exact projection now of the
-// texel centre its colour names: the error read back from the image alone.
-double image_error(const Scene& scene, const Image& frame, const ViewerPose& now) {
-  double worst = 0.0;
-  for (int y = 0; y < frame.height(); ++y) {
-    for (int x = 0; x < frame.width(); ++x) {
-      const Pixel p = frame.at(x, y);
-      if (p.a != 255) continue;
-      const ScenePolygon& polygon = scene.polygons.at(p.b / 16);
-      const Vec3 world = polygon_point(polygon, Vec2((p.r + 0.5) / 256.0, (p.g + 0.5) / 256.0));
-      worst = std::max(worst, glm::length(project_world(now, world) - Vec2(x + 0.5, y + 0.5)));
-    }
-  }
-  return worst;
-}
-
 TEST(FrameGeneration, MeasuredErrorNeverUnderReportsTheErrorReadFromTheImage) {
-  Scene scene = cube_past_cube();
-  scene.textures.clear();
-  scene.texture_names.clear();
-  for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
-    scene.polygons[i].texture = static_cast<int>(i);
-    scene.textures.push_back(coded_texture(static_cast<int>(i)));
-    scene.texture_names.push_back("coded");
-  }
+  const Scene scene = testing::with_coded_textures(cube_past_cube());
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("mv-no-inpaint");
   settings.engine.cadence = 3;
@@ -269,7 +232,8 @@ TEST(FrameGeneration, MeasuredErrorNeverUnderReportsTheErrorReadFromTheImage) {
       const AnimationFrame r =
           i == 0 ? engine.start(frames[0].pose)
                  : engine.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
-      const double seen = image_error(scene, engine.frame(), frames[i].pose);
+      const double seen =
+          testing::coded_image_error(scene, kCamera, engine.frame(), frames[i].pose);
       EXPECT_GE(r.max_measured_error_px, seen - 0.25) << "frame " << i;
       if (i % 3 != 0) {
         ++generated;
