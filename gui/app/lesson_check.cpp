@@ -113,6 +113,17 @@ double cut_texts(MainWindow* window) {
   return double(animation->text_problems().size());
 }
 
+// The world view's labels over its drawn pictures (WorldView::labels_over_content), summed
+// over the world views shown; NaN when none is.
+double labels_over_content(MainWindow* window) {
+  double over = kUnknown;
+  for (ViewPage* page : shown_views(window)) {
+    if (auto* world = qobject_cast<WorldView*>(page))
+      over = (std::isnan(over) ? 0.0 : over) + double(world->labels_over_content().size());
+  }
+  return over;
+}
+
 // How often the analysis view's budget chart of `claim.level` crosses its threshold upwards
 // over the frames it charts (AnalysisView::threshold_crossings).
 double threshold_crossings(MainWindow* window, const LessonClaim& claim) {
@@ -182,6 +193,8 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
        on_animation([](MainWindow*, AnimationView* v) { return double(v->hole_map_pixels()); })},
       {"panel_fill", [](MainWindow* window, const LessonClaim&) { return panel_fill(window); }},
       {"cut_texts", [](MainWindow* window, const LessonClaim&) { return cut_texts(window); }},
+      {"labels_over_content",
+       [](MainWindow* window, const LessonClaim&) { return labels_over_content(window); }},
       {"active_tiles",
        [](MainWindow* window, const LessonClaim&) {
          BasisView* basis = basis_view(window);

@@ -472,4 +472,37 @@ double WorldScene::drawn_share() const {
   return hull_share(seen, free.isEmpty() ? QRectF(0, 0, size[0], size[1]) : free);
 }
 
+std::vector<QPolygonF> WorldScene::content_outlines() const {
+  std::vector<std::vector<Vec3>> quads;
+  if (image_plane.actor->GetVisibility()) {
+    std::vector<Vec3> quad;
+    for (const Vec3& c : image_plane_corners(camera, depth))
+      quad.push_back(viewer_to_world(view, c));
+    quads.push_back(quad);
+  }
+  vtkPoints* corners = plane.data->GetPoints();
+  if (plane.actor->GetVisibility() && corners) {
+    std::vector<Vec3> quad;
+    for (vtkIdType i = 0; i < corners->GetNumberOfPoints(); ++i) {
+      const double* p = corners->GetPoint(i);
+      quad.emplace_back(p[0], p[1], p[2]);
+    }
+    quads.push_back(quad);
+  }
+  const int* size = window->GetSize();
+  std::vector<QPolygonF> outlines;
+  for (const std::vector<Vec3>& quad : quads) {
+    QPolygonF outline;
+    for (const Vec3& p : quad) {
+      renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
+      renderer->WorldToDisplay();
+      const double* d = renderer->GetDisplayPoint();
+      if (d[2] < 0.0 || d[2] > 1.0) break;
+      outline << QPointF(d[0], size[1] - d[1]);
+    }
+    if (outline.size() == int(quad.size()) && outline.size() >= 3) outlines.push_back(outline);
+  }
+  return outlines;
+}
+
 }  // namespace oflab

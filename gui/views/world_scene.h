@@ -24,6 +24,7 @@
 
 #include <QImage>
 #include <QPointF>
+#include <QPolygonF>
 #include <QSize>
 #include <array>
 #include <memory>
@@ -150,6 +151,10 @@ struct WorldScene {
   // unless the camera looks through the eye, the eye and its image plane's corners; points behind
   // the camera are left out.
   double drawn_share() const;
+  // The drawn pictures the labels leave clear, as the last render's camera projects them
+  // (canvas pixels): the image plane's quad when it shows and the textured plane's when it
+  // shows (plane mode); a quad with a corner behind the camera is left out.
+  std::vector<QPolygonF> content_outlines() const;
 
   // The camera framing everything drawn, seen from behind, above and left of the first
   // frame's eye; for the plane, of a few such vantages the one with the largest drawn_share.

@@ -91,7 +91,7 @@ void WorldTexts::lay_out_labels(const QSize& size, const QFont& base, const View
     placed.push_back(&label);
   }
   const QRectF area(kMargin, kMargin, size.width() - 2.0 * kMargin, size.height() - 2.0 * kMargin);
-  const std::vector<QRectF> boxes = place_labels(sizes, anchors, area, taken, kGap);
+  const std::vector<QRectF> boxes = place_labels(sizes, anchors, area, taken, kGap, content);
   for (size_t k = 0; k < boxes.size(); ++k) {
     const QPointF near = nearest_on(boxes[k], anchors[k]);
     const bool moved =
@@ -102,9 +102,23 @@ void WorldTexts::lay_out_labels(const QSize& size, const QFont& base, const View
     // normal one's).
     const QColor colour = theme.presentation ? to_qcolor(placed[k]->colour).darker(140)
                                              : to_qcolor(placed[k]->colour).lighter(140);
-    drawn_.push_back(
-        {QString::fromStdString(placed[k]->text), boxes[k], label_font, colour, moved, anchors[k]});
+    drawn_.push_back({QString::fromStdString(placed[k]->text), boxes[k], label_font, colour, moved,
+                      anchors[k], true});
   }
+}
+
+std::vector<QString> WorldTexts::labels_over_content() const {
+  std::vector<QString> over;
+  for (const Drawn& d : drawn_) {
+    if (!d.label) continue;
+    double covered = 0.0;
+    for (const QPolygonF& outline : content)
+      covered += covered_area(d.box.adjusted(1, 1, -1, -1), outline);
+    if (covered >= 1.0)
+      over.push_back(
+          QStringLiteral("%1 covers %2 px of the pictures").arg(d.text).arg(std::lround(covered)));
+  }
+  return over;
 }
 
 void WorldTexts::paint(QPainter& painter) const {

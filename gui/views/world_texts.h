@@ -2,8 +2,10 @@
 // the labels naming points of the 3D world (eye, image plane, U, N, V, Omega), the legend at
 // the top left and the caption at the bottom. Labels are placed next to the projection of
 // their point so that none covers another, the legend or the caption
-// (gui/adapters/label_layout.h); a label pushed away from its point gets a leader line. The
-// caption is wrapped to the picture's width, so no line is cut.
+// (gui/adapters/label_layout.h), and so that they cover none of the drawn content that matters
+// (`content`: the image plane's picture and the textured plane, as projected) where a place
+// next to their point is clear of it, else the least of it; a label pushed away from its point gets
+// a leader line. The caption is wrapped to the picture's width, so no line is cut.
 //
 // Units: canvas pixels (the picture's), top-left origin, y down; label points in world
 // units of the world view's frame.
@@ -12,6 +14,7 @@
 #include <QColor>
 #include <QFont>
 #include <QPointF>
+#include <QPolygonF>
 #include <QRectF>
 #include <QSize>
 #include <QString>
@@ -48,6 +51,9 @@ class WorldTexts {
   std::array<WorldLabel, kWorldLabelCount> labels;
   std::string caption;  // paragraphs separated by "\n"
   std::string legend = "World: the cause of the flow";
+  // The outlines of the drawn pictures the labels should leave clear (canvas pixels), set
+  // before lay_out.
+  std::vector<QPolygonF> content;
 
   // Places every text for a canvas of `size` (not empty) in `base`'s family at the theme's
   // sizes (legend font_size bold, labels label_size bold, caption label_size), the labels at
@@ -60,6 +66,9 @@ class WorldTexts {
   // The picture's band between the legend and the caption as last laid out (the whole
   // width; canvas pixels): where the world is seen whole; empty before a lay_out.
   QRectF free_area() const { return free_area_; }
+  // The labels as last laid out (not the legend or caption) whose box, less a pixel each
+  // side, covers a square pixel or more of `content`, each as "TEXT covers N px of the pictures".
+  std::vector<QString> labels_over_content() const;
 
  private:
   // The parts of lay_out, in its order; each adds its texts to drawn_ and the boxes the
@@ -80,6 +89,7 @@ class WorldTexts {
     QColor colour;
     bool leader = false;  // a line from `anchor` to the box
     QPointF anchor;
+    bool label = false;  // names a point (not the legend or the caption)
   };
   std::vector<Drawn> drawn_;
   QRectF free_area_;

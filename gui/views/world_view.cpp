@@ -140,6 +140,11 @@ std::vector<QString> WorldView::text_problems() const {
   return oflab::text_problems(painted_texts(), canvas_->size());
 }
 
+std::vector<QString> WorldView::labels_over_content() {
+  render_image();
+  return world_->texts.labels_over_content();
+}
+
 double WorldView::drawn_share() {
   render_image();
   return world_->drawn_share();
@@ -186,6 +191,7 @@ void WorldView::draw() {
     // After the size, and the legend and caption laid out: the framing fits the picture between
     // them (WorldScene::framed_picture).
     m.texts.caption = m.caption();
+    m.texts.content.clear();  // the camera is not placed yet
     m.texts.lay_out(size, font(), m.theme, project);
     place_camera();
   }
@@ -202,6 +208,7 @@ void WorldView::draw() {
   }
   const StageTimer text(FrameStage::kText);
   m.texts.caption = m.caption();
+  m.texts.content = m.content_outlines();
   m.texts.lay_out(size, font(), m.theme, project);
   {
     QPainter painter(&picture);

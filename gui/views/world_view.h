@@ -31,7 +31,8 @@
 // it draws changed (the frame, the source, a part shown, the theme, the camera, the size).
 //
 // Texts. The labels (eye, image plane, V, Omega, N, U) are painted next to the projection of
-// the point they name, placed so that none covers another or the caption
+// the point they name, placed so that none covers another or the caption, nor, where a place
+// near their point allows, the image plane's picture or the textured plane
 // (gui/adapters/label_layout.h), with a leader line when pushed away from it; the caption is
 // wrapped to the view's width.
 #pragma once
@@ -97,6 +98,9 @@ class WorldView : public ViewPage {
   // elided, off the canvas, overlapping); render_image first for the current frame.
   std::vector<PaintedText> painted_texts() const;
   std::vector<QString> text_problems() const;
+  // The labels of the picture drawn now that cover the image plane's picture or the textured
+  // plane (WorldTexts::labels_over_content), after a render at the canvas size.
+  std::vector<QString> labels_over_content();
   // The share (0..1) of the picture inside the convex hull of what it draws (the plane or the
   // scene's polygons, and the eye with its image plane unless seen through the eye) after a
   // render at the canvas size (WorldScene::drawn_share).

@@ -122,6 +122,10 @@ std::vector<ClaimKind> make_kinds() {
              "texts elided, off their canvas or overlapping another, or labels cut short: of "
              "the world view, the basis view's explorer or the analysis view when in front, "
              "else of the animation view"),
+      screen("labels_over_content",
+             "the world view's labels (shown in front or in the cause-and-effect layout) "
+             "that cover the image plane's picture or the textured plane as drawn now (their "
+             "projected outlines)"),
       engine("view", "1 when the view in front is `of`, else 0", true),
       engine("run_pixels_ratio",
              "the pixels compared policy `of` has written over frames 0 .. now over those of "

@@ -23,6 +23,7 @@
 #include "image_checks.h"
 #include "models/scene_model.h"
 #include "views/image_canvas.h"
+#include "views/world_texts.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
@@ -343,6 +344,44 @@ TEST_F(WorldViewTest, LabelsAndCaptionNeitherOverlapNorAreCut) {
         EXPECT_GE(t.box.height(), kPresentationMinTextPx) << t.text.toStdString();
       }
     }
+  }
+}
+
+// The labels_over_content measure (the lessons' claim of that name) against a forced case:
+// a picture covering the whole canvas leaves no place clear, and every label is reported
+// over it; the same labels beside a picture next to their points are placed clear of it.
+TEST(WorldTexts, LabelsOverThePicturesAreFoundAndAvoidedWhereTheyCanBe) {
+  WorldTexts texts;
+  texts.labels[kEyeLabel] = {"eye", Vec3(0.0), {0.0, 0.0, 0.0}, true};
+  texts.labels[kOmegaLabel] = {"Omega 0.80 rad/s about the eye", Vec3(1.0), {0.5, 0.2, 0.5}, true};
+  const QSize size(800, 500);
+  const auto project = [](const Vec3& at, QPointF* canvas) {
+    *canvas = at.x > 0.5 ? QPointF(500, 250) : QPointF(300, 250);
+    return true;
+  };
+  const ViewTheme theme = view_theme(false);
+  texts.content = {QPolygonF(QRectF(0, 0, 800, 500))};
+  texts.lay_out(size, QFont(), theme, project);
+  EXPECT_EQ(texts.labels_over_content().size(), 2u);
+  // A picture right of and above each point: the wanted places cover it, others do not.
+  texts.content = {QPolygonF(QRectF(300, 180, 400, 70))};
+  texts.lay_out(size, QFont(), theme, project);
+  QString over;
+  for (const QString& o : texts.labels_over_content()) over += o + QStringLiteral("; ");
+  EXPECT_TRUE(over.isEmpty()) << over.toStdString();
+  texts.content.clear();
+  texts.lay_out(size, QFont(), theme, project);
+  texts.content = {QPolygonF(QRectF(300, 180, 400, 70))};
+  EXPECT_FALSE(texts.labels_over_content().empty()) << "the wanted places cover the picture";
+}
+
+TEST_F(WorldViewTest, LabelsLeaveTheImagePlanesPictureAndThePlaneClear) {
+  for (bool presentation : {false, true}) {
+    show_world(presentation);
+    QString over;
+    for (const QString& o : world().labels_over_content()) over += o + QStringLiteral("; ");
+    EXPECT_TRUE(over.isEmpty()) << (presentation ? "presentation: " : "normal: ")
+                                << over.toStdString();
   }
 }
 
