@@ -58,6 +58,8 @@ screen=1920x1200 shot lesson-when-reuse-pays --lesson when-reuse-pays --presenta
   --frames 90
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
 shot lesson-occlusion --lesson occlusion --frames 20
+screen=1920x1200 shot lesson-guessing-the-next-frame --lesson guessing-the-next-frame \
+  --presentation --size 1920 1080 --frames 3
 shot slices --view slices --frames 10
 # The window as a projector shows it, normal and presentation mode, at 1920 x 1080.
 for look in normal presentation; do

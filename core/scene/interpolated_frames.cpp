@@ -44,22 +44,8 @@ double SceneEngine::interpolate_frame(const ViewerPose& current, AnimationFrame&
       RenderedView{rendered_frame_, rendered_depth_, viewer_step(rendered_view_, current)},
       RenderedView{next_frame_, next_depth_, viewer_step(next_view_, current)}, t, camera_,
       settings_.near);
-  // Which unreached pixels are holes (the depth of the view now) and the error: diagnostics,
-  // their time returned for the caller to leave out.
-  const auto t0 = Clock::now();
-  const DepthFrame now = render_depth(scene_, camera_, current, settings_.near);
-  f.hole_pixels = 0;
-  for (std::size_t k = 0; k < f.unreached.size(); ++k) {
-    f.hole_pixels += f.unreached[k] && now.polygon[k] >= 0;
-  }
-  const double diagnostics_ms = ms_since(t0);
-  frame_ = std::move(f.image);
-  source_of_ = std::move(f.source);
-  report.pixels_written = f.pixels_written;
-  report.model_work = static_cast<double>(f.source_pixels) * kPerspectiveWarpCost;
-  report.hole_pixels = f.hole_pixels;
-  report.max_measured_error_px = f.max_error_px;
-  return diagnostics_ms;
+  return show_splats(std::move(f.image), std::move(f.source), f.unreached, f.pixels_written,
+                     f.source_pixels, f.max_error_px, current, report);
 }
 
 }  // namespace oflab

@@ -250,20 +250,29 @@ double SceneEngine::reproject_frame(const ViewerPose& current, AnimationFrame& r
                                         viewer_step(rendered_view_, current), settings_.hole_fill,
                                         settings_.near);
     report.update_ms = ms_since(t0);
-    // Which unreached pixels are holes: the depth of the view now, a diagnostic (untimed).
-    const DepthFrame now = render_depth(scene_, camera_, current, settings_.near);
-    r.hole_pixels = 0;
-    for (std::size_t k = 0; k < r.unreached.size(); ++k) {
-      r.hole_pixels += r.unreached[k] && now.polygon[k] >= 0;
-    }
-    frame_ = std::move(r.image);
-    source_of_ = std::move(r.source);
-    report.pixels_written = r.pixels_written;
-    report.model_work = static_cast<double>(r.source_pixels) * kPerspectiveWarpCost;
-    report.hole_pixels = r.hole_pixels;
-    report.max_measured_error_px = r.max_error_px;
+    diagnostics_ms =
+        show_splats(std::move(r.image), std::move(r.source), r.unreached, r.pixels_written,
+                    r.source_pixels, r.max_error_px, current, report);
   }
   mark_reprojected(current, report);
+  return diagnostics_ms;
+}
+
+double SceneEngine::show_splats(Image image, std::vector<int> source,
+                                const std::vector<char>& unreached, std::int64_t pixels_written,
+                                std::int64_t source_pixels, double max_error_px,
+                                const ViewerPose& current, AnimationFrame& report) {
+  const auto t0 = Clock::now();
+  const DepthFrame now = render_depth(scene_, camera_, current, settings_.near);
+  std::int64_t holes = 0;
+  for (std::size_t k = 0; k < unreached.size(); ++k) holes += unreached[k] && now.polygon[k] >= 0;
+  const double diagnostics_ms = ms_since(t0);
+  frame_ = std::move(image);
+  source_of_ = std::move(source);
+  report.pixels_written = pixels_written;
+  report.model_work = static_cast<double>(source_pixels) * kPerspectiveWarpCost;
+  report.hole_pixels = holes;
+  report.max_measured_error_px = max_error_px;
   return diagnostics_ms;
 }
 

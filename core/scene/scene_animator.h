@@ -219,6 +219,13 @@ class SceneEngine {
   // then the frame made from both renders.
   bool look_ahead(double& excluded_ms);
   double interpolate_frame(const ViewerPose& current, AnimationFrame& report);
+  // Shows a frame of splats (reprojected or interpolated): its image and each pixel's source
+  // pixel become the engine's, and `report` takes its pixel writes, work, largest measured
+  // error and holes (the pixels of `unreached` where the view `current` shows a surface: a
+  // diagnostic, the depth of the view now rendered). Returns that diagnostic's milliseconds.
+  double show_splats(Image image, std::vector<int> source, const std::vector<char>& unreached,
+                     std::int64_t pixels_written, std::int64_t source_pixels, double max_error_px,
+                     const ViewerPose& current, AnimationFrame& report);
   void mark_reprojected(const ViewerPose& current, AnimationFrame& report);
   void cache_frame(const ViewerPose& current, AnimationFrame& report);
 

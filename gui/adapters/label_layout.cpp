@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "adapters/paint_helpers.h"
+
 namespace oflab {
 namespace {
 
@@ -34,15 +36,6 @@ QPolygonF clip(const QPolygonF& polygon, Inside inside, Cross cross) {
     if (inside(a) != inside(b)) out << cross(a, b);
   }
   return out;
-}
-
-double shoelace(const QPolygonF& p) {
-  double twice = 0.0;
-  for (int k = 0; k < p.size(); ++k) {
-    const QPointF a = p[k], b = p[(k + 1) % p.size()];
-    twice += a.x() * b.y() - b.x() * a.y();
-  }
-  return std::abs(twice) / 2.0;
 }
 
 // The places a label of `size` may take next to `anchor`, most wanted first.
@@ -100,7 +93,7 @@ double covered_area(const QRectF& box, const QPolygonF& outline) {
       p, [t](QPointF q) { return q.y() >= t; }, at_y(t));
   p = clip(
       p, [b](QPointF q) { return q.y() <= b; }, at_y(b));
-  return p.size() < 3 ? 0.0 : shoelace(p);
+  return p.size() < 3 ? 0.0 : polygon_area(p);
 }
 
 std::vector<QRectF> place_labels(const std::vector<QSizeF>& sizes,

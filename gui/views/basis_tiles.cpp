@@ -84,16 +84,6 @@ QPolygonF grid_outline(const std::vector<QPolygonF>& lines) {
   return outline;
 }
 
-double polygon_area(const QPolygonF& polygon) {
-  double twice = 0.0;
-  for (int i = 0; i < polygon.size(); ++i) {
-    const QPointF& a = polygon[i];
-    const QPointF& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x() * b.y() - b.x() * a.y();
-  }
-  return 0.5 * std::abs(twice);
-}
-
 }  // namespace
 
 BasisTiles::BasisTiles() : theme_(view_theme(false)), tiles_(kTileCount) {}

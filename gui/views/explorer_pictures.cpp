@@ -103,16 +103,6 @@ bool deformed_quad(const Mat3& deformation, const QRectF& rect, QPolygonF* quad)
   return true;
 }
 
-double polygon_area(const QPolygonF& polygon) {
-  double twice = 0.0;
-  for (int i = 0; i < polygon.size(); ++i) {
-    const QPointF& a = polygon[i];
-    const QPointF& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x() * b.y() - b.x() * a.y();
-  }
-  return 0.5 * std::abs(twice);
-}
-
 }  // namespace
 
 DeformationFraming explorer_deformation_framing(const Mat3& deformation, const Camera& camera,

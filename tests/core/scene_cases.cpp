@@ -80,6 +80,30 @@ std::vector<ScenePolygon> random_polygons(std::mt19937& rng, int count) {
   return out;
 }
 
+Scene cube_past_cube() {
+  std::vector<ScenePolygon> polygons = open_cube("far", Vec3(0.3, 0, -3), 2.0);
+  for (ScenePolygon& p : open_cube("near", Vec3(0, 0, 0), 0.8)) polygons.push_back(p);
+  return scene_with(polygons);
+}
+
+std::vector<ViewerFrame> sliding_past(int frames, const Vec3& velocity, const Vec3& omega) {
+  const ViewerPose start = look_at(Vec3(-0.3, 0.8, 3.5), Vec3(0, 0, -1), Vec3(0, 1, 0));
+  return expand_viewer_segments(start, {ViewerSegment{frames, velocity, omega}});
+}
+
+std::vector<std::vector<ViewerFrame>> three_motions_past() {
+  return {sliding_past(10, Vec3(0.05, 0, 0), Vec3(0.0)),                         // translate
+          sliding_past(10, Vec3(0.0), Vec3(0, 0.02, 0.01)),                      // rotate
+          expand_viewer_segments(sliding_past(1, Vec3(0.0), Vec3(0.0))[0].pose,  // compound
+                                 {{4, Vec3(0.04, 0, 0), Vec3(0.0)},
+                                  {3, Vec3(0, 0, -0.1), Vec3(0.0)},
+                                  {4, Vec3(0.02, 0, 0.05), Vec3(0, 0.03, 0)}})};
+}
+
+Vec2 project_world(const Camera& camera, const ViewerPose& view, const Vec3& world) {
+  return centred_to_pixel(camera, project_centred(camera, to_view(view, world)));
+}
+
 Vec3 world_point_at(const Camera& camera, const ScenePolygon& polygon, const ViewerPose& view,
                     double u, double v) {
   const Vec3 eye = eye_position(view);

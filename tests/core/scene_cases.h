@@ -26,6 +26,21 @@ std::vector<ScenePolygon> open_cube(const std::string& name, const Vec3& centre,
 // A scene with one checker texture (64 x 64) and the given polygons.
 Scene scene_with(std::vector<ScenePolygon> polygons);
 
+// A near open cube (side 0.8, at the origin) in front of a far one (side 2, at (0.3, 0, -3)):
+// seen by a viewer sliding sideways (sliding_past), the near cube uncovers the far one.
+Scene cube_past_cube();
+
+// `frames` frames of a viewer starting at (-0.3, 0.8, 3.5) looking down -Z, moving with
+// `velocity` and turning with `omega` (world units and radians per frame).
+std::vector<ViewerFrame> sliding_past(int frames, const Vec3& velocity, const Vec3& omega);
+
+// Three motions past cube_past_cube, 10 to 12 frames each: a sideways slide, a turn, and
+// segments of a slide, a push forward and a turning slide (translate, rotate, compound).
+std::vector<std::vector<ViewerFrame>> three_motions_past();
+
+// World point `world` projected into `camera` seen from `view`, top-left pixels.
+Vec2 project_world(const Camera& camera, const ViewerPose& view, const Vec3& world);
+
 // `count` random convex polygons (3 to 6 vertices) in random planes, each inside its own
 // ball, the balls disjoint, so no two polygons intersect; all within [-6, 6]^3.
 std::vector<ScenePolygon> random_polygons(std::mt19937& rng, int count);

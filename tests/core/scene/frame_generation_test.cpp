@@ -18,29 +18,15 @@
 namespace oflab {
 namespace {
 
+using testing::cube_past_cube;
 using testing::open_cube;
+using testing::project_world;
 using testing::scene_with;
+using testing::sliding_past;
 using testing::world_point_at;
 
 const Camera kCamera = make_camera(150.0, 160, 120);
 constexpr double kNear = 0.05;
-
-Vec2 project_world(const ViewerPose& view, const Vec3& world) {
-  return centred_to_pixel(kCamera, project_centred(kCamera, to_view(view, world)));
-}
-
-// A near cube in front of a far one, seen from a viewer sliding sideways: the near cube
-// slides past the far one and uncovers it.
-Scene cube_past_cube() {
-  std::vector<ScenePolygon> polygons = open_cube("far", Vec3(0.3, 0, -3), 2.0);
-  for (ScenePolygon& p : open_cube("near", Vec3(0, 0, 0), 0.8)) polygons.push_back(p);
-  return scene_with(polygons);
-}
-
-std::vector<ViewerFrame> sliding(int frames, const Vec3& velocity, const Vec3& omega) {
-  const ViewerPose start = look_at(Vec3(-0.3, 0.8, 3.5), Vec3(0, 0, -1), Vec3(0, 1, 0));
-  return expand_viewer_segments(start, {ViewerSegment{frames, velocity, omega}});
-}
 
 TEST(FrameGeneration, ExtrapolationIsExactForASteadySidewaysSlideAndWrongInATurn) {
   const Scene scene = cube_past_cube();
@@ -57,13 +43,13 @@ TEST(FrameGeneration, ExtrapolationIsExactForASteadySidewaysSlideAndWrongInATurn
         double w = 0.0;
         ASSERT_TRUE(extrapolate_point(kCamera, back, depth.planes[p], u, v, k, kNear, moved, w));
         const Vec3 hit = world_point_at(kCamera, scene.polygons[p], f[1].pose, u, v);
-        *worst = std::max(*worst, glm::length(moved - project_world(f[1 + k].pose, hit)));
+        *worst = std::max(*worst, glm::length(moved - project_world(kCamera, f[1 + k].pose, hit)));
       }
     }
   };
   double slide = 0.0, turn = 0.0;
-  check(sliding(5, Vec3(0.05, 0, 0), Vec3(0.0)), &slide);
-  check(sliding(5, Vec3(0.05, 0, -0.1), Vec3(0, 0.03, 0)), &turn);
+  check(sliding_past(5, Vec3(0.05, 0, 0), Vec3(0.0)), &slide);
+  check(sliding_past(5, Vec3(0.05, 0, -0.1), Vec3(0, 0.03, 0)), &turn);
   EXPECT_LT(slide, 1e-9);  // p(t) = f (X - t) / Z is linear in t
   EXPECT_GT(turn, 0.5);    // a turn and a push in: the vectors of the last step are wrong
 }
@@ -80,7 +66,7 @@ std::vector<char> disoccluded(const Scene& scene, const ViewerPose& then, const 
     if (p < 0) continue;
     const Vec3 x = world_point_at(kCamera, scene.polygons[p], now, d % kCamera.width + 0.5,
                                   d / kCamera.width + 0.5);
-    const Vec2 q = project_world(then, x);
+    const Vec2 q = project_world(kCamera, then, x);
     const int i = static_cast<int>(std::floor(q.x)), j = static_cast<int>(std::floor(q.y));
     if (i < 0 || j < 0 || i >= kCamera.width || j >= kCamera.height) {
       out[d] = 1;
@@ -94,7 +80,7 @@ std::vector<char> disoccluded(const Scene& scene, const ViewerPose& then, const 
 
 TEST(FrameGeneration, TheMaskCoversACubesDisocclusionAndInpaintingLeavesNoEmptyPixel) {
   const Scene scene = cube_past_cube();
-  const auto f = sliding(4, Vec3(0.3, 0, 0), Vec3(0.0));  // 6 px a frame past the far cube
+  const auto f = sliding_past(4, Vec3(0.3, 0, 0), Vec3(0.0));  // 6 px a frame past the far cube
   const Image rendered = testing::ray_cast_scene(scene, kCamera, f[1].pose, kNear);
   const DepthFrame depth = render_depth(scene, kCamera, f[1].pose, kNear);
   const RigidStep3 back = viewer_step(f[1].pose, f[0].pose);
@@ -217,13 +203,7 @@ TEST(FrameGeneration, MeasuredErrorNeverUnderReportsTheErrorReadFromTheImage) {
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("mv-no-inpaint");
   settings.engine.cadence = 3;
-  const std::vector<std::vector<ViewerFrame>> scripts = {
-      sliding(10, Vec3(0.05, 0, 0), Vec3(0.0)),                         // translate
-      sliding(10, Vec3(0.0), Vec3(0, 0.02, 0.01)),                      // rotate
-      expand_viewer_segments(sliding(1, Vec3(0.0), Vec3(0.0))[0].pose,  // compound
-                             {{4, Vec3(0.04, 0, 0), Vec3(0.0)},
-                              {3, Vec3(0, 0, -0.1), Vec3(0.0)},
-                              {4, Vec3(0.02, 0, 0.05), Vec3(0, 0.03, 0)}})};
+  const std::vector<std::vector<ViewerFrame>> scripts = testing::three_motions_past();
   double largest = 0.0;
   int generated = 0;
   for (const auto& frames : scripts) {

@@ -16,33 +16,21 @@ namespace oflab {
 namespace {
 
 using testing::open_cube;
+using testing::project_world;
 using testing::scene_with;
+using testing::sliding_past;
 using testing::world_point_at;
 
 const Camera kCamera = make_camera(150.0, 160, 120);
 constexpr double kNear = 0.05;
 
-Vec2 project_world(const ViewerPose& view, const Vec3& world) {
-  return centred_to_pixel(kCamera, project_centred(kCamera, to_view(view, world)));
-}
-
-// A near cube in front of a far one, texel-coded, seen from a viewer sliding sideways (and,
-// with `omega`, turning): the near cube slides past the far one and uncovers it.
-Scene cube_past_cube() {
-  std::vector<ScenePolygon> polygons = open_cube("far", Vec3(0.3, 0, -3), 2.0);
-  for (ScenePolygon& p : open_cube("near", Vec3(0, 0, 0), 0.8)) polygons.push_back(p);
-  return testing::with_coded_textures(scene_with(polygons));
-}
-
-std::vector<ViewerFrame> sliding(int frames, const Vec3& velocity, const Vec3& omega) {
-  const ViewerPose start = look_at(Vec3(-0.3, 0.8, 3.5), Vec3(0, 0, -1), Vec3(0, 1, 0));
-  return expand_viewer_segments(start, {ViewerSegment{frames, velocity, omega}});
-}
+// The near cube sliding past the far one (testing::cube_past_cube), texel-coded.
+Scene coded_cube_past_cube() { return testing::with_coded_textures(testing::cube_past_cube()); }
 
 // Whether the surface point seen now at pixel centre d (polygon p, world point x) is seen by
 // the render from `then`: its projection there falls in the frame on a pixel showing p.
 bool seen_by(const DepthFrame& then_depth, const ViewerPose& then, int p, const Vec3& x) {
-  const Vec2 q = project_world(then, x);
+  const Vec2 q = project_world(kCamera, then, x);
   const int i = static_cast<int>(std::floor(q.x)), j = static_cast<int>(std::floor(q.y));
   if (i < 0 || j < 0 || i >= kCamera.width || j >= kCamera.height) return false;
   return then_depth.polygon[static_cast<std::size_t>(j) * kCamera.width + i] == p;
@@ -87,8 +75,8 @@ InterpolatedFrame interpolate(const Renders& r, const ViewerPose& now, double t,
 }
 
 TEST(ViewInterpolation, APlaneMovedToTheViewNowGivesTheInverseDepthOfTheRayThere) {
-  const Scene scene = cube_past_cube();
-  const auto f = sliding(4, Vec3(0.1, 0.02, -0.05), Vec3(0.01, 0.03, 0));
+  const Scene scene = coded_cube_past_cube();
+  const auto f = sliding_past(4, Vec3(0.1, 0.02, -0.05), Vec3(0.01, 0.03, 0));
   const DepthFrame then = render_depth(scene, kCamera, f[0].pose, kNear);
   const RigidStep3 step = viewer_step(f[0].pose, f[3].pose);
   int checked = 0;
@@ -110,9 +98,9 @@ TEST(ViewInterpolation, APlaneMovedToTheViewNowGivesTheInverseDepthOfTheRayThere
 }
 
 TEST(ViewInterpolation, PixelsSeenByBothRendersLandWhereTheExactProjectionPutsThem) {
-  const Scene scene = cube_past_cube();
+  const Scene scene = coded_cube_past_cube();
   // A slide with a turn and a push: not a motion parallel to the image plane.
-  const auto f = sliding(5, Vec3(0.12, 0, -0.06), Vec3(0, 0.02, 0.01));  // frames 0..4
+  const auto f = sliding_past(5, Vec3(0.12, 0, -0.06), Vec3(0, 0.02, 0.01));  // frames 0..4
   const Renders r = render_both(scene, f[0].pose, f[4].pose);
   for (int k = 1; k <= 3; ++k) {
     const DepthFrame now = render_depth(scene, kCamera, f[k].pose, kNear);
@@ -129,7 +117,7 @@ TEST(ViewInterpolation, PixelsSeenByBothRendersLandWhereTheExactProjectionPutsTh
       const Vec3 x = world_point_at(kCamera, scene.polygons[p], r.view[from],
                                     s % kCamera.width + 0.5, s / kCamera.width + 0.5);
       const double e =
-          glm::length(project_world(f[k].pose, x) -
+          glm::length(project_world(kCamera, f[k].pose, x) -
                       Vec2(static_cast<double>(d % kCamera.width) + 0.5, d / kCamera.width + 0.5));
       worst = std::max(worst, e);
       if (!seen_by(r.depth[1 - from], r.view[1 - from], p, x)) continue;
@@ -153,7 +141,7 @@ TEST(ViewInterpolation, TwoViewsLeaveFewerHolesThanEitherAtACubesDisocclusion) {
   std::vector<ScenePolygon> polygons = open_cube("near", Vec3(0, 0, 0), 0.8);
   polygons.push_back(testing::square("wall", Vec3(0, 0, -3), Vec3(0, 0, 1), Vec3(0, 1, 0), 8.0));
   const Scene scene = scene_with(polygons);
-  const auto f = sliding(3, Vec3(0.3, 0, 0), Vec3(0.0));  // 6 px a frame past the wall
+  const auto f = sliding_past(3, Vec3(0.3, 0, 0), Vec3(0.0));  // 6 px a frame past the wall
   const Renders r = render_both(scene, f[0].pose, f[2].pose);
   const DepthFrame now = render_depth(scene, kCamera, f[1].pose, kNear);
   const InterpolatedFrame g = interpolate(r, f[1].pose, 0.5, &now);
@@ -199,8 +187,8 @@ TEST(ViewInterpolation, TwoViewsLeaveFewerHolesThanEitherAtACubesDisocclusion) {
 // frames, the frames between are interpolated with their error measured, and each is shown
 // two frames late.
 TEST(ViewInterpolation, TheEngineRendersOnItsCadenceAndInterpolatesTheFramesBetween) {
-  const Scene scene = cube_past_cube();
-  const auto frames = sliding(7, Vec3(0.08, 0, -0.04), Vec3(0, 0.02, 0));  // frames 0..6
+  const Scene scene = coded_cube_past_cube();
+  const auto frames = sliding_past(7, Vec3(0.08, 0, -0.04), Vec3(0, 0.02, 0));  // frames 0..6
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("view-interpolation");
   settings.engine.cadence = 3;
@@ -250,17 +238,11 @@ TEST(ViewInterpolation, TheEngineRendersOnItsCadenceAndInterpolatesTheFramesBetw
 // never under-reported by more than 0.25 px, and the image's error is sub-pixel to a few
 // pixels, so the check has something to find.
 TEST(ViewInterpolation, MeasuredErrorNeverUnderReportsTheErrorReadFromTheImage) {
-  const Scene scene = cube_past_cube();
+  const Scene scene = coded_cube_past_cube();
   SceneSettings settings;
   settings.engine.policy = &reuse_policy("view-interpolation");
   settings.engine.cadence = 3;
-  const std::vector<std::vector<ViewerFrame>> scripts = {
-      sliding(10, Vec3(0.05, 0, 0), Vec3(0.0)),                         // translate
-      sliding(10, Vec3(0.0), Vec3(0, 0.02, 0.01)),                      // rotate
-      expand_viewer_segments(sliding(1, Vec3(0.0), Vec3(0.0))[0].pose,  // compound
-                             {{4, Vec3(0.04, 0, 0), Vec3(0.0)},
-                              {3, Vec3(0, 0, -0.1), Vec3(0.0)},
-                              {4, Vec3(0.02, 0, 0.05), Vec3(0, 0.03, 0)}})};
+  const std::vector<std::vector<ViewerFrame>> scripts = testing::three_motions_past();
   int interpolated = 0;
   double largest = 0.0;
   for (const auto& frames : scripts) {
