@@ -82,4 +82,37 @@ TrialClips make_trial_clips(const Study& study, const std::vector<ErrorLadder>& 
   return clips;
 }
 
+TrialRunner::TrialRunner(const Study& study, const std::string& method, std::uint64_t seed)
+    : session_(study, method, seed), ladders_(study_ladders(study)) {}
+
+const TrialClips& TrialRunner::clips() {
+  if (!clips_) {
+    const TrialRequest& r = request();
+    const StudyTexture texture = session_.study().conditions.at(size_t(r.condition)).texture;
+    Image& image = textures_[size_t(texture)];
+    if (image.empty()) image = study_texture(texture);
+    clips_ = std::make_unique<TrialClips>(make_trial_clips(session_.study(), ladders_, r, image));
+  }
+  return *clips_;
+}
+
+void TrialRunner::answer(int chosen, bool late) {
+  if (chosen != 1 && chosen != 2) throw std::invalid_argument("the answer must be clip 1 or 2");
+  const double measured = clips().measured_px;
+  const bool correct = (chosen == 1) == request().distorted_first;
+  session_.answer(correct, measured, late);
+  if (!late) clips_.reset();  // a late trial is shown again as it was
+}
+
+int TrialRunner::chosen_for(bool correct) const {
+  return (correct == request().distorted_first) ? 1 : 2;
+}
+
+void run_simulated(TrialRunner& runner, SimulatedObserver& observer) {
+  while (!runner.finished()) {
+    const SimulatedObserver::Answer a = observer.answer(runner.clips().measured_px);
+    runner.answer(runner.chosen_for(a.correct), a.late);
+  }
+}
+
 }  // namespace oflab

@@ -6,6 +6,10 @@
 // error, the number the session records. Plain C++ over core/ and analysis/formats.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "image/image.h"
@@ -36,5 +40,40 @@ struct TrialClips {
 // texture kClipTextureWidth x kClipTextureHeight.
 TrialClips make_trial_clips(const Study& study, const std::vector<ErrorLadder>& ladders,
                             const TrialRequest& request, const Image& texture);
+
+// A study as a front-end runs it: the session's loop with each request's pictures. The
+// front-end plays clips() (first, then second), asks which clip was distorted and calls
+// answer(); the error recorded is the reused clip's measured error. The desktop window and the
+// page drive it alike, with a person or a SimulatedObserver answering.
+class TrialRunner {
+ public:
+  // Plays the study's ladders (study_ladders: about 0.7 s per new condition) and draws the
+  // first request. Throws std::invalid_argument for an unknown method, std::runtime_error
+  // when a texture cannot be read.
+  TrialRunner(const Study& study, const std::string& method, std::uint64_t seed);
+
+  bool finished() const { return session_.finished(); }
+  const TrialRequest& request() const { return session_.request(); }
+  // The pictures of request(), made on the first call for it. Precondition: !finished().
+  const TrialClips& clips();
+  // The observer named clip `chosen` (1: first, 2: second) as the distorted one; `late`:
+  // frames of the presentation were late (recorded, not counted, shown again). Makes the
+  // clips first if they were not made. Throws std::invalid_argument for another `chosen`.
+  void answer(int chosen, bool late);
+  // The clip a simulated observer's answer names: the distorted one when correct.
+  int chosen_for(bool correct) const;
+
+  const StudySession& session() const { return session_; }
+
+ private:
+  StudySession session_;
+  std::vector<ErrorLadder> ladders_;
+  std::array<Image, 2> textures_;  // by StudyTexture, read when first needed
+  std::unique_ptr<TrialClips> clips_;
+};
+
+// Runs `runner` to its end with `observer` answering, making every request's pictures as a
+// person's run does (without playing them on a clock).
+void run_simulated(TrialRunner& runner, SimulatedObserver& observer);
 
 }  // namespace oflab

@@ -86,5 +86,31 @@ TEST(TrialClips, TheTexturesAreTheClipsSizeAndTheGratingHasBarsFourTexelsWide) {
                std::invalid_argument);
 }
 
+// The front-ends' loop (TrialRunner, pictures made for every request) answered by a simulated
+// observer gives the trials of simulate_answers over the engine's shown error, late ones too.
+TEST(TrialRunner, ASimulatedRunThroughThePicturesIsTheHeadlessSimulation) {
+  Study study = one_condition_study();
+  study.trials = 3;
+  study.method = "staircase";
+  const PsychometricFunction observer{1.0, 3.5, 0.02};
+  TrialRunner runner(study, study.method, 11);
+  SimulatedObserver answers(11, observer, 0.5);
+  run_simulated(runner, answers);
+  StudySession headless(study, study.method, 11);
+  simulate_answers(headless, 11, observer, engine_error_display(study), 0.5);
+  const std::vector<StudyTrial>& a = runner.session().trials();
+  const std::vector<StudyTrial>& b = headless.trials();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_GT(runner.session().late_trials(), 0);
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].request.requested_px, b[i].request.requested_px) << i;
+    EXPECT_EQ(a[i].request.distorted_first, b[i].request.distorted_first) << i;
+    EXPECT_EQ(a[i].measured_px, b[i].measured_px) << i;
+    EXPECT_EQ(a[i].correct, b[i].correct) << i;
+    EXPECT_EQ(a[i].late, b[i].late) << i;
+  }
+  EXPECT_THROW(TrialRunner(study, "guess", 1), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace oflab
