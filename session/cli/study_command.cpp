@@ -29,7 +29,6 @@ inline constexpr Limit kSessions{"sessions", "", 1.0, 100000.0, true};
 inline constexpr Limit kReplicates{"bootstrap replicates", "", 20.0, 100000.0, true};
 inline constexpr Limit kObserverLapse{"observer lapse", "", 0.0, 0.2};
 inline constexpr Limit kLateFraction{"late fraction", "", 0.0, 0.9};
-inline constexpr Limit kPpi{"pixels per inch", "ppi", 10.0, 2000.0};
 
 CommandArgs options_after(const CommandArgs& args, size_t first) {
   return CommandArgs(args.begin() + long(std::min(first, args.size())), args.end());
@@ -180,7 +179,7 @@ int session(const CommandArgs& args, std::ostream& out) {
   }
   const std::string method = methods_argument(a, study.method).front();
   const std::uint64_t seed = seed_argument(a, study.seed);
-  const double ppi = a.has("--ppi") ? a.number_in("--ppi", kPpi) : 96.0;
+  const double ppi = a.has("--ppi") ? a.number_in("--ppi", study_limits::kPpi) : 96.0;
   StudySession run(study, method, seed);
   simulate_answers(run, seed, observer, engine_error_display(study));
   write_trial_csv(csv, trial_rows(run, name, ppi), overwrite);

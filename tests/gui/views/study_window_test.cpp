@@ -1,0 +1,71 @@
+// The threshold study's window (gui/views/study_window.h): a simulated observer answering in
+// it, through the buttons' answers, gives the trials of the headless simulation (oflab-cli
+// study session) for the same study, method and seed; its results page fits what the analysis
+// fits; its CSV is written whole and never over a file without leave.
+#include "views/study_window.h"
+
+#include <gtest/gtest.h>
+
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <fstream>
+#include <sstream>
+
+namespace oflab::test {
+namespace {
+
+Study short_study() {
+  Study s;
+  s.name = "short";
+  s.title = "A short study";
+  s.method = "staircase";
+  s.trials = 5;
+  s.seed = 5;
+  s.conditions = {{"near", StudyPolicy::kPerspective, 30.0, StudyTexture::kGrating, 50.0}};
+  return s;
+}
+
+TEST(StudyWindow, ASimulatedObserverInTheWindowAnswersAsTheHeadlessSimulation) {
+  const Study study = short_study();
+  StudyWindow window;
+  window.select_study(study);
+  window.set_fields("staircase", "ann", 110.0, 5);
+  const PsychometricFunction observer{0.8, study.assumed_slope, study.assumed_lapse};
+  SimulatedObserver answers(5, observer);
+  ASSERT_EQ(window.run_simulated(answers), "");
+
+  StudySession headless(study, "staircase", 5);
+  simulate_answers(headless, 5, observer, engine_error_display(study));
+  EXPECT_EQ(trial_csv_text(window.rows()), trial_csv_text(trial_rows(headless, "ann", 110.0)));
+  ASSERT_GE(window.rows().size(), 5u);
+
+  // The results page: one row per condition with the analysis's threshold.
+  const auto* table = window.findChild<QTableWidget*>();
+  ASSERT_NE(table, nullptr);
+  ASSERT_EQ(table->rowCount(), 1);
+  const ThresholdResult fit = analyse_rows(window.rows(), AnalysisSettings{}).at(0);
+  EXPECT_TRUE(table->item(0, 2)->text().startsWith(QString::number(fit.threshold_px, 'f', 2)))
+      << table->item(0, 2)->text().toStdString();
+
+  QTemporaryDir dir;
+  const std::string path = dir.filePath("ann.csv").toStdString();
+  EXPECT_EQ(window.write_csv(path, false), "");
+  EXPECT_NE(window.write_csv(path, false), "");  // refused: the file exists
+  std::stringstream written;
+  written << std::ifstream(path).rdbuf();
+  EXPECT_EQ(written.str(), trial_csv_text(window.rows()));
+}
+
+TEST(StudyWindow, ANameWithACommaCannotStart) {
+  StudyWindow window;
+  window.select_study(short_study());
+  window.set_fields("staircase", "ann, bob", 96.0, 1);
+  StudyChoice choice;
+  EXPECT_NE(window.read_choice(&choice), "");
+  SimulatedObserver answers(1, PsychometricFunction{});
+  EXPECT_NE(window.run_simulated(answers), "");
+  EXPECT_EQ(window.session(), nullptr);
+}
+
+}  // namespace
+}  // namespace oflab::test
