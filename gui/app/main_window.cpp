@@ -246,6 +246,12 @@ void MainWindow::create_menus() {
 StudyWindow* MainWindow::open_study_window() {
   if (!study_window_) {
     study_window_ = new StudyWindow(this);
+    connect(study_window_, &StudyWindow::threshold_chosen, this, [this](double px) {
+      WindowState state = model_->state();
+      state.settings.thresholds = {px, px, px, px};
+      QString error;
+      if (!model_->apply(state, &error)) show_message(error);
+    });
     study_window_->resize(std::max(900, width() * 3 / 4), std::max(720, height() * 3 / 4));
   }
   study_window_->show();

@@ -293,8 +293,12 @@ QWidget* StudyWindow::make_results_page() {
   connect(save, &QPushButton::clicked, this, &StudyWindow::save_csv);
   auto* again = new QPushButton(tr("New session"), page);
   connect(again, &QPushButton::clicked, this, [this] { pages_->setCurrentIndex(0); });
+  use_button_ = new QPushButton(page);
+  connect(use_button_, &QPushButton::clicked, this,
+          [this] { emit threshold_chosen(smallest_threshold_px_); });
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(save);
+  buttons->addWidget(use_button_);
   buttons->addWidget(again);
   buttons->addStretch();
   layout->addWidget(results_text_);
@@ -553,6 +557,14 @@ void StudyWindow::show_results() {
           .arg(all.size())
           .arg(runner_ ? runner_->session().late_trials() : 0));
   plot_->set(choice_.study, all, fits);
+  smallest_threshold_px_ = 0.0;
+  for (const ThresholdResult& r : fits) {
+    if (smallest_threshold_px_ == 0.0 || r.threshold_px < smallest_threshold_px_)
+      smallest_threshold_px_ = r.threshold_px;
+  }
+  use_button_->setEnabled(smallest_threshold_px_ > 0.0);
+  use_button_->setText(
+      tr("Use %1 px as the window's reuse threshold").arg(text_of(smallest_threshold_px_, 2)));
 }
 
 std::string StudyWindow::write_csv(const std::string& path, bool replace) const {

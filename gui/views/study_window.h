@@ -78,9 +78,16 @@ class StudyWindow : public QWidget {
   const StudySession* session() const;
   // The trials as CSV rows with the set-up page's observer and ppi.
   std::vector<TrialRow> rows() const;
+  // The smallest threshold fitted on the results page (pixels), 0 before results.
+  double smallest_threshold_px() const { return smallest_threshold_px_; }
+
   // Writes rows() to `path` whole or not at all (Overwrite::kReplace only when `replace`).
   // Returns "" or the error.
   std::string write_csv(const std::string& path, bool replace) const;
+
+ signals:
+  // "Use as the reuse threshold" on the results page: the smallest threshold fitted, pixels.
+  void threshold_chosen(double px);
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;
@@ -120,6 +127,8 @@ class StudyWindow : public QWidget {
   QTableWidget* results_table_ = nullptr;
   PsychometricPlot* plot_ = nullptr;
   QLabel* results_text_ = nullptr;
+  QPushButton* use_button_ = nullptr;
+  double smallest_threshold_px_ = 0.0;
 
   std::vector<Study> studies_;  // the study box's entries
   StudyChoice choice_;

@@ -1,15 +1,20 @@
 // The threshold study's window (gui/views/study_window.h): a simulated observer answering in
 // it, through the buttons' answers, gives the trials of the headless simulation (oflab-cli
 // study session) for the same study, method and seed; its results page fits what the analysis
-// fits; its CSV is written whole and never over a file without leave.
+// fits and becomes the main window's reuse threshold at a button; its CSV is written whole and
+// never over a file without leave.
 #include "views/study_window.h"
 
 #include <gtest/gtest.h>
 
+#include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <fstream>
 #include <sstream>
+
+#include "app/main_window.h"
+#include "models/window_model.h"
 
 namespace oflab::test {
 namespace {
@@ -27,7 +32,8 @@ Study short_study() {
 
 TEST(StudyWindow, ASimulatedObserverInTheWindowAnswersAsTheHeadlessSimulation) {
   const Study study = short_study();
-  StudyWindow window;
+  MainWindow main;
+  StudyWindow& window = *main.open_study_window();
   window.select_study(study);
   window.set_fields("staircase", "ann", 110.0, 5);
   const PsychometricFunction observer{0.8, study.assumed_slope, study.assumed_lapse};
@@ -46,6 +52,13 @@ TEST(StudyWindow, ASimulatedObserverInTheWindowAnswersAsTheHeadlessSimulation) {
   const ThresholdResult fit = analyse_rows(window.rows(), AnalysisSettings{}).at(0);
   EXPECT_TRUE(table->item(0, 2)->text().startsWith(QString::number(fit.threshold_px, 'f', 2)))
       << table->item(0, 2)->text().toStdString();
+
+  // Its threshold becomes the main window's reuse threshold.
+  EXPECT_EQ(window.smallest_threshold_px(), fit.threshold_px);
+  for (QPushButton* b : window.findChildren<QPushButton*>()) {
+    if (b->text().startsWith("Use ")) b->click();
+  }
+  for (double t : main.model()->state().settings.thresholds) EXPECT_EQ(t, fit.threshold_px);
 
   QTemporaryDir dir;
   const std::string path = dir.filePath("ann.csv").toStdString();
