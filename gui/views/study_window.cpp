@@ -416,12 +416,12 @@ void StudyWindow::play_phase(Phase phase) {
 void StudyWindow::tick() {
   const int due = pacer_.frames_due(elapsed_.elapsed());
   if (due == 0) return;
-  if (due > 1 && phase_ != Phase::kGap) {
+  const int length = phase_ == Phase::kGap ? 1 : int(runner_->clips().first.size());
+  if (due > 1 && phase_ != Phase::kGap) {  // frames skipped (those past the clip's end not counted)
     late_ = true;
-    late_frames_ += due - 1;
+    late_frames_ += std::min(frame_ + due, length) - frame_ - 1;
   }
   frame_ += due;
-  const int length = phase_ == Phase::kGap ? 1 : int(runner_->clips().first.size());
   if (frame_ >= length) return clip_ended();
   const std::vector<Image>& clip = phase_ == Phase::kRateCheck ? exact_clip()
                                    : phase_ == Phase::kFirst   ? runner_->clips().first

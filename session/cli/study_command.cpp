@@ -188,24 +188,6 @@ int session(const CommandArgs& args, std::ostream& out) {
   return 0;
 }
 
-ordered_json result_json(const ThresholdResult& r) {
-  const auto optional = [](const std::optional<double>& v) {
-    return v ? ordered_json(*v) : ordered_json(nullptr);
-  };
-  return {{"study", r.study},
-          {"observer", r.observer.empty() ? ordered_json(nullptr) : ordered_json(r.observer)},
-          {"condition", r.condition},
-          {"method", r.method},
-          {"trials", r.trials},
-          {"late", r.late},
-          {"proportion_correct", r.proportion_correct},
-          {"threshold_px", r.threshold_px},
-          {"ci95_px", {r.low_px, r.high_px}},
-          {"at_bound", r.at_bound},
-          {"threshold_arcmin", optional(r.threshold_arcmin)},
-          {"ci95_arcmin", {optional(r.low_arcmin), optional(r.high_arcmin)}}};
-}
-
 int analyse(const CommandArgs& args, std::ostream& out) {
   size_t files = 1;
   while (files < args.size() && args[files].rfind("--", 0) != 0) ++files;
@@ -237,7 +219,7 @@ int analyse(const CommandArgs& args, std::ostream& out) {
                         {"bootstrap", "parametric"},
                         {"replicates", settings.replicates}}},
                       {"results", ordered_json::array()}};
-    for (const ThresholdResult& r : results) j["results"].push_back(result_json(r));
+    for (const ThresholdResult& r : results) j["results"].push_back(threshold_result_json(r));
     out << j.dump(2) << "\n";
     return 0;
   }

@@ -132,4 +132,23 @@ std::vector<SimulationSummary> simulate_study(const Study& study,
   return summaries;
 }
 
+nlohmann::ordered_json threshold_result_json(const ThresholdResult& r) {
+  using nlohmann::ordered_json;
+  const auto optional = [](const std::optional<double>& v) {
+    return v ? ordered_json(*v) : ordered_json(nullptr);
+  };
+  return {{"study", r.study},
+          {"observer", r.observer.empty() ? ordered_json(nullptr) : ordered_json(r.observer)},
+          {"condition", r.condition},
+          {"method", r.method},
+          {"trials", r.trials},
+          {"late", r.late},
+          {"proportion_correct", r.proportion_correct},
+          {"threshold_px", r.threshold_px},
+          {"ci95_px", {r.low_px, r.high_px}},
+          {"at_bound", r.at_bound},
+          {"threshold_arcmin", optional(r.threshold_arcmin)},
+          {"ci95_arcmin", {optional(r.low_arcmin), optional(r.high_arcmin)}}};
+}
+
 }  // namespace oflab

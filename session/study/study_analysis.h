@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,11 @@ struct ThresholdResult {
   // Minutes of arc, when every row shares one ppi and viewing distance.
   std::optional<double> threshold_arcmin, low_arcmin, high_arcmin;
 };
+
+// `r` as the JSON of `oflab-cli study analyse --json` and the page: {study, observer (null for
+// a class row), condition, method, trials, late, proportion_correct, threshold_px, ci95_px
+// [low, high], at_bound, threshold_arcmin, ci95_arcmin [low, high] (null when not known)}.
+nlohmann::ordered_json threshold_result_json(const ThresholdResult& r);
 
 // The threshold of `rows` (one group: late rows are counted, not fitted; at least one answered
 // row), labelled from its first row. The bootstrap draws from a generator seeded by
