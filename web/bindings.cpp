@@ -149,6 +149,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("csv", &WebStudy::csv)
       .function("resultsJson", &WebStudy::results_json)
       .function("studyJson", &WebStudy::study_json)
+      .function("classResultsJson", &WebStudy::class_results_json)
       .function("curve", &oflab::study_curve)
       .class_function("shippedJson", &WebStudy::shipped_json);
   emscripten::function("heatColour", &oflab::heat_colour);

@@ -195,26 +195,48 @@ function studyRowsText(r) {
   const px = `${f(r.threshold_px)} (${f(r.ci95_px[0])}-${f(r.ci95_px[1])})`;
   const arcmin = r.threshold_arcmin === null ? ''
     : `${f(r.threshold_arcmin)} (${f(r.ci95_arcmin[0])}-${f(r.ci95_arcmin[1])})`;
-  return `<tr><td>${r.condition}</td><td>${r.trials} (${r.late})</td><td>${px}` +
+  const who = r.observer === null ? '(class)' : r.observer;
+  return `<tr><td>${who}</td><td>${r.condition}</td><td>${r.trials} (${r.late})</td><td>${px}` +
     `${r.at_bound ? ' at the fit\'s bound' : ''}</td><td>${arcmin}</td>` +
     `<td>${Math.round(r.proportion_correct * 100)} %</td></tr>`;
 }
 
-function showStudyResults() {
+// The results page: the fits' table (a row per observer and condition, the class's rows
+// last), and the plot of the class's rows when there are several observers, else the one's.
+function showResultsOf(info, results, rows, heading) {
   study.phase = 'idle';
   showStudyPage('results');
-  const observer = $('study-observer').value.trim();
-  const ppi = Number($('study-ppi').value);
-  const results = JSON.parse(study.core.resultsJson(observer, ppi));
-  const info = JSON.parse(study.core.studyJson());
-  $('study-table').innerHTML = '<tr><th>condition</th><th>trials (late)</th>' +
+  $('study-table').innerHTML = '<tr><th>observer</th><th>condition</th><th>trials (late)</th>' +
     '<th>threshold, 95 % interval (px)</th><th>the same in arcmin</th><th>correct</th></tr>' +
     results.map(studyRowsText).join('');
+  $('study-results-text').textContent = `${heading} The threshold is the error seen three ` +
+    'times in four; for reuse to go unseen, the engine\'s threshold should sit below it.';
+  const pooled = results.some((r) => r.observer === null);
+  drawPsychometricPlot(info, results.filter((r) => !pooled || r.observer === null), rows);
+}
+
+function showStudyResults() {
+  const observer = $('study-observer').value.trim();
+  const ppi = Number($('study-ppi').value);
+  const info = JSON.parse(study.core.studyJson());
   const r = JSON.parse(study.core.requestJson());
-  $('study-results-text').textContent = `${info.title}: the threshold is the error seen three ` +
-    'times in four; for reuse to go unseen, the engine\'s threshold should sit below it.' +
-    (r.late ? ` ${r.late} presentations were late and shown again.` : '');
-  drawPsychometricPlot(info, results, parseTrialCsv(study.core.csv(observer, ppi)));
+  showResultsOf(info, JSON.parse(study.core.resultsJson(observer, ppi)),
+    parseTrialCsv(study.core.csv(observer, ppi)),
+    `${info.title}${r.late ? `: ${r.late} presentations were late and shown again.` : '.'}`);
+}
+
+// The class view: the students' CSV files analysed together by the module.
+function openClassCsvs(files) {
+  Promise.all(Array.from(files).map((f) => f.text().then((text) => ({ name: f.name, text }))))
+    .then((list) => {
+      if (!study.core) study.core = new Module.Study();
+      const out = JSON.parse(study.core.classResultsJson(JSON.stringify(list)));
+      if (out.problem) { $('study-status').textContent = out.problem; return; }
+      const rows = list.flatMap((f) => parseTrialCsv(f.text));
+      const observers = new Set(rows.map((row) => row.observer));
+      showResultsOf(out.study, out.results, rows, `${list.length} files, ${observers.size} ` +
+        `observers, ${rows.length} presentations of ${out.study.title}.`);
+    });
 }
 
 function parseTrialCsv(text) {
@@ -347,6 +369,10 @@ function bindStudyControls() {
     e.target.value = '';
   });
   $('study-start').addEventListener('click', startStudy);
+  $('study-class').addEventListener('change', (e) => {
+    if (e.target.files.length) openClassCsvs(e.target.files);
+    e.target.value = '';
+  });
   $('study-first').addEventListener('click', () => answerStudy(1));
   $('study-second').addEventListener('click', () => answerStudy(2));
   $('study-stop').addEventListener('click', showStudyResults);

@@ -70,6 +70,7 @@ std::string WebStudy::open(const std::string& name, const std::string& file_text
     auto runner = std::make_unique<TrialRunner>(study, method.empty() ? study.method : method, s);
     runner_ = std::move(runner);
     seed_ = s;
+    shown_ = std::make_unique<Study>(study);
   } catch (const std::exception& e) {
     return without_folder(e.what());
   }
@@ -131,16 +132,40 @@ std::string WebStudy::results_json(const std::string& observer, double ppi) cons
   if (std::none_of(rows.begin(), rows.end(), [](const TrialRow& r) { return !r.late; })) {
     return out.dump();  // nothing answered yet: nothing to fit
   }
-  for (const ThresholdResult& result : analyse_rows(rows, AnalysisSettings{})) {
+  const AnalysisSettings settings = analysis_settings(runner_->session().study());
+  for (const ThresholdResult& result : analyse_rows(rows, settings)) {
     out.push_back(threshold_result_json(result));
   }
   return out.dump();
 }
 
+std::string WebStudy::class_results_json(const std::string& files_json) {
+  std::vector<TrialRow> rows;
+  try {
+    for (const auto& file : nlohmann::json::parse(files_json)) {
+      const std::vector<TrialRow> more =
+          parse_trial_csv(file.at("text").get<std::string>(), file.at("name").get<std::string>());
+      rows.insert(rows.end(), more.begin(), more.end());
+    }
+  } catch (const std::exception& e) {
+    return ordered_json{{"problem", e.what()}}.dump();
+  }
+  if (rows.empty()) return ordered_json{{"problem", "the files hold no trials"}}.dump();
+  const Study study = study_of_rows(rows);
+  ordered_json results = ordered_json::array();
+  if (std::any_of(rows.begin(), rows.end(), [](const TrialRow& r) { return !r.late; })) {
+    for (const ThresholdResult& r : analyse_rows(rows, analysis_settings(study))) {
+      results.push_back(threshold_result_json(r));
+    }
+  }
+  shown_ = std::make_unique<Study>(study);
+  return ordered_json{{"study", study_summary(study)}, {"results", results}}.dump();
+}
+
 std::vector<double> WebStudy::curve(double threshold_px, int n) const {
   std::vector<double> p;
-  if (!runner_ || !(threshold_px > 0.0)) return p;
-  const Study& s = runner_->session().study();
+  if (!shown_ || !(threshold_px > 0.0)) return p;
+  const Study& s = *shown_;
   const PsychometricFunction f{threshold_px, s.assumed_slope, s.assumed_lapse};
   n = std::clamp(n, 2, 1000);
   for (int i = 0; i < n; ++i) {

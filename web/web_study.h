@@ -47,9 +47,16 @@ class WebStudy {
   // The analysis of those rows (session/study/study_analysis.h, the default settings) as a
   // JSON array of threshold_result_json objects, as `oflab-cli study analyse --json` gives.
   std::string results_json(const std::string& observer, double ppi) const;
+  // The class view: the per-trial CSV files in `files_json` (a JSON array of {name, text})
+  // analysed together as `oflab-cli study analyse` does (a row per observer and condition,
+  // then the class's pooled rows), with the study they come from (study_of_rows), which the
+  // results' plot and curve() then use. JSON {"study": study_json, "results": [...]}, or
+  // {"problem": the reader's message naming the file, the line and the column}.
+  std::string class_results_json(const std::string& files_json);
   // The psychometric function (session/study/psychometric.h) with threshold `threshold_px`
-  // and the open study's assumed slope and lapse: the proportion correct at `n` (2..1000)
-  // errors log-spaced over the study's error range. Empty when no study is open.
+  // and the shown study's assumed slope and lapse (the open study, or the class files'):
+  // the proportion correct at `n` (2..1000) errors log-spaced over its error range. Empty
+  // when no study is shown.
   std::vector<double> curve(double threshold_px, int n) const;
   // The open study as JSON: {name, title, min_px, max_px, assumed_slope, assumed_lapse,
   // conditions: [names]}; "{}" when none.
@@ -58,6 +65,7 @@ class WebStudy {
  private:
   std::unique_ptr<TrialRunner> runner_;
   std::uint64_t seed_ = 0;
+  std::unique_ptr<Study> shown_;  // the study of the results shown
 };
 
 }  // namespace oflab

@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "adapters/frame_images.h"
 #include "adapters/paint_helpers.h"
@@ -224,7 +225,12 @@ QWidget* StudyWindow::make_setup_page() {
   form->addRow(tr("Seed"), seed_box_);
   auto* start_button = new QPushButton(tr("Start"), page);
   connect(start_button, &QPushButton::clicked, this, &StudyWindow::start);
-  form->addRow(QString(), start_button);
+  auto* class_button = new QPushButton(tr("Class results from trial files..."), page);
+  connect(class_button, &QPushButton::clicked, this, &StudyWindow::open_class_csvs);
+  auto* start_row = new QHBoxLayout;
+  start_row->addWidget(start_button, 1);
+  start_row->addWidget(class_button);
+  form->addRow(QString(), start_row);
   setup_status_ = new QLabel(page);
   setup_status_->setWordWrap(true);
   form->addRow(QString(), setup_status_);
@@ -283,8 +289,8 @@ QWidget* StudyWindow::make_results_page() {
   auto* layout = new QVBoxLayout(page);
   results_text_ = new QLabel(page);
   results_text_->setWordWrap(true);
-  results_table_ = new QTableWidget(0, 5, page);
-  results_table_->setHorizontalHeaderLabels({tr("condition"), tr("trials (late)"),
+  results_table_ = new QTableWidget(0, 6, page);
+  results_table_->setHorizontalHeaderLabels({tr("observer"), tr("condition"), tr("trials (late)"),
                                              tr("threshold, 95 % interval (px)"),
                                              tr("the same in arcmin"), tr("correct")});
   results_table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -529,42 +535,94 @@ std::vector<TrialRow> StudyWindow::rows() const {
 void StudyWindow::show_results() {
   clock_.stop();
   phase_ = Phase::kIdle;
-  pages_->setCurrentIndex(2);
   const std::vector<TrialRow> all = rows();
-  std::vector<ThresholdResult> fits;
-  const bool answered =
-      std::any_of(all.begin(), all.end(), [](const TrialRow& r) { return !r.late; });
-  if (answered) fits = analyse_rows(all, AnalysisSettings{});
+  show_results_of(choice_.study, all,
+                  tr("%1: %2 presentations, %3 late (shown again).")
+                      .arg(QString::fromStdString(choice_.study.title))
+                      .arg(all.size())
+                      .arg(runner_ ? runner_->session().late_trials() : 0));
+}
+
+void StudyWindow::fill_results_table(const std::vector<ThresholdResult>& fits) {
   results_table_->setRowCount(int(fits.size()));
   for (size_t i = 0; i < fits.size(); ++i) {
     const ThresholdResult& r = fits[i];
     const QString arcmin = r.threshold_arcmin
                                ? interval_text(*r.threshold_arcmin, *r.low_arcmin, *r.high_arcmin)
                                : QString();
-    const QStringList cells = {QString::fromStdString(r.condition),
-                               QStringLiteral("%1 (%2)").arg(r.trials).arg(r.late),
-                               interval_text(r.threshold_px, r.low_px, r.high_px) +
-                                   (r.at_bound ? tr(" at the fit's bound") : QString()),
-                               arcmin, text_of(r.proportion_correct * 100.0, 0) + " %"};
+    const QStringList cells = {
+        r.observer.empty() ? tr("(class)") : QString::fromStdString(r.observer),
+        QString::fromStdString(r.condition),
+        QStringLiteral("%1 (%2)").arg(r.trials).arg(r.late),
+        interval_text(r.threshold_px, r.low_px, r.high_px) +
+            (r.at_bound ? tr(" at the fit's bound") : QString()),
+        arcmin,
+        text_of(r.proportion_correct * 100.0, 0) + " %"};
     for (int c = 0; c < cells.size(); ++c) {
       results_table_->setItem(int(i), c, new QTableWidgetItem(cells[c]));
     }
   }
-  results_text_->setText(
-      tr("%1: %2 presentations, %3 late (shown again). The threshold is the error seen three "
-         "times in four; for reuse to go unseen, the engine's threshold should sit below it.")
-          .arg(QString::fromStdString(choice_.study.title))
-          .arg(all.size())
-          .arg(runner_ ? runner_->session().late_trials() : 0));
-  plot_->set(choice_.study, all, fits);
-  smallest_threshold_px_ = 0.0;
+}
+
+void StudyWindow::show_results_of(const Study& study, const std::vector<TrialRow>& rows,
+                                  const QString& heading) {
+  pages_->setCurrentIndex(2);
+  std::vector<ThresholdResult> fits;
+  const bool answered =
+      std::any_of(rows.begin(), rows.end(), [](const TrialRow& r) { return !r.late; });
+  if (answered) fits = analyse_rows(rows, analysis_settings(study));
+  fill_results_table(fits);
+  results_text_->setText(heading +
+                         tr(" The threshold is the error seen three times in four; for reuse to "
+                            "go unseen, the engine's threshold should sit below it."));
+  // The plot: the class's pooled fits when there are several observers, else the one's.
+  const bool has_class = std::any_of(fits.begin(), fits.end(),
+                                     [](const ThresholdResult& r) { return r.observer.empty(); });
+  std::vector<ThresholdResult> plotted;
   for (const ThresholdResult& r : fits) {
+    if (!has_class || r.observer.empty()) plotted.push_back(r);
+  }
+  plot_->set(study, rows, plotted);
+  smallest_threshold_px_ = 0.0;
+  for (const ThresholdResult& r : plotted) {
     if (smallest_threshold_px_ == 0.0 || r.threshold_px < smallest_threshold_px_)
       smallest_threshold_px_ = r.threshold_px;
   }
   use_button_->setEnabled(smallest_threshold_px_ > 0.0);
   use_button_->setText(
       tr("Use %1 px as the window's reuse threshold").arg(text_of(smallest_threshold_px_, 2)));
+}
+
+std::string StudyWindow::show_class_results(const std::vector<std::string>& csv_paths) {
+  std::vector<TrialRow> rows;
+  try {
+    for (const std::string& path : csv_paths) {
+      const std::vector<TrialRow> more = read_trial_csv(path);
+      rows.insert(rows.end(), more.begin(), more.end());
+    }
+  } catch (const std::exception& e) {  // refused: the page shown stays
+    return e.what();
+  }
+  if (rows.empty()) return "the files hold no trials";
+  std::set<std::string> observers;
+  for (const TrialRow& r : rows) observers.insert(r.observer);
+  show_results_of(study_of_rows(rows), rows,
+                  tr("%1 files, %2 observers, %3 presentations of %4.")
+                      .arg(csv_paths.size())
+                      .arg(observers.size())
+                      .arg(rows.size())
+                      .arg(QString::fromStdString(rows.front().study)));
+  return "";
+}
+
+void StudyWindow::open_class_csvs() {
+  const QStringList paths = QFileDialog::getOpenFileNames(
+      this, tr("Class results: the students' trial files"), QString(), tr("CSV (*.csv)"));
+  if (paths.isEmpty()) return;
+  std::vector<std::string> list;
+  for (const QString& p : paths) list.push_back(p.toStdString());
+  const std::string problem = show_class_results(list);
+  if (!problem.empty()) setup_status_->setText(QString::fromStdString(problem));
 }
 
 std::string StudyWindow::write_csv(const std::string& path, bool replace) const {

@@ -8,7 +8,8 @@
 // trial the window plays a second of frames and refuses to start when any is late, saying how
 // many were. Results: the threshold and its 95 % interval per condition in pixels and minutes
 // of arc (session/study/study_analysis.h), the psychometric function over the answers, and the
-// per-trial CSV (written whole, an existing file replaced only when the file dialog asked).
+// per-trial CSV (written whole, an existing file replaced only when the file dialog asked);
+// and the class view: many observers' CSVs on that page, each observer's rows and the class's.
 #pragma once
 
 #include <QElapsedTimer>
@@ -78,6 +79,12 @@ class StudyWindow : public QWidget {
   const StudySession* session() const;
   // The trials as CSV rows with the set-up page's observer and ppi.
   std::vector<TrialRow> rows() const;
+  // The class view: the trials of the CSV files at `csv_paths` (session/study/trial_csv.h)
+  // together on the results page, a row per observer and condition and the class's pooled row
+  // (plotted when there are several observers). Returns "" or the reader's message (file,
+  // line, column), the page shown staying as it was.
+  std::string show_class_results(const std::vector<std::string>& csv_paths);
+
   // The smallest threshold fitted on the results page (pixels), 0 before results.
   double smallest_threshold_px() const { return smallest_threshold_px_; }
 
@@ -109,6 +116,10 @@ class StudyWindow : public QWidget {
   void clip_ended();
   void answer(int chosen);
   void show_results();
+  void show_results_of(const Study& study, const std::vector<TrialRow>& rows,
+                       const QString& heading);
+  void fill_results_table(const std::vector<ThresholdResult>& fits);
+  void open_class_csvs();
   void save_csv();
   void update_trial_text();
 

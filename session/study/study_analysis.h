@@ -26,6 +26,16 @@ struct AnalysisSettings {
   std::uint64_t seed = 1;  // of the bootstrap's draws
 };
 
+// The settings that fit `study`'s trials: its assumed slope and lapse, the other defaults.
+AnalysisSettings analysis_settings(const Study& study);
+
+// The study the rows of a CSV come from, for their plot and fit: the shipped study or study
+// file called rows[0].study when there is one (find_or_read_study), else a study of that name
+// with the rows' conditions (in the order first met), the default error range widened to
+// hold every measured error, and the default assumed slope and lapse. Precondition: rows not
+// empty.
+Study study_of_rows(const std::vector<TrialRow>& rows);
+
 struct ThresholdResult {
   std::string study, observer, condition, method;  // observer "" for a class row
   int trials = 0;                                  // answered (not late) trials fitted

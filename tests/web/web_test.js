@@ -248,6 +248,34 @@ async function testStudy(browser) {
       return out;
     })()`);
     check('StudyFileRefusedNamingTheFileAndField', /^short-study\.json: .*trials/.test(refused), refused);
+    // The class view: two observers' CSVs fitted on the page as `oflab-cli study analyse`.
+    const bob = path.join(dir, 'bob.csv');
+    spawnSync(cli, ['study', 'session', '--study', file, '--observer-threshold', '2', '--seed', '8',
+      '--method', 'staircase', '--observer', 'bob', '--csv', bob]);
+    const files = [csv, bob].map((f) => ({ name: path.basename(f), text: fs.readFileSync(f, 'utf8') }));
+    const analysed = spawnSync(cli, ['study', 'analyse', csv, bob, '--json'], { encoding: 'utf8' });
+    const want = analysed.status === 0 ? JSON.parse(analysed.stdout).results : [];
+    const got = JSON.parse(await evaluate(browser, `(() => {
+      const s = new Module.Study();
+      const out = s.classResultsJson(${JSON.stringify(JSON.stringify(files))});
+      s.delete();
+      return out;
+    })()`));
+    const close = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(b));
+    const same = got.results && got.results.length === want.length && want.length === 3 &&
+      want.every((w, i) => got.results[i].observer === w.observer &&
+        close(got.results[i].threshold_px, w.threshold_px) &&
+        close(got.results[i].ci95_px[0], w.ci95_px[0]) && close(got.results[i].ci95_px[1], w.ci95_px[1]));
+    check('StudyClassViewFitsAsTheCommandLine', same,
+      `${(got.results || []).map((r) => `${r.observer}: ${r.threshold_px}`).join(', ')} against ` +
+      `${want.map((r) => `${r.observer}: ${r.threshold_px}`).join(', ')}`);
+    const broken = await evaluate(browser, `(() => {
+      const s = new Module.Study();
+      const out = s.classResultsJson(JSON.stringify([{ name: 'broken.csv', text: 'study,observer\\nx,y\\n' }]));
+      s.delete();
+      return out;
+    })()`);
+    check('StudyClassViewRefusesABrokenFileNamingIt', /broken\.csv/.test(JSON.parse(broken).problem || ''), broken);
   } finally {
     fs.rmSync(dir, { recursive: true, force: true });
   }

@@ -50,8 +50,9 @@ TEST(StudyWindow, ASimulatedObserverInTheWindowAnswersAsTheHeadlessSimulation) {
   ASSERT_NE(table, nullptr);
   ASSERT_EQ(table->rowCount(), 1);
   const ThresholdResult fit = analyse_rows(window.rows(), AnalysisSettings{}).at(0);
-  EXPECT_TRUE(table->item(0, 2)->text().startsWith(QString::number(fit.threshold_px, 'f', 2)))
-      << table->item(0, 2)->text().toStdString();
+  EXPECT_EQ(table->item(0, 0)->text(), "ann");
+  EXPECT_TRUE(table->item(0, 3)->text().startsWith(QString::number(fit.threshold_px, 'f', 2)))
+      << table->item(0, 3)->text().toStdString();
 
   // Its threshold becomes the main window's reuse threshold.
   EXPECT_EQ(window.smallest_threshold_px(), fit.threshold_px);
@@ -67,6 +68,38 @@ TEST(StudyWindow, ASimulatedObserverInTheWindowAnswersAsTheHeadlessSimulation) {
   std::stringstream written;
   written << std::ifstream(path).rdbuf();
   EXPECT_EQ(written.str(), trial_csv_text(window.rows()));
+}
+
+// Two observers' CSVs in the class view: a row per observer and the class's pooled row, the
+// class's threshold the one offered; a broken CSV is refused naming the file and the line.
+TEST(StudyWindow, TheClassViewMergesObserversAndRefusesABrokenFile) {
+  const Study study = short_study();
+  QTemporaryDir dir;
+  std::vector<std::string> paths;
+  for (const auto& [name, threshold] : {std::pair<std::string, double>{"ann", 0.6}, {"bob", 2.0}}) {
+    StudySession run(study, "staircase", threshold > 1 ? 8 : 9);
+    simulate_answers(run, 3, PsychometricFunction{threshold, 3.5, 0.02},
+                     engine_error_display(study));
+    paths.push_back(dir.filePath(QString::fromStdString(name + ".csv")).toStdString());
+    write_trial_csv(paths.back(), trial_rows(run, name, 96.0), Overwrite::kRefuse);
+  }
+  StudyWindow window;
+  ASSERT_EQ(window.show_class_results(paths), "");
+  const auto* table = window.findChild<QTableWidget*>();
+  ASSERT_EQ(table->rowCount(), 3);  // ann, bob, the class
+  EXPECT_EQ(table->item(2, 0)->text(), "(class)");
+  std::vector<TrialRow> rows = read_trial_csv(paths[0]);
+  const std::vector<TrialRow> more = read_trial_csv(paths[1]);
+  rows.insert(rows.end(), more.begin(), more.end());
+  const ThresholdResult pooled = analyse_rows(rows, AnalysisSettings{}).at(2);
+  EXPECT_EQ(pooled.observer, "");
+  EXPECT_EQ(window.smallest_threshold_px(), pooled.threshold_px);
+
+  const std::string broken = dir.filePath("broken.csv").toStdString();
+  std::ofstream(broken) << "study,observer\nx,y\n";
+  const std::string problem = window.show_class_results({paths[0], broken});
+  EXPECT_NE(problem.find("broken.csv"), std::string::npos) << problem;
+  EXPECT_EQ(table->rowCount(), 3);  // the class view stays
 }
 
 TEST(StudyWindow, ANameWithACommaCannotStart) {
