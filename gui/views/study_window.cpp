@@ -501,6 +501,18 @@ void StudyWindow::keyPressEvent(QKeyEvent* event) {
   QWidget::keyPressEvent(event);
 }
 
+void StudyWindow::hideEvent(QHideEvent* event) {
+  if (phase_ != Phase::kIdle) {
+    clock_.stop();
+    phase_ = Phase::kIdle;
+    pages_->setCurrentIndex(0);
+    setup_status_->setText(
+        tr("The study window was closed during a trial: Start begins a new "
+           "session."));
+  }
+  QWidget::hideEvent(event);
+}
+
 std::string StudyWindow::run_simulated(SimulatedObserver& observer) {
   const std::string problem = read_choice(&choice_);
   if (!problem.empty()) return problem;

@@ -98,6 +98,9 @@ class StudyWindow : public QWidget {
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;
+  // Closing the window during a trial stops its clock and ends the session there: the set-up
+  // page says so, and Start begins a new one.
+  void hideEvent(QHideEvent* event) override;
 
  private:
   enum class Phase { kIdle, kRateCheck, kFirst, kGap, kSecond, kAnswer };
