@@ -262,11 +262,11 @@ async function testStudy(browser) {
       return out;
     })()`));
     const close = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(b));
-    const same = got.results && got.results.length === want.length && want.length === 3 &&
+    const fitsAgree = got.results && got.results.length === want.length && want.length === 3 &&
       want.every((w, i) => got.results[i].observer === w.observer &&
         close(got.results[i].threshold_px, w.threshold_px) &&
         close(got.results[i].ci95_px[0], w.ci95_px[0]) && close(got.results[i].ci95_px[1], w.ci95_px[1]));
-    check('StudyClassViewFitsAsTheCommandLine', same,
+    check('StudyClassViewFitsAsTheCommandLine', fitsAgree,
       `${(got.results || []).map((r) => `${r.observer}: ${r.threshold_px}`).join(', ')} against ` +
       `${want.map((r) => `${r.observer}: ${r.threshold_px}`).join(', ')}`);
     const broken = await evaluate(browser, `(() => {
