@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace oflab {
 namespace {
@@ -55,6 +57,35 @@ void build_mip_pyramid(const Image& image, MipPyramid& pyramid) {
     reduce(*fine, coarse);
     fine = &coarse;
   }
+}
+
+Image box_reduce(const Image& image, int factor) {
+  if (factor < 1 || image.width() % factor != 0 || image.height() % factor != 0) {
+    throw std::invalid_argument("box_reduce: the factor " + std::to_string(factor) +
+                                " must be >= 1 and divide the image's " +
+                                std::to_string(image.width()) + " x " +
+                                std::to_string(image.height()) + " pixels");
+  }
+  Image reduced(image.width() / factor, image.height() / factor);
+  const int count = factor * factor;
+  std::vector<int> sums(static_cast<std::size_t>(reduced.width()) * 4);
+  for (int j = 0; j < reduced.height(); ++j) {
+    std::fill(sums.begin(), sums.end(), 0);
+    for (int y = j * factor; y < (j + 1) * factor; ++y) {
+      const Pixel* row = image.row(y);
+      for (int x = 0; x < image.width(); ++x) {
+        int* sum = &sums[static_cast<std::size_t>(x / factor) * 4];
+        sum[0] += row[x].r, sum[1] += row[x].g, sum[2] += row[x].b, sum[3] += row[x].a;
+      }
+    }
+    Pixel* out = reduced.row(j);
+    for (int i = 0; i < reduced.width(); ++i) {
+      const int* sum = &sums[static_cast<std::size_t>(i) * 4];
+      auto mean = [&](int c) { return static_cast<std::uint8_t>((sum[c] + count / 2) / count); };
+      out[i] = Pixel{mean(0), mean(1), mean(2), mean(3)};
+    }
+  }
+  return reduced;
 }
 
 double footprint_axis(double j00, double j01, double j10, double j11) {

@@ -49,6 +49,11 @@ int mip_top_level(int width, int height);
 // re-rendered at the same size allocates nothing).
 void build_mip_pyramid(const Image& image, MipPyramid& pyramid);
 
+// The factor x factor box mean of `image` (each channel's rounded mean): the image a
+// supersampled render of factor^2 samples per pixel reduces to. Throws std::invalid_argument
+// unless factor >= 1 divides both sides of the image.
+Image box_reduce(const Image& image, int factor);
+
 // The largest singular value of the 2 x 2 matrix [[j00, j01], [j10, j11]] (>= 0): the longer
 // axis of the footprint ellipse. Closed form of the eigenvalues of J^T J.
 double footprint_axis(double j00, double j01, double j10, double j11);

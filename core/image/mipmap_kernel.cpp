@@ -115,7 +115,8 @@ std::int64_t run_affine(const WarpPlan& plan, const Image& source, const MipPyra
   const std::int64_t written = run_warp_kernel(level_plan(plan, pair.lower),
                                                level_image(source, pyramid, pair.lower), output);
   if (pair.weight == 0) return written;
-  thread_local Image upper;  // scratch of the upper level, its memory kept from warp to warp
+  thread_local Image scratch;  // the upper level's samples, memory kept from warp to warp
+  Image& upper = scratch;      // the bands run on other threads: name this thread's scratch
   upper.reshape(output.width(), output.height());
   run_warp_kernel(level_plan(plan, pair.lower + 1), pyramid.level(pair.lower + 1), upper);
   const std::vector<PixelSpan> spans = output_spans(plan);

@@ -63,6 +63,30 @@ TEST(MipPyramid, LevelsAreBoxAveragesOfTheSource) {
   }
 }
 
+// Two independent reductions agree: box_reduce by 2 is level 1 of an even image; by 4 it is
+// the plain mean of each 4 x 4 block (within the rounding of one mean).
+TEST(MipPyramid, BoxReduceIsTheBlockMean) {
+  std::mt19937 rng(6);
+  const Image source = testing::random_image(rng, 48, 32);
+  MipPyramid pyramid;
+  build_mip_pyramid(source, pyramid);
+  EXPECT_EQ(box_reduce(source, 2).pixels(), pyramid.level(1).pixels());
+  const Image by4 = box_reduce(source, 4);
+  ASSERT_EQ(by4.width(), 12);
+  ASSERT_EQ(by4.height(), 8);
+  for (int j = 0; j < 8; ++j) {
+    for (int i = 0; i < 12; ++i) {
+      double alpha = 0.0;
+      for (int y = 4 * j; y < 4 * j + 4; ++y) {
+        for (int x = 4 * i; x < 4 * i + 4; ++x) alpha += source.at(x, y).a;
+      }
+      ASSERT_LE(std::abs(by4.at(i, j).a - alpha / 16.0), 0.5);
+    }
+  }
+  EXPECT_THROW(box_reduce(source, 5), std::invalid_argument);
+  EXPECT_THROW(box_reduce(source, 0), std::invalid_argument);
+}
+
 TEST(MipPyramid, ALevelOfAnOddImageClampsItsLastColumn) {
   Image source(3, 1);
   source.at(0, 0) = Pixel{0, 0, 0, 0};
