@@ -97,6 +97,40 @@ void summarise(SamplingRun& run) {
   if (!warps.empty()) run.median_warp_ms = median_of(warps);
 }
 
+// The PSNR per frame of each sampling, and below it the minification of the shown layer.
+Chart sampling_chart(const SamplingComparison& c) {
+  Chart chart;
+  ChartPanel psnr{"PSNR against the 16-sample exact render", "frame", "dB", {}, {}, {}, {}, {}};
+  ChartPanel scale{"minification of the shown layer (1: a re-render)",
+                   "frame",
+                   "times smaller",
+                   {},
+                   {},
+                   {},
+                   {},
+                   {}};
+  for (std::size_t k = 0; k < c.runs.size(); ++k) {
+    ChartSeries series{sampling_name(c.runs[k].sampling),
+                       {},
+                       {},
+                       SeriesStyle::kLine,
+                       chart_palette(static_cast<int>(k))};
+    for (const SamplingFrame& f : c.runs[k].frames) {
+      series.x.push_back(f.frame);
+      series.y.push_back(f.psnr_db);
+    }
+    psnr.series.push_back(std::move(series));
+  }
+  ChartSeries minification{"minification", {}, {}, SeriesStyle::kPoints, chart_palette(3)};
+  for (const SamplingFrame& f : c.runs[0].frames) {
+    minification.x.push_back(f.frame);
+    minification.y.push_back(std::isfinite(f.minification) ? f.minification : 1.0);
+  }
+  scale.series.push_back(std::move(minification));
+  chart.panels = {psnr, scale};
+  return chart;
+}
+
 }  // namespace
 
 Image supersampled_exact_frame(const Camera& camera, const Layer& texture, const PlanePose& pose,
@@ -197,35 +231,7 @@ ReportSection sampling_section(const SamplingComparison& c, ExperimentContext& c
       "mipmap samples a pyramid of box-filtered levels of the layer at the level of each "
       "pixel's footprint. Every frame is compared with an exact render of 16 samples per pixel "
       "(a 4 x 4 box), which is what the minified plane should look like.");
-  Chart chart;
-  ChartPanel psnr{"PSNR against the 16-sample exact render", "frame", "dB", {}, {}, {}, {}, {}};
-  ChartPanel scale{"minification of the shown layer (1: a re-render)",
-                   "frame",
-                   "times smaller",
-                   {},
-                   {},
-                   {},
-                   {},
-                   {}};
-  for (std::size_t k = 0; k < c.runs.size(); ++k) {
-    ChartSeries series{sampling_name(c.runs[k].sampling),
-                       {},
-                       {},
-                       SeriesStyle::kLine,
-                       chart_palette(static_cast<int>(k))};
-    for (const SamplingFrame& f : c.runs[k].frames) {
-      series.x.push_back(f.frame);
-      series.y.push_back(f.psnr_db);
-    }
-    psnr.series.push_back(std::move(series));
-  }
-  ChartSeries minification{"minification", {}, {}, SeriesStyle::kPoints, chart_palette(3)};
-  for (const SamplingFrame& f : c.runs[0].frames) {
-    minification.x.push_back(f.frame);
-    minification.y.push_back(std::isfinite(f.minification) ? f.minification : 1.0);
-  }
-  scale.series.push_back(std::move(minification));
-  chart.panels = {psnr, scale};
+  const Chart chart = sampling_chart(c);
   s.figure(context.add_chart(
       "sampling-psnr", chart,
       "PSNR per frame of nearest, bilinear and mipmap sampling on " + c.spec.script +
