@@ -29,6 +29,7 @@ PlaneEngine::PlaneEngine(const Camera& camera, Layer texture, const EngineSettin
   if (!samples.empty()) throw std::invalid_argument("content: " + samples);
   const std::string budget = frame_budget_problem(settings_.budget);
   if (!budget.empty()) throw std::invalid_argument("budget: " + budget);
+  keep_pyramid(texture_, texture_mips_);
 }
 
 FrameReport PlaneEngine::start(const PlanePose& pose) { return apply(measure_start(pose).choice); }

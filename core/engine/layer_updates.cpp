@@ -118,6 +118,7 @@ void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
   const Mat3 origin = translation_matrix(warped_.offset_x, warped_.offset_y);
   if (policy().allows_reuse()) {
     rendered_ = warped_.layer;  // the perspective level's source (a copy into kept memory)
+    keep_pyramid(rendered_, rendered_mips_);
     rendered_from_texel_ = glm::inverse(origin) * exact;
   }
   if (policy().initial_view != InitialView::kAffinePart) {
@@ -207,6 +208,7 @@ void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const M
 void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
   WarpOptions options;
   options.sampling = settings_.sampling;
+  options.pyramid = pyramid_of(source);
   warp_layer_reusing(source, warp, warped_, options);
   report.pixels_written += warped_.stats.pixels_written;
   const bool affine = warped_.stats.kernel_used == WarpKernel::kAffine;
@@ -214,11 +216,24 @@ void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameRepor
       warped_.stats.pixels_written * (affine ? kAffineWarpCost : kPerspectiveWarpCost);
 }
 
+const MipPyramid* PlaneEngine::pyramid_of(const Layer& source) const {
+  if (settings_.sampling != Sampling::kMipmap) return nullptr;
+  if (&source == &texture_) return &texture_mips_;
+  if (&source == &cache_.layer) return &cache_.mips;
+  if (&source == &rendered_) return &rendered_mips_;
+  return nullptr;
+}
+
+void PlaneEngine::keep_pyramid(const Layer& layer, MipPyramid& pyramid) const {
+  if (settings_.sampling == Sampling::kMipmap) build_mip_pyramid(layer.image, pyramid);
+}
+
 void PlaneEngine::cache_from_display() {
   // The displayed layer is an exact image of the texture under displayed_, so it can serve
   // as the cache without another warp (its resolution is the output's).
   const Mat3 origin = translation_matrix(display_.offset_x, display_.offset_y);
   cache_.layer = display_.layer;  // a copy into the cache's memory when it is large enough
+  keep_pyramid(cache_.layer, cache_.mips);
   cache_.to_display = origin;
   cache_.from_texel = glm::inverse(origin) * displayed_;
   cache_.valid = true;
@@ -262,6 +277,7 @@ bool PlaneEngine::apply_perspective(const Mat3& target, FrameReport& report) {
     warp_reusing(texture_, texel_to_cache, report);
   }
   std::swap(cache_.layer, warped_.layer);  // the old cache's memory serves the next warp
+  keep_pyramid(cache_.layer, cache_.mips);
   cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
   cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
   cache_.valid = true;

@@ -29,7 +29,8 @@
 
 namespace oflab {
 
-// Runs the plan's kernel (plan.affine_kernel) with its sampling. Preconditions:
+// Runs the plan's kernel (plan.affine_kernel) with its sampling, nearest or bilinear (a
+// mipmap plan runs in core/image/mipmap_kernel.h, which calls this per level). Preconditions:
 // output.width() == plan.output_width, output.height() == plan.output_height, and
 // `source` is the image of the layer the plan was prepared for. Returns the number of
 // output pixels written. Never reads or writes outside either image.
