@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flow/limits.h"
 #include "image/composite.h"
 #include "scene/splat_footprint.h"
 
@@ -101,17 +102,10 @@ void draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
 }  // namespace
 
 std::string depth_mesh_settings_problem(const DepthMeshSettings& s) {
-  if (s.grid_px < 1 || s.grid_px > 64) return "mesh grid: must be from 1 to 64 pixels";
-  if (!(s.split >= 0.0 && std::isfinite(s.split))) {
-    return "mesh split: must be a finite distance >= 0 (0: automatic)";
-  }
-  if (!(s.rebuild_distance >= 0.0 && std::isfinite(s.rebuild_distance))) {
-    return "mesh rebuild distance: must be a finite distance >= 0 (0: cadence only)";
-  }
-  if (!(s.max_depth_jump > 0.0 && s.max_depth_jump <= 1000.0)) {
-    return "mesh depth jump: must be above 0 and at most 1000";
-  }
-  return "";
+  if (std::string p = limits::kMeshGrid.problem(s.grid_px); !p.empty()) return p;
+  if (std::string p = limits::kMeshSplit.problem(s.split); !p.empty()) return p;
+  if (std::string p = limits::kMeshRebuild.problem(s.rebuild_distance); !p.empty()) return p;
+  return limits::kMeshJump.problem(s.max_depth_jump);
 }
 
 double automatic_split(const DepthFrame& depth) {

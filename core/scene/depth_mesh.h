@@ -53,7 +53,7 @@ namespace oflab {
 
 // The settings of the depth-mesh policy (SceneSettings::mesh).
 struct DepthMeshSettings {
-  int grid_px = 4;  // k: a vertex every k pixels (1 .. 64)
+  int grid_px = 4;  // k: a vertex every k pixels (limits::kMeshGrid, as the others below)
   // View depth (world units) beyond which a polygon is far; 0: automatic, the middle of the
   // nearest and farthest surface depth seen at frame 0 (automatic_split), kept for the run.
   double split = 0.0;
@@ -64,7 +64,8 @@ struct DepthMeshSettings {
   bool drop_rubber_sheets = true;  // false: draw them stretched
 };
 
-// "" when the settings can be played, else the first problem, naming the setting and its range.
+// "" when the settings are within their limits (core/flow/limits.h kMeshGrid, kMeshSplit,
+// kMeshRebuild, kMeshJump), else the first problem, naming the setting and its range.
 std::string depth_mesh_settings_problem(const DepthMeshSettings& settings);
 
 // The middle (Z_min + Z_max) / 2 of the view depths (world units) of the pixels of `depth`

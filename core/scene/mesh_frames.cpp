@@ -114,6 +114,8 @@ double SceneEngine::mesh_frame(const ViewerPose* previous, const RigidMotion* mo
   report.model_work += near_work;
   mark_meshed(build, report);
   set_aside_.clear();
+  // A frame merged as a whole: its one error is the frame's (the near layers' are exact).
+  report.layer_reports.clear();
   return diagnostics_ms;
 }
 

@@ -1,7 +1,7 @@
-// Frame generation and view interpolation from the command line (manual/policies.md "Frame
-// generation by extrapolation", "View interpolation"): the motion-vector policies and
-// view-interpolation run on every shipped scene and viewer script, and the comparison's rows
-// carry their holes, inpainting and latency.
+// Frame generation, view interpolation and the depth mesh from the command line
+// (manual/policies.md "Frame generation by extrapolation", "View interpolation", "Textured depth
+// meshes"): the motion-vector policies, view-interpolation and depth-mesh run on every shipped
+// scene and viewer script, and the comparison's rows carry their holes, inpainting and latency.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -20,9 +20,9 @@ namespace {
 
 using testing::CliResult;
 
-// Both motion-vector policies and view interpolation on a scene and viewer script, three frames
-// (render, generated or interpolated, render), one pass without the exact baseline: what is
-// checked is that they run.
+// Both motion-vector policies, view interpolation and the depth mesh on a scene and viewer
+// script, three frames (render, generated, interpolated or meshed, render), one pass without the
+// exact baseline: what is checked is that they run.
 std::vector<PolicyRun> play_generation(const std::string& scene, const std::string& script) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(scene)));
@@ -33,7 +33,8 @@ std::vector<PolicyRun> play_generation(const std::string& scene, const std::stri
   options.timing_repetitions = 1;
   options.baseline = false;
   return run_policies(source_kind("scene"), source,
-                      parse_policy_list("mv-extrapolation,mv-no-inpaint,view-interpolation"),
+                      parse_policy_list("mv-extrapolation,mv-no-inpaint,view-interpolation,"
+                                        "depth-mesh"),
                       options);
 }
 
@@ -48,12 +49,20 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
   for (const auto& [scene, script] : runs) {
     std::vector<PolicyRun> played;
     ASSERT_NO_THROW(played = play_generation(scene, script)) << scene << ", " << script;
-    ASSERT_EQ(played.size(), 3u);
+    ASSERT_EQ(played.size(), 4u);
     for (const PolicyRun& run : played) {
       ASSERT_EQ(run.run.frames.size(), 3u) << scene << ", " << script;
-      // Frame 1 is generated (interpolated): every drawn polygon counted at that level.
+      // Frame 1 is generated (interpolated): every drawn polygon counted at that level; the
+      // depth mesh's near polygons are rendered, its far ones meshed.
       const AnimationFrame& generated = run.run.frames[1];
-      EXPECT_EQ(generated.levels[static_cast<int>(Level::kRerender)], 0);
+      const int rendered = generated.levels[static_cast<int>(Level::kRerender)];
+      if (run.policy->pixel_motion == PixelMotion::kFarMesh) {
+        EXPECT_EQ(rendered + generated.levels[static_cast<int>(Level::kPerspective)],
+                  generated.drawn())
+            << scene << ", " << script;
+      } else {
+        EXPECT_EQ(rendered, 0);
+      }
       EXPECT_GE(generated.hole_pixels, 0);
       if (!run.policy->inpaint) EXPECT_EQ(generated.inpainted_pixels, 0);
     }
@@ -65,11 +74,12 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
 TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) {
   const CliResult r = testing::run_cli_captured(
       {"compare", "--scene", "four-cubes", "--script", "translate", "--policies",
-       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint,view-interpolation",
+       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint,view-interpolation,"
+       "depth-mesh",
        "--frames", "5", "--json", "--repeat-timing", "1"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = nlohmann::json::parse(r.out).at("policies");
-  ASSERT_EQ(rows.size(), 5u);
+  ASSERT_EQ(rows.size(), 6u);
   for (const auto& row : rows) {
     for (const char* field :
          {"hole_pixels", "inpainted_pixels", "mean_psnr_db", "mean_ssim", "latency_frames"}) {
@@ -94,6 +104,11 @@ TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) 
   // reprojection from the last render alone, nothing inpainted.
   EXPECT_LT(rows[4]["hole_pixels"].get<long>(), rows[1]["hole_pixels"].get<long>());
   EXPECT_EQ(rows[4]["inpainted_pixels"], 0);
+  // The depth mesh renders the near cubes every frame and meshes the far ones: an error of its
+  // mesh's pixels, holes only where it dropped rubber sheets, at no latency.
+  EXPECT_EQ(rows[5]["name"], "depth-mesh");
+  EXPECT_GT(rows[5]["max_measured_error_px"].get<double>(), 0.0);
+  EXPECT_EQ(rows[5]["inpainted_pixels"], 0);
 }
 
 }  // namespace
