@@ -357,14 +357,12 @@ ReportSection reprojection_section(const ReprojectionResult& result, ExperimentC
       "every frame, the far part's mesh rebuilt at each render; split automatic, 4-pixel grid, "
       "rubber sheets dropped) and each layer's own plane (cadence), all rendering every " +
       std::to_string(result.spec.cadence) +
-      "nd frame and warping between, beside optic "
-      "flow's threshold rule; the first " +
+      "nd frame and warping between, beside optic flow's threshold rule; the first " +
       std::to_string(result.spec.max_frames) +
       " frames of each Experiment 2 scene under translate, zoom and rotate, of the street "
       "under walk and of the city block under city-flyby. Error: the largest corner displacement "
-      "of a layer (per-layer warps) or the "
-      "largest per-pixel displacement (depth reprojection, frame generation, view interpolation, "
-      "the depth mesh's far part). PSNR and SSIM "
+      "of a layer (per-layer warps) or the largest per-pixel displacement (depth reprojection, "
+      "frame generation, view interpolation, the depth mesh's far part). PSNR and SSIM "
       "against the exact frame (SSIM after Wang et al. 2004, on luma, 11 x 11 Gaussian window; "
       "'-' when not measured, as in a quick run). Work: the cost model's, in pixels "
       "of a perspective warp (a per-pixel warp costs one per pixel of the frame). Latency: "
