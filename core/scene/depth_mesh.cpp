@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "flow/limits.h"
 #include "image/composite.h"
@@ -102,10 +103,15 @@ void draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
 }  // namespace
 
 std::string depth_mesh_settings_problem(const DepthMeshSettings& s) {
-  if (std::string p = limits::kMeshGrid.problem(s.grid_px); !p.empty()) return p;
-  if (std::string p = limits::kMeshSplit.problem(s.split); !p.empty()) return p;
-  if (std::string p = limits::kMeshRebuild.problem(s.rebuild_distance); !p.empty()) return p;
-  return limits::kMeshJump.problem(s.max_depth_jump);
+  const std::pair<const Limit*, double> settings[] = {{&limits::kMeshGrid, s.grid_px},
+                                                      {&limits::kMeshSplit, s.split},
+                                                      {&limits::kMeshRebuild, s.rebuild_distance},
+                                                      {&limits::kMeshJump, s.max_depth_jump}};
+  for (const auto& [limit, value] : settings) {
+    if (std::string p = limit->problem(value); !p.empty())
+      return std::string(limit->what) + ": " + p;
+  }
+  return "";
 }
 
 double automatic_split(const DepthFrame& depth) {
