@@ -4,6 +4,7 @@
 // scene and viewer script, and the comparison's rows carry their holes, inpainting and latency.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -109,6 +110,30 @@ TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) 
   EXPECT_EQ(rows[5]["name"], "depth-mesh");
   EXPECT_GT(rows[5]["max_measured_error_px"].get<double>(), 0.0);
   EXPECT_EQ(rows[5]["inpainted_pixels"], 0);
+}
+
+// The depth mesh's options: out of their limits, with an unknown word, or without depth-mesh
+// among the compared policies, each is refused in one line naming it, exit code 2.
+TEST(FrameGenerationCommand, MeshOptionsOutOfRangeOrWithoutDepthMeshAreRefused) {
+  const std::vector<std::string> base = {"compare",   "--scene",  "four-cubes", "--script",
+                                         "translate", "--frames", "2"};
+  const struct {
+    std::vector<std::string> extra;
+    std::string message;
+  } cases[] = {
+      {{"--policies", "depth-mesh", "--mesh-grid", "0"}, "--mesh-grid"},
+      {{"--policies", "depth-mesh", "--mesh-jump", "-1"}, "--mesh-jump"},
+      {{"--policies", "depth-mesh", "--rubber-sheets", "sideways"}, "--rubber-sheets: 'sideways'"},
+      {{"--policies", "perspective", "--mesh-split", "3"}, "--mesh-split: needs one of depth-mesh"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), c.extra.begin(), c.extra.end());
+    const CliResult r = testing::run_cli_captured(args);
+    EXPECT_EQ(r.code, 2) << c.message;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
 }
 
 }  // namespace
