@@ -183,6 +183,29 @@ TEST(DepthMesh, TheEngineWithNoFarPartIsExactReRendering) {
   EXPECT_GT(meshed.mesh_split(), 4.0);
 }
 
+// The mesh is rebuilt on its cadence, and before it once the viewer has travelled more than the
+// rebuild distance since the build: a slide of 0.08 per frame with a distance of 0.1 rebuilds
+// every second frame (the far polygons re-rendered, none meshed), at cadence 8 without it.
+TEST(DepthMesh, TheEngineRebuildsOnItsCadenceOrAfterTheRebuildDistance) {
+  const Scene scene = testing::cube_past_cube();
+  const auto frames = sliding_past(6, Vec3(0.08, 0, 0), Vec3(0.0));
+  for (const double distance : {0.0, 0.1}) {
+    SceneSettings settings;
+    settings.engine.policy = &reuse_policy("depth-mesh");
+    settings.engine.cadence = 8;
+    settings.mesh.rebuild_distance = distance;
+    SceneEngine engine(scene, kCamera, settings);
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const AnimationFrame r =
+          i == 0 ? engine.start(frames[0].pose)
+                 : engine.advance(frames[i - 1].pose, frames[i - 1].motion, frames[i].pose);
+      const bool built = i == 0 || (distance > 0.0 && i % 2 == 0);
+      EXPECT_EQ(r.levels[static_cast<int>(Level::kPerspective)] == 0, built)
+          << "frame " << i << ", distance " << distance;
+    }
+  }
+}
+
 // The engine's measured error of every meshed frame against the error read back from
 // texel-coded images, on three motions (a slide, a turn, and segments of both with a push):
 // never under-reported by more than 0.25 px, and the image's error reaches a pixel, so the
