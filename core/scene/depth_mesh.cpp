@@ -68,10 +68,14 @@ void draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
   const int width = r.camera.width, height = r.camera.height;
   const double x0 = std::min({q[0].x, q[1].x, q[2].x}), x1 = std::max({q[0].x, q[1].x, q[2].x});
   const double y0 = std::min({q[0].y, q[1].y, q[2].y}), y1 = std::max({q[0].y, q[1].y, q[2].y});
-  const int i0 = std::max(0, static_cast<int>(std::floor(x0 - 0.5)));
-  const int i1 = std::min(width - 1, static_cast<int>(std::ceil(x1 - 0.5)));
-  const int j0 = std::max(0, static_cast<int>(std::floor(y0 - 0.5)));
-  const int j1 = std::min(height - 1, static_cast<int>(std::ceil(y1 - 0.5)));
+  // Clamped as doubles first: a triangle near the eye may project far beyond any int.
+  const auto pixel = [](double v, int last) {
+    return static_cast<int>(std::clamp(v, -1.0, static_cast<double>(last) + 1.0));
+  };
+  const int i0 = std::max(0, pixel(std::floor(x0 - 0.5), width - 1));
+  const int i1 = std::min(width - 1, pixel(std::ceil(x1 - 0.5), width - 1));
+  const int j0 = std::max(0, pixel(std::floor(y0 - 0.5), height - 1));
+  const int j1 = std::min(height - 1, pixel(std::ceil(y1 - 0.5), height - 1));
   constexpr double kEdge = -1e-9;  // edges inclusive: neighbours share their edge's pixels
   bool any = false;
   for (int j = j0; j <= j1; ++j) {
