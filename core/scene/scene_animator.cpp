@@ -53,6 +53,9 @@ void check_scene_inputs(const Scene& scene, const Camera& camera, const SceneSet
                                   "'): " + p.field + ": " + p.message);
     }
   }
+  if (const std::string problem = depth_mesh_settings_problem(settings.mesh); !problem.empty()) {
+    throw std::invalid_argument(problem);
+  }
   if (const std::string problem = scene_memory_problem(scene, camera, settings.guard_band);
       !problem.empty()) {
     throw std::invalid_argument(problem);
@@ -99,6 +102,7 @@ AnimationFrame SceneEngine::start(const ViewerPose& view) {
   plane_known_ = false;
   has_render_ = false;
   next_index_ = -1;
+  split_ = 0.0;
   source_of_.clear();
   for (auto& s : states_) s->live = false;
   if (cache_) cache_->restart();
@@ -341,6 +345,11 @@ AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMot
     report.time_ms += ms_since(t0);
     return report;
   }
+  if (policy.pixel_motion == PixelMotion::kFarMesh) {
+    const double diagnostics_ms = mesh_frame(previous, motion, current, report);
+    report.time_ms = ms_since(t0) - diagnostics_ms - report.budget.check_ms;
+    return report;
+  }
   if (per_pixel && has_render_ && !cadence_frame()) {
     // Time left out: the diagnostics, and view interpolation's next render made ahead.
     double excluded_ms = 0.0;
@@ -368,6 +377,7 @@ void SceneEngine::render_frame(const ViewerPose* previous, const RigidMotion* mo
                       policy.frame_plane == FramePlane::kStabilization;
   if (uses_frame_plane_) update_frame_plane(current);
   classify(current, report);
+  if (!set_aside_.empty()) set_aside_polygons();
   bsp_.back_to_front(eye_position(current), order_);
   measure_polygons(previous, motion, current, report);
   allocate_polygons(report);
