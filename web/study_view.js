@@ -74,6 +74,20 @@ function drawStudyFrame(clip, frame) {
   ctx.putImageData(study.image, 0, 0);
 }
 
+// `core` becomes the study shown unless `problem` says why it cannot (then it is dropped, the
+// study shown before stays and the set-up page says why). True when adopted.
+function adoptStudyCore(core, problem) {
+  if (problem) {
+    core.delete();
+    $('study-status').textContent = problem;
+    return false;
+  }
+  if (study.core) study.core.delete();
+  study.core = core;
+  $('study-status').textContent = '';
+  return true;
+}
+
 function startStudy() {
   const observer = $('study-observer').value.trim();
   if (!observer || /[,\n\r]/.test(observer)) {
@@ -86,14 +100,7 @@ function startStudy() {
     const name = study.fileName || $('study-name').value;
     const problem = core.open(name, study.fileText, $('study-method').value,
       Number($('study-seed').value || -1));
-    if (problem) {
-      core.delete();
-      $('study-status').textContent = problem;
-      return;
-    }
-    if (study.core) study.core.delete();
-    study.core = core;
-    $('study-status').textContent = '';
+    if (!adoptStudyCore(core, problem)) return;
     showStudyPage('trial');
     sizeStudyCanvas();
     study.lateFrames = 0;
@@ -340,13 +347,7 @@ function applyStudyUrlOptions(params) {
   const core = new Module.Study();
   const problem = core.open(params.get('study'), '', '', -1) ||
     core.simulate(Number(params.get('study-simulate')));
-  if (problem) {
-    core.delete();
-    $('study-status').textContent = problem;
-    return;
-  }
-  if (study.core) study.core.delete();
-  study.core = core;
+  if (!adoptStudyCore(core, problem)) return;
   $('study-observer').value = 'simulated';
   showStudyResults();
 }
