@@ -80,8 +80,7 @@ std::string WebStudy::open(const std::string& name, const std::string& file_text
 std::string WebStudy::request_json() const {
   if (finished()) return "{}";
   const StudySession& s = runner_->session();
-  int answered = 0;
-  for (const StudyTrial& t : s.trials()) answered += !t.late;
+  const int answered = s.answered_trials();
   return ordered_json{{"condition", s.study().conditions[size_t(s.request().condition)].name},
                       {"answered", answered},
                       {"total", s.study().trials * int(s.study().conditions.size())},

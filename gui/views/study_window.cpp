@@ -331,8 +331,7 @@ void StudyWindow::update_trial_text() {
   const StudySession& s = runner_->session();
   const StudyCondition& c = s.study().conditions[size_t(s.request().condition)];
   const int total = s.study().trials * int(s.study().conditions.size());
-  int answered = 0;
-  for (const StudyTrial& t : s.trials()) answered += !t.late;
+  const int answered = s.answered_trials();
   const QString where =
       tr("Trial %1 of %2 (%3)").arg(answered + 1).arg(total).arg(QString::fromStdString(c.name));
   trial_text_->setText(phase_ == Phase::kAnswer

@@ -57,6 +57,8 @@ class StudySession {
   const AdaptiveMethod& method(int condition) const { return *methods_[size_t(condition)]; }
   const std::vector<StudyTrial>& trials() const { return trials_; }
   int late_trials() const { return late_; }
+  // Answered (not late) trials so far, over every condition.
+  int answered_trials() const { return int(trials_.size()) - late_; }
 
  private:
   Study study_;

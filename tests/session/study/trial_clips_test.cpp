@@ -102,6 +102,7 @@ TEST(TrialRunner, ASimulatedRunThroughThePicturesIsTheHeadlessSimulation) {
   const std::vector<StudyTrial>& b = headless.trials();
   ASSERT_EQ(a.size(), b.size());
   EXPECT_GT(runner.session().late_trials(), 0);
+  EXPECT_EQ(runner.session().answered_trials(), 3);  // one condition, three trials
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].request.requested_px, b[i].request.requested_px) << i;
     EXPECT_EQ(a[i].request.distorted_first, b[i].request.distorted_first) << i;
