@@ -89,6 +89,7 @@ function syncControls() {
   syncSourcePickers(s);
   $('basis-kind').value = s.basis.kind;
   if (app.views.flow) app.views.flow.syncControls(s);
+  if (app.explorer) app.explorer.syncControls(s);
   syncPoseControls(s);
   syncFrame();
 }
@@ -290,7 +291,8 @@ function fillScriptPicker() {
 }
 
 // Options from the URL: view=flow|basis|animation, script=NAME, frame=N, lesson=NAME,
-// step=K, presentation; applied over the default state (the screenshot tests use them).
+// step=K, presentation, explorer (the basis view's explorer); applied over the default
+// state (the screenshot tests use them).
 function applyUrlOptions(params) {
   if (params.has('lesson')) {
     startLesson(params.get('lesson'));
@@ -301,6 +303,7 @@ function applyUrlOptions(params) {
     if (params.has('view')) s.view = params.get('view');
     if (params.has('script')) { s.script = params.get('script'); }
     if (params.has('presentation')) s.presentation = true;
+    if (params.has('explorer')) s.basis.explorer = true;
   }, 'the page address');
   if (params.has('frame')) seek(Number(params.get('frame')));
 }

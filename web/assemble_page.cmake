@@ -1,13 +1,16 @@
 # Assembles the one self-contained page: page.html with its markers replaced by the style
-# (<!-- @style -->), the page's scripts (<!-- @scripts -->, in the order below) and the
-# WebAssembly module's JavaScript with the wasm and the datasets inside (<!-- @module -->).
+# (<!-- @style -->), the page's scripts (<!-- @scripts -->; SCRIPTS: their names in order,
+# separated by commas) and the WebAssembly module's JavaScript with the wasm and the
+# datasets inside (<!-- @module -->).
 # Written to OUT through a temporary file renamed over it, so a failed run leaves no half page.
-# Run as: cmake -DSOURCE_DIR=web -DMODULE=oflab_web.js -DOUT=oflab-web.html -P assemble_page.cmake
+# Run as: cmake -DSOURCE_DIR=web -DMODULE=oflab_web.js -DOUT=oflab-web.html
+#   -DSCRIPTS=app.js,flow_view.js,... -P assemble_page.cmake
 file(READ "${SOURCE_DIR}/page.html" page)
 file(READ "${SOURCE_DIR}/style.css" style)
 file(READ "${MODULE}" module)
 set(scripts "")
-foreach(part app.js flow_view.js basis_view.js comparison_view.js analysis_view.js lessons.js share.js study_view.js selftest.js)
+string(REPLACE "," ";" scripts_in_order "${SCRIPTS}")
+foreach(part IN LISTS scripts_in_order)
   file(READ "${SOURCE_DIR}/${part}" text)
   string(APPEND scripts "<script>\n// ${part}\n${text}</script>\n")
 endforeach()

@@ -2,7 +2,8 @@
 // The basis gallery: the twelve terms of one basis of the flow's Taylor expansion (planar,
 // Taylor or Waxman-Ullman; session/basis/basis_catalog.h), each tile the flow of that term
 // alone and its coefficient in the plane's current flow, greyed when negligible. Every
-// number comes from Session.basisJson.
+// number comes from Session.basisJson. With the state's basis.explorer on, the view is the
+// basis explorer (explorer_view.js).
 
 const kBasisRadiusPx = 100;  // tiles show [-100, 100]^2 centred pixels about the expansion point
 const kBasisGrid = 4;        // 9 x 9 arrows a tile
@@ -10,7 +11,15 @@ const kBasisGrid = 4;        // 9 x 9 arrows a tile
 const basisView = {
   title: 'Bases',
 
+  // The explorer's controls (explorer_view.js) live in this view's side panel.
+  build() { explorerView.build(); },
+
   draw(ctx, w, h, style) {
+    if (app.state.basis.explorer) {
+      explorerView.draw(ctx, w, h, style);
+      setHtml($('basis-note'), '');
+      return;
+    }
     const basis = JSON.parse(app.session.basisJson(app.state.basis.kind, kBasisRadiusPx, kBasisGrid));
     const problem = app.session.sceneProblem();
     const columns = 6;

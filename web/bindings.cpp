@@ -12,6 +12,7 @@
 #include "display/palette.h"
 #include "engine/decision.h"
 #include "frame_pixels.h"
+#include "web_explorer.h"
 #include "web_session.h"
 #include "web_study.h"
 
@@ -120,6 +121,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("arrows", &oflab::arrows)
       .function("streamlines", &oflab::streamlines)
       .function("basisJson", &WebSession::basis_json)
+      .function("explorerJson", &oflab::explorer_json)
       .function("comparisonProblem", &WebSession::comparison_problem)
       .function("updateComparison", &WebSession::update_comparison)
       .function("analysisJson", &WebSession::analysis_json)

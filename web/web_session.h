@@ -88,6 +88,8 @@ class WebSession {
   // the page takes the fields' names, types and ranges from it.
   static std::string state_schema_json();
 
+  // The state as the lab holds it (the fields the page's JSON carries, typed).
+  const WindowState& values() const { return lab_.values(); }
   // The scene of the frame shown, and "" or why the flow views cannot draw it.
   PlaneScene scene() const;
   std::string scene_problem() const;

@@ -23,7 +23,6 @@ namespace oflab {
 namespace {
 
 constexpr int kSliderSteps = 100;  // slider positions on each side of zero
-constexpr double kPi = 3.14159265358979323846;
 
 QString vector_text(const Vec3& v) {
   return QStringLiteral("(%1, %2, %3)")
@@ -31,41 +30,6 @@ QString vector_text(const Vec3& v) {
       .arg(v.y, 0, 'f', 2)
       .arg(v.z, 0, 'f', 2)
       .replace(QStringLiteral("-0.00"), QStringLiteral("0.00"));
-}
-
-QString case_text(const InverseFlowSolutions& r) {
-  switch (r.kind) {
-    case InverseFlowCase::kGeneral:
-      return r.solutions.size() == 2
-                 ? QObject::tr(
-                       "General case: two planes, moving differently, make exactly "
-                       "this flow.")
-                 : QObject::tr(
-                       "General case, but only one plane is in front of the eye (the "
-                       "other is seen edge-on).");
-    case InverseFlowCase::kTranslationAlongNormal:
-      return QObject::tr(
-          "Degenerate (translation along the normal): V is along N, the two "
-          "solutions coincide.");
-    case InverseFlowCase::kFrontoParallelAlongNormal:
-      return QObject::tr(
-          "Degenerate (fronto-parallel along the normal): a plane facing the "
-          "eye, moving along the line of sight: one solution.");
-    case InverseFlowCase::kPureRotation:
-      if (!r.solutions.empty() && r.solutions[0].omega == Vec3(0.0)) {
-        return QObject::tr("No motion: every term is zero, and any plane at rest fits.");
-      }
-      return QObject::tr("Degenerate (pure rotation): V = 0, Omega only; any plane fits.");
-  }
-  return QString();
-}
-
-// How far the plane is turned from facing the camera squarely, in words.
-QString facing_text(const PlanarMotionSolution& s) {
-  if (!s.normal_known) return QObject::tr("unknown");
-  const double degrees = std::acos(std::min(1.0, std::abs(s.normal.z))) * 180.0 / kPi;
-  if (degrees < 0.5) return QObject::tr("faces it squarely");
-  return QObject::tr("turned %1\u00b0 away").arg(degrees, 0, 'f', 0);
 }
 
 }  // namespace
@@ -197,7 +161,8 @@ void ExplorerPanel::solve() {
 
 QString ExplorerPanel::solutions_text() const {
   const InverseFlowSolutions& r = result_.inverse;
-  QString html = QStringLiteral("<p><b>%1</b></p>").arg(case_text(r).toHtmlEscaped());
+  QString html = QStringLiteral("<p><b>%1</b></p>")
+                     .arg(QString::fromStdString(explorer_case_text(r)).toHtmlEscaped());
   if (r.solutions.empty()) return html;
   // The solutions side by side, a quantity per row: half the height of one after the other,
   // so that both fit the dials' column under the sliders.
@@ -219,7 +184,10 @@ QString ExplorerPanel::solutions_text() const {
           [](const PlanarMotionSolution& s) {
             return s.normal_known ? vector_text(s.normal) : tr("any");
           }) +
-      row(tr("facing"), [](const PlanarMotionSolution& s) { return facing_text(s); }) +
+      row(tr("facing"),
+          [](const PlanarMotionSolution& s) {
+            return QString::fromStdString(explorer_facing_text(s));
+          }) +
       row(tr("V/d, 1/s"), [](const PlanarMotionSolution& s) { return vector_text(s.v_over_d); }) +
       row(tr("Omega, rad/s"), [](const PlanarMotionSolution& s) { return vector_text(s.omega); });
   html += QStringLiteral("</table>");

@@ -197,30 +197,10 @@ QImage paint_explorer_deformation(const QImage& texture, const Mat3& deformation
 
 namespace {
 
-// A fixed view from above, behind and to the left of the eye: turn about Y, then tilt about
-// X; orthographic, screen x right and y down as the viewer frame's.
 QPointF view_of(const Vec3& p) {
-  constexpr double kYaw = 0.9, kPitch = 0.45;  // radians
-  const double x = std::cos(kYaw) * p.x - std::sin(kYaw) * p.z;
-  const double z = std::sin(kYaw) * p.x + std::cos(kYaw) * p.z;
-  const double y = std::cos(kPitch) * p.y + std::sin(kPitch) * z;
-  return QPointF(x, y);
+  const Vec2 q = explorer_view_of(p);
+  return QPointF(q.x, q.y);
 }
-
-struct SketchPoints {
-  Vec3 centre;
-  std::array<Vec3, 4> corners;
-};
-
-SketchPoints sketch_points(const PlanarMotionSolution& s, const Camera& camera) {
-  const SolutionScene scene =
-      solution_scene(s, camera.focal_px, Vec2(0.0, 0.0), MotionModel::kScrew);
-  return {scene.pose.point, plane_corners(scene.pose)};
-}
-
-}  // namespace
-
-namespace {
 
 const QString kLegend[4] = {QObject::tr("dot: the eye"), QObject::tr("N normal"),
                             QObject::tr("V/d velocity"), QObject::tr("Omega spin")};
@@ -249,17 +229,15 @@ void paint_legend(QPainter& painter, const QRectF& band, int lines, const ViewTh
   }
 }
 
-// The sketch's points of a solution in the fixed view (view_of), world units: the plane's
-// four corners, its centre, the tips of N, V/d and Omega (arrow lengths times `arrow`).
+// The sketch's points of a solution (session/basis/basis_explorer.h explorer_sketch): the
+// plane's four corners, its centre, the tips of N, V/d and Omega.
 std::vector<QPointF> sketch_of(const PlanarMotionSolution& s, double arrow) {
-  const Camera camera = make_camera(1.0, 2, 2);  // only the direction of the centre ray matters
-  const SketchPoints p = sketch_points(s, camera);
+  const SolutionSketch k = explorer_sketch(s, arrow);
   std::vector<QPointF> points;
-  for (const Vec3& c : p.corners) points.push_back(view_of(c));
-  points.push_back(view_of(p.centre));
-  points.push_back(view_of(p.centre + 0.5 * s.normal));
-  points.push_back(view_of(p.centre + arrow * s.v_over_d));
-  points.push_back(view_of(arrow * s.omega));
+  for (const Vec2& c : k.corners) points.emplace_back(c.x, c.y);
+  for (const Vec2& p : {k.centre, k.normal_tip, k.velocity_tip, k.spin_tip}) {
+    points.emplace_back(p.x, p.y);
+  }
   return points;
 }
 
@@ -311,15 +289,12 @@ void draw_explorer_solutions(QPainter& painter, const ExplorerResult& result, co
   const double w = double(image.width()) / count, cell_h = image.height() - title - legend;
   // One arrow scale for both: the longest of V/d and Omega is 0.8 units (d = 1); one drawing
   // scale for both: every point of every sketch fits its cell.
-  double longest = 1e-12;
-  for (const PlanarMotionSolution& s : solutions) {
-    longest = std::max({longest, glm::length(s.v_over_d), glm::length(s.omega)});
-  }
+  const double arrow = explorer_arrow_scale(solutions);
   std::vector<std::vector<QPointF>> points(solutions.size());
   QRectF bounds(view_of(Vec3(0.0)), QSizeF(1e-9, 1e-9));  // the eye
   for (size_t i = 0; i < solutions.size(); ++i) {
     if (!solutions[i].normal_known) continue;
-    points[i] = sketch_of(solutions[i], 0.8 / longest);
+    points[i] = sketch_of(solutions[i], arrow);
     for (const QPointF& q : points[i]) bounds |= QRectF(q, QSizeF(1e-9, 1e-9));
   }
   const double scale = 0.9 * std::min((w - 12.0) / std::max(bounds.width(), 1e-9),

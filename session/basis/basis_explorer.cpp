@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "flow/homography.h"
+#include "flow/plane.h"
 
 namespace oflab {
 namespace {
@@ -94,6 +95,65 @@ ExplorerResult explore(const ExplorerTerms& terms, const Camera& camera) {
     r.futures_note = "a solution's plane is behind the eye at a corner of the picture";
   }
   return r;
+}
+
+std::string explorer_case_text(const InverseFlowSolutions& r) {
+  switch (r.kind) {
+    case InverseFlowCase::kGeneral:
+      return r.solutions.size() == 2 ? "General case: two planes, moving differently, make "
+                                       "exactly this flow."
+                                     : "General case, but only one plane is in front of the eye "
+                                       "(the other is seen edge-on).";
+    case InverseFlowCase::kTranslationAlongNormal:
+      return "Degenerate (translation along the normal): V is along N, the two solutions "
+             "coincide.";
+    case InverseFlowCase::kFrontoParallelAlongNormal:
+      return "Degenerate (fronto-parallel along the normal): a plane facing the eye, moving "
+             "along the line of sight: one solution.";
+    case InverseFlowCase::kPureRotation:
+      if (!r.solutions.empty() && r.solutions[0].omega == Vec3(0.0)) {
+        return "No motion: every term is zero, and any plane at rest fits.";
+      }
+      return "Degenerate (pure rotation): V = 0, Omega only; any plane fits.";
+  }
+  return "";
+}
+
+std::string explorer_facing_text(const PlanarMotionSolution& s) {
+  if (!s.normal_known) return "unknown";
+  const double degrees = std::acos(std::min(1.0, std::abs(s.normal.z))) * 180.0 / kPi;
+  if (degrees < 0.5) return "faces it squarely";
+  return "turned " + std::to_string(int(std::lround(degrees))) + "\u00b0 away";
+}
+
+Vec2 explorer_view_of(const Vec3& p) {
+  constexpr double kYaw = 0.9, kPitch = 0.45;  // radians
+  const double x = std::cos(kYaw) * p.x - std::sin(kYaw) * p.z;
+  const double z = std::sin(kYaw) * p.x + std::cos(kYaw) * p.z;
+  return Vec2(x, std::cos(kPitch) * p.y + std::sin(kPitch) * z);
+}
+
+SolutionSketch explorer_sketch(const PlanarMotionSolution& s, double arrow) {
+  // Only the direction of the centre ray matters: any camera with its principal point at the
+  // centre gives the same plane.
+  const SolutionScene scene = solution_scene(s, 1.0, Vec2(0.0, 0.0), MotionModel::kScrew);
+  const Vec3 centre = scene.pose.point;
+  const std::array<Vec3, 4> corners = plane_corners(scene.pose);
+  SolutionSketch sketch;
+  for (size_t k = 0; k < 4; ++k) sketch.corners[k] = explorer_view_of(corners[k]);
+  sketch.centre = explorer_view_of(centre);
+  sketch.normal_tip = explorer_view_of(centre + 0.5 * s.normal);
+  sketch.velocity_tip = explorer_view_of(centre + arrow * s.v_over_d);
+  sketch.spin_tip = explorer_view_of(arrow * s.omega);
+  return sketch;
+}
+
+double explorer_arrow_scale(const std::vector<PlanarMotionSolution>& solutions) {
+  double longest = 1e-12;
+  for (const PlanarMotionSolution& s : solutions) {
+    longest = std::max({longest, glm::length(s.v_over_d), glm::length(s.omega)});
+  }
+  return 0.8 / longest;
 }
 
 Mat3 explorer_deformation(const ExplorerTerms& terms) {

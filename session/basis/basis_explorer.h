@@ -11,6 +11,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "flow/basis.h"
 #include "flow/camera.h"
@@ -56,6 +57,32 @@ ExplorerTerms explorer_terms_of(const PlanarFlowCoefficients& coefficients);
 // session file spells it: "basis.terms.tx: translation rate 2e+04 is outside
 // -10000..10000 px/s".
 std::string explorer_terms_problem(const ExplorerTerms& terms);
+
+// One sentence naming the case of `r` (two planes, a degenerate case, no motion), as the
+// explorer's panel on every front-end shows it above the solutions.
+std::string explorer_case_text(const InverseFlowSolutions& r);
+// How far a solution's plane is turned from facing the eye squarely, in words: "faces it
+// squarely" (under 0.5 degrees), "turned 62° away" (whole degrees), "unknown" (pure
+// rotation). UTF-8.
+std::string explorer_facing_text(const PlanarMotionSolution& s);
+
+// A solution's sketch: its plane (a unit square at distance d = 1 across N, centred on the
+// line of sight through the principal point) and its motion, seen from a fixed view above,
+// behind and to the left of the eye (turned 0.9 rad about Y, then tilted 0.45 rad about X;
+// orthographic; x right and y down as the viewer frame's), in world units (d = 1).
+struct SolutionSketch {
+  std::array<Vec2, 4> corners;  // the plane's corners, in plane_corners' order
+  Vec2 centre;                  // the plane's centre
+  Vec2 normal_tip;              // centre + 0.5 N
+  Vec2 velocity_tip;            // centre + arrow V/d
+  Vec2 spin_tip;                // eye + arrow Omega (the eye is at the view's origin)
+};
+// Where the fixed view puts the viewer-frame point p.
+Vec2 explorer_view_of(const Vec3& p);
+// The sketch of `s`, its arrows `arrow` times V/d and Omega long. Precondition: s.normal_known.
+SolutionSketch explorer_sketch(const PlanarMotionSolution& s, double arrow);
+// One arrow scale for all of `solutions`: the longest of their V/d and Omega is 0.8 units.
+double explorer_arrow_scale(const std::vector<PlanarMotionSolution>& solutions);
 
 // How the explorer plays the two solutions forward: 30 frames of 1/30 s (one second), each
 // solution's plane moving with constant V and Omega in the viewer frame (core's screw

@@ -15,6 +15,7 @@
 //   within 30 dB PSNR of its baseline (tests/web/baselines/); the flow view's screenshot is
 //   not within 30 dB of the gallery's baseline, and a blank image is found blank (negative
 //   controls). A failing screenshot is written to --out.
+// - The basis explorer's planes and motions are `oflab-cli explain`'s for its coefficients.
 // - Every step of every shipped lesson shows the state and frame `oflab-cli lesson state`
 //   gives (--cli, default build/analysis/oflab-cli); a changed frame is caught.
 // - The threshold study: the page's loop with a simulated observer writes the CSV of
@@ -326,6 +327,12 @@ const shots = [
   // A laptop's 1366 x 768: the comparison, the street and the charts.
   ['comparison-1366', '?view=animation&script=swing&frame=40', [1366, 768]],
   ['analysis-1366', '?lesson=why-errors-accumulate&step=1', [1366, 768]],
+  ['flow-1366', '?view=flow&frame=20', [1366, 768]],
+  ['basis-1366', '?view=basis&frame=20', [1366, 768]],
+  // The basis explorer: the default eight terms, both ways.
+  ['explorer', '?view=basis&explorer'],
+  ['explorer-1366', '?view=basis&explorer', [1366, 768]],
+  ['explorer-presentation', '?view=basis&explorer&presentation'],
 ];
 
 function psnr(a, b) {
@@ -388,6 +395,10 @@ async function testScreenshots(browser) {
   if (fs.existsSync(basis)) {
     const db = psnr(images.flow, decodePng(fs.readFileSync(basis), basis));
     check('NegativeControl_FlowScreenshotDoesNotMatchTheGalleryBaseline', db < kMinPsnrDb, `${db.toFixed(1)} dB`);
+  }
+  if (fs.existsSync(basis)) {
+    const db = psnr(images.explorer, decodePng(fs.readFileSync(basis), basis));
+    check('NegativeControl_ExplorerScreenshotDoesNotMatchTheGalleryBaseline', db < kMinPsnrDb, `${db.toFixed(1)} dB`);
   }
   const blank = { width: kWidth, height: kHeight, data: new Uint8Array(kWidth * kHeight * 4).fill(17) };
   check('NegativeControl_ABlankImageIsFoundBlank', !notBlank(blank));
@@ -478,6 +489,45 @@ async function testControls(browser) {
   await browser.tab('Input.dispatchMouseEvent', { type: 'mouseReleased', x: at.x, y: at.y, button: 'left', clickCount: 1 });
   const jumped = await evaluate(browser, 'app.session.frame()');
   check('AClickOnTheAnalysisChartsGoesToThatFrame', at.view === 'analysis' && jumped === 20 && at.range[0] === 0, `view ${at.view}, axis ${at.range}, frame 60 -> ${jumped} (expected 20)`);
+}
+
+// --- The basis explorer ------------------------------------------------------------------
+// The page's explorer (Session.explorerJson) gives for its eight terms the planes and
+// motions `oflab-cli explain` gives for the same coefficients (another command, another
+// reader: to 1e-9); a dialled term goes through the state (and its limit is kept, with a
+// message naming the field); "All zero" gives the no-motion case.
+async function testExplorer(browser) {
+  const { spawnSync } = require('child_process');
+  const cli = path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli')));
+  await open(browser, '?view=basis&explorer', drawnMarker);
+  const r = JSON.parse(await evaluate(browser, 'JSON.stringify(app.explorer.result())'));
+  const c = r.coefficients;
+  const out = spawnSync(cli, ['explain', '--coefficients', ...['tx', 'ty', 'j11', 'j12', 'j21', 'j22', 'px', 'py'].map((k) => String(c[k])),
+    '--focal', String(r.camera.focal_px), '--json'], { encoding: 'utf8' });
+  const explained = out.status === 0 ? JSON.parse(out.stdout).solutions : [];
+  const close = (a, b) => a.every((v, i) => Math.abs(v - b[i]) <= 1e-9 * Math.max(1, Math.abs(v)));
+  const same = (p, q) => close(p.normal, q.normal) && close(p.v_over_d, q.v_over_d) && close(p.omega, q.omega) &&
+    close([p.depth_over_d], [q.depth_over_d]);
+  const matched = r.solutions.length === explained.length && r.solutions.every((p) => explained.some((q) => same(p, q)));
+  check('TheExplorersSolutionsAreTheCliExplainsOfItsCoefficients', matched && r.solutions.length === 2,
+    `${r.solutions.length} solutions on the page, ${explained.length} from oflab-cli explain (${out.stderr || 'ok'})`);
+  // Negative control: another solution's normal is not a match.
+  const other = JSON.parse(JSON.stringify(r.solutions[0]));
+  other.normal[0] += 1e-6;
+  check('NegativeControl_ANudgedNormalIsNotTheCliSolution', !explained.some((q) => same(other, q)));
+  check('TheExplorersFuturesPartAsTheDesktopSays', r.futures.played && r.futures.frames === 30 && r.futures.first_frame_apart === 13,
+    `played ${r.futures.played}, ${r.futures.frames} frames, over 1 px first at frame ${r.futures.first_frame_apart} (the desktop's default: 13)`);
+  const dialled = JSON.parse(await evaluate(browser, `(() => {
+    const box = $('explorer-tx'); box.value = '120'; box.dispatchEvent(new Event('change'));
+    const accepted = [app.state.basis.terms.tx, app.explorer.result().terms[0].value, app.explorer.result().coefficients.tx];
+    box.value = '1e6'; box.dispatchEvent(new Event('change'));
+    const refused = [app.state.basis.terms.tx, $('message').textContent];
+    $('explorer-zero').click();
+    return JSON.stringify({ accepted, refused, zero: app.explorer.result().case });
+  })()`));
+  check('ADialledTermGoesThroughTheStateAndItsLimitIsKept', dialled.accepted.every((v) => v === 120) &&
+    dialled.refused[0] === 120 && /basis\.terms\.tx/.test(dialled.refused[1]), JSON.stringify(dialled));
+  check('AllZeroIsTheNoMotionCase', /^No motion/.test(dialled.zero), dialled.zero);
 }
 
 // --- The same lesson everywhere ----------------------------------------------------------
@@ -664,6 +714,7 @@ async function bench(browser) {
       await testSelftest(browser);
       await testScreenshots(browser);
       await testControls(browser);
+      await testExplorer(browser);
       await testLessonStates(browser);
       await testClaims(browser);
       await testLinks(browser);

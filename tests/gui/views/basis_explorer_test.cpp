@@ -101,6 +101,38 @@ TEST(BasisExplorer, TheStartingValuesHaveTwoWorldsThatPartAtFrame13) {
   }
 }
 
+TEST(BasisExplorer, TheSketchIsTheUnitSquareSeenFromTheFixedView) {
+  // The fixed view turns 0.9 rad about Y, then tilts 0.45 rad about X, orthographic: the Y
+  // axis keeps x = 0 and shortens by cos 0.45; a point on X turns into x = cos 0.9 and is
+  // tilted by sin 0.45 sin 0.9.
+  EXPECT_NEAR(explorer_view_of(Vec3(0, 1, 0)).x, 0.0, 1e-15);
+  EXPECT_NEAR(explorer_view_of(Vec3(0, 1, 0)).y, std::cos(0.45), 1e-15);
+  EXPECT_NEAR(explorer_view_of(Vec3(1, 0, 0)).x, std::cos(0.9), 1e-15);
+  EXPECT_NEAR(explorer_view_of(Vec3(1, 0, 0)).y, std::sin(0.45) * std::sin(0.9), 1e-15);
+  const ExplorerResult r = explore(default_explorer_terms(), kCamera);
+  ASSERT_EQ(r.inverse.solutions.size(), 2u);
+  const double arrow = explorer_arrow_scale(r.inverse.solutions);
+  double longest = 0.0;
+  for (const PlanarMotionSolution& s : r.inverse.solutions) {
+    longest = std::max({longest, glm::length(s.v_over_d), glm::length(s.omega)});
+    // A square seen orthographically is a parallelogram about its centre.
+    const SolutionSketch k = explorer_sketch(s, arrow);
+    const Vec2 mean = 0.25 * (k.corners[0] + k.corners[1] + k.corners[2] + k.corners[3]);
+    EXPECT_LT(glm::length(k.corners[0] + k.corners[2] - k.corners[1] - k.corners[3]), 1e-12);
+    EXPECT_LT(glm::length(mean - k.centre), 1e-12);
+    EXPECT_LT(glm::length(k.spin_tip - explorer_view_of(arrow * s.omega)), 1e-15);
+  }
+  EXPECT_NEAR(arrow * longest, 0.8, 1e-12);
+  EXPECT_EQ(explorer_case_text(r.inverse).rfind("General case: two planes", 0), 0u);
+  EXPECT_EQ(explorer_case_text(explore(ExplorerTerms{}, kCamera).inverse).rfind("No motion", 0),
+            0u);
+  PlanarMotionSolution facing;
+  facing.normal = Vec3(0, 0, 1);
+  EXPECT_EQ(explorer_facing_text(facing), "faces it squarely");
+  facing.normal = Vec3(std::sin(0.5), 0, std::cos(0.5));  // 28.6 degrees
+  EXPECT_EQ(explorer_facing_text(facing), "turned 29\u00b0 away");
+}
+
 class BasisExplorerWindow : public WindowTest {
  protected:
   void SetUp() override {
