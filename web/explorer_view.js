@@ -21,9 +21,14 @@ const explorerView = {
     for (const term of JSON.parse(app.session.explorerJson()).terms) {
       const row = document.createElement('div');
       row.className = 'dial';
+      // The term and its unit under it; the slider and the number box beside them.
       const name = document.createElement('span');
+      name.className = 'term';
       name.textContent = term.key;
       name.title = term.description;
+      const unit = document.createElement('small');
+      unit.textContent = term.unit;
+      name.append(document.createElement('br'), unit);
       const slider = document.createElement('input');
       slider.type = 'range';
       slider.id = `explorer-slider-${term.key}`;
@@ -36,13 +41,10 @@ const explorerView = {
       box.id = `explorer-${term.key}`;
       box.step = String(term.span / 100);
       box.title = `${term.description}, ${term.unit} (${term.minimum}..${term.maximum})`;
-      const unit = document.createElement('span');
-      unit.className = 'unit';
-      unit.textContent = term.unit;
       const set = (value) => editState((s) => { s.basis.terms[term.key] = Number(value); }, 'the explorer');
       slider.addEventListener('input', () => set(slider.value));
       box.addEventListener('change', () => set(box.value));
-      row.append(name, slider, box, unit);
+      row.append(name, slider, box);
       dials.appendChild(row);
     }
     $('basis-explorer').addEventListener('change', () => editState((s) => { s.basis.explorer = $('basis-explorer').checked; }));
@@ -133,11 +135,13 @@ const explorerView = {
   // it, with an 8 x 8 grid, framed so that both fill the picture.
   drawDeformation(ctx, r, box, style) {
     const d = r.deformation;
-    ctx.fillStyle = '#e6e6e6';
-    ctx.font = style.font(15);
-    const caption = 22 * style.scale;
-    ctx.fillText(`After ${d.seconds} s of this flow (dashed: the start)`, box.x, box.y + 16 * style.scale);
-    const area = { x: box.x, y: box.y + caption, w: box.w, h: box.h - caption };
+    const title = textBlock(ctx, `After ${d.seconds} s of this flow (dashed: the start)`, box.w, 15, style);
+    title.draw(box.x, box.y, '#e6e6e6');
+    const c = d.change;
+    const numbers = textBlock(ctx, `The centre moved ${c.shift_px.toFixed(1)} px; area x${c.area.toFixed(3)}; turned ${c.turn_deg.toFixed(1)}\u00b0; keystone ${(100 * c.keystone).toFixed(1)} %.`,
+      box.w, 13, style);
+    numbers.draw(box.x, box.y + box.h - numbers.height, '#c8ccd2');
+    const area = { x: box.x, y: box.y + title.height + 4, w: box.w, h: box.h - title.height - numbers.height - 8 };
     const points = d.rect.concat(d.quad);
     const fit = fitBox(points, area, 0.03);
     const { width, height } = r.camera;
@@ -173,11 +177,6 @@ const explorerView = {
     tracePolygon(ctx, d.rect.map(fit));
     ctx.stroke();
     ctx.restore();
-    const c = d.change;
-    ctx.fillStyle = '#c8ccd2';
-    ctx.font = style.font(13);
-    ctx.fillText(`centre moved ${c.shift_px.toFixed(1)} px, area x${c.area.toFixed(3)}, turned ${c.turn_deg.toFixed(1)}\u00b0, keystone ${(100 * c.keystone).toFixed(1)} %`,
-      area.x + 4, area.y + area.h - 6, area.w - 8);
   },
 
   // Each solution in its own half: the eye, its line of sight, the plane, N, V/d and Omega.
@@ -185,7 +184,8 @@ const explorerView = {
     ctx.fillStyle = '#181b1f';
     ctx.fillRect(box.x, box.y, box.w, box.h);
     const title = 22 * style.scale;
-    const legend = 22 * style.scale;
+    const items = [['dot: the eye', '#e6e6e6'], ['N normal', '#e6e6e6'], ['V/d velocity', kOkabeVermillion], ['Omega spin', kOkabeBlue]];
+    const legend = legendRows(ctx, items, box.w - 12, 13, style);
     const count = Math.max(1, r.solutions.length);
     const cellW = box.w / count;
     const sketches = r.solutions.filter((s) => s.sketch).map((s) => s.sketch);
@@ -193,7 +193,7 @@ const explorerView = {
     for (const k of sketches) all.push(...k.corners, k.centre, k.normal_tip, k.velocity_tip, k.spin_tip);
     const names = ['Solution A', 'Solution B'];
     for (let i = 0; i < count; ++i) {
-      const cell = { x: box.x + i * cellW, y: box.y + title, w: cellW, h: box.h - title - legend };
+      const cell = { x: box.x + i * cellW, y: box.y + title, w: cellW, h: box.h - title - legend.height };
       const s = r.solutions[i];
       ctx.fillStyle = s ? this.colour(i) : '#e6e6e6';
       ctx.font = `bold ${style.font(14)}`;
@@ -205,14 +205,7 @@ const explorerView = {
       }
       this.drawSketch(ctx, s.sketch, fitBox(all, { x: cell.x + 6, y: cell.y, w: cell.w - 12, h: cell.h }, 0.05), i, style);
     }
-    const items = [['dot: the eye', '#e6e6e6'], ['N normal', '#e6e6e6'], ['V/d velocity', kOkabeVermillion], ['Omega spin', kOkabeBlue]];
-    ctx.font = style.font(13);
-    let x = box.x + 6;
-    for (const [text, colour] of items) {
-      ctx.fillStyle = colour;
-      ctx.fillText(text, x, box.y + box.h - 7);
-      x += ctx.measureText(text).width + 14 * style.scale;
-    }
+    legend.draw(box.x + 6, box.y + box.h - legend.height);
   },
 
   drawSketch(ctx, k, fit, index, style) {
@@ -260,12 +253,19 @@ const explorerView = {
       return;
     }
     const frame = this.futureFrame < 0 ? f.frames : Math.min(this.futureFrame, f.frames);
+    const first = f.first_frame_apart;
+    const after1 = f.distance_px.length > 1 ? f.distance_px[1] : 0;
+    const sentence = textBlock(ctx, `Frame ${frame} of ${f.frames}: the images are ${f.distance_px[frame].toFixed(3)} px apart. After one frame ${after1.toFixed(3)} px; ${first >= 0 ? `over ${f.threshold_px} px first at frame ${first}` : `never over ${f.threshold_px} px`}.`,
+      box.w - 8, 13, style);
     const title = 20 * style.scale;
-    const line = 22 * style.scale;
-    const pictureH = (box.h - line) * 0.5;
+    const line = sentence.height + 4;
+    // The chart keeps at least 90 px (180 in presentation mode); the pictures take the rest,
+    // and are left out when that is too small to show a quadrilateral.
+    const chartH = Math.max(90 * style.scale, (box.h - line) * 0.5);
+    const pictureH = box.h - line - chartH >= title + 30 * style.scale ? box.h - line - chartH : 0;
     const { width, height } = r.camera;
     const frameCorners = [[-width / 2, -height / 2], [width / 2, -height / 2], [width / 2, height / 2], [-width / 2, height / 2]];
-    for (let i = 0; i < 2; ++i) {
+    for (let i = 0; i < 2 && pictureH > 0; ++i) {
       const cell = { x: box.x + i * box.w / 2 + 4, y: box.y + title, w: box.w / 2 - 8, h: pictureH - title };
       ctx.fillStyle = this.colour(i);
       ctx.font = `bold ${style.font(13)}`;
@@ -287,12 +287,7 @@ const explorerView = {
       ctx.stroke();
     }
     this.drawDistanceChart(ctx, f, frame, { x: box.x + 4, y: box.y + pictureH + 4, w: box.w - 8, h: box.h - pictureH - line - 8 }, style);
-    const first = f.first_frame_apart;
-    const after1 = f.distance_px.length > 1 ? f.distance_px[1] : 0;
-    ctx.fillStyle = '#e6e6e6';
-    ctx.font = style.font(13);
-    ctx.fillText(`Frame ${frame} of ${f.frames}: the images are ${f.distance_px[frame].toFixed(3)} px apart. After one frame ${after1.toFixed(3)} px; ${first >= 0 ? `over ${f.threshold_px} px first at frame ${first}` : `never over ${f.threshold_px} px`}.`,
-      box.x + 4, box.y + box.h - 7, box.w - 8);
+    sentence.draw(box.x + 4, box.y + box.h - sentence.height, '#e6e6e6');
   },
 
   drawDistanceChart(ctx, f, frame, box, style) {
@@ -350,13 +345,53 @@ function fitBox(points, box, margin) {
   return (p) => [box.x + box.w / 2 + k * (p[0] - cx), box.y + box.h / 2 + k * (p[1] - cy)];
 }
 
-// `text` centred in `box`, on one line.
+// `text` in a font of `px` (doubled in presentation mode) wrapped to `width` pixels: its
+// height, and draw(x, top, colour) to draw it with its first line's top at `top`.
+function textBlock(ctx, text, width, px, style) {
+  ctx.font = style.font(px);
+  const lines = wrapLines(ctx, text, width);
+  const step = 1.3 * px * style.scale;
+  return {
+    height: lines.length * step,
+    draw(x, top, colour) {
+      ctx.font = style.font(px);
+      ctx.fillStyle = colour;
+      lines.forEach((l, i) => ctx.fillText(l, x, top + (i + 0.8) * step));
+    },
+  };
+}
+
+// A legend of [text, colour] items laid out in rows at most `width` pixels wide: its height,
+// and draw(x, top).
+function legendRows(ctx, items, width, px, style) {
+  ctx.font = style.font(px);
+  const gap = 14 * style.scale;
+  const step = 1.3 * px * style.scale;
+  const placed = [];
+  let x = 0;
+  let row = 0;
+  for (const [text, colour] of items) {
+    const w = ctx.measureText(text).width;
+    if (x > 0 && x + w > width) { x = 0; ++row; }
+    placed.push({ text, colour, x, row });
+    x += w + gap;
+  }
+  return {
+    height: (row + 1) * step,
+    draw(left, top) {
+      ctx.font = style.font(px);
+      for (const p of placed) {
+        ctx.fillStyle = p.colour;
+        ctx.fillText(p.text, left + p.x, top + (p.row + 0.8) * step);
+      }
+    },
+  };
+}
+
+// `text` in the middle of `box`, wrapped to its width.
 function drawNote(ctx, box, text, style) {
-  ctx.fillStyle = '#e6e6e6';
-  ctx.font = style.font(14);
-  ctx.textAlign = 'center';
-  ctx.fillText(text, box.x + box.w / 2, box.y + box.h / 2, box.w - 12);
-  ctx.textAlign = 'left';
+  const block = textBlock(ctx, text, box.w - 12, 14, style);
+  block.draw(box.x + 6, box.y + (box.h - block.height) / 2, '#e6e6e6');
 }
 
 app.explorer = explorerView;

@@ -212,16 +212,14 @@ function addArrow(path, x0, y0, x1, y1, head) {
   }
 }
 
-// `text` centred in the canvas, wrapped into lines at most 80 % of its width.
-function drawCentredText(ctx, w, h, text, style) {
-  ctx.fillStyle = '#e6e6e6';
-  ctx.font = style.font(16);
-  ctx.textAlign = 'center';
+// `text` broken at spaces into lines at most `width` pixels wide in the context's font (a
+// word longer than that gets a line of its own).
+function wrapLines(ctx, text, width) {
   const lines = [];
   let line = '';
   for (const word of text.split(' ')) {
     const longer = line ? `${line} ${word}` : word;
-    if (line && ctx.measureText(longer).width > 0.8 * w) {
+    if (line && ctx.measureText(longer).width > width) {
       lines.push(line);
       line = word;
     } else {
@@ -229,6 +227,15 @@ function drawCentredText(ctx, w, h, text, style) {
     }
   }
   lines.push(line);
+  return lines;
+}
+
+// `text` centred in the canvas, wrapped into lines at most 80 % of its width.
+function drawCentredText(ctx, w, h, text, style) {
+  ctx.fillStyle = '#e6e6e6';
+  ctx.font = style.font(16);
+  ctx.textAlign = 'center';
+  const lines = wrapLines(ctx, text, 0.8 * w);
   const step = 22 * style.scale;
   lines.forEach((l, i) => ctx.fillText(l, w / 2, h / 2 + (i - (lines.length - 1) / 2) * step));
   ctx.textAlign = 'start';
