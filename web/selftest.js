@@ -80,7 +80,8 @@ function exactFrameHash() {
   return h.toString(16).padStart(8, '0');
 }
 
-// Per view (the comparison on the swing script and on the street scene): frames a second
+// Per view (the gallery and the explorer; the charts and the comparison on the swing
+// script; the comparison on the street scene): frames a second
 // of requestAnimationFrame over kViewFrames frames (after kViewWarmUp) stepping and drawing (paced by the
 // display), and the frames a second the page's own work per frame allows (1000 / its
 // median in ms: what an unpaced display could show).
@@ -89,6 +90,8 @@ const kViewWarmUp = 5;
 async function selftestViews() {
   const views = {};
   const cases = [['flow', { view: 'flow' }], ['basis', { view: 'basis' }],
+    ['explorer', { view: 'basis', basis: { explorer: true } }],
+    ['analysis', { view: 'analysis', script: 'swing' }],
     ['animation', { view: 'animation', script: 'swing' }],
     ['animation-street', { view: 'animation', animation: { source: { kind: 'scene', name: 'street', viewer: 'walk' } } }]];
   for (const [name, state] of cases) {

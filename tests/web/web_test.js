@@ -193,7 +193,7 @@ async function testSelftest(browser) {
   check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 15 && parts >= 48 && lessonDiffer.length === 0,
     `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
   const views = Object.entries(result.views || {});
-  check('SelftestReportsViewsAndTimeToInteractive', views.length === 4 && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
+  check('SelftestReportsViewsAndTimeToInteractive', views.length === 6 && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
     result.time_to_interactive_ms > 0, `interactive after ${result.time_to_interactive_ms} ms; ` +
     views.map(([n, v]) => `${n} ${v.paced_fps.toFixed(1)} paced, ${v.unpaced_fps.toFixed(0)} unpaced fps`).join(', '));
 }
