@@ -6,6 +6,7 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
+#include <QPainter>
 #include <QStatusBar>
 #include <algorithm>
 
@@ -19,11 +20,24 @@
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "state/window_state_file.h"
+#include "views/study_window.h"
 #include "views/view_page.h"
 
 namespace oflab {
 
-QImage MainWindow::grab_window_image() { return grab_with_vtk(this); }
+QImage MainWindow::grab_window_image() {
+  QImage image = grab_with_vtk(this);
+  if (!study_window_ || !study_window_->isVisible()) return image;
+  const QImage study = grab_with_vtk(study_window_);
+  const int border = 3;
+  const QPoint at(std::max(0, image.width() - study.width() - border),
+                  std::max(0, image.height() - study.height() - border));
+  QPainter painter(&image);
+  painter.fillRect(QRect(at - QPoint(border, border), study.size() + QSize(2, 2) * border),
+                   QColor(40, 40, 40));
+  painter.drawImage(at, study);
+  return image;
+}
 
 void MainWindow::load_texture() {
   const QString path = QFileDialog::getOpenFileName(this, tr("Load texture"), QString(),

@@ -151,6 +151,7 @@ QWidget* StudyWindow::make_results_page() {
   auto* again = new QPushButton(tr("New session"), page);
   connect(again, &QPushButton::clicked, this, [this] { pages_->setCurrentIndex(0); });
   use_button_ = new QPushButton(page);
+  use_button_->setObjectName(QStringLiteral("study_use_threshold"));
   connect(use_button_, &QPushButton::clicked, this,
           [this] { emit threshold_chosen(smallest_threshold_px_); });
   auto* buttons = new QHBoxLayout;

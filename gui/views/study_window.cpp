@@ -184,7 +184,9 @@ void StudyWindow::study_chosen(int index) {
   const Study& s = studies_[size_t(index)];
   study_text_->setText(
       QString::fromStdString(s.title + ": " + s.description) +
-      tr(" (%1 conditions, %2 trials each)").arg(s.conditions.size()).arg(s.trials));
+      (s.conditions.size() == 1
+           ? tr(" (1 condition, %1 trials)").arg(s.trials)
+           : tr(" (%1 conditions, %2 trials each)").arg(s.conditions.size()).arg(s.trials)));
   method_box_->setCurrentText(QString::fromStdString(s.method));
   seed_box_->setValue(int(std::min<std::uint64_t>(s.seed, std::uint64_t(1) << 30)));
 }
@@ -386,6 +388,18 @@ int StudyWindow::first_clip_frame() const {
 }
 
 std::string StudyWindow::setup_status() const { return setup_status_->text().toStdString(); }
+
+void StudyWindow::show_setup() {
+  clock_.stop();
+  phase_ = Phase::kIdle;
+  pages_->setCurrentIndex(0);
+}
+
+std::string StudyWindow::setup_study() const {
+  if (pages_->currentIndex() != 0) return "";
+  const int index = study_box_->currentIndex();
+  return index < 0 || index >= int(studies_.size()) ? "" : studies_[size_t(index)].name;
+}
 
 const StudySession* StudyWindow::session() const { return runner_ ? &runner_->session() : nullptr; }
 

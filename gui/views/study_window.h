@@ -74,6 +74,11 @@ class StudyWindow : public QWidget {
   int first_clip_frame() const;
   // The set-up page's status line: why a start was refused, "" when none.
   std::string setup_status() const;
+  // Shows the set-up page, ending a session that plays (the clock stopped, as closing the
+  // window does).
+  void show_setup();
+  // The name of the study chosen while the set-up page shows; "" on the other pages.
+  std::string setup_study() const;
 
   // The running or finished session (nullptr before the first start).
   const StudySession* session() const;
