@@ -239,6 +239,11 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
          return basis ? double(basis->tile_active(claim.of)) : kUnknown;
        }},
       {"study_setup", study_setup},
+      {"study_results",
+       [](MainWindow* window, const LessonClaim&) {
+         const StudyWindow* study = window->study_window();
+         return study && study->isVisible() ? double(study->results_shown()) : 0.0;
+       }},
       {"study_threshold_gap",
        [](MainWindow* window, const LessonClaim&) { return study_threshold_gap(window); }},
   };

@@ -7,6 +7,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QStackedWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -202,6 +203,17 @@ void StudyWindow::fill_results_table(const std::vector<ThresholdResult>& fits) {
       results_table_->setItem(int(i), c, new QTableWidgetItem(cells[c]));
     }
   }
+}
+
+int StudyWindow::results_shown() const {
+  if (pages_->currentIndex() != 2) return 0;
+  const QRegularExpression interval(QStringLiteral("^[0-9.]+ \\([0-9.]+-[0-9.]+\\)"));
+  int shown = 0;
+  for (int row = 0; row < results_table_->rowCount(); ++row) {
+    const QTableWidgetItem* item = results_table_->item(row, 3);
+    shown += item && interval.match(item->text()).hasMatch();
+  }
+  return shown;
 }
 
 void StudyWindow::show_results_of(const Study& study, const std::vector<TrialRow>& rows,

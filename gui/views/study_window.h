@@ -79,6 +79,9 @@ class StudyWindow : public QWidget {
   void show_setup();
   // The name of the study chosen while the set-up page shows; "" on the other pages.
   std::string setup_study() const;
+  // The rows of the results table that show a threshold with its interval ("1.09
+  // (0.79-1.57)") while the results page shows; 0 on the other pages.
+  int results_shown() const;
 
   // The running or finished session (nullptr before the first start).
   const StudySession* session() const;

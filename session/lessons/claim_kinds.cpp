@@ -161,6 +161,10 @@ std::vector<ClaimKind> make_kinds() {
              "what the explorer's deformation does to the grid in 1 s: `of` shift_px (px), area "
              "(ratio), turn_deg (degrees) or keystone (fraction)",
              true, false, false, grid_field),
+      engine("error_over_threshold",
+             "the largest measured error over frames 1 .. now of `of` (engine or a compared "
+             "policy) over the largest of the four reuse thresholds it plays with",
+             true, false, false, run_name),
       engine("study_errors",
              "the smallest (`of` min) or largest (`of` max) error the engine shows in the "
              "study the state opens (`study.open`): its ladders' measured errors over every "
@@ -175,6 +179,9 @@ std::vector<ClaimKind> make_kinds() {
       screen("study_setup",
              "1 when the study window shows its set-up page with study `of` chosen, else 0", true,
              false, study_name),
+      screen("study_results",
+             "the conditions for which the study window's results page shows a threshold with "
+             "its 95 % interval (0 on its other pages)"),
       screen("study_threshold_gap",
              "the largest difference (px) between the window's four reuse thresholds as their "
              "fields show them and the threshold the study window's results offer (its *Use X "

@@ -179,6 +179,14 @@ double grid_change(Lab& lab, const LessonClaim& claim) {
   return value;
 }
 
+// max_error over the largest of the four thresholds of the lab's settings (the engine's and
+// the compared runs' alike).
+double error_over_threshold(Lab& lab, const LessonClaim& claim) {
+  const TermArray& t = lab.run().settings().thresholds;
+  const double largest = *std::max_element(t.begin(), t.end());
+  return largest > 0.0 ? max_error(lab, claim) / largest : kUnknown;
+}
+
 // The smallest or largest error (`of` min or max) the engine shows in the study the lab's
 // state opens, over its conditions' ladders, px; NaN without a study.
 double study_errors(Lab& lab, const LessonClaim& claim) {
@@ -242,6 +250,7 @@ std::map<std::string, EngineMeasure> make_measures() {
                                                                  : kUnknown;
        }},
       {"grid_change", grid_change},
+      {"error_over_threshold", error_over_threshold},
       {"study_errors", study_errors},
       {"study_recovery", study_recovery},
   };
