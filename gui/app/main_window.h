@@ -141,8 +141,9 @@ class MainWindow : public QMainWindow, public LessonStage {
   ViewTheme theme() const;
 
   // The whole window as drawn, VTK content included; with the study window shown, that window
-  // drawn over its lower right corner with a dark border, as it sits beside the window on a
-  // desktop (a screenshot or a lesson's step picture shows both).
+  // drawn over its lower right corner under the lesson's caption (scaled down when it does not
+  // fit) with a dark border, as it sits beside the window on a desktop (a screenshot or a
+  // lesson's step picture shows both).
   QImage grab_window_image();
 
  protected:
