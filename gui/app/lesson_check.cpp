@@ -254,7 +254,8 @@ constexpr double kCheckObserverPx = 1.0;
 
 // A part that leaves the study window on its set-up page is answered as the class would
 // answer it: a simulated observer of kCheckObserverPx (the study's slope and lapse, seeded by
-// the study's seed) runs the study to its end in the window, then "Use X px" is pressed.
+// the study's seed) runs the study to its end in the window (its trials and results, without
+// making the clips' pictures: TrialRunner::answer_unseen), then "Use X px" is pressed.
 void answer_shown_study(MainWindow* window) {
   StudyWindow* study = window->study_window();
   if (!study || !study->isVisible() || study->setup_study().empty()) return;
@@ -263,7 +264,7 @@ void answer_shown_study(MainWindow* window) {
   SimulatedObserver observer(
       chosen.seed,
       PsychometricFunction{kCheckObserverPx, chosen.assumed_slope, chosen.assumed_lapse});
-  if (!study->run_simulated(observer).empty()) return;
+  if (!study->run_simulated_unseen(observer).empty()) return;
   if (auto* use = study->findChild<QPushButton*>("study_use_threshold")) use->click();
   QApplication::processEvents();
 }

@@ -382,6 +382,18 @@ std::string StudyWindow::run_simulated(SimulatedObserver& observer) {
   return "";
 }
 
+std::string StudyWindow::run_simulated_unseen(SimulatedObserver& observer) {
+  const std::string problem = read_choice(&choice_);
+  if (!problem.empty()) return problem;
+  runner_ = std::make_unique<TrialRunner>(choice_.study, choice_.method, choice_.seed);
+  while (!runner_->finished()) {
+    const SimulatedObserver::Answer a = observer.answer(runner_->shown_px());
+    runner_->answer_unseen(runner_->chosen_for(a.correct), a.late);
+  }
+  show_results();
+  return "";
+}
+
 int StudyWindow::first_clip_frame() const {
   const bool first_trial = runner_ && runner_->session().trials().empty();
   return first_trial && phase_ == Phase::kFirst ? frame_ : -1;

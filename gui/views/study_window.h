@@ -66,6 +66,9 @@ class StudyWindow : public QWidget {
   // run is not timed), through the same answers as the buttons; then shows the results.
   // Returns "" or why it could not start.
   std::string run_simulated(SimulatedObserver& observer);
+  // The same run without making or showing the trials' pictures (TrialRunner::answer_unseen:
+  // the same trials and results), for a lesson's check.
+  std::string run_simulated_unseen(SimulatedObserver& observer);
 
   // Starts the set-up page's choice as the Start button does: the rate check, then the
   // trials on the paced clock.
