@@ -400,7 +400,7 @@ async function testScreenshots(browser) {
 // --- Controls ----------------------------------------------------------------------------
 const kKeys = {
   ' ': ['Space', 32], ArrowRight: ['ArrowRight', 39], ArrowLeft: ['ArrowLeft', 37], ArrowUp: ['ArrowUp', 38],
-  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], p: ['KeyP', 80], 2: ['Digit2', 50], 4: ['Digit4', 52],
+  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], PageUp: ['PageUp', 33], p: ['KeyP', 80], 2: ['Digit2', 50], 4: ['Digit4', 52],
 };
 
 async function press(browser, key) {
