@@ -57,6 +57,8 @@ screen=1920x1200 shot lesson-flow-vs-talisman --lesson flow-vs-talisman --size 1
 screen=1920x1200 shot lesson-when-reuse-pays --lesson when-reuse-pays --presentation --size 1920 1080 \
   --frames 90
 shot lesson-why-errors-accumulate --lesson why-errors-accumulate --frames 60
+screen=1920x1200 shot lesson-how-much-error-can-you-see --lesson how-much-error-can-you-see \
+  --size 1920 1080 --frames 50
 shot lesson-occlusion --lesson occlusion --frames 20
 screen=1920x1200 shot lesson-guessing-the-next-frame --lesson guessing-the-next-frame \
   --presentation --size 1920 1080 --frames 3

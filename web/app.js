@@ -207,7 +207,10 @@ function bindControls() {
 // the first and the last frame; Page Down and Page Up step through a lesson; 1-4 pick a view,
 // P the presentation mode.
 function onKey(e) {
-  if (studyOpen()) return;  // the study panel takes its own keys (study_view.js)
+  // The study panel takes its own keys (study_view.js), but Page Down and Page Up still step
+  // a lesson (a lesson's step may have opened the panel).
+  const lessonKey = app.lesson && (e.key === 'PageDown' || e.key === 'PageUp');
+  if (studyOpen() && !lessonKey) return;
   if (e.target.tagName === 'INPUT' && e.target.type !== 'range') return;
   if (e.target.tagName === 'SELECT') return;
   const frame = app.state.frame;

@@ -49,6 +49,7 @@ function showLessonStep(k) {
   }
   app.state = JSON.parse(app.session.stateJson());
   syncControls();
+  showStateStudy(app.state);
   app.dirty = true;
   showMessage('');
   setPlaying(false);

@@ -12,6 +12,7 @@ const kClipRate = 60;        // frames per second (session/study/study_file.h kC
 const kGapMs = 500;
 
 const study = {
+  applied: '',      // the study.open of the last lesson state shown
   core: null,       // Module.Study
   shipped: [],      // Module.Study.shippedJson()
   fileName: '',     // a study opened from a file: its name and text
@@ -43,8 +44,9 @@ function studyChosen() {
   if (!s) return;
   study.fileName = '';
   study.fileText = '';
-  $('study-description').textContent =
-    `${s.description} (${s.conditions.length} conditions, ${s.trials} trials each)`;
+  $('study-description').textContent = s.conditions.length === 1
+    ? `${s.description} (1 condition, ${s.trials} trials)`
+    : `${s.description} (${s.conditions.length} conditions, ${s.trials} trials each)`;
   $('study-method').value = s.method;
 }
 
@@ -332,6 +334,21 @@ function openStudyFile(file) {
     $('study-description').textContent = `${file.name} (opened from a file)`;
     $('study-status').textContent = '';
   });
+}
+
+// A lesson's state opens the study panel as the desktop's state opens its study window
+// (study.open): on the set-up page with that study chosen when the value changes to a study,
+// closed when it changes to empty. (The page keeps the state's thresholds: study.use_threshold
+// needs the desktop's "Use X px".)
+function showStateStudy(state) {
+  const name = (state && state.study && state.study.open) || '';
+  if (name === study.applied) return;
+  study.applied = name;
+  $('study-panel').hidden = !name;
+  if (!name) return;
+  showStudyPage('setup');
+  $('study-name').value = name;
+  studyChosen();
 }
 
 // ?study=NAME opens the study panel on a shipped study; with &study-simulate=PX a simulated

@@ -1,8 +1,11 @@
 #include "app/lesson_check.h"
 
 #include <QApplication>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
+#include <QPushButton>
+#include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,6 +20,7 @@
 #include "views/animation_view.h"
 #include "views/basis_view.h"
 #include "views/flow_view.h"
+#include "views/study_window.h"
 #include "views/world_view.h"
 
 namespace oflab {
@@ -175,6 +179,32 @@ AnimationView* animation_view(MainWindow* window) {
   return animation;
 }
 
+// 1 when the study window shows its set-up page with study `claim.of` chosen, else 0.
+double study_setup(MainWindow* window, const LessonClaim& claim) {
+  const StudyWindow* study = window->study_window();
+  return study && study->isVisible() && study->setup_study() == claim.of ? 1.0 : 0.0;
+}
+
+// The largest difference (px) between the window's four threshold fields as shown and the
+// number the study window's "Use X px" button shows; NaN without that button's number.
+double study_threshold_gap(MainWindow* window) {
+  const StudyWindow* study = window->study_window();
+  const auto* use = study ? study->findChild<QPushButton*>("study_use_threshold") : nullptr;
+  const QRegularExpressionMatch number =
+      QRegularExpression(QStringLiteral("([0-9]+(\\.[0-9]+)?) px")).match(use ? use->text() : "");
+  if (!number.hasMatch()) return kUnknown;
+  const double offered = number.captured(1).toDouble();
+  double gap = kUnknown;
+  for (int k = 0; k < kTermCount; ++k) {
+    const auto* field =
+        window->findChild<QDoubleSpinBox*>(QStringLiteral("animation_threshold_%1").arg(k));
+    if (!field) return kUnknown;
+    const double shown = QLocale().toDouble(field->text());
+    gap = std::isnan(gap) ? std::abs(shown - offered) : std::max(gap, std::abs(shown - offered));
+  }
+  return gap;
+}
+
 using ScreenMeasure = std::function<double(MainWindow*, const LessonClaim&)>;
 
 // A screen measure of the animation view, NaN without one.
@@ -208,7 +238,35 @@ std::map<std::string, ScreenMeasure> make_screen_measures() {
          BasisView* basis = basis_view(window);
          return basis ? double(basis->tile_active(claim.of)) : kUnknown;
        }},
+      {"study_setup", study_setup},
+      {"study_results",
+       [](MainWindow* window, const LessonClaim&) {
+         const StudyWindow* study = window->study_window();
+         return study && study->isVisible() ? double(study->results_shown()) : 0.0;
+       }},
+      {"study_threshold_gap",
+       [](MainWindow* window, const LessonClaim&) { return study_threshold_gap(window); }},
   };
+}
+
+// The threshold of the simulated observer who answers a lesson's study in a check, pixels.
+constexpr double kCheckObserverPx = 1.0;
+
+// A part that leaves the study window on its set-up page is answered as the class would
+// answer it: a simulated observer of kCheckObserverPx (the study's slope and lapse, seeded by
+// the study's seed) runs the study to its end in the window (its trials and results, without
+// making the clips' pictures: TrialRunner::answer_unseen), then "Use X px" is pressed.
+void answer_shown_study(MainWindow* window) {
+  StudyWindow* study = window->study_window();
+  if (!study || !study->isVisible() || study->setup_study().empty()) return;
+  const Study chosen = find_or_read_study(study->setup_study());
+  study->set_fields(chosen.method, "simulated", 96.0, chosen.seed);
+  SimulatedObserver observer(
+      chosen.seed,
+      PsychometricFunction{kCheckObserverPx, chosen.assumed_slope, chosen.assumed_lapse});
+  if (!study->run_simulated_unseen(observer).empty()) return;
+  if (auto* use = study->findChild<QPushButton*>("study_use_threshold")) use->click();
+  QApplication::processEvents();
 }
 
 }  // namespace
@@ -249,7 +307,11 @@ std::vector<ClaimCheck> check_lesson(MainWindow* window, const Lesson& lesson,
           return std::nullopt;
         return measure_claim(window, claim);
       },
-      {whole_caption}, after_part);
+      {whole_caption},
+      [window, &after_part](int part) {
+        if (after_part) after_part(part);
+        answer_shown_study(window);
+      });
 }
 
 }  // namespace oflab

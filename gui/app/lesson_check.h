@@ -5,6 +5,9 @@
 // (session/player/engine_claims.h, the same measures as `oflab-cli lesson check`), the
 // screen's kinds (session/lessons/claim_kinds.h, ClaimSource::kScreen) on what the views
 // paint, through screen_claim_measures().
+// A part that leaves the study window (views/study_window.h) on its set-up page is answered
+// after its claims as a class would answer it: a simulated observer of a 1 px threshold (the
+// study's slope, lapse and seed) runs the study in the window, then "Use X px" is pressed.
 // `oflab --check-lesson NAME|FILE|all` runs it; the lesson-claims ctest runs it on every
 // shipped lesson at 1920 x 1080, and on a lesson with a false claim, which it must reject.
 #pragma once

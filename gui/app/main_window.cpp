@@ -100,6 +100,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(model_, &WindowModel::presentation_changed, this, &MainWindow::show_presentation);
   connect(model_, &WindowModel::play_changed, this, &MainWindow::show_play);
   connect(model_, &WindowModel::lesson_changed, this, &MainWindow::show_lesson);
+  connect(model_, &WindowModel::study_changed, this, &MainWindow::show_model_study);
   connect(model_, &WindowModel::layout_changed, this, &MainWindow::show_layout);
   connect(model_, &WindowModel::scene_panel_changed, this,
           [this] { scene_dock_->setVisible(model_->scene_panel()); });
@@ -243,23 +244,6 @@ void MainWindow::create_menus() {
           &QAction::triggered, this, [this] { open_study_window(); });
 }
 
-StudyWindow* MainWindow::open_study_window() {
-  if (!study_window_) {
-    study_window_ = new StudyWindow(this);
-    connect(study_window_, &StudyWindow::threshold_chosen, this, [this](double px) {
-      WindowState state = model_->state();
-      state.settings.thresholds = {px, px, px, px};
-      QString error;
-      if (!model_->apply(state, &error)) show_message(error);
-    });
-    study_window_->resize(std::max(900, width() * 3 / 4), std::max(720, height() * 3 / 4));
-  }
-  study_window_->show();
-  study_window_->raise();
-  study_window_->activateWindow();
-  return study_window_;
-}
-
 void MainWindow::create_play_bar() {
   QToolBar* bar = addToolBar(tr("Play"));
   bar->setObjectName(QStringLiteral("play_bar"));
@@ -384,7 +368,7 @@ WindowState MainWindow::stage_state() const { return model_->state(); }
 
 std::string MainWindow::stage_apply(const WindowState& state) {
   QString error;
-  return model_->apply(state, &error) ? std::string() : error.toStdString();
+  return model_->apply(with_study_threshold(state), &error) ? std::string() : error.toStdString();
 }
 
 void MainWindow::stage_stop() { model_->set_playing(false); }

@@ -72,6 +72,8 @@ class MainWindow : public QMainWindow, public LessonStage {
   // The threshold study's window (views/study_window.h; Study menu), made on the first call,
   // shown and raised.
   StudyWindow* open_study_window();
+  // The study window, nullptr before it is first opened.
+  StudyWindow* study_window() const { return study_window_; }
   // A lesson's steps, as the teacher takes them, played by the one lesson player
   // (session/lessons/lesson_player.h) on this window as its stage. perform_lesson_step does
   // step `step` (1-based) of `lesson`: its state (over the one on screen), then its frame,
@@ -138,7 +140,10 @@ class MainWindow : public QMainWindow, public LessonStage {
   // (presentation_scale of the window's size when the look was last set).
   ViewTheme theme() const;
 
-  // The whole window as drawn, VTK content included.
+  // The whole window as drawn, VTK content included; with the study window shown, that window
+  // drawn over its lower right corner under the lesson's caption (scaled down when it does not
+  // fit) with a dark border, as it sits beside the window on a desktop (a screenshot or a
+  // lesson's step picture shows both).
   QImage grab_window_image();
 
  protected:
@@ -200,6 +205,13 @@ class MainWindow : public QMainWindow, public LessonStage {
   QLabel* message_banner_ = nullptr;
   QLabel* frame_label_ = nullptr;
   StudyWindow* study_window_ = nullptr;  // made when first opened
+  std::string study_applied_;            // the study.open of the last state applied
+  // Opens the study window on the set-up page of the model's study.open, or closes it, when
+  // the value differs from the last state's (main_window_study.cpp).
+  void show_model_study();
+  // `state` with the thresholds the study window measured when it asks for them
+  // (study.use_threshold) and the study window has results.
+  WindowState with_study_threshold(WindowState state) const;
   QTimer* motion_timer_;
   QElapsedTimer play_clock_;
   FramePacer pacer_;

@@ -5,7 +5,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QLabel>
 #include <QMenu>
+#include <QPainter>
 #include <QStatusBar>
 #include <algorithm>
 
@@ -19,11 +21,31 @@
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "state/window_state_file.h"
+#include "views/study_window.h"
 #include "views/view_page.h"
 
 namespace oflab {
 
-QImage MainWindow::grab_window_image() { return grab_with_vtk(this); }
+QImage MainWindow::grab_window_image() {
+  QImage image = grab_with_vtk(this);
+  if (!study_window_ || !study_window_->isVisible()) return image;
+  // Under the lesson's caption, scaled down when the window is too short for it.
+  const int border = 3;
+  const int top = caption_banner_->isVisible()
+                      ? caption_banner_->mapTo(this, QPoint(0, caption_banner_->height())).y()
+                      : 0;
+  QImage study = grab_with_vtk(study_window_);
+  const QSize room(image.width() - 2 * border, image.height() - top - 2 * border);
+  if (study.width() > room.width() || study.height() > room.height()) {
+    study = study.scaled(room, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+  }
+  const QPoint at(image.width() - study.width() - border, image.height() - study.height() - border);
+  QPainter painter(&image);
+  painter.fillRect(QRect(at - QPoint(border, border), study.size() + QSize(2, 2) * border),
+                   QColor(40, 40, 40));
+  painter.drawImage(at, study);
+  return image;
+}
 
 void MainWindow::load_texture() {
   const QString path = QFileDialog::getOpenFileName(this, tr("Load texture"), QString(),

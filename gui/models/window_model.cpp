@@ -76,6 +76,7 @@ bool WindowModel::apply(const WindowState& s, QString* error) {
   emit world_camera_changed();
   emit play_changed();
   emit lesson_changed();
+  emit study_changed();
   emit view_changed();
   return true;
 }

@@ -129,6 +129,7 @@ class WindowModel : public QObject {
   void world_camera_changed();
   void play_changed();  // the play rate or playing
   void lesson_changed();
+  void study_changed();  // a state was applied: its study.open may differ
   void input_rejected(const QString& message);
 
  private:

@@ -7,6 +7,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QStackedWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -151,6 +152,7 @@ QWidget* StudyWindow::make_results_page() {
   auto* again = new QPushButton(tr("New session"), page);
   connect(again, &QPushButton::clicked, this, [this] { pages_->setCurrentIndex(0); });
   use_button_ = new QPushButton(page);
+  use_button_->setObjectName(QStringLiteral("study_use_threshold"));
   connect(use_button_, &QPushButton::clicked, this,
           [this] { emit threshold_chosen(smallest_threshold_px_); });
   auto* buttons = new QHBoxLayout;
@@ -201,6 +203,17 @@ void StudyWindow::fill_results_table(const std::vector<ThresholdResult>& fits) {
       results_table_->setItem(int(i), c, new QTableWidgetItem(cells[c]));
     }
   }
+}
+
+int StudyWindow::results_shown() const {
+  if (pages_->currentIndex() != 2) return 0;
+  const QRegularExpression interval(QStringLiteral("^[0-9.]+ \\([0-9.]+-[0-9.]+\\)"));
+  int shown = 0;
+  for (int row = 0; row < results_table_->rowCount(); ++row) {
+    const QTableWidgetItem* item = results_table_->item(row, 3);
+    shown += item && interval.match(item->text()).hasMatch();
+  }
+  return shown;
 }
 
 void StudyWindow::show_results_of(const Study& study, const std::vector<TrialRow>& rows,

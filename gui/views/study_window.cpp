@@ -184,7 +184,9 @@ void StudyWindow::study_chosen(int index) {
   const Study& s = studies_[size_t(index)];
   study_text_->setText(
       QString::fromStdString(s.title + ": " + s.description) +
-      tr(" (%1 conditions, %2 trials each)").arg(s.conditions.size()).arg(s.trials));
+      (s.conditions.size() == 1
+           ? tr(" (1 condition, %1 trials)").arg(s.trials)
+           : tr(" (%1 conditions, %2 trials each)").arg(s.conditions.size()).arg(s.trials)));
   method_box_->setCurrentText(QString::fromStdString(s.method));
   seed_box_->setValue(int(std::min<std::uint64_t>(s.seed, std::uint64_t(1) << 30)));
 }
@@ -380,12 +382,36 @@ std::string StudyWindow::run_simulated(SimulatedObserver& observer) {
   return "";
 }
 
+std::string StudyWindow::run_simulated_unseen(SimulatedObserver& observer) {
+  const std::string problem = read_choice(&choice_);
+  if (!problem.empty()) return problem;
+  runner_ = std::make_unique<TrialRunner>(choice_.study, choice_.method, choice_.seed);
+  while (!runner_->finished()) {
+    const SimulatedObserver::Answer a = observer.answer(runner_->shown_px());
+    runner_->answer_unseen(runner_->chosen_for(a.correct), a.late);
+  }
+  show_results();
+  return "";
+}
+
 int StudyWindow::first_clip_frame() const {
   const bool first_trial = runner_ && runner_->session().trials().empty();
   return first_trial && phase_ == Phase::kFirst ? frame_ : -1;
 }
 
 std::string StudyWindow::setup_status() const { return setup_status_->text().toStdString(); }
+
+void StudyWindow::show_setup() {
+  clock_.stop();
+  phase_ = Phase::kIdle;
+  pages_->setCurrentIndex(0);
+}
+
+std::string StudyWindow::setup_study() const {
+  if (pages_->currentIndex() != 0) return "";
+  const int index = study_box_->currentIndex();
+  return index < 0 || index >= int(studies_.size()) ? "" : studies_[size_t(index)].name;
+}
 
 const StudySession* StudyWindow::session() const { return runner_ ? &runner_->session() : nullptr; }
 

@@ -66,6 +66,9 @@ class StudyWindow : public QWidget {
   // run is not timed), through the same answers as the buttons; then shows the results.
   // Returns "" or why it could not start.
   std::string run_simulated(SimulatedObserver& observer);
+  // The same run without making or showing the trials' pictures (TrialRunner::answer_unseen:
+  // the same trials and results), for a lesson's check.
+  std::string run_simulated_unseen(SimulatedObserver& observer);
 
   // Starts the set-up page's choice as the Start button does: the rate check, then the
   // trials on the paced clock.
@@ -74,6 +77,14 @@ class StudyWindow : public QWidget {
   int first_clip_frame() const;
   // The set-up page's status line: why a start was refused, "" when none.
   std::string setup_status() const;
+  // Shows the set-up page, ending a session that plays (the clock stopped, as closing the
+  // window does).
+  void show_setup();
+  // The name of the study chosen while the set-up page shows; "" on the other pages.
+  std::string setup_study() const;
+  // The rows of the results table that show a threshold with its interval ("1.09
+  // (0.79-1.57)") while the results page shows; 0 on the other pages.
+  int results_shown() const;
 
   // The running or finished session (nullptr before the first start).
   const StudySession* session() const;

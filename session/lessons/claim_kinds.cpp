@@ -1,12 +1,14 @@
 #include "lessons/claim_kinds.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "basis/basis_catalog.h"
 #include "basis/basis_explorer.h"
 #include "display/flow_parts.h"
 #include "engine/decision.h"
 #include "engine/reuse_policy.h"
+#include "formats/datasets.h"
 #include "lessons/lessons.h"
 #include "state/window_state.h"
 
@@ -49,6 +51,18 @@ std::string grid_field(const std::string& v) {
              ? ""
              : one_of(v, {"shift_px", "area", "turn_deg", "keystone"});
 }
+
+std::string study_name(const std::string& v) { return one_of(v, shipped_names("studies")); }
+
+// A simulated observer's threshold: a number of pixels within 0.01..100.
+std::string observer_px(const std::string& v) {
+  char* end = nullptr;
+  const double px = std::strtod(v.c_str(), &end);
+  if (!v.empty() && *end == '\0' && px >= 0.01 && px <= 100.0) return "";
+  return "'" + v + "' is not a threshold in pixels from 0.01 to 100";
+}
+
+std::string error_end(const std::string& v) { return one_of(v, {"min", "max"}); }
 
 ClaimKind engine(std::string name, std::string measures, bool of = false, bool over = false,
                  bool level = false, std::string (*check)(const std::string&) = nullptr) {
@@ -147,6 +161,31 @@ std::vector<ClaimKind> make_kinds() {
              "what the explorer's deformation does to the grid in 1 s: `of` shift_px (px), area "
              "(ratio), turn_deg (degrees) or keystone (fraction)",
              true, false, false, grid_field),
+      engine("error_over_threshold",
+             "the largest measured error over frames 1 .. now of `of` (engine or a compared "
+             "policy) over the largest of the four reuse thresholds it plays with",
+             true, false, false, run_name),
+      engine("study_errors",
+             "the smallest (`of` min) or largest (`of` max) error the engine shows in the "
+             "study the state opens (`study.open`): its ladders' measured errors over every "
+             "condition, px",
+             true, false, false, error_end),
+      engine("study_recovery",
+             "the median threshold fitted to 100 simulated observers of threshold `of` px (the "
+             "study's slope and lapse, seeds from the study's) run through the study the state "
+             "opens with its method and the engine's shown errors, over `of`: the condition "
+             "farthest from 1",
+             true, false, false, observer_px),
+      screen("study_setup",
+             "1 when the study window shows its set-up page with study `of` chosen, else 0", true,
+             false, study_name),
+      screen("study_results",
+             "the conditions for which the study window's results page shows a threshold with "
+             "its 95 % interval (0 on its other pages)"),
+      screen("study_threshold_gap",
+             "the largest difference (px) between the window's four reuse thresholds as their "
+             "fields show them and the threshold the study window's results offer (its *Use X "
+             "px*, as shown)"),
   };
 }
 

@@ -12,6 +12,8 @@
 #include "flow/flow_field.h"
 #include "lessons/claim_kinds.h"
 #include "player/lab.h"
+#include "study/engine_display.h"
+#include "study/study_analysis.h"
 
 namespace oflab {
 namespace {
@@ -177,6 +179,50 @@ double grid_change(Lab& lab, const LessonClaim& claim) {
   return value;
 }
 
+// max_error over the largest of the four thresholds of the lab's settings (the engine's and
+// the compared runs' alike).
+double error_over_threshold(Lab& lab, const LessonClaim& claim) {
+  const TermArray& t = lab.run().settings().thresholds;
+  const double largest = *std::max_element(t.begin(), t.end());
+  return largest > 0.0 ? max_error(lab, claim) / largest : kUnknown;
+}
+
+// The smallest or largest error (`of` min or max) the engine shows in the study the lab's
+// state opens, over its conditions' ladders, px; NaN without a study.
+double study_errors(Lab& lab, const LessonClaim& claim) {
+  if (lab.values().study_open.empty()) return kUnknown;
+  double low = 1e300, high = 0.0;
+  for (const ErrorLadder& ladder : study_ladders(find_or_read_study(lab.values().study_open))) {
+    for (double px : ladder.measured_px) {
+      low = std::min(low, px);
+      high = std::max(high, px);
+    }
+  }
+  return claim.of == "min" ? low : claim.of == "max" ? high : kUnknown;
+}
+
+// The median fitted threshold of 100 simulated observers of threshold `of` px run through the
+// study the lab's state opens, over `of`: the condition farthest from 1 on a log scale.
+double study_recovery(Lab& lab, const LessonClaim& claim) {
+  if (lab.values().study_open.empty()) return kUnknown;
+  const Study study = find_or_read_study(lab.values().study_open);
+  SimulationSettings settings;
+  settings.sessions = 100;
+  settings.seed = study.seed;
+  settings.observer =
+      PsychometricFunction{std::stod(claim.of), study.assumed_slope, study.assumed_lapse};
+  settings.methods = {study.method};
+  settings.replicates = 20;  // the intervals are not claimed: the fewest refits
+  settings.display = engine_error_display(study);
+  double farthest = kUnknown;
+  for (const SimulationSummary& s : simulate_study(study, settings)) {
+    const double ratio = s.median_threshold_px / settings.observer.threshold_px;
+    if (std::isnan(farthest) || std::abs(std::log(ratio)) > std::abs(std::log(farthest)))
+      farthest = ratio;
+  }
+  return farthest;
+}
+
 std::map<std::string, EngineMeasure> make_measures() {
   return {
       {"coefficient", coefficient},
@@ -204,6 +250,9 @@ std::map<std::string, EngineMeasure> make_measures() {
                                                                  : kUnknown;
        }},
       {"grid_change", grid_change},
+      {"error_over_threshold", error_over_threshold},
+      {"study_errors", study_errors},
+      {"study_recovery", study_recovery},
   };
 }
 

@@ -162,6 +162,12 @@ void add_top_fields(std::vector<StateField>& f) {
   f.push_back(whole_field("lesson_step", Limit{"lesson step", "", 0, 1000, true},
                           "the lesson's step on screen (0: its narrative)",
                           [](S* s) { return &s->lesson_step; }));
+  f.push_back(text_field("study.open", "a shipped study's name, or empty",
+                         "the study window, open on this study's set-up page (empty: closed)",
+                         [](S* s) { return &s->study_open; }));
+  f.push_back(flag("study.use_threshold",
+                   "the reuse thresholds become the study window's measured threshold",
+                   [](S* s) { return &s->study_use_threshold; }));
 }
 
 void add_flow_fields(std::vector<StateField>& f) {

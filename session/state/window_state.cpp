@@ -7,6 +7,7 @@
 
 #include "engine/reuse_policy.h"
 #include "flow/limits.h"
+#include "formats/datasets.h"
 #include "state/state_fields.h"
 
 namespace oflab {
@@ -35,6 +36,14 @@ std::string first_of(std::initializer_list<std::string> problems) {
 
 std::string check_each(const char* field, const Limit& limit, const Vec3& v) {
   return first_of({check(field, limit, v.x), check(field, limit, v.y), check(field, limit, v.z)});
+}
+
+// "" when `name` is empty or a shipped study's (datasets/studies/NAME.json).
+std::string study_problem(const std::string& name) {
+  if (name.empty()) return "";
+  const std::vector<std::string> studies = shipped_names("studies");
+  if (std::find(studies.begin(), studies.end(), name) != studies.end()) return "";
+  return "study.open: unknown study '" + name + "' (one of " + joined_names(studies) + ")";
 }
 
 }  // namespace
@@ -209,7 +218,8 @@ std::string window_state_problem(const WindowState& s) {
                    check("play_rate", kPlayRate, s.play_rate), check("frame", kFrameCount, s.frame),
                    s.lesson_step >= 0 && (s.lesson_step == 0 || !s.lesson.empty())
                        ? ""
-                       : "lesson_step: must be 0 without a lesson, and not negative"});
+                       : "lesson_step: must be 0 without a lesson, and not negative",
+                   study_problem(s.study_open)});
 }
 
 }  // namespace oflab

@@ -101,6 +101,14 @@ struct WindowState {
   // The lesson's step on screen: 0 for its narrative, k for its k-th step (whose text is the
   // caption then); 0 without a lesson.
   int lesson_step = 0;
+  // The threshold study's window (manual/study.md): open on its set-up page with this shipped
+  // study (datasets/studies/) chosen when the value changes to it; empty: closed when the
+  // value changes to empty. A window opened from the Study menu is not in the state.
+  std::string study_open;
+  // The reuse thresholds, when this state is applied, become the threshold the study window
+  // measured last (its "Use X px"), when it has results; the state's own thresholds otherwise
+  // (and on a front-end without a study window: `oflab-cli lesson`).
+  bool study_use_threshold = false;
 };
 
 // `names` joined by `separator`, for messages and help texts: "flow, basis, animation".
@@ -123,7 +131,9 @@ inline bool operator!=(const WindowState& a, const WindowState& b) { return !(a 
 // a session file spells it, the value and the allowed range or names: "animation.thresholds: 1e+06
 // is outside 0..100 px". The view name, the source kind, the exact renderer, the lesson and the
 // files the state names are checked where they are known (the view table, the source-kind and
-// renderer tables, the lesson catalogue, the file system: WindowModel::apply). Plain C++ over core.
+// renderer tables, the lesson catalogue, the file system: WindowModel::apply); a study.open
+// that names no shipped study is refused here ("study.open: unknown study 'x' (one of class,
+// lesson, reuse-threshold)"). Plain C++ over core and the datasets folder.
 std::string window_state_problem(const WindowState& state);
 
 // The parts of window_state_problem that the scene and animation models check themselves

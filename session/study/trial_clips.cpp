@@ -104,6 +104,18 @@ void TrialRunner::answer(int chosen, bool late) {
   if (!late) clips_.reset();  // a late trial is shown again as it was
 }
 
+double TrialRunner::shown_px() const {
+  const TrialRequest& r = request();
+  return shown_error(ladders_.at(size_t(r.condition)), r.requested_px);
+}
+
+void TrialRunner::answer_unseen(int chosen, bool late) {
+  if (chosen != 1 && chosen != 2) throw std::invalid_argument("the answer must be clip 1 or 2");
+  const bool correct = (chosen == 1) == request().distorted_first;
+  clips_.reset();
+  session_.answer(correct, shown_px(), late);
+}
+
 int TrialRunner::chosen_for(bool correct) const {
   return (correct == request().distorted_first) ? 1 : 2;
 }

@@ -60,6 +60,12 @@ class TrialRunner {
   // frames of the presentation were late (recorded, not counted, shown again). Makes the
   // clips first if they were not made. Throws std::invalid_argument for another `chosen`.
   void answer(int chosen, bool late);
+  // The error the reused clip of request() shows, pixels: its ladder's rung (study/
+  // engine_display.h shown_error), which is the clips' measured_px, known without making them.
+  double shown_px() const;
+  // answer() without making the pictures: records shown_px(). A simulated run that draws
+  // nothing (a lesson's check) gives the trials of one that does, in a fraction of the time.
+  void answer_unseen(int chosen, bool late);
   // The clip a simulated observer's answer names: the distorted one when correct.
   int chosen_for(bool correct) const;
 

@@ -190,7 +190,7 @@ async function testSelftest(browser) {
       ++parts;
     });
   }
-  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 15 && parts >= 48 && lessonDiffer.length === 0,
+  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 16 && parts >= 48 && lessonDiffer.length === 0,
     `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
   const views = Object.entries(result.views || {});
   check('SelftestReportsViewsAndTimeToInteractive', views.length === 6 && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
@@ -412,7 +412,7 @@ async function testScreenshots(browser) {
 // --- Controls ----------------------------------------------------------------------------
 const kKeys = {
   ' ': ['Space', 32], ArrowRight: ['ArrowRight', 39], ArrowLeft: ['ArrowLeft', 37], ArrowUp: ['ArrowUp', 38],
-  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], p: ['KeyP', 80], 2: ['Digit2', 50], 4: ['Digit4', 52],
+  Home: ['Home', 36], End: ['End', 35], PageDown: ['PageDown', 34], PageUp: ['PageUp', 33], p: ['KeyP', 80], 2: ['Digit2', 50], 4: ['Digit4', 52],
 };
 
 async function press(browser, key) {
@@ -462,6 +462,14 @@ async function testControls(browser) {
   await press(browser, 'PageDown');
   const lesson = await evaluate(browser, "[app.lessonStep, app.state.basis.kind, document.getElementById('lesson-caption').textContent]");
   check('LessonStepsApplyTheirState', lesson[0] === 2 && lesson[1] === 'waxman-ullman', lesson.join(' | '));
+  // A step whose state names a study (study.open) opens the study panel on its set-up page with
+  // that study chosen; going back to the narrative (study.open empty) closes it.
+  await open(browser, '?lesson=how-much-error-can-you-see&step=1', drawnMarker);
+  const opened = await evaluate(browser, "[document.getElementById('study-panel').hidden, document.getElementById('study-setup').hidden, document.getElementById('study-name').value]");
+  await press(browser, 'PageUp');
+  const closed = await evaluate(browser, "[app.lessonStep, document.getElementById('study-panel').hidden]");
+  check('ALessonStepOpensTheStudyPanelOnItsStudy', opened[0] === false && opened[1] === false && opened[2] === 'lesson' &&
+    closed[0] === 0 && closed[1] === true, `${opened.join(' | ')} then ${closed.join(' | ')}`);
   // The source pickers: scene shifting of the train window seen from the train plays beside
   // the scene's exact projection; scene shifting of the street (planes not facing the
   // viewer) is refused with the reason, and the state stays.

@@ -102,6 +102,51 @@ TEST(StudyWindow, TheClassViewMergesObserversAndRefusesABrokenFile) {
   EXPECT_EQ(table->rowCount(), 3);  // the class view stays
 }
 
+// A state's study.open opens the study window on its set-up page with that study chosen (a
+// lesson's step), an unknown one is refused changing nothing, and an empty one closes it; a
+// state with study.use_threshold gets the threshold the window measured, one without keeps
+// its own. The window's picture then shows both windows.
+TEST(StudyWindow, AStateOpensItOnTheSetUpPageAndALaterStateUsesItsThreshold) {
+  MainWindow main;
+  main.resize(1280, 800);
+  EXPECT_EQ(main.study_window(), nullptr);
+  const QImage alone = main.grab_window_image();
+  WindowState state = main.model()->state();
+  state.study_open = "nope";
+  EXPECT_EQ(main.stage_apply(state).rfind("study.open: unknown study 'nope' (one of ", 0), 0u);
+  EXPECT_EQ(main.study_window(), nullptr);
+
+  state.study_open = "lesson";
+  ASSERT_EQ(main.stage_apply(state), "");
+  StudyWindow* window = main.study_window();
+  ASSERT_NE(window, nullptr);
+  EXPECT_TRUE(window->isVisible());
+  EXPECT_EQ(window->setup_study(), "lesson");
+  EXPECT_NE(main.grab_window_image(), alone);  // the study window drawn over it
+
+  // Answered (a short study, without the clips' pictures, to keep the test fast): the results
+  // page, no set-up page.
+  window->select_study(short_study());
+  window->set_fields("staircase", "ann", 96.0, 5);
+  SimulatedObserver answers(5, PsychometricFunction{0.8, 3.5, 0.02});
+  ASSERT_EQ(window->run_simulated_unseen(answers), "");  // the lesson check's run
+  EXPECT_EQ(window->setup_study(), "");
+  EXPECT_EQ(window->results_shown(), 1);
+  const double measured = window->smallest_threshold_px();
+  ASSERT_GT(measured, 0.0);
+  ASSERT_NE(measured, 1.0);
+
+  state.study_open = "";
+  state.settings.thresholds = {1.0, 1.0, 1.0, 1.0};
+  ASSERT_EQ(main.stage_apply(state), "");  // without use_threshold: the state's own
+  EXPECT_FALSE(window->isVisible());
+  for (double t : main.model()->state().settings.thresholds) EXPECT_EQ(t, 1.0);
+  EXPECT_EQ(main.grab_window_image().size(), alone.size());
+  state.study_use_threshold = true;
+  ASSERT_EQ(main.stage_apply(state), "");
+  for (double t : main.model()->state().settings.thresholds) EXPECT_EQ(t, measured);
+}
+
 TEST(StudyWindow, ANameWithACommaCannotStart) {
   StudyWindow window;
   window.select_study(short_study());

@@ -60,8 +60,36 @@ TEST(ClaimKinds, WhatAKindCannotMeasureIsRefused) {
             "");
 }
 
+// A state's study.open names a shipped study (datasets/studies/): an unknown one is refused
+// when the lesson is read, naming the file and the field; the study kinds' fields likewise.
+TEST(ClaimKinds, AStudyTheLessonOpensOrMeasuresIsAShippedOne) {
+  const std::string unknown = test::lesson_read_error(
+      "study", R"("steps": [{"say": "s", "do": {"state": {"study": {"open": "nope"}}}}]})");
+  EXPECT_EQ(unknown.rfind("x.json: study: field 'open': unknown study 'nope' (one of ", 0), 0u)
+      << unknown;
+  EXPECT_NE(unknown.find("lesson"), std::string::npos) << unknown;
+  EXPECT_EQ(
+      test::lesson_read_error(
+          "study", R"("steps": [{"say": "s", "do": {"state": {"study": {"open": "lesson"}}}}]})"),
+      "");
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "study_setup", "of": "nope", "at_least": 1})")
+                .find("field 'of': 'nope' is not one of"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "study_recovery", "of": "one", "at_most": 1})")
+                .find("field 'of': 'one' is not a threshold in pixels"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "study_recovery", "of": "500", "at_most": 1})")
+                .find("field 'of': '500' is not a threshold in pixels"),
+            std::string::npos);
+  EXPECT_NE(error_of_claim(R"({"says": "a", "claim": "study_errors", "of": "mid", "at_most": 1})")
+                .find("field 'of': 'mid' is not one of min, max"),
+            std::string::npos);
+  EXPECT_EQ(
+      error_of_claim(R"({"says": "a", "claim": "study_recovery", "of": "0.8", "at_most": 1})"), "");
+}
+
 TEST(ClaimKinds, EveryShippedLessonReads) {
-  EXPECT_GE(lessons().size(), 14u);
+  EXPECT_GE(lessons().size(), 16u);
   for (const Lesson& lesson : lessons()) {
     for (const LessonStep& step : lesson.steps) {
       for (const LessonClaim& claim : step.claims) {

@@ -5,12 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "lessons/claim_kinds.h"
 #include "lessons/lesson_player.h"
 #include "player/engine_claims.h"
 #include "state/window_state_file.h"
+#include "study/engine_display.h"
 
 namespace oflab {
 namespace {
@@ -39,6 +41,57 @@ TEST(Lab, EveryEngineKindHasItsMeasureAndNoOther) {
   }
   for (const auto& [name, measure] : engine_claim_measures()) measures.insert(name);
   EXPECT_EQ(engine_kinds, measures);
+}
+
+// The study kinds measure the study the state opens (study.open); NaN without one.
+LessonClaim study_claim(const std::string& kind, const std::string& of) {
+  LessonClaim claim;
+  claim.claim = kind;
+  claim.of = of;
+  return claim;
+}
+
+// study_errors: the ends of what the ladders show hold the clip's own measured errors at the
+// ends of the study's range (engine_display.h, played once each here).
+TEST(Lab, TheStudyKindsMeasureTheStudyTheStateOpens) {
+  Lab lab(shipped_default_texture());
+  EXPECT_TRUE(std::isnan(measure_engine_claim(lab, study_claim("study_errors", "min"))));
+  EXPECT_TRUE(std::isnan(measure_engine_claim(lab, study_claim("study_recovery", "1"))));
+  WindowState state = lab.state();
+  state.study_open = "lesson";
+  ASSERT_EQ(lab.apply(state), "");
+  const Study study = find_or_read_study("lesson");
+  const StudyCondition& condition = study.conditions.at(0);
+  const double low = measure_engine_claim(lab, study_claim("study_errors", "min"));
+  const double high = measure_engine_claim(lab, study_claim("study_errors", "max"));
+  EXPECT_GT(low, 0.0);
+  EXPECT_LE(low, clip_measured_error(condition, study.min_px));
+  EXPECT_GE(high, clip_measured_error(condition, study.max_px));
+  EXPECT_LT(low, 1.0);
+  EXPECT_GT(high, 1.0);
+  // The recovered threshold follows the simulated observer's: 1 px and 3 px both come back
+  // within 10 % in the median (not a constant ratio of 1: the observers differ threefold).
+  for (const char* px : {"1", "3"}) {
+    const double ratio = measure_engine_claim(lab, study_claim("study_recovery", px));
+    EXPECT_NEAR(ratio, 1.0, 0.1) << px << " px";
+  }
+}
+
+// error_over_threshold is max_error over the largest of the four thresholds.
+TEST(Lab, TheErrorOverTheThresholdIsTheLargestErrorOverTheLargestThreshold) {
+  for (const double threshold : {1.0, 2.5}) {
+    Lab lab(shipped_default_texture());
+    LabStage stage(&lab);
+    WindowState state = find_lesson("how-much-error-can-you-see")->state;
+    state.settings.thresholds = {0.5, threshold, 0.5, 0.5};
+    state.playing = false;
+    ASSERT_EQ(lab.apply(state), "");
+    stage.stage_play(40);
+    const double error = measure_engine_claim(lab, study_claim("max_error", "perspective"));
+    EXPECT_GT(error, 0.0);
+    EXPECT_DOUBLE_EQ(measure_engine_claim(lab, study_claim("error_over_threshold", "perspective")),
+                     error / threshold);
+  }
 }
 
 // The frame clock loops over the run's source: its animator's length, or the plane panel's

@@ -110,6 +110,19 @@ TEST(TrialRunner, ASimulatedRunThroughThePicturesIsTheHeadlessSimulation) {
     EXPECT_EQ(a[i].correct, b[i].correct) << i;
     EXPECT_EQ(a[i].late, b[i].late) << i;
   }
+  // Answered without the pictures (answer_unseen at shown_px): the same trials.
+  TrialRunner unseen(study, study.method, 11);
+  SimulatedObserver unseen_answers(11, observer, 0.5);
+  while (!unseen.finished()) {
+    const SimulatedObserver::Answer answer = unseen_answers.answer(unseen.shown_px());
+    unseen.answer_unseen(unseen.chosen_for(answer.correct), answer.late);
+  }
+  ASSERT_EQ(unseen.session().trials().size(), a.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(unseen.session().trials()[i].measured_px, a[i].measured_px) << i;
+    EXPECT_EQ(unseen.session().trials()[i].correct, a[i].correct) << i;
+    EXPECT_EQ(unseen.session().trials()[i].late, a[i].late) << i;
+  }
   EXPECT_THROW(TrialRunner(study, "guess", 1), std::invalid_argument);
 }
 
