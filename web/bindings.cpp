@@ -150,6 +150,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("simulate", &WebStudy::simulate)
       .function("csv", &WebStudy::csv)
       .function("resultsJson", &WebStudy::results_json)
+      .function("useThresholdPx", &WebStudy::use_threshold_px)
       .function("studyJson", &WebStudy::study_json)
       .function("classResultsJson", &WebStudy::class_results_json)
       .function("curve", &oflab::study_curve)

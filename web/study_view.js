@@ -13,6 +13,7 @@ const kGapMs = 500;
 
 const study = {
   applied: '',      // the study.open of the last lesson state shown
+  usePx: 0,         // the reuse threshold the results shown suggest, px (0: none)
   core: null,       // Module.Study
   shipped: [],      // Module.Study.shippedJson()
   fileName: '',     // a study opened from a file: its name and text
@@ -227,6 +228,10 @@ function showResultsOf(info, results, rows, heading) {
 function showStudyResults() {
   const observer = $('study-observer').value.trim();
   const ppi = Number($('study-ppi').value);
+  // "Use X px": the reuse threshold the results suggest (the smallest threshold measured).
+  study.usePx = study.core.useThresholdPx(observer, ppi);
+  $('study-use').hidden = !(study.usePx > 0);
+  $('study-use').textContent = `Use ${study.usePx.toFixed(2)} px as the page's reuse threshold`;
   const info = JSON.parse(study.core.studyJson());
   const r = JSON.parse(study.core.requestJson());
   showResultsOf(info, JSON.parse(study.core.resultsJson(observer, ppi)),
@@ -241,6 +246,8 @@ function openClassCsvs(files) {
       if (!study.core) study.core = new Module.Study();
       const out = JSON.parse(study.core.classResultsJson(JSON.stringify(list)));
       if (out.problem) { $('study-status').textContent = out.problem; return; }
+      study.usePx = 0;  // "Use X px" takes this session's threshold, not a class's
+      $('study-use').hidden = true;
       const rows = list.flatMap((f) => parseTrialCsv(f.text));
       const observers = new Set(rows.map((row) => row.observer));
       showResultsOf(out.study, out.results, rows, `${list.length} files, ${observers.size} ` +
@@ -336,11 +343,17 @@ function openStudyFile(file) {
   });
 }
 
+// The comparison's four thresholds become `px` (the study's "Use X px").
+function useStudyThreshold(px) {
+  editState((s) => { s.animation.thresholds = [px, px, px, px]; }, 'the study');
+}
+
 // A lesson's state opens the study panel as the desktop's state opens its study window
 // (study.open): on the set-up page with that study chosen when the value changes to a study,
-// closed when it changes to empty. (The page keeps the state's thresholds: study.use_threshold
-// needs the desktop's "Use X px".)
+// closed when it changes to empty. A state asking for study.use_threshold takes the
+// threshold the panel measured, when it has one (as the desktop's state does).
 function showStateStudy(state) {
+  if (state && state.study && state.study.use_threshold && study.usePx > 0) useStudyThreshold(study.usePx);
   const name = (state && state.study && state.study.open) || '';
   if (name === study.applied) return;
   study.applied = name;
@@ -395,6 +408,7 @@ function bindStudyControls() {
   $('study-second').addEventListener('click', () => answerStudy(2));
   $('study-stop').addEventListener('click', showStudyResults);
   $('study-save').addEventListener('click', saveStudyCsv);
+  $('study-use').addEventListener('click', () => useStudyThreshold(study.usePx));
   $('study-again').addEventListener('click', () => showStudyPage('setup'));
   document.addEventListener('keydown', (e) => {
     if (!studyOpen()) return;

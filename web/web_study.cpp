@@ -124,18 +124,25 @@ std::string WebStudy::csv(const std::string& observer, double ppi) const {
   return runner_ ? trial_csv_text(trial_rows(runner_->session(), observer, ppi)) : "";
 }
 
-std::string WebStudy::results_json(const std::string& observer, double ppi) const {
-  ordered_json out = ordered_json::array();
-  if (!runner_) return out.dump();
+std::vector<ThresholdResult> WebStudy::results(const std::string& observer, double ppi) const {
+  if (!runner_) return {};
   const std::vector<TrialRow> rows = trial_rows(runner_->session(), observer, ppi);
   if (std::none_of(rows.begin(), rows.end(), [](const TrialRow& r) { return !r.late; })) {
-    return out.dump();  // nothing answered yet: nothing to fit
+    return {};  // nothing answered yet: nothing to fit
   }
-  const AnalysisSettings settings = analysis_settings(runner_->session().study());
-  for (const ThresholdResult& result : analyse_rows(rows, settings)) {
+  return analyse_rows(rows, analysis_settings(runner_->session().study()));
+}
+
+std::string WebStudy::results_json(const std::string& observer, double ppi) const {
+  ordered_json out = ordered_json::array();
+  for (const ThresholdResult& result : results(observer, ppi)) {
     out.push_back(threshold_result_json(result));
   }
   return out.dump();
+}
+
+double WebStudy::use_threshold_px(const std::string& observer, double ppi) const {
+  return suggested_reuse_threshold_px(results(observer, ppi));
 }
 
 std::string WebStudy::class_results_json(const std::string& files_json) {

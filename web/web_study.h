@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "study/study_analysis.h"
 #include "study/trial_clips.h"
 
 namespace oflab {
@@ -47,6 +48,9 @@ class WebStudy {
   // The analysis of those rows (session/study/study_analysis.h, the default settings) as a
   // JSON array of threshold_result_json objects, as `oflab-cli study analyse --json` gives.
   std::string results_json(const std::string& observer, double ppi) const;
+  // The reuse threshold those results suggest (suggested_reuse_threshold_px), px; 0 before
+  // any answered trial.
+  double use_threshold_px(const std::string& observer, double ppi) const;
   // The class view: the per-trial CSV files in `files_json` (a JSON array of {name, text})
   // analysed together as `oflab-cli study analyse` does (a row per observer and condition,
   // then the class's pooled rows), with the study they come from (study_of_rows), which the
@@ -63,6 +67,8 @@ class WebStudy {
   std::string study_json() const;
 
  private:
+  // The analysis of the trials so far (empty before any answered trial).
+  std::vector<ThresholdResult> results(const std::string& observer, double ppi) const;
   std::unique_ptr<TrialRunner> runner_;
   std::uint64_t seed_ = 0;
   std::unique_ptr<Study> shown_;  // the study of the results shown

@@ -235,11 +235,7 @@ void StudyWindow::show_results_of(const Study& study, const std::vector<TrialRow
     if (!has_class || r.observer.empty()) plotted.push_back(r);
   }
   plot_->set(study, rows, plotted);
-  smallest_threshold_px_ = 0.0;
-  for (const ThresholdResult& r : plotted) {
-    if (smallest_threshold_px_ == 0.0 || r.threshold_px < smallest_threshold_px_)
-      smallest_threshold_px_ = r.threshold_px;
-  }
+  smallest_threshold_px_ = suggested_reuse_threshold_px(plotted);
   use_button_->setEnabled(smallest_threshold_px_ > 0.0);
   use_button_->setText(
       tr("Use %1 px as the window's reuse threshold").arg(text_of(smallest_threshold_px_, 2)));

@@ -184,4 +184,12 @@ nlohmann::ordered_json threshold_result_json(const ThresholdResult& r) {
           {"ci95_arcmin", {optional(r.low_arcmin), optional(r.high_arcmin)}}};
 }
 
+double suggested_reuse_threshold_px(const std::vector<ThresholdResult>& results) {
+  double px = 0.0;
+  for (const ThresholdResult& r : results) {
+    if (r.threshold_px > 0.0 && (px == 0.0 || r.threshold_px < px)) px = r.threshold_px;
+  }
+  return px;
+}
+
 }  // namespace oflab

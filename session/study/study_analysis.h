@@ -62,6 +62,11 @@ ThresholdResult analyse_group(const std::vector<TrialRow>& rows, const AnalysisS
 std::vector<ThresholdResult> analyse_rows(const std::vector<TrialRow>& rows,
                                           const AnalysisSettings& settings);
 
+// The reuse threshold a study's results suggest, px: the smallest fitted threshold among
+// `results` (every condition's error stays unseen below it); 0 when none has a threshold.
+// The "Use X px" of the desktop's study window and of the page's study panel.
+double suggested_reuse_threshold_px(const std::vector<ThresholdResult>& results);
+
 struct SimulationSettings {
   int sessions = 100;
   std::uint64_t seed = 1;  // session k uses the k-th output of SplitMix64(seed)

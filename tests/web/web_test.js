@@ -277,6 +277,20 @@ async function testStudy(browser) {
       return out;
     })()`);
     check('StudyClassViewRefusesABrokenFileNamingIt', /broken\.csv/.test(JSON.parse(broken).problem || ''), broken);
+    // "Use X px": the comparison's four thresholds become the smallest threshold the results
+    // show (the lesson's study answered by a simulated observer of 1 px).
+    await open(browser, '?study=lesson&study-simulate=1', "document.getElementById('study-results').hidden === false");
+    const used = JSON.parse(await evaluate(browser, `(() => {
+      const shown = JSON.parse(study.core.resultsJson($('study-observer').value.trim(), Number($('study-ppi').value)));
+      const before = app.state.animation.thresholds;
+      $('study-use').click();
+      return JSON.stringify({ shown: shown.map((r) => r.threshold_px), before, thresholds: app.state.animation.thresholds,
+        hidden: $('study-use').hidden, text: $('study-use').textContent });
+    })()`));
+    const smallest = Math.min(...used.shown);
+    check('StudyUseSetsTheComparisonsThresholds', !used.hidden && used.shown.length > 0 &&
+      used.thresholds.length === 4 && used.thresholds.every((t) => t === smallest) &&
+      used.before.some((t) => t !== smallest) && used.text.includes(`${smallest.toFixed(2)} px`), JSON.stringify(used));
   } finally {
     fs.rmSync(dir, { recursive: true, force: true });
   }
