@@ -329,6 +329,36 @@ OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int
   }
   return total;
 }
+
+// The same on two mip levels at once: `src` is level k, sampled into out, and `next` level
+// k + 1, sampled into out_next at the positions derived from level k's: u_{k+1} = u_k / 2 - 1/4
+// (pixel-centre coordinates; in 16.16 a shift and a subtraction, within one unit of 2^-16 of
+// the truncated exact position). Level k's fast range keeps level k + 1's taps inside it:
+// 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4.
+OFLAB_AVX2 int perspective_bilinear_quads_pair(const SourceView& src, const SourceView& next,
+                                               Pixel* out, Pixel* out_next, int count, double nu,
+                                               double nv, double d, double du, double dv,
+                                               double dd) {
+  const __m256i offset_weights = quad_offset_weights(src);
+  const __m256i next_offset_weights = quad_offset_weights(next);
+  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
+  const Pixel* const pixels = src.pixels;
+  const Pixel* const next_pixels = next.pixels;
+  const std::int64_t stride = src.stride;
+  const std::int64_t next_stride = next.stride;
+  QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
+  const int total = count & ~3;
+  if (total == 0) return 0;
+  __m256i positions = quad_positions(step);
+  for (int k = 0; k < total; k += 4) {
+    const __m256i current = positions;
+    positions = quad_positions(step);
+    blend_quad(pixels, stride, offset_weights, current, out + k);
+    blend_quad(next_pixels, next_stride, next_offset_weights,
+               _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter), out_next + k);
+  }
+  return total;
+}
 #endif
 
 // Affine inner loop: fixed point with `shift` fractional bits, only additions.
@@ -655,6 +685,68 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
 }
 
 }  // namespace
+
+void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_begin, int x_end,
+                      Pixel* out) {
+  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
+                       source.height() - 1};
+  const bool fast_allowed = steps_exact_in_double(map);
+  Pixel* row = out - x_begin;  // row[x] is output pixel x
+  int begin = x_begin, end = x_end;
+  for (; begin < end; ++begin) {  // pass 1's clamped ends, as in run()
+    const MapSample s = evaluate(map, begin, y);
+    if (fast_allowed && in_fast_range<true>(src, s)) break;
+    row[begin] = sample_clamped<true>(src, s, map.affine_shift);
+  }
+  for (; end > begin; --end) {
+    const MapSample last = evaluate(map, end - 1, y);
+    if (in_fast_range<true>(src, last)) break;
+    row[end - 1] = sample_clamped<true>(src, last, map.affine_shift);
+  }
+  if (begin >= end) return;
+  const MapSample s = evaluate(map, begin, y);
+  perspective_span<true>(src, row + begin, end - begin, static_cast<double>(s.nu),
+                         static_cast<double>(s.nv), static_cast<double>(s.d),
+                         static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+                         static_cast<double>(2 * map.g));
+}
+
+void run_bilinear_row_pair(const InverseMap& map, const Image& source, const InverseMap& next_map,
+                           const Image& next_source, int y, int x_begin, int x_end, Pixel* out,
+                           Pixel* out_next) {
+#if defined(OFLAB_WARP_AVX2)
+  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
+                       source.height() - 1};
+  const SourceView next{next_source.pixels().data(), next_source.width(), next_source.width() - 1,
+                        next_source.height() - 1};
+  const bool fast_allowed = use_avx2() && steps_exact_in_double(map);
+  int begin = x_begin, end = x_end;
+  const auto clamped = [&](int x) {  // both levels through their own maps
+    out[x - x_begin] = sample_clamped<true>(src, evaluate(map, x, y), map.affine_shift);
+    out_next[x - x_begin] =
+        sample_clamped<true>(next, evaluate(next_map, x, y), next_map.affine_shift);
+  };
+  for (; begin < end && !(fast_allowed && in_fast_range<true>(src, evaluate(map, begin, y)));
+       ++begin) {
+    clamped(begin);
+  }
+  for (; end > begin && !in_fast_range<true>(src, evaluate(map, end - 1, y)); --end) {
+    clamped(end - 1);
+  }
+  if (begin < end) {
+    const MapSample s = evaluate(map, begin, y);
+    const int done = perspective_bilinear_quads_pair(
+        src, next, out + (begin - x_begin), out_next + (begin - x_begin), end - begin,
+        static_cast<double>(s.nu), static_cast<double>(s.nv), static_cast<double>(s.d),
+        static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+        static_cast<double>(2 * map.g));
+    for (int x = begin + done; x < end; ++x) clamped(x);
+  }
+#else
+  run_bilinear_row(map, source, y, x_begin, x_end, out);
+  run_bilinear_row(next_map, next_source, y, x_begin, x_end, out_next);
+#endif
+}
 
 std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output) {
   if (plan.empty || source.empty() || output.empty()) return 0;
