@@ -194,33 +194,6 @@ Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyra
   return lerp_pixel(lower, upper, pair.weight);
 }
 
-// out[k] = lerp_pixel(out[k], upper[k], weights[k]) for k < count: each pixel its own weight.
-void lerp_run_weighted(Pixel* out, const Pixel* upper, const std::uint16_t* weights, int count) {
-  int k = 0;
-#if defined(OFLAB_WARP_SSE2)
-  const __m128i zero = _mm_setzero_si128();
-  const __m128i full = _mm_set1_epi16(256);
-  const __m128i half = _mm_set1_epi16(128);
-  const auto lerp8 = [&](__m128i a, __m128i b, __m128i wb) {
-    const __m128i wa = _mm_sub_epi16(full, wb);
-    const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(a, wa), _mm_mullo_epi16(b, wb));
-    return _mm_srli_epi16(_mm_add_epi16(sum, half), 8);
-  };
-  for (; k + 4 <= count; k += 4) {
-    const __m128i w = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(weights + k));
-    const __m128i pairs = _mm_unpacklo_epi16(w, w);  // w0 w0 w1 w1 w2 w2 w3 w3
-    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + k));
-    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(upper + k));
-    const __m128i low = lerp8(_mm_unpacklo_epi8(a, zero), _mm_unpacklo_epi8(b, zero),
-                              _mm_unpacklo_epi32(pairs, pairs));
-    const __m128i high = lerp8(_mm_unpackhi_epi8(a, zero), _mm_unpackhi_epi8(b, zero),
-                               _mm_unpackhi_epi32(pairs, pairs));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm_packus_epi16(low, high));
-  }
-#endif
-  for (; k < count; ++k) out[k] = lerp_pixel(out[k], upper[k], weights[k]);
-}
-
 constexpr double kLn2 = 0.6931471805599453;
 
 // log2(t) for a finite t > 0 within 1e-8: t = m 2^e with m in [sqrt(1/2), sqrt(2)), and
@@ -364,10 +337,11 @@ double chord_error(const RowFootprint::End& a, const RowFootprint::End& b, int n
   return std::isfinite(bound) ? bound : infinity;
 }
 
-// Chord error allowed, in levels: under half the weight's step 1/256 (with room for the
-// 1e-8 of fast_log2), so that a pixel's rounded pair is level_pair(mip_level)'s or one step
-// of 1/256 next to it.
-constexpr double kLevelTolerance = 0.45 / 256.0;
+// Chord error allowed, in levels: under one step 1/256 of the weight (with room for the 1e-8
+// of fast_log2 and the rounding of the curve), so that a pixel's rounded index is within 1.5
+// steps of level_pair(mip_level)'s index before rounding, i.e. that index or one step next
+// to it.
+constexpr double kLevelTolerance = 0.9 / 256.0;
 constexpr int kLongestChord = 64;  // pixels
 
 // The level pairs of output pixels x_begin .. x_end - 1 of row y of the perspective inverse
@@ -383,15 +357,20 @@ void row_levels(const Mat3& h, int top, int y, int x_begin, int x_end, std::uint
   };
   RowFootprint::End a = row.at(x_begin);
   store(x_begin, a.level());
-  int next = kLongestChord;  // the length to try: the last one that held, and a quarter
+  int next = kLongestChord;  // the length to try
   for (int x = x_begin; x + 1 < x_end;) {
     int n = std::min(next, x_end - 1 - x);
     RowFootprint::End b = row.at(x + n);
-    while (n > 1 && !(chord_error(a, b, n) <= kLevelTolerance)) {
+    double error = chord_error(a, b, n);
+    while (n > 1 && !(error <= kLevelTolerance)) {
       n = n * 3 / 4;
       b = row.at(x + n);
+      error = chord_error(a, b, n);
     }
-    next = std::min(kLongestChord, n + n / 4 + 1);
+    // The bound grows about as n^2 (n^3 at most): the next chord is as long as that allows,
+    // with a tenth to spare, so that few chords are tried twice.
+    const double room = 0.9 * std::sqrt(kLevelTolerance / std::max(error, 1e-12));
+    next = static_cast<int>(std::clamp(n * room, 2.0, static_cast<double>(kLongestChord)));
     const Chord chord(a, b, n);
     for (int t = 1; t < n; ++t) store(x + t, chord.level(t, n));
     store(x + n, b.level());
@@ -422,12 +401,10 @@ void perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels, const P
                           Image& output) {
   thread_local std::vector<std::uint16_t> pairs;
   thread_local std::vector<std::uint16_t> weight;
-  thread_local std::vector<Pixel> upper;
   const int count = span.x_end - span.x_begin;
   const int top = static_cast<int>(levels.maps.size()) - 1;
   pairs.resize(static_cast<std::size_t>(count));
   weight.resize(static_cast<std::size_t>(count));
-  upper.resize(static_cast<std::size_t>(count));
   row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, pairs.data());
   Pixel* out = output.row(span.y) + span.x_begin;
   for (int s = 0; s < count;) {
@@ -441,9 +418,8 @@ void perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels, const P
     const int x0 = span.x_begin + s, x1 = span.x_begin + e;
     const auto ku = static_cast<std::size_t>(k);
     if (blend && k < top) {  // the top level's weight is 0
-      run_bilinear_row_pair(levels.maps[ku], *levels.images[ku], levels.maps[ku + 1],
-                            *levels.images[ku + 1], span.y, x0, x1, out + s, upper.data());
-      lerp_run_weighted(out + s, upper.data(), weight.data() + s, e - s);
+      run_trilinear_row(levels.maps[ku], *levels.images[ku], levels.maps[ku + 1],
+                        *levels.images[ku + 1], span.y, x0, x1, weight.data() + s, out + s);
     } else {
       run_bilinear_row(levels.maps[ku], *levels.images[ku], span.y, x0, x1, out + s);
     }

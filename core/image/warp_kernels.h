@@ -45,14 +45,16 @@ std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& o
 void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_begin, int x_end,
                       Pixel* out);
 
-// The same segment on two mip levels k and k + 1 at once (core/image/mip_pyramid.h): `source`
-// through `map` into out[], `next_source` through `next_map` into out_next[]. With AVX2 the
-// positions are found once, on level k, and level k + 1's derived from them (within one unit
-// of 2^-16 of its own map's); each sample within one level of the exact interpolation, as
-// run_bilinear_row's. Preconditions: as run_bilinear_row for both maps, next_map being map's
-// level scaled by 1/2 (mipmap_kernel.cpp's level_plan), next_source level k + 1 of source.
-void run_bilinear_row_pair(const InverseMap& map, const Image& source, const InverseMap& next_map,
-                           const Image& next_source, int y, int x_begin, int x_end, Pixel* out,
-                           Pixel* out_next);
+// The same segment sampled trilinearly on two mip levels k and k + 1 (core/image/mip_pyramid.h):
+// out[i] = (a (256 - w) + b w + 128) / 256 per channel for w = weights[i] in [0, 256], a the
+// sample of `source` through `map` and b that of `next_source` through `next_map`. With AVX2
+// the positions are found once, on level k, and level k + 1's derived from them (within one
+// unit of 2^-16 of its own map's); each sample is within one level of the exact
+// interpolation, as run_bilinear_row's. Preconditions: as run_bilinear_row for both maps,
+// next_map being map's level scaled by 1/2 (mipmap_kernel.cpp's level_plan), next_source
+// level k + 1 of source.
+void run_trilinear_row(const InverseMap& map, const Image& source, const InverseMap& next_map,
+                       const Image& next_source, int y, int x_begin, int x_end,
+                       const std::uint16_t* weights, Pixel* out);
 
 }  // namespace oflab
