@@ -150,6 +150,9 @@ struct FrameAllocation {
   // `lookahead` (core/engine/lookahead.h spread_updates): the layers updated early, ahead of
   // their predicted expiry; empty for every other policy.
   std::vector<char> early;
+  // `lookahead`: the planned pixels of the warped layers' updates (`planned` without the fresh
+  // and clipped renders): what its schedule moves, and keeps the running mean of.
+  double movable = 0.0;
   // Optimality gap against the optimum: for a pixel budget optimal_benefit's, otherwise (or
   // when that gives NaN) exhaustive search's with at most kExhaustiveMaxLayers competing
   // layers; NaN when not checked (more competing layers, or no budget).
@@ -158,7 +161,8 @@ struct FrameAllocation {
   // frame's time (AnimationFrame::time_ms) as they leave out the measured error.
   double check_ms = 0.0;
 };
-// `past_pixels`: the pixels allocated in the last frames, read by `lookahead` only.
+// `past_pixels`: the movable pixels allocated in the last frames (FrameAllocation::movable),
+// read by `lookahead` only.
 FrameAllocation allocate_frame(const ReusePolicy& policy, const FrameBudget& budget,
                                const LevelRates& rates, const std::vector<LayerCandidates>& layers,
                                const std::vector<double>& past_pixels = {});
@@ -208,7 +212,7 @@ class BudgetLedger {
   LevelRates rates_;
   BudgetReport frame_;
   std::vector<Update> updates_;
-  std::vector<double> past_;  // `lookahead`: the last frames' planned pixels (oldest first)
+  std::vector<double> past_;  // `lookahead`: the last frames' movable pixels (oldest first)
 };
 
 }  // namespace oflab

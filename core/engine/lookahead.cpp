@@ -2,6 +2,7 @@
 #include "engine/lookahead.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 namespace oflab {
@@ -65,37 +66,51 @@ double level_slack(const TermArray& error, const TermArray& thresholds, const Le
 void spread_updates(const std::vector<LayerCandidates>& layers, const std::vector<double>& past,
                     FrameAllocation& a) {
   a.early.assign(layers.size(), 0);
-  double planned = 0.0, ahead = 0.0, forced = 0.0;
+  // Movable pixels: this frame's warped layers' own choices (load[0]) and, per frame ahead,
+  // the writes predicted there (load[k]). Fresh and clipped renders are fixed: no schedule
+  // moves them, so they take no part in the comparisons below.
+  std::array<double, kLookaheadHorizon + 1> load{};
+  double fixed = 0.0;
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const LayerCandidates& c = layers[i];
     if (c.kind == LayerCandidates::Kind::kNotShown) continue;
-    planned += static_cast<double>(cost_of(c, c.choice));
-    // A fresh (or clipped) render is taken to recur in the frames ahead, as it does while
-    // the layer stays clipped.
-    if (c.kind == LayerCandidates::Kind::kFresh)
-      forced += static_cast<double>(cost_of(c, c.choice));
-    if (c.kind != LayerCandidates::Kind::kChoice || predicted_write(c) == 0) continue;
-    ahead += static_cast<double>(cost_of(c, early_level(c)));
+    const double own = static_cast<double>(cost_of(c, c.choice));
+    if (c.kind == LayerCandidates::Kind::kFresh) {
+      fixed += own;
+      continue;
+    }
+    load[0] += own;
+    const int due = predicted_write(c);
+    if (due == 0) continue;
+    load[static_cast<std::size_t>(due)] += static_cast<double>(cost_of(c, early_level(c)));
     pending.push_back(i);
   }
-  double past_sum = 0.0;
-  for (double p : past) past_sum += p;
-  const double target = (past_sum + planned + ahead + kLookaheadHorizon * forced) /
-                        static_cast<double>(past.size() + kLookaheadHorizon + 1);
+  double sum = 0.0;
+  for (double p : past) sum += p;
+  for (double l : load) sum += l;
+  const double target = sum / static_cast<double>(past.size() + load.size());
   std::stable_sort(pending.begin(), pending.end(), [&](std::size_t x, std::size_t y) {
     return predicted_write(layers[x]) < predicted_write(layers[y]);
   });
   for (std::size_t i : pending) {
     const LayerCandidates& c = layers[i];
-    const double extra = static_cast<double>(cost_of(c, early_level(c)) - cost_of(c, c.choice));
-    if (planned >= target) break;
-    if (planned + 0.5 * extra >= target) continue;
+    const auto due = static_cast<std::size_t>(predicted_write(c));
+    const double then = static_cast<double>(cost_of(c, early_level(c)));
+    const double now = load[0] + then - static_cast<double>(cost_of(c, c.choice));
+    if (load[0] >= target) break;
+    // Moved only where it lowers the peak of this frame and its due frame, and into the
+    // cheapest frame of the window up to the due one (else a later frame takes it).
+    bool cheapest = now < load[due];
+    for (std::size_t k = 1; k < due && cheapest; ++k) cheapest = now <= load[k] + then;
+    if (!cheapest) continue;
     a.levels[i] = early_level(c);
     a.early[i] = 1;
-    planned += extra;
+    load[0] = now;
+    load[due] -= then;
   }
-  a.planned = planned;
+  a.movable = load[0];
+  a.planned = load[0] + fixed;
 }
 
 }  // namespace oflab

@@ -22,15 +22,17 @@
 // exact when s is a quadratic in t (constant acceleration of the error); with two samples c
 // is taken as 0. The predicted expiry is t + the first k >= 1 with s(t + k) < 0.
 //
-// Schedule (spread_updates, the allocate phase of `lookahead`; frames after the first). The
-// frame's planned pixels P are those of every layer's own choice. Each layer that would
-// write pixels within the next kLookaheadHorizon frames by prediction (a free layer at its
-// write expiry, a writing layer at its re-render expiry) adds its cost there; the frame's
-// target T is the mean pixels per frame over the last kLookaheadHorizon frames as allocated
-// (`past`), this frame as planned and the horizon as predicted (the frame's fresh and
-// clipped renders taken to recur in each frame ahead).
-// While P is below T, the layer whose predicted write is nearest (then the lowest index) is
-// updated now, early, when that brings P nearer T (P + cost / 2 < T): a free layer at its
+// Schedule (spread_updates, the allocate phase of `lookahead`; frames after the first). Only
+// the warped layers' updates are movable: a fresh or clipped render is fixed (no schedule moves
+// it) and takes no part. The frame's movable load is the pixels of the warped layers' own
+// choices; each layer that would write pixels within the next kLookaheadHorizon frames by
+// prediction (a free layer at its write expiry, a writing layer at its re-render expiry) adds
+// its cost to the load of its due frame. The target is the mean movable load per frame over
+// the last kLookaheadHorizon frames as allocated (`past`: FrameAllocation::movable), this
+// frame and the horizon. While this frame's load is below the target, the layers due soonest
+// (then the lowest index) are updated now, early, each only where that lowers the peak of this
+// frame and its due frame (this frame's load with it stays below the due frame's without it)
+// and no frame between is cheaper for it (else a later frame takes it): a free layer at its
 // cheapest acceptable writing level (LayerCandidates::early_write), a writing layer by a
 // re-render. An early update is a level the rule accepts (or a render), so no shown error
 // grows; it costs pixels only by shortening the layer's current reuse.

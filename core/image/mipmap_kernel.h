@@ -11,9 +11,21 @@
 //  - perspective: L varies per pixel, J(x) = (A D(x) - (A x + c) g^T) / D(x)^2 for the
 //    inverse map [A c; g^T i]. When a bound shows that no pixel of the region minifies
 //    (max over its vertices of |N(x)|_F over min D(x)^2, both extreme at a vertex, at most 1),
-//    the bilinear kernel runs unchanged; otherwise every pixel is sampled with its own level,
-//    the bilinear taps clamped at the level's border, within one level per channel of the
-//    bilinear kernel where L = 0.
+//    the bilinear kernel runs unchanged. Otherwise each row span gets every pixel's level
+//    pair from sigma^2 = lambda_max(M^T M) / D^4 (one square root a pixel), tracked from the
+//    previous pixel's by comparing with the pair's thresholds (no logarithm or division:
+//    mipmap_kernel.cpp's row_levels); the span is cut into stretches of one lower level (the
+//    integer part changes a few times a row at most), and each stretch runs the fast
+//    bilinear row (run_bilinear_row in core/image/warp_kernels.h) on its lower level into the
+//    output and, where a weight is not 0, on the next level into a scratch row, blended pixel
+//    by pixel with each pixel's weight.
+//    Bound: every channel is within 2 levels of mipmap_pixel, the exact per-pixel definition:
+//    the level pair equals level_pair(mip_level) except where sigma^2 lies within 1e-15
+//    (relative) of a pair's threshold (then one step of 1/256 apart: under one level in the
+//    blend), and each level's bilinear sample is within one level of the per-pixel one (the
+//    same 16-bit weights to one unit of 2^-16, each rounded once), so before the blend's
+//    rounding the two differ by under 2 levels (tests/core/image/mipmap_test.cpp checks it on
+//    a tilt spanning more than three levels).
 #pragma once
 
 #include <cstdint>
@@ -30,5 +42,13 @@ namespace oflab {
 // exactly the pixels the bilinear kernel would write.
 std::int64_t run_mipmap_kernel(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
                                Image& output);
+
+// The mipmap sample of output pixel (x, y) by the definition, computed alone: the exact level
+// mip_level of the inverse map's Jacobian at the pixel centre, its level_pair, and the two
+// levels' bilinear samples with taps clamped at each level's border, blended. dest_to_source
+// is a plan's (output pixel coordinates -> continuous level-0 source coordinates), positive
+// denominator at the pixel. The perspective kernel stays within 2 levels of it (above).
+Pixel mipmap_pixel(const Mat3& dest_to_source, const Image& source, const MipPyramid& pyramid,
+                   int x, int y);
 
 }  // namespace oflab

@@ -329,6 +329,59 @@ OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int
   }
   return total;
 }
+
+// Four pixels of a trilinear sample: out[k] = (lower[k] (256 - w_k) + upper[k] w_k + 128) / 256
+// per channel, w_k = weights[k] in [0, 256].
+inline void lerp_quad(const Pixel* lower, const Pixel* upper, const std::uint16_t* weights,
+                      Pixel* out) {
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i w = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(weights));
+  const __m128i pairs = _mm_unpacklo_epi16(w, w);  // w0 w0 w1 w1 w2 w2 w3 w3
+  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(lower));
+  const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(upper));
+  const auto lerp8 = [&](__m128i x, __m128i y, __m128i wy) {
+    const __m128i wx = _mm_sub_epi16(_mm_set1_epi16(256), wy);
+    const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(x, wx), _mm_mullo_epi16(y, wy));
+    return _mm_srli_epi16(_mm_add_epi16(sum, _mm_set1_epi16(128)), 8);
+  };
+  const __m128i low = lerp8(_mm_unpacklo_epi8(a, zero), _mm_unpacklo_epi8(b, zero),
+                            _mm_unpacklo_epi32(pairs, pairs));
+  const __m128i high = lerp8(_mm_unpackhi_epi8(a, zero), _mm_unpackhi_epi8(b, zero),
+                             _mm_unpackhi_epi32(pairs, pairs));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_packus_epi16(low, high));
+}
+
+// The same on two mip levels at once, blended: `src` is level k and `next` level k + 1,
+// sampled at the positions derived from level k's: u_{k+1} = u_k / 2 - 1/4 (pixel-centre
+// coordinates; in 16.16 a shift and a subtraction, within one unit of 2^-16 of the truncated
+// exact position), and the two blended by lerp_quad. Level k's fast range keeps level
+// k + 1's taps inside it: 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4.
+OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceView& next,
+                                           const std::uint16_t* weights, Pixel* out, int count,
+                                           double nu, double nv, double d, double du, double dv,
+                                           double dd) {
+  const __m256i offset_weights = quad_offset_weights(src);
+  const __m256i next_offset_weights = quad_offset_weights(next);
+  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
+  const Pixel* const pixels = src.pixels;
+  const Pixel* const next_pixels = next.pixels;
+  const std::int64_t stride = src.stride;
+  const std::int64_t next_stride = next.stride;
+  QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
+  const int total = count & ~3;
+  if (total == 0) return 0;
+  __m256i positions = quad_positions(step);
+  Pixel lower[4], upper[4];
+  for (int k = 0; k < total; k += 4) {
+    const __m256i current = positions;
+    positions = quad_positions(step);
+    blend_quad(pixels, stride, offset_weights, current, lower);
+    blend_quad(next_pixels, next_stride, next_offset_weights,
+               _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter), upper);
+    lerp_quad(lower, upper, weights + k, out + k);
+  }
+  return total;
+}
 #endif
 
 // Affine inner loop: fixed point with `shift` fractional bits, only additions.
@@ -655,6 +708,86 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
 }
 
 }  // namespace
+
+void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_begin, int x_end,
+                      Pixel* out) {
+  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
+                       source.height() - 1};
+  const bool fast_allowed = steps_exact_in_double(map);
+  Pixel* row = out - x_begin;  // row[x] is output pixel x
+  int begin = x_begin, end = x_end;
+  for (; begin < end; ++begin) {  // pass 1's clamped ends, as in run()
+    const MapSample s = evaluate(map, begin, y);
+    if (fast_allowed && in_fast_range<true>(src, s)) break;
+    row[begin] = sample_clamped<true>(src, s, map.affine_shift);
+  }
+  for (; end > begin; --end) {
+    const MapSample last = evaluate(map, end - 1, y);
+    if (in_fast_range<true>(src, last)) break;
+    row[end - 1] = sample_clamped<true>(src, last, map.affine_shift);
+  }
+  if (begin >= end) return;
+  const MapSample s = evaluate(map, begin, y);
+  perspective_span<true>(src, row + begin, end - begin, static_cast<double>(s.nu),
+                         static_cast<double>(s.nv), static_cast<double>(s.d),
+                         static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+                         static_cast<double>(2 * map.g));
+}
+
+void run_trilinear_row(const InverseMap& map, const Image& source, const InverseMap& next_map,
+                       const Image& next_source, int y, int x_begin, int x_end,
+                       const std::uint16_t* weights, Pixel* out) {
+  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
+                       source.height() - 1};
+  const SourceView next{next_source.pixels().data(), next_source.width(), next_source.width() - 1,
+                        next_source.height() - 1};
+  const auto clamped = [&](int x) {  // both levels through their own maps
+    const Pixel a = sample_clamped<true>(src, evaluate(map, x, y), map.affine_shift);
+    const Pixel b = sample_clamped<true>(next, evaluate(next_map, x, y), next_map.affine_shift);
+    const int w = weights[x - x_begin];
+    auto channel = [&](std::uint8_t Pixel::*c) {
+      return static_cast<std::uint8_t>((a.*c * (256 - w) + b.*c * w + 128) >> 8);
+    };
+    out[x - x_begin] =
+        Pixel{channel(&Pixel::r), channel(&Pixel::g), channel(&Pixel::b), channel(&Pixel::a)};
+  };
+  int begin = x_begin, end = x_end;
+#if defined(OFLAB_WARP_AVX2)
+  const bool fast_allowed = use_avx2() && steps_exact_in_double(map);
+#else
+  const bool fast_allowed = false;  // the SSE2 build runs the two levels one after the other
+#endif
+  if (!fast_allowed) {
+    thread_local std::vector<Pixel> upper;
+    upper.resize(static_cast<std::size_t>(std::max(x_end - x_begin, 0)));
+    run_bilinear_row(map, source, y, x_begin, x_end, out);
+    run_bilinear_row(next_map, next_source, y, x_begin, x_end, upper.data());
+    for (int k = 0; k < x_end - x_begin; ++k) {
+      const Pixel a = out[k], b = upper[static_cast<std::size_t>(k)];
+      const int w = weights[k];
+      auto channel = [&](std::uint8_t Pixel::*c) {
+        return static_cast<std::uint8_t>((a.*c * (256 - w) + b.*c * w + 128) >> 8);
+      };
+      out[k] =
+          Pixel{channel(&Pixel::r), channel(&Pixel::g), channel(&Pixel::b), channel(&Pixel::a)};
+    }
+    return;
+  }
+  for (; begin < end && !in_fast_range<true>(src, evaluate(map, begin, y)); ++begin) clamped(begin);
+  for (; end > begin && !in_fast_range<true>(src, evaluate(map, end - 1, y)); --end) {
+    clamped(end - 1);
+  }
+  if (begin >= end) return;
+#if defined(OFLAB_WARP_AVX2)
+  const MapSample s = evaluate(map, begin, y);
+  const int done =
+      perspective_trilinear_quads(src, next, weights + (begin - x_begin), out + (begin - x_begin),
+                                  end - begin, static_cast<double>(s.nu), static_cast<double>(s.nv),
+                                  static_cast<double>(s.d), static_cast<double>(2 * map.a),
+                                  static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
+  for (int x = begin + done; x < end; ++x) clamped(x);
+#endif
+}
 
 std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output) {
   if (plan.empty || source.empty() || output.empty()) return 0;

@@ -87,5 +87,28 @@ TEST(LookaheadRuns, FlattensThePeaksOfTheFourCubesAtTheSameErrorForAtMostFivePer
   EXPECT_GT(ahead.pixels_written, rule.pixels_written);  // the early updates cost something
 }
 
+// The street's walk (30 frames, without the exact re-render beside): two clipped layers
+// re-rendered every frame write most of each frame's pixels, and the warped layers' writes the
+// schedule may move are small beside them (manual/policies.md). The schedule moves a write only
+// where that lowers the peak of the frame and its due frame, counting the warped layers'
+// pixels only, so it no longer raises the peaks there: the 95th percentile is not higher, the
+// error the same, the total within 5 %. (The earlier schedule, which compared whole frames
+// with a running mean, raised the 95th percentile 404344 -> 413100 on these frames.) A lower
+// 95th percentile is not claimed on the street: see the manual.
+TEST(LookaheadRuns, OnTheStreetTheScheduleDoesNotRaiseThePeaks) {
+  PlayOptions options = quick(30);
+  options.baseline = false;
+  std::vector<PolicyRow> rows;
+  for (const PolicyRun& r : run_policies(source_kind("scene"), scene_source("street", "walk"),
+                                         parse_policy_list("perspective,lookahead"), options))
+    rows.push_back(policy_row(r));
+  const PolicyRow& rule = rows[0];
+  const PolicyRow& ahead = rows[1];
+  EXPECT_NEAR(ahead.max_measured_error_px, rule.max_measured_error_px, 0.05);
+  EXPECT_LE(ahead.pixels_written_p95, rule.pixels_written_p95);
+  EXPECT_LE(double(ahead.pixels_written), 1.05 * double(rule.pixels_written));
+  EXPECT_GT(rule.pixels_written, 0);
+}
+
 }  // namespace
 }  // namespace oflab

@@ -72,7 +72,8 @@ FrameAllocation own_choices(const std::vector<LayerCandidates>& layers) {
 }
 
 // An empty frame before a peak: the layers due next frame are moved into it, nearest first,
-// until the frame holds about the mean of the frame and its horizon; a layer due beyond the
+// while the frame stays below the mean of the warped layers' pixels over the frame and its
+// horizon and each move lowers the peak of this frame and the due one; a layer due beyond the
 // horizon, or with no prediction, stays.
 TEST(Lookahead, ALightFrameTakesTheNearestPredictedWritesUpToTheMean) {
   const std::vector<LayerCandidates> layers = {choice(Level::kTranslate, 1, 100),
@@ -91,12 +92,42 @@ TEST(Lookahead, ALightFrameTakesTheNearestPredictedWritesUpToTheMean) {
     EXPECT_EQ(a.early[i], 0) << i;
   }
   EXPECT_DOUBLE_EQ(a.planned, 100.0);
-  // Control: after heavy frames the target rises to (1200 + 400) / 7 = 229: two layers move.
-  FrameAllocation b = own_choices(layers);
-  spread_updates(layers, {400.0, 400.0, 400.0}, b);
-  for (int i = 0; i < 4; ++i)
-    EXPECT_EQ(b.levels[i], i < 2 ? Level::kAffine : Level::kTranslate) << i;
-  EXPECT_EQ(b.levels[4], Level::kNone);
+  EXPECT_DOUBLE_EQ(a.movable, 100.0);
+  // Control: five layers due next frame raise the mean to 150, and two move (the frame then
+  // holds 200 against 300 next); after light frames the mean falls, and one moves.
+  const std::vector<LayerCandidates> five(5, choice(Level::kTranslate, 1, 100));
+  FrameAllocation b = own_choices(five);
+  spread_updates(five, {}, b);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(b.early[i], i < 2 ? 1 : 0) << i;
+  FrameAllocation c = own_choices(five);
+  spread_updates(five, {0.0, 0.0, 0.0}, c);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(c.early[i], i < 1 ? 1 : 0) << i;
+}
+
+// A fresh or clipped render is fixed: it is planned but no schedule moves it, so it changes
+// neither the mean nor the comparisons (the street's clipped layers, manual/policies.md).
+TEST(Lookahead, FixedRendersTakeNoPartInTheSchedule) {
+  std::vector<LayerCandidates> layers(5, choice(Level::kTranslate, 1, 100));
+  LayerCandidates fresh;
+  fresh.kind = LayerCandidates::Kind::kFresh;
+  fresh.choice = Level::kRerender;
+  fresh.pixels = estimate_level_pixels(50000, 50000);
+  layers.push_back(fresh);
+  FrameAllocation a = own_choices(layers);
+  spread_updates(layers, {}, a);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(a.early[i], i < 2 ? 1 : 0) << i;
+  EXPECT_EQ(a.levels[5], Level::kRerender);
+  EXPECT_DOUBLE_EQ(a.movable, 200.0);
+  EXPECT_DOUBLE_EQ(a.planned - a.movable,
+                   static_cast<double>(fresh.pixels[static_cast<int>(Level::kRerender)]));
+  // A move that would not lower the pair's peak is not made, whatever the mean: a frame of 250
+  // own pixels before a frame due 300 keeps its layers (one moved: 350 now, above the 300).
+  std::vector<LayerCandidates> busy(3, choice(Level::kTranslate, 1, 100));
+  LayerCandidates own = choice(Level::kAffine, -1, 250);
+  busy.push_back(own);
+  FrameAllocation b = own_choices(busy);
+  spread_updates(busy, {1000.0, 1000.0, 1000.0}, b);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(b.early[i], 0) << i;
 }
 
 // A frame already over the mean moves nothing; and only `lookahead` schedules ahead.

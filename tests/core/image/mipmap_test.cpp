@@ -4,12 +4,16 @@
 // and magnification against the bilinear kernel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
 
 #include "image/mip_pyramid.h"
+#include "image/mipmap_kernel.h"
+#include "image/scan_conversion.h"
 #include "image/warp.h"
+#include "image/warp_plan.h"
 #include "warp_reference.h"
 
 namespace oflab {
@@ -24,6 +28,12 @@ Mat3 scaling(double sx, double sy) {
 Mat3 rotation(double radians) {
   return mat3_from_rows({std::cos(radians), -std::sin(radians), 0.0},
                         {std::sin(radians), std::cos(radians), 0.0}, {0.0, 0.0, 1.0});
+}
+
+// The largest difference of a channel between two pixels.
+int max_channel_difference(const Pixel& a, const Pixel& b) {
+  return std::max(
+      {std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
 }
 
 TEST(MipPyramid, LevelsAreBoxAveragesOfTheSource) {
@@ -189,6 +199,57 @@ TEST(MipmapWarp, MagnificationIsBilinearExactly) {
       EXPECT_EQ(mip.pixels(), bilinear.pixels());
     }
   }
+}
+
+// The perspective kernel takes each pixel's level from a polynomial log2 and samples the
+// levels with the fast bilinear row: within 2 levels per channel of mipmap_pixel, the exact
+// per-pixel definition (mipmap_kernel.h states the bound), on a tilt whose footprint spans
+// more than three levels across the output. The control: bilinear sampling of the same warp
+// is far from it, so the comparison can fail.
+TEST(MipmapWarp, PerspectiveKernelIsWithinTwoLevelsOfThePerPixelDefinition) {
+  std::mt19937 rng(10);
+  const Layer source = make_layer(testing::random_image(rng, 320, 240));
+  MipPyramid pyramid;
+  build_mip_pyramid(source.image, pyramid);
+  const Mat3 m = mat3_from_rows({0.5, 0.05, 4.0}, {-0.02, 0.45, 3.0}, {0.006, 0.0015, 1.0});
+  const WarpOptions options{Sampling::kMipmap, WarpKernel::kPerspective, kDefaultHorizonEpsilon,
+                            &pyramid};
+  Image output(96, 80, testing::kSentinel), bilinear(96, 80, testing::kSentinel);
+  const WarpStats stats = warp_layer_into(source, m, output, 0, 0, options);
+  warp_layer_into(source, m, bilinear, 0, 0, {Sampling::kBilinear, WarpKernel::kPerspective});
+  const WarpPlan plan =
+      plan_warp(prepare_warp(source, m, options), Sampling::kMipmap, 96, 80, 0, 0);
+  const Mat3& h = plan.dest_to_source;
+  auto level_at = [&](double x, double y) {
+    const Vec3 q = h * Vec3(x, y, 1.0);
+    const double su = q.x / q.z, sv = q.y / q.z;
+    auto e = [&](int r, int c) { return entry(h, r, c); };
+    return mip_level((e(0, 0) - su * e(2, 0)) / q.z, (e(0, 1) - su * e(2, 1)) / q.z,
+                     (e(1, 0) - sv * e(2, 0)) / q.z, (e(1, 1) - sv * e(2, 1)) / q.z, pyramid.top());
+  };
+  double least = 1e9, most = 0.0;
+  int worst = 0, differing = 0, bilinear_far = 0;
+  std::int64_t pixels = 0;
+  ScanConverter scan(plan.polygon, 96, 80);
+  PixelSpan span;
+  while (scan.next(span)) {
+    for (int x = span.x_begin; x < span.x_end; ++x) {
+      ++pixels;
+      least = std::min(least, level_at(x + 0.5, span.y + 0.5));
+      most = std::max(most, level_at(x + 0.5, span.y + 0.5));
+      const Pixel want = mipmap_pixel(h, source.image, pyramid, x, span.y);
+      const Pixel got = output.at(x, span.y), control = bilinear.at(x, span.y);
+      const int d = max_channel_difference(got, want);
+      worst = std::max(worst, d);
+      differing += d > 0;
+      bilinear_far += max_channel_difference(control, want) > 8;
+    }
+  }
+  EXPECT_EQ(stats.pixels_written, pixels);
+  ASSERT_GT(pixels, 2000);
+  EXPECT_GT(most - least, 3.0) << least << " .. " << most;  // a strong tilt
+  EXPECT_LE(worst, 2) << differing << " of " << pixels << " pixels differ";
+  EXPECT_GT(bilinear_far, pixels / 2);
 }
 
 TEST(MipmapWarp, APyramidOfAnotherImageIsRefused) {
