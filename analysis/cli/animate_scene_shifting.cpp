@@ -17,21 +17,11 @@ namespace oflab {
 namespace {
 
 // Options of the engine's scene modes that scene shifting has no use for.
-constexpr const char* kEngineOnlyOptions[] = {"--threshold",
-                                              "--thresholds",
-                                              "--delta",
-                                              "--compare-conventional",
-                                              "--near",
-                                              "--guard-band",
-                                              "--no-skip-hidden",
-                                              "--budget-pixels",
-                                              "--budget-ms",
-                                              "--cadence",
-                                              "--stabilization-plane",
-                                              "--hole-fill",
-                                              "--cache-angle",
-                                              "--node-polygons",
-                                              "--safety-radius"};
+constexpr const char* kEngineOnlyOptions[] = {
+    "--threshold",     "--thresholds",  "--delta",          "--compare-conventional",
+    "--near",          "--guard-band",  "--no-skip-hidden", "--warp",
+    "--budget-pixels", "--budget-ms",   "--cadence",        "--stabilization-plane",
+    "--hole-fill",     "--cache-angle", "--node-polygons",  "--safety-radius"};
 
 void print_summary(const AnimationRun& run, const std::string& scene, const std::string& script,
                    std::ostream& out) {

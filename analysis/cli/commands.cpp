@@ -46,7 +46,8 @@ std::string animate_usage() {
       "               [--compare-conventional [--conventional-single-sample]]\n"
       "               [--near Z] [--guard-band G] [--hole-fill none|stretch|background]\n"
       "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
-      "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
+      "               [--no-skip-hidden] [--warp visible|whole]\n"
+      "               (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode " +
       source_kind_modes("|") +
       " --scene NAME|FILE --script NAME|FILE\n"
@@ -105,7 +106,7 @@ std::vector<Command>& command_table() {
        "               [--budget-pixels N | --budget-ms T]   (with budget in the list)\n"
        "               [--cadence N] [--stabilization-plane X Y Z NX NY NZ]\n"
        "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
-       "               [--hole-fill none|stretch|background]\n"
+       "               [--warp visible|whole] [--hole-fill none|stretch|background]\n"
        "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
        "               [--json] [--out DIR [--force]] [--quiet]\n"
        "  policies: the names of 'oflab-cli policies'",

@@ -302,7 +302,7 @@ FrameAllocation BudgetLedger::allocate(int frame, const std::vector<LayerCandida
   const FrameAllocation a =
       allocate_frame(*policy_, active ? budget_ : FrameBudget{}, rates_, layers, past_);
   if (policy_->spreads_updates && frame > 0) {
-    past_.push_back(a.planned);
+    past_.push_back(a.movable);
     if (past_.size() > kLookaheadHorizon) past_.erase(past_.begin());
   }
   if (active) {

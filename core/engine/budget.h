@@ -147,6 +147,9 @@ struct FrameAllocation {
   std::vector<char> shown;
   std::vector<char> starved;
   double planned = 0.0;  // cost of the allocation, budget units (pixels for `lookahead`)
+  // `lookahead`: of `planned`, the pixels of the layers with a choice of levels (every fresh
+  // or clipped render left out: they are no update the schedule can move).
+  double movable = 0.0;
   // `lookahead` (core/engine/lookahead.h spread_updates): the layers updated early, ahead of
   // their predicted expiry; empty for every other policy.
   std::vector<char> early;
@@ -208,7 +211,8 @@ class BudgetLedger {
   LevelRates rates_;
   BudgetReport frame_;
   std::vector<Update> updates_;
-  std::vector<double> past_;  // `lookahead`: the last frames' planned pixels (oldest first)
+  // `lookahead`: the last frames' movable pixels (FrameAllocation::movable), oldest first.
+  std::vector<double> past_;
 };
 
 }  // namespace oflab

@@ -65,37 +65,39 @@ double level_slack(const TermArray& error, const TermArray& thresholds, const Le
 void spread_updates(const std::vector<LayerCandidates>& layers, const std::vector<double>& past,
                     FrameAllocation& a) {
   a.early.assign(layers.size(), 0);
-  double planned = 0.0, ahead = 0.0, forced = 0.0;
+  double planned = 0.0, ahead = 0.0, movable = 0.0;
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const LayerCandidates& c = layers[i];
     if (c.kind == LayerCandidates::Kind::kNotShown) continue;
     planned += static_cast<double>(cost_of(c, c.choice));
-    // A fresh (or clipped) render is taken to recur in the frames ahead, as it does while
-    // the layer stays clipped.
-    if (c.kind == LayerCandidates::Kind::kFresh)
-      forced += static_cast<double>(cost_of(c, c.choice));
-    if (c.kind != LayerCandidates::Kind::kChoice || predicted_write(c) == 0) continue;
+    // A fresh (or clipped) render is no update the schedule can move: left out of the
+    // movable pixels and of the target.
+    if (c.kind != LayerCandidates::Kind::kChoice) continue;
+    movable += static_cast<double>(cost_of(c, c.choice));
+    if (predicted_write(c) == 0) continue;
     ahead += static_cast<double>(cost_of(c, early_level(c)));
     pending.push_back(i);
   }
   double past_sum = 0.0;
   for (double p : past) past_sum += p;
-  const double target = (past_sum + planned + ahead + kLookaheadHorizon * forced) /
-                        static_cast<double>(past.size() + kLookaheadHorizon + 1);
+  const double target =
+      (past_sum + movable + ahead) / static_cast<double>(past.size() + kLookaheadHorizon + 1);
   std::stable_sort(pending.begin(), pending.end(), [&](std::size_t x, std::size_t y) {
     return predicted_write(layers[x]) < predicted_write(layers[y]);
   });
   for (std::size_t i : pending) {
     const LayerCandidates& c = layers[i];
     const double extra = static_cast<double>(cost_of(c, early_level(c)) - cost_of(c, c.choice));
-    if (planned >= target) break;
-    if (planned + 0.5 * extra >= target) continue;
+    if (movable >= target) break;
+    if (movable + 0.5 * extra >= target) continue;
     a.levels[i] = early_level(c);
     a.early[i] = 1;
+    movable += extra;
     planned += extra;
   }
   a.planned = planned;
+  a.movable = movable;
 }
 
 }  // namespace oflab

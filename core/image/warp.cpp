@@ -104,11 +104,12 @@ std::string sampling_name_list(const std::string& separator) {
 WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image& output,
                           int output_origin_x, int output_origin_y, const WarpOptions& options) {
   const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);
-  const WarpPlan plan = plan_warp(prepared, options.sampling, output.width(), output.height(),
-                                  output_origin_x, output_origin_y);
+  WarpPlan plan = plan_warp(prepared, options.sampling, output.width(), output.height(),
+                            output_origin_x, output_origin_y);
   WarpStats stats;
   stats.kernel_used = kernel_name(prepared.affine_kernel);
-  stats.pixels_written = run_warp_kernel(plan, source.image, output);
+  plan.only = options.only;
+  stats.pixels_written = run_warp_kernel(plan, source.image, output, &stats.pixels_computed);
   return stats;
 }
 
@@ -141,7 +142,8 @@ void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedL
   const int old_width = image.width(), old_height = image.height();
   image.reshape(width, height);
   clear_previous(result.layer.polygon, old_width, old_height, spans, image);
-  stats.pixels_written = run_warp_kernel(plan, source.image, image);
+  plan.only = options.only;
+  stats.pixels_written = run_warp_kernel(plan, source.image, image, &stats.pixels_computed);
   // plan.polygon is the warped polygon in the new layer's pixel coordinates.
   result.layer.polygon = std::move(plan.polygon);
   result.offset_x = x0;

@@ -38,6 +38,7 @@
 #include "flow/geometry.h"
 #include "image/image.h"
 #include "image/layer.h"
+#include "image/pixel_rows.h"
 
 namespace oflab {
 
@@ -65,10 +66,21 @@ struct WarpOptions {
   Sampling sampling = Sampling::kNearest;
   WarpKernel kernel = WarpKernel::kAutomatic;
   double horizon_epsilon = kDefaultHorizonEpsilon;
+  // A partial warp: when set, only output pixels whose destination pixel (output pixel plus
+  // the output's origin) is in `only` are computed, with, for the affine kernel's bilinear
+  // sampling, the rest of their blocks of kPartialWarpBlock columns; the others inside the
+  // polygon keep what the output held. Every pixel computed is the same bytes as in the whole
+  // warp: each pixel of the other kernels depends on its own exact position only, and the
+  // affine bilinear blocks start where its fixed-point runs restart. Null: the whole polygon.
+  const PixelRows* only = nullptr;
 };
 
+// Columns of the affine bilinear kernel's block in a partial warp (WarpOptions::only).
+constexpr int kPartialWarpBlock = 64;
+
 struct WarpStats {
-  std::int64_t pixels_written = 0;               // output pixels inside the warped polygon
+  std::int64_t pixels_written = 0;   // output pixels inside the warped polygon
+  std::int64_t pixels_computed = 0;  // of those, the pixels sampled (all but a partial warp's)
   WarpKernel kernel_used = WarpKernel::kAffine;  // kAffine or kPerspective
 };
 

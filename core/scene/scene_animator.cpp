@@ -382,14 +382,23 @@ void SceneEngine::render_frame(const ViewerPose* previous, const RigidMotion* mo
 void SceneEngine::add_occluder(int fragment, const PlacedLayer& shown) {
   // What this fragment certainly paints opaque hides whatever is tested after it.
   const PolygonLayer& s = *states_[bsp_.fragments()[fragment].polygon];
+  const bool visible_only = settings_.engine.warp_area == WarpArea::kVisible;
   if (s.whole) {
     occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
                             Vec2(shown.offset_x, shown.offset_y));
+    if (visible_only) {
+      shown_pixels_.remove_centres_inside(
+          eroded(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
+                 settings_.occluder_inset_px));
+    }
   } else {
     const ConvexPolygon drawn =
         intersection(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
                      fragment_regions_[fragment]);
     occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
+    if (visible_only) {
+      shown_pixels_.remove_centres_inside(eroded(drawn, settings_.occluder_inset_px));
+    }
   }
 }
 

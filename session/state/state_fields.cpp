@@ -305,6 +305,10 @@ void add_engine_fields(std::vector<StateField>& f) {
       "animation.sampling", sampling_name_list(), "the warps' sampling",
       [](S* s) { return &s->settings.sampling; }, parse_sampling,
       [](Sampling v) { return std::string(sampling_name(v)); }));
+  f.push_back(named<WarpArea>(
+      "animation.warp", warp_area_name_list(), "what of each scene layer is warped",
+      [](S* s) { return &s->settings.warp_area; }, parse_warp_area,
+      [](WarpArea v) { return std::string(warp_area_name(v)); }));
   f.push_back(named<ContentKind>(
       "animation.content", content_name_list(), "what a re-render draws",
       [](S* s) { return &s->settings.content.kind; }, parse_content,
