@@ -245,8 +245,6 @@ void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameRepor
   warp_layer_reusing(source, warp, warped_, options);
   report.pixels_written += warped_.stats.pixels_written;
   report.pixels_not_warped += warped_.stats.pixels_written - warped_.stats.pixels_computed;
-  fprintf(stderr, "warp only=%d written=%lld computed=%lld\n", only != nullptr,
-          (long long)warped_.stats.pixels_written, (long long)warped_.stats.pixels_computed);
   const bool affine = warped_.stats.kernel_used == WarpKernel::kAffine;
   report.model_work +=
       warped_.stats.pixels_written * (affine ? kAffineWarpCost : kPerspectiveWarpCost);
@@ -269,9 +267,6 @@ void PlaneEngine::complete_display(FrameReport& report, bool all) {
     const WarpStats stats = warp_layer_into(*partial_.source, partial_.warp, display_.layer.image,
                                             layer_origin_.x, layer_origin_.y, options);
     report.pixels_not_warped -= stats.pixels_computed;
-    fprintf(stderr, "complete all=%d computed=%lld missing=%lld written=%lld\n", int(all),
-            (long long)stats.pixels_computed, (long long)missing.count(),
-            (long long)stats.pixels_written);
   }
   partial_.done.add(wanted);
   if (all || !shown_pixels_) partial_.active = false;
