@@ -49,7 +49,6 @@
 #include "flow/motion.h"
 #include "flow/plane.h"
 #include "image/layer.h"
-#include "image/pixel_rows.h"
 #include "image/warp.h"
 #include "scene/view_culling.h"
 
@@ -67,18 +66,6 @@ struct StabilizationPlane {
   Vec3 point{0.0, 0.0, 1.0};
   Vec3 normal{0.0, 0.0, 1.0};
 };
-
-// What of a layer the scene engine warps (dissertation section 7.5.3, manual/animation.md):
-// kWhole, the whole layer; kVisible, only the pixels the frame will show (inside the frame,
-// not under opaque layers drawn in front), the frames staying the same bytes. The words of
-// options, session files and JSON are warp_area_name's: "whole", "visible"; parse_warp_area
-// accepts exactly those (false, *area unchanged, for anything else); warp_area_name_list
-// joins them with `separator`.
-enum class WarpArea { kWhole, kVisible };
-constexpr int kWarpAreaCount = 2;
-const char* warp_area_name(WarpArea area);
-bool parse_warp_area(const std::string& text, WarpArea* area);
-std::string warp_area_name_list(const std::string& separator = ", ");
 
 struct EngineSettings {
   // What may be reused and how levels are chosen (core/engine/reuse_policy.h); never null.
@@ -109,8 +96,7 @@ struct EngineSettings {
   int cadence = 2;
   // The plane of FramePlane::kStabilization policies; others ignore it.
   StabilizationPlane stabilization;
-  // What of each layer a scene warps (WarpArea above); a single plane is warped whole.
-  WarpArea warp_area = WarpArea::kVisible;
+  WarpArea warp_area = WarpArea::kVisible;  // scenes only (core/image/pixel_rows.h)
 };
 
 // What the engine did in one frame. Error estimates are the engine's own bookkeeping;
@@ -149,9 +135,7 @@ struct FrameReport {
   // diagnostics (measured and affine-view errors) are computed after it, untimed.
   double time_ms = 0.0;
   std::int64_t pixels_written = 0;  // pixels the warp kernels (or a content render) wrote
-  // Of pixels_written, those a visible-only warp left unwarped (the frame does not show
-  // them), less those of earlier frames it warped now that a reused layer shows them: the
-  // pixels warped this frame are pixels_written - pixels_not_warped (core/image/warp.h).
+  // Of pixels_written, those not computed (a visible-only warp's, AnimationFrame's).
   std::int64_t pixels_not_warped = 0;
   // Of time_ms: rendering the content (a re-render, or a clipped exact render), and the rest
   // of the update (warps, placing, deciding).
@@ -224,11 +208,7 @@ class PlaneEngine {
   // Without a call, FramePlane::kStabilization uses EngineSettings::stabilization (automatic:
   // the layer's own plane).
   void set_frame_plane(const Vec3& m);
-  // The scene engine's visible-only warp (WarpArea::kVisible): the image pixels (top-left)
-  // the frame will show of this layer, for the next apply; null (the default) warps the
-  // whole layer. The pixels left out are warped at a later frame that reuses the layer and
-  // shows them (a translation or no update), or before the layer becomes the perspective
-  // cache, so the layer shows what a whole warp would. `pixels` must outlive the apply.
+  // The pixels (top-left) the next apply's warps must compute; null: all (PartialWarp).
   void set_shown_pixels(const PixelRows* pixels) { shown_pixels_ = pixels; }
 
  private:
@@ -307,16 +287,12 @@ class PlaneEngine {
   bool apply_perspective(const Mat3& target, FrameReport& report);
   // Warps `source` by source_to_image into the displayed layer (reusing memory) and places
   // it; texel_to_image is the warp the layer then shows (for the measured error).
-  // A source that stays unchanged while its warp is shown (the texture, the cache) may be
-  // warped partially under set_shown_pixels.
   void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
             FrameReport& report);
-  // Warps `source` into warped_, reusing its memory, only `only`'s pixels when given (core/
-  // image/warp.h WarpOptions::only); counts the pixels written and those not warped.
+  // Warps `source` into warped_ (memory reused; `only`'s pixels); counts the pixels.
   void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
                     const PixelRows* only = nullptr);
-  // A partially warped layer: warps the pixels the frame shows now (all when `all` or when no
-  // shown pixels are set) that its warp left out.
+  // A partly warped display: warps what its warp left out that the frame shows now (all).
   void complete_display(FrameReport& report, bool all = false);
   void cache_from_display();
   void show_from_cache(FrameReport& report);
@@ -373,17 +349,9 @@ class PlaneEngine {
   int frame_ = 0;
   Measured measured_;
   ExpiryTrack expiry_;
-  // Visible-only warps: the pixels the frame will show (set_shown_pixels), and of a partially
-  // warped display its source (the texture or the cache, unchanged until the display is
-  // replaced), its warp and the image pixels computed, as placed at layer_origin_.
+  // Visible-only warps: the pixels shown, and the display's warp (done at layer_origin_).
   const PixelRows* shown_pixels_ = nullptr;
-  struct PartialDisplay {
-    bool active = false;
-    const Layer* source = nullptr;
-    Mat3 warp{1.0};
-    PixelRows done;
-  };
-  PartialDisplay partial_;
+  PartialWarp partial_;
 };
 
 }  // namespace oflab

@@ -19,27 +19,6 @@ using Clock = WallClock;
 
 }  // namespace
 
-const char* warp_area_name(WarpArea area) {
-  return area == WarpArea::kVisible ? "visible" : "whole";
-}
-
-bool parse_warp_area(const std::string& text, WarpArea* area) {
-  for (int i = 0; i < kWarpAreaCount; ++i) {
-    if (text != warp_area_name(static_cast<WarpArea>(i))) continue;
-    *area = static_cast<WarpArea>(i);
-    return true;
-  }
-  return false;
-}
-
-std::string warp_area_name_list(const std::string& separator) {
-  std::string list;
-  for (int i = 0; i < kWarpAreaCount; ++i) {
-    list += (i == 0 ? "" : separator) + std::string(warp_area_name(static_cast<WarpArea>(i)));
-  }
-  return list;
-}
-
 std::array<Vec2, 4> PlaneEngine::texel_corners() const {
   const double w = texture_.image.width(), h = texture_.image.height();
   return {Vec2(0.0, 0.0), Vec2(w, 0.0), Vec2(w, h), Vec2(0.0, h)};

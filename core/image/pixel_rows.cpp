@@ -70,6 +70,27 @@ bool line_inside(const std::vector<Vec2>& v, double y, double& x_min, double& x_
 
 }  // namespace
 
+const char* warp_area_name(WarpArea area) {
+  return area == WarpArea::kVisible ? "visible" : "whole";
+}
+
+bool parse_warp_area(const std::string& text, WarpArea* area) {
+  for (int i = 0; i < kWarpAreaCount; ++i) {
+    if (text != warp_area_name(static_cast<WarpArea>(i))) continue;
+    *area = static_cast<WarpArea>(i);
+    return true;
+  }
+  return false;
+}
+
+std::string warp_area_name_list(const std::string& separator) {
+  std::string list;
+  for (int i = 0; i < kWarpAreaCount; ++i) {
+    list += (i == 0 ? "" : separator) + std::string(warp_area_name(static_cast<WarpArea>(i)));
+  }
+  return list;
+}
+
 PixelRows PixelRows::full(int width, int height) {
   PixelRows set;
   set.rows_.assign(static_cast<std::size_t>(std::max(height, 0)),

@@ -8,8 +8,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "image/layer.h"
 #include "image/polygon.h"
 
 namespace oflab {
@@ -19,6 +21,19 @@ struct ColumnRun {
   int begin = 0;
   int end = 0;
 };
+
+// What of a layer the scene engine warps (dissertation section 7.5.3, manual/animation.md,
+// EngineSettings::warp_area in core/engine/engine.h):
+// kWhole, the whole layer; kVisible, only the pixels the frame will show (inside the frame,
+// not under opaque layers drawn in front), the frames staying the same bytes. The words of
+// options, session files and JSON are warp_area_name's: "whole", "visible"; parse_warp_area
+// accepts exactly those (false, *area unchanged, for anything else); warp_area_name_list
+// joins them with `separator`.
+enum class WarpArea { kWhole, kVisible };
+constexpr int kWarpAreaCount = 2;
+const char* warp_area_name(WarpArea area);
+bool parse_warp_area(const std::string& text, WarpArea* area);
+std::string warp_area_name_list(const std::string& separator = ", ");
 
 class PixelRows {
  public:
@@ -53,6 +68,19 @@ class PixelRows {
   std::vector<ColumnRun>& at(int y) { return rows_[static_cast<std::size_t>(y - top_)]; }
   int top_ = 0;
   std::vector<std::vector<ColumnRun>> rows_;
+};
+
+// A layer warped partly (the plane engine's display under a visible-only warp,
+// core/engine/engine.h set_shown_pixels): the source and the warp that made it, unchanged
+// while it is shown (the texture, or the perspective cache), and the image pixels computed,
+// as placed then. A reused layer (no update, a translation) warps, with them, the pixels it
+// comes to show that were left out, and the whole layer is completed before it becomes the
+// perspective cache: it then shows what a whole warp would, to the byte.
+struct PartialWarp {
+  bool active = false;
+  const Layer* source = nullptr;
+  Mat3 warp{1.0};
+  PixelRows done;
 };
 
 }  // namespace oflab
