@@ -9,6 +9,7 @@
 #include "formats/datasets.h"
 #include "formats/scene_file.h"
 #include "formats/viewer_script_file.h"
+#include "runs/policy_runs.h"
 #include "scene/scene_animator.h"
 
 namespace oflab {
@@ -76,6 +77,30 @@ TEST(VisibleWarpRuns, FourCubesFramesAreTheSameBytesWithFewerPixelsWarped) {
 // facade is in full view) and its walls reaching out of the frame are the clipped ones,
 // rendered exactly: the same bytes, and no pixel warped more.
 TEST(VisibleWarpRuns, StreetFramesAreTheSameBytes) { expect_same_frames("street", "walk", 6); }
+
+// compare's figure (PolicyRow::pixels_warped, its JSON and summary.csv): the pixels computed,
+// fewer than those written under the default visible-only warp, all of them under `whole`.
+TEST(VisibleWarpRuns, ComparesPixelsWarpedBesideThePixelsWritten) {
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("four-cubes")));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path("compound"));
+  PlayOptions quick;
+  quick.max_frames = 12;
+  quick.timing_repetitions = 1;
+  quick.warm_up = false;
+  const auto row = [&](WarpArea area) {
+    source.settings.engine.warp_area = area;
+    return policy_row(
+        run_policies(source_kind("scene"), source, parse_policy_list("perspective"), quick)
+            .front());
+  };
+  const PolicyRow visible = row(WarpArea::kVisible), whole = row(WarpArea::kWhole);
+  EXPECT_EQ(visible.pixels_written, whole.pixels_written);
+  EXPECT_EQ(whole.pixels_warped, whole.pixels_written);
+  EXPECT_LT(visible.pixels_warped, visible.pixels_written);
+  EXPECT_LE(visible.pixels_warped_p95, visible.pixels_written_p95);
+  EXPECT_EQ(policy_row_json(visible).at("pixels_warped"), visible.pixels_warped);
+}
 
 }  // namespace
 }  // namespace oflab
