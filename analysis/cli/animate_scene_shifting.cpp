@@ -17,11 +17,21 @@ namespace oflab {
 namespace {
 
 // Options of the engine's scene modes that scene shifting has no use for.
-constexpr const char* kEngineOnlyOptions[] = {
-    "--threshold",     "--thresholds",  "--delta",          "--compare-conventional",
-    "--near",          "--guard-band",  "--no-skip-hidden", "--warp",
-    "--budget-pixels", "--budget-ms",   "--cadence",        "--stabilization-plane",
-    "--hole-fill",     "--cache-angle", "--node-polygons",  "--safety-radius"};
+constexpr const char* kEngineOnlyOptions[] = {"--threshold",
+                                              "--thresholds",
+                                              "--delta",
+                                              "--compare-conventional",
+                                              "--near",
+                                              "--guard-band",
+                                              "--no-skip-hidden",
+                                              "--budget-pixels",
+                                              "--budget-ms",
+                                              "--cadence",
+                                              "--stabilization-plane",
+                                              "--hole-fill",
+                                              "--cache-angle",
+                                              "--node-polygons",
+                                              "--safety-radius"};
 
 void print_summary(const AnimationRun& run, const std::string& scene, const std::string& script,
                    std::ostream& out) {
@@ -69,6 +79,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
     if (a.has(option))
       throw UsageError(std::string(option) + ": not used by --mode scene-shifting");
   }
+  if (a.has("--warp")) throw UsageError("--warp: not used by --mode scene-shifting");
   RunSource source;
   source.viewer = read_viewer_script_option(a);
   source.scene = std::make_shared<const Scene>(read_scene_option(a));

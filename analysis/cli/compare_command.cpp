@@ -180,6 +180,7 @@ const std::map<std::string, int>& compare_options() {
   static const std::map<std::string, int> options = [] {
     std::map<std::string, int> all = run_options();
     all.insert({"--policies", 1});
+    all.insert({"--warp", 1});  // scenes only (read_scene_settings)
     return all;
   }();
   return options;
