@@ -96,7 +96,7 @@ struct EngineSettings {
   int cadence = 2;
   // The plane of FramePlane::kStabilization policies; others ignore it.
   StabilizationPlane stabilization;
-  WarpArea warp_area = WarpArea::kVisible;  // scenes only (core/image/pixel_rows.h)
+  WarpArea warp_area = WarpArea::kWhole;  // scenes only (core/image/pixel_rows.h)
 };
 
 // What the engine did in one frame. Error estimates are the engine's own bookkeeping;

@@ -79,7 +79,7 @@ TEST(VisibleWarpRuns, FourCubesFramesAreTheSameBytesWithFewerPixelsWarped) {
 TEST(VisibleWarpRuns, StreetFramesAreTheSameBytes) { expect_same_frames("street", "walk", 6); }
 
 // compare's figure (PolicyRow::pixels_warped, its JSON and summary.csv): the pixels computed,
-// fewer than those written under the default visible-only warp, all of them under `whole`.
+// fewer than those written under the visible-only warp, all of them under `whole`.
 TEST(VisibleWarpRuns, ComparesPixelsWarpedBesideThePixelsWritten) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("four-cubes")));
