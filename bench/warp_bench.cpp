@@ -4,10 +4,10 @@
 // the same number of output bytes: the memory-bandwidth floor), when OpenCV is available
 // opencv/<kernel>/<sampling>/<size>/<matrix>, when pixman is available
 // pixman/<sampling>/<size>/<matrix>, and the engine cases of engine_bench.h
-// (engine/<script>/<mode>). Every warp case reports aggregates
-// over repetitions (median included) and a Mpx/s counter: output pixels inside the warped
-// polygon per second. Everything runs on one thread. Usual Google Benchmark flags work,
-// e.g. --benchmark_filter=1024x768 --benchmark_format=json.
+// (engine/<script>/<mode>), and mipmap-vs-bilinear/... (mipmap_bench.h). Every warp case reports
+// aggregates over repetitions (median included) and a Mpx/s counter: output pixels inside the
+// warped polygon per second. Everything runs on one thread. Usual Google Benchmark flags work, e.g.
+// --benchmark_filter=1024x768 --benchmark_format=json.
 #include <benchmark/benchmark.h>
 
 #include <cstring>
@@ -17,6 +17,7 @@
 #include "content_bench.h"
 #include "engine_bench.h"
 #include "image/warp.h"
+#include "mipmap_bench.h"
 #include "scene_bench.h"
 #include "warp_cases.h"
 #ifdef OFLAB_BENCH_WITH_OPENCV
@@ -105,6 +106,7 @@ void register_all() {
   register_pixman_cases(table, false, kRepetitions);
   register_pixman_cases(frames, true, kRepetitions);
 #endif
+  register_mipmap_cases(kRepetitions);
   register_engine_cases(kRepetitions);
   register_content_cases(kRepetitions);
   register_scene_cases(1);

@@ -87,6 +87,13 @@ screen=1920x1200 shot world-scene --view world --scene four-cubes --script circl
 screen=1920x1200 shot cause-and-effect --cause-and-effect --size 1920 1080 --frames 10
 screen=1920x1200 shot lesson-where-the-flow-comes-from --lesson where-the-flow-comes-from \
   --size 1920 1080 --frames 0
+# The threshold study's window: its set-up page, and its results after a simulated observer
+# (threshold 0.8 px) answered the class study.
+study_trials=$(mktemp -d)
+shot study-setup --study class --size 1200 800
+shot study-results --study class --study-simulate 0.8 --study-seed 3 \
+  --study-csv "$study_trials/trials.csv" --size 1200 800
+rm -rf "$study_trials"
 # Each step of each lesson, as the lesson-claims check leaves the window after measuring
 # that step's claims (manual/lessons.md shows them).
 steps=$(mktemp -d)

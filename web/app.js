@@ -206,6 +206,7 @@ function bindControls() {
 // the first and the last frame; Page Down and Page Up step through a lesson; 1-4 pick a view,
 // P the presentation mode.
 function onKey(e) {
+  if (studyOpen()) return;  // the study panel takes its own keys (study_view.js)
   if (e.target.tagName === 'INPUT' && e.target.type !== 'range') return;
   if (e.target.tagName === 'SELECT') return;
   const frame = app.state.frame;
@@ -323,10 +324,12 @@ async function start() {
   for (const view of Object.values(app.views)) if (view.build) view.build();
   bindControls();
   bindShareControls();
+  bindStudyControls();
   fillScriptPicker();
   loadLessons();
   syncControls();
   applyUrlOptions(params);
+  applyStudyUrlOptions(params);
   const fragment = location.hash.slice(1);
   document.body.classList.toggle('embed', fragment.split('&').includes('embed'));
   if (fragment) {

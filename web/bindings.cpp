@@ -13,6 +13,7 @@
 #include "engine/decision.h"
 #include "frame_pixels.h"
 #include "web_session.h"
+#include "web_study.h"
 
 namespace oflab {
 namespace {
@@ -79,6 +80,21 @@ emscripten::val wheel_table(int angles, int levels) {
   return emscripten::val(emscripten::typed_memory_view(table.size(), table.data()));
 }
 
+// A study clip's frame as RGBA bytes (a view into the module's memory; empty when there is
+// no such frame).
+emscripten::val study_frame(WebStudy& s, int clip, int frame) {
+  const std::vector<Pixel>& pixels = s.clip_frame(clip, frame);
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(pixels.data());
+  return emscripten::val(emscripten::typed_memory_view(pixels.size() * 4, bytes));
+}
+
+emscripten::val study_curve(const WebStudy& s, double threshold_px, int n) {
+  return float64_copy(s.curve(threshold_px, n));
+}
+
+// The colour of compared policy or study condition `index` (palette.h policy_colour).
+emscripten::val policy_rgb(int index) { return rgb_array(policy_colour(index)); }
+
 // The one sequential ramp (palette.h magnitude_colour) at t in [0, 1] as [r, g, b]: the
 // heat map's colour bar and the flow arrows' magnitudes.
 emscripten::val heat_colour(double t) { return rgb_array(magnitude_colour(t)); }
@@ -119,7 +135,25 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .class_function("scriptNamesJson", &WebSession::script_names_json)
       .class_function("sceneNamesJson", &WebSession::scene_names_json)
       .class_function("stateSchemaJson", &WebSession::state_schema_json);
+  using oflab::WebStudy;
+  emscripten::class_<WebStudy>("Study")
+      .constructor<>()
+      .function("open", &WebStudy::open)
+      .function("isOpen", &WebStudy::is_open)
+      .function("finished", &WebStudy::finished)
+      .function("requestJson", &WebStudy::request_json)
+      .function("clipLength", &WebStudy::clip_length)
+      .function("clipFrame", &oflab::study_frame)
+      .function("answer", &WebStudy::answer)
+      .function("simulate", &WebStudy::simulate)
+      .function("csv", &WebStudy::csv)
+      .function("resultsJson", &WebStudy::results_json)
+      .function("studyJson", &WebStudy::study_json)
+      .function("classResultsJson", &WebStudy::class_results_json)
+      .function("curve", &oflab::study_curve)
+      .class_function("shippedJson", &WebStudy::shipped_json);
   emscripten::function("heatColour", &oflab::heat_colour);
+  emscripten::function("policyColour", &oflab::policy_rgb);
   emscripten::function("levelColours", &oflab::level_colours);
   emscripten::function("wheelTable", &oflab::wheel_table);
 }

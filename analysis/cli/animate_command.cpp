@@ -29,7 +29,12 @@ constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
                                              "--hole-fill",
                                              "--cache-angle",
                                              "--node-polygons",
-                                             "--safety-radius"};
+                                             "--safety-radius",
+                                             "--mesh-grid",
+                                             "--mesh-split",
+                                             "--mesh-rebuild",
+                                             "--mesh-jump",
+                                             "--rubber-sheets"};
 
 // The text summary, from the JSON summary of the plane kind (runs/source_kinds.h).
 void print_summary(const nlohmann::json& j, const std::string& script, const ReusePolicy& policy,

@@ -365,32 +365,23 @@ ViewerScript read_viewer_script_option(const CliArgs& a) {
 }
 
 const std::map<std::string, int>& run_options() {
-  static const std::map<std::string, int> options = {{"--script", 1},
-                                                     {"--scene", 1},
-                                                     {"--texture", 1},
-                                                     {"--frames", 1},
-                                                     {"--threshold", 1},
-                                                     {"--thresholds", 4},
-                                                     {"--delta", 1},
-                                                     {"--sampling", 1},
-                                                     {"--content", 1},
-                                                     {"--quality", 1},
-                                                     {"--budget-pixels", 1},
-                                                     {"--budget-ms", 1},
-                                                     {"--cadence", 1},
-                                                     {"--stabilization-plane", 6},
-                                                     {"--hole-fill", 1},
-                                                     {"--cache-angle", 1},
-                                                     {"--node-polygons", 1},
-                                                     {"--safety-radius", 1},
-                                                     {"--near", 1},
-                                                     {"--guard-band", 1},
-                                                     {"--no-skip-hidden", 0},
-                                                     {"--repeat-timing", 1},
-                                                     {"--out", 1},
-                                                     {"--force", 0},
-                                                     {"--json", 0},
-                                                     {"--quiet", 0}};
+  static const std::map<std::string, int> options = {
+      {"--script", 1},        {"--scene", 1},
+      {"--texture", 1},       {"--frames", 1},
+      {"--threshold", 1},     {"--thresholds", 4},
+      {"--delta", 1},         {"--sampling", 1},
+      {"--content", 1},       {"--quality", 1},
+      {"--budget-pixels", 1}, {"--budget-ms", 1},
+      {"--cadence", 1},       {"--stabilization-plane", 6},
+      {"--hole-fill", 1},     {"--cache-angle", 1},
+      {"--node-polygons", 1}, {"--safety-radius", 1},
+      {"--mesh-grid", 1},     {"--mesh-split", 1},
+      {"--mesh-rebuild", 1},  {"--mesh-jump", 1},
+      {"--rubber-sheets", 1}, {"--near", 1},
+      {"--guard-band", 1},    {"--no-skip-hidden", 0},
+      {"--repeat-timing", 1}, {"--out", 1},
+      {"--force", 0},         {"--json", 0},
+      {"--quiet", 0}};
   return options;
 }
 

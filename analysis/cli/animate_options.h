@@ -106,7 +106,7 @@ void add_compare_measures(PlayOptions& options);
 // value or when both are given.
 FrameBudget read_frame_budget(const CliArgs& args);
 
-// --sampling nearest|bilinear (default nearest). Throws UsageError naming the option and the
+// --sampling nearest|bilinear|mipmap (default nearest). Throws UsageError naming the option and the
 // accepted values for any other word.
 Sampling read_sampling(const CliArgs& args);
 

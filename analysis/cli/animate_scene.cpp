@@ -17,6 +17,25 @@
 
 namespace oflab {
 
+namespace {
+
+// The depth-mesh policy's options (core/scene/depth_mesh.h DepthMeshSettings).
+void read_mesh_settings(const CliArgs& a, DepthMeshSettings& m) {
+  if (a.has("--mesh-grid")) m.grid_px = a.integer_in("--mesh-grid", limits::kMeshGrid);
+  if (a.has("--mesh-split")) m.split = a.number_in("--mesh-split", limits::kMeshSplit);
+  if (a.has("--mesh-rebuild")) {
+    m.rebuild_distance = a.number_in("--mesh-rebuild", limits::kMeshRebuild);
+  }
+  if (a.has("--mesh-jump")) m.max_depth_jump = a.number_in("--mesh-jump", limits::kMeshJump);
+  const std::string sheets = a.text_or("--rubber-sheets", "drop");
+  if (sheets != "drop" && sheets != "keep") {
+    throw UsageError("--rubber-sheets: '" + sheets + "' is not one of drop, keep");
+  }
+  m.drop_rubber_sheets = sheets == "drop";
+}
+
+}  // namespace
+
 SceneSettings read_scene_settings(const CliArgs& a) {
   SceneSettings s;
   s.engine = read_engine_settings(a);
@@ -42,6 +61,7 @@ SceneSettings read_scene_settings(const CliArgs& a) {
   if (a.has("--safety-radius")) {
     s.cache.safety_radius = a.number_in("--safety-radius", limits::kSafetyRadius);
   }
+  read_mesh_settings(a, s.mesh);
   return s;
 }
 

@@ -31,7 +31,12 @@ constexpr const char* kEngineOnlyOptions[] = {"--threshold",
                                               "--hole-fill",
                                               "--cache-angle",
                                               "--node-polygons",
-                                              "--safety-radius"};
+                                              "--safety-radius",
+                                              "--mesh-grid",
+                                              "--mesh-split",
+                                              "--mesh-rebuild",
+                                              "--mesh-jump",
+                                              "--rubber-sheets"};
 
 void print_summary(const AnimationRun& run, const std::string& scene, const std::string& script,
                    std::ostream& out) {

@@ -46,8 +46,9 @@ std::string animate_usage() {
       "               [--compare-conventional [--conventional-single-sample]]\n"
       "               [--near Z] [--guard-band G] [--hole-fill none|stretch|background]\n"
       "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
-      "               [--no-skip-hidden] [--warp visible|whole]\n"
-      "               (--compare-conventional needs an X display)\n"
+      "               [--mesh-grid PX] [--mesh-split Z] [--mesh-rebuild D] [--mesh-jump J]\n"
+      "               [--rubber-sheets drop|keep] [--warp visible|whole]\n"
+      "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode " +
       source_kind_modes("|") +
       " --scene NAME|FILE --script NAME|FILE\n"
@@ -108,6 +109,8 @@ std::vector<Command>& command_table() {
        "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
        "               [--warp visible|whole] [--hole-fill none|stretch|background]\n"
        "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
+       "               [--mesh-grid PX] [--mesh-split Z] [--mesh-rebuild D] [--mesh-jump J]\n"
+       "               [--rubber-sheets drop|keep]\n"
        "               [--json] [--out DIR [--force]] [--quiet]\n"
        "  policies: the names of 'oflab-cli policies'",
        run_compare_command},

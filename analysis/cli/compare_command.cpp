@@ -25,7 +25,8 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
     return read_scene_source(a);  // as animate reads it: the same options, the same run
   }
   for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--warp", "--hole-fill",
-                             "--cache-angle", "--node-polygons", "--safety-radius"}) {
+                             "--cache-angle", "--node-polygons", "--safety-radius", "--mesh-grid",
+                             "--mesh-split", "--mesh-rebuild", "--mesh-jump", "--rubber-sheets"}) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
   }
   *kind = &source_kind("plane");
@@ -91,6 +92,8 @@ std::string policy_names_where(Uses uses) {
 
 // An option that only a kind of policy reads, given while no compared policy reads it, would
 // change nothing: refused, naming the option, the policies that read it and those compared.
+bool uses_mesh(const ReusePolicy& p) { return p.pixel_motion == PixelMotion::kFarMesh; }
+
 void refuse_options_without_their_policy(const CliArgs& a,
                                          const std::vector<const ReusePolicy*>& policies) {
   struct Rule {
@@ -106,6 +109,11 @@ void refuse_options_without_their_policy(const CliArgs& a,
          return p.frame_warp == FrameWarp::kPerPixelDepth &&
                 p.pixel_motion == PixelMotion::kViewerStep;
        }},
+      {"--mesh-grid", uses_mesh},
+      {"--mesh-split", uses_mesh},
+      {"--mesh-rebuild", uses_mesh},
+      {"--mesh-jump", uses_mesh},
+      {"--rubber-sheets", uses_mesh},
   };
   for (const Rule& rule : rules) {
     if (!a.has(rule.option)) continue;

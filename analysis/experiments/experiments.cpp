@@ -11,6 +11,7 @@
 #include "experiments/experiments_delta.h"
 #include "experiments/experiments_policies.h"
 #include "experiments/experiments_reprojection.h"
+#include "experiments/experiments_sampling.h"
 #include "experiments/experiments_scene_shifting.h"
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
@@ -19,6 +20,7 @@
 #include "formats/atomic_file.h"
 #include "formats/datasets.h"
 #include "formats/image_io.h"
+#include "generators/fabric_texture.h"
 #include "report/report_machine.h"
 
 namespace oflab {
@@ -96,6 +98,13 @@ ReportSection run_policies_comparison(ExperimentContext& c) {
   return policies_section(r, c);
 }
 
+ReportSection run_sampling(ExperimentContext& c) {
+  const SamplingComparison r =
+      compare_samplings(make_layer(make_fabric_texture()), sampling_spec(c.quick()));
+  for (const std::string& line : sampling_summary_lines(r)) c.progress("sampling", line);
+  return sampling_section(r, c);
+}
+
 const std::vector<Experiment>& experiments() {
   static const std::vector<Experiment> list = {
       {"exp1", "Experiment 1 (6.4, 6.5)", run_exp1},
@@ -107,6 +116,7 @@ const std::vector<Experiment>& experiments() {
       {"policies", "rival reuse policies side by side", run_policies_comparison},
       {"scene-shifting", "scene shifting (chapter 3)", scene_shifting_section},
       {"reprojection", "today's reprojection beside optic flow", run_reprojection},
+      {"sampling", "mipmap against bilinear on a receding plane (7.5.5)", run_sampling},
   };
   return list;
 }

@@ -20,7 +20,8 @@ namespace oflab {
 // "exp1" (section 6.4, 6.5), "delta" (6.3), "warp" (appendix A.2), "exp2" (6.6, 6.7),
 // "sweep" (thresholds 0.25..4 px, section 7.5.1's question), "costs" (time saved against
 // the re-render's cost, break-even), "policies" (rival reuse policies side by side),
-// "scene-shifting" (chapter 3), "reprojection" (today's reprojection beside optic flow).
+// "scene-shifting" (chapter 3), "reprojection" (today's reprojection beside optic flow),
+// "sampling" (mipmap against bilinear on a receding plane, section 7.5.5).
 const std::vector<std::string>& experiment_names();
 
 // What an experiment needs while it runs. Files go to DIR/charts/NAME.png and

@@ -38,9 +38,9 @@ ReprojectionSpec reprojection_spec(bool quick) {
 
 std::vector<const ReusePolicy*> reprojection_policies() {
   std::vector<const ReusePolicy*> out;
-  for (const char* name :
-       {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "mv-extrapolation",
-        "mv-no-inpaint", "view-interpolation", "perspective", "talisman", "hierarchical-cache"}) {
+  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
+                           "mv-extrapolation", "mv-no-inpaint", "view-interpolation", "depth-mesh",
+                           "perspective", "talisman", "hierarchical-cache"}) {
     out.push_back(&reuse_policy(name));
   }
   return out;
@@ -49,7 +49,7 @@ std::vector<const ReusePolicy*> reprojection_policies() {
 std::vector<const ReusePolicy*> one_motion_policies() {
   std::vector<const ReusePolicy*> out;
   for (const char* name : {"perspective", "timewarp", "depth-reprojection", "mv-extrapolation",
-                           "mv-no-inpaint", "view-interpolation"}) {
+                           "mv-no-inpaint", "view-interpolation", "depth-mesh"}) {
     out.push_back(&reuse_policy(name));
   }
   return out;
@@ -352,16 +352,17 @@ ReportSection reprojection_section(const ReprojectionResult& result, ExperimentC
       "the least-squares fit of inverse depth to the visible pixels at each render), per-pixel "
       "depth reprojection (forward splatting, holes counted, fill none), frame generation by "
       "extrapolation along the render's motion vectors without the new pose (mv-extrapolation, "
-      "its disocclusions filled by push-pull inpainting, and without inpainting) and each "
-      "layer's own plane (cadence), all rendering every " +
+      "its disocclusions filled by push-pull inpainting, and without inpainting), view "
+      "interpolation, textured depth meshes of the far part (depth-mesh: the near part rendered "
+      "every frame, the far part's mesh rebuilt at each render; split automatic, 4-pixel grid, "
+      "rubber sheets dropped) and each layer's own plane (cadence), all rendering every " +
       std::to_string(result.spec.cadence) +
-      "nd frame and warping between, beside optic "
-      "flow's threshold rule; the first " +
+      "nd frame and warping between, beside optic flow's threshold rule; the first " +
       std::to_string(result.spec.max_frames) +
       " frames of each Experiment 2 scene under translate, zoom and rotate, of the street "
       "under walk and of the city block under city-flyby. Error: the largest corner displacement "
-      "of a layer (per-layer warps) or the "
-      "largest per-pixel displacement (depth reprojection, frame generation). PSNR and SSIM "
+      "of a layer (per-layer warps) or the largest per-pixel displacement (depth reprojection, "
+      "frame generation, view interpolation, the depth mesh's far part). PSNR and SSIM "
       "against the exact frame (SSIM after Wang et al. 2004, on luma, 11 x 11 Gaussian window; "
       "'-' when not measured, as in a quick run). Work: the cost model's, in pixels "
       "of a perspective warp (a per-pixel warp costs one per pixel of the frame). Latency: "
@@ -384,8 +385,9 @@ ReportSection reprojection_section(const ReprojectionResult& result, ExperimentC
       "Every method from 1993 to today on one motion: optic flow's layers (perspective), "
       "timewarp, depth reprojection (Mark, McMillan and Bishop 97), frame generation by "
       "extrapolation along motion vectors with and without inpainting (the DLSS 3 / FSR 3 "
-      "family, extrapolating) and view interpolation (Chen and Williams 93), on four cubes under "
-      "translate. Holes and inpainted pixels are shares of every pixel of every frame. The "
+      "family, extrapolating), view interpolation (Chen and Williams 93) and textured depth "
+      "meshes (Sillion, Drettakis and Bodelet 97), on four cubes under translate. Holes and "
+      "inpainted pixels are shares of every pixel of every frame. The "
       "milliseconds are the median over the frames each method makes without rendering (every "
       "frame after the first for perspective) of the first 9 frames with the script's camera "
       "widened to the timing size at the same vertical field of view (guard band 0.05: layers "

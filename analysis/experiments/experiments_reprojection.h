@@ -59,13 +59,14 @@ struct ReprojectionResult {
 };
 
 // The policies compared: timewarp, stabilized-plane, depth-reprojection, cadence, frame
-// generation's mv-extrapolation with and without inpainting, perspective, and the
+// generation's mv-extrapolation with and without inpainting, view-interpolation, depth-mesh,
+// perspective, and the
 // dissertation's two named rivals, talisman and hierarchical-cache.
 std::vector<const ReusePolicy*> reprojection_policies();
 
 // The methods of the one-motion table, 1993 to today: the layered perspective policy,
 // timewarp, depth reprojection, frame generation by extrapolation with and without
-// inpainting, and view interpolation (each in reprojection_policies()).
+// inpainting, view interpolation and textured depth meshes (each in reprojection_policies()).
 std::vector<const ReusePolicy*> one_motion_policies();
 
 // Times each policy of one_motion_policies() on four cubes under translate, the script's camera

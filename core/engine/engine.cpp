@@ -29,6 +29,7 @@ PlaneEngine::PlaneEngine(const Camera& camera, Layer texture, const EngineSettin
   if (!samples.empty()) throw std::invalid_argument("content: " + samples);
   const std::string budget = frame_budget_problem(settings_.budget);
   if (!budget.empty()) throw std::invalid_argument("budget: " + budget);
+  keep_pyramid(texture_, texture_mips_);
 }
 
 FrameReport PlaneEngine::start(const PlanePose& pose) { return apply(measure_start(pose).choice); }
@@ -268,25 +269,6 @@ Mat3 PlaneEngine::next_model(const PlanarFlowCoefficients& flow, const PlanePose
   PlanarFlowCoefficients step = flow;
   if (policy().model == ModelUpdate::kAffineTaylor) step.px = step.py = 0.0;  // affine flow model
   return centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
-}
-
-Mat3 PlaneEngine::warp_after(Level level, const Mat3& correction, const Vec2& point,
-                             const Mat3& model) const {
-  switch (level) {
-    case Level::kNone:
-      return displayed_;
-    case Level::kTranslate: {
-      const Vec2 step = translation_step(correction, point);
-      return translation_matrix(step.x, step.y) * displayed_;
-    }
-    case Level::kAffine:
-      return affine_part_at(correction, point) * displayed_;
-    case Level::kPerspective:
-      return model;
-    case Level::kRerender:
-      break;
-  }
-  return displayed_;
 }
 
 void PlaneEngine::measure_choice() {

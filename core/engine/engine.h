@@ -215,6 +215,7 @@ class PlaneEngine {
   struct Cache {
     bool valid = false;
     Layer layer;
+    MipPyramid mips;       // Sampling::kMipmap: layer's pyramid, built when the cache is made
     Mat3 from_texel{1.0};  // texel -> cache layer pixels
     Mat3 to_display{1.0};  // cache layer pixels -> image pixels (affine)
   };
@@ -289,11 +290,16 @@ class PlaneEngine {
   // it; texel_to_image is the warp the layer then shows (for the measured error).
   void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
             FrameReport& report);
-  // Warps `source` into warped_ (memory reused; `only`'s pixels); counts the pixels.
+  // Warps `source` into warped_ (memory reused; `only`'s pixels); counts the pixels. Under
+  // Sampling::kMipmap a source the engine keeps (texture, cache, lit render) is sampled
+  // through the pyramid kept with it (pyramid_of), any other through one built for the warp.
   void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
                     const PixelRows* only = nullptr);
   // A partly warped display: warps what its warp left out that the frame shows now (all).
   void complete_display(FrameReport& report, bool all = false);
+  const MipPyramid* pyramid_of(const Layer& source) const;
+  // Builds `pyramid` of `layer` when the sampling is mipmap: once per render of a layer.
+  void keep_pyramid(const Layer& layer, MipPyramid& pyramid) const;
   void cache_from_display();
   void show_from_cache(FrameReport& report);
   void finish_report(const PlanePose& pose, FrameReport& report) const;
@@ -311,6 +317,7 @@ class PlaneEngine {
 
   Camera camera_;
   Layer texture_;
+  MipPyramid texture_mips_;  // Sampling::kMipmap: the texture's pyramid, built once
   EngineSettings settings_;
   PlacedLayer display_;
   // The warp that made display_.layer (texel -> image pixels) and the layer's offset then:
@@ -327,6 +334,7 @@ class PlaneEngine {
   // Lit content: its last render (kept only when the policy reuses) and the texel -> layer
   // pixel warp it was rendered with; the pose it was lit at.
   Layer rendered_;
+  MipPyramid rendered_mips_;  // Sampling::kMipmap: rendered_'s pyramid
   Mat3 rendered_from_texel_{1.0};
   PlanePose rendered_pose_;
   // Scratch of every warp: swapped with the displayed or the cache layer after a warp, so

@@ -120,6 +120,7 @@ void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
   const Mat3 origin = translation_matrix(warped_.offset_x, warped_.offset_y);
   if (policy().allows_reuse()) {
     rendered_ = warped_.layer;  // the perspective level's source (a copy into kept memory)
+    keep_pyramid(rendered_, rendered_mips_);
     rendered_from_texel_ = glm::inverse(origin) * exact;
   }
   if (policy().initial_view != InitialView::kAffinePart) {
@@ -221,6 +222,7 @@ void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameRepor
   WarpOptions options;
   options.sampling = settings_.sampling;
   options.only = only;
+  options.pyramid = pyramid_of(source);
   warp_layer_reusing(source, warp, warped_, options);
   report.pixels_written += warped_.stats.pixels_written;
   report.pixels_not_warped += warped_.stats.pixels_written - warped_.stats.pixels_computed;
@@ -243,6 +245,7 @@ void PlaneEngine::complete_display(FrameReport& report, bool all) {
     WarpOptions options;
     options.sampling = settings_.sampling;
     options.only = &missing;
+    options.pyramid = pyramid_of(*partial_.source);
     const WarpStats stats = warp_layer_into(*partial_.source, partial_.warp, display_.layer.image,
                                             layer_origin_.x, layer_origin_.y, options);
     report.pixels_not_warped -= stats.pixels_computed;
@@ -251,11 +254,24 @@ void PlaneEngine::complete_display(FrameReport& report, bool all) {
   if (all || !shown_pixels_) partial_.active = false;
 }
 
+const MipPyramid* PlaneEngine::pyramid_of(const Layer& source) const {
+  if (settings_.sampling != Sampling::kMipmap) return nullptr;
+  if (&source == &texture_) return &texture_mips_;
+  if (&source == &cache_.layer) return &cache_.mips;
+  if (&source == &rendered_) return &rendered_mips_;
+  return nullptr;
+}
+
+void PlaneEngine::keep_pyramid(const Layer& layer, MipPyramid& pyramid) const {
+  if (settings_.sampling == Sampling::kMipmap) build_mip_pyramid(layer.image, pyramid);
+}
+
 void PlaneEngine::cache_from_display() {
   // The displayed layer is an exact image of the texture under displayed_, so it can serve
   // as the cache without another warp (its resolution is the output's).
   const Mat3 origin = translation_matrix(display_.offset_x, display_.offset_y);
   cache_.layer = display_.layer;  // a copy into the cache's memory when it is large enough
+  keep_pyramid(cache_.layer, cache_.mips);
   cache_.to_display = origin;
   cache_.from_texel = glm::inverse(origin) * displayed_;
   cache_.valid = true;
@@ -302,6 +318,7 @@ bool PlaneEngine::apply_perspective(const Mat3& target, FrameReport& report) {
     warp_reusing(texture_, texel_to_cache, report);
   }
   std::swap(cache_.layer, warped_.layer);  // the old cache's memory serves the next warp
+  keep_pyramid(cache_.layer, cache_.mips);
   cache_.from_texel = translation_matrix(-warped_.offset_x, -warped_.offset_y) * texel_to_cache;
   cache_.to_display = split.affine * translation_matrix(warped_.offset_x, warped_.offset_y);
   cache_.valid = true;
@@ -363,6 +380,25 @@ void PlaneEngine::apply_level(FrameReport& report, const Vec2& expansion_point,
     report.note = "sampling limit: the cache would be magnified too much";
     rerender(current, report);
   }
+}
+
+Mat3 PlaneEngine::warp_after(Level level, const Mat3& correction, const Vec2& point,
+                             const Mat3& model) const {
+  switch (level) {
+    case Level::kNone:
+      return displayed_;
+    case Level::kTranslate: {
+      const Vec2 step = translation_step(correction, point);
+      return translation_matrix(step.x, step.y) * displayed_;
+    }
+    case Level::kAffine:
+      return affine_part_at(correction, point) * displayed_;
+    case Level::kPerspective:
+      return model;
+    case Level::kRerender:
+      break;
+  }
+  return displayed_;
 }
 
 }  // namespace oflab

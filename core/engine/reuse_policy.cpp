@@ -96,6 +96,21 @@ ReusePolicy view_interpolation() {
   return p;
 }
 
+// Textured depth meshes (Sillion, Drettakis & Bodelet 97; core/scene/depth_mesh.h): the far
+// part drawn as a mesh of its last render's depth, the near part rendered every frame.
+ReusePolicy depth_mesh() {
+  ReusePolicy p = on_cadence(
+      "depth-mesh",
+      "textured depth meshes: near part rendered, far part a mesh of its rendered depth",
+      ModelUpdate::kExact, FramePlane::kInfinity, FrameWarp::kPerPixelDepth,
+      "textured depth meshes (Sillion, Drettakis & Bodelet 97): a far impostor of urban "
+      "scenery, lifted by its depth, the near part rendered",
+      "depth discontinuities in the far part: rubber sheets, or holes where they are dropped; "
+      "triangles across a crease cut the corner");
+  p.pixel_motion = PixelMotion::kFarMesh;
+  return p;
+}
+
 }  // namespace
 
 LevelPixels estimate_level_pixels(std::int64_t displayed_px, std::int64_t cache_px) {
@@ -147,6 +162,8 @@ bool needs_scene(const ReusePolicy& policy, std::string* why) {
     reason = "its motion vectors and depth are a rendered scene frame's";
   } else if (policy.pixel_motion == PixelMotion::kBetweenRenders) {
     reason = "its two views' depths are rendered scene frames, the later one a viewer script's";
+  } else if (policy.pixel_motion == PixelMotion::kFarMesh) {
+    reason = "its near and far parts are a scene's polygons";
   }
   if (reason && why) *why = reason;
   return reason != nullptr;
@@ -233,6 +250,7 @@ const std::vector<ReusePolicy>& reuse_policies() {
                        "frame generation along motion vectors, disocclusions left empty", false,
                        "as mv-extrapolation, with its disocclusions left as holes"),
       view_interpolation(),
+      depth_mesh(),
       lookahead(),
   };
   return policies;
@@ -247,6 +265,9 @@ const char* level_word(const ReusePolicy& policy, Level level) {
   }
   if (policy.pixel_motion == PixelMotion::kBetweenRenders) {
     return level == Level::kRerender ? "rendered" : "interpolated";
+  }
+  if (policy.pixel_motion == PixelMotion::kFarMesh) {
+    return level == Level::kRerender ? "rendered" : "meshed";
   }
   if (policy.schedule == Schedule::kCadence) {
     return level == Level::kRerender ? "rendered" : "reprojected";

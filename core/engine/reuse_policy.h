@@ -41,6 +41,10 @@
 //                       by its depth to the viewer now, nearest surface kept
 //                       (core/scene/view_interpolation.h); it waits for the later render, so it
 //                       shows each frame cadence - 1 frames late.
+// Textured depth meshes (Sillion, Drettakis & Bodelet 97), scenes only:
+//   depth-mesh          the near part rendered every frame, the far part (beyond a split depth)
+//                       drawn as a mesh lifted from its rendered depth and textured with its
+//                       render, rebuilt on the cadence (core/scene/depth_mesh.h).
 // The dissertation's other named rival (section 2.4.7):
 //   hierarchical-cache  Shade et al. 96: BSP nodes cached as images on quads facing the viewer,
 //                       warped by the quad's homography, re-rendered by an angular error at
@@ -110,8 +114,10 @@ enum class FrameWarp { kPerLayer, kPerPixelDepth, kNodeImages };
 // along the render's per-pixel motion vectors extrapolated to the new time without the new pose
 // (frame generation by extrapolation, core/scene/frame_generation.h), or, with the render that
 // follows as well, both moved by the viewer's true step to the pose between them (view
-// interpolation, core/scene/view_interpolation.h: it waits for the later render).
-enum class PixelMotion { kViewerStep, kMotionVectors, kBetweenRenders };
+// interpolation, core/scene/view_interpolation.h: it waits for the later render); or only the
+// far part's pixels, as the vertices of a mesh lifted by their depth and drawn from the viewer
+// now, the near part rendered (textured depth meshes, core/scene/depth_mesh.h).
+enum class PixelMotion { kViewerStep, kMotionVectors, kBetweenRenders, kFarMesh };
 // "per-layer", "per-pixel-depth" or "node-images".
 const char* frame_warp_name(FrameWarp warp);
 
@@ -228,13 +234,14 @@ bool reports_holes(const ReusePolicy& policy);
 // True when the policy plays scenes only: the hierarchical cache (a single plane has no BSP
 // tree to group), motion-vector extrapolation (core/scene/frame_generation.h works on a
 // scene's rendered frame and depth) and view interpolation (the same, and the views to come
-// of a viewer script). `why` receives the reason, for one-line refusals.
+// of a viewer script) and the depth mesh (its near and far parts are a scene's polygons). `why`
+// receives the reason, for one-line refusals.
 bool needs_scene(const ReusePolicy& policy, std::string* why = nullptr);
 
 // What `policy` did to a layer it showed at `level`, in that policy's own words, for captions
 // and legends: Algorithm 1's level names ("none" .. "rerender", level_name) for the policies
 // of the threshold rule; "rendered" or "generated" for motion-vector extrapolation;
-// "rendered" or "interpolated" for view interpolation;
+// "rendered" or "interpolated" for view interpolation; "rendered" or "meshed" for the depth mesh;
 // "rendered" or "reprojected" for the other policies on a fixed cadence (its warp
 // level is a reprojection of the last render, not a Taylor level); "rendered" or "cached" for
 // the hierarchical cache (a node's cached image warped onto its quad). Never null.

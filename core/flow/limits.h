@@ -81,6 +81,13 @@ inline constexpr Limit kStabilizationPlane{"stabilization plane coordinate", "u"
 inline constexpr Limit kCacheAngle{"cache angle", "deg", 0.001, 10.0};
 inline constexpr Limit kCacheNodePolygons{"node polygons", "polygons", 1.0, 10000.0, true};
 inline constexpr Limit kSafetyRadius{"safety radius", "u", 0.0, 10000.0};
+// The textured depth mesh (core/scene/depth_mesh.h DepthMeshSettings): its grid spacing,
+// pixels; the split depth and the viewer travel that rebuilds it, world units (0: automatic,
+// and the cadence alone); the relative depth jump of a rubber sheet.
+inline constexpr Limit kMeshGrid{"mesh grid", "px", 1.0, 64.0, true};
+inline constexpr Limit kMeshSplit{"mesh split", "u", 0.0, 10000.0};
+inline constexpr Limit kMeshRebuild{"mesh rebuild distance", "u", 0.0, 10000.0};
+inline constexpr Limit kMeshJump{"mesh depth jump", "", 0.001, 1000.0};
 // Layer content quality: samples per pixel of shaded content, detail of impostors
 // (core/content/layer_content.h, whose kMaxContentQuality is this maximum).
 inline constexpr Limit kContentQuality{"content quality", "", 1.0, 256.0, true};

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "image/mipmap_kernel.h"
 #include "image/scan_conversion.h"
 #include "image/warp_kernels.h"
 #include "image/warp_plan.h"
@@ -78,10 +79,43 @@ void clear_previous(const ConvexPolygon& old_polygon, int old_width, int old_hei
   }
 }
 
+// Runs the plan's kernel; a mipmap plan samples the options' pyramid of `source`, or one
+// built here when the options give none. Adds the pixels sampled to *computed.
+std::int64_t run_kernel(const WarpPlan& plan, const Image& source, Image& output,
+                        const WarpOptions& options, std::int64_t* computed) {
+  if (plan.sampling != Sampling::kMipmap) return run_warp_kernel(plan, source, output, computed);
+  if (options.pyramid == nullptr) {
+    thread_local MipPyramid pyramid;  // memory kept from warp to warp
+    build_mip_pyramid(source, pyramid);
+    return run_mipmap_kernel(plan, source, pyramid, output, computed);
+  }
+  return run_mipmap_kernel(plan, source, *options.pyramid, output, computed);
+}
+
+// A given pyramid must be of the source's image: its size is checked before anything is
+// written.
+void check_pyramid(const Layer& source, const WarpOptions& options) {
+  if (options.sampling == Sampling::kMipmap && options.pyramid != nullptr &&
+      !options.pyramid->fits(source.image)) {
+    throw std::invalid_argument(
+        "warp: the mip pyramid was built from a " + std::to_string(options.pyramid->base_width) +
+        " x " + std::to_string(options.pyramid->base_height) + " image, the source is " +
+        std::to_string(source.image.width()) + " x " + std::to_string(source.image.height()));
+  }
+}
+
 }  // namespace
 
 const char* sampling_name(Sampling sampling) {
-  return sampling == Sampling::kBilinear ? "bilinear" : "nearest";
+  switch (sampling) {
+    case Sampling::kBilinear:
+      return "bilinear";
+    case Sampling::kMipmap:
+      return "mipmap";
+    case Sampling::kNearest:
+      break;
+  }
+  return "nearest";
 }
 
 bool parse_sampling(const std::string& text, Sampling* sampling) {
@@ -103,13 +137,14 @@ std::string sampling_name_list(const std::string& separator) {
 
 WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image& output,
                           int output_origin_x, int output_origin_y, const WarpOptions& options) {
+  check_pyramid(source, options);
   const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);
   WarpPlan plan = plan_warp(prepared, options.sampling, output.width(), output.height(),
                             output_origin_x, output_origin_y);
   WarpStats stats;
   stats.kernel_used = kernel_name(prepared.affine_kernel);
   plan.only = options.only;
-  stats.pixels_written = run_warp_kernel(plan, source.image, output, &stats.pixels_computed);
+  stats.pixels_written = run_kernel(plan, source.image, output, options, &stats.pixels_computed);
   return stats;
 }
 
@@ -122,6 +157,7 @@ WarpedLayer warp_layer(const Layer& source, const Mat3& source_to_dest,
 
 void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedLayer& result,
                         const WarpOptions& options) {
+  check_pyramid(source, options);
   const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);
   WarpStats stats;
   stats.kernel_used = kernel_name(prepared.affine_kernel);
@@ -143,7 +179,7 @@ void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedL
   image.reshape(width, height);
   clear_previous(result.layer.polygon, old_width, old_height, spans, image);
   plan.only = options.only;
-  stats.pixels_written = run_warp_kernel(plan, source.image, image, &stats.pixels_computed);
+  stats.pixels_written = run_kernel(plan, source.image, image, options, &stats.pixels_computed);
   // plan.polygon is the warped polygon in the new layer's pixel coordinates.
   result.layer.polygon = std::move(plan.polygon);
   result.offset_x = x0;

@@ -38,18 +38,19 @@
 #include "flow/geometry.h"
 #include "image/image.h"
 #include "image/layer.h"
+#include "image/mip_pyramid.h"
 #include "image/pixel_rows.h"
 
 namespace oflab {
 
-enum class Sampling { kNearest, kBilinear };
-constexpr int kSamplingCount = 2;
+enum class Sampling { kNearest, kBilinear, kMipmap };
+constexpr int kSamplingCount = 3;
 
-// The one vocabulary of samplings: sampling_name gives "nearest" or "bilinear" (the words
-// of options, session files and JSON); parse_sampling accepts exactly those and returns
-// false, leaving *sampling unchanged, for anything else; sampling_name_list joins the
-// names with `separator`: "nearest, bilinear" for error messages, "nearest|bilinear" for
-// usage lines.
+// The one vocabulary of samplings: sampling_name gives "nearest", "bilinear" or "mipmap"
+// (the words of options, session files and JSON); parse_sampling accepts exactly those and
+// returns false, leaving *sampling unchanged, for anything else; sampling_name_list joins
+// the names with `separator`: "nearest, bilinear, mipmap" for error messages,
+// "nearest|bilinear|mipmap" for usage lines.
 const char* sampling_name(Sampling sampling);
 bool parse_sampling(const std::string& text, Sampling* sampling);
 std::string sampling_name_list(const std::string& separator = ", ");
@@ -66,12 +67,18 @@ struct WarpOptions {
   Sampling sampling = Sampling::kNearest;
   WarpKernel kernel = WarpKernel::kAutomatic;
   double horizon_epsilon = kDefaultHorizonEpsilon;
+  // Sampling::kMipmap only: the source image's pyramid (build_mip_pyramid), kept by the
+  // caller with its layer so that it is built once per layer, not once per warp. Null: the
+  // warp builds one for itself. A pyramid of another size than the source's image is refused
+  // (std::invalid_argument); one built from other pixels of that size is the caller's error.
+  const MipPyramid* pyramid = nullptr;
   // A partial warp: when set, only output pixels whose destination pixel (output pixel plus
   // the output's origin) is in `only` are computed, with, for the affine kernel's bilinear
   // sampling, the rest of their blocks of kPartialWarpBlock columns; the others inside the
   // polygon keep what the output held. Every pixel computed is the same bytes as in the whole
   // warp: each pixel of the other kernels depends on its own exact position only, and the
-  // affine bilinear blocks start where its fixed-point runs restart. Null: the whole polygon.
+  // affine bilinear blocks start where its fixed-point runs restart (mipmap: as bilinear, a
+  // blended level pair writing the wanted pixels only). Null: the whole polygon.
   const PixelRows* only = nullptr;
 };
 

@@ -29,8 +29,9 @@
 
 namespace oflab {
 
-// Runs the plan's kernel (plan.affine_kernel) with its sampling, over the whole polygon or
-// a partial warp's pixels (plan.only, WarpOptions::only in core/image/warp.h).
+// Runs the plan's kernel (plan.affine_kernel) with its sampling, nearest or bilinear (a
+// mipmap plan runs in core/image/mipmap_kernel.h, which calls this per level), over the whole
+// polygon or a partial warp's pixels (plan.only, WarpOptions::only in core/image/warp.h).
 // Preconditions: output.width() == plan.output_width, output.height() ==
 // plan.output_height, and `source` is the image of the layer the plan was prepared for.
 // Returns the number of output pixels inside the polygon (WarpStats::pixels_written) and

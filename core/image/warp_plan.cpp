@@ -122,7 +122,8 @@ WarpPlan plan_warp(const PreparedWarp& prepared, Sampling sampling, int output_w
 
   // Output pixel coordinates -> destination -> source -> sampling position.
   Mat3 dest_to_sample = glm::inverse(prepared.matrix) * translation_matrix(origin_x, origin_y);
-  if (sampling == Sampling::kBilinear) {
+  plan.dest_to_source = dest_to_sample;
+  if (sampling != Sampling::kNearest) {  // bilinear, and mipmap's level 0
     dest_to_sample = translation_matrix(-0.5, -0.5) * dest_to_sample;
   }
   if (plan.affine_kernel) {
@@ -131,6 +132,9 @@ WarpPlan plan_warp(const PreparedWarp& prepared, Sampling sampling, int output_w
     entry(dest_to_sample, 2, 0) = 0.0;
     entry(dest_to_sample, 2, 1) = 0.0;
     entry(dest_to_sample, 2, 2) = 1.0;
+    entry(plan.dest_to_source, 2, 0) = 0.0;
+    entry(plan.dest_to_source, 2, 1) = 0.0;
+    entry(plan.dest_to_source, 2, 2) = 1.0;
   }
   plan.map = make_inverse_map(dest_to_sample, region, plan.affine_kernel);
   plan.empty = false;

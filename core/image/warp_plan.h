@@ -30,7 +30,11 @@ struct WarpPlan {
   bool affine_kernel = true;
   Sampling sampling = Sampling::kNearest;
   ConvexPolygon polygon;  // warped polygon in output pixel coordinates
-  InverseMap map;         // output pixel -> sampling position (inverse_map.h)
+  InverseMap map;         // output pixel -> sampling position (inverse_map.h); mipmap:
+                          // level 0's bilinear map
+  // Output pixel coordinates -> continuous source coordinates (M^-1 with the output's
+  // origin; no half-pixel shift): where the mipmap kernel finds each pixel's footprint.
+  Mat3 dest_to_source{1.0};
   int output_width = 0;
   int output_height = 0;
   int origin_x = 0;  // destination coordinates of output pixel (0, 0)'s corner

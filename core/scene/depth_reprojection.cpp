@@ -236,7 +236,7 @@ int DepthFrame::covered() const {
 }
 
 DepthFrame render_depth(const Scene& scene, const Camera& camera, const ViewerPose& view,
-                        double near) {
+                        double near, const std::vector<char>* only) {
   DepthFrame depth;
   depth.width = camera.width;
   depth.height = camera.height;
@@ -249,6 +249,7 @@ DepthFrame render_depth(const Scene& scene, const Camera& camera, const ViewerPo
   std::vector<int> drawn;
   std::vector<ConvexPolygon> regions;
   for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+    if (only && !(*only)[i]) continue;
     const ScenePolygon& polygon = scene.polygons[i];
     const Vec3 front = direction_to_view(view, polygon.front);
     const Vec3 centre = to_view(view, polygon.centre);

@@ -48,9 +48,10 @@ struct DepthFrame {
 // The depth of `scene` seen from `view` with `camera`: each front-facing polygon clipped to
 // the view frustum (near plane Z = near > 0) and scan-converted (pixel-centre rule of
 // core/image/scan_conversion.h), nearest surface kept. Geometry only: texels of any alpha
-// count as surface.
+// count as surface. `only`, when given (one entry per polygon), keeps the polygons whose entry is
+// non-zero (the depth mesh's near part), the others are left out.
 DepthFrame render_depth(const Scene& scene, const Camera& camera, const ViewerPose& view,
-                        double near);
+                        double near, const std::vector<char>* only = nullptr);
 
 // The rigid step (core/flow/reprojection.h) from the viewer frame of `from` to that of `to`:
 // R = Q_to Q_from^T, t = s_to - R s_from.

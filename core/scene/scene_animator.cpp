@@ -17,16 +17,6 @@ namespace {
 
 using Clock = WallClock;
 
-// The intersection of two convex polygons: `a` clipped by every edge of `b`.
-ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
-  const std::vector<Vec2>& v = b.vertices();
-  for (std::size_t k = 0; k < v.size() && !a.empty(); ++k) {
-    const Vec2 e = v[(k + 1) % v.size()] - v[k];
-    a = clip_to_half_plane(a, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
-  }
-  return b.empty() ? ConvexPolygon() : a;
-}
-
 // Throws std::invalid_argument naming the first problem of a scene engine's inputs: the
 // camera, the budget, the near plane, the guard band, the hidden test's margins, a polygon,
 // the scene's memory and its contents' detail (see SceneEngine's constructor).
@@ -52,6 +42,9 @@ void check_scene_inputs(const Scene& scene, const Camera& camera, const SceneSet
       throw std::invalid_argument("polygon " + std::to_string(i) + " ('" + scene.polygons[i].name +
                                   "'): " + p.field + ": " + p.message);
     }
+  }
+  if (const std::string problem = depth_mesh_settings_problem(settings.mesh); !problem.empty()) {
+    throw std::invalid_argument(problem);
   }
   if (const std::string problem = scene_memory_problem(scene, camera, settings.guard_band);
       !problem.empty()) {
@@ -99,6 +92,7 @@ AnimationFrame SceneEngine::start(const ViewerPose& view) {
   plane_known_ = false;
   has_render_ = false;
   next_index_ = -1;
+  split_ = 0.0;
   source_of_.clear();
   for (auto& s : states_) s->live = false;
   if (cache_) cache_->restart();
@@ -341,6 +335,11 @@ AnimationFrame SceneEngine::run_frame(const ViewerPose* previous, const RigidMot
     report.time_ms += ms_since(t0);
     return report;
   }
+  if (policy.pixel_motion == PixelMotion::kFarMesh) {
+    const double diagnostics_ms = mesh_frame(previous, motion, current, report);
+    report.time_ms = ms_since(t0) - diagnostics_ms - report.budget.check_ms;
+    return report;
+  }
   if (per_pixel && has_render_ && !cadence_frame()) {
     // Time left out: the diagnostics, and view interpolation's next render made ahead.
     double excluded_ms = 0.0;
@@ -368,6 +367,7 @@ void SceneEngine::render_frame(const ViewerPose* previous, const RigidMotion* mo
                       policy.frame_plane == FramePlane::kStabilization;
   if (uses_frame_plane_) update_frame_plane(current);
   classify(current, report);
+  if (!set_aside_.empty()) set_aside_polygons();
   bsp_.back_to_front(eye_position(current), order_);
   measure_polygons(previous, motion, current, report);
   allocate_polygons(report);
@@ -377,29 +377,6 @@ void SceneEngine::render_frame(const ViewerPose* previous, const RigidMotion* mo
   const auto t1 = Clock::now();
   compose(report);
   report.composite_ms = ms_since(t1);
-}
-
-void SceneEngine::add_occluder(int fragment, const PlacedLayer& shown) {
-  // What this fragment certainly paints opaque hides whatever is tested after it.
-  const PolygonLayer& s = *states_[bsp_.fragments()[fragment].polygon];
-  const bool visible_only = settings_.engine.warp_area == WarpArea::kVisible;
-  if (s.whole) {
-    occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
-                            Vec2(shown.offset_x, shown.offset_y));
-    if (visible_only) {
-      shown_pixels_.remove_centres_inside(
-          eroded(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
-                 settings_.occluder_inset_px));
-    }
-  } else {
-    const ConvexPolygon drawn =
-        intersection(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
-                     fragment_regions_[fragment]);
-    occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
-    if (visible_only) {
-      shown_pixels_.remove_centres_inside(eroded(drawn, settings_.occluder_inset_px));
-    }
-  }
 }
 
 void SceneEngine::tally_hidden_and_stale(AnimationFrame& report) {

@@ -48,6 +48,13 @@
 // that render's time is counted at its own frame, where it is rendered again and shown), and
 // makes every frame between from both (interpolate_views, core/scene/view_interpolation.h).
 //
+// The depth-mesh policy (PixelMotion::kFarMesh; mesh_frames.cpp) splits the polygons at the
+// mesh's build into near and far (far_polygons, core/scene/depth_mesh.h); at each cadence frame,
+// or once the viewer has moved SceneSettings::mesh.rebuild_distance, it renders the far part
+// alone, keeps it with its depth and builds the mesh; every frame it renders the near part and
+// merges it by depth with the far render (at a build) or with the mesh drawn from the viewer now.
+// Near polygons count as re-rendered, far ones as re-rendered at a build and perspective between.
+//
 // The hierarchical-cache policy (FrameWarp::kNodeImages) classifies the polygons as above, then
 // hands the frame to core/scene/hierarchical_cache.h: nodes of the BSP tree instead of
 // polygons, no hidden test.
@@ -76,6 +83,7 @@
 #include "engine/engine.h"
 #include "scene/bsp_tree.h"
 #include "scene/cache_nodes.h"
+#include "scene/depth_mesh.h"
 #include "scene/depth_reprojection.h"
 #include "scene/frame_generation.h"
 #include "scene/hierarchical_cache.h"
@@ -112,6 +120,8 @@ struct SceneSettings {
   // The hierarchical-cache policy's threshold, grouping and safety sphere
   // (core/scene/cache_nodes.h); other policies ignore it.
   CacheSettings cache;
+  // The depth-mesh policy's grid, split, rebuild distance and rubber sheets.
+  DepthMeshSettings mesh;
 };
 
 // The engine of a scene, driven view by view by its caller. Not an Animator
@@ -171,6 +181,10 @@ class SceneEngine {
   const std::vector<int>& reprojection_sources() const { return source_of_; }
   // The hierarchical-cache policy's cache; null under other policies.
   const HierarchicalCache* cache() const { return cache_.get(); }
+  // The depth-mesh policy: the last mesh, the far polygons of its build and the split depth.
+  const DepthMesh& depth_mesh() const { return mesh_; }
+  const std::vector<char>& far_part() const { return far_; }
+  double mesh_split() const { return split_; }
 
  private:
   // The frame loop (scene_animator.cpp): classify (cull and find the polygons to clip),
@@ -227,6 +241,14 @@ class SceneEngine {
                      std::int64_t pixels_written, std::int64_t source_pixels, double max_error_px,
                      const ViewerPose& current, AnimationFrame& report);
   void mark_reprojected(const ViewerPose& current, AnimationFrame& report);
+  // The depth mesh (mesh_frames.cpp): the frame (returns its diagnostics' milliseconds), the
+  // polygons a render pass leaves out (set_aside_) set aside after classify, one pass.
+  double mesh_frame(const ViewerPose* previous, const RigidMotion* motion,
+                    const ViewerPose& current, AnimationFrame& report);
+  void build_mesh(const ViewerPose* previous, const RigidMotion* motion, const ViewerPose& current,
+                  AnimationFrame& report);
+  void set_aside_polygons();
+  void mark_meshed(bool built, AnimationFrame& report);
   void cache_frame(const ViewerPose& current, AnimationFrame& report);
 
   // The per-polygon steps (polygon_layer.cpp): the measure and allocate phases (step 4) of
@@ -291,6 +313,12 @@ class SceneEngine {
   DepthFrame next_depth_;
   ViewerPose next_view_;
   int next_index_ = -1;
+  // The depth mesh: the polygons a render pass leaves out (empty: none), the far part of the
+  // build, the split depth (0 until frame 0 sets it) and the mesh.
+  std::vector<char> set_aside_;
+  std::vector<char> far_;
+  double split_ = 0.0;
+  DepthMesh mesh_;
   std::unique_ptr<HierarchicalCache> cache_;  // the hierarchical-cache policy only
 };
 

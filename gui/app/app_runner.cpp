@@ -19,6 +19,7 @@
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "player/stage_times.h"
+#include "views/study_window.h"
 #include "views/view_page.h"
 
 namespace oflab {
@@ -223,6 +224,43 @@ std::string launch_problem(const LaunchOptions& options, std::string problem) {
 
 }  // namespace
 
+int run_study(MainWindow* window, const LaunchOptions& options, std::ostream& out,
+              std::ostream& err) {
+  const StudyLaunch& s = options.study;
+  StudyWindow* study = window->open_study_window();
+  study->resize(options.width, options.height);
+  study->select_study(*s.study);
+  study->set_fields(s.method, s.observer, s.ppi, s.seed);
+  if (s.simulate_px > 0.0) {
+    SimulatedObserver observer(s.seed, PsychometricFunction{s.simulate_px, s.study->assumed_slope,
+                                                            s.study->assumed_lapse});
+    const std::string problem = study->run_simulated(observer);
+    const std::string error = problem.empty() ? study->write_csv(s.csv, s.force) : problem;
+    if (!error.empty()) {
+      err << "oflab: --study-csv: " << error << "\n";
+      return 1;
+    }
+    out << "oflab: wrote " << s.csv << ": " << study->session()->trials().size() << " trials of "
+        << s.study->name << " (" << s.method << ", seed " << s.seed << ")\n";
+  }
+  if (options.screenshot.empty()) return s.simulate_px > 0.0 ? 0 : QApplication::exec();
+  if (options.frames > 0 && s.simulate_px <= 0.0) {  // the first trial at its frame
+    study->start();
+    QElapsedTimer waited;
+    waited.start();
+    while (study->first_clip_frame() < options.frames && study->setup_status().empty() &&
+           waited.elapsed() < 30000) {
+      QApplication::processEvents(QEventLoop::AllEvents, 5);
+    }
+  }
+  QApplication::processEvents();
+  const QImage image = study->grab().toImage();
+  if (!write_png(image, options.screenshot, "--screenshot", err)) return 1;
+  out << "oflab: wrote " << options.screenshot << " (" << image.width() << " x " << image.height()
+      << ", the study window)\n";
+  return 0;
+}
+
 int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err) {
   set_worker_threads(options.threads);
   MainWindow window;
@@ -237,6 +275,7 @@ int run_oflab(const LaunchOptions& options, std::ostream& out, std::ostream& err
     return 1;
   }
   if (!options.check_lessons.empty()) return check_lessons(&window, options, out, err);
+  if (options.study.study) return run_study(&window, options, out, err);
   if (!options.screenshot.empty()) return take_screenshot(&window, options, out, err);
   if (options.benchmark > 0) return run_benchmark(&window, options, out);
   return QApplication::exec();

@@ -44,6 +44,17 @@ int run_benchmark(MainWindow* window, const LaunchOptions& options, std::ostream
 // holds, 1 otherwise.
 int check_lessons(MainWindow* window, const LaunchOptions& options, std::ostream& out);
 
+// --study: opens the study window on options.study's study with its fields set. With
+// --study-simulate, a simulated observer (study/study_session.h SimulatedObserver, seeded by
+// the study seed, the study's assumed slope and lapse) answers every presentation in it and the
+// trials go to --study-csv: 0, or 1 when the file cannot be written (one line on `err`).
+// With --screenshot the study window is saved as PNG and oflab exits: its set-up page, its
+// results after a simulated run, or with --frames N the first trial's first clip at frame N
+// (after the rate check; the set-up page with its refusal when the display failed it); without
+// either the window stays open (the event loop).
+int run_study(MainWindow* window, const LaunchOptions& options, std::ostream& out,
+              std::ostream& err);
+
 // The whole program after parsing: needs a QApplication. Applies the session first, if one
 // is given; a file it names that cannot be used ends the program with one line on `err`
 // and exit code 2, as bad input on the command line does. Returns the exit code.

@@ -21,6 +21,7 @@
 #include "player/animation_sources.h"
 #include "runs/policy_runs.h"
 #include "state/window_state_file.h"
+#include "study/adaptive_methods.h"
 
 namespace oflab {
 namespace {
@@ -280,8 +281,9 @@ void read_run_mode(const CliArgs& cli, LaunchOptions* options) {
   if (cli.has("--screenshot") && options->screenshot.empty()) {
     throw UsageError("--screenshot: the file name is empty");
   }
-  if (cli.has("--force") && options->screenshot.empty() && !cli.has("--step-shots")) {
-    throw UsageError("--force: only used with --screenshot or --step-shots");
+  if (cli.has("--force") && options->screenshot.empty() && !cli.has("--step-shots") &&
+      !cli.has("--study-csv")) {
+    throw UsageError("--force: only used with --screenshot, --step-shots or --study-csv");
   }
   if (!options->screenshot.empty()) {
     // As oflab-cli's outputs: PNG by its extension, no overwrite without --force, never a
@@ -336,17 +338,62 @@ const std::vector<std::string>& screenshot_view_names() {
   return names;
 }
 
+// --study and the options that go with it.
+void read_study(const CliArgs& cli, LaunchOptions* options) {
+  for (const char* o : {"--study-method", "--study-seed", "--study-observer", "--study-ppi",
+                        "--study-simulate", "--study-csv"}) {
+    if (cli.has(o) && !cli.has("--study"))
+      throw UsageError(std::string(o) + ": only used with --study");
+  }
+  if (!cli.has("--study")) return;
+  StudyLaunch& s = options->study;
+  try {
+    s.study = find_or_read_study(cli.values("--study").at(0));
+  } catch (const StudyError& e) {
+    throw UsageError("--study: " + std::string(e.what()));
+  }
+  s.method = cli.text_or("--study-method", s.study->method);
+  if (!find_adaptive_method(s.method)) {
+    throw UsageError("--study-method: unknown method '" + s.method +
+                     "' (known: " + adaptive_method_names() + ")");
+  }
+  s.seed = cli.has("--study-seed")
+               ? std::uint64_t(cli.integer_in("--study-seed", study_limits::kSeed))
+               : s.study->seed;
+  s.observer = cli.text_or("--study-observer", cli.has("--study-simulate") ? "simulated" : "");
+  if ((cli.has("--study-observer") && s.observer.empty()) ||
+      s.observer.find_first_of(",\n\r") != std::string::npos) {
+    throw UsageError("--study-observer: a name without commas or line breaks");
+  }
+  s.ppi = cli.has("--study-ppi") ? cli.number_in("--study-ppi", study_limits::kPpi) : 96.0;
+  if (cli.has("--study-simulate") != cli.has("--study-csv")) {
+    throw UsageError("--study-simulate: give it with --study-csv FILE, the trials' file");
+  }
+  if (!cli.has("--study-simulate")) return;
+  s.simulate_px = cli.number_in("--study-simulate", study_limits::kErrorPx);
+  if (s.simulate_px < s.study->min_px || s.simulate_px > s.study->max_px) {
+    throw UsageError("--study-simulate: " + std::to_string(s.simulate_px) +
+                     " px is outside the study's error range");
+  }
+  s.csv = cli.values("--study-csv").at(0);
+  s.force = cli.has("--force");
+  check_out_file("--study-csv", s.csv, s.force);
+}
+
 LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
-  const CliArgs cli(args, {{"--session", 1},        {"--lesson", 1},     {"--scene", 1},
-                           {"--script", 1},         {"--source", 1},     {"--mode", 1},
-                           {"--animation-show", 1}, {"--compare", 1},    {"--animation-exact", 1},
-                           {"--view", 1},           {"--screenshot", 1}, {"--whole-window", 0},
-                           {"--frames", 1},         {"--benchmark", 1},  {"--size", 2},
-                           {"--flow-show", 1},      {"--flow-draw", 1},  {"--basis", 1},
-                           {"--presentation", 0},   {"--help", 0},       {"--check-lesson", 1},
-                           {"--step-shots", 1},     {"--force", 0},      {"--cause-and-effect", 0},
-                           {"--basis-explorer", 0}, {"--threads", 1},    {"--time-claims", 0},
-                           {"--world-camera", 1},   {"--claim-kinds", 1}});
+  const CliArgs cli(args,
+                    {{"--session", 1},        {"--lesson", 1},         {"--scene", 1},
+                     {"--script", 1},         {"--source", 1},         {"--mode", 1},
+                     {"--animation-show", 1}, {"--compare", 1},        {"--animation-exact", 1},
+                     {"--view", 1},           {"--screenshot", 1},     {"--whole-window", 0},
+                     {"--frames", 1},         {"--benchmark", 1},      {"--size", 2},
+                     {"--flow-show", 1},      {"--flow-draw", 1},      {"--basis", 1},
+                     {"--presentation", 0},   {"--help", 0},           {"--check-lesson", 1},
+                     {"--step-shots", 1},     {"--force", 0},          {"--cause-and-effect", 0},
+                     {"--basis-explorer", 0}, {"--threads", 1},        {"--time-claims", 0},
+                     {"--world-camera", 1},   {"--claim-kinds", 1},    {"--study", 1},
+                     {"--study-method", 1},   {"--study-seed", 1},     {"--study-observer", 1},
+                     {"--study-ppi", 1},      {"--study-simulate", 1}, {"--study-csv", 1}});
   LaunchOptions options;
   options.help = cli.has("--help");
   read_base_state(cli, &options);
@@ -370,6 +417,7 @@ LaunchOptions parse_launch_options(const std::vector<std::string>& args) {
   read_run_mode(cli, &options);
   read_size(cli, &options);
   read_view_overrides(cli, &options);
+  read_study(cli, &options);
   const std::string problem = window_state_problem(options.state);
   if (!problem.empty()) throw UsageError(problem);
   return options;
@@ -406,7 +454,15 @@ std::string launch_usage() {
          "             [--world-camera orbit|eye]\n"
          "             [--threads N (the pixel loops' threads; default: the machine's cores)]\n"
          "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]] [--time-claims]\n"
-         "                [--claim-kinds K1,K2,... (only these kinds of claims)]] [--help]\n"
+         "                [--claim-kinds K1,K2,... (only these kinds of claims)]]\n"
+         "             [--study NAME|FILE [--study-method M] [--study-seed S] [--study-observer "
+         "NAME]\n"
+         "                [--study-ppi P] [--study-simulate PX --study-csv FILE [--force]]] "
+         "[--help]\n"
+         "  --study: the threshold study's window (how much error can you see?); with "
+         "--study-simulate\n"
+         "    a simulated observer of threshold PX answers in it and --study-csv gets the "
+         "trials\n"
          "  views: " +
          joined_names(titled) +
          "; window is the whole window\n"

@@ -5,7 +5,9 @@
 //         [--screenshot FILE --frames N] [--benchmark N] [--size W H]
 //         [--flow-show PART] [--flow-draw LIST] [--basis NAME] [--presentation]
 //         [--cause-and-effect] [--basis-explorer] [--world-camera orbit|eye]
-//         [--check-lesson NAME|FILE|all] [--help]
+//         [--check-lesson NAME|FILE|all] [--study NAME|FILE [--study-method M] [--study-seed S]
+//          [--study-observer NAME] [--study-ppi P] [--study-simulate PX --study-csv FILE]]
+//         [--help]
 // The options that say what the window shows are one WindowState (gui/models/
 // window_state.h): the session's or the lesson's state (or the default window), with each
 // such option set over it; the window applies it whole (WindowModel::apply). The others
@@ -14,13 +16,31 @@
 // needs a display.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/cli_args.h"
 #include "state/window_state.h"
+#include "study/study_file.h"
 
 namespace oflab {
+
+// --study and its options: the threshold study window (gui/views/study_window.h).
+struct StudyLaunch {
+  std::optional<Study> study;  // --study NAME|FILE, read and checked
+  std::string method;          // --study-method (default: the study's)
+  std::uint64_t seed = 0;      // --study-seed (default: the study's)
+  std::string observer;        // --study-observer ("simulated" in a simulated run, else "")
+  double ppi = 96.0;           // --study-ppi: the screen's pixels per inch
+  // --study-simulate PX: a simulated observer (threshold PX, the study's assumed slope and
+  // lapse, seeded by the seed) answers in the study window to the end, and --study-csv FILE
+  // (required with it; replaced only with --force) gets the trials; 0: a person answers.
+  double simulate_px = 0.0;
+  std::string csv;
+  bool force = false;
+};
 
 struct LaunchOptions {
   // What the window shows first: --session FILE's state or --lesson NAME's, or the default
@@ -59,6 +79,8 @@ struct LaunchOptions {
   // --claim-kinds K1,K2,... (with --check-lesson): only the claims of these kinds (names of
   // session/lessons/claim_kinds.h) are measured, every part still played; empty: all kinds.
   std::vector<std::string> claim_kinds;
+  // --study ...: open the study window (with --study-simulate: run it and exit).
+  StudyLaunch study;
 };
 
 // DIR/lesson-NAME.png for the narrative (part 0), DIR/lesson-NAME-step-K.png for step K: the

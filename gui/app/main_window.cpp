@@ -31,6 +31,7 @@
 #include "player/animation_sources.h"
 #include "state/window_state_file.h"
 #include "views/scene_controls.h"
+#include "views/study_window.h"
 #include "views/view_page.h"
 
 namespace oflab {
@@ -237,6 +238,26 @@ void MainWindow::create_menus() {
   QAction* previous = lesson_menu->addAction(tr("Previous step"));
   previous->setShortcut(Qt::Key_PageUp);
   connect(previous, &QAction::triggered, this, [this] { step_lesson(-1); });
+  QMenu* study_menu = menuBar()->addMenu(tr("&Study"));
+  connect(study_menu->addAction(tr("How much error can you see? (threshold study)...")),
+          &QAction::triggered, this, [this] { open_study_window(); });
+}
+
+StudyWindow* MainWindow::open_study_window() {
+  if (!study_window_) {
+    study_window_ = new StudyWindow(this);
+    connect(study_window_, &StudyWindow::threshold_chosen, this, [this](double px) {
+      WindowState state = model_->state();
+      state.settings.thresholds = {px, px, px, px};
+      QString error;
+      if (!model_->apply(state, &error)) show_message(error);
+    });
+    study_window_->resize(std::max(900, width() * 3 / 4), std::max(720, height() * 3 / 4));
+  }
+  study_window_->show();
+  study_window_->raise();
+  study_window_->activateWindow();
+  return study_window_;
 }
 
 void MainWindow::create_play_bar() {

@@ -34,6 +34,8 @@ class ViewPage;
 class WindowModel;
 struct ViewEntry;
 
+class StudyWindow;
+
 class MainWindow : public QMainWindow, public LessonStage {
   Q_OBJECT
 
@@ -66,6 +68,10 @@ class MainWindow : public QMainWindow, public LessonStage {
 
   // Applies a lesson's state (WindowModel::apply); its narrative shows as the caption.
   void apply_lesson(const Lesson& lesson);
+
+  // The threshold study's window (views/study_window.h; Study menu), made on the first call,
+  // shown and raised.
+  StudyWindow* open_study_window();
   // A lesson's steps, as the teacher takes them, played by the one lesson player
   // (session/lessons/lesson_player.h) on this window as its stage. perform_lesson_step does
   // step `step` (1-based) of `lesson`: its state (over the one on screen), then its frame,
@@ -193,6 +199,7 @@ class MainWindow : public QMainWindow, public LessonStage {
   QLabel* source_status_ = nullptr;
   QLabel* message_banner_ = nullptr;
   QLabel* frame_label_ = nullptr;
+  StudyWindow* study_window_ = nullptr;  // made when first opened
   QTimer* motion_timer_;
   QElapsedTimer play_clock_;
   FramePacer pacer_;

@@ -88,7 +88,8 @@ void AnimationControls::explain_controls() {
   delta_box_->setToolTip(
       tr("Delta: how much of the scaling the perspective cache takes from "
          "the affine warp (section 5.4.3)"));
-  sampling_box_->setToolTip(tr("Nearest or bilinear sampling in the warps"));
+  sampling_box_->setToolTip(tr(
+      "Nearest, bilinear or mipmap sampling in the warps (mipmap filters a layer that shrinks)"));
   content_box_->setToolTip(
       tr("What a re-render draws, and so what it costs: the texture (one "
          "warp), a shaded brick lit per sample, or a facade impostor of "

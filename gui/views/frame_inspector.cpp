@@ -78,6 +78,9 @@ QString reuse_words(const ReusePolicy& policy, Level level) {
   if (policy.pixel_motion == PixelMotion::kBetweenRenders) {
     return QStringLiteral("the renders before and after, each pixel moved by its depth");
   }
+  if (policy.pixel_motion == PixelMotion::kFarMesh) {
+    return QStringLiteral("the near part rendered, the far part's depth mesh drawn from here");
+  }
   if (policy.frame_warp == FrameWarp::kPerPixelDepth) {
     return QStringLiteral("the last render, each pixel moved by its depth");
   }

@@ -29,7 +29,6 @@ inline constexpr Limit kSessions{"sessions", "", 1.0, 100000.0, true};
 inline constexpr Limit kReplicates{"bootstrap replicates", "", 20.0, 100000.0, true};
 inline constexpr Limit kObserverLapse{"observer lapse", "", 0.0, 0.2};
 inline constexpr Limit kLateFraction{"late fraction", "", 0.0, 0.9};
-inline constexpr Limit kPpi{"pixels per inch", "ppi", 10.0, 2000.0};
 
 CommandArgs options_after(const CommandArgs& args, size_t first) {
   return CommandArgs(args.begin() + long(std::min(first, args.size())), args.end());
@@ -180,31 +179,13 @@ int session(const CommandArgs& args, std::ostream& out) {
   }
   const std::string method = methods_argument(a, study.method).front();
   const std::uint64_t seed = seed_argument(a, study.seed);
-  const double ppi = a.has("--ppi") ? a.number_in("--ppi", kPpi) : 96.0;
+  const double ppi = a.has("--ppi") ? a.number_in("--ppi", study_limits::kPpi) : 96.0;
   StudySession run(study, method, seed);
   simulate_answers(run, seed, observer, engine_error_display(study));
   write_trial_csv(csv, trial_rows(run, name, ppi), overwrite);
   out << "wrote " << csv << ": " << run.trials().size() << " trials of " << study.name << " ("
       << method << ", seed " << seed << ")\n";
   return 0;
-}
-
-ordered_json result_json(const ThresholdResult& r) {
-  const auto optional = [](const std::optional<double>& v) {
-    return v ? ordered_json(*v) : ordered_json(nullptr);
-  };
-  return {{"study", r.study},
-          {"observer", r.observer.empty() ? ordered_json(nullptr) : ordered_json(r.observer)},
-          {"condition", r.condition},
-          {"method", r.method},
-          {"trials", r.trials},
-          {"late", r.late},
-          {"proportion_correct", r.proportion_correct},
-          {"threshold_px", r.threshold_px},
-          {"ci95_px", {r.low_px, r.high_px}},
-          {"at_bound", r.at_bound},
-          {"threshold_arcmin", optional(r.threshold_arcmin)},
-          {"ci95_arcmin", {optional(r.low_arcmin), optional(r.high_arcmin)}}};
 }
 
 int analyse(const CommandArgs& args, std::ostream& out) {
@@ -238,7 +219,7 @@ int analyse(const CommandArgs& args, std::ostream& out) {
                         {"bootstrap", "parametric"},
                         {"replicates", settings.replicates}}},
                       {"results", ordered_json::array()}};
-    for (const ThresholdResult& r : results) j["results"].push_back(result_json(r));
+    for (const ThresholdResult& r : results) j["results"].push_back(threshold_result_json(r));
     out << j.dump(2) << "\n";
     return 0;
   }

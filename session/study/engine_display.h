@@ -13,12 +13,36 @@
 // shows one error only (manual/study.md).
 #pragma once
 
+#include <functional>
 #include <vector>
 
+#include "engine/engine.h"
+#include "engine/script.h"
 #include "study/study_file.h"
 #include "study/study_session.h"
 
 namespace oflab {
+
+// The clip's picture and texture: a 640 x 480 view (focal length 600 px) of a 2 x 1.5 plane 3
+// units away, facing the viewer, with a 256 x 192 texel texture.
+constexpr int kClipWidth = 640;
+constexpr int kClipHeight = 480;
+constexpr int kClipTextureWidth = 256;
+constexpr int kClipTextureHeight = 192;
+Camera clip_camera();
+
+// The clip's frames (kClipSeconds at kClipFrameRate, pose and motion of each): the plane
+// turning about its vertical axis through its centre at the condition's speed.
+std::vector<ScriptFrame> clip_script(const StudyCondition& condition);
+
+// Plays `condition`'s clip with its policy at `threshold_px` (every per-term threshold of
+// EngineSettings set to it, the other settings their defaults) from its first frame, on
+// `texture` (premultiplied, kClipTextureWidth x kClipTextureHeight, so that the engine's
+// decisions are those of the ladder's runs), calling `shown` (if set) after each frame with
+// the engine showing it and the frame's report. Returns the largest measured error over the frames,
+// pixels.
+double play_reused_clip(const StudyCondition& condition, double threshold_px, Layer texture,
+                        const std::function<void(const PlaneEngine&, const FrameReport&)>& shown);
 
 // One condition's ladder: thresholds (pixels, rising) and the measured error of each run.
 struct ErrorLadder {
@@ -32,11 +56,13 @@ ErrorLadder play_error_ladder(const StudyCondition& condition, double min_px, do
                               int steps);
 
 // The largest measured error of `condition`'s clip played with its policy at `threshold_px`
-// (every per-term threshold of EngineSettings set to it), pixels.
+// (play_reused_clip on a white texture: the error is geometry), pixels.
 double clip_measured_error(const StudyCondition& condition, double threshold_px);
 
-// The shown error for `requested_px`: the ladder's measured error nearest to it in log terms
-// (the smaller on a tie). Precondition: a non-empty ladder.
+// The rung shown for `requested_px`: the index of the ladder's measured error nearest to it in
+// log terms (the smaller error on a tie). Precondition: a non-empty ladder.
+int shown_rung(const ErrorLadder& ladder, double requested_px);
+// Its measured error, pixels.
 double shown_error(const ErrorLadder& ladder, double requested_px);
 
 // An ErrorDisplay (study/study_session.h) for `study`: each condition's ladder over the
@@ -45,5 +71,8 @@ double shown_error(const ErrorLadder& ladder, double requested_px);
 // speed and the range).
 constexpr int kLadderSteps = 48;
 ErrorDisplay engine_error_display(const Study& study);
+// The ladders engine_error_display shows, one per condition of `study` in its order (played
+// when first needed, kept for the process; safe to call from any thread).
+std::vector<ErrorLadder> study_ladders(const Study& study);
 
 }  // namespace oflab

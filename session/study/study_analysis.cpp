@@ -132,4 +132,56 @@ std::vector<SimulationSummary> simulate_study(const Study& study,
   return summaries;
 }
 
+AnalysisSettings analysis_settings(const Study& study) {
+  AnalysisSettings settings;
+  settings.fit.slope = study.assumed_slope;
+  settings.fit.lapse = study.assumed_lapse;
+  return settings;
+}
+
+Study study_of_rows(const std::vector<TrialRow>& rows) {
+  try {
+    return find_or_read_study(rows.front().study);
+  } catch (const StudyError&) {  // not shipped, no such file here: made from the rows
+  }
+  Study study;
+  study.name = study.title = rows.front().study;
+  study.conditions.clear();
+  for (const TrialRow& r : rows) {
+    study.min_px = std::min(study.min_px, r.measured_px > 0.0 ? r.measured_px : study.min_px);
+    study.max_px = std::max(study.max_px, r.measured_px);
+    const bool known = std::any_of(study.conditions.begin(), study.conditions.end(),
+                                   [&](const StudyCondition& c) { return c.name == r.condition; });
+    if (!known) {
+      StudyCondition c;
+      c.name = r.condition;
+      c.speed_deg_s = r.speed_deg_s;
+      c.viewing_distance_cm = r.viewing_distance_cm;
+      c.policy = r.policy == "affine" ? StudyPolicy::kAffine : StudyPolicy::kPerspective;
+      c.texture = r.texture == "grating" ? StudyTexture::kGrating : StudyTexture::kButterfly;
+      study.conditions.push_back(c);
+    }
+  }
+  return study;
+}
+
+nlohmann::ordered_json threshold_result_json(const ThresholdResult& r) {
+  using nlohmann::ordered_json;
+  const auto optional = [](const std::optional<double>& v) {
+    return v ? ordered_json(*v) : ordered_json(nullptr);
+  };
+  return {{"study", r.study},
+          {"observer", r.observer.empty() ? ordered_json(nullptr) : ordered_json(r.observer)},
+          {"condition", r.condition},
+          {"method", r.method},
+          {"trials", r.trials},
+          {"late", r.late},
+          {"proportion_correct", r.proportion_correct},
+          {"threshold_px", r.threshold_px},
+          {"ci95_px", {r.low_px, r.high_px}},
+          {"at_bound", r.at_bound},
+          {"threshold_arcmin", optional(r.threshold_arcmin)},
+          {"ci95_arcmin", {optional(r.low_arcmin), optional(r.high_arcmin)}}};
+}
+
 }  // namespace oflab

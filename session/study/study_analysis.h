@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,16 @@ struct AnalysisSettings {
   std::uint64_t seed = 1;  // of the bootstrap's draws
 };
 
+// The settings that fit `study`'s trials: its assumed slope and lapse, the other defaults.
+AnalysisSettings analysis_settings(const Study& study);
+
+// The study the rows of a CSV come from, for their plot and fit: the shipped study or study
+// file called rows[0].study when there is one (find_or_read_study), else a study of that name
+// with the rows' conditions (in the order first met), the default error range widened to
+// hold every measured error, and the default assumed slope and lapse. Precondition: rows not
+// empty.
+Study study_of_rows(const std::vector<TrialRow>& rows);
+
 struct ThresholdResult {
   std::string study, observer, condition, method;  // observer "" for a class row
   int trials = 0;                                  // answered (not late) trials fitted
@@ -35,6 +46,11 @@ struct ThresholdResult {
   // Minutes of arc, when every row shares one ppi and viewing distance.
   std::optional<double> threshold_arcmin, low_arcmin, high_arcmin;
 };
+
+// `r` as the JSON of `oflab-cli study analyse --json` and the page: {study, observer (null for
+// a class row), condition, method, trials, late, proportion_correct, threshold_px, ci95_px
+// [low, high], at_bound, threshold_arcmin, ci95_arcmin [low, high] (null when not known)}.
+nlohmann::ordered_json threshold_result_json(const ThresholdResult& r);
 
 // The threshold of `rows` (one group: late rows are counted, not fitted; at least one answered
 // row), labelled from its first row. The bootstrap draws from a generator seeded by

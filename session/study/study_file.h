@@ -73,6 +73,7 @@ inline constexpr Limit kSpeed{"speed", "deg/s", 1.0, 360.0};
 inline constexpr Limit kViewingDistance{"viewing distance", "cm", 10.0, 1000.0};
 inline constexpr Limit kSlope{"assumed slope", "", 0.5, 20.0};
 inline constexpr Limit kLapse{"assumed lapse", "", 0.0, 0.2};
+inline constexpr Limit kPpi{"pixels per inch", "ppi", 10.0, 2000.0};  // a screen's
 }  // namespace study_limits
 
 // Thrown for a study file that cannot be used; what() names the file, the part and the field.

@@ -51,15 +51,28 @@ void StudySession::answer(bool correct, double measured_px, bool late) {
   if (!finished()) draw_request();
 }
 
+SimulatedObserver::SimulatedObserver(std::uint64_t seed, const PsychometricFunction& function,
+                                     double late_fraction)
+    : random_(SplitMix64(seed ^ 0x6f626e657276ULL).next()),
+      function_(function),
+      late_fraction_(late_fraction) {}
+
+SimulatedObserver::Answer SimulatedObserver::answer(double shown_px) {
+  Answer a;
+  a.late = late_fraction_ > 0.0 && random_.chance(late_fraction_);
+  a.correct = random_.chance(function_.correct(shown_px));
+  return a;
+}
+
 void simulate_answers(StudySession& session, std::uint64_t seed,
                       const PsychometricFunction& observer, const ErrorDisplay& display,
                       double late_fraction) {
-  StudyRandom answers(SplitMix64(seed ^ 0x6f626e657276ULL).next());
+  SimulatedObserver simulated(seed, observer, late_fraction);
   while (!session.finished()) {
     const TrialRequest& r = session.request();
     const double shown = display(r.condition, r.requested_px);
-    const bool late = late_fraction > 0.0 && answers.chance(late_fraction);
-    session.answer(answers.chance(observer.correct(shown)), shown, late);
+    const SimulatedObserver::Answer a = simulated.answer(shown);
+    session.answer(a.correct, shown, a.late);
   }
 }
 

@@ -57,6 +57,8 @@ class StudySession {
   const AdaptiveMethod& method(int condition) const { return *methods_[size_t(condition)]; }
   const std::vector<StudyTrial>& trials() const { return trials_; }
   int late_trials() const { return late_; }
+  // Answered (not late) trials so far, over every condition.
+  int answered_trials() const { return int(trials_.size()) - late_; }
 
  private:
   Study study_;
@@ -75,10 +77,30 @@ class StudySession {
 // returns its measured error.
 using ErrorDisplay = std::function<double(int condition, double requested_px)>;
 
-// Plays `session` to its end with a simulated observer: `observer` answers each request,
-// shown at display()'s error, drawing from its own generator seeded from `seed` (so its
-// answers never shift the session's draws); a fraction `late_fraction` of presentations
-// (drawn too) is flagged late.
+// A simulated observer: answers drawn from `function` with its own generator seeded from
+// `seed` (so its answers never shift a session's draws); a fraction `late_fraction` of
+// presentations is flagged late (drawn first, only when late_fraction > 0). The desktop
+// window's simulated runs and simulate_answers draw through it, so one seed gives one trial
+// sequence everywhere.
+class SimulatedObserver {
+ public:
+  SimulatedObserver(std::uint64_t seed, const PsychometricFunction& function,
+                    double late_fraction = 0.0);
+  struct Answer {
+    bool correct = false;
+    bool late = false;
+  };
+  // The answer to a presentation showing `shown_px` (pixels, >= 0).
+  Answer answer(double shown_px);
+
+ private:
+  StudyRandom random_;
+  PsychometricFunction function_;
+  double late_fraction_ = 0.0;
+};
+
+// Plays `session` to its end with SimulatedObserver(seed, observer, late_fraction) answering
+// each request shown at display()'s error.
 void simulate_answers(StudySession& session, std::uint64_t seed,
                       const PsychometricFunction& observer, const ErrorDisplay& display,
                       double late_fraction = 0.0);

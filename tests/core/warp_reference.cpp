@@ -47,6 +47,97 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
   return hull;
 }
 
+// The mip levels in double, each the unrounded 2 x 2 mean of the one below (taps beyond an
+// odd edge clamped), level 0 the source: the reference's own pyramid.
+struct DoubleLevel {
+  int width = 0, height = 0;
+  std::vector<double> values;  // 4 per pixel
+  double at(std::int64_t x, std::int64_t y, int c) const {
+    x = std::clamp<std::int64_t>(x, 0, width - 1);
+    y = std::clamp<std::int64_t>(y, 0, height - 1);
+    return values[static_cast<std::size_t>((y * width + x) * 4 + c)];
+  }
+};
+
+std::vector<DoubleLevel> double_pyramid(const Image& source) {
+  std::vector<DoubleLevel> levels(1);
+  levels[0].width = source.width();
+  levels[0].height = source.height();
+  for (int y = 0; y < source.height(); ++y) {
+    for (int x = 0; x < source.width(); ++x) {
+      for (int c = 0; c < 4; ++c) levels[0].values.push_back(channel(source.at(x, y), c));
+    }
+  }
+  while (levels.back().width > 1 || levels.back().height > 1) {
+    const DoubleLevel& fine = levels.back();
+    DoubleLevel coarse;
+    coarse.width = (fine.width + 1) / 2;
+    coarse.height = (fine.height + 1) / 2;
+    for (int y = 0; y < coarse.height; ++y) {
+      for (int x = 0; x < coarse.width; ++x) {
+        for (int c = 0; c < 4; ++c) {
+          const auto x1 = std::min(2 * x + 1, fine.width - 1);
+          const auto y1 = std::min(2 * y + 1, fine.height - 1);
+          coarse.values.push_back(0.25 * (fine.at(2 * x, 2 * y, c) + fine.at(x1, 2 * y, c) +
+                                          fine.at(2 * x, y1, c) + fine.at(x1, y1, c)));
+        }
+      }
+    }
+    levels.push_back(std::move(coarse));
+  }
+  return levels;
+}
+
+// Bilinear in double of a level at (u, v), pixel-centre index coordinates, taps clamped.
+double bilinear_double(const DoubleLevel& level, double u, double v, int c) {
+  const double fu = std::floor(u), fv = std::floor(v);
+  const double fx = u - fu, fy = v - fv;
+  const auto x = static_cast<std::int64_t>(fu), y = static_cast<std::int64_t>(fv);
+  return (1 - fx) * (1 - fy) * level.at(x, y, c) + fx * (1 - fy) * level.at(x + 1, y, c) +
+         (1 - fx) * fy * level.at(x, y + 1, c) + fx * fy * level.at(x + 1, y + 1, c);
+}
+
+// The source point (continuous coordinates) of the integer map at doubled output
+// coordinates (X, Y), for a map with the bilinear half-pixel shift; (X, Y) need not be
+// integers here.
+Vec2 source_point(const InverseMap& m, double X, double Y) {
+  auto lin = [&](std::int64_t p, std::int64_t q, std::int64_t r) {
+    return static_cast<double>(p) * X + static_cast<double>(q) * Y + static_cast<double>(r);
+  };
+  const double d = lin(m.g, m.h, m.i);
+  return Vec2(lin(m.a, m.b, m.c) / d + 0.5, lin(m.d, m.e, m.f) / d + 0.5);
+}
+
+// Trilinear mipmap sample at output pixel (x, y): the footprint's longer axis by central
+// differences of the map (steps of 1/1000 pixel) and a brute-force maximum over directions, the
+// level its log2 clamped to [0, top], bilinear on the two levels around it blended.
+void mipmap_reference(const InverseMap& m, const std::vector<DoubleLevel>& levels, int x, int y,
+                      double* value) {
+  const double X = 2.0 * x + 1.0, Y = 2.0 * y + 1.0, h = 1e-3;  // h: a pixel is 2 in X
+  const Vec2 s = source_point(m, X, Y);
+  const Vec2 dx = (source_point(m, X + h, Y) - source_point(m, X - h, Y)) / h;
+  const Vec2 dy = (source_point(m, X, Y + h) - source_point(m, X, Y - h)) / h;
+  double sigma = 0.0;
+  for (int k = 0; k < 180; ++k) {
+    const double t = k * 3.14159265358979323846 / 180.0;
+    sigma = std::max(sigma, glm::length(std::cos(t) * dx + std::sin(t) * dy));
+  }
+  const int top = static_cast<int>(levels.size()) - 1;
+  const double level = std::clamp(sigma > 1.0 ? std::log2(sigma) : 0.0, 0.0, double(top));
+  const int lower = std::min(static_cast<int>(level), top);
+  const int upper = std::min(lower + 1, top);
+  const double t = level - lower;
+  for (int c = 0; c < 4; ++c) {
+    const double a =
+        bilinear_double(levels[static_cast<std::size_t>(lower)], std::ldexp(s.x, -lower) - 0.5,
+                        std::ldexp(s.y, -lower) - 0.5, c);
+    const double b =
+        bilinear_double(levels[static_cast<std::size_t>(upper)], std::ldexp(s.x, -upper) - 0.5,
+                        std::ldexp(s.y, -upper) - 0.5, c);
+    value[c] = (1 - t) * a + t * b;
+  }
+}
+
 }  // namespace
 
 Coverage classify(const ConvexPolygon& polygon, const Vec2& p, double tolerance) {
@@ -78,6 +169,8 @@ std::vector<ReferencePixel> reference_warp(const WarpPlan& plan, const Image& so
   const std::int64_t max_x = source.width() - 1;
   const std::int64_t max_y = source.height() - 1;
   const InverseMap& m = plan.map;
+  const std::vector<DoubleLevel> levels =
+      plan.sampling == Sampling::kMipmap ? double_pyramid(source) : std::vector<DoubleLevel>{};
   for (int y = 0; y < plan.output_height; ++y) {
     for (int x = 0; x < plan.output_width; ++x) {
       ReferencePixel& r = out[static_cast<std::size_t>(y) * plan.output_width + x];
@@ -91,7 +184,9 @@ std::vector<ReferencePixel> reference_warp(const WarpPlan& plan, const Image& so
       if (d <= 0) std::abort();  // the plan promises a positive denominator
       const std::int64_t ku = floor_div128(nu, d);
       const std::int64_t kv = floor_div128(nv, d);
-      if (plan.sampling == Sampling::kNearest) {
+      if (plan.sampling == Sampling::kMipmap) {
+        mipmap_reference(m, levels, x, y, r.value);
+      } else if (plan.sampling == Sampling::kNearest) {
         const Pixel& p = source.at(static_cast<int>(std::clamp<std::int64_t>(ku, 0, max_x)),
                                    static_cast<int>(std::clamp<std::int64_t>(kv, 0, max_y)));
         for (int c = 0; c < 4; ++c) r.value[c] = channel(p, c);

@@ -3,7 +3,9 @@
 // core/image/inverse_map.h) with the kernels: it classifies every output pixel centre against
 // the warped polygon with half-plane tests (no scan conversion), evaluates the map
 // directly with 128-bit integers (no incremental steps), takes exact floors and clamps
-// per pixel, and interpolates in double.
+// per pixel, and interpolates in double. For mipmap sampling it builds its own pyramid in
+// double (unrounded 2 x 2 means), finds each pixel's footprint by central differences of the
+// map and a brute-force maximum over directions, and blends two bilinear samples in double.
 #pragma once
 
 #include <random>

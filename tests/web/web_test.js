@@ -17,6 +17,9 @@
 //   controls). A failing screenshot is written to --out.
 // - Every step of every shipped lesson shows the state and frame `oflab-cli lesson state`
 //   gives (--cli, default build/analysis/oflab-cli); a changed frame is caught.
+// - The threshold study: the page's loop with a simulated observer writes the CSV of
+//   `oflab-cli study session` (same study, method, seed), another seed does not, a broken
+//   study file is refused naming the file and the field.
 // - --bench: the flow view and the comparison played frame by frame for 300 frames, paced
 //   at 60 Hz and unpaced; prints the frames per second of requestAnimationFrame (speed is
 //   reported, not tested).
@@ -205,6 +208,103 @@ function cliLessonState(name, k) {
     cliStates.set(key, r.status === 0 ? JSON.parse(r.stdout).state : { error: r.stderr.trim() });
   }
   return cliStates.get(key);
+}
+
+// --- The threshold study ---------------------------------------------------------------------
+// The page's study loop (Module.Study, web/web_study.h) answered by a simulated observer gives
+// the CSV of `oflab-cli study session` byte for byte for the same study, method, seed, name and
+// ppi (and the desktop window's, tests/gui/views/study_window_test.cpp); another seed does not
+// (negative control); a broken study file is refused naming the file and the field.
+async function testStudy(browser) {
+  const file = path.join(__dirname, 'fixtures/short-study.json');
+  const text = fs.readFileSync(file, 'utf8');
+  const pageCsv = async (seed) => evaluate(browser, `(() => {
+    const s = new Module.Study();
+    const problem = s.open('short-study.json', ${JSON.stringify(text)}, 'staircase', ${seed})
+      || s.simulate(0.8);
+    const out = problem || s.csv('ann', 110);
+    s.delete();
+    return out;
+  })()`);
+  const { spawnSync } = require('child_process');
+  const cli = path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli')));
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'oflab-web-study-'));
+  try {
+    const csv = path.join(dir, 'ann.csv');
+    const r = spawnSync(cli, ['study', 'session', '--study', file, '--observer-threshold', '0.8',
+      '--seed', '5', '--method', 'staircase', '--observer', 'ann', '--ppi', '110', '--csv', csv],
+    { encoding: 'utf8' });
+    const expected = r.status === 0 ? fs.readFileSync(csv, 'utf8') : `oflab-cli: ${r.stderr}`;
+    await open(browser, '', "document.body.dataset.interactive !== undefined");
+    const same = await pageCsv(5);
+    check('StudyOnThePageIsTheCommandLinesSession', same === expected,
+      same === expected ? `${expected.trim().split('\n').length - 1} trials` : `page: ${same.slice(0, 200)}`);
+    const other = await pageCsv(6);
+    check('StudyWithAnotherSeedDiffers (negative control)', other !== expected && other.includes('short-study'));
+    const refused = await evaluate(browser, `(() => {
+      const s = new Module.Study();
+      const out = s.open('short-study.json', ${JSON.stringify(text.replace('"trials": 5', '"trials": 4'))}, '', -1);
+      s.delete();
+      return out;
+    })()`);
+    check('StudyFileRefusedNamingTheFileAndField', /^short-study\.json: .*trials/.test(refused), refused);
+    // The class view: two observers' CSVs fitted on the page as `oflab-cli study analyse`.
+    const bob = path.join(dir, 'bob.csv');
+    spawnSync(cli, ['study', 'session', '--study', file, '--observer-threshold', '2', '--seed', '8',
+      '--method', 'staircase', '--observer', 'bob', '--csv', bob]);
+    const files = [csv, bob].map((f) => ({ name: path.basename(f), text: fs.readFileSync(f, 'utf8') }));
+    const analysed = spawnSync(cli, ['study', 'analyse', csv, bob, '--json'], { encoding: 'utf8' });
+    const want = analysed.status === 0 ? JSON.parse(analysed.stdout).results : [];
+    const got = JSON.parse(await evaluate(browser, `(() => {
+      const s = new Module.Study();
+      const out = s.classResultsJson(${JSON.stringify(JSON.stringify(files))});
+      s.delete();
+      return out;
+    })()`));
+    const close = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(1, Math.abs(b));
+    const fitsAgree = got.results && got.results.length === want.length && want.length === 3 &&
+      want.every((w, i) => got.results[i].observer === w.observer &&
+        close(got.results[i].threshold_px, w.threshold_px) &&
+        close(got.results[i].ci95_px[0], w.ci95_px[0]) && close(got.results[i].ci95_px[1], w.ci95_px[1]));
+    check('StudyClassViewFitsAsTheCommandLine', fitsAgree,
+      `${(got.results || []).map((r) => `${r.observer}: ${r.threshold_px}`).join(', ')} against ` +
+      `${want.map((r) => `${r.observer}: ${r.threshold_px}`).join(', ')}`);
+    const broken = await evaluate(browser, `(() => {
+      const s = new Module.Study();
+      const out = s.classResultsJson(JSON.stringify([{ name: 'broken.csv', text: 'study,observer\\nx,y\\n' }]));
+      s.delete();
+      return out;
+    })()`);
+    check('StudyClassViewRefusesABrokenFileNamingIt', /broken\.csv/.test(JSON.parse(broken).problem || ''), broken);
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+// A person's run on the page: Start plays the rate check and the first trial's clips on
+// requestAnimationFrame, then asks; the key 2 answers (the session counts it, or records it
+// late and shows it again). On a display that drew a frame of the check late the study must
+// refuse to start, saying so. Either way within 60 s; anything else fails.
+async function testStudyTrial(browser) {
+  await open(browser, '?study=class', "document.body.dataset.interactive !== undefined");
+  await evaluate(browser, 'startStudy()');
+  const end = Date.now() + 60000;
+  let state = {};
+  while (Date.now() < end) {
+    state = await evaluate(browser, `({ phase: study.phase, status: $('study-status').textContent,
+      text: $('study-trial-text').textContent })`);
+    if (state.phase === 'answer' || state.status.includes('late')) break;
+    await new Promise((r) => setTimeout(r, 200));
+  }
+  if (state.phase !== 'answer') {
+    check('StudyTrialRefusedWhenTheDisplayIsLate', state.status.includes('late'), state.status || state.phase);
+    return;
+  }
+  await press(browser, '2');
+  const after = await evaluate(browser, 'JSON.parse(study.core.requestJson())');
+  check('StudyTrialPlaysBothClipsAndTakesTheAnswer',
+    /Press 1 or 2/.test(state.text) && (after.answered === 1 || after.late === 1),
+    `${state.text} -> ${JSON.stringify(after)}`);
 }
 
 // --- Screenshots -------------------------------------------------------------------------
@@ -567,6 +667,8 @@ async function bench(browser) {
       await testLessonStates(browser);
       await testClaims(browser);
       await testLinks(browser);
+      await testStudy(browser);
+      await testStudyTrial(browser);
     }
   } catch (error) {
     check('TheTestsRan', false, error.message);

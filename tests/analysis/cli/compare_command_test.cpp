@@ -76,7 +76,7 @@ TEST(PolicyRuns, EveryPolicyPlaysTheSameFramesOfAScene) {
   const auto runs = run_policies(
       source_kind("scene"), source,
       parse_policy_list("perspective,talisman,dissertation,hierarchical-cache,mv-extrapolation,"
-                        "mv-no-inpaint,view-interpolation"),
+                        "mv-no-inpaint,view-interpolation,depth-mesh"),
       quick_options(12));
   expect_same_views(runs, 12);
 }

@@ -1,9 +1,10 @@
-// Frame generation and view interpolation from the command line (manual/policies.md "Frame
-// generation by extrapolation", "View interpolation"): the motion-vector policies and
-// view-interpolation run on every shipped scene and viewer script, and the comparison's rows
-// carry their holes, inpainting and latency.
+// Frame generation, view interpolation and the depth mesh from the command line
+// (manual/policies.md "Frame generation by extrapolation", "View interpolation", "Textured depth
+// meshes"): the motion-vector policies, view-interpolation and depth-mesh run on every shipped
+// scene and viewer script, and the comparison's rows carry their holes, inpainting and latency.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -20,9 +21,9 @@ namespace {
 
 using testing::CliResult;
 
-// Both motion-vector policies and view interpolation on a scene and viewer script, three frames
-// (render, generated or interpolated, render), one pass without the exact baseline: what is
-// checked is that they run.
+// Both motion-vector policies, view interpolation and the depth mesh on a scene and viewer
+// script, three frames (render, generated, interpolated or meshed, render), one pass without the
+// exact baseline: what is checked is that they run.
 std::vector<PolicyRun> play_generation(const std::string& scene, const std::string& script) {
   RunSource source;
   source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(scene)));
@@ -33,7 +34,8 @@ std::vector<PolicyRun> play_generation(const std::string& scene, const std::stri
   options.timing_repetitions = 1;
   options.baseline = false;
   return run_policies(source_kind("scene"), source,
-                      parse_policy_list("mv-extrapolation,mv-no-inpaint,view-interpolation"),
+                      parse_policy_list("mv-extrapolation,mv-no-inpaint,view-interpolation,"
+                                        "depth-mesh"),
                       options);
 }
 
@@ -48,12 +50,20 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
   for (const auto& [scene, script] : runs) {
     std::vector<PolicyRun> played;
     ASSERT_NO_THROW(played = play_generation(scene, script)) << scene << ", " << script;
-    ASSERT_EQ(played.size(), 3u);
+    ASSERT_EQ(played.size(), 4u);
     for (const PolicyRun& run : played) {
       ASSERT_EQ(run.run.frames.size(), 3u) << scene << ", " << script;
-      // Frame 1 is generated (interpolated): every drawn polygon counted at that level.
+      // Frame 1 is generated (interpolated): every drawn polygon counted at that level; the
+      // depth mesh's near polygons are rendered, its far ones meshed.
       const AnimationFrame& generated = run.run.frames[1];
-      EXPECT_EQ(generated.levels[static_cast<int>(Level::kRerender)], 0);
+      const int rendered = generated.levels[static_cast<int>(Level::kRerender)];
+      if (run.policy->pixel_motion == PixelMotion::kFarMesh) {
+        EXPECT_EQ(rendered + generated.levels[static_cast<int>(Level::kPerspective)],
+                  generated.drawn())
+            << scene << ", " << script;
+      } else {
+        EXPECT_EQ(rendered, 0);
+      }
       EXPECT_GE(generated.hole_pixels, 0);
       if (!run.policy->inpaint) EXPECT_EQ(generated.inpainted_pixels, 0);
     }
@@ -65,11 +75,12 @@ TEST(FrameGenerationCommand, RunsOnEveryShippedSceneAndViewerScript) {
 TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) {
   const CliResult r = testing::run_cli_captured(
       {"compare", "--scene", "four-cubes", "--script", "translate", "--policies",
-       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint,view-interpolation",
+       "perspective,depth-reprojection,mv-extrapolation,mv-no-inpaint,view-interpolation,"
+       "depth-mesh",
        "--frames", "5", "--json", "--repeat-timing", "1"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = nlohmann::json::parse(r.out).at("policies");
-  ASSERT_EQ(rows.size(), 5u);
+  ASSERT_EQ(rows.size(), 6u);
   for (const auto& row : rows) {
     for (const char* field :
          {"hole_pixels", "inpainted_pixels", "mean_psnr_db", "mean_ssim", "latency_frames"}) {
@@ -94,6 +105,35 @@ TEST(FrameGenerationCommand, CompareRowsCarryHolesInpaintingPsnrSsimAndLatency) 
   // reprojection from the last render alone, nothing inpainted.
   EXPECT_LT(rows[4]["hole_pixels"].get<long>(), rows[1]["hole_pixels"].get<long>());
   EXPECT_EQ(rows[4]["inpainted_pixels"], 0);
+  // The depth mesh renders the near cubes every frame and meshes the far ones: an error of its
+  // mesh's pixels, holes only where it dropped rubber sheets, at no latency.
+  EXPECT_EQ(rows[5]["name"], "depth-mesh");
+  EXPECT_GT(rows[5]["max_measured_error_px"].get<double>(), 0.0);
+  EXPECT_EQ(rows[5]["inpainted_pixels"], 0);
+}
+
+// The depth mesh's options: out of their limits, with an unknown word, or without depth-mesh
+// among the compared policies, each is refused in one line naming it, exit code 2.
+TEST(FrameGenerationCommand, MeshOptionsOutOfRangeOrWithoutDepthMeshAreRefused) {
+  const std::vector<std::string> base = {"compare",   "--scene",  "four-cubes", "--script",
+                                         "translate", "--frames", "2"};
+  const struct {
+    std::vector<std::string> extra;
+    std::string message;
+  } cases[] = {
+      {{"--policies", "depth-mesh", "--mesh-grid", "0"}, "--mesh-grid"},
+      {{"--policies", "depth-mesh", "--mesh-jump", "-1"}, "--mesh-jump"},
+      {{"--policies", "depth-mesh", "--rubber-sheets", "sideways"}, "--rubber-sheets: 'sideways'"},
+      {{"--policies", "perspective", "--mesh-split", "3"}, "--mesh-split: needs one of depth-mesh"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), c.extra.begin(), c.extra.end());
+    const CliResult r = testing::run_cli_captured(args);
+    EXPECT_EQ(r.code, 2) << c.message;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
 }
 
 }  // namespace

@@ -49,8 +49,9 @@ TEST(PoliciesCommand, JsonListsEveryPolicyWithWhatItModelsInRegistryOrder) {
   }
   std::set<std::string> names;
   for (const auto& e : list) names.insert(e["name"].get<std::string>());
-  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "mv-extrapolation", "mv-no-inpaint", "view-interpolation"}) {
+  for (const char* name :
+       {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "mv-extrapolation",
+        "mv-no-inpaint", "view-interpolation", "depth-mesh"}) {
     EXPECT_EQ(names.count(name), 1u) << name;
   }
 }

@@ -209,7 +209,7 @@ TEST(Reprojection, CompareRefusesACadenceOutOfRangeOrWithoutACadencePolicy) {
   EXPECT_EQ(none.code, 2);
   EXPECT_NE(none.err.find("--cadence: needs one of timewarp, stabilized-plane, "
                           "depth-reprojection, cadence, mv-extrapolation, "
-                          "mv-no-inpaint, view-interpolation in --policies, not "
+                          "mv-no-inpaint, view-interpolation, depth-mesh in --policies, not "
                           "'perspective,talisman'"),
             std::string::npos)
       << none.err;

@@ -22,15 +22,18 @@ struct Played {
   bool reused = false;  // some layer was translated or kept as it was
 };
 
-// `frames` frames of `script` through `scene` at half the script's image size (the same view),
-// with the layers warped over `area`.
-Played play(const char* scene, const char* script, int frames, WarpArea area) {
+// `frames` frames of `script` from its frame `first` through `scene` at half the script's image
+// size (the same view), with the layers warped over `area` and sampled with `sampling`.
+Played play(const char* scene, const char* script, int first, int frames, WarpArea area,
+            Sampling sampling) {
   const auto s = std::make_shared<const Scene>(read_scene_file(resolve_scene_path(scene)));
   ViewerScript v = read_viewer_script_file(resolve_viewer_script_path(script));
   v.camera = make_camera(v.camera.focal_px / 2, v.camera.width / 2, v.camera.height / 2);
+  v.frames.erase(v.frames.begin(), v.frames.begin() + first);
   v.frames.resize(static_cast<std::size_t>(frames));
   SceneSettings settings;
   settings.engine.warp_area = area;
+  settings.engine.sampling = sampling;
   auto animator = make_scene_animator(s, v, settings);
   Played p;
   for (int k = 0; k < frames; ++k) {
@@ -47,9 +50,11 @@ Played play(const char* scene, const char* script, int frames, WarpArea area) {
 // Plays both and compares every frame byte for byte; returns the pixels warped over every
 // frame, whole and visible-only.
 std::pair<std::int64_t, std::int64_t> expect_same_frames(const char* scene, const char* script,
-                                                         int frames) {
-  const Played whole = play(scene, script, frames, WarpArea::kWhole);
-  const Played visible = play(scene, script, frames, WarpArea::kVisible);
+                                                         int frames,
+                                                         Sampling sampling = Sampling::kNearest,
+                                                         int first = 0) {
+  const Played whole = play(scene, script, first, frames, WarpArea::kWhole, sampling);
+  const Played visible = play(scene, script, first, frames, WarpArea::kVisible, sampling);
   EXPECT_EQ(whole.frames.size(), visible.frames.size());
   for (std::size_t k = 0; k < whole.frames.size() && k < visible.frames.size(); ++k) {
     EXPECT_TRUE(whole.frames[k].pixels() == visible.frames[k].pixels())
@@ -70,6 +75,14 @@ std::pair<std::int64_t, std::int64_t> expect_same_frames(const char* scene, cons
 // after (translations, no update) warping the pixels they come to show.
 TEST(VisibleWarpRuns, FourCubesFramesAreTheSameBytesWithFewerPixelsWarped) {
   const auto [whole, visible] = expect_same_frames("four-cubes", "compound", 24);
+  EXPECT_LT(visible, whole);
+}
+
+// Mipmap sampling (--sampling mipmap --warp visible against --warp whole): the cubes' layers
+// sampled through the pyramids kept with their textures and caches (the kernels' partial
+// warps on two blended levels: tests/core/image/partial_warp_test.cpp).
+TEST(VisibleWarpRuns, MipmapFramesAreTheSameBytesWithFewerPixelsWarped) {
+  const auto [whole, visible] = expect_same_frames("four-cubes", "compound", 12, Sampling::kMipmap);
   EXPECT_LT(visible, whole);
 }
 

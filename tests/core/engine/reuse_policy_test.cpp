@@ -126,8 +126,9 @@ TEST(ReusePolicies, ChoicesFollowAnIndependentThresholdRule) {
 
 TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
   // Frame k after a render at frame 0 is rendered exactly when k is a multiple of N.
-  for (const char* name : {"timewarp", "stabilized-plane", "depth-reprojection", "cadence",
-                           "mv-extrapolation", "mv-no-inpaint", "view-interpolation"}) {
+  for (const char* name :
+       {"timewarp", "stabilized-plane", "depth-reprojection", "cadence", "mv-extrapolation",
+        "mv-no-inpaint", "view-interpolation", "depth-mesh"}) {
     const ReusePolicy& p = reuse_policy(name);
     EXPECT_EQ(p.schedule, Schedule::kCadence) << name;
     if (p.pixel_motion != PixelMotion::kBetweenRenders) {
@@ -177,6 +178,12 @@ TEST(ReusePolicies, TodaysReprojectionRendersOnAFixedCadence) {
     EXPECT_EQ(latency_frames(between, cadence), next_render - first_between) << cadence;
     EXPECT_EQ(latency_frames(reuse_policy("depth-reprojection"), cadence), 0) << cadence;
   }
+  // The depth mesh: per-pixel (its far part), scenes only, shown at once.
+  const ReusePolicy& mesh = reuse_policy("depth-mesh");
+  EXPECT_EQ(mesh.frame_warp, FrameWarp::kPerPixelDepth);
+  EXPECT_EQ(mesh.pixel_motion, PixelMotion::kFarMesh);
+  EXPECT_TRUE(needs_scene(mesh));
+  for (int cadence = 1; cadence <= 8; ++cadence) EXPECT_EQ(latency_frames(mesh, cadence), 0);
   EXPECT_FALSE(needs_scene(reuse_policy("depth-reprojection")));
   EXPECT_TRUE(needs_scene(reuse_policy("hierarchical-cache")));
   EXPECT_FALSE(reports_holes(reuse_policy("perspective")));
@@ -202,6 +209,8 @@ TEST(ReusePolicies, EachPolicyNamesWhatItDidInItsOwnWords) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "generated") << p.name;
       } else if (p.pixel_motion == PixelMotion::kBetweenRenders) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "interpolated") << p.name;
+      } else if (p.pixel_motion == PixelMotion::kFarMesh) {
+        EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "meshed") << p.name;
       } else if (p.schedule == Schedule::kCadence) {
         EXPECT_EQ(word, level == Level::kRerender ? "rendered" : "reprojected") << p.name;
       } else {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "image/pixel_rows.h"
@@ -134,6 +135,30 @@ TEST(PartialWarp, EveryPixelComputedIsTheWholeWarpsToTheByte) {
         expect_partial_matches_whole(source, m, WarpOptions{sampling, kernel});
       }
     }
+  }
+}
+
+// Mipmap sampling (core/image/mipmap_kernel.h): a minifying affine warp between two levels
+// (blended through scratch images), one on a whole level (the bilinear kernel on level 1),
+// and a perspective one that picks each pixel's level; every pixel computed is the whole
+// warp's, every wanted pixel computed.
+TEST(PartialWarp, MipmapPixelsComputedAreTheWholeWarpsToTheByte) {
+  std::mt19937 rng(23);
+  const Layer source = make_layer(testing::random_image(rng, 700, 500));
+  const Mat3 shrink = [](double s) {
+    return translation_matrix(360.0, 280.0) *
+           mat3_from_rows({s, 0.0, 0.0}, {0.0, s, 0.0}, {0.0, 0.0, 1.0}) *
+           translation_matrix(-350.0, -250.0);
+  }(0.62);
+  const Mat3 blended = rotation_about(23.0, 360.0, 280.0) * shrink;
+  const Mat3 level_one = translation_matrix(10.25, 30.5) *
+                         mat3_from_rows({0.5, 0.0, 0.0}, {0.0, 0.5, 0.0}, {0.0, 0.0, 1.0});
+  const Mat3 tilt = shrink * mat3_from_rows({1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {6e-4, 9e-4, 1.0});
+  const std::pair<const char*, Mat3> cases[] = {
+      {"blended", blended}, {"level one", level_one}, {"tilt", tilt}};
+  for (const auto& [name, m] : cases) {
+    SCOPED_TRACE(name);
+    expect_partial_matches_whole(source, m, WarpOptions{Sampling::kMipmap});
   }
 }
 

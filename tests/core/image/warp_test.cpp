@@ -116,14 +116,15 @@ void check_random_cases(unsigned seed, bool perspective, WarpOptions options, in
 
 TEST(Sampling, NamesRoundTripAndUnknownWordsAreRejected) {
   for (int i = 0; i < kSamplingCount; ++i) {
-    Sampling parsed = Sampling(1 - i);
+    Sampling parsed = Sampling((i + 1) % kSamplingCount);
     ASSERT_TRUE(parse_sampling(sampling_name(Sampling(i)), &parsed));
     EXPECT_EQ(parsed, Sampling(i));
   }
   EXPECT_STREQ(sampling_name(Sampling::kNearest), "nearest");
   EXPECT_STREQ(sampling_name(Sampling::kBilinear), "bilinear");
-  EXPECT_EQ(sampling_name_list(), "nearest, bilinear");
-  EXPECT_EQ(sampling_name_list("|"), "nearest|bilinear");
+  EXPECT_STREQ(sampling_name(Sampling::kMipmap), "mipmap");
+  EXPECT_EQ(sampling_name_list(), "nearest, bilinear, mipmap");
+  EXPECT_EQ(sampling_name_list("|"), "nearest|bilinear|mipmap");
   Sampling untouched = Sampling::kBilinear;
   EXPECT_FALSE(parse_sampling("Nearest", &untouched));
   EXPECT_FALSE(parse_sampling("", &untouched));
@@ -136,6 +137,18 @@ TEST(WarpKernels, NearestAffineKernelMatchesReferenceOnRandomMatrices) {
 
 TEST(WarpKernels, NearestPerspectiveKernelMatchesReferenceOnRandomHomographies) {
   check_random_cases(12, true, {Sampling::kNearest, WarpKernel::kPerspective}, 0);
+}
+
+// Mipmap against the reference's own double pyramid and brute-force footprint: the kernel's
+// levels are rounded once per level (k / 2 levels at worst after k reductions, far less on
+// average as the roundings mix), its blend weight to 1/256 and its bilinear taps within one
+// level: within 2 levels on these 400 cases each.
+TEST(WarpKernels, MipmapAffineKernelMatchesReferenceOnRandomMatrices) {
+  check_random_cases(41, false, {Sampling::kMipmap, WarpKernel::kAffine}, 2);
+}
+
+TEST(WarpKernels, MipmapPerspectiveKernelMatchesReferenceOnRandomHomographies) {
+  check_random_cases(42, true, {Sampling::kMipmap, WarpKernel::kPerspective}, 2);
 }
 
 TEST(WarpKernels, NearestPerspectiveKernelMatchesReferenceOnAffineMatrices) {

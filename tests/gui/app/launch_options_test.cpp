@@ -56,6 +56,28 @@ TEST(LaunchOptions, BadValuesNameTheirOption) {
   EXPECT_NE(usage_error({"stray"}).find("stray"), std::string::npos);
 }
 
+TEST(LaunchOptions, AStudyIsReadWithItsFieldsAndBadOnesNameTheirOption) {
+  const LaunchOptions o = parse_launch_options({"--study", "class", "--study-seed", "9"});
+  ASSERT_TRUE(o.study.study.has_value());
+  EXPECT_EQ(o.study.study->name, "class");
+  EXPECT_EQ(o.study.method, o.study.study->method);
+  EXPECT_EQ(o.study.seed, 9u);
+  EXPECT_EQ(o.study.simulate_px, 0.0);
+  EXPECT_NE(usage_error({"--study", "nope"}).find("--study: "), std::string::npos);
+  EXPECT_NE(usage_error({"--study-seed", "1"}).find("only used with --study"), std::string::npos);
+  EXPECT_NE(usage_error({"--study", "class", "--study-method", "guess"}).find("--study-method"),
+            std::string::npos);
+  EXPECT_NE(usage_error({"--study", "class", "--study-simulate", "0.8"}).find("--study-csv"),
+            std::string::npos);
+  EXPECT_NE(usage_error({"--study", "class", "--study-simulate", "50", "--study-csv", "x.csv"})
+                .find("error range"),
+            std::string::npos);
+  EXPECT_NE(usage_error({"--study", "class", "--study-observer", "a,b"}).find("--study-observer"),
+            std::string::npos);
+  EXPECT_NE(usage_error({"--study", "class", "--study-ppi", "5"}).find("--study-ppi"),
+            std::string::npos);
+}
+
 TEST(LaunchOptions, UnknownScenesAndModesAreRejectedSayingWhatIsKnown) {
   const std::string scene = usage_error({"--scene", "office"});
   EXPECT_EQ(scene.rfind("--scene", 0), 0u) << scene;

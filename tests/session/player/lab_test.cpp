@@ -10,7 +10,6 @@
 #include "lessons/claim_kinds.h"
 #include "lessons/lesson_player.h"
 #include "player/engine_claims.h"
-#include "player/source_length.h"
 #include "state/window_state_file.h"
 
 namespace oflab {
@@ -42,20 +41,18 @@ TEST(Lab, EveryEngineKindHasItsMeasureAndNoOther) {
   EXPECT_EQ(engine_kinds, measures);
 }
 
-// The browser page reads a source's loop from its files (source_frame_count); the desktop
-// takes it from the animator. Both on every part of every lesson.
-TEST(Lab, TheLoopReadFromASourcesFilesIsItsAnimatorsLength) {
+// The frame clock loops over the run's source: its animator's length, or the plane panel's
+// own loop for a source that follows the panel. On every part of every lesson.
+TEST(Lab, TheLoopIsTheSourcesLength) {
   for (const Lesson& lesson : lessons()) {
     Lab lab(shipped_default_texture());
     LabStage stage(&lab);
     for (int step = 0; step <= int(lesson.steps.size()); ++step) {
       ASSERT_EQ(go_to_lesson_step(stage, lesson, step), "") << lesson.name;
-      const int from_files = source_frame_count(lab.run().source(), lab.panel());
       ASSERT_NE(lab.run().animator(), nullptr) << lesson.name;
-      const int expected =
+      const int source_frames =
           lab.run().source_kind().follows_scene_panel ? 0 : lab.run().animator()->frame_count();
-      EXPECT_EQ(from_files, expected) << lesson.name << ", step " << step;
-      EXPECT_EQ(lab.panel().loop_frames(), from_files > 0 ? from_files
+      EXPECT_EQ(lab.panel().loop_frames(), source_frames > 0 ? source_frames
                                            : lab.panel().script()
                                                ? int(lab.panel().script()->frames.size())
                                                : PlanePanel::kLoopFrames)

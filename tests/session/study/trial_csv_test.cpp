@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "study/study_analysis.h"
+
 namespace oflab {
 namespace {
 
@@ -101,6 +103,34 @@ TEST(TrialCsv, BadRowsAreRefusedNamingTheLineAndTheColumn) {
   fast.replace(at, fast.find(',', at) - at, "900");
   EXPECT_EQ(error(header + fast),
             "class/ann.csv: line 2: column 'speed_deg_s': 900 is outside 1..360 deg/s");
+}
+
+// The study of a CSV's rows: the shipped study of that name, else one made from the rows
+// (their conditions in order, the error range holding every measured error); a study's
+// analysis settings are its assumed slope and lapse.
+TEST(TrialCsv, TheStudyOfRowsIsTheShippedOneOrMadeFromThem) {
+  std::vector<TrialRow> rows = session_rows();
+  const Study made = study_of_rows(rows);
+  EXPECT_EQ(made.name, "t");
+  ASSERT_EQ(made.conditions.size(), 2u);
+  const size_t far = made.conditions[0].name == "far" ? 0 : 1;
+  EXPECT_EQ(made.conditions[far].name, "far");
+  EXPECT_EQ(made.conditions[0].name, rows.front().condition);  // in the order first met
+  EXPECT_EQ(made.conditions[1 - far].name, "near");
+  EXPECT_EQ(made.conditions[far].speed_deg_s, 45.5);
+  EXPECT_EQ(made.conditions[far].texture, StudyTexture::kGrating);
+  for (const TrialRow& r : rows) {
+    EXPECT_LE(made.min_px, r.measured_px);
+    EXPECT_GE(made.max_px, r.measured_px);
+  }
+  for (TrialRow& r : rows) r.study = "class";
+  const Study shipped = study_of_rows(rows);
+  EXPECT_EQ(shipped.title, find_or_read_study("class").title);
+  Study s;
+  s.assumed_slope = 5.0;
+  s.assumed_lapse = 0.01;
+  EXPECT_EQ(analysis_settings(s).fit.slope, 5.0);
+  EXPECT_EQ(analysis_settings(s).fit.lapse, 0.01);
 }
 
 }  // namespace

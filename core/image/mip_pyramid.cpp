@@ -1,0 +1,107 @@
+// The mip pyramid (Williams 83; dissertation section 7.5.5): 2 x 2 box-filtered levels and
+// the level of a footprint. See mip_pyramid.h for the definitions.
+#include "image/mip_pyramid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace oflab {
+namespace {
+
+// The rounded mean of four channel values.
+std::uint8_t mean4(int a, int b, int c, int d) {
+  return static_cast<std::uint8_t>((a + b + c + d + 2) >> 2);
+}
+
+// `coarse` (already sized) as the 2 x 2 box reduction of `fine`; taps beyond an odd edge
+// are clamped to the last column or row.
+void reduce(const Image& fine, Image& coarse) {
+  const int last_x = fine.width() - 1;
+  const int last_y = fine.height() - 1;
+  for (int j = 0; j < coarse.height(); ++j) {
+    const Pixel* top = fine.row(std::min(2 * j, last_y));
+    const Pixel* bottom = fine.row(std::min(2 * j + 1, last_y));
+    Pixel* out = coarse.row(j);
+    for (int i = 0; i < coarse.width(); ++i) {
+      const int x0 = std::min(2 * i, last_x);
+      const int x1 = std::min(2 * i + 1, last_x);
+      const Pixel& a = top[x0];
+      const Pixel& b = top[x1];
+      const Pixel& c = bottom[x0];
+      const Pixel& d = bottom[x1];
+      out[i] = Pixel{mean4(a.r, b.r, c.r, d.r), mean4(a.g, b.g, c.g, d.g),
+                     mean4(a.b, b.b, c.b, d.b), mean4(a.a, b.a, c.a, d.a)};
+    }
+  }
+}
+
+}  // namespace
+
+int mip_top_level(int width, int height) {
+  int top = 0;
+  for (int size = std::max(width, height); size > 1; size = (size + 1) / 2) ++top;
+  return top;
+}
+
+void build_mip_pyramid(const Image& image, MipPyramid& pyramid) {
+  pyramid.base_width = image.width();
+  pyramid.base_height = image.height();
+  const int top = image.empty() ? 0 : mip_top_level(image.width(), image.height());
+  pyramid.reduced.resize(static_cast<std::size_t>(top));
+  const Image* fine = &image;
+  for (int k = 1; k <= top; ++k) {
+    Image& coarse = pyramid.reduced[static_cast<std::size_t>(k - 1)];
+    coarse.reshape((fine->width() + 1) / 2, (fine->height() + 1) / 2);
+    reduce(*fine, coarse);
+    fine = &coarse;
+  }
+}
+
+Image box_reduce(const Image& image, int factor) {
+  if (factor < 1 || image.width() % factor != 0 || image.height() % factor != 0) {
+    throw std::invalid_argument("box_reduce: the factor " + std::to_string(factor) +
+                                " must be >= 1 and divide the image's " +
+                                std::to_string(image.width()) + " x " +
+                                std::to_string(image.height()) + " pixels");
+  }
+  Image reduced(image.width() / factor, image.height() / factor);
+  const int count = factor * factor;
+  std::vector<int> sums(static_cast<std::size_t>(reduced.width()) * 4);
+  for (int j = 0; j < reduced.height(); ++j) {
+    std::fill(sums.begin(), sums.end(), 0);
+    for (int y = j * factor; y < (j + 1) * factor; ++y) {
+      const Pixel* row = image.row(y);
+      for (int x = 0; x < image.width(); ++x) {
+        int* sum = &sums[static_cast<std::size_t>(x / factor) * 4];
+        sum[0] += row[x].r, sum[1] += row[x].g, sum[2] += row[x].b, sum[3] += row[x].a;
+      }
+    }
+    Pixel* out = reduced.row(j);
+    for (int i = 0; i < reduced.width(); ++i) {
+      const int* sum = &sums[static_cast<std::size_t>(i) * 4];
+      auto mean = [&](int c) { return static_cast<std::uint8_t>((sum[c] + count / 2) / count); };
+      out[i] = Pixel{mean(0), mean(1), mean(2), mean(3)};
+    }
+  }
+  return reduced;
+}
+
+double footprint_axis(double j00, double j01, double j10, double j11) {
+  // Eigenvalues of J^T J = [[p, q], [q, r]]: (p + r)/2 +- sqrt(((p - r)/2)^2 + q^2).
+  const double p = j00 * j00 + j10 * j10;
+  const double q = j00 * j01 + j10 * j11;
+  const double r = j01 * j01 + j11 * j11;
+  const double mean = 0.5 * (p + r);
+  const double half_gap = 0.5 * (p - r);
+  return std::sqrt(mean + std::sqrt(half_gap * half_gap + q * q));
+}
+
+double mip_level(double j00, double j01, double j10, double j11, int top) {
+  const double sigma = footprint_axis(j00, j01, j10, j11);
+  if (!(sigma > 1.0)) return 0.0;  // magnification, no scaling, or NaN
+  return std::min(std::log2(sigma), static_cast<double>(top));
+}
+
+}  // namespace oflab

@@ -1,0 +1,292 @@
+// The mipmap warp kernel (Williams 83; dissertation section 7.5.5). See mipmap_kernel.h.
+#include "image/mipmap_kernel.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "image/bilinear_blend.h"  // blend_taps, and OFLAB_WARP_SSE2 with <emmintrin.h>
+#include "image/scan_conversion.h"
+#include "image/thread_pool.h"
+#include "image/warp_kernels.h"
+
+namespace oflab {
+namespace {
+
+// Rows per band, as the other kernels' pass 2 (about 16384 pixels a band).
+int min_band_rows(int width) { return std::max(8, 16384 / std::max(width, 1)); }
+
+// The trilinear weight of the upper level in 1/256: frac(level) rounded; `lower` is then
+// the lower level (the weight 256 moves to the next level with weight 0).
+struct LevelPair {
+  int lower = 0;
+  int weight = 0;  // 0..255
+};
+
+LevelPair level_pair(double level) {
+  LevelPair pair;
+  pair.lower = static_cast<int>(std::floor(level));
+  pair.weight = static_cast<int>(std::lround((level - pair.lower) * 256.0));
+  if (pair.weight >= 256) {
+    ++pair.lower;
+    pair.weight = 0;
+  }
+  return pair;
+}
+
+// (a * (256 - w) + b * w + 128) / 256 per channel, rounded.
+Pixel lerp_pixel(const Pixel& a, const Pixel& b, int w) {
+  const int v = 256 - w;
+  auto channel = [&](std::uint8_t Pixel::*c) {
+    return static_cast<std::uint8_t>((a.*c * v + b.*c * w + 128) >> 8);
+  };
+  return Pixel{channel(&Pixel::r), channel(&Pixel::g), channel(&Pixel::b), channel(&Pixel::a)};
+}
+
+// out[k] = lerp_pixel(out[k], upper[k], w) for k < count.
+void lerp_run(Pixel* out, const Pixel* upper, int count, int w) {
+  int k = 0;
+#if defined(OFLAB_WARP_SSE2)
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i wa = _mm_set1_epi16(static_cast<short>(256 - w));
+  const __m128i wb = _mm_set1_epi16(static_cast<short>(w));
+  const __m128i half = _mm_set1_epi16(128);
+  const auto lerp8 = [&](__m128i a, __m128i b) {
+    const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(a, wa), _mm_mullo_epi16(b, wb));
+    return _mm_srli_epi16(_mm_add_epi16(sum, half), 8);
+  };
+  for (; k + 4 <= count; k += 4) {
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + k));
+    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(upper + k));
+    const __m128i low = lerp8(_mm_unpacklo_epi8(a, zero), _mm_unpacklo_epi8(b, zero));
+    const __m128i high = lerp8(_mm_unpackhi_epi8(a, zero), _mm_unpackhi_epi8(b, zero));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm_packus_epi16(low, high));
+  }
+#endif
+  for (; k < count; ++k) out[k] = lerp_pixel(out[k], upper[k], w);
+}
+
+// The spans of the plan's polygon in the output (the pixels every kernel writes).
+std::vector<PixelSpan> output_spans(const WarpPlan& plan) {
+  std::vector<PixelSpan> spans;
+  ScanConverter scan(plan.polygon, plan.output_width, plan.output_height);
+  PixelSpan span;
+  while (scan.next(span)) {
+    if (span.x_begin < span.x_end) spans.push_back(span);
+  }
+  return spans;
+}
+
+// Calls fn(x_begin, x_end) for each stretch of the span's columns a partial warp wants
+// (plan.only, in destination pixels: output pixel plus the plan's origin), or for the whole
+// span without one. Returns the pixels it covered.
+template <typename Fn>
+std::int64_t for_each_wanted(const WarpPlan& plan, const PixelSpan& span, Fn fn) {
+  if (plan.only == nullptr) {
+    fn(span.x_begin, span.x_end);
+    return span.x_end - span.x_begin;
+  }
+  std::int64_t count = 0;
+  for (const ColumnRun& r : plan.only->row(span.y + plan.origin_y)) {
+    const int begin = std::max(span.x_begin, r.begin - plan.origin_x);
+    const int end = std::min(span.x_end, r.end - plan.origin_x);
+    if (begin >= end) continue;
+    fn(begin, end);
+    count += end - begin;
+  }
+  return count;
+}
+
+// The region the plan samples: its polygon clipped to the output.
+ConvexPolygon sampled_region(const WarpPlan& plan) {
+  return clip_to_box(plan.polygon, BoundingBox{0.0, 0.0, static_cast<double>(plan.output_width),
+                                               static_cast<double>(plan.output_height)});
+}
+
+// The plan of level k's bilinear warp: the same output pixels, positions scaled by 2^-k.
+WarpPlan level_plan(const WarpPlan& plan, int k) {
+  WarpPlan level = plan;
+  level.sampling = Sampling::kBilinear;
+  if (k == 0) return level;  // plan.map is level 0's bilinear map already
+  const double scale = std::ldexp(1.0, -k);
+  Mat3 to_level = translation_matrix(-0.5, -0.5) *
+                  mat3_from_rows({scale, 0.0, 0.0}, {0.0, scale, 0.0}, {0.0, 0.0, 1.0}) *
+                  plan.dest_to_source;
+  if (plan.affine_kernel) {
+    entry(to_level, 2, 0) = 0.0;
+    entry(to_level, 2, 1) = 0.0;
+    entry(to_level, 2, 2) = 1.0;
+  }
+  level.map = make_inverse_map(to_level, sampled_region(plan), plan.affine_kernel);
+  return level;
+}
+
+const Image& level_image(const Image& source, const MipPyramid& pyramid, int k) {
+  return k == 0 ? source : pyramid.level(k);
+}
+
+// A partial affine warp whose level pair blends two levels: both levels are sampled into
+// scratch images (their partial warps may compute more than the wanted pixels, the lower
+// level's pixels alone differing from the blend), and only the wanted pixels of the output
+// receive the blend.
+std::int64_t run_affine_partial(const WarpPlan& plan, const Image& source,
+                                const MipPyramid& pyramid, const LevelPair& pair, Image& output,
+                                std::int64_t* computed) {
+  thread_local Image lower_scratch, upper_scratch;  // memory kept from warp to warp
+  Image& lower = lower_scratch;  // the bands run on other threads: name this thread's scratch
+  Image& upper = upper_scratch;
+  lower.reshape(output.width(), output.height());
+  upper.reshape(output.width(), output.height());
+  const std::int64_t written = run_warp_kernel(level_plan(plan, pair.lower),
+                                               level_image(source, pyramid, pair.lower), lower);
+  run_warp_kernel(level_plan(plan, pair.lower + 1), pyramid.level(pair.lower + 1), upper);
+  const std::vector<PixelSpan> spans = output_spans(plan);
+  std::atomic<std::int64_t> blended{0};
+  for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
+                [&](int, int first, int last) {
+                  std::int64_t count = 0;
+                  for (int s = first; s < last; ++s) {
+                    const PixelSpan& span = spans[static_cast<std::size_t>(s)];
+                    count += for_each_wanted(plan, span, [&](int begin, int end) {
+                      Pixel* out = output.row(span.y) + begin;
+                      std::copy(lower.row(span.y) + begin, lower.row(span.y) + end, out);
+                      lerp_run(out, upper.row(span.y) + begin, end - begin, pair.weight);
+                    });
+                  }
+                  blended += count;
+                });
+  if (computed) *computed += blended;
+  return written;
+}
+
+// Affine: one level pair for the whole warp.
+std::int64_t run_affine(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
+                        Image& output, std::int64_t* computed) {
+  const Mat3& h = plan.dest_to_source;
+  const LevelPair pair = level_pair(
+      mip_level(entry(h, 0, 0), entry(h, 0, 1), entry(h, 1, 0), entry(h, 1, 1), pyramid.top()));
+  if (pair.weight != 0 && plan.only != nullptr) {
+    return run_affine_partial(plan, source, pyramid, pair, output, computed);
+  }
+  // One level, or a whole warp: the lower level straight into the output.
+  const std::int64_t written = run_warp_kernel(
+      level_plan(plan, pair.lower), level_image(source, pyramid, pair.lower), output, computed);
+  if (pair.weight == 0) return written;
+  thread_local Image scratch;  // the upper level's samples, memory kept from warp to warp
+  Image& upper = scratch;      // the bands run on other threads: name this thread's scratch
+  upper.reshape(output.width(), output.height());
+  run_warp_kernel(level_plan(plan, pair.lower + 1), pyramid.level(pair.lower + 1), upper);
+  const std::vector<PixelSpan> spans = output_spans(plan);
+  for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
+                [&](int, int first, int last) {
+                  for (int s = first; s < last; ++s) {
+                    const PixelSpan& span = spans[static_cast<std::size_t>(s)];
+                    lerp_run(output.row(span.y) + span.x_begin, upper.row(span.y) + span.x_begin,
+                             span.x_end - span.x_begin, pair.weight);
+                  }
+                });
+  return written;
+}
+
+// An upper bound of the footprint axis over the region of a perspective plan: the inverse
+// map's Jacobian is N(x) / D(x)^2 with N affine in x, so |N|_F (convex) is largest and D
+// (linear, positive) smallest at a vertex.
+double footprint_bound(const Mat3& h, const ConvexPolygon& region) {
+  double largest_n = 0.0;
+  double smallest_d = std::numeric_limits<double>::infinity();
+  for (const Vec2& p : region.vertices()) {
+    const double d = entry(h, 2, 0) * p.x + entry(h, 2, 1) * p.y + entry(h, 2, 2);
+    const double nu = entry(h, 0, 0) * p.x + entry(h, 0, 1) * p.y + entry(h, 0, 2);
+    const double nv = entry(h, 1, 0) * p.x + entry(h, 1, 1) * p.y + entry(h, 1, 2);
+    double norm = 0.0;
+    for (int c = 0; c < 2; ++c) {
+      const double ju = entry(h, 0, c) * d - nu * entry(h, 2, c);
+      const double jv = entry(h, 1, c) * d - nv * entry(h, 2, c);
+      norm += ju * ju + jv * jv;
+    }
+    largest_n = std::max(largest_n, std::sqrt(norm));
+    smallest_d = std::min(smallest_d, d);
+  }
+  if (!(smallest_d > 0.0)) return std::numeric_limits<double>::infinity();
+  return largest_n / (smallest_d * smallest_d);
+}
+
+// Bilinear sample of `image` at (u, v) in pixel-centre index coordinates, taps clamped to
+// the image; weights truncated to 2^-16 as in the kernels.
+Pixel bilinear_clamped(const Image& image, double u, double v) {
+  u = std::clamp(u, -1.0, static_cast<double>(image.width()));
+  v = std::clamp(v, -1.0, static_cast<double>(image.height()));
+  const double fu = std::floor(u);
+  const double fv = std::floor(v);
+  const auto fx = std::min(static_cast<std::uint32_t>((u - fu) * 65536.0), kBlendWeightMask);
+  const auto fy = std::min(static_cast<std::uint32_t>((v - fv) * 65536.0), kBlendWeightMask);
+  const int max_x = image.width() - 1;
+  const int max_y = image.height() - 1;
+  const int x0 = std::clamp(static_cast<int>(fu), 0, max_x);
+  const int x1 = std::clamp(static_cast<int>(fu) + 1, 0, max_x);
+  const int y0 = std::clamp(static_cast<int>(fv), 0, max_y);
+  const int y1 = std::clamp(static_cast<int>(fv) + 1, 0, max_y);
+  return blend_taps(&image.at(x0, y0), &image.at(x1, y0), &image.at(x0, y1), &image.at(x1, y1), fx,
+                    fy);
+}
+
+// One output pixel at (x, y) of a perspective plan: its own level, trilinear.
+Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyramid, int x, int y) {
+  const double px = x + 0.5, py = y + 0.5;
+  const double d = entry(h, 2, 0) * px + entry(h, 2, 1) * py + entry(h, 2, 2);
+  const double su = (entry(h, 0, 0) * px + entry(h, 0, 1) * py + entry(h, 0, 2)) / d;
+  const double sv = (entry(h, 1, 0) * px + entry(h, 1, 1) * py + entry(h, 1, 2)) / d;
+  const double j00 = (entry(h, 0, 0) - su * entry(h, 2, 0)) / d;
+  const double j01 = (entry(h, 0, 1) - su * entry(h, 2, 1)) / d;
+  const double j10 = (entry(h, 1, 0) - sv * entry(h, 2, 0)) / d;
+  const double j11 = (entry(h, 1, 1) - sv * entry(h, 2, 1)) / d;
+  const LevelPair pair = level_pair(mip_level(j00, j01, j10, j11, pyramid.top()));
+  const double scale = std::ldexp(1.0, -pair.lower);
+  const Pixel lower = bilinear_clamped(level_image(source, pyramid, pair.lower), su * scale - 0.5,
+                                       sv * scale - 0.5);
+  if (pair.weight == 0) return lower;
+  const Pixel upper = bilinear_clamped(pyramid.level(pair.lower + 1), 0.5 * su * scale - 0.5,
+                                       0.5 * sv * scale - 0.5);
+  return lerp_pixel(lower, upper, pair.weight);
+}
+
+std::int64_t run_perspective(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
+                             Image& output, std::int64_t* computed) {
+  const Mat3& h = plan.dest_to_source;
+  if (footprint_bound(h, sampled_region(plan)) <= 1.0) {
+    return run_warp_kernel(level_plan(plan, 0), source, output, computed);
+  }
+  const std::vector<PixelSpan> spans = output_spans(plan);
+  std::int64_t written = 0;
+  for (const PixelSpan& span : spans) written += span.x_end - span.x_begin;
+  std::atomic<std::int64_t> sampled{0};
+  for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
+                [&](int, int first, int last) {
+                  std::int64_t count = 0;
+                  for (int s = first; s < last; ++s) {
+                    const PixelSpan& span = spans[static_cast<std::size_t>(s)];
+                    Pixel* out = output.row(span.y);
+                    count += for_each_wanted(plan, span, [&](int begin, int end) {
+                      for (int x = begin; x < end; ++x) {
+                        out[x] = trilinear_pixel(h, source, pyramid, x, span.y);
+                      }
+                    });
+                  }
+                  sampled += count;
+                });
+  if (computed) *computed += sampled;
+  return written;
+}
+
+}  // namespace
+
+std::int64_t run_mipmap_kernel(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
+                               Image& output, std::int64_t* computed) {
+  if (plan.empty || source.empty() || output.empty()) return 0;
+  return plan.affine_kernel ? run_affine(plan, source, pyramid, output, computed)
+                            : run_perspective(plan, source, pyramid, output, computed);
+}
+
+}  // namespace oflab

@@ -1,0 +1,235 @@
+// The mip pyramid and the mipmap kernel against independent computations: the levels
+// against direct box averages of the source, the level choice against the analytic
+// Jacobian of known affine and perspective warps, a pure 2x minification against level 1,
+// and magnification against the bilinear kernel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "image/mip_pyramid.h"
+#include "image/warp.h"
+#include "warp_reference.h"
+
+namespace oflab {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Mat3 scaling(double sx, double sy) {
+  return mat3_from_rows({sx, 0.0, 0.0}, {0.0, sy, 0.0}, {0.0, 0.0, 1.0});
+}
+
+Mat3 rotation(double radians) {
+  return mat3_from_rows({std::cos(radians), -std::sin(radians), 0.0},
+                        {std::sin(radians), std::cos(radians), 0.0}, {0.0, 0.0, 1.0});
+}
+
+TEST(MipPyramid, LevelsAreBoxAveragesOfTheSource) {
+  std::mt19937 rng(5);
+  for (const auto& [w, h] : {std::pair{64, 64}, std::pair{37, 23}, std::pair{1, 9}}) {
+    const Image source = testing::random_image(rng, w, h);
+    MipPyramid pyramid;
+    build_mip_pyramid(source, pyramid);
+    ASSERT_EQ(pyramid.top(), static_cast<int>(std::ceil(std::log2(std::max(w, h)))));
+    EXPECT_EQ(pyramid.level(pyramid.top()).width(), 1);
+    EXPECT_EQ(pyramid.level(pyramid.top()).height(), 1);
+    for (int k = 1; k <= pyramid.top(); ++k) {
+      const Image& level = pyramid.level(k);
+      const int side = 1 << k;
+      ASSERT_EQ(level.width(), (w + side - 1) / side);
+      ASSERT_EQ(level.height(), (h + side - 1) / side);
+      // Blocks wholly inside the source: the plain mean of its 2^k x 2^k pixels. Each level
+      // rounds once, so after k levels the value is within k / 2 of the exact mean.
+      for (int j = 0; (j + 1) * side <= h; ++j) {
+        for (int i = 0; (i + 1) * side <= w; ++i) {
+          double sum[4] = {0, 0, 0, 0};
+          for (int y = j * side; y < (j + 1) * side; ++y) {
+            for (int x = i * side; x < (i + 1) * side; ++x) {
+              const Pixel& p = source.at(x, y);
+              sum[0] += p.r, sum[1] += p.g, sum[2] += p.b, sum[3] += p.a;
+            }
+          }
+          const Pixel& got = level.at(i, j);
+          const double values[4] = {double(got.r), double(got.g), double(got.b), double(got.a)};
+          for (int c = 0; c < 4; ++c) {
+            ASSERT_LE(std::abs(values[c] - sum[c] / (side * side)), 0.5 * k)
+                << w << "x" << h << " level " << k << " pixel " << i << "," << j;
+          }
+        }
+      }
+    }
+  }
+}
+
+// Two independent reductions agree: box_reduce by 2 is level 1 of an even image; by 4 it is
+// the plain mean of each 4 x 4 block (within the rounding of one mean).
+TEST(MipPyramid, BoxReduceIsTheBlockMean) {
+  std::mt19937 rng(6);
+  const Image source = testing::random_image(rng, 48, 32);
+  MipPyramid pyramid;
+  build_mip_pyramid(source, pyramid);
+  EXPECT_EQ(box_reduce(source, 2).pixels(), pyramid.level(1).pixels());
+  const Image by4 = box_reduce(source, 4);
+  ASSERT_EQ(by4.width(), 12);
+  ASSERT_EQ(by4.height(), 8);
+  for (int j = 0; j < 8; ++j) {
+    for (int i = 0; i < 12; ++i) {
+      double alpha = 0.0;
+      for (int y = 4 * j; y < 4 * j + 4; ++y) {
+        for (int x = 4 * i; x < 4 * i + 4; ++x) alpha += source.at(x, y).a;
+      }
+      ASSERT_LE(std::abs(by4.at(i, j).a - alpha / 16.0), 0.5);
+    }
+  }
+  EXPECT_THROW(box_reduce(source, 5), std::invalid_argument);
+  EXPECT_THROW(box_reduce(source, 0), std::invalid_argument);
+}
+
+TEST(MipPyramid, ALevelOfAnOddImageClampsItsLastColumn) {
+  Image source(3, 1);
+  source.at(0, 0) = Pixel{0, 0, 0, 0};
+  source.at(1, 0) = Pixel{100, 100, 100, 200};
+  source.at(2, 0) = Pixel{40, 40, 40, 80};
+  MipPyramid pyramid;
+  build_mip_pyramid(source, pyramid);
+  ASSERT_EQ(pyramid.level(1).width(), 2);
+  EXPECT_EQ(pyramid.level(1).at(0, 0), (Pixel{50, 50, 50, 100}));
+  EXPECT_EQ(pyramid.level(1).at(1, 0), (Pixel{40, 40, 40, 80}));  // its own tap, clamped
+}
+
+// The footprint's longer axis of an affine warp A (source -> destination) is 1 / the smaller
+// singular value of A, known here by construction: A = R(a) diag(s1, s2) R(b).
+TEST(MipLevel, AffineLevelIsLog2OfTheInverseOfTheSmallerScale) {
+  for (double s1 : {0.1, 0.3, 0.5, 0.9, 2.0}) {
+    for (double s2 : {0.2, 0.5, 1.0, 3.0}) {
+      const Mat3 a = rotation(0.7) * scaling(s1, s2) * rotation(-1.9);
+      const Mat3 j = glm::inverse(a);
+      const double expected = std::clamp(std::log2(1.0 / std::min(s1, s2)), 0.0, 5.0);
+      EXPECT_NEAR(mip_level(entry(j, 0, 0), entry(j, 0, 1), entry(j, 1, 0), entry(j, 1, 1), 5),
+                  expected, 1e-12)
+          << s1 << " " << s2;
+    }
+  }
+}
+
+// A perspective warp: the inverse map's Jacobian at a pixel by central differences of the
+// inverse homography, and the longer footprint axis as a brute-force maximum over directions.
+TEST(MipLevel, PerspectiveLevelFollowsTheJacobianOfTheInverseMap) {
+  const Mat3 h = mat3_from_rows({0.8, 0.1, 5.0}, {-0.05, 0.6, 3.0}, {0.002, 0.004, 1.0});
+  const Mat3 inverse = glm::inverse(h);
+  for (const Vec2& p : {Vec2(10.5, 20.5), Vec2(100.5, 5.5), Vec2(60.5, 90.5)}) {
+    const double step = 1e-4;
+    const Vec2 dx = (apply_homography(inverse, p + Vec2(step, 0)) -
+                     apply_homography(inverse, p - Vec2(step, 0))) /
+                    (2 * step);
+    const Vec2 dy = (apply_homography(inverse, p + Vec2(0, step)) -
+                     apply_homography(inverse, p - Vec2(0, step))) /
+                    (2 * step);
+    double sigma = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+      const double t = k * kPi / 20000;
+      sigma = std::max(sigma, glm::length(std::cos(t) * dx + std::sin(t) * dy));
+    }
+    // The analytic Jacobian the kernel uses: (A - s g^T) / D at the pixel.
+    const Vec3 q = inverse * Vec3(p, 1.0);
+    const Vec2 s(q.x / q.z, q.y / q.z);
+    const double d = q.z;
+    auto e = [&](int r, int c) { return entry(inverse, r, c); };
+    const double level = mip_level((e(0, 0) - s.x * e(2, 0)) / d, (e(0, 1) - s.x * e(2, 1)) / d,
+                                   (e(1, 0) - s.y * e(2, 0)) / d, (e(1, 1) - s.y * e(2, 1)) / d, 8);
+    EXPECT_GT(sigma, 1.0);
+    EXPECT_NEAR(level, std::log2(sigma), 1e-6) << p.x << "," << p.y;
+  }
+}
+
+// A pure 2x minification puts every output pixel centre on a level-1 pixel centre with
+// footprint 2: level 1 exactly, in both kernels.
+TEST(MipmapWarp, APure2xMinificationSamplesLevel1Exactly) {
+  std::mt19937 rng(8);
+  const Layer source = make_layer(testing::random_image(rng, 64, 48));
+  MipPyramid pyramid;
+  build_mip_pyramid(source.image, pyramid);
+  for (WarpKernel kernel : {WarpKernel::kAffine, WarpKernel::kPerspective}) {
+    Image output(32, 24, testing::kSentinel);
+    WarpOptions options{Sampling::kMipmap, kernel, kDefaultHorizonEpsilon, &pyramid};
+    const WarpStats stats = warp_layer_into(source, scaling(0.5, 0.5), output, 0, 0, options);
+    EXPECT_EQ(stats.pixels_written, 32 * 24);
+    int differing = 0;
+    for (int y = 0; y < 24; ++y) {
+      for (int x = 0; x < 32; ++x) differing += output.at(x, y) != pyramid.level(1).at(x, y);
+    }
+    EXPECT_EQ(differing, 0) << "kernel " << static_cast<int>(kernel);
+    // The control: bilinear sampling of the same warp is not level 1 (it skips texels).
+    Image bilinear(32, 24, testing::kSentinel);
+    options.sampling = Sampling::kBilinear;
+    warp_layer_into(source, scaling(0.5, 0.5), bilinear, 0, 0, options);
+    int bilinear_differing = 0;
+    for (int y = 0; y < 24; ++y) {
+      for (int x = 0; x < 32; ++x)
+        bilinear_differing += bilinear.at(x, y) != pyramid.level(1).at(x, y);
+    }
+    EXPECT_GT(bilinear_differing, 32 * 24 / 2);
+  }
+}
+
+// Where a warp magnifies (or keeps the scale) everywhere, mipmap is the bilinear kernel, pixel
+// for pixel: affine rotations and enlargements, and perspective warps that enlarge.
+TEST(MipmapWarp, MagnificationIsBilinearExactly) {
+  std::mt19937 rng(9);
+  const Layer source = make_layer(testing::random_image(rng, 40, 30));
+  const Mat3 perspective = mat3_from_rows({1.5, 0.2, 3.0}, {0.1, 1.4, 2.0}, {0.001, 0.002, 1.0});
+  for (const Mat3& m :
+       {rotation(0.4), translation_matrix(3.3, -2.1) * scaling(1.7, 1.2), perspective}) {
+    for (WarpKernel kernel : {WarpKernel::kAutomatic, WarpKernel::kPerspective}) {
+      Image mip(90, 80, testing::kSentinel), bilinear(90, 80, testing::kSentinel);
+      warp_layer_into(source, m, mip, -20, -20, {Sampling::kMipmap, kernel});
+      warp_layer_into(source, m, bilinear, -20, -20, {Sampling::kBilinear, kernel});
+      EXPECT_EQ(mip.pixels(), bilinear.pixels());
+    }
+  }
+}
+
+TEST(MipmapWarp, APyramidOfAnotherImageIsRefused) {
+  const Layer source = make_layer(Image(16, 16, Pixel{9, 9, 9, 9}));
+  MipPyramid pyramid;
+  build_mip_pyramid(Image(8, 16), pyramid);
+  Image output(8, 8);
+  try {
+    warp_layer_into(source, scaling(0.5, 0.5), output, 0, 0,
+                    {Sampling::kMipmap, WarpKernel::kAutomatic, kDefaultHorizonEpsilon, &pyramid});
+    FAIL() << "accepted a pyramid of an 8 x 16 image for a 16 x 16 source";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("8 x 16"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(output.at(0, 0), Pixel{});  // nothing written
+}
+
+// A stripe pattern minified 6x: bilinear aliases (it keeps single texels, so the mean shows
+// in no pixel), mipmap gives the stripes' mean grey, as a 16-sample box filter does.
+TEST(MipmapWarp, MinifiedStripesBecomeTheirMeanNotAnAlias) {
+  Image stripes(192, 192);
+  for (int y = 0; y < 192; ++y) {
+    for (int x = 0; x < 192; ++x) {
+      const std::uint8_t v = (x / 2) % 2 == 0 ? 255 : 0;
+      stripes.at(x, y) = Pixel{v, v, v, 255};
+    }
+  }
+  const Layer source = make_layer(stripes);
+  const Mat3 m = scaling(1.0 / 6.0, 1.0 / 6.0);
+  auto worst_distance_from_grey = [&](Sampling sampling) {
+    Image out(32, 32);
+    warp_layer_into(source, m, out, 0, 0, {sampling});
+    int worst = 0;
+    for (int y = 2; y < 30; ++y) {
+      for (int x = 2; x < 30; ++x) worst = std::max(worst, std::abs(int(out.at(x, y).r) - 128));
+    }
+    return worst;
+  };
+  EXPECT_LE(worst_distance_from_grey(Sampling::kMipmap), 24);
+  EXPECT_GE(worst_distance_from_grey(Sampling::kBilinear), 100);  // the control aliases
+}
+
+}  // namespace
+}  // namespace oflab
