@@ -86,10 +86,19 @@ TEST(VisibleWarpRuns, MipmapFramesAreTheSameBytesWithFewerPixelsWarped) {
   EXPECT_LT(visible, whole);
 }
 
-// The street's animated layers do not overlap (each side's walls are coplanar, the closing
-// facade is in full view) and its walls reaching out of the frame are the clipped ones,
-// rendered exactly: the same bytes, and no pixel warped more.
-TEST(VisibleWarpRuns, StreetFramesAreTheSameBytes) { expect_same_frames("street", "walk", 6); }
+// The street seen from inside is a corridor: no animated layer hides another (each side's
+// walls are coplanar, the closing facade lies between them), and a wall reaching out of the
+// frame beyond the guard band is a clipped render, drawn exactly and only within the frame.
+// Walking straight on (the walk's first 90 frames), every warped layer lies whole in the frame:
+// nothing to leave out, the same pixels warped. Turning right (from frame 90), the left walls
+// slide out of the frame while still warped: their pixels beyond the frame's left edge are
+// left out.
+TEST(VisibleWarpRuns, StreetWarpsFewerPixelsOnceItsWallsLeaveTheFrame) {
+  const auto [straight_whole, straight_visible] = expect_same_frames("street", "walk", 6);
+  EXPECT_EQ(straight_visible, straight_whole);
+  const auto [whole, visible] = expect_same_frames("street", "walk", 14, Sampling::kNearest, 96);
+  EXPECT_LT(visible, whole);
+}
 
 // compare's figure (PolicyRow::pixels_warped, its JSON and summary.csv): the pixels computed,
 // fewer than those written under the visible-only warp, all of them under `whole`.
