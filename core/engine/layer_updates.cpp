@@ -234,12 +234,15 @@ void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameRepor
 void PlaneEngine::complete_display(FrameReport& report, bool all) {
   if (!partial_.active) return;
   const Image& image = display_.layer.image;
-  // The pixels wanted, as placed when the layer was warped (it has moved by whole pixels).
+  // The pixels wanted, as placed when the layer was warped (it has moved by whole pixels):
+  // the shown pixels within the layer's box only (the frame's other rows are not copied).
   const glm::ivec2 moved = glm::ivec2(display_.offset_x, display_.offset_y) - layer_origin_;
   PixelRows wanted =
       all || !shown_pixels_
           ? PixelRows::full(image.width(), image.height()).shifted(layer_origin_.x, layer_origin_.y)
-          : shown_pixels_->shifted(-moved.x, -moved.y);
+          : shown_pixels_
+                ->within(display_.offset_x, display_.offset_y, image.width(), image.height())
+                .shifted(-moved.x, -moved.y);
   const PixelRows missing = wanted.minus(partial_.done);
   if (!missing.empty()) {
     WarpOptions options;
