@@ -30,18 +30,30 @@ std::vector<ColumnRun> merged(std::vector<ColumnRun> runs) {
   return out;
 }
 
-// `runs` without columns [cut_begin, cut_end).
-std::vector<ColumnRun> cut(const std::vector<ColumnRun>& runs, int cut_begin, int cut_end) {
-  std::vector<ColumnRun> out;
-  for (const ColumnRun& r : runs) {
-    if (r.end <= cut_begin || r.begin >= cut_end) {
-      out.push_back(r);
-      continue;
-    }
-    if (r.begin < cut_begin) out.push_back({r.begin, cut_begin});
-    if (r.end > cut_end) out.push_back({cut_end, r.end});
+// Removes columns [cut_begin, cut_end) from `runs` (sorted, disjoint) in place: the runs the
+// cut meets are replaced by what is left of the first and of the last, so the vector's memory
+// serves again (a cut inside one run is the only one that adds a run).
+void cut(std::vector<ColumnRun>& runs, int cut_begin, int cut_end) {
+  if (cut_begin >= cut_end) return;
+  const auto first =
+      std::find_if(runs.begin(), runs.end(), [&](const ColumnRun& r) { return r.end > cut_begin; });
+  const auto last =
+      std::find_if(first, runs.end(), [&](const ColumnRun& r) { return r.begin >= cut_end; });
+  if (first == last) return;
+  ColumnRun pieces[2];
+  int n = 0;
+  if (first->begin < cut_begin) pieces[n++] = {first->begin, cut_begin};
+  if (std::prev(last)->end > cut_end) pieces[n++] = {cut_end, std::prev(last)->end};
+  const auto met = static_cast<int>(last - first);
+  const auto at = static_cast<std::size_t>(first - runs.begin());
+  if (n <= met) {
+    std::copy(pieces, pieces + n, runs.begin() + static_cast<std::ptrdiff_t>(at));
+    runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(at) + n,
+               runs.begin() + static_cast<std::ptrdiff_t>(at) + met);
+  } else {  // one run split in two
+    runs[at] = pieces[0];
+    runs.insert(runs.begin() + static_cast<std::ptrdiff_t>(at) + 1, pieces[1]);
   }
-  return out;
 }
 
 // The open interval of x where the horizontal line at `y` lies inside the convex polygon
@@ -93,9 +105,17 @@ std::string warp_area_name_list(const std::string& separator) {
 
 PixelRows PixelRows::full(int width, int height) {
   PixelRows set;
-  set.rows_.assign(static_cast<std::size_t>(std::max(height, 0)),
-                   width > 0 ? std::vector<ColumnRun>{{0, width}} : std::vector<ColumnRun>{});
+  set.fill(width, height);
   return set;
+}
+
+void PixelRows::fill(int width, int height) {
+  top_ = 0;
+  rows_.resize(static_cast<std::size_t>(std::max(height, 0)));
+  for (auto& runs : rows_) {
+    runs.clear();
+    if (width > 0) runs.push_back({0, width});
+  }
 }
 
 const std::vector<ColumnRun>& PixelRows::row(int y) const {
@@ -137,8 +157,7 @@ void PixelRows::remove_centres_inside(const ConvexPolygon& polygon) {
     const double hi = std::ceil(x_max - kRoom - 0.5);  // exclusive
     if (!(lo < hi)) continue;
     const double limit = 1e9;
-    auto& runs = at(y);
-    runs = cut(runs, static_cast<int>(std::max(lo, -limit)), static_cast<int>(std::min(hi, limit)));
+    cut(at(y), static_cast<int>(std::max(lo, -limit)), static_cast<int>(std::min(hi, limit)));
   }
 }
 
@@ -146,7 +165,7 @@ PixelRows PixelRows::minus(const PixelRows& other) const {
   PixelRows out = *this;
   for (int y = top_; y < top_ + rows(); ++y) {
     auto& runs = out.at(y);
-    for (const ColumnRun& r : other.row(y)) runs = cut(runs, r.begin, r.end);
+    for (const ColumnRun& r : other.row(y)) cut(runs, r.begin, r.end);
   }
   return out;
 }

@@ -40,6 +40,9 @@ class PixelRows {
   PixelRows() = default;
   // Every pixel of a width x height image. Precondition: width, height >= 0.
   static PixelRows full(int width, int height);
+  // Makes this set every pixel of a width x height image, its rows' memory kept (a set filled
+  // again each frame allocates nothing). Precondition: width, height >= 0.
+  void fill(int width, int height);
 
   // The rows that may hold pixels: [top(), top() + rows()).
   int top() const { return top_; }

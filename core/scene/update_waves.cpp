@@ -34,7 +34,7 @@ void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame
   fragment_regions_.resize(fragments.size());
   occlusion_.clear(camera_.width, camera_.height);
   if (settings_.engine.warp_area == WarpArea::kVisible) {
-    shown_pixels_ = PixelRows::full(camera_.width, camera_.height);
+    shown_pixels_.fill(camera_.width, camera_.height);
   }
   wave_.clear();
   // Front to back: decide visibility against what is already in front, queue the update,
