@@ -25,6 +25,7 @@ constexpr const char* kSceneOnlyOptions[] = {"--compare-conventional",
                                              "--near",
                                              "--guard-band",
                                              "--no-skip-hidden",
+                                             "--warp",
                                              "--hole-fill",
                                              "--cache-angle",
                                              "--node-polygons",
@@ -202,6 +203,7 @@ nlohmann::json animate_json(const AnimateInputs& inputs, const AnimationRun& run
 const std::map<std::string, int>& animate_options() {
   static const std::map<std::string, int> options = [] {
     std::map<std::string, int> all = run_options();
+    all.insert({"--warp", 1});  // scenes only (read_scene_settings)
     all.insert({{"--mode", 1},
                 {"--no-warm-up", 0},
                 {"--repeat", 1},

@@ -46,6 +46,10 @@ SceneSettings read_scene_settings(const CliArgs& a) {
     throw UsageError("--guard-band: must be from 0 to 16 image sizes");
   }
   s.skip_hidden = !a.has("--no-skip-hidden");
+  const std::string warp = a.text_or("--warp", warp_area_name(s.engine.warp_area));
+  if (!parse_warp_area(warp, &s.engine.warp_area)) {
+    throw UsageError("--warp: '" + warp + "' is not one of " + warp_area_name_list());
+  }
   const std::string fill = a.text_or("--hole-fill", hole_fill_name(s.hole_fill));
   if (!parse_hole_fill(fill, s.hole_fill)) {
     throw UsageError("--hole-fill: '" + fill + "' is not one of " + hole_fill_name_list());

@@ -18,7 +18,8 @@ namespace oflab {
 int animate_scene(const CliArgs& args, std::ostream& out, std::ostream& err);
 
 // The scene settings of the options: the engine's (read_engine_settings), --near,
-// --guard-band (0..16 image sizes) and --no-skip-hidden. Throws UsageError naming the option.
+// --guard-band (0..16 image sizes), --no-skip-hidden and --warp visible|whole (what of each
+// layer is warped, EngineSettings::warp_area). Throws UsageError naming the option.
 SceneSettings read_scene_settings(const CliArgs& args);
 
 // The run source of --scene NAME|FILE and --script NAME|FILE with the settings of the options

@@ -84,6 +84,7 @@ int run(const CliArgs& a, std::ostream& out, std::ostream& err) {
     if (a.has(option))
       throw UsageError(std::string(option) + ": not used by --mode scene-shifting");
   }
+  if (a.has("--warp")) throw UsageError("--warp: not used by --mode scene-shifting");
   RunSource source;
   source.viewer = read_viewer_script_option(a);
   source.scene = std::make_shared<const Scene>(read_scene_option(a));

@@ -47,7 +47,7 @@ std::string animate_usage() {
       "               [--near Z] [--guard-band G] [--hole-fill none|stretch|background]\n"
       "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
       "               [--mesh-grid PX] [--mesh-split Z] [--mesh-rebuild D] [--mesh-jump J]\n"
-      "               [--rubber-sheets drop|keep]\n"
+      "               [--rubber-sheets drop|keep] [--warp visible|whole]\n"
       "               [--no-skip-hidden]   (--compare-conventional needs an X display)\n"
       "       oflab-cli animate --mode " +
       source_kind_modes("|") +
@@ -107,7 +107,7 @@ std::vector<Command>& command_table() {
        "               [--budget-pixels N | --budget-ms T]   (with budget in the list)\n"
        "               [--cadence N] [--stabilization-plane X Y Z NX NY NZ]\n"
        "               [--near Z] [--guard-band G] [--no-skip-hidden]\n"
-       "               [--hole-fill none|stretch|background]\n"
+       "               [--warp visible|whole] [--hole-fill none|stretch|background]\n"
        "               [--cache-angle DEG] [--node-polygons N] [--safety-radius R]\n"
        "               [--mesh-grid PX] [--mesh-split Z] [--mesh-rebuild D] [--mesh-jump J]\n"
        "               [--rubber-sheets drop|keep]\n"

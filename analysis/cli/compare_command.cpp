@@ -24,7 +24,7 @@ RunSource read_source(const CliArgs& a, const SourceKind** kind) {
     *kind = &source_kind("scene");
     return read_scene_source(a);  // as animate reads it: the same options, the same run
   }
-  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--hole-fill",
+  for (const char* option : {"--near", "--guard-band", "--no-skip-hidden", "--warp", "--hole-fill",
                              "--cache-angle", "--node-polygons", "--safety-radius", "--mesh-grid",
                              "--mesh-split", "--mesh-rebuild", "--mesh-jump", "--rubber-sheets"}) {
     if (a.has(option)) throw UsageError(std::string(option) + ": needs --scene NAME|FILE");
@@ -54,7 +54,8 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
   summary << ",work_saved,time_saved,model_work_saved,max_measured_error_px,"
              "mean_measured_error_px,mean_psnr_db,layer_frames,frames,frames_over_budget,"
              "starved_layer_frames,mean_optimality_gap,hole_pixels,latency_frames,mean_ssim,"
-             "inpainted_pixels,pixels_written,pixels_written_p95,pixels_written_max\n";
+             "inpainted_pixels,pixels_written,pixels_written_p95,pixels_written_max,pixels_warped,"
+             "pixels_warped_p95\n";
   for (const PolicyRow& row : rows) {
     summary << row.name;
     for (double share : row.level_share) summary << ',' << 100.0 * share;
@@ -72,7 +73,8 @@ void write_outputs(AtomicDir& out, const std::string& dir, const SourceKind& kin
     summary << ',' << row.hole_pixels << ',' << row.latency_frames << ',';
     if (std::isfinite(row.mean_ssim)) summary << row.mean_ssim;
     summary << ',' << row.inpainted_pixels << ',' << row.pixels_written << ','
-            << row.pixels_written_p95 << ',' << row.pixels_written_max << "\n";
+            << row.pixels_written_p95 << ',' << row.pixels_written_max << ',' << row.pixels_warped
+            << ',' << row.pixels_warped_p95 << "\n";
   }
   write_output(out, dir, "summary.csv", summary.str());
   out.commit();
@@ -186,6 +188,7 @@ const std::map<std::string, int>& compare_options() {
   static const std::map<std::string, int> options = [] {
     std::map<std::string, int> all = run_options();
     all.insert({"--policies", 1});
+    all.insert({"--warp", 1});  // scenes only (read_scene_settings)
     return all;
   }();
   return options;

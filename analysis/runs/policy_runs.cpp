@@ -26,6 +26,14 @@ void set_pixel_peaks(const AnimationRun& run, PolicyRow* row) {
   }
   row->pixels_written_p95 = nearest_rank_percentile(per_frame, 95.0);
   row->pixels_written_max = nearest_rank_percentile(per_frame, 100.0);
+  std::vector<std::int64_t> warped;
+  row->pixels_warped = 0;
+  for (std::size_t i = 0; i < run.frames.size(); ++i) {
+    const AnimationFrame& f = run.frames[i];
+    row->pixels_warped += f.pixels_written - f.pixels_not_warped;
+    if (i > 0) warped.push_back(f.pixels_written - f.pixels_not_warped);
+  }
+  row->pixels_warped_p95 = nearest_rank_percentile(warped, 95.0);
 }
 
 nlohmann::json expiry_json(const ExpiryTable& t) {
@@ -197,7 +205,9 @@ nlohmann::json policy_row_json(const PolicyRow& row) {
                       {"latency_frames", row.latency_frames},
                       {"pixels_written", row.pixels_written},
                       {"pixels_written_p95", row.pixels_written_p95},
-                      {"pixels_written_max", row.pixels_written_max}};
+                      {"pixels_written_max", row.pixels_written_max},
+                      {"pixels_warped", row.pixels_warped},
+                      {"pixels_warped_p95", row.pixels_warped_p95}};
   if (row.cache.active) j["cache"] = node_cache_json(row.cache);
   if (row.predicts) j["expiry"] = expiry_json(row.expiry);
   if (row.budgeted) {
@@ -234,6 +244,12 @@ void print_policy_table(const std::vector<PolicyRow>& rows, std::ostream& out) {
         << std::setprecision(1) << std::setw(8) << r.mean_psnr_db << std::setprecision(3)
         << std::setw(8) << r.mean_ssim << "\n";
   }
+  out << "pixels written (warped):";
+  for (const PolicyRow& r : rows) {
+    out << (&r == &rows.front() ? " " : ", ") << r.name << " " << r.pixels_written << " ("
+        << r.pixels_warped << ")";
+  }
+  out << "\n";
   for (const PolicyRow& r : rows) {
     if (!r.budgeted) continue;
     out << r.name << ": " << r.frames_over_budget << " frames over budget, "

@@ -95,7 +95,11 @@ struct PolicyRow {
   std::int64_t pixels_written = 0;      // RunSummary::pixels, over every frame
   std::int64_t pixels_written_p95 = 0;  // nearest-rank 95th percentile per frame, frame 0 out
   std::int64_t pixels_written_max = 0;  // the largest per frame, frame 0 out
-  NodeCacheTotals cache;                // RunSummary's (the hierarchical-cache policy only)
+  // Of the pixels written, those the warp kernels computed (AnimationFrame::pixels_not_warped:
+  // fewer under a visible-only warp), over every frame and its per-frame p95, frame 0 out.
+  std::int64_t pixels_warped = 0;
+  std::int64_t pixels_warped_p95 = 0;
+  NodeCacheTotals cache;  // RunSummary's (the hierarchical-cache policy only)
   // `lookahead` only (ReusePolicy::spreads_updates): its predicted against actual expiries.
   bool predicts = false;
   ExpiryTable expiry;
@@ -111,7 +115,8 @@ std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double pe
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",
 // "mean_measured_error_px", "mean_psnr_db", "mean_ssim" (null when NaN), "layer_frames",
 // "frames", "hole_pixels" and "inpainted_pixels" (totals over the frames), "latency_frames",
-// "pixels_written" (total), "pixels_written_p95" and "pixels_written_max" (per frame), for
+// "pixels_written" (total), "pixels_written_p95" and "pixels_written_max" (per frame),
+// "pixels_warped" (total) and "pixels_warped_p95" (per frame), for
 // `lookahead` "expiry": {"by_rule", "early", "other", "unpredicted", "exact",
 // "median_error_frames", "max_error_frames" (null without pairs), "layers": [{"layer",
 // "predicted": [frames], "actual": [frames]}]}, for

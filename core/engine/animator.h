@@ -88,6 +88,10 @@ struct AnimationFrame {
   double visibility_ms = 0.0;             // of which the hidden test
   int update_waves = 0;             // the scene engine's waves of layer updates (scene_animator.h)
   std::int64_t pixels_written = 0;  // by the warp kernels
+  // Of pixels_written, those the scene engine's visible-only warp left out, less those of
+  // earlier frames it warped now (FrameReport::pixels_not_warped); the pixels warped are
+  // pixels_written - pixels_not_warped.
+  std::int64_t pixels_not_warped = 0;
   std::int64_t pixels_composited = 0;  // into the frame
   // The layers' work in the engine's cost model (core/engine/cost_model.h kPerspectiveWarpCost
   // and the rest; pixels of a perspective warp, deterministic), the part of update_ms spent

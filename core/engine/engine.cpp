@@ -271,25 +271,6 @@ Mat3 PlaneEngine::next_model(const PlanarFlowCoefficients& flow, const PlanePose
   return centred_to_pixel_homography(camera_, taylor_homography(step, 1.0)) * model_;
 }
 
-Mat3 PlaneEngine::warp_after(Level level, const Mat3& correction, const Vec2& point,
-                             const Mat3& model) const {
-  switch (level) {
-    case Level::kNone:
-      return displayed_;
-    case Level::kTranslate: {
-      const Vec2 step = translation_step(correction, point);
-      return translation_matrix(step.x, step.y) * displayed_;
-    }
-    case Level::kAffine:
-      return affine_part_at(correction, point) * displayed_;
-    case Level::kPerspective:
-      return model;
-    case Level::kRerender:
-      break;
-  }
-  return displayed_;
-}
-
 void PlaneEngine::measure_choice() {
   Measured& m = measured_;
   const std::vector<Vec2> corners = displayed_corners_centred();

@@ -96,6 +96,7 @@ struct EngineSettings {
   int cadence = 2;
   // The plane of FramePlane::kStabilization policies; others ignore it.
   StabilizationPlane stabilization;
+  WarpArea warp_area = WarpArea::kWhole;  // scenes only (core/image/pixel_rows.h)
 };
 
 // What the engine did in one frame. Error estimates are the engine's own bookkeeping;
@@ -134,6 +135,8 @@ struct FrameReport {
   // diagnostics (measured and affine-view errors) are computed after it, untimed.
   double time_ms = 0.0;
   std::int64_t pixels_written = 0;  // pixels the warp kernels (or a content render) wrote
+  // Of pixels_written, those not computed (a visible-only warp's, AnimationFrame's).
+  std::int64_t pixels_not_warped = 0;
   // Of time_ms: rendering the content (a re-render, or a clipped exact render), and the rest
   // of the update (warps, placing, deciding).
   double render_ms = 0.0;
@@ -205,6 +208,8 @@ class PlaneEngine {
   // Without a call, FramePlane::kStabilization uses EngineSettings::stabilization (automatic:
   // the layer's own plane).
   void set_frame_plane(const Vec3& m);
+  // The pixels (top-left) the next apply's warps must compute; null: all (PartialWarp).
+  void set_shown_pixels(const PixelRows* pixels) { shown_pixels_ = pixels; }
 
  private:
   struct Cache {
@@ -285,10 +290,13 @@ class PlaneEngine {
   // it; texel_to_image is the warp the layer then shows (for the measured error).
   void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
             FrameReport& report);
-  // Warps `source` into warped_, reusing its memory; counts the pixels written. Under
+  // Warps `source` into warped_ (memory reused; `only`'s pixels); counts the pixels. Under
   // Sampling::kMipmap a source the engine keeps (texture, cache, lit render) is sampled
   // through the pyramid kept with it (pyramid_of), any other through one built for the warp.
-  void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report);
+  void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
+                    const PixelRows* only = nullptr);
+  // A partly warped display: warps what its warp left out that the frame shows now (all).
+  void complete_display(FrameReport& report, bool all = false);
   const MipPyramid* pyramid_of(const Layer& source) const;
   // Builds `pyramid` of `layer` when the sampling is mipmap: once per render of a layer.
   void keep_pyramid(const Layer& layer, MipPyramid& pyramid) const;
@@ -349,6 +357,9 @@ class PlaneEngine {
   int frame_ = 0;
   Measured measured_;
   ExpiryTrack expiry_;
+  // Visible-only warps: the pixels shown, and the display's warp (done at layer_origin_).
+  const PixelRows* shown_pixels_ = nullptr;
+  PartialWarp partial_;
 };
 
 }  // namespace oflab

@@ -45,6 +45,7 @@ void PlaneEngine::hide(const std::string& note, FrameReport& report) {
   report.note = note;
   cache_.valid = false;
   display_ = PlacedLayer{};
+  partial_.active = false;
   clipped_outline_.clear();
   clipped_ = false;
   shown_ = false;
@@ -57,6 +58,7 @@ void PlaneEngine::show_clipped(const PlanePose& pose, const Framing& framing, Fr
   report.note = framing.note;
   cache_.valid = false;
   shown_ = false;  // the layer holds only part of the plane: the next frame starts afresh
+  partial_.active = false;
   accumulated_.fill(0.0);
   const auto t0 = Clock::now();
   if (content_is_lit(settings_.content)) {
@@ -122,6 +124,7 @@ void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
     rendered_from_texel_ = glm::inverse(origin) * exact;
   }
   if (policy().initial_view != InitialView::kAffinePart) {
+    partial_.active = false;
     std::swap(display_.layer, warped_.layer);
     display_.offset_x = warped_.offset_x;
     display_.offset_y = warped_.offset_y;
@@ -197,7 +200,16 @@ void PlaneEngine::apply_translation(const Vec2& step) {
 
 void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
                        FrameReport& report) {
-  warp_reusing(source, source_to_image, report);
+  const bool partial = shown_pixels_ && (&source == &texture_ || &source == &cache_.layer);
+  warp_reusing(source, source_to_image, report, partial ? shown_pixels_ : nullptr);
+  partial_.active = partial;
+  if (partial) {
+    partial_.source = &source;
+    partial_.warp = source_to_image;
+    partial_.done =
+        shown_pixels_->within(warped_.offset_x, warped_.offset_y, warped_.layer.image.width(),
+                              warped_.layer.image.height());
+  }
   std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
   display_.offset_x = warped_.offset_x;
   display_.offset_y = warped_.offset_y;
@@ -205,15 +217,44 @@ void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const M
   layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
 }
 
-void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report) {
+void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
+                               const PixelRows* only) {
   WarpOptions options;
   options.sampling = settings_.sampling;
+  options.only = only;
   options.pyramid = pyramid_of(source);
   warp_layer_reusing(source, warp, warped_, options);
   report.pixels_written += warped_.stats.pixels_written;
+  report.pixels_not_warped += warped_.stats.pixels_written - warped_.stats.pixels_computed;
   const bool affine = warped_.stats.kernel_used == WarpKernel::kAffine;
   report.model_work +=
       warped_.stats.pixels_written * (affine ? kAffineWarpCost : kPerspectiveWarpCost);
+}
+
+void PlaneEngine::complete_display(FrameReport& report, bool all) {
+  if (!partial_.active) return;
+  const Image& image = display_.layer.image;
+  // The pixels wanted, as placed when the layer was warped (it has moved by whole pixels):
+  // the shown pixels within the layer's box only (the frame's other rows are not copied).
+  const glm::ivec2 moved = glm::ivec2(display_.offset_x, display_.offset_y) - layer_origin_;
+  PixelRows wanted =
+      all || !shown_pixels_
+          ? PixelRows::full(image.width(), image.height()).shifted(layer_origin_.x, layer_origin_.y)
+          : shown_pixels_
+                ->within(display_.offset_x, display_.offset_y, image.width(), image.height())
+                .shifted(-moved.x, -moved.y);
+  const PixelRows missing = wanted.minus(partial_.done);
+  if (!missing.empty()) {
+    WarpOptions options;
+    options.sampling = settings_.sampling;
+    options.only = &missing;
+    options.pyramid = pyramid_of(*partial_.source);
+    const WarpStats stats = warp_layer_into(*partial_.source, partial_.warp, display_.layer.image,
+                                            layer_origin_.x, layer_origin_.y, options);
+    report.pixels_not_warped -= stats.pixels_computed;
+  }
+  partial_.done.add(wanted);
+  if (all || !shown_pixels_) partial_.active = false;
 }
 
 const MipPyramid* PlaneEngine::pyramid_of(const Layer& source) const {
@@ -244,7 +285,10 @@ void PlaneEngine::show_from_cache(FrameReport& report) {
 }
 
 bool PlaneEngine::apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report) {
-  if (!cache_.valid) cache_from_display();
+  if (!cache_.valid) {
+    complete_display(report, true);  // a partial display must not become the cache
+    cache_from_display();
+  }
   const Mat3 step = affine_part_at(correction, point);
   const Mat3 to_display = step * cache_.to_display;
   if (largest_singular_value(to_display) > settings_.max_magnification) return false;
@@ -317,9 +361,11 @@ void PlaneEngine::apply_level(FrameReport& report, const Vec2& expansion_point,
   bool within_limit = true;
   switch (report.level) {
     case Level::kNone:
+      complete_display(report);
       break;
     case Level::kTranslate:
       apply_translation(translation_step(correction, point));
+      complete_display(report);
       report.model_work += kTranslationCost * static_cast<double>(display_.layer.image.width()) *
                            display_.layer.image.height();
       break;
@@ -337,6 +383,25 @@ void PlaneEngine::apply_level(FrameReport& report, const Vec2& expansion_point,
     report.note = "sampling limit: the cache would be magnified too much";
     rerender(current, report);
   }
+}
+
+Mat3 PlaneEngine::warp_after(Level level, const Mat3& correction, const Vec2& point,
+                             const Mat3& model) const {
+  switch (level) {
+    case Level::kNone:
+      return displayed_;
+    case Level::kTranslate: {
+      const Vec2 step = translation_step(correction, point);
+      return translation_matrix(step.x, step.y) * displayed_;
+    }
+    case Level::kAffine:
+      return affine_part_at(correction, point) * displayed_;
+    case Level::kPerspective:
+      return model;
+    case Level::kRerender:
+      break;
+  }
+  return displayed_;
 }
 
 }  // namespace oflab

@@ -2,6 +2,7 @@
 #include "image/mipmap_kernel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -79,6 +80,26 @@ std::vector<PixelSpan> output_spans(const WarpPlan& plan) {
   return spans;
 }
 
+// Calls fn(x_begin, x_end) for each stretch of the span's columns a partial warp wants
+// (plan.only, in destination pixels: output pixel plus the plan's origin), or for the whole
+// span without one. Returns the pixels it covered.
+template <typename Fn>
+std::int64_t for_each_wanted(const WarpPlan& plan, const PixelSpan& span, Fn fn) {
+  if (plan.only == nullptr) {
+    fn(span.x_begin, span.x_end);
+    return span.x_end - span.x_begin;
+  }
+  std::int64_t count = 0;
+  for (const ColumnRun& r : plan.only->row(span.y + plan.origin_y)) {
+    const int begin = std::max(span.x_begin, r.begin - plan.origin_x);
+    const int end = std::min(span.x_end, r.end - plan.origin_x);
+    if (begin >= end) continue;
+    fn(begin, end);
+    count += end - begin;
+  }
+  return count;
+}
+
 // The region the plan samples: its polygon clipped to the output.
 ConvexPolygon sampled_region(const WarpPlan& plan) {
   return clip_to_box(plan.polygon, BoundingBox{0.0, 0.0, static_cast<double>(plan.output_width),
@@ -107,14 +128,52 @@ const Image& level_image(const Image& source, const MipPyramid& pyramid, int k) 
   return k == 0 ? source : pyramid.level(k);
 }
 
+// A partial affine warp whose level pair blends two levels: both levels are sampled into
+// scratch images (their partial warps may compute more than the wanted pixels, the lower
+// level's pixels alone differing from the blend), and only the wanted pixels of the output
+// receive the blend.
+std::int64_t run_affine_partial(const WarpPlan& plan, const Image& source,
+                                const MipPyramid& pyramid, const LevelPair& pair, Image& output,
+                                std::int64_t* computed) {
+  thread_local Image lower_scratch, upper_scratch;  // memory kept from warp to warp
+  Image& lower = lower_scratch;  // the bands run on other threads: name this thread's scratch
+  Image& upper = upper_scratch;
+  lower.reshape(output.width(), output.height());
+  upper.reshape(output.width(), output.height());
+  const std::int64_t written = run_warp_kernel(level_plan(plan, pair.lower),
+                                               level_image(source, pyramid, pair.lower), lower);
+  run_warp_kernel(level_plan(plan, pair.lower + 1), pyramid.level(pair.lower + 1), upper);
+  const std::vector<PixelSpan> spans = output_spans(plan);
+  std::atomic<std::int64_t> blended{0};
+  for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
+                [&](int, int first, int last) {
+                  std::int64_t count = 0;
+                  for (int s = first; s < last; ++s) {
+                    const PixelSpan& span = spans[static_cast<std::size_t>(s)];
+                    count += for_each_wanted(plan, span, [&](int begin, int end) {
+                      Pixel* out = output.row(span.y) + begin;
+                      std::copy(lower.row(span.y) + begin, lower.row(span.y) + end, out);
+                      lerp_run(out, upper.row(span.y) + begin, end - begin, pair.weight);
+                    });
+                  }
+                  blended += count;
+                });
+  if (computed) *computed += blended;
+  return written;
+}
+
 // Affine: one level pair for the whole warp.
 std::int64_t run_affine(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                        Image& output) {
+                        Image& output, std::int64_t* computed) {
   const Mat3& h = plan.dest_to_source;
   const LevelPair pair = level_pair(
       mip_level(entry(h, 0, 0), entry(h, 0, 1), entry(h, 1, 0), entry(h, 1, 1), pyramid.top()));
-  const std::int64_t written = run_warp_kernel(level_plan(plan, pair.lower),
-                                               level_image(source, pyramid, pair.lower), output);
+  if (pair.weight != 0 && plan.only != nullptr) {
+    return run_affine_partial(plan, source, pyramid, pair, output, computed);
+  }
+  // One level, or a whole warp: the lower level straight into the output.
+  const std::int64_t written = run_warp_kernel(
+      level_plan(plan, pair.lower), level_image(source, pyramid, pair.lower), output, computed);
   if (pair.weight == 0) return written;
   thread_local Image scratch;  // the upper level's samples, memory kept from warp to warp
   Image& upper = scratch;      // the bands run on other threads: name this thread's scratch
@@ -394,11 +453,40 @@ LevelMaps level_maps(const WarpPlan& plan, const Image& source, const MipPyramid
   return levels;
 }
 
-// One span of a perspective plan: each pixel's level pair, then per stretch of one lower
-// level the fast bilinear row on it and, where a weight is not 0, on the next level into a
-// scratch row, blended pixel by pixel.
-void perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels, const PixelSpan& span,
-                          Image& output) {
+// Pixels first .. last - 1 of `span` (offsets into it) sampled on their level pairs
+// (`pairs`: lower level << 8 | weight, per pixel of the span): per stretch of one lower level
+// the fast bilinear row on it and, where a weight is not 0, on the next level, blended pixel
+// by pixel. `weight` is scratch of the span's length; out[0] is the span's first pixel.
+void sample_levels(const LevelMaps& levels, const std::uint16_t* pairs, std::uint16_t* weight,
+                   const PixelSpan& span, int first, int last, Pixel* out) {
+  const int top = static_cast<int>(levels.maps.size()) - 1;
+  for (int s = first; s < last;) {
+    const int k = pairs[s] >> 8;
+    int e = s;
+    bool blend = false;
+    for (; e < last && pairs[e] >> 8 == k; ++e) {
+      weight[e] = pairs[e] & 255;
+      blend = blend || weight[e] != 0;
+    }
+    const int x0 = span.x_begin + s, x1 = span.x_begin + e;
+    const auto ku = static_cast<std::size_t>(k);
+    if (blend && k < top) {  // the top level's weight is 0
+      run_trilinear_row(levels.maps[ku], *levels.images[ku], levels.maps[ku + 1],
+                        *levels.images[ku + 1], span.y, x0, x1, weight + s, out + s);
+    } else {
+      run_bilinear_row(levels.maps[ku], *levels.images[ku], span.y, x0, x1, out + s);
+    }
+    s = e;
+  }
+}
+
+// One span of a perspective plan: each pixel's level pair (found over the whole span, so a
+// partial warp's pixels get the levels the whole warp gives them), then, over the wanted
+// pixels (all of the span without plan.only), per stretch of one lower level the fast
+// bilinear row on it and, where a weight is not 0, on the next level, blended pixel by pixel.
+// Returns the pixels written.
+std::int64_t perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels,
+                                  const PixelSpan& span, Image& output) {
   thread_local std::vector<std::uint16_t> pairs;
   thread_local std::vector<std::uint16_t> weight;
   const int count = span.x_end - span.x_begin;
@@ -407,41 +495,31 @@ void perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels, const P
   weight.resize(static_cast<std::size_t>(count));
   row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, pairs.data());
   Pixel* out = output.row(span.y) + span.x_begin;
-  for (int s = 0; s < count;) {
-    const int k = pairs[static_cast<std::size_t>(s)] >> 8;
-    int e = s;
-    bool blend = false;
-    for (; e < count && pairs[static_cast<std::size_t>(e)] >> 8 == k; ++e) {
-      weight[static_cast<std::size_t>(e)] = pairs[static_cast<std::size_t>(e)] & 255;
-      blend = blend || weight[static_cast<std::size_t>(e)] != 0;
-    }
-    const int x0 = span.x_begin + s, x1 = span.x_begin + e;
-    const auto ku = static_cast<std::size_t>(k);
-    if (blend && k < top) {  // the top level's weight is 0
-      run_trilinear_row(levels.maps[ku], *levels.images[ku], levels.maps[ku + 1],
-                        *levels.images[ku + 1], span.y, x0, x1, weight.data() + s, out + s);
-    } else {
-      run_bilinear_row(levels.maps[ku], *levels.images[ku], span.y, x0, x1, out + s);
-    }
-    s = e;
-  }
+  return for_each_wanted(plan, span, [&](int begin, int end) {
+    sample_levels(levels, pairs.data(), weight.data(), span, begin - span.x_begin,
+                  end - span.x_begin, out);
+  });
 }
-
 std::int64_t run_perspective(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                             Image& output) {
+                             Image& output, std::int64_t* computed) {
   if (footprint_bound(plan.dest_to_source, sampled_region(plan)) <= 1.0) {
-    return run_warp_kernel(level_plan(plan, 0), source, output);
+    return run_warp_kernel(level_plan(plan, 0), source, output, computed);
   }
   const std::vector<PixelSpan> spans = output_spans(plan);
   const LevelMaps levels = level_maps(plan, source, pyramid);
   std::int64_t written = 0;
   for (const PixelSpan& span : spans) written += span.x_end - span.x_begin;
+  std::atomic<std::int64_t> sampled{0};
   for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
                 [&](int, int first, int last) {
+                  std::int64_t count = 0;
                   for (int s = first; s < last; ++s) {
-                    perspective_span_mip(plan, levels, spans[static_cast<std::size_t>(s)], output);
+                    count += perspective_span_mip(plan, levels, spans[static_cast<std::size_t>(s)],
+                                                  output);
                   }
+                  sampled += count;
                 });
+  if (computed) *computed += sampled;
   return written;
 }
 
@@ -453,10 +531,10 @@ Pixel mipmap_pixel(const Mat3& dest_to_source, const Image& source, const MipPyr
 }
 
 std::int64_t run_mipmap_kernel(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                               Image& output) {
+                               Image& output, std::int64_t* computed) {
   if (plan.empty || source.empty() || output.empty()) return 0;
-  return plan.affine_kernel ? run_affine(plan, source, pyramid, output)
-                            : run_perspective(plan, source, pyramid, output);
+  return plan.affine_kernel ? run_affine(plan, source, pyramid, output, computed)
+                            : run_perspective(plan, source, pyramid, output, computed);
 }
 
 }  // namespace oflab

@@ -38,10 +38,14 @@ namespace oflab {
 
 // Runs a plan made for Sampling::kMipmap (plan.map is its level-0 bilinear map and
 // plan.dest_to_source the continuous inverse map). Preconditions: as run_warp_kernel, and
-// `pyramid` built from `source` (pyramid.fits(source)). Returns the pixels written; writes
-// exactly the pixels the bilinear kernel would write.
+// `pyramid` built from `source` (pyramid.fits(source)). Returns the pixels inside the
+// polygon, the pixels the bilinear kernel would write, and adds to *computed, when given, the
+// pixels it sampled. A partial warp (plan.only, WarpOptions::only) gives each wanted pixel
+// the bytes of the whole warp: a per-pixel level depends on the pixel alone, a one-level
+// affine warp is the bilinear kernel's partial warp, and a blended affine pair samples both
+// levels into scratch images and blends into the output the wanted pixels only.
 std::int64_t run_mipmap_kernel(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                               Image& output);
+                               Image& output, std::int64_t* computed = nullptr);
 
 // The mipmap sample of output pixel (x, y) by the definition, computed alone: the exact level
 // mip_level of the inverse map's Jacobian at the pixel centre, its level_pair, and the two

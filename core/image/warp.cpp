@@ -80,16 +80,16 @@ void clear_previous(const ConvexPolygon& old_polygon, int old_width, int old_hei
 }
 
 // Runs the plan's kernel; a mipmap plan samples the options' pyramid of `source`, or one
-// built here when the options give none.
+// built here when the options give none. Adds the pixels sampled to *computed.
 std::int64_t run_kernel(const WarpPlan& plan, const Image& source, Image& output,
-                        const WarpOptions& options) {
-  if (plan.sampling != Sampling::kMipmap) return run_warp_kernel(plan, source, output);
+                        const WarpOptions& options, std::int64_t* computed) {
+  if (plan.sampling != Sampling::kMipmap) return run_warp_kernel(plan, source, output, computed);
   if (options.pyramid == nullptr) {
     thread_local MipPyramid pyramid;  // memory kept from warp to warp
     build_mip_pyramid(source, pyramid);
-    return run_mipmap_kernel(plan, source, pyramid, output);
+    return run_mipmap_kernel(plan, source, pyramid, output, computed);
   }
-  return run_mipmap_kernel(plan, source, *options.pyramid, output);
+  return run_mipmap_kernel(plan, source, *options.pyramid, output, computed);
 }
 
 // A given pyramid must be of the source's image: its size is checked before anything is
@@ -139,11 +139,12 @@ WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image
                           int output_origin_x, int output_origin_y, const WarpOptions& options) {
   check_pyramid(source, options);
   const PreparedWarp prepared = prepare_warp(source, source_to_dest, options);
-  const WarpPlan plan = plan_warp(prepared, options.sampling, output.width(), output.height(),
-                                  output_origin_x, output_origin_y);
+  WarpPlan plan = plan_warp(prepared, options.sampling, output.width(), output.height(),
+                            output_origin_x, output_origin_y);
   WarpStats stats;
   stats.kernel_used = kernel_name(prepared.affine_kernel);
-  stats.pixels_written = run_kernel(plan, source.image, output, options);
+  plan.only = options.only;
+  stats.pixels_written = run_kernel(plan, source.image, output, options, &stats.pixels_computed);
   return stats;
 }
 
@@ -177,7 +178,8 @@ void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedL
   const int old_width = image.width(), old_height = image.height();
   image.reshape(width, height);
   clear_previous(result.layer.polygon, old_width, old_height, spans, image);
-  stats.pixels_written = run_kernel(plan, source.image, image, options);
+  plan.only = options.only;
+  stats.pixels_written = run_kernel(plan, source.image, image, options, &stats.pixels_computed);
   // plan.polygon is the warped polygon in the new layer's pixel coordinates.
   result.layer.polygon = std::move(plan.polygon);
   result.offset_x = x0;

@@ -39,6 +39,7 @@
 #include "image/image.h"
 #include "image/layer.h"
 #include "image/mip_pyramid.h"
+#include "image/pixel_rows.h"
 
 namespace oflab {
 
@@ -71,10 +72,22 @@ struct WarpOptions {
   // warp builds one for itself. A pyramid of another size than the source's image is refused
   // (std::invalid_argument); one built from other pixels of that size is the caller's error.
   const MipPyramid* pyramid = nullptr;
+  // A partial warp: when set, only output pixels whose destination pixel (output pixel plus
+  // the output's origin) is in `only` are computed, with, for the affine kernel's bilinear
+  // sampling, the rest of their blocks of kPartialWarpBlock columns; the others inside the
+  // polygon keep what the output held. Every pixel computed is the same bytes as in the whole
+  // warp: each pixel of the other kernels depends on its own exact position only, and the
+  // affine bilinear blocks start where its fixed-point runs restart (mipmap: as bilinear, a
+  // blended level pair writing the wanted pixels only). Null: the whole polygon.
+  const PixelRows* only = nullptr;
 };
 
+// Columns of the affine bilinear kernel's block in a partial warp (WarpOptions::only).
+constexpr int kPartialWarpBlock = 64;
+
 struct WarpStats {
-  std::int64_t pixels_written = 0;               // output pixels inside the warped polygon
+  std::int64_t pixels_written = 0;   // output pixels inside the warped polygon
+  std::int64_t pixels_computed = 0;  // of those, the pixels sampled (all but a partial warp's)
   WarpKernel kernel_used = WarpKernel::kAffine;  // kAffine or kPerspective
 };
 

@@ -5,6 +5,7 @@
 #include "image/warp_kernels.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -633,8 +634,64 @@ struct FastRun {
   int end;
 };
 
+// One fast run's pixels [begin, end) of row y, stepping incrementally. One output pixel to
+// the right adds 2 to X.
 template <bool kAffine, bool kBilinear>
-std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
+void fast_span(const SourceView& src, const InverseMap& map, Image& output, int y, int begin,
+               int end) {
+  const MapSample s = evaluate(map, begin, y);
+  Pixel* out = output.row(y) + begin;
+  if constexpr (kAffine) {
+    affine_span<kBilinear>(src, out, end - begin, s.nu, s.nv, 2 * map.a, 2 * map.d,
+                           map.affine_shift);
+  } else {
+    perspective_span<kBilinear>(src, out, end - begin, static_cast<double>(s.nu),
+                                static_cast<double>(s.nv), static_cast<double>(s.d),
+                                static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+                                static_cast<double>(2 * map.g));
+  }
+}
+
+// A fast run's pixels [begin, end) of row y under a partial warp (WarpOptions::only): the
+// blocks counted from `begin` that hold a wanted pixel, each stretch of them in one call.
+// Affine bilinear blocks are kPartialWarpBlock columns: a call that starts on a block
+// boundary steps exactly as the whole run does there, as its loops restart from the exact
+// position every kMaxApproximateRun (= kPartialWarpBlock) pixels of a call and go in quads
+// from its start. Every other loop's pixel depends on its own exact numerators only (the
+// nearest floors are exact, the perspective bilinear positions are one product per pixel of
+// exact integers): blocks of one pixel. Returns the pixels computed.
+template <bool kAffine, bool kBilinear>
+std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Image& output, int y,
+                         int begin, int end) {
+  static_assert(kPartialWarpBlock == kMaxApproximateRun, "blocks start where runs restart");
+  const PixelRows* only = plan.only;
+  if (!only) {
+    fast_span<kAffine, kBilinear>(src, plan.map, output, y, begin, end);
+    return end - begin;
+  }
+  std::int64_t done = 0;
+  const int block = kAffine && kBilinear ? kPartialWarpBlock : 1;
+  int from = begin, to = begin;  // the stretch to compute, pending
+  for (const ColumnRun& r : only->row(y + plan.origin_y)) {
+    int lo = std::max(begin, r.begin - plan.origin_x);
+    int hi = std::min(end, r.end - plan.origin_x);
+    if (lo >= hi) continue;
+    lo = begin + (lo - begin) / block * block;  // out to the blocks' bounds
+    hi = std::min(end, begin + (hi - begin + block - 1) / block * block);
+    if (lo > to) {
+      if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, output, y, from, to);
+      done += to - from;
+      from = lo;
+    }
+    to = std::max(to, hi);
+  }
+  if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, output, y, from, to);
+  done += to - from;
+  return done;
+}
+
+template <bool kAffine, bool kBilinear>
+std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::int64_t* computed) {
   const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
                        source.height() - 1};
   const InverseMap& map = plan.map;
@@ -647,7 +704,7 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
   ScanConverter scan(plan.polygon, output.width(), output.height());
   std::vector<FastRun> runs;
   runs.reserve(static_cast<std::size_t>(std::max(scan.end_row() - scan.first_row(), 0)));
-  std::int64_t written = 0;
+  std::int64_t written = 0, ends = 0;
   int strip_begin = output.width();
   int strip_end = 0;
   PixelSpan span;
@@ -657,15 +714,21 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
     if (begin >= end) continue;
     written += end - begin;
     Pixel* out = output.row(span.y);
+    const auto clamped = [&](int x, const MapSample& s) {  // a partial warp's wanted pixels
+      const int fx = x + plan.origin_x;
+      if (plan.only && !plan.only->any(span.y + plan.origin_y, fx, fx + 1)) return;
+      out[x] = sample_clamped<kBilinear>(src, s, map.affine_shift);
+      ++ends;
+    };
     MapSample s = evaluate(map, begin, span.y);
     while (begin < end && !(fast_allowed && in_fast_range<kBilinear>(src, s))) {
-      out[begin] = sample_clamped<kBilinear>(src, s, map.affine_shift);
+      clamped(begin, s);
       if (++begin < end) s = evaluate(map, begin, span.y);
     }
     while (end > begin) {
       const MapSample last = evaluate(map, end - 1, span.y);
       if (in_fast_range<kBilinear>(src, last)) break;
-      out[end - 1] = sample_clamped<kBilinear>(src, last, map.affine_shift);
+      clamped(end - 1, last);
       --end;
     }
     if (begin >= end) continue;
@@ -673,14 +736,14 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
     strip_begin = std::min(strip_begin, begin);
     strip_end = std::max(strip_end, end);
   }
+  if (computed) *computed += ends;
   if (runs.empty()) return written;
 
   // Pass 2: the runs, strip by strip, in bands of rows on the worker threads (each band
-  // writes its own rows only). One output pixel to the right adds 2 to X.
-  const std::int64_t step_u = 2 * map.a;
-  const std::int64_t step_v = 2 * map.d;
-  const std::int64_t step_d = 2 * map.g;
+  // writes its own rows only).
+  std::atomic<std::int64_t> run_pixels{0};
   const auto band = [&](int, int first, int last) {
+    std::int64_t done = 0;
     for (int x0 = strip_begin; x0 < strip_end; x0 += kStripWidth) {
       const int x1 = std::min(x0 + kStripWidth, strip_end);
       for (int k = first; k < last; ++k) {
@@ -688,22 +751,14 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output) {
         const int begin = std::max(r.begin, x0);
         const int end = std::min(r.end, x1);
         if (begin >= end) continue;
-        const MapSample s = evaluate(map, begin, r.y);
-        Pixel* out = output.row(r.y) + begin;
-        if constexpr (kAffine) {
-          affine_span<kBilinear>(src, out, end - begin, s.nu, s.nv, step_u, step_v,
-                                 map.affine_shift);
-        } else {
-          perspective_span<kBilinear>(src, out, end - begin, static_cast<double>(s.nu),
-                                      static_cast<double>(s.nv), static_cast<double>(s.d),
-                                      static_cast<double>(step_u), static_cast<double>(step_v),
-                                      static_cast<double>(step_d));
-        }
+        done += partial_run<kAffine, kBilinear>(src, plan, output, r.y, begin, end);
       }
     }
+    run_pixels += done;
   };
   const int rows = static_cast<int>(runs.size());
   for_each_band(rows, min_band_rows(strip_end - strip_begin), band);
+  if (computed) *computed += run_pixels;
   return written;
 }
 
@@ -789,15 +844,16 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
 #endif
 }
 
-std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output) {
+std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output,
+                             std::int64_t* computed) {
   if (plan.empty || source.empty() || output.empty()) return 0;
   const bool bilinear = plan.sampling == Sampling::kBilinear;
   if (plan.affine_kernel) {
-    return bilinear ? run<true, true>(plan, source, output)
-                    : run<true, false>(plan, source, output);
+    return bilinear ? run<true, true>(plan, source, output, computed)
+                    : run<true, false>(plan, source, output, computed);
   }
-  return bilinear ? run<false, true>(plan, source, output)
-                  : run<false, false>(plan, source, output);
+  return bilinear ? run<false, true>(plan, source, output, computed)
+                  : run<false, false>(plan, source, output, computed);
 }
 
 }  // namespace oflab

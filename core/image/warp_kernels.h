@@ -30,11 +30,15 @@
 namespace oflab {
 
 // Runs the plan's kernel (plan.affine_kernel) with its sampling, nearest or bilinear (a
-// mipmap plan runs in core/image/mipmap_kernel.h, which calls this per level). Preconditions:
-// output.width() == plan.output_width, output.height() == plan.output_height, and
-// `source` is the image of the layer the plan was prepared for. Returns the number of
-// output pixels written. Never reads or writes outside either image.
-std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output);
+// mipmap plan runs in core/image/mipmap_kernel.h, which calls this per level), over the whole
+// polygon or a partial warp's pixels (plan.only, WarpOptions::only in core/image/warp.h).
+// Preconditions: output.width() == plan.output_width, output.height() ==
+// plan.output_height, and `source` is the image of the layer the plan was prepared for.
+// Returns the number of output pixels inside the polygon (WarpStats::pixels_written) and
+// adds to *computed, when given, the pixels it sampled. Never reads or writes outside either
+// image.
+std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& output,
+                             std::int64_t* computed = nullptr);
 
 // One row segment of a perspective bilinear warp: pixels x_begin .. x_end - 1 of output row
 // y sampled from `source` through `map` into out[0 .. x_end - x_begin - 1], exactly as

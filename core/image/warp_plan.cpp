@@ -110,6 +110,8 @@ WarpPlan plan_warp(const PreparedWarp& prepared, Sampling sampling, int output_w
   plan.sampling = sampling;
   plan.output_width = output_width;
   plan.output_height = output_height;
+  plan.origin_x = origin_x;
+  plan.origin_y = origin_y;
   if (prepared.warped_polygon.empty() || output_width <= 0 || output_height <= 0) return plan;
 
   plan.polygon = translated(prepared.warped_polygon, -origin_x, -origin_y);

@@ -37,6 +37,9 @@ struct WarpPlan {
   Mat3 dest_to_source{1.0};
   int output_width = 0;
   int output_height = 0;
+  int origin_x = 0;  // destination coordinates of output pixel (0, 0)'s corner
+  int origin_y = 0;
+  const PixelRows* only = nullptr;  // a partial warp's wanted pixels (WarpOptions::only)
 };
 
 // Plans the warp of a prepared warp into an output of the given size whose pixel (0, 0)

@@ -169,6 +169,7 @@ void PolygonUpdate::add_to(AnimationFrame& report) const {
   c.no_image += tally.rerender_causes.no_image;
   c.clipped += tally.rerender_causes.clipped;
   report.pixels_written += tally.pixels_written;
+  report.pixels_not_warped += tally.pixels_not_warped;
   report.model_work += tally.model_work;
   report.update_ms += tally.update_ms;
   report.render_ms += tally.render_ms;
@@ -215,6 +216,8 @@ void SceneEngine::update_polygon(int index, const ViewerPose& current, PolygonUp
     tally.update_ms += u.ms;
     return;
   }
+  s.animator->set_shown_pixels(settings_.engine.warp_area == WarpArea::kVisible ? &shown_pixels_
+                                                                                : nullptr);
   const FrameReport r = s.animator->apply(s.allocated, s.allocated_shown);
   if (!s.allocated_shown && s.candidates.kind == LayerCandidates::Kind::kFresh) {
     starve(index, u);
@@ -229,6 +232,7 @@ void SceneEngine::update_polygon(int index, const ViewerPose& current, PolygonUp
   levels_[index] = r.level;
   ++tally.levels[static_cast<int>(r.level)];
   tally.pixels_written += r.pixels_written;
+  tally.pixels_not_warped += r.pixels_not_warped;
   tally.model_work += r.model_work;
   tally.render_ms += r.render_ms;
   tally.max_photometric_error = std::max(tally.max_photometric_error, r.photometric_error);

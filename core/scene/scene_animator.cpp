@@ -17,16 +17,6 @@ namespace {
 
 using Clock = WallClock;
 
-// The intersection of two convex polygons: `a` clipped by every edge of `b`.
-ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
-  const std::vector<Vec2>& v = b.vertices();
-  for (std::size_t k = 0; k < v.size() && !a.empty(); ++k) {
-    const Vec2 e = v[(k + 1) % v.size()] - v[k];
-    a = clip_to_half_plane(a, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
-  }
-  return b.empty() ? ConvexPolygon() : a;
-}
-
 // Throws std::invalid_argument naming the first problem of a scene engine's inputs: the
 // camera, the budget, the near plane, the guard band, the hidden test's margins, a polygon,
 // the scene's memory and its contents' detail (see SceneEngine's constructor).
@@ -387,20 +377,6 @@ void SceneEngine::render_frame(const ViewerPose* previous, const RigidMotion* mo
   const auto t1 = Clock::now();
   compose(report);
   report.composite_ms = ms_since(t1);
-}
-
-void SceneEngine::add_occluder(int fragment, const PlacedLayer& shown) {
-  // What this fragment certainly paints opaque hides whatever is tested after it.
-  const PolygonLayer& s = *states_[bsp_.fragments()[fragment].polygon];
-  if (s.whole) {
-    occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
-                            Vec2(shown.offset_x, shown.offset_y));
-  } else {
-    const ConvexPolygon drawn =
-        intersection(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
-                     fragment_regions_[fragment]);
-    occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
-  }
 }
 
 void SceneEngine::tally_hidden_and_stale(AnimationFrame& report) {

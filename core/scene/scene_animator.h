@@ -285,6 +285,9 @@ class SceneEngine {
   std::vector<ConvexPolygon> fragment_regions_;
   std::vector<WaveEntry> wave_;
   OcclusionTest occlusion_;
+  // The frame pixels not under an opaque layer drawn so far in the walk (surely painted
+  // opaque: its occluder's region), what a visible-only warp computes (WarpArea::kVisible).
+  PixelRows shown_pixels_;
   BudgetLedger ledger_;
   Image frame_;
   int frame_index_ = 0;

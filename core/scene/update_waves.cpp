@@ -16,6 +16,16 @@ namespace {
 
 using Clock = WallClock;
 
+// The intersection of two convex polygons: `a` clipped by every edge of `b`.
+ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
+  const std::vector<Vec2>& v = b.vertices();
+  for (std::size_t k = 0; k < v.size() && !a.empty(); ++k) {
+    const Vec2 e = v[(k + 1) % v.size()] - v[k];
+    a = clip_to_half_plane(a, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
+  }
+  return b.empty() ? ConvexPolygon() : a;
+}
+
 }  // namespace
 
 void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame& report) {
@@ -23,6 +33,9 @@ void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame
   fragment_drawn_.assign(fragments.size(), 0);
   fragment_regions_.resize(fragments.size());
   occlusion_.clear(camera_.width, camera_.height);
+  if (settings_.engine.warp_area == WarpArea::kVisible) {
+    shown_pixels_.fill(camera_.width, camera_.height);
+  }
   wave_.clear();
   // Front to back: decide visibility against what is already in front, queue the update,
   // and once the wave has run let each drawn fragment hide what lies behind it.
@@ -170,6 +183,29 @@ void SceneEngine::draw_fragment(int fragment, const ViewerPose& current, Animati
     const auto tv = Clock::now();
     add_occluder(fragment, *shown);
     report.visibility_ms += ms_since(tv);
+  }
+}
+
+void SceneEngine::add_occluder(int fragment, const PlacedLayer& shown) {
+  // What this fragment certainly paints opaque hides whatever is tested after it.
+  const PolygonLayer& s = *states_[bsp_.fragments()[fragment].polygon];
+  const bool visible_only = settings_.engine.warp_area == WarpArea::kVisible;
+  if (s.whole) {
+    occlusion_.add_occluder(shown.layer.polygon, settings_.occluder_inset_px,
+                            Vec2(shown.offset_x, shown.offset_y));
+    if (visible_only) {
+      shown_pixels_.remove_centres_inside(
+          eroded(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
+                 settings_.occluder_inset_px));
+    }
+  } else {
+    const ConvexPolygon drawn =
+        intersection(translated(shown.layer.polygon, shown.offset_x, shown.offset_y),
+                     fragment_regions_[fragment]);
+    occlusion_.add_occluder(drawn, settings_.occluder_inset_px);
+    if (visible_only) {
+      shown_pixels_.remove_centres_inside(eroded(drawn, settings_.occluder_inset_px));
+    }
   }
 }
 

@@ -276,6 +276,15 @@ void add_plane_fields(std::vector<StateField>& f) {
                          "the plane's texture", [](S* s) { return &s->texture; }));
 }
 
+// What of each scene layer the warps compute (EngineSettings::warp_area).
+void add_warp_area_field(std::vector<StateField>& f) {
+  using S = WindowState;
+  f.push_back(named<WarpArea>(
+      "animation.warp", warp_area_name_list(), "what of each scene layer is warped",
+      [](S* s) { return &s->settings.warp_area; }, parse_warp_area,
+      [](WarpArea v) { return std::string(warp_area_name(v)); }));
+}
+
 void add_engine_fields(std::vector<StateField>& f) {
   using S = WindowState;
   using namespace limits;
@@ -311,6 +320,7 @@ void add_engine_fields(std::vector<StateField>& f) {
       "animation.sampling", sampling_name_list(), "the warps' sampling",
       [](S* s) { return &s->settings.sampling; }, parse_sampling,
       [](Sampling v) { return std::string(sampling_name(v)); }));
+  add_warp_area_field(f);
   f.push_back(named<ContentKind>(
       "animation.content", content_name_list(), "what a re-render draws",
       [](S* s) { return &s->settings.content.kind; }, parse_content,
