@@ -88,7 +88,15 @@ cmake --build build-sanitize -j"$jobs"
 #   script in every mode (AnimateCommand.AllScriptsRunInAllModes), every listed policy as an
 #   animate mode (PoliciesCommand.EveryListedName...) and every scene with every viewer script
 #   (AnimateScene.EveryShippedSceneRuns...): each repeats, over more frames or more inputs,
-#   code that smaller sanitized tests of the same engines, policies and scenes run.
+#   code that smaller sanitized tests of the same engines, policies and scenes run;
+# - ten more whole runs of 8-20 s each sanitized (about 60 s of the stage on 2 cores): the
+#   lab's loop over every source (Lab.TheLoopIsTheSourcesLength), the study kinds' sessions
+#   (Lab.TheStudyKindsMeasure...), the simulated run through the study's pictures
+#   (TrialRunner.ASimulatedRun...), four cubes compound in every mode, the impostor cubes on
+#   one and two threads, scene shifting's JSON summary, every policy on a scene, and three
+#   compare runs of scenes (CompareCommand.SceneRows..., .ContentAndQuality...,
+#   FrameGenerationCommand.CompareRows...): their code runs sanitized in the smaller tests of
+#   the lab, the study, the engines and compare.
 # The analysis tests draw charts and render with VTK, so they run under the virtual screen.
 # They run as many at a time as the machine has cores: under the sanitizers they take about
 # twice as long as their build, and none shares a scratch folder with another.
@@ -96,7 +104,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" \
   ctest --test-dir build-sanitize --output-on-failure --timeout 1200 -j"$jobs" \
   -LE 'soak|address-space-limit' \
-  -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart|Experiment[12]Published\.|analysis.experiments_published_figures|StudySimulation\.|Lab.EveryEngineClaimOfEveryLesson|Reprojection.DepthReprojectionHasHoles|Reprojection.SummariesAndThePerFrameCsv|FrameGenerationCommand.RunsOnEveryShippedSceneAndViewerScript|Reprojection.AutomaticStabilizationPlaneOfOnePlane|Scenes.DefaultPolicyBooksHoldOnEveryShippedScene|Golden.AnimateOutputsAreUnchanged/four_cubes_(budget|compound)|AnimateCommand.AllScriptsRunInAllModes|PoliciesCommand.EveryListedNameIsAnAnimateMode|AnimateScene.EveryShippedSceneRunsWithEveryShippedViewerScript'
+  -E 'Golden.AnimateOutputsAreUnchanged/train_window_scene_shifting|ExperimentsCommand.QuickRunWritesAReportThatParsesWithEveryChart|Experiment[12]Published\.|analysis.experiments_published_figures|StudySimulation\.|Lab.EveryEngineClaimOfEveryLesson|Reprojection.DepthReprojectionHasHoles|Reprojection.SummariesAndThePerFrameCsv|FrameGenerationCommand.RunsOnEveryShippedSceneAndViewerScript|Reprojection.AutomaticStabilizationPlaneOfOnePlane|Scenes.DefaultPolicyBooksHoldOnEveryShippedScene|Golden.AnimateOutputsAreUnchanged/four_cubes_(budget|compound)|AnimateCommand.AllScriptsRunInAllModes|PoliciesCommand.EveryListedNameIsAnAnimateMode|AnimateScene.EveryShippedSceneRunsWithEveryShippedViewerScript|Lab.TheLoopIsTheSourcesLength|Lab.TheStudyKindsMeasureTheStudyTheStateOpens|TrialRunner.ASimulatedRunThroughThePicturesIsTheHeadlessSimulation|AnimateScene.FourCubesCompoundRunsInEveryModeWithTheContractedSummary|GoldenThreads.ImpostorCubesAreTheSameOnOneAndTwoThreads|AnimateSceneShifting.JsonSummaryHasEveryFieldOfTheOtherModes|PolicyRuns.EveryPolicyPlaysTheSameFramesOfAScene|CompareCommand.SceneRowsAreAnimateRunAloneAtTheScenesContentQuality|CompareCommand.ContentAndQualityReachEveryPolicyAndModelWorkMatchesAnimate|FrameGenerationCommand.CompareRowsCarryHolesInpaintingPsnrSsimAndLatency'
 stage_done "sanitizers"
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
