@@ -289,4 +289,12 @@ ConvexPolygon random_polygon(std::mt19937& rng, int width, int height) {
   }
 }
 
+Mat3 rotation_about(double degrees, double cx, double cy) {
+  const double t = degrees * 3.14159265358979323846 / 180.0;
+  return translation_matrix(cx, cy) *
+         mat3_from_rows({std::cos(t), -std::sin(t), 0.0}, {std::sin(t), std::cos(t), 0.0},
+                        {0.0, 0.0, 1.0}) *
+         translation_matrix(-cx, -cy);
+}
+
 }  // namespace oflab::testing

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "flow/geometry.h"
 #include "image/image.h"
 #include "image/layer.h"
 #include "image/polygon.h"
@@ -50,5 +51,9 @@ ConvexPolygon random_polygon(std::mt19937& rng, int width, int height);
 // A pixel value that no well-formed premultiplied pixel has (r > a): marks untouched
 // output pixels.
 constexpr Pixel kSentinel{201, 13, 77, 9};
+
+// The homography turning the plane by `degrees` (clockwise on screen, y down) about the
+// point (cx, cy), pixels.
+Mat3 rotation_about(double degrees, double cx, double cy);
 
 }  // namespace oflab::testing
