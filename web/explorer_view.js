@@ -49,7 +49,8 @@ const explorerView = {
     }
     $('basis-explorer').addEventListener('change', () => editState((s) => { s.basis.explorer = $('basis-explorer').checked; }));
     $('explorer-zero').addEventListener('click', () => this.setTerms(null));
-    $('explorer-scene').addEventListener('click', () => this.setTerms(this.result().from_scene));
+    // The flow of the scene at the frame shown now (the cached result may be of another frame).
+    $('explorer-scene').addEventListener('click', () => this.setTerms(JSON.parse(app.session.explorerJson()).from_scene));
     $('explorer-play').addEventListener('click', () => this.playFutures());
   },
 
@@ -61,9 +62,10 @@ const explorerView = {
     }, 'the explorer');
   },
 
-  // The explorer of the state now (recomputed only when its terms or camera changed).
+  // The explorer of the state now (recomputed only when its terms, or the plane or script
+  // that give its camera, changed).
   result() {
-    const key = JSON.stringify([app.state.basis.terms, app.state.plane]);
+    const key = JSON.stringify([app.state.basis.terms, app.state.plane, app.state.script]);
     if (key !== this.dataKey || !this.data) {
       this.data = JSON.parse(app.session.explorerJson());
       this.dataKey = key;

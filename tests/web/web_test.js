@@ -551,6 +551,22 @@ async function testExplorer(browser) {
   check('ADialledTermGoesThroughTheStateAndItsLimitIsKept', dialled.accepted.every((v) => v === 120) &&
     dialled.refused[0] === 120 && /basis\.terms\b.*\btx\b/.test(dialled.refused[1]), JSON.stringify(dialled));
   check('AllZeroIsTheNoMotionCase', /^No motion/.test(dialled.zero), dialled.zero);
+  // "From the scene" dials the flow of the frame shown now, not of the frame the explorer was
+  // last drawn at: at frame 60 of swing its coefficients are the flow view's there (another
+  // computation: the flow's own coefficients), and differ from frame 40's.
+  await open(browser, '?view=basis&explorer&script=swing&frame=40', drawnMarker);
+  const scene = JSON.parse(await evaluate(browser, `(() => {
+    draw();
+    const at40 = JSON.parse(app.session.flowJson()).coefficients;
+    seek(60);
+    $('explorer-scene').click();
+    return JSON.stringify({ at40, flow: JSON.parse(app.session.flowJson()).coefficients,
+      explorer: app.explorer.result().coefficients, frame: app.state.frame });
+  })()`));
+  const keys = ['tx', 'ty', 'j11', 'j12', 'j21', 'j22', 'px', 'py'];
+  const near = (a, b) => keys.every((k) => Math.abs(a[k] - b[k]) <= 1e-9 * Math.max(1, Math.abs(b[k])));
+  check('FromTheSceneDialsTheFlowOfTheFrameShown', scene.frame === 60 && near(scene.explorer, scene.flow) &&
+    !near(scene.at40, scene.flow), JSON.stringify(scene));
 }
 
 // --- The same lesson everywhere ----------------------------------------------------------
