@@ -149,7 +149,9 @@ void read_check_lessons(const CliArgs& cli, LaunchOptions* options) {
   options->check_lessons.push_back(lesson_named("--check-lesson", name).name);
 }
 
-// --claim-kinds K1,K2,...: with --check-lesson; each a kind of the claim registry.
+// --claim-kinds K1,K2,...: with --check-lesson; each a kind of the claim registry, or
+// `screen`: every kind the screen measures but the timed ones (a window's size or look
+// changes only those; the engine's hold whatever the window).
 void read_claim_kinds(const CliArgs& cli, LaunchOptions* options) {
   if (!cli.has("--claim-kinds")) return;
   if (options->check_lessons.empty()) {
@@ -157,9 +159,15 @@ void read_claim_kinds(const CliArgs& cli, LaunchOptions* options) {
   }
   std::stringstream list(cli.values("--claim-kinds").at(0));
   for (std::string kind; std::getline(list, kind, ',');) {
+    if (kind == "screen") {
+      for (const ClaimKind& k : claim_kinds()) {
+        if (k.source == ClaimSource::kScreen && !k.timed) options->claim_kinds.push_back(k.name);
+      }
+      continue;
+    }
     if (!find_claim_kind(kind)) {
-      throw UsageError("--claim-kinds: unknown claim kind '" + kind +
-                       "' (known: " + joined_names(claim_kind_names()) + ")");
+      throw UsageError("--claim-kinds: unknown claim kind '" + kind + "' (known: screen, " +
+                       joined_names(claim_kind_names()) + ")");
     }
     options->claim_kinds.push_back(kind);
   }
@@ -454,7 +462,8 @@ std::string launch_usage() {
          "             [--world-camera orbit|eye]\n"
          "             [--threads N (the pixel loops' threads; default: the machine's cores)]\n"
          "             [--check-lesson NAME|FILE|all [--step-shots DIR [--force]] [--time-claims]\n"
-         "                [--claim-kinds K1,K2,... (only these kinds of claims)]]\n"
+         "                [--claim-kinds K1,K2,... (only these kinds of claims; screen: every\n"
+         "                 untimed kind the screen measures)]]\n"
          "             [--study NAME|FILE [--study-method M] [--study-seed S] [--study-observer "
          "NAME]\n"
          "                [--study-ppi P] [--study-simulate PX --study-csv FILE [--force]]] "
