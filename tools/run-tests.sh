@@ -115,7 +115,7 @@ stage_done "sanitizers"
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
   -DCMAKE_CXX_COMPILER=clang++ -DOFLAB_FUZZ=ON -DOFLAB_BUILD_TESTS=OFF \
-  -DOFLAB_FUZZ_SECONDS=10 > build-fuzz-configure.log 2>&1 || {
+  -DOFLAB_FUZZ_SECONDS=5 > build-fuzz-configure.log 2>&1 || {
   cat build-fuzz-configure.log >&2
   exit 1
 }
