@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "flow/named_values.h"
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
 
@@ -22,13 +23,10 @@ namespace {
 constexpr double kShadedSampleCost = 110.0;
 constexpr double kImpostorFragmentCost = 15.5;
 
-struct Named {
-  ContentKind kind;
-  const char* name;
-};
-constexpr Named kNames[] = {{ContentKind::kTexture, "texture"},
-                            {ContentKind::kShaded, "shaded"},
-                            {ContentKind::kImpostor, "impostor"}};
+// Every kind with its name, in the order of the enum.
+constexpr NamedValue<ContentKind> kNames[] = {{ContentKind::kTexture, "texture"},
+                                              {ContentKind::kShaded, "shaded"},
+                                              {ContentKind::kImpostor, "impostor"}};
 
 const ContentMaterial kBrick{{0.62, 0.27, 0.18}, 0.15, 16.0};
 const ContentMaterial kMortar{{0.66, 0.64, 0.60}, 0.05, 8.0};
@@ -404,33 +402,20 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
 
 }  // namespace
 
-const char* content_name(ContentKind kind) {
-  for (const Named& n : kNames) {
-    if (n.kind == kind) return n.name;
-  }
-  return "?";
-}
+const char* content_name(ContentKind kind) { return name_of_value(kNames, kind, "?"); }
 
 bool parse_content(const std::string& text, ContentKind* kind) {
-  for (const Named& n : kNames) {
-    if (text == n.name) {
-      *kind = n.kind;
-      return true;
-    }
-  }
-  return false;
+  return parse_named_value(kNames, text, kind);
 }
 
 std::vector<ContentKind> content_kinds() {
   std::vector<ContentKind> out;
-  for (const Named& n : kNames) out.push_back(n.kind);
+  for (const NamedValue<ContentKind>& n : kNames) out.push_back(n.value);
   return out;
 }
 
 std::string content_name_list(const std::string& separator) {
-  std::string out;
-  for (const Named& n : kNames) out += (out.empty() ? "" : separator) + std::string(n.name);
-  return out;
+  return named_value_list(kNames, separator);
 }
 
 std::string content_problem(const LayerContent& content) {

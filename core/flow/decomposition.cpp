@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "flow/named_values.h"
+
 namespace oflab {
 namespace {
 
@@ -75,17 +77,12 @@ glm::dmat2 origin_jacobian(const Mat3& w) { return jacobian_of(normalised_entrie
 
 namespace {
 
-struct DeltaName {
-  DeltaPolicy policy;
-  const char* name;
-};
-
 // Every policy with its name, in the order of the enum.
-constexpr DeltaName kDeltaNames[] = {{DeltaPolicy::kOne, "1"},
-                                     {DeltaPolicy::kAbsDet, "det"},
-                                     {DeltaPolicy::kSqrtAbsDet, "sqrt"},
-                                     {DeltaPolicy::kFourthRootAbsDet, "fourth-root"},
-                                     {DeltaPolicy::kDissertation, "dissertation"}};
+constexpr NamedValue<DeltaPolicy> kDeltaNames[] = {{DeltaPolicy::kOne, "1"},
+                                                   {DeltaPolicy::kAbsDet, "det"},
+                                                   {DeltaPolicy::kSqrtAbsDet, "sqrt"},
+                                                   {DeltaPolicy::kFourthRootAbsDet, "fourth-root"},
+                                                   {DeltaPolicy::kDissertation, "dissertation"}};
 
 }  // namespace
 
@@ -94,31 +91,21 @@ bool parse_delta_policy(const std::string& text, DeltaPolicy* policy) {
     *policy = DeltaPolicy::kOne;
     return true;
   }
-  for (const DeltaName& d : kDeltaNames) {
-    if (text != d.name) continue;
-    *policy = d.policy;
-    return true;
-  }
-  return false;
+  return parse_named_value(kDeltaNames, text, policy);
 }
 
 const char* delta_policy_name(DeltaPolicy policy) {
-  for (const DeltaName& d : kDeltaNames) {
-    if (d.policy == policy) return d.name;
-  }
-  return "1";
+  return name_of_value(kDeltaNames, policy, "1");
 }
 
 std::string delta_policy_name_list(const std::string& separator) {
-  std::string list;
-  for (const DeltaName& d : kDeltaNames) list += (list.empty() ? "" : separator) + d.name;
-  return list;
+  return named_value_list(kDeltaNames, separator);
 }
 
 const std::vector<DeltaPolicy>& delta_policies() {
   static const std::vector<DeltaPolicy> policies = [] {
     std::vector<DeltaPolicy> all;
-    for (const DeltaName& d : kDeltaNames) all.push_back(d.policy);
+    for (const NamedValue<DeltaPolicy>& d : kDeltaNames) all.push_back(d.value);
     return all;
   }();
   return policies;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "flow/named_values.h"
+
 namespace oflab {
 namespace {
 
@@ -30,15 +32,10 @@ ScrewCoefficients screw_coefficients(double w, double t) {
 
 namespace {
 
-struct ModelName {
-  MotionModel model;
-  const char* name;
-};
-
 // Every model with its name, in the order of the enum.
-constexpr ModelName kModelNames[] = {{MotionModel::kScrew, "screw"},
-                                     {MotionModel::kRotateThenTranslate, "rt"},
-                                     {MotionModel::kSpinAboutCentre, "centre"}};
+constexpr NamedValue<MotionModel> kModelNames[] = {{MotionModel::kScrew, "screw"},
+                                                   {MotionModel::kRotateThenTranslate, "rt"},
+                                                   {MotionModel::kSpinAboutCentre, "centre"}};
 
 }  // namespace
 
@@ -47,25 +44,15 @@ bool parse_motion_model(const char* text, MotionModel* model) {
     *model = MotionModel::kSpinAboutCentre;
     return true;
   }
-  for (const ModelName& m : kModelNames) {
-    if (std::strcmp(text, m.name) != 0) continue;
-    *model = m.model;
-    return true;
-  }
-  return false;
+  return parse_named_value(kModelNames, text, model);
 }
 
 const char* motion_model_name(MotionModel model) {
-  for (const ModelName& m : kModelNames) {
-    if (m.model == model) return m.name;
-  }
-  return "screw";
+  return name_of_value(kModelNames, model, "screw");
 }
 
 std::string motion_model_name_list(const std::string& separator) {
-  std::string list;
-  for (const ModelName& m : kModelNames) list += (list.empty() ? "" : separator) + m.name;
-  return list;
+  return named_value_list(kModelNames, separator);
 }
 
 Vec3 eye_velocity(const RigidMotion& motion, const PlanePose& pose) {

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+
+#include "flow/named_values.h"
 
 namespace oflab {
 namespace {
@@ -82,25 +85,19 @@ bool line_inside(const std::vector<Vec2>& v, double y, double& x_min, double& x_
 
 }  // namespace
 
-const char* warp_area_name(WarpArea area) {
-  return area == WarpArea::kVisible ? "visible" : "whole";
-}
+// Every warp area with its name, in the order of the enum.
+constexpr NamedValue<WarpArea> kWarpAreaNames[] = {{WarpArea::kWhole, "whole"},
+                                                   {WarpArea::kVisible, "visible"}};
+static_assert(std::size(kWarpAreaNames) == kWarpAreaCount);
+
+const char* warp_area_name(WarpArea area) { return name_of_value(kWarpAreaNames, area, "whole"); }
 
 bool parse_warp_area(const std::string& text, WarpArea* area) {
-  for (int i = 0; i < kWarpAreaCount; ++i) {
-    if (text != warp_area_name(static_cast<WarpArea>(i))) continue;
-    *area = static_cast<WarpArea>(i);
-    return true;
-  }
-  return false;
+  return parse_named_value(kWarpAreaNames, text, area);
 }
 
 std::string warp_area_name_list(const std::string& separator) {
-  std::string list;
-  for (int i = 0; i < kWarpAreaCount; ++i) {
-    list += (i == 0 ? "" : separator) + std::string(warp_area_name(static_cast<WarpArea>(i)));
-  }
-  return list;
+  return named_value_list(kWarpAreaNames, separator);
 }
 
 PixelRows PixelRows::full(int width, int height) {

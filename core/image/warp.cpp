@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "flow/named_values.h"
 #include "image/mipmap_kernel.h"
 #include "image/scan_conversion.h"
 #include "image/warp_kernels.h"
@@ -106,33 +108,22 @@ void check_pyramid(const Layer& source, const WarpOptions& options) {
 
 }  // namespace
 
+// Every sampling with its name, in the order of the enum.
+constexpr NamedValue<Sampling> kSamplingNames[] = {{Sampling::kNearest, "nearest"},
+                                                   {Sampling::kBilinear, "bilinear"},
+                                                   {Sampling::kMipmap, "mipmap"}};
+static_assert(std::size(kSamplingNames) == kSamplingCount);
+
 const char* sampling_name(Sampling sampling) {
-  switch (sampling) {
-    case Sampling::kBilinear:
-      return "bilinear";
-    case Sampling::kMipmap:
-      return "mipmap";
-    case Sampling::kNearest:
-      break;
-  }
-  return "nearest";
+  return name_of_value(kSamplingNames, sampling, "nearest");
 }
 
 bool parse_sampling(const std::string& text, Sampling* sampling) {
-  for (int i = 0; i < kSamplingCount; ++i) {
-    if (text != sampling_name(static_cast<Sampling>(i))) continue;
-    *sampling = static_cast<Sampling>(i);
-    return true;
-  }
-  return false;
+  return parse_named_value(kSamplingNames, text, sampling);
 }
 
 std::string sampling_name_list(const std::string& separator) {
-  std::string list;
-  for (int i = 0; i < kSamplingCount; ++i) {
-    list += (i == 0 ? "" : separator) + std::string(sampling_name(static_cast<Sampling>(i)));
-  }
-  return list;
+  return named_value_list(kSamplingNames, separator);
 }
 
 WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image& output,

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 
+#include "flow/named_values.h"
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
 #include "scene/splat_footprint.h"
@@ -317,34 +319,20 @@ bool fit_inverse_depth_plane(const DepthFrame& depth, const Camera& camera, Vec3
   return true;
 }
 
-const char* hole_fill_name(HoleFill fill) {
-  switch (fill) {
-    case HoleFill::kNone:
-      return "none";
-    case HoleFill::kStretch:
-      return "stretch";
-    case HoleFill::kBackground:
-      return "background";
-  }
-  return "none";
-}
+// Every fill with its name, in the order of the enum.
+constexpr NamedValue<HoleFill> kHoleFillNames[] = {{HoleFill::kNone, "none"},
+                                                   {HoleFill::kStretch, "stretch"},
+                                                   {HoleFill::kBackground, "background"}};
+static_assert(std::size(kHoleFillNames) == kHoleFillCount);
+
+const char* hole_fill_name(HoleFill fill) { return name_of_value(kHoleFillNames, fill, "none"); }
 
 bool parse_hole_fill(const std::string& name, HoleFill& fill) {
-  for (int i = 0; i < kHoleFillCount; ++i) {
-    if (name == hole_fill_name(static_cast<HoleFill>(i))) {
-      fill = static_cast<HoleFill>(i);
-      return true;
-    }
-  }
-  return false;
+  return parse_named_value(kHoleFillNames, name, &fill);
 }
 
 std::string hole_fill_name_list(const std::string& separator) {
-  std::string names;
-  for (int i = 0; i < kHoleFillCount; ++i) {
-    names += (i ? separator : "") + std::string(hole_fill_name(static_cast<HoleFill>(i)));
-  }
-  return names;
+  return named_value_list(kHoleFillNames, separator);
 }
 
 Reprojection reproject_by_depth(const Image& rendered, const DepthFrame& depth,
