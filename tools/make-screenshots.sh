@@ -62,6 +62,10 @@ screen=1920x1200 shot lesson-how-much-error-can-you-see --lesson how-much-error-
 shot lesson-occlusion --lesson occlusion --frames 20
 screen=1920x1200 shot lesson-guessing-the-next-frame --lesson guessing-the-next-frame \
   --presentation --size 1920 1080 --frames 3
+screen=1920x1200 shot lesson-spreading-the-work --lesson spreading-the-work \
+  --presentation --size 1920 1080 --frames 12
+screen=1920x1200 shot lesson-warping-what-shows --lesson warping-what-shows \
+  --presentation --size 1920 1080 --frames 12
 shot slices --view slices --frames 10
 # The window as a projector shows it, normal and presentation mode, at 1920 x 1080.
 for look in normal presentation; do

@@ -16,6 +16,7 @@
 #include "experiments/experiments_scenes.h"
 #include "experiments/experiments_single_plane.h"
 #include "experiments/experiments_sweep.h"
+#include "experiments/experiments_visible_warp.h"
 #include "experiments/experiments_warp.h"
 #include "formats/atomic_file.h"
 #include "formats/datasets.h"
@@ -105,6 +106,13 @@ ReportSection run_sampling(ExperimentContext& c) {
   return sampling_section(r, c);
 }
 
+ReportSection run_visible_warp(ExperimentContext& c) {
+  const VisibleWarpResult r =
+      run_visible_warp_experiment(visible_warp_spec(c.quick()), c.progress_for("visible-warp", ""));
+  for (const std::string& line : visible_warp_summary_lines(r)) c.progress("visible-warp", line);
+  return visible_warp_section(r, c);
+}
+
 const std::vector<Experiment>& experiments() {
   static const std::vector<Experiment> list = {
       {"exp1", "Experiment 1 (6.4, 6.5)", run_exp1},
@@ -117,6 +125,8 @@ const std::vector<Experiment>& experiments() {
       {"scene-shifting", "scene shifting (chapter 3)", scene_shifting_section},
       {"reprojection", "today's reprojection beside optic flow", run_reprojection},
       {"sampling", "mipmap against bilinear on a receding plane (7.5.5)", run_sampling},
+      {"visible-warp", "warping what shows: whole against visible-only warps (7.5.3)",
+       run_visible_warp},
   };
   return list;
 }

@@ -21,7 +21,8 @@ namespace oflab {
 // "sweep" (thresholds 0.25..4 px, section 7.5.1's question), "costs" (time saved against
 // the re-render's cost, break-even), "policies" (rival reuse policies side by side),
 // "scene-shifting" (chapter 3), "reprojection" (today's reprojection beside optic flow),
-// "sampling" (mipmap against bilinear on a receding plane, section 7.5.5).
+// "sampling" (mipmap against bilinear on a receding plane, section 7.5.5), "visible-warp"
+// (whole against visible-only warps on four cubes and the street, section 7.5.3).
 const std::vector<std::string>& experiment_names();
 
 // What an experiment needs while it runs. Files go to DIR/charts/NAME.png and

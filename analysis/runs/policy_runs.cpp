@@ -91,14 +91,6 @@ ExpiryTable expiry_table(const AnimationRun& run) {
   return t;
 }
 
-std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const double n = static_cast<double>(values.size());
-  const auto rank = static_cast<std::size_t>(std::ceil(percent * n / 100.0));
-  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
-}
-
 std::vector<PolicyRun> run_policies(const SourceKind& kind, const RunSource& source,
                                     const std::vector<const ReusePolicy*>& policies,
                                     const PlayOptions& options) {

@@ -14,6 +14,7 @@
 
 #include "engine/reuse_policy.h"
 #include "runs/source_kinds.h"
+#include "runs/statistics.h"  // nearest_rank_percentile
 
 namespace oflab {
 
@@ -105,11 +106,6 @@ struct PolicyRow {
   ExpiryTable expiry;
 };
 PolicyRow policy_row(const PolicyRun& run);
-
-// The nearest-rank `percent` percentile of `values` (0 < percent <= 100): sorted ascending,
-// the value of rank ceil(percent / 100 x n) (1-based), that is the smallest value that at
-// least `percent` percent of the values do not exceed. 0 for no values.
-std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent);
 
 // The row as JSON: {"name", "levels": {level name: percent}, "rerender_share" (fraction),
 // "work_saved", "time_saved", "model_work_saved" (fractions), "max_measured_error_px",

@@ -18,4 +18,12 @@ double median_of(std::vector<double> values) {
 
 double percent(long part, long whole) { return whole ? 100.0 * part / whole : 0.0; }
 
+std::int64_t nearest_rank_percentile(std::vector<std::int64_t> values, double percent) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const double n = static_cast<double>(values.size());
+  const auto rank = static_cast<std::size_t>(std::ceil(percent * n / 100.0));
+  return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
+}
+
 }  // namespace oflab

@@ -327,16 +327,17 @@ const Image& AnimationView::exact_image() {
 }
 
 PanelContent AnimationView::engine_panel() {
-  double pixels = 0.0, ms = 0.0;
+  double pixels = 0.0, ms = 0.0, warped = 0.0;
   for (const AnimationFrame& f : model_->history()) {
     pixels += double(f.pixels_written);
+    warped += double(f.pixels_written - f.pixels_not_warped);
     ms += f.time_ms;
   }
   const std::string title =
       fill_pattern(model_->source_kind().panel_title, model_->settings().policy->name);
-  return {
-      QString::fromStdString(title), image_view(engine_image()), model_->animator()->outlines(),
-      run_caption(model_->current(), *model_->settings().policy, model_->settings(), pixels, ms)};
+  return {QString::fromStdString(title), image_view(engine_image()), model_->animator()->outlines(),
+          run_caption(model_->current(), *model_->settings().policy, model_->settings(), pixels, ms,
+                      warped)};
 }
 
 PanelContent AnimationView::exact_panel() {
@@ -359,9 +360,10 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
       continue;
     }
     const Image& image = run.animator()->image();
-    shown.push_back({tr("%1 policy").arg(name), image_view(image), run.animator()->outlines(),
-                     run_caption(run.last, *run.policy, model_->settings(),
-                                 double(run.pixels_written), run.time_ms)});
+    shown.push_back(
+        {tr("%1 policy").arg(name), image_view(image), run.animator()->outlines(),
+         run_caption(run.last, *run.policy, model_->settings(), double(run.pixels_written),
+                     run.time_ms, double(run.pixels_warped))});
     QImage& map = heat_images_[heat.size()];
     const StageTimer maps(FrameStage::kMaps);
     difference_map_into(image, exact, kDifferenceScale, map);

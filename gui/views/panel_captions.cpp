@@ -36,7 +36,8 @@ QString affine_view_line(const AnimationFrame& frame, const ReusePolicy& policy)
 }
 
 QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
-                        const EngineSettings& settings, double run_pixels, double run_ms) {
+                        const EngineSettings& settings, double run_pixels, double run_ms,
+                        double run_warped) {
   QStringList levels;
   for (int k = 0; k < kLevelCount; ++k) {
     const int n = frame.levels[size_t(k)];
@@ -62,6 +63,11 @@ QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
                .arg(frame.time_ms, 0, 'f', 1)
                .arg(count_text(run_pixels))
                .arg(run_ms, 0, 'f', 0);
+  if (settings.warp_area == WarpArea::kVisible) {
+    lines << QObject::tr("warped, what shows only: %1 px (run %2 px)")
+                 .arg(count_text(double(frame.pixels_written - frame.pixels_not_warped)))
+                 .arg(count_text(run_warped));
+  }
   return lines;
 }
 

@@ -23,9 +23,12 @@ QString affine_view_line(const AnimationFrame& frame, const ReusePolicy& policy)
 // The caption lines of an engine panel: the levels of this frame and its largest measured
 // error (pixels), the affine view's part of it (affine_view_line), the plane a
 // stabilized-plane policy warps by (from `settings`), then the pixels written and the time of
-// this frame and of the run so far (`run_pixels` pixels, `run_ms` milliseconds).
+// this frame and of the run so far (`run_pixels` pixels, `run_ms` milliseconds), and under a
+// visible-only warp (settings.warp_area) the pixels of them the warps computed, of this frame
+// and of the run so far (`run_warped` pixels).
 QStringList run_caption(const AnimationFrame& frame, const ReusePolicy& policy,
-                        const EngineSettings& settings, double run_pixels, double run_ms);
+                        const EngineSettings& settings, double run_pixels, double run_ms,
+                        double run_warped = 0.0);
 
 // Under a heat map of a frame whose largest measured error (the corners' distance from their
 // exact projection) is within a pixel: what its lit edges are, so they are not read as that

@@ -145,6 +145,25 @@ std::vector<ClaimKind> make_kinds() {
              "the pixels compared policy `of` has written over frames 0 .. now over those of "
              "compared policy `over`",
              true, true, false, policy_name),
+      engine("frame_pixels_p95_ratio",
+             "the 95th percentile (nearest rank) of the pixels `of` (engine or a compared "
+             "policy) wrote per frame over frames 1 .. now, as `oflab-cli compare`'s "
+             "pixels_written_p95, over that of `over`",
+             true, true, false, run_name),
+      engine("max_error_gap",
+             "|the largest measured error (px) over frames 1 .. now of `of` - that of `over`| "
+             "(engine or compared policies), px",
+             true, true, false, run_name),
+      engine("pixels_warped_share",
+             "the pixels `of` (engine or a compared policy) has warped over frames 0 .. now "
+             "(those its warps computed: a visible-only warp, `animation.warp` visible, leaves "
+             "out what the frame does not show) over the pixels it has written (0..1)",
+             true, false, false, run_name),
+      engine("whole_warp_difference",
+             "the pixels, summed over frames 0 .. now, in which the frames of `of` (engine or a "
+             "compared policy) differ from those of the same run with every layer warped whole "
+             "(`animation.warp` whole), both played from frame 0",
+             true, false, false, run_name),
       screen("caption_cut", "1 when the lesson caption's banner is shorter than its text needs"),
       screen("tile_active", "1 when the gallery's tile of term `of` is lit, else 0", true, false,
              term_symbol),

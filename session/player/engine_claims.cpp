@@ -12,6 +12,7 @@
 #include "flow/flow_field.h"
 #include "lessons/claim_kinds.h"
 #include "player/lab.h"
+#include "runs/statistics.h"
 #include "study/engine_display.h"
 #include "study/study_analysis.h"
 
@@ -168,6 +169,78 @@ double run_pixels_ratio(Lab& lab, const LessonClaim& claim) {
   return double(of->pixels_written) / double(over->pixels_written);
 }
 
+// The pixels `of` (engine or a compared policy) wrote in each of frames 1 .. now; false when
+// `of` names no such run.
+bool frame_pixels(Lab& lab, const std::string& of, std::vector<std::int64_t>* pixels) {
+  if (of == "engine") {
+    for (const AnimationFrame& f : lab.run().history()) {
+      if (f.frame > 0) pixels->push_back(f.pixels_written);
+    }
+    return true;
+  }
+  const ComparedRun* run = compared_run(lab, of);
+  if (!run) return false;
+  for (const ComparedFrame& f : run->history) {
+    if (f.frame > 0) pixels->push_back(f.pixels_written);
+  }
+  return true;
+}
+
+// The 95th percentile of the pixels `of` wrote per frame over that of `over`.
+double frame_pixels_p95_ratio(Lab& lab, const LessonClaim& claim) {
+  std::vector<std::int64_t> of, over;
+  if (!frame_pixels(lab, claim.of, &of) || !frame_pixels(lab, claim.over, &over)) return kUnknown;
+  const std::int64_t below = nearest_rank_percentile(over, 95.0);
+  return below > 0 ? double(nearest_rank_percentile(of, 95.0)) / double(below) : kUnknown;
+}
+
+double max_error_gap(Lab& lab, const LessonClaim& claim) {
+  LessonClaim over = claim;
+  over.of = claim.over;
+  return std::abs(max_error(lab, claim) - max_error(lab, over));
+}
+
+// The pixels `of` has warped and written over frames 0 .. now; false when `of` names no run.
+bool pixels_warped_and_written(Lab& lab, const std::string& of, std::int64_t* warped,
+                               std::int64_t* written) {
+  *warped = *written = 0;
+  if (of == "engine") {
+    for (const AnimationFrame& f : lab.run().history()) {
+      *written += f.pixels_written;
+      *warped += f.pixels_written - f.pixels_not_warped;
+    }
+    return true;
+  }
+  const ComparedRun* run = compared_run(lab, of);
+  if (!run || !run->animator()) return false;
+  *warped = run->pixels_warped;
+  *written = run->pixels_written;
+  return true;
+}
+
+double pixels_warped_share(Lab& lab, const LessonClaim& claim) {
+  std::int64_t warped = 0, written = 0;
+  if (!pixels_warped_and_written(lab, claim.of, &warped, &written) || written <= 0) return kUnknown;
+  return double(warped) / double(written);
+}
+
+// The run of `of` played afresh from frame 0 to now twice, with the lab's warp and with every
+// layer warped whole; the pixels in which their frames differ, summed over the frames.
+double whole_warp_difference(Lab& lab, const LessonClaim& claim) {
+  const AnimationFrame* shown = nullptr;
+  const Animator* animator = nullptr;
+  if (!shown_run(lab, claim.of, &shown, &animator)) return kUnknown;
+  EngineSettings settings = lab.run().settings();
+  if (claim.of != "engine") settings.policy = &reuse_policy(claim.of);
+  EngineSettings whole_settings = settings;
+  whole_settings.warp_area = WarpArea::kWhole;
+  const AnimationSourceKind& kind = lab.run().source_kind();
+  const auto as_played = kind.make(lab.run().source(), lab.panel(), settings);
+  const auto whole = kind.make(lab.run().source(), lab.panel(), whole_settings);
+  const std::int64_t differing = differing_pixels(*as_played, *whole, animator->frame());
+  return differing >= 0 ? double(differing) : kUnknown;
+}
+
 ExplorerResult explored(Lab& lab) {
   return explore(lab.values().explorer_terms, lab.panel().scene().camera);
 }
@@ -236,6 +309,10 @@ std::map<std::string, EngineMeasure> make_measures() {
       {"view",
        [](Lab& lab, const LessonClaim& c) { return lab.values().view == c.of ? 1.0 : 0.0; }},
       {"run_pixels_ratio", run_pixels_ratio},
+      {"frame_pixels_p95_ratio", frame_pixels_p95_ratio},
+      {"max_error_gap", max_error_gap},
+      {"pixels_warped_share", pixels_warped_share},
+      {"whole_warp_difference", whole_warp_difference},
       {"solution_count",
        [](Lab& lab, const LessonClaim&) { return double(explored(lab).inverse.solutions.size()); }},
       {"futures_apart_frame",
@@ -273,6 +350,19 @@ const std::map<std::string, EngineMeasure>& engine_claim_measures() {
 double measure_engine_claim(Lab& lab, const LessonClaim& claim) {
   const auto it = engine_claim_measures().find(claim.claim);
   return it == engine_claim_measures().end() ? kUnknown : it->second(lab, claim);
+}
+
+std::int64_t differing_pixels(Animator& a, Animator& b, int last_frame) {
+  std::int64_t differing = 0;
+  for (int k = 0; k <= last_frame; ++k) {
+    if (k == 0) a.start(), b.start();
+    if (k > 0) a.advance(), b.advance();
+    const std::vector<Pixel>& p = a.image().pixels();
+    const std::vector<Pixel>& q = b.image().pixels();
+    if (p.size() != q.size()) return -1;
+    for (size_t i = 0; i < p.size(); ++i) differing += p[i] != q[i];
+  }
+  return differing;
 }
 
 WindowState LabStage::stage_state() const { return lab_->state(); }

@@ -6,6 +6,7 @@
 // lesson check` measures them headlessly. Plain C++.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
@@ -17,6 +18,7 @@
 
 namespace oflab {
 
+class Animator;
 class Lab;
 
 // A measure: the claim's value on the lab now, in its kind's unit; NaN when the claim names
@@ -28,6 +30,12 @@ const std::map<std::string, EngineMeasure>& engine_claim_measures();
 
 // The measure of `claim` (whose kind must be an engine kind) on `lab`; NaN otherwise.
 double measure_engine_claim(Lab& lab, const LessonClaim& claim);
+
+// Plays `a` and `b` from frame 0 (start) to `last_frame` (advance) side by side and returns
+// the pixels in which their images differ, summed over the frames; -1 when their images
+// differ in size. Precondition: both have at least last_frame + 1 frames. (The measure of
+// whole_warp_difference: a run against the same run warped whole.)
+std::int64_t differing_pixels(Animator& a, Animator& b, int last_frame);
 
 // A lab as a lesson's stage (lessons/lesson_player.h): frames played one at a time on its
 // plane panel, as the window's play does.

@@ -114,6 +114,7 @@ std::string PolicyComparison::memory_problem() const {
 void PolicyComparison::restart(ComparedRun& run) const {
   run.last = run.owned->start();
   run.pixels_written = run.last.pixels_written;
+  run.pixels_warped = run.last.pixels_written - run.last.pixels_not_warped;
   run.time_ms = run.last.time_ms;
   run.history.clear();
   record(run);
@@ -130,6 +131,7 @@ void PolicyComparison::seek(ComparedRun& run, int frame) const {
   while (run.owned->frame() < frame) {
     run.last = run.owned->advance();
     run.pixels_written += run.last.pixels_written;
+    run.pixels_warped += run.last.pixels_written - run.last.pixels_not_warped;
     run.time_ms += run.last.time_ms;
     record(run);
   }
@@ -167,10 +169,11 @@ void PolicyComparison::follow_model(ComparedRun& run, int frame) const {
     run.history.clear();
     next = 0;
   }
-  if (next == 0) run.pixels_written = 0, run.time_ms = 0.0;
+  if (next == 0) run.pixels_written = 0, run.pixels_warped = 0, run.time_ms = 0.0;
   for (int k = next; k <= frame && k < int(records.size()); ++k) {
     run.last = records[size_t(k)];
     run.pixels_written += run.last.pixels_written;
+    run.pixels_warped += run.last.pixels_written - run.last.pixels_not_warped;
     run.time_ms += run.last.time_ms;
     record(run);
   }

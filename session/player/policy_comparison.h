@@ -70,7 +70,10 @@ struct ComparedRun {
   std::string problem;              // why not, one line; empty when it plays
   AnimationFrame last;              // the record of animator->frame()
   std::int64_t pixels_written = 0;  // by the warp kernels over frames 0 .. frame()
-  double time_ms = 0.0;             // wall time of frames 0 .. frame()
+  // Of pixels_written, those the warps computed (AnimationFrame::pixels_not_warped left out:
+  // fewer under a visible-only warp, EngineSettings::warp_area), over frames 0 .. frame().
+  std::int64_t pixels_warped = 0;
+  double time_ms = 0.0;  // wall time of frames 0 .. frame()
   // Frames of the current pass, consecutive and oldest first, ending at animator->frame():
   // frames 0 .. frame() while they number at most the comparison's limit
   // (kComparedHistoryFrames by default), else the last that many.

@@ -447,7 +447,7 @@ TEST(ExperimentsCommand, QuickRunWritesAReportThatParsesWithEveryChart) {
   // One HTML table per Markdown table (a Markdown table has one "|---|" separator row).
   EXPECT_EQ(occurrences(html, "<table>"), occurrences(md, "\n|---|"));
   for (const char* id : {"about", "experiment-1", "delta", "warp-timing", "experiment-2",
-                         "threshold-sweep", "costs", "policies"}) {
+                         "threshold-sweep", "costs", "policies", "visible-warp"}) {
     EXPECT_NE(html.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
   }
   // Every Markdown image is a chart file next to the report with its CSV, and every one

@@ -381,6 +381,27 @@ TEST(PanelCaptions, ReprojectionPoliciesSayWhatTheyDidInTheirOwnWords) {
   EXPECT_FALSE(perspective.contains(QStringLiteral("render frame"))) << perspective.toStdString();
 }
 
+// Under a visible-only warp the caption says how many of the pixels written the warps
+// computed, this frame and over the run; under the whole warp (all of them) it says nothing.
+TEST(PanelCaptions, AVisibleOnlyWarpShowsThePixelsWarpedBesideThePixelsWritten) {
+  AnimationFrame frame;
+  frame.layers = 4;
+  frame.levels[static_cast<int>(Level::kAffine)] = 4;
+  frame.pixels_written = 48000;
+  frame.pixels_not_warped = 6000;
+  EngineSettings settings;
+  settings.warp_area = WarpArea::kVisible;
+  const QString visible =
+      run_caption(frame, reuse_policy("perspective"), settings, 900000, 20, 700000).join('\n');
+  EXPECT_TRUE(visible.contains(QStringLiteral("48 k px")) &&
+              visible.contains(QStringLiteral("warped, what shows only: 42 k px (run 700 k px)")))
+      << visible.toStdString();
+  settings.warp_area = WarpArea::kWhole;
+  const QString whole =
+      run_caption(frame, reuse_policy("perspective"), settings, 900000, 20, 900000).join('\n');
+  EXPECT_FALSE(whole.contains(QStringLiteral("warped"))) << whole.toStdString();
+}
+
 TEST(SessionFile, PolicyAndSamplingRoundTripByNameAndUnknownNamesAreRefused) {
   WindowState session;
   session.settings.policy = &reuse_policy("exact");

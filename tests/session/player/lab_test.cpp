@@ -8,9 +8,13 @@
 #include <cmath>
 #include <set>
 
+#include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
 #include "lessons/claim_kinds.h"
 #include "lessons/lesson_player.h"
 #include "player/engine_claims.h"
+#include "player/run_player.h"
+#include "runs/policy_runs.h"
 #include "state/window_state_file.h"
 #include "study/engine_display.h"
 
@@ -92,6 +96,86 @@ TEST(Lab, TheErrorOverTheThresholdIsTheLargestErrorOverTheLargestThreshold) {
     EXPECT_DOUBLE_EQ(measure_engine_claim(lab, study_claim("error_over_threshold", "perspective")),
                      error / threshold);
   }
+}
+
+LessonClaim pair_claim(const std::string& kind, const std::string& of, const std::string& over) {
+  LessonClaim claim = study_claim(kind, of);
+  claim.over = over;
+  return claim;
+}
+
+// The rows `oflab-cli compare` prints for four cubes under compound, frames 0 .. 12, with the
+// warp `area`: an independent run of each policy through the analysis run driver.
+std::vector<PolicyRow> compare_rows(const std::string& policies, WarpArea area) {
+  RunSource source;
+  source.scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("four-cubes")));
+  source.viewer = read_viewer_script_file(resolve_viewer_script_path("compound"));
+  source.settings.engine.warp_area = area;
+  PlayOptions quick;
+  quick.max_frames = 13;
+  quick.timing_repetitions = 1;
+  quick.warm_up = false;
+  std::vector<PolicyRow> rows;
+  for (const PolicyRun& run :
+       run_policies(source_kind("scene"), source, parse_policy_list(policies), quick)) {
+    rows.push_back(policy_row(run));
+  }
+  return rows;
+}
+
+// The lesson spreading-the-work at frame 12: frame_pixels_p95_ratio is compare's
+// pixels_written_p95 of lookahead over perspective's, max_error_gap the difference of their
+// max_measured_error_px. Controls: the ratio turned round is its inverse, not 1, and the gap
+// to a policy that re-renders every frame (error 0) is the perspective policy's error.
+TEST(Lab, TheSpreadKindsAreCompareFiguresOfTheSameFrames) {
+  Lab lab(shipped_default_texture());
+  WindowState state = find_lesson("spreading-the-work")->state;
+  state.playing = false;
+  state.frame = 12;
+  ASSERT_EQ(lab.apply(state), "");
+  const std::vector<PolicyRow> rows = compare_rows("lookahead,perspective", WarpArea::kWhole);
+  const double ratio =
+      measure_engine_claim(lab, pair_claim("frame_pixels_p95_ratio", "lookahead", "perspective"));
+  EXPECT_DOUBLE_EQ(ratio, double(rows[0].pixels_written_p95) / double(rows[1].pixels_written_p95));
+  EXPECT_LT(ratio, 0.8);
+  EXPECT_DOUBLE_EQ(
+      measure_engine_claim(lab, pair_claim("frame_pixels_p95_ratio", "perspective", "lookahead")),
+      1.0 / ratio);
+  EXPECT_NEAR(measure_engine_claim(lab, pair_claim("max_error_gap", "lookahead", "perspective")),
+              std::abs(rows[0].max_measured_error_px - rows[1].max_measured_error_px), 1e-9);
+  state.compared = {"perspective", "rerender"};
+  ASSERT_EQ(lab.apply(state), "");
+  EXPECT_NEAR(measure_engine_claim(lab, pair_claim("max_error_gap", "rerender", "perspective")),
+              rows[1].max_measured_error_px, 1e-9);
+  EXPECT_GT(rows[1].max_measured_error_px, 0.5);
+}
+
+// The lesson warping-what-shows at frame 12: pixels_warped_share is compare's pixels_warped
+// over pixels_written under --warp visible, below 1; under the whole warp it is 1 (the
+// control). whole_warp_difference finds no pixel apart, while the same count between runs
+// that do differ (bilinear against nearest sampling) is not 0.
+TEST(Lab, TheVisibleWarpKindsAreComparesPixelsWarpedAndTheWholeWarpsFrames) {
+  Lab lab(shipped_default_texture());
+  WindowState state = find_lesson("warping-what-shows")->state;
+  state.playing = false;
+  state.frame = 12;
+  ASSERT_EQ(lab.apply(state), "");
+  const PolicyRow row = compare_rows("perspective", WarpArea::kVisible).at(0);
+  const double share = measure_engine_claim(lab, study_claim("pixels_warped_share", "perspective"));
+  EXPECT_DOUBLE_EQ(share, double(row.pixels_warped) / double(row.pixels_written));
+  EXPECT_LT(share, 0.95);
+  EXPECT_DOUBLE_EQ(measure_engine_claim(lab, study_claim("pixels_warped_share", "engine")), share);
+  EXPECT_EQ(measure_engine_claim(lab, study_claim("whole_warp_difference", "perspective")), 0.0);
+  EngineSettings bilinear = lab.run().settings();
+  bilinear.sampling = Sampling::kBilinear;
+  const AnimationSourceKind& kind = lab.run().source_kind();
+  const auto a = kind.make(lab.run().source(), lab.panel(), lab.run().settings());
+  const auto b = kind.make(lab.run().source(), lab.panel(), bilinear);
+  EXPECT_GT(differing_pixels(*a, *b, 3), 0);
+  state.settings.warp_area = WarpArea::kWhole;
+  ASSERT_EQ(lab.apply(state), "");
+  EXPECT_DOUBLE_EQ(measure_engine_claim(lab, study_claim("pixels_warped_share", "perspective")),
+                   1.0);
 }
 
 // The frame clock loops over the run's source: its animator's length, or the plane panel's
