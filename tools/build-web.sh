@@ -7,9 +7,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # emscripten and the header-only libraries for the module, chromium and node's acorn for
-# the tests and emscripten's optimiser.
+# the tests and emscripten's optimiser, npm for the world view's vtk.js.
 bash tools/install-deps.sh --only emscripten chromium node-acorn libglm-dev nlohmann-json3-dev \
-  libstb-dev cmake
+  libstb-dev cmake npm
+
+# vtk.js and esbuild at the versions and integrity hashes of web/package-lock.json, from the
+# npm registry, into web/node_modules; again only when the lock file changed since.
+if [[ ! -f web/node_modules/.package-lock.json || web/package-lock.json -nt web/node_modules/.package-lock.json ]]; then
+  (cd web && npm ci --no-audit --no-fund --loglevel=error)
+fi
 
 # Debian's emscripten runs its JavaScript optimiser with the machine's node, which finds
 # Debian's acorn module only through NODE_PATH.

@@ -118,6 +118,8 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("seek", &WebSession::seek)
       .function("sceneProblem", &WebSession::scene_problem)
       .function("flowJson", &WebSession::flow_json)
+      .function("worldLoopJson", &WebSession::world_loop_json)
+      .function("worldFrameJson", &WebSession::world_frame_json)
       .function("arrows", &oflab::arrows)
       .function("streamlines", &oflab::streamlines)
       .function("basisJson", &WebSession::basis_json)
