@@ -127,6 +127,18 @@ const worldView = {
     });
   },
 
+  // Paints the world as shown (vtk.js's picture and the labels) into the 2D canvas's context,
+  // for the PNG download: rendered again first, as WebGL keeps its picture only until the
+  // page is composited.
+  paintInto(ctx) {
+    if (!this.world) return;
+    this.world.render();
+    const gl = [...this.box.querySelectorAll('canvas')].find((c) => c !== this.labels);
+    const box = this.box.getBoundingClientRect();
+    ctx.drawImage(gl, 0, 0, box.width, box.height);
+    ctx.drawImage(this.labels, 0, 0, box.width, box.height);
+  },
+
   // What of the state the page's world view does not show, said on the picture.
   notes() {
     const s = app.state;

@@ -92,6 +92,9 @@ class WorldView : public ViewPage {
   Vec3 drawn_centre() const;
   // The depth of the image plane, world units, as of the last update.
   double image_depth() const;
+  // The VTK scene as last updated (tests compare its actors' points and matrices with the
+  // teaching layer's world, session/display/world_geometry.h).
+  const WorldScene& drawn_scene() const { return *world_; }
 
   // The texts the last picture painted (labels, caption, legend) with their boxes, canvas
   // pixels, and what is wrong with them (text_problems of gui/adapters/painted_text.h:

@@ -11,6 +11,7 @@
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -23,6 +24,7 @@
 #include "image_checks.h"
 #include "models/scene_model.h"
 #include "views/image_canvas.h"
+#include "views/world_scene.h"
 #include "views/world_texts.h"
 #include "window_fixture.h"
 
@@ -142,6 +144,41 @@ TEST_F(WorldViewTest, SteppingMovesThePlaneWithoutMakingActorsAnew) {
   EXPECT_NEAR(glm::length(world().drawn_centre() - scene->current_pose().point), 0.0, 1e-12);
   EXPECT_GT(changed_fraction(first, world().render_image()), 0.002);
   EXPECT_EQ(props(), before);  // the same objects: nothing was made anew
+}
+
+// The desktop draws the teaching layer's plane world (session/display/world_geometry.h), the
+// numbers the page's world view draws (web/world_json.h): the plane's points and the arrows'
+// matrices of frame 40 are plane_world_frame's, computed here from the scene model.
+TEST_F(WorldViewTest, ActorsHoldTheTeachingLayersPlaneWorld) {
+  show_world(false);
+  SceneModel* scene = window().model()->scene();
+  scene->set_frame(40);
+  QApplication::processEvents();
+  world().render_image();
+  const PlaneWorldLoop loop = plane_world_loop(scene->as_script(), scene->scene().camera,
+                                               scene->current_pose(), SceneModel::kSecondsPerFrame);
+  const PlaneWorldFrame f =
+      plane_world_frame(loop, scene->current_pose(), scene->current_motion(), scene->frame());
+  const WorldScene& drawn = world().drawn_scene();
+  EXPECT_EQ(drawn.depth, loop.depth);
+  vtkPoints* corners = drawn.plane.data->GetPoints();
+  ASSERT_EQ(corners->GetNumberOfPoints(), 4);
+  for (int k = 0; k < 4; ++k) {  // VTK keeps points as floats
+    const double* p = corners->GetPoint(k);
+    const Vec3 expected = f.plane_corners[size_t(k)];
+    EXPECT_NEAR(glm::length(Vec3(p[0], p[1], p[2]) - expected), 0.0, 1e-6 * glm::length(expected));
+  }
+  const std::pair<const WorldScene::Arrow*, WorldArrow> arrows[] = {
+      {&drawn.velocity, f.motion.velocity},
+      {&drawn.omega, f.motion.omega},
+      {&drawn.normal, f.normal},
+      {&drawn.up, f.up}};
+  for (const auto& [arrow, expected] : arrows) {
+    const std::array<double, 16> m = arrow_matrix(expected);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(arrow->matrix->GetElement(i / 4, i % 4), m[size_t(i)]);
+  }
+  EXPECT_GT(f.motion.velocity.length, 0.0);  // the demo moves and turns: both are drawn
+  EXPECT_GT(f.motion.omega.length, 0.0);
 }
 
 TEST_F(WorldViewTest, ASceneSourceShowsItsPolygonsWithTheSameActors) {
