@@ -81,7 +81,7 @@ const worldView = {
   },
 
   theme(style) {
-    return { background: [17, 19, 21], text: [230, 230, 230], outline: [150, 156, 165], image: [58, 63, 71],
+    return { background: [17, 19, 21], text: [230, 230, 230], outline: [150, 156, 165], image: [150, 156, 165],
       muted: [110, 116, 125], line: style.line };
   },
 

@@ -169,19 +169,22 @@ class World {
     this.pathFuture.actor.setVisibility(on('path'));
   }
 
-  // The camera framing the loop's points from behind, above and left of the eye (as the
-  // desktop's orbit camera first looks), fitted by vtk.js's resetCamera.
+  // The camera framing the loop from behind the eye, to its left and above it (Y is down), so
+  // the frustum opens towards the plane across the picture (the desktop's orbit vantage,
+  // gui/views/world_camera.cpp), fitted to the bounds of the eye, the image plane and the
+  // plane over the loop by vtk.js's resetCamera.
   resetCamera() {
     const cam = this.renderer.getActiveCamera();
     const centre = this.loop.world_centre;
-    const side = [-0.9, -0.7, -1.2];
-    const distance = Math.hypot(...centre) + 1;
-    cam.setFocalPoint(...centre.map((v) => v / 2));
-    cam.setPosition(...centre.map((v, i) => v / 2 + side[i] * distance));
+    const focus = centre.map((v) => v / 2);
+    const side = [-0.8, -0.8, -0.55];
+    const distance = Math.max(1e-3, Math.hypot(...centre));
+    cam.setFocalPoint(...focus);
+    cam.setPosition(...focus.map((v, i) => v + side[i] * distance));
     cam.setViewUp(0, -1, 0);
-    const b = this.loop.bounds;
-    this.renderer.resetCamera(b);
-    cam.zoom(1.15);
+    cam.setViewAngle(30);
+    this.renderer.resetCamera(this.loop.bounds);
+    cam.zoom(1.35);
     this.framed = true;
   }
 
