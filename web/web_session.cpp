@@ -246,7 +246,9 @@ const PlaneWorldLoop& WebSession::world_loop() {
   return world_loop_;
 }
 
-std::string WebSession::world_loop_json() { return oflab::world_loop_json(world_loop()); }
+std::string WebSession::world_loop_json() {
+  return oflab::world_loop_json(world_loop(), lab_.panel().texture_source());
+}
 
 std::string WebSession::world_frame_json() {
   return oflab::world_frame_json(world_loop(), lab_.panel());

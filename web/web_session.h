@@ -110,6 +110,8 @@ class WebSession {
   // (every call that may change the state rebuilds it), and the frame shown.
   std::string world_loop_json();
   std::string world_frame_json();
+  // The plane's texture (premultiplied RGBA, top row first), which the world view's plane shows.
+  const Image& plane_texture() const { return lab_.panel().texture(); }
 
   // The basis gallery of `basis_key` (session/basis/basis_catalog.h): per term its symbol,
   // description, order, unit, coefficient in the current flow, whether it is negligible

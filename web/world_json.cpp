@@ -43,7 +43,7 @@ PlaneWorldLoop panel_world_loop(const PlanePanel& panel) {
                           PlanePanel::kSecondsPerFrame);
 }
 
-std::string world_loop_json(const PlaneWorldLoop& loop) {
+std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& texture_source) {
   const Camera& c = loop.camera;
   const std::array<Vec3, 4> image = image_plane_corners(c, loop.depth);
   Vec3 lo(0.0), hi(0.0);  // the eye
@@ -72,6 +72,7 @@ std::string world_loop_json(const PlaneWorldLoop& loop) {
   out["world_centre"] = vec_json(loop.world_centre);
   out["bounds"] = {lo.x, hi.x, lo.y, hi.y, lo.z, hi.z};
   out["caption"] = plane_world_caption(loop);
+  out["texture"] = texture_source;
   namespace oi = okabe_ito;
   out["colours"] = {
       {"velocity", rgb_json(oi::kVermillion)}, {"omega", rgb_json(oi::kReddishPurple)},

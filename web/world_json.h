@@ -18,10 +18,11 @@ namespace oflab {
 // apart): {"camera": {width, height, focal_px, cx, cy}, "depth", "full_arrow",
 // "largest_velocity", "largest_omega", "image_corners": 4 points, "path": a point per frame,
 // "world_centre", "bounds": [xmin, xmax, ymin, ymax, zmin, zmax] of the eye, the image plane
-// and the plane's corners over the loop, "caption", "colours": {velocity, omega, normal, up,
+// and the plane's corners over the loop, "caption", "texture": `texture_source` (the file the
+// plane's texture came from, "" for the default), "colours": {velocity, omega, normal, up,
 // rays, path_past, plane}: [r, g, b] of session/display/palette.h}.
 PlaneWorldLoop panel_world_loop(const PlanePanel& panel);
-std::string world_loop_json(const PlaneWorldLoop& loop);
+std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& texture_source);
 
 // The frame shown: {"frame", "plane_corners", "ray_images", "omega_axis", "velocity",
 // "omega" (per second), "path_index", "arrows": {velocity, omega, normal, up: {"origin",

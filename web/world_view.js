@@ -64,7 +64,7 @@ const worldView = {
     const theme = this.theme(style);
     if (loopText !== this.loopText || theme.line !== this.line) {
       this.loop = JSON.parse(loopText);
-      this.world.setLoop(this.loop, theme);
+      this.world.setLoop(this.loop, theme, app.session.worldTexture());
       this.loopText = loopText;
       this.line = theme.line;
       this.placed = null;
@@ -109,9 +109,11 @@ const worldView = {
       const [r, g, b] = colour[label.key] || [230, 230, 230];
       ctx.fillStyle = 'rgba(17, 19, 21, 0.6)';
       const width = ctx.measureText(label.text).width;
-      ctx.fillRect(at[0] + 6, at[1] - 9 * style.scale, width + 6, 18 * style.scale);
+      // Right of its point, or left of it where the right would leave the picture.
+      const x = at[0] + 9 + width > canvas.width ? Math.max(3, at[0] - 9 - width) : at[0] + 9;
+      ctx.fillRect(x - 3, at[1] - 9 * style.scale, width + 6, 18 * style.scale);
       ctx.fillStyle = `rgb(${r},${g},${b})`;
-      ctx.fillText(label.text, at[0] + 9, at[1]);
+      ctx.fillText(label.text, x, at[1]);
     }
     ctx.font = style.font(13);
     ctx.fillStyle = '#e6e6e6';

@@ -41,7 +41,7 @@ TEST(WorldJson, LoopIsTheTeachingLayersPlaneLoop) {
   const PlaneWorldLoop loop = panel_world_loop(panel);
   const PlaneWorldLoop expected = plane_world_loop(
       panel.as_script(), panel.scene().camera, panel.current_pose(), PlanePanel::kSecondsPerFrame);
-  const json out = json::parse(world_loop_json(loop));
+  const json out = json::parse(world_loop_json(loop, ""));
   EXPECT_EQ(out["depth"].get<double>(), expected.depth);
   EXPECT_EQ(out["full_arrow"].get<double>(), expected.full_arrow);
   EXPECT_EQ(out["largest_velocity"].get<double>(), expected.largest_velocity);

@@ -20,6 +20,9 @@ import vtkMapper from '@kitware/vtk.js/Rendering/Core/Mapper';
 import vtkPolyData from '@kitware/vtk.js/Common/DataModel/PolyData';
 import vtkArrowSource from '@kitware/vtk.js/Filters/Sources/ArrowSource';
 import vtkSphereSource from '@kitware/vtk.js/Filters/Sources/SphereSource';
+import vtkTexture from '@kitware/vtk.js/Rendering/Core/Texture';
+import vtkImageData from '@kitware/vtk.js/Common/DataModel/ImageData';
+import vtkDataArray from '@kitware/vtk.js/Common/Core/DataArray';
 
 const rgb = (c) => c.map((v) => v / 255);
 
@@ -71,6 +74,17 @@ function unitArrow() {
   return data;
 }
 
+// A texture of opaque RGBA rows, top row first (vtk.js's first row is v = 0).
+function makeTexture({ width, height, pixels }) {
+  const image = vtkImageData.newInstance();
+  image.setDimensions(width, height, 1);
+  image.getPointData().setScalars(vtkDataArray.newInstance({ numberOfComponents: 4, values: Uint8Array.from(pixels) }));
+  const texture = vtkTexture.newInstance();
+  texture.setInputData(image);
+  texture.setInterpolate(true);
+  return texture;
+}
+
 function transposed(m) {
   return Float64Array.from(range(16), (i) => m[4 * (i % 4) + Math.floor(i / 4)]);
 }
@@ -94,9 +108,10 @@ class World {
   }
 
   // Makes every actor for `loop` (Session.worldLoopJson): the eye, the frustum and the image
-  // plane, the plane and its outline, the rays, the arrows, the path. Called again only when
-  // the source changes.
-  setLoop(loop, theme) {
+  // plane, the plane with `texture` ({width, height, pixels}: opaque RGBA rows, top row
+  // first, Session.worldTexture) and its outline, the rays, the arrows, the path. Called again
+  // only when the source changes.
+  setLoop(loop, theme, texture) {
     const r = this.renderer;
     r.removeAllViewProps();
     const c = loop.colours;
@@ -109,8 +124,11 @@ class World {
     this.eye.actor.setScale(0.05 * loop.depth, 0.05 * loop.depth, 0.05 * loop.depth);
     this.frustum = polyActor(r, rgb(theme.outline), theme.line);
     this.imagePlane = polyActor(r, rgb(theme.image));
-    this.plane = polyActor(r, rgb(c.plane));
-    this.plane.actor.getProperty().setLighting(true);
+    this.plane = polyActor(r, [1, 1, 1]);
+    this.plane.actor.addTexture(makeTexture(texture));
+    // The image's top-left pixel at corner 0, as the desktop's (world_actors.h).
+    this.plane.data.getPointData().setTCoords(vtkDataArray.newInstance({
+      name: 'uv', numberOfComponents: 2, values: Float32Array.from([0, 0, 1, 0, 1, 1, 0, 1]) }));
     this.planeOutline = polyActor(r, rgb(theme.outline), theme.line);
     this.rays = polyActor(r, rgb(c.rays), theme.line);
     this.rayImages = polyActor(r, rgb(c.rays), 2.5 * theme.line);
