@@ -24,7 +24,7 @@
 // - The threshold study: the page's loop with a simulated observer writes the CSV of
 //   `oflab-cli study session` (same study, method, seed), another seed does not, a broken
 //   study file is refused naming the file and the field.
-// - --bench: the flow view and the comparison played frame by frame for 300 frames, paced
+// - --bench: the flow view, the world view and the comparison played frame by frame for 300 frames, paced
 //   at 60 Hz and unpaced; prints the frames per second of requestAnimationFrame (speed is
 //   reported, not tested).
 if (typeof WebSocket === 'undefined') {
@@ -805,8 +805,8 @@ async function testLinks(browser) {
 // vsync off), which shows how many frames a second the page can make.
 const kUnpacedFlags = ['--disable-gpu-vsync', '--disable-frame-rate-limit'];
 async function benchViews(browser, pace) {
-  for (const view of ['flow', 'animation']) {
-    const query = view === 'animation' ? '?bench=animation&script=swing' : '?bench=flow';
+  for (const view of ['flow', 'world', 'animation']) {
+    const query = view === 'animation' ? '?bench=animation&script=swing' : `?bench=${view}`;
     await open(browser, query, doneMarker('bench'), 300);
     const r = JSON.parse(await evaluate(browser, "document.getElementById('bench').textContent"));
     console.log(`bench ${view} (${pace}): ${r.fps.toFixed(1)} fps over ${r.frames} frames (frame time median ${r.median_ms.toFixed(1)} ms, ` +
