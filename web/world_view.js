@@ -102,8 +102,12 @@ const worldView = {
     ctx.textBaseline = 'middle';
     const colours = this.loop.colours;
     const colour = { velocity: colours.velocity, omega: colours.omega, normal: colours.normal, up: colours.up };
+    // Through the eye, as the desktop: no eye and no Omega (both at the eye), and the image
+    // plane's border is the camera's image.
+    const fromEye = app.state.world_camera === 'eye';
     for (const label of this.frame.labels) {
-      if (!label.text) continue;
+      if (!label.text || (fromEye && (label.key === 'eye' || label.key === 'omega'))) continue;
+      if (fromEye && label.key === 'image_plane') label.text = "the camera's image";
       const at = this.world.toPage(label.at);
       if (!at) continue;
       const [r, g, b] = colour[label.key] || [230, 230, 230];
@@ -123,6 +127,9 @@ const worldView = {
     const notes = this.notes();
     if (notes) lines.unshift(notes);
     const step = 17 * style.scale;
+    // A dark band under the caption keeps it readable over the picture.
+    ctx.fillStyle = 'rgba(17, 19, 21, 0.75)';
+    ctx.fillRect(0, canvas.height - 16 - lines.length * step, canvas.width, lines.length * step + 16);
     lines.forEach((line, i) => {
       ctx.fillStyle = i === 0 && notes ? '#e6c35a' : '#e6e6e6';
       ctx.fillText(line, 12, canvas.height - 10 - (lines.length - 1 - i) * step);

@@ -104,7 +104,6 @@ class World {
     this.interactor.setInteractorStyle(vtkInteractorStyleTrackballCamera.newInstance());
     this.interactor.bindEvents(container);
     this.renders = 0;
-    this.actorsMade = 0;
   }
 
   // Makes every actor for `loop` (Session.worldLoopJson): the eye, the frustum and the image
@@ -147,7 +146,6 @@ class World {
     setCells(this.imagePlane.data, corners, 'polys', [[0, 1, 2, 3]]);
     const from = [[0, 0, 0], [0, 0, 0], [0, 0, 0], [0, 0, 0]].concat(corners);
     setSegments(this.frustum.data, from, corners.concat([1, 2, 3, 0].map((k) => corners[k])));
-    this.actorsMade = r.getActors().length;
     this.framed = false;
   }
 
