@@ -2,7 +2,8 @@
 // The page's state and controls (manual/web.md). The state is the window state of the
 // desktop (session/state/window_state.h) as JSON; core owns it: every change goes through
 // Session.setState, which checks it with the session reader, and the page reads it back.
-// Views (flow_view.js, basis_view.js, comparison_view.js, analysis_view.js) draw the state on one 2D canvas.
+// Views (flow_view.js, basis_view.js, comparison_view.js, analysis_view.js) draw the state on one
+// 2D canvas; the world view (world_view.js) draws with vtk.js on its own WebGL canvas over it.
 
 const app = {
   module: null,    // the WebAssembly module of core (createOflabModule)
@@ -204,7 +205,7 @@ function bindControls() {
 }
 
 // Space plays and pauses; the arrows step (Up and Down by ten frames); Home and End go to
-// the first and the last frame; Page Down and Page Up step through a lesson; 1-4 pick a view,
+// the first and the last frame; Page Down and Page Up step through a lesson; 1-5 pick a view,
 // P the presentation mode.
 function onKey(e) {
   // The study panel takes its own keys (study_view.js), but Page Down and Page Up still step
@@ -228,6 +229,7 @@ function onKey(e) {
     2: () => editState((s) => { s.view = 'basis'; }),
     3: () => editState((s) => { s.view = 'animation'; }),
     4: () => editState((s) => { s.view = 'analysis'; }),
+    5: () => editState((s) => { s.view = 'world'; }),
     p: () => editState((s) => { s.presentation = !s.presentation; }),
   };
   const action = keys[e.key];
@@ -269,7 +271,8 @@ function draw() {
   document.body.dataset.drawn = String(Number(document.body.dataset.drawn || 0) + 1);
 }
 
-// The page's view for the state's: the world view's plane shows in the flow view.
+// The page's view for the state's: a view of the desktop window the page lacks shows as the
+// flow view (draw says so on the picture).
 function shownView() {
   const view = app.state.view;
   if (view in app.views) return view;
@@ -293,7 +296,7 @@ function fillScriptPicker() {
   for (const name of JSON.parse(Module.Session.scriptNamesJson())) $('script').add(new Option(name, name));
 }
 
-// Options from the URL: view=flow|basis|animation, script=NAME, frame=N, lesson=NAME,
+// Options from the URL: view=flow|world|basis|animation|analysis, script=NAME, frame=N, lesson=NAME,
 // step=K, presentation, explorer (the basis view's explorer); applied over the default
 // state (the screenshot tests use them).
 function applyUrlOptions(params) {

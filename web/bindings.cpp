@@ -93,6 +93,25 @@ emscripten::val study_curve(const WebStudy& s, double threshold_px, int n) {
   return float64_copy(s.curve(threshold_px, n));
 }
 
+// The plane's texture for the world view's plane: {width, height, pixels}, the texture
+// flattened over light grey (225) into opaque RGBA8 rows, top row first, at most 512 pixels
+// on its longer side (nearest neighbour); pixels is a view into the module's memory.
+emscripten::val world_texture(const WebSession& s) {
+  static std::vector<std::uint8_t> pixels;
+  const Image& texture = s.plane_texture();
+  const double k = std::min(1.0, 512.0 / std::max(texture.width(), texture.height()));
+  const int width = std::max(1, int(std::lround(k * texture.width())));
+  const int height = std::max(1, int(std::lround(k * texture.height())));
+  const std::uint8_t grey[3] = {225, 225, 225};
+  flatten_into(texture, display_sampling(texture.width(), texture.height(), width, height), grey,
+               pixels);
+  emscripten::val out = emscripten::val::object();
+  out.set("width", width);
+  out.set("height", height);
+  out.set("pixels", emscripten::val(emscripten::typed_memory_view(pixels.size(), pixels.data())));
+  return out;
+}
+
 // The colour of compared policy or study condition `index` (palette.h policy_colour).
 emscripten::val policy_rgb(int index) { return rgb_array(policy_colour(index)); }
 
@@ -118,6 +137,9 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("seek", &WebSession::seek)
       .function("sceneProblem", &WebSession::scene_problem)
       .function("flowJson", &WebSession::flow_json)
+      .function("worldLoopJson", &WebSession::world_loop_json)
+      .function("worldFrameJson", &WebSession::world_frame_json)
+      .function("worldTexture", &oflab::world_texture)
       .function("arrows", &oflab::arrows)
       .function("streamlines", &oflab::streamlines)
       .function("basisJson", &WebSession::basis_json)

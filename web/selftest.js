@@ -80,7 +80,7 @@ function exactFrameHash() {
   return h.toString(16).padStart(8, '0');
 }
 
-// Per view (the gallery and the explorer; the charts and the comparison on the swing
+// Per view (the world view in 3D; the gallery and the explorer; the charts and the comparison on the swing
 // script; the comparison on the street scene): frames a second
 // of requestAnimationFrame over kViewFrames frames (after kViewWarmUp) stepping and drawing (paced by the
 // display), and the frames a second the page's own work per frame allows (1000 / its
@@ -89,7 +89,7 @@ const kViewFrames = 30;
 const kViewWarmUp = 5;
 async function selftestViews() {
   const views = {};
-  const cases = [['flow', { view: 'flow' }], ['basis', { view: 'basis' }],
+  const cases = [['flow', { view: 'flow' }], ['world', { view: 'world' }], ['basis', { view: 'basis' }],
     ['explorer', { view: 'basis', basis: { explorer: true } }],
     ['analysis', { view: 'analysis', script: 'swing' }],
     ['animation', { view: 'animation', script: 'swing' }],

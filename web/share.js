@@ -111,6 +111,7 @@ function fileStem() {
 
 function savePng() {
   draw();
+  if (shownView() === 'world') worldView.paintInto($('canvas').getContext('2d', { alpha: false }));
   $('canvas').toBlob((blob) => download(blob, `${fileStem()}.png`), 'image/png');
 }
 

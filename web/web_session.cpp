@@ -27,6 +27,7 @@
 #include "shown_runs.h"
 #include "state/state_fields.h"
 #include "state/window_state_file.h"
+#include "world_json.h"
 
 namespace oflab {
 namespace {
@@ -235,6 +236,22 @@ std::vector<double> WebSession::flow_arrows(const std::string& part_key, double 
     out.insert(out.end(), {p.x, p.y, sample.flow.x, sample.flow.y});
   }
   return out;
+}
+
+const PlaneWorldLoop& WebSession::world_loop() {
+  if (world_epoch_ != epoch_) {
+    world_loop_ = panel_world_loop(lab_.panel());
+    world_epoch_ = epoch_;
+  }
+  return world_loop_;
+}
+
+std::string WebSession::world_loop_json() {
+  return oflab::world_loop_json(world_loop(), lab_.panel().texture_source());
+}
+
+std::string WebSession::world_frame_json() {
+  return oflab::world_frame_json(world_loop(), lab_.panel());
 }
 
 std::vector<double> WebSession::flow_streamlines(const std::string& part_key, double spacing_px,

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "display/world_geometry.h"
 #include "engine/animator.h"
 #include "flow/plane_scene.h"
 #include "lessons/lessons.h"
@@ -105,6 +106,13 @@ class WebSession {
   std::vector<double> flow_streamlines(const std::string& part_key, double spacing_px,
                                        double duration_s, int steps) const;
 
+  // The world view (web/world_json.h): the loop of the panel's plane, built once per state
+  // (every call that may change the state rebuilds it), and the frame shown.
+  std::string world_loop_json();
+  std::string world_frame_json();
+  // The plane's texture (premultiplied RGBA, top row first), which the world view's plane shows.
+  const Image& plane_texture() const { return lab_.panel().texture(); }
+
   // The basis gallery of `basis_key` (session/basis/basis_catalog.h): per term its symbol,
   // description, order, unit, coefficient in the current flow, whether it is negligible
   // within radius_px, and its unit flow on a (2n+1)^2 grid over [-radius_px, radius_px]^2
@@ -159,6 +167,7 @@ class WebSession {
   void advance_exact_to(int frame);
   // Per panel of the frame reached: the pixels at the panel size, heat map, PSNR.
   void sample_panels(const std::vector<const Animator*>& animators, int width, int height);
+  const PlaneWorldLoop& world_loop();  // world_loop_, rebuilt when epoch_ moved
 
   Lab lab_;
   LabStage stage_{&lab_};            // lessons play on the lab, as `oflab-cli lesson` plays them
@@ -173,6 +182,8 @@ class WebSession {
   int memo_frame_ = -1;
   std::vector<const Animator*> memo_;  // shown_animators() of memo_frame_ at memo_epoch_
   std::vector<WebPanel> panels_;       // compared runs (or the source's), then the exact one
+  PlaneWorldLoop world_loop_;          // the world view's loop at world_epoch_
+  int world_epoch_ = -1;
   std::string comparison_problem_;
   int sampled_frame_ = -1;  // the frame whose pixels the panels hold, at sampled_size_
   glm::ivec2 sampled_size_{0, 0};

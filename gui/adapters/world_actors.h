@@ -1,7 +1,7 @@
 // VTK pieces of the world view (gui/views/world_view.h): actors over poly data whose points,
 // cells and pixels are replaced in place every frame, so the view builds its actors once and
 // never rebuilds them. Points are world units in the view's world frame
-// (gui/adapters/world_geometry.h).
+// (session/display/world_geometry.h).
 #pragma once
 
 #include <vtkSmartPointer.h>

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "adapters/world_geometry.h"
+#include "display/world_geometry.h"
 #include "views/world_scene.h"
 
 namespace oflab {

@@ -12,7 +12,7 @@
 #include <cstdio>
 
 #include "adapters/frame_images.h"
-#include "adapters/world_geometry.h"
+#include "display/world_geometry.h"
 #include "models/animation_model.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
@@ -165,24 +165,20 @@ void WorldScene::place_label(WorldLabelId id, const Vec3& at, const std::string&
 
 void WorldScene::load_plane(WindowModel& window) {
   const SceneModel& scene = *window.scene();
-  const MotionScript script = scene.as_script();
-  const double dt = SceneModel::kSecondsPerFrame;
-  camera = scene.scene().camera;
-  path.clear();
-  loop_corners.clear();
-  largest_velocity = largest_omega = 0.0;
-  for (const ScriptFrame& f : script.frames) {
-    path.push_back(f.pose.point);
-    for (const Vec3& c : plane_corners(f.pose)) loop_corners.push_back(c);
-    largest_velocity = std::max(largest_velocity, glm::length(eye_velocity(f.motion, f.pose)) / dt);
-    largest_omega = std::max(largest_omega, glm::length(f.motion.omega) / dt);
-  }
-  first_pose = script.frames.empty() ? scene.current_pose() : script.frames.front().pose;
+  // The loop's numbers are the teaching layer's (display/world_geometry.h), as the page's.
+  plane_loop = plane_world_loop(scene.as_script(), scene.scene().camera, scene.current_pose(),
+                                SceneModel::kSecondsPerFrame);
+  const PlaneWorldLoop& loop = plane_loop;
+  camera = loop.camera;
+  path = loop.path;
+  loop_corners = loop.loop_corners;
+  largest_velocity = loop.largest_velocity;
+  largest_omega = loop.largest_omega;
+  first_pose = loop.first_pose;
   first_view = ViewerPose{};
-  depth = plane_image_depth(path);
-  full_arrow = 0.6 * std::hypot(first_pose.size.x, first_pose.size.y);
-  world_centre = Vec3(0.0);
-  for (const Vec3& p : path) world_centre += p / double(path.size());
+  depth = loop.depth;
+  full_arrow = loop.full_arrow;
+  world_centre = loop.world_centre;
   copy_texture_pixels(scene.texture(), texture_pixels);
   exact.reset();
   problem.clear();
@@ -253,33 +249,16 @@ void WorldScene::place_viewer(const ViewerPose& pose) {
   place_label(kImageLabel, viewer_to_world(pose, corners[0]), "image plane");
 }
 
-void WorldScene::place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega_w,
-                              double arrow_scale) {
+void WorldScene::place_motion(const MotionArrows& arrows) {
+  place(this->velocity, arrows.velocity.origin, arrows.velocity.direction, arrows.velocity.length);
+  place(omega, arrows.omega.origin, arrows.omega.direction, arrows.omega.length);
   // A vector that its label would print as 0.00 is neither drawn nor labelled.
-  const bool moving = glm::length(velocity) >= kLeastShownRate;
-  const bool turning = glm::length(omega_w) >= kLeastShownRate;
-  const double lv = moving ? arrow_length(glm::length(velocity), largest_velocity, arrow_scale) : 0;
-  const double lo = turning ? arrow_length(glm::length(omega_w), largest_omega, arrow_scale) : 0;
-  // Omega turns about the eye (the theory's convention): for the plane its arrow starts
-  // there, on the axis; in a scene the eye is crowded with the frustum's labels, and both
-  // arrows start at `at`, ahead of it.
-  const Vec3 eye_w = viewer_to_world(view, Vec3(0.0));
-  const Vec3 omega_at = scene_mode ? at : eye_w;
-  place(this->velocity, at, velocity, lv);
-  place(omega, omega_at, omega_w, lo);
-  char text[96] = "";
-  if (moving) std::snprintf(text, sizeof text, "V %.2f units/s", glm::length(velocity));
-  place_label(kVelocityLabel, lv > 0 ? at + glm::normalize(velocity) * lv : at, text);
-  text[0] = 0;
-  if (turning)
-    std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye", glm::length(omega_w));
-  place_label(kOmegaLabel, lo > 0 ? omega_at + glm::normalize(omega_w) * lo : omega_at, text);
-  std::vector<Vec3> axis;
-  if (lo > 0) {
-    const double reach = 1.1 * glm::length(at - eye_w);
-    axis = {eye_w, eye_w + std::max(reach, lo) * glm::normalize(omega_w)};
-  }
-  set_polyline(omega_axis.data, axis, false);
+  const auto tip = [](const WorldArrow& a) {
+    return a.length > 0 ? a.origin + glm::normalize(a.direction) * a.length : a.origin;
+  };
+  place_label(kVelocityLabel, tip(arrows.velocity), velocity_label(arrows));
+  place_label(kOmegaLabel, tip(arrows.omega), omega_label(arrows));
+  set_polyline(omega_axis.data, arrows.omega_axis, false);
 }
 
 void WorldScene::split_path(int frame) {
@@ -297,39 +276,25 @@ void WorldScene::split_path(int frame) {
 void WorldScene::update_plane(const SceneModel& scene) {
   place_viewer(ViewerPose{});
   const PlanePose pose = scene.current_pose();
-  const RigidMotion motion = scene.current_motion();
-  const std::array<Vec3, 4> corners = plane_corners(pose);
+  // The frame's numbers are the teaching layer's (display/world_geometry.h), as the page's.
+  const PlaneWorldFrame f =
+      plane_world_frame(plane_loop, pose, scene.current_motion(), scene.frame());
   centre = pose.point;
-  set_textured_quad(plane.data, corners);
-  const std::vector<Vec3> outline(corners.begin(), corners.end());
+  set_textured_quad(plane.data, f.plane_corners);
+  const std::vector<Vec3> outline(f.plane_corners.begin(), f.plane_corners.end());
   set_polyline(plane_outline.data, outline, true);
   set_segments(rays.data, std::vector<Vec3>(4, Vec3(0.0)), outline);
-  std::vector<Vec3> images;
-  for (const Vec3& c : corners) {
-    if (c.z > 0.0) images.push_back(ray_at_depth(c, depth));
-  }
-  set_polyline(ray_images.data, images, true);
-  const PlaneAxes axes = plane_axes(pose);
-  const double side = 0.3 * std::hypot(pose.size.x, pose.size.y);
-  place(normal, pose.point, axes.normal, side);
-  place(up, pose.point, axes.up, side);
-  place_label(kNormalLabel, pose.point + axes.normal * side, "N");
-  place_label(kUpLabel, pose.point + axes.up * side, "U");
-  place_motion(pose.point, eye_velocity(motion, pose), motion.omega, full_arrow);
-  split_path(scene.frame());
+  set_polyline(ray_images.data, f.ray_images, true);
+  place(normal, f.normal.origin, f.normal.direction, f.normal.length);
+  place(up, f.up.origin, f.up.direction, f.up.length);
+  place_label(kNormalLabel, f.normal.origin + f.normal.direction * f.normal.length, "N");
+  place_label(kUpLabel, f.up.origin + f.up.direction * f.up.length, "U");
+  place_motion(f.motion);
+  split_path(f.path_index);
   if (exact)
     copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels,
                       theme.image_background);
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "The eye looks along +Z; the image plane is drawn at "
-                "depth %.2f (f = %.0f px scaled to the scene).\n"
-                "Omega turns about the eye, the viewer's origin (the theory's convention); "
-                "V is the velocity of the body point at the eye.\n"
-                "Path of the plane's centre: past thick, future thin. Rays: eye to the plane's "
-                "corners through their images.",
-                depth, camera.focal_px);
-  caption_body = text;
+  caption_body = plane_world_caption(plane_loop);
 }
 
 void WorldScene::update_scene(AnimationModel& animation) {
@@ -353,8 +318,11 @@ void WorldScene::update_scene(AnimationModel& animation) {
   if (script && frame >= 0 && frame < int(script->frames.size())) {
     const RigidMotion& motion = script->frames[size_t(frame)].motion;
     const Mat3 to_world = glm::transpose(view.rotation);
-    place_motion(viewer_to_world(view, Vec3(0.0, 0.0, 1.5 * depth)),
-                 to_world * motion.velocity / dt, to_world * motion.omega / dt, full_arrow);
+    // In a scene the eye is crowded with the frustum's labels: both arrows start ahead of it.
+    const Vec3 at = viewer_to_world(view, Vec3(0.0, 0.0, 1.5 * depth));
+    place_motion(motion_arrows(at, at, viewer_to_world(view, Vec3(0.0)),
+                               to_world * motion.velocity / dt, to_world * motion.omega / dt,
+                               largest_velocity, largest_omega, full_arrow));
   }
   split_path(frame);
   copy_frame_pixels(animator->image(), frame_pixels, theme.image_background);

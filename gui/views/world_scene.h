@@ -6,7 +6,7 @@
 // theme's colours and line widths, the labels' points and the caption (WorldTexts, painted
 // by the view), and the camera's two framings (their code in gui/views/world_camera.cpp).
 //
-// Units: world units (the viewer frame of gui/adapters/world_geometry.h for the plane, the
+// Units: world units (the viewer frame of session/display/world_geometry.h for the plane, the
 // scene's frame for a scene source); speeds per second (SceneModel::kSecondsPerFrame per
 // frame); canvas pixels for to_canvas.
 #pragma once
@@ -36,6 +36,7 @@
 #include "adapters/view_theme.h"
 #include "adapters/world_actors.h"
 #include "display/palette.h"
+#include "display/world_geometry.h"
 #include "flow/camera.h"
 #include "flow/geometry.h"
 #include "scene/viewer_script.h"
@@ -91,7 +92,8 @@ struct WorldScene {
   // What the source gives for every frame (rebuilt when the source changes).
   bool source_dirty = true;
   bool scene_mode = false;
-  std::vector<Vec3> path;  // plane centres, or the viewer's eye, per frame, world units
+  PlaneWorldLoop plane_loop;  // the plane's loop (display/world_geometry.h), set by load_plane
+  std::vector<Vec3> path;     // plane centres, or the viewer's eye, per frame, world units
   // The plane's corners at every frame of the loop (empty for a scene), world units: what
   // the orbit camera frames.
   std::vector<Vec3> loop_corners;
@@ -127,12 +129,9 @@ struct WorldScene {
   void update_scene(AnimationModel& animation);
   // The eye, frustum, image plane and their labels at the viewer pose `pose`.
   void place_viewer(const ViewerPose& pose);
-  // The V arrow at `at` and the Omega arrow at the eye (at `at` too in a scene; per second),
-  // scaled by the loop's
-  // largest speeds; a vector shorter than kLeastShownRate (which its label would print as
-  // 0.00) is neither drawn nor labelled.
-  static constexpr double kLeastShownRate = 0.005;
-  void place_motion(const Vec3& at, const Vec3& velocity, const Vec3& omega, double arrow_scale);
+  // The V and Omega arrows and Omega's axis as `arrows` (display/world_geometry.h) place
+  // them, with their labels (none for an arrow not drawn).
+  void place_motion(const MotionArrows& arrows);
   // The path up to `frame` (past) and from it (future).
   void split_path(int frame);
   // Shows the parts `shown` asks for that the mode (plane or scene) has.

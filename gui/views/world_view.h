@@ -3,7 +3,7 @@
 // plain widget shows, with its labels and caption painted over it by Qt.
 //
 // For the scene panel's plane (and any single-plane source) the world is the viewer frame
-// (gui/adapters/world_geometry.h): the eye at the origin and the camera's frustum out to the
+// (session/display/world_geometry.h): the eye at the origin and the camera's frustum out to the
 // image plane (drawn at half the plane's nearest depth, d / f world units per pixel) showing
 // the exact frame (the window model's exact renderer, gui/adapters/exact_frames.h); the
 // textured plane at its pose with its up U and normal N; V (the velocity of the body point at
@@ -92,6 +92,9 @@ class WorldView : public ViewPage {
   Vec3 drawn_centre() const;
   // The depth of the image plane, world units, as of the last update.
   double image_depth() const;
+  // The VTK scene as last updated (tests compare its actors' points and matrices with the
+  // teaching layer's world, session/display/world_geometry.h).
+  const WorldScene& drawn_scene() const { return *world_; }
 
   // The texts the last picture painted (labels, caption, legend) with their boxes, canvas
   // pixels, and what is wrong with them (text_problems of gui/adapters/painted_text.h:

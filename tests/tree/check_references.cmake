@@ -5,7 +5,8 @@
 # Scans the C++ files (.h, .cpp), the CMake files (CMakeLists.txt, .cmake, .cmake.in), the
 # shell scripts (.sh and the scripts of .ci/) and the Markdown pages of the tree. Build
 # folders (build*, out*), .git and tests/tree/fixtures (trees of their own, each checked by
-# its own test) are left out. Reported, each as "file:line: 'name' is not in the repository":
+# its own test) and web/node_modules (the npm packages tools/build-web.sh installs there,
+# ignored by git) are left out. Reported, each as "file:line: 'name' is not in the repository":
 #   - a Markdown link [text](path) in a .md file whose relative path does not resolve from
 #     the page's folder (web addresses and in-page anchors are not checked);
 #   - the name of a Markdown page (a word ending in .md, in code, comments or prose) that
@@ -30,8 +31,8 @@ set(generated report.md)
 set(outside_places shared reference seed)
 list(JOIN outside_places "|" places)
 
-# Every file of the tree below ROOT, relative to it, without build folders, .git and the
-# fixture trees.
+# Every file of the tree below ROOT, relative to it, without build folders, .git, the
+# fixture trees and the installed npm packages.
 file(GLOB top RELATIVE "${ROOT}" "${ROOT}/*" "${ROOT}/.*")
 set(all_files "")
 foreach(entry IN LISTS top)
@@ -40,7 +41,7 @@ foreach(entry IN LISTS top)
   endif()
   if(IS_DIRECTORY "${ROOT}/${entry}")
     file(GLOB_RECURSE below RELATIVE "${ROOT}" "${ROOT}/${entry}/*")
-    list(FILTER below EXCLUDE REGEX "^tests/tree/fixtures/")
+    list(FILTER below EXCLUDE REGEX "^(tests/tree/fixtures|web/node_modules)/")
     list(APPEND all_files ${below})
   else()
     list(APPEND all_files "${entry}")

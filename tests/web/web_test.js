@@ -15,13 +15,16 @@
 //   within 30 dB PSNR of its baseline (tests/web/baselines/); the flow view's screenshot is
 //   not within 30 dB of the gallery's baseline, and a blank image is found blank (negative
 //   controls). A failing screenshot is written to --out.
+// - The world view (vtk.js): its numbers are the teaching layer's as the flow view sees them
+//   (a moved corner is caught), playing keeps its actors, a drag turns it, and the world
+//   lesson shows it beside the flow view.
 // - The basis explorer's planes and motions are `oflab-cli explain`'s for its coefficients.
 // - Every step of every shipped lesson shows the state and frame `oflab-cli lesson state`
 //   gives (--cli, default build/analysis/oflab-cli); a changed frame is caught.
 // - The threshold study: the page's loop with a simulated observer writes the CSV of
 //   `oflab-cli study session` (same study, method, seed), another seed does not, a broken
 //   study file is refused naming the file and the field.
-// - --bench: the flow view and the comparison played frame by frame for 300 frames, paced
+// - --bench: the flow view, the world view and the comparison played frame by frame for 300 frames, paced
 //   at 60 Hz and unpaced; prints the frames per second of requestAnimationFrame (speed is
 //   reported, not tested).
 if (typeof WebSocket === 'undefined') {
@@ -62,7 +65,9 @@ function check(name, ok, detail) {
 async function launchChromium(extraFlags = []) {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'oflab-web-chromium-'));
   const child = spawn(option('--chromium', '/usr/bin/chromium'), ['--headless=new', '--no-sandbox',
-    '--disable-gpu', '--no-first-run', '--remote-debugging-port=0', `--user-data-dir=${profile}`,
+    // WebGL (the world view's vtk.js) on SwiftShader's software GL, which Chromium gives a
+    // page without a GPU only when asked.
+    '--disable-gpu', '--enable-unsafe-swiftshader', '--no-first-run', '--remote-debugging-port=0', `--user-data-dir=${profile}`,
     `--window-size=${kWidth},${kHeight}`, ...extraFlags, 'about:blank'], { stdio: ['ignore', 'ignore', 'pipe'] });
   const url = await new Promise((resolve, reject) => {
     let text = '';
@@ -193,7 +198,7 @@ async function testSelftest(browser) {
   check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 18 && parts >= 51 && lessonDiffer.length === 0,
     `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
   const views = Object.entries(result.views || {});
-  check('SelftestReportsViewsAndTimeToInteractive', views.length === 6 && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
+  check('SelftestReportsViewsAndTimeToInteractive', views.length === 7 && 'world' in result.views && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
     result.time_to_interactive_ms > 0, `interactive after ${result.time_to_interactive_ms} ms; ` +
     views.map(([n, v]) => `${n} ${v.paced_fps.toFixed(1)} paced, ${v.unpaced_fps.toFixed(0)} unpaced fps`).join(', '));
 }
@@ -326,6 +331,10 @@ async function testStudyTrial(browser) {
 const drawnMarker = "Number(document.body.dataset.drawn || 0) > 0";
 const shots = [
   ['flow', '?view=flow&frame=20'],
+  // The world view in 3D (vtk.js on WebGL), and the world lesson's cause beside its effect.
+  ['world', '?view=world&frame=20'],
+  ['world-1366', '?view=world&frame=20', [1366, 768]],
+  ['world-lesson', '?lesson=where-the-flow-comes-from'],
   ['flow-presentation', '?view=flow&frame=60&presentation'],
   ['basis', '?view=basis&frame=20'],
   ['comparison', '?view=animation&script=swing&frame=40'],
@@ -411,6 +420,11 @@ async function testScreenshots(browser) {
     const db = psnr(images.flow, decodePng(fs.readFileSync(basis), basis));
     check('NegativeControl_FlowScreenshotDoesNotMatchTheGalleryBaseline', db < kMinPsnrDb, `${db.toFixed(1)} dB`);
   }
+  const flow = path.join(baselines, 'flow.png');
+  if (fs.existsSync(flow)) {
+    const db = psnr(images.world, decodePng(fs.readFileSync(flow), flow));
+    check('NegativeControl_WorldScreenshotDoesNotMatchTheFlowBaseline', db < kMinPsnrDb, `${db.toFixed(1)} dB`);
+  }
   if (fs.existsSync(basis)) {
     const db = psnr(images.explorer, decodePng(fs.readFileSync(basis), basis));
     check('NegativeControl_ExplorerScreenshotDoesNotMatchTheGalleryBaseline', db < kMinPsnrDb, `${db.toFixed(1)} dB`);
@@ -421,6 +435,79 @@ async function testScreenshots(browser) {
   await open(browser, '?script=no-such-script', "document.getElementById('message').hidden === false && " + drawnMarker);
   const message = await evaluate(browser, "document.getElementById('message').textContent");
   check('AnUnknownScriptGivesAMessageOnThePage', /no-such-script/.test(message), message);
+}
+
+// --- The world view ----------------------------------------------------------------------
+// Problems of the page's world numbers against the flow view's (both from the teaching
+// layer; computed independently here): each plane corner seen through the camera lands on the
+// flow view's outline, each ray image lies on the image plane and on its corner's ray, each
+// arrow's matrix takes the unit arrow's tip to origin + length along the direction.
+function worldProblems(loop, frame, flow) {
+  const problems = [];
+  const c = loop.camera;
+  const near = (a, b, tol) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
+  frame.plane_corners.forEach(([x, y, z], k) => {
+    const [px, py] = [c.focal_px * x / z + c.cx, c.focal_px * y / z + c.cy];
+    if (!near(px, flow.outline[k][0], 1e-9) || !near(py, flow.outline[k][1], 1e-9)) problems.push(`corner ${k} at ${px}, ${py}, the flow's ${flow.outline[k]}`);
+    const r = frame.ray_images[k];
+    if (!near(r[2], loop.depth, 1e-12) || !near(r[0] * z, x * r[2], 1e-9) || !near(r[1] * z, y * r[2], 1e-9)) problems.push(`ray image ${k} ${r}`);
+  });
+  for (const [name, a] of Object.entries(frame.arrows)) {
+    const m = a.matrix;
+    const norm = Math.hypot(...a.direction);
+    for (let i = 0; i < 3; ++i) {
+      const tip = m[4 * i] + m[4 * i + 3];
+      const expected = a.origin[i] + (norm > 0 ? a.length * a.direction[i] / norm : 0);
+      if (!near(tip, expected, 1e-9)) { problems.push(`${name} tip ${i}: ${tip}, expected ${expected}`); break; }
+    }
+  }
+  return problems;
+}
+
+async function testWorld(browser) {
+  await open(browser, '?view=world&frame=20', drawnMarker);
+  const got = JSON.parse(await evaluate(browser, `JSON.stringify({ loop: JSON.parse(app.session.worldLoopJson()),
+    frame: JSON.parse(app.session.worldFrameJson()), flow: JSON.parse(app.session.flowJson()), state: app.state,
+    view: document.body.dataset.view, actors: worldView.world.renderer.getActors().length })`));
+  const problems = worldProblems(got.loop, got.frame, got.flow);
+  check('WorldNumbersAreTheTeachingLayersAsTheFlowViewSeesThem', problems.length === 0 && got.frame.frame === 20 && got.view === 'world',
+    `${got.actors} actors, depth ${got.loop.depth.toFixed(3)}, ${got.loop.path.length} path points${problems.length ? `; ${problems.slice(0, 3).join('; ')}` : ''}`);
+  // Negative control: a corner moved by 1e-6 of a unit is caught.
+  const moved = JSON.parse(JSON.stringify(got.frame));
+  moved.plane_corners[2][0] += 1e-6;
+  check('NegativeControl_AMovedWorldCornerIsCaught', worldProblems(got.loop, moved, got.flow).length > 0);
+  // The plane's own motion at frame 20 is the state's (screw: V is the state's velocity).
+  const same = (a, b) => a.every((v, i) => Math.abs(v - b[i]) <= 1e-12);
+  check('WorldVAndOmegaAreTheStatesMotion', same(got.frame.velocity, got.state.plane.motion.velocity) && same(got.frame.omega, got.state.plane.motion.omega),
+    `V ${got.frame.velocity}, Omega ${got.frame.omega}`);
+  // Playing moves the actors' points and matrices, never makes an actor anew; a drag turns
+  // the camera (vtk.js's trackball).
+  const played = JSON.parse(await evaluate(browser, `(async () => {
+    const before = worldView.world.renderer.getActors().slice();
+    const corner = JSON.stringify(worldView.frame.plane_corners);
+    for (let k = 0; k < 10; ++k) { seek(app.state.frame + 1); draw(); }
+    const after = worldView.world.renderer.getActors();
+    return JSON.stringify({ same: after.length === before.length && after.every((a, i) => a === before[i]),
+      moved: JSON.stringify(worldView.frame.plane_corners) !== corner, renders: worldView.world.renders,
+      camera: worldView.world.renderer.getActiveCamera().getPosition() });
+  })()`));
+  const box = JSON.parse(await evaluate(browser, "JSON.stringify(document.getElementById('world').getBoundingClientRect())"));
+  const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+  await browser.tab('Input.dispatchMouseEvent', { type: 'mousePressed', x, y, button: 'left', buttons: 1, clickCount: 1 });
+  for (let k = 1; k <= 5; ++k) await browser.tab('Input.dispatchMouseEvent', { type: 'mouseMoved', x: x + 20 * k, y: y + 8 * k, button: 'left', buttons: 1 });
+  await browser.tab('Input.dispatchMouseEvent', { type: 'mouseReleased', x: x + 100, y: y + 40, button: 'left', buttons: 0, clickCount: 1 });
+  const turned = JSON.parse(await evaluate(browser, 'JSON.stringify(worldView.world.renderer.getActiveCamera().getPosition())'));
+  const dragged = Math.hypot(...turned.map((v, i) => v - played.camera[i]));
+  check('WorldPlaysWithTheSameActorsAndTheMouseTurnsIt', played.same && played.moved && dragged > 1e-3,
+    `actors kept ${played.same}, plane moved ${played.moved}, camera moved ${dragged.toFixed(3)} by a drag`);
+  // The world lesson shows the world view (beside the flow), without the line of a view the
+  // page lacks.
+  await open(browser, '?lesson=where-the-flow-comes-from', drawnMarker);
+  const lesson = JSON.parse(await evaluate(browser, `JSON.stringify({ view: document.body.dataset.view,
+    split: document.body.classList.contains('cause-and-effect'), width: document.getElementById('world').getBoundingClientRect().width,
+    stage: document.getElementById('stage').getBoundingClientRect().width })`));
+  check('TheWorldLessonShowsTheWorldViewBesideTheFlow', lesson.view === 'world' && lesson.split && Math.abs(lesson.width - lesson.stage / 2) < 2,
+    JSON.stringify(lesson));
 }
 
 // --- Controls ----------------------------------------------------------------------------
@@ -718,8 +805,8 @@ async function testLinks(browser) {
 // vsync off), which shows how many frames a second the page can make.
 const kUnpacedFlags = ['--disable-gpu-vsync', '--disable-frame-rate-limit'];
 async function benchViews(browser, pace) {
-  for (const view of ['flow', 'animation']) {
-    const query = view === 'animation' ? '?bench=animation&script=swing' : '?bench=flow';
+  for (const view of ['flow', 'world', 'animation']) {
+    const query = view === 'animation' ? '?bench=animation&script=swing' : `?bench=${view}`;
     await open(browser, query, doneMarker('bench'), 300);
     const r = JSON.parse(await evaluate(browser, "document.getElementById('bench').textContent"));
     console.log(`bench ${view} (${pace}): ${r.fps.toFixed(1)} fps over ${r.frames} frames (frame time median ${r.median_ms.toFixed(1)} ms, ` +
@@ -752,6 +839,7 @@ async function bench(browser) {
     } else {
       await testSelftest(browser);
       await testScreenshots(browser);
+      await testWorld(browser);
       await testControls(browser);
       await testExplorer(browser);
       await testLessonStates(browser);

@@ -1,5 +1,6 @@
-// The world view (gui/views/world_view.h) and its geometry (gui/adapters/world_geometry.h):
-// the geometry against core's own projection and poses, the picture at 1920 x 1080 in both
+// The world view (gui/views/world_view.h): its actors hold the teaching layer's geometry
+// (session/display/world_geometry.h, tested in tests/session/display/world_geometry_test.cpp)
+// to the bit, the picture at 1920 x 1080 in both
 // looks against baselines (with controls: a picture without the arrows and the frustum is
 // rejected, and each part hidden on its own changes the picture), frames that move the
 // plane without making a single actor anew, texts that neither overlap nor are cut (both
@@ -10,6 +11,7 @@
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -17,109 +19,17 @@
 #include <cmath>
 #include <set>
 
-#include "adapters/world_geometry.h"
 #include "app/view_table.h"
 #include "flow/plane_scene.h"
 #include "image_checks.h"
 #include "models/scene_model.h"
 #include "views/image_canvas.h"
+#include "views/world_scene.h"
 #include "views/world_texts.h"
 #include "window_fixture.h"
 
 namespace oflab::test {
 namespace {
-
-// Pixel of a point on the image plane, read off the drawn rectangle's corners by linear
-// interpolation (independent of the formula that placed them).
-Vec2 pixel_on_image_plane(const std::array<Vec3, 4>& corners, const Camera& camera,
-                          const Vec3& point) {
-  const double u = (point.x - corners[0].x) / (corners[1].x - corners[0].x);
-  const double v = (point.y - corners[0].y) / (corners[3].y - corners[0].y);
-  return {u * camera.width, v * camera.height};
-}
-
-TEST(WorldGeometry, ImagePlaneCornersProjectToThePixelCorners) {
-  const Camera camera{600.0, 380.0, 310.0, 800, 600};
-  const std::array<Vec3, 4> corners = image_plane_corners(camera, 0.7);
-  const Vec2 expected[4] = {{0, 0}, {800, 0}, {800, 600}, {0, 600}};
-  for (int k = 0; k < 4; ++k) {
-    EXPECT_NEAR(corners[size_t(k)].z, 0.7, 1e-15);
-    const Vec2 pixel = centred_to_pixel(camera, project_centred(camera, corners[size_t(k)]));
-    EXPECT_NEAR(pixel.x, expected[k].x, 1e-9) << k;
-    EXPECT_NEAR(pixel.y, expected[k].y, 1e-9) << k;
-  }
-}
-
-TEST(WorldGeometry, RaysCrossTheImagePlaneAtThePlaneCornersPixels) {
-  const PlaneScene scene = default_demo_scene();
-  const double depth = 0.9;
-  const std::array<Vec3, 4> image = image_plane_corners(scene.camera, depth);
-  for (const Vec3& corner : plane_corners(scene.pose)) {
-    const Vec3 crossing = ray_at_depth(corner, depth);
-    EXPECT_NEAR(crossing.z, depth, 1e-15);
-    // On the ray: parallel to the corner.
-    EXPECT_NEAR(glm::length(glm::cross(crossing, corner)), 0.0, 1e-12);
-    const Vec2 drawn = pixel_on_image_plane(image, scene.camera, crossing);
-    const Vec2 seen = centred_to_pixel(scene.camera, project_centred(scene.camera, corner));
-    EXPECT_NEAR(drawn.x, seen.x, 1e-9);
-    EXPECT_NEAR(drawn.y, seen.y, 1e-9);
-  }
-}
-
-TEST(WorldGeometry, ImageDepthsSitBetweenTheEyeAndTheScene) {
-  EXPECT_DOUBLE_EQ(plane_image_depth({{0, 0, 3}, {1, 0, 2}, {0, 1, 5}}), 1.0);
-  EXPECT_DOUBLE_EQ(plane_image_depth({}), 1.0);
-  // A plane flying into the eye (depth 2 down to 0.02): half the nearest would be 0.01, a
-  // point; a quarter of the median depth (the 51st of 100, 1.02) holds instead.
-  std::vector<Vec3> approach;
-  for (int k = 0; k <= 99; ++k) approach.push_back({0, 0, 2.0 - 0.02 * k});
-  EXPECT_NEAR(plane_image_depth(approach), 0.25 * 1.02, 1e-12);
-  EXPECT_DOUBLE_EQ(scene_image_depth({{0, 0, 0}, {3, 4, 0}}), 0.5);
-  EXPECT_DOUBLE_EQ(scene_image_depth({{1, 1, 1}}), 1.0);
-}
-
-TEST(WorldGeometry, ArrowLengthsStayReadableAndOrdered) {
-  EXPECT_EQ(arrow_length(0.0, 2.0, 1.0), 0.0);
-  EXPECT_DOUBLE_EQ(arrow_length(2.0, 2.0, 1.0), 1.0);
-  EXPECT_DOUBLE_EQ(arrow_length(1e-6, 2.0, 1.0), 0.35 + 0.65 * 5e-7);
-  EXPECT_LT(arrow_length(0.5, 2.0, 1.0), arrow_length(1.0, 2.0, 1.0));
-  EXPECT_DOUBLE_EQ(arrow_length(5.0, 2.0, 1.0), 1.0);  // beyond the largest: clamped
-}
-
-Vec3 transform_point(const std::array<double, 16>& m, const Vec3& p) {
-  Vec3 out;
-  for (int r = 0; r < 3; ++r) {
-    out[r] = m[size_t(4 * r)] * p.x + m[size_t(4 * r + 1)] * p.y + m[size_t(4 * r + 2)] * p.z +
-             m[size_t(4 * r + 3)];
-  }
-  return out;
-}
-
-TEST(WorldGeometry, ArrowMatrixMapsTheUnitArrowOntoTheVector) {
-  const Vec3 origin(0.2, -0.1, 2.0), direction(-0.7, 0.7, 0.1);
-  const std::array<double, 16> m = arrow_matrix(origin, direction, 0.4);
-  const Vec3 tail = transform_point(m, Vec3(0.0)), tip = transform_point(m, Vec3(1, 0, 0));
-  EXPECT_NEAR(glm::length(tail - origin), 0.0, 1e-15);
-  EXPECT_NEAR(glm::length(tip - (origin + 0.4 * glm::normalize(direction))), 0.0, 1e-12);
-  const Vec3 y = transform_point(m, Vec3(0, 1, 0)) - origin,
-             z = transform_point(m, Vec3(0, 0, 1)) - origin;
-  EXPECT_NEAR(glm::dot(y, tip - origin), 0.0, 1e-12);  // round: a uniform, rigid scale
-  EXPECT_NEAR(glm::dot(z, y), 0.0, 1e-12);
-  EXPECT_NEAR(glm::length(y), 0.4, 1e-12);
-  EXPECT_NEAR(glm::dot(glm::cross(tip - origin, y), z), 0.4 * 0.4 * 0.4, 1e-12);  // proper
-  const std::array<double, 16> none = arrow_matrix(origin, Vec3(0.0), 0.4);
-  EXPECT_NEAR(glm::length(transform_point(none, Vec3(1, 1, 1)) - origin), 0.0, 1e-15);
-}
-
-TEST(WorldGeometry, ViewerToWorldUndoesTheViewerPose) {
-  const ViewerPose pose = look_at(Vec3(1.0, 2.0, -3.0), Vec3(0.5, 0.0, 1.0), Vec3(0, 1, 0));
-  const Vec3 world(0.3, -1.2, 4.5);
-  const Vec3 viewer = pose.rotation * world + pose.translation;
-  EXPECT_NEAR(glm::length(viewer_to_world(pose, viewer) - world), 0.0, 1e-12);
-  EXPECT_NEAR(glm::length(transform_point(viewer_to_world_matrix(pose), viewer) - world), 0.0,
-              1e-12);
-  EXPECT_NEAR(glm::length(viewer_to_world(pose, Vec3(0.0)) - Vec3(1.0, 2.0, -3.0)), 0.0, 1e-12);
-}
 
 class WorldViewTest : public WindowTest {
  protected:
@@ -234,6 +144,41 @@ TEST_F(WorldViewTest, SteppingMovesThePlaneWithoutMakingActorsAnew) {
   EXPECT_NEAR(glm::length(world().drawn_centre() - scene->current_pose().point), 0.0, 1e-12);
   EXPECT_GT(changed_fraction(first, world().render_image()), 0.002);
   EXPECT_EQ(props(), before);  // the same objects: nothing was made anew
+}
+
+// The desktop draws the teaching layer's plane world (session/display/world_geometry.h), the
+// numbers the page's world view draws (web/world_json.h): the plane's points and the arrows'
+// matrices of frame 40 are plane_world_frame's, computed here from the scene model.
+TEST_F(WorldViewTest, ActorsHoldTheTeachingLayersPlaneWorld) {
+  show_world(false);
+  SceneModel* scene = window().model()->scene();
+  scene->set_frame(40);
+  QApplication::processEvents();
+  world().render_image();
+  const PlaneWorldLoop loop = plane_world_loop(scene->as_script(), scene->scene().camera,
+                                               scene->current_pose(), SceneModel::kSecondsPerFrame);
+  const PlaneWorldFrame f =
+      plane_world_frame(loop, scene->current_pose(), scene->current_motion(), scene->frame());
+  const WorldScene& drawn = world().drawn_scene();
+  EXPECT_EQ(drawn.depth, loop.depth);
+  vtkPoints* corners = drawn.plane.data->GetPoints();
+  ASSERT_EQ(corners->GetNumberOfPoints(), 4);
+  for (int k = 0; k < 4; ++k) {  // VTK keeps points as floats
+    const double* p = corners->GetPoint(k);
+    const Vec3 expected = f.plane_corners[size_t(k)];
+    EXPECT_NEAR(glm::length(Vec3(p[0], p[1], p[2]) - expected), 0.0, 1e-6 * glm::length(expected));
+  }
+  const std::pair<const WorldScene::Arrow*, WorldArrow> arrows[] = {
+      {&drawn.velocity, f.motion.velocity},
+      {&drawn.omega, f.motion.omega},
+      {&drawn.normal, f.normal},
+      {&drawn.up, f.up}};
+  for (const auto& [arrow, expected] : arrows) {
+    const std::array<double, 16> m = arrow_matrix(expected);
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(arrow->matrix->GetElement(i / 4, i % 4), m[size_t(i)]);
+  }
+  EXPECT_GT(f.motion.velocity.length, 0.0);  // the demo moves and turns: both are drawn
+  EXPECT_GT(f.motion.omega.length, 0.0);
 }
 
 TEST_F(WorldViewTest, ASceneSourceShowsItsPolygonsWithTheSameActors) {

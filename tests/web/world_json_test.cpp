@@ -1,0 +1,98 @@
+// The page's world view numbers (web/world_json.h) are the teaching layer's plane world
+// (session/display/world_geometry.h), the one the desktop's world view draws, to the bit:
+// the loop and the frame of a panel playing a script, read back from the JSON.
+#include "world_json.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace oflab::test {
+namespace {
+
+using json = nlohmann::json;
+
+void expect_point(const json& p, const Vec3& expected, const std::string& what) {
+  ASSERT_EQ(p.size(), 3u) << what;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(p[size_t(i)].get<double>(), expected[i]) << what << " " << i;
+}
+
+// A panel playing a plane that drifts, turns and comes nearer over 20 frames.
+PlanePanel drifting_panel(int frame) {
+  PlanePanel panel(Image(64, 48, Pixel{200, 100, 50, 255}));
+  MotionScript script;
+  script.camera = panel.scene().camera;
+  PlanePose pose = panel.scene().pose;
+  for (int k = 0; k < 20; ++k) {
+    RigidMotion motion;
+    motion.velocity = Vec3(0.004, -0.002 * k, -0.01);
+    motion.omega = Vec3(0.001 * k, 0.0, 0.02);
+    script.frames.push_back({pose, motion});
+    pose.point += Vec3(0.004, -0.002 * k, -0.01);
+  }
+  EXPECT_EQ(panel.set_script(script, "drift"), "");
+  panel.set_frame(frame);
+  return panel;
+}
+
+TEST(WorldJson, LoopIsTheTeachingLayersPlaneLoop) {
+  const PlanePanel panel = drifting_panel(7);
+  const PlaneWorldLoop loop = panel_world_loop(panel);
+  const PlaneWorldLoop expected = plane_world_loop(
+      panel.as_script(), panel.scene().camera, panel.current_pose(), PlanePanel::kSecondsPerFrame);
+  const json out = json::parse(world_loop_json(loop, ""));
+  EXPECT_EQ(out["depth"].get<double>(), expected.depth);
+  EXPECT_EQ(out["full_arrow"].get<double>(), expected.full_arrow);
+  EXPECT_EQ(out["largest_velocity"].get<double>(), expected.largest_velocity);
+  ASSERT_EQ(out["path"].size(), expected.path.size());
+  for (size_t k = 0; k < expected.path.size(); ++k)
+    expect_point(out["path"][k], expected.path[k], "path");
+  const std::array<Vec3, 4> image = image_plane_corners(expected.camera, expected.depth);
+  for (size_t k = 0; k < 4; ++k) expect_point(out["image_corners"][k], image[k], "image corner");
+  EXPECT_EQ(out["caption"].get<std::string>(), plane_world_caption(expected));
+  // Every corner of the loop lies inside the bounds.
+  const json& b = out["bounds"];
+  for (const Vec3& c : expected.loop_corners) {
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_LE(b[size_t(2 * i)].get<double>(), c[i]);
+      EXPECT_GE(b[size_t(2 * i + 1)].get<double>(), c[i]);
+    }
+  }
+}
+
+TEST(WorldJson, FrameIsTheTeachingLayersPlaneFrame) {
+  const PlanePanel panel = drifting_panel(7);
+  const PlaneWorldLoop loop = panel_world_loop(panel);
+  const PlaneWorldFrame f =
+      plane_world_frame(loop, panel.current_pose(), panel.current_motion(), panel.frame());
+  const json out = json::parse(world_frame_json(loop, panel));
+  EXPECT_EQ(out["frame"].get<int>(), 7);
+  EXPECT_EQ(out["path_index"].get<int>(), 7);
+  for (size_t k = 0; k < 4; ++k)
+    expect_point(out["plane_corners"][k], f.plane_corners[k], "corner");
+  ASSERT_EQ(out["ray_images"].size(), f.ray_images.size());
+  for (size_t k = 0; k < f.ray_images.size(); ++k)
+    expect_point(out["ray_images"][k], f.ray_images[k], "ray image");
+  expect_point(out["velocity"], f.velocity, "V");
+  expect_point(out["omega"], f.omega, "Omega");
+  const std::pair<const char*, WorldArrow> arrows[] = {{"velocity", f.motion.velocity},
+                                                       {"omega", f.motion.omega},
+                                                       {"normal", f.normal},
+                                                       {"up", f.up}};
+  for (const auto& [name, arrow] : arrows) {
+    const std::array<double, 16> m = arrow_matrix(arrow);
+    const json& got = out["arrows"][name]["matrix"];
+    ASSERT_EQ(got.size(), 16u) << name;
+    for (size_t i = 0; i < 16; ++i) EXPECT_EQ(got[i].get<double>(), m[i]) << name << " " << i;
+    EXPECT_EQ(out["arrows"][name]["length"].get<double>(), arrow.length) << name;
+  }
+  EXPECT_GT(f.motion.velocity.length, 0.0);  // the script moves: both arrows are drawn
+  EXPECT_GT(f.motion.omega.length, 0.0);
+  // The control: another frame's numbers differ.
+  const json other = json::parse(world_frame_json(loop, drifting_panel(12)));
+  EXPECT_NE(other["plane_corners"], out["plane_corners"]);
+}
+
+}  // namespace
+}  // namespace oflab::test

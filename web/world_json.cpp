@@ -1,0 +1,109 @@
+#include "world_json.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "display/palette.h"
+
+namespace oflab {
+namespace {
+
+using json = nlohmann::json;
+
+json vec_json(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
+
+template <typename Points>
+json points_json(const Points& points) {
+  json out = json::array();
+  for (const Vec3& p : points) out.push_back(vec_json(p));
+  return out;
+}
+
+json rgb_json(const Rgb8& c) { return json::array({int(c.r), int(c.g), int(c.b)}); }
+
+json arrow_json(const WorldArrow& a) {
+  return {{"origin", vec_json(a.origin)},
+          {"direction", vec_json(a.direction)},
+          {"length", a.length},
+          {"matrix", arrow_matrix(a)}};
+}
+
+Vec3 tip(const WorldArrow& a) {
+  return a.length > 0.0 ? a.origin + glm::normalize(a.direction) * a.length : a.origin;
+}
+
+json label_json(const std::string& key, const std::string& text, const Vec3& at) {
+  return {{"key", key}, {"text", text}, {"at", vec_json(at)}};
+}
+
+}  // namespace
+
+PlaneWorldLoop panel_world_loop(const PlanePanel& panel) {
+  return plane_world_loop(panel.as_script(), panel.scene().camera, panel.current_pose(),
+                          PlanePanel::kSecondsPerFrame);
+}
+
+std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& texture_source) {
+  const Camera& c = loop.camera;
+  const std::array<Vec3, 4> image = image_plane_corners(c, loop.depth);
+  Vec3 lo(0.0), hi(0.0);  // the eye
+  for (const auto* points : {&loop.loop_corners, &loop.path}) {
+    for (const Vec3& p : *points) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
+  for (const Vec3& p : image) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  json out;
+  out["camera"] = {{"width", c.width},
+                   {"height", c.height},
+                   {"focal_px", c.focal_px},
+                   {"cx", c.cx},
+                   {"cy", c.cy}};
+  out["depth"] = loop.depth;
+  out["full_arrow"] = loop.full_arrow;
+  out["largest_velocity"] = loop.largest_velocity;
+  out["largest_omega"] = loop.largest_omega;
+  out["image_corners"] = points_json(image);
+  out["path"] = points_json(loop.path);
+  out["world_centre"] = vec_json(loop.world_centre);
+  out["bounds"] = {lo.x, hi.x, lo.y, hi.y, lo.z, hi.z};
+  out["caption"] = plane_world_caption(loop);
+  out["texture"] = texture_source;
+  namespace oi = okabe_ito;
+  out["colours"] = {
+      {"velocity", rgb_json(oi::kVermillion)}, {"omega", rgb_json(oi::kReddishPurple)},
+      {"normal", rgb_json(oi::kBlue)},         {"up", rgb_json(oi::kBluishGreen)},
+      {"rays", rgb_json(oi::kYellow)},         {"path_past", rgb_json(oi::kOrange)},
+      {"plane", rgb_json(Rgb8{225, 225, 225})}};
+  return out.dump();
+}
+
+std::string world_frame_json(const PlaneWorldLoop& loop, const PlanePanel& panel) {
+  const PlaneWorldFrame f =
+      plane_world_frame(loop, panel.current_pose(), panel.current_motion(), panel.frame());
+  json out;
+  out["frame"] = panel.frame();
+  out["plane_corners"] = points_json(f.plane_corners);
+  out["ray_images"] = points_json(f.ray_images);
+  out["omega_axis"] = points_json(f.motion.omega_axis);
+  out["velocity"] = vec_json(f.velocity);
+  out["omega"] = vec_json(f.omega);
+  out["path_index"] = f.path_index;
+  out["arrows"] = {{"velocity", arrow_json(f.motion.velocity)},
+                   {"omega", arrow_json(f.motion.omega)},
+                   {"normal", arrow_json(f.normal)},
+                   {"up", arrow_json(f.up)}};
+  out["labels"] = {label_json("eye", "eye", Vec3(0.0)),
+                   label_json("image_plane", "image plane", f.image_corners[0]),
+                   label_json("velocity", velocity_label(f.motion), tip(f.motion.velocity)),
+                   label_json("omega", omega_label(f.motion), tip(f.motion.omega)),
+                   label_json("normal", "N", tip(f.normal)),
+                   label_json("up", "U", tip(f.up))};
+  return out.dump();
+}
+
+}  // namespace oflab

@@ -1,0 +1,33 @@
+// The page's world view in numbers (web/world_view.js draws them with vtk.js): the teaching
+// layer's plane world (session/display/world_geometry.h), the one the desktop's world view
+// draws, as JSON. Plain C++ (no emscripten), so tests/web checks it natively.
+//
+// Frames and units: the viewer frame of core/flow/camera.h (the eye at the origin, looking
+// along +Z, X right, Y down), world units; speeds per second; matrices row-major 4x4 mapping
+// the unit arrow from (0,0,0) to (1,0,0) onto the arrow (world_geometry.h arrow_matrix).
+#pragma once
+
+#include <string>
+
+#include "display/world_geometry.h"
+#include "player/plane_panel.h"
+
+namespace oflab {
+
+// The loop of the panel's plane (plane_world_loop of its script, PlanePanel::kSecondsPerFrame
+// apart): {"camera": {width, height, focal_px, cx, cy}, "depth", "full_arrow",
+// "largest_velocity", "largest_omega", "image_corners": 4 points, "path": a point per frame,
+// "world_centre", "bounds": [xmin, xmax, ymin, ymax, zmin, zmax] of the eye, the image plane
+// and the plane's corners over the loop, "caption", "texture": `texture_source` (the file the
+// plane's texture came from, "" for the default), "colours": {velocity, omega, normal, up,
+// rays, path_past, plane}: [r, g, b] of session/display/palette.h}.
+PlaneWorldLoop panel_world_loop(const PlanePanel& panel);
+std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& texture_source);
+
+// The frame shown: {"frame", "plane_corners", "ray_images", "omega_axis", "velocity",
+// "omega" (per second), "path_index", "arrows": {velocity, omega, normal, up: {"origin",
+// "direction", "length", "matrix"}}, "labels": [{"key", "text", "at"}] for the eye, the
+// image plane, V, Omega, N and U (at the arrows' tips; "" text for an arrow not drawn)}.
+std::string world_frame_json(const PlaneWorldLoop& loop, const PlanePanel& panel);
+
+}  // namespace oflab

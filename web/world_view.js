@@ -1,0 +1,161 @@
+'use strict';
+// The world view, "World (the cause)": the eye, its frustum and image plane, the plane with
+// its normal N and up U, V and Omega as arrows, the rays through the plane's corners and the
+// path of its centre, in 3D with vtk.js (the bundle web/world/world_vtk.js, global
+// OflabWorld). Every point and matrix comes from the teaching layer (Session.worldLoopJson,
+// .worldFrameJson: session/display/world_geometry.h, the numbers the desktop's world view
+// draws); this file only hands them to vtk.js and writes the labels and the caption.
+//
+// The loop's actors are made once per loop (a new state); a frame moves their points and
+// matrices. Mouse: vtk.js's trackball camera (drag to orbit, Shift+drag to pan, wheel or
+// right drag to zoom). With the state's cause_and_effect the world takes the left half of the
+// stage and the flow view the right half, as the desktop's cause-and-effect layout.
+
+const worldView = {
+  title: 'World',
+  world: null,      // OflabWorld's world, made on the first draw
+  loopText: '',     // the loop JSON the actors were made for
+  loop: null,
+  problem: '',      // why the world cannot be drawn here ('' when it can)
+
+  build() {
+    $('world-reset').addEventListener('click', () => {
+      this.placed = null;  // placed again even when the state already says "orbit"
+      editState((s) => { s.world_camera = 'orbit'; });
+    });
+    $('world-eye').addEventListener('click', () => editState((s) => { s.world_camera = 'eye'; }));
+    const stage = $('stage');
+    this.box = document.createElement('div');
+    this.box.id = 'world';
+    this.labels = document.createElement('canvas');
+    this.labels.id = 'world-labels';
+    this.box.appendChild(this.labels);
+    stage.appendChild(this.box);
+  },
+
+  // The world, made when first shown (WebGL only then).
+  ensureWorld() {
+    if (this.world || this.problem) return;
+    if (!OflabWorld.webglAvailable()) {
+      this.problem = 'The world view needs WebGL, which this browser does not give the page.';
+      return;
+    }
+    this.world = OflabWorld.create(this.box);
+    // A drag or a wheel turn moves the camera: the labels follow it.
+    this.world.onCameraMoved(() => this.drawLabels());
+  },
+
+  // The 2D canvas: the flow view's half in the cause-and-effect layout, else only the note.
+  draw(ctx, w, h, style) {
+    const split = app.state.cause_and_effect;
+    document.body.classList.toggle('cause-and-effect', split);
+    if (split) {
+      ctx.save();
+      ctx.translate(Math.floor(w / 2), 0);
+      flowView.draw(ctx, w - Math.floor(w / 2), h, style);
+      ctx.restore();
+    }
+    this.ensureWorld();
+    if (this.problem) {
+      drawCentredText(ctx, split ? w / 2 : w, h, this.problem, style);
+      return;
+    }
+    const loopText = app.session.worldLoopJson();
+    const theme = this.theme(style);
+    if (loopText !== this.loopText || theme.line !== this.line) {
+      this.loop = JSON.parse(loopText);
+      this.world.setLoop(this.loop, theme, app.session.worldTexture());
+      this.loopText = loopText;
+      this.line = theme.line;
+      this.placed = null;
+    }
+    // The state's world camera: "orbit" frames the loop, "eye" looks through the eye.
+    if (this.placed !== app.state.world_camera) {
+      this.world.place(app.state.world_camera === 'eye');
+      this.placed = app.state.world_camera;
+    }
+    this.frame = JSON.parse(app.session.worldFrameJson());
+    this.world.setFrame(this.frame);
+    this.world.render();
+    this.drawLabels();
+  },
+
+  theme(style) {
+    return { background: [17, 19, 21], text: [230, 230, 230], outline: [150, 156, 165], image: [150, 156, 165],
+      muted: [110, 116, 125], line: style.line };
+  },
+
+  // The labels next to the projection of the point they name, and the caption under the
+  // picture, on the canvas over vtk.js's.
+  drawLabels() {
+    if (!this.world || !this.frame) return;
+    const canvas = this.labels;
+    const box = this.box.getBoundingClientRect();
+    if (canvas.width !== Math.floor(box.width) || canvas.height !== Math.floor(box.height)) {
+      canvas.width = Math.floor(box.width);
+      canvas.height = Math.floor(box.height);
+    }
+    const ctx = canvas.getContext('2d');
+    const style = drawStyle();
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    ctx.font = style.font(14);
+    ctx.textBaseline = 'middle';
+    const colours = this.loop.colours;
+    const colour = { velocity: colours.velocity, omega: colours.omega, normal: colours.normal, up: colours.up };
+    // Through the eye, as the desktop: no eye and no Omega (both at the eye), and the image
+    // plane's border is the camera's image.
+    const fromEye = app.state.world_camera === 'eye';
+    for (const label of this.frame.labels) {
+      if (!label.text || (fromEye && (label.key === 'eye' || label.key === 'omega'))) continue;
+      if (fromEye && label.key === 'image_plane') label.text = "the camera's image";
+      const at = this.world.toPage(label.at);
+      if (!at) continue;
+      const [r, g, b] = colour[label.key] || [230, 230, 230];
+      ctx.fillStyle = 'rgba(17, 19, 21, 0.6)';
+      const width = ctx.measureText(label.text).width;
+      // Right of its point, or left of it where the right would leave the picture.
+      const x = at[0] + 9 + width > canvas.width ? Math.max(3, at[0] - 9 - width) : at[0] + 9;
+      ctx.fillRect(x - 3, at[1] - 9 * style.scale, width + 6, 18 * style.scale);
+      ctx.fillStyle = `rgb(${r},${g},${b})`;
+      ctx.fillText(label.text, x, at[1]);
+    }
+    ctx.font = style.font(13);
+    ctx.fillStyle = '#e6e6e6';
+    ctx.textBaseline = 'alphabetic';
+    const lines = [];
+    for (const part of this.loop.caption.split('\n')) lines.push(...wrapLines(ctx, part, canvas.width - 24));
+    const notes = this.notes();
+    if (notes) lines.unshift(notes);
+    const step = 17 * style.scale;
+    // A dark band under the caption keeps it readable over the picture.
+    ctx.fillStyle = 'rgba(17, 19, 21, 0.75)';
+    ctx.fillRect(0, canvas.height - 16 - lines.length * step, canvas.width, lines.length * step + 16);
+    lines.forEach((line, i) => {
+      ctx.fillStyle = i === 0 && notes ? '#e6c35a' : '#e6e6e6';
+      ctx.fillText(line, 12, canvas.height - 10 - (lines.length - 1 - i) * step);
+    });
+  },
+
+  // Paints the world as shown (vtk.js's picture and the labels) into the 2D canvas's context,
+  // for the PNG download: rendered again first, as WebGL keeps its picture only until the
+  // page is composited.
+  paintInto(ctx) {
+    if (!this.world) return;
+    this.world.render();
+    const gl = [...this.box.querySelectorAll('canvas')].find((c) => c !== this.labels);
+    const box = this.box.getBoundingClientRect();
+    ctx.drawImage(gl, 0, 0, box.width, box.height);
+    ctx.drawImage(this.labels, 0, 0, box.width, box.height);
+  },
+
+  // What of the state the page's world view does not show, said on the picture.
+  notes() {
+    const s = app.state;
+    const missing = [];
+    if (s.animation.source.kind !== 'plane' && s.animation.source.kind !== 'script') {
+      missing.push("a scene source's world (this is the scene panel's plane)");
+    }
+    return missing.length ? `In the desktop window only: ${missing.join('; ')}.` : '';
+  },
+};
+app.views.world = worldView;
