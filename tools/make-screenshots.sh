@@ -62,6 +62,8 @@ screen=1920x1200 shot lesson-how-much-error-can-you-see --lesson how-much-error-
 shot lesson-occlusion --lesson occlusion --frames 20
 screen=1920x1200 shot lesson-guessing-the-next-frame --lesson guessing-the-next-frame \
   --presentation --size 1920 1080 --frames 3
+screen=1920x1200 shot lesson-shrinking-without-shimmering --lesson shrinking-without-shimmering \
+  --presentation --size 1920 1080 --frames 40
 shot slices --view slices --frames 10
 # The window as a projector shows it, normal and presentation mode, at 1920 x 1080.
 for look in normal presentation; do

@@ -190,7 +190,7 @@ async function testSelftest(browser) {
       ++parts;
     });
   }
-  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 16 && parts >= 48 && lessonDiffer.length === 0,
+  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 17 && parts >= 48 && lessonDiffer.length === 0,
     `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
   const views = Object.entries(result.views || {});
   check('SelftestReportsViewsAndTimeToInteractive', views.length === 6 && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
