@@ -101,6 +101,24 @@ TEST(Lab, TheErrorOverTheThresholdIsTheLargestErrorOverTheLargestThreshold) {
   }
 }
 
+// A state's texture is a file or a shipped texture's name (formats/datasets.h
+// resolve_texture_path): "fabric" reads datasets/textures/fabric.png, a path stays a path,
+// and a name that is neither is refused naming the field.
+TEST(Lab, AStatesTextureMayNameAShippedTexture) {
+  const std::string fabric = resolve_texture_path("fabric");
+  EXPECT_EQ(std::filesystem::path(fabric).filename(), "fabric.png");
+  EXPECT_EQ(resolve_texture_path(fabric), fabric);
+  EXPECT_EQ(resolve_texture_path("no-such-texture"), "no-such-texture");
+  Lab lab(shipped_default_texture());
+  WindowState state = lab.state();
+  state.texture = "fabric";
+  ASSERT_EQ(lab.apply(state), "");
+  EXPECT_EQ(lab.panel().texture().width(), make_fabric_texture().width());
+  EXPECT_EQ(lab.state().texture, "fabric");
+  state.texture = "no-such-texture";
+  EXPECT_EQ(lab.apply(state).rfind("texture: ", 0), 0u);
+}
+
 // The receding plane's script (datasets/scripts/recede.json) with a camera 4 times smaller,
 // 160 x 120, in a file of its own: what the sampling experiment's quick spec plays.
 std::string small_recede_file() {
