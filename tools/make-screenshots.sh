@@ -66,6 +66,8 @@ screen=1920x1200 shot lesson-spreading-the-work --lesson spreading-the-work \
   --presentation --size 1920 1080 --frames 12
 screen=1920x1200 shot lesson-warping-what-shows --lesson warping-what-shows \
   --presentation --size 1920 1080 --frames 12
+screen=1920x1200 shot lesson-shrinking-without-shimmering --lesson shrinking-without-shimmering \
+  --presentation --size 1920 1080 --frames 40
 shot slices --view slices --frames 10
 # The window as a projector shows it, normal and presentation mode, at 1920 x 1080.
 for look in normal presentation; do

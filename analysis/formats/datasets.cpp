@@ -56,4 +56,11 @@ std::string default_texture_path() {
   return (fs::path(datasets_dir()) / "textures" / "butterfly.png").string();
 }
 
+std::string resolve_texture_path(const std::string& name_or_file) {
+  std::error_code ec;
+  if (name_or_file.empty() || fs::is_regular_file(name_or_file, ec)) return name_or_file;
+  const fs::path shipped = fs::path(datasets_dir()) / "textures" / (name_or_file + ".png");
+  return fs::is_regular_file(shipped, ec) ? shipped.string() : name_or_file;
+}
+
 }  // namespace oflab

@@ -40,4 +40,9 @@ std::vector<std::string> shipped_script_names();
 // The bundled butterfly texture (datasets/textures/butterfly.png).
 std::string default_texture_path();
 
+// Resolves a texture argument: an existing file path is used as is; otherwise a shipped
+// texture's name (datasets/textures/NAME.png: butterfly, fabric, tile) when that file exists;
+// otherwise `name_or_file` unchanged (its reader then names it as missing).
+std::string resolve_texture_path(const std::string& name_or_file);
+
 }  // namespace oflab

@@ -77,7 +77,7 @@ std::string Lab::read_inputs(const WindowState& s, Image* texture,
                              std::optional<MotionScript>* script) const {
   if (!s.texture.empty()) {
     std::string error;
-    *texture = read_texture_(s.texture, &error);
+    *texture = read_texture_(resolve_texture_path(s.texture), &error);
     if (texture->empty()) return "texture: " + error;
   }
   if (!s.script.empty()) {

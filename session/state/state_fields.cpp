@@ -272,7 +272,8 @@ void add_plane_fields(std::vector<StateField>& f) {
   f.push_back(text_field("script", "a shipped script's name or a file, or empty",
                          "the motion script the scene panel plays",
                          [](S* s) { return &s->script; }));
-  f.push_back(text_field("texture", "an image file, or empty for the butterfly",
+  f.push_back(text_field("texture",
+                         "an image file or a shipped texture's name, or empty for the butterfly",
                          "the plane's texture", [](S* s) { return &s->texture; }));
 }
 

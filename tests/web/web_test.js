@@ -195,7 +195,7 @@ async function testSelftest(browser) {
       ++parts;
     });
   }
-  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 18 && parts >= 51 && lessonDiffer.length === 0,
+  check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 19 && parts >= 53 && lessonDiffer.length === 0,
     `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
   const views = Object.entries(result.views || {});
   check('SelftestReportsViewsAndTimeToInteractive', views.length === 7 && 'world' in result.views && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
