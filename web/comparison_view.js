@@ -116,6 +116,11 @@ const comparisonView = {
     html += `<tr><td>level</td>${runs.map((r) => `<td>${r.level}</td>`).join('')}</tr>`;
     html += `<tr><td>error, px</td>${runs.map((r) => `<td>${r.measured_error_px.toFixed(3)}</td>`).join('')}</tr>`;
     html += `<tr><td>largest, px</td>${runs.map((r) => `<td>${r.max_error_px.toFixed(3)}</td>`).join('')}</tr>`;
+    html += `<tr><td>pixels written</td>${runs.map((r) => `<td>${r.pixels_written}</td>`).join('')}</tr>`;
+    // Under the visible-only warp, what the warps computed of them (as the desktop's captions).
+    if (info.warp === 'visible') {
+      html += `<tr><td>warped, what shows only</td>${runs.map((r) => `<td>${r.pixels_warped}</td>`).join('')}</tr>`;
+    }
     html += `<tr><th colspan="${runs.length + 1}">share of frames 1 .. now</th></tr>`;
     for (const level of levels) {
       html += `<tr><td>${level}</td>${runs.map((r) => `<td>${(100 * r.level_shares[level]).toFixed(0)}%</td>`).join('')}</tr>`;

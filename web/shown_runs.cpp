@@ -91,6 +91,8 @@ nlohmann::json shown_run_json(const ShownRun& run, double psnr_db, int heat_max)
           {"level", level_text(*run.last)},
           {"measured_error_px", run.last->max_measured_error_px},
           {"max_error_px", run.max_error_px},
+          {"pixels_written", run.last->pixels_written},
+          {"pixels_warped", run.last->pixels_written - run.last->pixels_not_warped},
           {"level_shares", levels},
           {"psnr_db", psnr_db},
           {"heat_max", heat_max},

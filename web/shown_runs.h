@@ -33,8 +33,10 @@ std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem);
 
 // One panel of the comparison as JSON: policy, the policy's summary, the level of the frame
 // (or the drawn layers per level of a scene), measured error and largest error so far in
-// pixels, level shares over frames 1 .. now, `psnr_db` and `heat_max` (its difference from
-// the exact frame), and the outlines of the shown layers (frame pixels, top-left).
+// pixels, the frame's pixels written and of those the pixels its warps computed
+// (`pixels_warped`: fewer under the visible-only warp, core/image/pixel_rows.h), level shares
+// over frames 1 .. now, `psnr_db` and `heat_max` (its difference from the exact frame), and
+// the outlines of the shown layers (frame pixels, top-left).
 nlohmann::json shown_run_json(const ShownRun& run, double psnr_db, int heat_max);
 
 }  // namespace oflab

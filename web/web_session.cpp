@@ -21,6 +21,7 @@
 #include "formats/script_file.h"
 #include "frame_pixels.h"
 #include "image/image_compare.h"
+#include "image/pixel_rows.h"
 #include "lessons/claim_kinds.h"
 #include "lessons/lesson_player.h"
 #include "player/animation_sources.h"
@@ -479,6 +480,7 @@ std::string WebSession::update_comparison(int panel_width, int panel_height) {
   out["height"] = animators.empty() ? 0 : animators.back()->camera().height;
   out["panel"] = {panel_width, panel_height};
   out["heat_full_scale"] = kHeatFullScale;
+  out["warp"] = warp_area_name(lab_.values().settings.warp_area);
   json runs = json::array();
   if (!animators.empty()) {
     shown.push_back({kExactPolicy, exact_shown_, exact_record_, {}, 0.0});

@@ -718,6 +718,17 @@ async function testClaims(browser) {
   const moved = JSON.parse(await evaluate(browser, `(() => { app.session.goToLessonStep('why-errors-accumulate', 1); app.session.seek(3);
     return JSON.stringify(JSON.parse(app.session.checkClaimsJson()).filter((c) => c.source === 'engine').map((c) => c.line)); })()`));
   check('NegativeControl_ClaimsOnAnotherFrameDiffer', moved.some((l) => !expected.includes(l)), moved.slice(0, 1).join(''));
+  // The visible-only warp's pixels in the comparison's table, as the desktop's captions give
+  // them (fewer than the pixels written); a lesson under the whole warp has no such row.
+  await open(browser, '?lesson=warping-what-shows', drawnMarker);
+  const rows = JSON.parse(await evaluate(browser, "JSON.stringify([...document.querySelectorAll('#runs tr')].map((tr) => [...tr.children].map((c) => c.textContent)))"));
+  const written = rows.find((r) => r[0] === 'pixels written');
+  const warped = rows.find((r) => r[0] === 'warped, what shows only');
+  check('TheVisibleWarpShowsItsPixelsWarped', Boolean(written && warped) && Number(warped[1]) > 0 && Number(warped[1]) < Number(written[1]),
+    JSON.stringify([written, warped]));
+  await open(browser, '?lesson=occlusion&step=1', drawnMarker);
+  const whole = await evaluate(browser, "document.getElementById('runs').textContent");
+  check('NegativeControl_TheWholeWarpHasNoWarpedRow', /pixels written/.test(whole) && !/what shows only/.test(whole), whole.slice(0, 160));
 }
 
 // --- Links and files ------------------------------------------------------------------------
