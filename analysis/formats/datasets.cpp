@@ -34,12 +34,24 @@ std::vector<std::string> shipped_names(const std::string& folder) {
   return names;
 }
 
-std::string resolve_shipped_path(const std::string& name_or_file, const std::string& folder,
-                                 const std::string& what) {
+namespace {
+
+// `name_or_file` when it is a file, else datasets/FOLDER/NAME.EXTENSION when that is one,
+// else "".
+std::string existing_or_shipped_file(const std::string& name_or_file, const std::string& folder,
+                                     const std::string& extension) {
   std::error_code ec;
   if (fs::is_regular_file(name_or_file, ec)) return name_or_file;
-  const fs::path shipped = fs::path(datasets_dir()) / folder / (name_or_file + ".json");
-  if (fs::is_regular_file(shipped, ec)) return shipped.string();
+  const fs::path shipped = fs::path(datasets_dir()) / folder / (name_or_file + extension);
+  return fs::is_regular_file(shipped, ec) ? shipped.string() : std::string();
+}
+
+}  // namespace
+
+std::string resolve_shipped_path(const std::string& name_or_file, const std::string& folder,
+                                 const std::string& what) {
+  const std::string file = existing_or_shipped_file(name_or_file, folder, ".json");
+  if (!file.empty()) return file;
   std::string names;
   for (const std::string& n : shipped_names(folder)) names += (names.empty() ? "" : ", ") + n;
   throw std::runtime_error("'" + name_or_file + "' is neither a file nor a shipped " + what + " (" +
@@ -57,10 +69,9 @@ std::string default_texture_path() {
 }
 
 std::string resolve_texture_path(const std::string& name_or_file) {
-  std::error_code ec;
-  if (name_or_file.empty() || fs::is_regular_file(name_or_file, ec)) return name_or_file;
-  const fs::path shipped = fs::path(datasets_dir()) / "textures" / (name_or_file + ".png");
-  return fs::is_regular_file(shipped, ec) ? shipped.string() : name_or_file;
+  if (name_or_file.empty()) return name_or_file;
+  const std::string file = existing_or_shipped_file(name_or_file, "textures", ".png");
+  return file.empty() ? name_or_file : file;
 }
 
 }  // namespace oflab

@@ -105,6 +105,14 @@ TEST(Lab, TheErrorOverTheThresholdIsTheLargestErrorOverTheLargestThreshold) {
   }
 }
 
+// The state of lesson `name` held at frame `frame` (not playing).
+WindowState lesson_state_at(const std::string& name, int frame) {
+  WindowState state = find_lesson(name)->state;
+  state.playing = false;
+  state.frame = frame;
+  return state;
+}
+
 LessonClaim pair_claim(const std::string& kind, const std::string& of, const std::string& over) {
   LessonClaim claim = study_claim(kind, of);
   claim.over = over;
@@ -136,9 +144,7 @@ std::vector<PolicyRow> compare_rows(const std::string& policies, WarpArea area) 
 // to a policy that re-renders every frame (error 0) is the perspective policy's error.
 TEST(Lab, TheSpreadKindsAreCompareFiguresOfTheSameFrames) {
   Lab lab(shipped_default_texture());
-  WindowState state = find_lesson("spreading-the-work")->state;
-  state.playing = false;
-  state.frame = 12;
+  WindowState state = lesson_state_at("spreading-the-work", 12);
   ASSERT_EQ(lab.apply(state), "");
   const std::vector<PolicyRow> rows = compare_rows("lookahead,perspective", WarpArea::kWhole);
   const double ratio =
@@ -163,9 +169,7 @@ TEST(Lab, TheSpreadKindsAreCompareFiguresOfTheSameFrames) {
 // that do differ (bilinear against nearest sampling) is not 0.
 TEST(Lab, TheVisibleWarpKindsAreComparesPixelsWarpedAndTheWholeWarpsFrames) {
   Lab lab(shipped_default_texture());
-  WindowState state = find_lesson("warping-what-shows")->state;
-  state.playing = false;
-  state.frame = 12;
+  WindowState state = lesson_state_at("warping-what-shows", 12);
   ASSERT_EQ(lab.apply(state), "");
   const PolicyRow row = compare_rows("perspective", WarpArea::kVisible).at(0);
   const double share = measure_engine_claim(lab, study_claim("pixels_warped_share", "perspective"));
