@@ -1,5 +1,6 @@
 #include "views/animation_controls.h"
 
+#include <QActionGroup>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -53,6 +54,18 @@ class ChecklistMenu : public QMenu {
     return true;
   }
 };
+
+// The warp button's tooltip: what the warps compute now, in words.
+QString warp_area_tooltip(WarpArea area) {
+  return area == WarpArea::kVisible
+             ? QObject::tr(
+                   "Warp: what shows only. Each layer of a scene warps only the pixels "
+                   "no nearer opaque layer covers; the frames are the same bytes as "
+                   "the whole warp's, with fewer pixels computed")
+             : QObject::tr(
+                   "Warp: the whole layer. Each layer of a scene warps all its "
+                   "pixels, those a nearer layer covers too");
+}
 
 void select_data(QComboBox* box, const QVariant& data) {
   const int index = box->findData(data);
@@ -133,6 +146,7 @@ QWidget* AnimationControls::make_source_row() {
   layout->addWidget(source_box_, 2);
   layout->addWidget(new QLabel(tr("viewer"), row));
   layout->addWidget(viewer_box_, 1);
+  layout->addWidget(make_warp_area_button(row));
   layout->addWidget(new QLabel(tr("Show"), row));
   layout->addWidget(display_box_, 1);
   layout->addWidget(make_compare_button(row));
@@ -216,6 +230,38 @@ void AnimationControls::connect_mode_controls() {
   });
 }
 
+QToolButton* AnimationControls::make_warp_area_button(QWidget* parent) {
+  // A short button with a menu, not a box: the row must still fit a 1024-pixel window.
+  warp_area_button_ = new QToolButton(parent);
+  warp_area_button_->setObjectName(QStringLiteral("animation_warp_area"));
+  warp_area_button_->setText(tr("Warp"));
+  warp_area_button_->setPopupMode(QToolButton::InstantPopup);
+  auto* menu = new QMenu(warp_area_button_);
+  auto* group = new QActionGroup(menu);
+  const QString labels[kWarpAreaCount] = {tr("The whole layer"),
+                                          tr("What shows only (pixels no nearer layer covers)")};
+  for (int i = 0; i < kWarpAreaCount; ++i) {
+    QAction* action = menu->addAction(labels[i]);
+    action->setCheckable(true);
+    action->setData(QString::fromLatin1(warp_area_name(WarpArea(i))));
+    group->addAction(action);
+    warp_area_actions_.push_back(action);
+    connect(action, &QAction::triggered, this, [this] {
+      warp_area_button_->setToolTip(warp_area_tooltip(warp_area()));
+      emit settings_edited();
+    });
+  }
+  warp_area_button_->setMenu(menu);
+  return warp_area_button_;
+}
+
+WarpArea AnimationControls::warp_area() const {
+  for (int i = 0; i < kWarpAreaCount; ++i) {
+    if (warp_area_actions_[size_t(i)]->isChecked()) return WarpArea(i);
+  }
+  return WarpArea::kWhole;
+}
+
 QWidget* AnimationControls::make_threshold_row() {
   auto* threshold_row = new QWidget(this);
   auto* thresholds = new QHBoxLayout(threshold_row);
@@ -267,6 +313,7 @@ EngineSettings AnimationControls::settings() const {
   for (int k = 0; k < kTermCount; ++k) s.thresholds[size_t(k)] = thresholds_[k]->value();
   s.delta = static_cast<DeltaPolicy>(delta_box_->currentData().toInt());
   s.sampling = static_cast<Sampling>(sampling_box_->currentData().toInt());
+  s.warp_area = warp_area();
   s.content.kind = static_cast<ContentKind>(content_box_->currentData().toInt());
   s.content.quality = quality_box_->value();
   reprojection_->read_into(s);
@@ -287,6 +334,8 @@ void AnimationControls::set_settings(const EngineSettings& s) {
   select_data(mode_box_, QString(s.policy->name));
   select_data(delta_box_, int(s.delta));
   select_data(sampling_box_, int(s.sampling));
+  warp_area_actions_[size_t(s.warp_area)]->setChecked(true);  // triggers no signal
+  warp_area_button_->setToolTip(warp_area_tooltip(s.warp_area));
   select_data(content_box_, int(s.content.kind));
   quality_box_->setValue(s.content.quality);
   for (int k = 0; k < kTermCount; ++k) {
@@ -412,6 +461,8 @@ void AnimationControls::show_kind(const AnimationSourceKind& kind) {
   for (QDoubleSpinBox* t : thresholds_) t->setEnabled(kind.uses_reuse_policy);
   // A scene's polygons show the contents of its file; a single plane shows the chosen one.
   content_box_->setEnabled(!kind.uses_viewer);
+  // Only a scene's layers can hide each other: the warp area is theirs.
+  warp_area_button_->setEnabled(kind.uses_viewer && kind.uses_reuse_policy);
 }
 
 }  // namespace oflab

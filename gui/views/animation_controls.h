@@ -2,7 +2,8 @@
 // session/player/animation_sources.h, with its shipped name and viewer script), the engine's
 // reuse policy (the entries of core/engine/reuse_policy.h, with a one-click
 // affine/perspective switch; with the budget policy, a spin box of its pixel budget per
-// frame), the per-level thresholds, the Delta policy, the sampling, the layer content and its
+// frame), the per-level thresholds, the Delta policy, the sampling, what of a scene's layer the
+// warps compute (the whole layer or what shows only), the layer content and its
 // quality (core/content/layer_content.h: what a re-render draws; a single plane only, a
 // scene's polygons keep their own), the cadence and stabilization plane of today's
 // reprojection policies (gui/views/reprojection_controls.h), how the two panels are shown, and the
@@ -65,6 +66,13 @@ class AnimationControls : public QWidget {
   // The engine's row: the reuse policy (with the budget box and the affine/perspective
   // switch), Delta, the sampling and the reprojection menu.
   QWidget* make_mode_row();
+  // The "Warp" button after the viewer box (the source row has room for it; the engine's two
+  // rows fill a 1024-pixel window): a menu of the warp areas (core/image/pixel_rows.h WarpArea: the
+  // whole layer, or only the pixels no nearer opaque layer covers), one checked; a scene's setting,
+  // disabled for single planes and scene shifting.
+  QToolButton* make_warp_area_button(QWidget* parent);
+  // The warp area the button's menu has checked.
+  WarpArea warp_area() const;
   // Wires the policy, Delta and sampling boxes and the affine/perspective switch to
   // settings_edited (the budget box shown or hidden first).
   void connect_mode_controls();
@@ -98,6 +106,8 @@ class AnimationControls : public QWidget {
   QDoubleSpinBox* thresholds_[kTermCount] = {};
   QComboBox* delta_box_ = nullptr;
   QComboBox* sampling_box_ = nullptr;
+  QToolButton* warp_area_button_ = nullptr;
+  std::vector<QAction*> warp_area_actions_;  // one per WarpArea, in enum order
   QComboBox* content_box_ = nullptr;
   QSpinBox* quality_box_ = nullptr;
   ReprojectionControls* reprojection_ = nullptr;
