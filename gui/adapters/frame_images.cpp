@@ -134,6 +134,12 @@ void difference_map_into(const Image& a, const Image& b, int full_scale, QImage&
     const Rgb8 c = magnitude_colour(static_cast<double>(d) / full_scale);
     colours[size_t(d)] = qRgb(c.r, c.g, c.b);
   }
+  // One frame against itself (the comparison's exact panel showing a compared re-render's
+  // frame): every difference is 0, so the map is its colour throughout.
+  if (&a == &b) {
+    out.fill(colours[0]);
+    return;
+  }
   // The channel differences of a row first, in a loop over bytes the compiler vectorises,
   // then the largest of each pixel's four through the colour table; bands of rows on core's
   // worker threads (core/image/thread_pool.h), each with its own row of differences. The
@@ -217,27 +223,38 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
 
 FrameAgreement frame_agreement(const Image& a, const Image& b) {
   FrameAgreement result;
+  // One frame against itself: its mask is its own (IoU 1, as for two empty ones) and no
+  // colour differs (PSNR infinite), what the tallies below would find, without the pass.
+  if (&a == &b) {
+    result.psnr_db = std::numeric_limits<double>::infinity();
+    return result;
+  }
   // Whole-number tallies per band of rows (core's worker threads), summed in band order.
   struct Tally {
     std::int64_t both = 0, either = 0, squared = 0;
   };
   std::array<Tally, kMaxBands> tallies{};
-  for_each_band(a.height(), std::max(8, 65536 / std::max(1, a.width())),
-                [&](int band, int begin, int end) {
-                  Tally& t = tallies[size_t(band)];
-                  for (int y = begin; y < end; ++y) {
-                    const Pixel* pa = a.row(y);
-                    const Pixel* pb = b.row(y);
-                    for (int x = 0; x < a.width(); ++x) {
-                      const bool ca = pa[x].a > 127, cb = pb[x].a > 127;
-                      t.either += (ca || cb);
-                      if (!(ca && cb)) continue;
-                      ++t.both;
-                      for (int d : {pa[x].r - pb[x].r, pa[x].g - pb[x].g, pa[x].b - pb[x].b})
-                        t.squared += d * d;
-                    }
-                  }
-                });
+  for_each_band(
+      a.height(), std::max(8, 65536 / std::max(1, a.width())), [&](int band, int begin, int end) {
+        Tally& t = tallies[size_t(band)];
+        for (int y = begin; y < end; ++y) {
+          const Pixel* pa = a.row(y);
+          const Pixel* pb = b.row(y);
+          // Without branches, so that the compiler vectorises the row: a pixel
+          // not covered in both adds 0 to the squares.
+          std::int64_t both = 0, either = 0, squared = 0;
+          for (int x = 0; x < a.width(); ++x) {
+            const int ca = pa[x].a > 127, cb = pb[x].a > 127;
+            const int dr = pa[x].r - pb[x].r, dg = pa[x].g - pb[x].g, db = pa[x].b - pb[x].b;
+            either += ca | cb;
+            both += ca & cb;
+            squared += std::int64_t(ca & cb) * (dr * dr + dg * dg + db * db);
+          }
+          t.both += both;
+          t.either += either;
+          t.squared += squared;
+        }
+      });
   Tally total;
   for (const Tally& t : tallies) {
     total.both += t.both;
