@@ -815,9 +815,13 @@ async function testLinks(browser) {
 // second, so 60 is the most this can show), and unpaced (Chromium's frame-rate limit and
 // vsync off), which shows how many frames a second the page can make.
 const kUnpacedFlags = ['--disable-gpu-vsync', '--disable-frame-rate-limit'];
+// The views benchmarked: [name as printed, the page's query].
+const kBenchViews = [['flow', '?bench=flow'], ['world', '?bench=world'],
+  ['animation', '?bench=animation&script=swing'],
+  // The street comparison: the lesson when-reuse-pays's state (perspective beside re-rendering).
+  ['animation-street', '?lesson=when-reuse-pays&bench=animation']];
 async function benchViews(browser, pace) {
-  for (const view of ['flow', 'world', 'animation']) {
-    const query = view === 'animation' ? '?bench=animation&script=swing' : `?bench=${view}`;
+  for (const [view, query] of kBenchViews) {
     await open(browser, query, doneMarker('bench'), 300);
     const r = JSON.parse(await evaluate(browser, "document.getElementById('bench').textContent"));
     console.log(`bench ${view} (${pace}): ${r.fps.toFixed(1)} fps over ${r.frames} frames (frame time median ${r.median_ms.toFixed(1)} ms, ` +
@@ -826,7 +830,36 @@ async function benchViews(browser, pace) {
   }
 }
 
+// Time to interactive: the page opened in a Chromium started afresh (a new profile, so no
+// code cached from an earlier visit), then opened again in the same browser, `rounds` times;
+// each line gives the page's own figures (ms from the navigation's start): its load event,
+// its module ready, its first frame drawn with the controls live.
+async function benchStartup(rounds = 5) {
+  const figures = { first: [], again: [] };
+  for (let round = 0; round < rounds; ++round) {
+    const fresh = await launchChromium();
+    try {
+      for (const visit of ['first', 'again']) {
+        if (visit === 'again') await fresh.tab('Page.navigate', { url: 'about:blank' });
+        await open(fresh, '', "document.body.dataset.interactive !== undefined");
+        const t = JSON.parse(await evaluate(fresh,
+          'JSON.stringify({ interactive: app.interactiveMs, module: app.timings.module_ms, load: app.timings.load_event_ms })'));
+        figures[visit].push(t.interactive);
+        console.log(`bench startup round ${round + 1}, ${visit} visit: interactive ${t.interactive.toFixed(0)} ms ` +
+          `(load event ${t.load} ms, module ready ${t.module} ms), load average ${os.loadavg()[0].toFixed(1)}`);
+      }
+    } finally {
+      await fresh.close();
+    }
+  }
+  const median = (xs) => xs.slice().sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+  console.log(`bench startup: time to interactive median ${median(figures.first).toFixed(0)} ms on a first visit ` +
+    `(largest ${Math.max(...figures.first).toFixed(0)}), ${median(figures.again).toFixed(0)} ms on a second ` +
+    `(largest ${Math.max(...figures.again).toFixed(0)}), ${rounds} rounds`);
+}
+
 async function bench(browser) {
+  await benchStartup();
   await benchViews(browser, 'paced at 60 Hz');
   const unpaced = await launchChromium(kUnpacedFlags);
   try {
