@@ -1,7 +1,8 @@
 'use strict';
 // The world view, "World (the cause)": the eye, its frustum and image plane, the plane with
 // its normal N and up U, V and Omega as arrows, the rays through the plane's corners and the
-// path of its centre, in 3D with vtk.js (the bundle web/world/world_vtk.js, global
+// path of its centre (for a scene source: the scene's polygons in their levels' colours and
+// the viewer's path, the eye moving along it), in 3D with vtk.js (the bundle web/world/world_vtk.js, global
 // OflabWorld). Every point and matrix comes from the teaching layer (Session.worldLoopJson,
 // .worldFrameJson: session/display/world_geometry.h, the numbers the desktop's world view
 // draws); this file only hands them to vtk.js and writes the labels and the caption.
@@ -148,14 +149,10 @@ const worldView = {
     ctx.drawImage(this.labels, 0, 0, box.width, box.height);
   },
 
-  // What of the state the page's world view does not show, said on the picture.
+  // What of the state the page's world view does not show, said on the picture (nothing now:
+  // a scene source's world is drawn too).
   notes() {
-    const s = app.state;
-    const missing = [];
-    if (s.animation.source.kind !== 'plane' && s.animation.source.kind !== 'script') {
-      missing.push("a scene source's world (this is the scene panel's plane)");
-    }
-    return missing.length ? `In the desktop window only: ${missing.join('; ')}.` : '';
+    return '';
   },
 };
 app.views.world = worldView;
