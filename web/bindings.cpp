@@ -184,13 +184,17 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("classResultsJson", &WebStudy::class_results_json)
       .function("curve", &oflab::study_curve)
       .class_function("shippedJson", &WebStudy::shipped_json);
+  emscripten::function("heatColour", &oflab::heat_colour);
+  emscripten::function("policyColour", &oflab::policy_rgb);
+  emscripten::function("levelColours", &oflab::level_colours);
+  emscripten::function("wheelTable", &oflab::wheel_table);
+}
+
+// The scene-shifting view's walk and diagram (web/web_slices.h).
+EMSCRIPTEN_BINDINGS(oflab_web_slices) {
   using oflab::WebSlices;
   emscripten::class_<WebSlices>("Slices")
       .constructor<>()
       .function("update", &WebSlices::update)
       .function("pixels", &oflab::slice_pixels);
-  emscripten::function("heatColour", &oflab::heat_colour);
-  emscripten::function("policyColour", &oflab::policy_rgb);
-  emscripten::function("levelColours", &oflab::level_colours);
-  emscripten::function("wheelTable", &oflab::wheel_table);
 }

@@ -87,6 +87,20 @@ double draw_diagram_legend(QPainter& p, const QRectF& area, const ViewTheme& the
   return y + 1.2 * h;
 }
 
+// The scene's planes, seen from above: a thick line at each plane's depth across its
+// lateral extent (clamped to the diagram's).
+void draw_diagram_planes(QPainter& p, const std::vector<DiagramPlane>& planes,
+                         const std::function<double(double)>& x_of,
+                         const std::function<double(double)>& y_of) {
+  p.setPen(QPen(kPlane, 4));
+  const double half = kDiagramHalfWidth;
+  for (const DiagramPlane& pl : planes) {
+    if (pl.depth <= 0) continue;
+    p.drawLine(QPointF(x_of(pl.depth), y_of(std::clamp(pl.left, -half, half))),
+               QPointF(x_of(pl.depth), y_of(std::clamp(pl.right, -half, half))));
+  }
+}
+
 // A camera frame (premultiplied, painted over the background) scaled to fit under its title
 // in an image of `area`; an empty frame shows the title alone.
 QPixmap titled_picture(const Image& frame, const QString& title, const QSize& area,
@@ -137,7 +151,7 @@ QImage paint_slice_diagram(int width, int height, const SliceDiagram& diagram,
   std::function<double(double)> x_of = [&](double z) {
     return left + (right - left) * diagram_depth_position(z, max_depth);
   };
-  auto y_of = [&](double x) {
+  std::function<double(double)> y_of = [&](double x) {
     return top + (bottom - top) * (0.5 - x / (2.0 * kDiagramHalfWidth));
   };
   const QColor text = qcolor(theme.text);
@@ -161,14 +175,7 @@ QImage paint_slice_diagram(int width, int height, const SliceDiagram& diagram,
     const double x = std::clamp(x_of(asymptote) - w / 2, left, std::max(left, right - w));
     p.drawText(QRectF(x, label_row, w + 1, line), Qt::AlignLeft | Qt::AlignVCenter, label);
   }
-  // The scene's planes, seen from above.
-  p.setPen(QPen(kPlane, 4));
-  const double half = kDiagramHalfWidth;
-  for (const DiagramPlane& pl : diagram.planes) {
-    if (pl.depth <= 0) continue;
-    p.drawLine(QPointF(x_of(pl.depth), y_of(std::clamp(pl.left, -half, half))),
-               QPointF(x_of(pl.depth), y_of(std::clamp(pl.right, -half, half))));
-  }
+  draw_diagram_planes(p, diagram.planes, x_of, y_of);
   // The eye.
   p.setPen(Qt::NoPen);
   p.setBrush(text);

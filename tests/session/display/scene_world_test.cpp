@@ -47,11 +47,11 @@ TEST(SceneWorld, FramePlacesTheEyeAndColoursThePolygonsByStatus) {
   const auto animator = street_walk();
   const SceneWorldLoop loop = scene_world_loop(*animator, kSecondsPerFrame);
   animator->start();
-  for (int k = 0; k < 6; ++k) animator->advance();
+  for (int k = 0; k < 20; ++k) animator->advance();
   const SceneWorldFrame f = scene_world_frame(loop, *animator, kSecondsPerFrame);
-  const ViewerPose pose = animator->script().frames[6].pose;
+  const ViewerPose pose = animator->script().frames[20].pose;
   EXPECT_NEAR(glm::length(f.eye - eye_of(pose)), 0.0, 1e-9);
-  EXPECT_EQ(f.path_index, 6);
+  EXPECT_EQ(f.path_index, 20);
   EXPECT_TRUE(f.walking);
   // The image plane's corners, seen back from the viewer, are the camera's image plane.
   const std::array<Vec3, 4> corners = image_plane_corners(loop.camera, loop.depth);
@@ -61,21 +61,37 @@ TEST(SceneWorld, FramePlacesTheEyeAndColoursThePolygonsByStatus) {
   const std::vector<PolygonStatus>& statuses = animator->renderer().statuses();
   const std::vector<Level>& levels = animator->renderer().levels();
   ASSERT_EQ(f.colours.size(), statuses.size());
-  int drawn = 0, culled = 0;
+  // The colour each status gets, written out here: drawn in its level's (clipped: re-rendered),
+  // culled pale, hidden dark, starved black.
+  int drawn = 0;
   for (size_t k = 0; k < statuses.size(); ++k) {
-    const Rgb8 c = f.colours[k];
-    if (statuses[k] == PolygonStatus::kAnimated) {
-      const Rgb8 level = level_colour(levels[k]);
-      EXPECT_TRUE(c.r == level.r && c.g == level.g && c.b == level.b) << k;
-      ++drawn;
-    } else if (statuses[k] == PolygonStatus::kOutsideFrustum ||
-               statuses[k] == PolygonStatus::kBackFacing) {
-      EXPECT_TRUE(c.r == 215 && c.g == 215 && c.b == 215) << k;
-      ++culled;
+    Rgb8 want{0, 0, 0};
+    switch (statuses[k]) {
+      case PolygonStatus::kAnimated:
+        want = level_colour(levels[k]), ++drawn;
+        break;
+      case PolygonStatus::kClipped:
+        want = level_colour(Level::kRerender), ++drawn;
+        break;
+      case PolygonStatus::kBackFacing:
+      case PolygonStatus::kOutsideFrustum:
+        want = {215, 215, 215};
+        break;
+      case PolygonStatus::kHidden:
+        want = {70, 70, 70};
+        break;
+      case PolygonStatus::kStarved:
+        break;
     }
+    const Rgb8 c = f.colours[k];
+    EXPECT_TRUE(c.r == want.r && c.g == want.g && c.b == want.b)
+        << k << " " << polygon_status_name(statuses[k]);
   }
   EXPECT_GT(drawn, 0);
-  EXPECT_GT(culled, 0);  // the control: not every polygon is coloured as drawn
+  // The control: the status decides, not the level alone (a hidden affine polygon is dark).
+  const Rgb8 hidden = scene_polygon_colour(PolygonStatus::kHidden, Level::kAffine);
+  const Rgb8 affine = scene_polygon_colour(PolygonStatus::kAnimated, Level::kAffine);
+  EXPECT_FALSE(hidden.r == affine.r && hidden.g == affine.g && hidden.b == affine.b);
 }
 
 }  // namespace
