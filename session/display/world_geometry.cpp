@@ -263,7 +263,8 @@ std::string scene_world_caption(bool frame_on_image_plane) {
                            "engine's frame.\n"
                          : "The viewer walks through the scene; the comparison view shows the "
                            "engine's frame.\n") +
-         "Polygons in their level's colour (translate sky blue, affine green, perspective "
+         "Polygons in their level's colour (none grey, translate sky blue, affine green, "
+         "perspective "
          "orange, re-render vermillion); culled pale, hidden dark.\n"
          "V and Omega: the scene's motion seen by the viewer (Omega about the eye). Viewer's "
          "path: past thick, future thin.";
