@@ -125,14 +125,12 @@ const worldView = {
     ctx.textBaseline = 'alphabetic';
     const lines = [];
     for (const part of this.loop.caption.split('\n')) lines.push(...wrapLines(ctx, part, canvas.width - 24));
-    const notes = this.notes();
-    if (notes) lines.unshift(notes);
     const step = 17 * style.scale;
     // A dark band under the caption keeps it readable over the picture.
     ctx.fillStyle = 'rgba(17, 19, 21, 0.75)';
     ctx.fillRect(0, canvas.height - 16 - lines.length * step, canvas.width, lines.length * step + 16);
     lines.forEach((line, i) => {
-      ctx.fillStyle = i === 0 && notes ? '#e6c35a' : '#e6e6e6';
+      ctx.fillStyle = '#e6e6e6';
       ctx.fillText(line, 12, canvas.height - 10 - (lines.length - 1 - i) * step);
     });
   },
@@ -147,12 +145,6 @@ const worldView = {
     const box = this.box.getBoundingClientRect();
     ctx.drawImage(gl, 0, 0, box.width, box.height);
     ctx.drawImage(this.labels, 0, 0, box.width, box.height);
-  },
-
-  // What of the state the page's world view does not show, said on the picture (nothing now:
-  // a scene source's world is drawn too).
-  notes() {
-    return '';
   },
 };
 app.views.world = worldView;
