@@ -339,6 +339,7 @@ const shots = [
   ['world-lesson', '?lesson=where-the-flow-comes-from'],
   // A scene's world: the street's polygons in their levels' colours and the viewer's path.
   ['world-scene', '?view=world&source=scene:street:walk&frame=20'],
+  ['world-scene-1366', '?view=world&source=scene:street:walk&frame=20', [1366, 768]],
   // The scene-shifting view: the train window's slices beside its layered and exact frames.
   ['slices', '?view=slices&frame=30'],
   ['slices-1366', '?view=slices&frame=30', [1366, 768]],
