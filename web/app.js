@@ -2,7 +2,7 @@
 // The page's state and controls (manual/web.md). The state is the window state of the
 // desktop (session/state/window_state.h) as JSON; core owns it: every change goes through
 // Session.setState, which checks it with the session reader, and the page reads it back.
-// Views (flow_view.js, basis_view.js, comparison_view.js, analysis_view.js) draw the state on one
+// Views (flow_view.js, basis_view.js, comparison_view.js, analysis_view.js, slices_view.js) draw the state on one
 // 2D canvas; the world view (world_view.js) draws with vtk.js on its own WebGL canvas over it.
 
 const app = {
@@ -205,7 +205,7 @@ function bindControls() {
 }
 
 // Space plays and pauses; the arrows step (Up and Down by ten frames); Home and End go to
-// the first and the last frame; Page Down and Page Up step through a lesson; 1-5 pick a view,
+// the first and the last frame; Page Down and Page Up step through a lesson; 1-6 pick a view,
 // P the presentation mode.
 function onKey(e) {
   // The study panel takes its own keys (study_view.js), but Page Down and Page Up still step
@@ -230,6 +230,7 @@ function onKey(e) {
     3: () => editState((s) => { s.view = 'animation'; }),
     4: () => editState((s) => { s.view = 'analysis'; }),
     5: () => editState((s) => { s.view = 'world'; }),
+    6: () => editState((s) => { s.view = 'slices'; }),
     p: () => editState((s) => { s.presentation = !s.presentation; }),
   };
   const action = keys[e.key];
@@ -296,9 +297,10 @@ function fillScriptPicker() {
   for (const name of JSON.parse(Module.Session.scriptNamesJson())) $('script').add(new Option(name, name));
 }
 
-// Options from the URL: view=flow|world|basis|animation|analysis, script=NAME, frame=N, lesson=NAME,
-// step=K, presentation, explorer (the basis view's explorer); applied over the default
-// state (the screenshot tests use them).
+// Options from the URL: view=flow|world|basis|animation|analysis|slices, script=NAME,
+// source=KIND:NAME:VIEWER (the animation's source, e.g. scene:street:walk), frame=N,
+// lesson=NAME, step=K, presentation, explorer (the basis view's explorer); applied over the
+// default state (the screenshot tests use them).
 function applyUrlOptions(params) {
   if (params.has('lesson')) {
     startLesson(params.get('lesson'));
@@ -308,6 +310,10 @@ function applyUrlOptions(params) {
   editState((s) => {
     if (params.has('view')) s.view = params.get('view');
     if (params.has('script')) { s.script = params.get('script'); }
+    if (params.has('source')) {
+      const [kind, name = '', viewer = ''] = params.get('source').split(':');
+      s.animation.source = { kind, name, viewer };
+    }
     if (params.has('presentation')) s.presentation = true;
     if (params.has('explorer')) s.basis.explorer = true;
   }, 'the page address');

@@ -14,6 +14,7 @@
 #include "frame_pixels.h"
 #include "web_explorer.h"
 #include "web_session.h"
+#include "web_slices.h"
 #include "web_study.h"
 
 namespace oflab {
@@ -112,6 +113,12 @@ emscripten::val world_texture(const WebSession& s) {
   return out;
 }
 
+// The scene-shifting view's frame (WebSlices::pixels): a view into the module's memory.
+emscripten::val slice_pixels(WebSlices& s, bool exact, int width, int height) {
+  const std::vector<std::uint8_t>& pixels = s.pixels(exact, width, height);
+  return emscripten::val(emscripten::typed_memory_view(pixels.size(), pixels.data()));
+}
+
 // The colour of compared policy or study condition `index` (palette.h policy_colour).
 emscripten::val policy_rgb(int index) { return rgb_array(policy_colour(index)); }
 
@@ -181,4 +188,13 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
   emscripten::function("policyColour", &oflab::policy_rgb);
   emscripten::function("levelColours", &oflab::level_colours);
   emscripten::function("wheelTable", &oflab::wheel_table);
+}
+
+// The scene-shifting view's walk and diagram (web/web_slices.h).
+EMSCRIPTEN_BINDINGS(oflab_web_slices) {
+  using oflab::WebSlices;
+  emscripten::class_<WebSlices>("Slices")
+      .constructor<>()
+      .function("update", &WebSlices::update)
+      .function("pixels", &oflab::slice_pixels);
 }

@@ -81,7 +81,7 @@ function exactFrameHash() {
 }
 
 // Per view (the world view in 3D; the gallery and the explorer; the charts and the comparison on the swing
-// script; the comparison on the street scene): frames a second
+// script; the comparison on the street scene; the scene-shifting view): frames a second
 // of requestAnimationFrame over kViewFrames frames (after kViewWarmUp) stepping and drawing (paced by the
 // display), and the frames a second the page's own work per frame allows (1000 / its
 // median in ms: what an unpaced display could show).
@@ -93,7 +93,8 @@ async function selftestViews() {
     ['explorer', { view: 'basis', basis: { explorer: true } }],
     ['analysis', { view: 'analysis', script: 'swing' }],
     ['animation', { view: 'animation', script: 'swing' }],
-    ['animation-street', { view: 'animation', animation: { source: { kind: 'scene', name: 'street', viewer: 'walk' } } }]];
+    ['animation-street', { view: 'animation', animation: { source: { kind: 'scene', name: 'street', viewer: 'walk' } } }],
+    ['slices', { view: 'slices' }]];
   for (const [name, state] of cases) {
     app.session.setState(JSON.stringify(state), 'selftest');
     app.state = JSON.parse(app.session.stateJson());

@@ -247,11 +247,29 @@ const PlaneWorldLoop& WebSession::world_loop() {
   return world_loop_;
 }
 
+// The animator of a scene source (its kind walks a viewer through a scene), or nullptr.
+const Animator* WebSession::scene_animator() {
+  if (!lab_.run().source_kind().uses_viewer) return nullptr;
+  return lab_.run().animator();
+}
+
 std::string WebSession::world_loop_json() {
+  if (const Animator* animator = scene_animator()) {
+    if (scene_world_epoch_ != epoch_) {
+      scene_world_loop_ = scene_world_loop(*animator, PlanePanel::kSecondsPerFrame);
+      scene_world_epoch_ = epoch_;
+    }
+    return oflab::scene_world_loop_json(scene_world_loop_);
+  }
   return oflab::world_loop_json(world_loop(), lab_.panel().texture_source());
 }
 
 std::string WebSession::world_frame_json() {
+  if (const Animator* animator = scene_animator()) {
+    if (scene_world_epoch_ != epoch_) world_loop_json();
+    return oflab::scene_world_frame_json(scene_world_loop_, *animator,
+                                         PlanePanel::kSecondsPerFrame);
+  }
   return oflab::world_frame_json(world_loop(), lab_.panel());
 }
 

@@ -106,8 +106,10 @@ class WebSession {
   std::vector<double> flow_streamlines(const std::string& part_key, double spacing_px,
                                        double duration_s, int steps) const;
 
-  // The world view (web/world_json.h): the loop of the panel's plane, built once per state
-  // (every call that may change the state rebuilds it), and the frame shown.
+  // The world view (web/world_json.h): the loop of the panel's plane, or of a scene source's
+  // walk (a source kind that uses a viewer: the scene's polygons in their levels' colours and
+  // the viewer's path, as the desktop's world view), built once per state (every call that
+  // may change the state rebuilds it), and the frame shown.
   std::string world_loop_json();
   std::string world_frame_json();
   // The plane's texture (premultiplied RGBA, top row first), which the world view's plane shows.
@@ -168,6 +170,7 @@ class WebSession {
   // Per panel of the frame reached: the pixels at the panel size, heat map, PSNR.
   void sample_panels(const std::vector<const Animator*>& animators, int width, int height);
   const PlaneWorldLoop& world_loop();  // world_loop_, rebuilt when epoch_ moved
+  const Animator* scene_animator();    // the run's animator when its source uses a viewer
 
   Lab lab_;
   LabStage stage_{&lab_};            // lessons play on the lab, as `oflab-cli lesson` plays them
@@ -184,6 +187,8 @@ class WebSession {
   std::vector<WebPanel> panels_;       // compared runs (or the source's), then the exact one
   PlaneWorldLoop world_loop_;          // the world view's loop at world_epoch_
   int world_epoch_ = -1;
+  SceneWorldLoop scene_world_loop_;  // a scene source's walk at scene_world_epoch_
+  int scene_world_epoch_ = -1;
   std::string comparison_problem_;
   int sampled_frame_ = -1;  // the frame whose pixels the panels hold, at sampled_size_
   glm::ivec2 sampled_size_{0, 0};

@@ -1,6 +1,7 @@
 #include "world_json.h"
 
 #include <algorithm>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "display/palette.h"
@@ -36,6 +37,22 @@ json label_json(const std::string& key, const std::string& text, const Vec3& at)
   return {{"key", key}, {"text", text}, {"at", vec_json(at)}};
 }
 
+json camera_json(const Camera& c) {
+  return {{"width", c.width},
+          {"height", c.height},
+          {"focal_px", c.focal_px},
+          {"cx", c.cx},
+          {"cy", c.cy}};
+}
+
+json colours_json() {
+  namespace oi = okabe_ito;
+  return {{"velocity", rgb_json(oi::kVermillion)}, {"omega", rgb_json(oi::kReddishPurple)},
+          {"normal", rgb_json(oi::kBlue)},         {"up", rgb_json(oi::kBluishGreen)},
+          {"rays", rgb_json(oi::kYellow)},         {"path_past", rgb_json(oi::kOrange)},
+          {"plane", rgb_json(Rgb8{225, 225, 225})}};
+}
+
 }  // namespace
 
 PlaneWorldLoop panel_world_loop(const PlanePanel& panel) {
@@ -58,11 +75,8 @@ std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& textu
     hi = glm::max(hi, p);
   }
   json out;
-  out["camera"] = {{"width", c.width},
-                   {"height", c.height},
-                   {"focal_px", c.focal_px},
-                   {"cx", c.cx},
-                   {"cy", c.cy}};
+  out["kind"] = "plane";
+  out["camera"] = camera_json(c);
   out["depth"] = loop.depth;
   out["full_arrow"] = loop.full_arrow;
   out["largest_velocity"] = loop.largest_velocity;
@@ -73,12 +87,7 @@ std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& textu
   out["bounds"] = {lo.x, hi.x, lo.y, hi.y, lo.z, hi.z};
   out["caption"] = plane_world_caption(loop);
   out["texture"] = texture_source;
-  namespace oi = okabe_ito;
-  out["colours"] = {
-      {"velocity", rgb_json(oi::kVermillion)}, {"omega", rgb_json(oi::kReddishPurple)},
-      {"normal", rgb_json(oi::kBlue)},         {"up", rgb_json(oi::kBluishGreen)},
-      {"rays", rgb_json(oi::kYellow)},         {"path_past", rgb_json(oi::kOrange)},
-      {"plane", rgb_json(Rgb8{225, 225, 225})}};
+  out["colours"] = colours_json();
   return out.dump();
 }
 
@@ -103,6 +112,61 @@ std::string world_frame_json(const PlaneWorldLoop& loop, const PlanePanel& panel
                    label_json("omega", omega_label(f.motion), tip(f.motion.omega)),
                    label_json("normal", "N", tip(f.normal)),
                    label_json("up", "U", tip(f.up))};
+  return out.dump();
+}
+
+std::string scene_world_loop_json(const SceneWorldLoop& loop) {
+  Vec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  auto grow = [&](const Vec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  };
+  json outlines = json::array();
+  for (const std::vector<Vec3>& outline : loop.outlines) {
+    outlines.push_back(points_json(outline));
+    for (const Vec3& p : outline) grow(p);
+  }
+  for (const Vec3& p : loop.path) grow(p);
+  grow(viewer_to_world(loop.first_view, Vec3(0.0)));
+  json out;
+  out["kind"] = "scene";
+  out["camera"] = camera_json(loop.camera);
+  out["depth"] = loop.depth;
+  out["full_arrow"] = loop.full_arrow;
+  out["largest_velocity"] = loop.largest_velocity;
+  out["largest_omega"] = loop.largest_omega;
+  out["image_corners"] = points_json(image_plane_corners(loop.camera, loop.depth));
+  out["path"] = points_json(loop.path);
+  out["world_centre"] = vec_json(loop.world_centre);
+  out["first_view"] = viewer_to_world_matrix(loop.first_view);
+  out["bounds"] = {lo.x, hi.x, lo.y, hi.y, lo.z, hi.z};
+  out["outlines"] = outlines;
+  out["caption"] = scene_world_caption(false);  // the image plane is drawn grey
+  out["colours"] = colours_json();
+  return out.dump();
+}
+
+std::string scene_world_frame_json(const SceneWorldLoop& loop, const Animator& animator,
+                                   double seconds_per_frame) {
+  const SceneWorldFrame f = scene_world_frame(loop, animator, seconds_per_frame);
+  json colours = json::array();
+  for (const Rgb8& c : f.colours) colours.push_back(rgb_json(c));
+  const WorldArrow none;  // the plane's N and U: not drawn in a scene
+  json out;
+  out["frame"] = animator.frame();
+  out["viewer_matrix"] = f.viewer_matrix;
+  out["eye"] = vec_json(f.eye);
+  out["polygon_colours"] = colours;
+  out["omega_axis"] = points_json(f.motion.omega_axis);
+  out["path_index"] = f.path_index;
+  out["arrows"] = {{"velocity", arrow_json(f.motion.velocity)},
+                   {"omega", arrow_json(f.motion.omega)},
+                   {"normal", arrow_json(none)},
+                   {"up", arrow_json(none)}};
+  out["labels"] = {label_json("eye", "eye", f.eye),
+                   label_json("image_plane", "image plane", f.image_corners[0]),
+                   label_json("velocity", velocity_label(f.motion), tip(f.motion.velocity)),
+                   label_json("omega", omega_label(f.motion), tip(f.motion.omega))};
   return out.dump();
 }
 

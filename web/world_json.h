@@ -10,12 +10,13 @@
 #include <string>
 
 #include "display/world_geometry.h"
+#include "engine/animator.h"
 #include "player/plane_panel.h"
 
 namespace oflab {
 
 // The loop of the panel's plane (plane_world_loop of its script, PlanePanel::kSecondsPerFrame
-// apart): {"camera": {width, height, focal_px, cx, cy}, "depth", "full_arrow",
+// apart): {"kind": "plane", "camera": {width, height, focal_px, cx, cy}, "depth", "full_arrow",
 // "largest_velocity", "largest_omega", "image_corners": 4 points, "path": a point per frame,
 // "world_centre", "bounds": [xmin, xmax, ymin, ymax, zmin, zmax] of the eye, the image plane
 // and the plane's corners over the loop, "caption", "texture": `texture_source` (the file the
@@ -29,5 +30,19 @@ std::string world_loop_json(const PlaneWorldLoop& loop, const std::string& textu
 // "direction", "length", "matrix"}}, "labels": [{"key", "text", "at"}] for the eye, the
 // image plane, V, Omega, N and U (at the arrows' tips; "" text for an arrow not drawn)}.
 std::string world_frame_json(const PlaneWorldLoop& loop, const PlanePanel& panel);
+
+// A scene's walk (session/display/world_geometry.h scene_world_loop), in the scene's world
+// frame: {"kind": "scene", "camera", "depth", "full_arrow", "largest_velocity",
+// "largest_omega", "image_corners" (viewer frame: the frame's viewer_matrix places them),
+// "path" (the eye per frame), "world_centre", "first_view" (viewer_to_world_matrix of the
+// walk's first pose, row-major), "bounds" of the polygons, the path and the first eye,
+// "outlines": per polygon its vertices, "caption", "colours" (as the plane's)}.
+std::string scene_world_loop_json(const SceneWorldLoop& loop);
+// The animator's frame: {"frame", "viewer_matrix" (row-major, viewer to world), "eye",
+// "polygon_colours": per polygon [r, g, b] (scene_polygon_colour), "omega_axis",
+// "path_index", "arrows": {velocity, omega, normal, up (N and U: length 0, not drawn)},
+// "labels": eye, image plane, V, Omega}.
+std::string scene_world_frame_json(const SceneWorldLoop& loop, const Animator& animator,
+                                   double seconds_per_frame);
 
 }  // namespace oflab

@@ -1,7 +1,8 @@
 'use strict';
 // The world view, "World (the cause)": the eye, its frustum and image plane, the plane with
 // its normal N and up U, V and Omega as arrows, the rays through the plane's corners and the
-// path of its centre, in 3D with vtk.js (the bundle web/world/world_vtk.js, global
+// path of its centre (for a scene source: the scene's polygons in their levels' colours and
+// the viewer's path, the eye moving along it), in 3D with vtk.js (the bundle web/world/world_vtk.js, global
 // OflabWorld). Every point and matrix comes from the teaching layer (Session.worldLoopJson,
 // .worldFrameJson: session/display/world_geometry.h, the numbers the desktop's world view
 // draws); this file only hands them to vtk.js and writes the labels and the caption.
@@ -124,14 +125,12 @@ const worldView = {
     ctx.textBaseline = 'alphabetic';
     const lines = [];
     for (const part of this.loop.caption.split('\n')) lines.push(...wrapLines(ctx, part, canvas.width - 24));
-    const notes = this.notes();
-    if (notes) lines.unshift(notes);
     const step = 17 * style.scale;
     // A dark band under the caption keeps it readable over the picture.
     ctx.fillStyle = 'rgba(17, 19, 21, 0.75)';
     ctx.fillRect(0, canvas.height - 16 - lines.length * step, canvas.width, lines.length * step + 16);
     lines.forEach((line, i) => {
-      ctx.fillStyle = i === 0 && notes ? '#e6c35a' : '#e6e6e6';
+      ctx.fillStyle = '#e6e6e6';
       ctx.fillText(line, 12, canvas.height - 10 - (lines.length - 1 - i) * step);
     });
   },
@@ -146,16 +145,6 @@ const worldView = {
     const box = this.box.getBoundingClientRect();
     ctx.drawImage(gl, 0, 0, box.width, box.height);
     ctx.drawImage(this.labels, 0, 0, box.width, box.height);
-  },
-
-  // What of the state the page's world view does not show, said on the picture.
-  notes() {
-    const s = app.state;
-    const missing = [];
-    if (s.animation.source.kind !== 'plane' && s.animation.source.kind !== 'script') {
-      missing.push("a scene source's world (this is the scene panel's plane)");
-    }
-    return missing.length ? `In the desktop window only: ${missing.join('; ')}.` : '';
   },
 };
 app.views.world = worldView;

@@ -8,10 +8,7 @@
 #include <cmath>
 #include <functional>
 
-#include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
-#include "formats/scene_file.h"
-#include "formats/viewer_script_file.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "views/slider_spin.h"
@@ -30,9 +27,6 @@ QFont diagram_font(const ViewTheme& theme) {
   return font;
 }
 
-// Lateral extent of the diagram, world units either side of the axis.
-constexpr double kHalfWidth = 12.0;
-
 const QColor kBandA(90, 170, 120, 60), kBandB(90, 120, 170, 60);
 const QColor kAsymptote(213, 94, 0);  // Okabe-Ito vermillion
 const QColor kPlane(230, 159, 0);     // Okabe-Ito orange
@@ -40,12 +34,13 @@ const QColor kPlane(230, 159, 0);     // Okabe-Ito orange
 // The depth axis under the diagram: a tick and label at each depth_ticks value, the eye's
 // 0 at the left, and the axis title at the right.
 void draw_depth_axis(QPainter& p, const std::function<double(double)>& x_of, double left,
-                     double right, double bottom, double max_depth, const QColor& text) {
+                     double right, double bottom, const std::vector<double>& ticks,
+                     const QColor& text) {
   const QFontMetricsF fm(p.font());
   p.setPen(QPen(text, 1));
   p.drawLine(QPointF(left, bottom), QPointF(right, bottom));
   double last_right = -1e9;
-  for (double z : depth_ticks(max_depth)) {
+  for (double z : ticks) {
     const double x = x_of(z);
     p.drawLine(QPointF(x, bottom), QPointF(x, bottom + 5));
     const QString label = QString::number(z);
@@ -92,6 +87,20 @@ double draw_diagram_legend(QPainter& p, const QRectF& area, const ViewTheme& the
   return y + 1.2 * h;
 }
 
+// The scene's planes, seen from above: a thick line at each plane's depth across its
+// lateral extent (clamped to the diagram's).
+void draw_diagram_planes(QPainter& p, const std::vector<DiagramPlane>& planes,
+                         const std::function<double(double)>& x_of,
+                         const std::function<double(double)>& y_of) {
+  p.setPen(QPen(kPlane, 4));
+  const double half = kDiagramHalfWidth;
+  for (const DiagramPlane& pl : planes) {
+    if (pl.depth <= 0) continue;
+    p.drawLine(QPointF(x_of(pl.depth), y_of(std::clamp(pl.left, -half, half))),
+               QPointF(x_of(pl.depth), y_of(std::clamp(pl.right, -half, half))));
+  }
+}
+
 // A camera frame (premultiplied, painted over the background) scaled to fit under its title
 // in an image of `area`; an empty frame shows the title alone.
 QPixmap titled_picture(const Image& frame, const QString& title, const QSize& area,
@@ -121,19 +130,10 @@ QPixmap titled_picture(const Image& frame, const QString& title, const QSize& ar
 
 }  // namespace
 
-std::vector<double> depth_ticks(double max_depth) {
-  std::vector<double> ticks;
-  for (double decade = 1.0; decade <= max_depth; decade *= 10.0) {
-    for (double step : {1.0, 2.0, 5.0}) {
-      if (step * decade <= max_depth) ticks.push_back(step * decade);
-    }
-  }
-  return ticks;
-}
-
-QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, double asymptote,
-                     const std::vector<DiagramPlane>& planes, double max_depth,
-                     const ViewTheme& theme) {
+QImage paint_slice_diagram(int width, int height, const SliceDiagram& diagram,
+                           const ViewTheme& theme) {
+  const std::vector<Slice>& slices = diagram.slices;
+  const double asymptote = diagram.asymptote, max_depth = diagram.max_depth;
   QImage image(width, height, QImage::Format_RGB32);
   image.fill(qcolor(theme.background));
   QPainter p(&image);
@@ -142,18 +142,18 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
   const double line = QFontMetricsF(p.font()).height();
   const double left = 40, right = width - 20, bottom = height - 2.4 * line - 10;
   p.setPen(qcolor(theme.text));
-  p.drawText(QPointF(left, line), QString("%1 slices (%2 finite + background)")
-                                      .arg(slices.size())
-                                      .arg(slices.empty() ? 0 : slices.size() - 1));
+  p.drawText(QPointF(left, line), QString::fromStdString(slice_diagram_title(diagram)));
   // Under the legend, a row of its own for the asymptote's label, so it never meets the
   // legend, the plane marks or the bands' edges.
   const double label_row =
       draw_diagram_legend(p, QRectF(left, 1.3 * line, right - left, line), theme);
   const double top = label_row + 1.2 * line + 4;
   std::function<double(double)> x_of = [&](double z) {
-    return left + (right - left) * std::sqrt(std::min(z, max_depth) / max_depth);
+    return left + (right - left) * diagram_depth_position(z, max_depth);
   };
-  auto y_of = [&](double x) { return top + (bottom - top) * (0.5 - x / (2.0 * kHalfWidth)); };
+  std::function<double(double)> y_of = [&](double x) {
+    return top + (bottom - top) * (0.5 - x / (2.0 * kDiagramHalfWidth));
+  };
   const QColor text = qcolor(theme.text);
   // Alternate slice bands, boundaries, and the background slice.
   for (size_t i = 0; i < slices.size(); ++i) {
@@ -169,26 +169,20 @@ QImage slice_diagram(int width, int height, const std::vector<Slice>& slices, do
     p.drawLine(QPointF(x_of(asymptote), top), QPointF(x_of(asymptote), bottom));
     p.drawLine(QPointF(x_of(asymptote), label_row + line), QPointF(x_of(asymptote), top));
     p.setPen(text);
-    const QString label = QString("asymptote Z = %1").arg(asymptote, 0, 'f', 2);
+    const QString label = QString::fromStdString(asymptote_label(diagram));
     const double w = QFontMetricsF(p.font()).horizontalAdvance(label);
     // Centred over its line, kept inside the diagram.
     const double x = std::clamp(x_of(asymptote) - w / 2, left, std::max(left, right - w));
     p.drawText(QRectF(x, label_row, w + 1, line), Qt::AlignLeft | Qt::AlignVCenter, label);
   }
-  // The scene's planes, seen from above.
-  p.setPen(QPen(kPlane, 4));
-  for (const DiagramPlane& pl : planes) {
-    if (pl.depth <= 0) continue;
-    p.drawLine(QPointF(x_of(pl.depth), y_of(std::clamp(pl.left, -kHalfWidth, kHalfWidth))),
-               QPointF(x_of(pl.depth), y_of(std::clamp(pl.right, -kHalfWidth, kHalfWidth))));
-  }
+  draw_diagram_planes(p, diagram.planes, x_of, y_of);
   // The eye.
   p.setPen(Qt::NoPen);
   p.setBrush(text);
   p.drawEllipse(QPointF(left, y_of(0.0)), 5, 5);
   p.setPen(text);
   p.drawText(QPointF(left - 30, y_of(0.0) - 8), "eye");
-  draw_depth_axis(p, x_of, left, right, bottom, max_depth, text);
+  draw_depth_axis(p, x_of, left, right, bottom, diagram.ticks, text);
   return image;
 }
 
@@ -224,19 +218,6 @@ SlicesView::SlicesView(WindowModel* window, QWidget* parent)
   layout->addLayout(controls);
   layout->addLayout(pictures, 1);
   layout->addWidget(caption_);
-  try {
-    scene_ = read_scene_file(resolve_scene_path("train-window"));
-    script_ = read_viewer_script_file(resolve_viewer_script_path("train-sideways"));
-  } catch (const std::exception& e) {
-    problem_ = QString::fromStdString(e.what());
-  }
-  if (problem_.isEmpty()) {
-    try {
-      exact_ = exact_renderers().front().make(scene_, script_.camera, EngineSettings());
-    } catch (const std::exception& e) {  // a scene the renderer refuses: the slices alone
-      exact_problem_ = QString::fromStdString(e.what());
-    }
-  }
   epsilon_->set_value(1.0);
   speed_->set_value(0.05);
   connect(epsilon_, &SliderSpin::edited, this, [this](double) { restart(); });
@@ -248,39 +229,11 @@ SlicesView::SlicesView(WindowModel* window, QWidget* parent)
 SlicesView::~SlicesView() = default;
 
 double SlicesView::epsilon_px() const { return epsilon_->value(); }
-
-const Image& SlicesView::shifted_image() const {
-  static const Image kEmpty;
-  return renderer_ ? renderer_->frame() : kEmpty;
-}
-
-// The exact projection of the script's current frame (core's exact render), beside the
-// slices' frame.
-void SlicesView::render_exact() {
-  exact_frame_ = Image();
-  if (!exact_ || frame_ >= static_cast<int>(script_.frames.size())) return;
-  exact_frame_ = exact_->render(script_.frames[size_t(frame_)].pose);
-}
 double SlicesView::speed() const { return speed_->value(); }
 
 void SlicesView::restart() {
-  frame_ = 0;
-  renderer_.reset();
-  slices_.clear();
+  walk_.set_slicing(epsilon_->value(), speed_->value());
   diagram_current_ = false;
-  if (problem_.isEmpty() && !script_.frames.empty()) {
-    SceneShiftingSettings s;
-    s.epsilon_px = epsilon_->value();
-    s.design_speed = speed_->value();
-    try {
-      renderer_ = std::make_unique<SceneShiftingRenderer>(scene_, script_.camera, s);
-      renderer_->start(script_.frames[0].pose);
-      slices_ = renderer_->slices();
-    } catch (const std::exception& e) {
-      renderer_.reset();
-      caption_->setText(QString("Cannot slice: ") + e.what());
-    }
-  }
   refresh();
 }
 
@@ -294,73 +247,35 @@ void SlicesView::showEvent(QShowEvent* event) {
 }
 
 void SlicesView::catch_up() {
-  if (!renderer_ || script_.frames.size() < 2) return;
-  const int target = window_->scene()->frame() % static_cast<int>(script_.frames.size());
-  if (target == frame_) return;
-  // Scene shifting keeps no undo state: going back restarts from frame 0 (as the animation
-  // model does), so every frame shown is what an uninterrupted run shows.
-  if (target < frame_) {
-    const int kept = target;
-    restart();
-    if (kept == 0) return;
-  }
-  while (frame_ < target) {
-    const ViewerFrame& previous = script_.frames[size_t(frame_)];
-    ++frame_;
-    renderer_->advance(previous.pose, previous.motion, script_.frames[size_t(frame_)].pose);
-  }
-  refresh();
+  const int before = walk_.frame();
+  walk_.go_to(window_->scene()->frame());
+  if (walk_.frame() != before) refresh();
 }
 
 void SlicesView::refresh() {
-  if (!problem_.isEmpty()) {
-    caption_->setText("Scene shifting needs the train-window scene: " + problem_);
+  if (!walk_.problem().empty()) {
+    caption_->setText(QString::fromStdString(walk_.caption(window_->scene()->frame())));
     return;
   }
-  std::vector<DiagramPlane> planes;
-  if (!script_.frames.empty()) {
-    for (const ScenePolygon& poly : scene_.polygons) {
-      const Vec3 c = to_view(script_.frames[0].pose, poly.centre);
-      planes.push_back({c.z, c.x - 0.5 * poly.size.x, c.x + 0.5 * poly.size.x});
-    }
-  }
-  const double k = script_.camera.focal_px;
-  const double asymptote = k * speed_->value() / epsilon_->value();
-  const double max_depth = std::max(50.0, 1.25 * asymptote);
   // The diagram changes with the slices (a restart), the theme and the size, not per frame.
   const QSize area = diagram_->size().expandedTo(QSize(160, 120));
   if (!diagram_current_ || area != diagram_size_) {
     diagram_->setPixmap(QPixmap::fromImage(
-        slice_diagram(area.width(), area.height(), slices_, asymptote, planes, max_depth, theme_)));
+        paint_slice_diagram(area.width(), area.height(), walk_.diagram(), theme_)));
     diagram_current_ = true;
     diagram_size_ = area;
   }
-  if (renderer_) {
-    frame_label_->setPixmap(titled_picture(renderer_->frame(), tr("scene shifting (slices)"),
+  if (walk_.slicing_problem().empty()) {
+    frame_label_->setPixmap(titled_picture(walk_.shifted_image(), tr("scene shifting (slices)"),
                                            frame_label_->size().expandedTo(QSize(160, 120)),
                                            theme_));
   }
-  render_exact();
+  const std::string& exact_problem = walk_.exact_problem();
   exact_label_->setPixmap(titled_picture(
-      exact_frame_,
-      exact_problem_.isEmpty() ? QString::fromStdString(exact_renderers().front().title)
-                               : exact_problem_,
+      walk_.exact_image(),
+      QString::fromStdString(exact_problem.empty() ? SliceWalk::kExactTitle : exact_problem),
       exact_label_->size().expandedTo(QSize(160, 120)), theme_));
-  // The walk is shorter than the window's loop: say which of its frames the play bar's is.
-  const int window_frame = window_->scene()->frame();
-  const QString wrapped = window_frame == frame_
-                              ? QString()
-                              : QString(" (the play bar's frame %1: the %2-frame walk repeats)")
-                                    .arg(window_frame)
-                                    .arg(script_.frames.size());
-  caption_->setText(QString("Frame %1%2: a viewer moving sideways at %3 units/frame, slices "
-                            "cut so every point of a slice moves within %4 px of the others "
-                            "(eq. 9, asymptote k|V|/epsilon = %5).")
-                        .arg(frame_)
-                        .arg(wrapped)
-                        .arg(speed_->value())
-                        .arg(epsilon_->value())
-                        .arg(asymptote, 0, 'f', 2));
+  caption_->setText(QString::fromStdString(walk_.caption(window_->scene()->frame())));
 }
 
 QString SlicesView::caption() const { return caption_->text(); }

@@ -25,37 +25,6 @@ namespace {
 
 RgbF rgbf(const Rgb8& c) { return {c.r / 255.0, c.g / 255.0, c.b / 255.0}; }
 
-// The viewer script a scene source plays, or nullptr for other animators.
-const ViewerScript* viewer_script_of(const Animator* animator) {
-  if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(animator)) {
-    return &scene->script();
-  }
-  if (const auto* shifting = dynamic_cast<const SceneShiftingAnimator*>(animator)) {
-    return &shifting->script();
-  }
-  return nullptr;
-}
-
-// How a polygon of a scene is drawn: its level's colour when it was drawn this frame, pale
-// when culled, dark when hidden by polygons in front.
-std::array<unsigned char, 4> polygon_colour(PolygonStatus status, Level level) {
-  switch (status) {
-    case PolygonStatus::kAnimated:
-    case PolygonStatus::kClipped: {
-      const Rgb8 c = level_colour(status == PolygonStatus::kClipped ? Level::kRerender : level);
-      return {c.r, c.g, c.b, 255};
-    }
-    case PolygonStatus::kBackFacing:
-    case PolygonStatus::kOutsideFrustum:
-      return {215, 215, 215, 255};
-    case PolygonStatus::kHidden:
-      return {70, 70, 70, 255};
-    case PolygonStatus::kStarved:
-      return {0, 0, 0, 255};
-  }
-  return {128, 128, 128, 255};
-}
-
 }  // namespace
 
 WorldScene::WorldScene() {
@@ -204,30 +173,21 @@ void WorldScene::load_scene(AnimationModel& animation) {
     set_coloured_polygons(polygons.data, {}, {});
     return;
   }
-  camera = animator->camera();
-  std::vector<std::vector<Vec3>> outlines;
-  std::vector<Vec3> points;
-  for (const ScenePolygon& polygon : animator->scene().polygons) {
-    outlines.push_back(polygon_vertices(polygon));
-    points.insert(points.end(), outlines.back().begin(), outlines.back().end());
-  }
-  set_coloured_polygons(
-      polygons.data, outlines,
-      std::vector<std::array<unsigned char, 4>>(outlines.size(), {150, 150, 150, 255}));
-  const double dt = SceneModel::kSecondsPerFrame;
-  first_view = animator->view();
-  if (const ViewerScript* script = viewer_script_of(animator)) {
-    for (const ViewerFrame& f : script->frames) {
-      path.push_back(viewer_to_world(f.pose, Vec3(0.0)));
-      largest_velocity = std::max(largest_velocity, glm::length(f.motion.velocity) / dt);
-      largest_omega = std::max(largest_omega, glm::length(f.motion.omega) / dt);
-    }
-    first_view = script->frames.front().pose;
-  }
-  depth = scene_image_depth(points);
-  full_arrow = 2.0 * depth;
-  world_centre = Vec3(0.0);
-  for (const Vec3& p : points) world_centre += p / double(points.size());
+  // The walk's numbers are the teaching layer's (display/world_geometry.h), as the page's.
+  const SceneWorldLoop loop = scene_world_loop(*animator, SceneModel::kSecondsPerFrame);
+  camera = loop.camera;
+  const Rgb8 grey = kUnreportedPolygon;
+  set_coloured_polygons(polygons.data, loop.outlines,
+                        std::vector<std::array<unsigned char, 4>>(loop.outlines.size(),
+                                                                  {grey.r, grey.g, grey.b, 255}));
+  path = loop.path;
+  largest_velocity = loop.largest_velocity;
+  largest_omega = loop.largest_omega;
+  first_view = loop.first_view;
+  depth = loop.depth;
+  full_arrow = loop.full_arrow;
+  world_centre = loop.world_centre;
+  scene_loop = loop;
 }
 
 // One frame: every actor keeps its identity; points, matrices and pixels change.
@@ -300,41 +260,16 @@ void WorldScene::update_plane(const SceneModel& scene) {
 void WorldScene::update_scene(AnimationModel& animation) {
   Animator* animator = animation.animator();
   if (!animator) return;
-  place_viewer(animator->view());
-  centre = viewer_to_world(view, Vec3(0.0));
-  const size_t count = animator->scene().polygons.size();
-  std::vector<std::array<unsigned char, 4>> colours(count, {150, 150, 150, 255});
-  if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(animator)) {
-    const std::vector<PolygonStatus>& statuses = scene->renderer().statuses();
-    const std::vector<Level>& levels = scene->renderer().levels();
-    for (size_t k = 0; k < count && k < statuses.size() && k < levels.size(); ++k) {
-      colours[k] = polygon_colour(statuses[k], levels[k]);
-    }
-  }
+  const SceneWorldFrame f = scene_world_frame(scene_loop, *animator, SceneModel::kSecondsPerFrame);
+  place_viewer(f.view);
+  centre = f.eye;
+  std::vector<std::array<unsigned char, 4>> colours;
+  for (const Rgb8& c : f.colours) colours.push_back({c.r, c.g, c.b, 255});
   set_cell_colours(polygons.data, colours);
-  const int frame = animator->frame();
-  const ViewerScript* script = viewer_script_of(animator);
-  const double dt = SceneModel::kSecondsPerFrame;
-  if (script && frame >= 0 && frame < int(script->frames.size())) {
-    const RigidMotion& motion = script->frames[size_t(frame)].motion;
-    const Mat3 to_world = glm::transpose(view.rotation);
-    // In a scene the eye is crowded with the frustum's labels: both arrows start ahead of it.
-    const Vec3 at = viewer_to_world(view, Vec3(0.0, 0.0, 1.5 * depth));
-    place_motion(motion_arrows(at, at, viewer_to_world(view, Vec3(0.0)),
-                               to_world * motion.velocity / dt, to_world * motion.omega / dt,
-                               largest_velocity, largest_omega, full_arrow));
-  }
-  split_path(frame);
+  if (f.walking) place_motion(f.motion);
+  split_path(f.path_index);
   copy_frame_pixels(animator->image(), frame_pixels, theme.image_background);
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "The viewer walks through the scene; its image plane shows the "
-                "engine's frame.\n"
-                "Polygons in their level's colour (translate sky blue, affine green, "
-                "perspective orange, re-render vermillion); culled pale, hidden dark.\n"
-                "V and Omega: the scene's motion seen by the viewer (Omega about the eye). "
-                "Viewer's path: past thick, future thin.");
-  caption_body = text;
+  caption_body = scene_world_caption(true);
 }
 
 void WorldScene::show_parts() {

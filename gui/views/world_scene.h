@@ -93,6 +93,7 @@ struct WorldScene {
   bool source_dirty = true;
   bool scene_mode = false;
   PlaneWorldLoop plane_loop;  // the plane's loop (display/world_geometry.h), set by load_plane
+  SceneWorldLoop scene_loop;  // a scene's walk (display/world_geometry.h), set by load_scene
   std::vector<Vec3> path;     // plane centres, or the viewer's eye, per frame, world units
   // The plane's corners at every frame of the loop (empty for a scene), world units: what
   // the orbit camera frames.

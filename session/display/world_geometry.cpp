@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "scene/scene_animator.h"
+#include "scene_shifting/scene_shifting_renderer.h"
+
 namespace oflab {
 
 std::array<Vec3, 4> image_plane_corners(const Camera& camera, double depth) {
@@ -164,6 +167,107 @@ std::string omega_label(const MotionArrows& arrows) {
   std::snprintf(text, sizeof text, "Omega %.2f rad/s about the eye",
                 glm::length(arrows.omega.direction));
   return text;
+}
+
+namespace {
+
+// The viewer script a scene source plays, or nullptr for other animators.
+const ViewerScript* viewer_script_of(const Animator& animator) {
+  if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(&animator)) {
+    return &scene->script();
+  }
+  if (const auto* shifting = dynamic_cast<const SceneShiftingAnimator*>(&animator)) {
+    return &shifting->script();
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+Rgb8 scene_polygon_colour(PolygonStatus status, Level level) {
+  switch (status) {
+    case PolygonStatus::kAnimated:
+      return level_colour(level);
+    case PolygonStatus::kClipped:
+      return level_colour(Level::kRerender);
+    case PolygonStatus::kBackFacing:
+    case PolygonStatus::kOutsideFrustum:
+      return {215, 215, 215};
+    case PolygonStatus::kHidden:
+      return {70, 70, 70};
+    case PolygonStatus::kStarved:
+      return {0, 0, 0};
+  }
+  return kUnreportedPolygon;
+}
+
+SceneWorldLoop scene_world_loop(const Animator& animator, double seconds_per_frame) {
+  SceneWorldLoop loop;
+  loop.camera = animator.camera();
+  std::vector<Vec3> points;
+  for (const ScenePolygon& polygon : animator.scene().polygons) {
+    loop.outlines.push_back(polygon_vertices(polygon));
+    points.insert(points.end(), loop.outlines.back().begin(), loop.outlines.back().end());
+  }
+  loop.first_view = animator.view();
+  if (const ViewerScript* script = viewer_script_of(animator)) {
+    for (const ViewerFrame& f : script->frames) {
+      loop.path.push_back(viewer_to_world(f.pose, Vec3(0.0)));
+      loop.largest_velocity =
+          std::max(loop.largest_velocity, glm::length(f.motion.velocity) / seconds_per_frame);
+      loop.largest_omega =
+          std::max(loop.largest_omega, glm::length(f.motion.omega) / seconds_per_frame);
+    }
+    if (!script->frames.empty()) loop.first_view = script->frames.front().pose;
+  }
+  loop.depth = scene_image_depth(points);
+  loop.full_arrow = 2.0 * loop.depth;
+  for (const Vec3& p : points) loop.world_centre += p / double(points.size());
+  return loop;
+}
+
+SceneWorldFrame scene_world_frame(const SceneWorldLoop& loop, const Animator& animator,
+                                  double seconds_per_frame) {
+  SceneWorldFrame out;
+  out.view = animator.view();
+  out.viewer_matrix = viewer_to_world_matrix(out.view);
+  out.eye = viewer_to_world(out.view, Vec3(0.0));
+  const std::array<Vec3, 4> corners = image_plane_corners(loop.camera, loop.depth);
+  for (size_t k = 0; k < 4; ++k) out.image_corners[k] = viewer_to_world(out.view, corners[k]);
+  out.colours.assign(loop.outlines.size(), kUnreportedPolygon);
+  if (const auto* scene = dynamic_cast<const SceneScriptAnimator*>(&animator)) {
+    const std::vector<PolygonStatus>& statuses = scene->renderer().statuses();
+    const std::vector<Level>& levels = scene->renderer().levels();
+    for (size_t k = 0; k < out.colours.size() && k < statuses.size() && k < levels.size(); ++k) {
+      out.colours[k] = scene_polygon_colour(statuses[k], levels[k]);
+    }
+  }
+  const int frame = animator.frame();
+  const ViewerScript* script = viewer_script_of(animator);
+  if (script && frame >= 0 && frame < int(script->frames.size())) {
+    const RigidMotion& motion = script->frames[size_t(frame)].motion;
+    const Mat3 to_world = glm::transpose(out.view.rotation);
+    const Vec3 at = viewer_to_world(out.view, Vec3(0.0, 0.0, 1.5 * loop.depth));
+    out.walking = true;
+    out.motion = motion_arrows(at, at, out.eye, to_world * motion.velocity / seconds_per_frame,
+                               to_world * motion.omega / seconds_per_frame, loop.largest_velocity,
+                               loop.largest_omega, loop.full_arrow);
+  }
+  out.path_index = loop.path.empty() ? 0 : std::clamp(frame, 0, int(loop.path.size()) - 1);
+  return out;
+}
+
+std::string scene_world_caption(bool frame_on_image_plane) {
+  return std::string(frame_on_image_plane
+                         ? "The viewer walks through the scene; its image plane shows the "
+                           "engine's frame.\n"
+                         : "The viewer walks through the scene; the comparison view shows the "
+                           "engine's frame.\n") +
+         "Polygons in their level's colour (none grey, translate sky blue, affine green, "
+         "perspective "
+         "orange, re-render vermillion); culled pale, hidden dark.\n"
+         "V and Omega: the scene's motion seen by the viewer (Omega about the eye). Viewer's "
+         "path: past thick, future thin.";
 }
 
 }  // namespace oflab

@@ -19,11 +19,14 @@
 #include <string>
 #include <vector>
 
+#include "display/palette.h"
+#include "engine/animator.h"
 #include "engine/script.h"
 #include "flow/camera.h"
 #include "flow/geometry.h"
 #include "flow/motion.h"
 #include "flow/plane.h"
+#include "scene/polygon_layer.h"
 #include "scene/viewer_script.h"
 
 namespace oflab {
@@ -132,5 +135,56 @@ std::string plane_world_caption(const PlaneWorldLoop& loop);
 // for an arrow not drawn.
 std::string velocity_label(const MotionArrows& arrows);
 std::string omega_label(const MotionArrows& arrows);
+
+// A scene's world (an animator of a scene source: a scene walked by a viewer script, or
+// scene shifting), in the scene file's world frame: the scene's polygons, the viewer's
+// path, the eye's frustum and image plane moved by the viewer's pose each frame.
+
+// How a polygon of a scene is drawn: its level's colour (palette.h level_colour) when it was
+// drawn this frame (clipped polygons are re-rendered: the re-render colour), pale grey (215)
+// when culled (back-facing or outside the frustum), dark grey (70) when hidden by polygons in
+// front, black when starved.
+Rgb8 scene_polygon_colour(PolygonStatus status, Level level);
+// The colour of a polygon whose status the animator does not report (scene shifting's).
+constexpr Rgb8 kUnreportedPolygon{150, 150, 150};
+
+// What a scene's world shows over its whole walk: built once per source. Speeds per second,
+// lengths in world units.
+struct SceneWorldLoop {
+  Camera camera;
+  std::vector<std::vector<Vec3>> outlines;  // each polygon's vertices (core polygon_vertices)
+  std::vector<Vec3> path;                   // the eye at every frame of the walk
+  double largest_velocity = 0.0;            // of the scene's motion seen by the viewer
+  double largest_omega = 0.0;
+  double depth = 1.0;       // the image plane's: scene_image_depth of the polygons' vertices
+  double full_arrow = 2.0;  // the longest motion arrow: twice the depth
+  Vec3 world_centre{0.0};   // the mean of the polygons' vertices
+  ViewerPose first_view;    // the walk's first pose (the animator's view without a walk)
+};
+// The loop of `animator`'s scene and walk (its viewer script when it plays one, frames
+// `seconds_per_frame` > 0 apart).
+SceneWorldLoop scene_world_loop(const Animator& animator, double seconds_per_frame);
+
+// One frame of a scene's world: the viewer at the animator's view now.
+struct SceneWorldFrame {
+  ViewerPose view;
+  std::array<double, 16> viewer_matrix{};  // viewer_to_world_matrix(view)
+  Vec3 eye{0.0};                           // the eye in the world
+  std::array<Vec3, 4> image_corners;       // the image plane at loop.depth, world frame
+  std::vector<Rgb8> colours;               // per polygon: scene_polygon_colour
+  // V and Omega of the frame's scene motion (per second, world frame), both starting 1.5
+  // depths ahead of the eye (the eye is crowded with the frustum's labels), when `walking`
+  // (the animator plays a viewer script and the frame is one of its frames).
+  bool walking = false;
+  MotionArrows motion;
+  int path_index = 0;  // the frame clamped to the path: past ..k, future k..
+};
+SceneWorldFrame scene_world_frame(const SceneWorldLoop& loop, const Animator& animator,
+                                  double seconds_per_frame);
+
+// The caption under a scene's world: the image plane (showing the engine's frame when
+// `frame_on_image_plane`, as the desktop draws it; else a grey rectangle, as the page's), the
+// polygons' colours, the arrows and the path.
+std::string scene_world_caption(bool frame_on_image_plane);
 
 }  // namespace oflab

@@ -17,7 +17,8 @@
 //   controls). A failing screenshot is written to --out.
 // - The world view (vtk.js): its numbers are the teaching layer's as the flow view sees them
 //   (a moved corner is caught), playing keeps its actors, a drag turns it, and the world
-//   lesson shows it beside the flow view.
+//   lesson shows it beside the flow view. A scene's world and the scene-shifting view:
+//   tests/web/views_test.js.
 // - The basis explorer's planes and motions are `oflab-cli explain`'s for its coefficients.
 // - Every step of every shipped lesson shows the state and frame `oflab-cli lesson state`
 //   gives (--cli, default build/analysis/oflab-cli); a changed frame is caught.
@@ -42,6 +43,7 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
+const { testSlicesView, testSceneWorld } = require('./views_test');
 
 const root = path.resolve(__dirname, '..', '..');
 const args = process.argv.slice(2);
@@ -198,7 +200,7 @@ async function testSelftest(browser) {
   check('SelftestLessonsEqualTheCliStates', Object.keys(result.lessons || {}).length === 19 && parts >= 53 && lessonDiffer.length === 0,
     `${parts} parts${lessonDiffer.length ? `; differ: ${lessonDiffer.slice(0, 5).join(', ')}` : ''}`);
   const views = Object.entries(result.views || {});
-  check('SelftestReportsViewsAndTimeToInteractive', views.length === 7 && 'world' in result.views && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
+  check('SelftestReportsViewsAndTimeToInteractive', views.length === 8 && 'world' in result.views && 'slices' in result.views && views.every(([, v]) => v.paced_fps > 0 && v.unpaced_fps > 0) &&
     result.time_to_interactive_ms > 0, `interactive after ${result.time_to_interactive_ms} ms; ` +
     views.map(([n, v]) => `${n} ${v.paced_fps.toFixed(1)} paced, ${v.unpaced_fps.toFixed(0)} unpaced fps`).join(', '));
 }
@@ -335,6 +337,12 @@ const shots = [
   ['world', '?view=world&frame=20'],
   ['world-1366', '?view=world&frame=20', [1366, 768]],
   ['world-lesson', '?lesson=where-the-flow-comes-from'],
+  // A scene's world: the street's polygons in their levels' colours and the viewer's path.
+  ['world-scene', '?view=world&source=scene:street:walk&frame=20'],
+  ['world-scene-1366', '?view=world&source=scene:street:walk&frame=20', [1366, 768]],
+  // The scene-shifting view: the train window's slices beside its layered and exact frames.
+  ['slices', '?view=slices&frame=30'],
+  ['slices-1366', '?view=slices&frame=30', [1366, 768]],
   ['flow-presentation', '?view=flow&frame=60&presentation'],
   ['basis', '?view=basis&frame=20'],
   ['comparison', '?view=animation&script=swing&frame=40'],
@@ -884,6 +892,9 @@ async function bench(browser) {
       await testSelftest(browser);
       await testScreenshots(browser);
       await testWorld(browser);
+      const helpers = { browser, open, evaluate, check, drawnMarker, cli: path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli'))) };
+      await testSlicesView(helpers);
+      await testSceneWorld(helpers);
       await testControls(browser);
       await testExplorer(browser);
       await testLessonStates(browser);

@@ -7,6 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "formats/scene_file.h"
+#include "formats/viewer_script_file.h"
+#include "scene/scene_animator.h"
+
 namespace oflab::test {
 namespace {
 
@@ -92,6 +96,39 @@ TEST(WorldJson, FrameIsTheTeachingLayersPlaneFrame) {
   // The control: another frame's numbers differ.
   const json other = json::parse(world_frame_json(loop, drifting_panel(12)));
   EXPECT_NE(other["plane_corners"], out["plane_corners"]);
+}
+
+// A scene source's world: the loop's polygons and path and the frame's viewer matrix and
+// colours are the teaching layer's scene world, to the bit.
+TEST(WorldJson, SceneIsTheTeachingLayersSceneWorld) {
+  auto scene = std::make_shared<const Scene>(read_scene_file(resolve_scene_path("street")));
+  const ViewerScript walk = read_viewer_script_file(resolve_viewer_script_path("walk"));
+  const auto animator = make_scene_animator(scene, walk, SceneSettings{});
+  const double dt = PlanePanel::kSecondsPerFrame;
+  const SceneWorldLoop loop = scene_world_loop(*animator, dt);
+  const json out = json::parse(scene_world_loop_json(loop));
+  EXPECT_EQ(out["kind"], "scene");
+  ASSERT_EQ(out["outlines"].size(), loop.outlines.size());
+  for (size_t k = 0; k < loop.outlines[0].size(); ++k)
+    expect_point(out["outlines"][0][k], loop.outlines[0][k], "outline");
+  ASSERT_EQ(out["path"].size(), loop.path.size());
+  expect_point(out["path"][5], loop.path[5], "path");
+  EXPECT_EQ(out["caption"].get<std::string>(), scene_world_caption(false));
+  animator->start();
+  for (int k = 0; k < 4; ++k) animator->advance();
+  const SceneWorldFrame f = scene_world_frame(loop, *animator, dt);
+  const json frame = json::parse(scene_world_frame_json(loop, *animator, dt));
+  EXPECT_EQ(frame["frame"].get<int>(), 4);
+  for (size_t i = 0; i < 16; ++i)
+    EXPECT_EQ(frame["viewer_matrix"][i].get<double>(), f.viewer_matrix[i]) << i;
+  ASSERT_EQ(frame["polygon_colours"].size(), f.colours.size());
+  for (size_t k = 0; k < f.colours.size(); ++k)
+    EXPECT_EQ(frame["polygon_colours"][k][0].get<int>(), int(f.colours[k].r)) << k;
+  EXPECT_EQ(frame["arrows"]["normal"]["length"].get<double>(), 0.0);  // no plane in a scene
+  // The control: a later frame's eye is elsewhere.
+  for (int k = 0; k < 10; ++k) animator->advance();
+  const json later = json::parse(scene_world_frame_json(loop, *animator, dt));
+  EXPECT_NE(later["viewer_matrix"], frame["viewer_matrix"]);
 }
 
 }  // namespace

@@ -89,6 +89,18 @@ function transposed(m) {
   return Float64Array.from(range(16), (i) => m[4 * (i % 4) + Math.floor(i / 4)]);
 }
 
+// Row-major 4x4 `m` applied to point p (w = 1) or, with w = 0, to direction p.
+function applied(m, p, w = 1) {
+  return [0, 1, 2].map((r) => m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3] * w);
+}
+
+// Per-cell colours (opaque [r, g, b] bytes per cell) of polydata `data`, drawn as they are.
+function setCellColours(data, colours) {
+  const values = Uint8Array.from(colours.flatMap(([r, g, b]) => [r, g, b, 255]));
+  data.getCellData().setScalars(vtkDataArray.newInstance({ name: 'colours', numberOfComponents: 4, values }));
+  data.modified();
+}
+
 class World {
   constructor(container) {
     this.container = container;
@@ -146,16 +158,39 @@ class World {
     setCells(this.imagePlane.data, corners, 'polys', [[0, 1, 2, 3]]);
     const from = [[0, 0, 0], [0, 0, 0], [0, 0, 0], [0, 0, 0]].concat(corners);
     setSegments(this.frustum.data, from, corners.concat([1, 2, 3, 0].map((k) => corners[k])));
+    this.scene = loop.kind === 'scene';
+    if (this.scene) this.addScene(loop, theme);
     this.framed = false;
+  }
+
+  // A scene's polygons (their colours set per frame) with their edges; the plane's actors
+  // stay empty and hidden.
+  addScene(loop, theme) {
+    this.polygons = polyActor(this.renderer, [1, 1, 1]);
+    const mapper = this.polygons.actor.getMapper();
+    mapper.setScalarModeToUseCellData();
+    mapper.setColorModeToDirectScalars();
+    mapper.setScalarVisibility(true);
+    const points = [];
+    const cells = [];
+    for (const outline of loop.outlines) {
+      cells.push(range(outline.length).map((i) => points.length + i));
+      points.push(...outline);
+    }
+    setCells(this.polygons.data, points, 'polys', cells);
+    setCellColours(this.polygons.data, loop.outlines.map(() => [150, 150, 150]));
+    this.polygonEdges = polyActor(this.renderer, rgb(theme.outline), theme.line);
+    setCells(this.polygonEdges.data, points, 'lines', cells.map((c) => c.concat([c[0]])));
+    for (const p of [this.plane, this.planeOutline, this.rays, this.rayImages]) p.actor.setVisibility(false);
   }
 
   // Moves the actors to `frame` (Session.worldFrameJson): points and matrices only.
   setFrame(frame) {
-    const corners = frame.plane_corners;
-    setCells(this.plane.data, corners, 'polys', [[0, 1, 2, 3]]);
-    setPolyline(this.planeOutline.data, corners, true);
-    setSegments(this.rays.data, corners.map(() => [0, 0, 0]), corners);
-    setPolyline(this.rayImages.data, frame.ray_images, true);
+    if (this.scene) {
+      this.setSceneFrame(frame);
+    } else {
+      this.setPlaneFrame(frame);
+    }
     setPolyline(this.omegaAxis.data, frame.omega_axis, false);
     const path = this.loop.path;
     const k = Math.min(Math.max(frame.path_index, 0), path.length - 1);
@@ -165,6 +200,23 @@ class World {
       a.actor.setUserMatrix(transposed(frame.arrows[name].matrix));
     }
     this.frame = frame;
+    if (this.fromEye && this.scene) this.viewFromEye(0.12);
+  }
+
+  // A scene's frame: the eye, its frustum and image plane moved to the viewer's pose, the
+  // polygons in this frame's colours.
+  setSceneFrame(frame) {
+    const m = transposed(frame.viewer_matrix);
+    for (const p of [this.eye, this.frustum, this.imagePlane]) p.actor.setUserMatrix(m);
+    setCellColours(this.polygons.data, frame.polygon_colours);
+  }
+
+  setPlaneFrame(frame) {
+    const corners = frame.plane_corners;
+    setCells(this.plane.data, corners, 'polys', [[0, 1, 2, 3]]);
+    setPolyline(this.planeOutline.data, corners, true);
+    setSegments(this.rays.data, corners.map(() => [0, 0, 0]), corners);
+    setPolyline(this.rayImages.data, frame.ray_images, true);
   }
 
   // Shows or hides the parts ({frustum, image_plane, plane, velocity, omega, rays, path}:
@@ -175,12 +227,14 @@ class World {
     this.eye.actor.setVisibility(on('frustum') && !fromEye);
     this.frustum.actor.setVisibility(on('frustum'));
     this.imagePlane.actor.setVisibility(on('image_plane'));
-    for (const p of [this.plane, this.planeOutline, this.arrows.normal, this.arrows.up]) p.actor.setVisibility(on('plane'));
+    const plane = on('plane') && !this.scene;
+    for (const p of [this.plane, this.planeOutline, this.arrows.normal, this.arrows.up]) p.actor.setVisibility(plane);
+    if (this.scene) for (const p of [this.polygons, this.polygonEdges]) p.actor.setVisibility(on('scene'));
     this.arrows.velocity.actor.setVisibility(on('velocity'));
     this.arrows.omega.actor.setVisibility(on('omega'));
     this.omegaAxis.actor.setVisibility(on('omega'));
-    this.rays.actor.setVisibility(on('rays'));
-    this.rayImages.actor.setVisibility(on('rays'));
+    this.rays.actor.setVisibility(on('rays') && !this.scene);
+    this.rayImages.actor.setVisibility(on('rays') && !this.scene);
     this.pathPast.actor.setVisibility(on('path'));
     this.pathFuture.actor.setVisibility(on('path'));
   }
@@ -190,6 +244,10 @@ class World {
   // gui/views/world_camera.cpp), fitted to the bounds of the eye, the image plane and the
   // plane over the loop by vtk.js's resetCamera.
   resetCamera() {
+    if (this.scene) {
+      this.resetSceneCamera();
+      return;
+    }
     const cam = this.renderer.getActiveCamera();
     const centre = this.loop.world_centre;
     const focus = centre.map((v) => v / 2);
@@ -201,6 +259,29 @@ class World {
     cam.setViewAngle(30);
     this.renderer.resetCamera(this.loop.bounds);
     cam.zoom(1.35);
+    this.framed = true;
+  }
+
+  // A scene, as the desktop frames it (gui/views/world_camera.cpp): from the left of the
+  // walk's first eye, a little behind and above it, looking at the middle of the eye and the
+  // scene's centre; closer in a wide view.
+  resetSceneCamera() {
+    const m = this.loop.first_view;
+    const eye = applied(m, [0, 0, 0]);
+    const [forward, right, up] = [[0, 0, 1], [1, 0, 0], [0, -1, 0]].map((d) => applied(m, d, 0));
+    const centre = this.loop.world_centre;
+    const focus = eye.map((v, i) => 0.5 * (v + centre[i]));
+    const distance = Math.max(1e-3, Math.hypot(...centre.map((v, i) => v - eye[i])));
+    const side = [0, 1, 2].map((i) => -0.55 * forward[i] - 1.0 * right[i] + 0.45 * up[i]);
+    const cam = this.renderer.getActiveCamera();
+    cam.setFocalPoint(...focus);
+    cam.setPosition(...focus.map((v, i) => v + distance * side[i]));
+    cam.setViewUp(...up);
+    cam.setViewAngle(30);
+    this.renderer.resetCamera(this.loop.bounds);
+    const box = this.container.getBoundingClientRect();
+    const aspect = box.width / Math.max(1, box.height);
+    cam.zoom(1.6 * Math.min(Math.max(aspect / 1.6, 0.6), 1.0));
     this.framed = true;
   }
 
@@ -216,9 +297,12 @@ class World {
     const halfV = Math.max(c.cy, c.height - c.cy) * k;
     const halfH = Math.max(c.cx, c.width - c.cx) * k;
     const cam = this.renderer.getActiveCamera();
-    cam.setPosition(0, 0, 0);
-    cam.setFocalPoint(0, 0, 1);
-    cam.setViewUp(0, -1, 0);
+    // In a scene the eye is the viewer's at the frame shown (the frame's viewer matrix).
+    const m = this.scene && this.frame ? this.frame.viewer_matrix : null;
+    const at = (p) => (m ? applied(m, p) : p);
+    cam.setPosition(...at([0, 0, 0]));
+    cam.setFocalPoint(...at([0, 0, 1]));
+    cam.setViewUp(...(m ? applied(m, [0, -1, 0], 0) : [0, -1, 0]));
     cam.setViewAngle(2 * Math.atan(Math.max(halfV, halfH / aspect)) * 180 / Math.PI);
     this.framed = true;
   }
@@ -226,6 +310,7 @@ class World {
   // Places the camera: through the eye (viewFromEye with the desktop's margin, 0.12) or
   // framing the loop (resetCamera), and shows the parts that placement shows.
   place(fromEye) {
+    this.fromEye = fromEye;
     if (fromEye) this.viewFromEye(0.12); else this.resetCamera();
     this.setShown({}, fromEye);
   }

@@ -42,12 +42,6 @@ TEST_F(SlicesViewTest, LargerEpsilonGivesFewerSlices) {
   EXPECT_LT(view->slice_count(), before);
 }
 
-TEST(SlicesDiagram, DepthTicksAreOneTwoFiveStepsUpToTheLargestDepth) {
-  EXPECT_EQ(depth_ticks(50.0), (std::vector<double>{1, 2, 5, 10, 20, 50}));
-  EXPECT_EQ(depth_ticks(7.0), (std::vector<double>{1, 2, 5}));
-  EXPECT_EQ(depth_ticks(0.5), std::vector<double>{});
-}
-
 // The exact panel is core's exact projection of the same viewer frame: where scene shifting
 // drew the scene, so did the exact render (slices moved as layers against every polygon
 // warped exactly: two different renderings of one frame).

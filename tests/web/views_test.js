@@ -1,0 +1,105 @@
+'use strict';
+// The page's scene-shifting view and a scene's world view (manual/web.md), run by
+// web_test.js with its browser and helpers ({ browser, open, evaluate, check, drawnMarker,
+// cli }).
+//
+// - The scene-shifting view (Module.Slices: session/player/slice_walk.h): its slices and
+//   asymptote are `oflab-cli slices`'s for the walk's focal length, nearest depth, epsilon and
+//   speed, to 1e-12 relative, at two epsilons; the CLI's slices for another epsilon are not the
+//   page's (negative control); the depth ticks are 1-2-5 steps up to the diagram's depth; the
+//   walk follows the play bar's frame and says when it repeats; both frames are drawn.
+// - A scene's world (session/display/world_geometry.h scene_world_loop and _frame): the
+//   street's 13 polygons with the walk's path, the eye on its path at the frame shown, the
+//   polygons in the levels' colours (culled ones pale), the scene's caption; the plane's
+//   world is still the plane's (negative control).
+const fs = require('fs');
+const path = require('path');
+const { spawnSync } = require('child_process');
+
+const root = path.resolve(__dirname, '..', '..');
+const kRelative = 1e-12;
+const close = (a, b) => a === b || Math.abs(a - b) <= kRelative * Math.max(Math.abs(a), Math.abs(b));
+
+// `oflab-cli slices --json` for the diagram's focal length, nearest depth and `epsilon`, `speed`.
+function cliSlices(cli, diagram, epsilon, speed) {
+  const r = spawnSync(cli, ['slices', '--speed', String(speed), '--focal', String(diagram.focal_px),
+    '--epsilon', String(epsilon), '--near', String(diagram.slices[0].near), '--json'], { encoding: 'utf8' });
+  return r.status === 0 ? JSON.parse(r.stdout) : { error: r.stderr.trim() };
+}
+
+// Differences between the page's diagram and the CLI's slices, one line each.
+function slicesProblems(diagram, cli) {
+  if (cli.error) return [`oflab-cli: ${cli.error}`];
+  const problems = [];
+  if (diagram.slices.length !== cli.slices.length) problems.push(`${diagram.slices.length} slices, the CLI's ${cli.slices.length}`);
+  diagram.slices.forEach((s, k) => {
+    const c = cli.slices[k];
+    if (!c || !close(s.near, c.near) || !(s.far === c.far || close(s.far, c.far))) problems.push(`slice ${k}: ${JSON.stringify(s)}, the CLI's ${JSON.stringify(c)}`);
+  });
+  if (!close(diagram.asymptote, cli.asymptote)) problems.push(`asymptote ${diagram.asymptote}, the CLI's ${cli.asymptote}`);
+  return problems;
+}
+
+// 1, 2 and 5 times powers of ten up to `max` (computed here, not by the page).
+function expectedTicks(max) {
+  const ticks = [];
+  for (let decade = 1; decade <= max; decade *= 10) for (const step of [1, 2, 5]) if (step * decade <= max) ticks.push(step * decade);
+  return ticks;
+}
+
+async function testSlicesView({ browser, open, evaluate, check, drawnMarker, cli }) {
+  await open(browser, '?view=slices&frame=10', drawnMarker);
+  const read = async (epsilon, frame) => JSON.parse(await evaluate(browser, `(() => {
+    if (${epsilon} > 0) { $('slices-epsilon').value = '${epsilon}'; $('slices-epsilon').dispatchEvent(new Event('input')); }
+    if (${frame} >= 0) seek(${frame});
+    draw();
+    const pixels = [0, 1].map((k) => slicesView.images[k] ? slicesView.images[k].data.some((v, i) => i % 4 !== 3 && v > 40) : false);
+    return JSON.stringify({ info: slicesView.info, view: document.body.dataset.view, pixels, message: $('message').textContent });
+  })()`));
+  const first = await read(0, -1);
+  const d = first.info.diagram;
+  const atOne = slicesProblems(d, cliSlices(cli, d, 1, 0.05));
+  check('SlicesViewShowsTheCliSlicesAndAsymptote', first.view === 'slices' && d.epsilon_px === 1 && d.speed === 0.05 &&
+    atOne.length === 0, `${d.slices.length} slices from ${d.slices[0].near.toFixed(3)}, asymptote ${d.asymptote}` +
+    `${atOne.length ? `; ${atOne.slice(0, 3).join('; ')}` : ''}${first.message ? `; ${first.message}` : ''}`);
+  check('SlicesViewDepthTicksAndRange', d.max_depth === Math.max(50, 1.25 * d.asymptote) &&
+    JSON.stringify(d.ticks) === JSON.stringify(expectedTicks(d.max_depth)) && d.planes.length > 0, `${d.ticks} up to ${d.max_depth}`);
+  check('SlicesViewFollowsTheFrameAndDrawsBothFrames', first.info.frame === 10 && first.pixels.every(Boolean) &&
+    !/repeats/.test(first.info.caption), `${first.info.caption} (pixels drawn: ${first.pixels})`);
+  const second = await read(2, first.info.frame_count + 10);
+  const atTwo = slicesProblems(second.info.diagram, cliSlices(cli, second.info.diagram, 2, 0.05));
+  check('SlicesViewRecutsForItsEpsilonAsTheCli', atTwo.length === 0 && second.info.diagram.epsilon_px === 2 &&
+    second.info.frame === 10 && /walk repeats/.test(second.info.caption),
+  `${second.info.diagram.slices.length} slices at epsilon 2; ${second.info.caption}${atTwo.length ? `; ${atTwo.slice(0, 3).join('; ')}` : ''}`);
+  // Negative control: the CLI's slices for epsilon 1 are not the page's at epsilon 2.
+  check('NegativeControl_SlicesOfAnotherEpsilonDiffer', slicesProblems(second.info.diagram, cliSlices(cli, d, 1, 0.05)).length > 0);
+}
+
+async function testSceneWorld({ browser, open, evaluate, check, drawnMarker }) {
+  await open(browser, '?view=world&source=scene:street:walk&frame=20', drawnMarker);
+  const got = JSON.parse(await evaluate(browser, `JSON.stringify({ loop: JSON.parse(app.session.worldLoopJson()),
+    frame: JSON.parse(app.session.worldFrameJson()), caption: worldView.loop.caption, levels: Module.levelColours(),
+    actors: worldView.world.renderer.getActors().length, message: $('message').textContent })`));
+  const street = JSON.parse(fs.readFileSync(path.join(root, 'datasets/scenes/street.json'), 'utf8'));
+  const { loop, frame } = got;
+  const eyeOnPath = loop.path[frame.path_index].every((v, i) => Math.abs(v - frame.eye[i]) <= 1e-12 * Math.max(1, Math.abs(v)));
+  // The eye at the viewer matrix's origin: its last column.
+  const origin = [3, 7, 11].map((i) => frame.viewer_matrix[i]);
+  const atOrigin = origin.every((v, i) => Math.abs(v - frame.eye[i]) <= 1e-9 * Math.max(1, Math.abs(v)));
+  check('SceneWorldShowsTheScenesPolygonsAndTheViewersPath', loop.kind === 'scene' && loop.outlines.length === street.polygons.length &&
+    loop.path.length > 1 && frame.frame === 20 && frame.path_index === 20 && eyeOnPath && atOrigin &&
+    !/desktop window only/.test(got.caption) && /walks through the scene/.test(got.caption),
+  `${loop.outlines.length} polygons (the file's ${street.polygons.length}), ${loop.path.length} path points, ${got.actors} actors` +
+    `${got.message ? `; ${got.message}` : ''}`);
+  const key = (c) => c.join(',');
+  const levels = new Set(Object.values(got.levels).map(key));
+  const colours = frame.polygon_colours.map(key);
+  check('SceneWorldColoursThePolygonsByLevel', colours.length === street.polygons.length &&
+    colours.some((c) => levels.has(c)) && colours.every((c) => levels.has(c) || ['215,215,215', '70,70,70', '0,0,0'].includes(c)),
+  colours.join(' '));
+  await open(browser, '?view=world&frame=20', drawnMarker);
+  const plane = JSON.parse(await evaluate(browser, 'app.session.worldLoopJson()'));
+  check('NegativeControl_ThePlanesWorldIsNoScene', plane.kind === 'plane' && !plane.outlines);
+}
+
+module.exports = { testSlicesView, testSceneWorld };
