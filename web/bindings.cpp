@@ -137,6 +137,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("setState", &WebSession::set_state)
       .function("addScript", &WebSession::add_script)
       .function("sessionFileText", &WebSession::session_file_text)
+      .function("runCsvJson", &WebSession::run_csv_json)
       .function("openSession", &WebSession::open_session)
       .function("checkClaimsJson", &WebSession::check_claims_json)
       .function("frameCount", &WebSession::frame_count)
@@ -166,6 +167,14 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .class_function("scriptNamesJson", &WebSession::script_names_json)
       .class_function("sceneNamesJson", &WebSession::scene_names_json)
       .class_function("stateSchemaJson", &WebSession::state_schema_json);
+  emscripten::function("heatColour", &oflab::heat_colour);
+  emscripten::function("policyColour", &oflab::policy_rgb);
+  emscripten::function("levelColours", &oflab::level_colours);
+  emscripten::function("wheelTable", &oflab::wheel_table);
+}
+
+// The threshold study's loop behind the page's study panel (web/web_study.h).
+EMSCRIPTEN_BINDINGS(oflab_web_study) {
   using oflab::WebStudy;
   emscripten::class_<WebStudy>("Study")
       .constructor<>()
@@ -184,10 +193,6 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("classResultsJson", &WebStudy::class_results_json)
       .function("curve", &oflab::study_curve)
       .class_function("shippedJson", &WebStudy::shipped_json);
-  emscripten::function("heatColour", &oflab::heat_colour);
-  emscripten::function("policyColour", &oflab::policy_rgb);
-  emscripten::function("levelColours", &oflab::level_colours);
-  emscripten::function("wheelTable", &oflab::wheel_table);
 }
 
 // The scene-shifting view's walk and diagram (web/web_slices.h).

@@ -119,6 +119,17 @@ function saveSession() {
   download(new Blob([app.session.sessionFileText()], { type: 'application/json' }), `${fileStem()}.json`);
 }
 
+// The animation's per-frame CSV over its whole run (the desktop's per-frame CSV export, the
+// columns of `oflab-cli animate`); a source that cannot be played is named in the message.
+function saveCsv() {
+  const r = JSON.parse(app.session.runCsvJson());
+  if (r.error) {
+    showMessage(`CSV: ${r.error}`);
+    return;
+  }
+  download(new Blob([r.csv], { type: 'text/csv' }), `${fileStem()}.csv`);
+}
+
 // A session file the user opened, read by the desktop's reader: shown whole, or refused with
 // the message naming the file and the field (nothing changes).
 function openSessionText(text, name) {
@@ -188,6 +199,7 @@ function bindShareControls() {
   $('copy-link').addEventListener('click', () => copyLink());
   $('save-png').addEventListener('click', savePng);
   $('save-session').addEventListener('click', saveSession);
+  $('save-csv').addEventListener('click', saveCsv);
   $('lesson-check').addEventListener('click', checkClaims);
   fillSourcePickers();
 }

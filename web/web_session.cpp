@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -97,6 +98,16 @@ WebSession::WebSession() : lab_(shipped_default_texture()) {}
 std::string WebSession::state_json() const { return window_state_object(lab_.state()).dump(); }
 
 std::string WebSession::session_file_text() const { return window_state_to_json(lab_.state()); }
+
+std::string WebSession::run_csv_json() {
+  try {
+    std::ostringstream csv;
+    lab_.run().write_csv(csv);
+    return json{{"csv", csv.str()}}.dump();
+  } catch (const std::exception& e) {
+    return json{{"error", e.what()}}.dump();
+  }
+}
 
 std::string WebSession::set_state(const std::string& object_json, const std::string& origin) {
   ++epoch_;  // the state may change

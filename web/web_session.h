@@ -53,6 +53,10 @@ class WebSession {
   // The state as a session file's text (format "oflab-session", version 2), as the desktop
   // saves it.
   std::string session_file_text() const;
+  // The per-frame figures of the whole source the animation plays, as CSV: the columns of
+  // `oflab-cli animate` for its kind (RunPlayer::write_csv, as the desktop's File > Export
+  // per-frame CSV), one row per frame. {"csv": text} or {"error": why it cannot be played}.
+  std::string run_csv_json();
   // Reads `object_json` (fields of a state object) over the default state and shows it.
   // Returns "" or the reason it was refused naming `origin` (the state is then unchanged):
   // a field the session reader refuses, a file the state names that cannot be read, a

@@ -44,6 +44,7 @@ const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
 const { testSlicesView, testSceneWorld } = require('./views_test');
+const { testRunCsv } = require('./exports_test');
 
 const root = path.resolve(__dirname, '..', '..');
 const args = process.argv.slice(2);
@@ -895,6 +896,7 @@ async function bench(browser) {
       const helpers = { browser, open, evaluate, check, drawnMarker, cli: path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli'))) };
       await testSlicesView(helpers);
       await testSceneWorld(helpers);
+      await testRunCsv(helpers);
       await testControls(browser);
       await testExplorer(browser);
       await testLessonStates(browser);
