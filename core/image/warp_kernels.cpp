@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "image/bilinear_blend.h"  // also provides OFLAB_WARP_SSE2 and <emmintrin.h>
@@ -163,10 +164,11 @@ bool use_avx2() {
 }
 
 // Positions of four pixels [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16 fixed point (int32 lanes)
-// -> the four blended pixels, stored to out[0..3].
-OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
-                                  const __m256i& offset_weights, const __m256i& positions,
-                                  Pixel* out) {
+// -> the four blended pixels' rounded channels as 16-bit lanes [p0 p1 | p2 p3] (each pixel
+// four lanes r g b a, values 0..255), before packing.
+OFLAB_AVX2 inline __m256i blend_quad_lanes(const Pixel* pixels, std::int64_t stride,
+                                           const __m256i& offset_weights,
+                                           const __m256i& positions) {
   const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
   const __m256i offsets = _mm256_madd_epi16(_mm256_packs_epi32(whole, whole), offset_weights);
   const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_castsi256_si128(offsets)));
@@ -202,9 +204,20 @@ OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
   const __m256i b = _mm256_add_epi16(_mm256_mulhi_epu16(_mm256_unpacklo_epi8(zero, bottom), gx),
                                      _mm256_mulhi_epu16(_mm256_unpackhi_epi8(zero, bottom), fx));
   const __m256i v = _mm256_add_epi16(_mm256_mulhi_epu16(t, gy), _mm256_mulhi_epu16(b, fy));
-  const __m256i r = _mm256_srli_epi16(_mm256_add_epi16(v, _mm256_set1_epi16(128)), 8);
-  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(r, r), 0x08);
+  return _mm256_srli_epi16(_mm256_add_epi16(v, _mm256_set1_epi16(128)), 8);
+}
+
+// 16-bit lanes [p0 p1 | p2 p3] of channels 0..255 -> the four pixels, stored to out[0..3].
+OFLAB_AVX2 inline void store_quad(const __m256i& lanes, Pixel* out) {
+  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes, lanes), 0x08);
   _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
+}
+
+// The same stored to out[0..3].
+OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
+                                  const __m256i& offset_weights, const __m256i& positions,
+                                  Pixel* out) {
+  store_quad(blend_quad_lanes(pixels, stride, offset_weights, positions), out);
 }
 
 OFLAB_AVX2 inline __m256i quad_offset_weights(const SourceView& src) {
@@ -331,32 +344,14 @@ OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int
   return total;
 }
 
-// Four pixels of a trilinear sample: out[k] = (lower[k] (256 - w_k) + upper[k] w_k + 128) / 256
-// per channel, w_k = weights[k] in [0, 256].
-inline void lerp_quad(const Pixel* lower, const Pixel* upper, const std::uint16_t* weights,
-                      Pixel* out) {
-  const __m128i zero = _mm_setzero_si128();
-  const __m128i w = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(weights));
-  const __m128i pairs = _mm_unpacklo_epi16(w, w);  // w0 w0 w1 w1 w2 w2 w3 w3
-  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(lower));
-  const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(upper));
-  const auto lerp8 = [&](__m128i x, __m128i y, __m128i wy) {
-    const __m128i wx = _mm_sub_epi16(_mm_set1_epi16(256), wy);
-    const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(x, wx), _mm_mullo_epi16(y, wy));
-    return _mm_srli_epi16(_mm_add_epi16(sum, _mm_set1_epi16(128)), 8);
-  };
-  const __m128i low = lerp8(_mm_unpacklo_epi8(a, zero), _mm_unpacklo_epi8(b, zero),
-                            _mm_unpacklo_epi32(pairs, pairs));
-  const __m128i high = lerp8(_mm_unpackhi_epi8(a, zero), _mm_unpackhi_epi8(b, zero),
-                             _mm_unpackhi_epi32(pairs, pairs));
-  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_packus_epi16(low, high));
-}
-
 // The same on two mip levels at once, blended: `src` is level k and `next` level k + 1,
 // sampled at the positions derived from level k's: u_{k+1} = u_k / 2 - 1/4 (pixel-centre
 // coordinates; in 16.16 a shift and a subtraction, within one unit of 2^-16 of the truncated
-// exact position), and the two blended by lerp_quad. Level k's fast range keeps level
-// k + 1's taps inside it: 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4.
+// exact position). Level k's fast range keeps level k + 1's taps inside it:
+// 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4. The two samples' rounded
+// channels a, b are blended in 16-bit lanes, out = (a (256 - w) + b w + 128) / 256 for the
+// pixel's weight w = weights[k] in [0, 256] (a (256 - w) + b w <= 255 * 256: no overflow);
+// the bytes are those of blending the two stored samples.
 OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceView& next,
                                            const std::uint16_t* weights, Pixel* out, int count,
                                            double nu, double nv, double d, double du, double dv,
@@ -364,6 +359,11 @@ OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceVi
   const __m256i offset_weights = quad_offset_weights(src);
   const __m256i next_offset_weights = quad_offset_weights(next);
   const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
+  const __m256i full = _mm256_set1_epi16(256);
+  const __m256i half = _mm256_set1_epi16(128);
+  // Weights w0 w1 w2 w3 (16-bit) -> lanes [w0 x4 w1 x4 | w2 x4 w3 x4].
+  const __m256i spread = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4, 5, 4,
+                                          5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7);
   const Pixel* const pixels = src.pixels;
   const Pixel* const next_pixels = next.pixels;
   const std::int64_t stride = src.stride;
@@ -372,14 +372,18 @@ OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceVi
   const int total = count & ~3;
   if (total == 0) return 0;
   __m256i positions = quad_positions(step);
-  Pixel lower[4], upper[4];
   for (int k = 0; k < total; k += 4) {
     const __m256i current = positions;
     positions = quad_positions(step);
-    blend_quad(pixels, stride, offset_weights, current, lower);
-    blend_quad(next_pixels, next_stride, next_offset_weights,
-               _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter), upper);
-    lerp_quad(lower, upper, weights + k, out + k);
+    std::int64_t four;
+    std::memcpy(&four, weights + k, sizeof(four));
+    const __m256i w = _mm256_shuffle_epi8(_mm256_set1_epi64x(four), spread);
+    const __m256i a = blend_quad_lanes(pixels, stride, offset_weights, current);
+    const __m256i b = blend_quad_lanes(next_pixels, next_stride, next_offset_weights,
+                                       _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter));
+    const __m256i sum = _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(full, w)),
+                                         _mm256_mullo_epi16(b, w));
+    store_quad(_mm256_srli_epi16(_mm256_add_epi16(sum, half), 8), out + k);
   }
   return total;
 }
@@ -841,6 +845,14 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
                                   static_cast<double>(s.d), static_cast<double>(2 * map.a),
                                   static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
   for (int x = begin + done; x < end; ++x) clamped(x);
+#endif
+}
+
+bool warp_avx2_enabled() {
+#if defined(OFLAB_WARP_AVX2)
+  return use_avx2();
+#else
+  return false;
 #endif
 }
 
