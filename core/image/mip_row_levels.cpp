@@ -83,30 +83,31 @@ bool float_conditioned(const RowTerms& c, int count) {
 #if defined(OFLAB_MIP_AVX2)
 #define OFLAB_MIP_TARGET __attribute__((target("avx2")))
 
-// 0.5 log2(x) for x in [1, 2^30]: x = m 2^e with m in [sqrt(1/2), sqrt(2)) (the exponent
-// split at sqrt(1/2)'s bits), log2(m) = (2 / ln 2) atanh(z), z = (m - 1) / (m + 1) with
-// |z| <= 0.1716 by its odd series to z^7 (tail below 5e-8); 1 / (m + 1) by the reciprocal
-// estimate and one Newton step (relative 2^-22). Within 1e-6 in float.
-OFLAB_MIP_TARGET inline __m256 half_log2_ps(__m256 x) {
+// 128 log2(x) + 1/2 for x in [1, 2^30] (the rounded level index of x = sigma^2 / D^4 before
+// truncation): x = m 2^e with m in [sqrt(1/2), sqrt(2)) (the exponent split at sqrt(1/2)'s
+// bits), log2(m) = (2 / ln 2) atanh(z), z = (m - 1) / (m + 1) with |z| <= 0.1716 by its odd
+// series to z^7 (tail below 5e-8), evaluated in two halves (a short dependency chain:
+// the loop's iterations then overlap). Within 1e-6 of a level in float.
+OFLAB_MIP_TARGET inline __m256 level_index_ps(__m256 x) {
   const __m256i offset = _mm256_set1_epi32(0x3f3504f3);  // sqrt(1/2)
   const __m256i shifted = _mm256_sub_epi32(_mm256_castps_si256(x), offset);
   const __m256 exponent = _mm256_cvtepi32_ps(_mm256_srai_epi32(shifted, 23));
   const __m256 m = _mm256_castsi256_ps(
       _mm256_add_epi32(_mm256_and_si256(shifted, _mm256_set1_epi32(0x7fffff)), offset));
   const __m256 one = _mm256_set1_ps(1.0f);
-  const __m256 sum = _mm256_add_ps(m, one);
-  __m256 inverse = _mm256_rcp_ps(sum);
-  inverse =
-      _mm256_mul_ps(inverse, _mm256_sub_ps(_mm256_set1_ps(2.0f), _mm256_mul_ps(sum, inverse)));
-  const __m256 z = _mm256_mul_ps(_mm256_sub_ps(m, one), inverse);
+  const __m256 z = _mm256_div_ps(_mm256_sub_ps(m, one), _mm256_add_ps(m, one));
   const __m256 z2 = _mm256_mul_ps(z, z);
-  __m256 series =
+  const __m256 z4 = _mm256_mul_ps(z2, z2);
+  // 1 + z^2 / 3 + z^4 (1 / 5 + z^2 / 7)
+  const __m256 low = _mm256_add_ps(one, _mm256_mul_ps(z2, _mm256_set1_ps(1.0f / 3.0f)));
+  const __m256 high =
       _mm256_add_ps(_mm256_set1_ps(1.0f / 5.0f), _mm256_mul_ps(z2, _mm256_set1_ps(1.0f / 7.0f)));
-  series = _mm256_add_ps(_mm256_set1_ps(1.0f / 3.0f), _mm256_mul_ps(z2, series));
-  series = _mm256_add_ps(one, _mm256_mul_ps(z2, series));
-  // 0.5 * (e + (2 / ln 2) z series)
-  return _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), exponent),
-                       _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(1.44269504f), z), series));
+  const __m256 series = _mm256_add_ps(low, _mm256_mul_ps(z4, high));
+  // 128 (e + (2 / ln 2) z series) + 1/2
+  const __m256 whole =
+      _mm256_add_ps(_mm256_mul_ps(exponent, _mm256_set1_ps(128.0f)), _mm256_set1_ps(0.5f));
+  const __m256 scaled_z = _mm256_mul_ps(z, _mm256_set1_ps(128.0f * 2.88539008f));
+  return _mm256_add_ps(whole, _mm256_mul_ps(scaled_z, series));
 }
 
 // Pixels 0 .. count - 1 in float, eight a step (the last step's through a scratch block).
@@ -138,9 +139,7 @@ OFLAB_MIP_TARGET void levels_avx2(const RowTerms& c, int top, int count, std::ui
     // sigma^2 / D^4 clamped to [1, 4^top] (a NaN to 1): half its log2 is the clamped level.
     const __m256 ratio =
         _mm256_min_ps(_mm256_max_ps(_mm256_div_ps(s, _mm256_mul_ps(d2, d2)), one), most);
-    const __m256 scaled = _mm256_add_ps(_mm256_mul_ps(half_log2_ps(ratio), _mm256_set1_ps(256.0f)),
-                                        _mm256_set1_ps(0.5f));
-    const __m256i index = _mm256_cvttps_epi32(scaled);
+    const __m256i index = _mm256_cvttps_epi32(level_index_ps(ratio));
     const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(index, index), 0x08);
     if (k + 8 <= count) {
       _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm256_castsi256_si128(packed));
