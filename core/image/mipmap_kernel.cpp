@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
 #include "image/bilinear_blend.h"  // blend_taps, and OFLAB_WARP_SSE2 with <emmintrin.h>
+#include "image/mip_row_levels.h"
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
 #include "image/warp_kernels.h"
@@ -253,191 +253,6 @@ Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyra
   return lerp_pixel(lower, upper, pair.weight);
 }
 
-constexpr double kLn2 = 0.6931471805599453;
-
-// log2(t) for a finite t > 0 within 1e-8: t = m 2^e with m in [sqrt(1/2), sqrt(2)), and
-// log2(m) = (2 / ln 2) atanh(z), z = (m - 1) / (m + 1), |z| <= 0.1716, by its odd series to
-// z^9: the tail is below (2 / ln 2) |z|^11 / 11 / (1 - z^2) < 1.1e-9. (Level pairs are found
-// hundreds of thousands of times a frame: libm's log is several times slower.)
-double fast_log2(double t) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &t, sizeof(bits));
-  int exponent = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-  bits = (bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull;
-  double m;
-  std::memcpy(&m, &bits, sizeof(m));
-  if (m > 1.4142135623730951) {
-    m *= 0.5;
-    ++exponent;
-  }
-  const double z = (m - 1.0) / (m + 1.0);
-  const double z2 = z * z;
-  constexpr double c = 2.8853900817779268;  // 2 / ln 2
-  return exponent +
-         c * z * (1.0 + z2 * (1.0 / 3.0 + z2 * (1.0 / 5.0 + z2 * (1.0 / 7.0 + z2 * (1.0 / 9.0)))));
-}
-
-// The footprint along a row of a perspective plan. At pixel centre (x, y) the inverse map's
-// Jacobian is J = M / D^2 with M = A D - N g^T (h = [A c; g^T i], N = A p + c, D = g.p + i):
-// M's first column is constant along a row and its second is alpha + beta x, so M(x) =
-// M(x0) + (x - x0) M1 with M1 = [0 beta]. The level is log2 |M|_2 - 2 log2 D, clamped.
-struct RowFootprint {
-  const Mat3& h;
-  double py;
-  double beta0, beta1;
-
-  RowFootprint(const Mat3& map, int y)
-      : h(map),
-        py(y + 0.5),
-        beta0(entry(map, 0, 1) * entry(map, 2, 0) - entry(map, 0, 0) * entry(map, 2, 1)),
-        beta1(entry(map, 1, 1) * entry(map, 2, 0) - entry(map, 1, 0) * entry(map, 2, 1)) {}
-
-  // At pixel x: N = |M|_2 and D (values and log2), and for a top right singular vector w of
-  // M, u = M w and v = M1 w: |u| (N but for rounding) and u.v / |u|, the slope of the line
-  // |u| + t u.v / |u| that bounds |M(x + t) w| <= N(x + t) from below (Cauchy-Schwarz).
-  struct End {
-    double n = 0.0, d = 0.0, u = 0.0, u_slope = 0.0;
-    double log2_n = 0.0, log2_d = 0.0;
-    double level() const { return log2_n - 2.0 * log2_d; }  // unclamped log2 sigma
-  };
-
-  End at(int x) const {
-    auto e = [&](int r, int c) { return entry(h, r, c); };
-    const double px = x + 0.5;
-    const double d = e(2, 0) * px + e(2, 1) * py + e(2, 2);
-    const double nu = e(0, 0) * px + e(0, 1) * py + e(0, 2);
-    const double nv = e(1, 0) * px + e(1, 1) * py + e(1, 2);
-    const double m00 = e(0, 0) * d - nu * e(2, 0), m01 = e(0, 1) * d - nu * e(2, 1);
-    const double m10 = e(1, 0) * d - nv * e(2, 0), m11 = e(1, 1) * d - nv * e(2, 1);
-    const double p = m00 * m00 + m10 * m10, q = m00 * m01 + m10 * m11, r = m01 * m01 + m11 * m11;
-    const double half_gap = 0.5 * (p - r);
-    const double lambda = 0.5 * (p + r) + std::sqrt(half_gap * half_gap + q * q);
-    // The eigenvector of M^T M for lambda: (q, lambda - p) or (lambda - r, q), the longer.
-    double w0 = q, w1 = lambda - p;
-    if (w0 * w0 + w1 * w1 < (lambda - r) * (lambda - r) + q * q) w0 = lambda - r, w1 = q;
-    const double length = std::sqrt(w0 * w0 + w1 * w1);
-    if (length > 0.0) {
-      w0 /= length, w1 /= length;
-    } else {
-      w0 = 1.0, w1 = 0.0;  // isotropic: every direction
-    }
-    const double u0 = m00 * w0 + m01 * w1, u1 = m10 * w0 + m11 * w1;
-    const double v0 = beta0 * w1, v1 = beta1 * w1;
-    const double u2 = u0 * u0 + u1 * u1;
-    End end;
-    end.n = std::sqrt(lambda);
-    end.d = d;
-    end.u = std::sqrt(u2);
-    end.u_slope = (u0 * v0 + u1 * v1) / end.u;
-    end.log2_n = 0.5 * fast_log2(lambda);
-    end.log2_d = fast_log2(d);
-    return end;
-  }
-};
-
-// A chord of a row: pixels a + t, 0 <= t <= n, with the footprints at its ends. Its level
-// is the curve Q(t) = level(a) + t (level(b) - level(a)) / n + c t (t - n), the quadratic
-// through the end levels whose second derivative is that of
-//     f(t) = log2 l_N(t) - 2 log2 D(a + t)
-// at n / 2, l_N the linear interpolation of N between the ends (D is linear itself):
-// f'' = (2 rho_D^2 - rho_N^2) / ln 2 with rho = l' / l.
-struct Chord {
-  double start = 0.0, slope = 0.0, c = 0.0;
-
-  Chord(const RowFootprint::End& a, const RowFootprint::End& b, int n) {
-    const double rho_n = (b.n - a.n) / (n * 0.5 * (a.n + b.n));
-    const double rho_d = (b.d - a.d) / (n * 0.5 * (a.d + b.d));
-    start = a.level();
-    slope = (b.level() - start) / n;
-    c = 0.5 * (2.0 * rho_d * rho_d - rho_n * rho_n) / kLn2;
-  }
-  double level(int t, int n) const { return start + t * (slope + c * (t - n)); }
-};
-
-// A bound, in levels, of |level(a + t) - Q(t)| for 0 <= t <= n:
-//  - f - Q: both agree at the ends and their second derivatives differ by
-//    f''(t) - f''(n / 2), at most n / 2 times the largest third derivative
-//    (2 |rho_N|^3 + 4 |rho_D|^3) / ln 2 (rho at most |l'| over the smaller end), so
-//    |f - Q| <= n^3 / 16 (2 |rho_N|^3 + 4 |rho_D|^3) / ln 2;
-//  - N(x) = |M(x)|_2 is convex (a norm of an affine map), so N <= l_N and level <= f;
-//  - N >= max(line_a, line_b), the lines below |M w_a| from a and |M w_b| from b, so
-//    l_N - N <= E, the largest over t of min(l_N - line_a, l_N - line_b) (at an end or where
-//    the lines cross: all are linear), and f - level <= E / N_min / ln 2 with N_min the
-//    smallest of max(line_a, line_b) (also at an end or the crossing).
-// Infinity where a bound does not apply (a footprint near 0, a non-finite value).
-double chord_error(const RowFootprint::End& a, const RowFootprint::End& b, int n) {
-  const double infinity = std::numeric_limits<double>::infinity();
-  if (!(a.n > 0.0 && b.n > 0.0 && a.d > 0.0 && b.d > 0.0 && a.u > 0.0 && b.u > 0.0)) {
-    return infinity;
-  }
-  const double rho_n = std::abs(b.n - a.n) / (n * std::min(a.n, b.n));
-  const double rho_d = std::abs(b.d - a.d) / (n * std::min(a.d, b.d));
-  const double cube = static_cast<double>(n) * n * n;
-  const double curve = cube / 16.0 * (2.0 * rho_n * rho_n * rho_n + 4.0 * rho_d * rho_d * rho_d);
-  // Lines in t as value at t = 0 and slope: l_N, line_a, line_b.
-  const double l0 = a.n, l1 = (b.n - a.n) / n;
-  const double a0 = a.u, a1 = a.u_slope;
-  const double b0 = b.u - n * b.u_slope, b1 = b.u_slope;
-  const auto gap_at = [&](double t) {
-    return std::min(l0 + t * l1 - (a0 + t * a1), l0 + t * l1 - (b0 + t * b1));
-  };
-  const auto low_at = [&](double t) { return std::max(a0 + t * a1, b0 + t * b1); };
-  double gap = std::max(gap_at(0.0), gap_at(n));
-  double low = std::min(low_at(0.0), low_at(n));
-  if (a1 != b1) {
-    const double t = (b0 - a0) / (a1 - b1);  // where line_a and line_b cross
-    if (t > 0.0 && t < n) {
-      gap = std::max(gap, gap_at(t));
-      low = std::min(low, low_at(t));
-    }
-  }
-  if (!(low > 0.0)) return infinity;
-  const double bound = (curve + std::max(gap, 0.0) / low) / kLn2;
-  return std::isfinite(bound) ? bound : infinity;
-}
-
-// Chord error allowed, in levels: under one step 1/256 of the weight (with room for the 1e-8
-// of fast_log2 and the rounding of the curve), so that a pixel's rounded index is within 1.5
-// steps of level_pair(mip_level)'s index before rounding, i.e. that index or one step next
-// to it.
-constexpr double kLevelTolerance = 0.9 / 256.0;
-constexpr int kLongestChord = 64;  // pixels
-
-// The level pairs of output pixels x_begin .. x_end - 1 of row y of the perspective inverse
-// map h, as indices i = 256 lower + weight of level_pair (index 0 is x_begin): the exact
-// level at the ends of chords of up to kLongestChord pixels, shortened until chord_error
-// allows kLevelTolerance, and the chord's curve in between, rounded per pixel.
-void row_levels(const Mat3& h, int top, int y, int x_begin, int x_end, std::uint16_t* pairs) {
-  const RowFootprint row(h, y);
-  const double top_level = top;
-  const auto store = [&](int x, double level) {
-    pairs[x - x_begin] =
-        static_cast<std::uint16_t>(256.0 * std::clamp(level, 0.0, top_level) + 0.5);
-  };
-  RowFootprint::End a = row.at(x_begin);
-  store(x_begin, a.level());
-  int next = kLongestChord;  // the length to try
-  for (int x = x_begin; x + 1 < x_end;) {
-    int n = std::min(next, x_end - 1 - x);
-    RowFootprint::End b = row.at(x + n);
-    double error = chord_error(a, b, n);
-    while (n > 1 && !(error <= kLevelTolerance)) {
-      n = n * 3 / 4;
-      b = row.at(x + n);
-      error = chord_error(a, b, n);
-    }
-    // The bound grows about as n^2 (n^3 at most): the next chord is as long as that allows,
-    // with a tenth to spare, so that few chords are tried twice.
-    const double room = 0.9 * std::sqrt(kLevelTolerance / std::max(error, 1e-12));
-    next = static_cast<int>(std::clamp(n * room, 2.0, static_cast<double>(kLongestChord)));
-    const Chord chord(a, b, n);
-    for (int t = 1; t < n; ++t) store(x + t, chord.level(t, n));
-    store(x + n, b.level());
-    x += n;
-    a = b;
-  }
-}
-
 // Per level: its bilinear map (division form) and image.
 struct LevelMaps {
   std::vector<InverseMap> maps;
@@ -453,6 +268,23 @@ LevelMaps level_maps(const WarpPlan& plan, const Image& source, const MipPyramid
   return levels;
 }
 
+// The end of the stretch of pairs[s ..] with pairs[s]'s lower level (pair >> 8), at most
+// `last`: eight pairs a step with SSE2.
+int stretch_end(const std::uint16_t* pairs, int s, int last) {
+  const int k = pairs[s] >> 8;
+  int e = s;
+#if defined(OFLAB_WARP_SSE2)
+  const __m128i level = _mm_set1_epi16(static_cast<short>(k));
+  for (; e + 8 <= last; e += 8) {
+    const __m128i eight = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pairs + e));
+    const int same = _mm_movemask_epi8(_mm_cmpeq_epi16(_mm_srli_epi16(eight, 8), level));
+    if (same != 0xffff) return e + __builtin_ctz(~same & 0xffff) / 2;
+  }
+#endif
+  while (e < last && pairs[e] >> 8 == k) ++e;
+  return e;
+}
+
 // Pixels first .. last - 1 of `span` (offsets into it) sampled on their level pairs
 // (`pairs`: lower level << 8 | weight, per pixel of the span): per stretch of one lower level
 // the fast bilinear row on it and, where a weight is not 0, on the next level, blended pixel
@@ -462,12 +294,13 @@ void sample_levels(const LevelMaps& levels, const std::uint16_t* pairs, std::uin
   const int top = static_cast<int>(levels.maps.size()) - 1;
   for (int s = first; s < last;) {
     const int k = pairs[s] >> 8;
-    int e = s;
-    bool blend = false;
-    for (; e < last && pairs[e] >> 8 == k; ++e) {
-      weight[e] = pairs[e] & 255;
-      blend = blend || weight[e] != 0;
+    const int e = stretch_end(pairs, s, last);
+    int any = 0;  // a separate loop without exits, which the compiler vectorizes
+    for (int i = s; i < e; ++i) {
+      weight[i] = pairs[i] & 255;
+      any |= weight[i];
     }
+    const bool blend = any != 0;
     const int x0 = span.x_begin + s, x1 = span.x_begin + e;
     const auto ku = static_cast<std::size_t>(k);
     if (blend && k < top) {  // the top level's weight is 0
@@ -493,7 +326,7 @@ std::int64_t perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels,
   const int top = static_cast<int>(levels.maps.size()) - 1;
   pairs.resize(static_cast<std::size_t>(count));
   weight.resize(static_cast<std::size_t>(count));
-  row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, pairs.data());
+  mip_row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, pairs.data());
   Pixel* out = output.row(span.y) + span.x_begin;
   return for_each_wanted(plan, span, [&](int begin, int end) {
     sample_levels(levels, pairs.data(), weight.data(), span, begin - span.x_begin,

@@ -12,20 +12,19 @@
 //    inverse map [A c; g^T i]. When a bound shows that no pixel of the region minifies
 //    (max over its vertices of |N(x)|_F over min D(x)^2, both extreme at a vertex, at most 1),
 //    the bilinear kernel runs unchanged. Otherwise each row span gets every pixel's level
-//    pair from sigma^2 = lambda_max(M^T M) / D^4 (one square root a pixel), tracked from the
-//    previous pixel's by comparing with the pair's thresholds (no logarithm or division:
-//    mipmap_kernel.cpp's row_levels); the span is cut into stretches of one lower level (the
-//    integer part changes a few times a row at most), and each stretch runs the fast
-//    bilinear row (run_bilinear_row in core/image/warp_kernels.h) on its lower level into the
-//    output and, where a weight is not 0, on the next level into a scratch row, blended pixel
-//    by pixel with each pixel's weight.
+//    index (256 lower + weight) from the exact largest singular value of J, eight pixels at a
+//    time (core/image/mip_row_levels.h: within 2e-5 of a level of mip_level, so each index
+//    is level_pair's or, within 1/200 of a step of a rounding boundary, one step next to it);
+//    the span is cut into stretches of one lower level (the integer part changes a few times
+//    a row at most), and each stretch runs the fast bilinear row on its lower level and,
+//    where a weight is not 0, the next level too, both sampled at once and blended pixel by
+//    pixel with each pixel's weight (run_trilinear_row in core/image/warp_kernels.h).
 //    Bound: every channel is within 2 levels of mipmap_pixel, the exact per-pixel definition:
-//    the level pair equals level_pair(mip_level) except where sigma^2 lies within 1e-15
-//    (relative) of a pair's threshold (then one step of 1/256 apart: under one level in the
-//    blend), and each level's bilinear sample is within one level of the per-pixel one (the
-//    same 16-bit weights to one unit of 2^-16, each rounded once), so before the blend's
-//    rounding the two differ by under 2 levels (tests/core/image/mipmap_test.cpp checks it on
-//    a tilt spanning more than three levels).
+//    a level pair one step from level_pair(mip_level) moves the blend by under one level, and
+//    each level's bilinear sample is within one level of the per-pixel one (the same 16-bit
+//    weights to one unit of 2^-16, each rounded once), so before the blend's rounding the two
+//    differ by under 2 levels (tests/core/image/mipmap_test.cpp checks it on a tilt spanning
+//    more than three levels).
 #pragma once
 
 #include <cstdint>

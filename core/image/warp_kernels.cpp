@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "image/bilinear_blend.h"  // also provides OFLAB_WARP_SSE2 and <emmintrin.h>
@@ -162,28 +163,11 @@ bool use_avx2() {
   return enabled;
 }
 
-// Positions of four pixels [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16 fixed point (int32 lanes)
-// -> the four blended pixels, stored to out[0..3].
-OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
-                                  const __m256i& offset_weights, const __m256i& positions,
-                                  Pixel* out) {
-  const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
-  const __m256i offsets = _mm256_madd_epi16(_mm256_packs_epi32(whole, whole), offset_weights);
-  const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_castsi256_si128(offsets)));
-  const auto high =
-      static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_extracti128_si256(offsets, 1)));
-  const Pixel* pa = pixels + static_cast<std::uint32_t>(low);
-  const Pixel* pb = pixels + (low >> 32);
-  const Pixel* pc = pixels + static_cast<std::uint32_t>(high);
-  const Pixel* pd = pixels + (high >> 32);
-  using blend_detail::load_pair;
-  const std::int64_t down = stride;
-  const __m256i top = _mm256_inserti128_si256(
-      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa), load_pair(pb))),
-      _mm_unpacklo_epi32(load_pair(pc), load_pair(pd)), 1);
-  const __m256i bottom = _mm256_inserti128_si256(
-      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa + down), load_pair(pb + down))),
-      _mm_unpacklo_epi32(load_pair(pc + down), load_pair(pd + down)), 1);
+// The blend of four pixels' taps, top = [A00 B00 A10 B10 | C00 D00 C10 D10] and bottom the
+// row below, with weights from the low 16 bits of positions [u0 v0 u1 v1 | u2 v2 u3 v3]:
+// the pixels' rounded channels as 16-bit lanes [A B | C D] (blend_detail::blend_rows).
+OFLAB_AVX2 inline __m256i quad_lanes_from_taps(const __m256i& top, const __m256i& bottom,
+                                               const __m256i& positions) {
   // Weights: the low 16 bits of u (bytes 0-1 and 8-9 of each half) and of v (4-5, 12-13),
   // each repeated over a pixel's four channels.
   const __m256i fx = _mm256_shuffle_epi8(
@@ -202,9 +186,68 @@ OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
   const __m256i b = _mm256_add_epi16(_mm256_mulhi_epu16(_mm256_unpacklo_epi8(zero, bottom), gx),
                                      _mm256_mulhi_epu16(_mm256_unpackhi_epi8(zero, bottom), fx));
   const __m256i v = _mm256_add_epi16(_mm256_mulhi_epu16(t, gy), _mm256_mulhi_epu16(b, fy));
-  const __m256i r = _mm256_srli_epi16(_mm256_add_epi16(v, _mm256_set1_epi16(128)), 8);
-  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(r, r), 0x08);
+  return _mm256_srli_epi16(_mm256_add_epi16(v, _mm256_set1_epi16(128)), 8);
+}
+
+// Positions of four pixels [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16 fixed point (int32 lanes)
+// -> the four blended pixels' rounded channels as 16-bit lanes [p0 p1 | p2 p3] (each pixel
+// four lanes r g b a, values 0..255), before packing.
+OFLAB_AVX2 inline __m256i blend_quad_lanes(const Pixel* pixels, std::int64_t stride,
+                                           const __m256i& offset_weights,
+                                           const __m256i& positions) {
+  const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
+  const __m256i offsets = _mm256_madd_epi16(_mm256_packs_epi32(whole, whole), offset_weights);
+  const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_castsi256_si128(offsets)));
+  const auto high =
+      static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_extracti128_si256(offsets, 1)));
+  const Pixel* pa = pixels + static_cast<std::uint32_t>(low);
+  const Pixel* pb = pixels + (low >> 32);
+  const Pixel* pc = pixels + static_cast<std::uint32_t>(high);
+  const Pixel* pd = pixels + (high >> 32);
+  using blend_detail::load_pair;
+  const std::int64_t down = stride;
+  const __m256i top = _mm256_inserti128_si256(
+      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa), load_pair(pb))),
+      _mm_unpacklo_epi32(load_pair(pc), load_pair(pd)), 1);
+  const __m256i bottom = _mm256_inserti128_si256(
+      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa + down), load_pair(pb + down))),
+      _mm_unpacklo_epi32(load_pair(pc + down), load_pair(pd + down)), 1);
+  return quad_lanes_from_taps(top, bottom, positions);
+}
+
+// Four pixels of a segment end (positions [u0 v0 u1 v1 | u2 v2 u3 v3] as above, floors,
+// possibly outside the source) with each tap clamped to the source, as sample_clamped.
+OFLAB_AVX2 inline __m256i clamped_quad_lanes(const SourceView& src, const __m256i& positions) {
+  alignas(32) std::int32_t at[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(at), _mm256_srai_epi32(positions, 16));
+  alignas(32) std::uint32_t top[8], bottom[8];
+  for (int j = 0; j < 4; ++j) {
+    const std::int64_t x0 = std::clamp<std::int64_t>(at[2 * j], 0, src.max_x);
+    const std::int64_t x1 = std::clamp<std::int64_t>(at[2 * j] + std::int64_t{1}, 0, src.max_x);
+    const std::int64_t y0 = std::clamp<std::int64_t>(at[2 * j + 1], 0, src.max_y);
+    const std::int64_t y1 = std::clamp<std::int64_t>(at[2 * j + 1] + std::int64_t{1}, 0, src.max_y);
+    const int slot = 4 * (j / 2) + j % 2;  // [A00 B00 A10 B10 | C00 D00 C10 D10]
+    std::memcpy(&top[slot], src.at(x0, y0), 4);
+    std::memcpy(&top[slot + 2], src.at(x1, y0), 4);
+    std::memcpy(&bottom[slot], src.at(x0, y1), 4);
+    std::memcpy(&bottom[slot + 2], src.at(x1, y1), 4);
+  }
+  return quad_lanes_from_taps(_mm256_load_si256(reinterpret_cast<const __m256i*>(top)),
+                              _mm256_load_si256(reinterpret_cast<const __m256i*>(bottom)),
+                              positions);
+}
+
+// 16-bit lanes [p0 p1 | p2 p3] of channels 0..255 -> the four pixels, stored to out[0..3].
+OFLAB_AVX2 inline void store_quad(const __m256i& lanes, Pixel* out) {
+  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes, lanes), 0x08);
   _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
+}
+
+// The same stored to out[0..3].
+OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
+                                  const __m256i& offset_weights, const __m256i& positions,
+                                  Pixel* out) {
+  store_quad(blend_quad_lanes(pixels, stride, offset_weights, positions), out);
 }
 
 OFLAB_AVX2 inline __m256i quad_offset_weights(const SourceView& src) {
@@ -264,11 +307,13 @@ struct QuadStep {
         step_v(_mm256_set1_pd(4 * dv * scale)),
         step_d(_mm256_set1_pd(4 * dd)) {}
 
-  // Truncated quotients of the four pixels as int32 lanes, then four pixels to the right.
-  OFLAB_AVX2 void next(__m128i& u, __m128i& v) {
+  // Truncated quotients of the four pixels as int32 lanes (floors if `floored`: the same
+  // where they are not negative), then four pixels to the right.
+  OFLAB_AVX2 void next(__m128i& u, __m128i& v, bool floored = false) {
     const __m256d r = _mm256_div_pd(_mm256_set1_pd(1.0), d);
-    u = _mm256_cvttpd_epi32(_mm256_mul_pd(nu, r));
-    v = _mm256_cvttpd_epi32(_mm256_mul_pd(nv, r));
+    const __m256d qu = _mm256_mul_pd(nu, r), qv = _mm256_mul_pd(nv, r);
+    u = _mm256_cvttpd_epi32(floored ? _mm256_floor_pd(qu) : qu);
+    v = _mm256_cvttpd_epi32(floored ? _mm256_floor_pd(qv) : qv);
     nu = _mm256_add_pd(nu, step_u);
     nv = _mm256_add_pd(nv, step_v);
     d = _mm256_add_pd(d, step_d);
@@ -302,9 +347,9 @@ OFLAB_AVX2 int perspective_nearest_quads(const SourceView& src, Pixel* out, int 
 }
 
 // The 16.16 positions [u0 v0 u1 v1 | u2 v2 u3 v3] of the next four pixels.
-OFLAB_AVX2 inline __m256i quad_positions(QuadStep& step) {
+OFLAB_AVX2 inline __m256i quad_positions(QuadStep& step, bool floored = false) {
   __m128i u, v;
-  step.next(u, v);
+  step.next(u, v, floored);
   return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi32(u, v)),
                                  _mm_unpackhi_epi32(u, v), 1);
 }
@@ -331,32 +376,27 @@ OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int
   return total;
 }
 
-// Four pixels of a trilinear sample: out[k] = (lower[k] (256 - w_k) + upper[k] w_k + 128) / 256
-// per channel, w_k = weights[k] in [0, 256].
-inline void lerp_quad(const Pixel* lower, const Pixel* upper, const std::uint16_t* weights,
-                      Pixel* out) {
-  const __m128i zero = _mm_setzero_si128();
-  const __m128i w = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(weights));
-  const __m128i pairs = _mm_unpacklo_epi16(w, w);  // w0 w0 w1 w1 w2 w2 w3 w3
-  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(lower));
-  const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(upper));
-  const auto lerp8 = [&](__m128i x, __m128i y, __m128i wy) {
-    const __m128i wx = _mm_sub_epi16(_mm_set1_epi16(256), wy);
-    const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(x, wx), _mm_mullo_epi16(y, wy));
-    return _mm_srli_epi16(_mm_add_epi16(sum, _mm_set1_epi16(128)), 8);
-  };
-  const __m128i low = lerp8(_mm_unpacklo_epi8(a, zero), _mm_unpacklo_epi8(b, zero),
-                            _mm_unpacklo_epi32(pairs, pairs));
-  const __m128i high = lerp8(_mm_unpackhi_epi8(a, zero), _mm_unpackhi_epi8(b, zero),
-                             _mm_unpackhi_epi32(pairs, pairs));
-  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_packus_epi16(low, high));
+// Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3]) blended with
+// weights w[0..3] in [0, 256]: (a (256 - w) + b w + 128) / 256 per channel, the bytes of
+// blending the stored samples (a (256 - w) + b w <= 255 * 256: no overflow).
+OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const std::uint16_t* w) {
+  std::int64_t four;
+  std::memcpy(&four, w, sizeof(four));
+  const __m256i spread = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4, 5, 4,
+                                          5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7);
+  const __m256i weight = _mm256_shuffle_epi8(_mm256_set1_epi64x(four), spread);
+  const __m256i sum =
+      _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), weight)),
+                       _mm256_mullo_epi16(b, weight));
+  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
 }
 
 // The same on two mip levels at once, blended: `src` is level k and `next` level k + 1,
 // sampled at the positions derived from level k's: u_{k+1} = u_k / 2 - 1/4 (pixel-centre
 // coordinates; in 16.16 a shift and a subtraction, within one unit of 2^-16 of the truncated
-// exact position), and the two blended by lerp_quad. Level k's fast range keeps level
-// k + 1's taps inside it: 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4.
+// exact position). Level k's fast range keeps level k + 1's taps inside it:
+// 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4. The two samples are
+// blended by lerp_lanes.
 OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceView& next,
                                            const std::uint16_t* weights, Pixel* out, int count,
                                            double nu, double nv, double d, double du, double dv,
@@ -372,16 +412,39 @@ OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceVi
   const int total = count & ~3;
   if (total == 0) return 0;
   __m256i positions = quad_positions(step);
-  Pixel lower[4], upper[4];
   for (int k = 0; k < total; k += 4) {
     const __m256i current = positions;
     positions = quad_positions(step);
-    blend_quad(pixels, stride, offset_weights, current, lower);
-    blend_quad(next_pixels, next_stride, next_offset_weights,
-               _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter), upper);
-    lerp_quad(lower, upper, weights + k, out + k);
+    const __m256i a = blend_quad_lanes(pixels, stride, offset_weights, current);
+    const __m256i b = blend_quad_lanes(next_pixels, next_stride, next_offset_weights,
+                                       _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter));
+    store_quad(lerp_lanes(a, b, weights + k), out + k);
   }
   return total;
+}
+
+// Pixels 0 .. count - 1 of a trilinear segment whose taps may leave either level (the ends
+// of a span, and what the quads leave over): the positions of perspective_trilinear_quads
+// (the same products, floored), every tap clamped to its level as sample_clamped clamps
+// it, so each pixel's bytes are the fast loop's wherever both apply.
+OFLAB_AVX2 void perspective_trilinear_clamped(const SourceView& src, const SourceView& next,
+                                              const std::uint16_t* weights, Pixel* out, int count,
+                                              double nu, double nv, double d, double du, double dv,
+                                              double dd) {
+  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
+  QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
+  for (int k = 0; k < count; k += 4) {
+    const int n = std::min(4, count - k);
+    const __m256i positions = quad_positions(step, true);
+    const __m256i a = clamped_quad_lanes(src, positions);
+    const __m256i b =
+        clamped_quad_lanes(next, _mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter));
+    std::uint16_t w[4] = {0, 0, 0, 0};
+    std::copy(weights + k, weights + k + n, w);
+    Pixel four[4];
+    store_quad(lerp_lanes(a, b, w), four);
+    std::copy(four, four + n, out + k);
+  }
 }
 #endif
 
@@ -796,17 +859,6 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
                        source.height() - 1};
   const SourceView next{next_source.pixels().data(), next_source.width(), next_source.width() - 1,
                         next_source.height() - 1};
-  const auto clamped = [&](int x) {  // both levels through their own maps
-    const Pixel a = sample_clamped<true>(src, evaluate(map, x, y), map.affine_shift);
-    const Pixel b = sample_clamped<true>(next, evaluate(next_map, x, y), next_map.affine_shift);
-    const int w = weights[x - x_begin];
-    auto channel = [&](std::uint8_t Pixel::*c) {
-      return static_cast<std::uint8_t>((a.*c * (256 - w) + b.*c * w + 128) >> 8);
-    };
-    out[x - x_begin] =
-        Pixel{channel(&Pixel::r), channel(&Pixel::g), channel(&Pixel::b), channel(&Pixel::a)};
-  };
-  int begin = x_begin, end = x_end;
 #if defined(OFLAB_WARP_AVX2)
   const bool fast_allowed = use_avx2() && steps_exact_in_double(map);
 #else
@@ -828,19 +880,37 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
     }
     return;
   }
-  for (; begin < end && !in_fast_range<true>(src, evaluate(map, begin, y)); ++begin) clamped(begin);
-  for (; end > begin && !in_fast_range<true>(src, evaluate(map, end - 1, y)); --end) {
-    clamped(end - 1);
-  }
-  if (begin >= end) return;
 #if defined(OFLAB_WARP_AVX2)
+  // Pixels from .. to - 1 with clamped taps, at once.
+  const auto ends = [&](int from, int to) {
+    if (from >= to) return;
+    const MapSample s = evaluate(map, from, y);
+    perspective_trilinear_clamped(src, next, weights + (from - x_begin), out + (from - x_begin),
+                                  to - from, static_cast<double>(s.nu), static_cast<double>(s.nv),
+                                  static_cast<double>(s.d), static_cast<double>(2 * map.a),
+                                  static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
+  };
+  int begin = x_begin, end = x_end;
+  while (begin < end && !in_fast_range<true>(src, evaluate(map, begin, y))) ++begin;
+  while (end > begin && !in_fast_range<true>(src, evaluate(map, end - 1, y))) --end;
+  ends(x_begin, begin);
+  ends(end, x_end);
+  if (begin >= end) return;
   const MapSample s = evaluate(map, begin, y);
   const int done =
       perspective_trilinear_quads(src, next, weights + (begin - x_begin), out + (begin - x_begin),
                                   end - begin, static_cast<double>(s.nu), static_cast<double>(s.nv),
                                   static_cast<double>(s.d), static_cast<double>(2 * map.a),
                                   static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
-  for (int x = begin + done; x < end; ++x) clamped(x);
+  ends(begin + done, end);
+#endif
+}
+
+bool warp_avx2_enabled() {
+#if defined(OFLAB_WARP_AVX2)
+  return use_avx2();
+#else
+  return false;
 #endif
 }
 

@@ -61,4 +61,8 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
                        const Image& next_source, int y, int x_begin, int x_end,
                        const std::uint16_t* weights, Pixel* out);
 
+// True when the kernels run their AVX2 loops: the CPU has AVX2 and the environment variable
+// OFLAB_WARP_NO_AVX2 is not set (read once). Other AVX2 loops (mip_row_levels.h) follow it.
+bool warp_avx2_enabled();
+
 }  // namespace oflab

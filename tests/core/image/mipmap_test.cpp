@@ -8,8 +8,10 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "image/mip_pyramid.h"
+#include "image/mip_row_levels.h"
 #include "image/mipmap_kernel.h"
 #include "image/scan_conversion.h"
 #include "image/warp.h"
@@ -152,6 +154,64 @@ TEST(MipLevel, PerspectiveLevelFollowsTheJacobianOfTheInverseMap) {
     EXPECT_GT(sigma, 1.0);
     EXPECT_NEAR(level, std::log2(sigma), 1e-6) << p.x << "," << p.y;
   }
+}
+
+// The level index along a row (mip_row_levels.h, the perspective kernel's levels) against
+// 256 mip_level of the analytic Jacobian (mip_pyramid.h's eigenvalue closed form, not the
+// row's |P| + |R| form): within 1/200 of a step of the exact level before rounding, on
+// random minifying tilts and on the bench's tilt, whose rows pass where the two singular
+// values meet. The control: the Frobenius norm in place of the largest singular value is
+// off by more on most pixels, so the check can fail.
+TEST(MipRowLevels, EachIndexIsTheExactLevelRoundedToAFewThousandthsOfAStep) {
+  std::mt19937 rng(44);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Mat3> inverses;
+  const double t = 20.0 * kPi / 180.0;
+  Mat3 tilt(1.0);
+  entry(tilt, 2, 0) = 0.6 / 1024.0;
+  const Mat3 bench = translation_matrix(300.0, 200.0) * scaling(0.4, 0.4) * rotation(t) *
+                     translation_matrix(-512, -384) * translation_matrix(512, 384) * tilt *
+                     translation_matrix(-512, -384);
+  inverses.push_back(glm::inverse(bench));
+  for (int k = 0; k < 60; ++k) {
+    const double scale = std::exp2(1.0 + 2.0 * std::abs(unit(rng)));
+    Mat3 h = rotation(kPi * unit(rng)) * scaling(scale, scale * (1.0 + 0.5 * unit(rng)));
+    entry(h, 0, 2) = 50.0 * unit(rng);
+    entry(h, 1, 2) = 50.0 * unit(rng);
+    entry(h, 2, 0) = 0.002 * unit(rng);  // D in [0.2, 1.8] over the rows below
+    entry(h, 2, 1) = 0.002 * unit(rng);
+    inverses.push_back(h);
+  }
+  const int top = 10;
+  std::int64_t pixels = 0, frobenius_far = 0;
+  double worst = 0.0, worst_scalar = 0.0;
+  std::vector<std::uint16_t> fast(400), scalar(400);
+  for (const Mat3& h : inverses) {
+    auto e = [&](int r, int c) { return entry(h, r, c); };
+    for (int y : {0, 50, 199, 200, 201, 399}) {
+      const int x_begin = y % 7, x_end = 397 - y % 5;
+      mip_row_levels(h, top, y, x_begin, x_end, fast.data());
+      mip_row_levels_scalar(h, top, y, x_begin, x_end, scalar.data());
+      for (int x = x_begin; x < x_end; ++x) {
+        const Vec3 q = h * Vec3(x + 0.5, y + 0.5, 1.0);
+        const double su = q.x / q.z, sv = q.y / q.z;
+        const double j00 = (e(0, 0) - su * e(2, 0)) / q.z, j01 = (e(0, 1) - su * e(2, 1)) / q.z;
+        const double j10 = (e(1, 0) - sv * e(2, 0)) / q.z, j11 = (e(1, 1) - sv * e(2, 1)) / q.z;
+        const double exact = 256.0 * mip_level(j00, j01, j10, j11, top);
+        const std::size_t i = static_cast<std::size_t>(x - x_begin);
+        worst = std::max(worst, std::abs(fast[i] - exact));
+        worst_scalar = std::max(worst_scalar, std::abs(scalar[i] - exact));
+        const double frobenius = std::sqrt(j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11);
+        const double wrong = 256.0 * std::clamp(std::log2(frobenius), 0.0, double{top});
+        frobenius_far += std::abs(std::round(wrong) - exact) > 0.51;
+        ++pixels;
+      }
+    }
+  }
+  ASSERT_GT(pixels, 100000);
+  EXPECT_LE(worst, 0.505) << "steps from the exact level";
+  EXPECT_LE(worst_scalar, 0.5 + 1e-6);
+  EXPECT_GT(frobenius_far, pixels / 2);
 }
 
 // A pure 2x minification puts every output pixel centre on a level-1 pixel centre with

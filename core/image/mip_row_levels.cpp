@@ -1,0 +1,175 @@
+// The mip level of each pixel along a row of a perspective warp. See mip_row_levels.h.
+#include "image/mip_row_levels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "image/bilinear_blend.h"  // OFLAB_WARP_SSE2
+#include "image/warp_kernels.h"    // warp_avx2_enabled
+
+#if defined(OFLAB_WARP_SSE2) && defined(__GNUC__)
+#include <immintrin.h>
+#define OFLAB_MIP_AVX2 1
+#endif
+
+namespace oflab {
+namespace {
+
+// Pixel t of the row segment (t = x - x_begin): P = p + t pb, R = r + t rb with
+// pb = (beta1, beta0), rb = (-beta1, beta0), and D = d + t dd, all scaled by powers of two
+// (D by s = 2^-k with d = D(x_begin) s in [1/2, 1), P and R by s^2): sigma(M) / D^2 is
+// unchanged and exact in double.
+struct RowTerms {
+  double px = 0.0, py = 0.0, rx = 0.0, ry = 0.0;
+  double beta0 = 0.0, beta1 = 0.0;
+  double d = 1.0, dd = 0.0;
+};
+
+RowTerms row_terms(const Mat3& h, int y, int x_begin) {
+  auto e = [&](int r, int c) { return entry(h, r, c); };
+  const double px = x_begin + 0.5, py = y + 0.5;
+  const double d = e(2, 0) * px + e(2, 1) * py + e(2, 2);
+  const double nu = e(0, 0) * px + e(0, 1) * py + e(0, 2);
+  const double nv = e(1, 0) * px + e(1, 1) * py + e(1, 2);
+  const double m00 = e(0, 0) * d - nu * e(2, 0), m01 = e(0, 1) * d - nu * e(2, 1);
+  const double m10 = e(1, 0) * d - nv * e(2, 0), m11 = e(1, 1) * d - nv * e(2, 1);
+  int exponent = 0;
+  std::frexp(d, &exponent);
+  const double s = std::ldexp(1.0, -exponent), s2 = s * s;
+  RowTerms terms;
+  terms.px = (m00 + m11) * s2;
+  terms.py = (m01 - m10) * s2;
+  terms.rx = (m00 - m11) * s2;
+  terms.ry = (m01 + m10) * s2;
+  terms.beta0 = (e(0, 1) * e(2, 0) - e(0, 0) * e(2, 1)) * s2;  // d m01 / dx
+  terms.beta1 = (e(1, 1) * e(2, 0) - e(1, 0) * e(2, 1)) * s2;  // d m11 / dx
+  terms.d = d * s;
+  terms.dd = e(2, 0) * s;
+  return terms;
+}
+
+// Pixel t's index in double: round(256 clamp(log2(sigma / D^2), 0, top)).
+std::uint16_t level_index(const RowTerms& c, double top, int t) {
+  const double u = t * c.beta1, v = t * c.beta0;
+  const double px = c.px + u, py = c.py + v, rx = c.rx - u, ry = c.ry + v;
+  const double p = std::sqrt(px * px + py * py), r = std::sqrt(rx * rx + ry * ry);
+  const double d = c.d + t * c.dd;
+  const double level = std::log2(0.5 * (p + r) / (d * d));
+  if (!(level > 0.0)) return 0;  // magnification, no scaling, or NaN
+  return static_cast<std::uint16_t>(256.0 * std::min(level, top) + 0.5);
+}
+
+// True if the segment's terms are well conditioned for float: each of P's and R's terms
+// (|p| + T |beta| per component, T = count - 1) at most 16 times the smallest |P| over the
+// segment, and D's at most 8 times its smallest value. A float term t b + c is then within
+// 3 * 2^-24 of its size, so sigma / D^2 is within about 1.5e-5 relative and the level within
+// 2e-5 (1/200 of a weight step) with the float steps below.
+bool float_conditioned(const RowTerms& c, int count) {
+  const double last = count - 1;
+  const double slope = std::abs(c.beta0) + std::abs(c.beta1);
+  const double size =
+      std::abs(c.px) + std::abs(c.py) + std::abs(c.rx) + std::abs(c.ry) + 2.0 * last * slope;
+  const double b2 = c.beta0 * c.beta0 + c.beta1 * c.beta1;
+  // The point of the segment P(t) = p + t (beta1, beta0) nearest the origin.
+  const double nearest =
+      b2 > 0.0 ? std::clamp(-(c.px * c.beta1 + c.py * c.beta0) / b2, 0.0, last) : 0.0;
+  const double px = c.px + nearest * c.beta1, py = c.py + nearest * c.beta0;
+  const double smallest_p = std::sqrt(px * px + py * py);
+  const double smallest_d = std::min(c.d, c.d + last * c.dd);
+  return smallest_p > 0.0 && size <= 16.0 * smallest_p && smallest_d > 0.0 &&
+         std::abs(c.d) + last * std::abs(c.dd) <= 8.0 * smallest_d;
+}
+
+#if defined(OFLAB_MIP_AVX2)
+#define OFLAB_MIP_TARGET __attribute__((target("avx2")))
+
+// 128 log2(x) + 1/2 for x in [1, 2^30] (the rounded level index of x = sigma^2 / D^4 before
+// truncation): x = m 2^e with m in [sqrt(1/2), sqrt(2)) (the exponent split at sqrt(1/2)'s
+// bits), log2(m) = (2 / ln 2) atanh(z), z = (m - 1) / (m + 1) with |z| <= 0.1716 by its odd
+// series to z^7 (tail below 5e-8), evaluated in two halves (a short dependency chain:
+// the loop's iterations then overlap). Within 1e-6 of a level in float.
+OFLAB_MIP_TARGET inline __m256 level_index_ps(__m256 x) {
+  const __m256i offset = _mm256_set1_epi32(0x3f3504f3);  // sqrt(1/2)
+  const __m256i shifted = _mm256_sub_epi32(_mm256_castps_si256(x), offset);
+  const __m256 exponent = _mm256_cvtepi32_ps(_mm256_srai_epi32(shifted, 23));
+  const __m256 m = _mm256_castsi256_ps(
+      _mm256_add_epi32(_mm256_and_si256(shifted, _mm256_set1_epi32(0x7fffff)), offset));
+  const __m256 one = _mm256_set1_ps(1.0f);
+  const __m256 z = _mm256_div_ps(_mm256_sub_ps(m, one), _mm256_add_ps(m, one));
+  const __m256 z2 = _mm256_mul_ps(z, z);
+  const __m256 z4 = _mm256_mul_ps(z2, z2);
+  // 1 + z^2 / 3 + z^4 (1 / 5 + z^2 / 7)
+  const __m256 low = _mm256_add_ps(one, _mm256_mul_ps(z2, _mm256_set1_ps(1.0f / 3.0f)));
+  const __m256 high =
+      _mm256_add_ps(_mm256_set1_ps(1.0f / 5.0f), _mm256_mul_ps(z2, _mm256_set1_ps(1.0f / 7.0f)));
+  const __m256 series = _mm256_add_ps(low, _mm256_mul_ps(z4, high));
+  // 128 (e + (2 / ln 2) z series) + 1/2
+  const __m256 whole =
+      _mm256_add_ps(_mm256_mul_ps(exponent, _mm256_set1_ps(128.0f)), _mm256_set1_ps(0.5f));
+  const __m256 scaled_z = _mm256_mul_ps(z, _mm256_set1_ps(128.0f * 2.88539008f));
+  return _mm256_add_ps(whole, _mm256_mul_ps(scaled_z, series));
+}
+
+// Pixels 0 .. count - 1 in float, eight a step (the last step's through a scratch block).
+// Precondition: float_conditioned(c, count). With P and R halved, S = |P|^2 + |R|^2 +
+// 2 |P| |R| = sigma^2 (one square root) and the level is 0.5 log2(S / D^4).
+OFLAB_MIP_TARGET void levels_avx2(const RowTerms& c, int top, int count, std::uint16_t* out) {
+  const __m256 b0 = _mm256_set1_ps(static_cast<float>(0.5 * c.beta0));
+  const __m256 b1 = _mm256_set1_ps(static_cast<float>(0.5 * c.beta1));
+  const __m256 px0 = _mm256_set1_ps(static_cast<float>(0.5 * c.px));
+  const __m256 py0 = _mm256_set1_ps(static_cast<float>(0.5 * c.py));
+  const __m256 rx0 = _mm256_set1_ps(static_cast<float>(0.5 * c.rx));
+  const __m256 ry0 = _mm256_set1_ps(static_cast<float>(0.5 * c.ry));
+  const __m256 d0 = _mm256_set1_ps(static_cast<float>(c.d));
+  const __m256 dd = _mm256_set1_ps(static_cast<float>(c.dd));
+  const __m256 one = _mm256_set1_ps(1.0f);
+  const __m256 most = _mm256_set1_ps(std::ldexp(1.0f, 2 * top));  // sigma^2 / D^4 at the top
+  __m256 t = _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f);
+  for (int k = 0; k < count; k += 8) {
+    const __m256 u = _mm256_mul_ps(t, b1), v = _mm256_mul_ps(t, b0);
+    const __m256 px = _mm256_add_ps(px0, u), py = _mm256_add_ps(py0, v);
+    const __m256 rx = _mm256_sub_ps(rx0, u), ry = _mm256_add_ps(ry0, v);
+    const __m256 d = _mm256_add_ps(d0, _mm256_mul_ps(t, dd));
+    t = _mm256_add_ps(t, _mm256_set1_ps(8.0f));
+    const __m256 p2 = _mm256_add_ps(_mm256_mul_ps(px, px), _mm256_mul_ps(py, py));
+    const __m256 r2 = _mm256_add_ps(_mm256_mul_ps(rx, rx), _mm256_mul_ps(ry, ry));
+    const __m256 cross = _mm256_sqrt_ps(_mm256_mul_ps(p2, r2));
+    const __m256 s = _mm256_add_ps(_mm256_add_ps(p2, r2), _mm256_add_ps(cross, cross));
+    const __m256 d2 = _mm256_mul_ps(d, d);
+    // sigma^2 / D^4 clamped to [1, 4^top] (a NaN to 1): half its log2 is the clamped level.
+    const __m256 ratio =
+        _mm256_min_ps(_mm256_max_ps(_mm256_div_ps(s, _mm256_mul_ps(d2, d2)), one), most);
+    const __m256i index = _mm256_cvttps_epi32(level_index_ps(ratio));
+    const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(index, index), 0x08);
+    if (k + 8 <= count) {
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm256_castsi256_si128(packed));
+    } else {
+      std::uint16_t last[8];
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(last), _mm256_castsi256_si128(packed));
+      std::copy(last, last + (count - k), out + k);
+    }
+  }
+}
+#endif
+
+}  // namespace
+
+void mip_row_levels_scalar(const Mat3& dest_to_source, int top, int y, int x_begin, int x_end,
+                           std::uint16_t* out) {
+  const RowTerms terms = row_terms(dest_to_source, y, x_begin);
+  for (int t = 0; t < x_end - x_begin; ++t) out[t] = level_index(terms, top, t);
+}
+
+void mip_row_levels(const Mat3& dest_to_source, int top, int y, int x_begin, int x_end,
+                    std::uint16_t* out) {
+  const RowTerms terms = row_terms(dest_to_source, y, x_begin);
+#if defined(OFLAB_MIP_AVX2)
+  if (warp_avx2_enabled() && float_conditioned(terms, x_end - x_begin)) {
+    levels_avx2(terms, top, x_end - x_begin, out);
+    return;
+  }
+#endif
+  for (int t = 0; t < x_end - x_begin; ++t) out[t] = level_index(terms, top, t);
+}
+
+}  // namespace oflab
