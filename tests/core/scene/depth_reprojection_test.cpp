@@ -261,15 +261,19 @@ ReferenceSplats reference_splats(const Image& rendered, const DepthFrame& depth,
 
 // The banded, planned splatting (shared corners, spans decided row by row, on 2 threads) paints
 // the same frame to the bit as the plain one-pass reference, under a translation with a turn
-// (the near square disoccludes the far one), a zoom and a rotation that moves the background.
+// (the near square disoccludes the far one), a zoom, a rotation that moves the background,
+// and a translation without rotation (the background's footprints exactly axis-aligned).
 TEST(DepthReprojection, PaintsWhatTheOnePassReferencePaints) {
   const Scene scene = two_squares();
-  const ViewerPose then = look_at(Vec3(0.2, 0.3, 3.0), Vec3(0, 0, -1), Vec3(0, 1, 0));
+  const ViewerPose then = look_at(Vec3(0.25, 0.5, 3.0), Vec3(0.25, 0.5, -1), Vec3(0, 1, 0));
   const Image rendered = testing::ray_cast_scene(scene, kCamera, then, kNear);
   const DepthFrame depth = render_depth(scene, kCamera, then, kNear);
   const ViewerPose steps[] = {look_at(Vec3(0.45, 0.25, 2.9), Vec3(0.2, 0, -1), Vec3(0, 1, 0)),
                               look_at(Vec3(0.2, 0.3, 2.2), Vec3(0, 0, -1), Vec3(0, 1, 0)),
-                              look_at(Vec3(0.2, 0.3, 3.0), Vec3(-0.6, 0.2, -1), Vec3(0.1, 1, 0))};
+                              look_at(Vec3(0.2, 0.3, 3.0), Vec3(-0.6, 0.2, -1), Vec3(0.1, 1, 0)),
+                              look_at(Vec3(0.5, 0.4, 3.0), Vec3(0.5, 0.4, -1), Vec3(0, 1, 0))};
+  // The last step turns nothing, to the bit (so the background's corners stay on a grid).
+  ASSERT_EQ(viewer_step(then, steps[3]).rotation, Mat3(1.0));
   set_worker_threads(2);
   for (const ViewerPose& now : steps) {
     const RigidStep3 step = viewer_step(then, now);
