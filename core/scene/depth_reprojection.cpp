@@ -247,7 +247,7 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidS
       bool moved = false;
       const bool shared = lattice_footprint(depth, lattice, i, j, s, p, moved);
       plan.own_corners[s] = !shared;
-      std::array<Vec2, 4> q;
+      std::array<Vec2, 4> q{};
       if (shared) {
         q = planned_corners(plan, lattice, s, depth.width);
       } else {
