@@ -68,6 +68,7 @@ struct TargetCell {
   double z;
   double dist;  // px^2
   int polygon;
+  int first;  // the source pixel of the first splat that wrote the pixel
 };
 constexpr int kNoSplat = -2;  // no polygon index, nor the background's -1
 
@@ -84,6 +85,108 @@ struct SplatPlan {
   std::vector<int> row_first, row_last;  // per source row; last < first: reaches no row
 };
 
+// The background under a step without rotation (R the identity, to the bit): it moves as a
+// direction, and R d = d exactly, so the corner of pixel (k, l) lands at (x[k], y[l]) whatever
+// the other index (move_point's arithmetic), background splat (i, j)'s footprint is the
+// rectangle of corners (x[i], y[j]) .. (x[i + 2], y[j + 2]) and its centre lands at
+// (x[i + 1], y[j + 1]). Those splats are painted pixel by pixel (paint_background_rows)
+// instead of planned and painted splat by splat.
+struct BackgroundGrid {
+  // A target line's (column's or row's) view of one neighbouring splat line (k - 1, k, k + 1):
+  // the sides bits of the footprint's two edges across it (splat::row_sides,
+  // splat::column_sides), 0 where the splat's box misses the line, kUndecided where they
+  // depend on the other line; and the square of the centre's offset along it.
+  struct Line {
+    int sides = 0;
+    double offset2 = 0.0;
+  };
+  static constexpr int kUndecided = 4;
+
+  std::vector<double> x, y;         // k = 0 .. width + 1, l = 0 .. height + 1
+  std::vector<Line> columns, rows;  // per target column (row) 3 entries, splat column k - 1 ..
+
+  // Whether the grid holds for this reprojection: no rotation, near > 0, every landed corner
+  // within a quarter pixel of its own place (so a splat's box holds at most the 3 x 3 pixels
+  // around it) and every surface shown with a plane (so a surface splat always lands nearer
+  // than the background). Fills the grid when it holds.
+  bool prepare(const Camera& camera, const PixelDirections& directions, const RigidStep3& step,
+               double near, const DepthFrame& depth) {
+    if (!(step.rotation == Mat3(1.0)) || !(near > 0.0)) return false;
+    for (const int p : depth.polygon) {
+      if (p >= 0 && depth.planes[p] == Vec3(0.0)) return false;
+    }
+    if (!land(camera, directions, step, near, camera.width, true, x) ||
+        !land(camera, directions, step, near, camera.height, false, y)) {
+      return false;
+    }
+    lines(x, y, false, columns);
+    lines(y, x, true, rows);
+    return true;
+  }
+
+ private:
+  static bool land(const Camera& camera, const PixelDirections& directions, const RigidStep3& step,
+                   double near, int size, bool columns, std::vector<double>& at) {
+    at.resize(static_cast<std::size_t>(size) + 2);
+    for (int k = 0; k < size + 2; ++k) {
+      Vec2 q;
+      double w = 0.0;
+      const Vec3 d = columns ? directions.at(k, 0) : directions.at(0, k);
+      if (!move_point(camera, step, Vec3(0.0), 0.0, d, near, q, w)) return false;
+      at[k] = columns ? q.x : q.y;
+      if (!(std::abs(at[k] - (k - 0.5)) < 0.25)) return false;
+    }
+    return true;
+  }
+
+  // The Lines of every target line along `at` (the other axis `across`). Rows (horizontal
+  // edges 0 and 2): k = edge.x * (c - q.y), anchors at[j] and at[j + 2], edge.x over every
+  // splat column; columns (vertical edges 1 and 3): k = -(edge.y * (c - q.x)), anchors
+  // at[i + 2] and at[i]. A product rounds monotonically in each factor, so where the tests
+  // agree at both ends of an edge's range they hold for every splat of the line.
+  static void lines(const std::vector<double>& at, const std::vector<double>& across, bool rows,
+                    std::vector<Line>& out) {
+    const int size = static_cast<int>(at.size()) - 2, other = static_cast<int>(across.size()) - 2;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (int k = 0; k < other; ++k) {
+      const double slope[2] = {across[k + 2] - across[k], across[k] - across[k + 2]};
+      for (int e = 0; e < 2; ++e)
+        lo[e] = std::min(lo[e], slope[e]), hi[e] = std::max(hi[e], slope[e]);
+    }
+    out.assign(static_cast<std::size_t>(size) * 3, Line{});
+    for (int t = 0; t < size; ++t) {
+      const double c = t + 0.5;
+      for (int n = 0; n < 3; ++n) {
+        const int k = t - 1 + n;
+        if (k < 0 || k >= size) continue;
+        const double lo_box = std::min(at[k], at[k + 2]), hi_box = std::max(at[k], at[k + 2]);
+        if (t < std::max(0, static_cast<int>(std::ceil(lo_box - 0.5))) ||  // as footprint_box
+            t > std::min(size - 1, static_cast<int>(std::floor(hi_box - 0.5)))) {
+          continue;
+        }
+        const double anchor[2] = {rows ? at[k] : at[k + 2], rows ? at[k + 2] : at[k]};
+        int both[2] = {0, 0};  // the sides bits at each end of the slopes' ranges
+        for (int end = 0; end < 2; ++end) {
+          double kk[2];
+          for (int e = 0; e < 2; ++e) {
+            const double v = (end ? hi[e] : lo[e]) * (c - anchor[e]);
+            kk[e] = rows ? v : -v;
+          }
+          both[end] = static_cast<int>((kk[0] >= -1e-9) & (kk[1] >= -1e-9)) |
+                      static_cast<int>((kk[0] <= 1e-9) & (kk[1] <= 1e-9)) << 1 |
+                      static_cast<int>(kk[0] >= -1e-9) << 2 |
+                      static_cast<int>(kk[1] >= -1e-9) << 3 | static_cast<int>(kk[0] <= 1e-9) << 4 |
+                      static_cast<int>(kk[1] <= 1e-9) << 5;
+        }
+        Line& line = out[static_cast<std::size_t>(t) * 3 + n];
+        line.sides = both[0] == both[1] ? both[0] & 3 : kUndecided;
+        const double offset = c - at[k + 1];
+        line.offset2 = offset * offset;
+      }
+    }
+  }
+};
+
 // The working memory of one reprojection, kept by each thread that reprojects: a frame's
 // buffers are tens of megabytes, and fresh ones cost a page fault per page every frame.
 // Sized for `n` pixels and `rows` rows; what a pass reads before it writes is reset here, but
@@ -91,6 +194,7 @@ struct SplatPlan {
 struct ReprojectionScratch {
   std::vector<TargetCell> cells;
   PixelDirections directions;
+  BackgroundGrid grid;
   CornerLattice lattice;
   SplatPlan plan;
   void prepare(const Camera& camera) {
@@ -171,7 +275,7 @@ struct SplatPainter {
     const Vec2 c(cx, cy);
     const double e = glm::dot(c - landed, c - landed);
     if (same && e >= t.dist) return 0;  // a splat of the same surface lands nearer
-    t = TargetCell{centre_w, e, polygon};
+    t = TargetCell{centre_w, e, polygon, t.polygon == kNoSplat ? source : t.first};
     image[d] = colour;
     shown[d] = source;
     return 1;
@@ -232,11 +336,87 @@ std::int64_t paint_splat(const SplatPlan& plan, const CornerLattice& lattice, st
   return written;
 }
 
+// Whether the centre of pixel (x, y) is inside background splat (i, j)'s footprint
+// (BackgroundGrid), as paint_aligned decides it.
+bool background_inside(const BackgroundGrid& grid, int i, int j, int x, int y) {
+  const std::array<Vec2, 4> q = {Vec2(grid.x[i], grid.y[j]), Vec2(grid.x[i + 2], grid.y[j]),
+                                 Vec2(grid.x[i + 2], grid.y[j + 2]),
+                                 Vec2(grid.x[i], grid.y[j + 2])};
+  const std::array<Vec2, 4> edge = splat::footprint_edges(q);
+  return (splat::row_sides(q, edge, y + 0.5) & splat::column_sides(q, edge, x + 0.5)) != 0;
+}
+
+// Paints the background's splats (BackgroundGrid) over target rows [y_begin, y_end), pixel by
+// pixel, after the surfaces' splats: a surface splat always wins over the background and the
+// background never over a surface (its inverse depth is 0), so a pixel's background splats
+// count only before the first surface splat that reached it (TargetCell::first), and they
+// are those of the 3 x 3 source pixels around it, met in source order, tested as
+// paint_aligned tests them. Returns the pixels written.
+std::int64_t paint_background_rows(const BackgroundGrid& grid, const Image& rendered,
+                                   const DepthFrame& depth, int y_begin, int y_end,
+                                   TargetCell* cells, Reprojection& r) {
+  using Line = BackgroundGrid::Line;
+  const int width = depth.width;
+  std::int64_t written = 0;
+  for (int y = y_begin; y < y_end; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const int before = cells[d].polygon == kNoSplat ? -1 : cells[d].first;
+      int shown = -1, first = -1;
+      double dist = 0.0;
+      for (int n = 0; n < 3; ++n) {
+        const Line& row = grid.rows[static_cast<std::size_t>(y) * 3 + n];
+        if (!row.sides) continue;
+        const int j = y - 1 + n;
+        for (int m = 0; m < 3; ++m) {
+          const Line& column = grid.columns[static_cast<std::size_t>(x) * 3 + m];
+          const int i = x - 1 + m, s = j * width + i;
+          if (!column.sides || (before >= 0 && s >= before) || depth.polygon[s] != -1) continue;
+          if (((row.sides | column.sides) & BackgroundGrid::kUndecided)
+                  ? !background_inside(grid, i, j, x, y)
+                  : !(row.sides & column.sides)) {
+            continue;
+          }
+          // glm::dot of the offset with itself: the two squares' sum.
+          const double e = column.offset2 + row.offset2;
+          if (shown >= 0 && e >= dist) continue;  // a background splat lands nearer
+          first = shown < 0 ? s : first;
+          shown = s, dist = e;
+          ++written;
+        }
+      }
+      if (before >= 0 || shown < 0) continue;  // a surface shows, or nothing
+      cells[d] = TargetCell{0.0, dist, -1, first};
+      r.image.pixels()[d] = rendered.pixels()[shown];
+      r.source[d] = shown;
+    }
+  }
+  return written;
+}
+
+// The corner lattice's rows [begin, end) (splat::move_lattice_rows), but the background's
+// points where `grid` holds (BackgroundGrid: the background's splats do not read them, and
+// no other splat does).
+void move_lattice(const DepthFrame& depth, int begin, int end, const CornerMove& move, bool grid,
+                  CornerLattice& lattice) {
+  if (!grid) {
+    splat::move_lattice_rows(depth, begin, end, move, lattice);
+    return;
+  }
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[k];
+      if (p >= 0) lattice.ok[k] = move(depth.planes[p], i, j, lattice.moved[k]);
+    }
+  }
+}
+
 // The splats of source rows [begin, end): each centre moved by the pixel's own depth, each
 // footprint's corners by the depth of its surface there.
 void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidStep3& step,
                      double near, const PixelDirections& directions, const CornerLattice& lattice,
-                     int begin, int end, SplatPlan& plan) {
+                     bool grid, int begin, int end, SplatPlan& plan) {
   const CornerMove move{camera, directions, step, near};
   for (int j = begin; j < end; ++j) {
     for (int i = 0; i < depth.width; ++i) {
@@ -244,6 +424,10 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidS
       const int p = depth.polygon[s];
       const Vec3 m = splat::surface_of(depth, p);
       PixelBox& box = plan.boxes[s];
+      if (grid && p < 0) {  // painted by paint_background_rows
+        box = PixelBox{};
+        continue;
+      }
       bool moved = false;
       const bool shared = lattice_footprint(depth, lattice, i, j, s, p, moved);
       plan.own_corners[s] = !shared;
@@ -462,22 +646,29 @@ Reprojection reproject_by_depth(const Image& rendered, const DepthFrame& depth,
   CornerLattice& lattice = scratch.lattice;
   SplatPlan& plan = scratch.plan;
   TargetCell* cells = scratch.cells.data();
+  // (The bands below reach the scratch through these references: on a worker thread the
+  // name `scratch` is that thread's own.)
+  const BackgroundGrid& background = scratch.grid;
+  const bool grid = scratch.grid.prepare(camera, directions, step, near, depth);
   // Three passes over bands of rows, each band writing only its own rows: the moved corners,
   // the splats of the source rows, then the target rows painted. The bands are cut by the
   // frame's size alone, so the frame is the same with any number of threads.
   const int min_rows = std::max(4, 16384 / std::max(width, 1));
   for_each_band(height, min_rows, [&](int, int begin, int end) {
     std::fill(cells + static_cast<std::ptrdiff_t>(begin) * width,
-              cells + static_cast<std::ptrdiff_t>(end) * width, TargetCell{-1.0, 0.0, kNoSplat});
-    splat::move_lattice_rows(depth, begin, end, CornerMove{camera, directions, step, near},
-                             lattice);
+              cells + static_cast<std::ptrdiff_t>(end) * width,
+              TargetCell{-1.0, 0.0, kNoSplat, -1});
+    move_lattice(depth, begin, end, CornerMove{camera, directions, step, near}, grid, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
-    plan_splat_rows(depth, camera, step, near, directions, lattice, begin, end, plan);
+    plan_splat_rows(depth, camera, step, near, directions, lattice, grid, begin, end, plan);
   });
   std::vector<std::int64_t> written(static_cast<std::size_t>(band_count(height, min_rows)), 0);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
     written[band] = paint_target_rows(plan, lattice, rendered, depth, begin, end, cells, r);
+    if (grid) {
+      written[band] += paint_background_rows(background, rendered, depth, begin, end, cells, r);
+    }
   });
   for (const std::int64_t w : written) r.pixels_written += w;
   measure_unreached(depth, plan.exact, now, width, r);

@@ -294,6 +294,27 @@ TEST(DepthReprojection, PaintsWhatTheOnePassReferencePaints) {
   set_worker_threads(1);
 }
 
+// Without rotation the background is painted pixel by pixel in each band, after the
+// surfaces: on 3 threads and many bands the frame is still the one-pass reference's.
+TEST(DepthReprojection, TheBackgroundWithoutTurningIsTheReferencesOnThreeThreads) {
+  const Camera camera = make_camera(600.0, 640, 480);  // cut into many bands
+  const Scene scene = two_squares();
+  const ViewerPose then = look_at(Vec3(0.25, 0.5, 3.0), Vec3(0.25, 0.5, -1), Vec3(0, 1, 0));
+  const ViewerPose now = look_at(Vec3(0.5, 0.4, 2.9), Vec3(0.5, 0.4, -1), Vec3(0, 1, 0));
+  const RigidStep3 step = viewer_step(then, now);
+  ASSERT_EQ(step.rotation, Mat3(1.0));
+  ASSERT_GT(band_count(camera.height, 4), 1);
+  const Image rendered = testing::ray_cast_scene(scene, camera, then, kNear);
+  const DepthFrame depth = render_depth(scene, camera, then, kNear);
+  set_worker_threads(3);
+  const Reprojection r = reproject_by_depth(rendered, depth, camera, step, HoleFill::kNone, kNear);
+  set_worker_threads(1);
+  const ReferenceSplats expected = reference_splats(rendered, depth, camera, step);
+  EXPECT_EQ(r.image.pixels(), expected.image);
+  EXPECT_EQ(r.source, expected.source);
+  EXPECT_EQ(r.pixels_written, expected.written);
+}
+
 // The splats are planned and painted in bands of rows on the worker threads: the frame, its
 // sources, holes, writes and errors are the same bytes on 1 thread and on 3.
 TEST(DepthReprojection, TheSameOnOneAndThreeThreads) {
