@@ -20,12 +20,32 @@ using splat::CornerLattice;
 using splat::pixel_direction;
 using splat::PixelBox;
 
-// Where the point seen at (u, v) with plane vector m lands after the step, top-left pixels,
-// and its inverse depth there; false when it is behind the surface's horizon or reaches
-// Z <= near. m = 0 (the background) moves as a direction.
-bool move_point(const Camera& camera, const RigidStep3& step, const Vec3& m, double w, double u,
-                double v, double near, Vec2& moved, double& moved_w) {
-  const Vec3 d = pixel_direction(camera, u, v);
+// The directions through the pixel corners and centres of a camera, by column and by row:
+// x[k] = ((k - 0.5) - cx) / f and y[k] = ((k - 0.5) - cy) / f, k = 0 .. size + 1, so that the
+// top-left corner of pixel (i, j) looks along (x[i], y[j], 1) and its centre along
+// (x[i + 1], y[j + 1], 1): pixel_direction's arithmetic, so the same bits, once per frame
+// rather than once per pixel.
+struct PixelDirections {
+  std::vector<double> x, y;
+  void prepare(const Camera& camera) {
+    const auto fill = [&](std::vector<double>& to, int size, double centre) {
+      to.resize(static_cast<std::size_t>(size) + 2);
+      for (int k = 0; k < size + 2; ++k) to[k] = ((k - 0.5) - centre) / camera.focal_px;
+    };
+    fill(x, camera.width, camera.cx);
+    fill(y, camera.height, camera.cy);
+  }
+  // The direction (x[k], y[l], 1): through the top-left corner of pixel (k, l), or the
+  // centre of pixel (k - 1, l - 1).
+  Vec3 at(int k, int l) const { return Vec3(x[k], y[l], 1.0); }
+};
+
+// Where the point seen along direction d (pixel_direction) with plane vector m and inverse
+// depth w lands after the step, top-left pixels, and its inverse depth there; false when it
+// is behind the surface's horizon or reaches Z <= near. m = 0 (the background) moves as a
+// direction.
+bool move_point(const Camera& camera, const RigidStep3& step, const Vec3& m, double w,
+                const Vec3& d, double near, Vec2& moved, double& moved_w) {
   Vec3 x;
   if (m == Vec3(0.0)) {
     x = step.rotation * d;
@@ -41,112 +61,387 @@ bool move_point(const Camera& camera, const RigidStep3& step, const Vec3& m, dou
   return true;
 }
 
-// What the splats of one reprojection keep per target pixel, and where each source pixel's
-// centre lands.
-struct SplatBuffers {
-  std::vector<double> z;     // inverse depth of what each pixel shows; -1: nothing yet
-  std::vector<double> dist;  // squared distance from its splat's centre, px^2
-  std::vector<Vec2> exact;   // where each source pixel centre lands now
-  std::vector<int> polygon;  // the polygon of the splat each pixel shows (where it shows one)
+// What each target pixel keeps while the splats are painted: the inverse depth and the
+// squared distance from its centre of the splat it shows, and that splat's polygon
+// (kNoSplat before any splat reached the pixel).
+struct TargetCell {
+  double z;
+  double dist;  // px^2
+  int polygon;
+  int first;  // the source pixel of the first splat that wrote the pixel
+};
+constexpr int kNoSplat = -2;  // no polygon index, nor the background's -1
+
+// Every source pixel's splat, planned before any is painted: where its centre lands and its
+// inverse depth there, the pixels its footprint may cover (an empty box: no splat), its
+// corners (kept here only where they are not the lattice's: own_corners), and per source row
+// the target rows its splats may reach.
+struct SplatPlan {
+  std::vector<Vec2> exact;  // where each source pixel centre lands now
+  std::vector<double> centre_w;
+  std::vector<PixelBox> boxes;
+  std::vector<char> own_corners;  // 1: corners[s] holds them; 0: the lattice holds them
+  std::vector<std::array<Vec2, 4>> corners;
+  std::vector<int> row_first, row_last;  // per source row; last < first: reaches no row
 };
 
-// Every source pixel's splat, planned before any is painted: its footprint after the step,
-// the pixels it may cover (an empty box: no splat), its centre's inverse depth after the
-// step, and per source row the target rows its splats may reach.
-struct SplatPlan {
-  std::vector<std::array<Vec2, 4>> corners;
-  std::vector<PixelBox> boxes;
-  std::vector<double> centre_w;
-  std::vector<int> row_first, row_last;  // per source row; last < first: reaches no row
+// The background under a step without rotation (R the identity, to the bit): it moves as a
+// direction, and R d = d exactly, so the corner of pixel (k, l) lands at (x[k], y[l]) whatever
+// the other index (move_point's arithmetic), background splat (i, j)'s footprint is the
+// rectangle of corners (x[i], y[j]) .. (x[i + 2], y[j + 2]) and its centre lands at
+// (x[i + 1], y[j + 1]). Those splats are painted pixel by pixel (paint_background_rows)
+// instead of planned and painted splat by splat.
+struct BackgroundGrid {
+  // A target line's (column's or row's) view of one neighbouring splat line (k - 1, k, k + 1):
+  // the sides bits of the footprint's two edges across it (splat::row_sides,
+  // splat::column_sides), 0 where the splat's box misses the line, kUndecided where they
+  // depend on the other line; and the square of the centre's offset along it.
+  struct Line {
+    int sides = 0;
+    double offset2 = 0.0;
+  };
+  static constexpr int kUndecided = 4;
+
+  std::vector<double> x, y;         // k = 0 .. width + 1, l = 0 .. height + 1
+  std::vector<Line> columns, rows;  // per target column (row) 3 entries, splat column k - 1 ..
+
+  // Whether the grid holds for this reprojection: no rotation, near > 0, every landed corner
+  // within a quarter pixel of its own place (so a splat's box holds at most the 3 x 3 pixels
+  // around it) and every surface shown with a plane (so a surface splat always lands nearer
+  // than the background). Fills the grid when it holds.
+  bool prepare(const Camera& camera, const PixelDirections& directions, const RigidStep3& step,
+               double near, const DepthFrame& depth) {
+    if (!(step.rotation == Mat3(1.0)) || !(near > 0.0)) return false;
+    for (const int p : depth.polygon) {
+      if (p >= 0 && depth.planes[p] == Vec3(0.0)) return false;
+    }
+    if (!land(camera, directions, step, near, camera.width, true, x) ||
+        !land(camera, directions, step, near, camera.height, false, y)) {
+      return false;
+    }
+    lines(x, y, false, columns);
+    lines(y, x, true, rows);
+    return true;
+  }
+
+ private:
+  static bool land(const Camera& camera, const PixelDirections& directions, const RigidStep3& step,
+                   double near, int size, bool columns, std::vector<double>& at) {
+    at.resize(static_cast<std::size_t>(size) + 2);
+    for (int k = 0; k < size + 2; ++k) {
+      Vec2 q;
+      double w = 0.0;
+      const Vec3 d = columns ? directions.at(k, 0) : directions.at(0, k);
+      if (!move_point(camera, step, Vec3(0.0), 0.0, d, near, q, w)) return false;
+      at[k] = columns ? q.x : q.y;
+      if (!(std::abs(at[k] - (k - 0.5)) < 0.25)) return false;
+    }
+    return true;
+  }
+
+  // The Lines of every target line along `at` (the other axis `across`). Rows (horizontal
+  // edges 0 and 2): k = edge.x * (c - q.y), anchors at[j] and at[j + 2], edge.x over every
+  // splat column; columns (vertical edges 1 and 3): k = -(edge.y * (c - q.x)), anchors
+  // at[i + 2] and at[i]. A product rounds monotonically in each factor, so where the tests
+  // agree at both ends of an edge's range they hold for every splat of the line.
+  static void lines(const std::vector<double>& at, const std::vector<double>& across, bool rows,
+                    std::vector<Line>& out) {
+    const int size = static_cast<int>(at.size()) - 2, other = static_cast<int>(across.size()) - 2;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (int k = 0; k < other; ++k) {
+      const double slope[2] = {across[k + 2] - across[k], across[k] - across[k + 2]};
+      for (int e = 0; e < 2; ++e)
+        lo[e] = std::min(lo[e], slope[e]), hi[e] = std::max(hi[e], slope[e]);
+    }
+    out.assign(static_cast<std::size_t>(size) * 3, Line{});
+    for (int t = 0; t < size; ++t) {
+      const double c = t + 0.5;
+      for (int n = 0; n < 3; ++n) {
+        const int k = t - 1 + n;
+        if (k < 0 || k >= size) continue;
+        const double lo_box = std::min(at[k], at[k + 2]), hi_box = std::max(at[k], at[k + 2]);
+        if (t < std::max(0, static_cast<int>(std::ceil(lo_box - 0.5))) ||  // as footprint_box
+            t > std::min(size - 1, static_cast<int>(std::floor(hi_box - 0.5)))) {
+          continue;
+        }
+        const double anchor[2] = {rows ? at[k] : at[k + 2], rows ? at[k + 2] : at[k]};
+        int both[2] = {0, 0};  // the sides bits at each end of the slopes' ranges
+        for (int end = 0; end < 2; ++end) {
+          double kk[2];
+          for (int e = 0; e < 2; ++e) {
+            const double v = (end ? hi[e] : lo[e]) * (c - anchor[e]);
+            kk[e] = rows ? v : -v;
+          }
+          both[end] = static_cast<int>((kk[0] >= -1e-9) & (kk[1] >= -1e-9)) |
+                      static_cast<int>((kk[0] <= 1e-9) & (kk[1] <= 1e-9)) << 1 |
+                      static_cast<int>(kk[0] >= -1e-9) << 2 |
+                      static_cast<int>(kk[1] >= -1e-9) << 3 | static_cast<int>(kk[0] <= 1e-9) << 4 |
+                      static_cast<int>(kk[1] <= 1e-9) << 5;
+        }
+        Line& line = out[static_cast<std::size_t>(t) * 3 + n];
+        line.sides = both[0] == both[1] ? both[0] & 3 : kUndecided;
+        const double offset = c - at[k + 1];
+        line.offset2 = offset * offset;
+      }
+    }
+  }
 };
 
 // The working memory of one reprojection, kept by each thread that reprojects: a frame's
 // buffers are tens of megabytes, and fresh ones cost a page fault per page every frame.
 // Sized for `n` pixels and `rows` rows; what a pass reads before it writes is reset here, but
-// the inverse depths, which the first pass resets band by band.
+// the target cells, which the first pass resets band by band.
 struct ReprojectionScratch {
-  SplatBuffers buffers;
+  std::vector<TargetCell> cells;
+  PixelDirections directions;
+  BackgroundGrid grid;
   CornerLattice lattice;
   SplatPlan plan;
-  void prepare(std::size_t n, int rows) {
-    buffers.z.resize(n);  // reset to -1 by the first pass, band by band
-    buffers.dist.resize(n);
-    buffers.exact.resize(n);
-    buffers.polygon.resize(n);
+  void prepare(const Camera& camera) {
+    const std::size_t n = static_cast<std::size_t>(camera.width) * camera.height;
+    cells.resize(n);  // reset by the first pass, band by band
+    directions.prepare(camera);
     lattice.moved.resize(n);
     lattice.ok.resize(n);
-    plan.corners.resize(n);
-    plan.boxes.resize(n);
+    plan.exact.resize(n);
     plan.centre_w.resize(n);
-    plan.row_first.assign(static_cast<std::size_t>(rows), 0);
-    plan.row_last.assign(static_cast<std::size_t>(rows), -1);
-  }
-};
-// Moves a footprint corner at top-left pixel position (u, v) with the surface of plane vector
-// m (0: the background, moved as a direction) by the step: splat::move_lattice_rows' `move`.
-struct CornerMove {
-  const Camera& camera;
-  const RigidStep3& step;
-  double near;
-  bool operator()(const Vec3& m, double u, double v, Vec2& q) const {
-    double w_unused = 0.0;
-    const double w = glm::dot(m, pixel_direction(camera, u, v));
-    return move_point(camera, step, m, w, u, v, near, q, w_unused);
+    plan.boxes.resize(n);
+    plan.own_corners.resize(n);
+    plan.corners.resize(n);  // written only where own_corners
+    plan.row_first.assign(static_cast<std::size_t>(camera.height), 0);
+    plan.row_last.assign(static_cast<std::size_t>(camera.height), -1);
   }
 };
 
-// Paints source pixel s's planned splat into r.image at every pixel centre of target rows
-// [y_begin, y_end] inside its footprint where it wins: the nearest surface, and among the
-// splats of one polygon the one whose centre lands nearest. Returns the pixels written.
-std::int64_t paint_splat(const SplatPlan& plan, std::size_t s, int y_begin, int y_end,
-                         const Image& rendered, const DepthFrame& depth, SplatBuffers& buffers,
-                         Reprojection& r) {
+// Moves the top-left footprint corner of pixel (i, j) with the surface of plane vector m (0:
+// the background) by the step: splat::move_lattice_rows' `move`.
+struct CornerMove {
+  const Camera& camera;
+  const PixelDirections& directions;
+  const RigidStep3& step;
+  double near;
+  bool operator()(const Vec3& m, int i, int j, Vec2& q) const {
+    double w_unused = 0.0;
+    const Vec3 d = directions.at(i, j);
+    return move_point(camera, step, m, glm::dot(m, d), d, near, q, w_unused);
+  }
+};
+
+// The corners of source pixel s = (i, j)'s footprint, as plan_splat_rows planned them:
+// where they are the lattice's, the lattice points of pixels (i, j), (i + 2, j),
+// (i + 2, j + 2) and (i, j + 2) (splat::move_footprint).
+std::array<Vec2, 4> planned_corners(const SplatPlan& plan, const CornerLattice& lattice,
+                                    std::size_t s, int width) {
+  if (plan.own_corners[s]) return plan.corners[s];
+  const std::size_t below = s + 2 * static_cast<std::size_t>(width);
+  return {lattice.moved[s], lattice.moved[s + 2], lattice.moved[below + 2], lattice.moved[below]};
+}
+
+// Whether footprint corners (i + 2, j), (i + 2, j + 2) and (i, j + 2) of source pixel s =
+// (i, j), polygon p, are lattice points of polygon p (so splat::move_footprint takes all four
+// from the lattice), and whether they all moved.
+bool lattice_footprint(const DepthFrame& depth, const CornerLattice& lattice, int i, int j,
+                       std::size_t s, int p, bool& moved) {
   const int width = depth.width;
-  const PixelBox& box = plan.boxes[s];
-  const std::array<Vec2, 4>& q = plan.corners[s];
-  const Vec2 landed = buffers.exact[s];
-  const int polygon = depth.polygon[s];
-  const double centre_w = plan.centre_w[s];
-  const Pixel colour = rendered.pixels()[s];
-  const std::array<Vec2, 4> edge = splat::footprint_edges(q);  // computed once
+  if (i + 2 >= width || j + 2 >= depth.height) return false;
+  const std::size_t below = s + 2 * static_cast<std::size_t>(width);
+  if (depth.polygon[s + 2] != p || depth.polygon[below] != p || depth.polygon[below + 2] != p) {
+    return false;
+  }
+  moved = lattice.ok[s] && lattice.ok[s + 2] && lattice.ok[below] && lattice.ok[below + 2];
+  return true;
+}
+
+// One planned splat being painted: what it gives the pixels it wins, and the rule it wins
+// by: the nearest surface, and among the splats of one polygon the one whose centre lands
+// nearest.
+struct SplatPainter {
+  Vec2 landed;
+  double centre_w;
+  int polygon;
+  int source;
+  Pixel colour;
+  TargetCell* cells;
+  Pixel* image;
+  int* shown;
+
+  // Paints pixel d, centre (cx, cy), inside the footprint, where the splat wins; returns 1
+  // when it wrote the pixel, else 0.
+  int paint(std::size_t d, double cx, double cy) const {
+    TargetCell& t = cells[d];
+    const bool same = t.polygon == polygon;
+    if (!same && centre_w <= t.z) return 0;  // something nearer (or the same)
+    // Squared: the nearer of two landings without a square root per pixel.
+    const Vec2 c(cx, cy);
+    const double e = glm::dot(c - landed, c - landed);
+    if (same && e >= t.dist) return 0;  // a splat of the same surface lands nearer
+    t = TargetCell{centre_w, e, polygon, t.polygon == kNoSplat ? source : t.first};
+    image[d] = colour;
+    shown[d] = source;
+    return 1;
+  }
+};
+
+// The widest box painted by SplatPainter's axis-aligned path (wider ones take the general).
+constexpr int kAlignedColumns = 16;
+
+// Paints an axis-aligned footprint (splat::axis_aligned) over target rows [y0, y1] of `box`:
+// inside_footprint's tests split into each row's and each column's. Returns the pixels written.
+std::int64_t paint_aligned(const SplatPainter& splat, const std::array<Vec2, 4>& q,
+                           const std::array<Vec2, 4>& edge, const PixelBox& box, int y0, int y1,
+                           int width) {
+  int columns[kAlignedColumns];
+  for (int x = box.x_begin; x <= box.x_end; ++x) {
+    columns[x - box.x_begin] = splat::column_sides(q, edge, x + 0.5);
+  }
   std::int64_t written = 0;
-  for (int y = std::max(box.y_begin, y_begin); y <= std::min(box.y_end, y_end); ++y) {
+  for (int y = y0; y <= y1; ++y) {
+    const double cy = y + 0.5;
+    const int row = splat::row_sides(q, edge, cy);
+    const std::size_t first = static_cast<std::size_t>(y) * width;
     for (int x = box.x_begin; x <= box.x_end; ++x) {
-      const Vec2 c(x + 0.5, y + 0.5);
-      if (!splat::inside_footprint(q, edge, c)) continue;
-      const std::size_t d = static_cast<std::size_t>(y) * width + x;
-      const bool same = r.source[d] >= 0 && buffers.polygon[d] == polygon;
-      if (!same && centre_w <= buffers.z[d]) continue;  // something nearer (or the same)
-      // Squared: the nearer of two landings without a square root per pixel.
-      const double e = glm::dot(c - landed, c - landed);
-      if (same && e >= buffers.dist[d]) continue;  // a splat of the same surface lands nearer
-      buffers.z[d] = centre_w;
-      buffers.dist[d] = e;
-      buffers.polygon[d] = polygon;
-      r.image.pixels()[d] = colour;
-      r.source[d] = static_cast<int>(s);
-      ++written;
+      if (row & columns[x - box.x_begin]) written += splat.paint(first + x, x + 0.5, cy);
     }
   }
   return written;
 }
 
+// Paints source pixel s's planned splat into r.image at every pixel centre of target rows
+// [y_begin, y_end] inside its footprint where it wins (SplatPainter). Returns the pixels
+// written.
+std::int64_t paint_splat(const SplatPlan& plan, const CornerLattice& lattice, std::size_t s,
+                         int y_begin, int y_end, const Image& rendered, const DepthFrame& depth,
+                         TargetCell* cells, Reprojection& r) {
+  const int width = depth.width;
+  const PixelBox& box = plan.boxes[s];
+  const std::array<Vec2, 4> q = planned_corners(plan, lattice, s, width);
+  const std::array<Vec2, 4> edge = splat::footprint_edges(q);  // computed once
+  const SplatPainter splat{plan.exact[s],           plan.centre_w[s],     depth.polygon[s],
+                           static_cast<int>(s),     rendered.pixels()[s], cells,
+                           r.image.pixels().data(), r.source.data()};
+  const int y0 = std::max(box.y_begin, y_begin), y1 = std::min(box.y_end, y_end);
+  if (splat::axis_aligned(edge) && box.x_end - box.x_begin < kAlignedColumns) {
+    return paint_aligned(splat, q, edge, box, y0, y1, width);
+  }
+  std::int64_t written = 0;
+  for (int y = y0; y <= y1; ++y) {
+    const double cy = y + 0.5;
+    const splat::FootprintRow row(q, edge, cy);
+    const std::size_t first = static_cast<std::size_t>(y) * width;
+    for (int x = box.x_begin; x <= box.x_end; ++x) {
+      const double cx = x + 0.5;
+      if (row.holds(cx)) written += splat.paint(first + x, cx, cy);
+    }
+  }
+  return written;
+}
+
+// Whether the centre of pixel (x, y) is inside background splat (i, j)'s footprint
+// (BackgroundGrid), as paint_aligned decides it.
+bool background_inside(const BackgroundGrid& grid, int i, int j, int x, int y) {
+  const std::array<Vec2, 4> q = {Vec2(grid.x[i], grid.y[j]), Vec2(grid.x[i + 2], grid.y[j]),
+                                 Vec2(grid.x[i + 2], grid.y[j + 2]),
+                                 Vec2(grid.x[i], grid.y[j + 2])};
+  const std::array<Vec2, 4> edge = splat::footprint_edges(q);
+  return (splat::row_sides(q, edge, y + 0.5) & splat::column_sides(q, edge, x + 0.5)) != 0;
+}
+
+// Paints the background's splats (BackgroundGrid) over target rows [y_begin, y_end), pixel by
+// pixel, after the surfaces' splats: a surface splat always wins over the background and the
+// background never over a surface (its inverse depth is 0), so a pixel's background splats
+// count only before the first surface splat that reached it (TargetCell::first), and they
+// are those of the 3 x 3 source pixels around it, met in source order, tested as
+// paint_aligned tests them. Returns the pixels written.
+std::int64_t paint_background_rows(const BackgroundGrid& grid, const Image& rendered,
+                                   const DepthFrame& depth, int y_begin, int y_end,
+                                   TargetCell* cells, Reprojection& r) {
+  using Line = BackgroundGrid::Line;
+  const int width = depth.width;
+  std::int64_t written = 0;
+  for (int y = y_begin; y < y_end; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const int before = cells[d].polygon == kNoSplat ? -1 : cells[d].first;
+      int shown = -1, first = -1;
+      double dist = 0.0;
+      for (int n = 0; n < 3; ++n) {
+        const Line& row = grid.rows[static_cast<std::size_t>(y) * 3 + n];
+        if (!row.sides) continue;
+        const int j = y - 1 + n;
+        for (int m = 0; m < 3; ++m) {
+          const Line& column = grid.columns[static_cast<std::size_t>(x) * 3 + m];
+          const int i = x - 1 + m, s = j * width + i;
+          if (!column.sides || (before >= 0 && s >= before) || depth.polygon[s] != -1) continue;
+          if (((row.sides | column.sides) & BackgroundGrid::kUndecided)
+                  ? !background_inside(grid, i, j, x, y)
+                  : !(row.sides & column.sides)) {
+            continue;
+          }
+          // glm::dot of the offset with itself: the two squares' sum.
+          const double e = column.offset2 + row.offset2;
+          if (shown >= 0 && e >= dist) continue;  // a background splat lands nearer
+          first = shown < 0 ? s : first;
+          shown = s, dist = e;
+          ++written;
+        }
+      }
+      if (before >= 0 || shown < 0) continue;  // a surface shows, or nothing
+      cells[d] = TargetCell{0.0, dist, -1, first};
+      r.image.pixels()[d] = rendered.pixels()[shown];
+      r.source[d] = shown;
+    }
+  }
+  return written;
+}
+
+// The corner lattice's rows [begin, end) (splat::move_lattice_rows), but the background's
+// points where `grid` holds (BackgroundGrid: the background's splats do not read them, and
+// no other splat does).
+void move_lattice(const DepthFrame& depth, int begin, int end, const CornerMove& move, bool grid,
+                  CornerLattice& lattice) {
+  if (!grid) {
+    splat::move_lattice_rows(depth, begin, end, move, lattice);
+    return;
+  }
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[k];
+      if (p >= 0) lattice.ok[k] = move(depth.planes[p], i, j, lattice.moved[k]);
+    }
+  }
+}
+
 // The splats of source rows [begin, end): each centre moved by the pixel's own depth, each
 // footprint's corners by the depth of its surface there.
 void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidStep3& step,
-                     double near, const CornerLattice& lattice, int begin, int end,
-                     SplatBuffers& buffers, SplatPlan& plan) {
+                     double near, const PixelDirections& directions, const CornerLattice& lattice,
+                     bool grid, int begin, int end, SplatPlan& plan) {
+  const CornerMove move{camera, directions, step, near};
   for (int j = begin; j < end; ++j) {
     for (int i = 0; i < depth.width; ++i) {
       const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
       const int p = depth.polygon[s];
       const Vec3 m = splat::surface_of(depth, p);
       PixelBox& box = plan.boxes[s];
-      if (!move_point(camera, step, m, depth.inverse_depth[s], i + 0.5, j + 0.5, near,
-                      buffers.exact[s], plan.centre_w[s]) ||
-          !splat::move_footprint(lattice, depth, i, j, p, CornerMove{camera, step, near},
-                                 plan.corners[s]) ||
-          !splat::footprint_box(plan.corners[s], depth.width, depth.height, box)) {
+      if (grid && p < 0) {  // painted by paint_background_rows
+        box = PixelBox{};
+        continue;
+      }
+      bool moved = false;
+      const bool shared = lattice_footprint(depth, lattice, i, j, s, p, moved);
+      plan.own_corners[s] = !shared;
+      std::array<Vec2, 4> q{};
+      if (shared) {
+        q = planned_corners(plan, lattice, s, depth.width);
+      } else {
+        moved = splat::move_footprint(lattice, depth, i, j, p, move, q);
+        plan.corners[s] = q;
+      }
+      if (!moved ||
+          !move_point(camera, step, m, depth.inverse_depth[s], directions.at(i + 1, j + 1), near,
+                      plan.exact[s], plan.centre_w[s]) ||
+          !splat::footprint_box(q, depth.width, depth.height, box)) {
         box = PixelBox{};
         continue;
       }
@@ -161,9 +456,9 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidS
 // Paints every planned splat into target rows [y_begin, y_end), in source order (so each
 // pixel sees its splats in the order one pass over the source would paint them). Returns the
 // pixels written.
-std::int64_t paint_target_rows(const SplatPlan& plan, const Image& rendered,
-                               const DepthFrame& depth, int y_begin, int y_end,
-                               SplatBuffers& buffers, Reprojection& r) {
+std::int64_t paint_target_rows(const SplatPlan& plan, const CornerLattice& lattice,
+                               const Image& rendered, const DepthFrame& depth, int y_begin,
+                               int y_end, TargetCell* cells, Reprojection& r) {
   std::int64_t written = 0;
   for (int j = 0; j < depth.height; ++j) {
     if (plan.row_last[j] < plan.row_first[j] || plan.row_last[j] < y_begin ||
@@ -174,7 +469,7 @@ std::int64_t paint_target_rows(const SplatPlan& plan, const Image& rendered,
       const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
       const PixelBox& box = plan.boxes[s];
       if (box.y_end < box.y_begin || box.y_end < y_begin || box.y_begin >= y_end) continue;
-      written += paint_splat(plan, s, y_begin, y_end - 1, rendered, depth, buffers, r);
+      written += paint_splat(plan, lattice, s, y_begin, y_end - 1, rendered, depth, cells, r);
     }
   }
   return written;
@@ -182,8 +477,8 @@ std::int64_t paint_target_rows(const SplatPlan& plan, const Image& rendered,
 
 // The unreached pixels and holes of r (see reproject_by_depth's `now`) and the per-pixel
 // displacement error of the pixels showing a surface.
-void measure_unreached(const DepthFrame& depth, const SplatBuffers& buffers, const DepthFrame* now,
-                       int width, Reprojection& r) {
+void measure_unreached(const DepthFrame& depth, const std::vector<Vec2>& exact,
+                       const DepthFrame* now, int width, Reprojection& r) {
   const std::size_t n = r.source.size();
   r.unreached.assign(n, 0);
   r.hole.assign(n, 0);
@@ -200,7 +495,7 @@ void measure_unreached(const DepthFrame& depth, const SplatBuffers& buffers, con
     }
     if (depth.polygon[r.source[d]] < 0) continue;  // the background has no position error
     const Vec2 centre(static_cast<double>(d % width) + 0.5, static_cast<double>(d / width) + 0.5);
-    const double e = glm::length(centre - buffers.exact[r.source[d]]);
+    const double e = glm::length(centre - exact[r.source[d]]);
     r.max_error_px = std::max(r.max_error_px, e);
     error_sum += e;
     ++surfaces;
@@ -210,7 +505,8 @@ void measure_unreached(const DepthFrame& depth, const SplatBuffers& buffers, con
 
 // HoleFill::kStretch: each unreached pixel takes the farther (smaller inverse depth z) of the
 // nearest reached pixels left and right of it on its row, or the one there is.
-void stretch_into_holes(const std::vector<double>& z, int width, int height, Reprojection& r) {
+void stretch_into_holes(const std::vector<TargetCell>& cells, int width, int height,
+                        Reprojection& r) {
   for (int y = 0; y < height; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * width;
     for (int x = 0; x < width; ++x) {
@@ -220,7 +516,7 @@ void stretch_into_holes(const std::vector<double>& z, int width, int height, Rep
       while (right < width && r.unreached[row + right]) ++right;
       int from = -1;
       if (left >= 0 && right < width) {
-        from = z[row + left] <= z[row + right] ? left : right;  // the farther one
+        from = cells[row + left].z <= cells[row + right].z ? left : right;  // the farther one
       } else if (left >= 0) {
         from = left;
       } else if (right < width) {
@@ -345,34 +641,43 @@ Reprojection reproject_by_depth(const Image& rendered, const DepthFrame& depth,
   r.source.assign(n, -1);
   r.source_pixels = static_cast<std::int64_t>(n);
   thread_local ReprojectionScratch scratch;
-  scratch.prepare(n, height);
-  SplatBuffers& buffers = scratch.buffers;
+  scratch.prepare(camera);
+  const PixelDirections& directions = scratch.directions;
   CornerLattice& lattice = scratch.lattice;
   SplatPlan& plan = scratch.plan;
+  TargetCell* cells = scratch.cells.data();
+  // (The bands below reach the scratch through these references: on a worker thread the
+  // name `scratch` is that thread's own.)
+  const BackgroundGrid& background = scratch.grid;
+  const bool grid = scratch.grid.prepare(camera, directions, step, near, depth);
   // Three passes over bands of rows, each band writing only its own rows: the moved corners,
   // the splats of the source rows, then the target rows painted. The bands are cut by the
   // frame's size alone, so the frame is the same with any number of threads.
   const int min_rows = std::max(4, 16384 / std::max(width, 1));
   for_each_band(height, min_rows, [&](int, int begin, int end) {
-    std::fill(buffers.z.begin() + static_cast<std::ptrdiff_t>(begin) * width,
-              buffers.z.begin() + static_cast<std::ptrdiff_t>(end) * width, -1.0);
-    splat::move_lattice_rows(depth, begin, end, CornerMove{camera, step, near}, lattice);
+    std::fill(cells + static_cast<std::ptrdiff_t>(begin) * width,
+              cells + static_cast<std::ptrdiff_t>(end) * width,
+              TargetCell{-1.0, 0.0, kNoSplat, -1});
+    move_lattice(depth, begin, end, CornerMove{camera, directions, step, near}, grid, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
-    plan_splat_rows(depth, camera, step, near, lattice, begin, end, buffers, plan);
+    plan_splat_rows(depth, camera, step, near, directions, lattice, grid, begin, end, plan);
   });
   std::vector<std::int64_t> written(static_cast<std::size_t>(band_count(height, min_rows)), 0);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
-    written[band] = paint_target_rows(plan, rendered, depth, begin, end, buffers, r);
+    written[band] = paint_target_rows(plan, lattice, rendered, depth, begin, end, cells, r);
+    if (grid) {
+      written[band] += paint_background_rows(background, rendered, depth, begin, end, cells, r);
+    }
   });
   for (const std::int64_t w : written) r.pixels_written += w;
-  measure_unreached(depth, buffers, now, width, r);
+  measure_unreached(depth, plan.exact, now, width, r);
   if (fill == HoleFill::kBackground) {
     for (std::size_t d = 0; d < n; ++d) {
       if (r.unreached[d]) r.image.pixels()[d] = kHoleBackground;
     }
   } else if (fill == HoleFill::kStretch) {
-    stretch_into_holes(buffers.z, width, height, r);
+    stretch_into_holes(scratch.cells, width, height, r);
   }
   return r;
 }

@@ -23,17 +23,17 @@ struct Splat {
   bool ok = false;
 };
 
-// Moves a footprint corner at top-left pixel position (u, v) with the surface of plane vector
-// m (0: the background) along its motion extrapolated `frames_ahead` frames:
-// splat::move_lattice_rows' `move`.
+// Moves the top-left footprint corner of pixel (i, j) (top-left pixel position (i - 0.5,
+// j - 0.5)) with the surface of plane vector m (0: the background) along its motion
+// extrapolated `frames_ahead` frames: splat::move_lattice_rows' `move`.
 struct CornerMove {
   const Camera& camera;
   const RigidStep3& back;
   int frames_ahead;
   double near;
-  bool operator()(const Vec3& m, double u, double v, Vec2& q) const {
+  bool operator()(const Vec3& m, int i, int j, Vec2& q) const {
     double unused = 0.0;
-    return extrapolate_point(camera, back, m, u, v, frames_ahead, near, q, unused);
+    return extrapolate_point(camera, back, m, i - 0.5, j - 0.5, frames_ahead, near, q, unused);
   }
 };
 

@@ -6,7 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "image/thread_pool.h"
 #include "scene_cases.h"
@@ -160,6 +164,155 @@ TEST(DepthReprojection, FillModesPaintOnlyTheUnreachedPixels) {
   EXPECT_TRUE(parse_hole_fill("stretch", parsed));
   EXPECT_EQ(parsed, HoleFill::kStretch);
   EXPECT_FALSE(parse_hole_fill("blur", parsed));
+}
+
+// The forward splatting as the header states it, written out once more as plainly as it
+// reads: one pass over the source pixels in order, each pixel's centre moved by its own
+// inverse depth, its footprint's four corners moved each on its own with its surface's plane
+// (no corner lattice, no plan, no bands), every pixel centre of the footprint's bounding box
+// tested against its four edges, the nearest surface winning and, among one polygon's
+// splats, the one landing nearest.
+struct ReferenceSplats {
+  std::vector<Pixel> image;
+  std::vector<int> source;
+  std::int64_t written = 0;
+};
+
+bool reference_move(const Camera& c, const RigidStep3& step, const Vec3& m, double w, double u,
+                    double v, Vec2& q, double& moved_w) {
+  const Vec3 d((u - c.cx) / c.focal_px, (v - c.cy) / c.focal_px, 1.0);
+  Vec3 x;
+  if (m == Vec3(0.0)) {
+    x = step.rotation * d;
+    if (!(x.z > 1e-9)) return false;
+    moved_w = 0.0;
+  } else {
+    if (!(w > 0.0)) return false;
+    x = step.rotation * (d / w) + step.translation;
+    if (!(x.z > kNear)) return false;
+    moved_w = 1.0 / x.z;
+  }
+  q = Vec2(c.cx + c.focal_px * x.x / x.z, c.cy + c.focal_px * x.y / x.z);
+  return true;
+}
+
+bool reference_inside(const std::array<Vec2, 4>& q, const Vec2& c) {
+  bool positive = true, negative = true;
+  for (int e = 0; e < 4; ++e) {
+    const Vec2 edge = q[(e + 1) % 4] - q[e];
+    const double k = edge.x * (c.y - q[e].y) - edge.y * (c.x - q[e].x);
+    positive = positive && k >= -1e-9;
+    negative = negative && k <= 1e-9;
+  }
+  return positive || negative;
+}
+
+// Source pixel (i, j)'s footprint corners moved with plane m, and the centres its bounding
+// box holds ([x0, x1] x [y0, y1]); false when it has none or a corner cannot move.
+bool reference_footprint(const Camera& c, const RigidStep3& step, const Vec3& m, int i, int j,
+                         std::array<Vec2, 4>& q, std::array<int, 4>& box) {
+  const double u[4] = {i - 0.5, i + 1.5, i + 1.5, i - 0.5},
+               v[4] = {j - 0.5, j - 0.5, j + 1.5, j + 1.5};
+  double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300, unused = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const double w = glm::dot(m, Vec3((u[k] - c.cx) / c.focal_px, (v[k] - c.cy) / c.focal_px, 1.0));
+    if (!reference_move(c, step, m, w, u[k], v[k], q[k], unused)) return false;
+    lo_x = std::min(lo_x, q[k].x), hi_x = std::max(hi_x, q[k].x);
+    lo_y = std::min(lo_y, q[k].y), hi_y = std::max(hi_y, q[k].y);
+  }
+  box = {
+      std::max(0, int(std::ceil(lo_x - 0.5))), std::min(c.width - 1, int(std::floor(hi_x - 0.5))),
+      std::max(0, int(std::ceil(lo_y - 0.5))), std::min(c.height - 1, int(std::floor(hi_y - 0.5)))};
+  return box[1] >= box[0] && box[3] >= box[2] &&
+         double(box[1] - box[0] + 1) * (box[3] - box[2] + 1) <= 4096.0;
+}
+
+ReferenceSplats reference_splats(const Image& rendered, const DepthFrame& depth, const Camera& c,
+                                 const RigidStep3& step) {
+  const std::size_t n = static_cast<std::size_t>(c.width) * c.height;
+  ReferenceSplats r{std::vector<Pixel>(n, Pixel{}), std::vector<int>(n, -1), 0};
+  std::vector<double> z(n, -1.0), dist(n, 0.0);
+  for (int s = 0; s < static_cast<int>(n); ++s) {
+    const int i = s % c.width, j = s / c.width, p = depth.polygon[s];
+    const Vec3 m = p >= 0 ? depth.planes[p] : Vec3(0.0);
+    Vec2 landed;
+    double centre_w = 0.0;
+    std::array<Vec2, 4> q;
+    std::array<int, 4> box;
+    if (!reference_move(c, step, m, depth.inverse_depth[s], i + 0.5, j + 0.5, landed, centre_w) ||
+        !reference_footprint(c, step, m, i, j, q, box)) {
+      continue;
+    }
+    for (int y = box[2]; y <= box[3]; ++y) {
+      for (int x = box[0]; x <= box[1]; ++x) {
+        const Vec2 centre(x + 0.5, y + 0.5);
+        const int d = y * c.width + x;
+        if (!reference_inside(q, centre)) continue;
+        const bool same = r.source[d] >= 0 && depth.polygon[r.source[d]] == p;
+        const double e = glm::dot(centre - landed, centre - landed);
+        if (same ? e >= dist[d] : centre_w <= z[d]) continue;
+        z[d] = centre_w, dist[d] = e, r.source[d] = s, r.image[d] = rendered.pixels()[s];
+        ++r.written;
+      }
+    }
+  }
+  return r;
+}
+
+// The banded, planned splatting (shared corners, spans decided row by row, on 2 threads) paints
+// the same frame to the bit as the plain one-pass reference, under a translation with a turn
+// (the near square disoccludes the far one), a zoom, a rotation that moves the background,
+// and a translation without rotation (the background's footprints exactly axis-aligned).
+TEST(DepthReprojection, PaintsWhatTheOnePassReferencePaints) {
+  const Scene scene = two_squares();
+  const ViewerPose then = look_at(Vec3(0.25, 0.5, 3.0), Vec3(0.25, 0.5, -1), Vec3(0, 1, 0));
+  const Image rendered = testing::ray_cast_scene(scene, kCamera, then, kNear);
+  const DepthFrame depth = render_depth(scene, kCamera, then, kNear);
+  const ViewerPose steps[] = {look_at(Vec3(0.45, 0.25, 2.9), Vec3(0.2, 0, -1), Vec3(0, 1, 0)),
+                              look_at(Vec3(0.2, 0.3, 2.2), Vec3(0, 0, -1), Vec3(0, 1, 0)),
+                              look_at(Vec3(0.2, 0.3, 3.0), Vec3(-0.6, 0.2, -1), Vec3(0.1, 1, 0)),
+                              look_at(Vec3(0.5, 0.4, 3.0), Vec3(0.5, 0.4, -1), Vec3(0, 1, 0))};
+  // The last step turns nothing, to the bit (so the background's corners stay on a grid).
+  ASSERT_EQ(viewer_step(then, steps[3]).rotation, Mat3(1.0));
+  set_worker_threads(2);
+  for (const ViewerPose& now : steps) {
+    const RigidStep3 step = viewer_step(then, now);
+    const Reprojection r =
+        reproject_by_depth(rendered, depth, kCamera, step, HoleFill::kNone, kNear);
+    const ReferenceSplats expected = reference_splats(rendered, depth, kCamera, step);
+    ASSERT_GT(expected.written, kCamera.width * kCamera.height);
+    EXPECT_EQ(r.image.pixels(), expected.image);
+    EXPECT_EQ(r.source, expected.source);
+    EXPECT_EQ(r.pixels_written, expected.written);
+  }
+  // Negative control: the reference of another step is another frame, and the comparison
+  // sees it.
+  const Reprojection r = reproject_by_depth(rendered, depth, kCamera, viewer_step(then, steps[0]),
+                                            HoleFill::kNone, kNear);
+  EXPECT_NE(r.source,
+            reference_splats(rendered, depth, kCamera, viewer_step(then, steps[1])).source);
+  set_worker_threads(1);
+}
+
+// Without rotation the background is painted pixel by pixel in each band, after the
+// surfaces: on 3 threads and many bands the frame is still the one-pass reference's.
+TEST(DepthReprojection, TheBackgroundWithoutTurningIsTheReferencesOnThreeThreads) {
+  const Camera camera = make_camera(600.0, 640, 480);  // cut into many bands
+  const Scene scene = two_squares();
+  const ViewerPose then = look_at(Vec3(0.25, 0.5, 3.0), Vec3(0.25, 0.5, -1), Vec3(0, 1, 0));
+  const ViewerPose now = look_at(Vec3(0.5, 0.4, 2.9), Vec3(0.5, 0.4, -1), Vec3(0, 1, 0));
+  const RigidStep3 step = viewer_step(then, now);
+  ASSERT_EQ(step.rotation, Mat3(1.0));
+  ASSERT_GT(band_count(camera.height, 4), 1);
+  const Image rendered = testing::ray_cast_scene(scene, camera, then, kNear);
+  const DepthFrame depth = render_depth(scene, camera, then, kNear);
+  set_worker_threads(3);
+  const Reprojection r = reproject_by_depth(rendered, depth, camera, step, HoleFill::kNone, kNear);
+  set_worker_threads(1);
+  const ReferenceSplats expected = reference_splats(rendered, depth, camera, step);
+  EXPECT_EQ(r.image.pixels(), expected.image);
+  EXPECT_EQ(r.source, expected.source);
+  EXPECT_EQ(r.pixels_written, expected.written);
 }
 
 // The splats are planned and painted in bands of rows on the worker threads: the frame, its
