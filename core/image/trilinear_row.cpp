@@ -113,8 +113,6 @@ OFLAB_AVX2 void perspective_trilinear_clamped(const SourceView& src, const Sourc
 void run_trilinear_row(const InverseMap& map, const Image& source, const InverseMap& next_map,
                        const Image& next_source, int y, int x_begin, int x_end,
                        const std::uint16_t* weights, Pixel* out) {
-  const SourceView src = source_view(source);
-  const SourceView next = source_view(next_source);
 #if defined(OFLAB_WARP_AVX2)
   const bool fast_allowed = use_avx2() && steps_exact_in_double(map);
 #else
@@ -137,6 +135,8 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
     return;
   }
 #if defined(OFLAB_WARP_AVX2)
+  const SourceView src = source_view(source);
+  const SourceView next = source_view(next_source);
   // Pixels from .. to - 1 with clamped taps, at once.
   const auto ends = [&](int from, int to) {
     if (from >= to) return;
