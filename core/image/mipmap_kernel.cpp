@@ -11,6 +11,7 @@
 #include "image/mip_row_levels.h"
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
+#include "image/trilinear_row.h"
 #include "image/warp_kernels.h"
 
 namespace oflab {

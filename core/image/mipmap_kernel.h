@@ -18,7 +18,7 @@
 //    the span is cut into stretches of one lower level (the integer part changes a few times
 //    a row at most), and each stretch runs the fast bilinear row on its lower level and,
 //    where a weight is not 0, the next level too, both sampled at once and blended pixel by
-//    pixel with each pixel's weight (run_trilinear_row in core/image/warp_kernels.h).
+//    pixel with each pixel's weight (run_trilinear_row in core/image/trilinear_row.h).
 //    Bound: every channel is within 2 levels of mipmap_pixel, the exact per-pixel definition:
 //    a level pair one step from level_pair(mip_level) moves the blend by under one level, and
 //    each level's bilinear sample is within one level of the per-pixel one (the same 16-bit

@@ -14,23 +14,12 @@
 #include "image/bilinear_blend.h"  // also provides OFLAB_WARP_SSE2 and <emmintrin.h>
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
+#include "image/warp_row_loop.h"  // also provides OFLAB_WARP_AVX2 and <immintrin.h>
 
 namespace oflab {
 namespace {
 
-struct SourceView {
-  const Pixel* pixels;
-  std::int64_t stride;
-  std::int64_t max_x;  // width - 1
-  std::int64_t max_y;  // height - 1
-  const Pixel* at(std::int64_t x, std::int64_t y) const { return pixels + y * stride + x; }
-};
-
-// Bilinear fast loops do not use the exact floor: the perspective one may round it up by
-// one, the affine one steps in 16.16 fixed point and may be off by one either way. The
-// fast range keeps this margin on both sides, plus one column (row) for the second tap.
-constexpr std::int64_t kBilinearLowMargin = 1;
-constexpr std::int64_t kBilinearHighMargin = 2;
+using namespace warp_row;  // the row loops' shared pieces
 
 // Longest run an affine bilinear loop steps in 16.16 fixed point before it restarts from
 // the exact 64-bit position: the rounding of the step then moves the position by at most
@@ -75,23 +64,6 @@ Pixel sample_clamped(const SourceView& src, const MapSample& s, int affine_shift
     return blend_taps(src.at(x0, y0), src.at(x1, y0), src.at(x0, y1), src.at(x1, y1), u.fraction,
                       v.fraction);
   }
-}
-
-// Largest denominator for which in_fast_range compares by multiplication: (max + 1) * D
-// then stays below 2^63 for images up to kMaxImageDimension (2^14) pixels across. The maps
-// have D <= 2^41 (affine form) or about 2^37 (division form); larger D takes the slow path.
-constexpr std::int64_t kMaxCompareDenominator = std::int64_t{1} << 48;
-
-// True if the sample may take the fast path (no tap needs clamping). For D > 0,
-// floor(N / D) >= low  <=>  N >= low * D  and  floor(N / D) <= top  <=>  N < (top + 1) * D,
-// so no division is needed (this runs twice per row).
-template <bool kBilinear>
-bool in_fast_range(const SourceView& src, const MapSample& s) {
-  if (s.d <= 0 || s.d >= kMaxCompareDenominator) return false;
-  const std::int64_t low = (kBilinear ? kBilinearLowMargin : 0) * s.d;
-  const std::int64_t high = kBilinear ? kBilinearHighMargin : 0;
-  return s.nu >= low && s.nv >= low && s.nu < (src.max_x - high + 1) * s.d &&
-         s.nv < (src.max_y - high + 1) * s.d;
 }
 
 #if defined(OFLAB_WARP_SSE2)
@@ -140,118 +112,18 @@ struct BilinearPairs {
 };
 #endif
 
-#if defined(OFLAB_WARP_SSE2) && defined(__GNUC__)
-// AVX2 versions of the bilinear loops, four pixels per step: the blend arithmetic of the
-// SSE2 loops (bilinear_blend.h) in both 128-bit halves of a 256-bit register. Perspective
-// positions are the same products as in the SSE2 loop, so the results are identical;
-// affine positions step four pixels at a time (within 2^-13 pixel of the exact position
-// instead of 2^-12). Compiled for AVX2 with a function attribute and chosen at run time
-// (use_avx2), so the build still runs on any x86-64.
-#define OFLAB_WARP_AVX2 1
-#define OFLAB_AVX2 __attribute__((target("avx2")))
-}  // namespace
-}  // namespace oflab
-#include <immintrin.h>
-namespace oflab {
-namespace {
-
-// True on CPUs with AVX2, unless the environment variable OFLAB_WARP_NO_AVX2 is set (the
-// tests run the SSE2 loops that way too).
-bool use_avx2() {
-  static const bool enabled =
-      __builtin_cpu_supports("avx2") && std::getenv("OFLAB_WARP_NO_AVX2") == nullptr;
-  return enabled;
-}
-
-// The blend of four pixels' taps, top = [A00 B00 A10 B10 | C00 D00 C10 D10] and bottom the
-// row below, with weights from the low 16 bits of positions [u0 v0 u1 v1 | u2 v2 u3 v3]:
-// the pixels' rounded channels as 16-bit lanes [A B | C D] (blend_detail::blend_rows).
-OFLAB_AVX2 inline __m256i quad_lanes_from_taps(const __m256i& top, const __m256i& bottom,
-                                               const __m256i& positions) {
-  // Weights: the low 16 bits of u (bytes 0-1 and 8-9 of each half) and of v (4-5, 12-13),
-  // each repeated over a pixel's four channels.
-  const __m256i fx = _mm256_shuffle_epi8(
-      positions, _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 8, 9, 8, 9, 8, 9, 8, 9, 0, 1, 0, 1, 0, 1,
-                                  0, 1, 8, 9, 8, 9, 8, 9, 8, 9));
-  const __m256i fy = _mm256_shuffle_epi8(
-      positions, _mm256_setr_epi8(4, 5, 4, 5, 4, 5, 4, 5, 12, 13, 12, 13, 12, 13, 12, 13, 4, 5, 4,
-                                  5, 4, 5, 4, 5, 12, 13, 12, 13, 12, 13, 12, 13));
-  // blend_detail::blend_rows, lane by lane.
-  const __m256i zero = _mm256_setzero_si256();
-  const __m256i ones = _mm256_set1_epi16(-1);
-  const __m256i gx = _mm256_xor_si256(fx, ones);
-  const __m256i gy = _mm256_xor_si256(fy, ones);
-  const __m256i t = _mm256_add_epi16(_mm256_mulhi_epu16(_mm256_unpacklo_epi8(zero, top), gx),
-                                     _mm256_mulhi_epu16(_mm256_unpackhi_epi8(zero, top), fx));
-  const __m256i b = _mm256_add_epi16(_mm256_mulhi_epu16(_mm256_unpacklo_epi8(zero, bottom), gx),
-                                     _mm256_mulhi_epu16(_mm256_unpackhi_epi8(zero, bottom), fx));
-  const __m256i v = _mm256_add_epi16(_mm256_mulhi_epu16(t, gy), _mm256_mulhi_epu16(b, fy));
-  return _mm256_srli_epi16(_mm256_add_epi16(v, _mm256_set1_epi16(128)), 8);
-}
-
-// Positions of four pixels [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16 fixed point (int32 lanes)
-// -> the four blended pixels' rounded channels as 16-bit lanes [p0 p1 | p2 p3] (each pixel
-// four lanes r g b a, values 0..255), before packing.
-OFLAB_AVX2 inline __m256i blend_quad_lanes(const Pixel* pixels, std::int64_t stride,
-                                           const __m256i& offset_weights,
-                                           const __m256i& positions) {
-  const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
-  const __m256i offsets = _mm256_madd_epi16(_mm256_packs_epi32(whole, whole), offset_weights);
-  const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_castsi256_si128(offsets)));
-  const auto high =
-      static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm256_extracti128_si256(offsets, 1)));
-  const Pixel* pa = pixels + static_cast<std::uint32_t>(low);
-  const Pixel* pb = pixels + (low >> 32);
-  const Pixel* pc = pixels + static_cast<std::uint32_t>(high);
-  const Pixel* pd = pixels + (high >> 32);
-  using blend_detail::load_pair;
-  const std::int64_t down = stride;
-  const __m256i top = _mm256_inserti128_si256(
-      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa), load_pair(pb))),
-      _mm_unpacklo_epi32(load_pair(pc), load_pair(pd)), 1);
-  const __m256i bottom = _mm256_inserti128_si256(
-      _mm256_castsi128_si256(_mm_unpacklo_epi32(load_pair(pa + down), load_pair(pb + down))),
-      _mm_unpacklo_epi32(load_pair(pc + down), load_pair(pd + down)), 1);
-  return quad_lanes_from_taps(top, bottom, positions);
-}
-
-// Four pixels of a segment end (positions [u0 v0 u1 v1 | u2 v2 u3 v3] as above, floors,
-// possibly outside the source) with each tap clamped to the source, as sample_clamped.
-OFLAB_AVX2 inline __m256i clamped_quad_lanes(const SourceView& src, const __m256i& positions) {
-  alignas(32) std::int32_t at[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(at), _mm256_srai_epi32(positions, 16));
-  alignas(32) std::uint32_t top[8], bottom[8];
-  for (int j = 0; j < 4; ++j) {
-    const std::int64_t x0 = std::clamp<std::int64_t>(at[2 * j], 0, src.max_x);
-    const std::int64_t x1 = std::clamp<std::int64_t>(at[2 * j] + std::int64_t{1}, 0, src.max_x);
-    const std::int64_t y0 = std::clamp<std::int64_t>(at[2 * j + 1], 0, src.max_y);
-    const std::int64_t y1 = std::clamp<std::int64_t>(at[2 * j + 1] + std::int64_t{1}, 0, src.max_y);
-    const int slot = 4 * (j / 2) + j % 2;  // [A00 B00 A10 B10 | C00 D00 C10 D10]
-    std::memcpy(&top[slot], src.at(x0, y0), 4);
-    std::memcpy(&top[slot + 2], src.at(x1, y0), 4);
-    std::memcpy(&bottom[slot], src.at(x0, y1), 4);
-    std::memcpy(&bottom[slot + 2], src.at(x1, y1), 4);
-  }
-  return quad_lanes_from_taps(_mm256_load_si256(reinterpret_cast<const __m256i*>(top)),
-                              _mm256_load_si256(reinterpret_cast<const __m256i*>(bottom)),
-                              positions);
-}
-
-// 16-bit lanes [p0 p1 | p2 p3] of channels 0..255 -> the four pixels, stored to out[0..3].
-OFLAB_AVX2 inline void store_quad(const __m256i& lanes, Pixel* out) {
-  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes, lanes), 0x08);
-  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
-}
+#if defined(OFLAB_WARP_AVX2)
+// The AVX2 loops, four pixels per step, on the pieces in warp_row_loop.h: the blend
+// arithmetic of the SSE2 loops (bilinear_blend.h) in both 128-bit halves of a 256-bit
+// register. Perspective positions are the same products as in the SSE2 loop, so the results
+// are identical; affine positions step four pixels at a time (within 2^-13 pixel of the exact
+// position instead of 2^-12).
 
 // The same stored to out[0..3].
 OFLAB_AVX2 inline void blend_quad(const Pixel* pixels, std::int64_t stride,
                                   const __m256i& offset_weights, const __m256i& positions,
                                   Pixel* out) {
   store_quad(blend_quad_lanes(pixels, stride, offset_weights, positions), out);
-}
-
-OFLAB_AVX2 inline __m256i quad_offset_weights(const SourceView& src) {
-  return _mm256_set1_epi32(static_cast<int>((static_cast<std::uint32_t>(src.stride) << 16) | 1u));
 }
 
 // Affine bilinear, four pixels per step, in runs of up to kMaxApproximateRun pixels that
@@ -288,38 +160,6 @@ OFLAB_AVX2 int affine_bilinear_quads(const SourceView& src, Pixel* out, int coun
   return total;
 }
 
-// Four pixels' numerators and denominators (lanes k .. k + 3), as PairStep below: one
-// packed division gives the four reciprocals of D, and the quotients are products with
-// them.
-struct QuadStep {
-  __m256d nu, nv, d;
-  __m256d step_u, step_v, step_d;
-
-  // Numerators `scale * (N + bias)` (exact: bias is 0 or 1/2, scale a power of two).
-  OFLAB_AVX2 QuadStep(double n_u, double n_v, double den, double du, double dv, double dd,
-                      double bias, double scale)
-      : nu(_mm256_setr_pd((n_u + bias) * scale, (n_u + du + bias) * scale,
-                          (n_u + 2 * du + bias) * scale, (n_u + 3 * du + bias) * scale)),
-        nv(_mm256_setr_pd((n_v + bias) * scale, (n_v + dv + bias) * scale,
-                          (n_v + 2 * dv + bias) * scale, (n_v + 3 * dv + bias) * scale)),
-        d(_mm256_setr_pd(den, den + dd, den + 2 * dd, den + 3 * dd)),
-        step_u(_mm256_set1_pd(4 * du * scale)),
-        step_v(_mm256_set1_pd(4 * dv * scale)),
-        step_d(_mm256_set1_pd(4 * dd)) {}
-
-  // Truncated quotients of the four pixels as int32 lanes (floors if `floored`: the same
-  // where they are not negative), then four pixels to the right.
-  OFLAB_AVX2 void next(__m128i& u, __m128i& v, bool floored = false) {
-    const __m256d r = _mm256_div_pd(_mm256_set1_pd(1.0), d);
-    const __m256d qu = _mm256_mul_pd(nu, r), qv = _mm256_mul_pd(nv, r);
-    u = _mm256_cvttpd_epi32(floored ? _mm256_floor_pd(qu) : qu);
-    v = _mm256_cvttpd_epi32(floored ? _mm256_floor_pd(qv) : qv);
-    nu = _mm256_add_pd(nu, step_u);
-    nv = _mm256_add_pd(nv, step_v);
-    d = _mm256_add_pd(d, step_d);
-  }
-};
-
 // Perspective nearest, four pixels per step: one packed division gives the four
 // reciprocals of D, and the floors are the truncated products (N + 1/2) * (1/D), exact
 // under the same condition as in the SSE2 loop (numerators below
@@ -346,14 +186,6 @@ OFLAB_AVX2 int perspective_nearest_quads(const SourceView& src, Pixel* out, int 
   return total;
 }
 
-// The 16.16 positions [u0 v0 u1 v1 | u2 v2 u3 v3] of the next four pixels.
-OFLAB_AVX2 inline __m256i quad_positions(QuadStep& step, bool floored = false) {
-  __m128i u, v;
-  step.next(u, v, floored);
-  return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi32(u, v)),
-                                 _mm_unpackhi_epi32(u, v), 1);
-}
-
 // Perspective bilinear, four pixels per step: one packed division gives the four
 // reciprocals of D, the 16.16 positions are products with them (as in the SSE2 loop).
 // Handles the largest multiple of 4 pixels of the span and returns how many it wrote.
@@ -365,87 +197,12 @@ OFLAB_AVX2 int perspective_bilinear_quads(const SourceView& src, Pixel* out, int
   const std::int64_t stride = src.stride;
   QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
   const int total = count & ~3;
-  if (total == 0) return 0;
-  // The next quad's positions are computed before the current quad's blend.
-  __m256i positions = quad_positions(step);
-  for (int k = 0; k < total; k += 4) {
-    const __m256i current = positions;
-    positions = quad_positions(step);
-    blend_quad(pixels, stride, offset_weights, current, out + k);
-  }
+  for_each_quad(step, total, [=](int k, const __m256i& positions) OFLAB_AVX2 {
+    blend_quad(pixels, stride, offset_weights, positions, out + k);
+  });
   return total;
 }
 
-// Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3]) blended with
-// weights w[0..3] in [0, 256]: (a (256 - w) + b w + 128) / 256 per channel, the bytes of
-// blending the stored samples (a (256 - w) + b w <= 255 * 256: no overflow).
-OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const std::uint16_t* w) {
-  std::int64_t four;
-  std::memcpy(&four, w, sizeof(four));
-  const __m256i spread = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4, 5, 4,
-                                          5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7);
-  const __m256i weight = _mm256_shuffle_epi8(_mm256_set1_epi64x(four), spread);
-  const __m256i sum =
-      _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), weight)),
-                       _mm256_mullo_epi16(b, weight));
-  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
-}
-
-// The same on two mip levels at once, blended: `src` is level k and `next` level k + 1,
-// sampled at the positions derived from level k's: u_{k+1} = u_k / 2 - 1/4 (pixel-centre
-// coordinates; in 16.16 a shift and a subtraction, within one unit of 2^-16 of the truncated
-// exact position). Level k's fast range keeps level k + 1's taps inside it:
-// 1 <= u_k < w_k - 1 gives 1/4 <= u_{k+1} < ceil(w_k / 2) - 5/4. The two samples are
-// blended by lerp_lanes.
-OFLAB_AVX2 int perspective_trilinear_quads(const SourceView& src, const SourceView& next,
-                                           const std::uint16_t* weights, Pixel* out, int count,
-                                           double nu, double nv, double d, double du, double dv,
-                                           double dd) {
-  const __m256i offset_weights = quad_offset_weights(src);
-  const __m256i next_offset_weights = quad_offset_weights(next);
-  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
-  const Pixel* const pixels = src.pixels;
-  const Pixel* const next_pixels = next.pixels;
-  const std::int64_t stride = src.stride;
-  const std::int64_t next_stride = next.stride;
-  QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
-  const int total = count & ~3;
-  if (total == 0) return 0;
-  __m256i positions = quad_positions(step);
-  for (int k = 0; k < total; k += 4) {
-    const __m256i current = positions;
-    positions = quad_positions(step);
-    const __m256i a = blend_quad_lanes(pixels, stride, offset_weights, current);
-    const __m256i b = blend_quad_lanes(next_pixels, next_stride, next_offset_weights,
-                                       _mm256_sub_epi32(_mm256_srai_epi32(current, 1), quarter));
-    store_quad(lerp_lanes(a, b, weights + k), out + k);
-  }
-  return total;
-}
-
-// Pixels 0 .. count - 1 of a trilinear segment whose taps may leave either level (the ends
-// of a span, and what the quads leave over): the positions of perspective_trilinear_quads
-// (the same products, floored), every tap clamped to its level as sample_clamped clamps
-// it, so each pixel's bytes are the fast loop's wherever both apply.
-OFLAB_AVX2 void perspective_trilinear_clamped(const SourceView& src, const SourceView& next,
-                                              const std::uint16_t* weights, Pixel* out, int count,
-                                              double nu, double nv, double d, double du, double dv,
-                                              double dd) {
-  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
-  QuadStep step(nu, nv, d, du, dv, dd, 0.0, 1 << kBlendWeightBits);
-  for (int k = 0; k < count; k += 4) {
-    const int n = std::min(4, count - k);
-    const __m256i positions = quad_positions(step, true);
-    const __m256i a = clamped_quad_lanes(src, positions);
-    const __m256i b =
-        clamped_quad_lanes(next, _mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter));
-    std::uint16_t w[4] = {0, 0, 0, 0};
-    std::copy(weights + k, weights + k + n, w);
-    Pixel four[4];
-    store_quad(lerp_lanes(a, b, w), four);
-    std::copy(four, four + n, out + k);
-  }
-}
 #endif
 
 // Affine inner loop: fixed point with `shift` fractional bits, only additions.
@@ -666,16 +423,6 @@ void perspective_span(const SourceView& src, Pixel* out, int count, double nu, d
 }
 #endif
 
-// Largest step that double can hold exactly together with the running sums.
-constexpr std::int64_t kMaxExactStep = std::int64_t{1} << 51;
-
-bool steps_exact_in_double(const InverseMap& m) {
-  for (std::int64_t c : {m.a, m.d, m.g}) {
-    if (c >= kMaxExactStep || c <= -kMaxExactStep) return false;
-  }
-  return true;
-}
-
 // Output columns per strip. Fast runs are processed in vertical strips so that
 // consecutive rows reuse the source cache lines, pages and TLB entries of the rows above:
 // a rotation walks the source diagonally, and row by row across a whole 1920-pixel frame
@@ -755,8 +502,7 @@ std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Image& out
 
 template <bool kAffine, bool kBilinear>
 std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::int64_t* computed) {
-  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
-                       source.height() - 1};
+  const SourceView src = source_view(source);
   const InverseMap& map = plan.map;
   const bool fast_allowed = kAffine || steps_exact_in_double(map);
 
@@ -829,8 +575,7 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::
 
 void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_begin, int x_end,
                       Pixel* out) {
-  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
-                       source.height() - 1};
+  const SourceView src = source_view(source);
   const bool fast_allowed = steps_exact_in_double(map);
   Pixel* row = out - x_begin;  // row[x] is output pixel x
   int begin = x_begin, end = x_end;
@@ -850,60 +595,6 @@ void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_b
                          static_cast<double>(s.nv), static_cast<double>(s.d),
                          static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
                          static_cast<double>(2 * map.g));
-}
-
-void run_trilinear_row(const InverseMap& map, const Image& source, const InverseMap& next_map,
-                       const Image& next_source, int y, int x_begin, int x_end,
-                       const std::uint16_t* weights, Pixel* out) {
-  const SourceView src{source.pixels().data(), source.width(), source.width() - 1,
-                       source.height() - 1};
-  const SourceView next{next_source.pixels().data(), next_source.width(), next_source.width() - 1,
-                        next_source.height() - 1};
-#if defined(OFLAB_WARP_AVX2)
-  const bool fast_allowed = use_avx2() && steps_exact_in_double(map);
-#else
-  const bool fast_allowed = false;  // the SSE2 build runs the two levels one after the other
-#endif
-  if (!fast_allowed) {
-    thread_local std::vector<Pixel> upper;
-    upper.resize(static_cast<std::size_t>(std::max(x_end - x_begin, 0)));
-    run_bilinear_row(map, source, y, x_begin, x_end, out);
-    run_bilinear_row(next_map, next_source, y, x_begin, x_end, upper.data());
-    for (int k = 0; k < x_end - x_begin; ++k) {
-      const Pixel a = out[k], b = upper[static_cast<std::size_t>(k)];
-      const int w = weights[k];
-      auto channel = [&](std::uint8_t Pixel::*c) {
-        return static_cast<std::uint8_t>((a.*c * (256 - w) + b.*c * w + 128) >> 8);
-      };
-      out[k] =
-          Pixel{channel(&Pixel::r), channel(&Pixel::g), channel(&Pixel::b), channel(&Pixel::a)};
-    }
-    return;
-  }
-#if defined(OFLAB_WARP_AVX2)
-  // Pixels from .. to - 1 with clamped taps, at once.
-  const auto ends = [&](int from, int to) {
-    if (from >= to) return;
-    const MapSample s = evaluate(map, from, y);
-    perspective_trilinear_clamped(src, next, weights + (from - x_begin), out + (from - x_begin),
-                                  to - from, static_cast<double>(s.nu), static_cast<double>(s.nv),
-                                  static_cast<double>(s.d), static_cast<double>(2 * map.a),
-                                  static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
-  };
-  int begin = x_begin, end = x_end;
-  while (begin < end && !in_fast_range<true>(src, evaluate(map, begin, y))) ++begin;
-  while (end > begin && !in_fast_range<true>(src, evaluate(map, end - 1, y))) --end;
-  ends(x_begin, begin);
-  ends(end, x_end);
-  if (begin >= end) return;
-  const MapSample s = evaluate(map, begin, y);
-  const int done =
-      perspective_trilinear_quads(src, next, weights + (begin - x_begin), out + (begin - x_begin),
-                                  end - begin, static_cast<double>(s.nu), static_cast<double>(s.nv),
-                                  static_cast<double>(s.d), static_cast<double>(2 * map.a),
-                                  static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
-  ends(begin + done, end);
-#endif
 }
 
 bool warp_avx2_enabled() {

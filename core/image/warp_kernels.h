@@ -44,22 +44,11 @@ std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& o
 // y sampled from `source` through `map` into out[0 .. x_end - x_begin - 1], exactly as
 // run_warp_kernel samples them (the ends whose taps need clamping one by one, the rest in
 // the fast loop). The mipmap kernel runs it per level on the row segments where that level
-// serves. Preconditions: map is in division form (affine_shift < 0) with D > 0 over the
-// segment's pixels (make_inverse_map over a region holding them), 0 <= x_begin <= x_end.
+// serves, and the trilinear row (core/image/trilinear_row.h) on two levels. Preconditions: map is
+// in division form (affine_shift < 0) with D > 0 over the segment's pixels (make_inverse_map over a
+// region holding them), 0 <= x_begin <= x_end.
 void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_begin, int x_end,
                       Pixel* out);
-
-// The same segment sampled trilinearly on two mip levels k and k + 1 (core/image/mip_pyramid.h):
-// out[i] = (a (256 - w) + b w + 128) / 256 per channel for w = weights[i] in [0, 256], a the
-// sample of `source` through `map` and b that of `next_source` through `next_map`. With AVX2
-// the positions are found once, on level k, and level k + 1's derived from them (within one
-// unit of 2^-16 of its own map's); each sample is within one level of the exact
-// interpolation, as run_bilinear_row's. Preconditions: as run_bilinear_row for both maps,
-// next_map being map's level scaled by 1/2 (mipmap_kernel.cpp's level_plan), next_source
-// level k + 1 of source.
-void run_trilinear_row(const InverseMap& map, const Image& source, const InverseMap& next_map,
-                       const Image& next_source, int y, int x_begin, int x_end,
-                       const std::uint16_t* weights, Pixel* out);
 
 // True when the kernels run their AVX2 loops: the CPU has AVX2 and the environment variable
 // OFLAB_WARP_NO_AVX2 is not set (read once). Other AVX2 loops (mip_row_levels.h) follow it.
