@@ -39,6 +39,27 @@ DisplaySampling display_sampling(int frame_width, int frame_height, int out_widt
 
 namespace {
 
+// Frame indices of `out_size` display pixels starting at frame coordinate `start`, `pixel`
+// frame pixels each; -1 outside 0 .. frame_size - 1.
+std::vector<int> region_indices(int frame_size, double start, double pixel, int out_size) {
+  std::vector<int> indices(static_cast<std::size_t>(std::max(1, out_size)));
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    const double centre = std::floor(start + (static_cast<double>(i) + 0.5) * pixel);
+    indices[i] = centre >= 0.0 && centre < frame_size ? static_cast<int>(centre) : -1;
+  }
+  return indices;
+}
+
+}  // namespace
+
+DisplaySampling region_sampling(int frame_width, int frame_height, double x0, double y0,
+                                double pixel, int out_width, int out_height) {
+  return {region_indices(frame_width, x0, pixel, out_width),
+          region_indices(frame_height, y0, pixel, out_height)};
+}
+
+namespace {
+
 // Writes out[4 * i ...] for every display pixel i, row after row, from `colour(frame row,
 // frame column)`, which returns 4 bytes. Empty frames give transparent black.
 template <class Colour>
@@ -62,15 +83,19 @@ void sample_into(const Image& frame, const DisplaySampling& sampling, Colour col
 }  // namespace
 
 void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
-                  std::vector<std::uint8_t>& out) {
-  // Premultiplied "over": colour + background * (1 - alpha), rounded.
+                  std::vector<std::uint8_t>& out, double opacity) {
+  // Premultiplied "over": colour + background * (1 - alpha), rounded; then the fade.
+  const bool faded = opacity < 1.0;
+  const double weight = std::clamp(opacity, 0.0, 1.0);
+  const auto fade = [&](int c, int bg) {
+    return static_cast<std::uint8_t>(faded ? bg + std::lround(weight * (c - bg)) : c);
+  };
   const auto over = [&](int y, int x) {
-    const Pixel p = frame.at(x, y);
+    const Pixel p = x < 0 || y < 0 ? Pixel{0, 0, 0, 0} : frame.at(x, y);
     const int rest = 255 - p.a;
-    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(p.r + (rgb[0] * rest + 127) / 255),
-                                       static_cast<std::uint8_t>(p.g + (rgb[1] * rest + 127) / 255),
-                                       static_cast<std::uint8_t>(p.b + (rgb[2] * rest + 127) / 255),
-                                       255};
+    return std::array<std::uint8_t, 4>{fade(p.r + (rgb[0] * rest + 127) / 255, rgb[0]),
+                                       fade(p.g + (rgb[1] * rest + 127) / 255, rgb[1]),
+                                       fade(p.b + (rgb[2] * rest + 127) / 255, rgb[2]), 255};
   };
   sample_into(frame, sampling, over, out);
 }
