@@ -117,20 +117,24 @@ emscripten::val world_texture(const WebSession& s) {
 // pixels} with pixels opaque RGBA8 rows (a view into the module's memory), display pixel
 // (x, y) showing the camera pixel under (x0 + (x + 0.5) * pixel, y0 + (y + 0.5) * pixel)
 // (top-left camera pixels; frame_pixels.h region_sampling) over the page's background
-// #111315, faded towards it by `opacity` in [0, 1]. Width and height are clamped to
-// 1 .. 4096, pixel to at least 1e-6. Null when no texture is drawn (exact_plane_image empty).
+// #111315 (also off the camera image), faded towards it by `opacity` in [0, 1]. Width and
+// height are clamped to 1 .. 4096, pixel to at least 1e-6. Null when no texture is drawn
+// (an empty layer).
 emscripten::val flow_texture(WebSession& s, double x0, double y0, double pixel, int width,
                              int height, double opacity) {
   static std::vector<std::uint8_t> pixels;
-  const Image& image = s.exact_plane_image();
-  if (image.empty()) return emscripten::val::null();
+  const PlaneImage& image = s.exact_plane_image();
+  const Layer& layer = image.placed.layer;
+  if (layer.empty()) return emscripten::val::null();
   width = std::clamp(width, 1, 4096);
   height = std::clamp(height, 1, 4096);
+  pixel = std::max(1e-6, pixel);
+  DisplaySampling sampling =
+      region_sampling(image.width, image.height, x0, y0, pixel, width, height);
+  shift_sampling(sampling, image.placed.offset_x, image.placed.offset_y, layer.image.width(),
+                 layer.image.height());
   const std::uint8_t background[3] = {0x11, 0x13, 0x15};
-  flatten_into(
-      image,
-      region_sampling(image.width(), image.height(), x0, y0, std::max(1e-6, pixel), width, height),
-      background, pixels, opacity);
+  flatten_into(layer.image, sampling, background, pixels, opacity);
   emscripten::val out = emscripten::val::object();
   out.set("width", width);
   out.set("height", height);

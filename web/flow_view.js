@@ -117,7 +117,9 @@ const flowView = {
     // putImageData ignores the context's transform: add its shift (the world view's layout
     // draws this view translated into the canvas's right half).
     const m = ctx.getTransform();
-    ctx.putImageData(new ImageData(new Uint8ClampedArray(t.pixels), t.width, t.height), x + m.e, y + m.f);
+    // The image data is a view of the module's pixels, put at once (no copy).
+    const data = new Uint8ClampedArray(t.pixels.buffer, t.pixels.byteOffset, t.pixels.length);
+    ctx.putImageData(new ImageData(data, t.width, t.height), x + m.e, y + m.f);
     return { x, y, width, height };
   },
 

@@ -58,6 +58,14 @@ DisplaySampling region_sampling(int frame_width, int frame_height, double x0, do
           region_indices(frame_height, y0, pixel, out_height)};
 }
 
+void shift_sampling(DisplaySampling& sampling, int offset_x, int offset_y, int width, int height) {
+  const auto shift = [](std::vector<int>& indices, int offset, int size) {
+    for (int& i : indices) i = i < 0 || i - offset < 0 || i - offset >= size ? -1 : i - offset;
+  };
+  shift(sampling.columns, offset_x, width);
+  shift(sampling.rows, offset_y, height);
+}
+
 namespace {
 
 // Writes out[4 * i ...] for every display pixel i, row after row, from `colour(frame row,
@@ -84,20 +92,39 @@ void sample_into(const Image& frame, const DisplaySampling& sampling, Colour col
 
 void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
                   std::vector<std::uint8_t>& out, double opacity) {
-  // Premultiplied "over": colour + background * (1 - alpha), rounded; then the fade.
-  const bool faded = opacity < 1.0;
+  if (frame.empty()) {
+    out.assign(sampling.columns.size() * sampling.rows.size() * 4, 0);
+    return;
+  }
+  // The fade of each composited channel value, looked up: background + opacity * (c - bg).
   const double weight = std::clamp(opacity, 0.0, 1.0);
-  const auto fade = [&](int c, int bg) {
-    return static_cast<std::uint8_t>(faded ? bg + std::lround(weight * (c - bg)) : c);
-  };
-  const auto over = [&](int y, int x) {
-    const Pixel p = x < 0 || y < 0 ? Pixel{0, 0, 0, 0} : frame.at(x, y);
+  std::array<std::array<std::uint8_t, 256>, 3> fade{};
+  for (int c = 0; c < 3; ++c) {
+    for (int v = 0; v < 256; ++v) {
+      fade[c][v] = static_cast<std::uint8_t>(
+          opacity < 1.0 ? rgb[c] + std::lround(weight * (v - rgb[c])) : v);
+    }
+  }
+  const std::array<std::uint8_t, 4> empty{fade[0][rgb[0]], fade[1][rgb[1]], fade[2][rgb[2]], 255};
+  // Premultiplied "over": colour + background * (1 - alpha), rounded; opaque and empty pixels
+  // (most of a frame) take the short ways.
+  const auto over = [&](const Pixel& p) -> std::array<std::uint8_t, 4> {
+    if (p.a == 255) return {fade[0][p.r], fade[1][p.g], fade[2][p.b], 255};
+    if ((p.a | p.r | p.g | p.b) == 0) return empty;
     const int rest = 255 - p.a;
-    return std::array<std::uint8_t, 4>{fade(p.r + (rgb[0] * rest + 127) / 255, rgb[0]),
-                                       fade(p.g + (rgb[1] * rest + 127) / 255, rgb[1]),
-                                       fade(p.b + (rgb[2] * rest + 127) / 255, rgb[2]), 255};
+    return {fade[0][p.r + (rgb[0] * rest + 127) / 255], fade[1][p.g + (rgb[1] * rest + 127) / 255],
+            fade[2][p.b + (rgb[2] * rest + 127) / 255], 255};
   };
-  sample_into(frame, sampling, over, out);
+  out.resize(sampling.columns.size() * sampling.rows.size() * 4);
+  std::uint8_t* o = out.data();
+  for (const int y : sampling.rows) {
+    const Pixel* row = y < 0 ? nullptr : frame.row(y);
+    for (const int x : sampling.columns) {
+      const std::array<std::uint8_t, 4> c = row && x >= 0 ? over(row[x]) : empty;
+      std::copy(c.begin(), c.end(), o);
+      o += 4;
+    }
+  }
 }
 
 int largest_difference(const Image& a, const Image& b) {

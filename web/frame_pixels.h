@@ -27,6 +27,11 @@ DisplaySampling display_sampling(int frame_width, int frame_height, int out_widt
 DisplaySampling region_sampling(int frame_width, int frame_height, double x0, double y0,
                                 double pixel, int out_width, int out_height);
 
+// `sampling` of a frame moved onto an image placed at (offset_x, offset_y) of it, of width x
+// height pixels (a layer's): every index less the offset, -1 where it falls outside the
+// image (or was -1).
+void shift_sampling(DisplaySampling& sampling, int offset_x, int offset_y, int width, int height);
+
 // `frame` (premultiplied RGBA) composited over the opaque colour (r, g, b) and sampled by
 // `sampling` into `out`, 4 bytes per display pixel (resized to fit); a sampling index of -1
 // shows the background. With opacity < 1 the composited frame is faded towards the

@@ -14,7 +14,6 @@
 
 #include "basis/basis_catalog.h"
 #include "display/flow_parts.h"
-#include "engine/exact_render.h"
 #include "engine/reuse_policy.h"
 #include "flow/basis.h"
 #include "flow/flow_field.h"
@@ -22,7 +21,6 @@
 #include "formats/image_io.h"
 #include "formats/script_file.h"
 #include "frame_pixels.h"
-#include "image/composite.h"
 #include "image/image_compare.h"
 #include "image/pixel_rows.h"
 #include "lessons/claim_kinds.h"
@@ -252,26 +250,9 @@ std::vector<double> WebSession::flow_arrows(const std::string& part_key, double 
   return out;
 }
 
-const Image& WebSession::exact_plane_image() {
-  if (plane_image_epoch_ == epoch_ && plane_image_frame_ == frame()) return plane_image_;
-  plane_image_epoch_ = epoch_;
-  plane_image_frame_ = frame();
-  plane_image_ = Image();
-  const PlaneScene s = scene();
-  if (!plane_scene_problem(s).empty() || !plane_visibility_problem(s.pose).empty()) {
-    return plane_image_;
-  }
-  if (texture_epoch_ != epoch_) {
-    texture_layer_ = make_layer(lab_.panel().texture());
-    texture_epoch_ = epoch_;
-  }
-  if (texture_layer_.empty()) return plane_image_;
-  const PlacedLayer shown =
-      render_exact(s.camera, texture_layer_, s.pose, lab_.run().settings().sampling);
-  plane_image_ = Image(s.camera.width, s.camera.height);
-  if (!shown.layer.empty())
-    composite_over(plane_image_, shown.layer, shown.offset_x, shown.offset_y);
-  return plane_image_;
+const PlaneImage& WebSession::exact_plane_image() {
+  return plane_image_.image(scene(), lab_.panel().texture(), lab_.run().settings().sampling, epoch_,
+                            frame());
 }
 
 const PlaneWorldLoop& WebSession::world_loop() {

@@ -76,6 +76,14 @@ TEST(FramePixels, RegionSamplingPicksThePixelUnderEachCentreOrNone) {
   EXPECT_EQ(same.rows, whole.rows);
 }
 
+TEST(FramePixels, ShiftSamplingMovesIndicesOntoAPlacedImage) {
+  // Frame columns -1, 0, 3, 5, 9 and rows 2, 7 onto a 4 x 5 image placed at (2, 3).
+  DisplaySampling s{{-1, 0, 3, 5, 9}, {2, 7}};
+  shift_sampling(s, 2, 3, 4, 5);
+  EXPECT_EQ(s.columns, (std::vector<int>{-1, -1, 1, 3, -1}));
+  EXPECT_EQ(s.rows, (std::vector<int>{-1, 4}));
+}
+
 TEST(FramePixels, FlattenFadesTowardsTheBackgroundAndShowsItOffTheFrame) {
   const Image frame = random_premultiplied(16, 9, 2);
   const std::uint8_t background[3] = {17, 19, 21};
