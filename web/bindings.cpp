@@ -113,6 +113,35 @@ emscripten::val world_texture(const WebSession& s) {
   return out;
 }
 
+// The flow view's texture (WebSession::exact_plane_image) as display pixels: {width, height,
+// pixels} with pixels opaque RGBA8 rows (a view into the module's memory), display pixel
+// (x, y) showing the camera pixel under (x0 + (x + 0.5) * pixel, y0 + (y + 0.5) * pixel)
+// (top-left camera pixels; frame_pixels.h region_sampling) over the page's background
+// #111315 (also off the camera image), faded towards it by `opacity` in [0, 1]. Width and
+// height are clamped to 1 .. 4096, pixel to at least 1e-6. Null when no texture is drawn
+// (an empty layer).
+emscripten::val flow_texture(WebSession& s, double x0, double y0, double pixel, int width,
+                             int height, double opacity) {
+  static std::vector<std::uint8_t> pixels;
+  const PlaneImage& image = s.exact_plane_image();
+  const Layer& layer = image.placed.layer;
+  if (layer.empty()) return emscripten::val::null();
+  width = std::clamp(width, 1, 4096);
+  height = std::clamp(height, 1, 4096);
+  pixel = std::max(1e-6, pixel);
+  DisplaySampling sampling =
+      region_sampling(image.width, image.height, x0, y0, pixel, width, height);
+  shift_sampling(sampling, image.placed.offset_x, image.placed.offset_y, layer.image.width(),
+                 layer.image.height());
+  const std::uint8_t background[3] = {0x11, 0x13, 0x15};
+  flatten_into(layer.image, sampling, background, pixels, opacity);
+  emscripten::val out = emscripten::val::object();
+  out.set("width", width);
+  out.set("height", height);
+  out.set("pixels", emscripten::val(emscripten::typed_memory_view(pixels.size(), pixels.data())));
+  return out;
+}
+
 // The scene-shifting view's frame (WebSlices::pixels): a view into the module's memory.
 emscripten::val slice_pixels(WebSlices& s, bool exact, int width, int height) {
   const std::vector<std::uint8_t>& pixels = s.pixels(exact, width, height);
@@ -150,6 +179,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("worldTexture", &oflab::world_texture)
       .function("arrows", &oflab::arrows)
       .function("streamlines", &oflab::streamlines)
+      .function("flowTexture", &oflab::flow_texture)
       .function("basisJson", &WebSession::basis_json)
       .function("explorerJson", &oflab::explorer_json)
       .function("comparisonProblem", &WebSession::comparison_problem)
@@ -167,6 +197,10 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .class_function("scriptNamesJson", &WebSession::script_names_json)
       .class_function("sceneNamesJson", &WebSession::scene_names_json)
       .class_function("stateSchemaJson", &WebSession::state_schema_json);
+}
+
+// The palette's colours for the page's drawings (session/display/palette.h).
+EMSCRIPTEN_BINDINGS(oflab_web_palette) {
   emscripten::function("heatColour", &oflab::heat_colour);
   emscripten::function("policyColour", &oflab::policy_rgb);
   emscripten::function("levelColours", &oflab::level_colours);

@@ -1,5 +1,6 @@
 'use strict';
-// The flow view: the plane's outline, and the chosen part of its flow (gui/adapters/
+// The flow view: the plane's outline and faded texture (core's exact image of the plane,
+// Session.flowTexture, as the desktop's), and the chosen part of its flow (gui/adapters/
 // flow_parts.h) as arrows, streamlines and a colour wheel, with the coefficient table in the
 // planar basis and its units. Every vector comes from core (Session.arrows, .streamlines,
 // .flowJson); this file only maps them to the canvas.
@@ -10,7 +11,7 @@ const flowView = {
   build() {
     const draw = $('flow-draw');
     const options = [['arrows', 'Arrows'], ['streamlines', 'Streamlines'], ['colour_wheel', 'Colour wheel'],
-      ['zoom_to_plane', 'Zoom to plane'], ['common_scale', 'Common scale']];
+      ['texture', 'Texture'], ['zoom_to_plane', 'Zoom to plane'], ['common_scale', 'Common scale']];
     for (const [key, label] of options) {
       const box = document.createElement('input');
       box.type = 'checkbox';
@@ -26,7 +27,7 @@ const flowView = {
 
   syncControls(s) {
     $('flow-part').value = s.flow.part;
-    for (const key of ['arrows', 'streamlines', 'colour_wheel', 'zoom_to_plane', 'common_scale']) {
+    for (const key of ['arrows', 'streamlines', 'colour_wheel', 'texture', 'zoom_to_plane', 'common_scale']) {
       $(`flow-${key}`).checked = s.flow[key];
     }
   },
@@ -60,17 +61,21 @@ const flowView = {
       drawCentredText(ctx, w, h, `No flow to draw: ${flow.problem}`, style);
       return;
     }
-    const fit = this.fit(flow, { x: 10, y: 10, w: w - 20, h: h - 40 });
+    const area = { x: 10, y: 10, w: w - 20, h: h - 40 };
+    const fit = this.fit(flow, area);
     const part = app.state.flow.part;
     const spacing = this.spacing(flow);
-    // The image frame and the plane's outline.
+    // The texture (not under the colour wheel, which is opaque over the plane, as the desktop).
+    const textured = app.state.flow.texture && !app.state.flow.colour_wheel;
+    this.drawnTexture = textured ? this.drawTexture(ctx, fit, area, flow) : null;
+    // The image frame and the plane's outline, tinted when it has no texture.
     ctx.lineWidth = style.line;
     ctx.strokeStyle = '#3a3f47';
     const [ix0, iy0] = fit.map(0, 0);
     ctx.strokeRect(ix0, iy0, fit.k * flow.camera.width, fit.k * flow.camera.height);
     tracePolygon(ctx, flow.outline.map((p) => fit.map(p[0], p[1])));
     ctx.fillStyle = 'rgba(90, 169, 230, 0.10)';
-    ctx.fill();
+    if (!this.drawnTexture) ctx.fill();
     ctx.strokeStyle = '#5aa9e6';
     ctx.stroke();
     if (app.state.flow.colour_wheel) this.drawWheel(ctx, fit, part, Math.max(2, spacing / 4));
@@ -88,6 +93,34 @@ const flowView = {
     const title = flow.parts.find((p) => p.key === part).title;
     ctx.fillText(`${title}, px/s (frame ${flow.frame}; motion model ${flow.motion_model})`, 12, h - 12);
     this.fillTable(flow);
+  },
+
+  // The plane's exact image (Session.flowTexture) faded towards the background as the
+  // desktop's (0.45, 0.6 in presentation mode), sampled at the canvas pixels of the plane's
+  // outline box inside the image frame and `area`; the canvas is the page's background there
+  // (nothing is drawn before), so the pixels are put, not blended. Returns what was drawn
+  // ({x, y, width, height} canvas pixels), or null.
+  drawTexture(ctx, fit, area, flow) {
+    const [ox, oy] = fit.map(0, 0);
+    const cx = flow.outline.map((p) => fit.map(p[0], p[1])[0]);
+    const cy = flow.outline.map((p) => fit.map(p[0], p[1])[1]);
+    const left = Math.max(area.x, ox, Math.min(...cx));
+    const top = Math.max(area.y, oy, Math.min(...cy));
+    const right = Math.min(area.x + area.w, ox + fit.k * flow.camera.width, Math.max(...cx));
+    const bottom = Math.min(area.y + area.h, oy + fit.k * flow.camera.height, Math.max(...cy));
+    const [x, y] = [Math.floor(left), Math.floor(top)];
+    const [width, height] = [Math.ceil(right) - x, Math.ceil(bottom) - y];
+    if (!(width >= 1 && height >= 1)) return null;
+    const opacity = app.state.presentation ? 0.6 : 0.45;
+    const t = app.session.flowTexture((x - ox) / fit.k, (y - oy) / fit.k, 1 / fit.k, width, height, opacity);
+    if (!t) return null;
+    // putImageData ignores the context's transform: add its shift (the world view's layout
+    // draws this view translated into the canvas's right half).
+    const m = ctx.getTransform();
+    // The image data is a view of the module's pixels, put at once (no copy).
+    const data = new Uint8ClampedArray(t.pixels.buffer, t.pixels.byteOffset, t.pixels.length);
+    ctx.putImageData(new ImageData(data, t.width, t.height), x + m.e, y + m.f);
+    return { x, y, width, height };
   },
 
   // Arrow length: the largest flow of the drawn part (or of the full flow, with a common

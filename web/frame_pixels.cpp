@@ -39,6 +39,35 @@ DisplaySampling display_sampling(int frame_width, int frame_height, int out_widt
 
 namespace {
 
+// Frame indices of `out_size` display pixels starting at frame coordinate `start`, `pixel`
+// frame pixels each; -1 outside 0 .. frame_size - 1.
+std::vector<int> region_indices(int frame_size, double start, double pixel, int out_size) {
+  std::vector<int> indices(static_cast<std::size_t>(std::max(1, out_size)));
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    const double centre = std::floor(start + (static_cast<double>(i) + 0.5) * pixel);
+    indices[i] = centre >= 0.0 && centre < frame_size ? static_cast<int>(centre) : -1;
+  }
+  return indices;
+}
+
+}  // namespace
+
+DisplaySampling region_sampling(int frame_width, int frame_height, double x0, double y0,
+                                double pixel, int out_width, int out_height) {
+  return {region_indices(frame_width, x0, pixel, out_width),
+          region_indices(frame_height, y0, pixel, out_height)};
+}
+
+void shift_sampling(DisplaySampling& sampling, int offset_x, int offset_y, int width, int height) {
+  const auto shift = [](std::vector<int>& indices, int offset, int size) {
+    for (int& i : indices) i = i < 0 || i - offset < 0 || i - offset >= size ? -1 : i - offset;
+  };
+  shift(sampling.columns, offset_x, width);
+  shift(sampling.rows, offset_y, height);
+}
+
+namespace {
+
 // Writes out[4 * i ...] for every display pixel i, row after row, from `colour(frame row,
 // frame column)`, which returns 4 bytes. Empty frames give transparent black.
 template <class Colour>
@@ -62,17 +91,40 @@ void sample_into(const Image& frame, const DisplaySampling& sampling, Colour col
 }  // namespace
 
 void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
-                  std::vector<std::uint8_t>& out) {
-  // Premultiplied "over": colour + background * (1 - alpha), rounded.
-  const auto over = [&](int y, int x) {
-    const Pixel p = frame.at(x, y);
+                  std::vector<std::uint8_t>& out, double opacity) {
+  if (frame.empty()) {
+    out.assign(sampling.columns.size() * sampling.rows.size() * 4, 0);
+    return;
+  }
+  // The fade of each composited channel value, looked up: background + opacity * (c - bg).
+  const double weight = std::clamp(opacity, 0.0, 1.0);
+  std::array<std::array<std::uint8_t, 256>, 3> fade{};
+  for (int c = 0; c < 3; ++c) {
+    for (int v = 0; v < 256; ++v) {
+      fade[c][v] = static_cast<std::uint8_t>(
+          opacity < 1.0 ? rgb[c] + std::lround(weight * (v - rgb[c])) : v);
+    }
+  }
+  const std::array<std::uint8_t, 4> empty{fade[0][rgb[0]], fade[1][rgb[1]], fade[2][rgb[2]], 255};
+  // Premultiplied "over": colour + background * (1 - alpha), rounded; opaque and empty pixels
+  // (most of a frame) take the short ways.
+  const auto over = [&](const Pixel& p) -> std::array<std::uint8_t, 4> {
+    if (p.a == 255) return {fade[0][p.r], fade[1][p.g], fade[2][p.b], 255};
+    if ((p.a | p.r | p.g | p.b) == 0) return empty;
     const int rest = 255 - p.a;
-    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(p.r + (rgb[0] * rest + 127) / 255),
-                                       static_cast<std::uint8_t>(p.g + (rgb[1] * rest + 127) / 255),
-                                       static_cast<std::uint8_t>(p.b + (rgb[2] * rest + 127) / 255),
-                                       255};
+    return {fade[0][p.r + (rgb[0] * rest + 127) / 255], fade[1][p.g + (rgb[1] * rest + 127) / 255],
+            fade[2][p.b + (rgb[2] * rest + 127) / 255], 255};
   };
-  sample_into(frame, sampling, over, out);
+  out.resize(sampling.columns.size() * sampling.rows.size() * 4);
+  std::uint8_t* o = out.data();
+  for (const int y : sampling.rows) {
+    const Pixel* row = y < 0 ? nullptr : frame.row(y);
+    for (const int x : sampling.columns) {
+      const std::array<std::uint8_t, 4> c = row && x >= 0 ? over(row[x]) : empty;
+      std::copy(c.begin(), c.end(), o);
+      o += 4;
+    }
+  }
 }
 
 int largest_difference(const Image& a, const Image& b) {

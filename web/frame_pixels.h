@@ -19,10 +19,26 @@ struct DisplaySampling {
 };
 DisplaySampling display_sampling(int frame_width, int frame_height, int out_width, int out_height);
 
+// A display of out_width x out_height pixels showing part of a frame (or reaching beyond it):
+// display pixel (x, y) shows the frame pixel under the point (x0 + (x + 0.5) * pixel,
+// y0 + (y + 0.5) * pixel) in top-left frame pixels (nearest neighbour), or index -1 where
+// that point lies outside the frame (shown as the background). Preconditions: out sizes >= 1,
+// pixel > 0 (frame pixels per display pixel).
+DisplaySampling region_sampling(int frame_width, int frame_height, double x0, double y0,
+                                double pixel, int out_width, int out_height);
+
+// `sampling` of a frame moved onto an image placed at (offset_x, offset_y) of it, of width x
+// height pixels (a layer's): every index less the offset, -1 where it falls outside the
+// image (or was -1).
+void shift_sampling(DisplaySampling& sampling, int offset_x, int offset_y, int width, int height);
+
 // `frame` (premultiplied RGBA) composited over the opaque colour (r, g, b) and sampled by
-// `sampling` into `out`, 4 bytes per display pixel (resized to fit).
+// `sampling` into `out`, 4 bytes per display pixel (resized to fit); a sampling index of -1
+// shows the background. With opacity < 1 the composited frame is faded towards the
+// background: background + opacity * (composited - background), rounded (opacity in [0, 1];
+// 1 leaves it as composited).
 void flatten_into(const Image& frame, const DisplaySampling& sampling, const std::uint8_t rgb[3],
-                  std::vector<std::uint8_t>& out);
+                  std::vector<std::uint8_t>& out, double opacity = 1.0);
 
 // The largest absolute difference of the four premultiplied channels over all pixels of two
 // frames, in grey levels (0..255). Precondition: same size (throws std::invalid_argument).

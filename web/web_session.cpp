@@ -250,6 +250,11 @@ std::vector<double> WebSession::flow_arrows(const std::string& part_key, double 
   return out;
 }
 
+const PlaneImage& WebSession::exact_plane_image() {
+  return plane_image_.image(scene(), lab_.panel().texture(), lab_.run().settings().sampling, epoch_,
+                            frame());
+}
+
 const PlaneWorldLoop& WebSession::world_loop() {
   if (world_epoch_ != epoch_) {
     world_loop_ = panel_world_loop(lab_.panel());

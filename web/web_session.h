@@ -25,6 +25,7 @@
 #include "engine/animator.h"
 #include "flow/plane_scene.h"
 #include "lessons/lessons.h"
+#include "plane_image.h"
 #include "player/engine_claims.h"
 #include "player/lab.h"
 #include "state/window_state.h"
@@ -118,6 +119,9 @@ class WebSession {
   std::string world_frame_json();
   // The plane's texture (premultiplied RGBA, top row first), which the world view's plane shows.
   const Image& plane_texture() const { return lab_.panel().texture(); }
+  // The flow view's texture: the exact image of the plane at the frame shown
+  // (web/plane_image.h) with the lab's texture and the run's sampling.
+  const PlaneImage& exact_plane_image();
 
   // The basis gallery of `basis_key` (session/basis/basis_catalog.h): per term its symbol,
   // description, order, unit, coefficient in the current flow, whether it is negligible
@@ -194,7 +198,8 @@ class WebSession {
   SceneWorldLoop scene_world_loop_;  // a scene source's walk at scene_world_epoch_
   int scene_world_epoch_ = -1;
   std::string comparison_problem_;
-  int sampled_frame_ = -1;  // the frame whose pixels the panels hold, at sampled_size_
+  int sampled_frame_ = -1;       // the frame whose pixels the panels hold, at sampled_size_
+  PlaneImageCache plane_image_;  // exact_plane_image()
   glm::ivec2 sampled_size_{0, 0};
 };
 

@@ -64,6 +64,49 @@ TEST(FramePixels, FlattenIsTheStraightAlphaBlendOverTheBackground) {
   }
 }
 
+TEST(FramePixels, RegionSamplingPicksThePixelUnderEachCentreOrNone) {
+  // Display pixels 2.5 frame pixels wide from (-3, 1.25): centres at -1.75, 0.75, 3.25, ...
+  const DisplaySampling s = region_sampling(8, 4, -3.0, 1.25, 2.5, 5, 3);
+  EXPECT_EQ(s.columns, (std::vector<int>{-1, 0, 3, 5, -1}));  // 8.25 is beyond column 7
+  EXPECT_EQ(s.rows, (std::vector<int>{2, -1, -1}));           // 4.75, 7.25: below the frame
+  // The whole frame at its own size is the display sampling (the flow view's test size).
+  const DisplaySampling same = region_sampling(640, 480, 0.0, 0.0, 1.0, 640, 480);
+  const DisplaySampling whole = display_sampling(640, 480, 640, 480);
+  EXPECT_EQ(same.columns, whole.columns);
+  EXPECT_EQ(same.rows, whole.rows);
+}
+
+TEST(FramePixels, ShiftSamplingMovesIndicesOntoAPlacedImage) {
+  // Frame columns -1, 0, 3, 5, 9 and rows 2, 7 onto a 4 x 5 image placed at (2, 3).
+  DisplaySampling s{{-1, 0, 3, 5, 9}, {2, 7}};
+  shift_sampling(s, 2, 3, 4, 5);
+  EXPECT_EQ(s.columns, (std::vector<int>{-1, -1, 1, 3, -1}));
+  EXPECT_EQ(s.rows, (std::vector<int>{-1, 4}));
+}
+
+TEST(FramePixels, FlattenFadesTowardsTheBackgroundAndShowsItOffTheFrame) {
+  const Image frame = random_premultiplied(16, 9, 2);
+  const std::uint8_t background[3] = {17, 19, 21};
+  const DisplaySampling sampling = region_sampling(16, 9, -2.0, 0.0, 1.0, 20, 9);
+  std::vector<std::uint8_t> full, faded;
+  flatten_into(frame, sampling, background, full);
+  flatten_into(frame, sampling, background, faded, 0.45);
+  for (int y = 0; y < 9; ++y) {
+    for (int x = 0; x < 20; ++x) {
+      const std::size_t i = 4 * (std::size_t(y) * 20 + x);
+      for (int c = 0; c < 3; ++c) {
+        const bool off = x < 2 || x >= 18;  // display columns off the frame: the background
+        if (off) EXPECT_EQ(full[i + c], background[c]) << x << "," << y;
+        const double expected = background[c] + 0.45 * (full[i + c] - background[c]);
+        EXPECT_NEAR(faded[i + c], expected, 0.51) << x << "," << y;
+      }
+      EXPECT_EQ(faded[i + 3], 255);
+    }
+  }
+  // Control: the fade changes the frame's pixels.
+  EXPECT_NE(full, faded);
+}
+
 TEST(FramePixels, LargestDifferenceIsTheLargestChannelDifference) {
   const Image a = random_premultiplied(50, 40, 2);
   Image b = a;

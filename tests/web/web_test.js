@@ -18,7 +18,8 @@
 // - The world view (vtk.js): its numbers are the teaching layer's as the flow view sees them
 //   (a moved corner is caught), playing keeps its actors, a drag turns it, and the world
 //   lesson shows it beside the flow view. A scene's world and the scene-shifting view:
-//   tests/web/views_test.js.
+//   tests/web/views_test.js. The flow view's texture is the CLI's exact frame:
+//   tests/web/flow_texture_test.js.
 // - The basis explorer's planes and motions are `oflab-cli explain`'s for its coefficients.
 // - Every step of every shipped lesson shows the state and frame `oflab-cli lesson state`
 //   gives (--cli, default build/analysis/oflab-cli); a changed frame is caught.
@@ -45,6 +46,7 @@ const path = require('path');
 const { decodePng } = require('./png');
 const { testSlicesView, testSceneWorld } = require('./views_test');
 const { testRunCsv } = require('./exports_test');
+const { testFlowTexture } = require('./flow_texture_test');
 
 const root = path.resolve(__dirname, '..', '..');
 const args = process.argv.slice(2);
@@ -897,6 +899,7 @@ async function bench(browser) {
       await testSlicesView(helpers);
       await testSceneWorld(helpers);
       await testRunCsv(helpers);
+      await testFlowTexture(helpers);
       await testControls(browser);
       await testExplorer(browser);
       await testLessonStates(browser);

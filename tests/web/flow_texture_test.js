@@ -1,0 +1,104 @@
+'use strict';
+// The flow view's texture (manual/web.md, "Flow"), run by web_test.js with its browser and
+// helpers ({ browser, open, evaluate, check, drawnMarker, cli }).
+//
+// - The page's texture (Session.flowTexture: core's exact image of the plane at the frame
+//   shown) sampled at the frame's own size and not faded is the exact frame
+//   `oflab-cli animate --mode rerender --frames-png` writes for the same script and frame,
+//   flattened over the page's background: equal bytes where the CLI's pixel is opaque or
+//   empty, within 2 grey levels on the plane's edge (the PNG's straight alpha is rounded
+//   there). The CLI's frame 0 is not the page's frame 20 (negative control).
+// - The view draws it (the canvas under the drawn rectangle changes) with flow.texture true
+//   and draws none with it false (negative control: nothing drawn, the canvas is the tinted
+//   outline only).
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { spawnSync } = require('child_process');
+const { decodePng } = require('./png');
+
+const kBackground = [0x11, 0x13, 0x15];  // the page's canvas background, #111315
+
+// `oflab-cli animate --mode rerender`'s frames 0 .. last of `script` as decoded PNGs, or { error }.
+function cliExactFrames(cli, script, last) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'oflab-web-flowtex-'));
+  try {
+    const r = spawnSync(cli, ['animate', '--mode', 'rerender', '--script', script, '--out', path.join(dir, 'run'),
+      '--frames-png', '--frames', String(last + 1), '--quiet', '--no-warm-up', '--repeat-timing', '1'], { encoding: 'utf8' });
+    if (r.status !== 0) return { error: r.stderr.trim() };
+    const read = (k) => {
+      const name = `frame_${String(k).padStart(5, '0')}.png`;
+      return decodePng(fs.readFileSync(path.join(dir, 'run', name)), name);
+    };
+    return { first: read(0), last: read(last) };
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+// The CLI's straight-alpha frame over the background (premultiplied, rounded as core rounds)
+// against the page's opaque bytes: how many pixels differ, and by how much at most, apart for
+// opaque-or-empty pixels and partly covered ones.
+function compareOverBackground(png, page) {
+  const out = { solidDiffering: 0, edgeLargest: 0, largest: 0 };
+  if (page.length !== png.data.length) return { sizeMismatch: `${page.length} bytes, the CLI's ${png.data.length}` };
+  for (let i = 0; i < png.data.length; i += 4) {
+    const a = png.data[i + 3];
+    for (let c = 0; c < 3; ++c) {
+      const premultiplied = Math.round((png.data[i + c] * a) / 255);
+      const expected = premultiplied + Math.floor((kBackground[c] * (255 - a) + 127) / 255);
+      const d = Math.abs(expected - page[i + c]);
+      out.largest = Math.max(out.largest, d);
+      if (a === 0 || a === 255) out.solidDiffering += d > 0 ? 1 : 0;
+      else out.edgeLargest = Math.max(out.edgeLargest, d);
+    }
+  }
+  return out;
+}
+
+async function testFlowTexture({ browser, open, evaluate, check, drawnMarker, cli }) {
+  await open(browser, '?view=flow&script=swing&frame=20', drawnMarker);
+  const frame = await evaluate(browser, 'app.session.frame()');
+  const b64 = await evaluate(browser, `(() => {
+    const t = app.session.flowTexture(0, 0, 1, app.session.frameWidth(), app.session.frameHeight(), 1);
+    if (!t) return '';
+    let s = '';
+    for (let i = 0; i < t.pixels.length; i += 8192) s += String.fromCharCode(...t.pixels.subarray(i, i + 8192));
+    return btoa(s);
+  })()`);
+  const page = Buffer.from(b64, 'base64');
+  const frames = cliExactFrames(cli, 'swing', frame);
+  if (frames.error || !page.length) {
+    check('TheFlowTextureIsTheCliExactFrame', false, frames.error || 'the page drew no texture');
+    return;
+  }
+  const same = compareOverBackground(frames.last, page);
+  check('TheFlowTextureIsTheCliExactFrame', frame === 20 && !same.sizeMismatch && same.solidDiffering === 0 &&
+    same.edgeLargest <= 2, `frame ${frame}: ${JSON.stringify(same)}`);
+  const other = compareOverBackground(frames.first, page);
+  check('TheCliFrame0IsNotTheFlowTextureOfFrame20', other.solidDiffering > 1000, JSON.stringify(other));
+
+  // The view draws it with flow.texture, and not without.
+  const drawn = JSON.parse(await evaluate(browser, `(() => {
+    const read = (texture) => {
+      editState((s) => { s.flow.texture = texture; s.flow.colour_wheel = false; });
+      draw();
+      const r = app.views.flow.drawnTexture;
+      const box = r || { x: 0, y: 0, width: 1, height: 1 };
+      return { r, pixels: $('canvas').getContext('2d').getImageData(box.x, box.y, box.width, box.height).data };
+    };
+    const on = read(true);
+    const off = read(false);
+    const box = on.r ? on.r : null;
+    let differing = 0;
+    if (box) {
+      const again = $('canvas').getContext('2d').getImageData(box.x, box.y, box.width, box.height).data;
+      for (let i = 0; i < again.length; i += 4) differing += again[i] !== on.pixels[i] || again[i + 1] !== on.pixels[i + 1] ? 1 : 0;
+    }
+    return JSON.stringify({ on: on.r, off: off.r, differing, state: app.state.flow.texture });
+  })()`));
+  check('TheFlowViewDrawsTheTexture', drawn.on && drawn.differing > 1000, JSON.stringify(drawn));
+  check('WithoutFlowTextureTheViewDrawsNone', drawn.on && drawn.off === null && drawn.state === false, JSON.stringify(drawn));
+}
+
+module.exports = { testFlowTexture };
