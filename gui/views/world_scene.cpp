@@ -132,22 +132,26 @@ void WorldScene::place_label(WorldLabelId id, const Vec3& at, const std::string&
 
 // The source: what every frame of the loop shows (the plane's path, the scene's polygons).
 
+template <class Loop>
+void WorldScene::take_loop(const Loop& loop) {
+  camera = loop.camera;
+  path = loop.path;
+  largest_velocity = loop.largest_velocity;
+  largest_omega = loop.largest_omega;
+  depth = loop.depth;
+  full_arrow = loop.full_arrow;
+  world_centre = loop.world_centre;
+}
+
 void WorldScene::load_plane(WindowModel& window) {
   const SceneModel& scene = *window.scene();
   // The loop's numbers are the teaching layer's (display/world_geometry.h), as the page's.
   plane_loop = plane_world_loop(scene.as_script(), scene.scene().camera, scene.current_pose(),
                                 SceneModel::kSecondsPerFrame);
-  const PlaneWorldLoop& loop = plane_loop;
-  camera = loop.camera;
-  path = loop.path;
-  loop_corners = loop.loop_corners;
-  largest_velocity = loop.largest_velocity;
-  largest_omega = loop.largest_omega;
-  first_pose = loop.first_pose;
+  take_loop(plane_loop);
+  loop_corners = plane_loop.loop_corners;
+  first_pose = plane_loop.first_pose;
   first_view = ViewerPose{};
-  depth = loop.depth;
-  full_arrow = loop.full_arrow;
-  world_centre = loop.world_centre;
   copy_texture_pixels(scene.texture(), texture_pixels);
   exact.reset();
   problem.clear();
@@ -174,20 +178,13 @@ void WorldScene::load_scene(AnimationModel& animation) {
     return;
   }
   // The walk's numbers are the teaching layer's (display/world_geometry.h), as the page's.
-  const SceneWorldLoop loop = scene_world_loop(*animator, SceneModel::kSecondsPerFrame);
-  camera = loop.camera;
+  scene_loop = scene_world_loop(*animator, SceneModel::kSecondsPerFrame);
+  take_loop(scene_loop);
+  first_view = scene_loop.first_view;
   const Rgb8 grey = kUnreportedPolygon;
-  set_coloured_polygons(polygons.data, loop.outlines,
-                        std::vector<std::array<unsigned char, 4>>(loop.outlines.size(),
+  set_coloured_polygons(polygons.data, scene_loop.outlines,
+                        std::vector<std::array<unsigned char, 4>>(scene_loop.outlines.size(),
                                                                   {grey.r, grey.g, grey.b, 255}));
-  path = loop.path;
-  largest_velocity = loop.largest_velocity;
-  largest_omega = loop.largest_omega;
-  first_view = loop.first_view;
-  depth = loop.depth;
-  full_arrow = loop.full_arrow;
-  world_centre = loop.world_centre;
-  scene_loop = loop;
 }
 
 // One frame: every actor keeps its identity; points, matrices and pixels change.

@@ -118,6 +118,11 @@ struct WorldScene {
   // Label `id` names `text` at the world point `at` (painted where the camera projects it).
   void place_label(WorldLabelId id, const Vec3& at, const std::string& text);
 
+  // Takes what every loop gives (display/world_geometry.h PlaneWorldLoop, SceneWorldLoop):
+  // the camera, the path, the largest speeds, the image plane's depth, the longest arrow and
+  // the centre the reset view looks at.
+  template <class Loop>
+  void take_loop(const Loop& loop);
   // The whole loop of the window model's plane (its path, largest speeds, image depth, the
   // texture and the exact renderer of the image plane; `problem` says why it cannot start).
   void load_plane(WindowModel& window);
