@@ -44,18 +44,40 @@ bool starts_with(const std::string& bytes, const char* signature, size_t length)
   return bytes.size() >= length && std::memcmp(bytes.data(), signature, length) == 0;
 }
 
+// Big-endian 32-bit value at byte `at` of `bytes`. Precondition: at + 4 <= bytes.size().
+std::uint32_t be32(const std::string& bytes, size_t at) {
+  std::uint32_t v = 0;
+  for (size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+  return v;
+}
+
 // The size in a PNG's IHDR chunk (always first, at byte 8), when the bytes have one.
 bool png_header_size(const std::string& bytes, ImageFileSize* size) {
   if (bytes.size() < 24 || bytes.compare(12, 4, "IHDR") != 0) return false;
-  const auto be32 = [&](size_t at) {
-    std::uint32_t v = 0;
-    for (size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
-    return v;
-  };
   // Sides beyond 2^31 are reported as the largest int: refused by the limits all the same.
-  size->width = static_cast<int>(std::min<std::uint32_t>(be32(16), 0x7fffffff));
-  size->height = static_cast<int>(std::min<std::uint32_t>(be32(20), 0x7fffffff));
+  size->width = static_cast<int>(std::min<std::uint32_t>(be32(bytes, 16), 0x7fffffff));
+  size->height = static_cast<int>(std::min<std::uint32_t>(be32(bytes, 20), 0x7fffffff));
   return true;
+}
+
+// Walks a PNG's chunks (length, type, data, CRC) after the signature up to IEND and refuses
+// one whose length reaches past the end of the bytes: stb_image allocates a chunk's declared
+// length before it reads the data, so a few damaged bytes could ask for gigabytes.
+void check_png_chunks(const std::string& bytes, const std::string& origin) {
+  size_t at = 8;
+  while (at + 8 <= bytes.size()) {
+    const std::uint64_t length = be32(bytes, at);
+    const std::string type = bytes.substr(at + 4, 4);
+    const std::uint64_t left = bytes.size() - at - 8;
+    if (length + 4 > left) {
+      throw ImageFileError(origin + ": PNG chunk '" + type + "' at byte " + std::to_string(at) +
+                           " declares " + std::to_string(length) + " bytes of data, but " +
+                           std::to_string(left) +
+                           " bytes (its CRC included) are left in the file: truncated or damaged");
+    }
+    if (type == "IEND") return;
+    at += 12 + length;
+  }
 }
 
 // The checks of check_image_file on bytes in memory.
@@ -81,6 +103,7 @@ ImageFileSize check_image_bytes(const std::string& bytes, const std::string& ori
                          std::to_string(kMaxImagePixels) + " pixels, " +
                          std::to_string(kMaxImageDimension) + " on a side)");
   }
+  if (png) check_png_chunks(bytes, origin);
   return size;
 }
 
