@@ -18,6 +18,7 @@
 #include "adapters/hole_map.h"
 #include "adapters/painted_text.h"
 #include "flow/limits.h"
+#include "image/thread_pool.h"
 #include "models/animation_model.h"
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
@@ -410,12 +411,11 @@ std::vector<PanelContent> AnimationView::panels() {
   return {engine_panel(), exact_panel()};
 }
 
-void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
-                                const std::vector<std::vector<Vec2>>& outlines) {
-  const QRectF target =
-      centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height());
-  panel_rects_.push_back(target);
-  const QTransform to_panel = frame_to_panel(shown_frame_, target);
+void AnimationView::paint_picture(QPainter& painter, const PanelContent& panel,
+                                  const QRectF& target,
+                                  const std::vector<std::vector<Vec2>>& outlines) const {
+  const QTransform base = painter.transform();
+  const QTransform to_panel = frame_to_panel(shown_frame_, target) * base;
   const QColor background = qcolor(theme_.background);
   const QColor outline = qcolor(theme_.outline);
   painter.save();
@@ -423,15 +423,18 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   // Outside the camera image: a shade apart from the image's own background.
   painter.fillRect(target,
                    background.lightness() > 128 ? background.darker(112) : background.lighter(160));
-  const QRectF image_rect = to_panel.mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size())));
+  const QRectF image_rect = frame_to_panel(shown_frame_, target)
+                                .mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size())));
   painter.fillRect(image_rect, qcolor(theme_.image_background));
   painter.setTransform(to_panel);
   painter.drawImage(QPointF(0, 0), panel.image);
-  painter.resetTransform();
+  painter.setTransform(base);
   painter.setRenderHint(QPainter::Antialiasing, true);
   painter.setBrush(Qt::NoBrush);
   painter.setPen(QPen(outline, 1.0, Qt::DotLine));
   painter.drawRect(image_rect);
+  // The outlines' points mapped here, drawn untransformed (the pen's width in canvas pixels).
+  painter.setTransform(QTransform());
   painter.setPen(QPen(outline, theme_.line_width, Qt::DashLine));
   for (const std::vector<Vec2>& points : outlines) {
     QPolygonF polygon;
@@ -440,7 +443,43 @@ void AnimationView::paint_panel(QPainter& painter, const PanelContent& panel, co
   }
   draw_level_outlines(painter, panel.levels, to_panel, theme_.line_width + 1.5);
   painter.restore();
-  paint_texts(painter, panel, cell);
+}
+
+void AnimationView::paint_panels(QPainter& painter, const PanelPlan& plan,
+                                 const std::vector<std::vector<Vec2>>& outlines) {
+  const size_t count = plan.contents.size();
+  std::vector<QRectF> targets;
+  for (const PanelCell& cell : plan.cells)
+    targets.push_back(
+        centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height()));
+  panel_rects_.insert(panel_rects_.end(), targets.begin(), targets.end());
+  QPaintDevice* device = painter.device();
+  QImage* canvas =
+      device && device->devType() == QInternal::Image ? static_cast<QImage*>(device) : nullptr;
+  if (panels_in_parallel_ && canvas && canvas->format() == QImage::Format_RGB32 &&
+      painter.transform().isIdentity() && count > 1) {
+    // Each panel's picture on core's worker threads into its own window of the canvas (the
+    // canvas's memory, rows bytesPerLine apart; the windows do not overlap): the same
+    // painting, moved by whole pixels, so the same pixels as painted here one by one.
+    uchar* bits = canvas->bits();  // the painter has already detached the canvas
+    const qsizetype line = canvas->bytesPerLine();
+    for_each_band(int(count), 1, [&](int, int begin, int end) {
+      for (int i = begin; i < end; ++i) {
+        const QRect window = targets[i].toAlignedRect().intersected(canvas->rect());
+        if (window.isEmpty()) continue;
+        QImage part(bits + window.y() * line + window.x() * 4, window.width(), window.height(),
+                    line, QImage::Format_RGB32);
+        QPainter on_part(&part);
+        on_part.translate(-window.x(), -window.y());
+        paint_picture(on_part, plan.contents[i], targets[i], outlines);
+      }
+    });
+  } else {
+    for (size_t i = 0; i < count; ++i)
+      paint_picture(painter, plan.contents[i], targets[i], outlines);
+  }
+  // The texts here, on the window's thread (fonts are the GUI thread's).
+  for (size_t i = 0; i < count; ++i) paint_texts(painter, plan.contents[i], plan.cells[i]);
 }
 
 QImage AnimationView::compose(const QSize& size) {
@@ -493,8 +532,7 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
                              hugging_aspect(plan.cells.front().image, content, window_->zoom()),
                              window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
-  for (size_t i = 0; i < plan.contents.size(); ++i)
-    paint_panel(painter, plan.contents[i], plan.cells[i], outlines);
+  paint_panels(painter, plan, outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),
                                   [](const PanelContent& c) { return !c.levels.empty(); });
   paint_band(painter, plan.legends, levels,

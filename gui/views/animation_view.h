@@ -120,6 +120,10 @@ class AnimationView : public ViewPage {
   // canvas or overlapping; empty when every text is legible.
   std::vector<QString> text_problems();
 
+  // Whether the panels' pictures are painted on core's worker threads (the default) or one
+  // after another on the window's thread: the same pixels either way (a test compares them).
+  void set_panels_in_parallel(bool on) { panels_in_parallel_ = on; }
+
   // Who draws the exact panel, the difference heat maps' reference and the readout's exact
   // pixel: the entry of exact_renderers() the window model names.
   const ExactRendererKind& exact_renderer() const { return *exact_kind_; }
@@ -172,9 +176,10 @@ class AnimationView : public ViewPage {
   std::vector<PanelContent> comparison_panels();
   PanelContent engine_panel();
   PanelContent exact_panel();
-  // Paints `panel` into `cell` with the shared framing and the exact outlines (camera pixels).
-  void paint_panel(QPainter& painter, const PanelContent& panel, const PanelCell& cell,
-                   const std::vector<std::vector<Vec2>>& outlines);
+  // Paints `panel`'s picture (its image framed by shown_frame_, the exact outlines in camera
+  // pixels, its level outlines) into `target` (the painter's logical pixels), clipped to it.
+  void paint_picture(QPainter& painter, const PanelContent& panel, const QRectF& target,
+                     const std::vector<std::vector<Vec2>>& outlines) const;
   // The title above the panel's image and its caption lines below it.
   // Caption lines the bands under the frames (top) and under the heat maps must hold, and the
   // titles' one pixel size and lines.
@@ -203,6 +208,11 @@ class AnimationView : public ViewPage {
   // row, each under its policy, and the legends in the spare cell under the exact panel; else
   // every panel in one row and the legends in a band below it.
   PanelPlan plan_panels(std::vector<PanelContent> contents, const QSize& size, bool heat_row) const;
+  // Paints the pictures of `plan`'s panels (paint_picture), then their texts; records their
+  // canvas rectangles in panel_rects_. On a canvas image (Format_RGB32, untransformed) the
+  // pictures are painted on core's worker threads, each into its own window of the canvas.
+  void paint_panels(QPainter& painter, const PanelPlan& plan,
+                    const std::vector<std::vector<Vec2>>& outlines);
   // Whether every title and caption line of `plan` fits its cell's width whole and its
   // images are at least a few text lines high.
   bool texts_fit(const PanelPlan& plan) const;
@@ -235,6 +245,7 @@ class AnimationView : public ViewPage {
   ViewTheme theme_;
   bool blink_phase_ = false;
   bool external_clock_ = false;
+  bool panels_in_parallel_ = true;    // paint_panels's threads (set_panels_in_parallel)
   bool fit_known_ = false;            // fit_ is up to date with the model's source
   QRectF fit_;                        // the plane's image over its loop (empty: the whole image)
   std::vector<QRectF> frame_bounds_;  // the plane's image at each frame of the loop

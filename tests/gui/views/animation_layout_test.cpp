@@ -24,6 +24,7 @@
 #include "formats/datasets.h"
 #include "formats/script_file.h"
 #include "formats/viewer_script_file.h"
+#include "image/thread_pool.h"
 #include "image_checks.h"
 #include "lessons/lessons.h"
 #include "models/animation_model.h"
@@ -206,6 +207,35 @@ TEST_F(AnimationLayoutTest, ACanvasGrabShowsEveryPanelOfTheLayout) {
   ASSERT_EQ(grabbed.size(), rendered.size());
   EXPECT_GE(psnr_db(grabbed, rendered), 40.0);
   EXPECT_EQ(animation().panel_rects().size(), 5u);
+}
+
+// The panels' pictures painted on two worker threads, each into its own window of the
+// canvas, are the pixels painted one after another on the canvas itself: on a lesson of many
+// outlines (four cubes: dashed exact outlines and level outlines in every panel), at a
+// projector's size. Control: the next frame's canvas differs.
+TEST_F(AnimationLayoutTest, PanelsPaintedOnTheThreadsAreThePixelsPaintedOneByOne) {
+  window().resize(1920, 1080);
+  QApplication::processEvents();
+  window().apply_lesson(*find_lesson("hierarchical-cache"));
+  window().model()->set_playing(false);
+  window().set_external_clock(true);
+  QApplication::processEvents();
+  ASSERT_EQ(animation().display(), PanelDisplay::kComparison);
+  window().play_frames(30);
+  set_worker_threads(2);
+  animation().set_panels_in_parallel(false);
+  const QImage alone = animation().render_image().copy();
+  animation().set_panels_in_parallel(true);
+  const QImage threads = animation().render_image().copy();
+  const QImage again = animation().render_image().copy();
+  window().play_frames(1);
+  const QImage next = animation().render_image().copy();
+  set_worker_threads(1);
+  ASSERT_GE(animation().panel_rects().size(), 4u);
+  ASSERT_EQ(alone.size(), threads.size());
+  EXPECT_TRUE(alone == threads);
+  EXPECT_TRUE(threads == again);
+  EXPECT_FALSE(next == threads);
 }
 
 // The swing script of the lesson keeps the whole plane inside its image in every frame.
