@@ -2,6 +2,7 @@
 #include "scene/hierarchical_cache.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "flow/limits.h"
 #include "flow/reprojection.h"
 #include "image/composite.h"
+#include "image/thread_pool.h"
 #include "scene/depth_reprojection.h"
 
 namespace oflab {
@@ -429,6 +431,23 @@ double HierarchicalCache::frame(const ViewerPose& current, const std::vector<cha
   return ms_since(t2);
 }
 
+double HierarchicalCache::pixel_error(const NodeState& s, const Mat3& from_frame,
+                                      const RigidStep3& step, const Vec2& centre) const {
+  // Where the cached image's pixel shown here came from, and the surface point there.
+  const Vec2 q = apply_homography(from_frame, centre);
+  const int qx = static_cast<int>(std::floor(q.x)), qy = static_cast<int>(std::floor(q.y));
+  if (qx < 0 || qy < 0 || qx >= s.image.image.width() || qy >= s.image.image.height()) return -1;
+  const int plane = s.surface[static_cast<std::size_t>(qy) * s.image.image.width() + qx];
+  if (plane < 0) return -1;
+  const Vec2 ray = pixel_to_centred(camera_, q + Vec2(s.x0, s.y0)) / camera_.focal_px;
+  const Vec3 direction(ray.x, ray.y, 1.0);
+  const double inverse_depth = glm::dot(s.planes[plane], direction);
+  if (!(inverse_depth > 0.0)) return -1;
+  const Vec3 now = step.rotation * (direction / inverse_depth) + step.translation;
+  if (now.z < context_.near) return -1;
+  return glm::length(centred_to_pixel(camera_, project_centred(camera_, now)) - centre);
+}
+
 void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vector<int>& drawn,
                                        const std::vector<char>& culled, AnimationFrame& report) {
   const int w = camera_.width, h = camera_.height;
@@ -446,41 +465,45 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
     from_frame[k] = glm::inverse(states_[k]->to_frame);
     steps[k] = viewer_step(states_[k]->view, current);
   }
-  const std::vector<int> none;
+  // Rows in bands on the worker threads; each band keeps its own tallies and its errors in
+  // raster order, summed here band after band: the same sum, in the same order, as one pass.
+  struct Band {
+    std::int64_t overlap = 0, candidates = 0;
+    double max_error = 0.0;
+    std::vector<double> errors;
+  };
+  std::array<Band, kMaxBands> bands;
+  for_each_band(h, 32, [&](int band, int y0, int y1) {
+    Band& b = bands[static_cast<std::size_t>(band)];
+    const std::vector<int> none;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const int k = front_node_[i];
+        const int p = exact.polygon[i];
+        if (k < 0) {
+          b.candidates += p >= 0;
+          continue;
+        }
+        const std::vector<int>& of = p >= 0 ? nodes_of_polygon_[p] : none;
+        b.overlap += std::find(of.begin(), of.end(), k) == of.end();
+        const NodeState& s = *states_[k];
+        if (!s.reused) continue;
+        const double e = pixel_error(s, from_frame[k], steps[k], Vec2(x + 0.5, y + 0.5));
+        if (e < 0.0) continue;
+        b.max_error = std::max(b.max_error, e);
+        b.errors.push_back(e);
+      }
+    }
+  });
   double sum = 0.0;
   std::int64_t candidates = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      const int k = front_node_[i];
-      const int p = exact.polygon[i];
-      if (k < 0) {
-        candidates += p >= 0;
-        continue;
-      }
-      const std::vector<int>& of = p >= 0 ? nodes_of_polygon_[p] : none;
-      c.overlap_pixels += std::find(of.begin(), of.end(), k) == of.end();
-      const NodeState& s = *states_[k];
-      if (!s.reused) continue;
-      // Where the cached image's pixel shown here came from, and the surface point there.
-      const Vec2 centre(x + 0.5, y + 0.5);
-      const Vec2 q = apply_homography(from_frame[k], centre);
-      const int qx = static_cast<int>(std::floor(q.x)), qy = static_cast<int>(std::floor(q.y));
-      if (qx < 0 || qy < 0 || qx >= s.image.image.width() || qy >= s.image.image.height()) continue;
-      const int plane = s.surface[static_cast<std::size_t>(qy) * s.image.image.width() + qx];
-      if (plane < 0) continue;
-      const Vec2 ray = pixel_to_centred(camera_, q + Vec2(s.x0, s.y0)) / camera_.focal_px;
-      const Vec3 direction(ray.x, ray.y, 1.0);
-      const double inverse_depth = glm::dot(s.planes[plane], direction);
-      if (!(inverse_depth > 0.0)) continue;
-      const Vec3 now = steps[k].rotation * (direction / inverse_depth) + steps[k].translation;
-      if (now.z < context_.near) continue;
-      const double e =
-          glm::length(centred_to_pixel(camera_, project_centred(camera_, now)) - centre);
-      c.max_pixel_error_px = std::max(c.max_pixel_error_px, e);
-      sum += e;
-      ++c.error_pixels;
-    }
+  for (const Band& b : bands) {
+    c.overlap_pixels += b.overlap;
+    candidates += b.candidates;
+    c.max_pixel_error_px = std::max(c.max_pixel_error_px, b.max_error);
+    for (double e : b.errors) sum += e;
+    c.error_pixels += static_cast<std::int64_t>(b.errors.size());
   }
   c.mean_pixel_error_px = c.error_pixels > 0 ? sum / c.error_pixels : 0.0;
   if (candidates > 0) report.hole_pixels += count_holes(current, culled);

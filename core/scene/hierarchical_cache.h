@@ -47,6 +47,7 @@
 #include "engine/animator.h"
 #include "engine/engine.h"
 #include "engine/exact_render.h"
+#include "flow/reprojection.h"
 #include "image/image.h"
 #include "scene/bsp_tree.h"
 #include "scene/cache_nodes.h"
@@ -141,6 +142,12 @@ class HierarchicalCache {
     double estimated = 0.0;
   };
   VertexErrors vertex_errors(int k, const ViewerPose& current) const;
+  // The image distance (pixels) between where the cached image of node state `s` shows the
+  // surface point at frame pixel centre `centre` and that point's exact projection now;
+  // negative when the pixel shows no surface of the node or the point is behind the near
+  // plane. `from_frame` maps frame pixels to the node image's, `step` the node's view to now.
+  double pixel_error(const NodeState& s, const Mat3& from_frame, const RigidStep3& step,
+                     const Vec2& centre) const;
   void measure_pixels(const ViewerPose& current, const std::vector<int>& drawn,
                       const std::vector<char>& culled, AnimationFrame& report);
 
