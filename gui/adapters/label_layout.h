@@ -1,6 +1,7 @@
 // Where the texts painted over a 3D picture go: labels placed next to the points they name
-// without covering each other or the caption, and captions wrapped to the picture's width
-// so that no line is cut. Plain Qt geometry, no VTK; the world view (gui/views/world_view.h)
+// without covering each other or the caption (the teaching layer's rule,
+// session/display/label_layout.h, in Qt's types), and captions wrapped to the picture's width
+// so that no line is cut. No VTK; the world view (gui/views/world_view.h)
 // paints what this places, and gui/adapters/painted_text.h checks the result.
 //
 // Units: pixels of the picture, top-left origin, y down.
