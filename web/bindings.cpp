@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "display/palette.h"
@@ -16,6 +17,7 @@
 #include "web_session.h"
 #include "web_slices.h"
 #include "web_study.h"
+#include "world_json.h"
 
 namespace oflab {
 namespace {
@@ -48,6 +50,16 @@ emscripten::val rgb_array(const Rgb8& c) {
   emscripten::val out = emscripten::val::array();
   for (std::uint8_t channel : {c.r, c.g, c.b}) out.call<void>("push", static_cast<int>(channel));
   return out;
+}
+
+// placeLabels: the world view's label boxes (world_json.h placed_labels_json), or
+// {"error": message} for a request not of its form.
+std::string place_labels_answer(const std::string& request) {
+  try {
+    return placed_labels_json(request);
+  } catch (const std::exception& e) {
+    return std::string("{\"error\": \"") + e.what() + "\"}";
+  }
 }
 
 // The colour of every update level as {"name": [r, g, b]}, in the levels' order.
@@ -205,6 +217,11 @@ EMSCRIPTEN_BINDINGS(oflab_web_palette) {
   emscripten::function("policyColour", &oflab::policy_rgb);
   emscripten::function("levelColours", &oflab::level_colours);
   emscripten::function("wheelTable", &oflab::wheel_table);
+}
+
+// The world view's labels, placed by the desktop's rule (session/display/label_layout.h).
+EMSCRIPTEN_BINDINGS(oflab_web_labels) {
+  emscripten::function("placeLabels", &oflab::place_labels_answer);
 }
 
 // The threshold study's loop behind the page's study panel (web/web_study.h).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "display/palette.h"
 
@@ -167,6 +168,57 @@ std::string scene_world_frame_json(const SceneWorldLoop& loop, const Animator& a
                    label_json("image_plane", "image plane", f.image_corners[0]),
                    label_json("velocity", velocity_label(f.motion), tip(f.motion.velocity)),
                    label_json("omega", omega_label(f.motion), tip(f.motion.omega))};
+  return out.dump();
+}
+
+namespace {
+
+Vec2 pair_of(const json& j, const char* field) {
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number())
+    throw std::invalid_argument(std::string("placeLabels: ") + field + " must hold [x, y] pairs");
+  return Vec2(j[0].get<double>(), j[1].get<double>());
+}
+
+LabelBox box_of(const json& j, const char* field) {
+  if (!j.is_array() || j.size() != 4 ||
+      !std::all_of(j.begin(), j.end(), [](const json& v) { return v.is_number(); }))
+    throw std::invalid_argument(std::string("placeLabels: ") + field + " must be [x, y, w, h]");
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>(), j[3].get<double>()};
+}
+
+const json& array_field(const json& j, const char* field) {
+  if (!j.contains(field) || !j[field].is_array())
+    throw std::invalid_argument(std::string("placeLabels: ") + field + " must be an array");
+  return j[field];
+}
+
+}  // namespace
+
+std::string placed_labels_json(const std::string& request) {
+  const json j = json::parse(request, nullptr, false);
+  if (!j.is_object()) throw std::invalid_argument("placeLabels: the request is not a JSON object");
+  std::vector<Vec2> sizes, anchors;
+  for (const json& s : array_field(j, "sizes")) sizes.push_back(pair_of(s, "sizes"));
+  for (const json& a : array_field(j, "anchors")) anchors.push_back(pair_of(a, "anchors"));
+  if (sizes.size() != anchors.size())
+    throw std::invalid_argument("placeLabels: sizes and anchors differ in length");
+  if (!j.contains("area")) throw std::invalid_argument("placeLabels: area is missing");
+  std::vector<LabelBox> taken;
+  if (j.contains("taken"))
+    for (const json& t : array_field(j, "taken")) taken.push_back(box_of(t, "taken"));
+  std::vector<std::vector<Vec2>> avoid;
+  if (j.contains("avoid")) {
+    for (const json& outline : array_field(j, "avoid")) {
+      if (!outline.is_array()) throw std::invalid_argument("placeLabels: avoid must hold outlines");
+      avoid.emplace_back();
+      for (const json& p : outline) avoid.back().push_back(pair_of(p, "avoid"));
+    }
+  }
+  const double gap = j.contains("gap") && j["gap"].is_number() ? j["gap"].get<double>() : 6.0;
+  json out = json::array();
+  for (const LabelBox& b :
+       place_labels(sizes, anchors, box_of(j["area"], "area"), std::move(taken), gap, avoid))
+    out.push_back({b.x, b.y, b.width, b.height});
   return out.dump();
 }
 

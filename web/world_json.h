@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "display/label_layout.h"
 #include "display/world_geometry.h"
 #include "engine/animator.h"
 #include "player/plane_panel.h"
@@ -44,5 +45,13 @@ std::string scene_world_loop_json(const SceneWorldLoop& loop);
 // "labels": eye, image plane, V, Omega}.
 std::string scene_world_frame_json(const SceneWorldLoop& loop, const Animator& animator,
                                    double seconds_per_frame);
+
+// The world view's labels placed by the teaching layer's rule (session/display/label_layout.h
+// place_labels), the desktop's: `request` is {"sizes": [[w, h], ...], "anchors": [[x, y], ...]
+// (as many), "area": [x, y, w, h], "taken": [[x, y, w, h], ...], "gap", "avoid": [[[x, y],
+// ...], ...]} in the picture's pixels (top-left origin, y down); the answer is the boxes,
+// [[x, y, w, h], ...], one per label in order. Throws std::invalid_argument naming the field
+// when a field is missing or not of its form.
+std::string placed_labels_json(const std::string& request);
 
 }  // namespace oflab

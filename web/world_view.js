@@ -86,8 +86,10 @@ const worldView = {
       muted: [110, 116, 125], line: style.line };
   },
 
-  // The labels next to the projection of the point they name, and the caption under the
-  // picture, on the canvas over vtk.js's.
+  // The caption under the picture, then the labels next to the projection of the point they
+  // name, on the canvas over vtk.js's. The labels are placed by the desktop's rule (Module.
+  // placeLabels: session/display/label_layout.h): off each other and the caption, and off the
+  // image plane and the textured plane where a place next to the point is free of them.
   drawLabels() {
     if (!this.world || !this.frame) return;
     const canvas = this.labels;
@@ -99,6 +101,7 @@ const worldView = {
     const ctx = canvas.getContext('2d');
     const style = drawStyle();
     ctx.clearRect(0, 0, canvas.width, canvas.height);
+    const band = this.drawCaption(ctx, canvas, style);
     ctx.font = style.font(14);
     ctx.textBaseline = 'middle';
     const colours = this.loop.colours;
@@ -106,33 +109,59 @@ const worldView = {
     // Through the eye, as the desktop: no eye and no Omega (both at the eye), and the image
     // plane's border is the camera's image.
     const fromEye = app.state.world_camera === 'eye';
+    const shown = [];
     for (const label of this.frame.labels) {
       if (!label.text || (fromEye && (label.key === 'eye' || label.key === 'omega'))) continue;
       if (fromEye && label.key === 'image_plane') label.text = "the camera's image";
       const at = this.world.toPage(label.at);
-      if (!at) continue;
-      const [r, g, b] = colour[label.key] || [230, 230, 230];
-      ctx.fillStyle = 'rgba(17, 19, 21, 0.6)';
-      const width = ctx.measureText(label.text).width;
-      // Right of its point, or left of it where the right would leave the picture.
-      const x = at[0] + 9 + width > canvas.width ? Math.max(3, at[0] - 9 - width) : at[0] + 9;
-      ctx.fillRect(x - 3, at[1] - 9 * style.scale, width + 6, 18 * style.scale);
-      ctx.fillStyle = `rgb(${r},${g},${b})`;
-      ctx.fillText(label.text, x, at[1]);
+      if (at) shown.push({ label, at, width: ctx.measureText(label.text).width + 6 });
     }
+    const height = 18 * style.scale;
+    const margin = 3;
+    const answer = JSON.parse(Module.placeLabels(JSON.stringify({
+      sizes: shown.map((s) => [s.width, height]), anchors: shown.map((s) => s.at),
+      area: [margin, margin, canvas.width - 2 * margin, Math.max(height, band - 2 * margin)],
+      taken: [], gap: 6, avoid: fromEye ? [] : this.pictureOutlines(),
+    })));
+    this.labelBoxes = [];
+    if (answer.error) return;
+    shown.forEach((s, k) => {
+      const [x, y, w, h] = answer[k];
+      const [r, g, b] = colour[s.label.key] || [230, 230, 230];
+      ctx.fillStyle = 'rgba(17, 19, 21, 0.6)';
+      ctx.fillRect(x, y, w, h);
+      ctx.fillStyle = `rgb(${r},${g},${b})`;
+      ctx.fillText(s.label.text, x + 3, y + h / 2);
+      this.labelBoxes.push({ key: s.label.key, text: s.label.text, box: [x, y, w, h], at: s.at });
+    });
+  },
+
+  // The caption in a dark band at the picture's foot; returns the band's top (page pixels).
+  drawCaption(ctx, canvas, style) {
     ctx.font = style.font(13);
-    ctx.fillStyle = '#e6e6e6';
     ctx.textBaseline = 'alphabetic';
     const lines = [];
     for (const part of this.loop.caption.split('\n')) lines.push(...wrapLines(ctx, part, canvas.width - 24));
     const step = 17 * style.scale;
+    const top = canvas.height - 16 - lines.length * step;
     // A dark band under the caption keeps it readable over the picture.
     ctx.fillStyle = 'rgba(17, 19, 21, 0.75)';
-    ctx.fillRect(0, canvas.height - 16 - lines.length * step, canvas.width, lines.length * step + 16);
+    ctx.fillRect(0, top, canvas.width, lines.length * step + 16);
     lines.forEach((line, i) => {
       ctx.fillStyle = '#e6e6e6';
       ctx.fillText(line, 12, canvas.height - 10 - (lines.length - 1 - i) * step);
     });
+    return top;
+  },
+
+  // The pictures the labels keep off, as drawn (page pixels): the image plane (placed by the
+  // frame's viewer matrix in a scene) and, for the plane, its textured quad.
+  pictureOutlines() {
+    const m = this.frame.viewer_matrix;
+    const toWorld = (p) => (m ? [0, 1, 2].map((r) => m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3]) : p);
+    const outlines = [this.loop.image_corners.map(toWorld)];
+    if (this.frame.plane_corners) outlines.push(this.frame.plane_corners);
+    return outlines.map((corners) => corners.map((c) => this.world.toPage(c))).filter((o) => o.every((p) => p));
   },
 
   // Paints the world as shown (vtk.js's picture and the labels) into the 2D canvas's context,

@@ -12,6 +12,10 @@
 //   street's 13 polygons with the walk's path, the eye on its path at the frame shown, the
 //   polygons in the levels' colours (culled ones pale), the scene's caption; the plane's
 //   world is still the plane's (negative control).
+// - The world view's labels (Module.placeLabels: session/display/label_layout.h, the desktop's
+//   rule), for the plane and the street: no two overlap, each lies inside the picture above the
+//   caption band and next to its point; a request of the wrong form is refused naming the field
+//   (negative control).
 const fs = require('fs');
 const path = require('path');
 const { spawnSync } = require('child_process');
@@ -102,4 +106,39 @@ async function testSceneWorld({ browser, open, evaluate, check, drawnMarker }) {
   check('NegativeControl_ThePlanesWorldIsNoScene', plane.kind === 'plane' && !plane.outlines);
 }
 
-module.exports = { testSlicesView, testSceneWorld };
+// The boxes the world view drew its labels in, the picture's size and the caption band's top.
+async function worldLabels(evaluate, browser) {
+  return JSON.parse(await evaluate(browser, `JSON.stringify({ boxes: worldView.labelBoxes,
+    width: worldView.labels.width, height: worldView.labels.height,
+    band: worldView.drawCaption(worldView.labels.getContext('2d'), worldView.labels, drawStyle()) })`));
+}
+
+// Problems of labels placed: overlaps, boxes outside the picture or in the caption band,
+// boxes far from their points; one line each.
+function labelProblems({ boxes, width, height, band }) {
+  const problems = [];
+  const overlap = (a, b) => Math.max(0, Math.min(a[0] + a[2], b[0] + b[2]) - Math.max(a[0], b[0])) *
+    Math.max(0, Math.min(a[1] + a[3], b[1] + b[3]) - Math.max(a[1], b[1]));
+  boxes.forEach((l, i) => {
+    const [x, y, w, h] = l.box;
+    if (x < 0 || y < 0 || x + w > width || y + h > Math.min(height, band)) problems.push(`${l.text} at ${l.box} leaves the picture (${width} x ${height}, caption from ${band})`);
+    const dx = Math.max(x - l.at[0], 0, l.at[0] - (x + w)), dy = Math.max(y - l.at[1], 0, l.at[1] - (y + h));
+    if (Math.hypot(dx, dy) > 20 * h) problems.push(`${l.text} at ${l.box} is far from its point ${l.at}`);
+    for (const m of boxes.slice(i + 1)) if (overlap(l.box, m.box) > 0) problems.push(`${l.text} overlaps ${m.text}`);
+  });
+  return problems;
+}
+
+async function testWorldLabels({ browser, open, evaluate, check, drawnMarker }) {
+  for (const [name, query] of [['Plane', '?view=world&frame=20'], ['Street', '?view=world&source=scene:street:walk&frame=20']]) {
+    await open(browser, query, drawnMarker);
+    const labels = await worldLabels(evaluate, browser);
+    const problems = labelProblems(labels);
+    check(`WorldLabelsOfThe${name}NeitherOverlapNorLeaveThePicture`, labels.boxes.length >= 3 && problems.length === 0,
+      `${labels.boxes.length} labels: ${labels.boxes.map((l) => `${l.text} [${l.box.map(Math.round)}]`).join(', ')}${problems.length ? `; ${problems.join('; ')}` : ''}`);
+  }
+  const refused = JSON.parse(await evaluate(browser, `Module.placeLabels(JSON.stringify({ sizes: [[10, 10]], anchors: [[1, 2, 3]], area: [0, 0, 9, 9] }))`));
+  check('NegativeControl_ALabelRequestOfTheWrongFormIsRefused', /anchors/.test(refused.error || ''), JSON.stringify(refused));
+}
+
+module.exports = { testSlicesView, testSceneWorld, testWorldLabels };

@@ -44,7 +44,7 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
-const { testSlicesView, testSceneWorld } = require('./views_test');
+const { testSlicesView, testSceneWorld, testWorldLabels } = require('./views_test');
 const { testRunCsv } = require('./exports_test');
 const { testFlowTexture } = require('./flow_texture_test');
 
@@ -898,6 +898,7 @@ async function bench(browser) {
       const helpers = { browser, open, evaluate, check, drawnMarker, cli: path.resolve(option('--cli', path.join(root, 'build/analysis/oflab-cli'))) };
       await testSlicesView(helpers);
       await testSceneWorld(helpers);
+      await testWorldLabels(helpers);
       await testRunCsv(helpers);
       await testFlowTexture(helpers);
       await testControls(browser);

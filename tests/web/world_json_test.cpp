@@ -131,5 +131,33 @@ TEST(WorldJson, SceneIsTheTeachingLayersSceneWorld) {
   EXPECT_NE(later["viewer_matrix"], frame["viewer_matrix"]);
 }
 
+// The page's labels are the teaching layer's place_labels, read back from the JSON; a request
+// not of its form is refused naming the field.
+TEST(WorldJson, LabelsArePlacedByTheTeachingLayersRule) {
+  const std::vector<Vec2> sizes = {{40, 20}, {110, 20}, {20, 20}};
+  const std::vector<Vec2> anchors(sizes.size(), Vec2(200, 150));
+  const std::vector<std::vector<Vec2>> avoid = {{{150, 40}, {260, 40}, {260, 140}, {150, 140}}};
+  const std::vector<LabelBox> expected = place_labels(sizes, anchors, LabelBox{10, 10, 400, 300},
+                                                      {LabelBox{10, 280, 390, 30}}, 6.0, avoid);
+  const json answer = json::parse(placed_labels_json(R"({"sizes": [[40, 20], [110, 20], [20, 20]],
+      "anchors": [[200, 150], [200, 150], [200, 150]], "area": [10, 10, 400, 300],
+      "taken": [[10, 280, 390, 30]], "gap": 6,
+      "avoid": [[[150, 40], [260, 40], [260, 140], [150, 140]]]})"));
+  ASSERT_EQ(answer.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(answer[i][0].get<double>(), expected[i].x) << i;
+    EXPECT_EQ(answer[i][1].get<double>(), expected[i].y) << i;
+    EXPECT_EQ(answer[i][2].get<double>(), expected[i].width) << i;
+  }
+  // Control: the three labels on one point were moved apart, not left on their first place.
+  EXPECT_NE(answer[0], answer[1]);
+  try {
+    placed_labels_json(R"({"sizes": [[40, 20]], "anchors": [[1, 2, 3]], "area": [0, 0, 9, 9]})");
+    ADD_FAILURE() << "a three-number anchor was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("anchors"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace oflab::test
