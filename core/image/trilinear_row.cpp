@@ -19,25 +19,30 @@ using namespace warp_row;  // the row loops' shared pieces
 #if defined(OFLAB_WARP_AVX2)
 // Four pixels of a segment end (positions [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16, floors,
 // possibly outside the source) with each tap clamped to the source, as warp_kernels.cpp's
-// sample_clamped clamps it.
+// sample_clamped clamps it: the whole parts (arithmetic shift, so |part| < 2^15) and the
+// next ones clamped lane by lane, the taps fetched by two gathers in the order
+// quad_lanes_from_taps takes ([A00 B00 A10 B10 | C00 D00 C10 D10], 00 = (x0, y0), 10 =
+// (x1, y0); offsets below 2^28, kMaxImageDimension squared).
 OFLAB_AVX2 inline __m256i clamped_quad_lanes(const SourceView& src, const __m256i& positions) {
-  alignas(32) std::int32_t at[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(at), _mm256_srai_epi32(positions, 16));
-  alignas(32) std::uint32_t top[8], bottom[8];
-  for (int j = 0; j < 4; ++j) {
-    const std::int64_t x0 = std::clamp<std::int64_t>(at[2 * j], 0, src.max_x);
-    const std::int64_t x1 = std::clamp<std::int64_t>(at[2 * j] + std::int64_t{1}, 0, src.max_x);
-    const std::int64_t y0 = std::clamp<std::int64_t>(at[2 * j + 1], 0, src.max_y);
-    const std::int64_t y1 = std::clamp<std::int64_t>(at[2 * j + 1] + std::int64_t{1}, 0, src.max_y);
-    const int slot = 4 * (j / 2) + j % 2;  // [A00 B00 A10 B10 | C00 D00 C10 D10]
-    std::memcpy(&top[slot], src.at(x0, y0), 4);
-    std::memcpy(&top[slot + 2], src.at(x1, y0), 4);
-    std::memcpy(&bottom[slot], src.at(x0, y1), 4);
-    std::memcpy(&bottom[slot + 2], src.at(x1, y1), 4);
-  }
-  return quad_lanes_from_taps(_mm256_load_si256(reinterpret_cast<const __m256i*>(top)),
-                              _mm256_load_si256(reinterpret_cast<const __m256i*>(bottom)),
-                              positions);
+  const auto max_x = static_cast<int>(src.max_x), max_y = static_cast<int>(src.max_y);
+  const __m256i most = _mm256_setr_epi32(max_x, max_y, max_x, max_y, max_x, max_y, max_x, max_y);
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
+  const __m256i low = _mm256_min_epi32(_mm256_max_epi32(whole, zero), most);
+  const __m256i high =
+      _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(whole, _mm256_set1_epi32(1)), zero), most);
+  // [x0 of A B, x1 of A B | x0 of C D, x1 of C D], then y0 and y1 of [A B A B | C D C D].
+  const __m256i x = _mm256_blend_epi32(_mm256_shuffle_epi32(low, _MM_SHUFFLE(2, 0, 2, 0)),
+                                       _mm256_shuffle_epi32(high, _MM_SHUFFLE(2, 0, 2, 0)), 0xcc);
+  const __m256i y0 = _mm256_shuffle_epi32(low, _MM_SHUFFLE(3, 1, 3, 1));
+  const __m256i y1 = _mm256_shuffle_epi32(high, _MM_SHUFFLE(3, 1, 3, 1));
+  const __m256i stride = _mm256_set1_epi32(static_cast<int>(src.stride));
+  const auto* base = reinterpret_cast<const int*>(src.pixels);
+  const __m256i top =
+      _mm256_i32gather_epi32(base, _mm256_add_epi32(_mm256_mullo_epi32(y0, stride), x), 4);
+  const __m256i bottom =
+      _mm256_i32gather_epi32(base, _mm256_add_epi32(_mm256_mullo_epi32(y1, stride), x), 4);
+  return quad_lanes_from_taps(top, bottom, positions);
 }
 
 // Four weights in [0, 256] (16-bit lanes 0 .. 3 of `four`) spread over their pixels'
