@@ -10,14 +10,15 @@
 // 2 and 1: no eigenvectors, one square root each. The level is log2(sigma(M) / D^2) clamped
 // to [0, top], its index round(256 level).
 //
-// With AVX2 eight pixels go at a time in float (P, R and D as t b + c, t the pixel's offset
+// With AVX2 and FMA eight pixels go at a time in float (P, R and D as t b + c, t the pixel's offset
 // in the segment, scaled by powers of two so that D is about 1 at its first pixel; one
 // square root, sigma^2 = |P|^2 / 4 + |R|^2 / 4 + |P| |R| / 2; one division by D^4; log2 by
 // the exponent and an atanh series), on segments whose terms are well conditioned (each
 // at most 16 times the smallest |P| of the segment, 8 times the smallest D): the level is
 // then within 2e-5 of the exact one (1/200 of a weight step), so each index is
 // round(256 level) or, where 256 level lies within 1/200 of a half-integer, one step next
-// to it. Other segments, and CPUs without AVX2, take the same formula per pixel in double.
+// to it. Other segments, and CPUs without AVX2 or FMA, take the same formula per pixel in
+// double.
 #pragma once
 
 #include <cstdint>

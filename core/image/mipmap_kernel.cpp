@@ -255,13 +255,8 @@ Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyra
 }
 
 // Per level: its bilinear map (division form) and image.
-struct LevelMaps {
-  std::vector<InverseMap> maps;
-  std::vector<const Image*> images;
-};
-
-LevelMaps level_maps(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid) {
-  LevelMaps levels;
+MipLevelMaps level_maps(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid) {
+  MipLevelMaps levels;
   for (int k = 0; k <= pyramid.top(); ++k) {
     levels.maps.push_back(level_plan(plan, k).map);
     levels.images.push_back(&level_image(source, pyramid, k));
@@ -290,7 +285,7 @@ int stretch_end(const std::uint16_t* pairs, int s, int last) {
 // (`pairs`: lower level << 8 | weight, per pixel of the span): per stretch of one lower level
 // the fast bilinear row on it and, where a weight is not 0, on the next level, blended pixel
 // by pixel. `weight` is scratch of the span's length; out[0] is the span's first pixel.
-void sample_levels(const LevelMaps& levels, const std::uint16_t* pairs, std::uint16_t* weight,
+void sample_levels(const MipLevelMaps& levels, const std::uint16_t* pairs, std::uint16_t* weight,
                    const PixelSpan& span, int first, int last, Pixel* out) {
   const int top = static_cast<int>(levels.maps.size()) - 1;
   for (int s = first; s < last;) {
@@ -316,31 +311,35 @@ void sample_levels(const LevelMaps& levels, const std::uint16_t* pairs, std::uin
 
 // One span of a perspective plan: each pixel's level pair (found over the whole span, so a
 // partial warp's pixels get the levels the whole warp gives them), then, over the wanted
-// pixels (all of the span without plan.only), per stretch of one lower level the fast
-// bilinear row on it and, where a weight is not 0, on the next level, blended pixel by pixel.
-// Returns the pixels written.
-std::int64_t perspective_span_mip(const WarpPlan& plan, const LevelMaps& levels,
+// pixels (all of the span without plan.only), the levels sampled with the row cut where the
+// lower level changes (run_trilinear_levels_row) or, without the AVX2 loops, per stretch of
+// one lower level the fast bilinear row on it and, where a weight is not 0, on the next
+// level, blended pixel by pixel. Returns the pixels written.
+std::int64_t perspective_span_mip(const WarpPlan& plan, const MipLevelMaps& levels,
                                   const PixelSpan& span, Image& output) {
   thread_local std::vector<std::uint16_t> pairs;
   thread_local std::vector<std::uint16_t> weight;
   const int count = span.x_end - span.x_begin;
   const int top = static_cast<int>(levels.maps.size()) - 1;
-  pairs.resize(static_cast<std::size_t>(count));
+  pairs.resize(static_cast<std::size_t>(count) + 7);  // run_trilinear_levels_row's padding
   weight.resize(static_cast<std::size_t>(count));
   mip_row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, pairs.data());
   Pixel* out = output.row(span.y) + span.x_begin;
   return for_each_wanted(plan, span, [&](int begin, int end) {
-    sample_levels(levels, pairs.data(), weight.data(), span, begin - span.x_begin,
-                  end - span.x_begin, out);
+    const int first = begin - span.x_begin, last = end - span.x_begin;
+    if (!run_trilinear_levels_row(levels, pairs.data() + first, span.y, begin, end, out + first)) {
+      sample_levels(levels, pairs.data(), weight.data(), span, first, last, out);
+    }
   });
 }
+
 std::int64_t run_perspective(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
                              Image& output, std::int64_t* computed) {
   if (footprint_bound(plan.dest_to_source, sampled_region(plan)) <= 1.0) {
     return run_warp_kernel(level_plan(plan, 0), source, output, computed);
   }
   const std::vector<PixelSpan> spans = output_spans(plan);
-  const LevelMaps levels = level_maps(plan, source, pyramid);
+  const MipLevelMaps levels = level_maps(plan, source, pyramid);
   std::int64_t written = 0;
   for (const PixelSpan& span : spans) written += span.x_end - span.x_begin;
   std::atomic<std::int64_t> sampled{0};

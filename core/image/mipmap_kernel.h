@@ -15,10 +15,12 @@
 //    index (256 lower + weight) from the exact largest singular value of J, eight pixels at a
 //    time (core/image/mip_row_levels.h: within 2e-5 of a level of mip_level, so each index
 //    is level_pair's or, within 1/200 of a step of a rounding boundary, one step next to it);
-//    the span is cut into stretches of one lower level (the integer part changes a few times
-//    a row at most), and each stretch runs the fast bilinear row on its lower level and,
+//    then one loop samples the span eight pixels at a time on each pixel's lower level and,
 //    where a weight is not 0, the next level too, both sampled at once and blended pixel by
-//    pixel with each pixel's weight (run_trilinear_row in core/image/trilinear_row.h).
+//    pixel with each pixel's weight, stopping where the lower level changes (the integer
+//    part changes a few times a row at most) and going on there with the next level pair
+//    (run_trilinear_levels_row in core/image/trilinear_row.h; without AVX2 the span is cut
+//    into stretches of one lower level first, each run by run_trilinear_row).
 //    Bound: every channel is within 2 levels of mipmap_pixel, the exact per-pixel definition:
 //    a level pair one step from level_pair(mip_level) moves the blend by under one level, and
 //    each level's bilinear sample is within one level of the per-pixel one (the same 16-bit

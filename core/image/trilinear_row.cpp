@@ -19,40 +19,53 @@ using namespace warp_row;  // the row loops' shared pieces
 #if defined(OFLAB_WARP_AVX2)
 // Four pixels of a segment end (positions [u0 v0 u1 v1 | u2 v2 u3 v3] in 16.16, floors,
 // possibly outside the source) with each tap clamped to the source, as warp_kernels.cpp's
-// sample_clamped clamps it.
+// sample_clamped clamps it: the whole parts (arithmetic shift, so |part| < 2^15) and the
+// next ones clamped lane by lane, the taps fetched by two gathers in the order
+// quad_lanes_from_taps takes ([A00 B00 A10 B10 | C00 D00 C10 D10], 00 = (x0, y0), 10 =
+// (x1, y0); offsets below 2^28, kMaxImageDimension squared).
 OFLAB_AVX2 inline __m256i clamped_quad_lanes(const SourceView& src, const __m256i& positions) {
-  alignas(32) std::int32_t at[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(at), _mm256_srai_epi32(positions, 16));
-  alignas(32) std::uint32_t top[8], bottom[8];
-  for (int j = 0; j < 4; ++j) {
-    const std::int64_t x0 = std::clamp<std::int64_t>(at[2 * j], 0, src.max_x);
-    const std::int64_t x1 = std::clamp<std::int64_t>(at[2 * j] + std::int64_t{1}, 0, src.max_x);
-    const std::int64_t y0 = std::clamp<std::int64_t>(at[2 * j + 1], 0, src.max_y);
-    const std::int64_t y1 = std::clamp<std::int64_t>(at[2 * j + 1] + std::int64_t{1}, 0, src.max_y);
-    const int slot = 4 * (j / 2) + j % 2;  // [A00 B00 A10 B10 | C00 D00 C10 D10]
-    std::memcpy(&top[slot], src.at(x0, y0), 4);
-    std::memcpy(&top[slot + 2], src.at(x1, y0), 4);
-    std::memcpy(&bottom[slot], src.at(x0, y1), 4);
-    std::memcpy(&bottom[slot + 2], src.at(x1, y1), 4);
-  }
-  return quad_lanes_from_taps(_mm256_load_si256(reinterpret_cast<const __m256i*>(top)),
-                              _mm256_load_si256(reinterpret_cast<const __m256i*>(bottom)),
-                              positions);
+  const auto max_x = static_cast<int>(src.max_x), max_y = static_cast<int>(src.max_y);
+  const __m256i most = _mm256_setr_epi32(max_x, max_y, max_x, max_y, max_x, max_y, max_x, max_y);
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i whole = _mm256_srai_epi32(positions, kBlendWeightBits);
+  const __m256i low = _mm256_min_epi32(_mm256_max_epi32(whole, zero), most);
+  const __m256i high =
+      _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(whole, _mm256_set1_epi32(1)), zero), most);
+  // [x0 of A B, x1 of A B | x0 of C D, x1 of C D], then y0 and y1 of [A B A B | C D C D].
+  const __m256i x = _mm256_blend_epi32(_mm256_shuffle_epi32(low, _MM_SHUFFLE(2, 0, 2, 0)),
+                                       _mm256_shuffle_epi32(high, _MM_SHUFFLE(2, 0, 2, 0)), 0xcc);
+  const __m256i y0 = _mm256_shuffle_epi32(low, _MM_SHUFFLE(3, 1, 3, 1));
+  const __m256i y1 = _mm256_shuffle_epi32(high, _MM_SHUFFLE(3, 1, 3, 1));
+  const __m256i stride = _mm256_set1_epi32(static_cast<int>(src.stride));
+  const auto* base = reinterpret_cast<const int*>(src.pixels);
+  const __m256i top =
+      _mm256_i32gather_epi32(base, _mm256_add_epi32(_mm256_mullo_epi32(y0, stride), x), 4);
+  const __m256i bottom =
+      _mm256_i32gather_epi32(base, _mm256_add_epi32(_mm256_mullo_epi32(y1, stride), x), 4);
+  return quad_lanes_from_taps(top, bottom, positions);
+}
+
+// Four weights in [0, 256] (16-bit lanes 0 .. 3 of `four`) spread over their pixels'
+// channels, as lerp_lanes takes them.
+OFLAB_AVX2 inline __m256i spread_weights(const __m128i& four) {
+  const __m256i spread = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4, 5, 4,
+                                          5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7);
+  return _mm256_shuffle_epi8(_mm256_broadcastq_epi64(four), spread);
 }
 
 // Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3]) blended with
-// weights w[0..3] in [0, 256]: (a (256 - w) + b w + 128) / 256 per channel, the bytes of
-// blending the stored samples (a (256 - w) + b w <= 255 * 256: no overflow).
-OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const std::uint16_t* w) {
-  std::int64_t four;
-  std::memcpy(&four, w, sizeof(four));
-  const __m256i spread = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4, 5, 4,
-                                          5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7);
-  const __m256i weight = _mm256_shuffle_epi8(_mm256_set1_epi64x(four), spread);
+// spread weights w: (a (256 - w) + b w + 128) / 256 per channel, the bytes of blending the
+// stored samples (a (256 - w) + b w <= 255 * 256: no overflow).
+OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const __m256i& weight) {
   const __m256i sum =
       _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), weight)),
                        _mm256_mullo_epi16(b, weight));
   return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
+}
+
+// The same with the weights w[0..3].
+OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const std::uint16_t* w) {
+  return lerp_lanes(a, b, spread_weights(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(w))));
 }
 
 // The same on two mip levels at once, blended: `src` is level k and `next` level k + 1,
@@ -104,6 +117,153 @@ OFLAB_AVX2 void perspective_trilinear_clamped(const SourceView& src, const Sourc
     Pixel four[4];
     store_quad(lerp_lanes(a, b, w), four);
     std::copy(four, four + n, out + k);
+  }
+}
+
+// A level pair's two sources as the level rows read them: level k and level k + 1 (level k
+// again on the top level, whose weights are 0: its taps then stay inside level k).
+struct LevelPairView {
+  SourceView src, next;
+  __m256i offset_weights, next_offset_weights;
+};
+
+OFLAB_AVX2 LevelPairView level_pair_view(const MipLevelMaps& levels, int k) {
+  const int top = static_cast<int>(levels.images.size()) - 1;
+  LevelPairView view{source_view(*levels.images[static_cast<std::size_t>(k)]),
+                     source_view(*levels.images[static_cast<std::size_t>(std::min(k + 1, top))]),
+                     _mm256_setzero_si256(), _mm256_setzero_si256()};
+  view.offset_weights = quad_offset_weights(view.src);
+  view.next_offset_weights = quad_offset_weights(view.next);
+  return view;
+}
+
+// Four pixels at 16.16 positions (level k's fast range) sampled on both levels and blended
+// with spread weights, as perspective_trilinear_quads samples them.
+OFLAB_AVX2 inline __m256i trilinear_quad(const LevelPairView& view, const __m256i& positions,
+                                         const __m256i& weight) {
+  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
+  const __m256i a =
+      blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, positions);
+  const __m256i b = blend_quad_lanes(view.next.pixels, view.next.stride, view.next_offset_weights,
+                                     _mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter));
+  return lerp_lanes(a, b, weight);
+}
+
+// Pixels of level k's fast range sampled eight at a time with their indices (256 lower +
+// weight, index[i] pixel i's) while all eight have lower level k: with weights all 0 level k
+// alone (lerp_lanes' bytes for weight 0), else both levels. Returns the pixels done, a
+// multiple of 8 at most count; the rest starts with an octet holding another lower level or
+// is shorter than eight.
+OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* index, int k,
+                                Pixel* out, int count, const QuadStep& start) {
+  QuadStep step = start;
+  const __m128i lower = _mm_set1_epi16(static_cast<short>(k));
+  const __m128i weight_mask = _mm_set1_epi16(255);
+  __m256i positions = quad_positions(step);
+  __m256i later = quad_positions(step);
+  int i = 0;
+  for (; i + 8 <= count; i += 8) {
+    const __m128i octet = _mm_loadu_si128(reinterpret_cast<const __m128i*>(index + i));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_srli_epi16(octet, 8), lower)) != 0xffff) break;
+    const __m128i weights = _mm_and_si128(octet, weight_mask);
+    const __m256i first = positions;
+    const __m256i second = later;
+    positions = quad_positions(step);  // the next octet's, before this one's blends
+    later = quad_positions(step);
+    if (_mm_testz_si128(weights, weights)) {
+      store_quad(blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, first),
+                 out + i);
+      store_quad(blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, second),
+                 out + i + 4);
+    } else {
+      store_quad(trilinear_quad(view, first, spread_weights(weights)), out + i);
+      store_quad(trilinear_quad(view, second, spread_weights(_mm_unpackhi_epi64(weights, weights))),
+                 out + i + 4);
+    }
+  }
+  return i;
+}
+
+// The first count (1 .. 8) pixels of level k's fast range with indices `index` (lanes 0 ..
+// count - 1): a short quad's unused lanes take its first pixel's position (inside the range),
+// and only its pixels are stored.
+OFLAB_AVX2 void trilinear_few(const LevelPairView& view, const __m128i& index, Pixel* out,
+                              int count, QuadStep step) {
+  const __m128i weights = _mm_and_si128(index, _mm_set1_epi16(255));
+  for (int q = 0; q * 4 < count; ++q) {
+    const int n = std::min(4, count - 4 * q);
+    __m256i positions = quad_positions(step);
+    if (n < 4) {
+      alignas(32) static const std::int32_t kFirst[3][8] = {
+          {0, 1, 0, 1, 0, 1, 0, 1}, {0, 1, 2, 3, 0, 1, 0, 1}, {0, 1, 2, 3, 4, 5, 0, 1}};
+      positions = _mm256_permutevar8x32_epi32(
+          positions, _mm256_load_si256(reinterpret_cast<const __m256i*>(kFirst[n - 1])));
+    }
+    const __m128i w = q == 0 ? weights : _mm_unpackhi_epi64(weights, weights);
+    Pixel four[4];
+    store_quad(trilinear_quad(view, positions, spread_weights(w)), four);
+    std::copy(four, four + n, out + 4 * q);
+  }
+}
+
+// The quad steps of `map` from pixel x of row y (as run_trilinear_row starts them).
+OFLAB_AVX2 QuadStep quad_step_at(const InverseMap& map, int x, int y) {
+  const MapSample s = evaluate(map, x, y);
+  return QuadStep(static_cast<double>(s.nu), static_cast<double>(s.nv), static_cast<double>(s.d),
+                  static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+                  static_cast<double>(2 * map.g), 0.0, 1 << kBlendWeightBits);
+}
+
+// How many of the lanes of `index`, from lane 0 on, hold lower level k (at most `limit`).
+OFLAB_AVX2 inline int leading_lower(const __m128i& index, int k, int limit) {
+  const auto same = static_cast<unsigned>(_mm_movemask_epi8(
+      _mm_cmpeq_epi16(_mm_srli_epi16(index, 8), _mm_set1_epi16(static_cast<short>(k)))));
+  const int lanes = same == 0xffffu ? 8 : __builtin_ctz(~same) / 2;
+  return std::min(lanes, limit);
+}
+
+// run_trilinear_levels_row's loop (trilinear_row.h): from pixel x, the lower level k of x;
+// if x's taps leave level k, the pixels from x that share k and leave it, clamped; else
+// level k's fast range from x (an interval: the source's inner box and its image under the
+// projective map are convex), the octets of trilinear_octets and the few pixels of the next
+// octet that still have level k.
+OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indices, int y,
+                           int x_begin, int x_end, Pixel* out) {
+  for (int x = x_begin; x < x_end;) {
+    const std::uint16_t* index = indices + (x - x_begin);
+    const __m128i octet = _mm_loadu_si128(reinterpret_cast<const __m128i*>(index));
+    const int k = index[0] >> 8;
+    const InverseMap& map = levels.maps[static_cast<std::size_t>(k)];
+    const LevelPairView view = level_pair_view(levels, k);
+    Pixel* o = out + (x - x_begin);
+    if (!in_fast_range<true>(view.src, evaluate(map, x, y))) {
+      const int limit = leading_lower(octet, k, x_end - x);
+      int n = 1;
+      while (n < limit && !in_fast_range<true>(view.src, evaluate(map, x + n, y))) ++n;
+      alignas(16) std::uint16_t weights[8];
+      _mm_store_si128(reinterpret_cast<__m128i*>(weights),
+                      _mm_and_si128(octet, _mm_set1_epi16(255)));
+      const MapSample s = evaluate(map, x, y);
+      perspective_trilinear_clamped(view.src, view.next, weights, o, n, static_cast<double>(s.nu),
+                                    static_cast<double>(s.nv), static_cast<double>(s.d),
+                                    static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+                                    static_cast<double>(2 * map.g));
+      x += n;
+      continue;
+    }
+    int fast_end = x_end;
+    while (fast_end > x + 1 && !in_fast_range<true>(view.src, evaluate(map, fast_end - 1, y))) {
+      --fast_end;
+    }
+    const int done = trilinear_octets(view, index, k, o, fast_end - x, quad_step_at(map, x, y));
+    x += done;
+    if (x >= fast_end) continue;
+    const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(indices + (x - x_begin)));
+    const int few = leading_lower(rest, k, fast_end - x);
+    if (few > 0) {
+      trilinear_few(view, rest, out + (x - x_begin), few, quad_step_at(map, x, y));
+      x += few;
+    }
   }
 }
 #endif
@@ -159,6 +319,21 @@ void run_trilinear_row(const InverseMap& map, const Image& source, const Inverse
                                   static_cast<double>(s.d), static_cast<double>(2 * map.a),
                                   static_cast<double>(2 * map.d), static_cast<double>(2 * map.g));
   ends(begin + done, end);
+#endif
+}
+
+bool run_trilinear_levels_row(const MipLevelMaps& levels, const std::uint16_t* indices, int y,
+                              int x_begin, int x_end, Pixel* out) {
+#if defined(OFLAB_WARP_AVX2)
+  if (!use_avx2()) return false;
+  for (const InverseMap& map : levels.maps) {
+    if (!steps_exact_in_double(map)) return false;
+  }
+  levels_row(levels, indices, y, x_begin, x_end, out);
+  return true;
+#else
+  (void)levels, (void)indices, (void)y, (void)x_begin, (void)x_end, (void)out;
+  return false;
 #endif
 }
 

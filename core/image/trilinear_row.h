@@ -6,11 +6,20 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "image/image.h"
 #include "image/inverse_map.h"
 
 namespace oflab {
+
+// The levels of a perspective mipmap warp as the rows sample them: per level k (0 .. top,
+// top <= 15) its bilinear map (division form, level k's positions: the level-0 ones scaled
+// by 2^-k, mipmap_kernel.cpp's level_plan) and its image (level 0 the source).
+struct MipLevelMaps {
+  std::vector<InverseMap> maps;
+  std::vector<const Image*> images;
+};
 
 // Pixels x_begin .. x_end - 1 of output row y (output pixels, centred coordinates of the plan
 // the maps come from) sampled trilinearly on two mip levels k and k + 1
@@ -27,5 +36,21 @@ namespace oflab {
 void run_trilinear_row(const InverseMap& map, const Image& source, const InverseMap& next_map,
                        const Image& next_source, int y, int x_begin, int x_end,
                        const std::uint16_t* weights, Pixel* out);
+
+// Pixels x_begin .. x_end - 1 of output row y sampled each at its own level pair: pixel x
+// at indices[x - x_begin] (256 lower + weight, as mip_row_levels gives them; lower <= top,
+// weight 0 on the top level), with the bytes of run_trilinear_row on levels lower and
+// lower + 1 with that weight (run_bilinear_row's where the weight is 0): each pixel's
+// position is exact in double whatever run it is part of, and its taps are clamped only
+// where they would leave its lower level. The row is cut where the lower level changes
+// without a separate pass: eight indices at a time are read and compared inside the
+// sampling loop, and the pixels before a change still take the fast loop. out[0] is pixel
+// x_begin. Returns false, writing nothing, when the AVX2 loops are off or a level's steps
+// are not exact in double (the caller then takes run_trilinear_row per stretch).
+// Preconditions: x_begin <= x_end, D > 0 over the row's pixels, every level's map in
+// division form, `indices` readable up to x_end - x_begin + 7 entries (seven of padding,
+// any values).
+bool run_trilinear_levels_row(const MipLevelMaps& levels, const std::uint16_t* indices, int y,
+                              int x_begin, int x_end, Pixel* out);
 
 }  // namespace oflab

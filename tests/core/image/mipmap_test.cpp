@@ -10,11 +10,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include "image/inverse_map.h"
 #include "image/mip_pyramid.h"
 #include "image/mip_row_levels.h"
 #include "image/mipmap_kernel.h"
+#include "image/polygon.h"
 #include "image/scan_conversion.h"
+#include "image/trilinear_row.h"
 #include "image/warp.h"
+#include "image/warp_kernels.h"
 #include "image/warp_plan.h"
 #include "warp_reference.h"
 
@@ -212,6 +216,116 @@ TEST(MipRowLevels, EachIndexIsTheExactLevelRoundedToAFewThousandthsOfAStep) {
   EXPECT_LE(worst, 0.505) << "steps from the exact level";
   EXPECT_LE(worst_scalar, 0.5 + 1e-6);
   EXPECT_GT(frobenius_far, pixels / 2);
+}
+
+// Level k's map of a perspective plan as the mipmap kernel makes it (positions scaled by
+// 2^-k, pixel-centre indices, over the plan's polygon clipped to the output), and its image.
+MipLevelMaps plan_level_maps(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid) {
+  MipLevelMaps levels;
+  const ConvexPolygon region =
+      clip_to_box(plan.polygon, BoundingBox{0.0, 0.0, static_cast<double>(plan.output_width),
+                                            static_cast<double>(plan.output_height)});
+  for (int k = 0; k <= pyramid.top(); ++k) {
+    const double s = std::ldexp(1.0, -k);
+    levels.maps.push_back(make_inverse_map(
+        translation_matrix(-0.5, -0.5) * scaling(s, s) * plan.dest_to_source, region, false));
+    levels.images.push_back(k == 0 ? &source : &pyramid.level(k));
+  }
+  return levels;
+}
+
+// Each pixel of the span sampled alone on its level pair (index: 256 lower + weight per
+// pixel): run_trilinear_row over one pixel, run_bilinear_row where the weight is 0.
+std::vector<Pixel> each_pixel_alone(const MipLevelMaps& levels, const std::uint16_t* index,
+                                    const PixelSpan& span) {
+  std::vector<Pixel> pixels(static_cast<std::size_t>(span.x_end - span.x_begin));
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    const auto k = static_cast<std::size_t>(index[i] >> 8);
+    const std::uint16_t w = index[i] & 255;
+    const int x = span.x_begin + static_cast<int>(i);
+    if (w == 0) {
+      run_bilinear_row(levels.maps[k], *levels.images[k], span.y, x, x + 1, &pixels[i]);
+    } else {
+      run_trilinear_row(levels.maps[k], *levels.images[k], levels.maps[k + 1],
+                        *levels.images[k + 1], span.y, x, x + 1, &w, &pixels[i]);
+    }
+  }
+  return pixels;
+}
+
+// The level row (run_trilinear_levels_row: one loop over a span that stops where the lower
+// level changes) against each pixel computed alone by the stretch rows it replaces
+// (each_pixel_alone; a one-pixel call takes the clamped path, so this also checks that a
+// pixel's bytes do not depend on the run it is part of). Whole spans and random pieces of
+// them, on tilts whose rows cross several levels, reach the top level and leave the source.
+// The control: the same rows with every weight one step higher differ on blended pixels.
+TEST(TrilinearLevelsRow, EachPixelHasTheBytesOfItsLevelPairSampledAlone) {
+  if (!warp_avx2_enabled()) GTEST_SKIP() << "the level row needs the AVX2 loops";
+  std::mt19937 rng(45);
+  const Layer source = make_layer(testing::random_image(rng, 160, 120));
+  MipPyramid pyramid;
+  build_mip_pyramid(source.image, pyramid);
+  const int top = pyramid.top();
+  const Mat3 tilts[] = {mat3_from_rows({0.5, 0.05, 4.0}, {-0.02, 0.45, 3.0}, {0.012, 0.003, 1.0}),
+                        mat3_from_rows({0.3, -0.1, 20.0}, {0.1, 0.35, -6.0}, {-0.004, 0.02, 1.0}),
+                        mat3_from_rows({1.2, 0.3, -5.0}, {-0.2, 1.1, 2.0}, {0.03, 0.01, 1.0}),
+                        mat3_from_rows({8.0, 0.5, 0.0}, {0.0, 8.0, 0.0}, {0.01, 0.8, 1.0})};
+  std::int64_t pixels = 0, blended = 0, at_top = 0, control_far = 0;
+  int differing = 0;
+  std::vector<int> levels_seen(static_cast<std::size_t>(top) + 1, 0);
+  for (const Mat3& m : tilts) {
+    const WarpOptions options{Sampling::kMipmap, WarpKernel::kPerspective, kDefaultHorizonEpsilon,
+                              &pyramid};
+    const WarpPlan plan =
+        plan_warp(prepare_warp(source, m, options), Sampling::kMipmap, 120, 90, -6, -4);
+    const MipLevelMaps levels = plan_level_maps(plan, source.image, pyramid);
+    ScanConverter scan(plan.polygon, 120, 90);
+    PixelSpan span;
+    while (scan.next(span)) {
+      const int count = span.x_end - span.x_begin;
+      if (count <= 0) continue;
+      std::vector<std::uint16_t> index(static_cast<std::size_t>(count) + 7, 0x0101);  // padding
+      mip_row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, index.data());
+      const std::vector<Pixel> want = each_pixel_alone(levels, index.data(), span);
+      for (int i = 0; i < count; ++i) {
+        const int k = index[static_cast<std::size_t>(i)] >> 8;
+        ++levels_seen[static_cast<std::size_t>(k)];
+        blended += (index[static_cast<std::size_t>(i)] & 255) != 0;
+        at_top += k == top;
+      }
+      // The whole span, then a random piece of it.
+      const int a = std::uniform_int_distribution<int>(0, count - 1)(rng);
+      const int b = std::uniform_int_distribution<int>(a + 1, count)(rng);
+      for (const auto& piece : {std::pair<int, int>{0, count}, std::pair<int, int>{a, b}}) {
+        std::vector<Pixel> got(static_cast<std::size_t>(count), testing::kSentinel);
+        ASSERT_TRUE(run_trilinear_levels_row(
+            levels, index.data() + piece.first, span.y, span.x_begin + piece.first,
+            span.x_begin + piece.second, got.data() + piece.first));
+        for (int i = piece.first; i < piece.second; ++i) {
+          differing += got[static_cast<std::size_t>(i)] != want[static_cast<std::size_t>(i)];
+          ++pixels;
+        }
+      }
+      std::vector<std::uint16_t> heavier = index;
+      for (std::uint16_t& i : heavier) {
+        if ((i & 255) != 0 && (i & 255) < 255) ++i;
+      }
+      std::vector<Pixel> shifted(static_cast<std::size_t>(count));
+      run_trilinear_levels_row(levels, heavier.data(), span.y, span.x_begin, span.x_end,
+                               shifted.data());
+      for (int i = 0; i < count; ++i) {
+        control_far += shifted[static_cast<std::size_t>(i)] != want[static_cast<std::size_t>(i)];
+      }
+    }
+  }
+  EXPECT_EQ(differing, 0) << "of " << pixels << " pixels";
+  ASSERT_GT(pixels, 5000);
+  int distinct = 0;
+  for (int n : levels_seen) distinct += n > 0;
+  EXPECT_GE(distinct, 4) << "lower levels crossed";
+  EXPECT_GT(at_top, 0) << "pixels on the top level";
+  EXPECT_GT(blended, pixels / 4);
+  EXPECT_GT(control_far, blended / 20);
 }
 
 // A pure 2x minification puts every output pixel centre on a level-1 pixel centre with
