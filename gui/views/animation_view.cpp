@@ -17,8 +17,8 @@
 #include "adapters/frame_images.h"
 #include "adapters/hole_map.h"
 #include "adapters/painted_text.h"
+#include "adapters/parallel_paint.h"
 #include "flow/limits.h"
-#include "image/thread_pool.h"
 #include "models/animation_model.h"
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
@@ -453,30 +453,14 @@ void AnimationView::paint_panels(QPainter& painter, const PanelPlan& plan,
     targets.push_back(
         centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height()));
   panel_rects_.insert(panel_rects_.end(), targets.begin(), targets.end());
-  QPaintDevice* device = painter.device();
-  QImage* canvas =
-      device && device->devType() == QInternal::Image ? static_cast<QImage*>(device) : nullptr;
-  if (panels_in_parallel_ && canvas && canvas->format() == QImage::Format_RGB32 &&
-      painter.transform().isIdentity() && count > 1) {
-    // Each panel's picture on core's worker threads into its own window of the canvas (the
-    // canvas's memory, rows bytesPerLine apart; the windows do not overlap): the same
-    // painting, moved by whole pixels, so the same pixels as painted here one by one.
-    uchar* bits = canvas->bits();  // the painter has already detached the canvas
-    const qsizetype line = canvas->bytesPerLine();
-    for_each_band(int(count), 1, [&](int, int begin, int end) {
-      for (int i = begin; i < end; ++i) {
-        const QRect window = targets[i].toAlignedRect().intersected(canvas->rect());
-        if (window.isEmpty()) continue;
-        QImage part(bits + window.y() * line + window.x() * 4, window.width(), window.height(),
-                    line, QImage::Format_RGB32);
-        QPainter on_part(&part);
-        on_part.translate(-window.x(), -window.y());
-        paint_picture(on_part, plan.contents[i], targets[i], outlines);
-      }
-    });
-  } else {
-    for (size_t i = 0; i < count; ++i)
-      paint_picture(painter, plan.contents[i], targets[i], outlines);
+  // Each panel's picture on core's worker threads, into its own window of the canvas.
+  std::vector<QRect> windows;
+  for (const QRectF& target : targets) windows.push_back(target.toAlignedRect());
+  const auto paint = [&](QPainter& on, int i) {
+    paint_picture(on, plan.contents[size_t(i)], targets[size_t(i)], outlines);
+  };
+  if (!panels_in_parallel_ || count < 2 || !paint_in_windows(painter, windows, paint)) {
+    for (size_t i = 0; i < count; ++i) paint(painter, int(i));
   }
   // The texts here, on the window's thread (fonts are the GUI thread's).
   for (size_t i = 0; i < count; ++i) paint_texts(painter, plan.contents[i], plan.cells[i]);

@@ -9,6 +9,7 @@
 
 #include "adapters/frame_images.h"
 #include "adapters/paint_helpers.h"
+#include "adapters/parallel_paint.h"
 #include "display/palette.h"
 #include "engine/engine.h"
 #include "flow/homography.h"
@@ -385,9 +386,26 @@ const QImage& FlowRenderer::paint(const QSize& wanted) {
   image.fill(to_qcolor(theme_.background));
   QPainter painter(&image);
   const double side = side_width_px(size.width());
-  painter.setClipRect(QRectF(0, 0, size.width() - side, size.height()));
-  paint_scene(painter, image_to_view(size));
+  const QRectF scene_area(0, 0, size.width() - side, size.height());
+  const QTransform to_view = image_to_view(size);
+  // The plane's image and the colour wheel (smoothly scaled images) here, then the lines and
+  // arrows (antialiased wide strokes) in kLineStrips strips of rows on core's worker threads:
+  // the same picture on any number of threads. (Against the lines painted in one piece, the
+  // few pixels a stroke covers on the rows either side of a seam may differ by one level.)
+  painter.setClipRect(scene_area);
+  paint_scene_images(painter, to_view);
   painter.setClipping(false);
+  const auto lines = [&](QPainter& on, int) { paint_scene_lines(on, to_view); };
+  const std::vector<QRect> strips = row_strips(QRect(QPoint(0, 0), size), kLineStrips);
+  if (!paint_in_parallel_ || strips.size() < 2 ||
+      !paint_in_windows(painter, strips, scene_area, lines)) {
+    painter.setClipRect(scene_area);
+    lines(painter, 0);
+    painter.setClipping(false);
+  }
+  // The captions and the side antialiased, smooth images scaled (as the scene is).
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
   QFont font = painter.font();
   font.setPixelSize(theme_.font_size);
   painter.setFont(font);
@@ -405,7 +423,7 @@ const QImage& FlowRenderer::paint(const QSize& wanted) {
   return image;
 }
 
-void FlowRenderer::paint_scene(QPainter& painter, const QTransform& to_view) {
+void FlowRenderer::paint_scene_images(QPainter& painter, const QTransform& to_view) const {
   const QPointF shift(camera_.cx, camera_.cy);
   painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
   if (plane_drawn_) {
@@ -423,6 +441,9 @@ void FlowRenderer::paint_scene(QPainter& painter, const QTransform& to_view) {
     painter.drawImage(to_view.mapRect(wheel_rect_), wheel_);
     painter.restore();
   }
+}
+
+void FlowRenderer::paint_scene_lines(QPainter& painter, const QTransform& to_view) const {
   painter.setRenderHint(QPainter::Antialiasing, true);
   painter.setBrush(Qt::NoBrush);
   const double w = theme_.line_width;
@@ -447,7 +468,7 @@ void FlowRenderer::paint_scene(QPainter& painter, const QTransform& to_view) {
 
 // Each arrow: a shaft from the sample point and a filled head at least a few line widths
 // long (so short arrows still show their direction from afar), half as wide as long.
-void FlowRenderer::paint_arrows(QPainter& painter, const QTransform& to_view) {
+void FlowRenderer::paint_arrows(QPainter& painter, const QTransform& to_view) const {
   const double width = theme_.line_width + 0.5;
   for (const Arrow& arrow : arrows_) {
     const QPointF from = to_view.map(arrow.from), to = to_view.map(arrow.to);

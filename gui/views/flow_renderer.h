@@ -45,6 +45,11 @@ class FlowRenderer {
   // Paints the last update at `size` (view pixels; at least 1 x 1) into one of two reused
   // images and returns it. Precondition: update has been called.
   const QImage& paint(const QSize& size);
+  // Whether paint() paints the scene's lines in strips of rows on core's worker threads (the
+  // default) or in one piece on the calling thread.
+  void set_paint_in_parallel(bool on) { paint_in_parallel_ = on; }
+  // The strips of rows paint() paints the scene's lines in (the same on any number of threads).
+  static constexpr int kLineStrips = 2;
 
   // Largest magnitude of the shown part after the last update (px/s): over the arrow grid
   // and the plane's corners inside the image; the caption and the wheel both print it.
@@ -107,8 +112,12 @@ class FlowRenderer {
   void choose_view_region(const FlowContext& context, const FlowDisplay& display);
   QTransform image_to_view(const QSize& size) const;
   double wheel_caption_height() const;  // view pixels at the bottom, 0 without the wheel
-  void paint_scene(QPainter& painter, const QTransform& to_view);
-  void paint_arrows(QPainter& painter, const QTransform& to_view);
+  // The scene in the view's pixels (`to_view` maps centred camera pixels there): its images
+  // (the plane's, the colour wheel), then its lines (frame, outline, principal point,
+  // streamlines, arrows). The lines paint no text and may run on several threads at once.
+  void paint_scene_images(QPainter& painter, const QTransform& to_view) const;
+  void paint_scene_lines(QPainter& painter, const QTransform& to_view) const;
+  void paint_arrows(QPainter& painter, const QTransform& to_view) const;
   void paint_side(QPainter& painter, const QRectF& side);
   void paint_colour_bar(QPainter& painter, const QRectF& side);
   void paint_rounding_note(QPainter& painter, const QRectF& side);
@@ -124,7 +133,8 @@ class FlowRenderer {
   // in the image. The caption, the colour bar and the colour wheel all use this one value.
   double shown_max_ = 0.0;
   bool rounding_only_ = false;
-  double bar_max_ = 1.0;  // colour bar's upper end (px/s), a 1-2-5 step
+  bool paint_in_parallel_ = true;  // set_paint_in_parallel
+  double bar_max_ = 1.0;           // colour bar's upper end (px/s), a 1-2-5 step
   bool plane_in_image_ = true;
   int shown_samples_ = 0;  // arrow-grid samples inside the plane's image
   QString caption_text_, wheel_caption_;

@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <QRegularExpression>
+#include <algorithm>
 #include <cmath>
 
 #include "display/flow_parts.h"
 #include "display/palette.h"
 #include "flow/plane_scene.h"
+#include "image/thread_pool.h"
 
 namespace oflab::test {
 namespace {
@@ -68,6 +70,47 @@ TEST(FlowRenderer, EveryArrowEndsInsideThePlanesOutline) {
   // The negative control: some samples of this motion had tips outside, and were dropped.
   EXPECT_LT(int(renderer.arrows().size()), renderer.shown_samples());
   EXPECT_GT(int(renderer.arrows().size()), renderer.shown_samples() / 2);
+}
+
+// The scene's lines painted in strips of rows: the same picture on 1 thread and on 2 (arrows,
+// streamlines and the colour wheel clipped to the plane, at a projector's size); against the
+// lines painted in one piece, differences only on the rows either side of a seam, by at most
+// one level. The control: the picture of a later frame of the motion differs.
+TEST(FlowRenderer, TheLinesInStripsAreTheSamePictureOnAnyThreads) {
+  FlowDisplay display;
+  display.arrows = true;
+  display.streamlines = true;
+  display.colour_wheel = true;
+  const QSize size(1900, 800);
+  FlowRenderer renderer;
+  renderer.update(demo_context(), display, QString());
+  const QImage one = renderer.paint(size).copy();
+  set_worker_threads(2);
+  const QImage two = renderer.paint(size).copy();
+  renderer.set_paint_in_parallel(false);
+  const QImage whole = renderer.paint(size).copy();
+  renderer.set_paint_in_parallel(true);
+  const PlaneScene demo = default_demo_scene();
+  PlanePose later = demo.pose;
+  later.point += 0.05 * demo.motion.velocity;
+  renderer.update(make_flow_context(demo.camera, later, demo.motion), display, QString());
+  const QImage other = renderer.paint(size).copy();
+  set_worker_threads(1);
+  EXPECT_TRUE(one == two);
+  EXPECT_FALSE(other == two);
+  int largest = 0, off_seam = 0;
+  const int seam = size.height() / FlowRenderer::kLineStrips;
+  for (int y = 0; y < size.height(); ++y) {
+    for (int x = 0; x < size.width(); ++x) {
+      const QRgb a = two.pixel(x, y), b = whole.pixel(x, y);
+      const int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                              std::abs(qBlue(a) - qBlue(b))});
+      largest = std::max(largest, d);
+      off_seam += d > 0 && std::abs(y - seam) > 2;
+    }
+  }
+  EXPECT_LE(largest, 1);
+  EXPECT_EQ(off_seam, 0);
 }
 
 TEST(FlowRenderer, ZoomToPlaneKeepsTheSceneOutOfTheCaption) {
