@@ -18,6 +18,8 @@
 #include <array>
 #include <cstring>
 
+#include "image/thread_pool.h"
+
 namespace oflab {
 namespace {
 
@@ -145,7 +147,7 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
     pixels->SetDimensions(image.width(), image.height(), 1);
     pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   }
-  auto* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
+  unsigned char* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
   // Premultiplied: the colour plus what shows through (1 - alpha) of the backdrop. What shows
   // through depends on alpha alone, so it is tabled once per channel (the same products).
   std::array<std::array<double, 256>, 3> through;
@@ -156,14 +158,19 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
   const auto over = [](unsigned char colour, double shown_through) {
     return static_cast<unsigned char>(std::min(255.0, colour + shown_through + 0.5));
   };
-  for (int y = 0; y < image.height(); ++y) {
-    const Pixel* row = image.row(y);
-    for (int x = 0; x < image.width(); ++x, out += 3) {
-      out[0] = over(row[x].r, through[0][row[x].a]);
-      out[1] = over(row[x].g, through[1][row[x].a]);
-      out[2] = over(row[x].b, through[2][row[x].a]);
+  // Rows in bands on core's worker threads, each writing its own rows.
+  const int w = image.width();
+  for_each_band(image.height(), 32, [&](int, int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      const Pixel* row = image.row(y);
+      unsigned char* to = out + static_cast<std::size_t>(y) * w * 3;
+      for (int x = 0; x < w; ++x, to += 3) {
+        to[0] = over(row[x].r, through[0][row[x].a]);
+        to[1] = over(row[x].g, through[1][row[x].a]);
+        to[2] = over(row[x].b, through[2][row[x].a]);
+      }
     }
-  }
+  });
   pixels->Modified();
 }
 
@@ -171,7 +178,7 @@ void copy_texture_pixels(const QImage& image, vtkImageData* pixels) {
   const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888);
   pixels->SetDimensions(rgba.width(), rgba.height(), 1);
   pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
-  auto* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
+  unsigned char* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
   for (int y = 0; y < rgba.height(); ++y) {
     std::memcpy(out + size_t(y) * size_t(rgba.width()) * 4, rgba.constScanLine(y),
                 size_t(rgba.width()) * 4);

@@ -11,6 +11,8 @@
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -19,8 +21,10 @@
 #include <cmath>
 #include <set>
 
+#include "adapters/world_actors.h"
 #include "app/view_table.h"
 #include "flow/plane_scene.h"
+#include "image/thread_pool.h"
 #include "image_checks.h"
 #include "models/scene_model.h"
 #include "views/image_canvas.h"
@@ -79,6 +83,44 @@ class WorldViewTest : public WindowTest {
   // The world view's baselines keep the thin lines and arrows of a 1920-pixel view visible.
   static constexpr int kWorldBaselineWidth = 640;
 };
+
+// The frame on the image plane: each pixel its premultiplied colour plus (1 - alpha) of the
+// backdrop, rounded (worked out here per pixel in integers and doubles), the same on 1 thread
+// and on 2 (the rows are copied in bands). Control: another backdrop changes the copy.
+TEST(WorldFramePixels, ThePremultipliedFrameOverTheBackdrop) {
+  Image image(300, 200);
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const auto a = static_cast<std::uint8_t>((x * 7 + y * 3) % 256);
+      const auto c = [&](int k) { return static_cast<std::uint8_t>((x + k * y) % (a + 1)); };
+      image.at(x, y) = Pixel{c(1), c(2), c(3), a};
+    }
+  }
+  const RgbF backdrop{0.25f, 0.5f, 0.75f};
+  auto copy = [&](int threads, const RgbF& back) {
+    set_worker_threads(threads);
+    vtkNew<vtkImageData> pixels;
+    copy_frame_pixels(image, pixels, back);
+    set_worker_threads(1);
+    const auto* p = static_cast<const unsigned char*>(pixels->GetScalarPointer());
+    return std::vector<unsigned char>(p, p + size_t(image.width()) * image.height() * 3);
+  };
+  const std::vector<unsigned char> one = copy(1, backdrop), two = copy(2, backdrop);
+  EXPECT_EQ(one, two);
+  size_t wrong = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const Pixel p = image.at(x, y);
+      const std::uint8_t channel[3] = {p.r, p.g, p.b};
+      for (int c = 0; c < 3; ++c) {
+        const double want = std::min(255.0, channel[c] + (255 - p.a) * double(backdrop[c]) + 0.5);
+        wrong += one[(size_t(y) * image.width() + x) * 3 + c] != static_cast<unsigned char>(want);
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_NE(copy(2, RgbF{0.0f, 0.0f, 0.0f}), two);
+}
 
 TEST_F(WorldViewTest, TheWorldViewFollowsTheFlowViewInTheTable) {
   const std::vector<std::string> names = view_table_names();
