@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "engine/affine_fit.h"
+
 namespace oflab {
 namespace {
 
@@ -37,17 +39,6 @@ std::vector<Vec2> clip(const std::vector<Vec2>& polygon, Inside inside, Cross cr
     if (inside(a) != inside(b)) out.push_back(cross(a, b));
   }
   return out;
-}
-
-// The shoelace formula: the area of a simple polygon, whichever way round.
-double polygon_area(const std::vector<Vec2>& p) {
-  double twice = 0.0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const Vec2& a = p[i];
-    const Vec2& b = p[(i + 1) % p.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return std::abs(twice) / 2.0;
 }
 
 // The places a label of `size` may take next to `anchor`, most wanted first.
@@ -101,7 +92,7 @@ double covered_area(const LabelBox& box, const std::vector<Vec2>& outline) {
       p, [t](Vec2 q) { return q.y >= t; }, at_y(t));
   p = clip(
       p, [b](Vec2 q) { return q.y <= b; }, at_y(b));
-  return p.size() < 3 ? 0.0 : polygon_area(p);
+  return p.size() < 3 ? 0.0 : std::abs(signed_area2(p)) / 2.0;
 }
 
 std::vector<LabelBox> place_labels(const std::vector<Vec2>& sizes, const std::vector<Vec2>& anchors,
