@@ -1,9 +1,9 @@
 'use strict';
-// The analysis charts (the desktop's analysis view, gui/views/analysis_view.h, in short):
-// over the last kAnalysisFrames frames of the current pass of the lab's compared runs (or the
-// source's own run when its kind has no reuse policy), the largest measured error per frame,
-// one line per policy, and one band per policy with its drawn layers per level, stacked in
-// the levels' colours. The x axis moves only when the frame shown leaves it; a click on a
+// The analysis charts (the desktop's comparison charts, gui/views/analysis_charts.h): over
+// the last kAnalysisFrames frames of the current pass of the lab's compared runs (or the
+// source's own run when its kind has no reuse policy), one line per policy for the largest
+// measured error per frame and for the work in the cost model, and one band per policy with
+// its drawn layers per level, stacked in the levels' colours. The x axis moves only when the frame shown leaves it; a click on a
 // chart goes to the frame under the pointer. The histories come from core
 // (Session.analysisJson: session/player/policy_comparison.h's records).
 
@@ -50,33 +50,22 @@ const analysisView = {
     const cw = w - left - 20;
     this.charts = { x, w: cw };
     const fx = (frame) => x + (cw * (frame - a)) / Math.max(1, b - a);
-    const errorH = Math.round(h * 0.45);
-    ctx.font = style.font(13);
-    ctx.fillStyle = '#e6e6e6';
-    ctx.fillText('largest measured error per frame, px', x, 18 * style.scale);
+    // Two line charts, then the level bands below them. (The desktop's frame-time chart is not
+    // drawn: the page's wall times are the browser's, and vary from one run to the next.)
+    const gap = 44 * style.scale;
     const top = 26 * style.scale;
-    const errorBottom = top + errorH;
-    let maxError = 0;
-    for (const run of data.runs) for (const f of run.frames) if (f.error_px !== null) maxError = Math.max(maxError, f.error_px);
-    maxError = maxError > 0 ? maxError * 1.1 : 1;
-    const fy = (e) => errorBottom - (errorH * e) / maxError;
-    this.axes(ctx, x, top, cw, errorH, a, b, [0, maxError], style);
-    data.runs.forEach((run, i) => {
-      ctx.strokeStyle = kPolicyColours[i % kPolicyColours.length];
-      ctx.lineWidth = 2 * style.line;
-      ctx.beginPath();
-      let open = false;
-      for (const f of run.frames) {
-        // A frame with nothing drawn leaves a gap, never a zero.
-        if (f.error_px === null || f.frame < a) { open = false; continue; }
-        if (open) ctx.lineTo(fx(f.frame), fy(f.error_px)); else ctx.moveTo(fx(f.frame), fy(f.error_px));
-        open = true;
-      }
-      ctx.stroke();
-      ctx.fillStyle = ctx.strokeStyle;
-      ctx.fillText(run.policy, x + cw - 140 * style.scale, top + 16 * style.scale * (i + 1));
+    const lines = [
+      ['largest measured error per frame, px', (f) => f.error_px, 1],
+      ['work in the cost model (perspective-warp pixels), per policy', (f) => f.model_work, 1],
+    ];
+    const lineH = Math.round((h - top - lines.length * gap) * 0.3);
+    this.drawn = [];
+    lines.forEach(([title, value, quantile], k) => {
+      const y = top + k * (lineH + gap);
+      this.lineChart(ctx, data, { title, value, quantile }, { x, y, w: cw, h: lineH, a, b, fx }, style);
     });
-    this.bands(ctx, data, x, errorBottom + 40 * style.scale, cw, h - errorBottom - 60 * style.scale, fx, a, style);
+    const bandsTop = top + lines.length * (lineH + gap) - 4 * style.scale;
+    this.bands(ctx, data, x, bandsTop, cw, h - bandsTop - 20 * style.scale, fx, a, style);
     // The frame shown.
     ctx.strokeStyle = '#e6e6e6';
     ctx.lineWidth = 1;
@@ -87,14 +76,48 @@ const analysisView = {
     setHtml($('analysis-note'), `frames ${a} .. ${b}; click a chart to go to a frame (now ${data.last})`);
   },
 
+  // One line per run of `chart.value(frame)` (null: a gap, never a zero) in the box `at`, its
+  // scale's top the `chart.quantile` of the values shown (larger ones drawn at the top);
+  // records the chart's title and top in this.drawn.
+  lineChart(ctx, data, chart, at, style) {
+    const { x, y, w, h, a, b, fx } = at;
+    const values = [];
+    for (const run of data.runs) for (const f of run.frames) if (f.frame >= a && chart.value(f) !== null) values.push(chart.value(f));
+    values.sort((p, q) => p - q);
+    const kept = values.length ? values[Math.min(values.length - 1, Math.floor(chart.quantile * (values.length - 1)))] : 0;
+    const high = kept > 0 ? kept * 1.1 : 1;
+    ctx.font = style.font(13);
+    ctx.fillStyle = '#e6e6e6';
+    ctx.fillText(chart.title, x, y - 8 * style.scale);
+    this.axes(ctx, x, y, w, h, a, b, [0, high], style);
+    const fy = (v) => y + h - (h * Math.min(v, high)) / high;
+    data.runs.forEach((run, i) => {
+      ctx.strokeStyle = kPolicyColours[i % kPolicyColours.length];
+      ctx.lineWidth = 2 * style.line;
+      ctx.beginPath();
+      let open = false;
+      for (const f of run.frames) {
+        const v = chart.value(f);
+        if (v === null || f.frame < a) { open = false; continue; }
+        if (open) ctx.lineTo(fx(f.frame), fy(v)); else ctx.moveTo(fx(f.frame), fy(v));
+        open = true;
+      }
+      ctx.stroke();
+      ctx.fillStyle = ctx.strokeStyle;
+      ctx.fillText(run.policy, x + w - 140 * style.scale, y + 16 * style.scale * (i + 1));
+    });
+    this.drawn.push({ title: chart.title, top: high });
+  },
+
   // One band per run: its drawn layers per level at each frame, stacked from the cheapest.
   bands(ctx, data, x, y, w, h, fx, a, style) {
     const colours = levelColours();
     const levels = Object.keys(colours);
-    const bandH = Math.max(8, (h - 10 * data.runs.length) / data.runs.length);
+    const title = 18 * style.scale;  // each band's title above it
+    const bandH = Math.max(8, (h - title * data.runs.length) / data.runs.length);
     const barW = Math.max(1, w / kAnalysisFrames - 1);
     data.runs.forEach((run, i) => {
-      const by = y + i * (bandH + 10);
+      const by = y + title + i * (bandH + title);
       ctx.fillStyle = '#e6e6e6';
       ctx.font = style.font(12);
       ctx.fillText(`${run.policy}: layers per level`, x, by - 4);
@@ -121,7 +144,8 @@ const analysisView = {
     ctx.font = style.font(11);
     for (let k = 0; k <= 4; ++k) {
       const v = lo + ((hi - lo) * k) / 4;
-      ctx.fillText(v.toPrecision(2), 4, y + h - (h * k) / 4 + 4);
+      const label = v >= 1e6 ? `${(v / 1e6).toPrecision(2)}M` : v >= 1e3 ? `${(v / 1e3).toPrecision(2)}k` : v.toPrecision(2);
+      ctx.fillText(label, 4, y + h - (h * k) / 4 + 4);
     }
     for (let f = Math.ceil(a / 10) * 10; f <= b; f += 10) {
       const fxv = x + (w * (f - a)) / Math.max(1, b - a);

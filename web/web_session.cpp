@@ -456,10 +456,13 @@ std::string WebSession::analysis_json(int frames) {
   }
   const int now = lab_.run().animator()->frame();
   const int first = std::max(0, now - frames + 1);
-  const auto frame_json = [](int frame, const auto& levels, int drawn, double error) {
+  const auto frame_json = [](int frame, const auto& levels, int drawn, double error, double time_ms,
+                             double work) {
     return json{{"frame", frame},
                 {"levels", json(std::vector<int>(levels.begin(), levels.end()))},
-                {"error_px", drawn > 0 ? json(error) : json()}};
+                {"error_px", drawn > 0 ? json(error) : json()},
+                {"time_ms", time_ms},
+                {"model_work", work}};
   };
   json runs = json::array();
   for (const ComparedRun& run : lab_.comparison().runs()) {
@@ -467,7 +470,8 @@ std::string WebSession::analysis_json(int frames) {
     json list = json::array();
     for (const ComparedFrame& f : run.history) {
       if (f.frame >= first && f.frame <= now) {
-        list.push_back(frame_json(f.frame, f.levels, f.drawn(), f.max_measured_error_px));
+        list.push_back(frame_json(f.frame, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms,
+                                  f.model_work));
       }
     }
     runs.push_back({{"policy", run.policy->name}, {"frames", list}});
@@ -477,7 +481,8 @@ std::string WebSession::analysis_json(int frames) {
     json list = json::array();
     for (int k = first; k <= now && k < int(history.size()); ++k) {
       const AnimationFrame& f = history[std::size_t(k)];
-      list.push_back(frame_json(k, f.levels, f.drawn(), f.max_measured_error_px));
+      list.push_back(frame_json(k, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms,
+                                f.model_work));
     }
     runs.push_back({{"policy", lab_.run().source().kind}, {"frames", list}});
   }

@@ -144,8 +144,10 @@ class WebSession {
   // The analysis charts' history: per compared run (or the source's own run when its kind
   // has no reuse policy), frames max(0, now - frames + 1) .. now of the current pass as
   // {"first", "last", "runs": [{"policy", "frames": [{"frame", "levels": [drawn layers per
-  // level, the levels' order], "error_px": largest measured error (null: nothing drawn)}]}]},
-  // or {"problem": why not}. `frames` is clamped to 1 .. 1000.
+  // level, the levels' order], "error_px": largest measured error (null: nothing drawn),
+  // "time_ms": the frame's wall time in this page, "model_work": the engine's cost model
+  // (perspective-warp pixels, AnimationFrame::model_work)}]}]}, or {"problem": why not}.
+  // `frames` is clamped to 1 .. 1000.
   std::string analysis_json(int frames);
   int run_count();
   const WebPanel& run(int index) const { return panels_.at(static_cast<std::size_t>(index)); }

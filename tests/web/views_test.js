@@ -12,6 +12,10 @@
 //   street's 13 polygons with the walk's path, the eye on its path at the frame shown, the
 //   polygons in the levels' colours (culled ones pale), the scene's caption; the plane's
 //   world is still the plane's (negative control).
+// - The analysis charts: the error and cost-model work charts and the level bands
+//   are drawn; each compared run's work per frame is `oflab-cli animate --script swing --mode
+//   POLICY`'s model_work column (6 significant digits, as the CSV prints); the two policies'
+//   works differ (negative control).
 // - The world view's labels (Module.placeLabels: session/display/label_layout.h, the desktop's
 //   rule), for the plane and the street: no two overlap, each lies inside the picture above the
 //   caption band and next to its point; a request of the wrong form is refused naming the field
@@ -141,4 +145,40 @@ async function testWorldLabels({ browser, open, evaluate, check, drawnMarker }) 
   check('NegativeControl_ALabelRequestOfTheWrongFormIsRefused', /anchors/.test(refused.error || ''), JSON.stringify(refused));
 }
 
-module.exports = { testSlicesView, testSceneWorld, testWorldLabels };
+// `oflab-cli animate --script NAME --mode POLICY`'s model_work column, one number per frame.
+function cliModelWork(cli, script, policy) {
+  const dir = fs.mkdtempSync(path.join(require('os').tmpdir(), 'oflab-web-work-'));
+  try {
+    const r = spawnSync(cli, ['animate', '--script', script, '--mode', policy, '--out', path.join(dir, 'run'),
+      '--quiet', '--no-warm-up', '--repeat-timing', '1'], { encoding: 'utf8' });
+    if (r.status !== 0) return { error: r.stderr.trim() };
+    const rows = fs.readFileSync(path.join(dir, 'run', 'frames.csv'), 'utf8').trim().split('\n');
+    const column = rows[0].split(',').indexOf('model_work');
+    return { work: rows.slice(1).map((row) => Number(row.split(',')[column])) };
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+async function testAnalysisCharts({ browser, open, evaluate, check, drawnMarker, cli }) {
+  await open(browser, '?view=analysis&script=swing', drawnMarker);
+  const got = JSON.parse(await evaluate(browser, `(() => { seek(30); draw();
+    return JSON.stringify({ data: JSON.parse(app.session.analysisJson(80)), drawn: analysisView.drawn }); })()`));
+  const titles = (got.drawn || []).map((d) => d.title).join(' | ');
+  check('TheAnalysisViewDrawsTheErrorAndWorkCharts', /measured error/.test(titles) && /cost model/.test(titles) && got.data.runs.length >= 2, titles);
+  const problems = [];
+  for (const run of got.data.runs) {
+    const cliRun = cliModelWork(cli, 'swing', run.policy);
+    if (cliRun.error) { problems.push(`${run.policy}: ${cliRun.error}`); continue; }
+    for (const f of run.frames) {
+      const want = cliRun.work[f.frame];
+      if (!(Math.abs(f.model_work - want) <= 1e-5 * Math.max(1, Math.abs(want)))) problems.push(`${run.policy} frame ${f.frame}: ${f.model_work}, the CLI's ${want}`);
+    }
+  }
+  check('EachRunsWorkPerFrameIsAnimatesModelWork', problems.length === 0 && got.data.runs.every((r) => r.frames.length === 31),
+    problems.slice(0, 4).join('; ') || `${got.data.runs.map((r) => `${r.policy} ${r.frames.length} frames`).join(', ')}`);
+  const [p, q] = got.data.runs;
+  check('NegativeControl_TwoPoliciesWorkDiffers', p && q && p.frames.some((f, k) => f.model_work !== q.frames[k].model_work));
+}
+
+module.exports = { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts };

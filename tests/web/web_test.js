@@ -44,7 +44,7 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
-const { testSlicesView, testSceneWorld, testWorldLabels } = require('./views_test');
+const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts } = require('./views_test');
 const { testRunCsv } = require('./exports_test');
 const { testFlowTexture } = require('./flow_texture_test');
 
@@ -899,6 +899,7 @@ async function bench(browser) {
       await testSlicesView(helpers);
       await testSceneWorld(helpers);
       await testWorldLabels(helpers);
+      await testAnalysisCharts(helpers);
       await testRunCsv(helpers);
       await testFlowTexture(helpers);
       await testControls(browser);
