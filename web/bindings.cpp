@@ -125,6 +125,40 @@ emscripten::val world_texture(const WebSession& s) {
   return out;
 }
 
+// The frame on the world view's image plane, as the desktop's: a scene's engine frame
+// (WebSession::scene_animator), else the plane's exact frame (exact_plane_image), flattened over
+// the world's image grey (150, 156, 165) into opaque RGBA8 rows, top row first, at most 512
+// pixels on its longer side (nearest neighbour): {width, height, pixels}, pixels a view into
+// the module's memory. Null when there is no frame (a source that cannot be played).
+emscripten::val world_frame(WebSession& s) {
+  static std::vector<std::uint8_t> pixels;
+  const std::uint8_t grey[3] = {150, 156, 165};
+  const Animator* scene = s.scene_animator();
+  const PlaneImage* plane = scene ? nullptr : &s.exact_plane_image();
+  const int frame_width = scene ? scene->image().width() : plane->width;
+  const int frame_height = scene ? scene->image().height() : plane->height;
+  if (frame_width < 1 || frame_height < 1 || (plane && plane->placed.layer.empty()))
+    return emscripten::val::null();
+  const double k = std::min(1.0, 512.0 / std::max(frame_width, frame_height));
+  const int width = std::max(1, int(std::lround(k * frame_width)));
+  const int height = std::max(1, int(std::lround(k * frame_height)));
+  if (scene) {
+    flatten_into(scene->image(), display_sampling(frame_width, frame_height, width, height), grey,
+                 pixels);
+  } else {
+    const Layer& layer = plane->placed.layer;
+    DisplaySampling sampling = display_sampling(frame_width, frame_height, width, height);
+    shift_sampling(sampling, plane->placed.offset_x, plane->placed.offset_y, layer.image.width(),
+                   layer.image.height());
+    flatten_into(layer.image, sampling, grey, pixels);
+  }
+  emscripten::val out = emscripten::val::object();
+  out.set("width", width);
+  out.set("height", height);
+  out.set("pixels", emscripten::val(emscripten::typed_memory_view(pixels.size(), pixels.data())));
+  return out;
+}
+
 // The flow view's texture (WebSession::exact_plane_image) as display pixels: {width, height,
 // pixels} with pixels opaque RGBA8 rows (a view into the module's memory), display pixel
 // (x, y) showing the camera pixel under (x0 + (x + 0.5) * pixel, y0 + (y + 0.5) * pixel)
@@ -189,6 +223,7 @@ EMSCRIPTEN_BINDINGS(oflab_web) {
       .function("worldLoopJson", &WebSession::world_loop_json)
       .function("worldFrameJson", &WebSession::world_frame_json)
       .function("worldTexture", &oflab::world_texture)
+      .function("worldFrame", &oflab::world_frame)
       .function("arrows", &oflab::arrows)
       .function("streamlines", &oflab::streamlines)
       .function("flowTexture", &oflab::flow_texture)

@@ -122,6 +122,9 @@ class WebSession {
   // The flow view's texture: the exact image of the plane at the frame shown
   // (web/plane_image.h) with the lab's texture and the run's sampling.
   const PlaneImage& exact_plane_image();
+  // The run's animator when its source uses a viewer (a scene walked), else nullptr: the
+  // engine whose frame the world view's image plane shows (the plane's shows the exact frame).
+  const Animator* scene_animator();
 
   // The basis gallery of `basis_key` (session/basis/basis_catalog.h): per term its symbol,
   // description, order, unit, coefficient in the current flow, whether it is negligible
@@ -180,7 +183,6 @@ class WebSession {
   // Per panel of the frame reached: the pixels at the panel size, heat map, PSNR.
   void sample_panels(const std::vector<const Animator*>& animators, int width, int height);
   const PlaneWorldLoop& world_loop();  // world_loop_, rebuilt when epoch_ moved
-  const Animator* scene_animator();    // the run's animator when its source uses a viewer
 
   Lab lab_;
   LabStage stage_{&lab_};            // lessons play on the lab, as `oflab-cli lesson` plays them

@@ -77,6 +77,10 @@ const worldView = {
     }
     this.frame = JSON.parse(app.session.worldFrameJson());
     this.world.setFrame(this.frame);
+    // The image plane shows the frame, as the desktop's: the exact one for the plane, the
+    // engine's for a scene.
+    const picture = app.session.worldFrame();
+    if (picture) this.world.setFrameImage(picture);
     this.world.render();
     this.drawLabels();
   },

@@ -11,6 +11,11 @@
 // - The view draws it (the canvas under the drawn rectangle changes) with flow.texture true
 //   and draws none with it false (negative control: nothing drawn, the canvas is the tinted
 //   outline only).
+// - The world view's image plane (Session.worldFrame, as the desktop's image plane) shows the
+//   same exact frame, sampled at the nearest pixel down to at most 512 pixels across and
+//   flattened over the world's image grey: against the CLI's frame sampled by that rule, equal
+//   bytes where the CLI's pixel is opaque or empty, within 2 levels on the plane's edge; the
+//   world view's texture holds those bytes; the CLI's frame 0 differs (negative control).
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
@@ -39,14 +44,14 @@ function cliExactFrames(cli, script, last) {
 // The CLI's straight-alpha frame over the background (premultiplied, rounded as core rounds)
 // against the page's opaque bytes: how many pixels differ, and by how much at most, apart for
 // opaque-or-empty pixels and partly covered ones.
-function compareOverBackground(png, page) {
+function compareOverBackground(png, page, background = kBackground) {
   const out = { solidDiffering: 0, edgeLargest: 0, largest: 0 };
   if (page.length !== png.data.length) return { sizeMismatch: `${page.length} bytes, the CLI's ${png.data.length}` };
   for (let i = 0; i < png.data.length; i += 4) {
     const a = png.data[i + 3];
     for (let c = 0; c < 3; ++c) {
       const premultiplied = Math.round((png.data[i + c] * a) / 255);
-      const expected = premultiplied + Math.floor((kBackground[c] * (255 - a) + 127) / 255);
+      const expected = premultiplied + Math.floor((background[c] * (255 - a) + 127) / 255);
       const d = Math.abs(expected - page[i + c]);
       out.largest = Math.max(out.largest, d);
       if (a === 0 || a === 255) out.solidDiffering += d > 0 ? 1 : 0;
@@ -101,4 +106,45 @@ async function testFlowTexture({ browser, open, evaluate, check, drawnMarker, cl
   check('WithoutFlowTextureTheViewDrawsNone', drawn.on && drawn.off === null && drawn.state === false, JSON.stringify(drawn));
 }
 
-module.exports = { testFlowTexture };
+// `png` sampled at the nearest pixel to `width` x `height` (web/frame_pixels.h
+// display_sampling: display pixel i shows frame pixel floor((i + 0.5) * size / out)).
+function nearestSampled(png, width, height) {
+  const data = Buffer.alloc(width * height * 4);
+  for (let y = 0; y < height; ++y) {
+    const row = Math.min(png.height - 1, Math.floor(((y + 0.5) * png.height) / height));
+    for (let x = 0; x < width; ++x) {
+      const column = Math.min(png.width - 1, Math.floor(((x + 0.5) * png.width) / width));
+      for (let c = 0; c < 4; ++c) data[(y * width + x) * 4 + c] = png.data[(row * png.width + column) * 4 + c];
+    }
+  }
+  return { width, height, data };
+}
+
+async function testWorldFrame({ browser, open, evaluate, check, drawnMarker, cli }) {
+  await open(browser, '?view=world&script=swing&frame=20', drawnMarker);
+  const got = JSON.parse(await evaluate(browser, `(() => {
+    const t = app.session.worldFrame();
+    if (!t) return '{}';
+    const image = worldView.world.frameImage;
+    const shown = Array.from(image.getPointData().getScalars().getData());
+    const same = shown.length === t.pixels.length && shown.every((v, i) => v === t.pixels[i]);
+    let s = '';
+    for (let i = 0; i < t.pixels.length; i += 8192) s += String.fromCharCode(...t.pixels.subarray(i, i + 8192));
+    return JSON.stringify({ width: t.width, height: t.height, b64: btoa(s), shownIsIt: same, dims: image.getDimensions(), frame: app.session.frame() });
+  })()`));
+  const frames = cliExactFrames(cli, 'swing', 20);
+  if (frames.error || !got.b64) {
+    check('TheWorldImagePlaneIsTheCliExactFrame', false, frames.error || 'no frame on the image plane');
+    return;
+  }
+  const page = Buffer.from(got.b64, 'base64');
+  const grey = [150, 156, 165];
+  const same = compareOverBackground(nearestSampled(frames.last, got.width, got.height), page, grey);
+  check('TheWorldImagePlaneIsTheCliExactFrame', got.frame === 20 && got.shownIsIt && Math.max(got.width, got.height) <= 512 &&
+    !same.sizeMismatch && same.solidDiffering === 0 && same.edgeLargest <= 2,
+  `${got.width} x ${got.height} of ${frames.last.width} x ${frames.last.height}, texture holds it: ${got.shownIsIt}; ${JSON.stringify(same)}`);
+  const other = compareOverBackground(nearestSampled(frames.first, got.width, got.height), page, grey);
+  check('NegativeControl_TheCliFrame0IsNotTheImagePlanesFrame20', other.solidDiffering > 1000, JSON.stringify(other));
+}
+
+module.exports = { testFlowTexture, testWorldFrame };

@@ -46,7 +46,7 @@ const path = require('path');
 const { decodePng } = require('./png');
 const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts } = require('./views_test');
 const { testRunCsv } = require('./exports_test');
-const { testFlowTexture } = require('./flow_texture_test');
+const { testFlowTexture, testWorldFrame } = require('./flow_texture_test');
 
 const root = path.resolve(__dirname, '..', '..');
 const args = process.argv.slice(2);
@@ -902,6 +902,7 @@ async function bench(browser) {
       await testAnalysisCharts(helpers);
       await testRunCsv(helpers);
       await testFlowTexture(helpers);
+      await testWorldFrame(helpers);
       await testControls(browser);
       await testExplorer(browser);
       await testLessonStates(browser);

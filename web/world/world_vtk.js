@@ -134,7 +134,15 @@ class World {
     this.eye.actor.getProperty().setLighting(true);
     this.eye.actor.setScale(0.05 * loop.depth, 0.05 * loop.depth, 0.05 * loop.depth);
     this.frustum = polyActor(r, rgb(theme.outline), theme.line);
-    this.imagePlane = polyActor(r, rgb(theme.image));
+    // The image plane shows the frame (setFrameImage), white so the texture is not tinted.
+    this.imagePlane = polyActor(r, [1, 1, 1]);
+    this.frameImage = vtkImageData.newInstance();
+    this.frameImage.setDimensions(1, 1, 1);
+    this.frameImage.getPointData().setScalars(vtkDataArray.newInstance({ numberOfComponents: 4, values: Uint8Array.from(rgb(theme.image).map((v) => Math.round(255 * v)).concat([255])) }));
+    const frameTexture = vtkTexture.newInstance();
+    frameTexture.setInputData(this.frameImage);
+    frameTexture.setInterpolate(true);
+    this.imagePlane.actor.addTexture(frameTexture);
     this.plane = polyActor(r, [1, 1, 1]);
     this.plane.actor.addTexture(makeTexture(texture));
     // The image's top-left pixel at corner 0, as the desktop's (world_actors.h).
@@ -156,6 +164,9 @@ class World {
     }
     const corners = loop.image_corners;
     setCells(this.imagePlane.data, corners, 'polys', [[0, 1, 2, 3]]);
+    // The frame's top-left pixel at corner 0, as the desktop's (world_scene.cpp).
+    this.imagePlane.data.getPointData().setTCoords(vtkDataArray.newInstance({
+      name: 'uv', numberOfComponents: 2, values: Float32Array.from([0, 0, 1, 0, 1, 1, 0, 1]) }));
     const from = [[0, 0, 0], [0, 0, 0], [0, 0, 0], [0, 0, 0]].concat(corners);
     setSegments(this.frustum.data, from, corners.concat([1, 2, 3, 0].map((k) => corners[k])));
     this.scene = loop.kind === 'scene';
@@ -209,6 +220,21 @@ class World {
     const m = transposed(frame.viewer_matrix);
     for (const p of [this.eye, this.frustum, this.imagePlane]) p.actor.setUserMatrix(m);
     setCellColours(this.polygons.data, frame.polygon_colours);
+  }
+
+  // The frame the image plane shows ({width, height, pixels}: opaque RGBA rows, top row first,
+  // Session.worldFrame); its storage reused while the size stays.
+  setFrameImage({ width, height, pixels }) {
+    const [w, h] = this.frameImage.getDimensions();
+    const scalars = this.frameImage.getPointData().getScalars();
+    if (w !== width || h !== height) {
+      this.frameImage.setDimensions(width, height, 1);
+      this.frameImage.getPointData().setScalars(vtkDataArray.newInstance({ numberOfComponents: 4, values: Uint8Array.from(pixels) }));
+    } else {
+      scalars.getData().set(pixels);
+      scalars.modified();
+    }
+    this.frameImage.modified();
   }
 
   setPlaneFrame(frame) {
