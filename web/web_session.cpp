@@ -481,8 +481,8 @@ std::string WebSession::analysis_json(int frames) {
     json list = json::array();
     for (int k = first; k <= now && k < int(history.size()); ++k) {
       const AnimationFrame& f = history[std::size_t(k)];
-      list.push_back(frame_json(k, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms,
-                                f.model_work));
+      list.push_back(
+          frame_json(k, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms, f.model_work));
     }
     runs.push_back({{"policy", lab_.run().source().kind}, {"frames", list}});
   }
