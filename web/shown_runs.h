@@ -39,4 +39,8 @@ std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem);
 // the outlines of the shown layers (frame pixels, top-left).
 nlohmann::json shown_run_json(const ShownRun& run, double psnr_db, int heat_max);
 
+// The analysis charts' history of `lab` (WebSession::analysis_json, whose contract it is): per
+// compared run, or the source's own run, frames max(0, now - frames + 1) .. now as JSON.
+std::string analysis_history_json(Lab& lab, int frames);
+
 }  // namespace oflab

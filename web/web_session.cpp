@@ -447,47 +447,7 @@ void WebSession::sample_panels(const std::vector<const Animator*>& animators, in
   sampled_size_ = {width, height};
 }
 
-std::string WebSession::analysis_json(int frames) {
-  frames = std::clamp(frames, 1, 1000);
-  std::string problem;
-  if (!lab_.run().animator()) {
-    problem = lab_.run().take_problem();
-    return json{{"problem", problem.empty() ? "the source cannot be played" : problem}}.dump();
-  }
-  const int now = lab_.run().animator()->frame();
-  const int first = std::max(0, now - frames + 1);
-  const auto frame_json = [](int frame, const auto& levels, int drawn, double error, double time_ms,
-                             double work) {
-    return json{{"frame", frame},
-                {"levels", json(std::vector<int>(levels.begin(), levels.end()))},
-                {"error_px", drawn > 0 ? json(error) : json()},
-                {"time_ms", time_ms},
-                {"model_work", work}};
-  };
-  json runs = json::array();
-  for (const ComparedRun& run : lab_.comparison().runs()) {
-    if (!run.problem.empty()) return json{{"problem", run.problem}}.dump();
-    json list = json::array();
-    for (const ComparedFrame& f : run.history) {
-      if (f.frame >= first && f.frame <= now) {
-        list.push_back(frame_json(f.frame, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms,
-                                  f.model_work));
-      }
-    }
-    runs.push_back({{"policy", run.policy->name}, {"frames", list}});
-  }
-  if (runs.empty()) {
-    const std::vector<AnimationFrame>& history = lab_.run().history();
-    json list = json::array();
-    for (int k = first; k <= now && k < int(history.size()); ++k) {
-      const AnimationFrame& f = history[std::size_t(k)];
-      list.push_back(
-          frame_json(k, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms, f.model_work));
-    }
-    runs.push_back({{"policy", lab_.run().source().kind}, {"frames", list}});
-  }
-  return json{{"first", first}, {"last", now}, {"runs", runs}}.dump();
-}
+std::string WebSession::analysis_json(int frames) { return analysis_history_json(lab_, frames); }
 
 int WebSession::run_count() { return int(shown_animators().size()); }
 

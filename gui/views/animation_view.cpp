@@ -17,7 +17,6 @@
 #include "adapters/frame_images.h"
 #include "adapters/hole_map.h"
 #include "adapters/painted_text.h"
-#include "adapters/parallel_paint.h"
 #include "flow/limits.h"
 #include "models/animation_model.h"
 #include "models/window_model.h"
@@ -43,17 +42,6 @@ constexpr int kMinCanvasWidth = 200, kMinCanvasHeight = 120;
 const QSize kDefaultCanvas(1280, 640);
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
-
-// The largest rectangle of `aspect` (width / height) centred in `within`.
-QRectF centred_with_aspect(const QRectF& within, double aspect) {
-  double w = within.width(), h = within.height();
-  if (w / h > aspect) {
-    w = h * aspect;
-  } else {
-    h = w / aspect;
-  }
-  return QRectF(within.center().x() - w / 2, within.center().y() - h / 2, w, h);
-}
 
 // The aspect (width over height) of the panels' frame: that of `content`, so that each panel
 // hugs what it frames in its cell (a tall band of squares in a wide cell leaves no empty sides),
@@ -409,61 +397,6 @@ std::vector<PanelContent> AnimationView::panels() {
       break;
   }
   return {engine_panel(), exact_panel()};
-}
-
-void AnimationView::paint_picture(QPainter& painter, const PanelContent& panel,
-                                  const QRectF& target,
-                                  const std::vector<std::vector<Vec2>>& outlines) const {
-  const QTransform base = painter.transform();
-  const QTransform to_panel = frame_to_panel(shown_frame_, target) * base;
-  const QColor background = qcolor(theme_.background);
-  const QColor outline = qcolor(theme_.outline);
-  painter.save();
-  painter.setClipRect(target);
-  // Outside the camera image: a shade apart from the image's own background.
-  painter.fillRect(target,
-                   background.lightness() > 128 ? background.darker(112) : background.lighter(160));
-  const QRectF image_rect = frame_to_panel(shown_frame_, target)
-                                .mapRect(QRectF(QPointF(0, 0), QSizeF(panel.image.size())));
-  painter.fillRect(image_rect, qcolor(theme_.image_background));
-  painter.setTransform(to_panel);
-  painter.drawImage(QPointF(0, 0), panel.image);
-  painter.setTransform(base);
-  painter.setRenderHint(QPainter::Antialiasing, true);
-  painter.setBrush(Qt::NoBrush);
-  painter.setPen(QPen(outline, 1.0, Qt::DotLine));
-  painter.drawRect(image_rect);
-  // The outlines' points mapped here, drawn untransformed (the pen's width in canvas pixels).
-  painter.setTransform(QTransform());
-  painter.setPen(QPen(outline, theme_.line_width, Qt::DashLine));
-  for (const std::vector<Vec2>& points : outlines) {
-    QPolygonF polygon;
-    for (const Vec2& p : points) polygon << to_panel.map(QPointF(p.x, p.y));
-    painter.drawPolygon(polygon);
-  }
-  draw_level_outlines(painter, panel.levels, to_panel, theme_.line_width + 1.5);
-  painter.restore();
-}
-
-void AnimationView::paint_panels(QPainter& painter, const PanelPlan& plan,
-                                 const std::vector<std::vector<Vec2>>& outlines) {
-  const size_t count = plan.contents.size();
-  std::vector<QRectF> targets;
-  for (const PanelCell& cell : plan.cells)
-    targets.push_back(
-        centred_with_aspect(cell.image, shown_frame_.width() / shown_frame_.height()));
-  panel_rects_.insert(panel_rects_.end(), targets.begin(), targets.end());
-  // Each panel's picture on core's worker threads, into its own window of the canvas.
-  std::vector<QRect> windows;
-  for (const QRectF& target : targets) windows.push_back(target.toAlignedRect());
-  const auto paint = [&](QPainter& on, int i) {
-    paint_picture(on, plan.contents[size_t(i)], targets[size_t(i)], outlines);
-  };
-  if (!panels_in_parallel_ || count < 2 || !paint_in_windows(painter, windows, paint)) {
-    for (size_t i = 0; i < count; ++i) paint(painter, int(i));
-  }
-  // The texts here, on the window's thread (fonts are the GUI thread's).
-  for (size_t i = 0; i < count; ++i) paint_texts(painter, plan.contents[i], plan.cells[i]);
 }
 
 QImage AnimationView::compose(const QSize& size) {
