@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "image/thread_pool.h"
+
 namespace oflab {
 namespace {
 
@@ -15,38 +17,45 @@ struct Level {
   int height = 0;
   std::vector<std::array<float, 4>> colour;
   std::vector<float> weight;
+  void resize(int w, int h) {
+    width = w, height = h;
+    colour.resize(static_cast<std::size_t>(w) * h);
+    weight.resize(static_cast<std::size_t>(w) * h);
+  }
 };
 
-// Level l + 1 from level l: weighted means of 2 x 2 blocks, weight min(1, sum).
-Level pull(const Level& fine) {
-  Level coarse;
-  coarse.width = (fine.width + 1) / 2;
-  coarse.height = (fine.height + 1) / 2;
-  const std::size_t n = static_cast<std::size_t>(coarse.width) * coarse.height;
-  coarse.colour.assign(n, {0.0f, 0.0f, 0.0f, 0.0f});
-  coarse.weight.assign(n, 0.0f);
-  for (int y = 0; y < fine.height; ++y) {
-    for (int x = 0; x < fine.width; ++x) {
-      const std::size_t f = static_cast<std::size_t>(y) * fine.width + x;
-      const std::size_t c = static_cast<std::size_t>(y / 2) * coarse.width + x / 2;
-      const float w = fine.weight[f];
-      for (int k = 0; k < 4; ++k) coarse.colour[c][k] += w * fine.colour[f][k];
-      coarse.weight[c] += w;
+// Rows per band of a pass over a level `width` pixels wide.
+int min_band_rows(int width) { return std::max(4, 16384 / std::max(width, 1)); }
+
+// Level l + 1 (`coarse`, sized) from level l, rows [begin, end) of it: weighted means of 2 x 2
+// blocks, weight min(1, sum). Each block is summed from 0 in row-major order of its children,
+// as accumulating the children row by row over the fine level sums it.
+void pull_rows(const Level& fine, Level& coarse, int begin, int end) {
+  for (int y = begin; y < end; ++y) {
+    for (int x = 0; x < coarse.width; ++x) {
+      std::array<float, 4> sum = {0.0f, 0.0f, 0.0f, 0.0f};
+      float weight = 0.0f;
+      for (int fy = 2 * y; fy < std::min(2 * y + 2, fine.height); ++fy) {
+        for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx) {
+          const std::size_t f = static_cast<std::size_t>(fy) * fine.width + fx;
+          const float w = fine.weight[f];
+          for (int k = 0; k < 4; ++k) sum[k] += w * fine.colour[f][k];
+          weight += w;
+        }
+      }
+      if (weight > 0.0f) {
+        for (float& channel : sum) channel /= weight;
+      }
+      const std::size_t c = static_cast<std::size_t>(y) * coarse.width + x;
+      coarse.colour[c] = sum;
+      coarse.weight[c] = std::min(1.0f, weight);
     }
   }
-  for (std::size_t c = 0; c < n; ++c) {
-    const float w = coarse.weight[c];
-    if (w > 0.0f) {
-      for (float& channel : coarse.colour[c]) channel /= w;
-    }
-    coarse.weight[c] = std::min(1.0f, w);
-  }
-  return coarse;
 }
 
-// Level l pushed from its pushed parent: w c + (1 - w) c_parent.
-void push(Level& fine, const Level& coarse) {
-  for (int y = 0; y < fine.height; ++y) {
+// Rows [begin, end) of level l pushed from its pushed parent: w c + (1 - w) c_parent.
+void push_rows(Level& fine, const Level& coarse, int begin, int end) {
+  for (int y = begin; y < end; ++y) {
     for (int x = 0; x < fine.width; ++x) {
       const std::size_t f = static_cast<std::size_t>(y) * fine.width + x;
       const std::size_t c = static_cast<std::size_t>(y / 2) * coarse.width + x / 2;
@@ -69,33 +78,58 @@ std::int64_t push_pull_inpaint(Image& image, const std::vector<char>& hole) {
   if (hole.size() != image.pixel_count()) {
     throw std::invalid_argument("push_pull_inpaint: the hole mask and the image differ in size");
   }
-  std::vector<Level> levels(1);
+  if (hole.empty()) return 0;
+  // The pyramid, kept by each thread that inpaints: fresh levels cost a page fault per page
+  // every frame. (The bands reach it through `levels`: on a worker thread the name `pyramid`
+  // is that thread's own.)
+  thread_local std::vector<Level> pyramid(1);
+  std::vector<Level>& levels = pyramid;
+  const int width = image.width();
+  std::size_t top = 0;  // the coarsest level, 1 x 1
+  for (int w = width, h = image.height(); w > 1 || h > 1; w = (w + 1) / 2, h = (h + 1) / 2) ++top;
+  if (levels.size() < top + 1) levels.resize(top + 1);
+  levels[0].resize(width, image.height());
   Level& base = levels[0];
-  base.width = image.width();
-  base.height = image.height();
-  base.colour.resize(hole.size());
-  base.weight.resize(hole.size());
-  bool any_valid = false;
-  for (std::size_t k = 0; k < hole.size(); ++k) {
-    const Pixel p = image.pixels()[k];
-    base.colour[k] = {static_cast<float>(p.r), static_cast<float>(p.g), static_cast<float>(p.b),
-                      static_cast<float>(p.a)};
-    base.weight[k] = hole[k] ? 0.0f : 1.0f;
-    any_valid = any_valid || !hole[k];
+  const int bands = band_count(base.height, min_band_rows(width));
+  std::vector<char> valid(static_cast<std::size_t>(bands), 0);
+  for_each_band(base.height, min_band_rows(width), [&](int band, int begin, int end) {
+    for (std::size_t k = static_cast<std::size_t>(begin) * width;
+         k < static_cast<std::size_t>(end) * width; ++k) {
+      const Pixel p = image.pixels()[k];
+      base.colour[k] = {static_cast<float>(p.r), static_cast<float>(p.g), static_cast<float>(p.b),
+                        static_cast<float>(p.a)};
+      base.weight[k] = hole[k] ? 0.0f : 1.0f;
+      valid[band] = valid[band] || !hole[k];
+    }
+  });
+  if (std::find(valid.begin(), valid.end(), 1) == valid.end()) return 0;
+  for (std::size_t l = 0; l < top; ++l) {
+    const Level& fine = levels[l];
+    Level& coarse = levels[l + 1];
+    coarse.resize((fine.width + 1) / 2, (fine.height + 1) / 2);
+    for_each_band(coarse.height, min_band_rows(coarse.width),
+                  [&](int, int begin, int end) { pull_rows(fine, coarse, begin, end); });
   }
-  if (!any_valid || hole.empty()) return 0;
-  while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(pull(levels.back()));
-  for (std::size_t l = levels.size() - 1; l-- > 0;) push(levels[l], levels[l + 1]);
-  std::int64_t filled = 0;
-  for (std::size_t k = 0; k < hole.size(); ++k) {
-    if (!hole[k]) continue;
-    const std::array<float, 4>& c = levels[0].colour[k];
-    Pixel p{channel(c[0]), channel(c[1]), channel(c[2]), channel(c[3])};
-    p.r = std::min(p.r, p.a), p.g = std::min(p.g, p.a), p.b = std::min(p.b, p.a);
-    image.pixels()[k] = p;
-    ++filled;
+  for (std::size_t l = top; l-- > 0;) {
+    for_each_band(levels[l].height, min_band_rows(levels[l].width), [&](int, int begin, int end) {
+      push_rows(levels[l], levels[l + 1], begin, end);
+    });
   }
-  return filled;
+  std::vector<std::int64_t> filled(static_cast<std::size_t>(bands), 0);
+  for_each_band(base.height, min_band_rows(width), [&](int band, int begin, int end) {
+    for (std::size_t k = static_cast<std::size_t>(begin) * width;
+         k < static_cast<std::size_t>(end) * width; ++k) {
+      if (!hole[k]) continue;
+      const std::array<float, 4>& c = base.colour[k];
+      Pixel p{channel(c[0]), channel(c[1]), channel(c[2]), channel(c[3])};
+      p.r = std::min(p.r, p.a), p.g = std::min(p.g, p.a), p.b = std::min(p.b, p.a);
+      image.pixels()[k] = p;
+      ++filled[band];
+    }
+  });
+  std::int64_t total = 0;
+  for (const std::int64_t f : filled) total += f;
+  return total;
 }
 
 }  // namespace oflab

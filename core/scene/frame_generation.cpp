@@ -221,22 +221,23 @@ std::int64_t paint_target_rows(const SplatPlan& plan, const splat::CornerLattice
   return written;
 }
 
-// The unreached pixels of target rows [begin, end) and the mask there: the unreached pixels
-// grown by one pixel (3 x 3), read from the rows around (already marked). Returns the mask's
-// pixels in those rows.
+// The mask of target rows [begin, end): the unreached pixels (already marked on every row)
+// grown by one pixel (3 x 3), as the rows' columns ORed over the three rows, then over the
+// three columns. Returns the mask's pixels in those rows.
 std::int64_t mask_rows(int width, int height, int begin, int end, GeneratedFrame& g) {
+  thread_local std::vector<char> column;  // per column: unreached in rows y - 1 .. y + 1
+  column.resize(static_cast<std::size_t>(width));
   std::int64_t masked = 0;
   for (int y = begin; y < end; ++y) {
-    const int v0 = std::max(0, y - 1), v1 = std::min(height - 1, y + 1);
+    const char* above = g.unreached.data() + static_cast<std::size_t>(std::max(0, y - 1)) * width;
+    const char* row = g.unreached.data() + static_cast<std::size_t>(y) * width;
+    const char* below =
+        g.unreached.data() + static_cast<std::size_t>(std::min(height - 1, y + 1)) * width;
+    for (int x = 0; x < width; ++x) column[x] = above[x] | row[x] | below[x];
+    char* out = g.mask.data() + static_cast<std::size_t>(y) * width;
     for (int x = 0; x < width; ++x) {
-      const int u0 = std::max(0, x - 1), u1 = std::min(width - 1, x + 1);
-      char any = 0;
-      for (int v = v0; v <= v1 && !any; ++v) {
-        const char* row = g.unreached.data() + static_cast<std::size_t>(v) * width;
-        for (int u = u0; u <= u1; ++u) any |= row[u];
-      }
-      g.mask[static_cast<std::size_t>(y) * width + x] = any;
-      masked += any;
+      out[x] = column[std::max(0, x - 1)] | column[x] | column[std::min(width - 1, x + 1)];
+      masked += out[x];
     }
   }
   return masked;
