@@ -41,19 +41,53 @@ bool extrapolate_along(const Camera& camera, const RigidStep3& back, const Vec3&
   return moved_w > 0.0 && 1.0 / moved_w > near;
 }
 
-// Moves the top-left footprint corner of pixel (i, j) (top-left pixel position (i - 0.5,
-// j - 0.5)) with the surface of plane vector m (0: the background) along its motion
-// extrapolated `frames_ahead` frames: splat::move_lattice_rows' `move`.
+// The background's splats when the step has no rotation (R the identity, to the bit): it
+// moves as a direction and R d = d, so its motion vector is 0 and the point along direction
+// (x[k], y[l], 1) (PixelDirections) stays at (x[k]', y[l]'), with x[k]' = p + k (p - p),
+// p = cx + f x[k] / 1: extrapolate_along's arithmetic, so the same bits, once per column and
+// row instead of once per pixel.
+struct StillBackground {
+  bool holds = false;
+  std::vector<double> x, y;
+  void prepare(const Camera& camera, const PixelDirections& directions, const RigidStep3& back,
+               int frames_ahead) {
+    holds = back.rotation == Mat3(1.0);
+    if (!holds) return;
+    const double k = frames_ahead;
+    const auto fill = [&](std::vector<double>& to, const std::vector<double>& from, double c) {
+      to.resize(from.size());
+      for (std::size_t n = 0; n < from.size(); ++n) {
+        const double p = c + camera.focal_px * from[n] / 1.0;
+        to[n] = p + k * (p - p);
+      }
+    };
+    fill(x, directions.x, camera.cx);
+    fill(y, directions.y, camera.cy);
+  }
+};
+
+// Moves the point along direction (x[k], y[l], 1) (PixelDirections), at top-left pixel
+// position (u, v), with the surface of plane vector m (0: the background) along its motion
+// extrapolated `frames_ahead` frames (extrapolate_point); as a corner lattice point (k, l)
+// = (i, j), the top-left footprint corner of pixel (i, j): splat::move_lattice_rows' `move`.
 struct CornerMove {
   const Camera& camera;
   const PixelDirections& directions;
+  const StillBackground& still;
   const RigidStep3& back;
   int frames_ahead;
   double near;
+  bool along(const Vec3& m, int k, int l, double u, double v, Vec2& q, double& w) const {
+    if (still.holds && m == Vec3(0.0)) {
+      q = Vec2(still.x[k], still.y[l]);
+      w = 0.0;
+      return true;
+    }
+    return extrapolate_along(camera, back, m, directions.at(k, l), u, v, frames_ahead, near, q, w);
+  }
   bool operator()(const Vec3& m, int i, int j, Vec2& q) const {
     double unused = 0.0;
-    return extrapolate_along(camera, back, m, directions.at(i, j), i - 0.5, j - 0.5, frames_ahead,
-                             near, q, unused);
+    return along(m, i, j, i - 0.5, j - 0.5, q, unused);
   }
 };
 
@@ -84,6 +118,7 @@ struct SplatPlan {
 // buffers are tens of megabytes, and fresh ones cost a page fault per page every frame.
 struct GenerationScratch {
   PixelDirections directions;
+  StillBackground still;
   splat::CornerLattice lattice;
   SplatPlan plan;
   std::vector<TargetCell> cells;  // reset by the first pass, band by band
@@ -131,8 +166,8 @@ bool lattice_footprint(const DepthFrame& depth, const splat::CornerLattice& latt
 
 // The splats of source rows [begin, end): each centre extrapolated with the pixel's own
 // surface, each footprint's corners with the surface of its pixel.
-void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const CornerMove& move,
-                     int begin, int end, SplatPlan& plan, const splat::CornerLattice& lattice) {
+void plan_splat_rows(const DepthFrame& depth, const CornerMove& move, int begin, int end,
+                     SplatPlan& plan, const splat::CornerLattice& lattice) {
   for (int j = begin; j < end; ++j) {
     for (int i = 0; i < depth.width; ++i) {
       const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
@@ -149,9 +184,8 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const Corner
         plan.corners[s] = q;
       }
       if (!moved ||
-          !extrapolate_along(camera, move.back, splat::surface_of(depth, p),
-                             move.directions.at(i + 1, j + 1), i + 0.5, j + 0.5, move.frames_ahead,
-                             move.near, plan.centre[s], plan.w[s]) ||
+          !move.along(splat::surface_of(depth, p), i + 1, j + 1, i + 0.5, j + 0.5, plan.centre[s],
+                      plan.w[s]) ||
           !splat::footprint_box(q, depth.width, depth.height, box)) {
         box = PixelBox{};
         continue;
@@ -164,34 +198,72 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const Corner
   }
 }
 
-// Paints source pixel s's planned splat over target rows [y0, y1] of its box: the nearest
-// surface wins, and among one polygon's splats the one whose centre lands nearest. Returns
-// the pixels written.
+// One planned splat being painted: what it gives the pixels it wins, and the rule it wins
+// by: the nearest surface, and among one polygon's splats the one whose centre lands nearest.
+struct SplatPainter {
+  Vec2 centre;
+  double w;
+  int polygon;
+  int source;
+  Pixel colour;
+  TargetCell* cells;
+  Pixel* image;
+  int* shown;
+
+  // Paints pixel d, centre (cx, cy), inside the footprint, where the splat wins; returns 1
+  // when it wrote the pixel, else 0.
+  int paint(std::size_t d, double cx, double cy) const {
+    TargetCell& t = cells[d];
+    const bool same = t.polygon == polygon;
+    if (!same && w <= t.w) return 0;
+    const double e = glm::length(Vec2(cx, cy) - centre);
+    if (same && e >= t.dist) return 0;
+    t = TargetCell{w, e, polygon};
+    image[d] = colour;
+    shown[d] = source;
+    return 1;
+  }
+};
+
+// The widest box painted by the axis-aligned path (wider ones take the general).
+constexpr int kAlignedColumns = 16;
+
+// Paints source pixel s's planned splat over target rows [y0, y1] of its box (SplatPainter);
+// an axis-aligned footprint (splat::axis_aligned: the background's under a step without
+// rotation) with its inside test split into each row's and each column's, the same answers.
+// Returns the pixels written.
 std::int64_t paint_splat(const SplatPlan& plan, const splat::CornerLattice& lattice, std::size_t s,
                          int polygon, Pixel colour, int y0, int y1, int width, TargetCell* cells,
                          GeneratedFrame& g) {
   const PixelBox& box = plan.boxes[s];
   const std::array<Vec2, 4> q = planned_corners(plan, lattice, s, width);
   const std::array<Vec2, 4> edge = splat::footprint_edges(q);
-  const Vec2 centre = plan.centre[s];
-  const double w = plan.w[s];
+  const SplatPainter splat{plan.centre[s],          plan.w[s],      polygon,
+                           static_cast<int>(s),     colour,         cells,
+                           g.image.pixels().data(), g.source.data()};
   std::int64_t written = 0;
+  if (splat::axis_aligned(edge) && box.x_end - box.x_begin < kAlignedColumns) {
+    int columns[kAlignedColumns];
+    for (int x = box.x_begin; x <= box.x_end; ++x) {
+      columns[x - box.x_begin] = splat::column_sides(q, edge, x + 0.5);
+    }
+    for (int y = y0; y <= y1; ++y) {
+      const double cy = y + 0.5;
+      const int row = splat::row_sides(q, edge, cy);
+      const std::size_t first = static_cast<std::size_t>(y) * width;
+      for (int x = box.x_begin; x <= box.x_end && row; ++x) {
+        if (row & columns[x - box.x_begin]) written += splat.paint(first + x, x + 0.5, cy);
+      }
+    }
+    return written;
+  }
   for (int y = y0; y <= y1; ++y) {
     const double cy = y + 0.5;
     const splat::FootprintRow row(q, edge, cy);
     const std::size_t first = static_cast<std::size_t>(y) * width;
     for (int x = box.x_begin; x <= box.x_end; ++x) {
       const double cx = x + 0.5;
-      if (!row.holds(cx)) continue;
-      TargetCell& t = cells[first + x];
-      const bool same = t.polygon == polygon;
-      if (!same && w <= t.w) continue;
-      const double e = glm::length(Vec2(cx, cy) - centre);
-      if (same && e >= t.dist) continue;
-      t = TargetCell{w, e, polygon};
-      g.image.pixels()[first + x] = colour;
-      g.source[first + x] = static_cast<int>(s);
-      ++written;
+      if (row.holds(cx)) written += splat.paint(first + x, cx, cy);
     }
   }
   return written;
@@ -291,7 +363,9 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   splat::CornerLattice& lattice = scratch.lattice;
   SplatPlan& plan = scratch.plan;
   TargetCell* cells = scratch.cells.data();
-  const CornerMove move{camera, scratch.directions, back, std::max(1, frames_ahead), near};
+  const int k = std::max(1, frames_ahead);
+  scratch.still.prepare(camera, scratch.directions, back, k);
+  const CornerMove move{camera, scratch.directions, scratch.still, back, k, near};
   // Passes over bands of rows cut by the frame's size alone, each band writing only its own
   // rows, every tally summed in band order: the same frame on any number of threads.
   const int min_rows = min_band_rows(width);
@@ -302,7 +376,7 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
     splat::move_lattice_rows(depth, begin, end, move, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
-    plan_splat_rows(depth, camera, move, begin, end, plan, lattice);
+    plan_splat_rows(depth, move, begin, end, plan, lattice);
   });
   std::vector<std::int64_t> written(bands, 0), holes(bands, 0), masked(bands, 0);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {

@@ -189,14 +189,17 @@ OnePass paint_in_one_pass(const Image& rendered, const DepthFrame& depth, const 
   return out;
 }
 
-TEST(FrameGeneration, BandsPaintTheOnePassFrameOnOneAndThreeThreads) {
+// The generated frame of render f[1] two frames ahead, on 1 and 3 threads, with and without
+// inpainting, against paint_in_one_pass; `still` says whether the step has no rotation (the
+// background's splats then stay where they are, the aligned path).
+void expect_bands_paint_the_one_pass_frame(const std::vector<ViewerFrame>& f, bool still) {
   const Camera camera = make_camera(600.0, 640, 480);  // cut into many bands
   ASSERT_GT(band_count(camera.height, 4), 1);
   const Scene scene = cube_past_cube();
-  const auto f = sliding_past(5, Vec3(0.3, 0.02, -0.05), Vec3(0, 0.02, 0.01));  // with a turn
   const Image rendered = testing::ray_cast_scene(scene, camera, f[1].pose, kNear);
   const DepthFrame depth = render_depth(scene, camera, f[1].pose, kNear);
   const RigidStep3 back = viewer_step(f[1].pose, f[0].pose);
+  ASSERT_EQ(back.rotation == Mat3(1.0), still);
   const DepthFrame now = render_depth(scene, camera, f[3].pose, kNear);
   const auto generate = [&](const RigidStep3& step, int threads, bool inpaint) {
     set_worker_threads(threads);
@@ -243,6 +246,18 @@ TEST(FrameGeneration, BandsPaintTheOnePassFrameOnOneAndThreeThreads) {
   const RigidStep3 other = viewer_step(f[1].pose, f[2].pose);
   EXPECT_FALSE(generate(other, 3, false).image.pixels() == one.image.pixels());
   EXPECT_FALSE(paint_in_one_pass(rendered, depth, camera, other, 2).image == one.image.pixels());
+}
+
+TEST(FrameGeneration, BandsPaintTheOnePassFrameOnOneAndThreeThreads) {
+  {
+    SCOPED_TRACE("a slide");
+    const ViewerPose ahead = look_at(Vec3(-0.3, 0.2, 3.5), Vec3(-0.3, 0.2, -1), Vec3(0, 1, 0));
+    expect_bands_paint_the_one_pass_frame(
+        expand_viewer_segments(ahead, {ViewerSegment{5, Vec3(0.3, 0.02, -0.05), Vec3(0.0)}}), true);
+  }
+  SCOPED_TRACE("a turn");
+  expect_bands_paint_the_one_pass_frame(
+      sliding_past(5, Vec3(0.3, 0.02, -0.05), Vec3(0, 0.02, 0.01)), false);
 }
 
 // Push-pull by its top-down definition: the colour of block (l, bx, by) is its pixel's at
