@@ -92,11 +92,12 @@ struct CornerMove {
 };
 
 // What each target pixel keeps while the splats are painted: the inverse depth of what it
-// shows (-1: nothing yet), the distance of that splat's centre from it, and that splat's
-// polygon (kNoSplat before any splat reached it).
+// shows (-1: nothing yet), the distance of that splat's centre from it and its square, and
+// that splat's polygon (kNoSplat before any splat reached it).
 struct TargetCell {
   double w;
-  double dist;  // px
+  double dist;   // px
+  double dist2;  // px^2, the square dist is the rounded square root of
   int polygon;
 };
 constexpr int kNoSplat = -2;  // no polygon index, nor the background's -1
@@ -216,9 +217,15 @@ struct SplatPainter {
     TargetCell& t = cells[d];
     const bool same = t.polygon == polygon;
     if (!same && w <= t.w) return 0;
-    const double e = glm::length(Vec2(cx, cy) - centre);
+    // The distance is glm::length's, sqrt(dot): a rounded square root never decreases as its
+    // argument grows, so a square at least t.dist2 gives a distance at least t.dist, and the
+    // root is taken only where the square is smaller (equal roots then still lose).
+    const Vec2 offset = Vec2(cx, cy) - centre;
+    const double e2 = glm::dot(offset, offset);
+    if (same && e2 >= t.dist2) return 0;
+    const double e = std::sqrt(e2);
     if (same && e >= t.dist) return 0;
-    t = TargetCell{w, e, polygon};
+    t = TargetCell{w, e, e2, polygon};
     image[d] = colour;
     shown[d] = source;
     return 1;
@@ -372,7 +379,8 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   const std::size_t bands = static_cast<std::size_t>(band_count(height, min_rows));
   for_each_band(height, min_rows, [&](int, int begin, int end) {
     std::fill(cells + static_cast<std::ptrdiff_t>(begin) * width,
-              cells + static_cast<std::ptrdiff_t>(end) * width, TargetCell{-1.0, 0.0, kNoSplat});
+              cells + static_cast<std::ptrdiff_t>(end) * width,
+              TargetCell{-1.0, 0.0, 0.0, kNoSplat});
     splat::move_lattice_rows(depth, begin, end, move, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
