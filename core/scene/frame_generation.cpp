@@ -45,10 +45,14 @@ bool extrapolate_along(const Camera& camera, const RigidStep3& back, const Vec3&
 // moves as a direction and R d = d, so its motion vector is 0 and the point along direction
 // (x[k], y[l], 1) (PixelDirections) stays at (x[k]', y[l]'), with x[k]' = p + k (p - p),
 // p = cx + f x[k] / 1: extrapolate_along's arithmetic, so the same bits, once per column and
-// row instead of once per pixel.
+// row instead of once per pixel. Background pixel (i, j)'s footprint is then the rectangle of
+// (x[i]', y[j]') .. (x[i + 2]', y[j + 2]') whatever its neighbours show, its centre lands at
+// (x[i + 1]', y[j + 1]'), and its box's columns (rows) are those of column i (row j):
+// splat::footprint_box's arithmetic over the same corners.
 struct StillBackground {
   bool holds = false;
   std::vector<double> x, y;
+  std::vector<int> x_begin, x_end, y_begin, y_end;  // per source column, per source row
   void prepare(const Camera& camera, const PixelDirections& directions, const RigidStep3& back,
                int frames_ahead) {
     holds = back.rotation == Mat3(1.0);
@@ -63,6 +67,31 @@ struct StillBackground {
     };
     fill(x, directions.x, camera.cx);
     fill(y, directions.y, camera.cy);
+    box_lines(x, camera.width, x_begin, x_end);
+    box_lines(y, camera.height, y_begin, y_end);
+  }
+  // The corners of background pixel (i, j)'s footprint, as splat::move_footprint orders them.
+  std::array<Vec2, 4> corners(int i, int j) const {
+    return {Vec2(x[i], y[j]), Vec2(x[i + 2], y[j]), Vec2(x[i + 2], y[j + 2]), Vec2(x[i], y[j + 2])};
+  }
+  // Background pixel (i, j)'s box; false when it is empty or too large (footprint_box).
+  bool box(int i, int j, PixelBox& b) const {
+    b = PixelBox{x_begin[i], x_end[i], y_begin[j], y_end[j]};
+    if (b.x_end < b.x_begin || b.y_end < b.y_begin) return false;
+    return !(static_cast<double>(b.x_end - b.x_begin + 1) * (b.y_end - b.y_begin + 1) >
+             splat::kMaxBoxPixels);
+  }
+
+ private:
+  static void box_lines(const std::vector<double>& at, int size, std::vector<int>& begin,
+                        std::vector<int>& end) {
+    begin.resize(static_cast<std::size_t>(size));
+    end.resize(static_cast<std::size_t>(size));
+    for (int k = 0; k < size; ++k) {
+      const double lo = std::min(at[k], at[k + 2]), hi = std::max(at[k], at[k + 2]);
+      begin[k] = std::max(0, static_cast<int>(std::ceil(lo - 0.5)));
+      end[k] = std::min(size - 1, static_cast<int>(std::floor(hi - 0.5)));
+    }
   }
 };
 
@@ -104,13 +133,14 @@ constexpr int kNoSplat = -2;  // no polygon index, nor the background's -1
 
 // Every source pixel's splat, planned before any is painted: its moved centre and
 // extrapolated inverse depth, the pixels its footprint may cover (an empty box: no splat),
-// its corners (kept here only where they are not the lattice's: own_corners), and per source
-// row the target rows its splats may reach.
+// where its corners are (corners_from: the lattice's, its own kept here, or the still
+// background's), and per source row the target rows its splats may reach.
+enum CornersFrom : char { kLatticeCorners, kOwnCorners, kStillCorners };
 struct SplatPlan {
   std::vector<Vec2> centre;
   std::vector<double> w;
   std::vector<PixelBox> boxes;
-  std::vector<char> own_corners;
+  std::vector<char> corners_from;  // CornersFrom
   std::vector<std::array<Vec2, 4>> corners;
   std::vector<int> row_first, row_last;  // last < first: the row reaches no target row
 };
@@ -131,8 +161,8 @@ struct GenerationScratch {
     plan.centre.resize(n);
     plan.w.resize(n);
     plan.boxes.resize(n);
-    plan.own_corners.resize(n);
-    plan.corners.resize(n);  // written only where own_corners
+    plan.corners_from.resize(n);
+    plan.corners.resize(n);  // written only where kOwnCorners
     plan.row_first.assign(static_cast<std::size_t>(camera.height), 0);
     plan.row_last.assign(static_cast<std::size_t>(camera.height), -1);
     cells.resize(n);
@@ -145,8 +175,10 @@ int min_band_rows(int width) { return std::max(4, 16384 / std::max(width, 1)); }
 // The corners of source pixel s = (i, j)'s footprint: where they are the lattice's, the
 // lattice points of pixels (i, j), (i + 2, j), (i + 2, j + 2) and (i, j + 2).
 std::array<Vec2, 4> planned_corners(const SplatPlan& plan, const splat::CornerLattice& lattice,
-                                    std::size_t s, int width) {
-  if (plan.own_corners[s]) return plan.corners[s];
+                                    const StillBackground& still, int i, int j, std::size_t s,
+                                    int width) {
+  if (plan.corners_from[s] == kOwnCorners) return plan.corners[s];
+  if (plan.corners_from[s] == kStillCorners) return still.corners(i, j);
   const std::size_t below = s + 2 * static_cast<std::size_t>(width);
   return {lattice.moved[s], lattice.moved[s + 2], lattice.moved[below + 2], lattice.moved[below]};
 }
@@ -165,6 +197,24 @@ bool lattice_footprint(const DepthFrame& depth, const splat::CornerLattice& latt
   return true;
 }
 
+// The corner lattice's rows [begin, end) (splat::move_lattice_rows), but the background's
+// points under a still background (its splats take their corners from StillBackground, and
+// no other splat reads them).
+void move_lattice(const DepthFrame& depth, const CornerMove& move, int begin, int end,
+                  splat::CornerLattice& lattice) {
+  if (!move.still.holds) {
+    splat::move_lattice_rows(depth, begin, end, move, lattice);
+    return;
+  }
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[k];
+      if (p >= 0) lattice.ok[k] = move(depth.planes[p], i, j, lattice.moved[k]);
+    }
+  }
+}
+
 // The splats of source rows [begin, end): each centre extrapolated with the pixel's own
 // surface, each footprint's corners with the surface of its pixel.
 void plan_splat_rows(const DepthFrame& depth, const CornerMove& move, int begin, int end,
@@ -176,10 +226,24 @@ void plan_splat_rows(const DepthFrame& depth, const CornerMove& move, int begin,
       PixelBox& box = plan.boxes[s];
       bool moved = false;
       std::array<Vec2, 4> q{};
+      if (move.still.holds && p < 0) {  // see StillBackground
+        plan.corners_from[s] = kStillCorners;
+        plan.centre[s] = Vec2(move.still.x[i + 1], move.still.y[j + 1]);
+        plan.w[s] = 0.0;
+        if (!move.still.box(i, j, box)) {
+          box = PixelBox{};
+          continue;
+        }
+        plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
+                                ? box.y_begin
+                                : std::min(plan.row_first[j], box.y_begin);
+        plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+        continue;
+      }
       const bool shared = lattice_footprint(depth, lattice, i, j, s, p, moved);
-      plan.own_corners[s] = !shared;
+      plan.corners_from[s] = shared ? kLatticeCorners : kOwnCorners;
       if (shared) {
-        q = planned_corners(plan, lattice, s, depth.width);
+        q = planned_corners(plan, lattice, move.still, i, j, s, depth.width);
       } else {
         moved = splat::move_footprint(lattice, depth, i, j, p, move, q);
         plan.corners[s] = q;
@@ -239,11 +303,12 @@ constexpr int kAlignedColumns = 16;
 // an axis-aligned footprint (splat::axis_aligned: the background's under a step without
 // rotation) with its inside test split into each row's and each column's, the same answers.
 // Returns the pixels written.
-std::int64_t paint_splat(const SplatPlan& plan, const splat::CornerLattice& lattice, std::size_t s,
-                         int polygon, Pixel colour, int y0, int y1, int width, TargetCell* cells,
-                         GeneratedFrame& g) {
+std::int64_t paint_splat(const SplatPlan& plan, const splat::CornerLattice& lattice,
+                         const StillBackground& still, int i, int j, int polygon, Pixel colour,
+                         int y0, int y1, int width, TargetCell* cells, GeneratedFrame& g) {
+  const std::size_t s = static_cast<std::size_t>(j) * width + i;
   const PixelBox& box = plan.boxes[s];
-  const std::array<Vec2, 4> q = planned_corners(plan, lattice, s, width);
+  const std::array<Vec2, 4> q = planned_corners(plan, lattice, still, i, j, s, width);
   const std::array<Vec2, 4> edge = splat::footprint_edges(q);
   const SplatPainter splat{plan.centre[s],          plan.w[s],      polygon,
                            static_cast<int>(s),     colour,         cells,
@@ -280,8 +345,9 @@ std::int64_t paint_splat(const SplatPlan& plan, const splat::CornerLattice& latt
 // pixel sees its splats in the order one pass over the source paints them). Returns the
 // pixels written.
 std::int64_t paint_target_rows(const SplatPlan& plan, const splat::CornerLattice& lattice,
-                               const Image& rendered, const DepthFrame& depth, int y_begin,
-                               int y_end, TargetCell* cells, GeneratedFrame& g) {
+                               const StillBackground& still, const Image& rendered,
+                               const DepthFrame& depth, int y_begin, int y_end, TargetCell* cells,
+                               GeneratedFrame& g) {
   std::int64_t written = 0;
   for (int j = 0; j < depth.height; ++j) {
     if (plan.row_last[j] < plan.row_first[j] || plan.row_last[j] < y_begin ||
@@ -292,7 +358,7 @@ std::int64_t paint_target_rows(const SplatPlan& plan, const splat::CornerLattice
       const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
       const PixelBox& box = plan.boxes[s];
       if (box.y_end < box.y_begin || box.y_end < y_begin || box.y_begin >= y_end) continue;
-      written += paint_splat(plan, lattice, s, depth.polygon[s], rendered.pixels()[s],
+      written += paint_splat(plan, lattice, still, i, j, depth.polygon[s], rendered.pixels()[s],
                              std::max(box.y_begin, y_begin), std::min(box.y_end, y_end - 1),
                              depth.width, cells, g);
     }
@@ -372,7 +438,8 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   TargetCell* cells = scratch.cells.data();
   const int k = std::max(1, frames_ahead);
   scratch.still.prepare(camera, scratch.directions, back, k);
-  const CornerMove move{camera, scratch.directions, scratch.still, back, k, near};
+  const StillBackground& scratch_still = scratch.still;
+  const CornerMove move{camera, scratch.directions, scratch_still, back, k, near};
   // Passes over bands of rows cut by the frame's size alone, each band writing only its own
   // rows, every tally summed in band order: the same frame on any number of threads.
   const int min_rows = min_band_rows(width);
@@ -381,14 +448,15 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
     std::fill(cells + static_cast<std::ptrdiff_t>(begin) * width,
               cells + static_cast<std::ptrdiff_t>(end) * width,
               TargetCell{-1.0, 0.0, 0.0, kNoSplat});
-    splat::move_lattice_rows(depth, begin, end, move, lattice);
+    move_lattice(depth, move, begin, end, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
     plan_splat_rows(depth, move, begin, end, plan, lattice);
   });
   std::vector<std::int64_t> written(bands, 0), holes(bands, 0), masked(bands, 0);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
-    written[band] = paint_target_rows(plan, lattice, rendered, depth, begin, end, cells, g);
+    written[band] =
+        paint_target_rows(plan, lattice, scratch_still, rendered, depth, begin, end, cells, g);
     for (std::size_t d = static_cast<std::size_t>(begin) * width;
          d < static_cast<std::size_t>(end) * width; ++d) {
       g.unreached[d] = g.source[d] < 0;
