@@ -262,13 +262,15 @@ MeshDraw draw_depth_mesh(const DepthMesh& mesh, const Image& rendered, const Dep
   std::vector<std::vector<char>> drawn(bands);
   for_each_band(camera.height, min_rows, [&](int band, int begin, int end) {
     drawn[band].assign(projected.size(), 0);
+    std::int64_t pixels = 0;  // summed here: the bands' slots share cache lines
     for (std::size_t k = 0; k < projected.size(); ++k) {
       const Projected& t = projected[k];
       if (!t.in_front) continue;
       bool any = false;
-      written[band] += draw_triangle(t.q, t.w, t.s, begin, end, raster, any);
+      pixels += draw_triangle(t.q, t.w, t.s, begin, end, raster, any);
       drawn[band][k] = any;
     }
+    written[band] = pixels;
   });
   for (std::size_t b = 0; b < bands; ++b) out.pixels_written += written[b];
   for (std::size_t k = 0; k < projected.size(); ++k) {

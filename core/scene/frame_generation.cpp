@@ -388,12 +388,19 @@ std::int64_t mask_rows(int width, int height, int begin, int end, GeneratedFrame
   return masked;
 }
 
+// The largest, the sum and the count of the displacement errors of some pixels.
+struct ErrorTally {
+  double max = 0.0, sum = 0.0;
+  std::int64_t surfaces = 0;
+};
+
 // The displacement error (against the true step) of the pixels of target rows [begin, end)
 // that show a surface: their largest, sum and count.
-void measure_error_rows(const DepthFrame& depth, const PixelDirections& directions,
-                        const Camera& camera, const RigidStep3& truth, const GeneratedFrame& g,
-                        int begin, int end, double& max, double& sum, std::int64_t& surfaces) {
+ErrorTally measure_error_rows(const DepthFrame& depth, const PixelDirections& directions,
+                              const Camera& camera, const RigidStep3& truth,
+                              const GeneratedFrame& g, int begin, int end) {
   const int width = depth.width;
+  ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
   for (int y = begin; y < end; ++y) {
     for (int x = 0; x < width; ++x) {
       const int s = g.source[static_cast<std::size_t>(y) * width + x];
@@ -403,11 +410,12 @@ void measure_error_rows(const DepthFrame& depth, const PixelDirections& directio
                      truth.translation;
       if (!(p.z > 0.0)) continue;
       const double e = glm::length(Vec2(x + 0.5, y + 0.5) - project(camera, p));
-      max = std::max(max, e);
-      sum += e;
-      ++surfaces;
+      t.max = std::max(t.max, e);
+      t.sum += e;
+      ++t.surfaces;
     }
   }
+  return t;
 }
 
 }  // namespace
@@ -457,11 +465,13 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
     written[band] =
         paint_target_rows(plan, lattice, scratch_still, rendered, depth, begin, end, cells, g);
+    std::int64_t unreached = 0;
     for (std::size_t d = static_cast<std::size_t>(begin) * width;
          d < static_cast<std::size_t>(end) * width; ++d) {
       g.unreached[d] = g.source[d] < 0;
-      holes[band] += g.unreached[d];
+      unreached += g.unreached[d];
     }
+    holes[band] = unreached;  // once: the bands' slots share cache lines
   });
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
     masked[band] = mask_rows(width, height, begin, end, g);
@@ -482,15 +492,16 @@ void measure_generated_frame(const DepthFrame& depth, const Camera& camera, cons
   const PixelDirections& table = directions;  // this thread's, for the bands
   const int min_rows = min_band_rows(depth.width);
   const std::size_t bands = static_cast<std::size_t>(band_count(depth.height, min_rows));
-  std::vector<std::int64_t> holes(bands, 0), surfaces(bands, 0);
-  std::vector<double> max(bands, 0.0), sum(bands, 0.0);
+  std::vector<std::int64_t> holes(bands, 0);
+  std::vector<ErrorTally> errors(bands);
   for_each_band(depth.height, min_rows, [&](int band, int begin, int end) {
+    std::int64_t seen = 0;  // summed here: the bands' slots share cache lines
     for (std::size_t d = static_cast<std::size_t>(begin) * depth.width;
          d < static_cast<std::size_t>(end) * depth.width; ++d) {
-      holes[band] += g.unreached[d] && now.polygon[d] >= 0;
+      seen += g.unreached[d] && now.polygon[d] >= 0;
     }
-    measure_error_rows(depth, table, camera, truth, g, begin, end, max[band], sum[band],
-                       surfaces[band]);
+    holes[band] = seen;
+    errors[band] = measure_error_rows(depth, table, camera, truth, g, begin, end);
   });
   g.hole_pixels = 0;
   g.max_error_px = 0.0;
@@ -499,9 +510,9 @@ void measure_generated_frame(const DepthFrame& depth, const Camera& camera, cons
   std::int64_t count = 0;
   for (std::size_t b = 0; b < bands; ++b) {
     g.hole_pixels += holes[b];
-    g.max_error_px = std::max(g.max_error_px, max[b]);
-    total += sum[b];
-    count += surfaces[b];
+    g.max_error_px = std::max(g.max_error_px, errors[b].max);
+    total += errors[b].sum;
+    count += errors[b].surfaces;
   }
   if (count > 0) g.mean_error_px = total / static_cast<double>(count);
 }

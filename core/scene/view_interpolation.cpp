@@ -47,13 +47,19 @@ int merged_choice(int sa, int sb, const DepthFrame& da, const DepthFrame& db,
 // Rows per band of the passes over a frame `width` pixels wide.
 int min_band_rows(int width) { return std::max(4, 16384 / std::max(width, 1)); }
 
+// The largest, the sum and the count of the displacement errors of some pixels.
+struct ErrorTally {
+  double max = 0.0, sum = 0.0;
+  std::int64_t surfaces = 0;
+};
+
 // The per-pixel error of f (see the header) over the pixels of rows [begin, end) showing a
-// surface: their largest, sum and count.
-void measure_error_rows(const RenderedView& earlier, const RenderedView& later,
-                        const splat::PixelDirections& directions, const Camera& camera,
-                        const InterpolatedFrame& f, int begin, int end, double& max, double& sum,
-                        std::int64_t& surfaces) {
+// surface.
+ErrorTally measure_error_rows(const RenderedView& earlier, const RenderedView& later,
+                              const splat::PixelDirections& directions, const Camera& camera,
+                              const InterpolatedFrame& f, int begin, int end) {
   const int width = camera.width;
+  ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
   for (int y = begin; y < end; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t d = static_cast<std::size_t>(y) * width + x;
@@ -66,11 +72,12 @@ void measure_error_rows(const RenderedView& earlier, const RenderedView& later,
                      view.step.translation;
       if (!(p.z > 0.0)) continue;
       const double e = glm::length(Vec2(x + 0.5, y + 0.5) - splat::project(camera, p));
-      max = std::max(max, e);
-      sum += e;
-      ++surfaces;
+      t.max = std::max(t.max, e);
+      t.sum += e;
+      ++t.surfaces;
     }
   }
+  return t;
 }
 
 // Rows [begin, end) of the merge of a and b into f (see the header); returns the holes there.
@@ -134,21 +141,20 @@ InterpolatedFrame interpolate_views(const RenderedView& earlier, const RenderedV
   // frame on any number of threads.
   const int min_rows = min_band_rows(width);
   const std::size_t bands = static_cast<std::size_t>(band_count(height, min_rows));
-  std::vector<std::int64_t> holes(bands, 0), surfaces(bands, 0);
-  std::vector<double> max(bands, 0.0), sum(bands, 0.0);
+  std::vector<std::int64_t> holes(bands, 0);
+  std::vector<ErrorTally> errors(bands);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
     holes[band] = merge_rows(a, b, earlier, later, planes_a, planes_b, table, t > 0.5, now, width,
                              begin, end, f);
-    measure_error_rows(earlier, later, table, camera, f, begin, end, max[band], sum[band],
-                       surfaces[band]);
+    errors[band] = measure_error_rows(earlier, later, table, camera, f, begin, end);
   });
   double total = 0.0;
   std::int64_t count = 0;
   for (std::size_t k = 0; k < bands; ++k) {
     f.hole_pixels += holes[k];
-    f.max_error_px = std::max(f.max_error_px, max[k]);
-    total += sum[k];
-    count += surfaces[k];
+    f.max_error_px = std::max(f.max_error_px, errors[k].max);
+    total += errors[k].sum;
+    count += errors[k].surfaces;
   }
   if (count > 0) f.mean_error_px = total / static_cast<double>(count);
   return f;
