@@ -8,6 +8,7 @@
 
 #include "flow/limits.h"
 #include "image/composite.h"
+#include "image/thread_pool.h"
 #include "scene/splat_footprint.h"
 
 namespace oflab {
@@ -60,11 +61,14 @@ struct Raster {
   MeshDraw& out;
 };
 
-// Rasterises one projected triangle (see the header's "draw").
-void draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
-                   const std::array<Vec2, 3>& s, Raster& r) {
+// Rasterises one projected triangle (see the header's "draw") over target rows [row_begin,
+// row_end). Returns the pixels written; `any` tells whether a pixel centre there is inside.
+std::int64_t draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
+                           const std::array<Vec2, 3>& s, int row_begin, int row_end, Raster& r,
+                           bool& any) {
   const double area = cross(q[1] - q[0], q[2] - q[0]);
-  if (!(std::abs(area) > 1e-12)) return;
+  any = false;
+  if (!(std::abs(area) > 1e-12)) return 0;
   const int width = r.camera.width, height = r.camera.height;
   const double x0 = std::min({q[0].x, q[1].x, q[2].x}), x1 = std::max({q[0].x, q[1].x, q[2].x});
   const double y0 = std::min({q[0].y, q[1].y, q[2].y}), y1 = std::max({q[0].y, q[1].y, q[2].y});
@@ -74,10 +78,10 @@ void draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
   };
   const int i0 = std::max(0, pixel(std::floor(x0 - 0.5), width - 1));
   const int i1 = std::min(width - 1, pixel(std::ceil(x1 - 0.5), width - 1));
-  const int j0 = std::max(0, pixel(std::floor(y0 - 0.5), height - 1));
-  const int j1 = std::min(height - 1, pixel(std::ceil(y1 - 0.5), height - 1));
+  const int j0 = std::max(row_begin, pixel(std::floor(y0 - 0.5), height - 1));
+  const int j1 = std::min(row_end - 1, pixel(std::ceil(y1 - 0.5), height - 1));
   constexpr double kEdge = -1e-9;  // edges inclusive: neighbours share their edge's pixels
-  bool any = false;
+  std::int64_t written = 0;
   for (int j = j0; j <= j1; ++j) {
     for (int i = i0; i <= i1; ++i) {
       const Vec2 c(i + 0.5, j + 0.5);
@@ -98,10 +102,57 @@ void draw_triangle(const std::array<Vec2, 3>& q, const std::array<double, 3>& w,
       r.out.inverse_depth[d] = inverse;
       r.out.source[d] = source;
       r.out.image.pixels()[d] = r.rendered.pixels()[static_cast<std::size_t>(source)];
-      ++r.out.pixels_written;
+      ++written;
     }
   }
-  if (any) ++r.out.triangles_drawn;
+  return written;
+}
+
+// A triangle of the mesh moved to the view now: its projected corners, their inverse depths
+// and render positions; in_front false when a corner reaches Z <= near (not drawn).
+struct Projected {
+  std::array<Vec2, 3> q, s;
+  std::array<double, 3> w;
+  bool in_front = true;
+};
+
+Projected project_triangle(const DepthMesh& mesh, const std::vector<Vec3>& now,
+                           const std::array<int, 3>& t, const Camera& camera, double near) {
+  Projected p;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& x = now[static_cast<std::size_t>(t[k])];
+    p.in_front = p.in_front && x.z > near;
+    if (!p.in_front) break;
+    p.q[k] = splat::project(camera, x);
+    p.w[k] = 1.0 / x.z;
+    p.s[k] = mesh.positions[static_cast<std::size_t>(t[k])];
+  }
+  return p;
+}
+
+// Pixels [begin, end) of merge_near_and_mesh's frame f (as depth_mesh.h says it merges).
+void merge_pixels(const std::vector<Pixel>& near, const DepthFrame& near_depth,
+                  const MeshDraw& mesh, std::size_t begin, std::size_t end, MeshFrame& f) {
+  std::vector<Pixel>& out = f.image.pixels();
+  for (std::size_t d = begin; d < end; ++d) {
+    const bool has_near = near_depth.polygon[d] >= 0;
+    const bool has_mesh = mesh.source[d] >= 0;
+    if (!has_near && !has_mesh) {
+      f.unreached[d] = 1;
+      continue;
+    }
+    if (!has_mesh) {
+      out[d] = near[d];
+      f.source[d] = static_cast<int>(d);
+      continue;
+    }
+    const Pixel m = mesh.image.pixels()[d];
+    f.source[d] = mesh.source[d];
+    const bool near_in_front = has_near && near_depth.inverse_depth[d] >= mesh.inverse_depth[d];
+    out[d] = !has_near ? m : near_in_front ? over(near[d], m) : over(m, near[d]);
+    f.mesh_shown[d] = !(near_in_front && near[d].a == 255);
+    if (!f.mesh_shown[d]) f.source[d] = static_cast<int>(d);
+  }
 }
 
 }  // namespace
@@ -197,20 +248,35 @@ MeshDraw draw_depth_mesh(const DepthMesh& mesh, const Image& rendered, const Dep
   for (std::size_t v = 0; v < now.size(); ++v) {
     now[v] = step.rotation * mesh.points[v] + step.translation;
   }
+  std::vector<Projected> projected(mesh.triangles.size());
+  for (std::size_t k = 0; k < projected.size(); ++k) {
+    projected[k] = project_triangle(mesh, now, mesh.triangles[k], camera, near);
+  }
+  // Bands of target rows, each drawing every triangle in order over its rows: every pixel
+  // sees the triangles in the same order on any number of threads; tallies summed in band
+  // order, a triangle counted when a band found a pixel centre inside it.
   Raster raster{rendered, depth, camera, out};
-  for (const std::array<int, 3>& t : mesh.triangles) {
-    std::array<Vec2, 3> q, s;
-    std::array<double, 3> w;
-    bool in_front = true;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& x = now[static_cast<std::size_t>(t[k])];
-      in_front = in_front && x.z > near;
-      if (!in_front) break;
-      q[k] = splat::project(camera, x);
-      w[k] = 1.0 / x.z;
-      s[k] = mesh.positions[static_cast<std::size_t>(t[k])];
+  const int min_rows = std::max(4, 16384 / std::max(camera.width, 1));
+  const std::size_t bands = static_cast<std::size_t>(band_count(camera.height, min_rows));
+  std::vector<std::int64_t> written(bands, 0);
+  std::vector<std::vector<char>> drawn(bands);
+  for_each_band(camera.height, min_rows, [&](int band, int begin, int end) {
+    drawn[band].assign(projected.size(), 0);
+    std::int64_t pixels = 0;  // summed here: the bands' slots share cache lines
+    for (std::size_t k = 0; k < projected.size(); ++k) {
+      const Projected& t = projected[k];
+      if (!t.in_front) continue;
+      bool any = false;
+      pixels += draw_triangle(t.q, t.w, t.s, begin, end, raster, any);
+      drawn[band][k] = any;
     }
-    if (in_front) draw_triangle(q, w, s, raster);
+    written[band] = pixels;
+  });
+  for (std::size_t b = 0; b < bands; ++b) out.pixels_written += written[b];
+  for (std::size_t k = 0; k < projected.size(); ++k) {
+    bool any = false;
+    for (std::size_t b = 0; b < bands && !any; ++b) any = drawn[b][k];
+    out.triangles_drawn += any;
   }
   return out;
 }
@@ -236,27 +302,13 @@ MeshFrame merge_near_and_mesh(const Image& near_image, const DepthFrame& near_de
   f.unreached.assign(n, 0);
   f.source.assign(n, -1);
   f.mesh_shown.assign(n, 0);
-  const std::vector<Pixel>& near = near_image.pixels();
-  std::vector<Pixel>& out = f.image.pixels();
-  for (std::size_t d = 0; d < n; ++d) {
-    const bool has_near = near_depth.polygon[d] >= 0;
-    const bool has_mesh = mesh.source[d] >= 0;
-    if (!has_near && !has_mesh) {
-      f.unreached[d] = 1;
-      continue;
-    }
-    if (!has_mesh) {
-      out[d] = near[d];
-      f.source[d] = static_cast<int>(d);
-      continue;
-    }
-    const Pixel m = mesh.image.pixels()[d];
-    f.source[d] = mesh.source[d];
-    const bool near_in_front = has_near && near_depth.inverse_depth[d] >= mesh.inverse_depth[d];
-    out[d] = !has_near ? m : near_in_front ? over(near[d], m) : over(m, near[d]);
-    f.mesh_shown[d] = !(near_in_front && near[d].a == 255);
-    if (!f.mesh_shown[d]) f.source[d] = static_cast<int>(d);
-  }
+  const int width = near_image.width();
+  // Bands of rows, each pixel on its own: the same frame on any number of threads.
+  for_each_band(
+      near_image.height(), std::max(8, 65536 / std::max(width, 1)), [&](int, int begin, int end) {
+        merge_pixels(near_image.pixels(), near_depth, mesh, static_cast<std::size_t>(begin) * width,
+                     static_cast<std::size_t>(end) * width, f);
+      });
   return f;
 }
 

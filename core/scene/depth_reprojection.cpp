@@ -19,26 +19,7 @@ namespace {
 using splat::CornerLattice;
 using splat::pixel_direction;
 using splat::PixelBox;
-
-// The directions through the pixel corners and centres of a camera, by column and by row:
-// x[k] = ((k - 0.5) - cx) / f and y[k] = ((k - 0.5) - cy) / f, k = 0 .. size + 1, so that the
-// top-left corner of pixel (i, j) looks along (x[i], y[j], 1) and its centre along
-// (x[i + 1], y[j + 1], 1): pixel_direction's arithmetic, so the same bits, once per frame
-// rather than once per pixel.
-struct PixelDirections {
-  std::vector<double> x, y;
-  void prepare(const Camera& camera) {
-    const auto fill = [&](std::vector<double>& to, int size, double centre) {
-      to.resize(static_cast<std::size_t>(size) + 2);
-      for (int k = 0; k < size + 2; ++k) to[k] = ((k - 0.5) - centre) / camera.focal_px;
-    };
-    fill(x, camera.width, camera.cx);
-    fill(y, camera.height, camera.cy);
-  }
-  // The direction (x[k], y[l], 1): through the top-left corner of pixel (k, l), or the
-  // centre of pixel (k - 1, l - 1).
-  Vec3 at(int k, int l) const { return Vec3(x[k], y[l], 1.0); }
-};
+using splat::PixelDirections;
 
 // Where the point seen along direction d (pixel_direction) with plane vector m and inverse
 // depth w lands after the step, top-left pixels, and its inverse depth there; false when it

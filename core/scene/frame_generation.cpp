@@ -6,128 +6,22 @@
 #include <cmath>
 
 #include "image/push_pull.h"
+#include "image/thread_pool.h"
 #include "scene/splat_footprint.h"
 
 namespace oflab {
 namespace {
 
 using splat::pixel_direction;
+using splat::PixelBox;
+using splat::PixelDirections;
 using splat::project;
 
-// Every source pixel's splat: its moved footprint, its moved centre and extrapolated inverse
-// depth; ok false when it has none.
-struct Splat {
-  std::array<Vec2, 4> corners;
-  Vec2 centre;
-  double w = 0.0;
-  bool ok = false;
-};
-
-// Moves the top-left footprint corner of pixel (i, j) (top-left pixel position (i - 0.5,
-// j - 0.5)) with the surface of plane vector m (0: the background) along its motion
-// extrapolated `frames_ahead` frames: splat::move_lattice_rows' `move`.
-struct CornerMove {
-  const Camera& camera;
-  const RigidStep3& back;
-  int frames_ahead;
-  double near;
-  bool operator()(const Vec3& m, int i, int j, Vec2& q) const {
-    double unused = 0.0;
-    return extrapolate_point(camera, back, m, i - 0.5, j - 0.5, frames_ahead, near, q, unused);
-  }
-};
-
-// Source pixel (i, j)'s splat: its moved centre, corners and extrapolated inverse depth.
-Splat plan_splat(const DepthFrame& depth, const Camera& camera, const RigidStep3& back,
-                 const splat::CornerLattice& lattice, int i, int j, int k, double near) {
-  const int p = depth.polygon[static_cast<std::size_t>(j) * depth.width + i];
-  Splat planned;
-  planned.ok = extrapolate_point(camera, back, splat::surface_of(depth, p), i + 0.5, j + 0.5, k,
-                                 near, planned.centre, planned.w) &&
-               splat::move_footprint(lattice, depth, i, j, p, CornerMove{camera, back, k, near},
-                                     planned.corners);
-  return planned;
-}
-
-// What the painting keeps per target pixel.
-struct Targets {
-  std::vector<double> w;     // inverse depth of what each pixel shows; -1: nothing yet
-  std::vector<double> dist;  // distance from its splat's centre
-  std::vector<int> polygon;
-};
-
-// Paints source pixel s's splat: the nearest surface wins, and among one polygon's splats
-// the one whose centre lands nearest. Returns the pixels written.
-std::int64_t paint(const Splat& sp, std::size_t s, int polygon, Pixel colour, int width, int height,
-                   Targets& t, GeneratedFrame& g) {
-  splat::PixelBox box;
-  if (!splat::footprint_box(sp.corners, width, height, box)) return 0;
-  const std::array<Vec2, 4> edge = splat::footprint_edges(sp.corners);
-  std::int64_t written = 0;
-  for (int y = box.y_begin; y <= box.y_end; ++y) {
-    for (int x = box.x_begin; x <= box.x_end; ++x) {
-      const Vec2 c(x + 0.5, y + 0.5);
-      if (!splat::inside_footprint(sp.corners, edge, c)) continue;
-      const std::size_t d = static_cast<std::size_t>(y) * width + x;
-      const bool same = g.source[d] >= 0 && t.polygon[d] == polygon;
-      if (!same && sp.w <= t.w[d]) continue;
-      const double e = glm::length(c - sp.centre);
-      if (same && e >= t.dist[d]) continue;
-      t.w[d] = sp.w;
-      t.dist[d] = e;
-      t.polygon[d] = polygon;
-      g.image.pixels()[d] = colour;
-      g.source[d] = static_cast<int>(s);
-      ++written;
-    }
-  }
-  return written;
-}
-
-// The mask: the unreached pixels grown by one pixel (3 x 3).
-void build_mask(int width, int height, GeneratedFrame& g) {
-  g.mask.assign(g.unreached.size(), 0);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      if (!g.unreached[static_cast<std::size_t>(y) * width + x]) continue;
-      for (int v = std::max(0, y - 1); v <= std::min(height - 1, y + 1); ++v) {
-        for (int u = std::max(0, x - 1); u <= std::min(width - 1, x + 1); ++u) {
-          g.mask[static_cast<std::size_t>(v) * width + u] = 1;
-        }
-      }
-    }
-  }
-  g.mask_pixels = std::count(g.mask.begin(), g.mask.end(), 1);
-}
-
-// The per-pixel displacement error against the true step (a diagnostic).
-void measure_error(const DepthFrame& depth, const Camera& camera, const RigidStep3& truth,
-                   GeneratedFrame& g) {
-  double sum = 0.0;
-  std::int64_t surfaces = 0;
-  for (std::size_t d = 0; d < g.source.size(); ++d) {
-    const int s = g.source[d];
-    if (s < 0 || depth.polygon[s] < 0) continue;  // the background has no position error
-    const int i = s % depth.width, j = s / depth.width;
-    const Vec3 x =
-        truth.rotation * (pixel_direction(camera, i + 0.5, j + 0.5) / depth.inverse_depth[s]) +
-        truth.translation;
-    if (!(x.z > 0.0)) continue;
-    const Vec2 centre(static_cast<double>(d % depth.width) + 0.5,
-                      static_cast<double>(d / depth.width) + 0.5);
-    const double e = glm::length(centre - project(camera, x));
-    g.max_error_px = std::max(g.max_error_px, e);
-    sum += e;
-    ++surfaces;
-  }
-  if (surfaces > 0) g.mean_error_px = sum / static_cast<double>(surfaces);
-}
-
-}  // namespace
-
-bool extrapolate_point(const Camera& camera, const RigidStep3& back, const Vec3& m, double u,
-                       double v, int frames_ahead, double near, Vec2& moved, double& moved_w) {
-  const Vec3 d = pixel_direction(camera, u, v);
+// extrapolate_point with the direction through (u, v) given (pixel_direction's, or a
+// PixelDirections entry: the same bits).
+bool extrapolate_along(const Camera& camera, const RigidStep3& back, const Vec3& m, const Vec3& d,
+                       double u, double v, int frames_ahead, double near, Vec2& moved,
+                       double& moved_w) {
   const double k = frames_ahead;
   if (m == Vec3(0.0)) {  // the background: a direction
     const Vec3 before = back.rotation * d;
@@ -147,6 +41,391 @@ bool extrapolate_point(const Camera& camera, const RigidStep3& back, const Vec3&
   return moved_w > 0.0 && 1.0 / moved_w > near;
 }
 
+// The background's splats when the step has no rotation (R the identity, to the bit): it
+// moves as a direction and R d = d, so its motion vector is 0 and the point along direction
+// (x[k], y[l], 1) (PixelDirections) stays at (x[k]', y[l]'), with x[k]' = p + k (p - p),
+// p = cx + f x[k] / 1: extrapolate_along's arithmetic, so the same bits, once per column and
+// row instead of once per pixel. Background pixel (i, j)'s footprint is then the rectangle of
+// (x[i]', y[j]') .. (x[i + 2]', y[j + 2]') whatever its neighbours show, its centre lands at
+// (x[i + 1]', y[j + 1]'), and its box's columns (rows) are those of column i (row j):
+// splat::footprint_box's arithmetic over the same corners.
+struct StillBackground {
+  bool holds = false;
+  std::vector<double> x, y;
+  std::vector<int> x_begin, x_end, y_begin, y_end;  // per source column, per source row
+  void prepare(const Camera& camera, const PixelDirections& directions, const RigidStep3& back,
+               int frames_ahead) {
+    holds = back.rotation == Mat3(1.0);
+    if (!holds) return;
+    const double k = frames_ahead;
+    const auto fill = [&](std::vector<double>& to, const std::vector<double>& from, double c) {
+      to.resize(from.size());
+      for (std::size_t n = 0; n < from.size(); ++n) {
+        const double p = c + camera.focal_px * from[n] / 1.0;
+        to[n] = p + k * (p - p);
+      }
+    };
+    fill(x, directions.x, camera.cx);
+    fill(y, directions.y, camera.cy);
+    box_lines(x, camera.width, x_begin, x_end);
+    box_lines(y, camera.height, y_begin, y_end);
+  }
+  // The corners of background pixel (i, j)'s footprint, as splat::move_footprint orders them.
+  std::array<Vec2, 4> corners(int i, int j) const {
+    return {Vec2(x[i], y[j]), Vec2(x[i + 2], y[j]), Vec2(x[i + 2], y[j + 2]), Vec2(x[i], y[j + 2])};
+  }
+  // Background pixel (i, j)'s box; false when it is empty or too large (footprint_box).
+  bool box(int i, int j, PixelBox& b) const {
+    b = PixelBox{x_begin[i], x_end[i], y_begin[j], y_end[j]};
+    if (b.x_end < b.x_begin || b.y_end < b.y_begin) return false;
+    return !(static_cast<double>(b.x_end - b.x_begin + 1) * (b.y_end - b.y_begin + 1) >
+             splat::kMaxBoxPixels);
+  }
+
+ private:
+  static void box_lines(const std::vector<double>& at, int size, std::vector<int>& begin,
+                        std::vector<int>& end) {
+    begin.resize(static_cast<std::size_t>(size));
+    end.resize(static_cast<std::size_t>(size));
+    for (int k = 0; k < size; ++k) {
+      const double lo = std::min(at[k], at[k + 2]), hi = std::max(at[k], at[k + 2]);
+      begin[k] = std::max(0, static_cast<int>(std::ceil(lo - 0.5)));
+      end[k] = std::min(size - 1, static_cast<int>(std::floor(hi - 0.5)));
+    }
+  }
+};
+
+// Moves the point along direction (x[k], y[l], 1) (PixelDirections), at top-left pixel
+// position (u, v), with the surface of plane vector m (0: the background) along its motion
+// extrapolated `frames_ahead` frames (extrapolate_point); as a corner lattice point (k, l)
+// = (i, j), the top-left footprint corner of pixel (i, j): splat::move_lattice_rows' `move`.
+struct CornerMove {
+  const Camera& camera;
+  const PixelDirections& directions;
+  const StillBackground& still;
+  const RigidStep3& back;
+  int frames_ahead;
+  double near;
+  bool along(const Vec3& m, int k, int l, double u, double v, Vec2& q, double& w) const {
+    if (still.holds && m == Vec3(0.0)) {
+      q = Vec2(still.x[k], still.y[l]);
+      w = 0.0;
+      return true;
+    }
+    return extrapolate_along(camera, back, m, directions.at(k, l), u, v, frames_ahead, near, q, w);
+  }
+  bool operator()(const Vec3& m, int i, int j, Vec2& q) const {
+    double unused = 0.0;
+    return along(m, i, j, i - 0.5, j - 0.5, q, unused);
+  }
+};
+
+// What each target pixel keeps while the splats are painted: the inverse depth of what it
+// shows (-1: nothing yet), the distance of that splat's centre from it and its square, and
+// that splat's polygon (kNoSplat before any splat reached it).
+struct TargetCell {
+  double w;
+  double dist;   // px
+  double dist2;  // px^2, the square dist is the rounded square root of
+  int polygon;
+};
+constexpr int kNoSplat = -2;  // no polygon index, nor the background's -1
+
+// Every source pixel's splat, planned before any is painted: its moved centre and
+// extrapolated inverse depth, the pixels its footprint may cover (an empty box: no splat),
+// where its corners are (corners_from: the lattice's, its own kept here, or the still
+// background's), and per source row the target rows its splats may reach.
+enum CornersFrom : char { kLatticeCorners, kOwnCorners, kStillCorners };
+struct SplatPlan {
+  std::vector<Vec2> centre;
+  std::vector<double> w;
+  std::vector<PixelBox> boxes;
+  std::vector<char> corners_from;  // CornersFrom
+  std::vector<std::array<Vec2, 4>> corners;
+  std::vector<int> row_first, row_last;  // last < first: the row reaches no target row
+};
+
+// The working memory of one generated frame, kept by each thread that generates: a frame's
+// buffers are tens of megabytes, and fresh ones cost a page fault per page every frame.
+struct GenerationScratch {
+  PixelDirections directions;
+  StillBackground still;
+  splat::CornerLattice lattice;
+  SplatPlan plan;
+  std::vector<TargetCell> cells;  // reset by the first pass, band by band
+  void prepare(const Camera& camera) {
+    const std::size_t n = static_cast<std::size_t>(camera.width) * camera.height;
+    directions.prepare(camera);
+    lattice.moved.resize(n);
+    lattice.ok.resize(n);
+    plan.centre.resize(n);
+    plan.w.resize(n);
+    plan.boxes.resize(n);
+    plan.corners_from.resize(n);
+    plan.corners.resize(n);  // written only where kOwnCorners
+    plan.row_first.assign(static_cast<std::size_t>(camera.height), 0);
+    plan.row_last.assign(static_cast<std::size_t>(camera.height), -1);
+    cells.resize(n);
+  }
+};
+
+// Rows per band of the passes over a frame `width` pixels wide.
+int min_band_rows(int width) { return std::max(4, 16384 / std::max(width, 1)); }
+
+// The corners of source pixel s = (i, j)'s footprint: where they are the lattice's, the
+// lattice points of pixels (i, j), (i + 2, j), (i + 2, j + 2) and (i, j + 2).
+std::array<Vec2, 4> planned_corners(const SplatPlan& plan, const splat::CornerLattice& lattice,
+                                    const StillBackground& still, int i, int j, std::size_t s,
+                                    int width) {
+  if (plan.corners_from[s] == kOwnCorners) return plan.corners[s];
+  if (plan.corners_from[s] == kStillCorners) return still.corners(i, j);
+  const std::size_t below = s + 2 * static_cast<std::size_t>(width);
+  return {lattice.moved[s], lattice.moved[s + 2], lattice.moved[below + 2], lattice.moved[below]};
+}
+
+// Whether every corner of source pixel s = (i, j)'s footprint (polygon p) is a lattice point
+// of polygon p (so splat::move_footprint takes all four from the lattice), and in `moved`
+// whether they all moved.
+bool lattice_footprint(const DepthFrame& depth, const splat::CornerLattice& lattice, int i, int j,
+                       std::size_t s, int p, bool& moved) {
+  if (i + 2 >= depth.width || j + 2 >= depth.height) return false;
+  const std::size_t below = s + 2 * static_cast<std::size_t>(depth.width);
+  if (depth.polygon[s + 2] != p || depth.polygon[below] != p || depth.polygon[below + 2] != p) {
+    return false;
+  }
+  moved = lattice.ok[s] && lattice.ok[s + 2] && lattice.ok[below] && lattice.ok[below + 2];
+  return true;
+}
+
+// The corner lattice's rows [begin, end) (splat::move_lattice_rows), but the background's
+// points under a still background (its splats take their corners from StillBackground, and
+// no other splat reads them).
+void move_lattice(const DepthFrame& depth, const CornerMove& move, int begin, int end,
+                  splat::CornerLattice& lattice) {
+  if (!move.still.holds) {
+    splat::move_lattice_rows(depth, begin, end, move, lattice);
+    return;
+  }
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[k];
+      if (p >= 0) lattice.ok[k] = move(depth.planes[p], i, j, lattice.moved[k]);
+    }
+  }
+}
+
+// The splats of source rows [begin, end): each centre extrapolated with the pixel's own
+// surface, each footprint's corners with the surface of its pixel.
+void plan_splat_rows(const DepthFrame& depth, const CornerMove& move, int begin, int end,
+                     SplatPlan& plan, const splat::CornerLattice& lattice) {
+  for (int j = begin; j < end; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
+      const int p = depth.polygon[s];
+      PixelBox& box = plan.boxes[s];
+      bool moved = false;
+      std::array<Vec2, 4> q{};
+      if (move.still.holds && p < 0) {  // see StillBackground
+        plan.corners_from[s] = kStillCorners;
+        plan.centre[s] = Vec2(move.still.x[i + 1], move.still.y[j + 1]);
+        plan.w[s] = 0.0;
+        if (!move.still.box(i, j, box)) {
+          box = PixelBox{};
+          continue;
+        }
+        plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
+                                ? box.y_begin
+                                : std::min(plan.row_first[j], box.y_begin);
+        plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+        continue;
+      }
+      const bool shared = lattice_footprint(depth, lattice, i, j, s, p, moved);
+      plan.corners_from[s] = shared ? kLatticeCorners : kOwnCorners;
+      if (shared) {
+        q = planned_corners(plan, lattice, move.still, i, j, s, depth.width);
+      } else {
+        moved = splat::move_footprint(lattice, depth, i, j, p, move, q);
+        plan.corners[s] = q;
+      }
+      if (!moved ||
+          !move.along(splat::surface_of(depth, p), i + 1, j + 1, i + 0.5, j + 0.5, plan.centre[s],
+                      plan.w[s]) ||
+          !splat::footprint_box(q, depth.width, depth.height, box)) {
+        box = PixelBox{};
+        continue;
+      }
+      plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
+                              ? box.y_begin
+                              : std::min(plan.row_first[j], box.y_begin);
+      plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+    }
+  }
+}
+
+// One planned splat being painted: what it gives the pixels it wins, and the rule it wins
+// by: the nearest surface, and among one polygon's splats the one whose centre lands nearest.
+struct SplatPainter {
+  Vec2 centre;
+  double w;
+  int polygon;
+  int source;
+  Pixel colour;
+  TargetCell* cells;
+  Pixel* image;
+  int* shown;
+
+  // Paints pixel d, centre (cx, cy), inside the footprint, where the splat wins; returns 1
+  // when it wrote the pixel, else 0.
+  int paint(std::size_t d, double cx, double cy) const {
+    TargetCell& t = cells[d];
+    const bool same = t.polygon == polygon;
+    if (!same && w <= t.w) return 0;
+    // The distance is glm::length's, sqrt(dot): a rounded square root never decreases as its
+    // argument grows, so a square at least t.dist2 gives a distance at least t.dist, and the
+    // root is taken only where the square is smaller (equal roots then still lose).
+    const Vec2 offset = Vec2(cx, cy) - centre;
+    const double e2 = glm::dot(offset, offset);
+    if (same && e2 >= t.dist2) return 0;
+    const double e = std::sqrt(e2);
+    if (same && e >= t.dist) return 0;
+    t = TargetCell{w, e, e2, polygon};
+    image[d] = colour;
+    shown[d] = source;
+    return 1;
+  }
+};
+
+// The widest box painted by the axis-aligned path (wider ones take the general).
+constexpr int kAlignedColumns = 16;
+
+// Paints source pixel s's planned splat over target rows [y0, y1] of its box (SplatPainter);
+// an axis-aligned footprint (splat::axis_aligned: the background's under a step without
+// rotation) with its inside test split into each row's and each column's, the same answers.
+// Returns the pixels written.
+std::int64_t paint_splat(const SplatPlan& plan, const splat::CornerLattice& lattice,
+                         const StillBackground& still, int i, int j, int polygon, Pixel colour,
+                         int y0, int y1, int width, TargetCell* cells, GeneratedFrame& g) {
+  const std::size_t s = static_cast<std::size_t>(j) * width + i;
+  const PixelBox& box = plan.boxes[s];
+  const std::array<Vec2, 4> q = planned_corners(plan, lattice, still, i, j, s, width);
+  const std::array<Vec2, 4> edge = splat::footprint_edges(q);
+  const SplatPainter splat{plan.centre[s],          plan.w[s],      polygon,
+                           static_cast<int>(s),     colour,         cells,
+                           g.image.pixels().data(), g.source.data()};
+  std::int64_t written = 0;
+  if (splat::axis_aligned(edge) && box.x_end - box.x_begin < kAlignedColumns) {
+    int columns[kAlignedColumns];
+    for (int x = box.x_begin; x <= box.x_end; ++x) {
+      columns[x - box.x_begin] = splat::column_sides(q, edge, x + 0.5);
+    }
+    for (int y = y0; y <= y1; ++y) {
+      const double cy = y + 0.5;
+      const int row = splat::row_sides(q, edge, cy);
+      const std::size_t first = static_cast<std::size_t>(y) * width;
+      for (int x = box.x_begin; x <= box.x_end && row; ++x) {
+        if (row & columns[x - box.x_begin]) written += splat.paint(first + x, x + 0.5, cy);
+      }
+    }
+    return written;
+  }
+  for (int y = y0; y <= y1; ++y) {
+    const double cy = y + 0.5;
+    const splat::FootprintRow row(q, edge, cy);
+    const std::size_t first = static_cast<std::size_t>(y) * width;
+    for (int x = box.x_begin; x <= box.x_end; ++x) {
+      const double cx = x + 0.5;
+      if (row.holds(cx)) written += splat.paint(first + x, cx, cy);
+    }
+  }
+  return written;
+}
+
+// Paints every planned splat into target rows [y_begin, y_end), in source order (so each
+// pixel sees its splats in the order one pass over the source paints them). Returns the
+// pixels written.
+std::int64_t paint_target_rows(const SplatPlan& plan, const splat::CornerLattice& lattice,
+                               const StillBackground& still, const Image& rendered,
+                               const DepthFrame& depth, int y_begin, int y_end, TargetCell* cells,
+                               GeneratedFrame& g) {
+  std::int64_t written = 0;
+  for (int j = 0; j < depth.height; ++j) {
+    if (plan.row_last[j] < plan.row_first[j] || plan.row_last[j] < y_begin ||
+        plan.row_first[j] >= y_end) {
+      continue;
+    }
+    for (int i = 0; i < depth.width; ++i) {
+      const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
+      const PixelBox& box = plan.boxes[s];
+      if (box.y_end < box.y_begin || box.y_end < y_begin || box.y_begin >= y_end) continue;
+      written += paint_splat(plan, lattice, still, i, j, depth.polygon[s], rendered.pixels()[s],
+                             std::max(box.y_begin, y_begin), std::min(box.y_end, y_end - 1),
+                             depth.width, cells, g);
+    }
+  }
+  return written;
+}
+
+// The mask of target rows [begin, end): the unreached pixels (already marked on every row)
+// grown by one pixel (3 x 3), as the rows' columns ORed over the three rows, then over the
+// three columns. Returns the mask's pixels in those rows.
+std::int64_t mask_rows(int width, int height, int begin, int end, GeneratedFrame& g) {
+  thread_local std::vector<char> column;  // per column: unreached in rows y - 1 .. y + 1
+  column.resize(static_cast<std::size_t>(width));
+  std::int64_t masked = 0;
+  for (int y = begin; y < end; ++y) {
+    const char* above = g.unreached.data() + static_cast<std::size_t>(std::max(0, y - 1)) * width;
+    const char* row = g.unreached.data() + static_cast<std::size_t>(y) * width;
+    const char* below =
+        g.unreached.data() + static_cast<std::size_t>(std::min(height - 1, y + 1)) * width;
+    for (int x = 0; x < width; ++x) column[x] = above[x] | row[x] | below[x];
+    char* out = g.mask.data() + static_cast<std::size_t>(y) * width;
+    for (int x = 0; x < width; ++x) {
+      out[x] = column[std::max(0, x - 1)] | column[x] | column[std::min(width - 1, x + 1)];
+      masked += out[x];
+    }
+  }
+  return masked;
+}
+
+// The largest, the sum and the count of the displacement errors of some pixels.
+struct ErrorTally {
+  double max = 0.0, sum = 0.0;
+  std::int64_t surfaces = 0;
+};
+
+// The displacement error (against the true step) of the pixels of target rows [begin, end)
+// that show a surface: their largest, sum and count.
+ErrorTally measure_error_rows(const DepthFrame& depth, const PixelDirections& directions,
+                              const Camera& camera, const RigidStep3& truth,
+                              const GeneratedFrame& g, int begin, int end) {
+  const int width = depth.width;
+  ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
+  for (int y = begin; y < end; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const int s = g.source[static_cast<std::size_t>(y) * width + x];
+      if (s < 0 || depth.polygon[s] < 0) continue;  // the background has no position error
+      const int i = s % width, j = s / width;
+      const Vec3 p = truth.rotation * (directions.at(i + 1, j + 1) / depth.inverse_depth[s]) +
+                     truth.translation;
+      if (!(p.z > 0.0)) continue;
+      const double e = glm::length(Vec2(x + 0.5, y + 0.5) - project(camera, p));
+      t.max = std::max(t.max, e);
+      t.sum += e;
+      ++t.surfaces;
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+bool extrapolate_point(const Camera& camera, const RigidStep3& back, const Vec3& m, double u,
+                       double v, int frames_ahead, double near, Vec2& moved, double& moved_w) {
+  return extrapolate_along(camera, back, m, pixel_direction(camera, u, v), u, v, frames_ahead, near,
+                           moved, moved_w);
+}
+
 GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& depth,
                                      const Camera& camera, const RigidStep3& back, int frames_ahead,
                                      bool inpaint, double near) {
@@ -155,48 +434,87 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   GeneratedFrame g;
   g.image = Image(width, height);
   g.source.assign(n, -1);
+  g.unreached.resize(n);
+  g.mask.resize(n);
   g.source_pixels = static_cast<std::int64_t>(n);
+  thread_local GenerationScratch scratch;
+  scratch.prepare(camera);
+  // (The bands reach the scratch through these references: on a worker thread the name
+  // `scratch` is that thread's own.)
+  splat::CornerLattice& lattice = scratch.lattice;
+  SplatPlan& plan = scratch.plan;
+  TargetCell* cells = scratch.cells.data();
   const int k = std::max(1, frames_ahead);
-  // Working memory kept by each thread: a frame's buffers are tens of megabytes, and fresh
-  // ones cost a page fault per page every frame.
-  thread_local splat::CornerLattice lattice;
-  thread_local Targets t;
-  lattice.moved.resize(n);
-  lattice.ok.resize(n);
-  splat::move_lattice_rows(depth, 0, height, CornerMove{camera, back, k, near}, lattice);
-  t.w.assign(n, -1.0);
-  t.dist.assign(n, 0.0);
-  t.polygon.assign(n, -1);
-  // Each splat planned and painted in source order.
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const Splat planned = plan_splat(depth, camera, back, lattice, i, j, k, near);
-      if (!planned.ok) continue;
-      const std::size_t s = static_cast<std::size_t>(j) * width + i;
-      g.pixels_written +=
-          paint(planned, s, depth.polygon[s], rendered.pixels()[s], width, height, t, g);
+  scratch.still.prepare(camera, scratch.directions, back, k);
+  const StillBackground& scratch_still = scratch.still;
+  const CornerMove move{camera, scratch.directions, scratch_still, back, k, near};
+  // Passes over bands of rows cut by the frame's size alone, each band writing only its own
+  // rows, every tally summed in band order: the same frame on any number of threads.
+  const int min_rows = min_band_rows(width);
+  const std::size_t bands = static_cast<std::size_t>(band_count(height, min_rows));
+  for_each_band(height, min_rows, [&](int, int begin, int end) {
+    std::fill(cells + static_cast<std::ptrdiff_t>(begin) * width,
+              cells + static_cast<std::ptrdiff_t>(end) * width,
+              TargetCell{-1.0, 0.0, 0.0, kNoSplat});
+    move_lattice(depth, move, begin, end, lattice);
+  });
+  for_each_band(height, min_rows, [&](int, int begin, int end) {
+    plan_splat_rows(depth, move, begin, end, plan, lattice);
+  });
+  std::vector<std::int64_t> written(bands, 0), holes(bands, 0), masked(bands, 0);
+  for_each_band(height, min_rows, [&](int band, int begin, int end) {
+    written[band] =
+        paint_target_rows(plan, lattice, scratch_still, rendered, depth, begin, end, cells, g);
+    std::int64_t unreached = 0;
+    for (std::size_t d = static_cast<std::size_t>(begin) * width;
+         d < static_cast<std::size_t>(end) * width; ++d) {
+      g.unreached[d] = g.source[d] < 0;
+      unreached += g.unreached[d];
     }
+    holes[band] = unreached;  // once: the bands' slots share cache lines
+  });
+  for_each_band(height, min_rows, [&](int band, int begin, int end) {
+    masked[band] = mask_rows(width, height, begin, end, g);
+  });
+  for (std::size_t b = 0; b < bands; ++b) {
+    g.pixels_written += written[b];
+    g.hole_pixels += holes[b];
+    g.mask_pixels += masked[b];
   }
-  g.unreached.assign(n, 0);
-  for (std::size_t d = 0; d < n; ++d) {
-    if (g.source[d] >= 0) continue;
-    g.unreached[d] = 1;
-    ++g.hole_pixels;
-  }
-  build_mask(width, height, g);
   if (inpaint) g.inpainted_pixels = push_pull_inpaint(g.image, g.unreached);
   return g;
 }
 
 void measure_generated_frame(const DepthFrame& depth, const Camera& camera, const RigidStep3& truth,
                              const DepthFrame& now, GeneratedFrame& g) {
+  thread_local PixelDirections directions;
+  directions.prepare(camera);
+  const PixelDirections& table = directions;  // this thread's, for the bands
+  const int min_rows = min_band_rows(depth.width);
+  const std::size_t bands = static_cast<std::size_t>(band_count(depth.height, min_rows));
+  std::vector<std::int64_t> holes(bands, 0);
+  std::vector<ErrorTally> errors(bands);
+  for_each_band(depth.height, min_rows, [&](int band, int begin, int end) {
+    std::int64_t seen = 0;  // summed here: the bands' slots share cache lines
+    for (std::size_t d = static_cast<std::size_t>(begin) * depth.width;
+         d < static_cast<std::size_t>(end) * depth.width; ++d) {
+      seen += g.unreached[d] && now.polygon[d] >= 0;
+    }
+    holes[band] = seen;
+    errors[band] = measure_error_rows(depth, table, camera, truth, g, begin, end);
+  });
   g.hole_pixels = 0;
-  for (std::size_t d = 0; d < g.unreached.size(); ++d) {
-    g.hole_pixels += g.unreached[d] && now.polygon[d] >= 0;
-  }
   g.max_error_px = 0.0;
   g.mean_error_px = 0.0;
-  measure_error(depth, camera, truth, g);
+  double total = 0.0;
+  std::int64_t count = 0;
+  for (std::size_t b = 0; b < bands; ++b) {
+    g.hole_pixels += holes[b];
+    g.max_error_px = std::max(g.max_error_px, errors[b].max);
+    total += errors[b].sum;
+    count += errors[b].surfaces;
+  }
+  if (count > 0) g.mean_error_px = total / static_cast<double>(count);
 }
 
 }  // namespace oflab

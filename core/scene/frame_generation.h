@@ -79,8 +79,10 @@ bool extrapolate_point(const Camera& camera, const RigidStep3& back, const Vec3&
 // `depth`) by extrapolation along its motion vectors (`back`, see extrapolate_point); with
 // `inpaint` the unreached pixels are filled by push-pull, else left transparent. hole_pixels
 // counts every unreached pixel until measure_generated_frame says which show a surface.
-// Preconditions: rendered and depth have the camera's size; depth.planes covers every
-// polygon index in depth.polygon.
+// Runs in bands of rows on the worker threads (core/image/thread_pool.h): the frame and its
+// figures are the same bytes on any number of threads as one pass over the source pixels in
+// order would paint them. Preconditions: rendered and depth have the camera's size;
+// depth.planes covers every polygon index in depth.polygon.
 GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& depth,
                                      const Camera& camera, const RigidStep3& back, int frames_ahead,
                                      bool inpaint, double near);

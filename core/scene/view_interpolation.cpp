@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "image/thread_pool.h"
 #include "scene/splat_footprint.h"
 
 namespace oflab {
@@ -43,28 +44,67 @@ int merged_choice(int sa, int sb, const DepthFrame& da, const DepthFrame& db,
   return wa > wb ? 1 : 2;
 }
 
-// The per-pixel error of f (see the header) over the pixels showing a surface.
-void measure_error(const RenderedView& earlier, const RenderedView& later, const Camera& camera,
-                   InterpolatedFrame& f) {
-  double sum = 0.0;
+// Rows per band of the passes over a frame `width` pixels wide.
+int min_band_rows(int width) { return std::max(4, 16384 / std::max(width, 1)); }
+
+// The largest, the sum and the count of the displacement errors of some pixels.
+struct ErrorTally {
+  double max = 0.0, sum = 0.0;
   std::int64_t surfaces = 0;
+};
+
+// The per-pixel error of f (see the header) over the pixels of rows [begin, end) showing a
+// surface.
+ErrorTally measure_error_rows(const RenderedView& earlier, const RenderedView& later,
+                              const splat::PixelDirections& directions, const Camera& camera,
+                              const InterpolatedFrame& f, int begin, int end) {
   const int width = camera.width;
-  for (std::size_t d = 0; d < f.source.size(); ++d) {
-    const int s = f.source[d];
-    if (s < 0) continue;
-    const RenderedView& view = f.from_later[d] ? later : earlier;
-    if (view.depth.polygon[s] < 0) continue;  // the background has no position error
-    const Vec3 x = view.step.rotation * (pixel_direction(camera, s % width + 0.5, s / width + 0.5) /
-                                         view.depth.inverse_depth[s]) +
-                   view.step.translation;
-    if (!(x.z > 0.0)) continue;
-    const Vec2 centre(static_cast<double>(d % width) + 0.5, static_cast<double>(d / width) + 0.5);
-    const double e = glm::length(centre - splat::project(camera, x));
-    f.max_error_px = std::max(f.max_error_px, e);
-    sum += e;
-    ++surfaces;
+  ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
+  for (int y = begin; y < end; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const int s = f.source[d];
+      if (s < 0) continue;
+      const RenderedView& view = f.from_later[d] ? later : earlier;
+      if (view.depth.polygon[s] < 0) continue;  // the background has no position error
+      const Vec3 p = view.step.rotation * (directions.at(s % width + 1, s / width + 1) /
+                                           view.depth.inverse_depth[s]) +
+                     view.step.translation;
+      if (!(p.z > 0.0)) continue;
+      const double e = glm::length(Vec2(x + 0.5, y + 0.5) - splat::project(camera, p));
+      t.max = std::max(t.max, e);
+      t.sum += e;
+      ++t.surfaces;
+    }
   }
-  if (surfaces > 0) f.mean_error_px = sum / static_cast<double>(surfaces);
+  return t;
+}
+
+// Rows [begin, end) of the merge of a and b into f (see the header); returns the holes there.
+std::int64_t merge_rows(const Reprojection& a, const Reprojection& b, const RenderedView& earlier,
+                        const RenderedView& later, const std::vector<Vec3>& planes_a,
+                        const std::vector<Vec3>& planes_b, const splat::PixelDirections& directions,
+                        bool prefer_later, const DepthFrame* now, int width, int begin, int end,
+                        InterpolatedFrame& f) {
+  std::int64_t holes = 0;
+  for (int y = begin; y < end; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const int choice =
+          merged_choice(a.source[d], b.source[d], earlier.depth, later.depth, planes_a, planes_b,
+                        directions.at(x + 1, y + 1), prefer_later);
+      if (choice == 0) {
+        f.unreached[d] = 1;
+        holes += !now || now->polygon[d] >= 0;
+        continue;
+      }
+      const Reprojection& from = choice == 1 ? a : b;
+      f.image.pixels()[d] = from.image.pixels()[d];
+      f.source[d] = from.source[d];
+      f.from_later[d] = choice == 2;
+    }
+  }
+  return holes;
 }
 
 }  // namespace
@@ -94,25 +134,29 @@ InterpolatedFrame interpolate_views(const RenderedView& earlier, const RenderedV
   f.source_pixels = a.source_pixels + b.source_pixels;
   const std::vector<Vec3> planes_a = moved_planes(earlier.depth, earlier.step);
   const std::vector<Vec3> planes_b = moved_planes(later.depth, later.step);
-  const bool prefer_later = t > 0.5;
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const std::size_t d = static_cast<std::size_t>(y) * width + x;
-      const int choice =
-          merged_choice(a.source[d], b.source[d], earlier.depth, later.depth, planes_a, planes_b,
-                        pixel_direction(camera, x + 0.5, y + 0.5), prefer_later);
-      if (choice == 0) {
-        f.unreached[d] = 1;
-        f.hole_pixels += !now || now->polygon[d] >= 0;
-        continue;
-      }
-      const Reprojection& from = choice == 1 ? a : b;
-      f.image.pixels()[d] = from.image.pixels()[d];
-      f.source[d] = from.source[d];
-      f.from_later[d] = choice == 2;
-    }
+  thread_local splat::PixelDirections directions;
+  directions.prepare(camera);
+  const splat::PixelDirections& table = directions;  // this thread's, for the bands
+  // Bands of rows cut by the frame's size alone, every tally summed in band order: the same
+  // frame on any number of threads.
+  const int min_rows = min_band_rows(width);
+  const std::size_t bands = static_cast<std::size_t>(band_count(height, min_rows));
+  std::vector<std::int64_t> holes(bands, 0);
+  std::vector<ErrorTally> errors(bands);
+  for_each_band(height, min_rows, [&](int band, int begin, int end) {
+    holes[band] = merge_rows(a, b, earlier, later, planes_a, planes_b, table, t > 0.5, now, width,
+                             begin, end, f);
+    errors[band] = measure_error_rows(earlier, later, table, camera, f, begin, end);
+  });
+  double total = 0.0;
+  std::int64_t count = 0;
+  for (std::size_t k = 0; k < bands; ++k) {
+    f.hole_pixels += holes[k];
+    f.max_error_px = std::max(f.max_error_px, errors[k].max);
+    total += errors[k].sum;
+    count += errors[k].surfaces;
   }
-  measure_error(earlier, later, camera, f);
+  if (count > 0) f.mean_error_px = total / static_cast<double>(count);
   return f;
 }
 

@@ -118,14 +118,15 @@ TEST(ThreadPool, ThreadCountsOutsideTheLimitAreRefused) {
   EXPECT_GE(machine_cores(), 1);
 }
 
-// One run of two open cubes, every face a different content, under `mode`: each frame's
-// pixels and the report's deterministic figures.
+// One run of two open cubes, every face a different content, under `mode` (rendering every
+// `cadence`-th frame where the policy has a cadence): each frame's pixels and the report's
+// deterministic figures.
 struct Played {
   std::vector<std::vector<Pixel>> frames;
   std::vector<std::vector<double>> figures;
 };
 
-Played play_cubes(const std::string& mode, int threads) {
+Played play_cubes(const std::string& mode, int threads, int cadence = 1) {
   const ThreadsFor pool(threads);
   std::vector<ScenePolygon> polygons = testing::open_cube("a", Vec3(-1, 0, 0), 1.0);
   for (ScenePolygon& p : testing::open_cube("b", Vec3(1, 0, -0.5), 1.0)) polygons.push_back(p);
@@ -135,6 +136,7 @@ Played play_cubes(const std::string& mode, int threads) {
   const Camera camera = make_camera(520.0, 640, 480);
   SceneSettings settings;
   settings.engine.policy = &reuse_policy(mode);
+  settings.engine.cadence = cadence;
   SceneEngine engine(scene, camera, settings);
   const ViewerPose start = look_at(Vec3(-0.5, 1.2, 4), Vec3(0, 0, 0), Vec3(0, 1, 0));
   const auto frames = expand_viewer_segments(
@@ -150,7 +152,9 @@ Played play_cubes(const std::string& mode, int threads) {
                              static_cast<double>(r.pixels_composited),
                              r.max_measured_error_px,
                              static_cast<double>(r.hidden),
-                             r.max_photometric_error};
+                             r.max_photometric_error,
+                             static_cast<double>(r.hole_pixels),
+                             static_cast<double>(r.inpainted_pixels)};
     for (int l = 0; l < kLevelCount; ++l) f.push_back(r.levels[l]);
     played.figures.push_back(f);
   }
@@ -167,6 +171,27 @@ TEST(ThreadPool, SceneFramesAndReportsAreTheSameWithOneAndTwoThreads) {
     }
     // Negative control: the comparison sees a changed frame (the next frame differs).
     EXPECT_FALSE(one.frames[1] == two.frames[2]) << mode;
+  }
+}
+
+// Frame generation's policies paint, merge and inpaint in bands of rows (core/scene/
+// frame_generation.h, view_interpolation.h, depth_mesh.h): on 1, 2 and 3 threads the frames
+// and figures are the same, the generated frames (every other one) included.
+TEST(ThreadPool, FrameGenerationFramesAndReportsAreTheSameWithOneTwoAndThreeThreads) {
+  for (const std::string mode :
+       {"mv-extrapolation", "mv-no-inpaint", "view-interpolation", "depth-mesh"}) {
+    const Played one = play_cubes(mode, 1, 2);
+    for (const int threads : {2, 3}) {
+      const Played more = play_cubes(mode, threads, 2);
+      ASSERT_EQ(one.frames.size(), more.frames.size());
+      for (std::size_t i = 0; i < one.frames.size(); ++i) {
+        EXPECT_TRUE(one.frames[i] == more.frames[i]) << mode << " frame " << i << ", " << threads;
+        EXPECT_EQ(one.figures[i], more.figures[i]) << mode << " frame " << i << ", " << threads;
+      }
+    }
+    // The generated frames are there, and the comparison sees a changed frame (the next one).
+    EXPECT_GT(one.figures[1][0], 0.0) << mode;
+    EXPECT_FALSE(one.frames[1] == one.frames[2]) << mode;
   }
 }
 
