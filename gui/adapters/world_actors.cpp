@@ -158,6 +158,9 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
   const auto over = [](unsigned char colour, double shown_through) {
     return static_cast<unsigned char>(std::min(255.0, colour + shown_through + 0.5));
   };
+  // Opaque and empty pixels (most of a frame) take the short ways, with the same bytes.
+  const unsigned char backdrop_bytes[3] = {over(0, through[0][0]), over(0, through[1][0]),
+                                           over(0, through[2][0])};
   // Rows in bands on core's worker threads, each writing its own rows.
   const int w = image.width();
   for_each_band(image.height(), 32, [&](int, int y0, int y1) {
@@ -165,9 +168,16 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
       const Pixel* row = image.row(y);
       unsigned char* to = out + static_cast<std::size_t>(y) * w * 3;
       for (int x = 0; x < w; ++x, to += 3) {
-        to[0] = over(row[x].r, through[0][row[x].a]);
-        to[1] = over(row[x].g, through[1][row[x].a]);
-        to[2] = over(row[x].b, through[2][row[x].a]);
+        const Pixel p = row[x];
+        if (p.a == 255) {  // opaque: the colour itself (nothing shows through)
+          to[0] = p.r, to[1] = p.g, to[2] = p.b;
+        } else if ((p.a | p.r | p.g | p.b) == 0) {  // empty: the backdrop
+          to[0] = backdrop_bytes[0], to[1] = backdrop_bytes[1], to[2] = backdrop_bytes[2];
+        } else {
+          to[0] = over(p.r, through[0][p.a]);
+          to[1] = over(p.g, through[1][p.a]);
+          to[2] = over(p.b, through[2][p.a]);
+        }
       }
     }
   });
