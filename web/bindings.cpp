@@ -127,7 +127,7 @@ emscripten::val world_texture(const WebSession& s) {
 
 // The frame on the world view's image plane, as the desktop's: a scene's engine frame
 // (WebSession::scene_animator), else the plane's exact frame (exact_plane_image), flattened over
-// the world's image grey (150, 156, 165) into opaque RGBA8 rows, top row first, at most 512
+// the world's image grey (150, 156, 165) into opaque RGBA8 rows, top row first, at most 256
 // pixels on its longer side (nearest neighbour): {width, height, pixels}, pixels a view into
 // the module's memory. Null when there is no frame (a source that cannot be played).
 emscripten::val world_frame(WebSession& s) {
@@ -139,7 +139,7 @@ emscripten::val world_frame(WebSession& s) {
   const int frame_height = scene ? scene->image().height() : plane->height;
   if (frame_width < 1 || frame_height < 1 || (plane && plane->placed.layer.empty()))
     return emscripten::val::null();
-  const double k = std::min(1.0, 512.0 / std::max(frame_width, frame_height));
+  const double k = std::min(1.0, 256.0 / std::max(frame_width, frame_height));
   const int width = std::max(1, int(std::lround(k * frame_width)));
   const int height = std::max(1, int(std::lround(k * frame_height)));
   if (scene) {
