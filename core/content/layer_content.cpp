@@ -311,6 +311,7 @@ struct FaceRaster {
   ConvexPolygon shape;
   Pixel colour;
   double a = 0.0, b = 0.0, c0 = 0.0;
+  int first_row = 0, end_row = 0;  // the layer rows the shape may cover: [first_row, end_row)
 };
 
 // The face's raster, or false when it is seen from behind or covers no part of the region.
@@ -330,6 +331,9 @@ bool face_raster(const FacadeFace& face, const PlaneFrame& f, const Vec3& light,
   }
   raster.shape = clip_to_region(make_polygon_unchecked(pixels), region);
   if (raster.shape.empty()) return false;
+  const ScanConverter rows(raster.shape, box.width, box.height);
+  raster.first_row = rows.first_row();
+  raster.end_row = rows.end_row();
   Vec3 centre(0.0);
   for (const Vec3& p : world) centre += 0.25 * p;
   const Vec3 c = lit(facade_material(face.part), n, centre, light);
@@ -344,20 +348,23 @@ bool face_raster(const FacadeFace& face, const PlaneFrame& f, const Vec3& light,
 }
 
 // Rasterises rows [begin, end) of one face into the layer with the depth buffer (1/Z,
-// larger is nearer).
+// larger is nearer). A pixel's first store (the layer starts transparent, a face's colour is
+// opaque) is counted in stats.pixels_written.
 void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int end,
                     std::vector<float>& depth, WarpedLayer& out, ContentStats& stats) {
+  if (face.end_row <= begin || face.first_row >= end) return;  // not in this band
   ScanConverter scan(face.shape, box.width, box.height);
   scan.clip_rows(begin, end);
   PixelSpan span;
   while (scan.next(span)) {
     Pixel* row = out.layer.image.row(span.y);
     float* z = depth.data() + static_cast<std::size_t>(span.y) * box.width;
+    if (span.x_end > span.x_begin) stats.work_units += span.x_end - span.x_begin;
     for (int x = span.x_begin; x < span.x_end; ++x) {
       const float inv_z = static_cast<float>(face.c0 + face.a * x + face.b * span.y);
-      ++stats.work_units;
       if (inv_z <= z[x]) continue;
       z[x] = inv_z;
+      stats.pixels_written += row[x].a == 0;
       row[x] = face.colour;
     }
   }
@@ -390,10 +397,6 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   for_each_band(box.height, min_rows, [&](int band, int begin, int end) {
     ContentStats& stats = band_stats[static_cast<std::size_t>(band)];
     for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
-    for (int y = begin; y < end; ++y) {
-      const Pixel* row = out.layer.image.row(y);
-      for (int x = 0; x < box.width; ++x) stats.pixels_written += row[x].a ? 1 : 0;
-    }
   });
   const ContentStats stats = sum(band_stats);
   out.stats.pixels_written = stats.pixels_written;
