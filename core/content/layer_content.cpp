@@ -356,18 +356,26 @@ void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int 
   ScanConverter scan(face.shape, box.width, box.height);
   scan.clip_rows(begin, end);
   PixelSpan span;
+  // Locals, not the face's and the tally's fields, so that the stores into the rows do not
+  // make the compiler load them again for every pixel.
+  const Pixel colour = face.colour;
+  const double a = face.a, b = face.b, c0 = face.c0;
+  std::int64_t written = 0, work = 0;
   while (scan.next(span)) {
     Pixel* row = out.layer.image.row(span.y);
     float* z = depth.data() + static_cast<std::size_t>(span.y) * box.width;
-    if (span.x_end > span.x_begin) stats.work_units += span.x_end - span.x_begin;
+    const double by = b * span.y;
+    if (span.x_end > span.x_begin) work += span.x_end - span.x_begin;
     for (int x = span.x_begin; x < span.x_end; ++x) {
-      const float inv_z = static_cast<float>(face.c0 + face.a * x + face.b * span.y);
+      const float inv_z = static_cast<float>(c0 + a * x + by);
       if (inv_z <= z[x]) continue;
       z[x] = inv_z;
-      stats.pixels_written += row[x].a == 0;
-      row[x] = face.colour;
+      written += row[x].a == 0;
+      row[x] = colour;
     }
   }
+  stats.work_units += work;
+  stats.pixels_written += written;
 }
 
 ContentStats render_impostor(const LayerContent& content, const Camera& camera,

@@ -52,13 +52,18 @@ double ScanConverter::crossing(Chain& chain, double y) const {
   // Advance past every vertex at or above the row centre: the current edge then runs
   // from a vertex with p.y <= y to one with q.y > y (half-open edges, horizontal edges
   // skipped), so the interpolation parameter is in [0, 1).
+  // The vertex after v along the chain (a wrap, not a division: this runs for every row).
+  const auto after = [&](int v) {
+    const int n = v + chain.step;
+    return n < 0 ? n + count_ : (n >= count_ ? n - count_ : n);
+  };
   for (;;) {
-    const int next = (chain.vertex + chain.step + count_) % count_;
+    const int next = after(chain.vertex);
     if (chain.vertex == bottom_ || vertices_[next].y > y) break;
     chain.vertex = next;
   }
   const Vec2& p = vertices_[chain.vertex];
-  const Vec2& q = vertices_[(chain.vertex + chain.step + count_) % count_];
+  const Vec2& q = vertices_[after(chain.vertex)];
   if (!(q.y > p.y)) return p.x;
   const double t = (y - p.y) / (q.y - p.y);
   return p.x + t * (q.x - p.x);
