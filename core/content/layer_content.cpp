@@ -74,7 +74,8 @@ struct LayerBox {
   int x0 = 0, y0 = 0, width = 0, height = 0;
 };
 
-LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out) {
+// `cleared` false leaves the layer's pixels for the caller to clear (to Pixel{}).
+LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out, bool cleared = true) {
   LayerBox box;
   if (!region.empty()) {
     const BoundingBox b = region.bounds();
@@ -87,7 +88,7 @@ LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out) {
     throw std::invalid_argument("the content's layer would exceed the largest image size");
   }
   out.layer.image.reshape(box.width, box.height);
-  out.layer.image.fill(Pixel{});
+  if (cleared) out.layer.image.fill(Pixel{});
   out.layer.polygon = translated(region, -box.x0, -box.y0);
   out.offset_x = box.x0;
   out.offset_y = box.y0;
@@ -380,7 +381,7 @@ void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int 
 
 ContentStats render_impostor(const LayerContent& content, const Camera& camera,
                              const PlanePose& pose, const ConvexPolygon& region, WarpedLayer& out) {
-  const LayerBox box = prepare_layer(region, out);
+  const LayerBox box = prepare_layer(region, out, false);  // cleared band by band below
   const PlaneFrame f(camera, pose);
   const Vec3 light = glm::normalize(content.light);
   // The faces' rasters in bands of faces on the worker threads, kept in face order.
@@ -397,13 +398,24 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   for (std::vector<FaceRaster>& b : banded) {
     for (FaceRaster& r : b) faces.push_back(std::move(r));
   }
-  std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
+  // The depth buffer's memory is kept from render to render (a camera-sized buffer is
+  // megabytes a frame to map and fault in); each band clears its own rows, as it does the
+  // layer's, just before drawing them.
+  thread_local std::vector<float> kept_depth;
+  std::vector<float>& depth = kept_depth;  // the bands, on other threads, use this thread's
+  depth.resize(static_cast<std::size_t>(box.width) * box.height);
   // Bands of rows on the worker threads (core/image/thread_pool.h): every band draws every
   // face in the same order over its own rows, so each pixel's depth test is the same.
   std::array<ContentStats, kMaxBands> band_stats{};
   const int min_rows = std::max(8, 16384 / std::max(box.width, 1));
   for_each_band(box.height, min_rows, [&](int band, int begin, int end) {
     ContentStats& stats = band_stats[static_cast<std::size_t>(band)];
+    const std::size_t first = static_cast<std::size_t>(begin) * box.width;
+    const std::size_t last = static_cast<std::size_t>(end) * box.width;
+    if (first < last) {
+      std::fill(depth.begin() + first, depth.begin() + last, 0.0f);
+      std::fill(out.layer.image.row(begin), out.layer.image.row(begin) + (last - first), Pixel{});
+    }
     for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
   });
   const ContentStats stats = sum(band_stats);
