@@ -74,7 +74,8 @@ struct LayerBox {
   int x0 = 0, y0 = 0, width = 0, height = 0;
 };
 
-LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out) {
+// `cleared` false leaves the layer's pixels for the caller to clear (to Pixel{}).
+LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out, bool cleared = true) {
   LayerBox box;
   if (!region.empty()) {
     const BoundingBox b = region.bounds();
@@ -87,7 +88,7 @@ LayerBox prepare_layer(const ConvexPolygon& region, WarpedLayer& out) {
     throw std::invalid_argument("the content's layer would exceed the largest image size");
   }
   out.layer.image.reshape(box.width, box.height);
-  out.layer.image.fill(Pixel{});
+  if (cleared) out.layer.image.fill(Pixel{});
   out.layer.polygon = translated(region, -box.x0, -box.y0);
   out.offset_x = box.x0;
   out.offset_y = box.y0;
@@ -311,6 +312,7 @@ struct FaceRaster {
   ConvexPolygon shape;
   Pixel colour;
   double a = 0.0, b = 0.0, c0 = 0.0;
+  int first_row = 0, end_row = 0;  // the layer rows the shape may cover: [first_row, end_row)
 };
 
 // The face's raster, or false when it is seen from behind or covers no part of the region.
@@ -330,6 +332,9 @@ bool face_raster(const FacadeFace& face, const PlaneFrame& f, const Vec3& light,
   }
   raster.shape = clip_to_region(make_polygon_unchecked(pixels), region);
   if (raster.shape.empty()) return false;
+  const ScanConverter rows(raster.shape, box.width, box.height);
+  raster.first_row = rows.first_row();
+  raster.end_row = rows.end_row();
   Vec3 centre(0.0);
   for (const Vec3& p : world) centre += 0.25 * p;
   const Vec3 c = lit(facade_material(face.part), n, centre, light);
@@ -344,28 +349,39 @@ bool face_raster(const FacadeFace& face, const PlaneFrame& f, const Vec3& light,
 }
 
 // Rasterises rows [begin, end) of one face into the layer with the depth buffer (1/Z,
-// larger is nearer).
+// larger is nearer). A pixel's first store (the layer starts transparent, a face's colour is
+// opaque) is counted in stats.pixels_written.
 void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int end,
                     std::vector<float>& depth, WarpedLayer& out, ContentStats& stats) {
+  if (face.end_row <= begin || face.first_row >= end) return;  // not in this band
   ScanConverter scan(face.shape, box.width, box.height);
   scan.clip_rows(begin, end);
   PixelSpan span;
+  // Locals, not the face's and the tally's fields, so that the stores into the rows do not
+  // make the compiler load them again for every pixel.
+  const Pixel colour = face.colour;
+  const double a = face.a, b = face.b, c0 = face.c0;
+  std::int64_t written = 0, work = 0;
   while (scan.next(span)) {
     Pixel* row = out.layer.image.row(span.y);
     float* z = depth.data() + static_cast<std::size_t>(span.y) * box.width;
+    const double by = b * span.y;
+    if (span.x_end > span.x_begin) work += span.x_end - span.x_begin;
     for (int x = span.x_begin; x < span.x_end; ++x) {
-      const float inv_z = static_cast<float>(face.c0 + face.a * x + face.b * span.y);
-      ++stats.work_units;
+      const float inv_z = static_cast<float>(c0 + a * x + by);
       if (inv_z <= z[x]) continue;
       z[x] = inv_z;
-      row[x] = face.colour;
+      written += row[x].a == 0;
+      row[x] = colour;
     }
   }
+  stats.work_units += work;
+  stats.pixels_written += written;
 }
 
 ContentStats render_impostor(const LayerContent& content, const Camera& camera,
                              const PlanePose& pose, const ConvexPolygon& region, WarpedLayer& out) {
-  const LayerBox box = prepare_layer(region, out);
+  const LayerBox box = prepare_layer(region, out, false);  // cleared band by band below
   const PlaneFrame f(camera, pose);
   const Vec3 light = glm::normalize(content.light);
   // The faces' rasters in bands of faces on the worker threads, kept in face order.
@@ -382,18 +398,25 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   for (std::vector<FaceRaster>& b : banded) {
     for (FaceRaster& r : b) faces.push_back(std::move(r));
   }
-  std::vector<float> depth(static_cast<std::size_t>(box.width) * box.height, 0.0f);
+  // The depth buffer's memory is kept from render to render (a camera-sized buffer is
+  // megabytes a frame to map and fault in); each band clears its own rows, as it does the
+  // layer's, just before drawing them.
+  thread_local std::vector<float> kept_depth;
+  std::vector<float>& depth = kept_depth;  // the bands, on other threads, use this thread's
+  depth.resize(static_cast<std::size_t>(box.width) * box.height);
   // Bands of rows on the worker threads (core/image/thread_pool.h): every band draws every
   // face in the same order over its own rows, so each pixel's depth test is the same.
   std::array<ContentStats, kMaxBands> band_stats{};
   const int min_rows = std::max(8, 16384 / std::max(box.width, 1));
   for_each_band(box.height, min_rows, [&](int band, int begin, int end) {
     ContentStats& stats = band_stats[static_cast<std::size_t>(band)];
-    for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
-    for (int y = begin; y < end; ++y) {
-      const Pixel* row = out.layer.image.row(y);
-      for (int x = 0; x < box.width; ++x) stats.pixels_written += row[x].a ? 1 : 0;
+    const std::size_t first = static_cast<std::size_t>(begin) * box.width;
+    const std::size_t last = static_cast<std::size_t>(end) * box.width;
+    if (first < last) {
+      std::fill(depth.begin() + first, depth.begin() + last, 0.0f);
+      std::fill(out.layer.image.row(begin), out.layer.image.row(begin) + (last - first), Pixel{});
     }
+    for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
   });
   const ContentStats stats = sum(band_stats);
   out.stats.pixels_written = stats.pixels_written;

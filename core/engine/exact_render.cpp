@@ -94,10 +94,11 @@ PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose
 PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& content, Layer& texture,
                                  const PlanePose& pose, const ConvexPolygon& texels,
                                  const ViewPolygon& clipped, Sampling sampling,
-                                 std::int64_t* pixels_written, double* model_work) {
+                                 std::int64_t* pixels_written, double* model_work, Image* memory) {
   if (content_is_lit(content)) {
     ContentStats stats;
-    PlacedLayer placed = render_clipped_content(camera, content, pose, texels, clipped, &stats);
+    PlacedLayer placed =
+        render_clipped_content(camera, content, pose, texels, clipped, &stats, memory);
     *pixels_written += stats.pixels_written;
     *model_work += stats.work_units * content_unit_cost(content.kind);
     return placed;
@@ -111,8 +112,12 @@ PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& conte
 
 PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
                                    const PlanePose& pose, const ConvexPolygon& texels,
-                                   const ViewPolygon& clipped, ContentStats* stats) {
+                                   const ViewPolygon& clipped, ContentStats* stats, Image* memory) {
   WarpedLayer w;
+  if (memory) {
+    w.layer.image = std::move(*memory);
+    *memory = Image();
+  }
   const ContentStats s =
       render_content(content, camera, pose, texels, project_to_pixels(camera, clipped), w);
   if (stats) *stats = s;

@@ -58,20 +58,25 @@ PlacedLayer render_clipped(const Camera& camera, Layer& texture, const PlanePose
 // The exact image of the clipped part of a plane (as render_clipped) drawn from a lit content:
 // texels inside `texels` (the valid region, texels of pose.texture_size) where the view
 // meets the plane in front of the eye. `stats` if non-null receives the render's counts.
-// Preconditions: content lit (content_is_lit), clipped not empty and at Z > 0.
+// `memory` if non-null is an image whose memory the layer takes (a layer of the last frame:
+// no allocation when it is large enough); it is left empty. Preconditions: content lit
+// (content_is_lit), clipped not empty and at Z > 0.
 PlacedLayer render_clipped_content(const Camera& camera, const LayerContent& content,
                                    const PlanePose& pose, const ConvexPolygon& texels,
-                                   const ViewPolygon& clipped, ContentStats* stats = nullptr);
+                                   const ViewPolygon& clipped, ContentStats* stats = nullptr,
+                                   Image* memory = nullptr);
 
 // The exact image of a clipped part of a plane from whatever `content` draws: a texture by
 // render_clipped (of `texture`, whose valid polygon is `texels` in texels of the texture),
 // a lit content by render_clipped_content. Adds the pixels written to *pixels_written and
 // the work in the cost model (a texture's pixels at kPerspectiveWarpCost, a lit content's
 // work units at content_unit_cost) to *model_work. Throws std::invalid_argument as
-// render_clipped. Preconditions as render_clipped's.
+// render_clipped. `memory` as render_clipped_content's (a lit content's layer only; a
+// texture's warp leaves it as it is). Preconditions as render_clipped's.
 PlacedLayer render_clipped_piece(const Camera& camera, const LayerContent& content, Layer& texture,
                                  const PlanePose& pose, const ConvexPolygon& texels,
                                  const ViewPolygon& clipped, Sampling sampling,
-                                 std::int64_t* pixels_written, double* model_work);
+                                 std::int64_t* pixels_written, double* model_work,
+                                 Image* memory = nullptr);
 
 }  // namespace oflab

@@ -21,15 +21,15 @@ double signed_area(const std::vector<Vec2>& v) {
   return 0.5 * twice;
 }
 
-// Removes neighbours (cyclically) that coincide exactly.
+// Removes neighbours (cyclically) that coincide exactly, in place (every clip and transform
+// of a polygon passes here: no second vector).
 void drop_duplicate_neighbours(std::vector<Vec2>& v) {
-  std::vector<Vec2> out;
-  out.reserve(v.size());
-  for (const Vec2& p : v) {
-    if (out.empty() || out.back() != p) out.push_back(p);
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (kept == 0 || v[kept - 1] != v[k]) v[kept++] = v[k];
   }
-  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
-  v.swap(out);
+  v.resize(kept);
+  while (v.size() > 1 && v.front() == v.back()) v.pop_back();
 }
 
 bool finite(const Vec2& p) { return std::isfinite(p.x) && std::isfinite(p.y); }

@@ -16,10 +16,38 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include "image/polygon.h"
 
 namespace oflab {
+
+// Defined here, with crossing and next below, so that the per-row loops of the callers
+// inline them (they run for every row of every polygon drawn).
+namespace scan_detail {
+
+// A coordinate within rounding of a pixel centre (kTieTolerance, relative to its size) is
+// taken as on the centre. Two polygons sharing an edge compute it from their own vertices
+// (clipped, transformed), which may differ in the last bits: on an edge through a pixel
+// centre one could round the crossing up and the other down, and then neither would
+// cover the centre. On the centre exactly, the half-open rule gives it to exactly one.
+inline constexpr double kTieTolerance = 1e-9;
+
+inline double snapped_to_centre(double t) {
+  const double centre = std::floor(t) + 0.5;
+  return std::abs(t - centre) <= kTieTolerance * std::max(1.0, std::abs(t)) ? centre : t;
+}
+
+// First integer n with n + 0.5 >= t (t snapped to a centre within rounding), clamped to
+// [lo, hi] before conversion to int, so that huge or infinite coordinates cannot overflow.
+inline int first_centre_at_or_after(double t, int lo, int hi) {
+  const double n = std::ceil(snapped_to_centre(t) - 0.5);
+  if (!(n > lo)) return lo;  // also catches NaN
+  if (n >= hi) return hi;
+  return static_cast<int>(n);
+}
+
+}  // namespace scan_detail
 
 // One row's covered pixels: x in [x_begin, x_end) of row y (empty when x_begin >= x_end).
 struct PixelSpan {
@@ -70,5 +98,40 @@ class ScanConverter {
   Chain left_;
   Chain right_;
 };
+
+// Inline definitions (see the top of the file).
+
+inline double ScanConverter::crossing(Chain& chain, double y) const {
+  // Advance past every vertex at or above the row centre: the current edge then runs
+  // from a vertex with p.y <= y to one with q.y > y (half-open edges, horizontal edges
+  // skipped), so the interpolation parameter is in [0, 1).
+  // The vertex after v along the chain (a wrap, not a division: this runs for every row).
+  const auto after = [&](int v) {
+    const int n = v + chain.step;
+    return n < 0 ? n + count_ : (n >= count_ ? n - count_ : n);
+  };
+  for (;;) {
+    const int next = after(chain.vertex);
+    if (chain.vertex == bottom_ || vertices_[next].y > y) break;
+    chain.vertex = next;
+  }
+  const Vec2& p = vertices_[chain.vertex];
+  const Vec2& q = vertices_[after(chain.vertex)];
+  if (!(q.y > p.y)) return p.x;
+  const double t = (y - p.y) / (q.y - p.y);
+  return p.x + t * (q.x - p.x);
+}
+
+inline bool ScanConverter::next(PixelSpan& span) {
+  if (row_ >= end_row_) return false;
+  const double yc = row_ + 0.5;
+  const double a = crossing(left_, yc);
+  const double b = crossing(right_, yc);
+  span.y = row_;
+  span.x_begin = scan_detail::first_centre_at_or_after(std::min(a, b), 0, clip_width_);
+  span.x_end = scan_detail::first_centre_at_or_after(std::max(a, b), 0, clip_width_);
+  ++row_;
+  return true;
+}
 
 }  // namespace oflab

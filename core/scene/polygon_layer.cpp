@@ -73,14 +73,16 @@ std::vector<std::unique_ptr<PolygonLayer>> make_polygon_layers(const Scene& scen
 void SceneEngine::render_clipped(int index, const ViewerPose& view, AnimationFrame& tally) {
   PolygonLayer& s = *states_[index];
   const ScenePolygon& polygon = scene_.polygons[index];
+  // The last frame's layer lends its memory to a lit content's render.
+  Image memory = std::move(s.clipped_layer.layer.image);
   s.clipped_layer = PlacedLayer{};
   const LayerContent content = polygon_content(index);
   try {
     const PlanePose pose = polygon_pose(polygon, view, s.texture_size);
-    s.clipped_layer =
-        render_clipped_piece(camera_, content, scratch_textures_[polygon.texture], pose,
-                             texel_polygon(s.uv, s.texture_size), s.clipped,
-                             settings_.engine.sampling, &tally.pixels_written, &tally.model_work);
+    s.clipped_layer = render_clipped_piece(camera_, content, scratch_textures_[polygon.texture],
+                                           pose, texel_polygon(s.uv, s.texture_size), s.clipped,
+                                           settings_.engine.sampling, &tally.pixels_written,
+                                           &tally.model_work, &memory);
   } catch (const std::invalid_argument&) {
     // A sliver beyond the warps' fixed-point range: drawn as nothing this frame.
   }

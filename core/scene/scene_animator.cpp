@@ -395,16 +395,20 @@ void SceneEngine::tally_hidden_and_stale(AnimationFrame& report) {
 
 void SceneEngine::compose(AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
-  frame_.fill(Pixel{});
+  // Cleared as it is composited: each pixel is stored about once, not cleared and then
+  // stored again (the same bytes as a fill first).
+  lazy_clear_.start(frame_.height());
   for (int f : order_) {
     if (!fragment_drawn_[f]) continue;
     const int p = fragments[f].polygon;
     const PlacedLayer* shown = states_[p]->shown(statuses_[p]);
     report.pixels_composited +=
-        states_[p]->whole ? composite_over(frame_, shown->layer, shown->offset_x, shown->offset_y)
-                          : composite_over_region(frame_, shown->layer, shown->offset_x,
-                                                  shown->offset_y, fragment_regions_[f]);
+        states_[p]->whole
+            ? composite_over(frame_, shown->layer, shown->offset_x, shown->offset_y, &lazy_clear_)
+            : composite_over_region(frame_, shown->layer, shown->offset_x, shown->offset_y,
+                                    fragment_regions_[f], &lazy_clear_);
   }
+  lazy_clear_.finish(frame_);
 }
 
 std::vector<LayerOutline> SceneEngine::outlines(const ViewerPose& view) const {

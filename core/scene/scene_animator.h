@@ -81,6 +81,7 @@
 
 #include "engine/animator.h"
 #include "engine/engine.h"
+#include "image/composite.h"
 #include "scene/bsp_tree.h"
 #include "scene/cache_nodes.h"
 #include "scene/depth_mesh.h"
@@ -290,6 +291,7 @@ class SceneEngine {
   PixelRows shown_pixels_;
   BudgetLedger ledger_;
   Image frame_;
+  LazyClear lazy_clear_;  // the frame's rows cleared so far by compose
   int frame_index_ = 0;
   // Today's reprojection: the stabilization plane in world coordinates (at_infinity: m = 0),
   // and the last render of the depth-reprojection policy with its depth and viewer.

@@ -26,6 +26,16 @@ ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
   return b.empty() ? ConvexPolygon() : a;
 }
 
+// The time greedy list scheduling takes to run costs[first..] (dearest first) on `threads`
+// threads, each next update on the thread free first: how for_each_band hands out bands.
+double makespan(const std::vector<double>& costs, std::size_t first, int threads) {
+  std::vector<double> load(static_cast<std::size_t>(std::max(threads, 1)), 0.0);
+  for (std::size_t k = first; k < costs.size(); ++k) {
+    *std::min_element(load.begin(), load.end()) += costs[k];
+  }
+  return *std::max_element(load.begin(), load.end());
+}
+
 }  // namespace
 
 void SceneEngine::update_front_to_back(const ViewerPose& current, AnimationFrame& report) {
@@ -145,8 +155,22 @@ void SceneEngine::run_wave(const ViewerPose& current, AnimationFrame& report) {
     std::vector<double> cost(polygons.size());
     for (std::size_t k = 0; k < polygons.size(); ++k) cost[k] = update_cost(polygons[k]);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
-    for_each_band(count, 1, [&](int, int begin, int end) {
-      for (int k = begin; k < end; ++k)
+    std::vector<double> sorted(polygons.size());
+    for (std::size_t k = 0; k < sorted.size(); ++k) sorted[k] = cost[order[k]];
+    // The dearest update first alone, every thread in its own loops, then the rest side by
+    // side, when that ends sooner than all side by side: a layer far dearer than the others
+    // (a near facade re-rendered while the street turns) kept one thread busy while the other
+    // waited. Either way each update writes the same bytes. Its own loops are taken to gain
+    // three quarters of a thread per thread added (a lit render's bands are not all equal).
+    const int threads = worker_threads();
+    const double alone_time = sorted[0] / (1.0 + 0.75 * (threads - 1));
+    int alone = 0;
+    if (threads > 1 && alone_time + makespan(sorted, 1, threads) < makespan(sorted, 0, threads)) {
+      update_polygon(polygons[order[0]], current, updates[order[0]]);
+      alone = 1;
+    }
+    for_each_band(count - alone, 1, [&](int, int begin, int end) {
+      for (int k = begin + alone; k < end + alone; ++k)
         update_polygon(polygons[order[k]], current, updates[order[k]]);
     });
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "image/thread_pool.h"
 #include "warp_reference.h"
 
 namespace oflab {
@@ -113,6 +114,54 @@ TEST(Composite, RegionsThatSplitTheFrameCompositeEachPixelOnce) {
               0);
     EXPECT_TRUE(untouched.pixels() == before.pixels());
   }
+}
+
+// A frame cleared as it is composited (LazyClear) holds the bytes of a frame cleared first and
+// then composited over, whatever its pixels held before start: layers in random order, some
+// whole and some restricted to a region, overlapping, apart on a row (the gap is cleared) or
+// missing rows (finish clears them), on 1 and on 2 threads. Negative control: without
+// finish, the old pixels show where no layer reached.
+TEST(Composite, FrameClearedAsItIsCompositedEqualsClearedFirst) {
+  std::mt19937 rng(10);
+  std::uniform_int_distribution<int> offset(-20, 60);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int garbage_seen = 0;
+  for (const int threads : {1, 2}) {
+    set_worker_threads(threads);
+    for (int k = 0; k < 60; ++k) {
+      const int layers = 1 + k % 5;
+      Image reference(64, 48);  // cleared first (Pixel{})
+      Image lazy = testing::random_image(rng, 64, 48);
+      LazyClear clear;
+      clear.start(lazy.height());
+      std::int64_t reference_count = 0, lazy_count = 0;
+      for (int n = 0; n < layers; ++n) {
+        const int w = 2 + static_cast<int>(unit(rng) * 40.0);
+        const int h = 2 + static_cast<int>(unit(rng) * 30.0);
+        Image pixels = testing::random_image(rng, w, h);
+        if (n % 2 == 1) {
+          for (Pixel& p : pixels.pixels()) p.a = 255;  // opaque, as most scene layers are
+        }
+        const Layer layer = make_layer(pixels, testing::random_polygon(rng, w, h));
+        const int ox = offset(rng), oy = offset(rng);
+        if (unit(rng) < 0.5) {
+          reference_count += composite_over(reference, layer, ox, oy);
+          lazy_count += composite_over(lazy, layer, ox, oy, &clear);
+        } else {
+          const ConvexPolygon region = testing::random_polygon(rng, 64, 48);
+          reference_count += composite_over_region(reference, layer, ox, oy, region);
+          lazy_count += composite_over_region(lazy, layer, ox, oy, region, &clear);
+        }
+      }
+      EXPECT_EQ(lazy_count, reference_count) << "case " << k;
+      Image unfinished = lazy;
+      clear.finish(lazy);
+      ASSERT_TRUE(lazy.pixels() == reference.pixels()) << "case " << k << ", threads " << threads;
+      garbage_seen += unfinished.pixels() != reference.pixels();
+    }
+  }
+  set_worker_threads(1);
+  EXPECT_GT(garbage_seen, 100);  // the control: the old pixels were there to be cleared
 }
 
 TEST(Composite, EmptyLayersAndFramesAndFarOffsetsChangeNothing) {
