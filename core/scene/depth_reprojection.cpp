@@ -426,10 +426,7 @@ void plan_splat_rows(const DepthFrame& depth, const Camera& camera, const RigidS
         box = PixelBox{};
         continue;
       }
-      plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
-                              ? box.y_begin
-                              : std::min(plan.row_first[j], box.y_begin);
-      plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+      splat::reach_rows(box, plan.row_first[j], plan.row_last[j]);
     }
   }
 }

@@ -234,10 +234,7 @@ void plan_splat_rows(const DepthFrame& depth, const CornerMove& move, int begin,
           box = PixelBox{};
           continue;
         }
-        plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
-                                ? box.y_begin
-                                : std::min(plan.row_first[j], box.y_begin);
-        plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+        splat::reach_rows(box, plan.row_first[j], plan.row_last[j]);
         continue;
       }
       const bool shared = lattice_footprint(depth, lattice, i, j, s, p, moved);
@@ -255,10 +252,7 @@ void plan_splat_rows(const DepthFrame& depth, const CornerMove& move, int begin,
         box = PixelBox{};
         continue;
       }
-      plan.row_first[j] = plan.row_last[j] < plan.row_first[j]
-                              ? box.y_begin
-                              : std::min(plan.row_first[j], box.y_begin);
-      plan.row_last[j] = std::max(plan.row_last[j], box.y_end);
+      splat::reach_rows(box, plan.row_first[j], plan.row_last[j]);
     }
   }
 }
@@ -389,18 +383,13 @@ std::int64_t mask_rows(int width, int height, int begin, int end, GeneratedFrame
 }
 
 // The largest, the sum and the count of the displacement errors of some pixels.
-struct ErrorTally {
-  double max = 0.0, sum = 0.0;
-  std::int64_t surfaces = 0;
-};
-
 // The displacement error (against the true step) of the pixels of target rows [begin, end)
 // that show a surface: their largest, sum and count.
-ErrorTally measure_error_rows(const DepthFrame& depth, const PixelDirections& directions,
-                              const Camera& camera, const RigidStep3& truth,
-                              const GeneratedFrame& g, int begin, int end) {
+splat::ErrorTally measure_error_rows(const DepthFrame& depth, const PixelDirections& directions,
+                                     const Camera& camera, const RigidStep3& truth,
+                                     const GeneratedFrame& g, int begin, int end) {
   const int width = depth.width;
-  ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
+  splat::ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
   for (int y = begin; y < end; ++y) {
     for (int x = 0; x < width; ++x) {
       const int s = g.source[static_cast<std::size_t>(y) * width + x];
@@ -493,7 +482,7 @@ void measure_generated_frame(const DepthFrame& depth, const Camera& camera, cons
   const int min_rows = min_band_rows(depth.width);
   const std::size_t bands = static_cast<std::size_t>(band_count(depth.height, min_rows));
   std::vector<std::int64_t> holes(bands, 0);
-  std::vector<ErrorTally> errors(bands);
+  std::vector<splat::ErrorTally> errors(bands);
   for_each_band(depth.height, min_rows, [&](int band, int begin, int end) {
     std::int64_t seen = 0;  // summed here: the bands' slots share cache lines
     for (std::size_t d = static_cast<std::size_t>(begin) * depth.width;
@@ -506,15 +495,8 @@ void measure_generated_frame(const DepthFrame& depth, const Camera& camera, cons
   g.hole_pixels = 0;
   g.max_error_px = 0.0;
   g.mean_error_px = 0.0;
-  double total = 0.0;
-  std::int64_t count = 0;
-  for (std::size_t b = 0; b < bands; ++b) {
-    g.hole_pixels += holes[b];
-    g.max_error_px = std::max(g.max_error_px, errors[b].max);
-    total += errors[b].sum;
-    count += errors[b].surfaces;
-  }
-  if (count > 0) g.mean_error_px = total / static_cast<double>(count);
+  for (std::size_t b = 0; b < bands; ++b) g.hole_pixels += holes[b];
+  splat::add_error_bands(errors, &g.max_error_px, &g.mean_error_px);
 }
 
 }  // namespace oflab

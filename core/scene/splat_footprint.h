@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -117,6 +118,32 @@ bool move_footprint(const CornerLattice& lattice, const DepthFrame& depth, int i
 struct PixelBox {
   int x_begin = 0, x_end = -1, y_begin = 0, y_end = -1;
 };
+
+// Widens the target rows [first, last] a source row's splats reach (last < first: none yet)
+// by `box`'s rows.
+inline void reach_rows(const PixelBox& box, int& first, int& last) {
+  first = last < first ? box.y_begin : std::min(first, box.y_begin);
+  last = std::max(last, box.y_end);
+}
+
+// The per-pixel errors of one band of rows (pixels): the largest, their sum and how many.
+struct ErrorTally {
+  double max = 0.0, sum = 0.0;
+  std::int64_t surfaces = 0;
+};
+
+// The bands' tallies taken in band order: *max_px becomes the largest of it and theirs, and
+// *mean_px the mean over every pixel counted (left as it is when none was).
+inline void add_error_bands(const std::vector<ErrorTally>& bands, double* max_px, double* mean_px) {
+  double total = 0.0;
+  std::int64_t count = 0;
+  for (const ErrorTally& b : bands) {
+    *max_px = std::max(*max_px, b.max);
+    total += b.sum;
+    count += b.surfaces;
+  }
+  if (count > 0) *mean_px = total / static_cast<double>(count);
+}
 
 // The pixels of a width x height frame whose centres the bounding box of footprint q holds;
 // false when there are none or more than kMaxBoxPixels.

@@ -48,18 +48,13 @@ int merged_choice(int sa, int sb, const DepthFrame& da, const DepthFrame& db,
 int min_band_rows(int width) { return std::max(4, 16384 / std::max(width, 1)); }
 
 // The largest, the sum and the count of the displacement errors of some pixels.
-struct ErrorTally {
-  double max = 0.0, sum = 0.0;
-  std::int64_t surfaces = 0;
-};
-
 // The per-pixel error of f (see the header) over the pixels of rows [begin, end) showing a
 // surface.
-ErrorTally measure_error_rows(const RenderedView& earlier, const RenderedView& later,
-                              const splat::PixelDirections& directions, const Camera& camera,
-                              const InterpolatedFrame& f, int begin, int end) {
+splat::ErrorTally measure_error_rows(const RenderedView& earlier, const RenderedView& later,
+                                     const splat::PixelDirections& directions, const Camera& camera,
+                                     const InterpolatedFrame& f, int begin, int end) {
   const int width = camera.width;
-  ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
+  splat::ErrorTally t;  // kept here, not in the caller's per-band slots: those share cache lines
   for (int y = begin; y < end; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t d = static_cast<std::size_t>(y) * width + x;
@@ -142,21 +137,14 @@ InterpolatedFrame interpolate_views(const RenderedView& earlier, const RenderedV
   const int min_rows = min_band_rows(width);
   const std::size_t bands = static_cast<std::size_t>(band_count(height, min_rows));
   std::vector<std::int64_t> holes(bands, 0);
-  std::vector<ErrorTally> errors(bands);
+  std::vector<splat::ErrorTally> errors(bands);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
     holes[band] = merge_rows(a, b, earlier, later, planes_a, planes_b, table, t > 0.5, now, width,
                              begin, end, f);
     errors[band] = measure_error_rows(earlier, later, table, camera, f, begin, end);
   });
-  double total = 0.0;
-  std::int64_t count = 0;
-  for (std::size_t k = 0; k < bands; ++k) {
-    f.hole_pixels += holes[k];
-    f.max_error_px = std::max(f.max_error_px, errors[k].max);
-    total += errors[k].sum;
-    count += errors[k].surfaces;
-  }
-  if (count > 0) f.mean_error_px = total / static_cast<double>(count);
+  for (std::size_t k = 0; k < bands; ++k) f.hole_pixels += holes[k];
+  splat::add_error_bands(errors, &f.max_error_px, &f.mean_error_px);
   return f;
 }
 
