@@ -1,6 +1,6 @@
 // SSIM (core/image/image_compare.h) against an independent computation: the 11 x 11 window's
 // weights built in two dimensions and every statistic summed directly at each position, and the
-// closed form of two flat images.
+// closed form of two flat images. PSNR against its definition summed pixel by pixel in double.
 #include "image/image_compare.h"
 
 #include <gtest/gtest.h>
@@ -80,6 +80,51 @@ TEST(Ssim, EqualsTheDirectSumOfWangEtAlsDefinition) {
     EXPECT_LT(s, 0.95);
     EXPECT_NEAR(mean_ssim(a, a), 1.0, 1e-12);
   }
+}
+
+// PSNR's definition pixel by pixel in double: the four channels' squared differences over the
+// pixels where either image is not fully transparent.
+double direct_psnr(const Image& a, const Image& b) {
+  double sum = 0.0, count = 0.0;
+  for (int y = 0; y < a.height(); ++y) {
+    for (int x = 0; x < a.width(); ++x) {
+      const Pixel p = a.at(x, y), q = b.at(x, y);
+      if (p.a == 0 && q.a == 0) continue;
+      for (const auto c : {&Pixel::r, &Pixel::g, &Pixel::b, &Pixel::a}) {
+        const double d = double(p.*c) - double(q.*c);
+        sum += d * d;
+        count += 1.0;
+      }
+    }
+  }
+  return count == 0.0 || sum == 0.0 ? kIdenticalPsnrDb
+                                    : 10.0 * std::log10(255.0 * 255.0 * count / sum);
+}
+
+TEST(Psnr, EqualsTheDefinitionSummedPixelByPixel) {
+  std::mt19937 rng(5);
+  for (const auto& [w, h] : {std::pair{37, 29}, std::pair{64, 48}, std::pair{1, 1}}) {
+    Image a = random_image(rng, w, h);
+    Image b = a;
+    int k = 0;
+    for (Pixel& p : b.pixels()) {  // every third pixel changed, every fifth transparent in both
+      if (k % 3 == 0) p.r = static_cast<std::uint8_t>(rng() % 256);
+      if (k % 5 == 0) {
+        p = Pixel{static_cast<std::uint8_t>(rng() % 256), 7, 9, 0};  // colour, no coverage
+        a.pixels()[std::size_t(k)].a = 0;
+      }
+      ++k;
+    }
+    EXPECT_DOUBLE_EQ(psnr_db(a, b), direct_psnr(a, b)) << w << "x" << h;
+    // Control: covering the transparent pixels brings their colours into the sum.
+    Image c = b;
+    for (Pixel& p : c.pixels()) p.a = std::max<std::uint8_t>(p.a, 1);
+    if (w > 1) EXPECT_NE(psnr_db(a, c), psnr_db(a, b)) << w << "x" << h;
+    EXPECT_EQ(psnr_db(a, a), kIdenticalPsnrDb);
+    EXPECT_EQ(psnr_db(a, Image(a)), kIdenticalPsnrDb);
+  }
+  EXPECT_EQ(psnr_db(Image(4, 4), Image(4, 4)), kIdenticalPsnrDb);  // both empty
+  EXPECT_THROW(psnr_db(Image(4, 4), Image(4, 5)), std::invalid_argument);
 }
 
 TEST(Ssim, TwoFlatImagesScoreTheLuminanceTermAlone) {
