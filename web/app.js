@@ -91,6 +91,7 @@ function syncControls() {
   $('basis-kind').value = s.basis.kind;
   if (app.views.flow) app.views.flow.syncControls(s);
   if (app.explorer) app.explorer.syncControls(s);
+  if (app.views.analysis) app.views.analysis.syncControls(s);
   syncPoseControls(s);
   syncFrame();
 }
@@ -299,8 +300,9 @@ function fillScriptPicker() {
 
 // Options from the URL: view=flow|world|basis|animation|analysis|slices, script=NAME,
 // source=KIND:NAME:VIEWER (the animation's source, e.g. scene:street:walk), frame=N,
-// lesson=NAME, step=K, presentation, explorer (the basis view's explorer); applied over the
-// default state (the screenshot tests use them).
+// lesson=NAME, step=K, presentation, explorer (the basis view's explorer), display=NAME (the
+// animation's display: comparison makes the analysis view chart the compared policies);
+// applied over the default state (the screenshot tests use them).
 function applyUrlOptions(params) {
   if (params.has('lesson')) {
     startLesson(params.get('lesson'));
@@ -316,6 +318,7 @@ function applyUrlOptions(params) {
     }
     if (params.has('presentation')) s.presentation = true;
     if (params.has('explorer')) s.basis.explorer = true;
+    if (params.has('display')) s.animation.display = params.get('display');
   }, 'the page address');
   if (params.has('frame')) seek(Number(params.get('frame')));
 }

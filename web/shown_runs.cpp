@@ -1,11 +1,13 @@
 #include "shown_runs.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/reuse_policy.h"
 #include "player/lab.h"
 #include "player/policy_comparison.h"
 #include "player/run_player.h"
+#include "state/window_state.h"
 
 namespace oflab {
 namespace {
@@ -116,29 +118,49 @@ std::string analysis_history_json(Lab& lab, int frames) {
                 {"time_ms", time_ms},
                 {"model_work", work}};
   };
+  const auto finite_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(); };
+  // The desktop's rule (gui/views/analysis_view.cpp): the compared runs while the animation
+  // view shows its comparison layout, else the model's one engine.
+  const std::vector<ComparedRun>& compared = lab.comparison().runs();
+  const bool comparing = lab.state().display == PanelDisplay::kComparison && !compared.empty();
   json runs = json::array();
-  for (const ComparedRun& run : lab.comparison().runs()) {
-    if (!run.problem.empty()) return json{{"problem", run.problem}}.dump();
-    json list = json::array();
-    for (const ComparedFrame& f : run.history) {
-      if (f.frame >= first && f.frame <= now) {
-        list.push_back(frame_json(f.frame, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms,
-                                  f.model_work));
+  json result = {{"first", first}, {"last", now}, {"comparing", comparing}};
+  if (comparing) {
+    for (const ComparedRun& run : compared) {
+      if (!run.problem.empty()) return json{{"problem", run.problem}}.dump();
+      json list = json::array();
+      for (const ComparedFrame& f : run.history) {
+        if (f.frame >= first && f.frame <= now) {
+          list.push_back(frame_json(f.frame, f.levels, f.drawn(), f.max_measured_error_px,
+                                    f.time_ms, f.model_work));
+        }
       }
+      runs.push_back({{"policy", run.policy->name}, {"frames", list}});
     }
-    runs.push_back({{"policy", run.policy->name}, {"frames", list}});
-  }
-  if (runs.empty()) {
+  } else {
     const std::vector<AnimationFrame>& history = lab.run().history();
     json list = json::array();
     for (int k = first; k <= now && k < int(history.size()); ++k) {
       const AnimationFrame& f = history[std::size_t(k)];
-      list.push_back(
-          frame_json(k, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms, f.model_work));
+      json item =
+          frame_json(k, f.levels, f.drawn(), f.max_measured_error_px, f.time_ms, f.model_work);
+      item["approximated_percent"] = f.drawn() > 0 ? json(approximated_percent(f)) : json();
+      json budgets = json::array();
+      for (int level = 0; level < kTermCount; ++level) {
+        budgets.push_back(finite_or_null(level_budget_at(f, level)));
+      }
+      item["budgets"] = budgets;
+      list.push_back(item);
     }
-    runs.push_back({{"policy", lab.run().source().kind}, {"frames", list}});
+    const EngineSettings& settings = lab.run().settings();
+    // A source kind without a reuse policy (scene shifting) is named by its kind.
+    runs.push_back(
+        {{"policy", compared.empty() ? lab.run().source().kind : settings.policy->name},
+         {"frames", list}});
+    result["thresholds"] = settings.thresholds;
   }
-  return json{{"first", first}, {"last", now}, {"runs", runs}}.dump();
+  result["runs"] = runs;
+  return result.dump();
 }
 
 }  // namespace oflab

@@ -144,13 +144,17 @@ class WebSession {
   // largest difference from the exact frame and the PSNR against it, the outlines of the
   // shown layers (frame pixels). Panel sizes are clamped to 1 .. 4096.
   std::string update_comparison(int panel_width, int panel_height);
-  // The analysis charts' history: per compared run (or the source's own run when its kind
-  // has no reuse policy), frames max(0, now - frames + 1) .. now of the current pass as
-  // {"first", "last", "runs": [{"policy", "frames": [{"frame", "levels": [drawn layers per
-  // level, the levels' order], "error_px": largest measured error (null: nothing drawn),
-  // "time_ms": the frame's wall time in this page, "model_work": the engine's cost model
-  // (perspective-warp pixels, AnimationFrame::model_work)}]}]}, or {"problem": why not}.
-  // `frames` is clamped to 1 .. 1000.
+  // The analysis charts' history, by the desktop's rule: while the state's display is the
+  // comparison layout ("comparing": true), per compared run; otherwise the model's one engine
+  // (its policy, or the source's kind when the kind has no reuse policy), with "thresholds"
+  // (pixels, none .. perspective). Frames max(0, now - frames + 1) .. now of the current pass
+  // as {"first", "last", "comparing", "runs": [{"policy", "frames": [{"frame", "levels":
+  // [drawn layers per level, the levels' order], "error_px": largest measured error (null:
+  // nothing drawn), "time_ms": the frame's wall time in this page, "model_work": the engine's
+  // cost model (perspective-warp pixels, AnimationFrame::model_work)}, and for the one engine
+  // "approximated_percent" (null: nothing drawn) and "budgets": per level none .. perspective
+  // the error it would leave (session/player/run_player.h level_budget_at; null where
+  // undefined)]}]}, or {"problem": why not}. `frames` is clamped to 1 .. 1000.
   std::string analysis_json(int frames);
   int run_count();
   const WebPanel& run(int index) const { return panels_.at(static_cast<std::size_t>(index)); }

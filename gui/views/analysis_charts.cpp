@@ -9,6 +9,7 @@
 
 #include "display/palette.h"
 #include "models/animation_model.h"
+#include "player/run_player.h"
 
 namespace oflab {
 namespace {
@@ -214,16 +215,10 @@ void draw_levels(QPainter& p, const ChartFrame& f, const QColor& text) {
   }
 }
 
-// Level L's budget: the error the level would leave at each frame (the carried books plus
-// this frame's flow over the terms it neglects, core/engine/decision.h neglected_error, the
-// quantity choose_level tests against thresholds[L]); NaN for frame 0 and for frames that
-// did not update exactly one layer or drew nothing.
+// Level L's budget: the error the level would leave at each frame (level_budget_at,
+// session/player/run_player.h).
 Series level_budget(int level) {
-  return drawn_only([level](const AnimationFrame& r) {
-    if (r.layer_reports.size() != 1 || r.frame == 0) return std::nan("");
-    const FrameReport& books = r.layer_reports.front();
-    return neglected_error(books.carried, books.flow, Level(level));
-  });
+  return [level](const AnimationFrame& r) { return level_budget_at(r, level); };
 }
 
 // Level L's budget chart: the error it would leave against its threshold, and the measured
@@ -466,10 +461,6 @@ std::vector<QRect> chart_areas(const QRect& rect, const QFontMetrics& fm, bool c
           in_column(1, row_1, small), in_column(0, row_3, big),
           in_column(1, row_3, big),   in_column(0, row_4, big),
           in_column(1, row_4, big)};
-}
-
-double level_budget_at(const AnimationFrame& record, int level) {
-  return level_budget(level)(record);
 }
 
 void paint_engine_charts(QPainter& p, const std::vector<ChartFrame>& charts,

@@ -2,7 +2,7 @@
 // goes in the charts widget, the frame axis they share, and the two sets of charts drawn on
 // them. The engine's: its frame time, its layers per level (stacked, in the level colours,
 // with their key), the percent approximated and, for each cheaper level, the error it would
-// leave (level_budget_at) against its dashed threshold beside the measured error. The
+// leave (level_budget_at, session/player/run_player.h) against its dashed threshold beside the measured error. The
 // comparison's: one line per compared policy (largest measured error, frame time, work in the
 // cost model) in the policy's colour with a key, then one band of levels per policy and each
 // policy's share of layer-frames per level. A frame whose plane is not drawn leaves a gap in
@@ -87,12 +87,6 @@ struct ValueScale {
 constexpr double kLogScaleRatio = 10.0;
 constexpr double kLogScaleBottom = 0.01;
 ValueScale series_scale(const std::vector<double>& largest, double floor);
-
-// The error level `level` (0 none .. 3 perspective) would leave at `record`, pixels: the
-// carried books plus this frame's flow over the terms it neglects (core/engine/decision.h
-// neglected_error, the quantity choose_level tests against thresholds[level]); NaN for frame
-// 0 and for frames that did not update exactly one layer or drew nothing.
-double level_budget_at(const AnimationFrame& record, int level);
 
 // The engine's charts on `charts` (the seven areas of chart_areas, not comparing; one x
 // axis), the budgets against `settings`' thresholds, texts and lines in `text`.

@@ -1,5 +1,8 @@
 #include "player/run_player.h"
 
+#include <cmath>
+
+#include "engine/decision.h"
 #include "player/plane_panel.h"
 #include "player/stage_times.h"
 #include "state/window_state.h"
@@ -11,6 +14,14 @@ double approximated_percent(const AnimationFrame& frame) {
   if (drawn == 0) return 0.0;
   const int rerendered = frame.levels[static_cast<size_t>(Level::kRerender)];
   return 100.0 * (drawn - rerendered) / drawn;
+}
+
+double level_budget_at(const AnimationFrame& record, int level) {
+  if (record.drawn() == 0 || record.layer_reports.size() != 1 || record.frame == 0) {
+    return std::nan("");
+  }
+  const FrameReport& books = record.layer_reports.front();
+  return neglected_error(books.carried, books.flow, Level(level));
 }
 
 RunPlayer::RunPlayer(PlanePanel* panel) : panel_(panel) {}

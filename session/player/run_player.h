@@ -81,4 +81,11 @@ class RunPlayer {
 // Percent of the drawn layers of `frame` that were not re-rendered (0 when none is drawn).
 double approximated_percent(const AnimationFrame& frame);
 
+// The error level `level` (0 none .. 3 perspective) would leave at `record`, pixels: the
+// carried books plus this frame's flow over the terms it neglects (core/engine/decision.h
+// neglected_error, the quantity choose_level tests against thresholds[level]); NaN for frame
+// 0 and for frames that did not update exactly one layer or drew nothing. The analysis
+// view's budget charts, on the desktop and on the page.
+double level_budget_at(const AnimationFrame& record, int level);
+
 }  // namespace oflab

@@ -146,26 +146,82 @@ async function testWorldLabels({ browser, open, evaluate, check, drawnMarker }) 
 }
 
 // `oflab-cli animate --script NAME --mode POLICY`'s model_work column, one number per frame.
-function cliModelWork(cli, script, policy) {
+// `oflab-cli animate --script SCRIPT --mode POLICY`'s frames.csv as {columns: {name: [per
+// frame]}} (numbers, the level's name as text), or {error}.
+function cliFrames(cli, script, policy) {
   const dir = fs.mkdtempSync(path.join(require('os').tmpdir(), 'oflab-web-work-'));
   try {
     const r = spawnSync(cli, ['animate', '--script', script, '--mode', policy, '--out', path.join(dir, 'run'),
       '--quiet', '--no-warm-up', '--repeat-timing', '1'], { encoding: 'utf8' });
     if (r.status !== 0) return { error: r.stderr.trim() };
     const rows = fs.readFileSync(path.join(dir, 'run', 'frames.csv'), 'utf8').trim().split('\n');
-    const column = rows[0].split(',').indexOf('model_work');
-    return { work: rows.slice(1).map((row) => Number(row.split(',')[column])) };
+    const names = rows[0].split(',');
+    const columns = {};
+    names.forEach((name, c) => {
+      columns[name] = rows.slice(1).map((row) => (name === 'level' ? row.split(',')[c] : Number(row.split(',')[c])));
+    });
+    return { columns };
   } finally {
     fs.rmSync(dir, { recursive: true, force: true });
   }
 }
 
+function cliModelWork(cli, script, policy) {
+  const r = cliFrames(cli, script, policy);
+  return r.error ? r : { work: r.columns.model_work };
+}
+
+// The budget of level L (0 none .. 3 perspective) at frame k from the CLI's columns, computed
+// apart from core's function: the books carried into frame k (the accumulated errors after
+// frame k - 1, or after frame k with `after`, the negative control) plus frame k's flow,
+// summed over the terms L .. higher that the level neglects.
+function cliBudget(columns, k, level, after = false) {
+  const terms = ['translate', 'affine', 'perspective', 'higher'];
+  let sum = 0;
+  for (let t = level; t < 4; ++t) sum += columns[`err_${terms[t]}`][after ? k : k - 1] + columns[`flow_${terms[t]}`][k];
+  return sum;
+}
+
+// The engine's charts (the state's display not the comparison layout, as on the desktop):
+// each level's budget per frame equals the CLI's books and flow summed apart, the percent
+// approximated its level column; control: the books after the frame instead give other values.
+async function testEngineCharts({ browser, open, evaluate, check, drawnMarker, cli }) {
+  await open(browser, '?view=analysis&script=loop', drawnMarker);
+  const got = JSON.parse(await evaluate(browser, `(() => { seek(60); draw();
+    return JSON.stringify({ data: JSON.parse(app.session.analysisJson(80)), drawn: analysisView.drawn }); })()`));
+  const titles = (got.drawn || []).map((d) => d.title).join(' | ');
+  const run = got.data.runs && got.data.runs[0];
+  check('TheAnalysisViewDrawsTheEnginesBudgetCharts', !got.data.comparing && run && run.policy === 'perspective' &&
+    ['none', 'translate', 'affine', 'perspective'].every((l) => titles.includes(`${l}: error left`)) && /approximated/.test(titles), titles);
+  const cliRun = cliFrames(cli, 'loop', 'perspective');
+  if (cliRun.error || !run) { check('EachBudgetIsTheCliBooksPlusFlow', false, cliRun.error || 'no run'); return; }
+  const problems = [];
+  let compared = 0;
+  let controlDiffers = false;
+  for (const f of run.frames) {
+    const k = f.frame;
+    const rerender = cliRun.columns.level[k] === 'rerender';
+    if (f.approximated_percent !== (rerender ? 0 : 100)) problems.push(`frame ${k}: approximated ${f.approximated_percent}, level ${cliRun.columns.level[k]}`);
+    for (let level = 0; level < 4; ++level) {
+      const value = f.budgets[level];
+      if (k === 0) { if (value !== null) problems.push(`frame 0: budget ${value}, none expected`); continue; }
+      const want = cliBudget(cliRun.columns, k, level);
+      if (!(Math.abs(value - want) <= 1e-4 * Math.max(1, Math.abs(want)))) problems.push(`frame ${k} level ${level}: ${value}, the CLI's ${want}`);
+      if (Math.abs(value - cliBudget(cliRun.columns, k, level, true)) > 1e-3) controlDiffers = true;
+      ++compared;
+    }
+  }
+  check('EachBudgetIsTheCliBooksPlusFlow', problems.length === 0 && compared >= 4 * 60, problems.slice(0, 4).join('; ') || `${compared} budgets`);
+  check('NegativeControl_TheBooksAfterTheFrameDiffer', controlDiffers);
+}
+
 async function testAnalysisCharts({ browser, open, evaluate, check, drawnMarker, cli }) {
-  await open(browser, '?view=analysis&script=swing', drawnMarker);
+  await open(browser, '?view=analysis&script=swing&display=comparison', drawnMarker);
   const got = JSON.parse(await evaluate(browser, `(() => { seek(30); draw();
     return JSON.stringify({ data: JSON.parse(app.session.analysisJson(80)), drawn: analysisView.drawn }); })()`));
   const titles = (got.drawn || []).map((d) => d.title).join(' | ');
-  check('TheAnalysisViewDrawsTheErrorAndWorkCharts', /measured error/.test(titles) && /cost model/.test(titles) && got.data.runs.length >= 2, titles);
+  check('TheAnalysisViewDrawsTheErrorTimeAndWorkCharts', got.data.comparing && /measured error/.test(titles) && /frame time/.test(titles) &&
+    /cost model/.test(titles) && got.data.runs.length >= 2 && got.data.runs.every((r) => r.frames.every((f) => f.time_ms >= 0)), titles);
   const problems = [];
   for (const run of got.data.runs) {
     const cliRun = cliModelWork(cli, 'swing', run.policy);
@@ -181,4 +237,4 @@ async function testAnalysisCharts({ browser, open, evaluate, check, drawnMarker,
   check('NegativeControl_TwoPoliciesWorkDiffers', p && q && p.frames.some((f, k) => f.model_work !== q.frames[k].model_work));
 }
 
-module.exports = { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts };
+module.exports = { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts };

@@ -44,7 +44,7 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
-const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts } = require('./views_test');
+const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts } = require('./views_test');
 const { testRunCsv } = require('./exports_test');
 const { testFlowTexture, testWorldFrame } = require('./flow_texture_test');
 
@@ -599,17 +599,25 @@ async function testControls(browser) {
   check('TheSourcePickerPlaysSceneShifting', picked.played.source.kind === 'scene-shifting' && picked.played.source.viewer === 'train-sideways' &&
     picked.played.view === 'animation' && !picked.played.problem && picked.played.runs.join() === 'scene-shifting,rerender', JSON.stringify(picked.played));
   check('ASourceThatCannotPlayIsRefusedAndTheStateStays', picked.unchanged && /not parallel to the image plane/.test(picked.message), picked.message);
-  // A click on the analysis charts goes to the frame under the pointer: a quarter of the way
-  // along the x axis of frames 0 .. 79 is frame 20 (the key 4 shows the charts).
+  // A click on any analysis chart goes to the frame under the pointer, through that chart's
+  // own rectangle (the engine's charts in two columns): chart i is clicked where its x axis of
+  // frames 0 .. 79 shows frame 10 + 7 i (the key 4 shows the charts).
   await open(browser, '?script=swing&frame=60', drawnMarker);
   await press(browser, '4');
-  const charts = await evaluate(browser, `(() => { draw(); const c = analysisView.charts; const r = document.getElementById('canvas').getBoundingClientRect();
-    return JSON.stringify({ x: r.left + c.x + c.w / 4, y: r.top + r.height / 2, view: app.state.view, range: analysisView.range }); })()`);
-  const at = JSON.parse(charts);
-  await browser.tab('Input.dispatchMouseEvent', { type: 'mousePressed', x: at.x, y: at.y, button: 'left', clickCount: 1 });
-  await browser.tab('Input.dispatchMouseEvent', { type: 'mouseReleased', x: at.x, y: at.y, button: 'left', clickCount: 1 });
-  const jumped = await evaluate(browser, 'app.session.frame()');
-  check('AClickOnTheAnalysisChartsGoesToThatFrame', at.view === 'analysis' && jumped === 20 && at.range[0] === 0, `view ${at.view}, axis ${at.range}, frame 60 -> ${jumped} (expected 20)`);
+  const charts = JSON.parse(await evaluate(browser, `(() => { draw(); const r = document.getElementById('canvas').getBoundingClientRect();
+    return JSON.stringify({ boxes: analysisView.charts.map((c) => ({ x: r.left + c.x, y: r.top + c.y, w: c.w, h: c.h })), view: app.state.view, range: analysisView.range }); })()`));
+  const misses = [];
+  for (const [i, c] of charts.boxes.entries()) {
+    const frame = 10 + 7 * i;
+    const x = c.x + (c.w * frame) / 79;
+    const y = c.y + c.h / 2;
+    await browser.tab('Input.dispatchMouseEvent', { type: 'mousePressed', x, y, button: 'left', clickCount: 1 });
+    await browser.tab('Input.dispatchMouseEvent', { type: 'mouseReleased', x, y, button: 'left', clickCount: 1 });
+    const jumped = await evaluate(browser, 'app.session.frame()');
+    if (jumped !== frame) misses.push(`chart ${i}: frame ${jumped}, expected ${frame}`);
+  }
+  check('AClickOnEveryAnalysisChartGoesToThatFrame', charts.view === 'analysis' && charts.range[0] === 0 && charts.boxes.length === 7 && misses.length === 0,
+    `view ${charts.view}, axis ${charts.range}, ${charts.boxes.length} charts; ${misses.join('; ')}`);
 }
 
 // --- The basis explorer ------------------------------------------------------------------
@@ -900,6 +908,7 @@ async function bench(browser) {
       await testSceneWorld(helpers);
       await testWorldLabels(helpers);
       await testAnalysisCharts(helpers);
+      await testEngineCharts(helpers);
       await testRunCsv(helpers);
       await testFlowTexture(helpers);
       await testWorldFrame(helpers);

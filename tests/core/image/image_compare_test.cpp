@@ -119,7 +119,9 @@ TEST(Psnr, EqualsTheDefinitionSummedPixelByPixel) {
     // Control: covering the transparent pixels brings their colours into the sum.
     Image c = b;
     for (Pixel& p : c.pixels()) p.a = std::max<std::uint8_t>(p.a, 1);
-    if (w > 1) EXPECT_NE(psnr_db(a, c), psnr_db(a, b)) << w << "x" << h;
+    if (w > 1) {
+      EXPECT_NE(psnr_db(a, c), psnr_db(a, b)) << w << "x" << h;
+    }
     EXPECT_EQ(psnr_db(a, a), kIdenticalPsnrDb);
     EXPECT_EQ(psnr_db(a, Image(a)), kIdenticalPsnrDb);
   }
