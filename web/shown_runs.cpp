@@ -154,9 +154,8 @@ std::string analysis_history_json(Lab& lab, int frames) {
     }
     const EngineSettings& settings = lab.run().settings();
     // A source kind without a reuse policy (scene shifting) is named by its kind.
-    runs.push_back(
-        {{"policy", compared.empty() ? lab.run().source().kind : settings.policy->name},
-         {"frames", list}});
+    runs.push_back({{"policy", compared.empty() ? lab.run().source().kind : settings.policy->name},
+                    {"frames", list}});
     result["thresholds"] = settings.thresholds;
   }
   result["runs"] = runs;

@@ -2,11 +2,11 @@
 // goes in the charts widget, the frame axis they share, and the two sets of charts drawn on
 // them. The engine's: its frame time, its layers per level (stacked, in the level colours,
 // with their key), the percent approximated and, for each cheaper level, the error it would
-// leave (level_budget_at, session/player/run_player.h) against its dashed threshold beside the measured error. The
-// comparison's: one line per compared policy (largest measured error, frame time, work in the
-// cost model) in the policy's colour with a key, then one band of levels per policy and each
-// policy's share of layer-frames per level. A frame whose plane is not drawn leaves a gap in
-// a line, never a zero.
+// leave (level_budget_at, session/player/run_player.h) against its dashed threshold beside the
+// measured error. The comparison's: one line per compared policy (largest measured error, frame
+// time, work in the cost model) in the policy's colour with a key, then one band of levels per
+// policy and each policy's share of layer-frames per level. A frame whose plane is not drawn leaves
+// a gap in a line, never a zero.
 //
 // Units: charts widget pixels (top-left origin, y down); errors in pixels, times in
 // milliseconds. Frames are indices of the animation model's records.
