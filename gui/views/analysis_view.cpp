@@ -10,10 +10,10 @@
 #include <cmath>
 
 #include "models/animation_model.h"
-#include "player/run_player.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
+#include "player/run_player.h"
 #include "views/analysis_charts.h"
 #include "views/frame_inspector.h"
 
