@@ -1,15 +1,20 @@
 # Assembles the one self-contained page: page.html with its markers replaced by the style
 # (<!-- @style -->), the page's scripts (<!-- @scripts -->; SCRIPTS: their names in order,
-# separated by commas, after BUNDLE: the world view's vtk.js bundle) and the WebAssembly
+# separated by commas, after BUNDLES: the bundled packages, vtk.js for the world view and
+# webm-muxer for the videos, separated by commas) and the WebAssembly
 # module's JavaScript with the wasm and the datasets inside (<!-- @module -->).
 # Written to OUT through a temporary file renamed over it, so a failed run leaves no half page.
 # Run as: cmake -DSOURCE_DIR=web -DMODULE=oflab_web.js -DOUT=oflab-web.html
-#   -DSCRIPTS=app.js,flow_view.js,... -DBUNDLE=world_vtk.js -P assemble_page.cmake
+#   -DSCRIPTS=app.js,flow_view.js,... -DBUNDLES=world_vtk.js,webm_writer.js -P assemble_page.cmake
 file(READ "${SOURCE_DIR}/page.html" page)
 file(READ "${SOURCE_DIR}/style.css" style)
 file(READ "${MODULE}" module)
-file(READ "${BUNDLE}" bundle)
-set(scripts "<script>\n${bundle}</script>\n")
+set(scripts "")
+string(REPLACE "," ";" bundles "${BUNDLES}")
+foreach(part IN LISTS bundles)
+  file(READ "${part}" bundle)
+  string(APPEND scripts "<script>\n${bundle}</script>\n")
+endforeach()
 string(REPLACE "," ";" scripts_in_order "${SCRIPTS}")
 foreach(part IN LISTS scripts_in_order)
   file(READ "${SOURCE_DIR}/${part}" text)

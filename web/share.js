@@ -1,8 +1,8 @@
 'use strict';
 // Links, checks and files of the page (manual/web.md): the state in the address's fragment
 // (a permalink), #embed (one view without controls, for an iframe on a slide), the claims of
-// a lesson's step measured by the teaching layer in the module, the view as PNG, the state
-// as the desktop's session file, and the source pickers (scenes with viewer scripts).
+// a lesson's step measured by the teaching layer in the module, the view as PNG or as a video,
+// the state as the desktop's session file, and the source pickers (scenes with viewer scripts).
 //
 // A permalink is #s=<the state's fields that differ from the page's opening state, as JSON,
 // deflated (CompressionStream 'deflate-raw') and base64url-encoded>. Opening it reads those
@@ -115,6 +115,93 @@ function savePng() {
   $('canvas').toBlob((blob) => download(blob, `${fileStem()}.png`), 'image/png');
 }
 
+// The desktop's video export (gui/app/exports.h) on the page: the view shown, played from
+// frame `first` to `last`, each frame drawn and encoded by the browser's WebCodecs
+// VideoEncoder (VP9, else VP8) with the timestamp k / kVideoFps s, and written into a WebM
+// file by webm-muxer (web/video/webm_writer.js): one video frame per frame played, at the
+// canvas's size, whatever the time each takes to draw. progress(k, n) after each frame.
+// Resolves {blob, frames}, or {error} (no encoder; 'cancelled' after cancelVideo): then
+// nothing is kept. Play stops meanwhile; the frame shown before is shown again after.
+const kVideoFps = 30;
+let videoJob = null;  // {cancelled} while a video is recorded
+
+async function videoConfig(width, height) {
+  if (!window.VideoEncoder || !window.OflabWebm) return null;
+  for (const [codec, webm] of [['vp09.00.10.08', 'V_VP9'], ['vp8', 'V_VP8']]) {
+    const config = { codec, width, height, bitrate: 8e6, framerate: kVideoFps };
+    if ((await VideoEncoder.isConfigSupported(config)).supported) return { config, webm };
+  }
+  return null;
+}
+
+async function recordVideo(first, last, progress = () => {}) {
+  if (videoJob) return { error: 'a video is being recorded already' };
+  const job = { cancelled: false };
+  videoJob = job;
+  const canvas = $('canvas');
+  const chosen = await videoConfig(canvas.width, canvas.height);
+  if (!chosen || job.cancelled) {
+    videoJob = null;
+    return { error: chosen ? 'cancelled' : 'this browser cannot encode WebM video (no WebCodecs VP9 or VP8 encoder)' };
+  }
+  const shown = app.state.frame;
+  const wasPlaying = app.playing;
+  setPlaying(false);
+  const { Muxer, ArrayBufferTarget } = window.OflabWebm;
+  const muxer = new Muxer({ target: new ArrayBufferTarget(),
+    video: { codec: chosen.webm, width: canvas.width, height: canvas.height, frameRate: kVideoFps } });
+  let failure = null;
+  const encoder = new VideoEncoder({ output: (chunk, meta) => muxer.addVideoChunk(chunk, meta),
+    error: (e) => { failure = e; } });
+  try {
+    encoder.configure(chosen.config);
+    for (let frame = first; frame <= last && !job.cancelled && !failure; ++frame) {
+      seek(frame);
+      draw();
+      if (shownView() === 'world') worldView.paintInto(canvas.getContext('2d', { alpha: false }));
+      const k = frame - first;
+      const picture = new VideoFrame(canvas, { timestamp: Math.round((k * 1e6) / kVideoFps), duration: Math.round(1e6 / kVideoFps) });
+      encoder.encode(picture, { keyFrame: k % (2 * kVideoFps) === 0 });
+      picture.close();
+      progress(k + 1, last - first + 1);
+      // Let the page breathe (the control stays live to cancel) and the encoder keep up.
+      do await new Promise((r) => setTimeout(r, 0)); while (encoder.encodeQueueSize > 4 && !failure);
+    }
+    if (!job.cancelled && !failure) await encoder.flush();
+  } catch (error) {
+    failure = failure || error;
+  } finally {
+    if (encoder.state !== 'closed') encoder.close();
+    videoJob = null;
+    seek(shown);
+    setPlaying(wasPlaying);
+  }
+  if (failure) return { error: `the encoder failed: ${failure.message || failure}` };
+  if (job.cancelled) return { error: 'cancelled' };
+  muxer.finalize();
+  return { blob: new Blob([muxer.target.buffer], { type: 'video/webm' }), frames: last - first + 1 };
+}
+
+function cancelVideo() {
+  if (videoJob) videoJob.cancelled = true;
+}
+
+// The *Video* control: the whole run of the view shown (frame 0 to the last) as a WebM file;
+// pressed again while it records, it cancels.
+async function saveVideo() {
+  if (videoJob) { cancelVideo(); return; }
+  const button = $('save-video');
+  const r = await recordVideo(0, app.session.frameCount() - 1, (k, n) => {
+    button.textContent = `Recording ${k} / ${n} (press to cancel)`;
+  });
+  button.textContent = 'Video';
+  if (r.error) {
+    if (r.error !== 'cancelled') showMessage(`Video: ${r.error}`);
+    return;
+  }
+  download(r.blob, `${fileStem()}.webm`);
+}
+
 function saveSession() {
   download(new Blob([app.session.sessionFileText()], { type: 'application/json' }), `${fileStem()}.json`);
 }
@@ -200,6 +287,7 @@ function bindShareControls() {
   $('save-png').addEventListener('click', savePng);
   $('save-session').addEventListener('click', saveSession);
   $('save-csv').addEventListener('click', saveCsv);
+  $('save-video').addEventListener('click', saveVideo);
   $('lesson-check').addEventListener('click', checkClaims);
   fillSourcePickers();
 }

@@ -45,7 +45,7 @@ const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
 const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts } = require('./views_test');
-const { testRunCsv } = require('./exports_test');
+const { testRunCsv, testVideo } = require('./exports_test');
 const { testFlowTexture, testWorldFrame } = require('./flow_texture_test');
 
 const root = path.resolve(__dirname, '..', '..');
@@ -910,6 +910,7 @@ async function bench(browser) {
       await testAnalysisCharts(helpers);
       await testEngineCharts(helpers);
       await testRunCsv(helpers);
+      await testVideo(helpers);
       await testFlowTexture(helpers);
       await testWorldFrame(helpers);
       await testControls(browser);
