@@ -231,15 +231,34 @@ OFLAB_MIP_TARGET bool knot_values(const RowTerms& c, int count, float* knots) {
   return bad == 0;
 }
 
+// Eight pixels' values from knot j on: knots[j] + (knots[j + 1] - knots[j]) i / kKnotStep
+// (i = 0 .. 7), clamped to [low, high] and truncated.
+OFLAB_MIP_TARGET inline __m256i interpolated_indices(const float* knots, const __m256& eighths,
+                                                     const __m256& low, const __m256& high) {
+  const __m256 base = _mm256_broadcast_ss(knots), next = _mm256_broadcast_ss(knots + 1);
+  const __m256 value = _mm256_fmadd_ps(_mm256_sub_ps(next, base), eighths, base);
+  return _mm256_cvttps_epi32(_mm256_min_ps(_mm256_max_ps(value, low), high));
+}
+
 // Pixels 0 .. count - 1 from the knots (knot_values): between knots j and j + 1 the values
-// linearly interpolated, clamped to [1/2, 256 top + 1/2] and truncated.
+// linearly interpolated, clamped to [1/2, 256 top + 1/2] and truncated; two intervals of
+// kKnotStep pixels a step.
 OFLAB_MIP_TARGET void interpolate_levels(const float* knots, int top, int count,
                                          std::uint16_t* out) {
-  const __m256 steps = _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f);
+  static_assert(kKnotStep == 8, "one interval per vector");
+  const __m256 eighths = _mm256_setr_ps(0.0f, 0.125f, 0.25f, 0.375f, 0.5f, 0.625f, 0.75f, 0.875f);
   const __m256 low = _mm256_set1_ps(0.5f);
   const __m256 high = _mm256_set1_ps(256.0f * static_cast<float>(top) + 0.5f);
   const int last = count - 1;
-  for (int j = 0; kKnotStep * j <= last; ++j) {
+  int j = 0;
+  for (; kKnotStep * (j + 2) <= last; j += 2) {  // knots j + 1 and j + 2 a whole step on
+    const __m256i first = interpolated_indices(knots + j, eighths, low, high);
+    const __m256i second = interpolated_indices(knots + j + 1, eighths, low, high);
+    const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(first, second), 0xd8);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + kKnotStep * j), packed);
+  }
+  const __m256 steps = _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f);
+  for (; kKnotStep * j <= last; ++j) {
     const int first = kKnotStep * j;
     const int span = std::min(kKnotStep, last - first);  // pixels to knot j + 1 (0 at the end)
     const float slope = span == kKnotStep ? (knots[j + 1] - knots[j]) * (1.0f / kKnotStep)
