@@ -175,17 +175,21 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
     if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_srli_epi16(octet, 8), lower)) != 0xffff) break;
     const __m128i weights = octet_weights(octet);
     const bool one_level = _mm_testz_si128(weights, weights);
+    __m256i lanes[2];
     for (int q = 0; q < 2; ++q) {
       const __m256i current = positions;
       positions = quad_positions(step);  // the next quad's, before this one's blends
-      store_quad(
+      lanes[q] =
           one_level
               ? blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, current)
               : trilinear_quad(
                     view, current,
-                    spread_weights(q == 0 ? weights : _mm_unpackhi_epi64(weights, weights))),
-          out + i + 4 * q);
+                    spread_weights(q == 0 ? weights : _mm_unpackhi_epi64(weights, weights)));
     }
+    // Both quads packed at once: [q0 p0 p1, q1 p0 p1 | q0 p2 p3, q1 p2 p3] -> eight pixels.
+    const __m256i packed = _mm256_packus_epi16(lanes[0], lanes[1]);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i),
+                        _mm256_permute4x64_epi64(packed, _MM_SHUFFLE(3, 1, 2, 0)));
   }
   return i;
 }
