@@ -163,10 +163,10 @@ OFLAB_AVX2 inline __m256i trilinear_quad(const LevelPairView& view, const __m256
 // weight, index[i] pixel i's) while all eight have lower level k: with weights all 0 level k
 // alone (lerp_lanes' bytes for weight 0), else both levels. Returns the pixels done, a
 // multiple of 8 at most count; the rest starts with an octet holding another lower level or
-// is shorter than eight.
+// is shorter than eight. `step` starts at the first pixel and is left at the first pixel not
+// done.
 OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* index, int k,
-                                Pixel* out, int count, const QuadStep& start) {
-  QuadStep step = start;
+                                Pixel* out, int count, QuadStep& step) {
   const __m128i lower = _mm_set1_epi16(static_cast<short>(k));
   __m256i positions = quad_positions(step);
   int i = 0;
@@ -191,6 +191,11 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i),
                         _mm256_permute4x64_epi64(packed, _MM_SHUFFLE(3, 1, 2, 0)));
   }
+  // Back one quad, to the first pixel not done: the sums are integers below 2^53 times
+  // powers of two (steps_exact_in_double), so this is exactly the step quad_step_at gives.
+  step.nu = _mm256_sub_pd(step.nu, step.step_u);
+  step.nv = _mm256_sub_pd(step.nv, step.step_v);
+  step.d = _mm256_sub_pd(step.d, step.step_d);
   return i;
 }
 
@@ -265,13 +270,14 @@ OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indi
     while (fast_end > x + 1 && !in_fast_range<true>(view.src, evaluate(map, fast_end - 1, y))) {
       --fast_end;
     }
-    const int done = trilinear_octets(view, index, k, o, fast_end - x, quad_step_at(map, x, y));
+    QuadStep step = quad_step_at(map, x, y);
+    const int done = trilinear_octets(view, index, k, o, fast_end - x, step);
     x += done;
     if (x >= fast_end) continue;
     const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(indices + (x - x_begin)));
     const int few = leading_lower(rest, k, fast_end - x);
     if (few > 0) {
-      trilinear_few(view, rest, out + (x - x_begin), few, quad_step_at(map, x, y));
+      trilinear_few(view, rest, out + (x - x_begin), few, step);
       x += few;
     }
   }
