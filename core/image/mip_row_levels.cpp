@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "image/bilinear_blend.h"  // OFLAB_WARP_SSE2
 #include "image/warp_kernels.h"    // warp_avx2_enabled
@@ -14,6 +16,9 @@
 
 namespace oflab {
 namespace {
+
+// Knots: the pixels t = 0, kKnotStep, 2 kKnotStep, ... and the last pixel of the segment.
+constexpr int kKnotStep = kMipLevelKnotStep;
 
 // Pixel t of the row segment (t = x - x_begin): P = p + t pb, R = r + t rb with
 // pb = (beta1, beta0), rb = (-beta1, beta0), and D = d + t dd, all scaled by powers of two
@@ -80,16 +85,51 @@ bool float_conditioned(const RowTerms& c, int count) {
          std::abs(c.d) + last * std::abs(c.dd) <= 8.0 * smallest_d;
 }
 
+// The smallest |q + t v| over t in [0, last].
+double smallest_norm(double qx, double qy, double vx, double vy, double last) {
+  const double v2 = vx * vx + vy * vy;
+  const double t = v2 > 0.0 ? std::clamp(-(qx * vx + qy * vy) / v2, 0.0, last) : 0.0;
+  const double x = qx + t * vx, y = qy + t * vy;
+  return std::sqrt(x * x + y * y);
+}
+
+// An upper bound, in levels, of how far the level L(t) = log2(f(t) / D(t)^2) + const
+// (f = |P| + |R|) is from its linear interpolation between knots kKnotStep pixels apart or
+// closer, over the segment's pixels 0 .. count - 1: (kKnotStep^2 / 8) max |L''|, with
+// ln 2 |L''| <= f'' / f + (f' / f)^2 + 2 (D' / D)^2, |f'| <= 2 |beta|, f'' <= |beta|^2 (1 / |P|
+// + 1 / |R|) (|P(t)|'' = (|beta|^2 - (P.beta)^2 / |P|^2) / |P|, the same for R), f >= |P| + |R|,
+// each at its smallest over the segment. Infinity where P or R may vanish (f has a kink
+// there).
+double interpolation_error(const RowTerms& c, int count) {
+  const double last = count - 1;
+  const double b2 = c.beta0 * c.beta0 + c.beta1 * c.beta1;
+  const double p = smallest_norm(c.px, c.py, c.beta1, c.beta0, last);
+  const double r = smallest_norm(c.rx, c.ry, -c.beta1, c.beta0, last);
+  const double d = std::min(c.d, c.d + last * c.dd);
+  if (!(p > 0.0 && r > 0.0 && d > 0.0)) return std::numeric_limits<double>::infinity();
+  const double f = p + r, slope = c.dd / d;
+  const double second =
+      (b2 * (1.0 / p + 1.0 / r) / f + 4.0 * b2 / (f * f) + 2.0 * slope * slope) / std::log(2.0);
+  return kKnotStep * kKnotStep / 8.0 * second;
+}
+
+// The interpolated levels are used where interpolation_error is at most this (half a
+// weight step): with the knots' own float error (2e-5 levels) each index is then within one
+// step of the exact level's.
+constexpr double kMaxInterpolationError = 0.5 / 256.0;
+
 #if defined(OFLAB_MIP_AVX2)
 // AVX2 with FMA: each t b + c, x x + y y and the series' steps one fused multiply-add (one
 // rounding instead of two, and a shorter dependency chain: the pass takes about a fifth less).
 #define OFLAB_MIP_TARGET __attribute__((target("avx2,fma")))
 
-// 128 log2(x) + 1/2 for x in [1, 2^30] (the rounded level index of x = sigma^2 / D^4 before
-// truncation): x = m 2^e with m in [sqrt(1/2), sqrt(2)) (the exponent split at sqrt(1/2)'s
-// bits), log2(m) = (2 / ln 2) atanh(z), z = (m - 1) / (m + 1) with |z| <= 0.1716 by its odd
-// series to z^7 (tail below 5e-8), evaluated in two halves (a short dependency chain:
-// the loop's iterations then overlap). Within 1e-6 of a level in float.
+// 128 log2(x) + 1/2 for normal x > 0 (the rounded level index of x = sigma^2 / D^4 before
+// truncation; x in [1, 2^30] clamped per pixel, in [2^-100, 2^100] at knots): x = m 2^e with m in
+// [sqrt(1/2), sqrt(2)) (the exponent split at sqrt(1/2)'s bits), log2(m) = (2 / ln 2) atanh(z), z =
+// (m - 1) / (m + 1) with |z| <= 0.1716 by its odd series to z^7 (tail below 5e-8), evaluated in two
+// halves (a short dependency chain: the loop's iterations then overlap). Within 1e-6 of a level in
+// float, plus the float rounding of the result (at most 2^-11 of a step for levels below 64 in
+// size: 2e-6 of a level).
 OFLAB_MIP_TARGET inline __m256 level_index_ps(__m256 x) {
   const __m256i offset = _mm256_set1_epi32(0x3f3504f3);  // sqrt(1/2)
   const __m256i shifted = _mm256_sub_epi32(_mm256_castps_si256(x), offset);
@@ -110,43 +150,123 @@ OFLAB_MIP_TARGET inline __m256 level_index_ps(__m256 x) {
   return _mm256_fmadd_ps(scaled_z, series, whole);
 }
 
-// Pixels 0 .. count - 1 in float, eight a step (the last step's through a scratch block).
-// Precondition: float_conditioned(c, count). With P and R halved, S = |P|^2 + |R|^2 +
-// 2 |P| |R| = sigma^2 (one square root) and the level is 0.5 log2(S / D^4).
+// The row's terms in float for ratio_ps, P and R halved (so that S below is sigma^2).
+struct FloatTerms {
+  __m256 b0, b1, px, py, rx, ry, d, dd;
+};
+
+OFLAB_MIP_TARGET FloatTerms float_terms(const RowTerms& c) {
+  return FloatTerms{_mm256_set1_ps(static_cast<float>(0.5 * c.beta0)),
+                    _mm256_set1_ps(static_cast<float>(0.5 * c.beta1)),
+                    _mm256_set1_ps(static_cast<float>(0.5 * c.px)),
+                    _mm256_set1_ps(static_cast<float>(0.5 * c.py)),
+                    _mm256_set1_ps(static_cast<float>(0.5 * c.rx)),
+                    _mm256_set1_ps(static_cast<float>(0.5 * c.ry)),
+                    _mm256_set1_ps(static_cast<float>(c.d)),
+                    _mm256_set1_ps(static_cast<float>(c.dd))};
+}
+
+// sigma^2 / D^4 at the eight pixels t (offsets in the segment): with P and R halved, S =
+// |P|^2 + |R|^2 + 2 |P| |R| = sigma^2 (one square root); half its log2 is the level.
+OFLAB_MIP_TARGET inline __m256 ratio_ps(const FloatTerms& f, const __m256& t) {
+  const __m256 px = _mm256_fmadd_ps(t, f.b1, f.px), py = _mm256_fmadd_ps(t, f.b0, f.py);
+  const __m256 rx = _mm256_fnmadd_ps(t, f.b1, f.rx), ry = _mm256_fmadd_ps(t, f.b0, f.ry);
+  const __m256 d = _mm256_fmadd_ps(t, f.dd, f.d);
+  const __m256 p2 = _mm256_fmadd_ps(px, px, _mm256_mul_ps(py, py));
+  const __m256 r2 = _mm256_fmadd_ps(rx, rx, _mm256_mul_ps(ry, ry));
+  const __m256 cross = _mm256_sqrt_ps(_mm256_mul_ps(p2, r2));
+  const __m256 s = _mm256_fmadd_ps(cross, _mm256_set1_ps(2.0f), _mm256_add_ps(p2, r2));
+  const __m256 d2 = _mm256_mul_ps(d, d);
+  return _mm256_div_ps(s, _mm256_mul_ps(d2, d2));
+}
+
+// Eight indices (int32 lanes) stored to out[0 .. n - 1] (n <= 8; a short block through a
+// scratch block).
+OFLAB_MIP_TARGET inline void store_indices(const __m256i& index, std::uint16_t* out, int n) {
+  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(index, index), 0x08);
+  if (n >= 8) {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
+  } else {
+    std::uint16_t last[8];
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(last), _mm256_castsi256_si128(packed));
+    std::copy(last, last + n, out);
+  }
+}
+
+// Pixels 0 .. count - 1 in float, eight a step. Precondition: float_conditioned(c, count).
 OFLAB_MIP_TARGET void levels_avx2(const RowTerms& c, int top, int count, std::uint16_t* out) {
-  const __m256 b0 = _mm256_set1_ps(static_cast<float>(0.5 * c.beta0));
-  const __m256 b1 = _mm256_set1_ps(static_cast<float>(0.5 * c.beta1));
-  const __m256 px0 = _mm256_set1_ps(static_cast<float>(0.5 * c.px));
-  const __m256 py0 = _mm256_set1_ps(static_cast<float>(0.5 * c.py));
-  const __m256 rx0 = _mm256_set1_ps(static_cast<float>(0.5 * c.rx));
-  const __m256 ry0 = _mm256_set1_ps(static_cast<float>(0.5 * c.ry));
-  const __m256 d0 = _mm256_set1_ps(static_cast<float>(c.d));
-  const __m256 dd = _mm256_set1_ps(static_cast<float>(c.dd));
+  const FloatTerms f = float_terms(c);
   const __m256 one = _mm256_set1_ps(1.0f);
   const __m256 most = _mm256_set1_ps(std::ldexp(1.0f, 2 * top));  // sigma^2 / D^4 at the top
   __m256 t = _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f);
   for (int k = 0; k < count; k += 8) {
-    const __m256 px = _mm256_fmadd_ps(t, b1, px0), py = _mm256_fmadd_ps(t, b0, py0);
-    const __m256 rx = _mm256_fnmadd_ps(t, b1, rx0), ry = _mm256_fmadd_ps(t, b0, ry0);
-    const __m256 d = _mm256_fmadd_ps(t, dd, d0);
-    t = _mm256_add_ps(t, _mm256_set1_ps(8.0f));
-    const __m256 p2 = _mm256_fmadd_ps(px, px, _mm256_mul_ps(py, py));
-    const __m256 r2 = _mm256_fmadd_ps(rx, rx, _mm256_mul_ps(ry, ry));
-    const __m256 cross = _mm256_sqrt_ps(_mm256_mul_ps(p2, r2));
-    const __m256 s = _mm256_fmadd_ps(cross, _mm256_set1_ps(2.0f), _mm256_add_ps(p2, r2));
-    const __m256 d2 = _mm256_mul_ps(d, d);
     // sigma^2 / D^4 clamped to [1, 4^top] (a NaN to 1): half its log2 is the clamped level.
-    const __m256 ratio =
-        _mm256_min_ps(_mm256_max_ps(_mm256_div_ps(s, _mm256_mul_ps(d2, d2)), one), most);
-    const __m256i index = _mm256_cvttps_epi32(level_index_ps(ratio));
-    const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(index, index), 0x08);
-    if (k + 8 <= count) {
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm256_castsi256_si128(packed));
-    } else {
-      std::uint16_t last[8];
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(last), _mm256_castsi256_si128(packed));
-      std::copy(last, last + (count - k), out + k);
-    }
+    const __m256 ratio = _mm256_min_ps(_mm256_max_ps(ratio_ps(f, t), one), most);
+    t = _mm256_add_ps(t, _mm256_set1_ps(8.0f));
+    store_indices(_mm256_cvttps_epi32(level_index_ps(ratio)), out + k, count - k);
+  }
+}
+
+// The segment's knots' values 256 L + 1/2 (unclamped levels L, level_index_ps) into
+// knots[0 .. (count - 1) / kKnotStep + 1], knot j at pixel min(kKnotStep j, count - 1).
+// Returns false if a knot's sigma^2 / D^4 is outside [2^-100, 2^100] or not a number (the
+// caller then takes every pixel).
+OFLAB_MIP_TARGET bool knot_values(const RowTerms& c, int count, float* knots) {
+  const FloatTerms f = float_terms(c);
+  const int last = count - 1, knot_count = last / kKnotStep + 2;
+  const __m256 lowest = _mm256_set1_ps(std::ldexp(1.0f, -100));
+  const __m256 highest = _mm256_set1_ps(std::ldexp(1.0f, 100));
+  const __m256 end = _mm256_set1_ps(static_cast<float>(last));
+  __m256 t = _mm256_setr_ps(0.0f, 8.0f, 16.0f, 24.0f, 32.0f, 40.0f, 48.0f, 56.0f);
+  int bad = 0;
+  for (int j = 0; j < knot_count; j += 8) {
+    const __m256 ratio = ratio_ps(f, _mm256_min_ps(t, end));
+    t = _mm256_add_ps(t, _mm256_set1_ps(8.0f * kKnotStep));
+    // Ordered comparisons: a NaN fails both.
+    bad |= ~_mm256_movemask_ps(_mm256_and_ps(_mm256_cmp_ps(ratio, lowest, _CMP_GE_OQ),
+                                             _mm256_cmp_ps(ratio, highest, _CMP_LE_OQ))) &
+           0xff;
+    _mm256_storeu_ps(knots + j, level_index_ps(ratio));
+  }
+  return bad == 0;
+}
+
+// Eight pixels' values from knot j on: knots[j] + (knots[j + 1] - knots[j]) i / kKnotStep
+// (i = 0 .. 7), clamped to [low, high] and truncated.
+OFLAB_MIP_TARGET inline __m256i interpolated_indices(const float* knots, const __m256& eighths,
+                                                     const __m256& low, const __m256& high) {
+  const __m256 base = _mm256_broadcast_ss(knots), next = _mm256_broadcast_ss(knots + 1);
+  const __m256 value = _mm256_fmadd_ps(_mm256_sub_ps(next, base), eighths, base);
+  return _mm256_cvttps_epi32(_mm256_min_ps(_mm256_max_ps(value, low), high));
+}
+
+// Pixels 0 .. count - 1 from the knots (knot_values): between knots j and j + 1 the values
+// linearly interpolated, clamped to [1/2, 256 top + 1/2] and truncated; two intervals of
+// kKnotStep pixels a step.
+OFLAB_MIP_TARGET void interpolate_levels(const float* knots, int top, int count,
+                                         std::uint16_t* out) {
+  static_assert(kKnotStep == 8, "one interval per vector");
+  const __m256 eighths = _mm256_setr_ps(0.0f, 0.125f, 0.25f, 0.375f, 0.5f, 0.625f, 0.75f, 0.875f);
+  const __m256 low = _mm256_set1_ps(0.5f);
+  const __m256 high = _mm256_set1_ps(256.0f * static_cast<float>(top) + 0.5f);
+  const int last = count - 1;
+  int j = 0;
+  for (; kKnotStep * (j + 2) <= last; j += 2) {  // knots j + 1 and j + 2 a whole step on
+    const __m256i first = interpolated_indices(knots + j, eighths, low, high);
+    const __m256i second = interpolated_indices(knots + j + 1, eighths, low, high);
+    const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(first, second), 0xd8);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + kKnotStep * j), packed);
+  }
+  const __m256 steps = _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f);
+  for (; kKnotStep * j <= last; ++j) {
+    const int first = kKnotStep * j;
+    const int span = std::min(kKnotStep, last - first);  // pixels to knot j + 1 (0 at the end)
+    const float slope = span == kKnotStep ? (knots[j + 1] - knots[j]) * (1.0f / kKnotStep)
+                        : span > 0        ? (knots[j + 1] - knots[j]) / static_cast<float>(span)
+                                          : 0.0f;
+    const __m256 value = _mm256_fmadd_ps(_mm256_set1_ps(slope), steps, _mm256_set1_ps(knots[j]));
+    const __m256 clamped = _mm256_min_ps(_mm256_max_ps(value, low), high);
+    store_indices(_mm256_cvttps_epi32(clamped), out + first, std::min(kKnotStep, count - first));
   }
 }
 #endif
@@ -164,8 +284,17 @@ void mip_row_levels(const Mat3& dest_to_source, int top, int y, int x_begin, int
   const RowTerms terms = row_terms(dest_to_source, y, x_begin);
 #if defined(OFLAB_MIP_AVX2)
   static const bool has_fma = __builtin_cpu_supports("fma");  // every AVX2 CPU we know of
-  if (warp_avx2_enabled() && has_fma && float_conditioned(terms, x_end - x_begin)) {
-    levels_avx2(terms, top, x_end - x_begin, out);
+  const int count = x_end - x_begin;
+  if (warp_avx2_enabled() && has_fma && float_conditioned(terms, count)) {
+    if (count >= 2 * kKnotStep && interpolation_error(terms, count) <= kMaxInterpolationError) {
+      thread_local std::vector<float> knots;
+      knots.resize(static_cast<std::size_t>((count - 1) / kKnotStep + 2 + 7));
+      if (knot_values(terms, count, knots.data())) {
+        interpolate_levels(knots.data(), top, count, out);
+        return;
+      }
+    }
+    levels_avx2(terms, top, count, out);
     return;
   }
 #endif

@@ -12,9 +12,11 @@
 //    inverse map [A c; g^T i]. When a bound shows that no pixel of the region minifies
 //    (max over its vertices of |N(x)|_F over min D(x)^2, both extreme at a vertex, at most 1),
 //    the bilinear kernel runs unchanged. Otherwise each row span gets every pixel's level
-//    index (256 lower + weight) from the exact largest singular value of J, eight pixels at a
-//    time (core/image/mip_row_levels.h: within 2e-5 of a level of mip_level, so each index
-//    is level_pair's or, within 1/200 of a step of a rounding boundary, one step next to it);
+//    index (256 lower + weight) from the exact largest singular value of J
+//    (core/image/mip_row_levels.h: within one step of level_pair(mip_level); on a span whose
+//    level bends little, by a bound on its second derivative, the level is found at knots
+//    8 pixels apart and interpolated linearly in between, else at every pixel, eight at a
+//    time);
 //    then one loop samples the span eight pixels at a time on each pixel's lower level and,
 //    where a weight is not 0, the next level too, both sampled at once and blended pixel by
 //    pixel with each pixel's weight, stopping where the lower level changes (the integer

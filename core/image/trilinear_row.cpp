@@ -45,27 +45,37 @@ OFLAB_AVX2 inline __m256i clamped_quad_lanes(const SourceView& src, const __m256
   return quad_lanes_from_taps(top, bottom, positions);
 }
 
-// Four weights in [0, 256] (16-bit lanes 0 .. 3 of `four`) spread over their pixels'
-// channels, as lerp_lanes takes them.
+// Eight weights w in [0, 255] (16-bit lanes) as lerp_lanes takes them: 128 w, below 2^15.
+OFLAB_AVX2 inline __m128i scaled_weights(const __m128i& weights) {
+  return _mm_slli_epi16(weights, 7);
+}
+
+// The weights of an index octet (256 lower + weight per lane), scaled.
+OFLAB_AVX2 inline __m128i octet_weights(const __m128i& octet) {
+  return scaled_weights(_mm_and_si128(octet, _mm_set1_epi16(255)));
+}
+
+// Four scaled weights (16-bit lanes 0 .. 3 of `four`) spread over their pixels' channels.
 OFLAB_AVX2 inline __m256i spread_weights(const __m128i& four) {
   const __m256i spread = _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4, 5, 4,
                                           5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7);
   return _mm256_shuffle_epi8(_mm256_broadcastq_epi64(four), spread);
 }
 
-// Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3]) blended with
-// spread weights w: (a (256 - w) + b w + 128) / 256 per channel, the bytes of blending the
-// stored samples (a (256 - w) + b w <= 255 * 256: no overflow).
+// Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3], 0 .. 255) blended
+// with spread scaled weights 128 w (w in [0, 255]): (a (256 - w) + b w + 128) / 256 per
+// channel, rounded down, the bytes of blending the stored samples. As one rounding
+// multiplication: a (256 - w) + b w + 128 = 256 a + ((b - a) w + 128), so the blend is
+// a + floor(((b - a) w + 128) / 256), and mulhrs(b - a, 128 w) = floor(((b - a) 128 w +
+// 2^14) / 2^15) is that quotient exactly (|b - a| <= 255 and 128 w <= 32640 fit 16 bits).
 OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const __m256i& weight) {
-  const __m256i sum =
-      _mm256_add_epi16(_mm256_mullo_epi16(a, _mm256_sub_epi16(_mm256_set1_epi16(256), weight)),
-                       _mm256_mullo_epi16(b, weight));
-  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
+  return _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(b, a), weight));
 }
 
-// The same with the weights w[0..3].
+// The same with the weights w[0..3] (in [0, 255]).
 OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const std::uint16_t* w) {
-  return lerp_lanes(a, b, spread_weights(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(w))));
+  return lerp_lanes(
+      a, b, spread_weights(scaled_weights(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(w)))));
 }
 
 // The same on two mip levels at once, blended: `src` is level k and `next` level k + 1,
@@ -153,34 +163,39 @@ OFLAB_AVX2 inline __m256i trilinear_quad(const LevelPairView& view, const __m256
 // weight, index[i] pixel i's) while all eight have lower level k: with weights all 0 level k
 // alone (lerp_lanes' bytes for weight 0), else both levels. Returns the pixels done, a
 // multiple of 8 at most count; the rest starts with an octet holding another lower level or
-// is shorter than eight.
+// is shorter than eight. `step` starts at the first pixel and is left at the first pixel not
+// done.
 OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* index, int k,
-                                Pixel* out, int count, const QuadStep& start) {
-  QuadStep step = start;
+                                Pixel* out, int count, QuadStep& step) {
   const __m128i lower = _mm_set1_epi16(static_cast<short>(k));
-  const __m128i weight_mask = _mm_set1_epi16(255);
   __m256i positions = quad_positions(step);
-  __m256i later = quad_positions(step);
   int i = 0;
   for (; i + 8 <= count; i += 8) {
     const __m128i octet = _mm_loadu_si128(reinterpret_cast<const __m128i*>(index + i));
     if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_srli_epi16(octet, 8), lower)) != 0xffff) break;
-    const __m128i weights = _mm_and_si128(octet, weight_mask);
-    const __m256i first = positions;
-    const __m256i second = later;
-    positions = quad_positions(step);  // the next octet's, before this one's blends
-    later = quad_positions(step);
-    if (_mm_testz_si128(weights, weights)) {
-      store_quad(blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, first),
-                 out + i);
-      store_quad(blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, second),
-                 out + i + 4);
-    } else {
-      store_quad(trilinear_quad(view, first, spread_weights(weights)), out + i);
-      store_quad(trilinear_quad(view, second, spread_weights(_mm_unpackhi_epi64(weights, weights))),
-                 out + i + 4);
+    const __m128i weights = octet_weights(octet);
+    const bool one_level = _mm_testz_si128(weights, weights);
+    __m256i lanes[2];
+    for (int q = 0; q < 2; ++q) {
+      const __m256i current = positions;
+      positions = quad_positions(step);  // the next quad's, before this one's blends
+      lanes[q] =
+          one_level
+              ? blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, current)
+              : trilinear_quad(
+                    view, current,
+                    spread_weights(q == 0 ? weights : _mm_unpackhi_epi64(weights, weights)));
     }
+    // Both quads packed at once: [q0 p0 p1, q1 p0 p1 | q0 p2 p3, q1 p2 p3] -> eight pixels.
+    const __m256i packed = _mm256_packus_epi16(lanes[0], lanes[1]);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i),
+                        _mm256_permute4x64_epi64(packed, _MM_SHUFFLE(3, 1, 2, 0)));
   }
+  // Back one quad, to the first pixel not done: the sums are integers below 2^53 times
+  // powers of two (steps_exact_in_double), so this is exactly the step quad_step_at gives.
+  step.nu = _mm256_sub_pd(step.nu, step.step_u);
+  step.nv = _mm256_sub_pd(step.nv, step.step_v);
+  step.d = _mm256_sub_pd(step.d, step.step_d);
   return i;
 }
 
@@ -189,7 +204,7 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
 // and only its pixels are stored.
 OFLAB_AVX2 void trilinear_few(const LevelPairView& view, const __m128i& index, Pixel* out,
                               int count, QuadStep step) {
-  const __m128i weights = _mm_and_si128(index, _mm_set1_epi16(255));
+  const __m128i weights = octet_weights(index);
   for (int q = 0; q * 4 < count; ++q) {
     const int n = std::min(4, count - 4 * q);
     __m256i positions = quad_positions(step);
@@ -255,13 +270,14 @@ OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indi
     while (fast_end > x + 1 && !in_fast_range<true>(view.src, evaluate(map, fast_end - 1, y))) {
       --fast_end;
     }
-    const int done = trilinear_octets(view, index, k, o, fast_end - x, quad_step_at(map, x, y));
+    QuadStep step = quad_step_at(map, x, y);
+    const int done = trilinear_octets(view, index, k, o, fast_end - x, step);
     x += done;
     if (x >= fast_end) continue;
     const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(indices + (x - x_begin)));
     const int few = leading_lower(rest, k, fast_end - x);
     if (few > 0) {
-      trilinear_few(view, rest, out + (x - x_begin), few, quad_step_at(map, x, y));
+      trilinear_few(view, rest, out + (x - x_begin), few, step);
       x += few;
     }
   }

@@ -24,7 +24,7 @@ struct MipLevelMaps {
 // Pixels x_begin .. x_end - 1 of output row y (output pixels, centred coordinates of the plan
 // the maps come from) sampled trilinearly on two mip levels k and k + 1
 // (core/image/mip_pyramid.h) into out[0 .. x_end - x_begin - 1]: out[i] = (a (256 - w) + b w +
-// 128) / 256 per channel for w = weights[i] in [0, 256], a the sample of `source` through `map`
+// 128) / 256 per channel for w = weights[i] in [0, 255], a the sample of `source` through `map`
 // and b that of `next_source` through `next_map`. With AVX2 the positions are found once, on
 // level k, and level k + 1's derived from them (within one unit of 2^-16 of its own map's);
 // each sample is within one level of the exact interpolation, as run_bilinear_row's. Without
