@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "adapters/painted_text.h"
+#include "adapters/text_cache.h"
 #include "image/image.h"
 #include "views/animation_controls.h"
 #include "views/panel_layout.h"
@@ -279,6 +280,8 @@ class AnimationView : public ViewPage {
   std::int64_t hole_map_pixels_ = 0;
   int next_buffer_ = 0;
   CaptionLines lines_;  // of the last paint: the titles' size and lines
+  // The panels' titles and captions as measured, wrapped and elided before (layout is const).
+  mutable TextCache text_cache_;
 };
 
 }  // namespace oflab
