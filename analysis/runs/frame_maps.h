@@ -24,4 +24,11 @@ std::vector<std::uint8_t> channel_difference_map(const Image& shown, const Image
 // afresh on the cadence). Precondition: exact is the animator's camera size or empty.
 std::vector<std::uint8_t> reprojection_hole_map(const Animator& animator, const Image& exact);
 
+// What reprojection_hole_map reads: the scene engine's source pixel of every pixel of the
+// frame shown now (row-major, -1 where no warped pixel reached it), or nullptr when that
+// frame is no reprojection or `exact` is empty or of another size (then the map is empty).
+// Valid until the animator advances. A hole is a pixel with source -1 that `exact` covers
+// (alpha > 0).
+const std::vector<int>* reprojection_sources(const Animator& animator, const Image& exact);
+
 }  // namespace oflab

@@ -7,11 +7,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <vector>
 
 #include "display/palette.h"
+#include "image/bilinear_blend.h"  // OFLAB_WARP_SSE2 with <emmintrin.h> on x86-64
 #include "image/thread_pool.h"
 
 namespace oflab {
@@ -101,58 +101,178 @@ QImage difference_map(const Image& a, const Image& b, int full_scale) {
 
 namespace {
 
-// One row of the difference map: the largest channel difference of each pixel through the
-// colour table (`channels` is scratch of 4 x width bytes).
-void difference_row(const Pixel* row_a, const Pixel* row_b, const std::array<QRgb, 256>& colours,
-                    std::vector<std::uint8_t>& channels, QRgb* line, int width) {
-  const auto* pa = reinterpret_cast<const std::uint8_t*>(row_a);
-  const auto* pb = reinterpret_cast<const std::uint8_t*>(row_b);
-  if (std::memcmp(pa, pb, channels.size()) == 0) {  // most rows miss the plane in both
-    std::fill(line, line + width, colours[0]);
-    return;
-  }
-  for (size_t i = 0; i < channels.size(); ++i) {
-    channels[i] = std::uint8_t(pa[i] > pb[i] ? pa[i] - pb[i] : pb[i] - pa[i]);
-  }
-  for (int x = 0; x < width; ++x) {
-    const std::uint8_t* c = &channels[size_t(x) * 4];
-    line[x] = colours[std::max(std::max(c[0], c[1]), std::max(c[2], c[3]))];
-  }
-}
-
-}  // namespace
-
-void difference_map_into(const Image& a, const Image& b, int full_scale, QImage& out) {
-  const QSize size(std::max(1, a.width()), std::max(1, a.height()));
-  if (out.size() != size || out.format() != QImage::Format_RGB32) {
-    out = QImage(size, QImage::Format_RGB32);
-  }
-  if (a.empty()) out.fill(QColor(0, 0, 0));
-  // Differences are whole grey levels 0..255: colour each once.
+// The colour of each difference 0..255 (whole grey levels) over [0, full_scale].
+std::array<QRgb, 256> difference_colours(int full_scale) {
   std::array<QRgb, 256> colours;
   for (int d = 0; d < 256; ++d) {
     const Rgb8 c = magnitude_colour(static_cast<double>(d) / full_scale);
     colours[size_t(d)] = qRgb(c.r, c.g, c.b);
   }
+  return colours;
+}
+
+// The largest of the four channels' absolute differences of each pixel of a row into
+// `largest` (width entries); returns whether any is not 0 (the rows differ). SSE2 takes four
+// pixels at a time: the bytes' differences both ways (saturated, so one of them is 0), then
+// the largest byte of each pixel's 32 bits. The rest, and other targets, one pixel at a time.
+bool largest_differences(const Pixel* row_a, const Pixel* row_b, int width,
+                         std::vector<std::uint32_t>& largest) {
+  const auto* pa = reinterpret_cast<const std::uint8_t*>(row_a);
+  const auto* pb = reinterpret_cast<const std::uint8_t*>(row_b);
+  std::uint32_t any = 0;
+  int x = 0;
+#if defined(OFLAB_WARP_SSE2)
+  __m128i any4 = _mm_setzero_si128();
+  const __m128i low_byte = _mm_set1_epi32(0xff);
+  for (; x + 4 <= width; x += 4) {
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pa + size_t(x) * 4));
+    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pb + size_t(x) * 4));
+    __m128i d = _mm_or_si128(_mm_subs_epu8(a, b), _mm_subs_epu8(b, a));
+    d = _mm_max_epu8(d, _mm_srli_epi32(d, 8));
+    d = _mm_and_si128(_mm_max_epu8(d, _mm_srli_epi32(d, 16)), low_byte);
+    any4 = _mm_or_si128(any4, d);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(largest.data() + x), d);
+  }
+  any = std::uint32_t(_mm_movemask_epi8(_mm_cmpeq_epi8(any4, _mm_setzero_si128())) != 0xffff);
+#endif
+  for (; x < width; ++x) {
+    std::uint32_t m = 0;
+    for (int c = 0; c < 4; ++c) {
+      const std::uint8_t u = pa[size_t(x) * 4 + size_t(c)], v = pb[size_t(x) * 4 + size_t(c)];
+      m = std::max<std::uint32_t>(m, u > v ? u - v : v - u);
+    }
+    largest[size_t(x)] = m;
+    any |= m;
+  }
+  return any != 0;
+}
+
+// One row of the difference map: each pixel's largest channel difference through the colour
+// table (`largest` is scratch of width entries). Returns whether the rows differ.
+bool difference_row(const Pixel* row_a, const Pixel* row_b, const std::array<QRgb, 256>& colours,
+                    std::vector<std::uint32_t>& largest, QRgb* line, int width) {
+  if (!largest_differences(row_a, row_b, width, largest)) {  // most rows miss the plane in both
+    std::fill(line, line + width, colours[0]);
+    return false;
+  }
+  for (int x = 0; x < width; ++x) line[x] = colours[largest[size_t(x)]];
+  return true;
+}
+
+// The difference map's image: `out` reused when it is a's size (at least 1 x 1) and RGB32.
+void prepare_difference_map(const Image& a, QImage& out) {
+  const QSize size(std::max(1, a.width()), std::max(1, a.height()));
+  if (out.size() != size || out.format() != QImage::Format_RGB32) {
+    out = QImage(size, QImage::Format_RGB32);
+  }
+  if (a.empty()) out.fill(QColor(0, 0, 0));
+}
+
+// Bands of the maps: at least 8 rows and about 64 K pixels each.
+int band_rows(const Image& a) { return std::max(8, 65536 / std::max(1, a.width())); }
+
+// frame_agreement's whole-number tallies: pixels covered (alpha > 127) in both images, in
+// either, and the sum of squared RGB differences over those covered in both.
+struct AgreementTally {
+  std::int64_t both = 0, either = 0, squared = 0;
+  void add(const AgreementTally& t) {
+    both += t.both;
+    either += t.either;
+    squared += t.squared;
+  }
+};
+
+// The tallies of one row, added to `t`. Without branches and in 32-bit sums over pieces of
+// kPiece pixels (kPiece * 3 * 255^2 < 2^31), so that the compiler vectorises the loop: a pixel
+// not covered in both adds 0 to the squares.
+void tally_row(const Pixel* pa, const Pixel* pb, int width, AgreementTally& t) {
+  constexpr int kPiece = 8192;
+  for (int begin = 0; begin < width; begin += kPiece) {
+    const int end = std::min(width, begin + kPiece);
+    std::int32_t both = 0, either = 0, squared = 0;
+    for (int x = begin; x < end; ++x) {
+      const int ca = pa[x].a > 127, cb = pb[x].a > 127;
+      const int dr = pa[x].r - pb[x].r, dg = pa[x].g - pb[x].g, db = pa[x].b - pb[x].b;
+      either += ca | cb;
+      both += ca & cb;
+      squared += (ca & cb) * (dr * dr + dg * dg + db * db);
+    }
+    t.both += both;
+    t.either += either;
+    t.squared += squared;
+  }
+}
+
+// The tallies of a row that is the same in both images: its covered pixels are covered in
+// both and in either, and no colour differs.
+void tally_same_row(const Pixel* pa, int width, AgreementTally& t) {
+  std::int32_t covered = 0;
+  for (int x = 0; x < width; ++x) covered += pa[x].a > 127;
+  t.both += covered;
+  t.either += covered;
+}
+
+FrameAgreement agreement_of(const AgreementTally& total) {
+  FrameAgreement result;
+  result.mask_iou = total.either > 0 ? static_cast<double>(total.both) / total.either : 1.0;
+  const double mse = total.both > 0 ? static_cast<double>(total.squared) / (3.0 * total.both) : 0.0;
+  result.psnr_db =
+      mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+  return result;
+}
+
+}  // namespace
+
+void difference_map_into(const Image& a, const Image& b, int full_scale, QImage& out) {
+  prepare_difference_map(a, out);
+  const std::array<QRgb, 256> colours = difference_colours(full_scale);
   // One frame against itself (the comparison's exact panel showing a compared re-render's
   // frame): every difference is 0, so the map is its colour throughout.
   if (&a == &b) {
     out.fill(colours[0]);
     return;
   }
-  // The channel differences of a row first, in a loop over bytes the compiler vectorises,
-  // then the largest of each pixel's four through the colour table; bands of rows on core's
-  // worker threads (core/image/thread_pool.h), each with its own row of differences. The
-  // image is detached here, once, so that the bands' scanLine() only reads its sharing.
+  // Bands of rows on core's worker threads (core/image/thread_pool.h), each with its own row of
+  // differences. The image is detached here, once, so that the bands' scanLine() only reads
+  // its sharing.
   out.bits();
-  for_each_band(a.height(), std::max(8, 65536 / std::max(1, a.width())),
-                [&](int, int begin, int end) {
-                  std::vector<std::uint8_t> channels(size_t(a.width()) * 4);
-                  for (int y = begin; y < end; ++y) {
-                    difference_row(a.row(y), b.row(y), colours, channels,
-                                   reinterpret_cast<QRgb*>(out.scanLine(y)), a.width());
-                  }
-                });
+  for_each_band(a.height(), band_rows(a), [&](int, int begin, int end) {
+    std::vector<std::uint32_t> largest(size_t(a.width()));
+    for (int y = begin; y < end; ++y) {
+      difference_row(a.row(y), b.row(y), colours, largest, reinterpret_cast<QRgb*>(out.scanLine(y)),
+                     a.width());
+    }
+  });
+}
+
+FrameAgreement difference_map_and_agreement(const Image& a, const Image& b, int full_scale,
+                                            QImage& out) {
+  if (&a == &b || a.empty()) {  // no pass to share
+    difference_map_into(a, b, full_scale, out);
+    return frame_agreement(a, b);
+  }
+  prepare_difference_map(a, out);
+  const std::array<QRgb, 256> colours = difference_colours(full_scale);
+  out.bits();  // detached once, as in difference_map_into
+  // Each band's tallies kept in locals and stored once, summed in band order after.
+  std::array<AgreementTally, kMaxBands> tallies{};
+  for_each_band(a.height(), band_rows(a), [&](int band, int begin, int end) {
+    std::vector<std::uint32_t> largest(size_t(a.width()));
+    AgreementTally tally;
+    for (int y = begin; y < end; ++y) {
+      // A row the same in both (its differences all 0) needs only its coverage counted.
+      if (difference_row(a.row(y), b.row(y), colours, largest,
+                         reinterpret_cast<QRgb*>(out.scanLine(y)), a.width())) {
+        tally_row(a.row(y), b.row(y), a.width(), tally);
+      } else {
+        tally_same_row(a.row(y), a.width(), tally);
+      }
+    }
+    tallies[size_t(band)] = tally;
+  });
+  AgreementTally total;
+  for (const AgreementTally& t : tallies) total.add(t);
+  return agreement_of(total);
 }
 
 namespace {
@@ -222,50 +342,23 @@ void draw_difference_bar(QPainter& painter, const QRectF& area, int full_scale, 
 }
 
 FrameAgreement frame_agreement(const Image& a, const Image& b) {
-  FrameAgreement result;
   // One frame against itself: its mask is its own (IoU 1, as for two empty ones) and no
   // colour differs (PSNR infinite), what the tallies below would find, without the pass.
   if (&a == &b) {
+    FrameAgreement result;
     result.psnr_db = std::numeric_limits<double>::infinity();
     return result;
   }
   // Whole-number tallies per band of rows (core's worker threads), summed in band order.
-  struct Tally {
-    std::int64_t both = 0, either = 0, squared = 0;
-  };
-  std::array<Tally, kMaxBands> tallies{};
-  for_each_band(
-      a.height(), std::max(8, 65536 / std::max(1, a.width())), [&](int band, int begin, int end) {
-        Tally& t = tallies[size_t(band)];
-        for (int y = begin; y < end; ++y) {
-          const Pixel* pa = a.row(y);
-          const Pixel* pb = b.row(y);
-          // Without branches, so that the compiler vectorises the row: a pixel
-          // not covered in both adds 0 to the squares.
-          std::int64_t both = 0, either = 0, squared = 0;
-          for (int x = 0; x < a.width(); ++x) {
-            const int ca = pa[x].a > 127, cb = pb[x].a > 127;
-            const int dr = pa[x].r - pb[x].r, dg = pa[x].g - pb[x].g, db = pa[x].b - pb[x].b;
-            either += ca | cb;
-            both += ca & cb;
-            squared += std::int64_t(ca & cb) * (dr * dr + dg * dg + db * db);
-          }
-          t.both += both;
-          t.either += either;
-          t.squared += squared;
-        }
-      });
-  Tally total;
-  for (const Tally& t : tallies) {
-    total.both += t.both;
-    total.either += t.either;
-    total.squared += t.squared;
-  }
-  result.mask_iou = total.either > 0 ? static_cast<double>(total.both) / total.either : 1.0;
-  const double mse = total.both > 0 ? static_cast<double>(total.squared) / (3.0 * total.both) : 0.0;
-  result.psnr_db =
-      mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
-  return result;
+  std::array<AgreementTally, kMaxBands> tallies{};
+  for_each_band(a.height(), band_rows(a), [&](int band, int begin, int end) {
+    AgreementTally tally;
+    for (int y = begin; y < end; ++y) tally_row(a.row(y), b.row(y), a.width(), tally);
+    tallies[size_t(band)] = tally;
+  });
+  AgreementTally total;
+  for (const AgreementTally& t : tallies) total.add(t);
+  return agreement_of(total);
 }
 
 }  // namespace oflab

@@ -62,4 +62,10 @@ struct FrameAgreement {
 };
 FrameAgreement frame_agreement(const Image& a, const Image& b);
 
+// difference_map_into(a, b, full_scale, out) and frame_agreement(a, b) in one pass over the
+// two images (each row read once, in bands on core's worker threads): the same map and the
+// same figures, what a heat map and its caption show. Preconditions as difference_map_into.
+FrameAgreement difference_map_and_agreement(const Image& a, const Image& b, int full_scale,
+                                            QImage& out);
+
 }  // namespace oflab

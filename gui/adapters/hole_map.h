@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "image/image.h"
+
 namespace oflab {
 
 // The colour hole pixels are marked in: magenta, which neither the viridis ramp nor a level's
@@ -21,5 +23,13 @@ QColor hole_colour();
 // a hole, row-major) in hole_colour() on `map` (a heat map of the same size) and returns how
 // many it marked; 0 for an empty mask.
 std::int64_t mark_holes(QImage& map, const std::vector<std::uint8_t>& holes);
+
+// The same without the mask: marks the pixels whose reprojection source is -1 (`sources`,
+// analysis/runs/frame_maps.h reprojection_sources, row-major) and that `exact` covers
+// (alpha > 0), in bands of rows on core's worker threads, and returns how many: the pixels and
+// the count of mark_holes(map, reprojection_hole_map(...)). 0, marking nothing, when `map`,
+// `sources` and `exact` differ in size.
+std::int64_t mark_reprojection_holes(QImage& map, const std::vector<int>& sources,
+                                     const Image& exact);
 
 }  // namespace oflab

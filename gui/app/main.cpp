@@ -1,10 +1,7 @@
 // oflab: the teaching GUI. Parses the command line first (bad input exits 2 without
 // needing a display), then opens the window; all work happens in the oflab_gui library.
 // Its last resort is oflab-cli's (run_guarded, analysis/cli/commands.h).
-#include <QVTKOpenGLNativeWidget.h>
-
 #include <QApplication>
-#include <QSurfaceFormat>
 #include <iostream>
 
 #include "app/app_runner.h"
@@ -25,8 +22,9 @@ int run_main(int argc, char** argv) {
     std::cout << oflab::launch_usage();
     return 0;
   }
-  // VTK's OpenGL widget needs its surface format before the application exists.
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  // No surface format of VTK's OpenGL widget: the window holds no OpenGL widget (VTK renders
+  // offscreen, adapters/offscreen_vtk.h), and that format's alpha buffer gave the window an
+  // ARGB visual whose backing store Qt clears before every repaint (a full pass over the view).
   oflab::GuardedApplication app(argc, argv);
   return oflab::run_oflab(options, std::cout, std::cerr);
 }

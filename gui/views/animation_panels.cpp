@@ -137,9 +137,13 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
   for (size_t i = 0; i < contents.size(); ++i) {
     QStringList wrapped;
     // At the separators first; a piece still wider than the cell breaks at its spaces (a
-    // caption the lesson refers to is never elided).
-    for (const QString& line : contents[i].caption)
-      wrapped += broken_at_spaces(wrapped_caption(line, metrics, cell_width), metrics, cell_width);
+    // caption the lesson refers to is never elided). A line wrapped before at this width and
+    // font is not measured again.
+    for (const QString& line : contents[i].caption) {
+      wrapped += text_cache_.lines(font, cell_width, line, [&] {
+        return broken_at_spaces(wrapped_caption(line, metrics, cell_width), metrics, cell_width);
+      });
+    }
     contents[i].caption = wrapped;
     int& row = heat_row && int(i) >= columns ? lines.heat : lines.top;
     row = std::max(row, int(wrapped.size()));
@@ -150,7 +154,9 @@ AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelConten
     bold.setPixelSize(int(theme_.font_size * scale));
     const QFontMetrics title_metrics(bold);
     const bool fits = std::all_of(contents.begin(), contents.end(), [&](const PanelContent& c) {
-      return title_metrics.horizontalAdvance(c.title) <= cell_width;
+      return text_cache_.advance(bold, c.title, [&] {
+        return title_metrics.horizontalAdvance(c.title);
+      }) <= cell_width;
     });
     if (fits) {
       lines.title_px = bold.pixelSize();
@@ -181,19 +187,17 @@ void AnimationView::paint_texts(QPainter& painter, const PanelContent& panel,
   const double title_top = cell.title.bottom() - title_row * title.size();
   for (int i = 0; i < title.size(); ++i) {
     const QRectF row(cell.title.left(), title_top + i * title_row, cell.title.width(), title_row);
-    painter.drawText(row, Qt::AlignCenter,
-                     QFontMetrics(font).elidedText(title[i], Qt::ElideRight, int(row.width())));
+    painter.drawText(row, Qt::AlignCenter, text_cache_.elided(font, title[i], int(row.width())));
   }
   font.setPixelSize(text_px);
   font.setBold(false);
   painter.setFont(font);
-  const QFontMetrics metrics(font);
   const double line = text_px * kCaptionLine;
   for (int i = 0; i < panel.caption.size() && (i + 1) * line <= cell.caption.height() + 1; ++i) {
     const QRectF row(cell.caption.left(), cell.caption.top() + i * line, cell.caption.width(),
                      line);
     painter.drawText(row, Qt::AlignCenter,
-                     metrics.elidedText(panel.caption[i], Qt::ElideRight, int(row.width())));
+                     text_cache_.elided(font, panel.caption[i], int(row.width())));
   }
 }
 
@@ -270,10 +274,14 @@ bool AnimationView::texts_fit(const PanelPlan& plan) const {
     const PanelCell& cell = plan.cells[i];
     if (cell.image.height() < 3 * theme_.font_size) return false;
     for (const QString& line : plan.contents[i].title.split(QLatin1Char('\n'))) {
-      if (title.horizontalAdvance(line) > cell.title.width()) return false;
+      const int width =
+          text_cache_.advance(bold, line, [&] { return title.horizontalAdvance(line); });
+      if (width > cell.title.width()) return false;
     }
     for (const QString& line : plan.contents[i].caption) {
-      if (text.horizontalAdvance(line) > cell.caption.width()) return false;
+      const int width =
+          text_cache_.advance(font, line, [&] { return text.horizontalAdvance(line); });
+      if (width > cell.caption.width()) return false;
     }
   }
   return true;

@@ -15,14 +15,12 @@
 
 #include "adapters/exact_frames.h"
 #include "adapters/frame_images.h"
-#include "adapters/hole_map.h"
 #include "adapters/painted_text.h"
 #include "flow/limits.h"
 #include "models/animation_model.h"
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
 #include "player/stage_times.h"
-#include "runs/frame_maps.h"
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_captions.h"
@@ -341,32 +339,26 @@ std::vector<PanelContent> AnimationView::comparison_panels() {
   std::vector<PanelContent> shown, heat;
   const Image& exact = exact_image();
   const std::vector<ComparedRun>& runs = comparison_->runs();
-  if (heat_images_.size() < runs.size()) heat_images_.resize(runs.size());
+  if (heat_maps_.size() < runs.size()) heat_maps_.resize(runs.size());  // no move under `map`
   for (const ComparedRun& run : runs) {
     const QString name = QString::fromLatin1(run.policy->name);
     if (!run.animator()) {
       shown.push_back({name, QImage(), {}, {QString::fromStdString(run.problem)}});
       continue;
     }
-    const Image& image = run.animator()->image();
     shown.push_back(
-        {tr("%1 policy").arg(name), image_view(image), run.animator()->outlines(),
+        {tr("%1 policy").arg(name), image_view(run.animator()->image()), run.animator()->outlines(),
          run_caption(run.last, *run.policy, model_->settings(), double(run.pixels_written),
                      run.time_ms, double(run.pixels_warped))});
-    QImage& map = heat_images_[heat.size()];
-    const StageTimer maps(FrameStage::kMaps);
-    difference_map_into(image, exact, kDifferenceScale, map);
-    QStringList caption = agreement_caption(image, exact);
+    const HeatMap& map = comparison_heat_map(heat.size(), run, exact);
+    QStringList caption = map.agreement;
     caption << sub_pixel_note(run.last);
-    const bool per_pixel = run.policy->frame_warp == FrameWarp::kPerPixelDepth;
-    if (per_pixel) {
-      // Per-pixel depth reprojection: its holes are marked, never shown as a colour error.
-      const std::int64_t marked = mark_holes(map, reprojection_hole_map(*run.animator(), exact));
-      hole_map_pixels_ += marked;
-      caption << tr("holes (magenta): %1 px").arg(marked);
+    if (map.holes >= 0) {
+      hole_map_pixels_ += map.holes;
+      caption << tr("holes (magenta): %1 px").arg(map.holes);
     }
-    heat.push_back({per_pixel ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
-                    map,
+    heat.push_back({map.holes >= 0 ? tr("%1 - exact, holes").arg(name) : tr("%1 - exact").arg(name),
+                    map.image,
                     {},
                     caption});
   }
@@ -382,14 +374,17 @@ std::vector<PanelContent> AnimationView::panels() {
       if (!comparison_->runs().empty()) return comparison_panels();
       break;
     case PanelDisplay::kDifference: {
-      if (heat_images_.empty()) heat_images_.resize(1);
+      if (heat_maps_.empty()) heat_maps_.resize(1);
+      HeatMap& map = heat_maps_[0];
+      map.animator = nullptr;  // not a compared run's map
       const StageTimer maps(FrameStage::kMaps);
-      difference_map_into(engine_image(), exact_image(), kDifferenceScale, heat_images_[0]);
-      QStringList caption = agreement_caption(engine_image(), exact_image());
+      ++map_passes_;
+      QStringList caption = agreement_caption(
+          difference_map_and_agreement(engine_image(), exact_image(), kDifferenceScale, map.image));
       caption << sub_pixel_note(model_->current());
       const QString view = affine_view_line(model_->current(), *model_->settings().policy);
       if (!view.isEmpty()) caption << view;
-      return {{tr("engine - exact"), heat_images_[0], {}, caption}};
+      return {{tr("engine - exact"), map.image, {}, caption}};
     }
     case PanelDisplay::kBlink:
       return {blink_phase_ ? exact_panel() : engine_panel()};

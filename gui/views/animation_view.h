@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "adapters/painted_text.h"
+#include "adapters/text_cache.h"
 #include "image/image.h"
 #include "views/animation_controls.h"
 #include "views/panel_layout.h"
@@ -46,6 +47,8 @@ class QTimer;
 namespace oflab {
 
 class AnimationModel;
+class Animator;
+struct ComparedRun;
 class ExactFrameRenderer;
 class ImageCanvas;
 class PolicyComparison;
@@ -113,6 +116,9 @@ class AnimationView : public ViewPage {
   // Hole pixels marked on the comparison's heat maps in the last render (adapters/hole_map.h:
   // the depth-reprojection policy's holes on its frame shown now); 0 in other layouts.
   std::int64_t hole_map_pixels() const { return hole_map_pixels_; }
+  // How many heat maps the view has computed: a render of a frame already on screen computes
+  // none (for tests).
+  int map_passes() const { return map_passes_; }
   // Every text the view paints now, at its canvas's size, with its box in canvas pixels
   // (titles, captions, legends, colour-bar labels); for checks of legibility.
   std::vector<PaintedText> painted_texts();
@@ -251,11 +257,31 @@ class AnimationView : public ViewPage {
   std::vector<QRectF> frame_bounds_;  // the plane's image at each frame of the loop
   QRectF shown_frame_;
   std::vector<QRectF> panel_rects_;
-  QImage buffers_[2];                // the composed view, painted into in turn (compose)
-  std::vector<QImage> heat_images_;  // the heat maps of the last frame, reused
+  QImage buffers_[2];  // the composed view, painted into in turn (compose)
+  // A heat map as last computed, with its caption's figures and what it was computed of: a
+  // compared run's frame already on screen (the same run, frame and exact frame) is not mapped
+  // again (comparison_heat_map).
+  struct HeatMap {
+    QImage image;
+    QStringList agreement;    // agreement_caption's lines
+    std::int64_t holes = -1;  // hole pixels marked; -1 for a policy without holes
+    const Animator* animator = nullptr;
+    int frame = -1;
+    double time_ms = 0.0;
+    std::int64_t pixels_written = 0;
+    const Pixel* exact = nullptr;
+    int exact_frame = -1;
+  };
+  // Run `index`'s heat map against `exact` (the current exact frame), computed when it is not
+  // the one already computed.
+  const HeatMap& comparison_heat_map(std::size_t index, const ComparedRun& run, const Image& exact);
+  std::vector<HeatMap> heat_maps_;  // the heat maps of the last frame, reused
+  int map_passes_ = 0;              // heat maps computed (map_passes)
   std::int64_t hole_map_pixels_ = 0;
   int next_buffer_ = 0;
   CaptionLines lines_;  // of the last paint: the titles' size and lines
+  // The panels' titles and captions as measured, wrapped and elided before (layout is const).
+  mutable TextCache text_cache_;
 };
 
 }  // namespace oflab

@@ -77,7 +77,10 @@ QStringList sub_pixel_note(const AnimationFrame& frame) {
 }
 
 QStringList agreement_caption(const Image& shown, const Image& exact) {
-  const FrameAgreement a = frame_agreement(shown, exact);
+  return agreement_caption(frame_agreement(shown, exact));
+}
+
+QStringList agreement_caption(const FrameAgreement& a) {
   const QString psnr = std::isfinite(a.psnr_db)
                            ? QString::number(a.psnr_db, 'f', 1) + QStringLiteral(" dB")
                            : QObject::tr("equal");

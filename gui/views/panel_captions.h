@@ -7,6 +7,7 @@
 #include <QString>
 #include <QStringList>
 
+#include "adapters/frame_images.h"
 #include "engine/animator.h"
 #include "engine/engine.h"
 #include "engine/reuse_policy.h"
@@ -39,5 +40,7 @@ QStringList sub_pixel_note(const AnimationFrame& frame);
 // The caption of a difference heat map of `shown` against `exact` (same size): the IoU of
 // their coverage masks and the PSNR in dB ("equal" when they are identical).
 QStringList agreement_caption(const Image& shown, const Image& exact);
+// The same of figures already measured (difference_map_and_agreement).
+QStringList agreement_caption(const FrameAgreement& agreement);
 
 }  // namespace oflab

@@ -61,12 +61,24 @@ void WorldTexts::lay_out_caption(const QSize& size, const QFont& base, const Vie
   const QColor text_colour = to_qcolor(theme.text);
   const QFont caption_font = sized(base, theme.label_size, false);
   const QFontMetricsF caption_metrics(caption_font);
-  const std::vector<QString> lines =
-      wrap_text(QString::fromStdString(caption), caption_metrics, size.width() - 2.0 * kMargin);
+  const QString text = QString::fromStdString(caption);
+  const QString font_key = caption_font.key();
+  const double width = size.width() - 2.0 * kMargin;
+  WrappedCaption& wrapped = wrapped_caption_;
+  if (wrapped.text != text || wrapped.font_key != font_key || wrapped.width != width) {
+    wrapped.text = text;
+    wrapped.font_key = font_key;
+    wrapped.width = width;
+    wrapped.lines = wrap_text(text, caption_metrics, width);
+    wrapped.advances.clear();
+    for (const QString& line : wrapped.lines)
+      wrapped.advances.push_back(caption_metrics.horizontalAdvance(line));
+  }
+  const std::vector<QString>& lines = wrapped.lines;
   double top = size.height() - kMargin - caption_metrics.height() * double(lines.size());
-  for (const QString& line : lines) {
-    const QRectF box(kMargin, top, caption_metrics.horizontalAdvance(line),
-                     caption_metrics.height());
+  for (size_t k = 0; k < lines.size(); ++k) {
+    const QString& line = lines[k];
+    const QRectF box(kMargin, top, wrapped.advances[k], caption_metrics.height());
     if (!line.isEmpty()) {
       drawn_.push_back({line, box, caption_font, text_colour, false, {}});
       taken.push_back(box);

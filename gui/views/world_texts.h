@@ -93,6 +93,17 @@ class WorldTexts {
   };
   std::vector<Drawn> drawn_;
   QRectF free_area_;
+  // The caption's lines and their advances as last wrapped, with what they were wrapped of
+  // (the caption, the font's key, the width to the bit): the same caption laid out again is
+  // not shaped again (wrap_text measures each word's line as it grows).
+  struct WrappedCaption {
+    QString text;
+    QString font_key;
+    double width = -1.0;
+    std::vector<QString> lines;
+    std::vector<double> advances;
+  };
+  WrappedCaption wrapped_caption_;
   QColor patch_;
   double leader_width_ = 1.0;
 };

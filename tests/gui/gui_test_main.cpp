@@ -1,17 +1,14 @@
 // Test entry point: GoogleTest first (so --gtest_list_tests works without a display), then
-// VTK's surface format and the QApplication every GUI test needs.
-#include <QVTKOpenGLNativeWidget.h>
+// the QApplication every GUI test needs, with Qt's default surface format as oflab has it.
 #include <gtest/gtest.h>
 
 #include <QApplication>
-#include <QSurfaceFormat>
 
 #include "app/app_runner.h"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   if (::testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   oflab::GuardedApplication app(argc, argv);  // as oflab runs: escaped exceptions shown
   return RUN_ALL_TESTS();
 }

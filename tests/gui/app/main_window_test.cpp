@@ -2,8 +2,10 @@
 // scene, impossible input is refused with a visible message, lessons set themselves up.
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QScreen>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QWindow>
 #include <algorithm>
 #include <fstream>
 
@@ -86,6 +88,26 @@ TEST_F(MainWindowTest, WindowScreenshotContainsTheRenderedViews) {
   const QWidget* vtk = view_page<FlowView>(window(), "flow")->canvas();
   const QRect area(vtk->mapTo(&window(), QPoint(0, 0)), vtk->size());
   EXPECT_GT(distinct_colours(image.copy(area)), 50);
+}
+
+TEST_F(MainWindowTest, TheWindowOnScreenIsTheWidgetsPictureWithoutAnAlphaChannel) {
+  // No alpha in the window's format, so Qt's backing store does not clear what it repaints
+  // before each repaint (it did under VTK's OpenGL format: a pass over the whole view).
+  QWindow* handle = window().windowHandle();
+  ASSERT_NE(handle, nullptr);
+  EXPECT_FALSE(handle->format().hasAlpha());
+  // What the screen shows is what the widgets paint.
+  window().repaint();
+  QApplication::processEvents();
+  QTest::qWait(50);
+  const QImage screen = handle->screen()
+                            ->grabWindow(window().winId())
+                            .toImage()
+                            .convertToFormat(QImage::Format_RGB32);
+  const QImage widgets = window().grab().toImage().convertToFormat(QImage::Format_RGB32);
+  ASSERT_EQ(screen.size(), widgets.size());
+  EXPECT_TRUE(screen == widgets);
+  EXPECT_GT(distinct_colours(screen), 50);  // control: a real picture, not a blank one
 }
 
 TEST_F(MainWindowTest, ChangingAMotionValueChangesTheFlowView) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "adapters/frame_images.h"
 #include "adapters/hole_map.h"
 #include "app/lesson_check.h"
 #include "models/animation_model.h"
@@ -124,6 +125,55 @@ TEST_F(ReprojectionViewTest, HoleMapMarksTheDepthReprojectionsHolesAndOnlyThose)
   window().play_frames(1);
   animation().render_image();
   EXPECT_EQ(animation().hole_map_pixels(), 0);
+}
+
+TEST_F(ReprojectionViewTest, HolesMarkedFromTheSourcesAreTheMasksHoles) {
+  compare({"depth-reprojection", "cadence"}, "translate", 15);  // frame 15: warped, holes
+  const ComparedRun& run = window().model()->comparison().runs().front();
+  const Image& exact = animation().exact_image();
+  const QImage unmarked = difference_map(run.animator()->image(), exact, 128);
+  // The mask's way (a byte per pixel, then one pass on the window's thread) ...
+  QImage by_mask = unmarked.copy();
+  const std::int64_t mask_count =
+      mark_holes(by_mask, reprojection_hole_map(*run.animator(), exact));
+  // ... and the sources' way, in bands: the same pixels and count.
+  const std::vector<int>* sources = reprojection_sources(*run.animator(), exact);
+  ASSERT_NE(sources, nullptr);
+  QImage by_sources = unmarked.copy();
+  EXPECT_EQ(mark_reprojection_holes(by_sources, *sources, exact), mask_count);
+  EXPECT_TRUE(by_sources == by_mask);
+  EXPECT_EQ(animation().hole_map_pixels(), mask_count);
+  // Controls: there are holes, so the marks changed the map; the cadence policy has no
+  // sources; a map of another size is left alone.
+  ASSERT_GT(mask_count, 0);
+  EXPECT_FALSE(by_sources == unmarked);
+  EXPECT_EQ(reprojection_sources(*window().model()->comparison().runs()[1].animator(), exact),
+            nullptr);
+  QImage small(8, 8, QImage::Format_RGB32);
+  small.fill(Qt::black);
+  EXPECT_EQ(mark_reprojection_holes(small, *sources, exact), 0);
+}
+
+TEST_F(ReprojectionViewTest, AFrameAlreadyOnScreenIsNotMappedAgain) {
+  compare({"depth-reprojection", "cadence"}, "translate", 15);
+  const int passes = animation().map_passes();
+  const QImage first = animation().render_image();
+  const std::int64_t holes = animation().hole_map_pixels();
+  // The same frame drawn again: no map computed, the same picture and hole count.
+  const QImage again = animation().render_image();
+  EXPECT_EQ(animation().map_passes(), passes);
+  EXPECT_TRUE(again == first);
+  EXPECT_EQ(animation().hole_map_pixels(), holes);
+  // Control: the next frame maps both runs again.
+  window().play_frames(1);
+  animation().render_image();
+  EXPECT_EQ(animation().map_passes(), passes + 2);
+  // Another policy in the comparison restarts the runs: both mapped again (once, whether the
+  // change redraws the view itself or the render below does).
+  const int before = animation().map_passes();
+  ASSERT_TRUE(window().model()->set_compared({"depth-reprojection", "perspective"}));
+  animation().render_image();
+  EXPECT_EQ(animation().map_passes(), before + 2);
 }
 
 TEST_F(ReprojectionViewTest, TimewarpsErrorGrowsWithInverseDepthUnderTranslationOnly) {

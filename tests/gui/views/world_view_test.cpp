@@ -18,6 +18,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 
+#include <QPainter>
 #include <cmath>
 #include <set>
 
@@ -360,6 +361,42 @@ TEST(WorldTexts, LabelsOverThePicturesAreFoundAndAvoidedWhereTheyCanBe) {
   texts.lay_out(size, QFont(), theme, project);
   texts.content = {QPolygonF(QRectF(300, 180, 400, 70))};
   EXPECT_FALSE(texts.labels_over_content().empty()) << "the wanted places cover the picture";
+}
+
+// The caption wrapped once and kept while its text, font and width are the same: painted
+// after a second lay-out, and after a lay-out at another width and back, the texts are the
+// pixels of a first lay-out by a fresh WorldTexts (controls: another width and another
+// caption paint other pixels).
+TEST(WorldTexts, AKeptCaptionPaintsThePixelsOfAFreshLayOut) {
+  const QSize size(700, 400);
+  const ViewTheme theme = view_theme(true);
+  const auto project = [](const Vec3&, QPointF* canvas) {
+    *canvas = QPointF(350, 200);
+    return true;
+  };
+  const std::string caption =
+      "The viewer moves sideways past four cubes; each pixel moves by its own depth.\n"
+      "What the rendered frame did not see has no pixel to move: a hole.";
+  const auto painted = [&](WorldTexts& texts, const QSize& at) {
+    texts.lay_out(at, QFont(), theme, project);
+    QImage image(size, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    texts.paint(painter);
+    return image;
+  };
+  WorldTexts fresh;
+  fresh.caption = caption;
+  const QImage first = painted(fresh, size);
+  WorldTexts kept;
+  kept.caption = caption;
+  painted(kept, size);
+  EXPECT_TRUE(painted(kept, size) == first);  // laid out again from what it kept
+  const QImage narrower = painted(kept, QSize(420, 400));
+  EXPECT_FALSE(narrower == first);  // control: another width wraps anew
+  EXPECT_TRUE(painted(kept, size) == first);
+  kept.caption = "Another caption.";
+  EXPECT_FALSE(painted(kept, size) == first);  // control: another caption
 }
 
 TEST_F(WorldViewTest, LabelsLeaveTheImagePlanesPictureAndThePlaneClear) {
