@@ -92,6 +92,7 @@ function syncControls() {
   if (app.views.flow) app.views.flow.syncControls(s);
   if (app.explorer) app.explorer.syncControls(s);
   if (app.views.analysis) app.views.analysis.syncControls(s);
+  if (app.views.animation) app.views.animation.syncControls(s);
   syncPoseControls(s);
   syncFrame();
 }

@@ -1,9 +1,14 @@
 'use strict';
-// The comparison: the state's compared reuse policies (affine and perspective by default)
-// and the exact projection play the same frames of the source, side by side; each panel
-// shows its frame with the shown layer's outline in the colour of the engine's level, and
-// under each policy the difference from the exact frame as a heat map. The frames, levels,
-// errors and heat maps come from core (Session.updateComparison, .runPixels, .runHeat).
+// The animation view, in the desktop's four layouts (the state's animation.display, the
+// *Show* box): the comparison (the state's compared reuse policies, affine and perspective by
+// default, and the exact projection play the same frames of the source, side by side; each
+// panel shows its frame with the shown layer's outline in the colour of the engine's level,
+// and under each policy the difference from the exact frame as a heat map); side by side (the
+// model's own engine, the state's mode, beside the exact projection); difference (the heat
+// map of the engine's frame against the exact one); blink (the engine's frame and the exact
+// one in turn, each for kBlinkMs). The frames, levels, errors and heat maps come from core
+// (Session.updateComparison, .runPixels, .runHeat; web/shown_runs.h picks the runs by the
+// same display).
 
 // The levels' colours, from core's palette (session/display/palette.h level_colour), read once.
 let levelColoursCache = null;
@@ -14,6 +19,9 @@ function levelColours() {
   }
   return levelColoursCache;
 }
+
+// How long blink shows each of the two frames, as the desktop's (half a second).
+const kBlinkMs = 500;
 
 const comparisonView = {
   title: 'Comparison',
@@ -38,6 +46,36 @@ const comparisonView = {
       setHtml($('runs'), '');
       return;
     }
+    const display = app.state.animation.display;
+    if (display === 'comparison') this.drawComparison(ctx, w, h, style);
+    else this.drawModel(ctx, w, h, style, display);
+  },
+
+  build() {
+    $('animation-display').addEventListener('change', () => editState((s) => {
+      s.animation.display = $('animation-display').value;
+    }));
+  },
+
+  syncControls(s) {
+    $('animation-display').value = s.animation.display;
+  },
+
+  // The shown layers' outlines of `run` over its panel at (x, y), pw x ph, of fw x fh frames.
+  outlines(ctx, run, x, y, pw, ph, fw, fh, style) {
+    for (const outline of run.outlines) {
+      tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
+      ctx.strokeStyle = levelColours()[outline.level];
+      ctx.lineWidth = 2 * style.line;
+      ctx.stroke();
+    }
+  },
+
+  caption(run) {
+    return `${run.policy}: ${run.level}, ${run.measured_error_px.toFixed(2)} px`;
+  },
+
+  drawComparison(ctx, w, h, style) {
     // Panels fitted side by side, frames above and heat maps below; core samples the
     // frames at the panels' size, so each is copied to the canvas pixel for pixel.
     const n = app.session.runCount();
@@ -54,16 +92,10 @@ const comparisonView = {
       const y = Math.round(pad + label);
       const exact = i === n - 1;
       this.put(ctx, 2 * i, app.session.runPixels(i), pw, ph, x, y);
-      for (const outline of run.outlines) {
-        tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
-        ctx.strokeStyle = levelColours()[outline.level];
-        ctx.lineWidth = 2 * style.line;
-        ctx.stroke();
-      }
+      this.outlines(ctx, run, x, y, pw, ph, fw, fh, style);
       ctx.fillStyle = '#e6e6e6';
       ctx.font = style.font(14);
-      ctx.fillText(exact ? 'exact projection' : `${run.policy}: ${run.level}, ${run.measured_error_px.toFixed(2)} px`,
-        x, pad + 14 * style.scale, pw);
+      ctx.fillText(exact ? 'exact projection' : this.caption(run), x, pad + 14 * style.scale, pw);
       if (exact) return;
       const hy = Math.round(y + ph + label + pad);
       this.put(ctx, 2 * i + 1, app.session.runHeat(i), pw, ph, x, hy);
@@ -72,6 +104,57 @@ const comparisonView = {
     });
     this.drawLegend(ctx, pad + (n - 1) * (panelW + pad), pad * 2 + label + ph + label, panelW, info, style);
     this.fillTable(info);
+  },
+
+  // The model's own engine (run 0) and the exact projection (run 1): side by side, the
+  // difference heat map, or blink; the legend below the panels.
+  drawModel(ctx, w, h, style, display) {
+    const [fw, fh] = [app.session.frameWidth(), app.session.frameHeight()];
+    const pad = 8;
+    const label = 20 * style.scale;
+    const legend = 150 * style.scale;  // the levels' key and the colour bar below
+    const n = display === 'side-by-side' ? 2 : 1;
+    const panelW = (w - pad * (n + 1)) / n;
+    const k = Math.min(panelW / fw, (h - legend - label - pad * 2) / fh);
+    const pw = Math.max(1, Math.floor(k * fw));
+    const ph = Math.max(1, Math.floor(k * fh));
+    const info = JSON.parse(app.session.updateComparison(pw, ph));
+    const [engine, exact] = info.runs;
+    const y = Math.round(pad + label);
+    const at = (i) => Math.round(pad + i * (panelW + pad) + (panelW - pw) / 2);
+    ctx.fillStyle = '#e6e6e6';
+    ctx.font = style.font(14);
+    let title;
+    if (display === 'side-by-side') {
+      this.put(ctx, 0, app.session.runPixels(0), pw, ph, at(0), y);
+      this.outlines(ctx, engine, at(0), y, pw, ph, fw, fh, style);
+      this.put(ctx, 2, app.session.runPixels(1), pw, ph, at(1), y);
+      ctx.fillStyle = '#e6e6e6';
+      ctx.fillText(this.caption(engine), at(0), pad + 14 * style.scale, pw);
+      ctx.fillText('exact projection', at(1), pad + 14 * style.scale, pw);
+      title = null;
+    } else if (display === 'difference') {
+      this.put(ctx, 1, app.session.runHeat(0), pw, ph, at(0), y);
+      title = `${engine.policy} - exact: largest ${engine.heat_max} grey levels, PSNR ${engine.psnr_db.toFixed(1)} dB`;
+    } else {
+      // Blink: the phase by the clock, and a redraw at the next change of phase.
+      const phase = Math.floor(performance.now() / kBlinkMs) % 2;
+      if (phase === 0) {
+        this.put(ctx, 0, app.session.runPixels(0), pw, ph, at(0), y);
+        this.outlines(ctx, engine, at(0), y, pw, ph, fw, fh, style);
+      } else {
+        this.put(ctx, 2, app.session.runPixels(1), pw, ph, at(0), y);
+      }
+      title = phase === 0 ? `blink: ${this.caption(engine)}` : 'blink: exact projection';
+      clearTimeout(this.blinkTimer);
+      this.blinkTimer = setTimeout(() => { if (shownView() === 'animation') app.dirty = true; },
+        kBlinkMs - (performance.now() % kBlinkMs) + 1);
+      this.blinkPhase = phase;
+    }
+    ctx.fillStyle = '#e6e6e6';
+    if (title) ctx.fillText(title, at(0), pad + 14 * style.scale, pw);
+    this.drawLegend(ctx, pad, y + ph + pad * 2, Math.min(panelW, 400 * style.scale), info, style);
+    this.fillTable({ ...info, runs: [engine, exact] });
   },
 
   // The levels' colours and the heat map's colour bar (0 .. full scale grey levels).

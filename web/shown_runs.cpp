@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/reuse_policy.h"
+#include "player/animation_sources.h"
 #include "player/lab.h"
 #include "player/policy_comparison.h"
 #include "player/run_player.h"
@@ -60,6 +61,13 @@ std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem) {
     *problem = lab.run().take_problem();
     if (problem->empty()) *problem = "the source cannot be played";
     return shown;
+  }
+  // The desktop's rule (gui/views/animation_view.cpp): the comparison layout shows the
+  // compared runs; side by side, difference and blink the model's own engine (its policy).
+  if (lab.state().display != PanelDisplay::kComparison) {
+    ShownRun model = shown_model(lab.run());
+    if (lab.run().source_kind().uses_reuse_policy) model.policy = lab.run().settings().policy->name;
+    return {model};
   }
   for (const ComparedRun& run : lab.comparison().runs()) {
     if (!run.problem.empty()) {

@@ -26,9 +26,11 @@ struct ShownRun {
   double max_error_px = 0.0;
 };
 
-// The runs `lab` shows at its frame (its runs advanced to it): the compared runs, else the
-// source's own run; empty with *problem set (one line) when the source cannot be played or
-// the compared runs do not fit the run memory limit.
+// The runs `lab` shows at its frame (its runs advanced to it), by the state's display as the
+// desktop's animation view shows them: in the comparison layout the compared runs (the
+// source's own run when its kind has no reuse policy); side by side, difference and blink
+// the model's own engine, named by its policy. Empty with *problem set (one line) when the
+// source cannot be played or the compared runs do not fit the run memory limit.
 std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem);
 
 // One panel of the comparison as JSON: policy, the policy's summary, the level of the frame

@@ -445,6 +445,7 @@ void WebSession::sample_panels(const std::vector<const Animator*>& animators, in
   }
   sampled_frame_ = animators.back()->frame();
   sampled_size_ = {width, height};
+  sampled_epoch_ = epoch_;
 }
 
 std::string WebSession::analysis_json(int frames) { return analysis_history_json(lab_, frames); }
@@ -468,7 +469,7 @@ std::string WebSession::update_comparison(int panel_width, int panel_height) {
   std::vector<ShownRun> shown = shown_runs(lab_, &comparison_problem_);
   if (!animators.empty() && (sampled_frame_ != animators.back()->frame() ||
                              sampled_size_ != glm::ivec2(panel_width, panel_height) ||
-                             panels_.size() != animators.size())) {
+                             sampled_epoch_ != epoch_ || panels_.size() != animators.size())) {
     sample_panels(animators, panel_width, panel_height);
   }
   json out;

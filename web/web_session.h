@@ -132,8 +132,9 @@ class WebSession {
   // (x, y, vx, vy quadruples, centred pixels). "" for an unknown key.
   std::string basis_json(const std::string& basis_key, double radius_px, int n) const;
 
-  // The comparison: the lab's compared runs of the state's source (or the source's own run
-  // when its kind has no reuse policy) and the exact projection, at the frame shown.
+  // The animation view's runs (web/shown_runs.h shown_runs, by the state's display: the
+  // compared runs in the comparison layout, else the model's own engine) and the exact
+  // projection, at the frame shown.
   // "" or why the source cannot be played.
   std::string comparison_problem();
   // Brings the runs to the frame shown (the lab's runs: forward frame by frame, backward by
@@ -209,6 +210,7 @@ class WebSession {
   int sampled_frame_ = -1;       // the frame whose pixels the panels hold, at sampled_size_
   PlaneImageCache plane_image_;  // exact_plane_image()
   glm::ivec2 sampled_size_{0, 0};
+  int sampled_epoch_ = -1;  // the state (epoch_) whose runs the panels hold
 };
 
 }  // namespace oflab

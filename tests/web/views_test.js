@@ -237,4 +237,44 @@ async function testAnalysisCharts({ browser, open, evaluate, check, drawnMarker,
   check('NegativeControl_TwoPoliciesWorkDiffers', p && q && p.frames.some((f, k) => f.model_work !== q.frames[k].model_work));
 }
 
-module.exports = { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts };
+// The animation view's four layouts (the state's display, the desktop's *Show* box): side by
+// side shows the model's own engine (the state's mode, perspective) and the exact projection,
+// its engine panel pixel for pixel the comparison's run of the same policy at the same panel
+// size and its exact panel the comparison's; difference shows that run's heat map; blink shows
+// the engine's panel, then the exact one kBlinkMs later, then the engine's again. Control: the
+// comparison's affine run is another picture.
+async function testDisplays({ browser, open, evaluate, check, drawnMarker }) {
+  await open(browser, '?view=animation&script=loop&frame=20', drawnMarker);
+  const r = JSON.parse(await evaluate(browser, `(async () => {
+    const hash = (a) => { let h = 2166136261; for (let i = 0; i < a.length; ++i) h = Math.imul(h ^ a[i], 16777619); return h >>> 0; };
+    const take = (display) => {
+      editState((s) => { s.animation.display = display; });
+      const info = JSON.parse(app.session.updateComparison(240, 180));
+      return { policies: info.runs.map((run) => run.policy), pixels: info.runs.map((run, i) => hash(app.session.runPixels(i))),
+        heat: info.runs.slice(0, -1).map((run, i) => hash(app.session.runHeat(i))), frame: info.frame };
+    };
+    const side = take('side-by-side');
+    const diff = take('difference');
+    const comp = take('comparison');
+    editState((s) => { s.animation.display = 'blink'; });
+    const canvas = $('canvas');
+    const shot = () => { draw(); return [comparisonView.blinkPhase, hash(canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data)]; };
+    const wait = () => new Promise((ok) => setTimeout(ok, kBlinkMs - (performance.now() % kBlinkMs) + 20));
+    const blink = [shot()];
+    await wait();
+    blink.push(shot());
+    await wait();
+    blink.push(shot());
+    return JSON.stringify({ side, diff, comp, blink, select: $('animation-display').value });
+  })()`));
+  const { side, diff, comp, blink } = r;
+  check('SideBySideShowsTheModelsEngineAndTheExactProjection', side.frame === 20 && side.policies.join() === 'perspective,rerender' &&
+    comp.policies.join() === 'affine,perspective,rerender' && side.pixels[0] === comp.pixels[1] && side.pixels[1] === comp.pixels[2],
+    `side by side ${side.policies}, comparison ${comp.policies}; ${side.pixels} against ${comp.pixels}`);
+  check('TheDifferenceLayoutShowsTheEnginesHeatMap', diff.policies.join() === 'perspective,rerender' && diff.heat[0] === comp.heat[1], `${diff.heat} against ${comp.heat}`);
+  check('BlinkShowsTheEngineThenTheExactFrameInTurn', blink[0][0] !== blink[1][0] && blink[2][0] === blink[0][0] &&
+    blink[0][1] !== blink[1][1] && blink[2][1] === blink[0][1] && r.select === 'blink', JSON.stringify(blink));
+  check('NegativeControl_TheAffineRunIsAnotherPicture', comp.pixels[0] !== side.pixels[0]);
+}
+
+module.exports = { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts, testDisplays };

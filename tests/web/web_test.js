@@ -44,7 +44,7 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const { decodePng } = require('./png');
-const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts } = require('./views_test');
+const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts, testDisplays } = require('./views_test');
 const { testRunCsv, testVideo } = require('./exports_test');
 const { testFlowTexture, testWorldFrame } = require('./flow_texture_test');
 
@@ -836,7 +836,7 @@ async function testLinks(browser) {
 const kUnpacedFlags = ['--disable-gpu-vsync', '--disable-frame-rate-limit'];
 // The views benchmarked: [name as printed, the page's query].
 const kBenchViews = [['flow', '?bench=flow'], ['world', '?bench=world'],
-  ['animation', '?bench=animation&script=swing'],
+  ['animation', '?bench=animation&script=swing&display=comparison'],
   // The street comparison: the lesson when-reuse-pays's state (perspective beside re-rendering).
   ['animation-street', '?lesson=when-reuse-pays&bench=animation']];
 async function benchViews(browser, pace) {
@@ -909,6 +909,7 @@ async function bench(browser) {
       await testWorldLabels(helpers);
       await testAnalysisCharts(helpers);
       await testEngineCharts(helpers);
+      await testDisplays(helpers);
       await testRunCsv(helpers);
       await testVideo(helpers);
       await testFlowTexture(helpers);
