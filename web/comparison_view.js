@@ -24,7 +24,7 @@ function levelColours() {
 const kBlinkMs = 500;
 
 const comparisonView = {
-  title: 'Comparison',
+  title: 'Animation',
   images: [],  // per panel: its ImageData, reused frame to frame
 
   // Copies core's pixels (a view into the module's memory, valid until the next call into
@@ -112,7 +112,7 @@ const comparisonView = {
     const [fw, fh] = [app.session.frameWidth(), app.session.frameHeight()];
     const pad = 8;
     const label = 20 * style.scale;
-    const legend = 150 * style.scale;  // the levels' key and the colour bar below
+    const legend = 110 * style.scale;  // the levels' key below two panels
     const n = display === 'side-by-side' ? 2 : 1;
     const panelW = (w - pad * (n + 1)) / n;
     const k = Math.min(panelW / fw, (h - legend - label - pad * 2) / fh);
@@ -153,22 +153,30 @@ const comparisonView = {
     }
     ctx.fillStyle = '#e6e6e6';
     if (title) ctx.fillText(title, at(0), pad + 14 * style.scale, pw);
-    this.drawLegend(ctx, pad, y + ph + pad * 2, Math.min(panelW, 400 * style.scale), info, style);
+    // The key of what is shown: the levels' colours of the outlines, or the heat map's bar;
+    // right of a single panel where it fits, else below.
+    const beside = n === 1 && w - (at(0) + pw) >= 180 * style.scale;
+    const kx = beside ? at(0) + pw + 2 * pad : pad;
+    const ky = beside ? y : y + ph + pad * 2;
+    this.drawLegend(ctx, kx, ky, Math.min(w - kx - pad, 256), info, style,
+      { levels: display !== 'difference', bar: display === 'difference' });
     this.fillTable({ ...info, runs: [engine, exact] });
   },
 
-  // The levels' colours and the heat map's colour bar (0 .. full scale grey levels).
-  drawLegend(ctx, x, y, width, info, style) {
+  // The levels' colours and the heat map's colour bar (0 .. full scale grey levels), or one of
+  // them (`shown`).
+  drawLegend(ctx, x, y, width, info, style, shown = { levels: true, bar: true }) {
     ctx.font = style.font(13);
     let ly = y + 10;
-    for (const [level, colour] of Object.entries(levelColours())) {
+    for (const [level, colour] of shown.levels ? Object.entries(levelColours()) : []) {
       ctx.fillStyle = colour;
       ctx.fillRect(x, ly - 10, 14, 10);
       ctx.fillStyle = '#e6e6e6';
       ctx.fillText(level, x + 20, ly);
       ly += 18 * style.scale;
     }
-    ly += 10;
+    if (!shown.bar) return;
+    ly += shown.levels ? 10 : 0;
     const barW = Math.min(width, 256);
     ctx.drawImage(this.colourBar(), x, ly, barW, 14);
     ctx.fillStyle = '#e6e6e6';

@@ -348,18 +348,22 @@ const shots = [
   ['slices-1366', '?view=slices&frame=30', [1366, 768]],
   ['flow-presentation', '?view=flow&frame=60&presentation'],
   ['basis', '?view=basis&frame=20'],
-  ['comparison', '?view=animation&script=swing&frame=40'],
+  ['comparison', '?view=animation&script=swing&frame=40&display=comparison'],
+  // The animation view's other layouts: the engine beside the exact frame, its difference.
+  ['side-by-side', '?view=animation&script=loop&frame=20'],
+  ['difference', '?view=animation&script=loop&frame=20&display=difference'],
   ['lesson', '?lesson=affine-vs-perspective'],
   // Streamlines of the first-order part (the flow-of-a-plane lesson's first step).
   ['lesson-step', '?lesson=flow-of-a-plane&step=1'],
-  // A lesson on a scene, played by the scene animator: the policies beside the exact frame.
+  // A lesson on a scene, played by the scene animator: its engine beside the exact frame
+  // (the lesson's display is the default, side by side).
   ['lesson-on-a-scene', '?lesson=occlusion&step=1'],
   // The street walked through (when-reuse-pays), the scene with the most polygons.
   ['street', '?lesson=when-reuse-pays'],
   // The analysis charts of the errors-accumulate lesson's first step.
   ['analysis', '?lesson=why-errors-accumulate&step=1'],
   // A laptop's 1366 x 768: the comparison, the street and the charts.
-  ['comparison-1366', '?view=animation&script=swing&frame=40', [1366, 768]],
+  ['comparison-1366', '?view=animation&script=swing&frame=40&display=comparison', [1366, 768]],
   ['analysis-1366', '?lesson=why-errors-accumulate&step=1', [1366, 768]],
   ['flow-1366', '?view=flow&frame=20', [1366, 768]],
   ['basis-1366', '?view=basis&frame=20', [1366, 768]],
