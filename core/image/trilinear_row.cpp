@@ -167,27 +167,43 @@ OFLAB_AVX2 inline __m256i trilinear_quad(const LevelPairView& view, const __m256
 // done.
 OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* index, int k,
                                 Pixel* out, int count, QuadStep& step) {
+  // The view's fields as locals, so that the stores to `out` do not make the loop reload them.
+  const Pixel* const pixels = view.src.pixels;
+  const Pixel* const next_pixels = view.next.pixels;
+  const std::int64_t stride = view.src.stride, next_stride = view.next.stride;
+  const __m256i offset_weights = view.offset_weights;
+  const __m256i next_offset_weights = view.next_offset_weights;
+  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
   const __m128i lower = _mm_set1_epi16(static_cast<short>(k));
+  // Four pixels at `positions` on both levels, blended with the spread weights.
+  const auto both = [=](const __m256i& positions, const __m256i& weight) OFLAB_AVX2 {
+    const __m256i a = blend_quad_lanes(pixels, stride, offset_weights, positions);
+    const __m256i b = blend_quad_lanes(next_pixels, next_stride, next_offset_weights,
+                                       _mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter));
+    return lerp_lanes(a, b, weight);
+  };
   __m256i positions = quad_positions(step);
   int i = 0;
   for (; i + 8 <= count; i += 8) {
     const __m128i octet = _mm_loadu_si128(reinterpret_cast<const __m128i*>(index + i));
     if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_srli_epi16(octet, 8), lower)) != 0xffff) break;
     const __m128i weights = octet_weights(octet);
-    const bool one_level = _mm_testz_si128(weights, weights);
-    __m256i lanes[2];
-    for (int q = 0; q < 2; ++q) {
-      const __m256i current = positions;
-      positions = quad_positions(step);  // the next quad's, before this one's blends
-      lanes[q] =
-          one_level
-              ? blend_quad_lanes(view.src.pixels, view.src.stride, view.offset_weights, current)
-              : trilinear_quad(
-                    view, current,
-                    spread_weights(q == 0 ? weights : _mm_unpackhi_epi64(weights, weights)));
+    // The two quads written out (no array, no loop), so that their lanes stay in registers;
+    // each quad's successor's positions are found before its blends.
+    const __m256i first = positions;
+    const __m256i second = quad_positions(step);
+    __m256i lanes0, lanes1;
+    if (_mm_testz_si128(weights, weights)) {
+      lanes0 = blend_quad_lanes(pixels, stride, offset_weights, first);
+      positions = quad_positions(step);
+      lanes1 = blend_quad_lanes(pixels, stride, offset_weights, second);
+    } else {
+      lanes0 = both(first, spread_weights(weights));
+      positions = quad_positions(step);
+      lanes1 = both(second, spread_weights(_mm_unpackhi_epi64(weights, weights)));
     }
     // Both quads packed at once: [q0 p0 p1, q1 p0 p1 | q0 p2 p3, q1 p2 p3] -> eight pixels.
-    const __m256i packed = _mm256_packus_epi16(lanes[0], lanes[1]);
+    const __m256i packed = _mm256_packus_epi16(lanes0, lanes1);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i),
                         _mm256_permute4x64_epi64(packed, _MM_SHUFFLE(3, 1, 2, 0)));
   }
