@@ -8,6 +8,7 @@
 #include <cstring>
 #include <vector>
 
+#include "image/mip_pyramid.h"    // kMipBorder
 #include "image/warp_kernels.h"   // run_bilinear_row
 #include "image/warp_row_loop.h"  // also provides OFLAB_WARP_AVX2 and <immintrin.h>
 
@@ -131,20 +132,79 @@ OFLAB_AVX2 void perspective_trilinear_clamped(const SourceView& src, const Sourc
 }
 
 // A level pair's two sources as the level rows read them: level k and level k + 1 (level k
-// again on the top level, whose weights are 0: its taps then stay inside level k).
+// again on the top level, whose weights are 0: its taps then stay inside level k). With
+// border > 0 (both levels have bordered copies) the views read the bordered copies (pixels at
+// their level's pixel (0, 0), max_x and max_y the level's own) and the corners are the
+// copies' pixel (0, 0), level pixel (-border, -border).
 struct LevelPairView {
   SourceView src, next;
   __m256i offset_weights, next_offset_weights;
+  int border;
+  const Pixel* src_corner;
+  const Pixel* next_corner;
 };
+
+// Level k's view and its bordered copy's corner, or null if it has no fitting copy.
+inline const Pixel* bordered_view(const MipLevelMaps& levels, std::size_t k, SourceView& view) {
+  const Image& level = *levels.images[k];
+  const Image* copy = k < levels.bordered.size() ? levels.bordered[k] : nullptr;
+  view = source_view(level);
+  if (copy == nullptr || copy->width() != level.width() + 2 * kMipBorder ||
+      copy->height() != level.height() + 2 * kMipBorder) {
+    return nullptr;
+  }
+  view.pixels = copy->pixels().data() + kMipBorder * copy->width() + kMipBorder;
+  view.stride = copy->width();
+  return copy->pixels().data();
+}
 
 OFLAB_AVX2 LevelPairView level_pair_view(const MipLevelMaps& levels, int k) {
   const int top = static_cast<int>(levels.images.size()) - 1;
-  LevelPairView view{source_view(*levels.images[static_cast<std::size_t>(k)]),
-                     source_view(*levels.images[static_cast<std::size_t>(std::min(k + 1, top))]),
-                     _mm256_setzero_si256(), _mm256_setzero_si256()};
+  LevelPairView view{};
+  const Pixel* src_corner = bordered_view(levels, static_cast<std::size_t>(k), view.src);
+  const Pixel* next_corner =
+      bordered_view(levels, static_cast<std::size_t>(std::min(k + 1, top)), view.next);
+  if (src_corner != nullptr && next_corner != nullptr) {
+    view.border = kMipBorder;
+    view.src_corner = src_corner;
+    view.next_corner = next_corner;
+  } else {  // both levels as they are
+    view.src = source_view(*levels.images[static_cast<std::size_t>(k)]);
+    view.next = source_view(*levels.images[static_cast<std::size_t>(std::min(k + 1, top))]);
+  }
   view.offset_weights = quad_offset_weights(view.src);
   view.next_offset_weights = quad_offset_weights(view.next);
   return view;
+}
+
+// True if the taps of the sample (level k's positions, with the fast range's margins) and
+// those of level k + 1 derived from it stay within the border of a bordered pair: level k's
+// positions in [1 - border, max + border - 1) (in_fast_range<true> with each margin lowered
+// by the border). With border 2, floored positions u_k in [-2, w_k + 1) have their taps in
+// [-2, w_k + 1] and u_{k + 1} = u_k / 2 - 1/4 in [-5/4, w_k / 2 + 1/4), taps in
+// [-2, ceil(w_k / 2) + 1]: both inside their copies.
+inline bool in_border_range(const LevelPairView& view, const MapSample& s) {
+  if (view.border == 0 || s.d <= 0 || s.d >= kMaxCompareDenominator) return false;
+  const std::int64_t low = (kBilinearLowMargin - view.border) * s.d;
+  const std::int64_t high = kBilinearHighMargin - view.border;
+  return s.nu >= low && s.nv >= low && s.nu < (view.src.max_x - high + 1) * s.d &&
+         s.nv < (view.src.max_y - high + 1) * s.d;
+}
+
+// Four pixels at floored 16.16 positions within in_border_range, sampled on both bordered
+// levels and blended: the taps read from the corners, every whole part shifted by the
+// border (the fractions, the low 16 bits, unchanged), so each tap is the texel that
+// clamped_quad_lanes clamps it to and the bytes are perspective_trilinear_clamped's.
+OFLAB_AVX2 inline __m256i border_quad(const LevelPairView& view, const __m256i& positions,
+                                      const __m256i& weight) {
+  const __m256i shift = _mm256_set1_epi32(view.border << kBlendWeightBits);
+  const __m256i quarter = _mm256_set1_epi32(1 << (kBlendWeightBits - 2));
+  const __m256i a = blend_quad_lanes(view.src_corner, view.src.stride, view.offset_weights,
+                                     _mm256_add_epi32(positions, shift));
+  const __m256i b = blend_quad_lanes(
+      view.next_corner, view.next.stride, view.next_offset_weights,
+      _mm256_add_epi32(_mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter), shift));
+  return lerp_lanes(a, b, weight);
 }
 
 // Four pixels at 16.16 positions (level k's fast range) sampled on both levels and blended
@@ -217,22 +277,25 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
 
 // The first count (1 .. 8) pixels of level k's fast range with indices `index` (lanes 0 ..
 // count - 1): a short quad's unused lanes take its first pixel's position (inside the range),
-// and only its pixels are stored.
+// and only its pixels are stored. kBorder: pixels in in_border_range instead, sampled by
+// border_quad at floored positions.
+template <bool kBorder>
 OFLAB_AVX2 void trilinear_few(const LevelPairView& view, const __m128i& index, Pixel* out,
                               int count, QuadStep step) {
   const __m128i weights = octet_weights(index);
   for (int q = 0; q * 4 < count; ++q) {
     const int n = std::min(4, count - 4 * q);
-    __m256i positions = quad_positions(step);
+    __m256i positions = quad_positions(step, kBorder);
     if (n < 4) {
       alignas(32) static const std::int32_t kFirst[3][8] = {
           {0, 1, 0, 1, 0, 1, 0, 1}, {0, 1, 2, 3, 0, 1, 0, 1}, {0, 1, 2, 3, 4, 5, 0, 1}};
       positions = _mm256_permutevar8x32_epi32(
           positions, _mm256_load_si256(reinterpret_cast<const __m256i*>(kFirst[n - 1])));
     }
-    const __m128i w = q == 0 ? weights : _mm_unpackhi_epi64(weights, weights);
+    const __m256i w = spread_weights(q == 0 ? weights : _mm_unpackhi_epi64(weights, weights));
     Pixel four[4];
-    store_quad(trilinear_quad(view, positions, spread_weights(w)), four);
+    store_quad(kBorder ? border_quad(view, positions, w) : trilinear_quad(view, positions, w),
+               four);
     std::copy(four, four + n, out + 4 * q);
   }
 }
@@ -268,9 +331,20 @@ OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indi
     const LevelPairView view = level_pair_view(levels, k);
     Pixel* o = out + (x - x_begin);
     if (!in_fast_range<true>(view.src, evaluate(map, x, y))) {
+      // The pixels from x that share k, leave level k's fast range, and are (or are not, as
+      // x) within the border: by border_quad, else with clamped taps.
       const int limit = leading_lower(octet, k, x_end - x);
+      const bool border = in_border_range(view, evaluate(map, x, y));
       int n = 1;
-      while (n < limit && !in_fast_range<true>(view.src, evaluate(map, x + n, y))) ++n;
+      for (; n < limit; ++n) {
+        const MapSample s = evaluate(map, x + n, y);
+        if (in_fast_range<true>(view.src, s) || in_border_range(view, s) != border) break;
+      }
+      if (border) {
+        trilinear_few<true>(view, octet, o, n, quad_step_at(map, x, y));
+        x += n;
+        continue;
+      }
       alignas(16) std::uint16_t weights[8];
       _mm_store_si128(reinterpret_cast<__m128i*>(weights),
                       _mm_and_si128(octet, _mm_set1_epi16(255)));
@@ -293,7 +367,7 @@ OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indi
     const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(indices + (x - x_begin)));
     const int few = leading_lower(rest, k, fast_end - x);
     if (few > 0) {
-      trilinear_few(view, rest, out + (x - x_begin), few, step);
+      trilinear_few<false>(view, rest, out + (x - x_begin), few, step);
       x += few;
     }
   }
