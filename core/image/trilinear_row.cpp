@@ -219,14 +219,15 @@ OFLAB_AVX2 inline __m256i trilinear_quad(const LevelPairView& view, const __m256
   return lerp_lanes(a, b, weight);
 }
 
-// Pixels of level k's fast range sampled eight at a time with their indices (256 lower +
+// Pixels of level k's fast range (with border_first, after a first octet within the border
+// range, sampled by border_quad) sampled eight at a time with their indices (256 lower +
 // weight, index[i] pixel i's) while all eight have lower level k: with weights all 0 level k
 // alone (lerp_lanes' bytes for weight 0), else both levels. Returns the pixels done, a
 // multiple of 8 at most count; the rest starts with an octet holding another lower level or
 // is shorter than eight. `step` starts at the first pixel and is left at the first pixel not
 // done.
 OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* index, int k,
-                                Pixel* out, int count, QuadStep& step) {
+                                Pixel* out, int count, QuadStep& step, bool border_first) {
   // The view's fields as locals, so that the stores to `out` do not make the loop reload them.
   const Pixel* const pixels = view.src.pixels;
   const Pixel* const next_pixels = view.next.pixels;
@@ -242,8 +243,20 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
                                        _mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter));
     return lerp_lanes(a, b, weight);
   };
-  __m256i positions = quad_positions(step);
   int i = 0;
+  if (border_first) {  // pixels 0 .. 7 within the border range, floored, by border_quad
+    const __m128i weights = octet_weights(_mm_loadu_si128(reinterpret_cast<const __m128i*>(index)));
+    const __m256i first = quad_positions(step, true);
+    const __m256i second = quad_positions(step, true);
+    const __m256i lanes0 = border_quad(view, first, spread_weights(weights));
+    const __m256i lanes1 =
+        border_quad(view, second, spread_weights(_mm_unpackhi_epi64(weights, weights)));
+    _mm256_storeu_si256(
+        reinterpret_cast<__m256i*>(out),
+        _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes0, lanes1), _MM_SHUFFLE(3, 1, 2, 0)));
+    i = 8;
+  }
+  __m256i positions = quad_positions(step);
   for (; i + 8 <= count; i += 8) {
     const __m128i octet = _mm_loadu_si128(reinterpret_cast<const __m128i*>(index + i));
     if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_srli_epi16(octet, 8), lower)) != 0xffff) break;
@@ -316,11 +329,49 @@ OFLAB_AVX2 inline int leading_lower(const __m128i& index, int k, int limit) {
   return std::min(lanes, limit);
 }
 
+// The pixels from x (lower level k, outside level k's fast range) that share k, stay outside
+// it, and are (or are not, as x) within the border range: by border_quad, else with clamped
+// taps. Returns how many (1 .. 8).
+OFLAB_AVX2 int outside_fast_range(const LevelPairView& view, const InverseMap& map,
+                                  const __m128i& octet, int k, int x, int y, int x_end, Pixel* o) {
+  const int limit = leading_lower(octet, k, x_end - x);
+  const bool border = in_border_range(view, evaluate(map, x, y));
+  int n = 1;
+  for (; n < limit; ++n) {
+    const MapSample s = evaluate(map, x + n, y);
+    if (in_fast_range<true>(view.src, s) || in_border_range(view, s) != border) break;
+  }
+  if (border) {
+    trilinear_few<true>(view, octet, o, n, quad_step_at(map, x, y));
+    return n;
+  }
+  alignas(16) std::uint16_t weights[8];
+  _mm_store_si128(reinterpret_cast<__m128i*>(weights), _mm_and_si128(octet, _mm_set1_epi16(255)));
+  const MapSample s = evaluate(map, x, y);
+  perspective_trilinear_clamped(view.src, view.next, weights, o, n, static_cast<double>(s.nu),
+                                static_cast<double>(s.nv), static_cast<double>(s.d),
+                                static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
+                                static_cast<double>(2 * map.g));
+  return n;
+}
+
+// True if the octet from x (outside level k's fast range) can open the octet loop on a
+// bordered pair: its eight pixels share k and lie within the border range (an interval, as
+// the fast range: its ends suffice), and pixel x + 8 is in the fast range.
+OFLAB_AVX2 bool opens_with_border(const LevelPairView& view, const InverseMap& map,
+                                  const __m128i& octet, int k, int x, int y, int x_end) {
+  return view.border > 0 && x + 8 < x_end && leading_lower(octet, k, 8) == 8 &&
+         in_border_range(view, evaluate(map, x, y)) &&
+         in_border_range(view, evaluate(map, x + 7, y)) &&
+         in_fast_range<true>(view.src, evaluate(map, x + 8, y));
+}
+
 // run_trilinear_levels_row's loop (trilinear_row.h): from pixel x, the lower level k of x;
-// if x's taps leave level k, the pixels from x that share k and leave it, clamped; else
+// if x's taps leave level k, the pixels from x that share k and leave it
+// (outside_fast_range), unless a bordered pair's octet opens the octet loop there; else
 // level k's fast range from x (an interval: the source's inner box and its image under the
 // projective map are convex), the octets of trilinear_octets and the few pixels of the next
-// octet that still have level k.
+// octet that still have level k, on a bordered pair up to the border range's end.
 OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indices, int y,
                            int x_begin, int x_end, Pixel* out) {
   for (int x = x_begin; x < x_end;) {
@@ -330,44 +381,32 @@ OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indi
     const InverseMap& map = levels.maps[static_cast<std::size_t>(k)];
     const LevelPairView view = level_pair_view(levels, k);
     Pixel* o = out + (x - x_begin);
-    if (!in_fast_range<true>(view.src, evaluate(map, x, y))) {
-      // The pixels from x that share k, leave level k's fast range, and are (or are not, as
-      // x) within the border: by border_quad, else with clamped taps.
-      const int limit = leading_lower(octet, k, x_end - x);
-      const bool border = in_border_range(view, evaluate(map, x, y));
-      int n = 1;
-      for (; n < limit; ++n) {
-        const MapSample s = evaluate(map, x + n, y);
-        if (in_fast_range<true>(view.src, s) || in_border_range(view, s) != border) break;
-      }
-      if (border) {
-        trilinear_few<true>(view, octet, o, n, quad_step_at(map, x, y));
-        x += n;
-        continue;
-      }
-      alignas(16) std::uint16_t weights[8];
-      _mm_store_si128(reinterpret_cast<__m128i*>(weights),
-                      _mm_and_si128(octet, _mm_set1_epi16(255)));
-      const MapSample s = evaluate(map, x, y);
-      perspective_trilinear_clamped(view.src, view.next, weights, o, n, static_cast<double>(s.nu),
-                                    static_cast<double>(s.nv), static_cast<double>(s.d),
-                                    static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
-                                    static_cast<double>(2 * map.g));
-      x += n;
+    const bool border_first = !in_fast_range<true>(view.src, evaluate(map, x, y));
+    if (border_first && !opens_with_border(view, map, octet, k, x, y, x_end)) {
+      x += outside_fast_range(view, map, octet, k, x, y, x_end, o);
       continue;
     }
-    int fast_end = x_end;
+    int fast_end = x_end;  // with border_first at least x + 9
     while (fast_end > x + 1 && !in_fast_range<true>(view.src, evaluate(map, fast_end - 1, y))) {
       --fast_end;
     }
     QuadStep step = quad_step_at(map, x, y);
-    const int done = trilinear_octets(view, index, k, o, fast_end - x, step);
-    x += done;
-    if (x >= fast_end) continue;
+    x += trilinear_octets(view, index, k, o, fast_end - x, step, border_first);
+    // The rest of the interval: [x, fast_end) is in the fast range, and so in the border range.
+    int end = fast_end;
+    if (view.border > 0) {
+      end = x_end;
+      while (end > x && !in_border_range(view, evaluate(map, end - 1, y))) --end;
+    }
+    if (x >= end) continue;
     const __m128i rest = _mm_loadu_si128(reinterpret_cast<const __m128i*>(indices + (x - x_begin)));
-    const int few = leading_lower(rest, k, fast_end - x);
+    const int few = leading_lower(rest, k, end - x);
     if (few > 0) {
-      trilinear_few<false>(view, rest, out + (x - x_begin), few, step);
+      if (view.border > 0) {
+        trilinear_few<true>(view, rest, out + (x - x_begin), few, step);
+      } else {
+        trilinear_few<false>(view, rest, out + (x - x_begin), few, step);
+      }
       x += few;
     }
   }
