@@ -219,6 +219,25 @@ OFLAB_AVX2 inline __m256i trilinear_quad(const LevelPairView& view, const __m256
   return lerp_lanes(a, b, weight);
 }
 
+// Two quads' lanes packed at once ([q0 p0 p1, q1 p0 p1 | q0 p2 p3, q1 p2 p3]) and stored as
+// eight pixels to out[0 .. 7].
+OFLAB_AVX2 inline void store_octet(const __m256i& lanes0, const __m256i& lanes1, Pixel* out) {
+  const __m256i packed = _mm256_packus_epi16(lanes0, lanes1);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out),
+                      _mm256_permute4x64_epi64(packed, _MM_SHUFFLE(3, 1, 2, 0)));
+}
+
+// Eight pixels within the border range with indices index[0 .. 7], sampled by border_quad at
+// floored positions from `step` (left at the ninth pixel).
+OFLAB_AVX2 inline void border_octet(const LevelPairView& view, const std::uint16_t* index,
+                                    Pixel* out, QuadStep& step) {
+  const __m128i weights = octet_weights(_mm_loadu_si128(reinterpret_cast<const __m128i*>(index)));
+  const __m256i first = quad_positions(step, true);
+  const __m256i second = quad_positions(step, true);
+  store_octet(border_quad(view, first, spread_weights(weights)),
+              border_quad(view, second, spread_weights(_mm_unpackhi_epi64(weights, weights))), out);
+}
+
 // Pixels of level k's fast range (with border_first, after a first octet within the border
 // range, sampled by border_quad) sampled eight at a time with their indices (256 lower +
 // weight, index[i] pixel i's) while all eight have lower level k: with weights all 0 level k
@@ -244,16 +263,8 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
     return lerp_lanes(a, b, weight);
   };
   int i = 0;
-  if (border_first) {  // pixels 0 .. 7 within the border range, floored, by border_quad
-    const __m128i weights = octet_weights(_mm_loadu_si128(reinterpret_cast<const __m128i*>(index)));
-    const __m256i first = quad_positions(step, true);
-    const __m256i second = quad_positions(step, true);
-    const __m256i lanes0 = border_quad(view, first, spread_weights(weights));
-    const __m256i lanes1 =
-        border_quad(view, second, spread_weights(_mm_unpackhi_epi64(weights, weights)));
-    _mm256_storeu_si256(
-        reinterpret_cast<__m256i*>(out),
-        _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes0, lanes1), _MM_SHUFFLE(3, 1, 2, 0)));
+  if (border_first) {
+    border_octet(view, index, out, step);
     i = 8;
   }
   __m256i positions = quad_positions(step);
@@ -275,10 +286,7 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
       positions = quad_positions(step);
       lanes1 = both(second, spread_weights(_mm_unpackhi_epi64(weights, weights)));
     }
-    // Both quads packed at once: [q0 p0 p1, q1 p0 p1 | q0 p2 p3, q1 p2 p3] -> eight pixels.
-    const __m256i packed = _mm256_packus_epi16(lanes0, lanes1);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i),
-                        _mm256_permute4x64_epi64(packed, _MM_SHUFFLE(3, 1, 2, 0)));
+    store_octet(lanes0, lanes1, out + i);
   }
   // Back one quad, to the first pixel not done: the sums are integers below 2^53 times
   // powers of two (steps_exact_in_double), so this is exactly the step quad_step_at gives.
