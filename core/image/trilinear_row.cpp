@@ -63,6 +63,19 @@ OFLAB_AVX2 inline __m256i spread_weights(const __m128i& four) {
   return _mm256_shuffle_epi8(_mm256_broadcastq_epi64(four), spread);
 }
 
+// The scaled weights of an octet's two quads (16-bit lanes 0 .. 3 and 4 .. 7 of `eight`),
+// each spread over its pixels' channels as spread_weights spreads them: one broadcast of the
+// octet, one byte shuffle a quad.
+OFLAB_AVX2 inline void spread_octet_weights(const __m128i& eight, __m256i& first, __m256i& second) {
+  const __m256i wide = _mm256_broadcastsi128_si256(eight);
+  first =
+      _mm256_shuffle_epi8(wide, _mm256_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 2, 3, 2, 3, 2, 3, 2, 3, 4,
+                                                 5, 4, 5, 4, 5, 4, 5, 6, 7, 6, 7, 6, 7, 6, 7));
+  second = _mm256_shuffle_epi8(
+      wide, _mm256_setr_epi8(8, 9, 8, 9, 8, 9, 8, 9, 10, 11, 10, 11, 10, 11, 10, 11, 12, 13, 12, 13,
+                             12, 13, 12, 13, 14, 15, 14, 15, 14, 15, 14, 15));
+}
+
 // Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3], 0 .. 255) blended
 // with spread scaled weights 128 w (w in [0, 255]): (a (256 - w) + b w + 128) / 256 per
 // channel, rounded down, the bytes of blending the stored samples. As one rounding
@@ -234,8 +247,9 @@ OFLAB_AVX2 inline void border_octet(const LevelPairView& view, const std::uint16
   const __m128i weights = octet_weights(_mm_loadu_si128(reinterpret_cast<const __m128i*>(index)));
   const __m256i first = quad_positions(step, true);
   const __m256i second = quad_positions(step, true);
-  store_octet(border_quad(view, first, spread_weights(weights)),
-              border_quad(view, second, spread_weights(_mm_unpackhi_epi64(weights, weights))), out);
+  __m256i w0, w1;
+  spread_octet_weights(weights, w0, w1);
+  store_octet(border_quad(view, first, w0), border_quad(view, second, w1), out);
 }
 
 // Pixels of level k's fast range (with border_first, after a first octet within the border
@@ -282,9 +296,11 @@ OFLAB_AVX2 int trilinear_octets(const LevelPairView& view, const std::uint16_t* 
       positions = quad_positions(step);
       lanes1 = blend_quad_lanes(pixels, stride, offset_weights, second);
     } else {
-      lanes0 = both(first, spread_weights(weights));
+      __m256i w0, w1;
+      spread_octet_weights(weights, w0, w1);
+      lanes0 = both(first, w0);
       positions = quad_positions(step);
-      lanes1 = both(second, spread_weights(_mm_unpackhi_epi64(weights, weights)));
+      lanes1 = both(second, w1);
     }
     store_octet(lanes0, lanes1, out + i);
   }
