@@ -46,6 +46,14 @@ OFLAB_AVX2 inline __m256i clamped_quad_lanes(const SourceView& src, const __m256
   return quad_lanes_from_taps(top, bottom, positions);
 }
 
+// The first n (1 .. 4) of four pixels' lanes ([p0 p1 | p2 p3], 0 .. 255) stored to
+// out[0 .. n - 1] (a masked store: nothing past them is written).
+OFLAB_AVX2 inline void store_first(const __m256i& lanes, int n, Pixel* out) {
+  const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes, lanes), 0x08);
+  const __m128i mask = _mm_cmpgt_epi32(_mm_set1_epi32(n), _mm_setr_epi32(0, 1, 2, 3));
+  _mm_maskstore_epi32(reinterpret_cast<int*>(out), mask, _mm256_castsi256_si128(packed));
+}
+
 // Eight weights w in [0, 255] (16-bit lanes) as lerp_lanes takes them: 128 w, below 2^15.
 OFLAB_AVX2 inline __m128i scaled_weights(const __m128i& weights) {
   return _mm_slli_epi16(weights, 7);
@@ -138,9 +146,7 @@ OFLAB_AVX2 void perspective_trilinear_clamped(const SourceView& src, const Sourc
         clamped_quad_lanes(next, _mm256_sub_epi32(_mm256_srai_epi32(positions, 1), quarter));
     std::uint16_t w[4] = {0, 0, 0, 0};
     std::copy(weights + k, weights + k + n, w);
-    Pixel four[4];
-    store_quad(lerp_lanes(a, b, w), four);
-    std::copy(four, four + n, out + k);
+    store_first(lerp_lanes(a, b, w), n, out + k);
   }
 }
 
@@ -330,10 +336,8 @@ OFLAB_AVX2 void trilinear_few(const LevelPairView& view, const __m128i& index, P
           positions, _mm256_load_si256(reinterpret_cast<const __m256i*>(kFirst[n - 1])));
     }
     const __m256i w = spread_weights(q == 0 ? weights : _mm_unpackhi_epi64(weights, weights));
-    Pixel four[4];
-    store_quad(kBorder ? border_quad(view, positions, w) : trilinear_quad(view, positions, w),
-               four);
-    std::copy(four, four + n, out + 4 * q);
+    store_first(kBorder ? border_quad(view, positions, w) : trilinear_quad(view, positions, w), n,
+                out + 4 * q);
   }
 }
 
