@@ -402,12 +402,14 @@ OFLAB_AVX2 bool opens_with_border(const LevelPairView& view, const InverseMap& m
 // octet that still have level k, on a bordered pair up to the border range's end.
 OFLAB_AVX2 void levels_row(const MipLevelMaps& levels, const std::uint16_t* indices, int y,
                            int x_begin, int x_end, Pixel* out) {
+  LevelPairView view{};  // level pair `viewed`'s, kept while the segments stay on it
+  int viewed = -1;
   for (int x = x_begin; x < x_end;) {
     const std::uint16_t* index = indices + (x - x_begin);
     const __m128i octet = _mm_loadu_si128(reinterpret_cast<const __m128i*>(index));
     const int k = index[0] >> 8;
     const InverseMap& map = levels.maps[static_cast<std::size_t>(k)];
-    const LevelPairView view = level_pair_view(levels, k);
+    if (k != viewed) view = level_pair_view(levels, k), viewed = k;
     Pixel* o = out + (x - x_begin);
     const bool border_first = !in_fast_range<true>(view.src, evaluate(map, x, y));
     if (border_first && !opens_with_border(view, map, octet, k, x, y, x_end)) {
