@@ -37,6 +37,19 @@ void reduce(const Image& fine, Image& coarse) {
   }
 }
 
+// `bordered` (resized here) as `level` with kMipBorder texels replicated on every side.
+void add_border(const Image& level, Image& bordered) {
+  const int w = level.width(), h = level.height(), b = kMipBorder;
+  bordered.reshape(w + 2 * b, h + 2 * b);
+  for (int j = 0; j < h + 2 * b; ++j) {
+    const Pixel* in = level.row(std::clamp(j - b, 0, h - 1));
+    Pixel* out = bordered.row(j);
+    std::fill(out, out + b, in[0]);
+    std::copy(in, in + w, out + b);
+    std::fill(out + b + w, out + 2 * b + w, in[w - 1]);
+  }
+}
+
 }  // namespace
 
 int mip_top_level(int width, int height) {
@@ -50,11 +63,13 @@ void build_mip_pyramid(const Image& image, MipPyramid& pyramid) {
   pyramid.base_height = image.height();
   const int top = image.empty() ? 0 : mip_top_level(image.width(), image.height());
   pyramid.reduced.resize(static_cast<std::size_t>(top));
+  pyramid.bordered.resize(static_cast<std::size_t>(top));
   const Image* fine = &image;
   for (int k = 1; k <= top; ++k) {
     Image& coarse = pyramid.reduced[static_cast<std::size_t>(k - 1)];
     coarse.reshape((fine->width() + 1) / 2, (fine->height() + 1) / 2);
     reduce(*fine, coarse);
+    add_border(coarse, pyramid.bordered[static_cast<std::size_t>(k - 1)]);
     fine = &coarse;
   }
 }

@@ -8,6 +8,11 @@
 // top level is 1 x 1. Pixels are premultiplied RGBA8 (core/image/image.h), so the mean of a
 // transparent and an opaque pixel is the half-covered pixel, as filtering needs.
 //
+// Borders. Each level k >= 1 is also kept with kMipBorder texels replicated on every side
+// (bordered_level: pixel (i, j) is level k's pixel (clamp(i - kMipBorder), clamp(j -
+// kMipBorder)), each coordinate clamped to the level), so that a sampling loop whose taps
+// leave the level by at most kMipBorder texels reads the clamped texels without clamping.
+//
 // Coordinates. A continuous point s of level 0 (top-left pixel coordinates) is s / 2^k on
 // level k: level k's pixel (i, j) covers level 0's [2^k i, 2^k (i + 1)) x [2^k j, 2^k (j + 1)).
 //
@@ -26,15 +31,25 @@
 
 namespace oflab {
 
+// Texels replicated on each side of the bordered copies of levels 1 and up.
+constexpr int kMipBorder = 2;
+
 struct MipPyramid {
   int base_width = 0;  // level 0, the layer image the pyramid was built from
   int base_height = 0;
-  std::vector<Image> reduced;  // levels 1 .. top (reduced[k - 1] is level k)
+  std::vector<Image> reduced;   // levels 1 .. top (reduced[k - 1] is level k)
+  std::vector<Image> bordered;  // the same with kMipBorder replicated texels on every side
 
   // The highest level (0 for an empty or 1 x 1 image).
   int top() const { return static_cast<int>(reduced.size()); }
   // Level k >= 1. Precondition: 1 <= k <= top().
   const Image& level(int k) const { return reduced[static_cast<std::size_t>(k - 1)]; }
+  // Level k >= 1 with its border: (width + 2 kMipBorder) x (height + 2 kMipBorder) pixels,
+  // level k's pixel (0, 0) at (kMipBorder, kMipBorder). Precondition: 1 <= k <= top() and
+  // has_borders().
+  const Image& bordered_level(int k) const { return bordered[static_cast<std::size_t>(k - 1)]; }
+  // True if every level has its bordered copy (build_mip_pyramid makes them).
+  bool has_borders() const { return bordered.size() == reduced.size(); }
   // True if the pyramid was built from an image of this size.
   bool fits(const Image& image) const {
     return image.width() == base_width && image.height() == base_height;
@@ -45,8 +60,8 @@ struct MipPyramid {
 // 0 for an empty image. Precondition: width, height >= 0.
 int mip_top_level(int width, int height);
 
-// Builds the pyramid of `image` into `pyramid`, reusing the memory of its levels (a layer
-// re-rendered at the same size allocates nothing).
+// Builds the pyramid of `image` into `pyramid` (the levels and their bordered copies), reusing the
+// memory of its levels (a layer re-rendered at the same size allocates nothing).
 void build_mip_pyramid(const Image& image, MipPyramid& pyramid);
 
 // The factor x factor box mean of `image` (each channel's rounded mean): the image a

@@ -254,12 +254,14 @@ Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyra
   return lerp_pixel(lower, upper, pair.weight);
 }
 
-// Per level: its bilinear map (division form) and image.
+// Per level: its bilinear map (division form), image and bordered copy (none for level 0).
 MipLevelMaps level_maps(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid) {
   MipLevelMaps levels;
   for (int k = 0; k <= pyramid.top(); ++k) {
     levels.maps.push_back(level_plan(plan, k).map);
     levels.images.push_back(&level_image(source, pyramid, k));
+    levels.bordered.push_back(k > 0 && pyramid.has_borders() ? &pyramid.bordered_level(k)
+                                                             : nullptr);
   }
   return levels;
 }

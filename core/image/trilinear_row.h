@@ -16,9 +16,14 @@ namespace oflab {
 // The levels of a perspective mipmap warp as the rows sample them: per level k (0 .. top,
 // top <= 15) its bilinear map (division form, level k's positions: the level-0 ones scaled
 // by 2^-k, mipmap_kernel.cpp's level_plan) and its image (level 0 the source).
+// Optionally, per level, its copy with kMipBorder replicated texels on every side
+// (MipPyramid::bordered_level; null for level 0, or `bordered` left empty): where a level
+// pair has both, run_trilinear_levels_row samples the pixels whose taps leave the level by
+// less than the border in its fast loop instead of clamping each tap (the same bytes).
 struct MipLevelMaps {
   std::vector<InverseMap> maps;
   std::vector<const Image*> images;
+  std::vector<const Image*> bordered;  // empty, or one per level (null: none)
 };
 
 // Pixels x_begin .. x_end - 1 of output row y (output pixels, centred coordinates of the plan

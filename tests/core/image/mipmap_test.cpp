@@ -116,6 +116,30 @@ TEST(MipPyramid, ALevelOfAnOddImageClampsItsLastColumn) {
   EXPECT_EQ(pyramid.level(1).at(1, 0), (Pixel{40, 40, 40, 80}));  // its own tap, clamped
 }
 
+// Each bordered copy is its level with every coordinate clamped to the level, computed
+// texel by texel; the copies of a pyramid rebuilt at another size follow it.
+TEST(MipPyramid, BorderedLevelsReplicateTheEdgeTexels) {
+  std::mt19937 rng(12);
+  MipPyramid pyramid;
+  for (const auto& size : {std::pair<int, int>{37, 22}, std::pair<int, int>{16, 16}}) {
+    build_mip_pyramid(testing::random_image(rng, size.first, size.second), pyramid);
+    ASSERT_TRUE(pyramid.has_borders());
+    for (int k = 1; k <= pyramid.top(); ++k) {
+      const Image& level = pyramid.level(k);
+      const Image& copy = pyramid.bordered_level(k);
+      ASSERT_EQ(copy.width(), level.width() + 2 * kMipBorder);
+      ASSERT_EQ(copy.height(), level.height() + 2 * kMipBorder);
+      for (int j = 0; j < copy.height(); ++j) {
+        for (int i = 0; i < copy.width(); ++i) {
+          const int x = std::min(std::max(i - kMipBorder, 0), level.width() - 1);
+          const int y = std::min(std::max(j - kMipBorder, 0), level.height() - 1);
+          ASSERT_EQ(copy.at(i, j), level.at(x, y)) << "level " << k << " at " << i << ", " << j;
+        }
+      }
+    }
+  }
+}
+
 // The footprint's longer axis of an affine warp A (source -> destination) is 1 / the smaller
 // singular value of A, known here by construction: A = R(a) diag(s1, s2) R(b).
 TEST(MipLevel, AffineLevelIsLog2OfTheInverseOfTheSmallerScale) {
@@ -279,8 +303,10 @@ TEST(MipRowLevels, EachIndexIsTheExactLevelOrItsInterpolationBetweenKnotsRounded
 }
 
 // Level k's map of a perspective plan as the mipmap kernel makes it (positions scaled by
-// 2^-k, pixel-centre indices, over the plan's polygon clipped to the output), and its image.
-MipLevelMaps plan_level_maps(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid) {
+// 2^-k, pixel-centre indices, over the plan's polygon clipped to the output), its image, and
+// the bordered copies of `borders` (levels 1 and up; none if null).
+MipLevelMaps plan_level_maps(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
+                             const MipPyramid* borders) {
   MipLevelMaps levels;
   const ConvexPolygon region =
       clip_to_box(plan.polygon, BoundingBox{0.0, 0.0, static_cast<double>(plan.output_width),
@@ -290,6 +316,7 @@ MipLevelMaps plan_level_maps(const WarpPlan& plan, const Image& source, const Mi
     levels.maps.push_back(make_inverse_map(
         translation_matrix(-0.5, -0.5) * scaling(s, s) * plan.dest_to_source, region, false));
     levels.images.push_back(k == 0 ? &source : &pyramid.level(k));
+    levels.bordered.push_back(k > 0 && borders ? &borders->bordered_level(k) : nullptr);
   }
   return levels;
 }
@@ -318,14 +345,29 @@ std::vector<Pixel> each_pixel_alone(const MipLevelMaps& levels, const std::uint1
 // (each_pixel_alone; a one-pixel call takes the clamped path, so this also checks that a
 // pixel's bytes do not depend on the run it is part of). Whole spans and random pieces of
 // them, on tilts whose rows cross several levels, reach the top level and leave the source.
-// The control: the same rows with every weight one step higher differ on blended pixels.
+// The row runs with the levels' bordered copies (the pixels whose taps leave a level by less
+// than its border sampled from the copies) and without (clamped taps). The controls: the same
+// rows with every weight one step higher differ on blended pixels, and with the copies'
+// borders spoiled (each border texel inverted) they differ too, so the copies are read.
 TEST(TrilinearLevelsRow, EachPixelHasTheBytesOfItsLevelPairSampledAlone) {
   if (!warp_avx2_enabled()) GTEST_SKIP() << "the level row needs the AVX2 loops";
   std::mt19937 rng(45);
   const Layer source = make_layer(testing::random_image(rng, 160, 120));
   MipPyramid pyramid;
   build_mip_pyramid(source.image, pyramid);
+  MipPyramid spoiled = pyramid;
+  for (Image& copy : spoiled.bordered) {
+    for (int j = 0; j < copy.height(); ++j) {
+      for (int i = 0; i < copy.width(); ++i) {
+        const bool inner = i >= kMipBorder && i < copy.width() - kMipBorder && j >= kMipBorder &&
+                           j < copy.height() - kMipBorder;
+        Pixel& p = copy.at(i, j);
+        if (!inner) p = Pixel{static_cast<std::uint8_t>(255 - p.r), p.g, p.b, p.a};
+      }
+    }
+  }
   const int top = pyramid.top();
+  std::int64_t border_far = 0;
   const Mat3 tilts[] = {mat3_from_rows({0.5, 0.05, 4.0}, {-0.02, 0.45, 3.0}, {0.012, 0.003, 1.0}),
                         mat3_from_rows({0.3, -0.1, 20.0}, {0.1, 0.35, -6.0}, {-0.004, 0.02, 1.0}),
                         mat3_from_rows({1.2, 0.3, -5.0}, {-0.2, 1.1, 2.0}, {0.03, 0.01, 1.0}),
@@ -338,7 +380,9 @@ TEST(TrilinearLevelsRow, EachPixelHasTheBytesOfItsLevelPairSampledAlone) {
                               &pyramid};
     const WarpPlan plan =
         plan_warp(prepare_warp(source, m, options), Sampling::kMipmap, 120, 90, -6, -4);
-    const MipLevelMaps levels = plan_level_maps(plan, source.image, pyramid);
+    const MipLevelMaps levels = plan_level_maps(plan, source.image, pyramid, &pyramid);
+    const MipLevelMaps clamped = plan_level_maps(plan, source.image, pyramid, nullptr);
+    const MipLevelMaps spoilt = plan_level_maps(plan, source.image, pyramid, &spoiled);
     ScanConverter scan(plan.polygon, 120, 90);
     PixelSpan span;
     while (scan.next(span)) {
@@ -356,15 +400,23 @@ TEST(TrilinearLevelsRow, EachPixelHasTheBytesOfItsLevelPairSampledAlone) {
       // The whole span, then a random piece of it.
       const int a = std::uniform_int_distribution<int>(0, count - 1)(rng);
       const int b = std::uniform_int_distribution<int>(a + 1, count)(rng);
-      for (const auto& piece : {std::pair<int, int>{0, count}, std::pair<int, int>{a, b}}) {
-        std::vector<Pixel> got(static_cast<std::size_t>(count), testing::kSentinel);
-        ASSERT_TRUE(run_trilinear_levels_row(
-            levels, index.data() + piece.first, span.y, span.x_begin + piece.first,
-            span.x_begin + piece.second, got.data() + piece.first));
-        for (int i = piece.first; i < piece.second; ++i) {
-          differing += got[static_cast<std::size_t>(i)] != want[static_cast<std::size_t>(i)];
-          ++pixels;
+      for (const MipLevelMaps* maps : {&levels, &clamped}) {
+        for (const auto& piece : {std::pair<int, int>{0, count}, std::pair<int, int>{a, b}}) {
+          std::vector<Pixel> got(static_cast<std::size_t>(count), testing::kSentinel);
+          ASSERT_TRUE(run_trilinear_levels_row(
+              *maps, index.data() + piece.first, span.y, span.x_begin + piece.first,
+              span.x_begin + piece.second, got.data() + piece.first));
+          for (int i = piece.first; i < piece.second; ++i) {
+            differing += got[static_cast<std::size_t>(i)] != want[static_cast<std::size_t>(i)];
+            pixels += maps == &levels;  // each pixel counted once
+          }
         }
+      }
+      std::vector<Pixel> from_spoilt(static_cast<std::size_t>(count));
+      run_trilinear_levels_row(spoilt, index.data(), span.y, span.x_begin, span.x_end,
+                               from_spoilt.data());
+      for (int i = 0; i < count; ++i) {
+        border_far += from_spoilt[static_cast<std::size_t>(i)] != want[static_cast<std::size_t>(i)];
       }
       std::vector<std::uint16_t> heavier = index;
       for (std::uint16_t& i : heavier) {
@@ -386,6 +438,7 @@ TEST(TrilinearLevelsRow, EachPixelHasTheBytesOfItsLevelPairSampledAlone) {
   EXPECT_GT(at_top, 0) << "pixels on the top level";
   EXPECT_GT(blended, pixels / 4);
   EXPECT_GT(control_far, blended / 20);
+  EXPECT_GT(border_far, 0) << "pixels read from the borders";
 }
 
 // A pure 2x minification puts every output pixel centre on a level-1 pixel centre with
