@@ -129,7 +129,6 @@ const comparisonView = {
       this.put(ctx, 0, app.session.runPixels(0), pw, ph, at(0), y);
       this.outlines(ctx, engine, at(0), y, pw, ph, fw, fh, style);
       this.put(ctx, 2, app.session.runPixels(1), pw, ph, at(1), y);
-      ctx.fillStyle = '#e6e6e6';
       ctx.fillText(this.caption(engine), at(0), pad + 14 * style.scale, pw);
       ctx.fillText('exact projection', at(1), pad + 14 * style.scale, pw);
       title = null;
@@ -151,7 +150,6 @@ const comparisonView = {
         kBlinkMs - (performance.now() % kBlinkMs) + 1);
       this.blinkPhase = phase;
     }
-    ctx.fillStyle = '#e6e6e6';
     if (title) ctx.fillText(title, at(0), pad + 14 * style.scale, pw);
     // The key of what is shown: the levels' colours of the outlines, or the heat map's bar;
     // right of a single panel where it fits, else below.

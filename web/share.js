@@ -120,7 +120,7 @@ function savePng() {
 // VideoEncoder (VP9, else VP8) with the timestamp k / kVideoFps s, and written into a WebM
 // file by webm-muxer (web/video/webm_writer.js): one video frame per frame played, at the
 // canvas's size, whatever the time each takes to draw. progress(k, n) after each frame.
-// Resolves {blob, frames}, or {error} (no encoder; 'cancelled' after cancelVideo): then
+// Resolves {blob}, or {error} (no encoder; 'cancelled' after cancelVideo): then
 // nothing is kept. Play stops meanwhile; the frame shown before is shown again after.
 const kVideoFps = 30;
 let videoJob = null;  // {cancelled} while a video is recorded
@@ -179,7 +179,7 @@ async function recordVideo(first, last, progress = () => {}) {
   if (failure) return { error: `the encoder failed: ${failure.message || failure}` };
   if (job.cancelled) return { error: 'cancelled' };
   muxer.finalize();
-  return { blob: new Blob([muxer.target.buffer], { type: 'video/webm' }), frames: last - first + 1 };
+  return { blob: new Blob([muxer.target.buffer], { type: 'video/webm' }) };
 }
 
 function cancelVideo() {

@@ -27,8 +27,22 @@ ShownRun shown_compared(const ComparedRun& run) {
   return shown;
 }
 
+// The model's run as the views name it: its reuse policy, or the source's kind when the kind
+// has none (scene shifting).
+std::string model_name(RunPlayer& player) {
+  return player.source_kind().uses_reuse_policy ? player.settings().policy->name
+                                                : player.source().kind;
+}
+
+// The desktop's rule (gui/views/animation_view.cpp, analysis_view.cpp): the views show the
+// compared runs while the animation view's layout is the comparison and there are compared
+// runs (a kind without a reuse policy has none); otherwise the model's own engine.
+bool shows_compared(Lab& lab) {
+  return lab.state().display == PanelDisplay::kComparison && !lab.comparison().runs().empty();
+}
+
 ShownRun shown_model(RunPlayer& player) {
-  ShownRun shown{player.source().kind, player.animator(), &player.current(), {}, 0.0};
+  ShownRun shown{model_name(player), player.animator(), &player.current(), {}, 0.0};
   const std::vector<AnimationFrame>& history = player.history();
   for (std::size_t k = 1; k < history.size(); ++k) {
     for (int l = 0; l < kLevelCount; ++l) shown.level_frames[l] += history[k].levels[l];
@@ -62,13 +76,7 @@ std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem) {
     if (problem->empty()) *problem = "the source cannot be played";
     return shown;
   }
-  // The desktop's rule (gui/views/animation_view.cpp): the comparison layout shows the
-  // compared runs; side by side, difference and blink the model's own engine (its policy).
-  if (lab.state().display != PanelDisplay::kComparison) {
-    ShownRun model = shown_model(lab.run());
-    if (lab.run().source_kind().uses_reuse_policy) model.policy = lab.run().settings().policy->name;
-    return {model};
-  }
+  if (!shows_compared(lab)) return {shown_model(lab.run())};
   for (const ComparedRun& run : lab.comparison().runs()) {
     if (!run.problem.empty()) {
       *problem = run.problem;
@@ -76,8 +84,6 @@ std::vector<ShownRun> shown_runs(Lab& lab, std::string* problem) {
     }
     shown.push_back(shown_compared(run));
   }
-  // A kind without a reuse policy (scene shifting) shows its own run.
-  if (shown.empty()) shown.push_back(shown_model(lab.run()));
   return shown;
 }
 
@@ -127,14 +133,11 @@ std::string analysis_history_json(Lab& lab, int frames) {
                 {"model_work", work}};
   };
   const auto finite_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(); };
-  // The desktop's rule (gui/views/analysis_view.cpp): the compared runs while the animation
-  // view shows its comparison layout, else the model's one engine.
-  const std::vector<ComparedRun>& compared = lab.comparison().runs();
-  const bool comparing = lab.state().display == PanelDisplay::kComparison && !compared.empty();
+  const bool comparing = shows_compared(lab);
   json runs = json::array();
   json result = {{"first", first}, {"last", now}, {"comparing", comparing}};
   if (comparing) {
-    for (const ComparedRun& run : compared) {
+    for (const ComparedRun& run : lab.comparison().runs()) {
       if (!run.problem.empty()) return json{{"problem", run.problem}}.dump();
       json list = json::array();
       for (const ComparedFrame& f : run.history) {
@@ -160,11 +163,8 @@ std::string analysis_history_json(Lab& lab, int frames) {
       item["budgets"] = budgets;
       list.push_back(item);
     }
-    const EngineSettings& settings = lab.run().settings();
-    // A source kind without a reuse policy (scene shifting) is named by its kind.
-    runs.push_back({{"policy", compared.empty() ? lab.run().source().kind : settings.policy->name},
-                    {"frames", list}});
-    result["thresholds"] = settings.thresholds;
+    runs.push_back({{"policy", model_name(lab.run())}, {"frames", list}});
+    result["thresholds"] = lab.run().settings().thresholds;
   }
   result["runs"] = runs;
   return result.dump();
