@@ -59,12 +59,14 @@ struct LayerCandidates {
   TermArray error{};                // kChoice: error each level none..perspective leaves, px
   double extent_px = 0.0;           // kFresh: diagonal of the render's box, pixels
   // kChoice, policies of the threshold rule (core/engine/lookahead.h): frames after this one
-  // until the layer is predicted to expire for its reuse levels (the rule re-renders it) and
-  // for its free levels (it must write pixels), if it takes its own choice; -1 when no
-  // expiry is predicted. early_write: its cheapest writing level the rule accepts now
-  // (affine, perspective, else re-render).
+  // until the layer is predicted to expire for its reuse levels (the rule re-renders it), for
+  // its free levels (it must write pixels) and for its levels up to affine (it must write a
+  // perspective warp or a render), if it takes its own choice; -1 when no expiry is
+  // predicted. early_write: its cheapest writing level the rule accepts now (affine,
+  // perspective, else re-render).
   int rerender_expiry = -1;
   int write_expiry = -1;
+  int upgrade_expiry = -1;
   Level early_write = Level::kRerender;
 };
 

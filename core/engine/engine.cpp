@@ -316,14 +316,18 @@ void PlaneEngine::measure_expiry() {
   LayerCandidates& c = m.candidates;
   if (policy().schedule != Schedule::kThreshold) return;
   const TermArray& thresholds = settings_.thresholds;
-  LevelSet reuse{}, free{};
+  LevelSet reuse{}, free{}, cheap{};
   reuse[highest_reuse_level()] = true;
   free[0] = policy().allowed[0];
   free[1] = policy().allowed[1];
+  cheap = free;  // up to affine, when a perspective warp lies above it
+  cheap[2] = policy().allowed[2] && highest_reuse_level() > 2;
   m.rerender_slack = level_slack(c.error, thresholds, reuse);
   m.write_slack = level_slack(c.error, thresholds, free);
+  m.upgrade_slack = level_slack(c.error, thresholds, cheap);
   c.rerender_expiry = expiry_.rerender.frames_to_expiry_with(m.rerender_slack);
   c.write_expiry = expiry_.write.frames_to_expiry_with(m.write_slack);
+  c.upgrade_expiry = cheap[2] ? expiry_.upgrade.frames_to_expiry_with(m.upgrade_slack) : -1;
   c.early_write = Level::kRerender;
   for (Level l : {Level::kAffine, Level::kPerspective}) {
     const int k = static_cast<int>(l);
@@ -346,6 +350,11 @@ void PlaneEngine::track_expiry(Level allocated, FrameReport& report) {
       t.write.clear();
     } else {
       t.write.push(m.write_slack);
+    }
+    if (report.level >= Level::kPerspective) {
+      t.upgrade.clear();
+    } else {
+      t.upgrade.push(m.upgrade_slack);
     }
     const int ahead = t.rerender.frames_to_expiry();
     report.predicted_expiry = ahead > 0 ? frame_ + ahead : -1;

@@ -242,15 +242,16 @@ class PlaneEngine {
     Mat3 model{1.0};  // the model warp after this frame
     FitFiducials fit;
     int since_render = 1;
-    double rerender_slack = 0.0, write_slack = 0.0;  // core/engine/lookahead.h, this frame
+    double rerender_slack = 0.0, write_slack = 0.0, upgrade_slack = 0.0;  // lookahead.h
   };
   // The lives of the shown layer for lookahead's prediction (core/engine/lookahead.h): the
-  // slacks since the last render and the last pixel-writing update, the frame of the render
-  // and the expiry predicted in each frame since (absolute, -1 none).
+  // slacks since the last render, the last pixel-writing update and the last perspective
+  // update, the frame of the render and the expiry predicted in each frame since (absolute,
+  // -1 none).
   struct ExpiryTrack {
     bool live = false;
     int start = 0;
-    SlackSeries rerender, write;
+    SlackSeries rerender, write, upgrade;
     std::vector<int> predicted;
   };
   void measure_expiry();

@@ -14,16 +14,29 @@ std::int64_t cost_of(const LayerCandidates& c, Level level) {
   return c.pixels[static_cast<int>(level)];
 }
 
-// A layer's predicted write within the horizon: the frames ahead (1..kLookaheadHorizon), or 0
-// when none is predicted there.
-int predicted_write(const LayerCandidates& c) {
-  const int ahead = writes(c.choice) ? c.rerender_expiry : c.write_expiry;
-  return ahead >= 1 && ahead <= kLookaheadHorizon ? ahead : 0;
-}
+// A layer's predicted write within the horizon: the frames ahead it falls in
+// (1..kLookaheadHorizon, 0 when none is predicted there), the level it writes then, and the
+// level that updates the layer now, early, instead.
+struct PredictedWrite {
+  int due = 0;
+  Level then = Level::kRerender;
+  Level early = Level::kRerender;
+};
 
-// What updating layer `c` now, early, writes and costs beyond its own choice.
-Level early_level(const LayerCandidates& c) {
-  return writes(c.choice) ? Level::kRerender : c.early_write;
+PredictedWrite predicted_write(const LayerCandidates& c) {
+  const auto within = [](int ahead) {
+    return ahead >= 1 && ahead <= kLookaheadHorizon ? ahead : 0;
+  };
+  // A free layer must write when its free levels expire: its cheapest writing level.
+  if (!writes(c.choice)) return {within(c.write_expiry), c.early_write, c.early_write};
+  // A writing layer is re-rendered when its reuse levels expire, and an affine one moves up to
+  // a perspective warp when its levels up to affine expire first; a render now spares either.
+  const int render = within(c.rerender_expiry);
+  const int upgrade = c.choice == Level::kAffine ? within(c.upgrade_expiry) : 0;
+  if (upgrade > 0 && (render == 0 || upgrade < render)) {
+    return {upgrade, Level::kPerspective, Level::kRerender};
+  }
+  return {render, Level::kRerender, Level::kRerender};
 }
 
 }  // namespace
@@ -81,9 +94,9 @@ void spread_updates(const std::vector<LayerCandidates>& layers, const std::vecto
       continue;
     }
     load[0] += own;
-    const int due = predicted_write(c);
-    if (due == 0) continue;
-    load[static_cast<std::size_t>(due)] += static_cast<double>(cost_of(c, early_level(c)));
+    const PredictedWrite p = predicted_write(c);
+    if (p.due == 0) continue;
+    load[static_cast<std::size_t>(p.due)] += static_cast<double>(cost_of(c, p.then));
     pending.push_back(i);
   }
   double sum = 0.0;
@@ -91,20 +104,23 @@ void spread_updates(const std::vector<LayerCandidates>& layers, const std::vecto
   for (double l : load) sum += l;
   const double target = sum / static_cast<double>(past.size() + load.size());
   std::stable_sort(pending.begin(), pending.end(), [&](std::size_t x, std::size_t y) {
-    return predicted_write(layers[x]) < predicted_write(layers[y]);
+    return predicted_write(layers[x]).due < predicted_write(layers[y]).due;
   });
   for (std::size_t i : pending) {
     const LayerCandidates& c = layers[i];
-    const auto due = static_cast<std::size_t>(predicted_write(c));
-    const double then = static_cast<double>(cost_of(c, early_level(c)));
-    const double now = load[0] + then - static_cast<double>(cost_of(c, c.choice));
-    if (load[0] >= target) break;
+    const PredictedWrite p = predicted_write(c);
+    const auto due = static_cast<std::size_t>(p.due);
+    const double then = static_cast<double>(cost_of(c, p.then));
+    const double early = static_cast<double>(cost_of(c, p.early));
+    const double now = load[0] + early - static_cast<double>(cost_of(c, c.choice));
+    // A move that adds to this frame only while the frame is below the target.
+    if (now > load[0] && load[0] >= target) continue;
     // Moved only where it lowers the peak of this frame and its due frame, and into the
     // cheapest frame of the window up to the due one (else a later frame takes it).
     bool cheapest = now < load[due];
-    for (std::size_t k = 1; k < due && cheapest; ++k) cheapest = now <= load[k] + then;
+    for (std::size_t k = 1; k < due && cheapest; ++k) cheapest = now <= load[k] + early;
     if (!cheapest) continue;
-    a.levels[i] = early_level(c);
+    a.levels[i] = p.early;
     a.early[i] = 1;
     load[0] = now;
     load[due] -= then;

@@ -14,7 +14,10 @@
 //     render (every error 0);
 //   write slack: the free levels' (none, translate: they write no pixel): when negative the
 //     layer must write pixels (an affine or perspective warp, or a render); it restarts after
-//     every update that writes pixels.
+//     every update that writes pixels;
+//   upgrade slack: the levels up to affine (when a perspective level lies above them): when
+//     negative an affine layer must move up to a perspective warp (two passes) or a render;
+//     it restarts after every perspective warp or render.
 // Prediction. The last three samples s0 = s(t), s1 = s(t-1), s2 = s(t-2) give the growth
 // g = s0 - s1 (this frame's flow term, carried into the error) and its time derivative
 // c = g - (s1 - s2); the slack k frames ahead is extrapolated as
@@ -27,15 +30,18 @@
 // it) and takes no part. The frame's movable load is the pixels of the warped layers' own
 // choices; each layer that would write pixels within the next kLookaheadHorizon frames by
 // prediction (a free layer at its write expiry, a writing layer at its re-render expiry) adds
-// its cost to the load of its due frame. The target is the mean movable load per frame over
-// the last kLookaheadHorizon frames as allocated (`past`: FrameAllocation::movable), this
-// frame and the horizon. While this frame's load is below the target, the layers due soonest
-// (then the lowest index) are updated now, early, each only where that lowers the peak of this
-// frame and its due frame (this frame's load with it stays below the due frame's without it)
-// and no frame between is cheaper for it (else a later frame takes it): a free layer at its
-// cheapest acceptable writing level (LayerCandidates::early_write), a writing layer by a
-// re-render. An early update is a level the rule accepts (or a render), so no shown error
-// grows; it costs pixels only by shortening the layer's current reuse.
+// its cost there to the load of its due frame; so does an affine layer at its upgrade expiry
+// (the cost of the perspective warp), when that comes before its re-render expiry. The target
+// is the mean movable load per frame over the last kLookaheadHorizon frames as allocated
+// (`past`: FrameAllocation::movable), this frame and the horizon. The layers due soonest (then
+// the lowest index) are updated now, early, each only where that lowers the peak of this frame
+// and its due frame (this frame's load with it stays below the due frame's without it), no
+// frame between is cheaper for it (else a later frame takes it), and, if it adds to this
+// frame, while the frame's load is below the target: a free layer at its cheapest acceptable
+// writing level (LayerCandidates::early_write), a writing layer by a re-render (for an affine
+// layer often no dearer than its affine warp: a move that adds nothing). An early update is
+// a level the rule accepts (or a render), so no shown error grows; it costs pixels only by
+// shortening the layer's current reuse.
 #pragma once
 
 #include <array>

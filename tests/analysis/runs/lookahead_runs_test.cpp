@@ -88,14 +88,13 @@ TEST(LookaheadRuns, FlattensThePeaksOfTheFourCubesAtTheSameErrorForAtMostFivePer
 }
 
 // The street's walk (30 frames, without the exact re-render beside): two clipped layers
-// re-rendered every frame write most of each frame's pixels, and the warped layers' writes the
-// schedule may move are small beside them (manual/policies.md). The schedule moves a write only
-// where that lowers the peak of the frame and its due frame, counting the warped layers'
-// pixels only, so it no longer raises the peaks there: the 95th percentile is not higher, the
-// error the same, the total within 5 %. (The earlier schedule, which compared whole frames
-// with a running mean, raised the 95th percentile 404344 -> 413100 on these frames.) A lower
-// 95th percentile is not claimed on the street: see the manual.
-TEST(LookaheadRuns, OnTheStreetTheScheduleDoesNotRaiseThePeaks) {
+// re-rendered every frame write most of each frame's pixels, and the peaks are the frames where
+// warped layers write more (manual/policies.md). Frame 15's is two affine layers moving up to
+// perspective warps (two passes each): predicted a frame ahead, one of them is rendered
+// instead of warped affinely in frame 14, which writes no more there. The 95th percentile
+// falls, at the same error, for no more pixels in all. (Without the upgrade's prediction the
+// schedule moved nothing here: p95 404344 for both.)
+TEST(LookaheadRuns, OnTheStreetAnEarlyRenderLowersThePeaks) {
   PlayOptions options = quick(30);
   options.baseline = false;
   std::vector<PolicyRow> rows;
@@ -105,9 +104,10 @@ TEST(LookaheadRuns, OnTheStreetTheScheduleDoesNotRaiseThePeaks) {
   const PolicyRow& rule = rows[0];
   const PolicyRow& ahead = rows[1];
   EXPECT_NEAR(ahead.max_measured_error_px, rule.max_measured_error_px, 0.05);
-  EXPECT_LE(ahead.pixels_written_p95, rule.pixels_written_p95);
+  EXPECT_LT(ahead.pixels_written_p95, rule.pixels_written_p95);
+  EXPECT_LT(ahead.pixels_written_max, rule.pixels_written_max);
   EXPECT_LE(double(ahead.pixels_written), 1.05 * double(rule.pixels_written));
-  EXPECT_GT(rule.pixels_written, 0);
+  EXPECT_GT(ahead.expiry.early, 0);  // the schedule did move something
 }
 
 }  // namespace

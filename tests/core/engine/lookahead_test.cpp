@@ -130,6 +130,36 @@ TEST(Lookahead, FixedRendersTakeNoPartInTheSchedule) {
   for (int i = 0; i < 3; ++i) EXPECT_EQ(b.early[i], 0) << i;
 }
 
+// An affine layer whose levels up to affine are predicted to expire next frame writes a
+// perspective warp there (two passes, twice the pixels); a render now writes no more than its
+// affine warp now, so it is made early even in a frame above the mean (it adds nothing to the
+// frame), and the next frame's peak falls. Controls: without that prediction, or when the render
+// costs more than the affine warp (it would add to a frame above the mean), the layer keeps
+// its own choice.
+TEST(Lookahead, AnAffineLayerAboutToNeedAPerspectiveWarpIsRenderedNowWhenThatAddsNothing) {
+  LayerCandidates about = choice(Level::kAffine, -1, 0);
+  about.pixels = {0, 0, 100, 200, 100};
+  about.upgrade_expiry = 1;
+  const auto allocate = [](const LayerCandidates& c) {
+    const std::vector<LayerCandidates> layers = {c, choice(Level::kAffine, -1, 50)};
+    FrameAllocation a = own_choices(layers);
+    spread_updates(layers, {}, a);  // own 150 now, 200 due next frame: the mean is 87.5
+    return a;
+  };
+  const FrameAllocation a = allocate(about);
+  EXPECT_EQ(a.levels[0], Level::kRerender);
+  EXPECT_EQ(a.early[0], 1);
+  EXPECT_EQ(a.levels[1], Level::kAffine);
+  EXPECT_DOUBLE_EQ(a.movable, 150.0);
+  LayerCandidates unpredicted = about;
+  unpredicted.upgrade_expiry = -1;
+  EXPECT_EQ(allocate(unpredicted).early[0], 0);
+  LayerCandidates dearer = about;
+  dearer.pixels[static_cast<int>(Level::kRerender)] = 150;
+  EXPECT_EQ(allocate(dearer).early[0], 0);
+  EXPECT_EQ(allocate(dearer).levels[0], Level::kAffine);
+}
+
 // A frame already over the mean moves nothing; and only `lookahead` schedules ahead.
 TEST(Lookahead, AHeavyFrameMovesNothingAndOnlyLookaheadSpreads) {
   const std::vector<LayerCandidates> layers = {choice(Level::kAffine, -1, 1000),
