@@ -66,7 +66,7 @@ QRectF AnimationView::fit_content() {
   } catch (const std::exception&) {  // the model refuses such sources with a message
     frame_bounds_.clear();
   }
-  fit_ = bounds_around(frame_bounds_, 0, -1);
+  fit_ = frame_rect(bounds_around(frame_bounds_, 0, -1));
   fit_known_ = true;
   return fit_;
 }
@@ -74,7 +74,8 @@ QRectF AnimationView::fit_content() {
 QRectF AnimationView::framed_content() {
   const QRectF loop = fit_content();
   if (!window_->frames_content() || !model_->animator()) return loop;
-  const QRectF around = bounds_around(frame_bounds_, model_->animator()->frame(), kFramingFrames);
+  const QRectF around =
+      frame_rect(bounds_around(frame_bounds_, model_->animator()->frame(), kFramingFrames));
   return around.isEmpty() ? loop : around;
 }
 

@@ -41,17 +41,6 @@ const QSize kDefaultCanvas(1280, 640);
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
 
-// The aspect (width over height) of the panels' frame: that of `content`, so that each panel
-// hugs what it frames in its cell (a tall band of squares in a wide cell leaves no empty sides),
-// held within kHugAspect of a square; the cell's own when nothing is framed or the panels are
-// zoomed in (a zoom then uses the whole cell).
-double hugging_aspect(const QRectF& cell, const QRectF& content, double zoom) {
-  constexpr double kHugAspect = 4.0;
-  const double cell_aspect = cell.width() / cell.height();
-  if (content.isEmpty() || zoom > 1.0) return cell_aspect;
-  return std::clamp(content.width() / content.height(), 1.0 / kHugAspect, kHugAspect);
-}
-
 }  // namespace
 
 AnimationView::AnimationView(WindowModel* window, QWidget* parent)
@@ -440,9 +429,11 @@ void AnimationView::paint_canvas(QPainter& painter, const QSize& size) {
   }
   lines_ = plan.lines;
   const Camera& camera = animator->camera();
-  shown_frame_ = panel_frame(content, QSizeF(camera.width, camera.height),
-                             hugging_aspect(plan.cells.front().image, content, window_->zoom()),
-                             window_->zoom());
+  shown_frame_ = panel_frame(
+      content, QSizeF(camera.width, camera.height),
+      hugging_aspect(plan.cells.front().image.width() / plan.cells.front().image.height(),
+                     frame_box(content), window_->zoom()),
+      window_->zoom());
   const auto outlines = exact_outlines(animator->scene(), animator->view(), camera, kNear);
   paint_panels(painter, plan, outlines);
   const bool levels = std::any_of(contents.begin(), contents.end(),

@@ -251,10 +251,10 @@ class AnimationView : public ViewPage {
   ViewTheme theme_;
   bool blink_phase_ = false;
   bool external_clock_ = false;
-  bool panels_in_parallel_ = true;    // paint_panels's threads (set_panels_in_parallel)
-  bool fit_known_ = false;            // fit_ is up to date with the model's source
-  QRectF fit_;                        // the plane's image over its loop (empty: the whole image)
-  std::vector<QRectF> frame_bounds_;  // the plane's image at each frame of the loop
+  bool panels_in_parallel_ = true;  // paint_panels's threads (set_panels_in_parallel)
+  bool fit_known_ = false;          // fit_ is up to date with the model's source
+  QRectF fit_;                      // the plane's image over its loop (empty: the whole image)
+  FrameBounds frame_bounds_;        // what is seen at each frame of the loop
   QRectF shown_frame_;
   std::vector<QRectF> panel_rects_;
   QImage buffers_[2];  // the composed view, painted into in turn (compose)

@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/view_culling.h"
-
 namespace oflab {
 
 std::vector<PanelCell> panel_row(const QRectF& row, int columns, double gap, double title_px,
@@ -77,20 +75,19 @@ double hull_share(const std::vector<QPointF>& points, const QRectF& picture) {
   return std::abs(twice_area) / 2.0 / (picture.width() * picture.height());
 }
 
+QRectF frame_rect(const std::optional<BoundingBox>& box) {
+  if (!box) return QRectF();
+  return QRectF(QPointF(box->x_min, box->y_min), QPointF(box->x_max, box->y_max));
+}
+
+std::optional<BoundingBox> frame_box(const QRectF& rect) {
+  if (rect.isEmpty()) return std::nullopt;
+  return BoundingBox{rect.left(), rect.top(), rect.right(), rect.bottom()};
+}
+
 QRectF panel_frame(const QRectF& content, const QSizeF& camera_size, double aspect, double zoom) {
-  QRectF frame = content.isEmpty() ? QRectF(QPointF(0, 0), camera_size) : content;
-  const double mx = kFitMargin * frame.width(), my = kFitMargin * frame.height();
-  frame.adjust(-mx, -my, mx, my);
-  const QPointF centre = frame.center();
-  double w = frame.width(), h = frame.height();
-  if (w / h < aspect) {
-    w = h * aspect;
-  } else {
-    h = w / aspect;
-  }
-  w /= zoom;
-  h /= zoom;
-  return QRectF(centre.x() - w / 2, centre.y() - h / 2, w, h);
+  return frame_rect(
+      panel_frame(frame_box(content), camera_size.width(), camera_size.height(), aspect, zoom));
 }
 
 QTransform frame_to_panel(const QRectF& frame, const QRectF& target) {
@@ -99,68 +96,12 @@ QTransform frame_to_panel(const QRectF& frame, const QRectF& target) {
                     target.top() - frame.top() * scale);
 }
 
-std::vector<QRectF> script_frame_bounds(const MotionScript& script, double near) {
-  std::vector<QRectF> bounds;
-  for (const ScriptFrame& frame : script.frames) {
-    const ConvexPolygon seen = plane_image_polygon(script.camera, frame.pose, near);
-    if (seen.empty()) {
-      bounds.emplace_back();
-      continue;
-    }
-    const BoundingBox box = seen.bounds();
-    bounds.emplace_back(QPointF(box.x_min, box.y_min), QPointF(box.x_max, box.y_max));
-  }
-  return bounds;
-}
-
-std::vector<QRectF> scene_frame_bounds(const Scene& scene, const ViewerScript& walk, double near) {
-  std::vector<QRectF> bounds;
-  for (const ViewerFrame& frame : walk.frames) {
-    QRectF seen;
-    for (const std::vector<Vec2>& outline : exact_outlines(scene, frame.pose, walk.camera, near)) {
-      for (const Vec2& p : outline) seen |= QRectF(QPointF(p.x, p.y), QSizeF(1e-9, 1e-9));
-    }
-    bounds.push_back(seen);
-  }
-  return bounds;
-}
-
-QRectF bounds_around(const std::vector<QRectF>& bounds, int frame, int reach) {
-  const int n = int(bounds.size());
-  const int first = reach < 0 ? 0 : std::max(0, frame - reach);
-  const int last = reach < 0 ? n - 1 : std::min(n - 1, frame + reach);
-  QRectF around;
-  for (int k = first; k <= last; ++k) around |= bounds[size_t(k)];
-  return around;
-}
-
 QRectF script_image_bounds(const MotionScript& script, double near) {
-  return bounds_around(script_frame_bounds(script, near), 0, -1);
+  return frame_rect(bounds_around(script_frame_bounds(script, near), 0, -1));
 }
 
 QRectF scene_image_bounds(const Scene& scene, const ViewerScript& walk, double near) {
-  return bounds_around(scene_frame_bounds(scene, walk, near), 0, -1);
-}
-
-std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,
-                                              const Camera& camera, double near) {
-  std::vector<std::vector<Vec2>> outlines;
-  const ViewFrustum frustum = view_frustum(camera, near, 0.0);
-  for (const ScenePolygon& polygon : scene.polygons) {
-    const Vec3 front = direction_to_view(view, polygon.front);
-    const Vec3 centre = to_view(view, polygon.centre);
-    // As the engines cull (core/scene/scene_animator.cpp): a two-sided sheet only edge-on.
-    if (is_back_facing(front, centre) && (!polygon.two_sided || is_back_facing(-front, centre))) {
-      continue;
-    }
-    ViewPolygon seen;
-    seen.uv = polygon_outline(polygon);
-    for (const Vec3& p : polygon_vertices(polygon)) seen.points.push_back(to_view(view, p));
-    clip_to_frustum_in_place(seen, frustum);
-    if (seen.empty()) continue;
-    outlines.push_back(project_to_pixels(camera, seen).vertices());
-  }
-  return outlines;
+  return frame_rect(bounds_around(scene_frame_bounds(scene, walk, near), 0, -1));
 }
 
 }  // namespace oflab

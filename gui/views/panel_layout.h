@@ -13,8 +13,10 @@
 #include <QRectF>
 #include <QStringList>
 #include <QTransform>
+#include <optional>
 #include <vector>
 
+#include "display/panel_framing.h"
 #include "engine/animator.h"
 #include "engine/script.h"
 #include "scene/viewer_script.h"
@@ -44,45 +46,25 @@ QStringList wrapped_caption(const QString& text, const QFontMetrics& metrics, do
 // empty picture.
 double hull_share(const std::vector<QPointF>& points, const QRectF& picture);
 
-// Fraction of the content's size added on every side when fitting it.
-constexpr double kFitMargin = 0.02;
+// The framing rule itself (content bounds, margin, aspect, zoom, the exact outlines) is the
+// teaching layer's (session/display/panel_framing.h), shared with the page; below, what the
+// window needs of it in Qt's rectangles.
 
-// The part of the camera image (camera pixels) every panel shows: `content` grown by
-// kFitMargin of its size on every side, widened or heightened about its centre to `aspect`
-// (width / height of the panels' image areas), then shrunk about its centre by `zoom`
-// (1 = fit, 2 = twice as large). An empty content frames `camera_size` whole.
-// Preconditions: aspect > 0, zoom > 0.
+// `box` as a rectangle; a null rectangle for none.
+QRectF frame_rect(const std::optional<BoundingBox>& box);
+// `rect` as a box; none for an empty rectangle.
+std::optional<BoundingBox> frame_box(const QRectF& rect);
+
+// panel_frame (panel_framing.h) of `content` (none when empty).
 QRectF panel_frame(const QRectF& content, const QSizeF& camera_size, double aspect, double zoom);
 
 // Maps camera pixels of `frame` onto canvas pixels of `target` (same aspect: a uniform
 // scale and a shift).
 QTransform frame_to_panel(const QRectF& frame, const QRectF& target);
 
-// The bounding box (camera pixels) of the plane's part inside the image (plane_image_polygon
-// with `near`) at each frame of `script`, in frame order; empty where the plane is not seen.
-std::vector<QRectF> script_frame_bounds(const MotionScript& script, double near);
-
-// The bounding box (camera pixels) of the exact outlines (exact_outlines below) of `scene`'s
-// polygons at each frame of the viewer script `walk`, seen with its camera, in frame order;
-// empty where no polygon is seen.
-std::vector<QRectF> scene_frame_bounds(const Scene& scene, const ViewerScript& walk, double near);
-
-// The union of `bounds[k]` over frames k in [frame - reach, frame + reach] that exist (all of
-// them when reach < 0): what zoom-to-fit frames, over the whole loop or around one frame.
-// Empty when none of those frames sees anything. Precondition: reach is -1 or >= 0.
-QRectF bounds_around(const std::vector<QRectF>& bounds, int frame, int reach);
-
 // script_frame_bounds and scene_frame_bounds over every frame: what zoom-to-fit frames over
 // the whole loop. Empty when the plane (every polygon) is never seen.
 QRectF script_image_bounds(const MotionScript& script, double near);
 QRectF scene_image_bounds(const Scene& scene, const ViewerScript& walk, double near);
-
-// The exact image outlines (camera pixels) of the polygons of `scene` seen from `view` with
-// `camera`: each polygon's outline clipped to the near plane `near` and the image border,
-// skipping edge-on polygons, back-facing one-sided ones (a two-sided sheet, the plane of the
-// plane and script sources, is outlined from behind too, as the engines draw it) and those
-// wholly outside the picture.
-std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,
-                                              const Camera& camera, double near);
 
 }  // namespace oflab

@@ -524,41 +524,6 @@ TEST(HullShare, CoversTheConvexHullInsideThePicture) {
   EXPECT_EQ(hull_share(triangle, QRectF()), 0.0);
 }
 
-// A plane seen from behind (a two-sided sheet, drawn by every engine) keeps its dashed exact
-// outline; a one-sided polygon (a solid's face) seen from behind has none, as it is culled.
-TEST(ExactOutlines, TwoSidedSheetIsOutlinedFromBehindAndAOneSidedFaceIsNot) {
-  Scene scene;
-  ScenePolygon sheet;
-  sheet.centre = Vec3(0.0, 0.0, 4.0);
-  sheet.front = Vec3(0.0, 0.0, 1.0);  // facing away from an eye at the origin looking down +z
-  sheet.size = Vec2(1.0, 1.0);
-  sheet.two_sided = true;
-  scene.polygons.push_back(sheet);
-  const Camera camera;
-  const ViewerPose eye;
-  ASSERT_TRUE(is_back_facing(direction_to_view(eye, sheet.front), to_view(eye, sheet.centre)));
-  const auto outlines = exact_outlines(scene, eye, camera, kNear);
-  ASSERT_EQ(outlines.size(), 1u);
-  EXPECT_EQ(outlines[0].size(), 4u);
-  scene.polygons[0].two_sided = false;
-  EXPECT_TRUE(exact_outlines(scene, eye, camera, kNear).empty());
-  scene.polygons[0].front = Vec3(0.0, 0.0, -1.0);  // facing the eye: outlined either way
-  EXPECT_EQ(exact_outlines(scene, eye, camera, kNear).size(), 1u);
-}
-
-// The union of the frames' bounds around one frame, clamped to the loop; all of them with a
-// negative reach.
-TEST(BoundsAround, UnitesTheFramesWithinReach) {
-  const std::vector<QRectF> bounds = {QRectF(0, 0, 10, 10), QRectF(), QRectF(20, 20, 5, 5),
-                                      QRectF(100, 0, 1, 1)};
-  EXPECT_EQ(bounds_around(bounds, 0, 0), QRectF(0, 0, 10, 10));
-  EXPECT_EQ(bounds_around(bounds, 1, 1), QRectF(0, 0, 25, 25));
-  EXPECT_EQ(bounds_around(bounds, 1, 0), QRectF());
-  EXPECT_EQ(bounds_around(bounds, 3, 1), QRectF(20, 0, 81, 25));
-  EXPECT_EQ(bounds_around(bounds, 3, 5), QRectF(0, 0, 101, 25));
-  EXPECT_EQ(bounds_around(bounds, 0, -1), QRectF(0, 0, 101, 25));
-}
-
 // The comparison on a projector with the scene panel shown and hidden, at 1920 x 1080 and at
 // 1366 x 768 (presentation mode scaled to the window; the short view leaves out the engine's
 // rows of controls and the readout): no text is elided, off the canvas or overlapping (the
