@@ -61,14 +61,22 @@ const comparisonView = {
     $('animation-display').value = s.animation.display;
   },
 
-  // The shown layers' outlines of `run` over its panel at (x, y), pw x ph, of fw x fh frames.
-  outlines(ctx, run, x, y, pw, ph, fw, fh, style) {
+  // The shown layers' outlines of `run` over its panel at (x, y), clipped to it: the panel
+  // shows `info.shown` ([x0, y0, camera pixels per panel pixel]) at `info.panel` ([width,
+  // height]; Session.updateComparison), and a layer may reach past what it shows.
+  outlines(ctx, run, x, y, info, style) {
+    const [x0, y0, pixel] = info.shown;
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(x, y, info.panel[0], info.panel[1]);
+    ctx.clip();
     for (const outline of run.outlines) {
-      tracePolygon(ctx, outline.points.map(([px, py]) => [x + pw / fw * px, y + ph / fh * py]));
+      tracePolygon(ctx, outline.points.map(([px, py]) => [x + (px - x0) / pixel, y + (py - y0) / pixel]));
       ctx.strokeStyle = levelColours()[outline.level];
       ctx.lineWidth = 2 * style.line;
       ctx.stroke();
     }
+    ctx.restore();
   },
 
   caption(run) {
@@ -76,23 +84,21 @@ const comparisonView = {
   },
 
   drawComparison(ctx, w, h, style) {
-    // Panels fitted side by side, frames above and heat maps below; core samples the
-    // frames at the panels' size, so each is copied to the canvas pixel for pixel.
+    // Panels fitted side by side, frames above and heat maps below; core frames them as the
+    // desktop does and samples them at the panels' size, so each is copied to the canvas
+    // pixel for pixel.
     const n = app.session.runCount();
-    const [fw, fh] = [app.session.frameWidth(), app.session.frameHeight()];
     const pad = 8;
     const label = 20 * style.scale;
     const panelW = (w - pad * (n + 1)) / n;
-    const k = Math.min(panelW / fw, (h / 2 - label - pad * 2) / fh);
-    const pw = Math.max(1, Math.floor(k * fw));
-    const ph = Math.max(1, Math.floor(k * fh));
-    const info = JSON.parse(app.session.updateComparison(pw, ph));
+    const info = JSON.parse(app.session.updateComparison(Math.floor(panelW), Math.floor(h / 2 - label - pad * 2)));
+    const [pw, ph] = info.panel;
     info.runs.forEach((run, i) => {
       const x = Math.round(pad + i * (panelW + pad) + (panelW - pw) / 2);
       const y = Math.round(pad + label);
       const exact = i === n - 1;
       this.put(ctx, 2 * i, app.session.runPixels(i), pw, ph, x, y);
-      this.outlines(ctx, run, x, y, pw, ph, fw, fh, style);
+      this.outlines(ctx, run, x, y, info, style);
       ctx.fillStyle = '#e6e6e6';
       ctx.font = style.font(14);
       ctx.fillText(exact ? 'exact projection' : this.caption(run), x, pad + 14 * style.scale, pw);
@@ -109,16 +115,13 @@ const comparisonView = {
   // The model's own engine (run 0) and the exact projection (run 1): side by side, the
   // difference heat map, or blink; the legend below the panels.
   drawModel(ctx, w, h, style, display) {
-    const [fw, fh] = [app.session.frameWidth(), app.session.frameHeight()];
     const pad = 8;
     const label = 20 * style.scale;
     const legend = 110 * style.scale;  // the levels' key below two panels
     const n = display === 'side-by-side' ? 2 : 1;
     const panelW = (w - pad * (n + 1)) / n;
-    const k = Math.min(panelW / fw, (h - legend - label - pad * 2) / fh);
-    const pw = Math.max(1, Math.floor(k * fw));
-    const ph = Math.max(1, Math.floor(k * fh));
-    const info = JSON.parse(app.session.updateComparison(pw, ph));
+    const info = JSON.parse(app.session.updateComparison(Math.floor(panelW), Math.floor(h - legend - label - pad * 2)));
+    const [pw, ph] = info.panel;
     const [engine, exact] = info.runs;
     const y = Math.round(pad + label);
     const at = (i) => Math.round(pad + i * (panelW + pad) + (panelW - pw) / 2);
@@ -127,7 +130,7 @@ const comparisonView = {
     let title;
     if (display === 'side-by-side') {
       this.put(ctx, 0, app.session.runPixels(0), pw, ph, at(0), y);
-      this.outlines(ctx, engine, at(0), y, pw, ph, fw, fh, style);
+      this.outlines(ctx, engine, at(0), y, info, style);
       this.put(ctx, 2, app.session.runPixels(1), pw, ph, at(1), y);
       ctx.fillText(this.caption(engine), at(0), pad + 14 * style.scale, pw);
       ctx.fillText('exact projection', at(1), pad + 14 * style.scale, pw);
@@ -140,7 +143,7 @@ const comparisonView = {
       const phase = Math.floor(performance.now() / kBlinkMs) % 2;
       if (phase === 0) {
         this.put(ctx, 0, app.session.runPixels(0), pw, ph, at(0), y);
-        this.outlines(ctx, engine, at(0), y, pw, ph, fw, fh, style);
+        this.outlines(ctx, engine, at(0), y, info, style);
       } else {
         this.put(ctx, 2, app.session.runPixels(1), pw, ph, at(0), y);
       }

@@ -58,6 +58,18 @@ DisplaySampling region_sampling(int frame_width, int frame_height, double x0, do
           region_indices(frame_height, y0, pixel, out_height)};
 }
 
+PanelView fit_panel_view(const BoundingBox& frame, int cell_width, int cell_height) {
+  const double fw = frame.x_max - frame.x_min, fh = frame.y_max - frame.y_min;
+  const double k = std::min(cell_width / fw, cell_height / fh);
+  PanelView view;
+  view.width = std::clamp(static_cast<int>(std::floor(k * fw)), 1, std::max(1, cell_width));
+  view.height = std::clamp(static_cast<int>(std::floor(k * fh)), 1, std::max(1, cell_height));
+  view.pixel = std::max(fw / view.width, fh / view.height);
+  view.x0 = 0.5 * (frame.x_min + frame.x_max - view.pixel * view.width);
+  view.y0 = 0.5 * (frame.y_min + frame.y_max - view.pixel * view.height);
+  return view;
+}
+
 void shift_sampling(DisplaySampling& sampling, int offset_x, int offset_y, int width, int height) {
   const auto shift = [](std::vector<int>& indices, int offset, int size) {
     for (int& i : indices) i = i < 0 || i - offset < 0 || i - offset >= size ? -1 : i - offset;
@@ -152,7 +164,10 @@ void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
     const Rgb8 c = magnitude_colour(static_cast<double>(d) / full_scale);
     ramp[d] = {c.r, c.g, c.b, 255};
   }
-  const auto heat = [&](int y, int x) { return ramp[channel_difference(a.at(x, y), b.at(x, y))]; };
+  // Off the frame (index -1) both show the background: no difference.
+  const auto heat = [&](int y, int x) {
+    return y < 0 || x < 0 ? ramp[0] : ramp[channel_difference(a.at(x, y), b.at(x, y))];
+  };
   sample_into(a, sampling, heat, out);
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/polygon.h"  // BoundingBox
 
 namespace oflab {
 
@@ -26,6 +27,17 @@ DisplaySampling display_sampling(int frame_width, int frame_height, int out_widt
 // pixel > 0 (frame pixels per display pixel).
 DisplaySampling region_sampling(int frame_width, int frame_height, double x0, double y0,
                                 double pixel, int out_width, int out_height);
+
+// The part `frame` (camera pixels) of a camera image shown in a panel fitted into a cell of
+// cell_width x cell_height display pixels (each >= 1): the largest panel of the frame's aspect
+// within the cell (at least 1 x 1), whose pixel (x, y) shows the camera pixel under (x0 + (x +
+// 0.5) pixel, y0 + (y + 0.5) pixel) (region_sampling), centred on the frame's centre.
+struct PanelView {
+  int width = 1, height = 1;  // the panel, display pixels
+  double x0 = 0.0, y0 = 0.0;  // its top-left corner, camera pixels
+  double pixel = 1.0;         // camera pixels per display pixel
+};
+PanelView fit_panel_view(const BoundingBox& frame, int cell_width, int cell_height);
 
 // `sampling` of a frame moved onto an image placed at (offset_x, offset_y) of it, of width x
 // height pixels (a layer's): every index less the offset, -1 where it falls outside the
@@ -47,8 +59,9 @@ int largest_difference(const Image& a, const Image& b);
 // The difference of two frames as a heat map sampled by `sampling` into `out` (opaque RGBA8):
 // per pixel the largest absolute difference of the four premultiplied channels, in grey
 // levels, coloured by the one viridis ramp (session/display/palette.h magnitude_colour) from 0
-// (dark blue) to `full_scale` and above (yellow). Preconditions: same size (throws
-// std::invalid_argument), full_scale >= 1.
+// (dark blue) to `full_scale` and above (yellow); off the frame (a sampling index of -1) the
+// colour of no difference. Preconditions: same size (throws std::invalid_argument),
+// full_scale >= 1.
 void difference_heat_map_into(const Image& a, const Image& b, int full_scale,
                               const DisplaySampling& sampling, std::vector<std::uint8_t>& out);
 

@@ -26,6 +26,7 @@
 #include "lessons/claim_kinds.h"
 #include "lessons/lesson_player.h"
 #include "player/animation_sources.h"
+#include "scene/scene_animator.h"  // SceneSettings: the exact render's near plane
 #include "shown_runs.h"
 #include "state/state_fields.h"
 #include "state/window_state_file.h"
@@ -423,10 +424,26 @@ void WebSession::advance_exact_to(int frame) {
   while (exact_->frame() < frame) exact_last_ = exact_->advance();
 }
 
-void WebSession::sample_panels(const std::vector<const Animator*>& animators, int width,
-                               int height) {
+PanelView WebSession::panel_view(const Animator& exact, int cell_width, int cell_height) {
+  const WindowState& s = lab_.values();
+  if (bounds_epoch_ != epoch_) {  // what the source shows at each frame, once per state
+    frame_bounds_ =
+        source_frame_bounds(s.source, lab_.panel(), &exact.scene(), SceneSettings{}.near);
+    bounds_epoch_ = epoch_;
+  }
+  const std::optional<BoundingBox> content =
+      framed_content(frame_bounds_, exact.frame(), frames_content(s.framing, s.presentation));
+  const double aspect = hugging_aspect(double(cell_width) / cell_height, content, s.zoom);
+  const Camera& camera = exact.camera();
+  return fit_panel_view(panel_frame(content, camera.width, camera.height, aspect, s.zoom),
+                        cell_width, cell_height);
+}
+
+void WebSession::sample_panels(const std::vector<const Animator*>& animators,
+                               const PanelView& view) {
   const Image& exact = animators.back()->image();
-  const DisplaySampling sampling = display_sampling(exact.width(), exact.height(), width, height);
+  const DisplaySampling sampling = region_sampling(exact.width(), exact.height(), view.x0, view.y0,
+                                                   view.pixel, view.width, view.height);
   panels_.resize(animators.size());
   for (std::size_t k = 0; k < animators.size(); ++k) {
     WebPanel& panel = panels_[k];
@@ -444,7 +461,7 @@ void WebSession::sample_panels(const std::vector<const Animator*>& animators, in
     panel.psnr_db = psnr_db(image, exact);
   }
   sampled_frame_ = animators.back()->frame();
-  sampled_size_ = {width, height};
+  sampled_view_ = view;
   sampled_epoch_ = epoch_;
 }
 
@@ -462,23 +479,26 @@ int WebSession::frame_height() {
   return animators.empty() ? 0 : animators.back()->camera().height;
 }
 
-std::string WebSession::update_comparison(int panel_width, int panel_height) {
-  panel_width = std::clamp(panel_width, 1, kMaxPanelSide);
-  panel_height = std::clamp(panel_height, 1, kMaxPanelSide);
+std::string WebSession::update_comparison(int cell_width, int cell_height) {
+  cell_width = std::clamp(cell_width, 1, kMaxPanelSide);
+  cell_height = std::clamp(cell_height, 1, kMaxPanelSide);
   const std::vector<const Animator*> animators = shown_animators();
   std::vector<ShownRun> shown = shown_runs(lab_, &comparison_problem_);
   if (!animators.empty() && (sampled_frame_ != animators.back()->frame() ||
-                             sampled_size_ != glm::ivec2(panel_width, panel_height) ||
+                             sampled_cell_ != glm::ivec2(cell_width, cell_height) ||
                              sampled_epoch_ != epoch_ || panels_.size() != animators.size())) {
-    sample_panels(animators, panel_width, panel_height);
+    sample_panels(animators, panel_view(*animators.back(), cell_width, cell_height));
+    sampled_cell_ = {cell_width, cell_height};
   }
+  const PanelView& view = sampled_view_;
   json out;
   out["problem"] = comparison_problem_;
   out["frame"] = frame();
   out["frames"] = frame_count();
   out["width"] = animators.empty() ? 0 : animators.back()->camera().width;
   out["height"] = animators.empty() ? 0 : animators.back()->camera().height;
-  out["panel"] = {panel_width, panel_height};
+  out["panel"] = {view.width, view.height};
+  out["shown"] = {view.x0, view.y0, view.pixel};
   out["heat_full_scale"] = kHeatFullScale;
   out["warp"] = warp_area_name(lab_.values().settings.warp_area);
   json runs = json::array();

@@ -24,6 +24,7 @@
 #include "display/world_geometry.h"
 #include "engine/animator.h"
 #include "flow/plane_scene.h"
+#include "frame_pixels.h"
 #include "lessons/lessons.h"
 #include "plane_image.h"
 #include "player/engine_claims.h"
@@ -134,17 +135,17 @@ class WebSession {
 
   // The animation view's runs (web/shown_runs.h shown_runs, by the state's display: the
   // compared runs in the comparison layout, else the model's own engine) and the exact
-  // projection, at the frame shown.
-  // "" or why the source cannot be played.
+  // projection, at the frame shown: "" or why the source cannot be played.
   std::string comparison_problem();
-  // Brings the runs to the frame shown (the lab's runs: forward frame by frame, backward by
-  // a restart; they stand still while the page shows another view) and samples their frames
-  // and heat maps at panel_width x panel_height display pixels (run_pixels, run_heat).
-  // Returns per panel: policy, level of the frame (or the drawn layers per level of a
-  // scene), measured error, largest error so far, level shares over frames 1 .. now, the
-  // largest difference from the exact frame and the PSNR against it, the outlines of the
-  // shown layers (frame pixels). Panel sizes are clamped to 1 .. 4096.
-  std::string update_comparison(int panel_width, int panel_height);
+  // Brings the runs to the frame shown (the lab's runs: forward frame by frame, backward by a
+  // restart; they stand still while another view shows) and samples their frames and heat
+  // maps (run_pixels, run_heat) framed by the desktop's rule (display/panel_framing.h) in a
+  // cell of cell_width x cell_height display pixels (each clamped to 1 .. 4096). Returns
+  // "panel": [width, height], "shown": [x0, y0, pixel] (PanelView), and per panel: policy,
+  // level (a scene's drawn layers per level), measured error, largest error so far, level
+  // shares over frames 1 .. now, the largest difference from the exact frame and the PSNR
+  // against it (whole frames), the shown layers' outlines (camera pixels).
+  std::string update_comparison(int cell_width, int cell_height);
   // The analysis charts' history, by the desktop's rule: while the state's display is the
   // comparison layout ("comparing": true), per compared run; otherwise the model's one engine
   // (its policy, or the source's kind when the kind has no reuse policy), with "thresholds"
@@ -185,8 +186,10 @@ class WebSession {
   std::vector<const Animator*> find_shown_animators();
   void rebuild_exact();
   void advance_exact_to(int frame);
-  // Per panel of the frame reached: the pixels at the panel size, heat map, PSNR.
-  void sample_panels(const std::vector<const Animator*>& animators, int width, int height);
+  // Per panel of the frame reached: the pixels of `view`, heat map, PSNR.
+  void sample_panels(const std::vector<const Animator*>& animators, const PanelView& view);
+  // The framed part of the camera image of the frame `exact` is at, fitted into the cell.
+  PanelView panel_view(const Animator& exact, int cell_width, int cell_height);
   const PlaneWorldLoop& world_loop();  // world_loop_, rebuilt when epoch_ moved
 
   Lab lab_;
@@ -198,8 +201,7 @@ class WebSession {
   const Animator* exact_shown_ = nullptr;
   const AnimationFrame* exact_record_ = nullptr;
   int epoch_ = 0;  // counts the calls that may change the state (set_state, lessons, ...)
-  int memo_epoch_ = -1;
-  int memo_frame_ = -1;
+  int memo_epoch_ = -1, memo_frame_ = -1;
   std::vector<const Animator*> memo_;  // shown_animators() of memo_frame_ at memo_epoch_
   std::vector<WebPanel> panels_;       // compared runs (or the source's), then the exact one
   PlaneWorldLoop world_loop_;          // the world view's loop at world_epoch_
@@ -207,10 +209,13 @@ class WebSession {
   SceneWorldLoop scene_world_loop_;  // a scene source's walk at scene_world_epoch_
   int scene_world_epoch_ = -1;
   std::string comparison_problem_;
-  int sampled_frame_ = -1;       // the frame whose pixels the panels hold, at sampled_size_
+  int sampled_frame_ = -1;       // the frame whose pixels the panels hold, at sampled_cell_
   PlaneImageCache plane_image_;  // exact_plane_image()
-  glm::ivec2 sampled_size_{0, 0};
-  int sampled_epoch_ = -1;  // the state (epoch_) whose runs the panels hold
+  glm::ivec2 sampled_cell_{0, 0};
+  PanelView sampled_view_;    // the view the panels hold
+  int sampled_epoch_ = -1;    // the state (epoch_) whose runs the panels hold
+  FrameBounds frame_bounds_;  // what the source shows at each frame at bounds_epoch_
+  int bounds_epoch_ = -1;
 };
 
 }  // namespace oflab

@@ -53,19 +53,9 @@ QStringList broken_at_spaces(const QStringList& lines, const QFontMetrics& metri
 
 QRectF AnimationView::fit_content() {
   if (fit_known_) return fit_;
-  frame_bounds_.clear();
-  const AnimationSourceKind& kind = model_->source_kind();
-  try {
-    if (kind.plane_script) {
-      frame_bounds_ =
-          script_frame_bounds(kind.plane_script(model_->source(), model_->player().panel()), kNear);
-    } else if (kind.viewer_script && model_->animator()) {
-      frame_bounds_ = scene_frame_bounds(model_->animator()->scene(),
-                                         kind.viewer_script(model_->source()), kNear);
-    }
-  } catch (const std::exception&) {  // the model refuses such sources with a message
-    frame_bounds_.clear();
-  }
+  const Animator* animator = model_->animator();
+  frame_bounds_ = source_frame_bounds(model_->source(), model_->player().panel(),
+                                      animator ? &animator->scene() : nullptr, kNear);
   fit_ = frame_rect(bounds_around(frame_bounds_, 0, -1));
   fit_known_ = true;
   return fit_;
@@ -74,9 +64,7 @@ QRectF AnimationView::fit_content() {
 QRectF AnimationView::framed_content() {
   const QRectF loop = fit_content();
   if (!window_->frames_content() || !model_->animator()) return loop;
-  const QRectF around =
-      frame_rect(bounds_around(frame_bounds_, model_->animator()->frame(), kFramingFrames));
-  return around.isEmpty() ? loop : around;
+  return frame_rect(oflab::framed_content(frame_bounds_, model_->animator()->frame(), true));
 }
 
 std::vector<QRectF> AnimationView::drawn_content_rects() {

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "scene/view_culling.h"
+#include "state/window_state.h"  // kFramingFrames
 
 namespace oflab {
 namespace {
@@ -55,6 +56,14 @@ std::optional<BoundingBox> bounds_around(const FrameBounds& bounds, int frame, i
     include(around, {b->x_max, b->y_max});
   }
   return around;
+}
+
+std::optional<BoundingBox> framed_content(const FrameBounds& bounds, int frame, bool around_frame) {
+  if (around_frame) {
+    const std::optional<BoundingBox> around = bounds_around(bounds, frame, kFramingFrames);
+    if (around) return around;
+  }
+  return bounds_around(bounds, 0, -1);
 }
 
 BoundingBox panel_frame(const std::optional<BoundingBox>& content, double camera_width,

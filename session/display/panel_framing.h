@@ -33,6 +33,11 @@ FrameBounds scene_frame_bounds(const Scene& scene, const ViewerScript& walk, dou
 // None when none of those frames sees anything. Precondition: reach is -1 or >= 0.
 std::optional<BoundingBox> bounds_around(const FrameBounds& bounds, int frame, int reach);
 
+// What the panels frame (session/state/window_state.h PanelFraming): the bounds over the
+// whole loop, or with `around_frame` those of the frames around `frame` (kFramingFrames
+// either side) where they see anything. None when nothing is ever seen.
+std::optional<BoundingBox> framed_content(const FrameBounds& bounds, int frame, bool around_frame);
+
 // Fraction of the content's size added on every side when fitting it.
 constexpr double kFitMargin = 0.02;
 

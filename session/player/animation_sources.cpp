@@ -145,4 +145,18 @@ std::string animation_source_kind_names() {
   return names;
 }
 
+FrameBounds source_frame_bounds(const SourceChoice& choice, const PlanePanel& panel,
+                                const Scene* scene, double near) {
+  const AnimationSourceKind* kind = find_animation_source_kind(choice.kind);
+  try {
+    if (kind && kind->plane_script)
+      return script_frame_bounds(kind->plane_script(choice, panel), near);
+    if (kind && kind->viewer_script && scene) {
+      return scene_frame_bounds(*scene, kind->viewer_script(choice), near);
+    }
+  } catch (const std::exception&) {  // the lab refuses such sources with a message
+  }
+  return {};
+}
+
 }  // namespace oflab

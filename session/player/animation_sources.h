@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "display/panel_framing.h"
 #include "engine/animator.h"
 #include "scene/viewer_script.h"
 #include "state/source_choice.h"
@@ -74,5 +75,14 @@ std::string describe_source(const SourceChoice& choice);
 
 // The names of the kinds, comma separated, for error messages.
 std::string animation_source_kind_names();
+
+// What `choice` shows at each frame, as the panels' framing takes it
+// (display/panel_framing.h): a plane kind's image bounds along its script (`panel`: the
+// scene panel's plane, for the kinds that play it), a scene kind's exact outlines of `scene`
+// (the scene its engines play; null: none) along its viewer script, with the near plane
+// `near`. Empty for an unknown kind, a kind with neither, or a source that cannot be read
+// (the lab refuses it with a message).
+FrameBounds source_frame_bounds(const SourceChoice& choice, const PlanePanel& panel,
+                                const Scene* scene, double near);
 
 }  // namespace oflab

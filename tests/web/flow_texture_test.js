@@ -16,6 +16,14 @@
 //   flattened over the world's image grey: against the CLI's frame sampled by that rule, equal
 //   bytes where the CLI's pixel is opaque or empty, within 2 levels on the plane's edge; the
 //   world view's texture holds those bytes; the CLI's frame 0 differs (negative control).
+// - The animation view's panels are framed as the desktop frames them
+//   (session/display/panel_framing.h): the lesson Occlusion's framing of what is drawn around
+//   the frame shown. The exact panel is the CLI's exact frame of the scene sampled over the
+//   part the page says it shows (Session.updateComparison's "shown": the camera pixel under
+//   x0 + (x + 0.5) pixel), and what it draws (pixels not the background) fills at least a
+//   quarter of it: the lesson's screen claim, measured on the page. Controls: the loop's
+//   framing fills less, the zoom enlarges the picture, and the CLI's frame sampled whole is
+//   another picture.
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
@@ -24,11 +32,12 @@ const { decodePng } = require('./png');
 
 const kBackground = [0x11, 0x13, 0x15];  // the page's canvas background, #111315
 
-// `oflab-cli animate --mode rerender`'s frames 0 .. last of `script` as decoded PNGs, or { error }.
-function cliExactFrames(cli, script, last) {
+// `oflab-cli animate --mode rerender`'s frames 0 .. last of `script` (or of the source the
+// arguments `source` name) as decoded PNGs, or { error }.
+function cliExactFrames(cli, script, last, source = ['--script', script]) {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'oflab-web-flowtex-'));
   try {
-    const r = spawnSync(cli, ['animate', '--mode', 'rerender', '--script', script, '--out', path.join(dir, 'run'),
+    const r = spawnSync(cli, ['animate', '--mode', 'rerender', ...source, '--out', path.join(dir, 'run'),
       '--frames-png', '--frames', String(last + 1), '--quiet', '--no-warm-up', '--repeat-timing', '1'], { encoding: 'utf8' });
     if (r.status !== 0) return { error: r.stderr.trim() };
     const read = (k) => {
@@ -147,4 +156,61 @@ async function testWorldFrame({ browser, open, evaluate, check, drawnMarker, cli
   check('NegativeControl_TheCliFrame0IsNotTheImagePlanesFrame20', other.solidDiffering > 1000, JSON.stringify(other));
 }
 
-module.exports = { testFlowTexture, testWorldFrame };
+// The CLI's frame `png` sampled as the page's panel shows it: display pixel (x, y) shows the
+// frame pixel under (x0 + (x + 0.5) pixel, y0 + (y + 0.5) pixel), nothing (alpha 0) outside
+// the frame (frame_pixels.h region_sampling).
+function regionSampled(png, [width, height], [x0, y0, pixel]) {
+  const data = Buffer.alloc(width * height * 4);
+  for (let y = 0; y < height; ++y) {
+    const row = Math.floor(y0 + (y + 0.5) * pixel);
+    for (let x = 0; x < width; ++x) {
+      const column = Math.floor(x0 + (x + 0.5) * pixel);
+      if (row < 0 || row >= png.height || column < 0 || column >= png.width) continue;
+      for (let c = 0; c < 4; ++c) data[(y * width + x) * 4 + c] = png.data[(row * png.width + column) * 4 + c];
+    }
+  }
+  return { width, height, data };
+}
+
+async function testPanelFraming({ browser, open, evaluate, check, drawnMarker, cli }) {
+  await open(browser, '?view=animation', drawnMarker);
+  const got = JSON.parse(await evaluate(browser, `(() => {
+    const take = (framing, zoom) => {
+      editState((s) => {
+        s.animation.source = { kind: 'scene', name: 'five-semi-occluded', viewer: 'translate' };
+        s.animation.framing = framing;
+        s.animation.zoom = zoom;
+        s.playing = false;
+        s.frame = 10;
+      });
+      const info = JSON.parse(app.session.updateComparison(480, 360));
+      const px = app.session.runPixels(info.runs.length - 1);
+      let drawn = 0;
+      for (let i = 0; i < px.length; i += 4) drawn += px[i] !== 24 || px[i + 1] !== 27 || px[i + 2] !== 31 ? 1 : 0;
+      let s = '';
+      for (let i = 0; i < px.length; i += 8192) s += String.fromCharCode(...px.subarray(i, i + 8192));
+      return { frame: info.frame, panel: info.panel, shown: info.shown, fill: drawn / (px.length / 4), b64: btoa(s) };
+    };
+    return JSON.stringify({ content: take('content', 1), loop: take('loop', 1), zoomed: take('content', 2) });
+  })()`));
+  const frames = cliExactFrames(cli, null, 10, ['--scene', 'five-semi-occluded', '--script', 'translate']);
+  if (frames.error) {
+    check('TheFramedExactPanelIsTheCliFrameOverTheShownPart', false, frames.error);
+    return;
+  }
+  const panelBackground = [24, 27, 31];
+  const { content, loop, zoomed } = got;
+  const page = Buffer.from(content.b64, 'base64');
+  const same = compareOverBackground(regionSampled(frames.last, content.panel, content.shown), page, panelBackground);
+  check('TheFramedExactPanelIsTheCliFrameOverTheShownPart', content.frame === 10 && !same.sizeMismatch &&
+    same.solidDiffering === 0 && same.edgeLargest <= 2,
+  `panel ${content.panel}, shown from (${content.shown[0].toFixed(1)}, ${content.shown[1].toFixed(1)}) at ${content.shown[2].toFixed(3)} camera pixels each; ${JSON.stringify(same)}`);
+  check('OcclusionsPanelsFillAQuarterFramedOnWhatIsDrawn', content.fill >= 0.25 && loop.fill < content.fill &&
+    zoomed.shown[2] < content.shown[2],
+  `drawn ${(100 * content.fill).toFixed(1)} % of the panel framed on content, ${(100 * loop.fill).toFixed(1)} % on the loop; ` +
+    `zoom 2: ${zoomed.shown[2].toFixed(3)} camera pixels a panel pixel against ${content.shown[2].toFixed(3)}`);
+  const whole = compareOverBackground(nearestSampled(frames.last, content.panel[0], content.panel[1]), page, panelBackground);
+  check('NegativeControl_TheWholeFrameSampledIsAnotherPicture', whole.solidDiffering > 1000, JSON.stringify(whole));
+}
+
+module.exports = { testFlowTexture, testWorldFrame, testPanelFraming };

@@ -137,6 +137,23 @@ TEST(FramePixels, HeatMapColoursEachPixelByItsDifference) {
   }
   EXPECT_THROW(difference_heat_map_into(a, b, 0, display_sampling(16, 8, 16, 8), out),
                std::invalid_argument);
+  // A framed panel reaching past the frame (region_sampling's -1): there both frames show the
+  // background, the colour of no difference; inside, the pixels as above.
+  std::vector<std::uint8_t> framed;
+  difference_heat_map_into(a, b, 64, region_sampling(16, 8, -2.0, -1.0, 1.0, 20, 10), framed);
+  const Rgb8 none = magnitude_colour(0.0);
+  for (int y = 0; y < 10; ++y) {
+    for (int x = 0; x < 20; ++x) {
+      const bool off = x < 2 || x >= 18 || y < 1 || y >= 9;
+      const std::size_t i = 4 * (std::size_t(y) * 20 + x);
+      if (off) {
+        EXPECT_EQ(framed[i], none.r) << x << "," << y;
+        EXPECT_EQ(framed[i + 2], none.b) << x << "," << y;
+      } else {
+        EXPECT_EQ(framed[i], out[4 * ((y - 1) * 16 + x - 2)]) << x << "," << y;
+      }
+    }
+  }
 }
 
 // The one ramp of every front-end (session/display/palette.h), as the page's heat maps use it.

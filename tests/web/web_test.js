@@ -46,7 +46,7 @@ const path = require('path');
 const { decodePng } = require('./png');
 const { testSlicesView, testSceneWorld, testWorldLabels, testAnalysisCharts, testEngineCharts, testDisplays } = require('./views_test');
 const { testRunCsv, testVideo } = require('./exports_test');
-const { testFlowTexture, testWorldFrame } = require('./flow_texture_test');
+const { testFlowTexture, testWorldFrame, testPanelFraming } = require('./flow_texture_test');
 
 const root = path.resolve(__dirname, '..', '..');
 const args = process.argv.slice(2);
@@ -918,6 +918,7 @@ async function bench(browser) {
       await testVideo(helpers);
       await testFlowTexture(helpers);
       await testWorldFrame(helpers);
+      await testPanelFraming(helpers);
       await testControls(browser);
       await testExplorer(browser);
       await testLessonStates(browser);
