@@ -303,9 +303,12 @@ function fillScriptPicker() {
 // source=KIND:NAME:VIEWER (the animation's source, e.g. scene:street:walk), frame=N,
 // lesson=NAME, step=K, presentation, explorer (the basis view's explorer), display=NAME (the
 // animation's display: comparison makes the analysis view chart the compared policies);
-// applied over the default state (the screenshot tests use them).
+// applied over the default state (the screenshot tests use them). With a lesson, only
+// presentation applies besides step: it is the teacher's look, which the lesson's steps keep
+// (as `oflab --lesson NAME --presentation`).
 function applyUrlOptions(params) {
   if (params.has('lesson')) {
+    if (params.has('presentation')) editState((s) => { s.presentation = true; }, 'the page address');
     startLesson(params.get('lesson'));
     if (params.has('step')) showLessonStep(Number(params.get('step')));
     return;

@@ -709,6 +709,17 @@ async function testLessonStates(browser) {
   const page = JSON.parse(await evaluate(browser, "(() => { app.session.goToLessonStep('flow-of-a-plane', 0); return app.session.stateJson(); })()"));
   nudged.frame += 1;
   check('NegativeControl_AnotherFrameIsADifference', JSON.stringify(page) !== JSON.stringify(nudged));
+  // A lesson opened in presentation mode from the address keeps the teacher's look through
+  // its steps (as `oflab --lesson NAME --presentation`); without it the look is the normal one.
+  const look = async (query) => {
+    await open(browser, query, drawnMarker);
+    return JSON.parse(await evaluate(browser, `(() => { const first = app.state.presentation && document.body.classList.contains('presentation');
+      showLessonStep(1); return JSON.stringify([first, app.state.presentation, app.lessonStep]); })()`));
+  };
+  const presenting = await look('?lesson=occlusion&presentation');
+  const plain = await look('?lesson=occlusion');
+  check('ALessonOpenedInPresentationModeKeepsItThroughItsSteps', presenting[0] === true && presenting[1] === true &&
+    presenting[2] === 1 && plain[0] === false && plain[1] === false, `${presenting} against ${plain}`);
 }
 
 // --- Claims ------------------------------------------------------------------------------
