@@ -238,7 +238,7 @@ function checkClaims() {
   const claims = JSON.parse(app.session.checkClaimsJson());
   const rows = claims.map((c) => {
     const bounds = [c.at_least !== null ? `\u2265 ${c.at_least}` : '', c.at_most !== null ? `\u2264 ${c.at_most}` : ''].filter(Boolean).join(', ');
-    if (c.source !== 'engine') {
+    if (c.holds === undefined) {
       return `<tr><td>${escapeHtml(c.says)}</td><td>${escapeHtml(c.kind)} ${bounds}</td><td colspan="2" class="unit">on the screen: oflab --check-lesson</td></tr>`;
     }
     const measured = c.measured === null ? 'n/a' : Number(c.measured.toPrecision(4)).toString();

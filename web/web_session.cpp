@@ -160,8 +160,11 @@ std::string WebSession::check_claims_json() {
                  {"source", engine ? "engine" : "screen"},
                  {"at_least", bound(claim.at_least, -1e300)},
                  {"at_most", bound(claim.at_most, 1e300)}};
-    if (engine) {
-      const double measured = measure_engine_claim(lab_, claim);
+    // One screen kind the page measures itself (page_panel_fill); the others are the desktop's.
+    const double measured = engine                        ? measure_engine_claim(lab_, claim)
+                            : claim.claim == "panel_fill" ? page_panel_fill()
+                                                          : std::nan("");
+    if (engine || !std::isnan(measured)) {
       const bool holds = measured >= claim.at_least && measured <= claim.at_most;
       item["measured"] = std::isnan(measured) ? json() : json(measured);
       item["holds"] = holds;
@@ -170,6 +173,22 @@ std::string WebSession::check_claims_json() {
     out.push_back(item);
   }
   return out.dump();
+}
+
+double WebSession::page_panel_fill() {
+  const WindowState& s = lab_.values();
+  if (s.view != "animation" || s.cause_and_effect || sampled_cell_.x < 1) return std::nan("");
+  // The panels as the page draws them now: brought to the state and frame shown in the cell
+  // they were last drawn in.
+  update_comparison(sampled_cell_.x, sampled_cell_.y);
+  const std::vector<const Animator*> animators = shown_animators();
+  if (animators.empty()) return std::nan("");
+  const Animator& exact = *animators.back();
+  const PanelView& v = sampled_view_;
+  const BoundingBox shown{v.x0, v.y0, v.x0 + v.pixel * v.width, v.y0 + v.pixel * v.height};
+  const double near = SceneSettings{}.near;
+  return 100.0 *
+         outline_fill(exact_outlines(exact.scene(), exact.view(), exact.camera(), near), shown);
 }
 
 std::string WebSession::state_schema_json() { return state_schema().dump(); }

@@ -87,8 +87,10 @@ class WebSession {
   // The claims of the lesson part shown (the state's lesson and lesson_step; [] without a
   // lesson), each measured on the lab now when its kind is the engine's (session/lessons/
   // claim_kinds.h): [{"says", "kind", "source": "engine"|"screen", "measured" (engine
-  // kinds; null for NaN), "at_least", "at_most" (null when open), "holds" (engine kinds),
-  // "line": player/engine_claims.h describe(), as `oflab-cli lesson check` prints it}].
+  // kinds and the page's panel_fill; null for NaN), "at_least", "at_most" (null when open),
+  // "holds" (where measured), "line": player/engine_claims.h describe(), as `oflab-cli lesson
+  // check` prints it}]. panel_fill is measured on the page with the animation view alone in
+  // front (page_panel_fill); the other screen kinds by `oflab --check-lesson`.
   std::string check_claims_json();
 
   // The window state's field table (session/state/state_fields.h state_schema) as JSON:
@@ -188,6 +190,11 @@ class WebSession {
   void advance_exact_to(int frame);
   // Per panel of the frame reached: the pixels of `view`, heat map, PSNR.
   void sample_panels(const std::vector<const Animator*>& animators, const PanelView& view);
+  // The panel_fill claim of the animation view alone in front, measured on the page: the
+  // share (percent) of its exact panel, as drawn now in the cell it was last drawn in, inside
+  // the exact outlines (display/panel_framing.h outline_fill, as the desktop measures it);
+  // NaN when another view shows or the panels were never drawn (left to the desktop).
+  double page_panel_fill();
   // The framed part of the camera image of the frame `exact` is at, fitted into the cell.
   PanelView panel_view(const Animator& exact, int cell_width, int cell_height);
   const PlaneWorldLoop& world_loop();  // world_loop_, rebuilt when epoch_ moved

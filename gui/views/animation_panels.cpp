@@ -87,30 +87,11 @@ std::vector<QRectF> AnimationView::drawn_content_rects() {
 double AnimationView::content_fill() {
   const Animator* animator = model_->animator();
   if (!animator || shown_frame_.isEmpty()) return 0.0;
-  // The exact outlines of the frame shown (the plane's image, whatever its texture's alpha),
-  // rasterised over the shown frame at kFillGrid cells across.
-  constexpr int kFillGrid = 400;
-  const QSize grid(kFillGrid,
-                   std::max(1, int(kFillGrid * shown_frame_.height() / shown_frame_.width())));
-  QImage mask(grid, QImage::Format_Grayscale8);
-  mask.fill(0);
-  QPainter painter(&mask);
-  painter.setPen(Qt::NoPen);
-  painter.setBrush(Qt::white);
-  painter.setTransform(frame_to_panel(shown_frame_, QRectF(QPointF(0, 0), QSizeF(grid))));
-  for (const std::vector<Vec2>& outline :
-       exact_outlines(animator->scene(), animator->view(), animator->camera(), kNear)) {
-    QPolygonF polygon;
-    for (const Vec2& p : outline) polygon << QPointF(p.x, p.y);
-    painter.drawPolygon(polygon);
-  }
-  painter.end();
-  std::size_t covered = 0;
-  for (int y = 0; y < grid.height(); ++y) {
-    const uchar* row = mask.constScanLine(y);
-    for (int x = 0; x < grid.width(); ++x) covered += row[x] > 127;
-  }
-  return double(covered) / (double(grid.width()) * grid.height());
+  // The exact outlines of the frame shown (the plane's image, whatever its texture's alpha)
+  // over the shown frame (session/display/panel_framing.h, as the page measures it).
+  return outline_fill(
+      exact_outlines(animator->scene(), animator->view(), animator->camera(), kNear),
+      *frame_box(shown_frame_));
 }
 
 AnimationView::CaptionLines AnimationView::wrap_captions(std::vector<PanelContent>& contents,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "image/scan_conversion.h"
 #include "scene/view_culling.h"
 #include "state/window_state.h"  // kFramingFrames
 
@@ -89,6 +90,31 @@ double hugging_aspect(double cell_aspect, const std::optional<BoundingBox>& cont
   const double w = content->x_max - content->x_min, h = content->y_max - content->y_min;
   if (!(w > 0.0 && h > 0.0)) return cell_aspect;
   return std::clamp(w / h, 1.0 / kHugAspect, kHugAspect);
+}
+
+double outline_fill(const std::vector<std::vector<Vec2>>& outlines, const BoundingBox& shown) {
+  const double w = shown.x_max - shown.x_min, h = shown.y_max - shown.y_min;
+  if (!(w > 0.0 && h > 0.0)) return 0.0;
+  const int columns = kFillGrid;
+  const int rows = std::max(1, static_cast<int>(kFillGrid * h / w));
+  const double scale = columns / w;  // cells per camera pixel, the same both ways
+  std::vector<char> covered(static_cast<std::size_t>(columns) * rows, 0);
+  for (const std::vector<Vec2>& outline : outlines) {
+    std::vector<Vec2> cells;
+    for (const Vec2& p : outline)
+      cells.push_back({(p.x - shown.x_min) * scale, (p.y - shown.y_min) * scale});
+    const ConvexPolygon polygon = make_polygon_unchecked(std::move(cells));
+    if (polygon.empty()) continue;
+    ScanConverter scan(polygon, columns, rows);
+    PixelSpan span;
+    while (scan.next(span)) {
+      char* row = covered.data() + static_cast<std::size_t>(span.y) * columns;
+      for (int x = span.x_begin; x < span.x_end; ++x) row[x] = 1;
+    }
+  }
+  std::size_t count = 0;
+  for (const char c : covered) count += c;
+  return static_cast<double>(count) / static_cast<double>(covered.size());
 }
 
 std::vector<std::vector<Vec2>> exact_outlines(const Scene& scene, const ViewerPose& view,

@@ -56,6 +56,14 @@ BoundingBox panel_frame(const std::optional<BoundingBox>& content, double camera
 constexpr double kHugAspect = 4.0;
 double hugging_aspect(double cell_aspect, const std::optional<BoundingBox>& content, double zoom);
 
+// The share (0..1) of `shown` (a part of the camera image, non-empty) covered by the union
+// of the convex `outlines` (camera pixels): over a grid of kFillGrid cells across `shown`
+// (and as many down as its aspect gives, at least 1), the cells whose centres lie inside an
+// outline (core's scan conversion), over all cells. What the panel_fill claim measures of the
+// animation view's exact panel, on the desktop and on the page.
+constexpr int kFillGrid = 400;
+double outline_fill(const std::vector<std::vector<Vec2>>& outlines, const BoundingBox& shown);
+
 // The exact image outlines (camera pixels) of the polygons of `scene` seen from `view` with
 // `camera`: each polygon's outline clipped to the near plane `near` and the image border,
 // skipping edge-on polygons, back-facing one-sided ones (a two-sided sheet, the plane of the

@@ -211,6 +211,19 @@ async function testPanelFraming({ browser, open, evaluate, check, drawnMarker, c
     `zoom 2: ${zoomed.shown[2].toFixed(3)} camera pixels a panel pixel against ${content.shown[2].toFixed(3)}`);
   const whole = compareOverBackground(nearestSampled(frames.last, content.panel[0], content.panel[1]), page, panelBackground);
   check('NegativeControl_TheWholeFrameSampledIsAnotherPicture', whole.solidDiffering > 1000, JSON.stringify(whole));
+  // The lesson's own claim, measured by the page's Check on the panels as drawn (the exact
+  // outlines' share of the exact panel, as the desktop measures it); with the flow view in
+  // front it is left to the desktop (control).
+  await open(browser, '?lesson=occlusion', drawnMarker);
+  const claims = JSON.parse(await evaluate(browser, `(() => {
+    const fill = () => JSON.parse(app.session.checkClaimsJson()).find((c) => c.kind === 'panel_fill');
+    const animation = fill();
+    editState((s) => { s.view = 'flow'; });
+    return JSON.stringify({ animation, flow: fill() });
+  })()`));
+  const a = claims.animation || {};
+  check('ThePageMeasuresOcclusionsPanelFillClaim', a.holds === true && a.measured >= 25 && claims.flow && claims.flow.holds === undefined,
+    `${a.measured && a.measured.toFixed(1)} % (at least ${a.at_least}); ${a.line}; flow view in front: ${JSON.stringify(claims.flow)}`);
 }
 
 module.exports = { testFlowTexture, testWorldFrame, testPanelFraming };

@@ -65,6 +65,22 @@ TEST(PanelFrame, TheAspectHugsTheContentWithinFourOfASquare) {
   EXPECT_DOUBLE_EQ(hugging_aspect(2.0, BoundingBox{0, 0, 30, 0}, 1.0), 2.0);  // a line
 }
 
+// The share of the shown part inside the outlines, against areas worked by hand: a square
+// over the left half, a right triangle over half of the rest (within a row of cells on its
+// slanted edge), their overlap counted once; nothing outside.
+TEST(OutlineFill, IsTheShareOfTheShownPartInsideTheOutlines) {
+  const BoundingBox shown{10, 20, 110, 70};  // 100 x 50: 400 x 200 cells
+  const std::vector<Vec2> left = {{10, 20}, {60, 20}, {60, 70}, {10, 70}};
+  EXPECT_DOUBLE_EQ(outline_fill({left}, shown), 0.5);
+  const std::vector<Vec2> triangle = {{60, 20}, {110, 20}, {60, 70}};  // half of the right half
+  EXPECT_NEAR(outline_fill({triangle}, shown), 0.25, 200.0 / 80000.0);
+  EXPECT_NEAR(outline_fill({left, triangle}, shown), 0.75, 200.0 / 80000.0);
+  EXPECT_DOUBLE_EQ(outline_fill({left, left}, shown), 0.5);  // union, not sum
+  const std::vector<Vec2> outside = {{200, 200}, {300, 200}, {300, 300}};
+  EXPECT_DOUBLE_EQ(outline_fill({outside}, shown), 0.0);
+  EXPECT_DOUBLE_EQ(outline_fill({left}, BoundingBox{0, 0, 0, 10}), 0.0);  // nothing shown
+}
+
 // A plane seen from behind (a two-sided sheet, drawn by every engine) keeps its dashed exact
 // outline; a one-sided polygon (a solid's face) seen from behind has none, as it is culled.
 TEST(ExactOutlines, TwoSidedSheetIsOutlinedFromBehindAndAOneSidedFaceIsNot) {
