@@ -46,6 +46,9 @@ struct WebPanel {
 
 class WebSession {
  public:
+  // The policy whose runs draw the exact projection: every frame rendered exactly.
+  static constexpr const char* kExactPolicy = "rerender";
+
   // A lab with the shipped butterfly texture from the module's embedded datasets. Throws
   // std::runtime_error when it cannot be read (a broken build).
   WebSession();
