@@ -24,14 +24,15 @@ constexpr std::uint8_t kBackground[3] = {24, 27, 31};
 constexpr int kMaxPanelSide = 4096;
 // Grey levels of difference at the top of the heat map's ramp.
 constexpr int kHeatFullScale = 64;
+// The exact render's near plane, which frames and outlines what is seen.
+const double kNear = SceneSettings{}.near;
 
 }  // namespace
 
 PanelView WebSession::panel_view(const Animator& exact, int cell_width, int cell_height) {
   const WindowState& s = lab_.values();
   if (bounds_epoch_ != epoch_) {  // what the source shows at each frame, once per state
-    frame_bounds_ =
-        source_frame_bounds(s.source, lab_.panel(), &exact.scene(), SceneSettings{}.near);
+    frame_bounds_ = source_frame_bounds(s.source, lab_.panel(), &exact.scene(), kNear);
     bounds_epoch_ = epoch_;
   }
   const std::optional<BoundingBox> content =
@@ -104,17 +105,15 @@ std::string WebSession::update_comparison(int cell_width, int cell_height) {
 double WebSession::page_panel_fill() {
   const WindowState& s = lab_.values();
   if (s.view != "animation" || s.cause_and_effect || sampled_cell_.x < 1) return std::nan("");
-  // The panels as the page draws them now: brought to the state and frame shown in the cell
-  // they were last drawn in.
-  update_comparison(sampled_cell_.x, sampled_cell_.y);
+  // The panels as the page draws them now: the part of the frame shown (the runs brought to
+  // it) that update_comparison frames in the cell they were last drawn in.
   const std::vector<const Animator*> animators = shown_animators();
   if (animators.empty()) return std::nan("");
   const Animator& exact = *animators.back();
-  const PanelView& v = sampled_view_;
+  const PanelView v = panel_view(exact, sampled_cell_.x, sampled_cell_.y);
   const BoundingBox shown{v.x0, v.y0, v.x0 + v.pixel * v.width, v.y0 + v.pixel * v.height};
-  const double near = SceneSettings{}.near;
   return 100.0 *
-         outline_fill(exact_outlines(exact.scene(), exact.view(), exact.camera(), near), shown);
+         outline_fill(exact_outlines(exact.scene(), exact.view(), exact.camera(), kNear), shown);
 }
 
 }  // namespace oflab
