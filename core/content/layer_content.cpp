@@ -31,12 +31,25 @@ constexpr NamedValue<ContentKind> kNames[] = {{ContentKind::kTexture, "texture"}
 const ContentMaterial kBrick{{0.62, 0.27, 0.18}, 0.15, 16.0};
 const ContentMaterial kMortar{{0.66, 0.64, 0.60}, 0.05, 8.0};
 
+}  // namespace
+
+double specular_power(double c, double shininess) {
+  int squarings = 0;
+  for (double e = 1.0; e < shininess && squarings <= 8; e *= 2.0) ++squarings;
+  if (squarings > 8 || std::ldexp(1.0, squarings) != shininess) return std::pow(c, shininess);
+  for (int k = 0; k < squarings; ++k) c *= c;
+  return c;
+}
+
+namespace {
+
 // Linear colour (unclamped) of `m` at viewer-frame point x with unit normal n, light l (unit).
 Vec3 lit(const ContentMaterial& m, const Vec3& n, const Vec3& x, const Vec3& l) {
   const Vec3 v = glm::normalize(-x);
   const Vec3 h = glm::normalize(l + v);
   const double diffuse = std::max(0.0, glm::dot(n, l));
-  const double spec = diffuse > 0.0 ? std::pow(std::max(0.0, glm::dot(n, h)), m.shininess) : 0.0;
+  const double spec =
+      diffuse > 0.0 ? specular_power(std::max(0.0, glm::dot(n, h)), m.shininess) : 0.0;
   return m.albedo * (kContentAmbient + kContentDiffuse * diffuse) + Vec3(m.specular * spec);
 }
 
@@ -278,30 +291,54 @@ std::vector<FacadeFace> facade_faces(const Vec2& size, int detail) {
 
 namespace {
 
-// Keeps the part of a viewer-frame polygon at Z >= z_min (Sutherland-Hodgman).
-std::vector<Vec3> clip_near(const std::vector<Vec3>& in, double z_min) {
-  std::vector<Vec3> out;
+// Keeps the part of a viewer-frame quad at Z >= z_min (Sutherland-Hodgman) in out[0 .. n - 1]
+// (at most 5 vertices); returns n.
+int clip_near(const std::array<Vec3, 4>& in, double z_min, std::array<Vec3, 5>& out) {
+  int n = 0;
   for (std::size_t k = 0; k < in.size(); ++k) {
     const Vec3& a = in[k];
     const Vec3& b = in[(k + 1) % in.size()];
-    if (a.z >= z_min) out.push_back(a);
-    if ((a.z >= z_min) != (b.z >= z_min))
-      out.push_back(a + (b - a) * ((z_min - a.z) / (b.z - a.z)));
+    if (a.z >= z_min) out[n++] = a;
+    if ((a.z >= z_min) != (b.z >= z_min)) out[n++] = a + (b - a) * ((z_min - a.z) / (b.z - a.z));
   }
-  return out;
+  return n;
 }
 
-// The polygon clipped to the convex region (both in layer pixels).
-ConvexPolygon clip_to_region(ConvexPolygon polygon, const ConvexPolygon& region) {
+// The edges of a convex region (layer pixels) as lines (a, b, c), a x + b y + c >= 0 on the
+// region's side: found once for all the faces of a render.
+std::vector<Vec3> region_lines(const ConvexPolygon& region) {
   const std::vector<Vec2>& v = region.vertices();
   Vec2 inside(0.0);
   for (const Vec2& p : v) inside += p / static_cast<double>(v.size());
-  for (std::size_t k = 0; k < v.size() && !polygon.empty(); ++k) {
+  std::vector<Vec3> lines;
+  for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2& a = v[k];
     const Vec2& b = v[(k + 1) % v.size()];
     Vec3 line(a.y - b.y, b.x - a.x, a.x * b.y - a.y * b.x);
     if (line.x * inside.x + line.y * inside.y + line.z < 0.0) line = -line;
-    polygon = clip_to_half_plane(polygon, line);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// The polygon clipped to the region of `lines` (region_lines), edge by edge. Shortcuts with
+// the same result: a polygon with every vertex strictly outside one edge is clipped away
+// whole (empty), and one with no vertex outside any edge (most of a facade's faces) is
+// returned as it is (clip_to_half_plane keeps such a polygon vertex for vertex).
+ConvexPolygon clip_to_region(ConvexPolygon polygon, const std::vector<Vec3>& lines) {
+  bool within = true;
+  for (const Vec3& line : lines) {
+    bool all_outside = true;
+    for (const Vec2& p : polygon.vertices()) {
+      const double side = line.x * p.x + line.y * p.y + line.z;
+      within &= side >= 0.0;
+      all_outside &= side < 0.0;
+    }
+    if (all_outside) return ConvexPolygon();
+  }
+  if (within) return polygon;
+  for (std::size_t k = 0; k < lines.size() && !polygon.empty(); ++k) {
+    polygon = clip_to_half_plane(polygon, lines[k]);
   }
   return polygon;
 }
@@ -317,20 +354,26 @@ struct FaceRaster {
 
 // The face's raster, or false when it is seen from behind or covers no part of the region.
 bool face_raster(const FacadeFace& face, const PlaneFrame& f, const Vec3& light,
-                 const LayerBox& box, const ConvexPolygon& region, FaceRaster& raster) {
-  std::vector<Vec3> world;
-  for (const Vec3& c : face.corners) world.push_back(f.point(c.x, c.y, c.z));
+                 const LayerBox& box, const std::vector<Vec3>& region, FaceRaster& raster) {
+  std::array<Vec3, 4> world;
+  for (std::size_t k = 0; k < world.size(); ++k) {
+    const Vec3& c = face.corners[k];
+    world[k] = f.point(c.x, c.y, c.z);
+  }
   const Vec3 n =
       glm::normalize(face.normal.x * f.right + face.normal.y * f.up + face.normal.z * f.front);
   if (glm::dot(n, world[0]) >= 0.0) return false;  // seen from behind
-  const std::vector<Vec3> front = clip_near(world, 1e-6);
-  if (front.size() < 3) return false;
+  std::array<Vec3, 5> front;
+  const int count = clip_near(world, 1e-6, front);
+  if (count < 3) return false;
   std::vector<Vec2> pixels;
-  for (const Vec3& p : front) {
+  pixels.reserve(static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) {
+    const Vec3& p = front[static_cast<std::size_t>(k)];
     pixels.emplace_back(f.camera.focal_px * p.x / p.z + f.camera.cx - box.x0,
                         f.camera.focal_px * p.y / p.z + f.camera.cy - box.y0);
   }
-  raster.shape = clip_to_region(make_polygon_unchecked(pixels), region);
+  raster.shape = clip_to_region(make_polygon_unchecked(std::move(pixels)), region);
   if (raster.shape.empty()) return false;
   const ScanConverter rows(raster.shape, box.width, box.height);
   raster.first_row = rows.first_row();
@@ -386,11 +429,12 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
   const Vec3 light = glm::normalize(content.light);
   // The faces' rasters in bands of faces on the worker threads, kept in face order.
   const std::vector<FacadeFace> all = facade_faces(pose.size, content.quality);
+  const std::vector<Vec3> region_edges = region_lines(out.layer.polygon);
   std::array<std::vector<FaceRaster>, kMaxBands> banded;
   for_each_band(static_cast<int>(all.size()), 64, [&](int band, int begin, int end) {
     for (int k = begin; k < end; ++k) {
       FaceRaster raster;
-      if (face_raster(all[static_cast<std::size_t>(k)], f, light, box, out.layer.polygon, raster))
+      if (face_raster(all[static_cast<std::size_t>(k)], f, light, box, region_edges, raster))
         banded[static_cast<std::size_t>(band)].push_back(std::move(raster));
     }
   });

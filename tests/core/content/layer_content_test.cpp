@@ -276,6 +276,27 @@ TEST(LayerContent, KindsListEveryNameOnce) {
   EXPECT_EQ(joined, content_name_list());
 }
 
+// The specular factor against the power in long double (an independent computation): by
+// squarings for the materials' shininesses 8 to 64 within (2^k - 1) 2^-53 relative, and
+// std::pow's value for a shininess that is not a power of two (the control: 12 and 2.5).
+TEST(LayerContent, SpecularPowerIsThePowerWithinItsRoundingBound) {
+  for (double shininess : {1.0, 2.0, 8.0, 16.0, 32.0, 64.0, 256.0}) {
+    const double bound = (shininess - 1.0) * std::ldexp(1.0, -53) * 1.0001;
+    for (int k = 0; k <= 1000; ++k) {
+      const double c = k / 1000.0;
+      const long double exact = std::pow(static_cast<long double>(c), shininess);
+      const double got = specular_power(c, shininess);
+      EXPECT_LE(std::abs(static_cast<long double>(got) - exact), bound * exact + 1e-300L)
+          << "c " << c << ", shininess " << shininess;
+    }
+  }
+  for (double shininess : {12.0, 2.5, 512.0}) {
+    for (double c : {0.0, 0.3, 0.9, 1.0}) {
+      EXPECT_EQ(specular_power(c, shininess), std::pow(c, shininess)) << shininess;
+    }
+  }
+}
+
 // Shaded content samples quality times the layer's pixels a re-render, the other kinds
 // none; a plane engine whose camera-sized layer would take more than the limit is refused
 // when it is made, and the largest quality within it is accepted (the control).
