@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "content/depth_span.h"
 #include "flow/named_values.h"
 #include "image/scan_conversion.h"
 #include "image/thread_pool.h"
@@ -400,23 +401,14 @@ void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int 
   ScanConverter scan(face.shape, box.width, box.height);
   scan.clip_rows(begin, end);
   PixelSpan span;
-  // Locals, not the face's and the tally's fields, so that the stores into the rows do not
-  // make the compiler load them again for every pixel.
-  const Pixel colour = face.colour;
-  const double a = face.a, b = face.b, c0 = face.c0;
   std::int64_t written = 0, work = 0;
   while (scan.next(span)) {
-    Pixel* row = out.layer.image.row(span.y);
-    float* z = depth.data() + static_cast<std::size_t>(span.y) * box.width;
-    const double by = b * span.y;
-    if (span.x_end > span.x_begin) work += span.x_end - span.x_begin;
-    for (int x = span.x_begin; x < span.x_end; ++x) {
-      const float inv_z = static_cast<float>(c0 + a * x + by);
-      if (inv_z <= z[x]) continue;
-      z[x] = inv_z;
-      written += row[x].a == 0;
-      row[x] = colour;
-    }
+    if (span.x_end <= span.x_begin) continue;
+    work += span.x_end - span.x_begin;
+    const DepthRow plane{face.a, face.c0, face.b * span.y};
+    written += draw_depth_span(plane, face.colour, span.x_begin, span.x_end,
+                               depth.data() + static_cast<std::size_t>(span.y) * box.width,
+                               out.layer.image.row(span.y));
   }
   stats.work_units += work;
   stats.pixels_written += written;
