@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "image/push_pull.h"
 #include "image/thread_pool.h"
@@ -69,7 +70,12 @@ struct StillBackground {
     fill(y, directions.y, camera.cy);
     box_lines(x, camera.width, x_begin, x_end);
     box_lines(y, camera.height, y_begin, y_end);
+    near_own = within_one(x_begin, x_end) && within_one(y_begin, y_end);
   }
+  // Whether every background splat's box lies within one pixel of its own pixel (columns
+  // i - 1 .. i + 1, rows j - 1 .. j + 1; set by prepare): then a target pixel's background
+  // splats are those of the 3 x 3 source pixels around it (paint_still_background_rows).
+  bool near_own = false;
   // The corners of background pixel (i, j)'s footprint, as splat::move_footprint orders them.
   std::array<Vec2, 4> corners(int i, int j) const {
     return {Vec2(x[i], y[j]), Vec2(x[i + 2], y[j]), Vec2(x[i + 2], y[j + 2]), Vec2(x[i], y[j + 2])};
@@ -91,6 +97,78 @@ struct StillBackground {
       const double lo = std::min(at[k], at[k + 2]), hi = std::max(at[k], at[k + 2]);
       begin[k] = std::max(0, static_cast<int>(std::ceil(lo - 0.5)));
       end[k] = std::min(size - 1, static_cast<int>(std::floor(hi - 0.5)));
+    }
+  }
+  static bool within_one(const std::vector<int>& begin, const std::vector<int>& end) {
+    for (std::size_t k = 0; k < begin.size(); ++k) {
+      if (begin[k] < static_cast<int>(k) - 1 || end[k] > static_cast<int>(k) + 1) return false;
+    }
+    return true;
+  }
+};
+
+// A target line's (row's or column's) view of the still background's splat lines k - 1, k,
+// k + 1 (StillBackground, near_own): per neighbour, the sides bits of the footprint's two
+// edges across the line (splat::row_sides, splat::column_sides), 0 where the splat's box
+// misses the line or is empty, kUndecided where the bits depend on the splat's extent along
+// the other axis; and the square of the centre's offset along the line. An edge's test is a
+// product of the extent (x[i + 2] - x[i], or its negation) and the line's offset, which
+// rounds monotonically in the extent: where the bits agree at the smallest and the largest
+// extent, they hold for every splat of the line.
+struct StillLines {
+  struct Line {
+    int sides = 0;
+    double offset2 = 0.0;
+  };
+  static constexpr int kUndecided = 4;
+  std::vector<Line> rows, columns;  // per target row (column) 3 entries, splat line k - 1 ..
+
+  // Fills the lines where the still background holds and is near its own pixels and returns
+  // this; else null (its splats are painted with the surfaces').
+  const StillLines* prepare(const StillBackground& still, int width, int height) {
+    if (!still.holds || !still.near_own) return nullptr;
+    lines(still.y, still.x, still.y_begin, still.y_end, still.x_begin, still.x_end, height, width,
+          true, rows);
+    lines(still.x, still.y, still.x_begin, still.x_end, still.y_begin, still.y_end, width, height,
+          false, columns);
+    return this;
+  }
+
+ private:
+  // Lines along `at` (rows: at = y, the extents along `across` = x).
+  static void lines(const std::vector<double>& at, const std::vector<double>& across,
+                    const std::vector<int>& begin, const std::vector<int>& end,
+                    const std::vector<int>& across_begin, const std::vector<int>& across_end,
+                    int size, int other, bool rows, std::vector<Line>& out) {
+    double lo = 1e300, hi = -1e300;  // the extents of the splats with a box
+    for (int k = 0; k < other; ++k) {
+      if (across_end[k] < across_begin[k]) continue;
+      lo = std::min(lo, across[k + 2] - across[k]);
+      hi = std::max(hi, across[k + 2] - across[k]);
+    }
+    out.assign(static_cast<std::size_t>(size) * 3, Line{});
+    for (int t = 0; t < size; ++t) {
+      const double c = t + 0.5;
+      for (int n = 0; n < 3; ++n) {
+        const int k = t - 1 + n;
+        if (k < 0 || k >= size || t < begin[k] || t > end[k] || lo > hi) continue;
+        // rows: k0 = ex (c - y[j]), k2 = -ex (c - y[j + 2]) (row_sides); columns: k1 =
+        // -(ey (c - x[i + 2])), k3 = -(-ey (c - x[i])) (column_sides).
+        // The four comparisons, each monotonic in the extent, as bits 0 .. 3.
+        const auto tests = [&](double extent) {
+          const double k0 = rows ? extent * (c - at[k]) : -(extent * (c - at[k + 2]));
+          const double k1 = rows ? (-extent) * (c - at[k + 2]) : -((-extent) * (c - at[k]));
+          return static_cast<int>(k0 >= -1e-9) | static_cast<int>(k1 >= -1e-9) << 1 |
+                 static_cast<int>(k0 <= 1e-9) << 2 | static_cast<int>(k1 <= 1e-9) << 3;
+        };
+        const int low = tests(lo), high = tests(hi);
+        Line& line = out[static_cast<std::size_t>(t) * 3 + n];
+        line.sides = low != high ? kUndecided
+                                 : static_cast<int>((low & 3) == 3) |
+                                       static_cast<int>((low & 12) == 12) << 1;
+        const double offset = c - at[k + 1];
+        line.offset2 = offset * offset;
+      }
     }
   }
 };
@@ -121,15 +199,19 @@ struct CornerMove {
 };
 
 // What each target pixel keeps while the splats are painted: the inverse depth of what it
-// shows (-1: nothing yet), the distance of that splat's centre from it and its square, and
-// that splat's polygon (kNoSplat before any splat reached it).
+// shows (-1: nothing yet), the distance of that splat's centre from it and its square, that
+// splat's polygon (kNoSplat before any splat reached it), and the source index of the first
+// surface splat (polygon >= 0) that won it (kNoSurface while none has).
 struct TargetCell {
   double w;
   double dist;   // px
   double dist2;  // px^2, the square dist is the rounded square root of
   int polygon;
+  int first;
 };
 constexpr int kNoSplat = -2;  // no polygon index, nor the background's -1
+constexpr int kNoSurface = std::numeric_limits<int>::max();
+constexpr TargetCell kFreshCell{-1.0, 0.0, 0.0, kNoSplat, kNoSurface};
 
 // Every source pixel's splat, planned before any is painted: its moved centre and
 // extrapolated inverse depth, the pixels its footprint may cover (an empty box: no splat),
@@ -150,6 +232,7 @@ struct SplatPlan {
 struct GenerationScratch {
   PixelDirections directions;
   StillBackground still;
+  StillLines lines;  // prepared where the still background is near its own pixels
   splat::CornerLattice lattice;
   SplatPlan plan;
   std::vector<TargetCell> cells;  // reset by the first pass, band by band
@@ -283,7 +366,7 @@ struct SplatPainter {
     if (same && e2 >= t.dist2) return 0;
     const double e = std::sqrt(e2);
     if (same && e >= t.dist) return 0;
-    t = TargetCell{w, e, e2, polygon};
+    t = TargetCell{w, e, e2, polygon, polygon >= 0 && t.polygon < 0 ? source : t.first};
     image[d] = colour;
     shown[d] = source;
     return 1;
@@ -335,13 +418,80 @@ std::int64_t paint_splat(const SplatPlan& plan, const splat::CornerLattice& latt
   return written;
 }
 
+// Paints the still background's splats over target rows [y_begin, y_end) (StillBackground
+// holds, near_own), pixel by pixel, after the surfaces' splats (paint_target_rows leaves them
+// out): a surface splat always wins over the background (its inverse depth is above 0) and
+// the background never over a surface, so a pixel's background splats count only before the
+// first surface splat that won it (TargetCell::first), and they are those of the 3 x 3 source
+// pixels around it, met in source order, each tested and compared as paint_splat's aligned
+// path and SplatPainter::paint do from a fresh cell. The same frame, sources and count as
+// painting them in source order among the surfaces' (the test's one-pass reference). Returns
+// the pixels written.
+std::int64_t paint_still_background_rows(const StillBackground& still, const StillLines& lines,
+                                         const DepthFrame& depth, const Image& rendered,
+                                         int y_begin, int y_end, TargetCell* cells,
+                                         GeneratedFrame& g) {
+  using Line = StillLines::Line;
+  const int width = depth.width;
+  std::int64_t written = 0;
+  for (int y = y_begin; y < y_end; ++y) {
+    const double cy = y + 0.5;
+    for (int x = 0; x < width; ++x) {
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const int first = cells[d].first;
+      TargetCell best = kFreshCell;
+      int shown = -1;
+      bool held = false;  // a surface holds the pixel from the splat met on
+      for (int n = 0; n < 3 && !held; ++n) {
+        const Line& row = lines.rows[static_cast<std::size_t>(y) * 3 + n];
+        if (!row.sides) continue;
+        const int j = y - 1 + n;
+        for (int m = 0; m < 3; ++m) {
+          const Line& column = lines.columns[static_cast<std::size_t>(x) * 3 + m];
+          if (!column.sides) continue;
+          const int i = x - 1 + m, s = j * width + i;
+          if (s >= first) {
+            held = true;
+            break;
+          }
+          if (depth.polygon[s] >= 0) continue;
+          if ((row.sides | column.sides) & StillLines::kUndecided) {
+            const std::array<Vec2, 4> q = still.corners(i, j);
+            const std::array<Vec2, 4> edge = splat::footprint_edges(q);
+            if (!(splat::row_sides(q, edge, cy) & splat::column_sides(q, edge, x + 0.5))) continue;
+          } else if (!(row.sides & column.sides)) {
+            continue;
+          }
+          // SplatPainter::paint from a fresh cell; glm::dot of the offset with itself is the
+          // two squares' sum.
+          const bool same = best.polygon == -1;  // background after background
+          if (!same && 0.0 <= best.w) continue;
+          const double e2 = column.offset2 + row.offset2;
+          if (same && e2 >= best.dist2) continue;
+          const double e = std::sqrt(e2);
+          if (same && e >= best.dist) continue;
+          best = TargetCell{0.0, e, e2, -1, kNoSurface};
+          shown = s;
+          ++written;
+        }
+      }
+      if (first != kNoSurface || shown < 0) continue;  // a surface shows, or nothing
+      cells[d] = best;
+      g.image.pixels()[d] = rendered.pixels()[static_cast<std::size_t>(shown)];
+      g.source[d] = shown;
+    }
+  }
+  return written;
+}
+
 // Paints every planned splat into target rows [y_begin, y_end), in source order (so each
-// pixel sees its splats in the order one pass over the source paints them). Returns the
-// pixels written.
+// pixel sees its splats in the order one pass over the source paints them); with `lines`
+// (StillLines::prepare), the still background's after the surfaces' instead
+// (paint_still_background_rows). Returns the pixels written.
 std::int64_t paint_target_rows(const SplatPlan& plan, const splat::CornerLattice& lattice,
-                               const StillBackground& still, const Image& rendered,
-                               const DepthFrame& depth, int y_begin, int y_end, TargetCell* cells,
-                               GeneratedFrame& g) {
+                               const StillBackground& still, const StillLines* lines,
+                               const Image& rendered, const DepthFrame& depth, int y_begin,
+                               int y_end, TargetCell* cells, GeneratedFrame& g) {
   std::int64_t written = 0;
   for (int j = 0; j < depth.height; ++j) {
     if (plan.row_last[j] < plan.row_first[j] || plan.row_last[j] < y_begin ||
@@ -352,10 +502,15 @@ std::int64_t paint_target_rows(const SplatPlan& plan, const splat::CornerLattice
       const std::size_t s = static_cast<std::size_t>(j) * depth.width + i;
       const PixelBox& box = plan.boxes[s];
       if (box.y_end < box.y_begin || box.y_end < y_begin || box.y_begin >= y_end) continue;
+      if (lines && plan.corners_from[s] == kStillCorners) continue;
       written += paint_splat(plan, lattice, still, i, j, depth.polygon[s], rendered.pixels()[s],
                              std::max(box.y_begin, y_begin), std::min(box.y_end, y_end - 1),
                              depth.width, cells, g);
     }
+  }
+  if (lines) {
+    written +=
+        paint_still_background_rows(still, *lines, depth, rendered, y_begin, y_end, cells, g);
   }
   return written;
 }
@@ -436,6 +591,7 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   const int k = std::max(1, frames_ahead);
   scratch.still.prepare(camera, scratch.directions, back, k);
   const StillBackground& scratch_still = scratch.still;
+  const StillLines* still_lines = scratch.lines.prepare(scratch.still, width, height);
   const CornerMove move{camera, scratch.directions, scratch_still, back, k, near};
   // Passes over bands of rows cut by the frame's size alone, each band writing only its own
   // rows, every tally summed in band order: the same frame on any number of threads.
@@ -443,8 +599,7 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   const std::size_t bands = static_cast<std::size_t>(band_count(height, min_rows));
   for_each_band(height, min_rows, [&](int, int begin, int end) {
     std::fill(cells + static_cast<std::ptrdiff_t>(begin) * width,
-              cells + static_cast<std::ptrdiff_t>(end) * width,
-              TargetCell{-1.0, 0.0, 0.0, kNoSplat});
+              cells + static_cast<std::ptrdiff_t>(end) * width, kFreshCell);
     move_lattice(depth, move, begin, end, lattice);
   });
   for_each_band(height, min_rows, [&](int, int begin, int end) {
@@ -452,8 +607,8 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   });
   std::vector<std::int64_t> written(bands, 0), holes(bands, 0), masked(bands, 0);
   for_each_band(height, min_rows, [&](int band, int begin, int end) {
-    written[band] =
-        paint_target_rows(plan, lattice, scratch_still, rendered, depth, begin, end, cells, g);
+    written[band] = paint_target_rows(plan, lattice, scratch_still, still_lines, rendered, depth,
+                                      begin, end, cells, g);
     std::int64_t unreached = 0;
     for (std::size_t d = static_cast<std::size_t>(begin) * width;
          d < static_cast<std::size_t>(end) * width; ++d) {
