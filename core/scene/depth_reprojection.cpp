@@ -73,15 +73,9 @@ struct SplatPlan {
 // (x[i + 1], y[j + 1]). Those splats are painted pixel by pixel (paint_background_rows)
 // instead of planned and painted splat by splat.
 struct BackgroundGrid {
-  // A target line's (column's or row's) view of one neighbouring splat line (k - 1, k, k + 1):
-  // the sides bits of the footprint's two edges across it (splat::row_sides,
-  // splat::column_sides), 0 where the splat's box misses the line, kUndecided where they
-  // depend on the other line; and the square of the centre's offset along it.
-  struct Line {
-    int sides = 0;
-    double offset2 = 0.0;
-  };
-  static constexpr int kUndecided = 4;
+  // The target lines' views of the splat lines around them (splat::grid_lines).
+  using Line = splat::GridLine;
+  static constexpr int kUndecided = splat::kUndecidedSides;
 
   std::vector<double> x, y;         // k = 0 .. width + 1, l = 0 .. height + 1
   std::vector<Line> columns, rows;  // per target column (row) 3 entries, splat column k - 1 ..
@@ -100,8 +94,8 @@ struct BackgroundGrid {
         !land(camera, directions, step, near, camera.height, false, y)) {
       return false;
     }
-    lines(x, y, false, columns);
-    lines(y, x, true, rows);
+    splat::grid_lines(x, y, false, columns);
+    splat::grid_lines(y, x, true, rows);
     return true;
   }
 
@@ -118,53 +112,6 @@ struct BackgroundGrid {
       if (!(std::abs(at[k] - (k - 0.5)) < 0.25)) return false;
     }
     return true;
-  }
-
-  // The Lines of every target line along `at` (the other axis `across`). Rows (horizontal
-  // edges 0 and 2): k = edge.x * (c - q.y), anchors at[j] and at[j + 2], edge.x over every
-  // splat column; columns (vertical edges 1 and 3): k = -(edge.y * (c - q.x)), anchors
-  // at[i + 2] and at[i]. A product rounds monotonically in each factor, so where the tests
-  // agree at both ends of an edge's range they hold for every splat of the line.
-  static void lines(const std::vector<double>& at, const std::vector<double>& across, bool rows,
-                    std::vector<Line>& out) {
-    const int size = static_cast<int>(at.size()) - 2, other = static_cast<int>(across.size()) - 2;
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (int k = 0; k < other; ++k) {
-      const double slope[2] = {across[k + 2] - across[k], across[k] - across[k + 2]};
-      for (int e = 0; e < 2; ++e)
-        lo[e] = std::min(lo[e], slope[e]), hi[e] = std::max(hi[e], slope[e]);
-    }
-    out.assign(static_cast<std::size_t>(size) * 3, Line{});
-    for (int t = 0; t < size; ++t) {
-      const double c = t + 0.5;
-      for (int n = 0; n < 3; ++n) {
-        const int k = t - 1 + n;
-        if (k < 0 || k >= size) continue;
-        const double lo_box = std::min(at[k], at[k + 2]), hi_box = std::max(at[k], at[k + 2]);
-        if (t < std::max(0, static_cast<int>(std::ceil(lo_box - 0.5))) ||  // as footprint_box
-            t > std::min(size - 1, static_cast<int>(std::floor(hi_box - 0.5)))) {
-          continue;
-        }
-        const double anchor[2] = {rows ? at[k] : at[k + 2], rows ? at[k + 2] : at[k]};
-        int both[2] = {0, 0};  // the sides bits at each end of the slopes' ranges
-        for (int end = 0; end < 2; ++end) {
-          double kk[2];
-          for (int e = 0; e < 2; ++e) {
-            const double v = (end ? hi[e] : lo[e]) * (c - anchor[e]);
-            kk[e] = rows ? v : -v;
-          }
-          both[end] = static_cast<int>((kk[0] >= -1e-9) & (kk[1] >= -1e-9)) |
-                      static_cast<int>((kk[0] <= 1e-9) & (kk[1] <= 1e-9)) << 1 |
-                      static_cast<int>(kk[0] >= -1e-9) << 2 |
-                      static_cast<int>(kk[1] >= -1e-9) << 3 | static_cast<int>(kk[0] <= 1e-9) << 4 |
-                      static_cast<int>(kk[1] <= 1e-9) << 5;
-        }
-        Line& line = out[static_cast<std::size_t>(t) * 3 + n];
-        line.sides = both[0] == both[1] ? both[0] & 3 : kUndecided;
-        const double offset = c - at[k + 1];
-        line.offset2 = offset * offset;
-      }
-    }
   }
 };
 

@@ -107,69 +107,18 @@ struct StillBackground {
   }
 };
 
-// A target line's (row's or column's) view of the still background's splat lines k - 1, k,
-// k + 1 (StillBackground, near_own): per neighbour, the sides bits of the footprint's two
-// edges across the line (splat::row_sides, splat::column_sides), 0 where the splat's box
-// misses the line or is empty, kUndecided where the bits depend on the splat's extent along
-// the other axis; and the square of the centre's offset along the line. An edge's test is a
-// product of the extent (x[i + 2] - x[i], or its negation) and the line's offset, which
-// rounds monotonically in the extent: where the bits agree at the smallest and the largest
-// extent, they hold for every splat of the line.
+// The target rows' and columns' views of the still background's splats around them
+// (splat::grid_lines, as depth reprojection's BackgroundGrid), where StillBackground holds and
+// is near its own pixels.
 struct StillLines {
-  struct Line {
-    int sides = 0;
-    double offset2 = 0.0;
-  };
-  static constexpr int kUndecided = 4;
-  std::vector<Line> rows, columns;  // per target row (column) 3 entries, splat line k - 1 ..
-
-  // Fills the lines where the still background holds and is near its own pixels and returns
-  // this; else null (its splats are painted with the surfaces').
-  const StillLines* prepare(const StillBackground& still, int width, int height) {
+  std::vector<splat::GridLine> rows, columns;  // per target row (column) 3 entries
+  // Fills the lines and returns this where the still background holds and is near its own
+  // pixels; else null (its splats are painted with the surfaces').
+  const StillLines* prepare(const StillBackground& still) {
     if (!still.holds || !still.near_own) return nullptr;
-    lines(still.y, still.x, still.y_begin, still.y_end, still.x_begin, still.x_end, height, width,
-          true, rows);
-    lines(still.x, still.y, still.x_begin, still.x_end, still.y_begin, still.y_end, width, height,
-          false, columns);
+    splat::grid_lines(still.y, still.x, true, rows);
+    splat::grid_lines(still.x, still.y, false, columns);
     return this;
-  }
-
- private:
-  // Lines along `at` (rows: at = y, the extents along `across` = x).
-  static void lines(const std::vector<double>& at, const std::vector<double>& across,
-                    const std::vector<int>& begin, const std::vector<int>& end,
-                    const std::vector<int>& across_begin, const std::vector<int>& across_end,
-                    int size, int other, bool rows, std::vector<Line>& out) {
-    double lo = 1e300, hi = -1e300;  // the extents of the splats with a box
-    for (int k = 0; k < other; ++k) {
-      if (across_end[k] < across_begin[k]) continue;
-      lo = std::min(lo, across[k + 2] - across[k]);
-      hi = std::max(hi, across[k + 2] - across[k]);
-    }
-    out.assign(static_cast<std::size_t>(size) * 3, Line{});
-    for (int t = 0; t < size; ++t) {
-      const double c = t + 0.5;
-      for (int n = 0; n < 3; ++n) {
-        const int k = t - 1 + n;
-        if (k < 0 || k >= size || t < begin[k] || t > end[k] || lo > hi) continue;
-        // rows: k0 = ex (c - y[j]), k2 = -ex (c - y[j + 2]) (row_sides); columns: k1 =
-        // -(ey (c - x[i + 2])), k3 = -(-ey (c - x[i])) (column_sides).
-        // The four comparisons, each monotonic in the extent, as bits 0 .. 3.
-        const auto tests = [&](double extent) {
-          const double k0 = rows ? extent * (c - at[k]) : -(extent * (c - at[k + 2]));
-          const double k1 = rows ? (-extent) * (c - at[k + 2]) : -((-extent) * (c - at[k]));
-          return static_cast<int>(k0 >= -1e-9) | static_cast<int>(k1 >= -1e-9) << 1 |
-                 static_cast<int>(k0 <= 1e-9) << 2 | static_cast<int>(k1 <= 1e-9) << 3;
-        };
-        const int low = tests(lo), high = tests(hi);
-        Line& line = out[static_cast<std::size_t>(t) * 3 + n];
-        line.sides = low != high ? kUndecided
-                                 : static_cast<int>((low & 3) == 3) |
-                                       static_cast<int>((low & 12) == 12) << 1;
-        const double offset = c - at[k + 1];
-        line.offset2 = offset * offset;
-      }
-    }
   }
 };
 
@@ -431,7 +380,7 @@ std::int64_t paint_still_background_rows(const StillBackground& still, const Sti
                                          const DepthFrame& depth, const Image& rendered,
                                          int y_begin, int y_end, TargetCell* cells,
                                          GeneratedFrame& g) {
-  using Line = StillLines::Line;
+  using Line = splat::GridLine;
   const int width = depth.width;
   std::int64_t written = 0;
   for (int y = y_begin; y < y_end; ++y) {
@@ -455,7 +404,7 @@ std::int64_t paint_still_background_rows(const StillBackground& still, const Sti
             break;
           }
           if (depth.polygon[s] >= 0) continue;
-          if ((row.sides | column.sides) & StillLines::kUndecided) {
+          if ((row.sides | column.sides) & splat::kUndecidedSides) {
             const std::array<Vec2, 4> q = still.corners(i, j);
             const std::array<Vec2, 4> edge = splat::footprint_edges(q);
             if (!(splat::row_sides(q, edge, cy) & splat::column_sides(q, edge, x + 0.5))) continue;
@@ -591,7 +540,7 @@ GeneratedFrame extrapolate_by_motion(const Image& rendered, const DepthFrame& de
   const int k = std::max(1, frames_ahead);
   scratch.still.prepare(camera, scratch.directions, back, k);
   const StillBackground& scratch_still = scratch.still;
-  const StillLines* still_lines = scratch.lines.prepare(scratch.still, width, height);
+  const StillLines* still_lines = scratch.lines.prepare(scratch.still);
   const CornerMove move{camera, scratch.directions, scratch_still, back, k, near};
   // Passes over bands of rows cut by the frame's size alone, each band writing only its own
   // rows, every tally summed in band order: the same frame on any number of threads.
