@@ -59,7 +59,8 @@ std::int64_t draw_depth_span(const DepthRow& plane, Pixel colour, int x_begin, i
   std::int64_t written = 0;
   int x = x_begin;
 #if defined(OFLAB_DEPTH_AVX2)
-  if (wide && warp_avx2_enabled()) x = depth_octets(plane, colour, x, x_end, z, row, written);
+  static const bool avx2 = warp_avx2_enabled();  // once, not per span (a call into image/)
+  if (wide && avx2) x = depth_octets(plane, colour, x, x_end, z, row, written);
 #else
   (void)wide;
 #endif

@@ -35,9 +35,10 @@ const ContentMaterial kMortar{{0.66, 0.64, 0.60}, 0.05, 8.0};
 }  // namespace
 
 double specular_power(double c, double shininess) {
+  double power = 1.0;  // 2^squarings, exactly
   int squarings = 0;
-  for (double e = 1.0; e < shininess && squarings <= 8; e *= 2.0) ++squarings;
-  if (squarings > 8 || std::ldexp(1.0, squarings) != shininess) return std::pow(c, shininess);
+  while (power < shininess && squarings < 8) power *= 2.0, ++squarings;
+  if (power != shininess) return std::pow(c, shininess);
   for (int k = 0; k < squarings; ++k) c *= c;
   return c;
 }
