@@ -143,9 +143,8 @@ double unit_hash(int a, int b) {
   return (h & 0xffffu) / 65535.0;
 }
 
-}  // namespace
-
-BrickSample brick_at(double x, double y) {
+// brick_at's body, inlined into the shaded rows (and so into their SSE4.1 clone).
+inline __attribute__((always_inline)) BrickSample brick_sample(double x, double y) {
   constexpr double kW = 0.2, kH = 0.07, kHalfJoint = 0.008, kBevel = 0.02;
   const int row = static_cast<int>(std::floor(y / kH));
   const double shifted = x + ((row & 1) ? 0.5 * kW : 0.0);
@@ -165,11 +164,18 @@ BrickSample brick_at(double x, double y) {
   return s;
 }
 
+}  // namespace
+
+BrickSample brick_at(double x, double y) { return brick_sample(x, y); }
+
 namespace {
 
 // Straight colour of one shaded sample, or false when the ray misses the texel region.
-bool shade_sample(const PlaneFrame& f, const Vec3& plane_vector, const ConvexPolygon& texels,
-                  const Vec3& light, const Vec2& p, Vec3& colour) {
+inline __attribute__((always_inline)) bool shade_sample(const PlaneFrame& f,
+                                                        const Vec3& plane_vector,
+                                                        const ConvexPolygon& texels,
+                                                        const Vec3& light, const Vec2& p,
+                                                        Vec3& colour) {
   const Vec3 r = f.ray(p);
   const double d = glm::dot(plane_vector, r);
   if (!(d > 1e-12)) return false;
@@ -178,11 +184,47 @@ bool shade_sample(const PlaneFrame& f, const Vec3& plane_vector, const ConvexPol
   const Vec2 uv(glm::dot(rel, f.right) / f.texel.x + f.half.x,
                 f.half.y - glm::dot(rel, f.up) / f.texel.y);
   if (!contains(texels, uv)) return false;
-  const BrickSample b = brick_at(uv.x * f.texel.x, uv.y * f.texel.y);
+  const BrickSample b = brick_sample(uv.x * f.texel.x, uv.y * f.texel.y);
   // The slope is along u (right) and v (down): the normal leans against it.
   const Vec3 n = glm::normalize(f.front - b.slope.x * f.right + b.slope.y * f.up);
   colour += lit(b.material, n, x, light);
   return true;
+}
+
+// What every row of a shaded render shares.
+struct ShadedRows {
+  const PlaneFrame& f;
+  const Vec3& plane_vector;
+  const ConvexPolygon& texels;
+  const Vec3& light;
+  const std::vector<Vec2>& samples;  // offsets in a pixel
+  const LayerBox& box;
+};
+
+// Shades the layer's pixels in rows [begin, end), tallying them in `stats`
+// (OFLAB_SSE41_CLONES: the same values).
+OFLAB_SSE41_CLONES void shade_rows(const ShadedRows& r, int begin, int end, WarpedLayer& out,
+                                   ContentStats& stats) {
+  ScanConverter scan(out.layer.polygon, r.box.width, r.box.height);
+  scan.clip_rows(begin, end);
+  PixelSpan span;
+  while (scan.next(span)) {
+    Pixel* row = out.layer.image.row(span.y);
+    for (int x = span.x_begin; x < span.x_end; ++x) {
+      Vec3 colour(0.0);
+      int hits = 0;
+      for (const Vec2& s : r.samples) {
+        const Vec2 p(r.box.x0 + x + s.x, r.box.y0 + span.y + s.y);
+        hits += shade_sample(r.f, r.plane_vector, r.texels, r.light, p, colour) ? 1 : 0;
+      }
+      stats.work_units += static_cast<std::int64_t>(r.samples.size());
+      if (hits == 0) continue;
+      const double coverage = static_cast<double>(hits) / r.samples.size();
+      const Vec3 c = colour / static_cast<double>(r.samples.size());  // premultiplied
+      row[x] = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), to_byte(coverage)};
+      ++stats.pixels_written;
+    }
+  }
 }
 
 ContentStats render_shaded(const LayerContent& content, const Camera& camera, const PlanePose& pose,
@@ -197,27 +239,8 @@ ContentStats render_shaded(const LayerContent& content, const Camera& camera, co
   std::array<ContentStats, kMaxBands> band_stats{};
   const int min_rows = std::max(4, 4096 / std::max(1, box.width * content.quality));
   for_each_band(box.height, min_rows, [&](int band, int begin, int end) {
-    ContentStats& stats = band_stats[static_cast<std::size_t>(band)];
-    ScanConverter scan(out.layer.polygon, box.width, box.height);
-    scan.clip_rows(begin, end);
-    PixelSpan span;
-    while (scan.next(span)) {
-      Pixel* row = out.layer.image.row(span.y);
-      for (int x = span.x_begin; x < span.x_end; ++x) {
-        Vec3 colour(0.0);
-        int hits = 0;
-        for (const Vec2& s : samples) {
-          const Vec2 p(box.x0 + x + s.x, box.y0 + span.y + s.y);
-          hits += shade_sample(f, plane_vec, texels, light, p, colour) ? 1 : 0;
-        }
-        stats.work_units += static_cast<std::int64_t>(samples.size());
-        if (hits == 0) continue;
-        const double coverage = static_cast<double>(hits) / samples.size();
-        const Vec3 c = colour / static_cast<double>(samples.size());  // premultiplied
-        row[x] = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), to_byte(coverage)};
-        ++stats.pixels_written;
-      }
-    }
+    const ShadedRows rows{f, plane_vec, texels, light, samples, box};
+    shade_rows(rows, begin, end, out, band_stats[static_cast<std::size_t>(band)]);
   });
   const ContentStats stats = sum(band_stats);
   out.stats.pixels_written = stats.pixels_written;
@@ -299,7 +322,7 @@ int clip_near(const std::array<Vec3, 4>& in, double z_min, std::array<Vec3, 5>& 
   int n = 0;
   for (std::size_t k = 0; k < in.size(); ++k) {
     const Vec3& a = in[k];
-    const Vec3& b = in[(k + 1) % in.size()];
+    const Vec3& b = in[next_vertex(k, in.size())];
     if (a.z >= z_min) out[n++] = a;
     if ((a.z >= z_min) != (b.z >= z_min)) out[n++] = a + (b - a) * ((z_min - a.z) / (b.z - a.z));
   }
@@ -315,7 +338,7 @@ std::vector<Vec3> region_lines(const ConvexPolygon& region) {
   std::vector<Vec3> lines;
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2& a = v[k];
-    const Vec2& b = v[(k + 1) % v.size()];
+    const Vec2& b = v[next_vertex(k, v.size())];
     Vec3 line(a.y - b.y, b.x - a.x, a.x * b.y - a.y * b.x);
     if (line.x * inside.x + line.y * inside.y + line.z < 0.0) line = -line;
     lines.push_back(line);
@@ -415,6 +438,13 @@ void draw_face_rows(const FaceRaster& face, const LayerBox& box, int begin, int 
   stats.pixels_written += written;
 }
 
+// Every face's rows [begin, end), in face order (OFLAB_SSE41_CLONES: the same values).
+OFLAB_SSE41_CLONES void draw_faces(const std::vector<FaceRaster>& faces, const LayerBox& box,
+                                   int begin, int end, std::vector<float>& depth, WarpedLayer& out,
+                                   ContentStats& stats) {
+  for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
+}
+
 ContentStats render_impostor(const LayerContent& content, const Camera& camera,
                              const PlanePose& pose, const ConvexPolygon& region, WarpedLayer& out) {
   const LayerBox box = prepare_layer(region, out, false);  // cleared band by band below
@@ -453,7 +483,7 @@ ContentStats render_impostor(const LayerContent& content, const Camera& camera,
       std::fill(depth.begin() + first, depth.begin() + last, 0.0f);
       std::fill(out.layer.image.row(begin), out.layer.image.row(begin) + (last - first), Pixel{});
     }
-    for (const FaceRaster& face : faces) draw_face_rows(face, box, begin, end, depth, out, stats);
+    draw_faces(faces, box, begin, end, depth, out, stats);
   });
   const ContentStats stats = sum(band_stats);
   out.stats.pixels_written = stats.pixels_written;

@@ -155,7 +155,7 @@ std::int64_t composite_over_region(Image& frame, const Layer& layer, int offset_
   ConvexPolygon polygon = translated(layer.polygon, offset_x, offset_y);
   const std::vector<Vec2>& v = region.vertices();
   for (std::size_t k = 0; k < v.size() && !polygon.empty(); ++k) {
-    const Vec2 e = v[(k + 1) % v.size()] - v[k];
+    const Vec2 e = v[next_vertex(k, v.size())] - v[k];
     polygon = clip_to_half_plane(polygon, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
   }
   if (polygon.empty()) return 0;

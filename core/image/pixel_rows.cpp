@@ -67,7 +67,7 @@ bool line_inside(const std::vector<Vec2>& v, double y, double& x_min, double& x_
   const std::size_t n = v.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Vec2& a = v[k];
-    const Vec2& b = v[(k + 1) % n];
+    const Vec2& b = v[next_vertex(k, n)];
     // Inside (clockwise on screen, non-negative shoelace area): cross(b - a, p - a) >= 0.
     const double ex = b.x - a.x, ey = b.y - a.y;
     const double c = -ey;                           // coefficient of p.x

@@ -16,7 +16,7 @@ double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
 double signed_area(const std::vector<Vec2>& v) {
   double twice = 0.0;
   for (std::size_t k = 0; k < v.size(); ++k) {
-    twice += cross(v[k], v[(k + 1) % v.size()]);
+    twice += cross(v[k], v[next_vertex(k, v.size())]);
   }
   return 0.5 * twice;
 }
@@ -101,7 +101,7 @@ ConvexPolygon clip_to_half_plane(const ConvexPolygon& polygon, const Vec3& line)
   out.reserve(v.size() + 1);
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2& p = v[k];
-    const Vec2& q = v[(k + 1) % v.size()];
+    const Vec2& q = v[next_vertex(k, v.size())];
     const double fp = line.x * p.x + line.y * p.y + line.z;
     const double fq = line.x * q.x + line.y * q.y + line.z;
     if (fp >= 0.0) out.push_back(p);
@@ -169,7 +169,7 @@ bool contains(const ConvexPolygon& polygon, const Vec2& p) {
   const std::vector<Vec2>& v = polygon.vertices();
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2& a = v[k];
-    const Vec2& b = v[(k + 1) % v.size()];
+    const Vec2& b = v[next_vertex(k, v.size())];
     if (cross(b - a, p - a) < 0.0) return false;
   }
   return true;

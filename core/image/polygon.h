@@ -22,6 +22,11 @@ struct BoundingBox {
   double y_max = 0.0;
 };
 
+// The index after vertex k of a cyclic list of n vertices (0 after n - 1), k < n: the wrap as
+// a comparison, not a division (the per-vertex loops of clipping and scan set-up run for
+// every face of every render).
+inline std::size_t next_vertex(std::size_t k, std::size_t n) { return k + 1 == n ? 0 : k + 1; }
+
 // A convex polygon given by its vertices in order. Invariants: every coordinate is
 // finite, the vertex cycle is convex and it is ordered so that its shoelace area
 // sum(x_k * y_{k+1} - x_{k+1} * y_k) / 2 is >= 0 (clockwise on screen, where y points

@@ -20,6 +20,17 @@
 
 #include "image/polygon.h"
 
+// Marks a function whose loops call the scan conversion (or other floors and ceilings) per
+// row or per sample: on x86-64 Linux it is cloned for SSE4.1, chosen when the process starts,
+// whose rounding instructions then take std::floor and std::ceil (exact either way, so the
+// same values; the baseline clone emulates each with about a dozen instructions). Elsewhere
+// (the WebAssembly page) it marks nothing.
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__)
+#define OFLAB_SSE41_CLONES __attribute__((target_clones("sse4.1", "default")))
+#else
+#define OFLAB_SSE41_CLONES
+#endif
+
 namespace oflab {
 
 // Defined here, with crossing and next below, so that the per-row loops of the callers
@@ -100,6 +111,23 @@ class ScanConverter {
 };
 
 // Inline definitions (see the top of the file).
+inline ScanConverter::ScanConverter(const ConvexPolygon& polygon, int clip_width, int clip_height)
+    : vertices_(polygon.vertices()), clip_width_(clip_width) {
+  count_ = static_cast<int>(vertices_.size());
+  if (polygon.empty() || clip_width <= 0 || clip_height <= 0) {
+    row_ = end_row_ = 0;
+    return;
+  }
+  int top = 0;
+  for (int k = 1; k < count_; ++k) {
+    if (vertices_[k].y < vertices_[top].y) top = k;
+    if (vertices_[k].y > vertices_[bottom_].y) bottom_ = k;
+  }
+  row_ = scan_detail::first_centre_at_or_after(vertices_[top].y, 0, clip_height);
+  end_row_ = scan_detail::first_centre_at_or_after(vertices_[bottom_].y, 0, clip_height);
+  left_ = Chain{top, 1};
+  right_ = Chain{top, -1};
+}
 
 inline double ScanConverter::crossing(Chain& chain, double y) const {
   // Advance past every vertex at or above the row centre: the current edge then runs

@@ -36,7 +36,7 @@ ConvexPolygon eroded(const ConvexPolygon& polygon, double margin) {
   lines.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
     const Vec2& a = v[k];
-    const Vec2& b = v[(k + 1) % n];
+    const Vec2& b = v[next_vertex(k, n)];
     if (glm::length(b - a) <= 0.0) continue;
     const Vec3 line = inside_line(a, b);
     lines.emplace_back(line.x, line.y, line.z - margin);
@@ -129,7 +129,7 @@ bool OcclusionTest::make_occluder(const ConvexPolygon& region, double inset, Vec
   o.lines.reserve(v.size());
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2 a = v[k] + offset;
-    const Vec2 b = v[(k + 1) % v.size()] + offset;
+    const Vec2 b = v[next_vertex(k, v.size())] + offset;
     if (glm::length(b - a) <= 0.0) continue;
     const Vec3 line = inside_line(a, b);
     o.lines.emplace_back(line.x, line.y, line.z - inset);

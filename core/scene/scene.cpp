@@ -19,7 +19,7 @@ Vec3 newell_normal(const std::vector<Vec3>& v) {
   Vec3 n(0.0);
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec3& a = v[k];
-    const Vec3& b = v[(k + 1) % v.size()];
+    const Vec3& b = v[next_vertex(k, v.size())];
     n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
   }
   return n;

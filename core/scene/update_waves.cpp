@@ -20,7 +20,7 @@ using Clock = WallClock;
 ConvexPolygon intersection(ConvexPolygon a, const ConvexPolygon& b) {
   const std::vector<Vec2>& v = b.vertices();
   for (std::size_t k = 0; k < v.size() && !a.empty(); ++k) {
-    const Vec2 e = v[(k + 1) % v.size()] - v[k];
+    const Vec2 e = v[next_vertex(k, v.size())] - v[k];
     a = clip_to_half_plane(a, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
   }
   return b.empty() ? ConvexPolygon() : a;
