@@ -13,6 +13,7 @@
 #include "content/depth_span.h"
 #include "flow/named_values.h"
 #include "image/scan_conversion.h"
+#include "image/sse41_clones.h"
 #include "image/thread_pool.h"
 
 namespace oflab {

@@ -20,17 +20,6 @@
 
 #include "image/polygon.h"
 
-// Marks a function whose loops call the scan conversion (or other floors and ceilings) per
-// row or per sample: on x86-64 Linux it is cloned for SSE4.1, chosen when the process starts,
-// whose rounding instructions then take std::floor and std::ceil (exact either way, so the
-// same values; the baseline clone emulates each with about a dozen instructions). Elsewhere
-// (the WebAssembly page) it marks nothing.
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__)
-#define OFLAB_SSE41_CLONES __attribute__((target_clones("sse4.1", "default")))
-#else
-#define OFLAB_SSE41_CLONES
-#endif
-
 namespace oflab {
 
 // Defined here, with crossing and next below, so that the per-row loops of the callers
