@@ -47,7 +47,8 @@ double specular_power(double c, double shininess) {
 namespace {
 
 // Linear colour (unclamped) of `m` at viewer-frame point x with unit normal n, light l (unit).
-Vec3 lit(const ContentMaterial& m, const Vec3& n, const Vec3& x, const Vec3& l) {
+inline __attribute__((always_inline)) Vec3 lit(const ContentMaterial& m, const Vec3& n,
+                                               const Vec3& x, const Vec3& l) {
   const Vec3 v = glm::normalize(-x);
   const Vec3 h = glm::normalize(l + v);
   const double diffuse = std::max(0.0, glm::dot(n, l));
@@ -171,7 +172,8 @@ BrickSample brick_at(double x, double y) { return brick_sample(x, y); }
 
 namespace {
 
-// Straight colour of one shaded sample, or false when the ray misses the texel region.
+// Straight colour of one shaded sample, or false when the ray misses the texel region
+// (precondition: texels not empty).
 inline __attribute__((always_inline)) bool shade_sample(const PlaneFrame& f,
                                                         const Vec3& plane_vector,
                                                         const ConvexPolygon& texels,
@@ -184,7 +186,7 @@ inline __attribute__((always_inline)) bool shade_sample(const PlaneFrame& f,
   const Vec3 rel = x - f.centre;
   const Vec2 uv(glm::dot(rel, f.right) / f.texel.x + f.half.x,
                 f.half.y - glm::dot(rel, f.up) / f.texel.y);
-  if (!contains(texels, uv)) return false;
+  if (!within_vertices(texels.vertices(), uv)) return false;
   const BrickSample b = brick_sample(uv.x * f.texel.x, uv.y * f.texel.y);
   // The slope is along u (right) and v (down): the normal leans against it.
   const Vec3 n = glm::normalize(f.front - b.slope.x * f.right + b.slope.y * f.up);
@@ -206,6 +208,7 @@ struct ShadedRows {
 // (OFLAB_SSE41_CLONES: the same values).
 OFLAB_SSE41_CLONES void shade_rows(const ShadedRows& r, int begin, int end, WarpedLayer& out,
                                    ContentStats& stats) {
+  const bool any = !r.texels.empty();  // else no sample hits (shade_sample's precondition)
   ScanConverter scan(out.layer.polygon, r.box.width, r.box.height);
   scan.clip_rows(begin, end);
   PixelSpan span;
@@ -216,7 +219,7 @@ OFLAB_SSE41_CLONES void shade_rows(const ShadedRows& r, int begin, int end, Warp
       int hits = 0;
       for (const Vec2& s : r.samples) {
         const Vec2 p(r.box.x0 + x + s.x, r.box.y0 + span.y + s.y);
-        hits += shade_sample(r.f, r.plane_vector, r.texels, r.light, p, colour) ? 1 : 0;
+        hits += any && shade_sample(r.f, r.plane_vector, r.texels, r.light, p, colour) ? 1 : 0;
       }
       stats.work_units += static_cast<std::int64_t>(r.samples.size());
       if (hits == 0) continue;

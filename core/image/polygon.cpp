@@ -165,14 +165,7 @@ ConvexPolygon translated(const ConvexPolygon& polygon, double dx, double dy) {
 }
 
 bool contains(const ConvexPolygon& polygon, const Vec2& p) {
-  if (polygon.empty()) return false;
-  const std::vector<Vec2>& v = polygon.vertices();
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const Vec2& a = v[k];
-    const Vec2& b = v[next_vertex(k, v.size())];
-    if (cross(b - a, p - a) < 0.0) return false;
-  }
-  return true;
+  return !polygon.empty() && within_vertices(polygon.vertices(), p);
 }
 
 }  // namespace oflab

@@ -106,4 +106,17 @@ ConvexPolygon translated(const ConvexPolygon& polygon, double dx, double dy);
 // True if p lies inside or on the boundary of the polygon (false for an empty polygon).
 bool contains(const ConvexPolygon& polygon, const Vec2& p);
 
+// contains' test of a non-empty polygon's vertex cycle v (ConvexPolygon::vertices), without
+// its emptiness check, for a loop that checked it once (inline: a shaded render runs it per
+// sample): no edge has p strictly on its outer side.
+inline bool within_vertices(const std::vector<Vec2>& v, const Vec2& p) {
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const Vec2& a = v[k];
+    const Vec2& b = v[next_vertex(k, v.size())];
+    // cross(b - a, p - a) < 0
+    if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) < 0.0) return false;
+  }
+  return true;
+}
+
 }  // namespace oflab
