@@ -25,18 +25,6 @@ const char* camera_problem(const Camera& camera) {
   return "";
 }
 
-Vec2 project_centred(const Camera& camera, const Vec3& r) {
-  return Vec2(camera.focal_px * r.x / r.z, camera.focal_px * r.y / r.z);
-}
-
-Vec2 centred_to_pixel(const Camera& camera, const Vec2& centred) {
-  return centred + Vec2(camera.cx, camera.cy);
-}
-
-Vec2 pixel_to_centred(const Camera& camera, const Vec2& pixel) {
-  return pixel - Vec2(camera.cx, camera.cy);
-}
-
 Mat3 centred_intrinsics(const Camera& camera) {
   return mat3_from_rows({camera.focal_px, 0.0, 0.0}, {0.0, camera.focal_px, 0.0}, {0.0, 0.0, 1.0});
 }

@@ -28,12 +28,19 @@ Camera make_camera(double focal_px, int width, int height);
 // Empty string when the camera is usable, otherwise a one-line description of what is wrong.
 const char* camera_problem(const Camera& camera);
 
-// Centred pixel position of the camera-frame point r. Precondition: r.z > 0.
-Vec2 project_centred(const Camera& camera, const Vec3& r);
+// Centred pixel position of the camera-frame point r. Precondition: r.z > 0. (Inline, as the
+// two below: per-pixel loops call them.)
+inline Vec2 project_centred(const Camera& camera, const Vec3& r) {
+  return Vec2(camera.focal_px * r.x / r.z, camera.focal_px * r.y / r.z);
+}
 
 // Conversions between centred and top-left pixel coordinates (same units, shifted origin).
-Vec2 centred_to_pixel(const Camera& camera, const Vec2& centred);
-Vec2 pixel_to_centred(const Camera& camera, const Vec2& pixel);
+inline Vec2 centred_to_pixel(const Camera& camera, const Vec2& centred) {
+  return centred + Vec2(camera.cx, camera.cy);
+}
+inline Vec2 pixel_to_centred(const Camera& camera, const Vec2& pixel) {
+  return pixel - Vec2(camera.cx, camera.cy);
+}
 
 // The intrinsic matrix for centred pixels, diag(f, f, 1): maps a camera-frame direction
 // (X, Y, Z) to homogeneous centred pixels.

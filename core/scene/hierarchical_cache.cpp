@@ -431,8 +431,9 @@ double HierarchicalCache::frame(const ViewerPose& current, const std::vector<cha
   return ms_since(t2);
 }
 
-double HierarchicalCache::pixel_error(const NodeState& s, const Mat3& from_frame,
-                                      const RigidStep3& step, const Vec2& centre) const {
+// Inlined into measure_pixels' rows, which call it for every shown pixel.
+inline __attribute__((always_inline)) double HierarchicalCache::pixel_error(
+    const NodeState& s, const Mat3& from_frame, const RigidStep3& step, const Vec2& centre) const {
   // Where the cached image's pixel shown here came from, and the surface point there.
   const Vec2 q = apply_homography(from_frame, centre);
   const int qx = static_cast<int>(std::floor(q.x)), qy = static_cast<int>(std::floor(q.y));
