@@ -21,12 +21,15 @@
 #include "models/window_model.h"
 #include "player/policy_comparison.h"
 #include "player/stage_times.h"
+#include "scene/scene_animator.h"  // SceneSettings
 #include "views/frame_inspector.h"
 #include "views/image_canvas.h"
 #include "views/panel_captions.h"
 #include "views/panel_layout.h"
 
 namespace oflab {
+
+const double AnimationView::kNear = SceneSettings{}.near;
 
 namespace {
 

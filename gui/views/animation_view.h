@@ -157,7 +157,7 @@ class AnimationView : public ViewPage {
   // The canvas with the frame inspector beside it, the readout under them, then the Exact
   // picker and the zoom.
   static constexpr int kDifferenceScale = 128;  // grey levels at the colour bar's top
-  static constexpr double kNear = 0.05;  // near plane of the exact render (SceneSettings::near)
+  static const double kNear;  // near plane of the exact render: SceneSettings{}.near, as the page's
   static constexpr double kCaptionLine = 1.4;  // caption line height, times the text size
 
   QWidget* make_panels();

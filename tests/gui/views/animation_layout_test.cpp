@@ -31,6 +31,7 @@
 #include "models/scene_model.h"
 #include "player/policy_comparison.h"
 #include "scene/scene.h"
+#include "scene/scene_animator.h"  // SceneSettings
 #include "scene/view_culling.h"
 #include "views/animation_view.h"
 #include "views/panel_captions.h"
@@ -40,7 +41,7 @@
 namespace oflab::test {
 namespace {
 
-constexpr double kNear = 0.05;
+const double kNear = SceneSettings{}.near;  // the exact render's near plane
 
 class AnimationLayoutTest : public WindowTest {
  protected:
