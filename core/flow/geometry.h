@@ -29,6 +29,11 @@ inline std::array<double, 9> row_major(const Mat3& m) {
           entry(m, 1, 2), entry(m, 2, 0), entry(m, 2, 1), entry(m, 2, 2)};
 }
 
+// The z component of the cross product of 2D vectors a and b (a.x b.y - a.y b.x): twice the
+// signed area of the triangle (0, a, b), positive when b turns clockwise from a on screen (y
+// down).
+inline double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+
 // Applies homography H to the 2D point p (homogeneous w = 1) and divides by the third
 // coordinate. Precondition: the denominator is not zero (the point is not sent to
 // infinity); callers near the horizon line must check homography_denominator first.

@@ -11,8 +11,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-
 double signed_area(const std::vector<Vec2>& v) {
   double twice = 0.0;
   for (std::size_t k = 0; k < v.size(); ++k) {

@@ -113,8 +113,7 @@ inline bool within_vertices(const std::vector<Vec2>& v, const Vec2& p) {
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2& a = v[k];
     const Vec2& b = v[next_vertex(k, v.size())];
-    // cross(b - a, p - a) < 0
-    if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) < 0.0) return false;
+    if (cross(b - a, p - a) < 0.0) return false;
   }
   return true;
 }

@@ -16,8 +16,6 @@ namespace {
 
 using splat::pixel_direction;
 
-double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-
 // The vertex at pixel corner (x, y): the nearest surface among the pixels touching it.
 void lift_vertex(const DepthFrame& depth, const Camera& camera, int x, int y, DepthMesh& mesh) {
   const Vec3 direction = pixel_direction(camera, x, y);
