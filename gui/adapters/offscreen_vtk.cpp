@@ -3,6 +3,9 @@
 #include <vtkRenderWindow.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <cstdint>
+#include <cstring>
+
 #include "report/charts.h"
 
 namespace oflab {
@@ -16,6 +19,9 @@ vtkSmartPointer<vtkRenderWindow> make_offscreen_window() {
   window->SetDisplayId(shared_x_display());
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
+  // The picture is read from the framebuffer VTK renders into (read_window_pixels reads the
+  // back buffer), so the copy into the display framebuffer that swapping makes is not needed.
+  window->SetSwapBuffers(0);
   return window;
 }
 
@@ -35,7 +41,13 @@ void read_window_pixels(vtkRenderWindow* window, vtkUnsignedCharArray* scratch, 
   for (int y = 0; y < h; ++y) {
     const unsigned char* p = in + 4 * size_t(h - 1 - y) * size_t(w);
     auto* row = reinterpret_cast<QRgb*>(into->scanLine(y));
-    for (int x = 0; x < w; ++x, p += 4) row[x] = qRgb(p[0], p[1], p[2]);
+    for (int x = 0; x < w; ++x, p += 4) {
+      // RGBA bytes as a little-endian word 0xAABBGGRR to 0xffRRGGBB (qRgb), a loop the
+      // compiler vectorises.
+      std::uint32_t rgba;
+      std::memcpy(&rgba, p, sizeof(rgba));
+      row[x] = 0xff000000u | ((rgba & 0xffu) << 16) | (rgba & 0xff00u) | ((rgba >> 16) & 0xffu);
+    }
   }
 }
 

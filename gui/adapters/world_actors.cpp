@@ -143,9 +143,9 @@ void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned c
 void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& backdrop) {
   int* dims = pixels->GetDimensions();
   if (dims[0] != image.width() || dims[1] != image.height() ||
-      pixels->GetNumberOfScalarComponents() != 3 || !pixels->GetPointData()->GetScalars()) {
+      pixels->GetNumberOfScalarComponents() != 4 || !pixels->GetPointData()->GetScalars()) {
     pixels->SetDimensions(image.width(), image.height(), 1);
-    pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
   }
   unsigned char* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
   // Premultiplied: the colour plus what shows through (1 - alpha) of the backdrop. What shows
@@ -158,26 +158,29 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
   const auto over = [](unsigned char colour, double shown_through) {
     return static_cast<unsigned char>(std::min(255.0, colour + shown_through + 0.5));
   };
-  // Opaque and empty pixels (most of a frame) take the short ways, with the same bytes.
-  const unsigned char backdrop_bytes[3] = {over(0, through[0][0]), over(0, through[1][0]),
-                                           over(0, through[2][0])};
+  // A pixel's four bytes r, g, b, a are the texel's (Pixel and the RGBA texel share their
+  // layout), so an opaque pixel is copied as it is; an empty one takes the backdrop's texel.
+  static_assert(sizeof(Pixel) == 4, "a pixel is four bytes r, g, b, a");
+  const Pixel backdrop_texel{over(0, through[0][0]), over(0, through[1][0]), over(0, through[2][0]),
+                             255};
   // Rows in bands on core's worker threads, each writing its own rows.
   const int w = image.width();
   for_each_band(image.height(), 32, [&](int, int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
       const Pixel* row = image.row(y);
-      unsigned char* to = out + static_cast<std::size_t>(y) * w * 3;
-      for (int x = 0; x < w; ++x, to += 3) {
+      unsigned char* to = out + static_cast<std::size_t>(y) * w * 4;
+      for (int x = 0; x < w; ++x, to += 4) {
         const Pixel p = row[x];
+        Pixel texel;
         if (p.a == 255) {  // opaque: the colour itself (nothing shows through)
-          to[0] = p.r, to[1] = p.g, to[2] = p.b;
+          texel = p;
         } else if ((p.a | p.r | p.g | p.b) == 0) {  // empty: the backdrop
-          to[0] = backdrop_bytes[0], to[1] = backdrop_bytes[1], to[2] = backdrop_bytes[2];
+          texel = backdrop_texel;
         } else {
-          to[0] = over(p.r, through[0][p.a]);
-          to[1] = over(p.g, through[1][p.a]);
-          to[2] = over(p.b, through[2][p.a]);
+          texel = Pixel{over(p.r, through[0][p.a]), over(p.g, through[1][p.a]),
+                        over(p.b, through[2][p.a]), 255};
         }
+        std::memcpy(to, &texel, sizeof(texel));
       }
     }
   });

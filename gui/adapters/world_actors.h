@@ -50,9 +50,10 @@ void set_coloured_polygons(vtkPolyData* data, const std::vector<std::vector<Vec3
 // Replaces only the cell colours of `data` (same cell count as before).
 void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned char, 4>>& colours);
 
-// Copies a premultiplied core image into `pixels` as opaque RGB over `backdrop` (0..1 per
-// channel; what shows where nothing was drawn), row 0 first (the top of the image is texture
-// coordinate 0), reusing its storage when the size is unchanged.
+// Copies a premultiplied core image into `pixels` as opaque RGBA (alpha 255 everywhere) over
+// `backdrop` (0..1 per channel; what shows where nothing was drawn), row 0 first (the top of
+// the image is texture coordinate 0), reusing its storage when the size is unchanged. Four
+// components, so that an opaque pixel is copied whole and OpenGL takes the texels as they are.
 void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& backdrop);
 // Copies a QImage into `pixels` as RGBA, row 0 first.
 void copy_texture_pixels(const QImage& image, vtkImageData* pixels);

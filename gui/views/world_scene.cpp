@@ -67,6 +67,9 @@ void WorldScene::add_viewer_actors() {
   frame_texture->SetInputData(frame_pixels);
   frame_texture->InterpolateOn();
   image_plane.actor->SetTexture(frame_texture);
+  // The frame's texels are opaque (copy_frame_pixels): VTK need not scan their alpha each frame
+  // to learn whether the plane is translucent.
+  image_plane.actor->ForceOpaqueOn();
   for (PolyActor* p : {&frustum, &image_plane}) p->actor->SetUserMatrix(viewer_matrix);
 }
 

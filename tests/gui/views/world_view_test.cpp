@@ -104,7 +104,8 @@ TEST(WorldFramePixels, ThePremultipliedFrameOverTheBackdrop) {
     copy_frame_pixels(image, pixels, back);
     set_worker_threads(1);
     const auto* p = static_cast<const unsigned char*>(pixels->GetScalarPointer());
-    return std::vector<unsigned char>(p, p + size_t(image.width()) * image.height() * 3);
+    EXPECT_EQ(pixels->GetNumberOfScalarComponents(), 4);
+    return std::vector<unsigned char>(p, p + size_t(image.width()) * image.height() * 4);
   };
   const std::vector<unsigned char> one = copy(1, backdrop), two = copy(2, backdrop);
   EXPECT_EQ(one, two);
@@ -115,8 +116,9 @@ TEST(WorldFramePixels, ThePremultipliedFrameOverTheBackdrop) {
       const std::uint8_t channel[3] = {p.r, p.g, p.b};
       for (int c = 0; c < 3; ++c) {
         const double want = std::min(255.0, channel[c] + (255 - p.a) * double(backdrop[c]) + 0.5);
-        wrong += one[(size_t(y) * image.width() + x) * 3 + c] != static_cast<unsigned char>(want);
+        wrong += one[(size_t(y) * image.width() + x) * 4 + c] != static_cast<unsigned char>(want);
       }
+      wrong += one[(size_t(y) * image.width() + x) * 4 + 3] != 255;  // opaque
     }
   }
   EXPECT_EQ(wrong, 0u);
