@@ -166,16 +166,19 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
   // Rows in bands on core's worker threads, each writing its own rows.
   const int w = image.width();
   for_each_band(image.height(), 32, [&](int, int y0, int y1) {
+    // Locals, as the byte stores below could alias anything the lambda reaches by reference.
+    const int width = w;
+    const Pixel empty = backdrop_texel;
     for (int y = y0; y < y1; ++y) {
       const Pixel* row = image.row(y);
-      unsigned char* to = out + static_cast<std::size_t>(y) * w * 4;
-      for (int x = 0; x < w; ++x, to += 4) {
+      unsigned char* to = out + static_cast<std::size_t>(y) * width * 4;
+      for (int x = 0; x < width; ++x, to += 4) {
         const Pixel p = row[x];
         Pixel texel;
         if (p.a == 255) {  // opaque: the colour itself (nothing shows through)
           texel = p;
         } else if ((p.a | p.r | p.g | p.b) == 0) {  // empty: the backdrop
-          texel = backdrop_texel;
+          texel = empty;
         } else {
           texel = Pixel{over(p.r, through[0][p.a]), over(p.g, through[1][p.a]),
                         over(p.b, through[2][p.a]), 255};

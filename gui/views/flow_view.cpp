@@ -11,6 +11,7 @@
 #include "adapters/paint_helpers.h"
 #include "models/scene_model.h"
 #include "models/window_model.h"
+#include "player/stage_times.h"
 #include "views/coefficient_table.h"
 #include "views/image_canvas.h"
 
@@ -23,6 +24,8 @@ FlowView::FlowView(WindowModel* window, QWidget* parent)
   canvas_->setObjectName(QStringLiteral("flow_canvas"));
   renderer_ = std::make_unique<FlowRenderer>();
   renderer_->set_texture(model_->texture());
+  painter_.setMaxThreadCount(1);
+  painter_.setExpiryTimeout(-1);
   table_ = new CoefficientTable(this);
 
   // Side panel: what to draw above the coefficient table, so the options never widen the
@@ -55,7 +58,7 @@ FlowView::FlowView(WindowModel* window, QWidget* parent)
   connect(model_, &SceneModel::scene_changed, this, &FlowView::refresh);
   connect(window_, &WindowModel::flow_display_changed, this, &FlowView::show_display);
   connect(model_, &SceneModel::texture_changed, this, [this] {
-    renderer_->set_texture(model_->texture());
+    renderer().set_texture(model_->texture());
     refresh();
   });
   connect(canvas_, &ImageCanvas::resized, this, [this] {
@@ -63,7 +66,7 @@ FlowView::FlowView(WindowModel* window, QWidget* parent)
   });
 }
 
-FlowView::~FlowView() = default;
+FlowView::~FlowView() { renderer(); }  // the painting thread done with it
 
 QWidget* FlowView::make_option_bar() {
   auto* bar = new QWidget(this);
@@ -123,9 +126,13 @@ void FlowView::update_scene() {
       make_flow_context(scene.camera, model_->current_pose(), model_->current_motion());
   QString frame = tr("frame %1, t = %2 s").arg(model_->frame()).arg(model_->time(), 0, 'f', 2);
   if (!model_->script_name().isEmpty()) frame.prepend(tr("script %1, ").arg(model_->script_name()));
-  renderer_->update(context, display(), frame);
+  {
+    const StageTimer drawing(FrameStage::kDrawing);  // the streamlines and arrows
+    renderer().update(context, display(), frame);
+  }
+  const StageTimer text(FrameStage::kText);  // the side table's numbers
   table_->show_terms(context.terms, 0.5 * std::hypot(scene.camera.width, scene.camera.height));
-  const bool outside = !renderer_->plane_in_image();
+  const bool outside = !renderer().plane_in_image();
   if (outside_note_->isVisibleTo(this) != outside) outside_note_->setVisible(outside);
   table_->setEnabled(!outside);
   dirty_ = false;
@@ -133,16 +140,43 @@ void FlowView::update_scene() {
 
 double FlowView::plane_share() {
   render_image();
-  return renderer_->plane_share(canvas_->size());
+  return renderer().plane_share(canvas_->size());
 }
 
-void FlowView::paint_canvas() { canvas_->set_image(renderer_->paint(canvas_->size())); }
+void FlowView::paint_canvas() {
+  const StageTimer drawing(FrameStage::kDrawing);
+  canvas_->set_image(renderer().paint(canvas_->size()));
+}
+
+void FlowView::paint_canvas_later() {
+  FlowRenderer* renderer = &this->renderer();
+  auto promise = std::make_shared<std::promise<QImage>>();
+  painting_ = promise->get_future().share();
+  const QSize size = canvas_->size();
+  painter_.start([promise, renderer, size] {
+    try {
+      promise->set_value(renderer->paint(size));
+    } catch (...) {
+      promise->set_exception(std::current_exception());
+    }
+  });
+  canvas_->set_pending_image(painting_);
+}
+
+FlowRenderer& FlowView::renderer() const {
+  if (painting_.valid()) {
+    const StageTimer drawing(FrameStage::kDrawing);  // the rest of the painting thread's work
+    painting_.wait();
+    painting_ = std::shared_future<QImage>();
+  }
+  return *renderer_;
+}
 
 void FlowView::refresh() {
   dirty_ = true;
   if (!isVisible()) return;
   update_scene();
-  paint_canvas();
+  paint_canvas_later();
 }
 
 void FlowView::showEvent(QShowEvent* event) {
@@ -156,10 +190,10 @@ QImage FlowView::render_image() {
   return canvas_->image();
 }
 
-double FlowView::smallest_text_px() const { return renderer_->smallest_text_px(); }
+double FlowView::smallest_text_px() const { return renderer().smallest_text_px(); }
 
 void FlowView::set_theme(const ViewTheme& theme) {
-  renderer_->set_theme(theme);
+  renderer().set_theme(theme);
   canvas_->set_background(to_qcolor(theme.background));
   refresh();
 }

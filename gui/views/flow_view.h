@@ -3,6 +3,8 @@
 // drawn, and the coefficient table beside it.
 #pragma once
 
+#include <QThreadPool>
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -38,17 +40,18 @@ class FlowView : public ViewPage {
   // The widget that shows the painted flow picture.
   ImageCanvas* canvas() const { return canvas_; }
   // Largest magnitude of the shown part after the last update, px/s.
-  double shown_max_magnitude() const { return renderer_->shown_max_magnitude(); }
+  double shown_max_magnitude() const { return renderer().shown_max_magnitude(); }
   // False when the plane is outside the image after the last update; the view then draws
   // no flow, its caption says so and a note over the greyed table explains the terms.
-  bool plane_in_image() const { return renderer_->plane_in_image(); }
-  QString caption() const { return renderer_->caption(); }
+  bool plane_in_image() const { return renderer().plane_in_image(); }
+  QString caption() const { return renderer().caption(); }
   // The share (0..1) of the picture's scene region the plane's image covers, at the canvas
   // size after a render (FlowRenderer::plane_share).
   double plane_share();
 
-  // Updates the picture from the model and paints it when the view is visible (otherwise
-  // it paints when shown).
+  // Updates the picture from the model and, when the view is visible, has it painted on the
+  // view's painting thread (otherwise it paints when shown): the canvas takes the picture when
+  // it is painted itself, so the window's other views draw meanwhile.
   void refresh();
 
  protected:
@@ -57,13 +60,20 @@ class FlowView : public ViewPage {
  private:
   QWidget* make_option_bar();
   void update_scene();
-  void paint_canvas();
+  void paint_canvas();        // paints the picture now, on this thread
+  void paint_canvas_later();  // has the painting thread paint it (ImageCanvas::set_pending_image)
+  // The renderer, once the picture the painting thread may be painting with it is done.
+  FlowRenderer& renderer() const;
   void show_display();  // the controls show the model's flow display; redraws
 
   WindowModel* window_;
   SceneModel* model_;
   ImageCanvas* canvas_;
   std::unique_ptr<FlowRenderer> renderer_;
+  // The picture being painted from renderer_ on painter_'s one thread (kept alive, so that its
+  // fonts' caches are too); invalid when none is.
+  mutable std::shared_future<QImage> painting_;
+  QThreadPool painter_;
   CoefficientTable* table_;
   QLabel* outside_note_ = nullptr;
   QComboBox* part_box_ = nullptr;

@@ -4,6 +4,8 @@
 #include <QPainter>
 #include <QWheelEvent>
 
+#include "player/stage_times.h"
+
 namespace oflab {
 
 ImageCanvas::ImageCanvas(QWidget* parent) : QWidget(parent) {
@@ -13,8 +15,27 @@ ImageCanvas::ImageCanvas(QWidget* parent) : QWidget(parent) {
 }
 
 void ImageCanvas::set_image(const QImage& image) {
+  take_pending();
   image_ = image;
   update();
+}
+
+void ImageCanvas::set_pending_image(std::shared_future<QImage> image) {
+  take_pending();
+  pending_ = std::move(image);
+  update();
+}
+
+const QImage& ImageCanvas::image() const {
+  take_pending();
+  return image_;
+}
+
+void ImageCanvas::take_pending() const {
+  if (!pending_.valid()) return;
+  const StageTimer drawing(FrameStage::kDrawing);  // what the worker has left to paint
+  image_ = pending_.get();
+  pending_ = std::shared_future<QImage>();
 }
 
 void ImageCanvas::set_background(const QColor& colour) {
@@ -23,6 +44,7 @@ void ImageCanvas::set_background(const QColor& colour) {
 }
 
 QRectF ImageCanvas::target_rect() const {
+  take_pending();
   if (image_.isNull()) return QRectF();
   const double scale =
       std::min(double(width()) / image_.width(), double(height()) / image_.height());

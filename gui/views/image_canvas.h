@@ -6,6 +6,7 @@
 #include <QImage>
 #include <QPointF>
 #include <QWidget>
+#include <future>
 
 namespace oflab {
 
@@ -15,8 +16,13 @@ class ImageCanvas : public QWidget {
  public:
   explicit ImageCanvas(QWidget* parent = nullptr);
 
+  // Shows `image` (after any pending image is taken).
   void set_image(const QImage& image);
-  const QImage& image() const { return image_; }
+  // Shows the image a worker thread is painting: it is waited for and taken when the canvas
+  // paints, or when image() or a mouse event needs it, so the picture on screen is always
+  // the last one set. The worker must not depend on this canvas or the GUI thread.
+  void set_pending_image(std::shared_future<QImage> image);
+  const QImage& image() const;
   void set_background(const QColor& colour);
 
  signals:
@@ -39,8 +45,10 @@ class ImageCanvas : public QWidget {
 
  private:
   QRectF target_rect() const;
+  void take_pending() const;  // the pending image, waited for, becomes image_
 
-  QImage image_;
+  mutable QImage image_;
+  mutable std::shared_future<QImage> pending_;
   QColor background_{Qt::white};
   QPointF last_mouse_;  // where the drag under way was last reported, widget pixels
 };
