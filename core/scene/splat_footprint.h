@@ -315,5 +315,50 @@ inline void grid_lines(const std::vector<double>& at, const std::vector<double>&
   }
 }
 
+// Whether three lines (a target line's view of its three splat lines) all decide their sides.
+inline bool lines_decide(const GridLine* lines) {
+  for (int k = 0; k < 3; ++k) {
+    if (lines[k].sides == kUndecidedSides) return false;
+  }
+  return true;
+}
+
+// Whether two targets' three lines are the same, sides and offsets.
+inline bool same_lines(const GridLine* a, const GridLine* b) {
+  for (int k = 0; k < 3; ++k) {
+    if (a[k].sides != b[k].sides || !(a[k].offset2 == b[k].offset2)) return false;
+  }
+  return true;
+}
+
+// Per target column x (1 .. width - 2) whose three lines (`columns`, grid_lines') decide: the
+// first column of its run of neighbouring columns with the same lines; -1 elsewhere. Where a
+// target pixel's splats are all the background's, what they paint depends on its six lines
+// alone, so it is the same along such a run (under a translation, every column's lines are
+// the same).
+inline void column_runs(const std::vector<GridLine>& columns, int width, std::vector<int>& run_of) {
+  run_of.assign(static_cast<std::size_t>(width), -1);
+  for (int x = 1; x + 1 < width; ++x) {
+    const GridLine* lines = &columns[static_cast<std::size_t>(x) * 3];
+    if (!lines_decide(lines)) continue;
+    const int previous = run_of[static_cast<std::size_t>(x) - 1];
+    run_of[static_cast<std::size_t>(x)] =
+        previous >= 0 && same_lines(lines - 3, lines) ? previous : x;
+  }
+}
+
+// Per source row j of [top, bottom] and column x (1 .. width - 2) of `polygon` (row-major,
+// `width` a row; -1 the background): 1 where source pixels x - 1 .. x + 1 of row j are all
+// background, into out[(j - top) * width + x] (0 in columns 0 and width - 1).
+inline void background_threes(const std::vector<int>& polygon, int width, int top, int bottom,
+                              std::vector<unsigned char>& out) {
+  out.assign(static_cast<std::size_t>(std::max(bottom - top + 1, 0)) * width, 0);
+  for (int j = top; j <= bottom; ++j) {
+    const int* p = polygon.data() + static_cast<std::size_t>(j) * width;
+    unsigned char* t = out.data() + static_cast<std::size_t>(j - top) * width;
+    for (int x = 1; x + 1 < width; ++x) t[x] = (p[x - 1] == -1) & (p[x] == -1) & (p[x + 1] == -1);
+  }
+}
+
 }  // namespace splat
 }  // namespace oflab
