@@ -285,7 +285,7 @@ struct BackgroundPick {
 };
 
 // The background splats around a target pixel met in source order, as paint_aligned paints
-// them: splat (m, n) counts where its row line rows3[n] and column line columns3[m]
+// them: splat (m, n) (source pixel (x - 1 + m, y - 1 + n)) counts where its lines
 // (BackgroundGrid) reach the pixel, usable(m, n) holds, and it covers the pixel centre
 // (inside(m, n) decides where the lines leave that undecided); it shows where its centre
 // lands nearer than the one shown so far.
@@ -293,24 +293,20 @@ template <typename Usable, typename Inside>
 BackgroundPick pick_background(const splat::GridLine* rows3, const splat::GridLine* columns3,
                                const Usable& usable, const Inside& inside) {
   BackgroundPick pick;
-  for (int n = 0; n < 3; ++n) {
-    const splat::GridLine& row = rows3[n];
-    if (!row.sides) continue;
-    for (int m = 0; m < 3; ++m) {
-      const splat::GridLine& column = columns3[m];
-      if (!column.sides || !usable(m, n)) continue;
-      if (((row.sides | column.sides) & BackgroundGrid::kUndecided) ? !inside(m, n)
-                                                                    : !(row.sides & column.sides)) {
-        continue;
-      }
-      // glm::dot of the offset with itself: the two squares' sum.
-      const double e = column.offset2 + row.offset2;
-      if (pick.shown >= 0 && e >= pick.dist) continue;  // a background splat lands nearer
-      pick.first = pick.shown < 0 ? 3 * n + m : pick.first;
-      pick.shown = 3 * n + m, pick.dist = e;
-      ++pick.written;
-    }
-  }
+  splat::for_each_reaching_splat(
+      rows3, columns3,
+      [&](int m, int n, const splat::GridLine& row, const splat::GridLine& column) {
+        if (!usable(m, n) || !splat::covers(row, column, [&] { return inside(m, n); })) {
+          return true;
+        }
+        // glm::dot of the offset with itself: the two squares' sum.
+        const double e = column.offset2 + row.offset2;
+        if (pick.shown >= 0 && e >= pick.dist) return true;  // a background splat lands nearer
+        pick.first = pick.shown < 0 ? 3 * n + m : pick.first;
+        pick.shown = 3 * n + m, pick.dist = e;
+        ++pick.written;
+        return true;
+      });
   return pick;
 }
 
@@ -319,62 +315,43 @@ BackgroundPick pick_background(const splat::GridLine* rows3, const splat::GridLi
 // background never over a surface (its inverse depth is 0), so a pixel's background splats
 // count only before the first surface splat that reached it (TargetCell::first), and they
 // are those of the 3 x 3 source pixels around it, met in source order, tested as
-// paint_aligned tests them (pick_background). Most pixels are away from the frame's edge,
-// reached by no surface splat, with nine background source pixels around them and lines that
-// decide: there the pick depends on the pixel's six lines alone, so it is made once for a
-// run of columns with the same lines (under a translation every column's lines are the same).
-// Returns the pixels written.
+// paint_aligned tests them (pick_background; made once per run of columns with the same
+// lines where they are all the background's: splat::paint_grid_pixels). Returns the pixels
+// written.
 std::int64_t paint_background_rows(const BackgroundGrid& grid, const Image& rendered,
                                    const DepthFrame& depth, int y_begin, int y_end,
                                    TargetCell* cells, Reprojection& r) {
-  using Line = BackgroundGrid::Line;
-  const int width = depth.width, height = depth.height;
-  thread_local std::vector<unsigned char> three;
-  const int top = std::max(y_begin - 1, 0), bottom = std::min(y_end, height - 1);
-  splat::background_threes(depth.polygon, width, top, bottom, three);
-  thread_local std::vector<int> run_of;
-  splat::column_runs(grid.columns, width, run_of);
-  std::int64_t written = 0;
-  for (int y = y_begin; y < y_end; ++y) {
-    const Line* rows3 = &grid.rows[static_cast<std::size_t>(y) * 3];
-    const bool inner_row = y >= 1 && y + 1 < height && splat::lines_decide(rows3);
-    const unsigned char* above =
-        inner_row ? &three[static_cast<std::size_t>(y - 1 - top) * width] : nullptr;
-    int picked_run = -1;  // the run of columns `picked` was made for
-    BackgroundPick picked;
-    for (int x = 0; x < width; ++x) {
-      const std::size_t d = static_cast<std::size_t>(y) * width + x;
-      const Line* columns3 = &grid.columns[static_cast<std::size_t>(x) * 3];
-      const int before = cells[d].polygon == kNoSplat ? -1 : cells[d].first;
-      const int run = run_of[static_cast<std::size_t>(x)];
-      BackgroundPick pick;
-      if (inner_row && before < 0 && run >= 0 && above[x] && above[x + width] &&
-          above[x + 2 * width]) {
-        if (run != picked_run) {
-          picked = pick_background(
-              rows3, columns3, [](int, int) { return true; }, [](int, int) { return false; });
-          picked_run = run;
-        }
-        pick = picked;
-      } else {
-        const auto source = [&](int m, int n) { return (y - 1 + n) * width + x - 1 + m; };
-        pick = pick_background(
-            rows3, columns3,
-            [&](int m, int n) {
-              const int s = source(m, n);
-              return !(before >= 0 && s >= before) && depth.polygon[s] == -1;
-            },
-            [&](int m, int n) { return background_inside(grid, x - 1 + m, y - 1 + n, x, y); });
-      }
-      written += pick.written;
-      if (before >= 0 || pick.shown < 0) continue;  // a surface shows, or nothing
-      const int shown = (y - 1 + pick.shown / 3) * width + x - 1 + pick.shown % 3;
-      const int first = (y - 1 + pick.first / 3) * width + x - 1 + pick.first % 3;
-      cells[d] = TargetCell{0.0, pick.dist, -1, first};
-      r.image.pixels()[d] = rendered.pixels()[shown];
-      r.source[d] = shown;
+  using Line = splat::GridLine;
+  const int width = depth.width;
+  const auto free = [cells](std::size_t d) { return cells[d].polygon == kNoSplat; };
+  const auto pick = [&](int x, int y, const Line* rows3, const Line* columns3,
+                        bool all_background) -> BackgroundPick {
+    if (all_background) {
+      return pick_background(
+          rows3, columns3, [](int, int) { return true; }, [](int, int) { return false; });
     }
-  }
+    const std::size_t d = static_cast<std::size_t>(y) * width + x;
+    const int before = free(d) ? -1 : cells[d].first;
+    return pick_background(
+        rows3, columns3,
+        [&](int m, int n) {
+          const int s = (y - 1 + n) * width + x - 1 + m;
+          return !(before >= 0 && s >= before) && depth.polygon[s] == -1;
+        },
+        [&](int m, int n) { return background_inside(grid, x - 1 + m, y - 1 + n, x, y); });
+  };
+  std::int64_t written = 0;
+  const auto paint = [&](std::size_t d, int x, int y, const BackgroundPick& picked) {
+    written += picked.written;
+    if (!free(d) || picked.shown < 0) return;  // a surface shows, or nothing
+    const int shown = (y - 1 + picked.shown / 3) * width + x - 1 + picked.shown % 3;
+    const int first = (y - 1 + picked.first / 3) * width + x - 1 + picked.first % 3;
+    cells[d] = TargetCell{0.0, picked.dist, -1, first};
+    r.image.pixels()[d] = rendered.pixels()[shown];
+    r.source[d] = shown;
+  };
+  splat::paint_grid_pixels(grid.rows, grid.columns, depth.polygon, width, depth.height, y_begin,
+                           y_end, free, pick, paint);
   return written;
 }
 

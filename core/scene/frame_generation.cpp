@@ -381,7 +381,7 @@ enum class StillSplat { kSkipped, kUsable, kHeld };
 
 // The still background's splats around a target pixel met in source order, each tested and
 // compared as paint_splat's aligned path and SplatPainter::paint do from a fresh cell: splat
-// (m, n) counts where its row line rows3[n] and column line columns3[m] (StillLines) reach the
+// (m, n) (source pixel (x - 1 + m, y - 1 + n)) counts where its lines (StillLines) reach the
 // pixel, usable(m, n) says so (kHeld: a surface holds the pixel from this splat on, which
 // ends the search) and it covers the pixel centre (inside(m, n) decides where the lines leave
 // that undecided).
@@ -389,33 +389,28 @@ template <typename Usable, typename Inside>
 StillPick pick_still(const splat::GridLine* rows3, const splat::GridLine* columns3,
                      const Usable& usable, const Inside& inside) {
   StillPick pick;
-  for (int n = 0; n < 3; ++n) {
-    const splat::GridLine& row = rows3[n];
-    if (!row.sides) continue;
-    for (int m = 0; m < 3; ++m) {
-      const splat::GridLine& column = columns3[m];
-      if (!column.sides) continue;
-      const StillSplat use = usable(m, n);
-      if (use == StillSplat::kHeld) return pick;
-      if (use == StillSplat::kSkipped) continue;
-      if ((row.sides | column.sides) & splat::kUndecidedSides) {
-        if (!inside(m, n)) continue;
-      } else if (!(row.sides & column.sides)) {
-        continue;
-      }
-      // SplatPainter::paint from a fresh cell; glm::dot of the offset with itself is the two
-      // squares' sum.
-      const bool same = pick.best.polygon == -1;  // background after background
-      if (!same && 0.0 <= pick.best.w) continue;
-      const double e2 = column.offset2 + row.offset2;
-      if (same && e2 >= pick.best.dist2) continue;
-      const double e = std::sqrt(e2);
-      if (same && e >= pick.best.dist) continue;
-      pick.best = TargetCell{0.0, e, e2, -1, kNoSurface};
-      pick.shown = 3 * n + m;
-      ++pick.written;
-    }
-  }
+  splat::for_each_reaching_splat(
+      rows3, columns3,
+      [&](int m, int n, const splat::GridLine& row, const splat::GridLine& column) {
+        const StillSplat use = usable(m, n);
+        if (use == StillSplat::kHeld) return false;
+        if (use == StillSplat::kSkipped ||
+            !splat::covers(row, column, [&] { return inside(m, n); })) {
+          return true;
+        }
+        // SplatPainter::paint from a fresh cell; glm::dot of the offset with itself is the two
+        // squares' sum.
+        const bool same = pick.best.polygon == -1;  // background after background
+        if (!same && 0.0 <= pick.best.w) return true;
+        const double e2 = column.offset2 + row.offset2;
+        if (same && e2 >= pick.best.dist2) return true;
+        const double e = std::sqrt(e2);
+        if (same && e >= pick.best.dist) return true;
+        pick.best = TargetCell{0.0, e, e2, -1, kNoSurface};
+        pick.shown = 3 * n + m;
+        ++pick.written;
+        return true;
+      });
   return pick;
 }
 
@@ -424,68 +419,49 @@ StillPick pick_still(const splat::GridLine* rows3, const splat::GridLine* column
 // out): a surface splat always wins over the background (its inverse depth is above 0) and
 // the background never over a surface, so a pixel's background splats count only before the
 // first surface splat that won it (TargetCell::first), and they are those of the 3 x 3 source
-// pixels around it, met in source order (pick_still). The same frame, sources and count as
-// painting them in source order among the surfaces' (the test's one-pass reference). Away
-// from the frame's edge, where no surface won the pixel, its nine source pixels are the
-// background's and its lines decide, the pick depends on the six lines alone: it is made once
-// for a run of columns with the same lines (splat::column_runs). Returns the pixels written.
+// pixels around it, met in source order (pick_still; made once per run of columns with the
+// same lines where they are all the background's: splat::paint_grid_pixels). The same frame,
+// sources and count as painting them in source order among the surfaces' (the test's
+// one-pass reference). Returns the pixels written.
 std::int64_t paint_still_background_rows(const StillBackground& still, const StillLines& lines,
                                          const DepthFrame& depth, const Image& rendered,
                                          int y_begin, int y_end, TargetCell* cells,
                                          GeneratedFrame& g) {
   using Line = splat::GridLine;
-  const int width = depth.width, height = depth.height;
-  thread_local std::vector<unsigned char> three;
-  const int top = std::max(y_begin - 1, 0), bottom = std::min(y_end, height - 1);
-  splat::background_threes(depth.polygon, width, top, bottom, three);
-  thread_local std::vector<int> run_of;
-  splat::column_runs(lines.columns, width, run_of);
-  std::int64_t written = 0;
-  for (int y = y_begin; y < y_end; ++y) {
-    const Line* rows3 = &lines.rows[static_cast<std::size_t>(y) * 3];
-    const bool inner_row = y >= 1 && y + 1 < height && splat::lines_decide(rows3);
-    const unsigned char* above =
-        inner_row ? &three[static_cast<std::size_t>(y - 1 - top) * width] : nullptr;
-    int picked_run = -1;  // the run of columns `picked` was made for
-    StillPick picked;
-    for (int x = 0; x < width; ++x) {
-      const std::size_t d = static_cast<std::size_t>(y) * width + x;
-      const Line* columns3 = &lines.columns[static_cast<std::size_t>(x) * 3];
-      const int first = cells[d].first;
-      const int run = run_of[static_cast<std::size_t>(x)];
-      StillPick pick;
-      if (inner_row && first == kNoSurface && run >= 0 && above[x] && above[x + width] &&
-          above[x + 2 * width]) {
-        if (run != picked_run) {
-          picked = pick_still(
-              rows3, columns3, [](int, int) { return StillSplat::kUsable; },
-              [](int, int) { return false; });
-          picked_run = run;
-        }
-        pick = picked;
-      } else {
-        pick = pick_still(
-            rows3, columns3,
-            [&](int m, int n) {
-              const int s = (y - 1 + n) * width + x - 1 + m;
-              if (s >= first) return StillSplat::kHeld;
-              return depth.polygon[s] >= 0 ? StillSplat::kSkipped : StillSplat::kUsable;
-            },
-            [&](int m, int n) {
-              const std::array<Vec2, 4> q = still.corners(x - 1 + m, y - 1 + n);
-              const std::array<Vec2, 4> edge = splat::footprint_edges(q);
-              return (splat::row_sides(q, edge, y + 0.5) & splat::column_sides(q, edge, x + 0.5)) !=
-                     0;
-            });
-      }
-      written += pick.written;
-      if (first != kNoSurface || pick.shown < 0) continue;  // a surface shows, or nothing
-      const int shown = (y - 1 + pick.shown / 3) * width + x - 1 + pick.shown % 3;
-      cells[d] = pick.best;
-      g.image.pixels()[d] = rendered.pixels()[static_cast<std::size_t>(shown)];
-      g.source[d] = shown;
+  const int width = depth.width;
+  const auto free = [cells](std::size_t d) { return cells[d].first == kNoSurface; };
+  const auto pick = [&](int x, int y, const Line* rows3, const Line* columns3,
+                        bool all_background) -> StillPick {
+    if (all_background) {
+      return pick_still(
+          rows3, columns3, [](int, int) { return StillSplat::kUsable; },
+          [](int, int) { return false; });
     }
-  }
+    const int first = cells[static_cast<std::size_t>(y) * width + x].first;
+    return pick_still(
+        rows3, columns3,
+        [&](int m, int n) {
+          const int s = (y - 1 + n) * width + x - 1 + m;
+          if (s >= first) return StillSplat::kHeld;
+          return depth.polygon[s] >= 0 ? StillSplat::kSkipped : StillSplat::kUsable;
+        },
+        [&](int m, int n) {
+          const std::array<Vec2, 4> q = still.corners(x - 1 + m, y - 1 + n);
+          const std::array<Vec2, 4> edge = splat::footprint_edges(q);
+          return (splat::row_sides(q, edge, y + 0.5) & splat::column_sides(q, edge, x + 0.5)) != 0;
+        });
+  };
+  std::int64_t written = 0;
+  const auto paint = [&](std::size_t d, int x, int y, const StillPick& picked) {
+    written += picked.written;
+    if (!free(d) || picked.shown < 0) return;  // a surface shows, or nothing
+    const int shown = (y - 1 + picked.shown / 3) * width + x - 1 + picked.shown % 3;
+    cells[d] = picked.best;
+    g.image.pixels()[d] = rendered.pixels()[static_cast<std::size_t>(shown)];
+    g.source[d] = shown;
+  };
+  splat::paint_grid_pixels(lines.rows, lines.columns, depth.polygon, width, depth.height, y_begin,
+                           y_end, free, pick, paint);
   return written;
 }
 

@@ -360,5 +360,66 @@ inline void background_threes(const std::vector<int>& polygon, int width, int to
   }
 }
 
+// Calls visit(m, n, row, column) for the splats of the 3 x 3 source pixels around a target
+// pixel whose lines both reach it (row line rows3[n] and column line columns3[m] with sides),
+// in source order (n, then m), until visit returns false.
+template <typename Visit>
+void for_each_reaching_splat(const GridLine* rows3, const GridLine* columns3, const Visit& visit) {
+  for (int n = 0; n < 3; ++n) {
+    if (!rows3[n].sides) continue;
+    for (int m = 0; m < 3; ++m) {
+      if (!columns3[m].sides) continue;
+      if (!visit(m, n, rows3[n], columns3[m])) return;
+    }
+  }
+}
+
+// Whether a splat reaching a target pixel (its lines `row` and `column`) covers the pixel's
+// centre: the lines' sides where they decide, inside() where they leave it undecided.
+template <typename Inside>
+bool covers(const GridLine& row, const GridLine& column, const Inside& inside) {
+  return ((row.sides | column.sides) & kUndecidedSides) ? inside()
+                                                        : (row.sides & column.sides) != 0;
+}
+
+// The grid's splats painted pixel by pixel over target rows [y_begin, y_end) (depth
+// reprojection's background, frame generation's still background): for each target pixel
+// (x, y), d = y * width + x, pick(x, y, rows3, columns3, all_background) says what its splats
+// do, and paint(d, x, y, picked) applies it. all_background is true where the pixel is away
+// from the frame's edge, free(d) holds (no surface splat reached it), the 3 x 3 source pixels
+// around it are all background in `polygon` and its six lines decide: there the pick may
+// depend on the lines alone, and it is made once for each run of columns with the same lines
+// (column_runs) and reused along the row.
+template <typename Free, typename Pick, typename Paint>
+void paint_grid_pixels(const std::vector<GridLine>& rows, const std::vector<GridLine>& columns,
+                       const std::vector<int>& polygon, int width, int height, int y_begin,
+                       int y_end, const Free& free, const Pick& pick, const Paint& paint) {
+  thread_local std::vector<unsigned char> three;
+  const int top = std::max(y_begin - 1, 0), bottom = std::min(y_end, height - 1);
+  background_threes(polygon, width, top, bottom, three);
+  thread_local std::vector<int> run_of;
+  column_runs(columns, width, run_of);
+  for (int y = y_begin; y < y_end; ++y) {
+    const GridLine* rows3 = &rows[static_cast<std::size_t>(y) * 3];
+    const bool inner_row = y >= 1 && y + 1 < height && lines_decide(rows3);
+    const unsigned char* above =
+        inner_row ? &three[static_cast<std::size_t>(y - 1 - top) * width] : nullptr;
+    int picked_run = -1;  // the run of columns `picked` was made for
+    decltype(pick(0, 0, rows3, rows3, true)) picked{};
+    for (int x = 0; x < width; ++x) {
+      const std::size_t d = static_cast<std::size_t>(y) * width + x;
+      const GridLine* columns3 = &columns[static_cast<std::size_t>(x) * 3];
+      const int run = run_of[static_cast<std::size_t>(x)];
+      if (inner_row && run >= 0 && above[x] && above[x + width] && above[x + 2 * width] &&
+          free(d)) {
+        if (run != picked_run) picked = pick(x, y, rows3, columns3, true), picked_run = run;
+        paint(d, x, y, picked);
+      } else {
+        paint(d, x, y, pick(x, y, rows3, columns3, false));
+      }
+    }
+  }
+}
+
 }  // namespace splat
 }  // namespace oflab
