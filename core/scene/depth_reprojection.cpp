@@ -335,7 +335,7 @@ std::int64_t paint_background_rows(const BackgroundGrid& grid, const Image& rend
     return pick_background(
         rows3, columns3,
         [&](int m, int n) {
-          const int s = (y - 1 + n) * width + x - 1 + m;
+          const int s = splat::around(x, y, width, m, n);
           return !(before >= 0 && s >= before) && depth.polygon[s] == -1;
         },
         [&](int m, int n) { return background_inside(grid, x - 1 + m, y - 1 + n, x, y); });
@@ -344,8 +344,8 @@ std::int64_t paint_background_rows(const BackgroundGrid& grid, const Image& rend
   const auto paint = [&](std::size_t d, int x, int y, const BackgroundPick& picked) {
     written += picked.written;
     if (!free(d) || picked.shown < 0) return;  // a surface shows, or nothing
-    const int shown = (y - 1 + picked.shown / 3) * width + x - 1 + picked.shown % 3;
-    const int first = (y - 1 + picked.first / 3) * width + x - 1 + picked.first % 3;
+    const int shown = splat::around(x, y, width, picked.shown);
+    const int first = splat::around(x, y, width, picked.first);
     cells[d] = TargetCell{0.0, picked.dist, -1, first};
     r.image.pixels()[d] = rendered.pixels()[shown];
     r.source[d] = shown;

@@ -441,7 +441,7 @@ std::int64_t paint_still_background_rows(const StillBackground& still, const Sti
     return pick_still(
         rows3, columns3,
         [&](int m, int n) {
-          const int s = (y - 1 + n) * width + x - 1 + m;
+          const int s = splat::around(x, y, width, m, n);
           if (s >= first) return StillSplat::kHeld;
           return depth.polygon[s] >= 0 ? StillSplat::kSkipped : StillSplat::kUsable;
         },
@@ -455,7 +455,7 @@ std::int64_t paint_still_background_rows(const StillBackground& still, const Sti
   const auto paint = [&](std::size_t d, int x, int y, const StillPick& picked) {
     written += picked.written;
     if (!free(d) || picked.shown < 0) return;  // a surface shows, or nothing
-    const int shown = (y - 1 + picked.shown / 3) * width + x - 1 + picked.shown % 3;
+    const int shown = splat::around(x, y, width, picked.shown);
     cells[d] = picked.best;
     g.image.pixels()[d] = rendered.pixels()[static_cast<std::size_t>(shown)];
     g.source[d] = shown;

@@ -360,6 +360,11 @@ inline void background_threes(const std::vector<int>& polygon, int width, int to
   }
 }
 
+// The index (row-major, `width` a row) of source pixel (x - 1 + m, y - 1 + n), splat (m, n) of
+// the 3 x 3 around target pixel (x, y); around(x, y, width, k) takes k = 3 n + m.
+inline int around(int x, int y, int width, int m, int n) { return (y - 1 + n) * width + x - 1 + m; }
+inline int around(int x, int y, int width, int k) { return around(x, y, width, k % 3, k / 3); }
+
 // Calls visit(m, n, row, column) for the splats of the 3 x 3 source pixels around a target
 // pixel whose lines both reach it (row line rows3[n] and column line columns3[m] with sides),
 // in source order (n, then m), until visit returns false.
