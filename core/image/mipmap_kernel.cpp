@@ -129,32 +129,41 @@ const Image& level_image(const Image& source, const MipPyramid& pyramid, int k) 
   return k == 0 ? source : pyramid.level(k);
 }
 
-// A partial affine warp whose level pair blends two levels: both levels are sampled into
-// scratch images (their partial warps may compute more than the wanted pixels, the lower
-// level's pixels alone differing from the blend), and only the wanted pixels of the output
-// receive the blend.
-std::int64_t run_affine_partial(const WarpPlan& plan, const Image& source,
-                                const MipPyramid& pyramid, const LevelPair& pair, Image& output,
-                                std::int64_t* computed) {
-  thread_local Image lower_scratch, upper_scratch;  // memory kept from warp to warp
-  Image& lower = lower_scratch;  // the bands run on other threads: name this thread's scratch
-  Image& upper = upper_scratch;
-  lower.reshape(output.width(), output.height());
-  upper.reshape(output.width(), output.height());
-  const std::int64_t written = run_warp_kernel(level_plan(plan, pair.lower),
-                                               level_image(source, pyramid, pair.lower), lower);
-  run_warp_kernel(level_plan(plan, pair.lower + 1), pyramid.level(pair.lower + 1), upper);
+// An affine warp between two levels, in one pass: per span, the lower level's samples go
+// into the output row (in a partial warp into a row of this thread's, as its blocks may hold
+// pixels that are not wanted), the upper level's into another row of this thread's, and the
+// wanted pixels are blended in the output row while both rows are in the cache. The bytes of
+// sampling each level alone with the bilinear kernel (AffineBilinearLevel) and blending them.
+std::int64_t run_affine_blend(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
+                              const LevelPair& pair, Image& output, std::int64_t* computed) {
+  const WarpPlan lower_plan = level_plan(plan, pair.lower);
+  const WarpPlan upper_plan = level_plan(plan, pair.lower + 1);
+  AffineBilinearLevel lower(lower_plan, level_image(source, pyramid, pair.lower));
+  AffineBilinearLevel upper(upper_plan, pyramid.level(pair.lower + 1));
   const std::vector<PixelSpan> spans = output_spans(plan);
+  std::int64_t written = 0;
+  for (const PixelSpan& span : spans) {
+    lower.add(span);
+    upper.add(span);
+    written += span.x_end - span.x_begin;
+  }
+  const auto width = static_cast<std::size_t>(plan.output_width);
   std::atomic<std::int64_t> blended{0};
   for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
                 [&](int, int first, int last) {
+                  thread_local std::vector<Pixel> rows;  // memory kept from warp to warp
+                  rows.resize(2 * width);
+                  Pixel* const lower_row = rows.data();
+                  Pixel* const upper_row = rows.data() + width;
                   std::int64_t count = 0;
                   for (int s = first; s < last; ++s) {
                     const PixelSpan& span = spans[static_cast<std::size_t>(s)];
+                    Pixel* const out = output.row(span.y);
+                    lower.sample(s, plan.only ? lower_row : out);
+                    upper.sample(s, upper_row);
                     count += for_each_wanted(plan, span, [&](int begin, int end) {
-                      Pixel* out = output.row(span.y) + begin;
-                      std::copy(lower.row(span.y) + begin, lower.row(span.y) + end, out);
-                      lerp_run(out, upper.row(span.y) + begin, end - begin, pair.weight);
+                      if (plan.only) std::copy(lower_row + begin, lower_row + end, out + begin);
+                      lerp_run(out + begin, upper_row + begin, end - begin, pair.weight);
                     });
                   }
                   blended += count;
@@ -163,33 +172,15 @@ std::int64_t run_affine_partial(const WarpPlan& plan, const Image& source,
   return written;
 }
 
-// Affine: one level pair for the whole warp.
+// Affine: one level pair for the whole warp; one level alone is the bilinear kernel on it.
 std::int64_t run_affine(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
                         Image& output, std::int64_t* computed) {
   const Mat3& h = plan.dest_to_source;
   const LevelPair pair = level_pair(
       mip_level(entry(h, 0, 0), entry(h, 0, 1), entry(h, 1, 0), entry(h, 1, 1), pyramid.top()));
-  if (pair.weight != 0 && plan.only != nullptr) {
-    return run_affine_partial(plan, source, pyramid, pair, output, computed);
-  }
-  // One level, or a whole warp: the lower level straight into the output.
-  const std::int64_t written = run_warp_kernel(
-      level_plan(plan, pair.lower), level_image(source, pyramid, pair.lower), output, computed);
-  if (pair.weight == 0) return written;
-  thread_local Image scratch;  // the upper level's samples, memory kept from warp to warp
-  Image& upper = scratch;      // the bands run on other threads: name this thread's scratch
-  upper.reshape(output.width(), output.height());
-  run_warp_kernel(level_plan(plan, pair.lower + 1), pyramid.level(pair.lower + 1), upper);
-  const std::vector<PixelSpan> spans = output_spans(plan);
-  for_each_band(static_cast<int>(spans.size()), min_band_rows(plan.output_width),
-                [&](int, int first, int last) {
-                  for (int s = first; s < last; ++s) {
-                    const PixelSpan& span = spans[static_cast<std::size_t>(s)];
-                    lerp_run(output.row(span.y) + span.x_begin, upper.row(span.y) + span.x_begin,
-                             span.x_end - span.x_begin, pair.weight);
-                  }
-                });
-  return written;
+  if (pair.weight != 0) return run_affine_blend(plan, source, pyramid, pair, output, computed);
+  return run_warp_kernel(level_plan(plan, pair.lower), level_image(source, pyramid, pair.lower),
+                         output, computed);
 }
 
 // An upper bound of the footprint axis over the region of a perspective plan: the inverse

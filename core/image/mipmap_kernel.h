@@ -5,8 +5,9 @@
 // only). Positions on level k are the level-0 sampling position M^-1(centre) scaled by
 // 2^-k (mip_pyramid.h), minus (0.5, 0.5) to index pixel centres.
 //  - affine: J is constant, so one level pair serves the whole warp: the bilinear kernel
-//    (core/image/warp_kernels.h) runs on level floor(L) into the output and, when the weight
-//    is not 0, on the next level into a scratch image, and the two are blended span by span.
+//    (core/image/warp_kernels.h) runs on level floor(L) and, when the weight is not 0, on
+//    the next level too, span by span (AffineBilinearLevel) into rows of the thread, and the
+//    two are blended in the output row while both are in the cache.
 //    L = 0 (magnification) is the bilinear kernel itself, pixel for pixel.
 //  - perspective: L varies per pixel, J(x) = (A D(x) - (A x + c) g^T) / D(x)^2 for the
 //    inverse map [A c; g^T i]. When a bound shows that no pixel of the region minifies
@@ -46,7 +47,8 @@ namespace oflab {
 // pixels it sampled. A partial warp (plan.only, WarpOptions::only) gives each wanted pixel
 // the bytes of the whole warp: a per-pixel level depends on the pixel alone, a one-level
 // affine warp is the bilinear kernel's partial warp, and a blended affine pair samples both
-// levels into scratch images and blends into the output the wanted pixels only.
+// levels' partial warps into rows of the thread and blends into the output the wanted pixels
+// only.
 std::int64_t run_mipmap_kernel(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
                                Image& output, std::int64_t* computed = nullptr);
 

@@ -444,13 +444,13 @@ struct FastRun {
   int end;
 };
 
-// One fast run's pixels [begin, end) of row y, stepping incrementally. One output pixel to
-// the right adds 2 to X.
+// One fast run's pixels [begin, end) of row y into row[begin .. end - 1] (row[x] is output
+// pixel x), stepping incrementally. One output pixel to the right adds 2 to X.
 template <bool kAffine, bool kBilinear>
-void fast_span(const SourceView& src, const InverseMap& map, Image& output, int y, int begin,
+void fast_span(const SourceView& src, const InverseMap& map, Pixel* row, int y, int begin,
                int end) {
   const MapSample s = evaluate(map, begin, y);
-  Pixel* out = output.row(y) + begin;
+  Pixel* out = row + begin;
   if constexpr (kAffine) {
     affine_span<kBilinear>(src, out, end - begin, s.nu, s.nv, 2 * map.a, 2 * map.d,
                            map.affine_shift);
@@ -471,12 +471,12 @@ void fast_span(const SourceView& src, const InverseMap& map, Image& output, int 
 // nearest floors are exact, the perspective bilinear positions are one product per pixel of
 // exact integers): blocks of one pixel. Returns the pixels computed.
 template <bool kAffine, bool kBilinear>
-std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Image& output, int y,
-                         int begin, int end) {
+std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Pixel* row, int y, int begin,
+                         int end) {
   static_assert(kPartialWarpBlock == kMaxApproximateRun, "blocks start where runs restart");
   const PixelRows* only = plan.only;
   if (!only) {
-    fast_span<kAffine, kBilinear>(src, plan.map, output, y, begin, end);
+    fast_span<kAffine, kBilinear>(src, plan.map, row, y, begin, end);
     return end - begin;
   }
   std::int64_t done = 0;
@@ -489,27 +489,71 @@ std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Image& out
     lo = begin + (lo - begin) / block * block;  // out to the blocks' bounds
     hi = std::min(end, begin + (hi - begin + block - 1) / block * block);
     if (lo > to) {
-      if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, output, y, from, to);
+      if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, row, y, from, to);
       done += to - from;
       from = lo;
     }
     to = std::max(to, hi);
   }
-  if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, output, y, from, to);
+  if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, row, y, from, to);
   done += to - from;
+  return done;
+}
+
+// Pass 1 of a span: its fast run, the pixels between the ends whose samples need clamping
+// (rounding of the polygon at the source border, bilinear taps beyond it). The floor of a
+// linear or linear-fractional function is monotone along a row, so the rest is one
+// contiguous run that needs no checks. An empty run (no pixel fast) is [x_end, x_end).
+template <bool kBilinear>
+FastRun fast_run_of(const SourceView& src, const InverseMap& map, bool fast_allowed,
+                    const PixelSpan& span) {
+  int begin = span.x_begin;
+  int end = span.x_end;
+  while (begin < end &&
+         !(fast_allowed && in_fast_range<kBilinear>(src, evaluate(map, begin, span.y))))
+    ++begin;
+  while (end > begin && !in_fast_range<kBilinear>(src, evaluate(map, end - 1, span.y))) --end;
+  return FastRun{span.y, begin, end};
+}
+
+// The clamped ends of a span (pixels outside its fast run `r`) into row[x], those a partial
+// warp wants. Returns the pixels sampled.
+template <bool kBilinear>
+std::int64_t sample_ends(const SourceView& src, const WarpPlan& plan, const PixelSpan& span,
+                         const FastRun& r, Pixel* row) {
+  std::int64_t ends = 0;
+  const auto clamped = [&](int x) {
+    const int fx = x + plan.origin_x;
+    if (plan.only && !plan.only->any(span.y + plan.origin_y, fx, fx + 1)) return;
+    row[x] = sample_clamped<kBilinear>(src, evaluate(plan.map, x, span.y), plan.map.affine_shift);
+    ++ends;
+  };
+  for (int x = span.x_begin; x < r.begin; ++x) clamped(x);
+  for (int x = std::max(r.begin, r.end); x < span.x_end; ++x) clamped(x);
+  return ends;
+}
+
+// The pieces of fast run `r` in the strips of kStripWidth columns from strip_begin, into
+// row[x]. Returns the pixels computed.
+template <bool kAffine, bool kBilinear>
+std::int64_t strip_pieces(const SourceView& src, const WarpPlan& plan, const FastRun& r,
+                          int strip_begin, Pixel* row) {
+  std::int64_t done = 0;
+  for (int x0 = strip_begin; x0 < r.end; x0 += kStripWidth) {
+    const int begin = std::max(r.begin, x0);
+    const int end = std::min(r.end, x0 + kStripWidth);
+    if (begin < end) done += partial_run<kAffine, kBilinear>(src, plan, row, r.y, begin, end);
+  }
   return done;
 }
 
 template <bool kAffine, bool kBilinear>
 std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::int64_t* computed) {
   const SourceView src = source_view(source);
-  const InverseMap& map = plan.map;
-  const bool fast_allowed = kAffine || steps_exact_in_double(map);
+  const bool fast_allowed = kAffine || steps_exact_in_double(plan.map);
 
-  // Pass 1: scan conversion (two active edges per row). The ends of each span whose
-  // samples need clamping (rounding of the polygon at the source border, bilinear taps
-  // beyond it) are done here; the floor of a linear or linear-fractional function is
-  // monotone along a row, so the rest is one contiguous run that needs no checks.
+  // Pass 1: scan conversion (two active edges per row); the clamped ends of each span are
+  // sampled here, its fast run kept for pass 2.
   ScanConverter scan(plan.polygon, output.width(), output.height());
   std::vector<FastRun> runs;
   runs.reserve(static_cast<std::size_t>(std::max(scan.end_row() - scan.first_row(), 0)));
@@ -518,32 +562,14 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::
   int strip_end = 0;
   PixelSpan span;
   while (scan.next(span)) {
-    int begin = span.x_begin;
-    int end = span.x_end;
-    if (begin >= end) continue;
-    written += end - begin;
-    Pixel* out = output.row(span.y);
-    const auto clamped = [&](int x, const MapSample& s) {  // a partial warp's wanted pixels
-      const int fx = x + plan.origin_x;
-      if (plan.only && !plan.only->any(span.y + plan.origin_y, fx, fx + 1)) return;
-      out[x] = sample_clamped<kBilinear>(src, s, map.affine_shift);
-      ++ends;
-    };
-    MapSample s = evaluate(map, begin, span.y);
-    while (begin < end && !(fast_allowed && in_fast_range<kBilinear>(src, s))) {
-      clamped(begin, s);
-      if (++begin < end) s = evaluate(map, begin, span.y);
-    }
-    while (end > begin) {
-      const MapSample last = evaluate(map, end - 1, span.y);
-      if (in_fast_range<kBilinear>(src, last)) break;
-      clamped(end - 1, last);
-      --end;
-    }
-    if (begin >= end) continue;
-    runs.push_back(FastRun{span.y, begin, end});
-    strip_begin = std::min(strip_begin, begin);
-    strip_end = std::max(strip_end, end);
+    if (span.x_begin >= span.x_end) continue;
+    written += span.x_end - span.x_begin;
+    const FastRun r = fast_run_of<kBilinear>(src, plan.map, fast_allowed, span);
+    ends += sample_ends<kBilinear>(src, plan, span, r, output.row(span.y));
+    if (r.begin >= r.end) continue;
+    runs.push_back(r);
+    strip_begin = std::min(strip_begin, r.begin);
+    strip_end = std::max(strip_end, r.end);
   }
   if (computed) *computed += ends;
   if (runs.empty()) return written;
@@ -560,7 +586,7 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::
         const int begin = std::max(r.begin, x0);
         const int end = std::min(r.end, x1);
         if (begin >= end) continue;
-        done += partial_run<kAffine, kBilinear>(src, plan, output, r.y, begin, end);
+        done += partial_run<kAffine, kBilinear>(src, plan, output.row(r.y), r.y, begin, end);
       }
     }
     run_pixels += done;
@@ -595,6 +621,24 @@ void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_b
                          static_cast<double>(s.nv), static_cast<double>(s.d),
                          static_cast<double>(2 * map.a), static_cast<double>(2 * map.d),
                          static_cast<double>(2 * map.g));
+}
+
+AffineBilinearLevel::AffineBilinearLevel(const WarpPlan& plan, const Image& source)
+    : plan_(plan), source_(source), strip_begin_(plan.output_width) {}
+
+void AffineBilinearLevel::add(const PixelSpan& span) {
+  const FastRun r = fast_run_of<true>(source_view(source_), plan_.map, true, span);
+  runs_.push_back(Run{span, r.begin, r.end});
+  if (r.begin < r.end) strip_begin_ = std::min(strip_begin_, r.begin);
+}
+
+std::int64_t AffineBilinearLevel::sample(int k, Pixel* row) const {
+  const Run& run = runs_[static_cast<std::size_t>(k)];
+  const SourceView src = source_view(source_);
+  const FastRun r{run.span.y, run.fast_begin, run.fast_end};
+  std::int64_t done = sample_ends<true>(src, plan_, run.span, r, row);
+  if (r.begin < r.end) done += strip_pieces<true, true>(src, plan_, r, strip_begin_, row);
+  return done;
 }
 
 bool warp_avx2_enabled() {

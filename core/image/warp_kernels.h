@@ -23,8 +23,10 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "image/image.h"
+#include "image/scan_conversion.h"
 #include "image/warp_plan.h"
 
 namespace oflab {
@@ -49,6 +51,39 @@ std::int64_t run_warp_kernel(const WarpPlan& plan, const Image& source, Image& o
 // region holding them), 0 <= x_begin <= x_end.
 void run_bilinear_row(const InverseMap& map, const Image& source, int y, int x_begin, int x_end,
                       Pixel* out);
+
+// One level of an affine bilinear warp taken apart, for the mipmap kernel's affine warps
+// (core/image/mipmap_kernel.h), which sample two levels row by row into rows of their own and
+// blend them there: every pixel has the bytes run_warp_kernel gives it for the same plan (pass
+// 1's clamped ends, the fast runs cut at the same strips of columns and, in a partial warp,
+// the same blocks).
+class AffineBilinearLevel {
+ public:
+  // Preconditions: plan.affine_kernel and plan.sampling == Sampling::kBilinear; `source` is
+  // the image the plan samples. Both outlive the level.
+  AffineBilinearLevel(const WarpPlan& plan, const Image& source);
+
+  // Pass 1: the next span of the plan's polygon (scan order, non-empty, inside the output),
+  // with its fast run. Every span is added before the first sample().
+  void add(const PixelSpan& span);
+
+  // Pass 2 (any thread; spans in any order): the pixels of the k-th added span that the plan
+  // wants (all of them without plan.only; with it, the wanted ones and the rest of their
+  // blocks) into row[x], row[x] being output pixel x of the span's row. Returns the pixels
+  // sampled.
+  std::int64_t sample(int k, Pixel* row) const;
+
+ private:
+  struct Run {
+    PixelSpan span;
+    int fast_begin;  // the fast run [fast_begin, fast_end); empty: fast_begin >= fast_end
+    int fast_end;
+  };
+  const WarpPlan& plan_;
+  const Image& source_;
+  std::vector<Run> runs_;
+  int strip_begin_;  // the first fast pixel of any span: the strips' grid starts there
+};
 
 // True when the kernels run their AVX2 loops: the CPU has AVX2 and the environment variable
 // OFLAB_WARP_NO_AVX2 is not set (read once). Other AVX2 loops (mip_row_levels.h) follow it.

@@ -471,6 +471,65 @@ TEST(MipmapWarp, APure2xMinificationSamplesLevel1Exactly) {
   }
 }
 
+// An affine warp between two levels is the bilinear warps of those levels blended: a turn of
+// 45 degrees that shrinks by 2^1.5 (level 1.5: levels 1 and 2, weight 128), whose matrices and
+// their inverses are exact in binary, so that warping level k by M diag(2^k, 2^k) samples the
+// positions the mipmap kernel samples. Every pixel is (a (256 - w) + b w + 128) / 256 of
+// the two bilinear warps' a and b, inside a partial warp's wanted pixels too (the rest keep
+// what the output held). The control: level 1 alone differs.
+TEST(MipmapWarp, AnAffineWarpBetweenTwoLevelsBlendsTheBilinearWarpsOfBoth) {
+  std::mt19937 rng(12);
+  const Layer source = make_layer(testing::random_image(rng, 300, 260));
+  MipPyramid pyramid;
+  build_mip_pyramid(source.image, pyramid);
+  const Mat3 m = translation_matrix(96.0, 17.5) *
+                 mat3_from_rows({0.25, -0.25, 0.0}, {0.25, 0.25, 0.0}, {0.0, 0.0, 1.0});
+  const int w = 200, h = 160, weight = 128;
+  std::array<Image, 2> levels;
+  for (int k = 1; k <= 2; ++k) {
+    Image& level = levels[static_cast<std::size_t>(k - 1)];
+    level = Image(w, h, testing::kSentinel);
+    const double s = std::ldexp(1.0, k);
+    warp_layer_into(make_layer(pyramid.level(k)), m * scaling(s, s), level, -3, 2,
+                    {Sampling::kBilinear, WarpKernel::kAffine});
+  }
+  PixelRows only = PixelRows::full(w + 10, h + 10);
+  only.remove_centres_inside(make_polygon_unchecked(
+      {Vec2(20.0, 30.0), Vec2(150.0, 40.0), Vec2(120.0, 140.0), Vec2(30.0, 120.0)}));
+  const PixelRows* const cases[] = {nullptr, &only};
+  for (const PixelRows* wanted : cases) {
+    Image mip(w, h, testing::kSentinel);
+    WarpOptions options{Sampling::kMipmap, WarpKernel::kAffine, kDefaultHorizonEpsilon, &pyramid};
+    options.only = wanted;
+    const WarpStats stats = warp_layer_into(source, m, mip, -3, 2, options);
+    int blended = 0, kept = 0, level_one = 0;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const Pixel a = levels[0].at(x, y), b = levels[1].at(x, y);
+        ASSERT_EQ(a == testing::kSentinel, b == testing::kSentinel) << x << "," << y;
+        if (a == testing::kSentinel || (wanted && !wanted->any(y + 2, x - 3, x - 2))) {
+          kept += a != testing::kSentinel;
+          ASSERT_EQ(mip.at(x, y), testing::kSentinel) << x << "," << y;
+          continue;
+        }
+        const auto lerp = [&](int p, int q) {
+          return (p * (256 - weight) + q * weight + 128) >> 8;
+        };
+        const Pixel expected{
+            static_cast<std::uint8_t>(lerp(a.r, b.r)), static_cast<std::uint8_t>(lerp(a.g, b.g)),
+            static_cast<std::uint8_t>(lerp(a.b, b.b)), static_cast<std::uint8_t>(lerp(a.a, b.a))};
+        ASSERT_EQ(mip.at(x, y), expected) << x << "," << y;
+        ++blended;
+        level_one += mip.at(x, y) != a;
+      }
+    }
+    EXPECT_EQ(blended, stats.pixels_computed);
+    EXPECT_GT(blended, wanted ? 2000 : 9000);
+    EXPECT_GT(level_one, blended / 2) << "the control: level 1 alone is not the blend";
+    EXPECT_EQ(kept > 5000, wanted != nullptr);
+  }
+}
+
 // Where a warp magnifies (or keeps the scale) everywhere, mipmap is the bilinear kernel, pixel
 // for pixel: affine rotations and enlargements, and perspective warps that enlarge.
 TEST(MipmapWarp, MagnificationIsBilinearExactly) {

@@ -132,7 +132,7 @@ TEST(PartialWarp, EveryPixelComputedIsTheWholeWarpsToTheByte) {
 }
 
 // Mipmap sampling (core/image/mipmap_kernel.h): a minifying affine warp between two levels
-// (blended through scratch images), one on a whole level (the bilinear kernel on level 1),
+// (both levels' partial warps blended), one on a whole level (the bilinear kernel on level 1),
 // and a perspective one that picks each pixel's level; every pixel computed is the whole
 // warp's, every wanted pixel computed.
 TEST(PartialWarp, MipmapPixelsComputedAreTheWholeWarpsToTheByte) {
