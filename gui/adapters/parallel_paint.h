@@ -9,6 +9,7 @@
 // to the window's thread (paint texts after, on `painter`).
 #pragma once
 
+#include <QImage>
 #include <QPainter>
 #include <QRect>
 #include <functional>
@@ -29,6 +30,12 @@ bool paint_in_windows(QPainter& painter, const std::vector<QRect>& windows,
 // under the windows' moves it would be rasterised as a path, with other edge pixels).
 bool paint_in_windows(QPainter& painter, const std::vector<QRect>& windows, const QRectF& clip,
                       const std::function<void(QPainter&, int)>& paint);
+
+// The same on `image` itself (RGB32, ARGB32 or ARGB32 premultiplied; `image` detached and
+// not being painted), each window painter clipped to `clip` (image pixels) as above: false,
+// painting nothing, for another format or overlapping windows.
+bool paint_image_in_windows(QImage& image, const std::vector<QRect>& windows, const QRectF& clip,
+                            const std::function<void(QPainter&, int)>& paint);
 
 // `rect` (canvas pixels) cut into `count` (>= 1) strips of rows of nearly equal height, top to
 // bottom; fewer when it has fewer rows.

@@ -5,9 +5,11 @@
 #include <QFontMetrics>
 #include <QPainter>
 #include <algorithm>
+#include <cmath>
 
 #include "adapters/frame_images.h"
 #include "adapters/parallel_paint.h"
+#include "image/thread_pool.h"
 #include "models/animation_model.h"
 #include "models/window_model.h"
 #include "player/stage_times.h"
@@ -20,7 +22,9 @@ namespace {
 
 QColor qcolor(const RgbF& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
 
-// The largest rectangle of `aspect` (width / height) centred in `within`.
+// The largest rectangle of `aspect` (width / height) centred in `within`, its corner moved to
+// the nearest whole pixel (by half a pixel at most): panels of one size then draw their
+// shared marks alike (paint_panels).
 QRectF centred_with_aspect(const QRectF& within, double aspect) {
   double w = within.width(), h = within.height();
   if (w / h > aspect) {
@@ -28,7 +32,8 @@ QRectF centred_with_aspect(const QRectF& within, double aspect) {
   } else {
     h = w / aspect;
   }
-  return QRectF(within.center().x() - w / 2, within.center().y() - h / 2, w, h);
+  return QRectF(std::round(within.center().x() - w / 2), std::round(within.center().y() - h / 2), w,
+                h);
 }
 
 // `lines` with every line wider than `width` in `metrics` broken at its spaces, each break as
@@ -265,13 +270,34 @@ double AnimationView::content_scale(const PanelPlan& plan, const QRectF& content
   return image.width() / frame.width();
 }
 
+void AnimationView::paint_marks(QPainter& painter, const QSize& image_size, const QRectF& target,
+                                const std::vector<std::vector<Vec2>>& outlines) const {
+  const QTransform base = painter.transform();
+  const QTransform to_panel = frame_to_panel(shown_frame_, target) * base;
+  const QColor outline = qcolor(theme_.outline);
+  painter.save();
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  painter.setBrush(Qt::NoBrush);
+  painter.setPen(QPen(outline, 1.0, Qt::DotLine));
+  painter.drawRect(frame_to_panel(shown_frame_, target).mapRect(QRectF(QPointF(0, 0), image_size)));
+  // The outlines' points mapped here, drawn untransformed (the pen's width in canvas pixels).
+  painter.setTransform(QTransform());
+  painter.setPen(QPen(outline, theme_.line_width, Qt::DashLine));
+  for (const std::vector<Vec2>& points : outlines) {
+    QPolygonF polygon;
+    for (const Vec2& p : points) polygon << to_panel.map(QPointF(p.x, p.y));
+    painter.drawPolygon(polygon);
+  }
+  painter.restore();
+}
+
 void AnimationView::paint_picture(QPainter& painter, const PanelContent& panel,
                                   const QRectF& target,
-                                  const std::vector<std::vector<Vec2>>& outlines) const {
+                                  const std::vector<std::vector<Vec2>>& outlines,
+                                  const QImage* marks) const {
   const QTransform base = painter.transform();
   const QTransform to_panel = frame_to_panel(shown_frame_, target) * base;
   const QColor background = qcolor(theme_.background);
-  const QColor outline = qcolor(theme_.outline);
   painter.save();
   painter.setClipRect(target);
   // Outside the camera image: a shade apart from the image's own background.
@@ -283,20 +309,76 @@ void AnimationView::paint_picture(QPainter& painter, const PanelContent& panel,
   painter.setTransform(to_panel);
   painter.drawImage(QPointF(0, 0), panel.image);
   painter.setTransform(base);
-  painter.setRenderHint(QPainter::Antialiasing, true);
-  painter.setBrush(Qt::NoBrush);
-  painter.setPen(QPen(outline, 1.0, Qt::DotLine));
-  painter.drawRect(image_rect);
-  // The outlines' points mapped here, drawn untransformed (the pen's width in canvas pixels).
-  painter.setTransform(QTransform());
-  painter.setPen(QPen(outline, theme_.line_width, Qt::DashLine));
-  for (const std::vector<Vec2>& points : outlines) {
-    QPolygonF polygon;
-    for (const Vec2& p : points) polygon << to_panel.map(QPointF(p.x, p.y));
-    painter.drawPolygon(polygon);
+  if (marks) {  // clipped to `target` when it was drawn: the edge pixels are not clipped twice
+    painter.save();
+    painter.setClipping(false);
+    painter.drawImage(target.toAlignedRect().topLeft(), *marks);
+    painter.restore();
+  } else {
+    paint_marks(painter, panel.image.size(), target, outlines);
   }
+  painter.setTransform(QTransform());
   draw_level_outlines(painter, panel.levels, to_panel, theme_.line_width + 1.5);
   painter.restore();
+}
+
+namespace {
+
+// The marks of panels that draw them alike (AnimationView::paint_marks): panels of the same
+// window size, the same target within it and images of one size share one drawing.
+struct MarksOverlay {
+  QSize window;
+  QRectF target;  // in the window's pixels
+  QSize image;
+  int first = 0;  // the first panel that draws it
+  int panels = 0;
+};
+
+}  // namespace
+
+std::vector<QImage> AnimationView::shared_marks(
+    const PanelPlan& plan, const std::vector<QRectF>& targets, const std::vector<QRect>& windows,
+    const std::vector<std::vector<Vec2>>& outlines) const {
+  const size_t count = targets.size();
+  std::vector<MarksOverlay> overlays;
+  std::vector<size_t> overlay_of(count);
+  for (size_t i = 0; i < count; ++i) {
+    const MarksOverlay key{windows[i].size(), targets[i].translated(-windows[i].topLeft()),
+                           plan.contents[i].image.size(), int(i), 0};
+    size_t k = 0;
+    while (k < overlays.size() &&
+           !(overlays[k].window == key.window && overlays[k].target == key.target &&
+             overlays[k].image == key.image))
+      ++k;
+    if (k == overlays.size()) overlays.push_back(key);
+    ++overlays[k].panels;
+    overlay_of[i] = k;
+  }
+  std::vector<QImage> drawn(overlays.size());
+  for (size_t k = 0; k < overlays.size(); ++k) {
+    const MarksOverlay& o = overlays[k];
+    if (o.panels < 2) continue;  // a panel alone strokes its marks itself
+    drawn[k] = QImage(o.window, QImage::Format_ARGB32_Premultiplied);
+    drawn[k].fill(Qt::transparent);
+    // As the first panel that draws it paints it on its window (paint_picture under
+    // paint_in_windows's move), so that the clip's edges take the same pixels; in strips of
+    // rows on the worker threads (the strokes' cost is their rasterising).
+    const QPoint corner = windows[size_t(o.first)].topLeft();
+    const QRectF& target = targets[size_t(o.first)];
+    const auto marks = [&](QPainter& on, int) {
+      on.translate(-corner);
+      on.setClipRect(target);
+      paint_marks(on, o.image, target, outlines);
+    };
+    const std::vector<QRect> strips = row_strips(drawn[k].rect(), worker_threads());
+    if (!paint_image_in_windows(drawn[k], strips, QRectF(), marks)) {
+      QPainter on(&drawn[k]);
+      marks(on, 0);
+    }
+  }
+  std::vector<QImage> marks;
+  for (size_t i = 0; i < count; ++i) marks.push_back(drawn[overlay_of[i]]);  // shared, not copied
+  return marks;
 }
 
 void AnimationView::paint_panels(QPainter& painter, const PanelPlan& plan,
@@ -310,8 +392,15 @@ void AnimationView::paint_panels(QPainter& painter, const PanelPlan& plan,
   // Each panel's picture on core's worker threads, into its own window of the canvas.
   std::vector<QRect> windows;
   for (const QRectF& target : targets) windows.push_back(target.toAlignedRect());
+  // The panels' shared marks drawn once (only on an untransformed canvas: a scaled painter
+  // strokes at the device's resolution).
+  const std::vector<QImage> marks = shared_marks_ && painter.transform().isIdentity()
+                                        ? shared_marks(plan, targets, windows, outlines)
+                                        : std::vector<QImage>(count);
   const auto paint = [&](QPainter& on, int i) {
-    paint_picture(on, plan.contents[size_t(i)], targets[size_t(i)], outlines);
+    const QImage& shared = marks[size_t(i)];
+    paint_picture(on, plan.contents[size_t(i)], targets[size_t(i)], outlines,
+                  shared.isNull() ? nullptr : &shared);
   };
   if (!panels_in_parallel_ || count < 2 || !paint_in_windows(painter, windows, paint)) {
     for (size_t i = 0; i < count; ++i) paint(painter, int(i));

@@ -129,6 +129,9 @@ class AnimationView : public ViewPage {
   // Whether the panels' pictures are painted on core's worker threads (the default) or one
   // after another on the window's thread: the same pixels either way (a test compares them).
   void set_panels_in_parallel(bool on) { panels_in_parallel_ = on; }
+  // Whether panels that draw the same marks share one drawing of them (shared_marks; on by
+  // default), for the tests.
+  void set_shared_marks(bool on) { shared_marks_ = on; }
 
   // Who draws the exact panel, the difference heat maps' reference and the readout's exact
   // pixel: the entry of exact_renderers() the window model names.
@@ -184,8 +187,16 @@ class AnimationView : public ViewPage {
   PanelContent exact_panel();
   // Paints `panel`'s picture (its image framed by shown_frame_, the exact outlines in camera
   // pixels, its level outlines) into `target` (the painter's logical pixels), clipped to it.
+  // `marks`, when given, is paint_marks's drawing for this panel, made beforehand
+  // (MarksOverlay): it is drawn instead of stroking the marks again.
   void paint_picture(QPainter& painter, const PanelContent& panel, const QRectF& target,
-                     const std::vector<std::vector<Vec2>>& outlines) const;
+                     const std::vector<std::vector<Vec2>>& outlines,
+                     const QImage* marks = nullptr) const;
+  // The marks every panel of one size draws alike: the image rectangle's dotted frame
+  // (`image_size`: the panel's image, camera pixels) and the exact outlines dashed, in
+  // `target` (the painter's logical pixels). The caller clips the painter to `target`.
+  void paint_marks(QPainter& painter, const QSize& image_size, const QRectF& target,
+                   const std::vector<std::vector<Vec2>>& outlines) const;
   // The title above the panel's image and its caption lines below it.
   // Caption lines the bands under the frames (top) and under the heat maps must hold, and the
   // titles' one pixel size and lines.
@@ -214,6 +225,14 @@ class AnimationView : public ViewPage {
   // row, each under its policy, and the legends in the spare cell under the exact panel; else
   // every panel in one row and the legends in a band below it.
   PanelPlan plan_panels(std::vector<PanelContent> contents, const QSize& size, bool heat_row) const;
+  // Per panel of `plan` (in `targets`, painted in `windows`: paint_panels), its marks
+  // (paint_marks) drawn beforehand into a transparent image of its window's size when other
+  // panels draw the same (one image for all of them), else a null image. QPainter's
+  // antialiased strokes are dear (about 80 microseconds a dashed outline a few hundred pixels
+  // long on this project's machine), and a comparison's panels draw the same outlines.
+  std::vector<QImage> shared_marks(const PanelPlan& plan, const std::vector<QRectF>& targets,
+                                   const std::vector<QRect>& windows,
+                                   const std::vector<std::vector<Vec2>>& outlines) const;
   // Paints the pictures of `plan`'s panels (paint_picture), then their texts; records their
   // canvas rectangles in panel_rects_. On a canvas image (Format_RGB32, untransformed) the
   // pictures are painted on core's worker threads, each into its own window of the canvas.
@@ -252,6 +271,7 @@ class AnimationView : public ViewPage {
   bool blink_phase_ = false;
   bool external_clock_ = false;
   bool panels_in_parallel_ = true;  // paint_panels's threads (set_panels_in_parallel)
+  bool shared_marks_ = true;        // set_shared_marks
   bool fit_known_ = false;          // fit_ is up to date with the model's source
   QRectF fit_;                      // the plane's image over its loop (empty: the whole image)
   FrameBounds frame_bounds_;        // what is seen at each frame of the loop

@@ -53,6 +53,17 @@ class AnimationLayoutTest : public WindowTest {
     window().set_external_clock(true);
     window().model()->set_panel_display(PanelDisplay::kComparison);
   }
+
+  // The window at 1920 x 1080 on lesson `name`, paused, `frames` frames played.
+  void play_lesson_at_projector_size(const char* name, int frames) {
+    window().resize(1920, 1080);
+    QApplication::processEvents();
+    window().apply_lesson(*find_lesson(name));
+    window().model()->set_playing(false);
+    window().set_external_clock(true);
+    QApplication::processEvents();
+    window().play_frames(frames);
+  }
 };
 
 // Image area (camera pixels squared) of the plane's rectangle at `pose`, by the shoelace
@@ -215,14 +226,8 @@ TEST_F(AnimationLayoutTest, ACanvasGrabShowsEveryPanelOfTheLayout) {
 // outlines (four cubes: dashed exact outlines and level outlines in every panel), at a
 // projector's size. Control: the next frame's canvas differs.
 TEST_F(AnimationLayoutTest, PanelsPaintedOnTheThreadsAreThePixelsPaintedOneByOne) {
-  window().resize(1920, 1080);
-  QApplication::processEvents();
-  window().apply_lesson(*find_lesson("hierarchical-cache"));
-  window().model()->set_playing(false);
-  window().set_external_clock(true);
-  QApplication::processEvents();
+  play_lesson_at_projector_size("hierarchical-cache", 30);
   ASSERT_EQ(animation().display(), PanelDisplay::kComparison);
-  window().play_frames(30);
   set_worker_threads(2);
   animation().set_panels_in_parallel(false);
   const QImage alone = animation().render_image().copy();
@@ -237,6 +242,29 @@ TEST_F(AnimationLayoutTest, PanelsPaintedOnTheThreadsAreThePixelsPaintedOneByOne
   EXPECT_TRUE(alone == threads);
   EXPECT_TRUE(threads == again);
   EXPECT_FALSE(next == threads);
+}
+
+// The marks every panel draws alike (the image's dotted frame, the exact outlines dashed),
+// drawn once and laid over each panel, are the pixels each panel strokes itself to within a
+// grey level where antialiased edges meet, on the threads and one by one. Control: some
+// pixels do differ by that level, so the shared drawing was laid over the panels.
+TEST_F(AnimationLayoutTest, SharedMarksAreThePixelsEachPanelStrokes) {
+  play_lesson_at_projector_size("hierarchical-cache", 30);
+  set_worker_threads(2);
+  for (const bool threads : {true, false}) {
+    SCOPED_TRACE(threads ? "on the threads" : "one by one");
+    animation().set_panels_in_parallel(threads);
+    animation().set_shared_marks(false);
+    const QImage own = animation().render_image().copy();
+    animation().set_shared_marks(true);
+    const QImage shared = animation().render_image().copy();
+    ASSERT_GE(animation().panel_rects().size(), 4u);
+    ASSERT_EQ(own.size(), shared.size());
+    EXPECT_EQ(changed_fraction(own, shared, 1), 0.0);
+    EXPECT_GT(changed_fraction(own, shared, 0), 0.0);
+  }
+  animation().set_panels_in_parallel(true);
+  set_worker_threads(1);
 }
 
 // The swing script of the lesson keeps the whole plane inside its image in every frame.
