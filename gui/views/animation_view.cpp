@@ -369,6 +369,7 @@ std::vector<PanelContent> AnimationView::panels() {
       if (heat_maps_.empty()) heat_maps_.resize(1);
       HeatMap& map = heat_maps_[0];
       map.animator = nullptr;  // not a compared run's map
+      map.blank = false;
       const StageTimer maps(FrameStage::kMaps);
       ++map_passes_;
       QStringList caption = agreement_caption(

@@ -119,6 +119,8 @@ class AnimationView : public ViewPage {
   // How many heat maps the view has computed: a render of a frame already on screen computes
   // none (for tests).
   int map_passes() const { return map_passes_; }
+  // Compared run `index`'s heat map as the last render drew it (null: none; for tests).
+  QImage heat_map(std::size_t index) const;
   // Every text the view paints now, at its canvas's size, with its box in canvas pixels
   // (titles, captions, legends, colour-bar labels); for checks of legibility.
   std::vector<PaintedText> painted_texts();
@@ -129,8 +131,7 @@ class AnimationView : public ViewPage {
   // Whether the panels' pictures are painted on core's worker threads (the default) or one
   // after another on the window's thread: the same pixels either way (a test compares them).
   void set_panels_in_parallel(bool on) { panels_in_parallel_ = on; }
-  // Whether panels that draw the same marks share one drawing of them (shared_marks; on by
-  // default), for the tests.
+  // Whether panels share one drawing of their common marks (shared_marks; on; for tests).
   void set_shared_marks(bool on) { shared_marks_ = on; }
 
   // Who draws the exact panel, the difference heat maps' reference and the readout's exact
@@ -226,10 +227,8 @@ class AnimationView : public ViewPage {
   // every panel in one row and the legends in a band below it.
   PanelPlan plan_panels(std::vector<PanelContent> contents, const QSize& size, bool heat_row) const;
   // Per panel of `plan` (in `targets`, painted in `windows`: paint_panels), its marks
-  // (paint_marks) drawn beforehand into a transparent image of its window's size when other
-  // panels draw the same (one image for all of them), else a null image. QPainter's
-  // antialiased strokes are dear (about 80 microseconds a dashed outline a few hundred pixels
-  // long on this project's machine), and a comparison's panels draw the same outlines.
+  // (paint_marks) drawn once into a transparent image of its window's size for every panel
+  // that draws the same, else a null image (QPainter's antialiased strokes are dear).
   std::vector<QImage> shared_marks(const PanelPlan& plan, const std::vector<QRectF>& targets,
                                    const std::vector<QRect>& windows,
                                    const std::vector<std::vector<Vec2>>& outlines) const;
@@ -291,6 +290,7 @@ class AnimationView : public ViewPage {
     std::int64_t pixels_written = 0;
     const Pixel* exact = nullptr;
     int exact_frame = -1;
+    bool blank = false;  // the map of a frame against itself: one colour, not painted again
   };
   // Run `index`'s heat map against `exact` (the current exact frame), computed when it is not
   // the one already computed.

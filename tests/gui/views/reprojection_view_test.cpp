@@ -176,6 +176,43 @@ TEST_F(ReprojectionViewTest, AFrameAlreadyOnScreenIsNotMappedAgain) {
   EXPECT_EQ(animation().map_passes(), before + 2);
 }
 
+// The colours of `map` (RGB) that cover it, at most `most` of them counted.
+int map_colours(const QImage& map, int most = 2) {
+  std::vector<QRgb> seen;
+  for (int y = 0; y < map.height(); ++y) {
+    for (int x = 0; x < map.width(); ++x) {
+      const QRgb c = map.pixel(x, y) & 0xffffffu;
+      if (std::find(seen.begin(), seen.end(), c) == seen.end()) seen.push_back(c);
+      if (int(seen.size()) >= most) return most;
+    }
+  }
+  return int(seen.size());
+}
+
+// A compared re-render's frame is the exact panel's: its heat map compares the frame with itself
+// and is the colour of no difference throughout, also where that map held another policy's map
+// before (the comparison's order changed) and on the frames after, when it is not painted again.
+// Control: the perspective policy's map has more than one colour.
+TEST_F(ReprojectionViewTest, TheExactPanelsOwnHeatMapIsTheColourOfNoDifference) {
+  compare({"perspective", "rerender"}, "translate", 10);
+  const Image& frame = window().model()->comparison().runs()[1].animator()->image();
+  const QRgb none = difference_map(frame, frame, 128).pixel(0, 0) & 0xffffffu;  // any scale: 0
+  ASSERT_EQ(animation().heat_map(1).pixel(0, 0) & 0xffffffu, none);
+  EXPECT_EQ(map_colours(animation().heat_map(1)), 1);
+  EXPECT_EQ(map_colours(animation().heat_map(0)), 2);
+  ASSERT_TRUE(window().model()->set_compared({"rerender", "perspective"}));
+  animation().render_image();
+  EXPECT_EQ(map_colours(animation().heat_map(0)), 1);
+  EXPECT_EQ(animation().heat_map(0).pixel(7, 5) & 0xffffffu, none);
+  EXPECT_EQ(map_colours(animation().heat_map(1)), 2);
+  const int passes = animation().map_passes();
+  window().play_frames(1);
+  animation().render_image();
+  EXPECT_EQ(animation().map_passes(), passes + 2);
+  EXPECT_EQ(map_colours(animation().heat_map(0)), 1);
+  EXPECT_EQ(animation().heat_map(0).pixel(0, 0) & 0xffffffu, none);
+}
+
 TEST_F(ReprojectionViewTest, TimewarpsErrorGrowsWithInverseDepthUnderTranslationOnly) {
   compare({"timewarp", "perspective"}, "translate", 31);
   const double ratio = measure("near_far_error", "timewarp");
