@@ -533,17 +533,24 @@ std::int64_t sample_ends(const SourceView& src, const WarpPlan& plan, const Pixe
   return ends;
 }
 
+// The piece of fast run `r` in the strip of kStripWidth columns from x0, into row[x] (row[x]
+// is output pixel x of row r.y). Returns the pixels computed.
+template <bool kAffine, bool kBilinear>
+std::int64_t strip_piece(const SourceView& src, const WarpPlan& plan, const FastRun& r, int x0,
+                         Pixel* row) {
+  const int begin = std::max(r.begin, x0);
+  const int end = std::min(r.end, x0 + kStripWidth);
+  return begin < end ? partial_run<kAffine, kBilinear>(src, plan, row, r.y, begin, end) : 0;
+}
+
 // The pieces of fast run `r` in the strips of kStripWidth columns from strip_begin, into
 // row[x]. Returns the pixels computed.
 template <bool kAffine, bool kBilinear>
 std::int64_t strip_pieces(const SourceView& src, const WarpPlan& plan, const FastRun& r,
                           int strip_begin, Pixel* row) {
   std::int64_t done = 0;
-  for (int x0 = strip_begin; x0 < r.end; x0 += kStripWidth) {
-    const int begin = std::max(r.begin, x0);
-    const int end = std::min(r.end, x0 + kStripWidth);
-    if (begin < end) done += partial_run<kAffine, kBilinear>(src, plan, row, r.y, begin, end);
-  }
+  for (int x0 = strip_begin; x0 < r.end; x0 += kStripWidth)
+    done += strip_piece<kAffine, kBilinear>(src, plan, r, x0, row);
   return done;
 }
 
@@ -580,13 +587,9 @@ std::int64_t run(const WarpPlan& plan, const Image& source, Image& output, std::
   const auto band = [&](int, int first, int last) {
     std::int64_t done = 0;
     for (int x0 = strip_begin; x0 < strip_end; x0 += kStripWidth) {
-      const int x1 = std::min(x0 + kStripWidth, strip_end);
       for (int k = first; k < last; ++k) {
         const FastRun& r = runs[static_cast<std::size_t>(k)];
-        const int begin = std::max(r.begin, x0);
-        const int end = std::min(r.end, x1);
-        if (begin >= end) continue;
-        done += partial_run<kAffine, kBilinear>(src, plan, output.row(r.y), r.y, begin, end);
+        done += strip_piece<kAffine, kBilinear>(src, plan, r, x0, output.row(r.y));
       }
     }
     run_pixels += done;

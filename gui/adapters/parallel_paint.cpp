@@ -55,14 +55,14 @@ bool paint_in_windows(QPainter& painter, const std::vector<QRect>& windows, cons
   return paint_windows_of(*canvas, windows, clip, paint);
 }
 
-bool paint_image_in_windows(QImage& image, const std::vector<QRect>& windows, const QRectF& clip,
+bool paint_image_in_windows(QImage& image, const std::vector<QRect>& windows,
                             const std::function<void(QPainter&, int)>& paint) {
   const QImage::Format format = image.format();
   if (format != QImage::Format_RGB32 && format != QImage::Format_ARGB32 &&
       format != QImage::Format_ARGB32_Premultiplied) {
     return false;
   }
-  return paint_windows_of(image, windows, clip, paint);
+  return paint_windows_of(image, windows, QRectF(), paint);
 }
 
 std::vector<QRect> row_strips(const QRect& rect, int count) {

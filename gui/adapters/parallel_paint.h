@@ -32,9 +32,9 @@ bool paint_in_windows(QPainter& painter, const std::vector<QRect>& windows, cons
                       const std::function<void(QPainter&, int)>& paint);
 
 // The same on `image` itself (RGB32, ARGB32 or ARGB32 premultiplied; `image` detached and
-// not being painted), each window painter clipped to `clip` (image pixels) as above: false,
-// painting nothing, for another format or overlapping windows.
-bool paint_image_in_windows(QImage& image, const std::vector<QRect>& windows, const QRectF& clip,
+// not being painted), without a clip: false, painting nothing, for another format or
+// overlapping windows.
+bool paint_image_in_windows(QImage& image, const std::vector<QRect>& windows,
                             const std::function<void(QPainter&, int)>& paint);
 
 // `rect` (canvas pixels) cut into `count` (>= 1) strips of rows of nearly equal height, top to

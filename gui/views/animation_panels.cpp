@@ -371,7 +371,7 @@ std::vector<QImage> AnimationView::shared_marks(
       paint_marks(on, o.image, target, outlines);
     };
     const std::vector<QRect> strips = row_strips(drawn[k].rect(), worker_threads());
-    if (!paint_image_in_windows(drawn[k], strips, QRectF(), marks)) {
+    if (!paint_image_in_windows(drawn[k], strips, marks)) {
       QPainter on(&drawn[k]);
       marks(on, 0);
     }
