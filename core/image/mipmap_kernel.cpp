@@ -13,6 +13,7 @@
 #include "image/thread_pool.h"
 #include "image/trilinear_row.h"
 #include "image/warp_kernels.h"
+#include "image/warp_row_loop.h"  // lerp_lanes, store_quad and OFLAB_WARP_AVX2
 
 namespace oflab {
 namespace {
@@ -47,9 +48,29 @@ Pixel lerp_pixel(const Pixel& a, const Pixel& b, int w) {
   return Pixel{channel(&Pixel::r), channel(&Pixel::g), channel(&Pixel::b), channel(&Pixel::a)};
 }
 
+#if defined(OFLAB_WARP_AVX2)
+// lerp_run's largest multiple of 4 pixels, four a step (lerp_lanes: lerp_pixel's bytes).
+// Returns how many it blended.
+OFLAB_AVX2 int lerp_quads(Pixel* out, const Pixel* upper, int count, int w) {
+  const __m256i weight = _mm256_set1_epi16(static_cast<short>(128 * w));
+  const int total = count & ~3;
+  for (int k = 0; k < total; k += 4) {
+    const __m256i a =
+        _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(out + k)));
+    const __m256i b =
+        _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(upper + k)));
+    warp_row::store_quad(warp_row::lerp_lanes(a, b, weight), out + k);
+  }
+  return total;
+}
+#endif
+
 // out[k] = lerp_pixel(out[k], upper[k], w) for k < count.
 void lerp_run(Pixel* out, const Pixel* upper, int count, int w) {
   int k = 0;
+#if defined(OFLAB_WARP_AVX2)
+  if (warp_row::use_avx2()) k = lerp_quads(out, upper, count, w);
+#endif
 #if defined(OFLAB_WARP_SSE2)
   const __m128i zero = _mm_setzero_si128();
   const __m128i wa = _mm_set1_epi16(static_cast<short>(256 - w));
@@ -129,6 +150,31 @@ const Image& level_image(const Image& source, const MipPyramid& pyramid, int k) 
   return k == 0 ? source : pyramid.level(k);
 }
 
+// True if an affine blend samples level k's bordered copy: every level but 0 when the
+// pyramid has its copies.
+bool samples_bordered(const MipPyramid& pyramid, int k) { return k > 0 && pyramid.has_borders(); }
+
+// The image an affine blend samples for level k: its bordered copy, or the level.
+const Image& sampled_image(const Image& source, const MipPyramid& pyramid, int k) {
+  return samples_bordered(pyramid, k) ? pyramid.bordered_level(k) : level_image(source, pyramid, k);
+}
+
+// Level k's affine bilinear plan on the image sampled_image gives: on a bordered copy each
+// position moves by kMipBorder texels on both axes, exactly (the affine form's D is the
+// constant i, so kMipBorder * i is added to both numerators' constants). The taps of every
+// pixel of the plan's polygon then stay inside the copy (positions in [-1/2, w - 1/2] on
+// the level, [kMipBorder - 1/2, w + kMipBorder - 1/2] on the copy, within the bilinear
+// loops' margins of 1 and 2 texels), so no span has ends sampled one by one, and each tap
+// reads the texel the level's clamping gives.
+WarpPlan bordered_level_plan(const WarpPlan& plan, const MipPyramid& pyramid, int k) {
+  WarpPlan level = level_plan(plan, k);
+  if (samples_bordered(pyramid, k)) {
+    level.map.c += kMipBorder * level.map.i;
+    level.map.f += kMipBorder * level.map.i;
+  }
+  return level;
+}
+
 // An affine warp between two levels, in one pass: per span, the lower level's samples go
 // into the output row (in a partial warp into a row of this thread's, as its blocks may hold
 // pixels that are not wanted), the upper level's into another row of this thread's, and the
@@ -136,10 +182,10 @@ const Image& level_image(const Image& source, const MipPyramid& pyramid, int k) 
 // sampling each level alone with the bilinear kernel (AffineBilinearLevel) and blending them.
 std::int64_t run_affine_blend(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
                               const LevelPair& pair, Image& output, std::int64_t* computed) {
-  const WarpPlan lower_plan = level_plan(plan, pair.lower);
-  const WarpPlan upper_plan = level_plan(plan, pair.lower + 1);
-  AffineBilinearLevel lower(lower_plan, level_image(source, pyramid, pair.lower));
-  AffineBilinearLevel upper(upper_plan, pyramid.level(pair.lower + 1));
+  const WarpPlan lower_plan = bordered_level_plan(plan, pyramid, pair.lower);
+  const WarpPlan upper_plan = bordered_level_plan(plan, pyramid, pair.lower + 1);
+  AffineBilinearLevel lower(lower_plan, sampled_image(source, pyramid, pair.lower));
+  AffineBilinearLevel upper(upper_plan, sampled_image(source, pyramid, pair.lower + 1));
   const std::vector<PixelSpan> spans = output_spans(plan);
   std::int64_t written = 0;
   for (const PixelSpan& span : spans) {

@@ -7,7 +7,13 @@
 //  - affine: J is constant, so one level pair serves the whole warp: the bilinear kernel
 //    (core/image/warp_kernels.h) runs on level floor(L) and, when the weight is not 0, on
 //    the next level too, span by span (AffineBilinearLevel) into rows of the thread, and the
-//    two are blended in the output row while both are in the cache.
+//    two are blended in the output row while both are in the cache. In that blend each level
+//    of 1 and up is sampled on its bordered copy (mip_pyramid.h), its positions moved by
+//    kMipBorder texels exactly, so that no pixel's taps need clamping one by one (the taps
+//    along the polygon's edges read the copy's replicated texels, which clamping gives): every
+//    pixel within one level of its level's exact bilinear sample, and, where the stepped
+//    positions are exact (a matrix exact in binary), the bytes of the bilinear warp of the
+//    level itself.
 //    L = 0 (magnification) is the bilinear kernel itself, pixel for pixel.
 //  - perspective: L varies per pixel, J(x) = (A D(x) - (A x + c) g^T) / D(x)^2 for the
 //    inverse map [A c; g^T i]. When a bound shows that no pixel of the region minifies

@@ -84,15 +84,7 @@ OFLAB_AVX2 inline void spread_octet_weights(const __m128i& eight, __m256i& first
                              12, 13, 12, 13, 14, 15, 14, 15, 14, 15, 14, 15));
 }
 
-// Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3], 0 .. 255) blended
-// with spread scaled weights 128 w (w in [0, 255]): (a (256 - w) + b w + 128) / 256 per
-// channel, rounded down, the bytes of blending the stored samples. As one rounding
-// multiplication: a (256 - w) + b w + 128 = 256 a + ((b - a) w + 128), so the blend is
-// a + floor(((b - a) w + 128) / 256), and mulhrs(b - a, 128 w) = floor(((b - a) 128 w +
-// 2^14) / 2^15) is that quotient exactly (|b - a| <= 255 and 128 w <= 32640 fit 16 bits).
-OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const __m256i& weight) {
-  return _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(b, a), weight));
-}
+using warp_row::lerp_lanes;  // the overload on spread weights, beside this one
 
 // The same with the weights w[0..3] (in [0, 255]).
 OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const std::uint16_t* w) {

@@ -141,6 +141,16 @@ OFLAB_AVX2 inline __m256i blend_quad_lanes(const Pixel* pixels, std::int64_t str
   return quad_lanes_from_taps(top, bottom, positions);
 }
 
+// Four pixels' samples a, b on two levels (16-bit lanes [p0 p1 | p2 p3], 0 .. 255) blended
+// with spread scaled weights 128 w (w in [0, 255]): (a (256 - w) + b w + 128) / 256 per
+// channel, rounded down, the bytes of blending the stored samples. As one rounding
+// multiplication: a (256 - w) + b w + 128 = 256 a + ((b - a) w + 128), so the blend is
+// a + floor(((b - a) w + 128) / 256), and mulhrs(b - a, 128 w) = floor(((b - a) 128 w +
+// 2^14) / 2^15) is that quotient exactly (|b - a| <= 255 and 128 w <= 32640 fit 16 bits).
+OFLAB_AVX2 inline __m256i lerp_lanes(const __m256i& a, const __m256i& b, const __m256i& weight) {
+  return _mm256_add_epi16(a, _mm256_mulhrs_epi16(_mm256_sub_epi16(b, a), weight));
+}
+
 // 16-bit lanes [p0 p1 | p2 p3] of channels 0..255 -> the four pixels, stored to out[0..3].
 OFLAB_AVX2 inline void store_quad(const __m256i& lanes, Pixel* out) {
   const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi16(lanes, lanes), 0x08);
