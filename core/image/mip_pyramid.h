@@ -60,6 +60,13 @@ struct MipPyramid {
 // 0 for an empty image. Precondition: width, height >= 0.
 int mip_top_level(int width, int height);
 
+// `coarse` (reshaped here, its memory reused) as the next level of `fine`: the 2 x 2 box
+// reduction above, ceil(w / 2) x ceil(h / 2) pixels, each channel the rounded mean
+// (a + b + c + d + 2) / 4 of its four taps, a tap beyond an odd edge clamped. Large images
+// are reduced in bands of rows on the worker threads (the same bytes). Precondition: `fine`
+// is not `coarse`.
+void halve_image(const Image& fine, Image& coarse);
+
 // Builds the pyramid of `image` into `pyramid` (the levels and their bordered copies), reusing the
 // memory of its levels (a layer re-rendered at the same size allocates nothing).
 void build_mip_pyramid(const Image& image, MipPyramid& pyramid);

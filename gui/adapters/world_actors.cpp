@@ -18,6 +18,7 @@
 #include <array>
 #include <cstring>
 
+#include "image/mip_pyramid.h"  // halve_image
 #include "image/thread_pool.h"
 
 namespace oflab {
@@ -140,11 +141,21 @@ void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned c
   data->Modified();
 }
 
-void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& backdrop) {
+void copy_frame_pixels(const Image& frame, vtkImageData* pixels, const RgbF& backdrop,
+                       int reduction) {
+  // The frame halved as often as the reduction asks (kept images: no allocation per frame).
+  thread_local std::array<Image, 2> halves;
+  const Image* reduced = &frame;
+  for (int r = 1, k = 0; 2 * r <= reduction && reduced->width() > 1; r *= 2, k ^= 1) {
+    halve_image(*reduced, halves[size_t(k)]);
+    reduced = &halves[size_t(k)];
+  }
+  const Image& image = *reduced;
+  const int width = image.width(), height = image.height();
   int* dims = pixels->GetDimensions();
-  if (dims[0] != image.width() || dims[1] != image.height() ||
-      pixels->GetNumberOfScalarComponents() != 4 || !pixels->GetPointData()->GetScalars()) {
-    pixels->SetDimensions(image.width(), image.height(), 1);
+  if (dims[0] != width || dims[1] != height || pixels->GetNumberOfScalarComponents() != 4 ||
+      !pixels->GetPointData()->GetScalars()) {
+    pixels->SetDimensions(width, height, 1);
     pixels->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
   }
   unsigned char* out = static_cast<unsigned char*>(pixels->GetScalarPointer());
@@ -164,15 +175,14 @@ void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& bac
   const Pixel backdrop_texel{over(0, through[0][0]), over(0, through[1][0]), over(0, through[2][0]),
                              255};
   // Rows in bands on core's worker threads, each writing its own rows.
-  const int w = image.width();
-  for_each_band(image.height(), 32, [&](int, int y0, int y1) {
+  for_each_band(height, 32, [&](int, int y0, int y1) {
     // Locals, as the byte stores below could alias anything the lambda reaches by reference.
-    const int width = w;
+    const int w = width;
     const Pixel empty = backdrop_texel;
     for (int y = y0; y < y1; ++y) {
       const Pixel* row = image.row(y);
-      unsigned char* to = out + static_cast<std::size_t>(y) * width * 4;
-      for (int x = 0; x < width; ++x, to += 4) {
+      unsigned char* to = out + static_cast<std::size_t>(y) * w * 4;
+      for (int x = 0; x < w; ++x, to += 4) {
         const Pixel p = row[x];
         Pixel texel;
         if (p.a == 255) {  // opaque: the colour itself (nothing shows through)

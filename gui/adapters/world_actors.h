@@ -54,7 +54,12 @@ void set_cell_colours(vtkPolyData* data, const std::vector<std::array<unsigned c
 // `backdrop` (0..1 per channel; what shows where nothing was drawn), row 0 first (the top of
 // the image is texture coordinate 0), reusing its storage when the size is unchanged. Four
 // components, so that an opaque pixel is copied whole and OpenGL takes the texels as they are.
-void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& backdrop);
+// With `reduction` (a power of two r > 1) the image is first halved log2(r) times as the mip
+// pyramid's levels are made (halve_image, core/image/mip_pyramid.h: each pixel the rounded
+// mean of 2 x 2, premultiplied, a tap beyond an odd edge clamped; stopping at 1 pixel across),
+// and that level is copied: about ceil(w / r) x ceil(h / r) texels.
+void copy_frame_pixels(const Image& image, vtkImageData* pixels, const RgbF& backdrop,
+                       int reduction = 1);
 // Copies a QImage into `pixels` as RGBA, row 0 first.
 void copy_texture_pixels(const QImage& image, vtkImageData* pixels);
 

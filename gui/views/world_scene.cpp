@@ -209,6 +209,31 @@ void WorldScene::place_viewer(const ViewerPose& pose) {
   place_label(kImageLabel, viewer_to_world(pose, corners[0]), "image plane");
 }
 
+void WorldScene::show_frame(const Image& frame) {
+  frame_shown_reduction = frame_reduction(frame.width(), frame.height());
+  frame_size = QSize(frame.width(), frame.height());
+  copy_frame_pixels(frame, frame_pixels, theme.image_background, frame_shown_reduction);
+}
+
+int WorldScene::frame_reduction(int width, int height) const {
+  std::array<Vec2, 4> p;
+  const std::array<Vec3, 4> corners = image_plane_corners(camera, depth);
+  for (size_t k = 0; k < corners.size(); ++k) {
+    const Vec3 at = viewer_to_world(view, corners[k]);
+    renderer->SetWorldPoint(at.x, at.y, at.z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    if (d[2] < 0.0 || d[2] > 1.0) return 1;
+    p[k] = Vec2(d[0], d[1]);
+  }
+  // Corners top-left, top-right, bottom-right, bottom-left (image_plane_corners).
+  const double across = std::max(glm::length(p[1] - p[0]), glm::length(p[2] - p[3]));
+  const double down = std::max(glm::length(p[3] - p[0]), glm::length(p[2] - p[1]));
+  int r = 1;
+  while (r < kMaxFrameReduction && width >= 2.0 * r * across && height >= 2.0 * r * down) r *= 2;
+  return r;
+}
+
 void WorldScene::place_motion(const MotionArrows& arrows) {
   place(this->velocity, arrows.velocity.origin, arrows.velocity.direction, arrows.velocity.length);
   place(omega, arrows.omega.origin, arrows.omega.direction, arrows.omega.length);
@@ -251,9 +276,7 @@ void WorldScene::update_plane(const SceneModel& scene) {
   place_label(kUpLabel, f.up.origin + f.up.direction * f.up.length, "U");
   place_motion(f.motion);
   split_path(f.path_index);
-  if (exact)
-    copy_frame_pixels(exact->render(viewer_for_pose(first_pose, pose)), frame_pixels,
-                      theme.image_background);
+  if (exact) show_frame(exact->render(viewer_for_pose(first_pose, pose)));
   caption_body = plane_world_caption(plane_loop);
 }
 
@@ -268,7 +291,7 @@ void WorldScene::update_scene(AnimationModel& animation) {
   set_cell_colours(polygons.data, colours);
   if (f.walking) place_motion(f.motion);
   split_path(f.path_index);
-  copy_frame_pixels(animator->image(), frame_pixels, theme.image_background);
+  show_frame(animator->image());
   caption_body = scene_world_caption(true);
 }
 

@@ -73,6 +73,9 @@ struct WorldScene {
   PolyActor frustum, image_plane, plane, plane_outline, rays, ray_images, omega_axis;
   PolyActor path_past, path_future, polygons, polygon_edges;
   vtkNew<vtkImageData> frame_pixels, texture_pixels;
+  // The reduction of the frame last copied to frame_pixels (show_frame) and its size, pixels.
+  int frame_shown_reduction = 1;
+  QSize frame_size;
   vtkNew<vtkTexture> frame_texture, plane_texture;
   vtkNew<vtkArrowSource> arrow_source;
   struct Arrow {
@@ -133,6 +136,18 @@ struct WorldScene {
   void update_plane(const SceneModel& scene);
   // The animator's current frame: viewer, polygon colours, arrows, path split, caption.
   void update_scene(AnimationModel& animation);
+  // `frame` (the frame now, premultiplied) on the image plane: copy_frame_pixels over the
+  // theme's image background, reduced by frame_reduction. Call after place_viewer.
+  void show_frame(const Image& frame);
+  // The power of two r (1 .. kMaxFrameReduction) by which a frame of width x height pixels is
+  // reduced on the image plane: the largest that keeps at least one texel per pixel of the
+  // picture along both of the image's axes, as the camera now projects the image plane into
+  // the render window (its longer top or bottom edge against the texels across, its longer
+  // side against the texels down); 1 when a corner is behind the camera. Fewer texels than
+  // that would blur the picture; more are minified by OpenGL's bilinear lookup, which skips
+  // pixels (aliasing) and costs a copy and an upload per frame for nothing shown.
+  int frame_reduction(int width, int height) const;
+  static constexpr int kMaxFrameReduction = 64;
   // The eye, frustum, image plane and their labels at the viewer pose `pose`.
   void place_viewer(const ViewerPose& pose);
   // The V and Omega arrows and Omega's axis as `arrows` (display/world_geometry.h) place

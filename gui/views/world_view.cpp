@@ -195,6 +195,12 @@ void WorldView::draw() {
     m.texts.lay_out(size, font(), m.theme, project);
     place_camera();
   }
+  // The frame on the image plane at the texels the image plane now takes on the screen (a
+  // zoom or a resize may change them).
+  if (!m.frame_size.isEmpty() &&
+      m.frame_reduction(m.frame_size.width(), m.frame_size.height()) != m.frame_shown_reduction) {
+    update_now();
+  }
   QImage& picture = m.pictures[size_t(m.next_picture)];
   m.next_picture = 1 - m.next_picture;
   const StageTimer drawing(FrameStage::kDrawing);  // VTK's render and its read-back

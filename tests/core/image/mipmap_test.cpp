@@ -17,6 +17,7 @@
 #include "image/mipmap_kernel.h"
 #include "image/polygon.h"
 #include "image/scan_conversion.h"
+#include "image/thread_pool.h"
 #include "image/trilinear_row.h"
 #include "image/warp.h"
 #include "image/warp_kernels.h"
@@ -77,6 +78,38 @@ TEST(MipPyramid, LevelsAreBoxAveragesOfTheSource) {
         }
       }
     }
+  }
+}
+
+// halve_image (each level of the pyramid) is every pixel's (a + b + c + d + 2) / 4 per channel,
+// worked out here tap by tap with odd edges clamped: on an image with both sides odd, large
+// enough to be reduced in bands of rows, on 1 thread and on 2 (the SSE2 pairs, the scalar
+// tail and the clamped last column and row all met).
+TEST(MipPyramid, HalvingIsTheRoundedMeanOfEachTwoByTwo) {
+  std::mt19937 rng(21);
+  const Image fine = testing::random_image(rng, 1025, 767);
+  for (int threads : {1, 2}) {
+    set_worker_threads(threads);
+    Image coarse;
+    halve_image(fine, coarse);
+    set_worker_threads(1);
+    ASSERT_EQ(coarse.width(), 513);
+    ASSERT_EQ(coarse.height(), 384);
+    std::int64_t wrong = 0;
+    for (int j = 0; j < coarse.height(); ++j) {
+      for (int i = 0; i < coarse.width(); ++i) {
+        const int x0 = 2 * i, x1 = std::min(2 * i + 1, 1024);
+        const int y0 = 2 * j, y1 = std::min(2 * j + 1, 766);
+        const Pixel t[4] = {fine.at(x0, y0), fine.at(x1, y0), fine.at(x0, y1), fine.at(x1, y1)};
+        const auto mean = [&](std::uint8_t Pixel::*c) {
+          return (t[0].*c + t[1].*c + t[2].*c + t[3].*c + 2) / 4;
+        };
+        const Pixel& got = coarse.at(i, j);
+        wrong += got.r != mean(&Pixel::r) || got.g != mean(&Pixel::g) || got.b != mean(&Pixel::b) ||
+                 got.a != mean(&Pixel::a);
+      }
+    }
+    EXPECT_EQ(wrong, 0) << threads << " threads";
   }
 }
 

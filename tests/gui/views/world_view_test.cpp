@@ -20,11 +20,13 @@
 
 #include <QPainter>
 #include <cmath>
+#include <random>
 #include <set>
 
 #include "adapters/world_actors.h"
 #include "app/view_table.h"
 #include "flow/plane_scene.h"
+#include "image/mip_pyramid.h"
 #include "image/thread_pool.h"
 #include "image_checks.h"
 #include "models/scene_model.h"
@@ -123,6 +125,109 @@ TEST(WorldFramePixels, ThePremultipliedFrameOverTheBackdrop) {
   }
   EXPECT_EQ(wrong, 0u);
   EXPECT_NE(copy(2, RgbF{0.0f, 0.0f, 0.0f}), two);
+}
+
+// The image plane's texture against the image plane as the camera draws it: its texels
+// (the texture's size) and the lengths of its quad's edges on the screen, the actor's own
+// points through its matrix, projected by the renderer (canvas pixels): across (the longer of
+// the top and bottom edges) and down (the longer side).
+struct ImagePlaneOnScreen {
+  int texels_across = 0, texels_down = 0;
+  double across = 0.0, down = 0.0;
+};
+
+ImagePlaneOnScreen image_plane_on_screen(const WorldView& view) {
+  const WorldScene& scene = view.drawn_scene();
+  ImagePlaneOnScreen r;
+  const int* dims = scene.frame_pixels->GetDimensions();
+  r.texels_across = dims[0];
+  r.texels_down = dims[1];
+  vtkActor* actor = scene.image_plane.actor;
+  vtkPoints* points = scene.image_plane.data->GetPoints();
+  if (!points || points->GetNumberOfPoints() != 4) return r;
+  std::array<Vec2, 4> p;  // top-left, top-right, bottom-right, bottom-left (set_textured_quad)
+  for (vtkIdType i = 0; i < 4; ++i) {
+    double local[4] = {0.0, 0.0, 0.0, 1.0}, world[4];
+    points->GetPoint(i, local);
+    actor->GetMatrix()->MultiplyPoint(local, world);
+    view.renderer()->SetWorldPoint(world[0] / world[3], world[1] / world[3], world[2] / world[3],
+                                   1.0);
+    view.renderer()->WorldToDisplay();
+    const double* d = view.renderer()->GetDisplayPoint();
+    p[size_t(i)] = Vec2(d[0], d[1]);
+  }
+  r.across = std::max(glm::length(p[1] - p[0]), glm::length(p[2] - p[3]));
+  r.down = std::max(glm::length(p[3] - p[0]), glm::length(p[2] - p[1]));
+  return r;
+}
+
+// The frame on the image plane has about as many texels as the image plane takes pixels on
+// the screen: at least one texel per pixel along both axes, and one halving more would leave
+// fewer (the frame is not copied and uploaded whole every frame to be minified by OpenGL,
+// which skips pixels). Zooming the camera in makes the image plane larger on the screen and
+// the texture finer, up to the whole frame (800 x 600 for the demo's plane).
+TEST_F(WorldViewTest, TheImagePlanesTextureFollowsItsSizeOnTheScreen) {
+  show_world(false);
+  world().render_image();
+  const ImagePlaneOnScreen whole = image_plane_on_screen(world());
+  // The 1920 x 1080 view draws the image plane large: the whole frame, no texel to spare.
+  EXPECT_EQ(whole.texels_across, 800);
+  EXPECT_TRUE(whole.across > 400.0 || whole.down > 300.0) << whole.across << " x " << whole.down;
+  world().renderer()->GetActiveCamera()->Zoom(0.3);  // farther: the image plane smaller
+  world().refresh();
+  const ImagePlaneOnScreen small = image_plane_on_screen(world());
+  EXPECT_GT(small.across, 30.0);
+  EXPECT_LT(small.texels_across, 800) << "the frame is reduced";
+  EXPECT_GE(small.texels_across, small.across);
+  EXPECT_GE(small.texels_down, small.down);
+  EXPECT_TRUE((small.texels_across + 1) / 2 < small.across ||
+              (small.texels_down + 1) / 2 < small.down)
+      << small.texels_across << " x " << small.texels_down << " texels for " << small.across
+      << " x " << small.down << " pixels";
+  world().renderer()->GetActiveCamera()->Zoom(3.0);  // closer again: the texture finer
+  world().refresh();
+  const ImagePlaneOnScreen large = image_plane_on_screen(world());
+  EXPECT_GT(large.across, 2.5 * small.across);
+  EXPECT_GT(large.texels_across, small.texels_across) << "the control: a finer texture";
+  EXPECT_GE(large.texels_across, std::min(large.across, 800.0));
+  EXPECT_GE(large.texels_down, std::min(large.down, 600.0));
+}
+
+// With a reduction of 2^k the texture is the frame halved k times (halve_image, each level of
+// the mip pyramid, tested in tests/core/image/mipmap_test.cpp) and then copied over the
+// backdrop: ceil(w / 2^k) x ceil(h / 2^k) texels, on an odd-sized frame too. Control: the
+// frame copied whole is not the halved copy.
+TEST(WorldFramePixels, AReducedFrameIsTheHalvedFrameCopied) {
+  std::mt19937 rng(4);
+  Image image(301, 199);
+  for (Pixel& p : image.pixels()) {
+    const auto a = static_cast<std::uint8_t>(rng() % 256);
+    p = Pixel{static_cast<std::uint8_t>(rng() % (a + 1u)),
+              static_cast<std::uint8_t>(rng() % (a + 1u)),
+              static_cast<std::uint8_t>(rng() % (a + 1u)), a};
+  }
+  const RgbF backdrop{0.25f, 0.5f, 0.75f};
+  const auto bytes = [](vtkImageData* pixels) {
+    const int* d = pixels->GetDimensions();
+    const auto* p = static_cast<const unsigned char*>(pixels->GetScalarPointer());
+    return std::vector<unsigned char>(p, p + size_t(d[0]) * d[1] * 4);
+  };
+  Image half, quarter;
+  halve_image(image, half);
+  halve_image(half, quarter);
+  vtkNew<vtkImageData> reduced, expected;
+  copy_frame_pixels(image, reduced, backdrop, 2);
+  copy_frame_pixels(half, expected, backdrop);
+  EXPECT_EQ(reduced->GetDimensions()[0], 151);
+  EXPECT_EQ(reduced->GetDimensions()[1], 100);
+  EXPECT_EQ(bytes(reduced), bytes(expected));
+  copy_frame_pixels(image, reduced, backdrop, 4);
+  copy_frame_pixels(quarter, expected, backdrop);
+  EXPECT_EQ(reduced->GetDimensions()[0], 76);
+  EXPECT_EQ(reduced->GetDimensions()[1], 50);
+  EXPECT_EQ(bytes(reduced), bytes(expected));
+  copy_frame_pixels(image, reduced, backdrop);
+  EXPECT_EQ(reduced->GetDimensions()[0], 301);
 }
 
 TEST_F(WorldViewTest, TheWorldViewFollowsTheFlowViewInTheTable) {
