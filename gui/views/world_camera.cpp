@@ -80,12 +80,10 @@ void WorldScene::centre_framed_points() {
   const std::vector<Vec3> points = framed_points();
   double left = 1e300, right = -1e300, bottom = 1e300, top = -1e300;
   for (const Vec3& p : points) {
-    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    if (d[2] < 0.0 || d[2] > 1.0) continue;
-    left = std::min(left, d[0]), right = std::max(right, d[0]);
-    bottom = std::min(bottom, d[1]), top = std::max(top, d[1]);
+    QPointF d;
+    if (!to_display(p, &d)) continue;
+    left = std::min(left, d.x()), right = std::max(right, d.x());
+    bottom = std::min(bottom, d.y()), top = std::max(top, d.y());
   }
   if (left > right) return;
   vtkCamera* vtk_camera = renderer->GetActiveCamera();
@@ -138,12 +136,11 @@ double WorldScene::fit_zoom(double fill) const {
   const QRectF picture = framed_picture();
   double widest = 1e-9;  // the furthest point from the picture's centre, in half sizes
   for (const Vec3& p : points) {
-    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    if (d[2] < 0.0 || d[2] > 1.0) continue;
-    widest = std::max({widest, std::abs(d[0] - picture.center().x()) / (0.5 * picture.width()),
-                       std::abs(size[1] - d[1] - picture.center().y()) / (0.5 * picture.height())});
+    QPointF d;
+    if (!to_display(p, &d)) continue;
+    widest =
+        std::max({widest, std::abs(d.x() - picture.center().x()) / (0.5 * picture.width()),
+                  std::abs(size[1] - d.y() - picture.center().y()) / (0.5 * picture.height())});
   }
   return std::clamp(fill / widest, 0.5, 3.0);
 }

@@ -216,19 +216,17 @@ void WorldScene::show_frame(const Image& frame) {
 }
 
 int WorldScene::frame_reduction(int width, int height) const {
-  std::array<Vec2, 4> p;
-  const std::array<Vec3, 4> corners = image_plane_corners(camera, depth);
+  std::array<QPointF, 4> p;
+  const std::array<Vec3, 4> corners = image_plane_in_world();
   for (size_t k = 0; k < corners.size(); ++k) {
-    const Vec3 at = viewer_to_world(view, corners[k]);
-    renderer->SetWorldPoint(at.x, at.y, at.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    if (d[2] < 0.0 || d[2] > 1.0) return 1;
-    p[k] = Vec2(d[0], d[1]);
+    if (!to_display(corners[k], &p[k])) return 1;
   }
-  // Corners top-left, top-right, bottom-right, bottom-left (image_plane_corners).
-  const double across = std::max(glm::length(p[1] - p[0]), glm::length(p[2] - p[3]));
-  const double down = std::max(glm::length(p[3] - p[0]), glm::length(p[2] - p[1]));
+  // Corners top-left, top-right, bottom-right, bottom-left.
+  const auto length = [](const QPointF& a, const QPointF& b) {
+    return glm::length(Vec2(b.x() - a.x(), b.y() - a.y()));
+  };
+  const double across = std::max(length(p[0], p[1]), length(p[3], p[2]));
+  const double down = std::max(length(p[0], p[3]), length(p[1], p[2]));
   int r = 1;
   while (r < kMaxFrameReduction && width >= 2.0 * r * across && height >= 2.0 * r * down) r *= 2;
   return r;
@@ -363,15 +361,27 @@ std::string WorldScene::caption() const {
                                    "the plane's centre: past thick, future thin."));
 }
 
-bool WorldScene::to_canvas(const Vec3& at, QPointF* canvas) const {
-  const int* size = window->GetSize();
+bool WorldScene::to_display(const Vec3& at, QPointF* display) const {
   renderer->SetWorldPoint(at.x, at.y, at.z, 1.0);
   renderer->WorldToDisplay();
   const double* d = renderer->GetDisplayPoint();
-  // VTK's display y runs upwards; depth outside [0, 1] is behind the eye or past the far plane.
-  *canvas = QPointF(d[0], size[1] - d[1]);
-  return d[2] >= 0.0 && d[2] <= 1.0 && d[0] >= 0.0 && d[0] <= size[0] && d[1] >= 0.0 &&
-         d[1] <= size[1];
+  *display = QPointF(d[0], d[1]);
+  return d[2] >= 0.0 && d[2] <= 1.0;
+}
+
+bool WorldScene::to_canvas(const Vec3& at, QPointF* canvas) const {
+  const int* size = window->GetSize();
+  QPointF d;
+  const bool in_front = to_display(at, &d);
+  // VTK's display y runs upwards.
+  *canvas = QPointF(d.x(), size[1] - d.y());
+  return in_front && d.x() >= 0.0 && d.x() <= size[0] && d.y() >= 0.0 && d.y() <= size[1];
+}
+
+std::array<Vec3, 4> WorldScene::image_plane_in_world() const {
+  std::array<Vec3, 4> corners = image_plane_corners(camera, depth);
+  for (Vec3& c : corners) c = viewer_to_world(view, c);
+  return corners;
 }
 
 double WorldScene::drawn_share() const {
@@ -383,16 +393,13 @@ double WorldScene::drawn_share() const {
   }
   if (!from_eye) {
     points.push_back(viewer_to_world(view, Vec3(0.0)));
-    for (const Vec3& c : image_plane_corners(camera, depth))
-      points.push_back(viewer_to_world(view, c));
+    for (const Vec3& c : image_plane_in_world()) points.push_back(c);
   }
   const int* size = window->GetSize();
   std::vector<QPointF> seen;
   for (const Vec3& p : points) {
-    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
-    renderer->WorldToDisplay();
-    const double* d = renderer->GetDisplayPoint();
-    if (d[2] >= 0.0 && d[2] <= 1.0) seen.emplace_back(d[0], size[1] - d[1]);
+    QPointF d;
+    if (to_display(p, &d)) seen.emplace_back(d.x(), size[1] - d.y());
   }
   const QRectF free = texts.free_area();
   return hull_share(seen, free.isEmpty() ? QRectF(0, 0, size[0], size[1]) : free);
@@ -401,10 +408,8 @@ double WorldScene::drawn_share() const {
 std::vector<QPolygonF> WorldScene::content_outlines() const {
   std::vector<std::vector<Vec3>> quads;
   if (image_plane.actor->GetVisibility()) {
-    std::vector<Vec3> quad;
-    for (const Vec3& c : image_plane_corners(camera, depth))
-      quad.push_back(viewer_to_world(view, c));
-    quads.push_back(quad);
+    const std::array<Vec3, 4> corners = image_plane_in_world();
+    quads.emplace_back(corners.begin(), corners.end());
   }
   vtkPoints* corners = plane.data->GetPoints();
   if (plane.actor->GetVisibility() && corners) {
@@ -420,11 +425,9 @@ std::vector<QPolygonF> WorldScene::content_outlines() const {
   for (const std::vector<Vec3>& quad : quads) {
     QPolygonF outline;
     for (const Vec3& p : quad) {
-      renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
-      renderer->WorldToDisplay();
-      const double* d = renderer->GetDisplayPoint();
-      if (d[2] < 0.0 || d[2] > 1.0) break;
-      outline << QPointF(d[0], size[1] - d[1]);
+      QPointF d;
+      if (!to_display(p, &d)) break;
+      outline << QPointF(d.x(), size[1] - d.y());
     }
     if (outline.size() == int(quad.size()) && outline.size() >= 3) outlines.push_back(outline);
   }

@@ -8,7 +8,7 @@
 //
 // Units: world units (the viewer frame of session/display/world_geometry.h for the plane, the
 // scene's frame for a scene source); speeds per second (SceneModel::kSecondsPerFrame per
-// frame); canvas pixels for to_canvas.
+// frame); display pixels for to_display, canvas pixels for to_canvas.
 #pragma once
 
 #include <vtkActor.h>
@@ -162,9 +162,16 @@ struct WorldScene {
   std::string caption() const;
   // Colours and line widths of `theme`.
   void apply_theme();
+  // Where world point `at` lands as the camera projects it now, in the render window's
+  // display pixels (VTK's: x to the right, y upwards from the bottom row); false when it is
+  // behind the camera or past the far plane (its depth outside [0, 1]).
+  bool to_display(const Vec3& at, QPointF* display) const;
   // Where world point `at` lands in the last render (canvas pixels); false when it is behind
   // the camera or outside the picture.
   bool to_canvas(const Vec3& at, QPointF* canvas) const;
+  // The image plane's corners at the viewer now (image_plane_corners at `depth`, through
+  // `view`), world units: top-left, top-right, bottom-right, bottom-left.
+  std::array<Vec3, 4> image_plane_in_world() const;
   // The share (0..1) of the last render's picture between its legend and caption
   // (WorldTexts::free_area; the whole picture before the texts are laid out) inside the
   // convex hull of what it draws now: the plane's corners (the scene's polygons in a scene) and,
