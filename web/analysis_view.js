@@ -23,6 +23,9 @@ const analysisView = {
   title: 'Analysis',
   range: [0, kAnalysisFrames - 1],  // the frames the x axis shows
   charts: [],                        // each chart's {x, y, w, h}, for clicks
+  // The rectangles (canvas pixels) of the charts of times measured in this page, with their
+  // values' labels: they differ from run to run, so a screenshot's comparison leaves them out.
+  measured: [],
 
   // The x range holding `frame`: kept while the frame is in it, else moved to end at it.
   xRange(frame) {
@@ -70,6 +73,7 @@ const analysisView = {
     const gap = 44 * style.scale;
     this.drawn = [];
     this.charts = [];
+    this.measured = [];
     if (data.comparing) this.drawComparison(ctx, data, at, x, top, cw, h, gap, style);
     else this.drawEngine(ctx, data, at, x, top, cw, h, gap, style);
     // The frame shown, on every chart.
@@ -90,13 +94,13 @@ const analysisView = {
   drawComparison(ctx, data, at, x, top, cw, h, gap, style) {
     const lines = [
       ['largest measured error per frame, px', (f) => f.error_px, 1],
-      ['frame time of each engine in this page, ms', (f) => f.time_ms, 1],
+      ['frame time of each engine in this page, ms', (f) => f.time_ms, 1, true],
       ['work in the cost model (perspective-warp pixels), per policy', (f) => f.model_work, 1],
     ];
     const lineH = Math.round((h - top - lines.length * gap) * 0.22);
-    lines.forEach(([title, value, quantile], k) => {
+    lines.forEach(([title, value, quantile, measured], k) => {
       const box = at(x, top + k * (lineH + gap), cw, lineH);
-      this.lineChart(ctx, data, { title, value, quantile }, box, style);
+      this.lineChart(ctx, data, { title, value, quantile, measured }, box, style);
     });
     const bandsTop = top + lines.length * (lineH + gap) - 4 * style.scale;
     this.bands(ctx, data, at(x, bandsTop, cw, h - bandsTop - 20 * style.scale), style);
@@ -107,7 +111,7 @@ const analysisView = {
   drawEngine(ctx, data, at, x, top, cw, h, gap, style) {
     const half = (cw - x) / 2;
     const rowH = Math.round((h - top - 3 * gap) * 0.16);
-    this.lineChart(ctx, data, { title: 'frame time of the engine in this page, ms', value: (f) => f.time_ms, quantile: 1 },
+    this.lineChart(ctx, data, { title: 'frame time of the engine in this page, ms', value: (f) => f.time_ms, quantile: 1, measured: true },
       at(x, top, half, rowH), style);
     this.lineChart(ctx, data, { title: 'approximated (not re-rendered), %', value: (f) => f.approximated_percent, quantile: 1, top: 100 },
       at(2 * x + half, top, half, rowH), style);
@@ -170,7 +174,8 @@ const analysisView = {
 
   // One line per run of `chart.value(frame)` (null: a gap, never a zero) in the box `at`, its
   // scale's top the `chart.quantile` of the values shown (larger ones drawn at the top);
-  // records the chart's title and top in this.drawn.
+  // records the chart's title and top in this.drawn, and its rectangle with its values'
+  // labels in this.measured when `chart.measured` (times measured in this page).
   lineChart(ctx, data, chart, at, style) {
     const { x, y, w, a } = at;
     const values = [];
@@ -192,6 +197,11 @@ const analysisView = {
     });
     this.drawn.push({ title: chart.title, top: high });
     this.charts.push(at);
+    if (chart.measured) {
+      const left = x - 58 * style.scale;  // the values' labels (axes) start 56 px left of the box,
+      // the lowest one's descent ends below it
+      this.measured.push({ x: left, y: y - 10 * style.scale, w: x + w + 3 - left, h: at.h + 20 * style.scale });
+    }
   },
 
   // One band per run: its drawn layers per level at each frame, stacked from the cheapest.
