@@ -225,7 +225,9 @@ TEST(LayerContent, FacadeFacesMatchAHandCount) {
   };
   EXPECT_EQ(facade_faces(Vec2(4.0, 3.0), 1).size(), 262u);  // 1 + 6 * 26 + 3 * 35
   for (int d : {1, 2, 3, 4}) {
-    EXPECT_EQ(facade_faces(Vec2(10.0, 8.0), d).size(), static_cast<std::size_t>(expected(d))) << d;
+    const std::vector<FacadeFace> faces = facade_faces(Vec2(10.0, 8.0), d);
+    EXPECT_EQ(faces.size(), static_cast<std::size_t>(expected(d))) << d;
+    EXPECT_EQ(faces.capacity(), faces.size()) << d;  // reserved whole, never grown
   }
 }
 
