@@ -610,20 +610,42 @@ double shading_change(const LayerContent& content, const PlanePose& rendered,
     materials.clear();
     for (FacadePart part : kFacadeParts) materials.push_back(facade_material(part));
   }
-  const auto grey = [&](const PlaneFrame& f, const Vec3& facing, const ContentMaterial& m, double s,
-                        double t) {
+  // A white surface's light depends on a material only through its specular terms: the
+  // materials with the same ones give the same greys (the wall's and the stone's).
+  std::vector<ContentMaterial> kinds;
+  for (const ContentMaterial& m : materials) {
+    const bool seen = std::any_of(kinds.begin(), kinds.end(), [&](const ContentMaterial& k) {
+      return k.specular == m.specular && k.shininess == m.shininess;
+    });
+    if (!seen) kinds.push_back(m);
+  }
+  // lit() of a white material, its geometry (diffuse factor and N.H) found once per point and
+  // facing, the same operations in the same order: the same greys.
+  struct Geometry {
+    double base = 0.0;  // ambient + diffuse
+    double nh = 0.0;    // (N.H)+
+    bool lit = false;   // diffuse > 0: the specular term counts
+  };
+  const auto geometry = [&](const PlaneFrame& f, const Vec3& facing, double s, double t) {
     const Vec3 n = facing.x * f.right + facing.y * f.up + facing.z * f.front;
-    ContentMaterial white = m;
-    white.albedo = Vec3(1.0);
-    return 255.0 * std::clamp(lit(white, n, f.point(s, t), light).x, 0.0, 1.0);
+    const Vec3 v = glm::normalize(-f.point(s, t));
+    const Vec3 h = glm::normalize(light + v);
+    const double diffuse = std::max(0.0, glm::dot(n, light));
+    return Geometry{kContentAmbient + kContentDiffuse * diffuse, std::max(0.0, glm::dot(n, h)),
+                    diffuse > 0.0};
+  };
+  const auto grey = [](const Geometry& g, const ContentMaterial& m) {
+    const double spec = g.lit ? specular_power(g.nh, m.shininess) : 0.0;
+    return 255.0 * std::clamp(1.0 * g.base + m.specular * spec, 0.0, 1.0);
   };
   double worst = 0.0;
   for (int i = 0; i < 5; ++i) {
     for (int j = 0; j < 5; ++j) {
       const double s = (i / 4.0 - 0.5) * rendered.size.x, t = (j / 4.0 - 0.5) * rendered.size.y;
       for (const Vec3& facing : facings) {
-        for (const ContentMaterial& m : materials) {
-          worst = std::max(worst, std::abs(grey(a, facing, m, s, t) - grey(b, facing, m, s, t)));
+        const Geometry then = geometry(a, facing, s, t), current = geometry(b, facing, s, t);
+        for (const ContentMaterial& m : kinds) {
+          worst = std::max(worst, std::abs(grey(then, m) - grey(current, m)));
         }
       }
     }

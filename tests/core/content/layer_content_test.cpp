@@ -173,6 +173,49 @@ TEST(LayerContent, ShadingChangeIsZeroUnlitAndGrowsAsALitPlaneTurns) {
   }
 }
 
+// The impostor's shading change against the definition computed here on its own (Blinn-Phong
+// of a white surface with std::pow, every facade material, every facing, the 5 x 5 grid):
+// agreement to 1e-9 grey levels over turns, tilts and moves.
+TEST(LayerContent, ShadingChangeOfTheImpostorIsTheLargestChangeOfAWhiteSurfacesLight) {
+  const Vec3 light = glm::normalize(Vec3(-0.4, -0.6, -1.0));
+  const auto white_grey = [&](const PlanePose& pose, const Vec3& facing, const ContentMaterial& m,
+                              double s, double t) {
+    const PlaneAxes axes = plane_axes(pose);
+    const Vec3 n = facing.x * axes.right + facing.y * axes.up - facing.z * axes.normal;
+    const Vec3 x = pose.point + s * axes.right + t * axes.up;
+    const Vec3 h = glm::normalize(light + glm::normalize(-x));
+    const double diffuse = std::max(0.0, glm::dot(n, light));
+    const double spec = diffuse > 0.0 ? std::pow(std::max(0.0, glm::dot(n, h)), m.shininess) : 0.0;
+    return 255.0 *
+           std::clamp(kContentAmbient + kContentDiffuse * diffuse + m.specular * spec, 0.0, 1.0);
+  };
+  const std::vector<Vec3> facings = {Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0),
+                                     Vec3(0, -1, 0)};
+  const PlanePose p = facade_pose();
+  PlanePose tilted = turned(p, 12.0);
+  tilted.normal = glm::normalize(tilted.normal + Vec3(0.0, 0.2, 0.0));
+  PlanePose moved = turned(p, -7.0);
+  moved.point += Vec3(1.5, -0.5, 2.0);
+  const LayerContent impostor{ContentKind::kImpostor, 1, Vec3(-0.4, -0.6, -1.0)};
+  for (const PlanePose& now : {turned(p, 3.0), turned(p, 25.0), tilted, moved}) {
+    double worst = 0.0;
+    for (int i = 0; i < 5; ++i) {
+      for (int j = 0; j < 5; ++j) {
+        const double s = (i / 4.0 - 0.5) * p.size.x, t = (j / 4.0 - 0.5) * p.size.y;
+        for (const Vec3& facing : facings) {
+          for (FacadePart part : kFacadeParts) {
+            const ContentMaterial m = facade_material(part);
+            worst = std::max(
+                worst, std::abs(white_grey(p, facing, m, s, t) - white_grey(now, facing, m, s, t)));
+          }
+        }
+      }
+    }
+    EXPECT_GT(worst, 0.5);
+    EXPECT_NEAR(shading_change(impostor, p, now), worst, 1e-9);
+  }
+}
+
 // A plane turning about its vertical axis, 0.5 degrees a frame, animated by the perspective
 // policy: reused frames report the stale shading, which is 0 for the texture.
 std::vector<FrameReport> turning_run(ContentKind kind) {
