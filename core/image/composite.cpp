@@ -84,36 +84,88 @@ std::int64_t composite_span(Image& frame, const Layer& layer, int offset_x, int 
   return end - begin;
 }
 
-// Composites the layer pixels under the frame pixels whose centre lies in `polygon`
-// (frame pixel coordinates, inside the layer's polygon placed at the offset), in bands of
-// rows on the worker threads (core/image/thread_pool.h).
-std::int64_t composite_inside(Image& frame, const Layer& layer, int offset_x, int offset_y,
-                              const ConvexPolygon& polygon, LazyClear* lazy) {
-  // The layer pixel under frame pixel (x, y) is (x - offset_x, y - offset_y), whose centre
-  // is inside the layer polygon iff the frame pixel's centre is inside the translated
-  // polygon. The layer invariant keeps that pixel inside the layer image.
-  thread_local std::vector<PixelSpan> spans;  // memory kept from layer to layer
-  spans.clear();
+// A layer's rows inside its clipped polygon: spans[first, last) of the batch's spans, in
+// increasing y.
+struct LayerRows {
+  const Layer* layer;
+  int offset_x, offset_y;
+  std::size_t first, last;
+};
+
+// Appends the rows of `polygon` (frame pixels) clipped to the frame to `spans` and returns
+// the layer's entry (the empty spans skipped).
+LayerRows scan_rows(const Image& frame, const Layer& layer, int offset_x, int offset_y,
+                    const ConvexPolygon& polygon, std::vector<PixelSpan>& spans) {
+  LayerRows rows{&layer, offset_x, offset_y, spans.size(), spans.size()};
   ScanConverter scan(polygon, frame.width(), frame.height());
   PixelSpan span;
-  int widest = 0;
   while (scan.next(span)) {
-    if (span.x_begin >= span.x_end) continue;
-    spans.push_back(span);
+    if (span.x_begin < span.x_end) spans.push_back(span);
+  }
+  rows.last = spans.size();
+  return rows;
+}
+
+// Composites each layer's rows in order, in bands of frame rows on the worker threads: a
+// band takes every layer's rows inside it, layer after layer, so each frame row meets the
+// layers in the order given, as one layer after the other over the whole frame would (the
+// same bytes and count). The layer pixel under frame pixel (x, y) is (x - offset_x,
+// y - offset_y), whose centre is inside the layer polygon iff the frame pixel's centre is
+// inside the translated polygon; the layer invariant keeps that pixel inside the layer image.
+std::int64_t composite_rows(Image& frame, const std::vector<LayerRows>& layers,
+                            const std::vector<PixelSpan>& spans, LazyClear* lazy) {
+  if (spans.empty()) return 0;
+  // Bands of the rows the layers reach, each of about 32768 pixels of the widest span or more.
+  int top = spans.front().y, bottom = top + 1, widest = 1;
+  for (const PixelSpan& span : spans) {
+    top = std::min(top, span.y);
+    bottom = std::max(bottom, span.y + 1);
     widest = std::max(widest, span.x_end - span.x_begin);
   }
   std::array<std::int64_t, kMaxBands> counts{};
-  const std::vector<PixelSpan>& rows = spans;
-  for_each_band(static_cast<int>(rows.size()), std::max(8, 32768 / std::max(widest, 1)),
-                [&](int band, int first, int last) {
-                  for (int k = first; k < last; ++k) {
-                    counts[static_cast<std::size_t>(band)] += composite_span(
-                        frame, layer, offset_x, offset_y, rows[static_cast<std::size_t>(k)], lazy);
-                  }
-                });
+  const auto below = [](const PixelSpan& span, int y) { return span.y < y; };
+  for_each_band(bottom - top, std::max(8, 32768 / widest), [&](int band, int first, int last) {
+    for (const LayerRows& l : layers) {
+      const auto end = spans.begin() + static_cast<std::ptrdiff_t>(l.last);
+      auto k = std::lower_bound(spans.begin() + static_cast<std::ptrdiff_t>(l.first), end,
+                                top + first, below);
+      for (; k != end && k->y < top + last; ++k) {
+        counts[static_cast<std::size_t>(band)] +=
+            composite_span(frame, *l.layer, l.offset_x, l.offset_y, *k, lazy);
+      }
+    }
+  });
   std::int64_t count = 0;
   for (std::int64_t c : counts) count += c;
   return count;
+}
+
+// The part of the layer's polygon (placed at the offset) inside `region` (frame pixels;
+// null: the whole polygon): the intersection of two convex polygons, the layer's clipped by
+// each edge of the region.
+ConvexPolygon placed_part(const Layer& layer, int offset_x, int offset_y,
+                          const ConvexPolygon* region) {
+  ConvexPolygon polygon = translated(layer.polygon, offset_x, offset_y);
+  if (region == nullptr) return polygon;
+  const std::vector<Vec2>& v = region->vertices();
+  for (std::size_t k = 0; k < v.size() && !polygon.empty(); ++k) {
+    const Vec2 e = v[next_vertex(k, v.size())] - v[k];
+    polygon = clip_to_half_plane(polygon, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
+  }
+  return polygon;
+}
+
+// One layer's composite (composite_over, composite_over_region).
+std::int64_t composite_one(Image& frame, const Layer& layer, int offset_x, int offset_y,
+                           const ConvexPolygon* region, LazyClear* lazy) {
+  if (layer.empty() || frame.empty() || (region != nullptr && region->empty())) return 0;
+  const ConvexPolygon polygon = placed_part(layer, offset_x, offset_y, region);
+  if (polygon.empty()) return 0;
+  thread_local std::vector<PixelSpan> spans;  // memory kept from layer to layer
+  spans.clear();
+  const std::vector<LayerRows> layers = {
+      scan_rows(frame, layer, offset_x, offset_y, polygon, spans)};
+  return composite_rows(frame, layers, spans, lazy);
 }
 
 }  // namespace
@@ -142,24 +194,28 @@ void LazyClear::finish(Image& frame) {
 
 std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y,
                             LazyClear* lazy) {
-  if (layer.empty() || frame.empty()) return 0;
-  return composite_inside(frame, layer, offset_x, offset_y,
-                          translated(layer.polygon, offset_x, offset_y), lazy);
+  return composite_one(frame, layer, offset_x, offset_y, nullptr, lazy);
 }
 
 std::int64_t composite_over_region(Image& frame, const Layer& layer, int offset_x, int offset_y,
                                    const ConvexPolygon& region, LazyClear* lazy) {
-  if (layer.empty() || frame.empty() || region.empty()) return 0;
-  // The intersection of two convex polygons: the layer's polygon (in frame coordinates)
-  // clipped by each edge of the region.
-  ConvexPolygon polygon = translated(layer.polygon, offset_x, offset_y);
-  const std::vector<Vec2>& v = region.vertices();
-  for (std::size_t k = 0; k < v.size() && !polygon.empty(); ++k) {
-    const Vec2 e = v[next_vertex(k, v.size())] - v[k];
-    polygon = clip_to_half_plane(polygon, Vec3(-e.y, e.x, e.y * v[k].x - e.x * v[k].y));
+  return composite_one(frame, layer, offset_x, offset_y, &region, lazy);
+}
+
+std::int64_t composite_all(Image& frame, const std::vector<CompositeItem>& items, LazyClear* lazy) {
+  if (frame.empty()) return 0;
+  thread_local std::vector<PixelSpan> spans;  // memory kept from frame to frame
+  thread_local std::vector<LayerRows> layers;
+  spans.clear();
+  layers.clear();
+  for (const CompositeItem& item : items) {
+    const Layer& layer = *item.layer;
+    if (layer.empty() || (item.region != nullptr && item.region->empty())) continue;
+    const ConvexPolygon polygon = placed_part(layer, item.offset_x, item.offset_y, item.region);
+    if (polygon.empty()) continue;
+    layers.push_back(scan_rows(frame, layer, item.offset_x, item.offset_y, polygon, spans));
   }
-  if (polygon.empty()) return 0;
-  return composite_inside(frame, layer, offset_x, offset_y, polygon, lazy);
+  return composite_rows(frame, layers, spans, lazy);
 }
 
 }  // namespace oflab

@@ -61,4 +61,21 @@ std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int 
 std::int64_t composite_over_region(Image& frame, const Layer& layer, int offset_x, int offset_y,
                                    const ConvexPolygon& region, LazyClear* lazy = nullptr);
 
+// One layer of composite_all: `layer` (it must outlive the call) with its pixel (0, 0) on
+// frame pixel (offset_x, offset_y), restricted to `region` (frame pixels) as
+// composite_over_region restricts it, or its whole polygon as composite_over when null.
+struct CompositeItem {
+  const Layer* layer = nullptr;
+  int offset_x = 0;
+  int offset_y = 0;
+  const ConvexPolygon* region = nullptr;
+};
+
+// Composites the items over `frame` in order: the same bytes and the same total count as
+// composite_over or composite_over_region called for each item in turn, but in one pass of
+// bands of rows on the worker threads (each band composites every item's rows inside it,
+// item after item), not one pass per layer. `lazy` as composite_over.
+std::int64_t composite_all(Image& frame, const std::vector<CompositeItem>& items,
+                           LazyClear* lazy = nullptr);
+
 }  // namespace oflab

@@ -397,17 +397,17 @@ void SceneEngine::compose(AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   // Cleared as it is composited: each pixel is stored about once, not cleared and then
   // stored again (the same bytes as a fill first).
+  // All the fragments in one pass of bands of rows (composite_all), back to front.
   lazy_clear_.start(frame_.height());
+  std::vector<CompositeItem> items;
   for (int f : order_) {
     if (!fragment_drawn_[f]) continue;
     const int p = fragments[f].polygon;
     const PlacedLayer* shown = states_[p]->shown(statuses_[p]);
-    report.pixels_composited +=
-        states_[p]->whole
-            ? composite_over(frame_, shown->layer, shown->offset_x, shown->offset_y, &lazy_clear_)
-            : composite_over_region(frame_, shown->layer, shown->offset_x, shown->offset_y,
-                                    fragment_regions_[f], &lazy_clear_);
+    items.push_back({&shown->layer, shown->offset_x, shown->offset_y,
+                     states_[p]->whole ? nullptr : &fragment_regions_[f]});
   }
+  report.pixels_composited += composite_all(frame_, items, &lazy_clear_);
   lazy_clear_.finish(frame_);
 }
 
