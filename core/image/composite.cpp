@@ -155,16 +155,23 @@ ConvexPolygon placed_part(const Layer& layer, int offset_x, int offset_y,
   return polygon;
 }
 
-// One layer's composite (composite_over, composite_over_region).
-std::int64_t composite_one(Image& frame, const Layer& layer, int offset_x, int offset_y,
-                           const ConvexPolygon* region, LazyClear* lazy) {
-  if (layer.empty() || frame.empty() || (region != nullptr && region->empty())) return 0;
-  const ConvexPolygon polygon = placed_part(layer, offset_x, offset_y, region);
-  if (polygon.empty()) return 0;
-  thread_local std::vector<PixelSpan> spans;  // memory kept from layer to layer
+// Composites items[0 .. count - 1] in order (composite_over, composite_over_region and
+// composite_all): each item's part of the frame scanned into rows, then one composite_rows.
+std::int64_t composite_items(Image& frame, const CompositeItem* items, std::size_t count,
+                             LazyClear* lazy) {
+  if (frame.empty()) return 0;
+  thread_local std::vector<PixelSpan> spans;  // memory kept from call to call
+  thread_local std::vector<LayerRows> layers;
   spans.clear();
-  const std::vector<LayerRows> layers = {
-      scan_rows(frame, layer, offset_x, offset_y, polygon, spans)};
+  layers.clear();
+  for (std::size_t k = 0; k < count; ++k) {
+    const CompositeItem& item = items[k];
+    const Layer& layer = *item.layer;
+    if (layer.empty() || (item.region != nullptr && item.region->empty())) continue;
+    const ConvexPolygon polygon = placed_part(layer, item.offset_x, item.offset_y, item.region);
+    if (polygon.empty()) continue;
+    layers.push_back(scan_rows(frame, layer, item.offset_x, item.offset_y, polygon, spans));
+  }
   return composite_rows(frame, layers, spans, lazy);
 }
 
@@ -194,28 +201,18 @@ void LazyClear::finish(Image& frame) {
 
 std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y,
                             LazyClear* lazy) {
-  return composite_one(frame, layer, offset_x, offset_y, nullptr, lazy);
+  const CompositeItem item{&layer, offset_x, offset_y, nullptr};
+  return composite_items(frame, &item, 1, lazy);
 }
 
 std::int64_t composite_over_region(Image& frame, const Layer& layer, int offset_x, int offset_y,
                                    const ConvexPolygon& region, LazyClear* lazy) {
-  return composite_one(frame, layer, offset_x, offset_y, &region, lazy);
+  const CompositeItem item{&layer, offset_x, offset_y, &region};
+  return composite_items(frame, &item, 1, lazy);
 }
 
 std::int64_t composite_all(Image& frame, const std::vector<CompositeItem>& items, LazyClear* lazy) {
-  if (frame.empty()) return 0;
-  thread_local std::vector<PixelSpan> spans;  // memory kept from frame to frame
-  thread_local std::vector<LayerRows> layers;
-  spans.clear();
-  layers.clear();
-  for (const CompositeItem& item : items) {
-    const Layer& layer = *item.layer;
-    if (layer.empty() || (item.region != nullptr && item.region->empty())) continue;
-    const ConvexPolygon polygon = placed_part(layer, item.offset_x, item.offset_y, item.region);
-    if (polygon.empty()) continue;
-    layers.push_back(scan_rows(frame, layer, item.offset_x, item.offset_y, polygon, spans));
-  }
-  return composite_rows(frame, layers, spans, lazy);
+  return composite_items(frame, items.data(), items.size(), lazy);
 }
 
 }  // namespace oflab

@@ -421,10 +421,12 @@ double HierarchicalCache::frame(const ViewerPose& current, const std::vector<cha
   report.update_ms += ms_since(t0);
   const auto t1 = Clock::now();
   frame.fill(Pixel{});
+  std::vector<CompositeItem> items;  // the drawn nodes' layers in order, in one pass
   for (int k : drawn) {
     const WarpedLayer& shown = states_[k]->shown;
-    report.pixels_composited += composite_over(frame, shown.layer, shown.offset_x, shown.offset_y);
+    items.push_back({&shown.layer, shown.offset_x, shown.offset_y, nullptr});
   }
+  report.pixels_composited += composite_all(frame, items);
   report.composite_ms += ms_since(t1);
   const auto t2 = Clock::now();
   measure_pixels(current, drawn, culled, report);

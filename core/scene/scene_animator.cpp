@@ -396,8 +396,8 @@ void SceneEngine::tally_hidden_and_stale(AnimationFrame& report) {
 void SceneEngine::compose(AnimationFrame& report) {
   const std::vector<BspFragment>& fragments = bsp_.fragments();
   // Cleared as it is composited: each pixel is stored about once, not cleared and then
-  // stored again (the same bytes as a fill first).
-  // All the fragments in one pass of bands of rows (composite_all), back to front.
+  // stored again (the same bytes as a fill first). All the fragments, back to front, in one
+  // pass of bands of rows (composite_all).
   lazy_clear_.start(frame_.height());
   std::vector<CompositeItem> items;
   for (int f : order_) {
