@@ -220,6 +220,58 @@ TEST(Composite, ABatchEqualsItsLayersCompositedInTurn) {
   EXPECT_GT(reversed_differs, 12);
 }
 
+// Rows of runs (1 to 20 pixels) of opaque, transparent black and translucent layer pixels,
+// so that the blend meets runs of eight opaque or clear pixels, broken runs and every
+// remainder: each frame pixel is the layer pixel where it is opaque, the frame's where the
+// layer pixel is transparent black, and the per-pixel formula elsewhere.
+TEST(Composite, RunsOfOpaqueAndClearPixelsGiveThePerPixelRule) {
+  std::mt19937 rng(21);
+  std::uniform_int_distribution<int> run_length(1, 20), kind(0, 2), byte(0, 255);
+  for (int k = 0; k < 40; ++k) {
+    const int w = 1 + (k * 13) % 97, h = 1 + k % 5;
+    Image source(w, h);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w;) {
+        const int n = run_length(rng), what = kind(rng);
+        for (int i = 0; i < n && x < w; ++i, ++x) {
+          const auto a = static_cast<std::uint8_t>(what == 0 ? 255 : what == 1 ? 0 : byte(rng));
+          const auto c = [&] {
+            return static_cast<std::uint8_t>(what == 1 ? 0 : byte(rng) % (a + 1));
+          };
+          source.at(x, y) = Pixel{c(), c(), c(), a};
+        }
+      }
+    }
+    const Image before = testing::random_image(rng, w, h);
+    for (const bool lazy : {false, true}) {
+      Image frame = before;
+      LazyClear clear;
+      if (lazy) clear.start(h);
+      const Layer layer = make_layer(source);
+      const std::vector<CompositeItem> items{{&layer, 0, 0, nullptr}};
+      ASSERT_EQ(composite_all(frame, items, lazy ? &clear : nullptr), std::int64_t{w} * h);
+      if (lazy) clear.finish(frame);
+      for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+          const Pixel s = source.at(x, y);
+          // Over cleared pixels (lazy) the frame held transparent black.
+          const Pixel d = lazy ? Pixel{} : before.at(x, y);
+          const bool clear_pixel = s.r == 0 && s.g == 0 && s.b == 0 && s.a == 0;
+          const Pixel want = s.a == 255 ? s
+                             : clear_pixel
+                                 ? d
+                                 : Pixel{static_cast<std::uint8_t>(expected_over(s.r, d.r, s.a)),
+                                         static_cast<std::uint8_t>(expected_over(s.g, d.g, s.a)),
+                                         static_cast<std::uint8_t>(expected_over(s.b, d.b, s.a)),
+                                         static_cast<std::uint8_t>(expected_over(s.a, d.a, s.a))};
+          ASSERT_EQ(frame.at(x, y), want)
+              << "layer " << k << " lazy " << lazy << " at " << x << ", " << y;
+        }
+      }
+    }
+  }
+}
+
 TEST(Composite, EmptyLayersAndFramesAndFarOffsetsChangeNothing) {
   const Layer layer = make_layer(Image(4, 4, Pixel{9, 9, 9, 9}));
   Image frame(5, 5, Pixel{1, 1, 1, 1});
