@@ -205,13 +205,15 @@ struct ShadedRows {
 };
 
 // Shades the layer's pixels in rows [begin, end), tallying them in `stats`
-// (OFLAB_SSE41_CLONES: the same values).
+// (OFLAB_SSE41_CLONES: the same values). The tallies are kept in locals and added once: the
+// bands' slots share cache lines, and a pixel store may alias them.
 OFLAB_SSE41_CLONES void shade_rows(const ShadedRows& r, int begin, int end, WarpedLayer& out,
                                    ContentStats& stats) {
   const bool any = !r.texels.empty();  // else no sample hits (shade_sample's precondition)
   ScanConverter scan(out.layer.polygon, r.box.width, r.box.height);
   scan.clip_rows(begin, end);
   PixelSpan span;
+  std::int64_t work = 0, written = 0;
   while (scan.next(span)) {
     Pixel* row = out.layer.image.row(span.y);
     for (int x = span.x_begin; x < span.x_end; ++x) {
@@ -221,14 +223,16 @@ OFLAB_SSE41_CLONES void shade_rows(const ShadedRows& r, int begin, int end, Warp
         const Vec2 p(r.box.x0 + x + s.x, r.box.y0 + span.y + s.y);
         hits += any && shade_sample(r.f, r.plane_vector, r.texels, r.light, p, colour) ? 1 : 0;
       }
-      stats.work_units += static_cast<std::int64_t>(r.samples.size());
+      work += static_cast<std::int64_t>(r.samples.size());
       if (hits == 0) continue;
       const double coverage = static_cast<double>(hits) / r.samples.size();
       const Vec3 c = colour / static_cast<double>(r.samples.size());  // premultiplied
       row[x] = Pixel{to_byte(c.r), to_byte(c.g), to_byte(c.b), to_byte(coverage)};
-      ++stats.pixels_written;
+      ++written;
     }
   }
+  stats.work_units += work;
+  stats.pixels_written += written;
 }
 
 ContentStats render_shaded(const LayerContent& content, const Camera& camera, const PlanePose& pose,

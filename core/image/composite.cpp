@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "image/pixel_math.h"
@@ -72,12 +73,19 @@ void blend_row(const Pixel* src, Pixel* dst, int n) {
 
 // Composites frame pixels [begin, end) of one row whose pixels outside the row's interval
 // of `lazy` are not yet cleared: over transparent black the layer pixel itself is the
-// result, the gap to the interval is cleared, and the interval grows to cover the span.
+// result, the gap to the interval is cleared (its pixels inside [dirty_begin, dirty_end):
+// the others are transparent black already), and the interval grows to cover the span.
 // `src` is the layer pixel under frame pixel `begin`.
 void composite_lazy(const Pixel* src, Pixel* row, int begin, int end, int& held_begin,
-                    int& held_end) {
+                    int& held_end, int dirty_begin, int dirty_end) {
   const auto copy = [&](int from, int to) {
     if (from < to) std::copy(src + (from - begin), src + (to - begin), row + from);
+  };
+  // Clears the gap [from, to) where its pixels may not be transparent black yet.
+  const auto clear = [&](int from, int to) {
+    from = std::max(from, dirty_begin);
+    to = std::min(to, dirty_end);
+    if (from < to) std::fill(row + from, row + to, Pixel{});
   };
   if (held_begin >= held_end) {
     copy(begin, end);
@@ -85,8 +93,8 @@ void composite_lazy(const Pixel* src, Pixel* row, int begin, int end, int& held_
     held_end = end;
     return;
   }
-  if (end < held_begin) std::fill(row + end, row + held_begin, Pixel{});
-  if (held_end < begin) std::fill(row + held_end, row + begin, Pixel{});
+  if (end < held_begin) clear(end, held_begin);
+  if (held_end < begin) clear(held_end, begin);
   copy(begin, std::min(end, held_begin));
   const int inside_begin = std::max(begin, held_begin);
   const int inside_end = std::min(end, held_end);
@@ -110,7 +118,8 @@ std::int64_t composite_span(Image& frame, const Layer& layer, int offset_x, int 
   if (begin >= end || ly < 0 || ly >= layer.image.height()) return 0;
   const Pixel* src = layer.image.row(static_cast<int>(ly)) + (begin - offset_x);
   if (lazy) {
-    composite_lazy(src, frame.row(span.y), begin, end, lazy->begin(span.y), lazy->end(span.y));
+    composite_lazy(src, frame.row(span.y), begin, end, lazy->begin(span.y), lazy->end(span.y),
+                   lazy->dirty_begin(span.y), lazy->dirty_end(span.y));
   } else {
     blend_row(src, frame.row(span.y) + begin, end - begin);
   }
@@ -158,15 +167,18 @@ std::int64_t composite_rows(Image& frame, const std::vector<LayerRows>& layers,
   std::array<std::int64_t, kMaxBands> counts{};
   const auto below = [](const PixelSpan& span, int y) { return span.y < y; };
   for_each_band(bottom - top, std::max(8, 32768 / widest), [&](int band, int first, int last) {
+    // Counted here and stored once: the bands' slots share a cache line, and a store per
+    // span from both threads had each wait for the line.
+    std::int64_t count = 0;
     for (const LayerRows& l : layers) {
       const auto end = spans.begin() + static_cast<std::ptrdiff_t>(l.last);
       auto k = std::lower_bound(spans.begin() + static_cast<std::ptrdiff_t>(l.first), end,
                                 top + first, below);
       for (; k != end && k->y < top + last; ++k) {
-        counts[static_cast<std::size_t>(band)] +=
-            composite_span(frame, *l.layer, l.offset_x, l.offset_y, *k, lazy);
+        count += composite_span(frame, *l.layer, l.offset_x, l.offset_y, *k, lazy);
       }
     }
+    counts[static_cast<std::size_t>(band)] = count;
   });
   std::int64_t count = 0;
   for (std::int64_t c : counts) count += c;
@@ -211,25 +223,60 @@ std::int64_t composite_items(Image& frame, const CompositeItem* items, std::size
 }  // namespace
 
 void LazyClear::start(int height) {
-  begin_.assign(static_cast<std::size_t>(std::max(height, 0)), 0);
-  end_.assign(static_cast<std::size_t>(std::max(height, 0)), 0);
+  const auto rows = static_cast<std::size_t>(std::max(height, 0));
+  begin_.assign(rows, 0);
+  end_.assign(rows, 0);
+  forget();
+  dirty_begin_.assign(rows, 0);
+  dirty_end_.assign(rows, std::numeric_limits<int>::max());
+}
+
+void LazyClear::start_on(const Image& frame) {
+  const bool known = finished_ != nullptr && finished_ == frame.pixels().data() &&
+                     finished_width_ == frame.width() &&
+                     dirty_begin_.size() == static_cast<std::size_t>(frame.height());
+  if (!known) {
+    start(frame.height());
+    return;
+  }
+  begin_.assign(dirty_begin_.size(), 0);
+  end_.assign(dirty_begin_.size(), 0);
+}
+
+void LazyClear::forget() {
+  finished_ = nullptr;
+  finished_width_ = 0;
+  std::fill(dirty_begin_.begin(), dirty_begin_.end(), 0);
+  std::fill(dirty_end_.begin(), dirty_end_.end(), std::numeric_limits<int>::max());
 }
 
 void LazyClear::finish(Image& frame) {
   const int width = frame.width();
+  // Clears row pixels [from, to) that may not be transparent black yet.
+  const auto clear = [width](Pixel* row, int from, int to, int dirty_from, int dirty_to) {
+    from = std::max({from, dirty_from, 0});
+    to = std::min({to, dirty_to, width});
+    if (from < to) std::fill(row + from, row + to, Pixel{});
+  };
   for_each_band(frame.height(), std::max(8, 65536 / std::max(width, 1)),
                 [&](int, int first, int last) {
                   for (int y = first; y < last; ++y) {
                     Pixel* row = frame.row(y);
                     int& b = begin(y);
                     int& e = end(y);
+                    int& db = dirty_begin_[static_cast<std::size_t>(y)];
+                    int& de = dirty_end_[static_cast<std::size_t>(y)];
                     if (b >= e) b = e = width;  // nothing held: the whole row is cleared
-                    std::fill(row, row + b, Pixel{});
-                    std::fill(row + e, row + width, Pixel{});
+                    clear(row, 0, b, db, de);
+                    clear(row, e, width, db, de);
+                    db = b;  // what the next frame may find other than transparent black
+                    de = e;
                     b = 0;
                     e = width;
                   }
                 });
+  finished_ = frame.pixels().data();
+  finished_width_ = width;
 }
 
 std::int64_t composite_over(Image& frame, const Layer& layer, int offset_x, int offset_y,

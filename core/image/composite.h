@@ -23,14 +23,32 @@ Pixel over(Pixel src, Pixel dst);
 // with transparent black, and blends inside the interval; finish clears what no layer
 // reached. The frame then holds exactly the bytes of a fill followed by the same composites,
 // with each pixel stored about once (a camera-sized frame is megabytes of stores).
+//
+// From frame to frame (start_on): finish knows, per row, the interval the frame's layers
+// reached; every pixel outside it is transparent black once finish returns. When the next
+// frame is composited into the same image, unchanged since, those pixels need no store at
+// all: the clears of the gaps and of finish skip them (a frame that shows a street's two
+// sides leaves most of the sky between them as it was).
 class LazyClear {
  public:
-  // Starts a frame of `height` rows (>= 0): no pixel is cleared yet.
+  // Starts a frame of `height` rows (>= 0): no pixel is cleared yet, and nothing is known of
+  // the frame's pixels.
   void start(int height);
 
+  // Starts a frame on `frame`: as start(frame.height()), except that when `frame` is the
+  // image the last finish cleared (the same pixel buffer, width and height) and forget() has
+  // not been called since, the pixels that finish left transparent black outside its rows'
+  // reached intervals count as such (dirty_begin, dirty_end). Precondition: no code other
+  // than composites with this LazyClear and its finish changed the frame's pixels since the
+  // last finish, unless forget() was called.
+  void start_on(const Image& frame);
+
+  // Forgets what the last finish left: the frame's pixels were changed by other code.
+  void forget();
+
   // Clears every pixel of `frame` no composite reached since start (in bands of rows on the
-  // worker threads); `frame` has the height given to start. Afterwards, until the next
-  // start, every pixel counts as cleared.
+  // worker threads; with start_on, only those not known transparent black); `frame` has the
+  // height given to start. Afterwards, until the next start, every pixel counts as cleared.
   void finish(Image& frame);
 
   // The row's interval of pixels holding their value (begin >= end: none). Row y in
@@ -38,9 +56,19 @@ class LazyClear {
   int& begin(int y) { return begin_[static_cast<std::size_t>(y)]; }
   int& end(int y) { return end_[static_cast<std::size_t>(y)]; }
 
+  // The row's interval of pixels that may be other than transparent black before they are
+  // cleared or composited (the whole row, [0, INT_MAX), when nothing is known); the pixels
+  // outside it are transparent black. Row y in [0, height).
+  int dirty_begin(int y) const { return dirty_begin_[static_cast<std::size_t>(y)]; }
+  int dirty_end(int y) const { return dirty_end_[static_cast<std::size_t>(y)]; }
+
  private:
   std::vector<int> begin_;
   std::vector<int> end_;
+  std::vector<int> dirty_begin_;  // per row: outside [dirty_begin, dirty_end) transparent
+  std::vector<int> dirty_end_;
+  const Pixel* finished_ = nullptr;  // the pixels the last finish cleared (null: none known)
+  int finished_width_ = 0;
 };
 
 // Composites `layer` over `frame`, with layer pixel (0, 0) placed on frame pixel

@@ -477,7 +477,7 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
   };
   std::array<Band, kMaxBands> bands;
   for_each_band(h, 32, [&](int band, int y0, int y1) {
-    Band& b = bands[static_cast<std::size_t>(band)];
+    Band b;  // filled here and moved once: the bands' slots share cache lines
     const std::vector<int> none;
     for (int y = y0; y < y1; ++y) {
       for (int x = 0; x < w; ++x) {
@@ -498,6 +498,7 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
         b.errors.push_back(e);
       }
     }
+    bands[static_cast<std::size_t>(band)] = std::move(b);
   });
   double sum = 0.0;
   std::int64_t candidates = 0;

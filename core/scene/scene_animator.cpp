@@ -261,6 +261,7 @@ double SceneEngine::show_splats(Image image, std::vector<int> source,
   std::int64_t holes = 0;
   for (std::size_t k = 0; k < unreached.size(); ++k) holes += unreached[k] && now.polygon[k] >= 0;
   const double diagnostics_ms = ms_since(t0);
+  lazy_clear_.forget();  // the frame is not the last compose's
   frame_ = std::move(image);
   source_of_ = std::move(source);
   report.pixels_written = pixels_written;
@@ -280,6 +281,7 @@ double SceneEngine::generate_frame(const ViewerPose& current, AnimationFrame& re
   measure_generated_frame(rendered_depth_, camera_, viewer_step(rendered_view_, current),
                           render_depth(scene_, camera_, current, settings_.near), g);
   const double diagnostics_ms = ms_since(t0);
+  lazy_clear_.forget();  // the frame is not the last compose's
   frame_ = std::move(g.image);
   source_of_ = std::move(g.source);
   report.pixels_written = g.pixels_written + g.inpainted_pixels;
@@ -313,6 +315,7 @@ void SceneEngine::cache_frame(const ViewerPose& current, AnimationFrame& report)
     states_[i]->updated = false;
   }
   // The pixel measures (holes, overlaps, per-pixel error) are diagnostics, outside the time.
+  lazy_clear_.forget();  // the cache draws the frame itself
   report.time_ms -= cache_->frame(current, culled, frame_, levels_, report);
   bsp_.back_to_front(eye_position(current), order_);
   for (std::size_t i = 0; i < states_.size(); ++i) {
@@ -398,7 +401,7 @@ void SceneEngine::compose(AnimationFrame& report) {
   // Cleared as it is composited: each pixel is stored about once, not cleared and then
   // stored again (the same bytes as a fill first). All the fragments, back to front, in one
   // pass of bands of rows (composite_all).
-  lazy_clear_.start(frame_.height());
+  lazy_clear_.start_on(frame_);  // the pixels the last compose left clear need no store
   std::vector<CompositeItem> items;
   for (int f : order_) {
     if (!fragment_drawn_[f]) continue;

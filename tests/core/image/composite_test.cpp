@@ -164,6 +164,62 @@ TEST(Composite, FrameClearedAsItIsCompositedEqualsClearedFirst) {
   EXPECT_GT(garbage_seen, 100);  // the control: the old pixels were there to be cleared
 }
 
+// Frame after frame on one image (LazyClear::start_on): each frame holds the bytes of a frame
+// cleared first and then composited over, although the pixels the last frame left clear are
+// not stored again; after other code changed the frame, forget() makes the next frame clear
+// it whole, and start_on on another image is start. Controls: a pixel changed behind the
+// LazyClear's back, outside every layer, stays changed (the store was skipped), and the
+// first frame on a new image, not known, is still right.
+TEST(Composite, FramesOnOneImageEqualClearedFirstAndSkipWhatIsKnownClear) {
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<int> offset(-20, 60);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const int threads : {1, 2}) {
+    set_worker_threads(threads);
+    Image frame = testing::random_image(rng, 64, 48);
+    LazyClear clear;
+    int skipped = 0;
+    for (int k = 0; k < 40; ++k) {
+      if (k % 10 == 9) {  // other code draws into the frame: forgotten
+        frame = testing::random_image(rng, 64, 48);
+        clear.forget();
+      }
+      // Behind the LazyClear's back: a pixel the last frame left clear, in a row no layer
+      // reaches this frame (the last row, which no layer below covers).
+      const bool poke = k % 10 == 5;
+      if (poke) frame.at(0, 47) = Pixel{1, 2, 3, 4};
+      Image reference(64, 48);
+      clear.start_on(frame);
+      const int layers = 1 + k % 4;
+      for (int n = 0; n < layers; ++n) {
+        const int w = 2 + static_cast<int>(unit(rng) * 40.0);
+        const int h = 2 + static_cast<int>(unit(rng) * 20.0);
+        Image pixels = testing::random_image(rng, w, h);
+        if (n % 2 == 0) {
+          for (Pixel& p : pixels.pixels()) p.a = 255;
+        }
+        const Layer layer = make_layer(pixels, testing::random_polygon(rng, w, h));
+        const int ox = offset(rng), oy = std::min(offset(rng), 40 - h);
+        EXPECT_EQ(composite_over(frame, layer, ox, oy, &clear),
+                  composite_over(reference, layer, ox, oy));
+      }
+      clear.finish(frame);
+      if (poke) {
+        skipped += frame.at(0, 47) == Pixel{1, 2, 3, 4};
+        frame.at(0, 47) = Pixel{};
+      }
+      ASSERT_TRUE(frame.pixels() == reference.pixels()) << "frame " << k << ", threads " << threads;
+    }
+    EXPECT_EQ(skipped, 4);  // the control: start_on left the known-clear pixel unstored
+    // Another image of the same size is not known: cleared whole.
+    Image other = testing::random_image(rng, 64, 48);
+    clear.start_on(other);
+    clear.finish(other);
+    EXPECT_TRUE(other.pixels() == Image(64, 48).pixels());
+  }
+  set_worker_threads(1);
+}
+
 // A batch (composite_all: one pass of bands of rows, every layer inside each band) against
 // the same layers composited one after the other, whole or within regions, lazily cleared or
 // over a cleared frame, on 1 and 2 threads: the same bytes and counts. The frame is large
