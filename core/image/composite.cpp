@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -126,56 +127,51 @@ std::int64_t composite_span(Image& frame, const Layer& layer, int offset_x, int 
   return end - begin;
 }
 
-// A layer's rows inside its clipped polygon: spans[first, last) of the batch's spans, in
-// increasing y.
-struct LayerRows {
+// A layer of a batch as the bands scan it: its part of the frame (frame pixels), and the
+// frame rows [first_row, end_row) that part may reach.
+struct PlacedPart {
   const Layer* layer;
   int offset_x, offset_y;
-  std::size_t first, last;
+  ConvexPolygon polygon;
+  int first_row, end_row;
 };
 
-// Appends the rows of `polygon` (frame pixels) clipped to the frame to `spans` and returns
-// the layer's entry (the empty spans skipped).
-LayerRows scan_rows(const Image& frame, const Layer& layer, int offset_x, int offset_y,
-                    const ConvexPolygon& polygon, std::vector<PixelSpan>& spans) {
-  LayerRows rows{&layer, offset_x, offset_y, spans.size(), spans.size()};
-  ScanConverter scan(polygon, frame.width(), frame.height());
-  PixelSpan span;
-  while (scan.next(span)) {
-    if (span.x_begin < span.x_end) spans.push_back(span);
-  }
-  rows.last = spans.size();
-  return rows;
-}
-
 // Composites each layer's rows in order, in bands of frame rows on the worker threads: a
-// band takes every layer's rows inside it, layer after layer, so each frame row meets the
-// layers in the order given, as one layer after the other over the whole frame would (the
-// same bytes and count). The layer pixel under frame pixel (x, y) is (x - offset_x,
-// y - offset_y), whose centre is inside the layer polygon iff the frame pixel's centre is
-// inside the translated polygon; the layer invariant keeps that pixel inside the layer image.
-std::int64_t composite_rows(Image& frame, const std::vector<LayerRows>& layers,
-                            const std::vector<PixelSpan>& spans, LazyClear* lazy) {
-  if (spans.empty()) return 0;
-  // Bands of the rows the layers reach, each of about 32768 pixels of the widest span or more.
-  int top = spans.front().y, bottom = top + 1, widest = 1;
-  for (const PixelSpan& span : spans) {
-    top = std::min(top, span.y);
-    bottom = std::max(bottom, span.y + 1);
-    widest = std::max(widest, span.x_end - span.x_begin);
+// band scans every layer's part inside its rows (ScanConverter::clip_rows: the same spans as
+// one scan of the whole part) and composites them, layer after layer, so each frame row
+// meets the layers in the order given, as one layer after the other over the whole frame
+// would (the same bytes and count). The layer pixel under frame pixel (x, y) is
+// (x - offset_x, y - offset_y), whose centre is inside the layer polygon iff the frame pixel's
+// centre is inside the translated polygon; the layer invariant keeps that pixel inside the
+// layer image.
+std::int64_t composite_rows(Image& frame, const std::vector<PlacedPart>& parts, LazyClear* lazy) {
+  if (parts.empty()) return 0;
+  // Bands of the rows the layers reach, each of about 32768 pixels of the widest part (its
+  // box within the frame) or more.
+  int top = frame.height(), bottom = 0, widest = 1;
+  for (const PlacedPart& p : parts) {
+    top = std::min(top, p.first_row);
+    bottom = std::max(bottom, p.end_row);
+    const BoundingBox box = p.polygon.bounds();
+    const double left = std::max(box.x_min, 0.0);
+    const double right = std::min(box.x_max, static_cast<double>(frame.width()));
+    widest = std::max(widest, static_cast<int>(std::ceil(right - left)));
   }
+  if (top >= bottom) return 0;
   std::array<std::int64_t, kMaxBands> counts{};
-  const auto below = [](const PixelSpan& span, int y) { return span.y < y; };
   for_each_band(bottom - top, std::max(8, 32768 / widest), [&](int band, int first, int last) {
     // Counted here and stored once: the bands' slots share a cache line, and a store per
     // span from both threads had each wait for the line.
     std::int64_t count = 0;
-    for (const LayerRows& l : layers) {
-      const auto end = spans.begin() + static_cast<std::ptrdiff_t>(l.last);
-      auto k = std::lower_bound(spans.begin() + static_cast<std::ptrdiff_t>(l.first), end,
-                                top + first, below);
-      for (; k != end && k->y < top + last; ++k) {
-        count += composite_span(frame, *l.layer, l.offset_x, l.offset_y, *k, lazy);
+    for (const PlacedPart& p : parts) {
+      if (p.end_row <= top + first || p.first_row >= top + last) continue;
+      ScanConverter scan(p.polygon, frame.width(), frame.height());
+      scan.clip_rows(top + first, top + last);
+      PixelSpan span;
+      while (scan.next(span)) {
+        if (span.x_begin < span.x_end) {
+          count += composite_span(frame, *p.layer, p.offset_x, p.offset_y, span, lazy);
+        }
       }
     }
     counts[static_cast<std::size_t>(band)] = count;
@@ -201,23 +197,24 @@ ConvexPolygon placed_part(const Layer& layer, int offset_x, int offset_y,
 }
 
 // Composites items[0 .. count - 1] in order (composite_over, composite_over_region and
-// composite_all): each item's part of the frame scanned into rows, then one composite_rows.
+// composite_all): each item's part of the frame placed, then one composite_rows.
 std::int64_t composite_items(Image& frame, const CompositeItem* items, std::size_t count,
                              LazyClear* lazy) {
   if (frame.empty()) return 0;
-  thread_local std::vector<PixelSpan> spans;  // memory kept from call to call
-  thread_local std::vector<LayerRows> layers;
-  spans.clear();
-  layers.clear();
+  thread_local std::vector<PlacedPart> parts;  // memory kept from call to call
+  parts.clear();
   for (std::size_t k = 0; k < count; ++k) {
     const CompositeItem& item = items[k];
     const Layer& layer = *item.layer;
     if (layer.empty() || (item.region != nullptr && item.region->empty())) continue;
-    const ConvexPolygon polygon = placed_part(layer, item.offset_x, item.offset_y, item.region);
+    ConvexPolygon polygon = placed_part(layer, item.offset_x, item.offset_y, item.region);
     if (polygon.empty()) continue;
-    layers.push_back(scan_rows(frame, layer, item.offset_x, item.offset_y, polygon, spans));
+    const ScanConverter scan(polygon, frame.width(), frame.height());
+    if (scan.first_row() >= scan.end_row()) continue;
+    const int first_row = scan.first_row(), end_row = scan.end_row();
+    parts.push_back({&layer, item.offset_x, item.offset_y, std::move(polygon), first_row, end_row});
   }
-  return composite_rows(frame, layers, spans, lazy);
+  return composite_rows(frame, parts, lazy);
 }
 
 }  // namespace
