@@ -58,6 +58,16 @@ void Image::fill(Pixel value) {
   });
 }
 
+Image& Image::operator=(const Image& other) {
+  if (this == &other) return *this;
+  const std::size_t n = other.pixels_.size();
+  if (pixels_.capacity() > 0 && pixels_.capacity() < n) pixels_.reserve(n + n / 4);
+  pixels_.assign(other.pixels_.begin(), other.pixels_.end());  // strong: no change if it throws
+  width_ = other.width_;
+  height_ = other.height_;
+  return *this;
+}
+
 void Image::reshape(int width, int height) {
   check_dimensions(width, height);
   const bool empty = width == 0 || height == 0;

@@ -52,6 +52,15 @@ class Image {
   // kMaxImageDimension. A zero width or height gives an empty image.
   Image(int width, int height, Pixel fill = Pixel{});
 
+  Image(const Image&) = default;
+  Image(Image&&) noexcept = default;
+  Image& operator=(Image&&) noexcept = default;
+  // Copies `other`'s size and pixels. Storage already in use that is too small grows with a
+  // quarter of headroom: a layer copied into kept memory frame after frame as it grows (a
+  // facade coming nearer) is then not reallocated, and its pages faulted in anew, on every
+  // frame. An empty destination takes exactly what it needs.
+  Image& operator=(const Image& other);
+
   int width() const { return width_; }
   int height() const { return height_; }
   bool empty() const { return width_ == 0 || height_ == 0; }

@@ -56,6 +56,41 @@ TEST(Image, ConstructionChecksTheSizeAndFills) {
   EXPECT_THROW(Image(3, kMaxImageDimension + 1), std::invalid_argument);
 }
 
+// A copy into an image in use is the source's size and pixels; when the destination's storage
+// is too small it grows with headroom, so that the next, slightly larger copy keeps it (the
+// layer copied each frame as it grows). An empty destination, and a self-copy, are plain.
+TEST(Image, CopiesIntoAGrowingImageKeepItsStorage) {
+  const auto ramp = [](int w, int h) {
+    Image image(w, h);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        image.at(x, y) = Pixel{static_cast<std::uint8_t>(x), static_cast<std::uint8_t>(y), 7, 255};
+      }
+    }
+    return image;
+  };
+  Image kept(10, 10);
+  const Image first = ramp(100, 50);
+  kept = first;  // grows: 5000 pixels with room for 6250
+  const Pixel* storage = kept.pixels().data();
+  const Image larger = ramp(110, 55);  // 6050 pixels
+  kept = larger;
+  EXPECT_EQ(kept.width(), 110);
+  EXPECT_EQ(kept.height(), 55);
+  EXPECT_TRUE(kept.pixels() == larger.pixels());
+  EXPECT_EQ(kept.pixels().data(), storage);  // no reallocation
+  const Image smaller = ramp(20, 30);
+  kept = smaller;
+  EXPECT_TRUE(kept.pixels() == smaller.pixels());
+  EXPECT_EQ(kept.width(), 20);
+  kept = kept;  // self-copy
+  EXPECT_TRUE(kept.pixels() == smaller.pixels());
+  Image fresh;
+  fresh = larger;
+  EXPECT_EQ(fresh.pixels().capacity(), larger.pixels().size());  // exactly what it needs
+  EXPECT_TRUE(fresh.pixels() == larger.pixels());
+}
+
 TEST(Image, StraightBytesRoundTripThroughPremultipliedStorage) {
   const std::vector<std::uint8_t> bytes = {255, 128, 0, 255, 100, 50, 25, 128};
   const Image image = image_from_straight_rgba(2, 1, bytes);
