@@ -72,6 +72,14 @@ void blend_row(const Pixel* src, Pixel* dst, int n) {
   }
 }
 
+// Clears row pixels [from, to) (within the row) where they may be other than transparent
+// black: those inside [dirty_begin, dirty_end) (LazyClear::dirty_begin, dirty_end).
+void clear_dirty(Pixel* row, int from, int to, int dirty_begin, int dirty_end) {
+  from = std::max(from, dirty_begin);
+  to = std::min(to, dirty_end);
+  if (from < to) std::fill(row + from, row + to, Pixel{});
+}
+
 // Composites frame pixels [begin, end) of one row whose pixels outside the row's interval
 // of `lazy` are not yet cleared: over transparent black the layer pixel itself is the
 // result, the gap to the interval is cleared (its pixels inside [dirty_begin, dirty_end):
@@ -82,20 +90,14 @@ void composite_lazy(const Pixel* src, Pixel* row, int begin, int end, int& held_
   const auto copy = [&](int from, int to) {
     if (from < to) std::copy(src + (from - begin), src + (to - begin), row + from);
   };
-  // Clears the gap [from, to) where its pixels may not be transparent black yet.
-  const auto clear = [&](int from, int to) {
-    from = std::max(from, dirty_begin);
-    to = std::min(to, dirty_end);
-    if (from < to) std::fill(row + from, row + to, Pixel{});
-  };
   if (held_begin >= held_end) {
     copy(begin, end);
     held_begin = begin;
     held_end = end;
     return;
   }
-  if (end < held_begin) clear(end, held_begin);
-  if (held_end < begin) clear(held_end, begin);
+  if (end < held_begin) clear_dirty(row, end, held_begin, dirty_begin, dirty_end);
+  if (held_end < begin) clear_dirty(row, held_end, begin, dirty_begin, dirty_end);
   copy(begin, std::min(end, held_begin));
   const int inside_begin = std::max(begin, held_begin);
   const int inside_end = std::min(end, held_end);
@@ -224,7 +226,7 @@ void LazyClear::start(int height) {
   begin_.assign(rows, 0);
   end_.assign(rows, 0);
   forget();
-  dirty_begin_.assign(rows, 0);
+  dirty_begin_.assign(rows, 0);  // nothing known: the whole row may hold anything
   dirty_end_.assign(rows, std::numeric_limits<int>::max());
 }
 
@@ -241,20 +243,13 @@ void LazyClear::start_on(const Image& frame) {
 }
 
 void LazyClear::forget() {
+  // The intervals stay until start, which start_on then calls: no frame is known.
   finished_ = nullptr;
   finished_width_ = 0;
-  std::fill(dirty_begin_.begin(), dirty_begin_.end(), 0);
-  std::fill(dirty_end_.begin(), dirty_end_.end(), std::numeric_limits<int>::max());
 }
 
 void LazyClear::finish(Image& frame) {
   const int width = frame.width();
-  // Clears row pixels [from, to) that may not be transparent black yet.
-  const auto clear = [width](Pixel* row, int from, int to, int dirty_from, int dirty_to) {
-    from = std::max({from, dirty_from, 0});
-    to = std::min({to, dirty_to, width});
-    if (from < to) std::fill(row + from, row + to, Pixel{});
-  };
   for_each_band(frame.height(), std::max(8, 65536 / std::max(width, 1)),
                 [&](int, int first, int last) {
                   for (int y = first; y < last; ++y) {
@@ -264,8 +259,8 @@ void LazyClear::finish(Image& frame) {
                     int& db = dirty_begin_[static_cast<std::size_t>(y)];
                     int& de = dirty_end_[static_cast<std::size_t>(y)];
                     if (b >= e) b = e = width;  // nothing held: the whole row is cleared
-                    clear(row, 0, b, db, de);
-                    clear(row, e, width, db, de);
+                    clear_dirty(row, 0, b, db, de);
+                    clear_dirty(row, e, width, db, de);
                     db = b;  // what the next frame may find other than transparent black
                     de = e;
                     b = 0;

@@ -468,16 +468,16 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
     from_frame[k] = glm::inverse(states_[k]->to_frame);
     steps[k] = viewer_step(states_[k]->view, current);
   }
-  // Rows in bands on the worker threads; each band keeps its own tallies and its errors in
-  // raster order, summed here band after band: the same sum, in the same order, as one pass.
-  struct Band {
+  // Rows in bands on the worker threads; each band keeps its tallies (on a cache line of its own)
+  // and its errors in raster order, summed band after band: the same sum and order as one pass.
+  struct alignas(64) Band {
     std::int64_t overlap = 0, candidates = 0;
     double max_error = 0.0;
     std::vector<double> errors;
   };
   std::array<Band, kMaxBands> bands;
   for_each_band(h, 32, [&](int band, int y0, int y1) {
-    Band b;  // filled here and moved once: the bands' slots share cache lines
+    Band& b = bands[static_cast<std::size_t>(band)];
     const std::vector<int> none;
     for (int y = y0; y < y1; ++y) {
       for (int x = 0; x < w; ++x) {
@@ -498,7 +498,6 @@ void HierarchicalCache::measure_pixels(const ViewerPose& current, const std::vec
         b.errors.push_back(e);
       }
     }
-    bands[static_cast<std::size_t>(band)] = std::move(b);
   });
   double sum = 0.0;
   std::int64_t candidates = 0;
