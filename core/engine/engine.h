@@ -281,8 +281,7 @@ class PlaneEngine {
   void show_clipped(const PlanePose& pose, const Framing& framing, FrameReport& report);
   void apply_level(FrameReport& report, const Vec2& expansion_point, const PlanePose& current);
   void rerender(const PlanePose& pose, FrameReport& report);
-  // rerender of a lit content: renders it for the pose (kept as the perspective level's
-  // source when the policy reuses) and shows it under displayed_.
+  // rerender of a lit content: renders it (kept for the perspective level) and shows it.
   void rerender_content(const PlanePose& pose, FrameReport& report);
   void apply_translation(const Vec2& step);
   bool apply_affine(const Mat3& correction, const Vec2& point, FrameReport& report);
@@ -291,9 +290,8 @@ class PlaneEngine {
   // it; texel_to_image is the warp the layer then shows (for the measured error).
   void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
             FrameReport& report);
-  // Warps `source` into warped_ (memory reused; `only`'s pixels); counts the pixels. Under
-  // Sampling::kMipmap a source the engine keeps (texture, cache, lit render) is sampled
-  // through the pyramid kept with it (pyramid_of), any other through one built for the warp.
+  // Warps `source` into warped_ (memory reused; `only`'s pixels) and counts them. Mipmap
+  // sampling takes a kept source's kept pyramid (pyramid_of), else one built for the warp.
   void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
                     const PixelRows* only = nullptr);
   // A partly warped display: warps what its warp left out that the frame shows now (all).
@@ -303,6 +301,10 @@ class PlaneEngine {
   void keep_pyramid(const Layer& layer, MipPyramid& pyramid) const;
   void cache_from_display();
   void show_from_cache(FrameReport& report);
+  // A lit content's last render: rendered_, or display_.layer while that is the render; a
+  // render kept there moves to rendered_ (a swap) before that memory is replaced.
+  const Layer& kept_render() const { return render_in_display_ ? display_.layer : rendered_; }
+  void keep_render_from_display(Layer& display_memory);
   void finish_report(const PlanePose& pose, FrameReport& report) const;
   // The policy's view of a pose: the exact texel -> image warp, or its affine part.
   Mat3 target_warp(const PlanePose& pose) const;
@@ -311,8 +313,7 @@ class PlaneEngine {
   std::array<Vec2, 4> texel_corners() const;
   std::vector<Vec2> displayed_corners_centred() const;
   double corner_distance(const Mat3& a, const Mat3& b) const;
-  // The largest corner distance, pixels, between the shown layer and `reference` (a texel to
-  // display warp).
+  // The largest corner distance (pixels) from the shown layer to `reference` (texel -> image).
   double shown_error(const Mat3& reference) const;
   PlanePose sized_pose(const PlanePose& pose) const;
 
@@ -335,16 +336,15 @@ class PlaneEngine {
   // Lit content: its last render (kept only when the policy reuses) and the texel -> layer
   // pixel warp it was rendered with; the pose it was lit at.
   Layer rendered_;
-  MipPyramid rendered_mips_;  // Sampling::kMipmap: rendered_'s pyramid
+  bool render_in_display_ = false;  // kept_render() is display_.layer: shown, not copied
+  MipPyramid rendered_mips_;        // Sampling::kMipmap: kept_render()'s pyramid
   Mat3 rendered_from_texel_{1.0};
   PlanePose rendered_pose_;
-  // Scratch of every warp: swapped with the displayed or the cache layer after a warp, so
-  // that in a steady state the frames reuse the same few layer buffers.
+  // Scratch of every warp, swapped with the display or the cache: a few buffers, reused.
   WarpedLayer warped_;
   TermArray accumulated_{};
-  // Today's reprojection: the pose at the last render, the frame plane kept then, the plane
-  // set for this frame (set_frame_plane), the first pose shown (a given stabilization
-  // plane's world for a single plane) and the frames since the last render.
+  // Today's reprojection: the pose and frame plane at the last render, this frame's plane
+  // (set_frame_plane), the first pose shown (a stabilization plane's world), frames since.
   PlanePose render_pose_;
   Vec3 render_plane_{0.0};
   Vec3 frame_plane_{0.0};

@@ -44,6 +44,7 @@ void PlaneEngine::hide(const std::string& note, FrameReport& report) {
   report.visible = false;
   report.note = note;
   cache_.valid = false;
+  keep_render_from_display(display_.layer);
   display_ = PlacedLayer{};
   partial_.active = false;
   clipped_outline_.clear();
@@ -61,6 +62,7 @@ void PlaneEngine::show_clipped(const PlanePose& pose, const Framing& framing, Fr
   partial_.active = false;
   accumulated_.fill(0.0);
   const auto t0 = Clock::now();
+  keep_render_from_display(display_.layer);
   if (content_is_lit(settings_.content)) {
     ContentStats stats;
     display_ = render_clipped_content(camera_, settings_.content, sized_pose(pose),
@@ -118,14 +120,16 @@ void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
   report.model_work += stats.work_units * content_unit_cost(settings_.content.kind);
   rendered_pose_ = sized;
   const Mat3 origin = translation_matrix(warped_.offset_x, warped_.offset_y);
-  if (policy().allows_reuse()) {
-    rendered_ = warped_.layer;  // the perspective level's source (a copy into kept memory)
-    keep_pyramid(rendered_, rendered_mips_);
+  const bool keep = policy().allows_reuse();  // the perspective level's source
+  render_in_display_ = false;                 // the new render replaces the kept one
+  if (keep) {
+    keep_pyramid(warped_.layer, rendered_mips_);
     rendered_from_texel_ = glm::inverse(origin) * exact;
   }
   if (policy().initial_view != InitialView::kAffinePart) {
     partial_.active = false;
     std::swap(display_.layer, warped_.layer);
+    render_in_display_ = keep;  // shown as made: kept there, not copied
     display_.offset_x = warped_.offset_x;
     display_.offset_y = warped_.offset_y;
     layer_warp_ = exact;
@@ -133,6 +137,7 @@ void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
     return;
   }
   // An affine initial view (section 6.5): the render is warped onto it.
+  if (keep) rendered_ = warped_.layer;  // a copy into kept memory
   const Layer render = warped_.layer;
   show(render, displayed_ * glm::inverse(exact) * origin, displayed_, report);
 }
@@ -211,6 +216,7 @@ void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const M
                               warped_.layer.image.height());
   }
   std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
+  keep_render_from_display(warped_.layer);
   display_.offset_x = warped_.offset_x;
   display_.offset_y = warped_.offset_y;
   layer_warp_ = texel_to_image;
@@ -261,8 +267,14 @@ const MipPyramid* PlaneEngine::pyramid_of(const Layer& source) const {
   if (settings_.sampling != Sampling::kMipmap) return nullptr;
   if (&source == &texture_) return &texture_mips_;
   if (&source == &cache_.layer) return &cache_.mips;
-  if (&source == &rendered_) return &rendered_mips_;
+  if (&source == &kept_render()) return &rendered_mips_;
   return nullptr;
+}
+
+void PlaneEngine::keep_render_from_display(Layer& display_memory) {
+  if (!render_in_display_) return;
+  std::swap(rendered_, display_memory);
+  render_in_display_ = false;
 }
 
 void PlaneEngine::keep_pyramid(const Layer& layer, MipPyramid& pyramid) const {
@@ -316,7 +328,7 @@ bool PlaneEngine::apply_perspective(const Mat3& target, FrameReport& report) {
         settings_.max_magnification) {
       return false;
     }
-    warp_reusing(rendered_, render_to_cache, report);
+    warp_reusing(kept_render(), render_to_cache, report);
   } else {
     warp_reusing(texture_, texel_to_cache, report);
   }
