@@ -60,8 +60,7 @@ void Image::fill(Pixel value) {
 
 Image& Image::operator=(const Image& other) {
   if (this == &other) return *this;
-  const std::size_t n = other.pixels_.size();
-  if (pixels_.capacity() > 0 && pixels_.capacity() < n) pixels_.reserve(n + n / 4);
+  grow_storage(other.pixels_.size());
   pixels_.assign(other.pixels_.begin(), other.pixels_.end());  // strong: no change if it throws
   width_ = other.width_;
   height_ = other.height_;
@@ -74,7 +73,13 @@ void Image::reshape(int width, int height) {
   width_ = empty ? 0 : width;
   height_ = empty ? 0 : height;
   // resize() never gives memory back, so a buffer that shrinks and grows again stays put.
-  pixels_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  const std::size_t n = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  grow_storage(n);
+  pixels_.resize(n);
+}
+
+void Image::grow_storage(std::size_t n) {
+  if (pixels_.capacity() > 0 && pixels_.capacity() < n) pixels_.reserve(n + n / 4);
 }
 
 Image image_from_straight_rgba(int width, int height,

@@ -56,9 +56,7 @@ class Image {
   Image(Image&&) noexcept = default;
   Image& operator=(Image&&) noexcept = default;
   // Copies `other`'s size and pixels. Storage already in use that is too small grows with a
-  // quarter of headroom: a layer copied into kept memory frame after frame as it grows (a
-  // facade coming nearer) is then not reallocated, and its pages faulted in anew, on every
-  // frame. An empty destination takes exactly what it needs.
+  // quarter of headroom (grow_storage). An empty destination takes exactly what it needs.
   Image& operator=(const Image& other);
 
   int width() const { return width_; }
@@ -81,11 +79,18 @@ class Image {
   void fill(Pixel value);
 
   // Makes the image width x height, keeping its storage when that is large enough (no
-  // allocation then): pixel values are unspecified afterwards, the caller writes them all.
-  // Throws std::invalid_argument as the constructor does.
+  // allocation then), else growing storage in use as grow_storage does: pixel values are
+  // unspecified afterwards, the caller writes them all. Throws std::invalid_argument as the
+  // constructor does.
   void reshape(int width, int height);
 
  private:
+  // Storage in use that is too small for n pixels grows with a quarter of headroom: a layer
+  // written into kept memory frame after frame as it grows (a facade coming nearer) is then
+  // not reallocated, and its pages faulted in anew, on every frame (std::vector grows by
+  // its size, not its capacity: after a shrink it would grow to exactly n).
+  void grow_storage(std::size_t n);
+
   int width_ = 0;
   int height_ = 0;
   std::vector<Pixel> pixels_;

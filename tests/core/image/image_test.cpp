@@ -91,6 +91,24 @@ TEST(Image, CopiesIntoAGrowingImageKeepItsStorage) {
   EXPECT_TRUE(fresh.pixels() == larger.pixels());
 }
 
+// A layer's image reshaped frame after frame: grown past the storage in use (after a shrink,
+// which keeps it), it takes a quarter of headroom, so the next growths stay in place.
+TEST(Image, AReshapedImageGrowingPastItsStorageGetsHeadroom) {
+  Image image(100, 50);    // exactly 5000 pixels
+  image.reshape(10, 10);   // the storage stays
+  image.reshape(100, 60);  // 6000 pixels: room for 7500
+  EXPECT_GE(image.pixels().capacity(), 7500u);
+  const Pixel* storage = image.pixels().data();
+  image.reshape(110, 65);                     // 7150 pixels
+  EXPECT_EQ(image.pixels().data(), storage);  // no reallocation
+  EXPECT_EQ(image.width(), 110);
+  EXPECT_EQ(image.height(), 65);
+  EXPECT_EQ(image.pixels().size(), 7150u);
+  Image fresh;
+  fresh.reshape(30, 20);
+  EXPECT_EQ(fresh.pixels().capacity(), 600u);  // an empty image takes exactly what it needs
+}
+
 TEST(Image, StraightBytesRoundTripThroughPremultipliedStorage) {
   const std::vector<std::uint8_t> bytes = {255, 128, 0, 255, 100, 50, 25, 128};
   const Image image = image_from_straight_rgba(2, 1, bytes);
