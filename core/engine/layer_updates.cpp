@@ -136,10 +136,15 @@ void PlaneEngine::rerender_content(const PlanePose& pose, FrameReport& report) {
     layer_origin_ = glm::ivec2(warped_.offset_x, warped_.offset_y);
     return;
   }
-  // An affine initial view (section 6.5): the render is warped onto it.
-  if (keep) rendered_ = warped_.layer;  // a copy into kept memory
-  const Layer render = warped_.layer;
-  show(render, displayed_ * glm::inverse(exact) * origin, displayed_, report);
+  // An affine initial view (section 6.5): the render is warped onto it, from rendered_ when
+  // it is kept (moved there, its pyramid kept_render()'s), else from a copy.
+  Layer copy;
+  if (keep) {
+    std::swap(rendered_, warped_.layer);  // warped_ takes rendered_'s old memory as scratch
+  } else {
+    copy = warped_.layer;
+  }
+  show(keep ? rendered_ : copy, displayed_ * glm::inverse(exact) * origin, displayed_, report);
 }
 
 Mat3 PlaneEngine::target_warp(const PlanePose& pose) const {
