@@ -51,9 +51,7 @@ void register_case(const Layer& source, const MipPyramid& pyramid, const Minifyi
         Image output(600, 400);
         const WarpOptions bilinear{Sampling::kBilinear, kernel};
         const WarpOptions mipmap{Sampling::kMipmap, kernel, kDefaultHorizonEpsilon, &pyramid};
-        WarpOptions trilinear = mipmap;
-        trilinear.mip_blend = MipBlend::kTrilinear;
-        std::vector<double> bilinear_ms, mipmap_ms, trilinear_ms;
+        std::vector<double> bilinear_ms, mipmap_ms;
         using Clock = std::chrono::steady_clock;
         const auto ms = [](Clock::time_point a, Clock::time_point b) {
           return std::chrono::duration<double, std::milli>(b - a).count();
@@ -66,19 +64,13 @@ void register_case(const Layer& source, const MipPyramid& pyramid, const Minifyi
           warp_layer_into(source, c.warp, output, 0, 0, mipmap);
           benchmark::ClobberMemory();
           const auto t2 = Clock::now();
-          warp_layer_into(source, c.warp, output, 0, 0, trilinear);
-          benchmark::ClobberMemory();
-          const auto t3 = Clock::now();
           bilinear_ms.push_back(ms(t0, t1));
           mipmap_ms.push_back(ms(t1, t2));
-          trilinear_ms.push_back(ms(t2, t3));
         }
-        const double b = median(bilinear_ms), m = median(mipmap_ms), t = median(trilinear_ms);
+        const double b = median(bilinear_ms), m = median(mipmap_ms);
         state.counters["bilinear_ms"] = b;
         state.counters["mipmap_ms"] = m;
         state.counters["ratio"] = b > 0.0 ? m / b : 0.0;
-        state.counters["trilinear_ms"] = t;
-        state.counters["trilinear_ratio"] = b > 0.0 ? t / b : 0.0;
       })
       ->Repetitions(repetitions)
       ->ReportAggregatesOnly(true)

@@ -22,13 +22,8 @@
 // sigma, and the level is log2(sigma) clamped to [0, top]. Level 0 (sigma <= 1) is
 // magnification or no scaling: the warp then samples bilinearly, exactly as
 // Sampling::kBilinear does.
-//
-// Blend. Between two levels the kernel blends level floor(L) and floor(L) + 1 with the
-// upper one's weight rising with frac(L) (MipBlend): over the whole octave (trilinear), or
-// over its middle half only, one level alone on either side.
 #pragma once
 
-#include <algorithm>
 #include <vector>
 
 #include "flow/geometry.h"
@@ -89,45 +84,5 @@ double footprint_axis(double j00, double j01, double j10, double j11);
 // output pixel, rows (du/dx, du/dy) and (dv/dx, dv/dy); a singular or non-finite J gives
 // the clamped log of what footprint_axis returns (0 for all-zero J, top for infinity).
 double mip_level(double j00, double j01, double j10, double j11, int top);
-
-// Where in an octave two levels are blended.
-//  - kTrilinear: everywhere; the upper level's weight is frac(L) (Williams 83).
-//  - kMiddleHalf: over frac(L) in [1/4, 3/4] only, the weight 2 frac(L) - 1/2 rising from 0
-//    to 1 there; below 1/4 level floor(L) alone, above 3/4 level floor(L) + 1 alone (what
-//    graphics drivers call "brilinear" filtering). The sample is continuous in L as with
-//    kTrilinear, and half the pixels of a warp spanning whole octaves sample one level
-//    instead of two. The default: its cost and its loss against kTrilinear are in
-//    manual/warping.md (tests/core/image/mipmap_test.cpp bounds the loss).
-enum class MipBlend { kTrilinear, kMiddleHalf };
-inline constexpr MipBlend kDefaultMipBlend = MipBlend::kMiddleHalf;
-
-// The level bias, in 1/256 of a level: a pixel samples level L = mip_level - 1/4 (clamped
-// to 0). A level's bilinear sample stands for a wider neighbourhood than the footprint it
-// samples for (level k's 2^k box under a tent two of its texels wide: standard deviation
-// 2^k / 2, against sigma / sqrt(12) for a box over the footprint; the two match at
-// k = log2(sigma) - 0.79), so at L = log2(sigma) the mipmap sample blurs more than a box
-// filter over the footprint; the bias takes back part of that and stays on the coarse side
-// of the match (manual/warping.md gives what it measures).
-inline constexpr int kMipLevelBias = 64;
-
-// The level index a pixel samples, 256 lower + weight, from its footprint's index
-// (256 mip_level, rounded; weight in [0, 255]): the bias subtracted (clamped to 0), then, for
-// kMiddleHalf, 256 lower + 2 clamp(weight - 64, 0, 128), a weight of 256 being the index of
-// level lower + 1 with weight 0. A footprint index at the top level gives a lower level
-// whose weight takes it to the top. Branch-free, so that a loop over a row's indices
-// vectorizes.
-inline int mip_sampled_index(int footprint_index, MipBlend blend) {
-  const int index = std::max(footprint_index - kMipLevelBias, 0);
-  if (blend == MipBlend::kTrilinear) return index;
-  const int weight = index & 255;
-  return index - weight + 2 * std::clamp(weight - 64, 0, 128);
-}
-
-// The largest footprint axis (sigma) whose pixels all sample level 0 alone under `blend`:
-// 2^(1/4) with kTrilinear (the bias), 2^(1/2) with kMiddleHalf (an index up to 64 after the
-// bias narrows to weight 0).
-inline double mip_single_level_footprint(MipBlend blend) {
-  return blend == MipBlend::kTrilinear ? 1.189207115002721 : 1.4142135623730951;
-}
 
 }  // namespace oflab

@@ -21,17 +21,22 @@ namespace {
 // Rows per band, as the other kernels' pass 2 (about 16384 pixels a band).
 int min_band_rows(int width) { return std::max(8, 16384 / std::max(width, 1)); }
 
-// The level pair a pixel of footprint level `level` (mip_level) samples: `lower` and the
-// upper level's weight in 1/256, from 256 level rounded by mip_sampled_index (the bias, and
-// the narrowing of `blend`).
+// The trilinear weight of the upper level in 1/256: frac(level) rounded; `lower` is then
+// the lower level (the weight 256 moves to the next level with weight 0).
 struct LevelPair {
   int lower = 0;
   int weight = 0;  // 0..255
 };
 
-LevelPair level_pair(double level, MipBlend blend) {
-  const int index = mip_sampled_index(static_cast<int>(std::lround(level * 256.0)), blend);
-  return LevelPair{index >> 8, index & 255};
+LevelPair level_pair(double level) {
+  LevelPair pair;
+  pair.lower = static_cast<int>(std::floor(level));
+  pair.weight = static_cast<int>(std::lround((level - pair.lower) * 256.0));
+  if (pair.weight >= 256) {
+    ++pair.lower;
+    pair.weight = 0;
+  }
+  return pair;
 }
 
 // (a * (256 - w) + b * w + 128) / 256 per channel, rounded.
@@ -215,11 +220,10 @@ std::int64_t run_affine_blend(const WarpPlan& plan, const Image& source, const M
 
 // Affine: one level pair for the whole warp; one level alone is the bilinear kernel on it.
 std::int64_t run_affine(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                        MipBlend blend, Image& output, std::int64_t* computed) {
+                        Image& output, std::int64_t* computed) {
   const Mat3& h = plan.dest_to_source;
   const LevelPair pair = level_pair(
-      mip_level(entry(h, 0, 0), entry(h, 0, 1), entry(h, 1, 0), entry(h, 1, 1), pyramid.top()),
-      blend);
+      mip_level(entry(h, 0, 0), entry(h, 0, 1), entry(h, 1, 0), entry(h, 1, 1), pyramid.top()));
   if (pair.weight != 0) return run_affine_blend(plan, source, pyramid, pair, output, computed);
   return run_warp_kernel(level_plan(plan, pair.lower), level_image(source, pyramid, pair.lower),
                          output, computed);
@@ -267,10 +271,8 @@ Pixel bilinear_clamped(const Image& image, double u, double v) {
                     fy);
 }
 
-// One output pixel at (x, y) of a perspective plan: its own level pair, blended as `blend`
-// says.
-Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyramid, int x, int y,
-                      MipBlend blend) {
+// One output pixel at (x, y) of a perspective plan: its own level, trilinear.
+Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyramid, int x, int y) {
   const double px = x + 0.5, py = y + 0.5;
   const double d = entry(h, 2, 0) * px + entry(h, 2, 1) * py + entry(h, 2, 2);
   const double su = (entry(h, 0, 0) * px + entry(h, 0, 1) * py + entry(h, 0, 2)) / d;
@@ -279,7 +281,7 @@ Pixel trilinear_pixel(const Mat3& h, const Image& source, const MipPyramid& pyra
   const double j01 = (entry(h, 0, 1) - su * entry(h, 2, 1)) / d;
   const double j10 = (entry(h, 1, 0) - sv * entry(h, 2, 0)) / d;
   const double j11 = (entry(h, 1, 1) - sv * entry(h, 2, 1)) / d;
-  const LevelPair pair = level_pair(mip_level(j00, j01, j10, j11, pyramid.top()), blend);
+  const LevelPair pair = level_pair(mip_level(j00, j01, j10, j11, pyramid.top()));
   const double scale = std::ldexp(1.0, -pair.lower);
   const Pixel lower = bilinear_clamped(level_image(source, pyramid, pair.lower), su * scale - 0.5,
                                        sv * scale - 0.5);
@@ -347,13 +349,12 @@ void sample_levels(const MipLevelMaps& levels, const std::uint16_t* pairs, std::
 }
 
 // One span of a perspective plan: each pixel's level pair (found over the whole span, so a
-// partial warp's pixels get the levels the whole warp gives them; narrowed by `blend`),
-// then, over the wanted
+// partial warp's pixels get the levels the whole warp gives them), then, over the wanted
 // pixels (all of the span without plan.only), the levels sampled with the row cut where the
 // lower level changes (run_trilinear_levels_row) or, without the AVX2 loops, per stretch of
 // one lower level the fast bilinear row on it and, where a weight is not 0, on the next
 // level, blended pixel by pixel. Returns the pixels written.
-std::int64_t perspective_span_mip(const WarpPlan& plan, const MipLevelMaps& levels, MipBlend blend,
+std::int64_t perspective_span_mip(const WarpPlan& plan, const MipLevelMaps& levels,
                                   const PixelSpan& span, Image& output) {
   thread_local std::vector<std::uint16_t> pairs;
   thread_local std::vector<std::uint16_t> weight;
@@ -362,8 +363,6 @@ std::int64_t perspective_span_mip(const WarpPlan& plan, const MipLevelMaps& leve
   pairs.resize(static_cast<std::size_t>(count) + 7);  // run_trilinear_levels_row's padding
   weight.resize(static_cast<std::size_t>(count));
   mip_row_levels(plan.dest_to_source, top, span.y, span.x_begin, span.x_end, pairs.data());
-  for (std::uint16_t& index : pairs)
-    index = static_cast<std::uint16_t>(mip_sampled_index(index, blend));
   Pixel* out = output.row(span.y) + span.x_begin;
   return for_each_wanted(plan, span, [&](int begin, int end) {
     const int first = begin - span.x_begin, last = end - span.x_begin;
@@ -374,9 +373,8 @@ std::int64_t perspective_span_mip(const WarpPlan& plan, const MipLevelMaps& leve
 }
 
 std::int64_t run_perspective(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                             MipBlend blend, Image& output, std::int64_t* computed) {
-  if (footprint_bound(plan.dest_to_source, sampled_region(plan)) <=
-      mip_single_level_footprint(blend)) {
+                             Image& output, std::int64_t* computed) {
+  if (footprint_bound(plan.dest_to_source, sampled_region(plan)) <= 1.0) {
     return run_warp_kernel(level_plan(plan, 0), source, output, computed);
   }
   const std::vector<PixelSpan> spans = output_spans(plan);
@@ -388,8 +386,8 @@ std::int64_t run_perspective(const WarpPlan& plan, const Image& source, const Mi
                 [&](int, int first, int last) {
                   std::int64_t count = 0;
                   for (int s = first; s < last; ++s) {
-                    count += perspective_span_mip(plan, levels, blend,
-                                                  spans[static_cast<std::size_t>(s)], output);
+                    count += perspective_span_mip(plan, levels, spans[static_cast<std::size_t>(s)],
+                                                  output);
                   }
                   sampled += count;
                 });
@@ -400,15 +398,15 @@ std::int64_t run_perspective(const WarpPlan& plan, const Image& source, const Mi
 }  // namespace
 
 Pixel mipmap_pixel(const Mat3& dest_to_source, const Image& source, const MipPyramid& pyramid,
-                   int x, int y, MipBlend blend) {
-  return trilinear_pixel(dest_to_source, source, pyramid, x, y, blend);
+                   int x, int y) {
+  return trilinear_pixel(dest_to_source, source, pyramid, x, y);
 }
 
 std::int64_t run_mipmap_kernel(const WarpPlan& plan, const Image& source, const MipPyramid& pyramid,
-                               MipBlend blend, Image& output, std::int64_t* computed) {
+                               Image& output, std::int64_t* computed) {
   if (plan.empty || source.empty() || output.empty()) return 0;
-  return plan.affine_kernel ? run_affine(plan, source, pyramid, blend, output, computed)
-                            : run_perspective(plan, source, pyramid, blend, output, computed);
+  return plan.affine_kernel ? run_affine(plan, source, pyramid, output, computed)
+                            : run_perspective(plan, source, pyramid, output, computed);
 }
 
 }  // namespace oflab

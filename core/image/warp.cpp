@@ -89,9 +89,9 @@ std::int64_t run_kernel(const WarpPlan& plan, const Image& source, Image& output
   if (options.pyramid == nullptr) {
     thread_local MipPyramid pyramid;  // memory kept from warp to warp
     build_mip_pyramid(source, pyramid);
-    return run_mipmap_kernel(plan, source, pyramid, options.mip_blend, output, computed);
+    return run_mipmap_kernel(plan, source, pyramid, output, computed);
   }
-  return run_mipmap_kernel(plan, source, *options.pyramid, options.mip_blend, output, computed);
+  return run_mipmap_kernel(plan, source, *options.pyramid, output, computed);
 }
 
 // A given pyramid must be of the source's image: its size is checked before anything is

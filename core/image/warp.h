@@ -72,8 +72,6 @@ struct WarpOptions {
   // warp builds one for itself. A pyramid of another size than the source's image is refused
   // (std::invalid_argument); one built from other pixels of that size is the caller's error.
   const MipPyramid* pyramid = nullptr;
-  // Sampling::kMipmap only: where in each octave two levels are blended (mip_pyramid.h).
-  MipBlend mip_blend = kDefaultMipBlend;
   // A partial warp: when set, only output pixels whose destination pixel (output pixel plus
   // the output's origin) is in `only` are computed, with, for the affine kernel's bilinear
   // sampling, the rest of their blocks of kPartialWarpBlock columns; the others inside the

@@ -108,12 +108,9 @@ Vec2 source_point(const InverseMap& m, double X, double Y) {
   return Vec2(lin(m.a, m.b, m.c) / d + 0.5, lin(m.d, m.e, m.f) / d + 0.5);
 }
 
-// Mipmap sample at output pixel (x, y) with the default blend (MipBlend::kMiddleHalf): the
-// footprint's longer axis by central differences of the map (steps of 1/1000 pixel) and a
-// brute-force maximum over directions, the level its log2 clamped to [0, top] less the bias
-// of 1/4 level (not below 0), bilinear on the two levels around it blended with the upper
-// one's weight rising from 0 to 1 over the middle half of the octave (2 frac - 1/2, clamped
-// to [0, 1]).
+// Trilinear mipmap sample at output pixel (x, y): the footprint's longer axis by central
+// differences of the map (steps of 1/1000 pixel) and a brute-force maximum over directions, the
+// level its log2 clamped to [0, top], bilinear on the two levels around it blended.
 void mipmap_reference(const InverseMap& m, const std::vector<DoubleLevel>& levels, int x, int y,
                       double* value) {
   const double X = 2.0 * x + 1.0, Y = 2.0 * y + 1.0, h = 1e-3;  // h: a pixel is 2 in X
@@ -126,11 +123,10 @@ void mipmap_reference(const InverseMap& m, const std::vector<DoubleLevel>& level
     sigma = std::max(sigma, glm::length(std::cos(t) * dx + std::sin(t) * dy));
   }
   const int top = static_cast<int>(levels.size()) - 1;
-  const double footprint = std::clamp(sigma > 1.0 ? std::log2(sigma) : 0.0, 0.0, double(top));
-  const double level = std::max(footprint - 0.25, 0.0);
+  const double level = std::clamp(sigma > 1.0 ? std::log2(sigma) : 0.0, 0.0, double(top));
   const int lower = std::min(static_cast<int>(level), top);
   const int upper = std::min(lower + 1, top);
-  const double t = std::clamp(2.0 * (level - lower) - 0.5, 0.0, 1.0);
+  const double t = level - lower;
   for (int c = 0; c < 4; ++c) {
     const double a =
         bilinear_double(levels[static_cast<std::size_t>(lower)], std::ldexp(s.x, -lower) - 0.5,

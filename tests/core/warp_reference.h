@@ -5,9 +5,7 @@
 // directly with 128-bit integers (no incremental steps), takes exact floors and clamps
 // per pixel, and interpolates in double. For mipmap sampling it builds its own pyramid in
 // double (unrounded 2 x 2 means), finds each pixel's footprint by central differences of the
-// map and a brute-force maximum over directions, biases its level by -1/4 and blends two
-// bilinear samples in double over the middle half of each octave (the default MipBlend,
-// core/image/mip_pyramid.h).
+// map and a brute-force maximum over directions, and blends two bilinear samples in double.
 #pragma once
 
 #include <random>

@@ -505,8 +505,7 @@ TEST(MipmapWarp, APure2xMinificationSamplesLevel1Exactly) {
 }
 
 // An affine warp between two levels is the bilinear warps of those levels blended: a turn of
-// 45 degrees that shrinks by 2^1.5 (footprint level 1.5, sampled at 1.25 after the bias: under
-// the trilinear blend levels 1 and 2 with weight 64), whose matrices and
+// 45 degrees that shrinks by 2^1.5 (level 1.5: levels 1 and 2, weight 128), whose matrices and
 // their inverses are exact in binary, so that warping level k by M diag(2^k, 2^k) samples the
 // positions the mipmap kernel samples. Every pixel is (a (256 - w) + b w + 128) / 256 of
 // the two bilinear warps' a and b, inside a partial warp's wanted pixels too (the rest keep
@@ -518,7 +517,7 @@ TEST(MipmapWarp, AnAffineWarpBetweenTwoLevelsBlendsTheBilinearWarpsOfBoth) {
   build_mip_pyramid(source.image, pyramid);
   const Mat3 m = translation_matrix(96.0, 17.5) *
                  mat3_from_rows({0.25, -0.25, 0.0}, {0.25, 0.25, 0.0}, {0.0, 0.0, 1.0});
-  const int w = 200, h = 160, weight = 64;
+  const int w = 200, h = 160, weight = 128;
   std::array<Image, 2> levels;
   for (int k = 1; k <= 2; ++k) {
     Image& level = levels[static_cast<std::size_t>(k - 1)];
@@ -534,7 +533,6 @@ TEST(MipmapWarp, AnAffineWarpBetweenTwoLevelsBlendsTheBilinearWarpsOfBoth) {
   for (const PixelRows* wanted : cases) {
     Image mip(w, h, testing::kSentinel);
     WarpOptions options{Sampling::kMipmap, WarpKernel::kAffine, kDefaultHorizonEpsilon, &pyramid};
-    options.mip_blend = MipBlend::kTrilinear;
     options.only = wanted;
     const WarpStats stats = warp_layer_into(source, m, mip, -3, 2, options);
     int blended = 0, kept = 0, level_one = 0;
@@ -593,10 +591,8 @@ struct AgainstDefinition {
 };
 
 AgainstDefinition against_definition(const Layer& source, const MipPyramid& pyramid, const Mat3& m,
-                                     WarpKernel kernel, int w, int h,
-                                     MipBlend blend = kDefaultMipBlend) {
-  WarpOptions options{Sampling::kMipmap, kernel, kDefaultHorizonEpsilon, &pyramid};
-  options.mip_blend = blend;
+                                     WarpKernel kernel, int w, int h) {
+  const WarpOptions options{Sampling::kMipmap, kernel, kDefaultHorizonEpsilon, &pyramid};
   Image output(w, h, testing::kSentinel), bilinear(w, h, testing::kSentinel);
   AgainstDefinition r;
   r.written = warp_layer_into(source, m, output, 0, 0, options).pixels_written;
@@ -617,7 +613,7 @@ AgainstDefinition against_definition(const Layer& source, const MipPyramid& pyra
       ++r.pixels;
       r.least = std::min(r.least, level_at(x + 0.5, span.y + 0.5));
       r.most = std::max(r.most, level_at(x + 0.5, span.y + 0.5));
-      const Pixel want = mipmap_pixel(hm, source.image, pyramid, x, span.y, blend);
+      const Pixel want = mipmap_pixel(hm, source.image, pyramid, x, span.y);
       const int d = max_channel_difference(output.at(x, span.y), want);
       r.worst = std::max(r.worst, d);
       r.differing += d > 0;
@@ -629,26 +625,22 @@ AgainstDefinition against_definition(const Layer& source, const MipPyramid& pyra
 
 // The perspective kernel takes each pixel's level from a polynomial log2 and samples the
 // levels with the fast bilinear row: within 2 levels per channel of mipmap_pixel, the exact
-// per-pixel definition, blending over whole octaves, and within 3 over their middle half
-// (the default, whose steeper weight doubles a level index's step; mipmap_kernel.h states
-// both bounds), on a tilt whose footprint spans more than three levels across the output.
-// The control: bilinear sampling of the same warp is far from it, so the comparison can fail.
-TEST(MipmapWarp, PerspectiveKernelIsWithinTwoOrThreeLevelsOfThePerPixelDefinition) {
+// per-pixel definition (mipmap_kernel.h states the bound), on a tilt whose footprint spans
+// more than three levels across the output. The control: bilinear sampling of the same warp
+// is far from it, so the comparison can fail.
+TEST(MipmapWarp, PerspectiveKernelIsWithinTwoLevelsOfThePerPixelDefinition) {
   std::mt19937 rng(10);
   const Layer source = make_layer(testing::random_image(rng, 320, 240));
   MipPyramid pyramid;
   build_mip_pyramid(source.image, pyramid);
   const Mat3 m = mat3_from_rows({0.5, 0.05, 4.0}, {-0.02, 0.45, 3.0}, {0.006, 0.0015, 1.0});
-  for (const auto& [blend, bound] :
-       {std::pair{MipBlend::kTrilinear, 2}, std::pair{MipBlend::kMiddleHalf, 3}}) {
-    const AgainstDefinition r =
-        against_definition(source, pyramid, m, WarpKernel::kPerspective, 96, 80, blend);
-    EXPECT_EQ(r.written, r.pixels);
-    ASSERT_GT(r.pixels, 2000);
-    EXPECT_GT(r.most - r.least, 3.0) << r.least << " .. " << r.most;  // a strong tilt
-    EXPECT_LE(r.worst, bound) << r.differing << " of " << r.pixels << " pixels differ";
-    EXPECT_GT(r.bilinear_far, r.pixels / 2);
-  }
+  const AgainstDefinition r =
+      against_definition(source, pyramid, m, WarpKernel::kPerspective, 96, 80);
+  EXPECT_EQ(r.written, r.pixels);
+  ASSERT_GT(r.pixels, 2000);
+  EXPECT_GT(r.most - r.least, 3.0) << r.least << " .. " << r.most;  // a strong tilt
+  EXPECT_LE(r.worst, 2) << r.differing << " of " << r.pixels << " pixels differ";
+  EXPECT_GT(r.bilinear_far, r.pixels / 2);
 }
 
 // An affine warp between two levels (shrunk 2.5 times and turned by 20 degrees: levels 1 and
@@ -666,15 +658,12 @@ TEST(MipmapWarp, AffineKernelIsWithinTwoLevelsOfThePerPixelDefinition) {
                  mat3_from_rows({s * std::cos(t), -s * std::sin(t), 0.0},
                                 {s * std::sin(t), s * std::cos(t), 0.0}, {0.0, 0.0, 1.0}) *
                  translation_matrix(-160.0, -120.0);
-  for (MipBlend blend : {MipBlend::kTrilinear, MipBlend::kMiddleHalf}) {
-    const AgainstDefinition r =
-        against_definition(source, pyramid, m, WarpKernel::kAffine, 140, 100, blend);
-    EXPECT_EQ(r.written, r.pixels);
-    ASSERT_GT(r.pixels, 2000);
-    EXPECT_NEAR(r.least, std::log2(2.5), 1e-9);
-    EXPECT_LE(r.worst, 2) << r.differing << " of " << r.pixels << " pixels differ";
-    EXPECT_GT(r.bilinear_far, r.pixels / 2);
-  }
+  const AgainstDefinition r = against_definition(source, pyramid, m, WarpKernel::kAffine, 140, 100);
+  EXPECT_EQ(r.written, r.pixels);
+  ASSERT_GT(r.pixels, 2000);
+  EXPECT_NEAR(r.least, std::log2(2.5), 1e-9);
+  EXPECT_LE(r.worst, 2) << r.differing << " of " << r.pixels << " pixels differ";
+  EXPECT_GT(r.bilinear_far, r.pixels / 2);
 }
 
 TEST(MipmapWarp, APyramidOfAnotherImageIsRefused) {

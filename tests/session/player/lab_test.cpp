@@ -222,8 +222,8 @@ std::string small_recede_file() {
 // sampling_psnr_gain is the sampling experiment's gain (experiments/sampling_comparison.h) on
 // the state's plane script, texture and policy: the lab playing the small recede with the
 // shipped fabric by name measures what compare_samplings finds for recede at a quarter of its
-// camera with the generated fabric (to 0.01 dB). Controls: the smooth butterfly gains at least
-// 1 dB less than the fabric, and a scene source, which plays no plane script, measures nothing.
+// camera with the generated fabric (to 0.01 dB). Controls: the smooth butterfly gains under 2 dB
+// (a 3 dB claim fails), and a scene source, which plays no plane script, measures nothing.
 TEST(Lab, TheSamplingGainIsTheSamplingExperimentsOnTheStatesScript) {
   const std::string file = small_recede_file();
   Lab lab(shipped_default_texture());
@@ -243,11 +243,9 @@ TEST(Lab, TheSamplingGainIsTheSamplingExperimentsOnTheStatesScript) {
   EXPECT_EQ(gain, std::round(experiment.mipmap_gain_db() * 100.0) / 100.0);
   EXPECT_GT(gain, 3.0);
 
-  // The control: the shipped butterfly, smooth and magnified in the first render, gains less.
   state.texture = "";
   ASSERT_EQ(lab.apply(state), "");
-  const double smooth = measure_engine_claim(lab, claim);
-  EXPECT_LT(smooth, gain - 1.0) << smooth << " against the fabric's " << gain;
+  EXPECT_LT(measure_engine_claim(lab, claim), 2.0);
   state.source = SourceChoice{"scene", "four-cubes", "translate"};
   ASSERT_EQ(lab.apply(state), "");
   EXPECT_TRUE(std::isnan(measure_engine_claim(lab, claim)));
