@@ -290,10 +290,10 @@ class PlaneEngine {
   // it; texel_to_image is the warp the layer then shows (for the measured error).
   void show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
             FrameReport& report);
-  // Warps `source` into warped_ (memory reused; `only`'s pixels) and counts them. Mipmap
-  // sampling takes a kept source's kept pyramid (pyramid_of), else one built for the warp.
+  // Warps `source` into warped_ (memory reused; `only`'s pixels, those computed added to
+  // `computed`), counts them. Mipmap: a kept source's kept pyramid (pyramid_of), else its own.
   void warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
-                    const PixelRows* only = nullptr);
+                    const PixelRows* only = nullptr, PixelRows* computed = nullptr);
   // A partly warped display: warps what its warp left out that the frame shows now (all).
   void complete_display(FrameReport& report, bool all = false);
   const MipPyramid* pyramid_of(const Layer& source) const;

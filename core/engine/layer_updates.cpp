@@ -211,7 +211,8 @@ void PlaneEngine::apply_translation(const Vec2& step) {
 void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const Mat3& texel_to_image,
                        FrameReport& report) {
   const bool partial = shown_pixels_ && (&source == &texture_ || &source == &cache_.layer);
-  warp_reusing(source, source_to_image, report, partial ? shown_pixels_ : nullptr);
+  PixelRows computed;  // beyond the shown pixels: the rest of the affine bilinear blocks
+  warp_reusing(source, source_to_image, report, partial ? shown_pixels_ : nullptr, &computed);
   partial_.active = partial;
   if (partial) {
     partial_.source = &source;
@@ -219,6 +220,7 @@ void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const M
     partial_.done =
         shown_pixels_->within(warped_.offset_x, warped_.offset_y, warped_.layer.image.width(),
                               warped_.layer.image.height());
+    partial_.done.add(computed);
   }
   std::swap(display_.layer, warped_.layer);  // the old display's memory serves the next warp
   keep_render_from_display(warped_.layer);
@@ -229,10 +231,11 @@ void PlaneEngine::show(const Layer& source, const Mat3& source_to_image, const M
 }
 
 void PlaneEngine::warp_reusing(const Layer& source, const Mat3& warp, FrameReport& report,
-                               const PixelRows* only) {
+                               const PixelRows* only, PixelRows* computed) {
   WarpOptions options;
   options.sampling = settings_.sampling;
   options.only = only;
+  options.computed_pixels = computed;
   options.pyramid = pyramid_of(source);
   warp_layer_reusing(source, warp, warped_, options);
   report.pixels_written += warped_.stats.pixels_written;
@@ -259,10 +262,13 @@ void PlaneEngine::complete_display(FrameReport& report, bool all) {
     WarpOptions options;
     options.sampling = settings_.sampling;
     options.only = &missing;
+    PixelRows computed;  // the rest of the affine bilinear blocks, not computed again later
+    options.computed_pixels = &computed;
     options.pyramid = pyramid_of(*partial_.source);
     const WarpStats stats = warp_layer_into(*partial_.source, partial_.warp, display_.layer.image,
                                             layer_origin_.x, layer_origin_.y, options);
     report.pixels_not_warped -= stats.pixels_computed;
+    partial_.done.add(computed);
   }
   partial_.done.add(wanted);
   if (all || !shown_pixels_) partial_.active = false;

@@ -104,7 +104,8 @@ std::vector<PixelSpan> output_spans(const WarpPlan& plan) {
 
 // Calls fn(x_begin, x_end) for each stretch of the span's columns a partial warp wants
 // (plan.only, in destination pixels: output pixel plus the plan's origin), or for the whole
-// span without one. Returns the pixels it covered.
+// span without one, noting each stretch of a partial warp as computed (record_computed).
+// Returns the pixels it covered.
 template <typename Fn>
 std::int64_t for_each_wanted(const WarpPlan& plan, const PixelSpan& span, Fn fn) {
   if (plan.only == nullptr) {
@@ -117,6 +118,7 @@ std::int64_t for_each_wanted(const WarpPlan& plan, const PixelSpan& span, Fn fn)
     const int end = std::min(span.x_end, r.end - plan.origin_x);
     if (begin >= end) continue;
     fn(begin, end);
+    record_computed(plan, span.y, begin, end);
     count += end - begin;
   }
   return count;
@@ -168,6 +170,7 @@ const Image& sampled_image(const Image& source, const MipPyramid& pyramid, int k
 // reads the texel the level's clamping gives.
 WarpPlan bordered_level_plan(const WarpPlan& plan, const MipPyramid& pyramid, int k) {
   WarpPlan level = level_plan(plan, k);
+  level.computed = nullptr;  // its samples go to rows of the blend's, not to the output
   if (samples_bordered(pyramid, k)) {
     level.map.c += kMipBorder * level.map.i;
     level.map.f += kMipBorder * level.map.i;

@@ -167,6 +167,14 @@ PixelRows PixelRows::minus(const PixelRows& other) const {
   return out;
 }
 
+PixelRows PixelRows::from_runs(int top, std::vector<std::vector<ColumnRun>> runs) {
+  PixelRows out;
+  out.top_ = top;
+  out.rows_ = std::move(runs);
+  for (std::vector<ColumnRun>& row : out.rows_) row = merged(std::move(row));
+  return out;
+}
+
 void PixelRows::add(const PixelRows& other) {
   if (other.rows() == 0) return;
   if (rows() == 0) {

@@ -40,6 +40,8 @@ class PixelRows {
   PixelRows() = default;
   // Every pixel of a width x height image. Precondition: width, height >= 0.
   static PixelRows full(int width, int height);
+  // The set of runs[k] (any order, overlapping or touching runs allowed) in row top + k.
+  static PixelRows from_runs(int top, std::vector<std::vector<ColumnRun>> runs);
   // Makes this set every pixel of a width x height image, its rows' memory kept (a set filled
   // again each frame allocates nothing). Precondition: width, height >= 0.
   void fill(int width, int height);

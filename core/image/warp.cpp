@@ -106,6 +106,25 @@ void check_pyramid(const Layer& source, const WarpOptions& options) {
   }
 }
 
+// Runs the kernel with the options' partial warp (WarpOptions::only), recording the pixels it
+// computes when the options ask (WarpOptions::computed_pixels). Adds the pixels sampled to
+// stats.pixels_computed; returns the pixels written.
+std::int64_t run_partial_or_whole(WarpPlan& plan, const Image& source, Image& output,
+                                  const WarpOptions& options, WarpStats& stats) {
+  plan.only = options.only;
+  if (!options.only || !options.computed_pixels) {
+    return run_kernel(plan, source, output, options, &stats.pixels_computed);
+  }
+  thread_local std::vector<std::vector<ColumnRun>> rows;  // memory kept from warp to warp
+  rows.resize(static_cast<std::size_t>(plan.output_height));
+  for (std::vector<ColumnRun>& row : rows) row.clear();
+  plan.computed = &rows;
+  const std::int64_t written = run_kernel(plan, source, output, options, &stats.pixels_computed);
+  plan.computed = nullptr;
+  options.computed_pixels->add(PixelRows::from_runs(plan.origin_y, rows));
+  return written;
+}
+
 }  // namespace
 
 // Every sampling with its name, in the order of the enum.
@@ -134,8 +153,7 @@ WarpStats warp_layer_into(const Layer& source, const Mat3& source_to_dest, Image
                             output_origin_x, output_origin_y);
   WarpStats stats;
   stats.kernel_used = kernel_name(prepared.affine_kernel);
-  plan.only = options.only;
-  stats.pixels_written = run_kernel(plan, source.image, output, options, &stats.pixels_computed);
+  stats.pixels_written = run_partial_or_whole(plan, source.image, output, options, stats);
   return stats;
 }
 
@@ -169,8 +187,7 @@ void warp_layer_reusing(const Layer& source, const Mat3& source_to_dest, WarpedL
   const int old_width = image.width(), old_height = image.height();
   image.reshape(width, height);
   clear_previous(result.layer.polygon, old_width, old_height, spans, image);
-  plan.only = options.only;
-  stats.pixels_written = run_kernel(plan, source.image, image, options, &stats.pixels_computed);
+  stats.pixels_written = run_partial_or_whole(plan, source.image, image, options, stats);
   // plan.polygon is the warped polygon in the new layer's pixel coordinates.
   result.layer.polygon = std::move(plan.polygon);
   result.offset_x = x0;

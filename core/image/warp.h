@@ -80,6 +80,11 @@ struct WarpOptions {
   // affine bilinear blocks start where its fixed-point runs restart (mipmap: as bilinear, a
   // blended level pair writing the wanted pixels only). Null: the whole polygon.
   const PixelRows* only = nullptr;
+  // With `only`: when set, the destination pixels the partial warp computed are added to it:
+  // the wanted pixels inside the polygon and, under the affine kernel's bilinear sampling,
+  // the rest of their blocks (the whole warp's bytes too; a caller completing the layer later
+  // need not compute them again). Ignored without `only`.
+  PixelRows* computed_pixels = nullptr;
 };
 
 // Columns of the affine bilinear kernel's block in a partial warp (WarpOptions::only).

@@ -469,7 +469,7 @@ void fast_span(const SourceView& src, const InverseMap& map, Pixel* row, int y, 
 // position every kMaxApproximateRun (= kPartialWarpBlock) pixels of a call and go in quads
 // from its start. Every other loop's pixel depends on its own exact numerators only (the
 // nearest floors are exact, the perspective bilinear positions are one product per pixel of
-// exact integers): blocks of one pixel. Returns the pixels computed.
+// exact integers): blocks of one pixel. Returns the pixels computed (recorded, record_computed).
 template <bool kAffine, bool kBilinear>
 std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Pixel* row, int y, int begin,
                          int end) {
@@ -490,12 +490,14 @@ std::int64_t partial_run(const SourceView& src, const WarpPlan& plan, Pixel* row
     hi = std::min(end, begin + (hi - begin + block - 1) / block * block);
     if (lo > to) {
       if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, row, y, from, to);
+      record_computed(plan, y, from, to);
       done += to - from;
       from = lo;
     }
     to = std::max(to, hi);
   }
   if (to > from) fast_span<kAffine, kBilinear>(src, plan.map, row, y, from, to);
+  record_computed(plan, y, from, to);
   done += to - from;
   return done;
 }
@@ -517,7 +519,7 @@ FastRun fast_run_of(const SourceView& src, const InverseMap& map, bool fast_allo
 }
 
 // The clamped ends of a span (pixels outside its fast run `r`) into row[x], those a partial
-// warp wants. Returns the pixels sampled.
+// warp wants (recorded, record_computed). Returns the pixels sampled.
 template <bool kBilinear>
 std::int64_t sample_ends(const SourceView& src, const WarpPlan& plan, const PixelSpan& span,
                          const FastRun& r, Pixel* row) {
@@ -526,6 +528,7 @@ std::int64_t sample_ends(const SourceView& src, const WarpPlan& plan, const Pixe
     const int fx = x + plan.origin_x;
     if (plan.only && !plan.only->any(span.y + plan.origin_y, fx, fx + 1)) return;
     row[x] = sample_clamped<kBilinear>(src, evaluate(plan.map, x, span.y), plan.map.affine_shift);
+    if (plan.only) record_computed(plan, span.y, x, x + 1);
     ++ends;
   };
   for (int x = span.x_begin; x < r.begin; ++x) clamped(x);

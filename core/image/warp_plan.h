@@ -4,8 +4,11 @@
 // Conventions and errors as in core/image/warp.h.
 #pragma once
 
+#include <vector>
+
 #include "image/inverse_map.h"
 #include "image/layer.h"
+#include "image/pixel_rows.h"
 #include "image/polygon.h"
 #include "image/warp.h"
 
@@ -40,7 +43,19 @@ struct WarpPlan {
   int origin_x = 0;  // destination coordinates of output pixel (0, 0)'s corner
   int origin_y = 0;
   const PixelRows* only = nullptr;  // a partial warp's wanted pixels (WarpOptions::only)
+  // With `only`, when WarpOptions::computed_pixels is set: per output row, the destination
+  // columns the kernels computed (each row written by one band at a time); else null.
+  std::vector<std::vector<ColumnRun>>* computed = nullptr;
 };
+
+// Notes output pixels [x_begin, x_end) of row y as computed by a partial warp, if the plan
+// keeps that record (WarpPlan::computed). Precondition: 0 <= y < plan.output_height.
+inline void record_computed(const WarpPlan& plan, int y, int x_begin, int x_end) {
+  if (plan.computed && x_begin < x_end) {
+    (*plan.computed)[static_cast<std::size_t>(y)].push_back(
+        ColumnRun{x_begin + plan.origin_x, x_end + plan.origin_x});
+  }
+}
 
 // Plans the warp of a prepared warp into an output of the given size whose pixel (0, 0)
 // has its corner at destination coordinates (origin_x, origin_y).

@@ -78,6 +78,15 @@ TEST(VisibleWarpRuns, FourCubesFramesAreTheSameBytesWithFewerPixelsWarped) {
   EXPECT_LT(visible, whole);
 }
 
+// Bilinear sampling: the affine kernel computes whole blocks of 64 columns around the wanted
+// pixels, and the engine counts them as done (WarpOptions::computed_pixels), so a layer
+// completed a few columns at a time computes no block twice: fewer pixels than the whole warp.
+TEST(VisibleWarpRuns, BilinearFramesAreTheSameBytesWithFewerPixelsWarped) {
+  const auto [whole, visible] =
+      expect_same_frames("four-cubes", "compound", 24, Sampling::kBilinear);
+  EXPECT_LT(visible, whole);
+}
+
 // Mipmap sampling (--sampling mipmap --warp visible against --warp whole): the cubes' layers
 // sampled through the pyramids kept with their textures and caches (the kernels' partial
 // warps on two blended levels: tests/core/image/partial_warp_test.cpp).

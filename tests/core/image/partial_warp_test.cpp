@@ -80,10 +80,26 @@ TEST(PixelRows, MinusAddAndShiftedAgreeWithBitmaps) {
   EXPECT_EQ(u.count(), in_union);
 }
 
+TEST(PixelRows, FromRunsMergesUnsortedAndOverlappingRuns) {
+  const PixelRows set = PixelRows::from_runs(
+      -3, {{{5, 9}, {0, 2}, {7, 12}}, {}, {{4, 5}, {5, 6}, {-2, 1}}, {{3, 3}}});
+  EXPECT_EQ(set.top(), -3);
+  EXPECT_EQ(set.rows(), 4);
+  ASSERT_EQ(set.row(-3).size(), 2u);  // [0, 2) and [5, 12)
+  EXPECT_EQ(set.row(-3)[1].begin, 5);
+  EXPECT_EQ(set.row(-3)[1].end, 12);
+  ASSERT_EQ(set.row(-1).size(), 2u);  // [-2, 1) and [4, 6): touching runs merged
+  EXPECT_EQ(set.row(-1)[1].begin, 4);
+  EXPECT_EQ(set.row(-1)[1].end, 6);
+  EXPECT_TRUE(set.row(0).empty());  // an empty run is no pixel
+  EXPECT_EQ(set.count(), 2 + 7 + 3 + 2);
+}
+
 // Each case: the whole warp into a sentinel frame, then the partial warp of `only` into
 // another; the partial one's pixels are each either the sentinel (left out) or the whole
 // one's to the byte, it computes every pixel of `only` inside the polygon, and it leaves
-// some out (the control: it did skip).
+// some out (the control: it did skip). The pixels it records as computed
+// (WarpOptions::computed_pixels) are exactly those it wrote.
 void expect_partial_matches_whole(const Layer& source, const Mat3& m, WarpOptions options) {
   const int w = 720, h = 560, ox = -10, oy = -30;
   Image whole(w, h, kSentinel), partial(w, h, kSentinel);
@@ -93,6 +109,8 @@ void expect_partial_matches_whole(const Layer& source, const Mat3& m, WarpOption
   only.remove_centres_inside(
       make_polygon_unchecked({Vec2(300, 200), Vec2(700, 260), Vec2(420, 520)}));
   options.only = &only;
+  PixelRows recorded;
+  options.computed_pixels = &recorded;
   const WarpStats some = warp_layer_into(source, m, partial, ox, oy, options);
   EXPECT_EQ(some.pixels_written, all.pixels_written);
   EXPECT_EQ(all.pixels_computed, all.pixels_written);
@@ -100,6 +118,8 @@ void expect_partial_matches_whole(const Layer& source, const Mat3& m, WarpOption
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const Pixel p = partial.row(y)[x], q = whole.row(y)[x];
+      ASSERT_EQ(p != kSentinel, recorded.any(y + oy, x + ox, x + ox + 1))
+          << "recorded pixel " << x << "," << y;
       if (p != kSentinel) {
         ++computed;
         ASSERT_EQ(p, q) << "pixel " << x << "," << y;
@@ -110,6 +130,7 @@ void expect_partial_matches_whole(const Layer& source, const Mat3& m, WarpOption
     }
   }
   EXPECT_EQ(computed, some.pixels_computed);
+  EXPECT_EQ(recorded.count(), computed);
   EXPECT_GT(skipped, 10000);
   EXPECT_EQ(skipped, all.pixels_written - some.pixels_computed);
 }
